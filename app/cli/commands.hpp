@@ -1,0 +1,20 @@
+// The headless commands of the foldlab executable, registered on a CLI11 app.
+#pragma once
+
+#include <functional>
+
+#include <CLI/CLI.hpp>
+
+namespace foldlab::cli {
+
+// A registered command: run() is called after parsing when its subcommand was given, and returns
+// the exit status.
+using Command = std::function<int()>;
+
+Command add_solve_command(CLI::App& app);
+Command add_export_command(CLI::App& app);
+
+// `foldlab` with no command and no display: the default preset solved and printed as a table.
+int run_default_headless();
+
+}  // namespace foldlab::cli

@@ -1,0 +1,33 @@
+// What every headless command reads first: a preset, --set overrides and --method.
+#pragma once
+
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "foldlab/preset.hpp"
+
+namespace foldlab::cli {
+
+// Exit statuses of every command (the contract scripts rely on).
+inline constexpr int kExitOk = 0;
+inline constexpr int kExitInternal = 1;
+inline constexpr int kExitInvalidInput = 2;
+
+// Bad input from the user: the message goes to stderr and the exit status is kExitInvalidInput.
+class InputError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+struct InputOptions {
+  std::string preset_path;  // empty: the built-in default preset
+  std::vector<std::string> assignments;
+  std::string method;  // empty: the preset's
+};
+
+// The preset with the overrides applied and validated. Throws InputError listing every problem.
+Preset resolve_inputs(const InputOptions& options);
+
+}  // namespace foldlab::cli

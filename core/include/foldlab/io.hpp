@@ -1,0 +1,19 @@
+// Writing files so that a crash or a full disk never leaves half of one behind.
+#pragma once
+
+#include <filesystem>
+#include <stdexcept>
+#include <string_view>
+
+namespace foldlab {
+
+class WriteError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// Writes `contents` to a temporary file beside `path`, flushes it to disk and renames it over
+// `path`: readers see the old file or the new one, never a mix. Throws WriteError naming the path.
+void write_file_atomically(const std::filesystem::path& path, std::string_view contents);
+
+}  // namespace foldlab

@@ -1,0 +1,210 @@
+#include "foldlab/equations.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+namespace foldlab {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+// K(m) and E(m) from m and its complement m1 = 1 - m, passed separately so that m close to 1 keeps
+// its digits (the upper edge needs 1 - m = 1 / (1 + k²)).
+EllipticKE elliptic_KE_complement(double m, double m1) {
+  double a = 1.0;
+  double b = std::sqrt(m1);
+  double c2 = m;  // c_0² = m
+  double weight = 0.5;
+  double sum = weight * c2;
+  for (int step = 0; step < 40; ++step) {
+    const double c = 0.5 * (a - b);
+    const double a_next = 0.5 * (a + b);
+    b = std::sqrt(a * b);
+    a = a_next;
+    weight *= 2.0;
+    sum += weight * c * c;
+    if (std::abs(c) <= 1e-17 * a) {
+      break;
+    }
+  }
+  const double K = kPi / (2.0 * a);
+  return {K, K * (1.0 - sum)};
+}
+
+// The upper edge in units of the span: f(k) = (2/pi) ∫_0^{pi/2} sqrt(1 + k² sin²θ) dθ = L/l, with
+// k = pi A / l, and its derivative. Below k = 1e-2 the closed form loses digits to cancellation in
+// f - 1 and f'; its Maclaurin series is exact there to ~1e-16.
+struct EdgeRatio {
+  double f_minus_1;
+  double derivative;
+};
+
+EdgeRatio edge_ratio(double k) {
+  const double k2 = k * k;
+  if (k < 1e-2) {
+    // f = 1 + k²/4 - 3k⁴/64 + 5k⁶/256 - 175k⁸/16384 + ...
+    const double f_minus_1 = k2 * (0.25 + k2 * (-3.0 / 64.0 + k2 * (5.0 / 256.0)));
+    const double derivative = k * (0.5 + k2 * (-3.0 / 16.0 + k2 * (15.0 / 128.0)));
+    return {f_minus_1, derivative};
+  }
+  const double one_plus_k2 = 1.0 + k2;
+  const double root = std::sqrt(one_plus_k2);
+  const EllipticKE ke = elliptic_KE_complement(k2 / one_plus_k2, 1.0 / one_plus_k2);
+  // Imaginary-modulus transformation: E(-k²) = sqrt(1+k²) E(m), K(-k²) = K(m) / sqrt(1+k²).
+  const double e_neg = root * ke.E;
+  const double k_neg = ke.K / root;
+  return {2.0 / kPi * e_neg - 1.0, 2.0 / kPi * (e_neg - k_neg) / k};
+}
+
+double edge_integrand(double amplitude_mm, double span_mm, double x_mm) {
+  const double k = kPi * amplitude_mm / span_mm;
+  const double s = std::sin(kPi * x_mm / span_mm);
+  return std::sqrt(1.0 + k * k * s * s);
+}
+
+}  // namespace
+
+EllipticKE elliptic_KE(double m) { return elliptic_KE_complement(m, 1.0 - m); }
+
+double elliptic_E(double m) { return elliptic_KE(m).E; }
+
+double stress_ratio(double K, double youngs_modulus_MPa, double thickness_mm,
+                    double weight_N_per_mm2, double height_mm, double span_mm) {
+  const double t = thickness_mm;
+  return K * youngs_modulus_MPa * t * t * t / (weight_N_per_mm2 * height_mm * span_mm * span_mm);
+}
+
+std::optional<double> wrinkle_ratio_from_stress_ratio(double s) {
+  if (!(s < 1.0) || !(s >= 0.0)) {
+    return std::nullopt;
+  }
+  // (1-s) Q² - (2+s) Q + 1 = 0; the larger root written without cancellation for every s in [0,1).
+  return (2.0 + s + std::sqrt(s * (s + 8.0))) / (2.0 * (1.0 - s));
+}
+
+double upper_edge_length_closed_form(double amplitude_mm, double span_mm) {
+  const double k = kPi * amplitude_mm / span_mm;
+  return span_mm * (1.0 + edge_ratio(k).f_minus_1);
+}
+
+double upper_edge_length_simpson(double amplitude_mm, double span_mm, int intervals) {
+  const int n = std::max(2, intervals + (intervals % 2));
+  const double step = span_mm / n;
+  const double x0 = -0.5 * span_mm;
+  double sum = edge_integrand(amplitude_mm, span_mm, x0) +
+               edge_integrand(amplitude_mm, span_mm, x0 + span_mm);
+  for (int i = 1; i < n; ++i) {
+    sum += (i % 2 == 1 ? 4.0 : 2.0) * edge_integrand(amplitude_mm, span_mm, x0 + i * step);
+  }
+  return sum * step / 3.0;
+}
+
+double upper_edge_length_trapezoid(double amplitude_mm, double span_mm, int intervals) {
+  const int n = std::max(1, intervals);
+  const double step = span_mm / n;
+  const double x0 = -0.5 * span_mm;
+  double sum = 0.5 * (edge_integrand(amplitude_mm, span_mm, x0) +
+                      edge_integrand(amplitude_mm, span_mm, x0 + span_mm));
+  for (int i = 1; i < n; ++i) {
+    sum += edge_integrand(amplitude_mm, span_mm, x0 + i * step);
+  }
+  return sum * step;
+}
+
+double amplitude_for_upper_edge_length(double length_mm, double span_mm) {
+  const double excess = length_mm / span_mm - 1.0;  // f(k) - 1 must equal this
+  if (!(excess > 0.0)) {
+    return 0.0;
+  }
+  const double r = 1.0 + excess;
+  // Bounds on k: Jensen gives f <= sqrt(1 + k²/2), so k >= sqrt(2(r²-1)); f >= 2k/pi gives k <= pi r/2.
+  double lo = std::sqrt(2.0 * excess * (r + 1.0));
+  double hi = std::max(lo, 0.5 * kPi * r);
+  double k = lo;
+  // f is increasing and convex in k, so Newton from the left bound overshoots once and then
+  // approaches from the right; the bracket keeps any rounding excursion in bounds.
+  for (int iteration = 0; iteration < 100; ++iteration) {
+    const EdgeRatio e = edge_ratio(k);
+    const double g = e.f_minus_1 - excess;
+    if (g > 0.0) {
+      hi = std::min(hi, k);
+    } else {
+      lo = std::max(lo, k);
+    }
+    double next = (e.derivative > 0.0) ? k - g / e.derivative : 0.5 * (lo + hi);
+    if (!(next > lo && next < hi)) {
+      next = 0.5 * (lo + hi);
+    }
+    if (std::abs(next - k) <= 4.0 * std::numeric_limits<double>::epsilon() * k) {
+      k = next;
+      break;
+    }
+    k = next;
+  }
+  return k * span_mm / kPi;
+}
+
+double fibre_length(double a0_mm, double Q, int n, double z_max_mm) {
+  const double four_z2 = 4.0 * z_max_mm * z_max_mm;
+  const double shrink = 1.0 / Q;
+  double difference = a0_mm * (1.0 - shrink);  // a_0 - a_1
+  double sum = 0.0;
+  for (int i = 1; i <= n; ++i) {
+    sum += std::sqrt(difference * difference + four_z2);
+    difference *= shrink;
+  }
+  return sum;
+}
+
+double z_max_for_fibre_length(double a0_mm, double Q, int n, double height_mm) {
+  const double drop = a0_mm * (1.0 - std::pow(Q, -n));  // sum of the a-differences
+  if (drop >= height_mm) {
+    return 0.0;
+  }
+  // The fibre length is increasing and convex in z, between drop + 2nz and (h = ...) so
+  // (h - drop)/(2n) <= z <= h/(2n); Newton from the upper bound decreases monotonically.
+  double lo = (height_mm - drop) / (2.0 * n);
+  double z = height_mm / (2.0 * n);
+  for (int iteration = 0; iteration < 100; ++iteration) {
+    const double four_z2 = 4.0 * z * z;
+    const double shrink = 1.0 / Q;
+    double difference = a0_mm * (1.0 - shrink);
+    double length = 0.0;
+    double slope = 0.0;
+    for (int i = 1; i <= n; ++i) {
+      const double term = std::sqrt(difference * difference + four_z2);
+      length += term;
+      slope += 4.0 * z / term;
+      difference *= shrink;
+    }
+    const double next = std::max(lo, z - (length - height_mm) / slope);
+    if (std::abs(next - z) <= 1e-15 * z) {
+      return next;
+    }
+    z = next;
+  }
+  return z;
+}
+
+int wrinkle_count(double a0_over_an, double Q, bool round_to_nearest) {
+  constexpr double kMax = 1e9;
+  double x = std::log(a0_over_an) / std::log(Q);
+  if (!(x < kMax)) {
+    x = kMax;  // Q so close to 1 (or a_0/a_n so large) that n exceeds what an int holds
+  }
+  const double count = round_to_nearest ? std::nearbyint(x) : std::floor(x * (1.0 + 1e-9));
+  return std::max(1, static_cast<int>(count));
+}
+
+void fold_amplitudes(double a0_mm, double Q, int n, std::span<double> out) {
+  double a = a0_mm;
+  const double shrink = 1.0 / Q;
+  for (int i = 0; i <= n && i < static_cast<int>(out.size()); ++i) {
+    out[static_cast<std::size_t>(i)] = a;
+    a *= shrink;
+  }
+}
+
+}  // namespace foldlab

@@ -1,0 +1,48 @@
+#include "foldlab/io.hpp"
+
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <string>
+
+namespace foldlab {
+
+void write_file_atomically(const std::filesystem::path& path, std::string_view contents) {
+  std::filesystem::path temporary = path;
+  temporary += ".tmp." + std::to_string(::getpid());
+  auto fail = [&](const std::string& what, int error) {
+    std::error_code ignored;
+    std::filesystem::remove(temporary, ignored);
+    throw WriteError(path.string() + ": " + what + " (" + std::strerror(error) + ")");
+  };
+  const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  if (fd < 0) {
+    throw WriteError(path.string() + ": cannot write (" + std::strerror(errno) + ")");
+  }
+  std::size_t written = 0;
+  while (written < contents.size()) {
+    const ssize_t w = ::write(fd, contents.data() + written, contents.size() - written);
+    if (w < 0 && errno == EINTR) {
+      continue;
+    }
+    if (w < 0) {
+      const int error = errno;
+      ::close(fd);
+      fail("write failed", error);
+    }
+    written += static_cast<std::size_t>(w);
+  }
+  const int sync_error = ::fsync(fd) == 0 ? 0 : errno;
+  const int close_error = ::close(fd) == 0 ? 0 : errno;
+  if (sync_error != 0 || close_error != 0) {
+    fail("could not flush to disk", sync_error != 0 ? sync_error : close_error);
+  }
+  if (std::rename(temporary.c_str(), path.c_str()) != 0) {
+    fail("could not replace the file", errno);
+  }
+}
+
+}  // namespace foldlab
