@@ -17,6 +17,7 @@ int main(int argc, char** argv) {
   std::map<std::string, Command> commands;
   commands["solve"] = add_solve_command(app);
   commands["export"] = add_export_command(app);
+  commands["compare"] = add_compare_command(app);
   app.require_subcommand(0, 1);
   try {
     app.parse(argc, argv);

@@ -8,6 +8,8 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/inputs.hpp"
+#include "cli/presets_dir.hpp"
+#include "foldlab/comparison.hpp"
 #include "foldlab/export.hpp"
 #include "foldlab/geometry.hpp"
 #include "foldlab/io.hpp"
@@ -24,8 +26,9 @@ void add_input_options(CLI::App& command, InputOptions& options) {
                      "preset JSON file (default: the built-in Table 1, h = 1400 mm preset)");
   std::string keys;
   for (const SettingKey& k : setting_keys()) {
-    keys += "\n    " + std::string(k.key) + (k.unit.empty() ? "" : " (" + std::string(k.unit) + ")") +
-            ": " + std::string(k.description);
+    keys += "\n    " + std::string(k.key) +
+            (k.unit.empty() ? "" : " (" + std::string(k.unit) + ")") + ": " +
+            std::string(k.description);
   }
   command.add_option("--set", options.assignments, "override an input, KEY=VALUE; keys:" + keys)
       ->type_name("KEY=VALUE");
@@ -84,12 +87,14 @@ Command add_export_command(CLI::App& app) {
     int samples = 201;
   };
   auto options = std::make_shared<Options>();
-  CLI::App* command = app.add_subcommand(
-      "export", "write the deformed mesh (OBJ) and the fold lines (CSV, SVG)");
+  CLI::App* command =
+      app.add_subcommand("export", "write the deformed mesh (OBJ) and the fold lines (CSV, SVG)");
   add_input_options(*command, options->inputs);
-  CLI::Option* obj = command->add_option("--obj", options->obj_path, "deformed mesh, Wavefront OBJ");
+  CLI::Option* obj =
+      command->add_option("--obj", options->obj_path, "deformed mesh, Wavefront OBJ");
   CLI::Option* csv = command->add_option("--csv", options->csv_path, "fold lines as CSV");
-  CLI::Option* svg = command->add_option("--svg", options->svg_path, "fold lines as an SVG drawing");
+  CLI::Option* svg =
+      command->add_option("--svg", options->svg_path, "fold lines as an SVG drawing");
   command->add_option("--grid", options->grid, "mesh resolution NXxNY (default 128x128)");
   command->add_option("--samples", options->samples, "points per fold line (default 201)")
       ->check(CLI::Range(2, 100000));
@@ -127,6 +132,120 @@ Command add_export_command(CLI::App& app) {
         if (!options->svg_path.empty()) {
           write_file_atomically(options->svg_path, fold_lines_to_svg(lines, solution, preset.name));
         }
+      }
+      return kExitOk;
+    });
+  };
+}
+
+Command add_compare_command(CLI::App& app) {
+  struct Options {
+    std::vector<std::string> presets;
+    std::vector<std::string> assignments;
+    bool json = false;
+  };
+  auto options = std::make_shared<Options>();
+  CLI::App* command = app.add_subcommand(
+      "compare", "both methods beside the published n, z_max and Q of presets that carry them");
+  command->add_option("--preset", options->presets,
+                      "preset files (default: every preset in the presets folder with published "
+                      "results)");
+  command->add_option("--set", options->assignments, "override an input of every preset, KEY=VALUE")
+      ->type_name("KEY=VALUE");
+  command->add_flag("--json", options->json, "print JSON instead of a Markdown table");
+  return [options] {
+    return guarded([&] {
+      std::vector<std::string> paths = options->presets;
+      if (paths.empty()) {
+        const std::filesystem::path dir = find_presets_dir();
+        if (dir.empty()) {
+          throw InputError("no presets folder found: name presets with --preset");
+        }
+        for (const auto& file : preset_files(dir)) {
+          paths.push_back(file.string());
+        }
+      }
+      std::vector<Preset> presets;
+      std::vector<std::vector<PublishedComparison>> rows(2);  // [paper, exact]
+      for (const std::string& path : paths) {
+        InputOptions inputs{path, options->assignments, ""};
+        Preset preset = resolve_inputs(inputs);
+        const PublishedResult& pub = preset.published;
+        if (!pub.n && !pub.z_max_mm && !pub.Q) {
+          continue;
+        }
+        for (Method m : {Method::paper, Method::exact}) {
+          Parameters p = preset.parameters;
+          p.model.method = m;
+          rows[m == Method::paper ? 0 : 1].push_back(compare_with_published(pub, p));
+        }
+        presets.push_back(std::move(preset));
+      }
+      if (presets.empty()) {
+        throw InputError("none of the presets carries published results");
+      }
+      if (options->json) {
+        nlohmann::json out = nlohmann::json::array();
+        for (std::size_t i = 0; i < presets.size(); ++i) {
+          nlohmann::json row = {{"name", presets[i].name}};
+          for (int m = 0; m < 2; ++m) {
+            const PublishedComparison& c = rows[static_cast<std::size_t>(m)][i];
+            row[m == 0 ? "paper" : "exact"] = {
+                {"n", c.solution.n}, {"z_max_mm", c.solution.z_max_mm}, {"Q", c.solution.Q}};
+          }
+          const PublishedResult& pub = presets[i].published;
+          row["published"] = {
+              {"n", pub.n ? nlohmann::json(*pub.n) : nlohmann::json()},
+              {"z_max_mm", pub.z_max_mm ? nlohmann::json(*pub.z_max_mm) : nlohmann::json()},
+              {"Q", pub.Q ? nlohmann::json(*pub.Q) : nlohmann::json()}};
+          out.push_back(row);
+        }
+        std::cout << out.dump(2) << "\n";
+        return kExitOk;
+      }
+      auto optional_number = [](const auto& value, const char* format) -> std::string {
+        if (!value) {
+          return "–";
+        }
+        char text[32];
+        std::snprintf(text, sizeof text, format, static_cast<double>(*value));
+        return text;
+      };
+      auto with_error = [](double value, const std::optional<double>& error, const char* format) {
+        char text[64];
+        std::snprintf(text, sizeof text, format, value);
+        std::string out = text;
+        if (error) {
+          std::snprintf(text, sizeof text, " (%+.1f%%)", 100.0 * *error);
+          out += text;
+        }
+        return out;
+      };
+      std::cout
+          << "| case | paper n | paper z_max (mm) | paper Q | paper method n | z_max (mm) | Q "
+             "| exact method n | z_max (mm) | Q |\n"
+             "|---|---|---|---|---|---|---|---|---|---|\n";
+      for (std::size_t i = 0; i < presets.size(); ++i) {
+        const PublishedResult& pub = presets[i].published;
+        std::cout << "| " << presets[i].name << " | " << optional_number(pub.n, "%.0f") << " | "
+                  << optional_number(pub.z_max_mm, "%g") << " | " << optional_number(pub.Q, "%.2f");
+        for (int m = 0; m < 2; ++m) {
+          const PublishedComparison& c = rows[static_cast<std::size_t>(m)][i];
+          std::cout << " | " << c.solution.n << " | "
+                    << with_error(c.solution.z_max_mm, c.z_error, "%.1f") << " | "
+                    << with_error(c.solution.Q, c.Q_error, "%.3f");
+        }
+        std::cout << " |\n";
+      }
+      std::cout << "\n";
+      for (int m = 0; m < 2; ++m) {
+        const ComparisonSummary sum = summarize(rows[static_cast<std::size_t>(m)]);
+        std::printf(
+            "%s method: n exact in %d of %d rows, within ±1 in %d; |z_max error| median %.1f%%, "
+            "max %.1f%%; |Q error| median %.1f%%, max %.1f%%\n",
+            m == 0 ? "paper" : "exact", sum.n_exact, sum.rows_with_n, sum.n_within_one,
+            100 * sum.median_abs_z_error, 100 * sum.max_abs_z_error, 100 * sum.median_abs_Q_error,
+            100 * sum.max_abs_Q_error);
       }
       return kExitOk;
     });

@@ -13,6 +13,7 @@ using Command = std::function<int()>;
 
 Command add_solve_command(CLI::App& app);
 Command add_export_command(CLI::App& app);
+Command add_compare_command(CLI::App& app);
 
 // `foldlab` with no command and no display: the default preset solved and printed as a table.
 int run_default_headless();

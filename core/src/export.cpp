@@ -19,11 +19,20 @@ std::string xml_escape(const std::string& text) {
   std::string out;
   for (char c : text) {
     switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      default:
+        out += c;
     }
   }
   return out;
@@ -109,7 +118,8 @@ std::string fold_lines_to_svg(const FoldLines& lines, const Solution& s, const s
 
   // Axes and ticks in mm.
   out += printf_string(
-      "<rect x=\"%.1f\" y=\"%.1f\" width=\"%.1f\" height=\"%.1f\" fill=\"none\" stroke=\"#888\"/>\n",
+      "<rect x=\"%.1f\" y=\"%.1f\" width=\"%.1f\" height=\"%.1f\" fill=\"none\" "
+      "stroke=\"#888\"/>\n",
       margin_left, margin_top, plot_w, plot_h);
   const double x_step = tick_step(x_max - x_min, 8);
   for (double x = std::ceil(x_min / x_step) * x_step; x <= x_max; x += x_step) {

@@ -41,8 +41,8 @@ std::vector<Eigen::Vector2d> sample_by_arc_length(const std::vector<Eigen::Vecto
       ++segment;
     }
     const double length = cumulative[segment] - cumulative[segment - 1];
-    const double t = length > 0.0 ? std::clamp((target - cumulative[segment - 1]) / length, 0.0, 1.0)
-                                  : 0.0;
+    const double t =
+        length > 0.0 ? std::clamp((target - cumulative[segment - 1]) / length, 0.0, 1.0) : 0.0;
     samples.push_back(polyline[segment - 1] + t * (polyline[segment] - polyline[segment - 1]));
   }
   return samples;
@@ -85,7 +85,8 @@ DeformedGrid deformed_grid(const Solution& s, const Parameters& p, int nx, int n
 
   std::vector<Eigen::Vector2d> zigzag = central_zigzag(s);
   if (zigzag.empty()) {
-    zigzag = {Eigen::Vector2d(s.sag_amplitude_mm, 0.0), Eigen::Vector2d(s.sag_amplitude_mm + h, 0.0)};
+    zigzag = {Eigen::Vector2d(s.sag_amplitude_mm, 0.0),
+              Eigen::Vector2d(s.sag_amplitude_mm + h, 0.0)};
   }
   // Every column is the central fibre scaled by cos(pi x/l), so the rows are sampled once.
   const std::vector<Eigen::Vector2d> rows = sample_by_arc_length(zigzag, grid.ny);

@@ -3,6 +3,7 @@
 #include <fcntl.h>
 #include <unistd.h>
 
+#include <atomic>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -11,8 +12,10 @@
 namespace foldlab {
 
 void write_file_atomically(const std::filesystem::path& path, std::string_view contents) {
+  // Unique per process and per call, so concurrent saves of one path never share a temporary.
+  static std::atomic<unsigned> counter{0};
   std::filesystem::path temporary = path;
-  temporary += ".tmp." + std::to_string(::getpid());
+  temporary += ".tmp." + std::to_string(::getpid()) + "." + std::to_string(counter++);
   auto fail = [&](const std::string& what, int error) {
     std::error_code ignored;
     std::filesystem::remove(temporary, ignored);
@@ -42,6 +45,12 @@ void write_file_atomically(const std::filesystem::path& path, std::string_view c
   }
   if (std::rename(temporary.c_str(), path.c_str()) != 0) {
     fail("could not replace the file", errno);
+  }
+  // The rename itself is durable only once the directory entry is on disk.
+  const std::filesystem::path parent = path.has_parent_path() ? path.parent_path() : ".";
+  if (const int dir = ::open(parent.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC); dir >= 0) {
+    ::fsync(dir);
+    ::close(dir);
   }
 }
 

@@ -108,8 +108,12 @@ std::string format_issues(const std::vector<ValidationIssue>& issues) {
   return out;
 }
 
-std::string_view to_string(Method m) { return m == Method::paper ? "paper" : "exact"; }
-std::string_view to_string(SpanRule r) { return r == SpanRule::L_minus_d ? "L-d" : "L-2d"; }
+std::string_view to_string(Method m) {
+  return m == Method::paper ? "paper" : "exact";
+}
+std::string_view to_string(SpanRule r) {
+  return r == SpanRule::L_minus_d ? "L-d" : "L-2d";
+}
 std::string_view to_string(IntRounding r) {
   return r == IntRounding::floor ? "floor" : "nearest";
 }

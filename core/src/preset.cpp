@@ -38,7 +38,9 @@ const char* json_pointer_for(const std::string& field) {
   return "";
 }
 
-std::string type_name(const json& v) { return v.is_null() ? "null" : v.type_name(); }
+std::string type_name(const json& v) {
+  return v.is_null() ? "null" : v.type_name();
+}
 
 // Reads one object's fields, collecting every problem instead of stopping at the first.
 class Reader {
@@ -99,8 +101,10 @@ class Reader {
       problem(pointer + "/" + key, "expected a whole number, got " + type_name(v) + " " + v.dump());
       return;
     }
-    const auto value = v.get<long long>();
-    if (value < -1'000'000'000LL || value > 1'000'000'000LL) {
+    // Unsigned values above 2^63 - 1 would wrap in get<long long>(): range-check them first.
+    const bool too_large = v.is_number_unsigned() && v.get<unsigned long long>() > 1'000'000'000ULL;
+    const auto value = too_large ? 0LL : v.get<long long>();
+    if (too_large || value < -1'000'000'000LL || value > 1'000'000'000LL) {
       problem(pointer + "/" + key, "whole number " + v.dump() + " is out of range");
       return;
     }
@@ -157,8 +161,9 @@ Preset preset_from_json(const json& j, const std::string& origin) {
   std::vector<std::string> problems;
   Reader r(origin, problems);
   Preset preset;
-  if (!r.object(j, "", {"foldlab_preset", "name", "description", "source", "fabric", "hanging",
-                        "model", "published"})) {
+  if (!r.object(j, "",
+                {"foldlab_preset", "name", "description", "source", "fabric", "hanging", "model",
+                 "published"})) {
     throw PresetError(join_lines(problems));
   }
   if (!j.contains("foldlab_preset")) {
@@ -177,9 +182,9 @@ Preset preset_from_json(const json& j, const std::string& origin) {
   Parameters& p = preset.parameters;
   if (!j.contains("fabric")) {
     r.problem("/fabric", "missing (an object with thickness_mm, youngs_modulus_MPa, ...)");
-  } else if (const json& f = j.at("fabric");
-             r.object(f, "/fabric",
-                      {"thickness_mm", "youngs_modulus_MPa", "weight_N_per_mm2", "poisson_ratio"})) {
+  } else if (const json& f = j.at("fabric"); r.object(
+                 f, "/fabric",
+                 {"thickness_mm", "youngs_modulus_MPa", "weight_N_per_mm2", "poisson_ratio"})) {
     r.number(f, "/fabric", "thickness_mm", p.fabric.thickness_mm, true);
     r.number(f, "/fabric", "youngs_modulus_MPa", p.fabric.youngs_modulus_MPa, true);
     r.number(f, "/fabric", "weight_N_per_mm2", p.fabric.weight_N_per_mm2, true);
@@ -227,6 +232,16 @@ Preset preset_from_json(const json& j, const std::string& origin) {
         r.number(pub, "/published", "Q", Q, false);
         preset.published.Q = Q;
       }
+      if (preset.published.n && *preset.published.n < 0) {
+        r.problem("/published/n", "a number of wrinkles is >= 0");
+      }
+      if (preset.published.z_max_mm && !(*preset.published.z_max_mm >= 0.0)) {
+        r.problem("/published/z_max_mm", "an out-of-plane depth is >= 0");
+      }
+      if (preset.published.Q && !(*preset.published.Q > 1.0)) {
+        r.problem("/published/Q",
+                  "a ratio of consecutive amplitudes is > 1 (leave out a misprint)");
+      }
       if (problems.size() != before) {
         preset.published = {};
       }
@@ -247,7 +262,8 @@ Preset preset_from_text(const std::string& text, const std::string& origin) {
   json j;
   try {
     j = json::parse(text);
-  } catch (const json::parse_error& e) {
+  } catch (const json::exception& e) {
+    // parse_error, and out_of_range for a number no double holds (e.g. 1e400).
     throw PresetError(origin + ": not valid JSON: " + e.what());
   }
   return preset_from_json(j, origin);
@@ -279,9 +295,12 @@ json preset_to_json(const Preset& preset) {
         {"max_iterations", p.model.max_iterations}}},
   };
   json published = json::object();
-  if (preset.published.n) published["n"] = *preset.published.n;
-  if (preset.published.z_max_mm) published["z_max_mm"] = *preset.published.z_max_mm;
-  if (preset.published.Q) published["Q"] = *preset.published.Q;
+  if (preset.published.n)
+    published["n"] = *preset.published.n;
+  if (preset.published.z_max_mm)
+    published["z_max_mm"] = *preset.published.z_max_mm;
+  if (preset.published.Q)
+    published["Q"] = *preset.published.Q;
   if (!published.empty()) {
     j["published"] = published;
   }
@@ -289,6 +308,10 @@ json preset_to_json(const Preset& preset) {
 }
 
 Preset load_preset(const std::filesystem::path& path) {
+  std::error_code error;
+  if (std::filesystem::exists(path, error) && !std::filesystem::is_regular_file(path, error)) {
+    throw PresetError(path.string() + ": cannot open for reading: not a regular file");
+  }
   std::ifstream in(path, std::ios::binary);
   if (!in) {
     throw PresetError(path.string() + ": cannot open for reading");

@@ -12,8 +12,8 @@ std::string line(const char* label, const char* symbol, double value, const char
   char number[64];
   std::snprintf(number, sizeof number, format, value);
   char out[160];
-  std::snprintf(out, sizeof out, "  %-34s %-6s %14s%s%s\n", label, symbol, number,
-                *unit ? " " : "", unit);
+  std::snprintf(out, sizeof out, "  %-34s %-6s %14s%s%s\n", label, symbol, number, *unit ? " " : "",
+                unit);
   return out;
 }
 
@@ -94,7 +94,8 @@ std::string solution_table(const Solution& s, const Parameters& p, const std::st
     const std::size_t shown = std::min<std::size_t>(s.a_mm.size(), 40);
     for (std::size_t i = 0; i < shown; ++i) {
       char cell[48];
-      std::snprintf(cell, sizeof cell, "    a_%-3zu %10.2f%s", i, s.a_mm[i], (i % 4 == 3) ? "\n" : "");
+      std::snprintf(cell, sizeof cell, "    a_%-3zu %10.2f%s", i, s.a_mm[i],
+                    (i % 4 == 3) ? "\n" : "");
       out += cell;
     }
     if (shown % 4 != 0) {

@@ -4,25 +4,82 @@
 #include <cmath>
 
 namespace foldlab {
+namespace {
+
+enum class Kind { number, whole_number, stiffness_K, method, span_rule, int_rounding };
+
+// The one table of keys: help texts, parsing and the field each key sets all come from here.
+struct Binding {
+  SettingKey key;
+  Kind kind;
+  double& (*number)(Parameters&) = nullptr;     // for Kind::number
+  int& (*whole_number)(Parameters&) = nullptr;  // for Kind::whole_number
+};
+
+const std::vector<Binding>& bindings() {
+  static const std::vector<Binding> table = {
+      {{"t", "mm", "fabric thickness"},
+       Kind::number,
+       [](Parameters& p) -> double& { return p.fabric.thickness_mm; }},
+      {{"E", "MPa", "Young's modulus"},
+       Kind::number,
+       [](Parameters& p) -> double& { return p.fabric.youngs_modulus_MPa; }},
+      {{"w", "N/mm²", "weight per area (1.5e-6 N/mm² = 150 g/m²)"},
+       Kind::number,
+       [](Parameters& p) -> double& { return p.fabric.weight_N_per_mm2; }},
+      {{"nu", "", "Poisson's ratio"},
+       Kind::number,
+       [](Parameters& p) -> double& { return p.fabric.poisson_ratio; }},
+      {{"h", "mm", "height of the cloth at the centre"},
+       Kind::number,
+       [](Parameters& p) -> double& { return p.hanging.height_mm; }},
+      {{"L", "mm", "length of the upper edge (width)"},
+       Kind::number,
+       [](Parameters& p) -> double& { return p.hanging.length_mm; }},
+      {{"d", "mm", "inward displacement of each support"},
+       Kind::number,
+       [](Parameters& p) -> double& { return p.hanging.support_displacement_mm; }},
+      {{"K", "", "c/(1-nu²) of eq. 7 (sets c at the current nu)"}, Kind::stiffness_K},
+      {{"c", "", "load-condition constant of eq. 7"},
+       Kind::number,
+       [](Parameters& p) -> double& { return p.model.load_constant_c; }},
+      {{"method", "", "paper | exact"}, Kind::method},
+      {{"span_rule", "", "L-d | L-2d: how the span l follows from L and d"}, Kind::span_rule},
+      {{"int_rounding", "", "nearest | floor: Int[] of eq. 10"}, Kind::int_rounding},
+      {{"simpson_intervals", "", "paper method: Simpson intervals for eq. 8 (even)"},
+       Kind::whole_number,
+       nullptr,
+       [](Parameters& p) -> int& { return p.model.simpson_intervals; }},
+      {{"length_tolerance", "", "paper method: stop when |L'/L - 1| <= this"},
+       Kind::number,
+       [](Parameters& p) -> double& { return p.model.length_tolerance; }},
+      {{"max_iterations", "", "paper method: iteration cap"},
+       Kind::whole_number,
+       nullptr,
+       [](Parameters& p) -> int& { return p.model.max_iterations; }},
+  };
+  return table;
+}
+
+template <class Enum>
+std::optional<std::string> set_named(std::string_view key, std::string_view value, Enum& field,
+                                     bool (*parse)(std::string_view, Enum&), const char* allowed) {
+  if (parse(value, field)) {
+    return std::nullopt;
+  }
+  return std::string(key) + " = '" + std::string(value) + "' is not one of: " + allowed;
+}
+
+}  // namespace
 
 const std::vector<SettingKey>& setting_keys() {
-  static const std::vector<SettingKey> keys = {
-      {"t", "mm", "fabric thickness"},
-      {"E", "MPa", "Young's modulus"},
-      {"w", "N/mm²", "weight per area (1.5e-6 N/mm² = 150 g/m²)"},
-      {"nu", "", "Poisson's ratio"},
-      {"h", "mm", "height of the cloth at the centre"},
-      {"L", "mm", "length of the upper edge (width)"},
-      {"d", "mm", "inward displacement of each support"},
-      {"K", "", "c/(1-nu²) of eq. 7 (sets c at the current nu)"},
-      {"c", "", "load-condition constant of eq. 7"},
-      {"method", "", "paper | exact"},
-      {"span_rule", "", "L-d | L-2d: how the span l follows from L and d"},
-      {"int_rounding", "", "nearest | floor: Int[] of eq. 10"},
-      {"simpson_intervals", "", "paper method: Simpson intervals for eq. 8 (even)"},
-      {"length_tolerance", "", "paper method: stop when |L'/L - 1| <= this"},
-      {"max_iterations", "", "paper method: iteration cap"},
-  };
+  static const std::vector<SettingKey> keys = [] {
+    std::vector<SettingKey> out;
+    for (const Binding& b : bindings()) {
+      out.push_back(b.key);
+    }
+    return out;
+  }();
   return keys;
 }
 
@@ -38,59 +95,49 @@ std::optional<double> parse_number(std::string_view text) {
 
 std::optional<std::string> apply_setting(Parameters& p, std::string_view key,
                                          std::string_view value) {
-  const std::string quoted = "'" + std::string(value) + "'";
-  auto named = [&](auto parse, auto& field, const char* allowed) -> std::optional<std::string> {
-    if (parse(value, field)) {
-      return std::nullopt;
-    }
-    return std::string(key) + " = " + quoted + " is not one of: " + allowed;
-  };
-  if (key == "method") {
-    return named(parse_method, p.model.method, "paper, exact");
+  const Binding* binding = nullptr;
+  for (const Binding& b : bindings()) {
+    binding = b.key.key == key ? &b : binding;
   }
-  if (key == "span_rule") {
-    return named(parse_span_rule, p.model.span_rule, "L-d, L-2d");
-  }
-  if (key == "int_rounding") {
-    return named(parse_int_rounding, p.model.int_rounding, "nearest, floor");
-  }
-  const std::optional<double> number = parse_number(value);
-  double* target = nullptr;
-  if (key == "t") target = &p.fabric.thickness_mm;
-  else if (key == "E") target = &p.fabric.youngs_modulus_MPa;
-  else if (key == "w") target = &p.fabric.weight_N_per_mm2;
-  else if (key == "nu") target = &p.fabric.poisson_ratio;
-  else if (key == "h") target = &p.hanging.height_mm;
-  else if (key == "L") target = &p.hanging.length_mm;
-  else if (key == "d") target = &p.hanging.support_displacement_mm;
-  else if (key == "c") target = &p.model.load_constant_c;
-  else if (key == "length_tolerance") target = &p.model.length_tolerance;
-  const bool integer_key = key == "simpson_intervals" || key == "max_iterations";
-  if (target == nullptr && !integer_key && key != "K") {
+  if (binding == nullptr) {
     std::string known;
     for (const SettingKey& k : setting_keys()) {
       known += (known.empty() ? "" : ", ") + std::string(k.key);
     }
     return "unknown key '" + std::string(key) + "' (known: " + known + ")";
   }
-  if (!number) {
-    return std::string(key) + " = " + quoted + " is not a number";
+  switch (binding->kind) {
+    case Kind::method:
+      return set_named(key, value, p.model.method, parse_method, "paper, exact");
+    case Kind::span_rule:
+      return set_named(key, value, p.model.span_rule, parse_span_rule, "L-d, L-2d");
+    case Kind::int_rounding:
+      return set_named(key, value, p.model.int_rounding, parse_int_rounding, "nearest, floor");
+    default:
+      break;
   }
-  if (key == "K") {
-    set_stiffness_constant_K(p, *number);
-  } else if (integer_key) {
-    if (*number != std::floor(*number) || std::abs(*number) > 1e9) {
-      return std::string(key) + " = " + quoted + " must be a whole number";
-    }
-    (key == "simpson_intervals" ? p.model.simpson_intervals : p.model.max_iterations) =
-        static_cast<int>(*number);
-  } else {
-    *target = *number;
+  const std::optional<double> number = parse_number(value);
+  if (!number) {
+    return std::string(key) + " = '" + std::string(value) + "' is not a number";
+  }
+  switch (binding->kind) {
+    case Kind::stiffness_K:
+      set_stiffness_constant_K(p, *number);
+      break;
+    case Kind::whole_number:
+      if (*number != std::floor(*number) || std::abs(*number) > 1e9) {
+        return std::string(key) + " = '" + std::string(value) + "' must be a whole number";
+      }
+      binding->whole_number(p) = static_cast<int>(*number);
+      break;
+    default:
+      binding->number(p) = *number;
   }
   return std::nullopt;
 }
 
-std::vector<std::string> apply_assignments(Parameters& p, const std::vector<std::string>& assignments) {
+std::vector<std::string> apply_assignments(Parameters& p,
+                                           const std::vector<std::string>& assignments) {
   std::vector<std::string> errors;
   std::vector<std::pair<std::string, std::string>> deferred;
   for (const std::string& assignment : assignments) {

@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "foldlab/equations.hpp"
+#include "root_finding.hpp"
 
 namespace foldlab {
 namespace {
@@ -130,52 +131,17 @@ Solution solve_paper(const Parameters& p) {
 
 // Exact method: for a given n, a_n in (0, A) with z² = A² - a_n² such that eq. 9 holds.
 // F(a_n) = fibre length - h is positive as a_n -> 0 (a_0 > h) and equals 0.01 h - A < 0 at a_n = A,
-// so a root is bracketed; safeguarded Newton with the analytic derivative finds it.
+// so a root is bracketed and Brent's method finds it.
 double upper_amplitude_for_count(const Setup& u, int n) {
   const double A2 = u.sag * u.sag;
-  double lo = 0.0;
-  double hi = u.sag;
-  // Guess: equal a-differences (a_0 - A)/n give z from n sqrt(delta² + 4z²) = h.
-  const double drop = u.a0 - u.sag;
-  const double z_guess = std::sqrt(std::max(0.0, u.h * u.h - drop * drop)) / (2.0 * n);
-  double an = z_guess < u.sag ? std::sqrt(A2 - z_guess * z_guess) : 0.5 * u.sag;
-  an = std::clamp(an, 1e-3 * u.sag, u.sag * (1.0 - 1e-12));
-  const double inv_n = 1.0 / n;
-  for (int iteration = 0; iteration < 200; ++iteration) {
-    const double Q = std::exp(std::log(u.a0 / an) * inv_n);
-    const double shrink = 1.0 / Q;
-    const double four_z2 = 4.0 * std::max(0.0, A2 - an * an);
-    double a_prev = u.a0;  // a_{i-1}
-    double length = 0.0;
-    double slope = 0.0;
-    for (int i = 1; i <= n; ++i) {
-      const double a_i = a_prev * shrink;
-      const double delta = a_prev - a_i;
-      const double delta_slope = ((i - 1) * a_prev - i * a_i) * inv_n / an;
-      const double term = std::sqrt(delta * delta + four_z2);
-      length += term;
-      slope += (delta * delta_slope - 4.0 * an) / term;
-      a_prev = a_i;
-    }
-    const double F = length - u.h;
-    if (F > 0.0) {
-      lo = an;
-    } else {
-      hi = an;
-    }
-    if (std::abs(F) <= 1e-14 * u.h) {
-      return an;
-    }
-    double next = slope < 0.0 ? an - F / slope : 0.5 * (lo + hi);
-    if (!(next > lo && next < hi)) {
-      next = 0.5 * (lo + hi);
-    }
-    if (std::abs(next - an) <= 1e-16 * an) {
-      return next;
-    }
-    an = next;
-  }
-  return an;
+  auto F = [&](double an) {
+    const double Q = std::exp(std::log(u.a0 / an) / n);
+    return fibre_length(u.a0, Q, n, std::sqrt(std::max(0.0, A2 - an * an))) - u.h;
+  };
+  // Near a_n -> 0, Q blows up; start the bracket where Q^n = 1e12 (F is still positive there).
+  const double lo = u.a0 * 1e-12 < u.sag ? u.a0 * 1e-12 : 0.5 * u.sag;
+  const double hi = u.sag;
+  return detail::brent_root(F, lo, hi, F(lo), F(hi), 1e-15);
 }
 
 Solution solve_exact(const Parameters& p) {
@@ -277,7 +243,9 @@ std::string describe(const Solution& s, const Parameters& p) {
     case Regime::wrinkled:
       break;
     case Regime::no_slack:
-      text = "No slack: d = 0 so the supports span the whole upper edge (l = L); the cloth hangs flat.";
+      text =
+          "No slack: d = 0 so the supports span the whole upper edge (l = L); the cloth hangs "
+          "flat.";
       break;
     case Regime::stiff:
       text = format(

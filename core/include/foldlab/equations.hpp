@@ -7,7 +7,8 @@
 namespace foldlab {
 
 // Complete elliptic integrals of the first and second kind, K(m) and E(m), parameter m = k² in
-// [0, 1), by the arithmetic-geometric mean (quadratic convergence: about 5 steps to full precision).
+// [0, 1), by the arithmetic-geometric mean (quadratic convergence: about 5 steps to full
+// precision).
 struct EllipticKE {
   double K;
   double E;

@@ -12,9 +12,11 @@
 
 namespace foldlab {
 
-// Sign of the out-of-plane offset of wrinkle line i (eq. 4): +1 for even i (a_0, the lower boundary,
-// is a positive fold), -1 for odd i (the paper draws these negative folds red).
-inline int fold_sign(int i) { return i % 2 == 0 ? 1 : -1; }
+// Sign of the out-of-plane offset of wrinkle line i (eq. 4): +1 for even i (a_0, the lower
+// boundary, is a positive fold), -1 for odd i (the paper draws these negative folds red).
+inline int fold_sign(int i) {
+  return i % 2 == 0 ? 1 : -1;
+}
 
 // Above this many lines a drawing shows every stride-th line only (the solve keeps every fold).
 inline constexpr int kMaxDrawnFoldLines = 1000;

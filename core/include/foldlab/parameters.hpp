@@ -9,7 +9,8 @@
 namespace foldlab {
 
 // c calibrated on Tables 1-2 of the paper with nu = 0.3, so K = c / (1 - nu²) = 29.56: the middle
-// (geometric mean) of the widest band of c that gets the most rows' n exactly (README, "Calibration").
+// (geometric mean) of the widest band of c that gets the most rows' n exactly (README,
+// "Calibration").
 inline constexpr double kCalibratedLoadConstantC = 26.9;
 inline constexpr double kDefaultPoissonRatio = 0.3;
 
@@ -21,9 +22,9 @@ struct Fabric {
 };
 
 struct Hanging {
-  double height_mm = 1400.0;                 // h: vertical extent at the centre
-  double length_mm = 1400.0;                 // L: initial length of the upper edge
-  double support_displacement_mm = 100.0;    // d: inward displacement of each support
+  double height_mm = 1400.0;               // h: vertical extent at the centre
+  double length_mm = 1400.0;               // L: initial length of the upper edge
+  double support_displacement_mm = 100.0;  // d: inward displacement of each support
 };
 
 enum class Method { paper, exact };
@@ -39,9 +40,9 @@ struct ModelSettings {
   double load_constant_c = kCalibratedLoadConstantC;
   SpanRule span_rule = SpanRule::L_minus_d;
   IntRounding int_rounding = IntRounding::nearest;
-  int simpson_intervals = 20;       // paper method: composite Simpson intervals for eq. 8
-  double length_tolerance = 0.05;   // paper method: stop when |L'/L - 1| <= this
-  int max_iterations = 200;         // paper method: iteration cap
+  int simpson_intervals = 20;      // paper method: composite Simpson intervals for eq. 8
+  double length_tolerance = 0.05;  // paper method: stop when |L'/L - 1| <= this
+  int max_iterations = 200;        // paper method: iteration cap
 };
 
 struct Parameters {

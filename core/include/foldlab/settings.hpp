@@ -28,7 +28,8 @@ std::optional<std::string> apply_setting(Parameters& p, std::string_view key,
 
 // Applies "KEY=VALUE" assignments in order, except that every K comes after all the others
 // (so `--set K=30 --set nu=0.2` means K = 30 at nu = 0.2). Returns every error at once.
-std::vector<std::string> apply_assignments(Parameters& p, const std::vector<std::string>& assignments);
+std::vector<std::string> apply_assignments(Parameters& p,
+                                           const std::vector<std::string>& assignments);
 
 // Strict number parsing: the whole text must be one finite decimal number.
 std::optional<double> parse_number(std::string_view text);

@@ -26,10 +26,10 @@ inline constexpr int kMaxWrinkles = 10'000'000;
 struct Solution {
   Method method = Method::paper;
   Regime regime = Regime::no_slack;
-  int n = 0;                       // number of wrinkles
-  double Q = 1.0;                  // (a_0/a_n)^(1/n), the ratio the fold amplitudes actually have
-  std::optional<double> Q7;        // root of eq. 7; none in the stiff regime
-  double stress_ratio = 0.0;       // s = K E t³ / (w h l²) of eq. 7
+  int n = 0;                  // number of wrinkles
+  double Q = 1.0;             // (a_0/a_n)^(1/n), the ratio the fold amplitudes actually have
+  std::optional<double> Q7;   // root of eq. 7; none in the stiff regime
+  double stress_ratio = 0.0;  // s = K E t³ / (w h l²) of eq. 7
   double z_max_mm = 0.0;
   std::vector<double> a_mm;        // a_0 (lower boundary) .. a_n (upper edge); empty when n = 0
   double span_mm = 0.0;            // l

@@ -1,0 +1,389 @@
+// End-to-end tests of the foldlab executable: run it as a user or a script would and check the exit
+// status, stdout and stderr.
+#include <fcntl.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+#include "temp_dir.hpp"
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+namespace {
+
+const std::string kExecutable = FOLDLAB_EXECUTABLE;
+const fs::path kPresetsDir = FOLDLAB_PRESETS_DIR;
+const std::string kH900 = (kPresetsDir / "paper-table1-h900.json").string();
+// The name written in presets/paper-table1-h1400.json, the built-in default.
+const std::string kDefaultPresetName = "Table 1, h = 1400 mm (default)";
+
+struct RunResult {
+  int exit_status = -1;  // the exit code, or 128 + signal number if killed by a signal
+  std::string out;
+  std::string err;
+};
+
+std::string read_file(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
+bool contains(const std::string& haystack, const std::string& needle) {
+  return haystack.find(needle) != std::string::npos;
+}
+
+std::vector<std::string> split_lines(const std::string& text) {
+  std::vector<std::string> lines;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) {
+    lines.push_back(line);
+  }
+  return lines;
+}
+
+bool starts_with(const std::string& s, const std::string& prefix) {
+  return s.rfind(prefix, 0) == 0;
+}
+
+// A temporary directory per test, removed afterwards.
+class CliTest : public foldlab::testing::TempDirTest {
+ protected:
+  CliTest() : TempDirTest("foldlab_cli_") {}
+
+  // Runs foldlab with `args` (no shell), DISPLAY unset, stdout and stderr captured separately
+  // through files in the test's directory.
+  RunResult run(const std::vector<std::string>& args) {
+    const fs::path out_path = dir_ / ".stdout";
+    const fs::path err_path = dir_ / ".stderr";
+    RunResult result;
+    const pid_t pid = ::fork();
+    if (pid < 0) {
+      ADD_FAILURE() << "fork failed";
+      return result;
+    }
+    if (pid == 0) {
+      const int out_fd = ::open(out_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+      const int err_fd = ::open(err_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+      if (out_fd < 0 || err_fd < 0 || ::dup2(out_fd, STDOUT_FILENO) < 0 ||
+          ::dup2(err_fd, STDERR_FILENO) < 0) {
+        ::_exit(126);
+      }
+      ::close(out_fd);
+      ::close(err_fd);
+      ::unsetenv("DISPLAY");
+      ::unsetenv("WAYLAND_DISPLAY");
+      std::vector<char*> argv;
+      argv.push_back(const_cast<char*>(kExecutable.c_str()));
+      for (const std::string& a : args) {
+        argv.push_back(const_cast<char*>(a.c_str()));
+      }
+      argv.push_back(nullptr);
+      ::execv(kExecutable.c_str(), argv.data());
+      ::_exit(127);
+    }
+    int status = 0;
+    while (::waitpid(pid, &status, 0) < 0) {
+      if (errno != EINTR) {
+        ADD_FAILURE() << "waitpid failed";
+        return result;
+      }
+    }
+    if (WIFEXITED(status)) {
+      result.exit_status = WEXITSTATUS(status);
+    } else if (WIFSIGNALED(status)) {
+      result.exit_status = 128 + WTERMSIG(status);
+    }
+    result.out = read_file(out_path);
+    result.err = read_file(err_path);
+    fs::remove(out_path);
+    fs::remove(err_path);
+    return result;
+  }
+
+  // `solve ... --json`, expected to succeed; returns the parsed object.
+  json solve_json(std::vector<std::string> args) {
+    args.insert(args.begin(), "solve");
+    args.push_back("--json");
+    const RunResult r = run(args);
+    EXPECT_EQ(r.exit_status, 0) << r.err;
+    json j;
+    try {
+      j = json::parse(r.out);
+    } catch (const json::parse_error& e) {
+      ADD_FAILURE() << "stdout is not JSON: " << e.what() << "\n" << r.out;
+    }
+    return j;
+  }
+
+  // Files in the test's directory, ignoring the capture files.
+  std::vector<std::string> entries() const {
+    std::vector<std::string> names;
+    for (const fs::directory_entry& e : fs::directory_iterator(dir_)) {
+      names.push_back(e.path().filename().string());
+    }
+    return names;
+  }
+};
+
+TEST_F(CliTest, SolveJsonHasEveryKeyAndAConsistentSolution) {
+  const json j = solve_json({"--preset", kH900});
+  ASSERT_TRUE(j.is_object());
+  for (const char* key : {"method", "regime", "message", "n", "Q", "Q7", "z_max_mm", "a_mm", "l_mm",
+                          "iterations", "residual_length", "residual_height"}) {
+    EXPECT_TRUE(j.contains(key)) << key;
+  }
+  EXPECT_EQ(j.at("method"), "paper");
+  EXPECT_EQ(j.at("regime"), "wrinkled");
+  const int n = j.at("n").get<int>();
+  EXPECT_GE(n, 1);
+  const json& a = j.at("a_mm");
+  ASSERT_TRUE(a.is_array());
+  ASSERT_EQ(static_cast<int>(a.size()), n + 1);
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    ASSERT_TRUE(a[i].is_number()) << i;
+    if (i > 0) {
+      EXPECT_LT(a[i].get<double>(), a[i - 1].get<double>()) << "a_" << i;
+    }
+  }
+  EXPECT_EQ(j.at("l_mm").get<double>(), 1300.0);  // l = L - d = 1400 - 100
+  EXPECT_GT(j.at("z_max_mm").get<double>(), 0.0);
+  EXPECT_GE(j.at("iterations").get<int>(), 1);
+  // The inputs echo the preset file.
+  EXPECT_EQ(j.at("inputs").at("height_mm").get<double>(), 900.0);
+  EXPECT_EQ(j.at("inputs").at("length_mm").get<double>(), 1400.0);
+}
+
+TEST_F(CliTest, ExactMethodSolvesToMachinePrecision) {
+  const json j = solve_json({"--preset", kH900, "--method", "exact"});
+  EXPECT_EQ(j.at("method"), "exact");
+  EXPECT_LT(std::abs(j.at("residual_length").get<double>()), 1e-10);
+  EXPECT_LT(std::abs(j.at("residual_height").get<double>()), 1e-10);
+  EXPECT_EQ(static_cast<int>(j.at("a_mm").size()), j.at("n").get<int>() + 1);
+}
+
+TEST_F(CliTest, ZeroDisplacementHasNoSlack) {
+  const json j = solve_json({"--preset", kH900, "--set", "d=0"});
+  EXPECT_EQ(j.at("regime"), "no_slack");
+  EXPECT_EQ(j.at("n").get<int>(), 0);
+  EXPECT_EQ(j.at("l_mm").get<double>(), 1400.0);
+}
+
+TEST_F(CliTest, DisplacementOfHalfTheLengthIsInvalidInput) {
+  const RunResult r = run({"solve", "--preset", kH900, "--set", "d=700", "--json"});
+  EXPECT_EQ(r.exit_status, 2);
+  EXPECT_TRUE(contains(r.err, "d_mm = 700 must be")) << r.err;
+  EXPECT_TRUE(r.out.empty()) << r.out;
+}
+
+TEST_F(CliTest, BadSettingsAreInvalidInput) {
+  const RunResult bogus = run({"solve", "--preset", kH900, "--set", "bogus=1"});
+  EXPECT_EQ(bogus.exit_status, 2);
+  EXPECT_TRUE(contains(bogus.err, "unknown key")) << bogus.err;
+  EXPECT_TRUE(bogus.out.empty()) << bogus.out;
+
+  const RunResult not_number = run({"solve", "--preset", kH900, "--set", "t=abc"});
+  EXPECT_EQ(not_number.exit_status, 2);
+  EXPECT_TRUE(contains(not_number.err, "is not a number")) << not_number.err;
+  EXPECT_TRUE(not_number.out.empty()) << not_number.out;
+
+  // Every problem at once.
+  const RunResult both = run({"solve", "--set", "bogus=1", "--set", "t=abc"});
+  EXPECT_EQ(both.exit_status, 2);
+  EXPECT_TRUE(contains(both.err, "unknown key")) << both.err;
+  EXPECT_TRUE(contains(both.err, "is not a number")) << both.err;
+}
+
+TEST_F(CliTest, UnknownMethodIsInvalidInput) {
+  const RunResult r = run({"solve", "--preset", kH900, "--method", "fast"});
+  EXPECT_EQ(r.exit_status, 2);
+  EXPECT_TRUE(contains(r.err, "fast")) << r.err;
+  EXPECT_TRUE(r.out.empty()) << r.out;
+}
+
+TEST_F(CliTest, UnknownOptionIsInvalidInput) {
+  const RunResult r = run({"solve", "--frobnicate"});
+  EXPECT_EQ(r.exit_status, 2);
+  EXPECT_TRUE(contains(r.err, "--frobnicate")) << r.err;
+
+  const RunResult command = run({"frobnicate"});
+  EXPECT_EQ(command.exit_status, 2);
+}
+
+TEST_F(CliTest, MissingPresetFileIsInvalidInputNamingTheFile) {
+  const std::string missing = (dir_ / "no-such-preset.json").string();
+  const RunResult r = run({"solve", "--preset", missing});
+  EXPECT_EQ(r.exit_status, 2);
+  EXPECT_TRUE(contains(r.err, missing)) << r.err;
+  EXPECT_TRUE(r.out.empty()) << r.out;
+}
+
+TEST_F(CliTest, InvalidPresetFileIsInvalidInputNamingTheKey) {
+  const fs::path path = dir_ / "bad.json";
+  json j = json::parse(read_file(kH900));
+  j["fabric"]["thickness_mm"] = "thin";
+  std::ofstream(path) << j.dump(2);
+  const RunResult r = run({"solve", "--preset", path.string()});
+  EXPECT_EQ(r.exit_status, 2);
+  EXPECT_TRUE(contains(r.err, path.string())) << r.err;
+  EXPECT_TRUE(contains(r.err, "/fabric/thickness_mm")) << r.err;
+}
+
+TEST_F(CliTest, SolvePrintsATableOfTheDefaultPreset) {
+  const RunResult r = run({"solve"});
+  EXPECT_EQ(r.exit_status, 0) << r.err;
+  for (const char* text : {"n", "z_max", "mm"}) {
+    EXPECT_TRUE(contains(r.out, text)) << text << "\n" << r.out;
+  }
+  EXPECT_TRUE(contains(r.out, kDefaultPresetName)) << r.out;
+  EXPECT_TRUE(contains(r.out, "wrinkled")) << r.out;
+}
+
+TEST_F(CliTest, NoArgumentsWithoutADisplayPrintsTheTable) {
+  const RunResult r = run({});
+  EXPECT_EQ(r.exit_status, 0) << r.err;
+  EXPECT_TRUE(contains(r.out, "z_max")) << r.out;
+  EXPECT_TRUE(contains(r.out, "mm")) << r.out;
+  EXPECT_TRUE(contains(r.out, kDefaultPresetName)) << r.out;
+}
+
+TEST_F(CliTest, SolveTableAndJsonAgreeOnN) {
+  const json j = solve_json({"--preset", kH900});
+  const RunResult r = run({"solve", "--preset", kH900});
+  ASSERT_EQ(r.exit_status, 0) << r.err;
+  bool found = false;
+  for (const std::string& line : split_lines(r.out)) {
+    std::istringstream words(line);
+    std::vector<std::string> w{std::istream_iterator<std::string>(words),
+                               std::istream_iterator<std::string>()};
+    // "  number of wrinkles                 n                   5"
+    if (w.size() >= 2 && w[w.size() - 2] == "n" && contains(line, "wrinkles")) {
+      found = true;
+      EXPECT_EQ(w.back(), std::to_string(j.at("n").get<int>())) << line;
+    }
+  }
+  EXPECT_TRUE(found) << r.out;
+}
+
+TEST_F(CliTest, SetKIsEchoedInTheInputs) {
+  const json j = solve_json({"--preset", kH900, "--set", "K=37.5"});
+  EXPECT_DOUBLE_EQ(j.at("inputs").at("K").get<double>(), 37.5);
+  EXPECT_NEAR(j.at("inputs").at("load_constant_c").get<double>(), 37.5 * 0.91, 1e-12);
+
+  // K applies at the Poisson ratio given on the same command line, whatever the order.
+  const json k = solve_json({"--preset", kH900, "--set", "K=37.5", "--set", "nu=0.2"});
+  EXPECT_DOUBLE_EQ(k.at("inputs").at("K").get<double>(), 37.5);
+  EXPECT_EQ(k.at("inputs").at("poisson_ratio").get<double>(), 0.2);
+  EXPECT_NEAR(k.at("inputs").at("load_constant_c").get<double>(), 37.5 * 0.96, 1e-12);
+}
+
+TEST_F(CliTest, ExportWritesObjCsvAndSvg) {
+  const json solved = solve_json({"--preset", kH900});
+  const int n = solved.at("n").get<int>();
+  ASSERT_GE(n, 1);
+
+  const fs::path obj = dir_ / "X.obj";
+  const fs::path csv = dir_ / "X.csv";
+  const fs::path svg = dir_ / "X.svg";
+  const RunResult r = run({"export", "--preset", kH900, "--obj", obj.string(), "--csv",
+                           csv.string(), "--svg", svg.string(), "--grid", "16x12"});
+  ASSERT_EQ(r.exit_status, 0) << r.err;
+
+  // OBJ: 16 x 12 vertices and normals, two triangles per cell.
+  int v = 0;
+  int vn = 0;
+  int f = 0;
+  for (const std::string& line : split_lines(read_file(obj))) {
+    v += starts_with(line, "v ");
+    vn += starts_with(line, "vn ");
+    f += starts_with(line, "f ");
+  }
+  EXPECT_EQ(v, 16 * 12);
+  EXPECT_EQ(vn, 16 * 12);
+  EXPECT_EQ(f, 2 * 15 * 11);
+
+  // CSV: one line per fold, 0 (lower boundary) .. n (upper edge); odd lines are negative folds.
+  const std::vector<std::string> rows = split_lines(read_file(csv));
+  ASSERT_FALSE(rows.empty());
+  EXPECT_EQ(rows[0], "line,sign,x_mm,y_mm,z_mm");
+  std::set<int> indices;
+  for (std::size_t i = 1; i < rows.size(); ++i) {
+    std::istringstream row(rows[i]);
+    std::string line_field;
+    std::string sign_field;
+    ASSERT_TRUE(std::getline(row, line_field, ',')) << rows[i];
+    ASSERT_TRUE(std::getline(row, sign_field, ',')) << rows[i];
+    const int index = std::stoi(line_field);
+    const int sign = std::stoi(sign_field);
+    indices.insert(index);
+    EXPECT_EQ(sign, index % 2 == 1 ? -1 : 1) << rows[i];
+  }
+  std::set<int> expected;
+  for (int i = 0; i <= n; ++i) {
+    expected.insert(i);
+  }
+  EXPECT_EQ(indices, expected);
+  // The default is 201 points per fold line.
+  EXPECT_EQ(rows.size() - 1, static_cast<std::size_t>(201 * (n + 1)));
+
+  // SVG: one polyline per fold line, the negative (odd) ones red.
+  const std::string drawing = read_file(svg);
+  EXPECT_TRUE(contains(drawing, "<svg")) << drawing.substr(0, 200);
+  EXPECT_TRUE(contains(drawing, "#d62728"));
+  int polylines = 0;
+  int red_polylines = 0;
+  for (std::size_t at = drawing.find("<polyline"); at != std::string::npos;
+       at = drawing.find("<polyline", at + 1)) {
+    ++polylines;
+    const std::size_t end = drawing.find('>', at);
+    red_polylines += contains(drawing.substr(at, end - at), "#d62728");
+  }
+  EXPECT_EQ(polylines, n + 1);
+  EXPECT_EQ(red_polylines, (n + 1) / 2);
+
+  // Only the three requested files are left (no temporaries).
+  std::vector<std::string> names = entries();
+  std::sort(names.begin(), names.end());
+  EXPECT_EQ(names, (std::vector<std::string>{"X.csv", "X.obj", "X.svg"}));
+}
+
+TEST_F(CliTest, ExportNeedsAnOutput) {
+  const RunResult r = run({"export", "--preset", kH900});
+  EXPECT_EQ(r.exit_status, 2);
+  EXPECT_TRUE(contains(r.err, "--obj")) << r.err;
+}
+
+TEST_F(CliTest, ExportRejectsBadGrids) {
+  const fs::path obj = dir_ / "grid.obj";
+  for (const char* grid : {"1x5", "abc", "16", "16x", "5000x16"}) {
+    SCOPED_TRACE(grid);
+    const RunResult r = run({"export", "--obj", obj.string(), "--grid", grid});
+    EXPECT_EQ(r.exit_status, 2);
+    EXPECT_TRUE(contains(r.err, "--grid")) << r.err;
+    EXPECT_FALSE(fs::exists(obj));
+  }
+}
+
+TEST_F(CliTest, ExportIntoAMissingDirectoryFailsNamingThePath) {
+  const fs::path obj = dir_ / "no-such-dir" / "X.obj";
+  const RunResult r = run({"export", "--preset", kH900, "--obj", obj.string(), "--grid", "8x8"});
+  EXPECT_NE(r.exit_status, 0);
+  EXPECT_TRUE(contains(r.err, obj.string())) << r.err;
+  EXPECT_FALSE(fs::exists(dir_ / "no-such-dir"));
+}
+
+}  // namespace

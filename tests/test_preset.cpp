@@ -1,0 +1,504 @@
+// Presets: loading every shipped file, the JSON round trip, error messages that name the file, the
+// key and the problem, and the atomic save.
+#include "foldlab/preset.hpp"
+
+#include <unistd.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+#include "temp_dir.hpp"
+
+#include "foldlab/parameters.hpp"
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+namespace {
+
+const fs::path kPresetsDir = FOLDLAB_PRESETS_DIR;
+
+// A complete, valid preset written out by hand (independent of preset_to_json), with every model
+// setting away from its default.
+const char* const kValidPresetText = R"({
+  "foldlab_preset": 1,
+  "name": "Test case",
+  "description": "A preset written by the tests.",
+  "source": "tests/test_preset.cpp",
+  "fabric": {
+    "thickness_mm": 0.3,
+    "youngs_modulus_MPa": 120,
+    "weight_N_per_mm2": 2.5e-06,
+    "poisson_ratio": 0.25
+  },
+  "hanging": {
+    "height_mm": 1200,
+    "length_mm": 1400,
+    "support_displacement_mm": 150
+  },
+  "model": {
+    "method": "exact",
+    "load_constant_c": 31.5,
+    "span_rule": "L-2d",
+    "int_rounding": "floor",
+    "simpson_intervals": 16,
+    "length_tolerance": 0.02,
+    "max_iterations": 77
+  },
+  "published": {
+    "n": 6,
+    "z_max_mm": 51.5,
+    "Q": 1.33
+  }
+})";
+
+json valid_preset_json() {
+  return json::parse(kValidPresetText);
+}
+
+std::string read_bytes(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
+void write_bytes(const fs::path& path, const std::string& bytes) {
+  std::ofstream out(path, std::ios::binary | std::ios::trunc);
+  out << bytes;
+  ASSERT_TRUE(out.good()) << path;
+}
+
+std::vector<std::string> directory_entries(const fs::path& dir) {
+  std::vector<std::string> names;
+  for (const fs::directory_entry& entry : fs::directory_iterator(dir)) {
+    names.push_back(entry.path().filename().string());
+  }
+  return names;
+}
+
+bool contains(const std::string& haystack, const std::string& needle) {
+  return haystack.find(needle) != std::string::npos;
+}
+
+// Field-by-field comparison (no operator== exists on purpose: every field is named here).
+void expect_same_parameters(const foldlab::Parameters& a, const foldlab::Parameters& b) {
+  EXPECT_EQ(a.fabric.thickness_mm, b.fabric.thickness_mm);
+  EXPECT_EQ(a.fabric.youngs_modulus_MPa, b.fabric.youngs_modulus_MPa);
+  EXPECT_EQ(a.fabric.weight_N_per_mm2, b.fabric.weight_N_per_mm2);
+  EXPECT_EQ(a.fabric.poisson_ratio, b.fabric.poisson_ratio);
+  EXPECT_EQ(a.hanging.height_mm, b.hanging.height_mm);
+  EXPECT_EQ(a.hanging.length_mm, b.hanging.length_mm);
+  EXPECT_EQ(a.hanging.support_displacement_mm, b.hanging.support_displacement_mm);
+  EXPECT_EQ(a.model.method, b.model.method);
+  EXPECT_EQ(a.model.load_constant_c, b.model.load_constant_c);
+  EXPECT_EQ(a.model.span_rule, b.model.span_rule);
+  EXPECT_EQ(a.model.int_rounding, b.model.int_rounding);
+  EXPECT_EQ(a.model.simpson_intervals, b.model.simpson_intervals);
+  EXPECT_EQ(a.model.length_tolerance, b.model.length_tolerance);
+  EXPECT_EQ(a.model.max_iterations, b.model.max_iterations);
+}
+
+void expect_same_preset(const foldlab::Preset& a, const foldlab::Preset& b) {
+  EXPECT_EQ(a.name, b.name);
+  EXPECT_EQ(a.description, b.description);
+  EXPECT_EQ(a.source, b.source);
+  expect_same_parameters(a.parameters, b.parameters);
+  EXPECT_EQ(a.published.n, b.published.n);
+  EXPECT_EQ(a.published.z_max_mm, b.published.z_max_mm);
+  EXPECT_EQ(a.published.Q, b.published.Q);
+}
+
+// A preset whose numbers need all 17 significant digits to survive a text round trip.
+foldlab::Preset awkward_preset() {
+  foldlab::Preset p;
+  p.name = "Round trip \"quoted\" \u00e9";
+  p.description = "line one\nline two";
+  p.source = "tests";
+  p.parameters.fabric.thickness_mm = 0.1 + 0.2;
+  p.parameters.fabric.youngs_modulus_MPa = 1000.0 / 3.0;
+  p.parameters.fabric.weight_N_per_mm2 = 1.2345678901234567e-6;
+  p.parameters.fabric.poisson_ratio = 0.1 * 3.0;
+  p.parameters.hanging.height_mm = 1234.5678901234567;
+  p.parameters.hanging.length_mm = 987.65432109876543;
+  p.parameters.hanging.support_displacement_mm = 2.0 / 3.0;
+  p.parameters.model.method = foldlab::Method::exact;
+  p.parameters.model.load_constant_c = 27.123456789012345;
+  p.parameters.model.span_rule = foldlab::SpanRule::L_minus_2d;
+  p.parameters.model.int_rounding = foldlab::IntRounding::floor;
+  p.parameters.model.simpson_intervals = 34;
+  p.parameters.model.length_tolerance = 0.0123456789;
+  p.parameters.model.max_iterations = 321;
+  p.published.n = 9;
+  p.published.z_max_mm = 47.25;
+  p.published.Q = 1.0 / 0.77;
+  return p;
+}
+
+class PresetTest : public foldlab::testing::TempDirTest {
+ protected:
+  PresetTest() : TempDirTest("foldlab_preset_") {}
+
+  // Writes `j` to a file and expects load_preset to reject it; returns the message, which must
+  // name the file.
+  std::string load_error(const json& j, const std::string& file_name = "bad.json") {
+    const fs::path path = dir_ / file_name;
+    write_bytes(path, j.dump(2));
+    return load_error_from(path);
+  }
+  std::string load_error_from(const fs::path& path) {
+    try {
+      (void)foldlab::load_preset(path);
+    } catch (const foldlab::PresetError& e) {
+      const std::string message = e.what();
+      EXPECT_TRUE(contains(message, path.string())) << message;
+      return message;
+    }
+    ADD_FAILURE() << "load_preset(" << path << ") did not throw PresetError";
+    return "";
+  }
+};
+
+TEST_F(PresetTest, EveryShippedPresetLoadsAndValidates) {
+  std::set<std::string> loaded;
+  for (const fs::directory_entry& entry : fs::directory_iterator(kPresetsDir)) {
+    if (entry.path().extension() != ".json") {
+      continue;
+    }
+    SCOPED_TRACE(entry.path().string());
+    foldlab::Preset preset;
+    ASSERT_NO_THROW(preset = foldlab::load_preset(entry.path()));
+    EXPECT_FALSE(preset.name.empty());
+    const auto issues = foldlab::validate(preset.parameters);
+    EXPECT_TRUE(issues.empty()) << foldlab::format_issues(issues);
+    loaded.insert(entry.path().filename().string());
+  }
+  for (const char* name : {"paper-fig4.json", "paper-table1-h900.json", "paper-table1-h1400.json",
+                           "paper-table1-h2350.json", "paper-table2-w10.json",
+                           "paper-table2-w33.json", "paper-table2-w54.json"}) {
+    EXPECT_EQ(loaded.count(name), 1u) << name << " was not found in " << kPresetsDir;
+  }
+}
+
+TEST_F(PresetTest, ReadsEveryFieldOfAHandWrittenFile) {
+  const fs::path path = dir_ / "valid.json";
+  write_bytes(path, kValidPresetText);
+  const foldlab::Preset p = foldlab::load_preset(path);
+  EXPECT_EQ(p.name, "Test case");
+  EXPECT_EQ(p.description, "A preset written by the tests.");
+  EXPECT_EQ(p.source, "tests/test_preset.cpp");
+  EXPECT_EQ(p.parameters.fabric.thickness_mm, 0.3);
+  EXPECT_EQ(p.parameters.fabric.youngs_modulus_MPa, 120.0);
+  EXPECT_EQ(p.parameters.fabric.weight_N_per_mm2, 2.5e-6);
+  EXPECT_EQ(p.parameters.fabric.poisson_ratio, 0.25);
+  EXPECT_EQ(p.parameters.hanging.height_mm, 1200.0);
+  EXPECT_EQ(p.parameters.hanging.length_mm, 1400.0);
+  EXPECT_EQ(p.parameters.hanging.support_displacement_mm, 150.0);
+  EXPECT_EQ(p.parameters.model.method, foldlab::Method::exact);
+  EXPECT_EQ(p.parameters.model.load_constant_c, 31.5);
+  EXPECT_EQ(p.parameters.model.span_rule, foldlab::SpanRule::L_minus_2d);
+  EXPECT_EQ(p.parameters.model.int_rounding, foldlab::IntRounding::floor);
+  EXPECT_EQ(p.parameters.model.simpson_intervals, 16);
+  EXPECT_EQ(p.parameters.model.length_tolerance, 0.02);
+  EXPECT_EQ(p.parameters.model.max_iterations, 77);
+  EXPECT_EQ(p.published.n, 6);
+  EXPECT_EQ(p.published.z_max_mm, 51.5);
+  EXPECT_EQ(p.published.Q, 1.33);
+}
+
+TEST_F(PresetTest, JsonRoundTripKeepsEveryField) {
+  const foldlab::Preset original = awkward_preset();
+  const foldlab::Preset back =
+      foldlab::preset_from_json(foldlab::preset_to_json(original), "<round trip>");
+  expect_same_preset(original, back);
+
+  // Through text too, as a file would carry it.
+  const foldlab::Preset from_text =
+      foldlab::preset_from_text(foldlab::preset_to_json(original).dump(2), "<round trip text>");
+  expect_same_preset(original, from_text);
+}
+
+TEST_F(PresetTest, JsonRoundTripKeepsAbsentPublishedValuesAbsent) {
+  foldlab::Preset original = awkward_preset();
+  original.published = {};
+  original.published.n = 3;
+  const foldlab::Preset back =
+      foldlab::preset_from_json(foldlab::preset_to_json(original), "<round trip>");
+  EXPECT_EQ(back.published.n, 3);
+  EXPECT_FALSE(back.published.z_max_mm.has_value());
+  EXPECT_FALSE(back.published.Q.has_value());
+
+  original.published = {};
+  const foldlab::Preset none =
+      foldlab::preset_from_json(foldlab::preset_to_json(original), "<round trip>");
+  EXPECT_FALSE(none.published.n.has_value());
+  EXPECT_FALSE(none.published.z_max_mm.has_value());
+  EXPECT_FALSE(none.published.Q.has_value());
+}
+
+TEST_F(PresetTest, SaveThenLoadGivesTheSamePreset) {
+  const foldlab::Preset original = awkward_preset();
+  const fs::path path = dir_ / "saved.json";
+  foldlab::save_preset(original, path);
+  ASSERT_TRUE(fs::exists(path));
+  expect_same_preset(original, foldlab::load_preset(path));
+  // The file is plain JSON carrying the format version.
+  const json j = json::parse(read_bytes(path));
+  EXPECT_EQ(j.at("foldlab_preset"), 1);
+}
+
+TEST_F(PresetTest, TruncatedJsonIsNotValidJson) {
+  const std::string text = kValidPresetText;
+  const fs::path path = dir_ / "truncated.json";
+  write_bytes(path, text.substr(0, text.size() / 2));
+  const std::string message = load_error_from(path);
+  EXPECT_TRUE(contains(message, "not valid JSON")) << message;
+}
+
+// A number literal too large for a double is a malformed file like any other: it must come out as
+// a PresetError naming the file (the CLI turns only PresetError into "invalid input", exit 2).
+TEST_F(PresetTest, NumberTooLargeForADoubleIsAPresetError) {
+  std::string text = kValidPresetText;
+  const std::string from = "\"thickness_mm\": 0.3";
+  text.replace(text.find(from), from.size(), "\"thickness_mm\": 1e400");
+  const fs::path path = dir_ / "overflow.json";
+  write_bytes(path, text);
+  try {
+    (void)foldlab::load_preset(path);
+    ADD_FAILURE() << "load_preset accepted 1e400";
+  } catch (const foldlab::PresetError& e) {
+    EXPECT_TRUE(contains(e.what(), path.string())) << e.what();
+  } catch (const std::exception& e) {
+    ADD_FAILURE() << "expected PresetError, got another exception: " << e.what();
+  }
+}
+
+TEST_F(PresetTest, WrongTypeNamesTheKeyAndTheExpectedType) {
+  json j = valid_preset_json();
+  j["fabric"]["thickness_mm"] = "thin";
+  const std::string message = load_error(j);
+  EXPECT_TRUE(contains(message, "/fabric/thickness_mm")) << message;
+  EXPECT_TRUE(contains(message, "expected a number")) << message;
+}
+
+TEST_F(PresetTest, WholeNumberFieldRejectsAFraction) {
+  json j = valid_preset_json();
+  j["model"]["simpson_intervals"] = 20.5;
+  const std::string message = load_error(j);
+  EXPECT_TRUE(contains(message, "/model/simpson_intervals")) << message;
+  EXPECT_TRUE(contains(message, "whole number")) << message;
+}
+
+TEST_F(PresetTest, UnknownKeyIsNamed) {
+  json j = valid_preset_json();
+  j["fabric"]["thicknes_mm"] = j["fabric"]["thickness_mm"];
+  j["fabric"].erase("thickness_mm");
+  const std::string message = load_error(j);
+  EXPECT_TRUE(contains(message, "/fabric/thicknes_mm")) << message;
+  EXPECT_TRUE(contains(message, "unknown key")) << message;
+  // The misspelt key leaves the real one missing: both are reported.
+  EXPECT_TRUE(contains(message, "/fabric/thickness_mm")) << message;
+  EXPECT_TRUE(contains(message, "missing")) << message;
+}
+
+TEST_F(PresetTest, UnknownTopLevelKeyIsNamed) {
+  json j = valid_preset_json();
+  j["colour"] = "blue";
+  const std::string message = load_error(j);
+  EXPECT_TRUE(contains(message, "/colour")) << message;
+  EXPECT_TRUE(contains(message, "unknown key")) << message;
+}
+
+TEST_F(PresetTest, MissingRequiredKeyIsNamed) {
+  json j = valid_preset_json();
+  j["hanging"].erase("height_mm");
+  const std::string message = load_error(j);
+  EXPECT_TRUE(contains(message, "/hanging/height_mm")) << message;
+  EXPECT_TRUE(contains(message, "missing")) << message;
+
+  json k = valid_preset_json();
+  k.erase("name");
+  const std::string name_message = load_error(k, "no_name.json");
+  EXPECT_TRUE(contains(name_message, "/name")) << name_message;
+  EXPECT_TRUE(contains(name_message, "missing")) << name_message;
+
+  json m = valid_preset_json();
+  m.erase("fabric");
+  const std::string fabric_message = load_error(m, "no_fabric.json");
+  EXPECT_TRUE(contains(fabric_message, "/fabric")) << fabric_message;
+  EXPECT_TRUE(contains(fabric_message, "missing")) << fabric_message;
+}
+
+TEST_F(PresetTest, OptionalKeysMayBeLeftOut) {
+  json j = valid_preset_json();
+  j.erase("model");
+  j.erase("published");
+  j.erase("description");
+  j.erase("source");
+  j["fabric"].erase("poisson_ratio");
+  const fs::path path = dir_ / "minimal.json";
+  write_bytes(path, j.dump());
+  const foldlab::Preset p = foldlab::load_preset(path);
+  EXPECT_EQ(p.parameters.fabric.thickness_mm, 0.3);
+  EXPECT_EQ(p.parameters.fabric.poisson_ratio, 0.3);  // the documented default nu
+  EXPECT_EQ(p.parameters.model.load_constant_c, 26.9);
+  // Every model setting left out keeps its default.
+  foldlab::Parameters expected;
+  expected.fabric = p.parameters.fabric;
+  expected.hanging = p.parameters.hanging;
+  expect_same_parameters(expected, p.parameters);
+  EXPECT_FALSE(p.published.n.has_value());
+}
+
+TEST_F(PresetTest, OutOfRangeNamesTheKeyAndTheLimit) {
+  json j = valid_preset_json();
+  j["hanging"]["length_mm"] = 1400;
+  j["hanging"]["support_displacement_mm"] = 700;
+  const std::string message = load_error(j);
+  EXPECT_TRUE(contains(message, "/hanging/support_displacement_mm")) << message;
+  EXPECT_TRUE(contains(message, "d_mm = 700 must be")) << message;
+  EXPECT_TRUE(contains(message, "L/2 = 700")) << message;
+}
+
+TEST_F(PresetTest, SeveralTypeProblemsAreAllReported) {
+  json j = valid_preset_json();
+  j["fabric"]["thickness_mm"] = "thin";
+  j["hanging"]["height_mm"] = true;
+  const std::string message = load_error(j);
+  EXPECT_TRUE(contains(message, "/fabric/thickness_mm")) << message;
+  EXPECT_TRUE(contains(message, "/hanging/height_mm")) << message;
+}
+
+TEST_F(PresetTest, SeveralRangeProblemsAreAllReportedOneLineEach) {
+  json j = valid_preset_json();
+  j["fabric"]["thickness_mm"] = -1;
+  j["hanging"]["support_displacement_mm"] = 700;
+  const std::string message = load_error(j);
+  EXPECT_TRUE(contains(message, "/fabric/thickness_mm")) << message;
+  EXPECT_TRUE(contains(message, "/hanging/support_displacement_mm")) << message;
+  std::istringstream lines(message);
+  int count = 0;
+  for (std::string line; std::getline(lines, line);) {
+    ++count;
+  }
+  EXPECT_EQ(count, 2) << message;
+}
+
+TEST_F(PresetTest, WrongFormatVersionIsRejected) {
+  json j = valid_preset_json();
+  j["foldlab_preset"] = 2;
+  const std::string message = load_error(j);
+  EXPECT_TRUE(contains(message, "/foldlab_preset")) << message;
+  EXPECT_TRUE(contains(message, "format version")) << message;
+
+  json k = valid_preset_json();
+  k.erase("foldlab_preset");
+  const std::string missing = load_error(k, "no_version.json");
+  EXPECT_TRUE(contains(missing, "/foldlab_preset")) << missing;
+  EXPECT_TRUE(contains(missing, "missing")) << missing;
+}
+
+TEST_F(PresetTest, EnumFieldsListTheAllowedNames) {
+  json j = valid_preset_json();
+  j["model"]["method"] = "fast";
+  const std::string method = load_error(j, "method.json");
+  EXPECT_TRUE(contains(method, "/model/method")) << method;
+  EXPECT_TRUE(contains(method, "paper, exact")) << method;
+
+  json k = valid_preset_json();
+  k["model"]["span_rule"] = "L-3d";
+  const std::string span = load_error(k, "span.json");
+  EXPECT_TRUE(contains(span, "/model/span_rule")) << span;
+  EXPECT_TRUE(contains(span, "L-d, L-2d")) << span;
+
+  json m = valid_preset_json();
+  m["model"]["int_rounding"] = "up";
+  const std::string rounding = load_error(m, "rounding.json");
+  EXPECT_TRUE(contains(rounding, "/model/int_rounding")) << rounding;
+  EXPECT_TRUE(contains(rounding, "nearest, floor")) << rounding;
+}
+
+TEST_F(PresetTest, SaveReplacesAnExistingFileCompletely) {
+  const fs::path path = dir_ / "preset.json";
+  // Much longer than the preset, so that a write in place would leave a tail of it behind.
+  write_bytes(path, std::string(100000, 'x'));
+  const foldlab::Preset original = awkward_preset();
+  foldlab::save_preset(original, path);
+
+  const std::string bytes = read_bytes(path);
+  EXPECT_LT(bytes.size(), 100000u);
+  EXPECT_EQ(bytes.find('x' + std::string(10, 'x')), std::string::npos);
+  EXPECT_TRUE(json::accept(bytes));
+  expect_same_preset(original, foldlab::load_preset(path));
+
+  const std::vector<std::string> entries = directory_entries(dir_);
+  ASSERT_EQ(entries.size(), 1u);
+  EXPECT_EQ(entries[0], "preset.json");
+  for (const std::string& name : entries) {
+    EXPECT_FALSE(contains(name, ".tmp.")) << name;
+  }
+}
+
+TEST_F(PresetTest, SaveIntoAMissingDirectoryThrowsAndLeavesNothing) {
+  const fs::path path = dir_ / "does-not-exist" / "preset.json";
+  try {
+    foldlab::save_preset(awkward_preset(), path);
+    ADD_FAILURE() << "save_preset into a missing directory did not throw";
+  } catch (const foldlab::PresetError& e) {
+    EXPECT_TRUE(contains(e.what(), path.string())) << e.what();
+  }
+  EXPECT_FALSE(fs::exists(dir_ / "does-not-exist"));
+  EXPECT_TRUE(directory_entries(dir_).empty());
+}
+
+TEST_F(PresetTest, SaveOfInvalidParametersThrowsAndKeepsTheOldFile) {
+  const fs::path path = dir_ / "keep.json";
+  write_bytes(path, kValidPresetText);
+  const std::string before = read_bytes(path);
+
+  foldlab::Preset bad = awkward_preset();
+  bad.parameters.hanging.length_mm = 1400.0;
+  bad.parameters.hanging.support_displacement_mm = 700.0;
+  try {
+    foldlab::save_preset(bad, path);
+    ADD_FAILURE() << "save_preset of invalid parameters did not throw";
+  } catch (const foldlab::PresetError& e) {
+    EXPECT_TRUE(contains(e.what(), path.string())) << e.what();
+    EXPECT_TRUE(contains(e.what(), "d_mm = 700 must be")) << e.what();
+  }
+  EXPECT_EQ(read_bytes(path), before);
+  const std::vector<std::string> entries = directory_entries(dir_);
+  ASSERT_EQ(entries.size(), 1u);
+  EXPECT_EQ(entries[0], "keep.json");
+}
+
+TEST_F(PresetTest, LoadingAMissingFileSaysCannotOpen) {
+  const fs::path path = dir_ / "nowhere.json";
+  const std::string message = load_error_from(path);
+  EXPECT_TRUE(contains(message, "cannot open")) << message;
+}
+
+TEST_F(PresetTest, DefaultPresetIsTheTable1H1400File) {
+  const foldlab::Preset from_file = foldlab::load_preset(kPresetsDir / "paper-table1-h1400.json");
+  const foldlab::Preset& built_in = foldlab::default_preset();
+  expect_same_preset(from_file, built_in);
+  // The numbers of the paper's Table 1, h = 1400 mm row.
+  EXPECT_EQ(built_in.parameters.fabric.thickness_mm, 0.25);
+  EXPECT_EQ(built_in.parameters.fabric.youngs_modulus_MPa, 165.0);
+  EXPECT_EQ(built_in.parameters.fabric.weight_N_per_mm2, 1.5e-6);
+  EXPECT_EQ(built_in.parameters.hanging.height_mm, 1400.0);
+  EXPECT_EQ(built_in.parameters.hanging.length_mm, 1400.0);
+  EXPECT_EQ(built_in.parameters.hanging.support_displacement_mm, 100.0);
+  EXPECT_EQ(built_in.published.n, 7);
+  EXPECT_EQ(built_in.published.z_max_mm, 48.0);
+  EXPECT_EQ(built_in.published.Q, 1.29);
+}
+
+}  // namespace

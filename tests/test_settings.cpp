@@ -1,0 +1,381 @@
+// Named inputs (--set KEY=VALUE): apply_setting, apply_assignments, parse_number, and validate().
+#include "foldlab/settings.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <functional>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "foldlab/parameters.hpp"
+
+namespace {
+
+using foldlab::Parameters;
+
+bool contains(const std::string& haystack, const std::string& needle) {
+  return haystack.find(needle) != std::string::npos;
+}
+
+// Every numeric input, read back as a double, so a test can check that one key changes one field.
+struct NumericField {
+  const char* key;
+  const char* name;
+  std::function<double(const Parameters&)> get;
+};
+
+std::vector<NumericField> numeric_fields() {
+  return {
+      {"t", "thickness_mm", [](const Parameters& p) { return p.fabric.thickness_mm; }},
+      {"E", "youngs_modulus_MPa", [](const Parameters& p) { return p.fabric.youngs_modulus_MPa; }},
+      {"w", "weight_N_per_mm2", [](const Parameters& p) { return p.fabric.weight_N_per_mm2; }},
+      {"nu", "poisson_ratio", [](const Parameters& p) { return p.fabric.poisson_ratio; }},
+      {"h", "height_mm", [](const Parameters& p) { return p.hanging.height_mm; }},
+      {"L", "length_mm", [](const Parameters& p) { return p.hanging.length_mm; }},
+      {"d", "support_displacement_mm",
+       [](const Parameters& p) { return p.hanging.support_displacement_mm; }},
+      {"c", "load_constant_c", [](const Parameters& p) { return p.model.load_constant_c; }},
+      {"length_tolerance", "length_tolerance",
+       [](const Parameters& p) { return p.model.length_tolerance; }},
+      {"simpson_intervals", "simpson_intervals",
+       [](const Parameters& p) { return static_cast<double>(p.model.simpson_intervals); }},
+      {"max_iterations", "max_iterations",
+       [](const Parameters& p) { return static_cast<double>(p.model.max_iterations); }},
+  };
+}
+
+void expect_unchanged_enums(const Parameters& a, const Parameters& b) {
+  EXPECT_EQ(a.model.method, b.model.method);
+  EXPECT_EQ(a.model.span_rule, b.model.span_rule);
+  EXPECT_EQ(a.model.int_rounding, b.model.int_rounding);
+}
+
+TEST(Settings, EachNumericKeySetsItsOwnFieldOnly) {
+  // Values different from every default and from each other.
+  const std::vector<std::pair<std::string, double>> cases = {
+      {"t", 0.41},
+      {"E", 222.5},
+      {"w", 3.25e-6},
+      {"nu", 0.35},
+      {"h", 1777.0},
+      {"L", 1333.0},
+      {"d", 55.5},
+      {"c", 19.75},
+      {"length_tolerance", 0.0125},
+      {"simpson_intervals", 42},
+      {"max_iterations", 99},
+  };
+  const std::vector<NumericField> fields = numeric_fields();
+  for (const auto& [key, value] : cases) {
+    SCOPED_TRACE(key);
+    const Parameters before;
+    Parameters p;
+    char text[64];
+    std::snprintf(text, sizeof text, "%.17g", value);
+    const auto error = foldlab::apply_setting(p, key, text);
+    ASSERT_FALSE(error.has_value()) << *error;
+    bool found = false;
+    for (const NumericField& f : fields) {
+      if (key == f.key) {
+        found = true;
+        EXPECT_EQ(f.get(p), value) << f.name;
+      } else {
+        EXPECT_EQ(f.get(p), f.get(before)) << f.name << " changed by " << key;
+      }
+    }
+    EXPECT_TRUE(found);
+    expect_unchanged_enums(p, before);
+  }
+}
+
+TEST(Settings, NamedKeysParseTheirNames) {
+  Parameters p;
+  EXPECT_FALSE(foldlab::apply_setting(p, "method", "exact"));
+  EXPECT_EQ(p.model.method, foldlab::Method::exact);
+  EXPECT_FALSE(foldlab::apply_setting(p, "method", "paper"));
+  EXPECT_EQ(p.model.method, foldlab::Method::paper);
+
+  EXPECT_FALSE(foldlab::apply_setting(p, "span_rule", "L-2d"));
+  EXPECT_EQ(p.model.span_rule, foldlab::SpanRule::L_minus_2d);
+  EXPECT_FALSE(foldlab::apply_setting(p, "span_rule", "L-d"));
+  EXPECT_EQ(p.model.span_rule, foldlab::SpanRule::L_minus_d);
+
+  EXPECT_FALSE(foldlab::apply_setting(p, "int_rounding", "floor"));
+  EXPECT_EQ(p.model.int_rounding, foldlab::IntRounding::floor);
+  EXPECT_FALSE(foldlab::apply_setting(p, "int_rounding", "nearest"));
+  EXPECT_EQ(p.model.int_rounding, foldlab::IntRounding::nearest);
+}
+
+TEST(Settings, NamedKeysRejectOtherNamesListingTheAllowedOnes) {
+  struct Case {
+    const char* key;
+    const char* value;
+    const char* allowed;
+  };
+  for (const Case& c :
+       {Case{"method", "fast", "paper, exact"}, Case{"method", "Exact", "paper, exact"},
+        Case{"span_rule", "L-3d", "L-d, L-2d"}, Case{"span_rule", "", "L-d, L-2d"},
+        Case{"int_rounding", "up", "nearest, floor"}}) {
+    SCOPED_TRACE(std::string(c.key) + "=" + c.value);
+    Parameters p;
+    p.model.method = foldlab::Method::exact;
+    p.model.span_rule = foldlab::SpanRule::L_minus_2d;
+    p.model.int_rounding = foldlab::IntRounding::floor;
+    const Parameters before = p;
+    const auto error = foldlab::apply_setting(p, c.key, c.value);
+    ASSERT_TRUE(error.has_value());
+    EXPECT_TRUE(contains(*error, c.allowed)) << *error;
+    EXPECT_TRUE(contains(*error, c.key)) << *error;
+    expect_unchanged_enums(p, before);
+  }
+}
+
+TEST(Settings, KSetsCAtTheCurrentPoissonRatio) {
+  Parameters p;
+  ASSERT_EQ(p.fabric.poisson_ratio, 0.3);
+  ASSERT_FALSE(foldlab::apply_setting(p, "K", "40"));
+  EXPECT_NEAR(p.model.load_constant_c, 40.0 * 0.91, 1e-12);  // c = K (1 - 0.3²)
+  EXPECT_NEAR(foldlab::stiffness_constant_K(p), 40.0, 1e-12);
+  EXPECT_EQ(p.fabric.poisson_ratio, 0.3);
+}
+
+TEST(Settings, AssignmentsApplyKAfterNuWhateverTheOrder) {
+  for (const std::vector<std::string>& order :
+       {std::vector<std::string>{"K=30", "nu=0.2"}, std::vector<std::string>{"nu=0.2", "K=30"}}) {
+    SCOPED_TRACE(order[0] + " " + order[1]);
+    Parameters p;
+    const std::vector<std::string> errors = foldlab::apply_assignments(p, order);
+    EXPECT_TRUE(errors.empty());
+    EXPECT_EQ(p.fabric.poisson_ratio, 0.2);
+    EXPECT_NEAR(foldlab::stiffness_constant_K(p), 30.0, 1e-12);
+    EXPECT_NEAR(p.model.load_constant_c, 30.0 * 0.96, 1e-12);  // c = K (1 - 0.2²)
+  }
+}
+
+TEST(Settings, AssignmentsApplyInOrderSoTheLastWins) {
+  Parameters p;
+  EXPECT_TRUE(foldlab::apply_assignments(p, {"t=0.5", "h=1000", "t=0.7"}).empty());
+  EXPECT_EQ(p.fabric.thickness_mm, 0.7);
+  EXPECT_EQ(p.hanging.height_mm, 1000.0);
+}
+
+TEST(Settings, UnknownKeyIsReported) {
+  Parameters p;
+  const Parameters before = p;
+  for (const char* key : {"bogus", "T", "thickness_mm", "k", ""}) {
+    SCOPED_TRACE(key);
+    const auto error = foldlab::apply_setting(p, key, "1");
+    ASSERT_TRUE(error.has_value());
+    EXPECT_TRUE(contains(*error, "unknown key")) << *error;
+  }
+  EXPECT_EQ(p.fabric.thickness_mm, before.fabric.thickness_mm);
+  EXPECT_EQ(p.model.load_constant_c, before.model.load_constant_c);
+}
+
+TEST(Settings, MalformedNumbersAreRejected) {
+  for (const char* value : {"1.5.3", "abc", "", "1e400", "nan", "NaN", "inf", "-inf", "12mm", " 1",
+                            "1 ", "1,5", "0x10", "--1"}) {
+    SCOPED_TRACE(std::string("'") + value + "'");
+    Parameters p;
+    const auto error = foldlab::apply_setting(p, "t", value);
+    ASSERT_TRUE(error.has_value());
+    EXPECT_TRUE(contains(*error, "is not a number")) << *error;
+    EXPECT_EQ(p.fabric.thickness_mm, 0.25);
+    EXPECT_FALSE(foldlab::parse_number(value).has_value());
+  }
+}
+
+TEST(Settings, ParseNumberAcceptsDecimalNumbers) {
+  EXPECT_EQ(foldlab::parse_number("1.5"), 1.5);
+  EXPECT_EQ(foldlab::parse_number("0"), 0.0);
+  EXPECT_EQ(foldlab::parse_number("-2e3"), -2000.0);
+  EXPECT_EQ(foldlab::parse_number("1.5e-6"), 1.5e-6);
+  EXPECT_EQ(foldlab::parse_number(".25"), 0.25);
+  EXPECT_EQ(foldlab::parse_number("700"), 700.0);
+}
+
+TEST(Settings, AssignmentWithoutEqualsSignIsNotKeyValue) {
+  Parameters p;
+  const std::vector<std::string> errors = foldlab::apply_assignments(p, {"x"});
+  ASSERT_EQ(errors.size(), 1u);
+  EXPECT_TRUE(contains(errors[0], "not KEY=VALUE")) << errors[0];
+  EXPECT_TRUE(contains(errors[0], "x")) << errors[0];
+
+  const std::vector<std::string> empty_key = foldlab::apply_assignments(p, {"=5"});
+  ASSERT_EQ(empty_key.size(), 1u);
+  EXPECT_TRUE(contains(empty_key[0], "not KEY=VALUE")) << empty_key[0];
+}
+
+TEST(Settings, SeveralErrorsAreReturnedAtOnce) {
+  Parameters p;
+  const std::vector<std::string> errors =
+      foldlab::apply_assignments(p, {"bogus=1", "t=abc", "x", "h=1200", "K=zz"});
+  ASSERT_EQ(errors.size(), 4u);
+  std::string all;
+  for (const std::string& e : errors) {
+    all += e + "\n";
+  }
+  EXPECT_TRUE(contains(all, "unknown key 'bogus'")) << all;
+  EXPECT_TRUE(contains(all, "is not a number")) << all;
+  EXPECT_TRUE(contains(all, "not KEY=VALUE")) << all;
+  EXPECT_TRUE(contains(all, "K = 'zz'")) << all;
+  // The good assignment among them still applies.
+  EXPECT_EQ(p.hanging.height_mm, 1200.0);
+}
+
+TEST(Settings, WholeNumberKeysRejectFractions) {
+  Parameters p;
+  const auto error = foldlab::apply_setting(p, "simpson_intervals", "2.5");
+  ASSERT_TRUE(error.has_value());
+  EXPECT_TRUE(contains(*error, "whole number")) << *error;
+  EXPECT_EQ(p.model.simpson_intervals, 20);
+
+  const auto iterations = foldlab::apply_setting(p, "max_iterations", "10.25");
+  ASSERT_TRUE(iterations.has_value());
+  EXPECT_TRUE(contains(*iterations, "whole number")) << *iterations;
+  EXPECT_EQ(p.model.max_iterations, 200);
+
+  EXPECT_FALSE(foldlab::apply_setting(p, "simpson_intervals", "30"));
+  EXPECT_EQ(p.model.simpson_intervals, 30);
+}
+
+TEST(Settings, EveryListedKeyIsAccepted) {
+  const std::vector<std::string> expected = {"t",
+                                             "E",
+                                             "w",
+                                             "nu",
+                                             "h",
+                                             "L",
+                                             "d",
+                                             "K",
+                                             "c",
+                                             "method",
+                                             "span_rule",
+                                             "int_rounding",
+                                             "simpson_intervals",
+                                             "length_tolerance",
+                                             "max_iterations"};
+  std::vector<std::string> listed;
+  for (const foldlab::SettingKey& k : foldlab::setting_keys()) {
+    listed.emplace_back(k.key);
+    EXPECT_FALSE(k.description.empty()) << k.key;
+    Parameters p;
+    const char* value = k.key == "method"         ? "exact"
+                        : k.key == "span_rule"    ? "L-2d"
+                        : k.key == "int_rounding" ? "floor"
+                                                  : "4";
+    const auto error = foldlab::apply_setting(p, k.key, value);
+    EXPECT_FALSE(error.has_value()) << k.key << ": " << error.value_or("");
+  }
+  EXPECT_EQ(listed, expected);
+}
+
+// validate()
+
+TEST(SettingsValidate, DefaultsAreValid) {
+  const Parameters p;
+  const auto issues = foldlab::validate(p);
+  EXPECT_TRUE(issues.empty()) << foldlab::format_issues(issues);
+}
+
+TEST(SettingsValidate, ReportsEveryProblemAtOnce) {
+  Parameters p;
+  p.fabric.thickness_mm = -1.0;
+  p.hanging.length_mm = 1400.0;
+  p.hanging.support_displacement_mm = 800.0;
+  const auto issues = foldlab::validate(p);
+  ASSERT_EQ(issues.size(), 2u) << foldlab::format_issues(issues);
+  EXPECT_EQ(issues[0].field, "t_mm");
+  EXPECT_EQ(issues[0].value, -1.0);
+  EXPECT_EQ(issues[1].field, "d_mm");
+  EXPECT_EQ(issues[1].value, 800.0);
+}
+
+TEST(SettingsValidate, HalfTheLengthIsTooFarForD) {
+  Parameters p;
+  p.hanging.length_mm = 1400.0;
+  p.hanging.support_displacement_mm = 700.0;
+  const auto issues = foldlab::validate(p);
+  ASSERT_EQ(issues.size(), 1u) << foldlab::format_issues(issues);
+  EXPECT_EQ(issues[0].field, "d_mm");
+  EXPECT_TRUE(contains(issues[0].message, "d_mm = 700 must be")) << issues[0].message;
+  EXPECT_TRUE(contains(issues[0].message, "L/2 = 700")) << issues[0].message;
+
+  // Just below L/2 and d = 0 are fine; a negative d is not.
+  p.hanging.support_displacement_mm = 699.9;
+  EXPECT_TRUE(foldlab::validate(p).empty());
+  p.hanging.support_displacement_mm = 0.0;
+  EXPECT_TRUE(foldlab::validate(p).empty());
+  p.hanging.support_displacement_mm = -1.0;
+  const auto negative = foldlab::validate(p);
+  ASSERT_EQ(negative.size(), 1u);
+  EXPECT_EQ(negative[0].field, "d_mm");
+}
+
+TEST(SettingsValidate, NaNInputsAreRejected) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  struct Case {
+    const char* field;
+    std::function<void(Parameters&)> set;
+  };
+  const std::vector<Case> cases = {
+      {"t_mm", [&](Parameters& p) { p.fabric.thickness_mm = nan; }},
+      {"E_MPa", [&](Parameters& p) { p.fabric.youngs_modulus_MPa = nan; }},
+      {"w_N_per_mm2", [&](Parameters& p) { p.fabric.weight_N_per_mm2 = nan; }},
+      {"nu", [&](Parameters& p) { p.fabric.poisson_ratio = nan; }},
+      {"h_mm", [&](Parameters& p) { p.hanging.height_mm = nan; }},
+      {"L_mm", [&](Parameters& p) { p.hanging.length_mm = nan; }},
+      {"d_mm", [&](Parameters& p) { p.hanging.support_displacement_mm = nan; }},
+      {"c", [&](Parameters& p) { p.model.load_constant_c = nan; }},
+      {"length_tolerance", [&](Parameters& p) { p.model.length_tolerance = nan; }},
+  };
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.field);
+    Parameters p;
+    c.set(p);
+    const auto issues = foldlab::validate(p);
+    ASSERT_FALSE(issues.empty());
+    bool named = false;
+    for (const foldlab::ValidationIssue& issue : issues) {
+      named = named || issue.field == c.field;
+    }
+    EXPECT_TRUE(named) << foldlab::format_issues(issues);
+  }
+}
+
+TEST(SettingsValidate, InfiniteInputsAreRejected) {
+  Parameters p;
+  p.hanging.height_mm = std::numeric_limits<double>::infinity();
+  const auto issues = foldlab::validate(p);
+  ASSERT_EQ(issues.size(), 1u);
+  EXPECT_EQ(issues[0].field, "h_mm");
+}
+
+TEST(SettingsValidate, OddSimpsonIntervalsAreRejected) {
+  Parameters p;
+  p.model.simpson_intervals = 21;
+  const auto issues = foldlab::validate(p);
+  ASSERT_EQ(issues.size(), 1u) << foldlab::format_issues(issues);
+  EXPECT_EQ(issues[0].field, "simpson_intervals");
+  EXPECT_TRUE(contains(issues[0].message, "even")) << issues[0].message;
+
+  p.model.simpson_intervals = 22;
+  EXPECT_TRUE(foldlab::validate(p).empty());
+  p.model.simpson_intervals = 0;
+  EXPECT_FALSE(foldlab::validate(p).empty());
+}
+
+TEST(SettingsValidate, PoissonRatioOfOneHalfIsRejected) {
+  Parameters p;
+  p.fabric.poisson_ratio = 0.5;
+  const auto issues = foldlab::validate(p);
+  ASSERT_EQ(issues.size(), 1u);
+  EXPECT_EQ(issues[0].field, "nu");
+  p.fabric.poisson_ratio = 0.0;
+  EXPECT_TRUE(foldlab::validate(p).empty());
+}
+
+}  // namespace
