@@ -387,3 +387,33 @@ TEST_F(CliTest, ExportIntoAMissingDirectoryFailsNamingThePath) {
 }
 
 }  // namespace
+
+TEST_F(CliTest, SolveStatsShowThatNoGridIsBuilt) {
+  const json j = solve_json({"--stats"});
+  const json& stats = j.at("stats");
+  EXPECT_EQ(stats.at("solution").at("evaluations").get<int>(), 1);
+  EXPECT_EQ(stats.at("fold_lines").at("evaluations").get<int>(), 0);
+  EXPECT_EQ(stats.at("grid").at("evaluations").get<int>(), 0);
+  EXPECT_EQ(stats.at("normals").at("evaluations").get<int>(), 0);
+  EXPECT_GE(stats.at("solution").at("total_ms").get<double>(), 0.0);
+}
+
+TEST_F(CliTest, ExportStatsRunOnlyTheStagesItsOutputsNeed) {
+  const std::string svg = (dir_ / "lines.svg").string();
+  const RunResult svg_only = run({"export", "--svg", svg, "--stats"});
+  ASSERT_EQ(svg_only.exit_status, 0) << svg_only.err;
+  const json a = json::parse(svg_only.out).at("stats");
+  EXPECT_EQ(a.at("fold_lines").at("evaluations").get<int>(), 1);
+  EXPECT_EQ(a.at("grid").at("evaluations").get<int>(), 0);
+  EXPECT_EQ(a.at("normals").at("evaluations").get<int>(), 0);
+
+  const std::string obj = (dir_ / "mesh.obj").string();
+  const std::string csv = (dir_ / "lines.csv").string();
+  const RunResult all = run({"export", "--obj", obj, "--csv", csv, "--svg", svg, "--stats"});
+  ASSERT_EQ(all.exit_status, 0) << all.err;
+  const json b = json::parse(all.out).at("stats");
+  EXPECT_EQ(b.at("solution").at("evaluations").get<int>(), 1);
+  EXPECT_EQ(b.at("fold_lines").at("evaluations").get<int>(), 1);  // shared by CSV and SVG
+  EXPECT_EQ(b.at("grid").at("evaluations").get<int>(), 1);
+  EXPECT_EQ(b.at("normals").at("evaluations").get<int>(), 1);
+}

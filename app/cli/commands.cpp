@@ -14,6 +14,8 @@
 #include "foldlab/geometry.hpp"
 #include "foldlab/io.hpp"
 #include "foldlab/report.hpp"
+#include "foldlab/scene.hpp"
+#include "foldlab/scene_report.hpp"
 #include "foldlab/settings.hpp"
 #include "foldlab/solver.hpp"
 
@@ -58,19 +60,30 @@ Command add_solve_command(CLI::App& app) {
   struct Options {
     InputOptions inputs;
     bool json = false;
+    bool stats = false;
   };
   auto options = std::make_shared<Options>();
   CLI::App* command = app.add_subcommand("solve", "solve one case and print the result");
   add_input_options(*command, options->inputs);
   command->add_flag("--json", options->json, "print one JSON object instead of a table");
+  command->add_flag("--stats", options->stats,
+                    "add the pipeline's per-stage counters (evaluations, time)");
   return [options] {
     return guarded([&] {
       const Preset preset = resolve_inputs(options->inputs);
-      const Solution solution = solve(preset.parameters);
+      Scene scene(preset.parameters);
+      const Solution& solution = scene.solution();
       if (options->json) {
-        std::cout << solution_to_json(solution, preset.parameters).dump(2) << "\n";
+        nlohmann::json out = solution_to_json(solution, preset.parameters);
+        if (options->stats) {
+          out["stats"] = scene_stats_to_json(scene);
+        }
+        std::cout << out.dump(2) << "\n";
       } else {
         std::cout << solution_table(solution, preset.parameters, preset.name);
+        if (options->stats) {
+          std::cout << "\n" << scene_stats_table(scene);
+        }
       }
       return kExitOk;
     });
@@ -85,22 +98,20 @@ Command add_export_command(CLI::App& app) {
     std::string svg_path;
     std::string grid = "128x128";
     int samples = 201;
+    bool stats = false;
   };
   auto options = std::make_shared<Options>();
   CLI::App* command =
       app.add_subcommand("export", "write the deformed mesh (OBJ) and the fold lines (CSV, SVG)");
   add_input_options(*command, options->inputs);
-  CLI::Option* obj =
-      command->add_option("--obj", options->obj_path, "deformed mesh, Wavefront OBJ");
-  CLI::Option* csv = command->add_option("--csv", options->csv_path, "fold lines as CSV");
-  CLI::Option* svg =
-      command->add_option("--svg", options->svg_path, "fold lines as an SVG drawing");
+  command->add_option("--obj", options->obj_path, "deformed mesh, Wavefront OBJ");
+  command->add_option("--csv", options->csv_path, "fold lines as CSV");
+  command->add_option("--svg", options->svg_path, "fold lines as an SVG drawing");
   command->add_option("--grid", options->grid, "mesh resolution NXxNY (default 128x128)");
   command->add_option("--samples", options->samples, "points per fold line (default 201)")
       ->check(CLI::Range(2, 100000));
-  (void)obj;
-  (void)csv;
-  (void)svg;
+  command->add_flag("--stats", options->stats,
+                    "print the pipeline's per-stage counters as JSON on stdout");
   return [options] {
     return guarded([&] {
       if (options->obj_path.empty() && options->csv_path.empty() && options->svg_path.empty()) {
@@ -116,22 +127,27 @@ Command add_export_command(CLI::App& app) {
       const int nx = std::stoi(match[1]);
       const int ny = std::stoi(match[2]);
       const Preset preset = resolve_inputs(options->inputs);
-      const Solution solution = solve(preset.parameters);
+      // Only the stages an output asks for run: an SVG alone builds no grid.
+      Scene scene(preset.parameters);
+      scene.set_grid_resolution(nx, ny);
+      scene.set_fold_line_samples(options->samples);
+      const Solution& solution = scene.solution();
       if (const std::string message = describe(solution, preset.parameters); !message.empty()) {
         std::cerr << "foldlab: " << message << "\n";
       }
       if (!options->obj_path.empty()) {
-        const DeformedGrid grid = deformed_grid(solution, preset.parameters, nx, ny);
-        write_file_atomically(options->obj_path, mesh_to_obj(grid, preset.name));
+        scene.normals();
+        write_file_atomically(options->obj_path, mesh_to_obj(scene.grid(), preset.name));
       }
-      if (!options->csv_path.empty() || !options->svg_path.empty()) {
-        const FoldLines lines = fold_lines(solution, options->samples);
-        if (!options->csv_path.empty()) {
-          write_file_atomically(options->csv_path, fold_lines_to_csv(lines));
-        }
-        if (!options->svg_path.empty()) {
-          write_file_atomically(options->svg_path, fold_lines_to_svg(lines, solution, preset.name));
-        }
+      if (!options->csv_path.empty()) {
+        write_file_atomically(options->csv_path, fold_lines_to_csv(scene.fold_lines()));
+      }
+      if (!options->svg_path.empty()) {
+        write_file_atomically(options->svg_path,
+                              fold_lines_to_svg(scene.fold_lines(), solution, preset.name));
+      }
+      if (options->stats) {
+        std::cout << nlohmann::json{{"stats", scene_stats_to_json(scene)}}.dump(2) << "\n";
       }
       return kExitOk;
     });

@@ -76,6 +76,12 @@ FoldLines fold_lines(const Solution& s, int samples, int max_lines) {
 }
 
 DeformedGrid deformed_grid(const Solution& s, const Parameters& p, int nx, int ny) {
+  DeformedGrid grid = deformed_grid_positions(s, p, nx, ny);
+  grid.normals = vertex_normals(grid.positions_mm, grid.triangle_indices);
+  return grid;
+}
+
+DeformedGrid deformed_grid_positions(const Solution& s, const Parameters& p, int nx, int ny) {
   DeformedGrid grid;
   grid.nx = std::max(2, nx);
   grid.ny = std::max(2, ny);
@@ -95,32 +101,42 @@ DeformedGrid deformed_grid(const Solution& s, const Parameters& p, int nx, int n
     sampled_length += (rows[j] - rows[j - 1]).norm();
   }
 
-  grid.positions_mm.resize(static_cast<std::size_t>(grid.nx) * grid.ny);
+  // Per column: x and the cosine that scales the central fibre there.
+  std::vector<float> column_x(static_cast<std::size_t>(grid.nx));
+  std::vector<double> column_scale(static_cast<std::size_t>(grid.nx));
   for (int i = 0; i < grid.nx; ++i) {
     const double X = L * (static_cast<double>(i) / (grid.nx - 1) - 0.5);
-    const double x = X * l / L;
-    const double c = std::max(0.0, std::cos(kPi * x / l));
-    const double flat_length = h * std::cos(kPi * X / L);
+    const double c = std::max(0.0, std::cos(kPi * X / L));  // = cos(pi x / l) at x = X l / L
+    column_x[static_cast<std::size_t>(i)] = static_cast<float>(X * l / L);
+    column_scale[static_cast<std::size_t>(i)] = c;
+    // The membrane's fibre at X is h cos(pi X / L) long; the grid's is c times the sampled one.
     grid.worst_fibre_error =
-        std::max(grid.worst_fibre_error, std::abs(c * sampled_length - flat_length) / h);
-    for (int j = 0; j < grid.ny; ++j) {
-      const Eigen::Vector2d& r = rows[static_cast<std::size_t>(j)];
-      grid.positions_mm[static_cast<std::size_t>(j) * grid.nx + i] =
-          Eigen::Vector3d(x, c * r.x(), c * r.y()).cast<float>();
+        std::max(grid.worst_fibre_error, std::abs(c * sampled_length - c * h) / h);
+  }
+  grid.positions_mm.resize(static_cast<std::size_t>(grid.nx) * grid.ny);
+  Eigen::Vector3f* out = grid.positions_mm.data();
+  for (int j = 0; j < grid.ny; ++j) {
+    const Eigen::Vector2d& r = rows[static_cast<std::size_t>(j)];
+    for (int i = 0; i < grid.nx; ++i) {
+      const double c = column_scale[static_cast<std::size_t>(i)];
+      *out++ = Eigen::Vector3f(column_x[static_cast<std::size_t>(i)], static_cast<float>(c * r.x()),
+                               static_cast<float>(c * r.y()));
     }
   }
 
-  grid.triangle_indices.reserve(static_cast<std::size_t>(grid.nx - 1) * (grid.ny - 1) * 6);
+  grid.triangle_indices.resize(static_cast<std::size_t>(grid.nx - 1) * (grid.ny - 1) * 6);
+  std::uint32_t* index = grid.triangle_indices.data();
   for (int j = 0; j + 1 < grid.ny; ++j) {
     for (int i = 0; i + 1 < grid.nx; ++i) {
       const auto v00 = static_cast<std::uint32_t>(j * grid.nx + i);
       const auto v10 = v00 + 1;
       const auto v01 = v00 + static_cast<std::uint32_t>(grid.nx);
       const auto v11 = v01 + 1;
-      grid.triangle_indices.insert(grid.triangle_indices.end(), {v00, v01, v10, v10, v01, v11});
+      for (std::uint32_t v : {v00, v01, v10, v10, v01, v11}) {
+        *index++ = v;
+      }
     }
   }
-  grid.normals = vertex_normals(grid.positions_mm, grid.triangle_indices);
   return grid;
 }
 

@@ -52,6 +52,8 @@ struct DeformedGrid {
 // its points sit at arc-length fraction Y/h of the zig-zag through the fold points at
 // x = X l/L. The supports (X = +-L/2) stay fixed.
 DeformedGrid deformed_grid(const Solution& s, const Parameters& p, int nx, int ny);
+// The same without normals (left empty): the scene computes them as a stage of their own.
+DeformedGrid deformed_grid_positions(const Solution& s, const Parameters& p, int nx, int ny);
 
 // Per-vertex unit normals of an indexed triangle mesh, area weighted; (0, 0, 1) where degenerate.
 std::vector<Eigen::Vector3f> vertex_normals(const std::vector<Eigen::Vector3f>& positions,

@@ -19,12 +19,16 @@ struct Fabric {
   double youngs_modulus_MPa = 165.0;
   double weight_N_per_mm2 = 15e-7;
   double poisson_ratio = kDefaultPoissonRatio;
+
+  bool operator==(const Fabric&) const = default;
 };
 
 struct Hanging {
   double height_mm = 1400.0;               // h: vertical extent at the centre
   double length_mm = 1400.0;               // L: initial length of the upper edge
   double support_displacement_mm = 100.0;  // d: inward displacement of each support
+
+  bool operator==(const Hanging&) const = default;
 };
 
 enum class Method { paper, exact };
@@ -43,12 +47,16 @@ struct ModelSettings {
   int simpson_intervals = 20;      // paper method: composite Simpson intervals for eq. 8
   double length_tolerance = 0.05;  // paper method: stop when |L'/L - 1| <= this
   int max_iterations = 200;        // paper method: iteration cap
+
+  bool operator==(const ModelSettings&) const = default;
 };
 
 struct Parameters {
   Fabric fabric;
   Hanging hanging;
   ModelSettings model;
+
+  bool operator==(const Parameters&) const = default;
 };
 
 // K = c / (1 - nu²): the only combination of c and nu that eq. 7 sees.
