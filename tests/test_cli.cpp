@@ -1,9 +1,5 @@
 // End-to-end tests of the foldlab executable: run it as a user or a script would and check the exit
 // status, stdout and stderr.
-#include <fcntl.h>
-#include <sys/wait.h>
-#include <unistd.h>
-
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
@@ -19,6 +15,7 @@
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
+#include "process.hpp"
 #include "temp_dir.hpp"
 
 namespace fs = std::filesystem;
@@ -32,16 +29,8 @@ const std::string kH900 = (kPresetsDir / "paper-table1-h900.json").string();
 // The name written in presets/paper-table1-h1400.json, the built-in default.
 const std::string kDefaultPresetName = "Table 1, h = 1400 mm (default)";
 
-struct RunResult {
-  int exit_status = -1;  // the exit code, or 128 + signal number if killed by a signal
-  std::string out;
-  std::string err;
-};
-
-std::string read_file(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-}
+using foldlab::testing::read_file;
+using foldlab::testing::RunResult;
 
 bool contains(const std::string& haystack, const std::string& needle) {
   return haystack.find(needle) != std::string::npos;
@@ -68,51 +57,7 @@ class CliTest : public foldlab::testing::TempDirTest {
   // Runs foldlab with `args` (no shell), DISPLAY unset, stdout and stderr captured separately
   // through files in the test's directory.
   RunResult run(const std::vector<std::string>& args) {
-    const fs::path out_path = dir_ / ".stdout";
-    const fs::path err_path = dir_ / ".stderr";
-    RunResult result;
-    const pid_t pid = ::fork();
-    if (pid < 0) {
-      ADD_FAILURE() << "fork failed";
-      return result;
-    }
-    if (pid == 0) {
-      const int out_fd = ::open(out_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-      const int err_fd = ::open(err_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-      if (out_fd < 0 || err_fd < 0 || ::dup2(out_fd, STDOUT_FILENO) < 0 ||
-          ::dup2(err_fd, STDERR_FILENO) < 0) {
-        ::_exit(126);
-      }
-      ::close(out_fd);
-      ::close(err_fd);
-      ::unsetenv("DISPLAY");
-      ::unsetenv("WAYLAND_DISPLAY");
-      std::vector<char*> argv;
-      argv.push_back(const_cast<char*>(kExecutable.c_str()));
-      for (const std::string& a : args) {
-        argv.push_back(const_cast<char*>(a.c_str()));
-      }
-      argv.push_back(nullptr);
-      ::execv(kExecutable.c_str(), argv.data());
-      ::_exit(127);
-    }
-    int status = 0;
-    while (::waitpid(pid, &status, 0) < 0) {
-      if (errno != EINTR) {
-        ADD_FAILURE() << "waitpid failed";
-        return result;
-      }
-    }
-    if (WIFEXITED(status)) {
-      result.exit_status = WEXITSTATUS(status);
-    } else if (WIFSIGNALED(status)) {
-      result.exit_status = 128 + WTERMSIG(status);
-    }
-    result.out = read_file(out_path);
-    result.err = read_file(err_path);
-    fs::remove(out_path);
-    fs::remove(err_path);
-    return result;
+    return foldlab::testing::run_process(kExecutable, args, dir_);
   }
 
   // `solve ... --json`, expected to succeed; returns the parsed object.

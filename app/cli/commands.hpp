@@ -18,4 +18,11 @@ Command add_compare_command(CLI::App& app);
 // `foldlab` with no command and no display: the default preset solved and printed as a table.
 int run_default_headless();
 
+#ifdef FOLDLAB_WITH_GUI
+Command add_gui_command(CLI::App& app);
+Command add_render_command(CLI::App& app);
+// `foldlab` with no command: the explorer where a display exists, else run_default_headless().
+int run_default(bool display_available);
+#endif
+
 }  // namespace foldlab::cli

@@ -1,0 +1,117 @@
+#include <cstdlib>
+#include <iostream>
+#include <memory>
+#include <regex>
+
+#include "cli/commands.hpp"
+#include "cli/inputs.hpp"
+#include "gui/gui_app.hpp"
+#include "gui/surface.hpp"
+
+namespace foldlab::cli {
+namespace {
+
+void parse_size(const std::string& text, gui::GuiRunOptions& options) {
+  static const std::regex pattern(R"((\d{2,5})x(\d{2,5}))");
+  std::smatch match;
+  if (!std::regex_match(text, match, pattern) || std::stoi(match[1]) < 320 ||
+      std::stoi(match[2]) < 240 || std::stoi(match[1]) > 8192 || std::stoi(match[2]) > 8192) {
+    throw InputError("--size " + text + " must be WxH with 320 <= W <= 8192, 240 <= H <= 8192");
+  }
+  options.width = std::stoi(match[1]);
+  options.height = std::stoi(match[2]);
+}
+
+int run_guarded(const std::function<int()>& body) {
+  try {
+    return body();
+  } catch (const InputError& e) {
+    std::cerr << "foldlab: invalid input:\n" << e.what() << "\n";
+    return kExitInvalidInput;
+  } catch (const gui::SurfaceError& e) {
+    std::cerr << "foldlab: " << e.what() << "\n";
+    return kExitInternal;
+  } catch (const std::exception& e) {
+    std::cerr << "foldlab: internal error: " << e.what() << "\n";
+    return kExitInternal;
+  }
+}
+
+struct GuiCommandOptions {
+  gui::GuiRunOptions run;
+  std::string size = "1280x800";
+};
+
+void add_common_gui_options(CLI::App& command, GuiCommandOptions& options) {
+  command.add_option("--preset", options.run.inputs.preset_path, "preset JSON file to show");
+  command.add_option("--set", options.run.inputs.assignments, "override an input, KEY=VALUE")
+      ->type_name("KEY=VALUE");
+  command.add_option("--method", options.run.inputs.method, "solution method")
+      ->check(CLI::IsMember({"paper", "exact"}));
+  command.add_option("--size", options.size, "window or picture size WxH (default 1280x800)");
+}
+
+}  // namespace
+
+Command add_gui_command(CLI::App& app) {
+  auto options = std::make_shared<GuiCommandOptions>();
+  CLI::App* command = app.add_subcommand("gui", "open the explorer window");
+  add_common_gui_options(*command, *options);
+  command
+      ->add_option("--frames", options->run.frames,
+                   "run this many frames, then exit (scripted runs take no mouse input)")
+      ->check(CLI::Range(1, 1000000));
+  command->add_option("--screenshot", options->run.screenshot_path,
+                      "with --frames: write the last frame as PNG");
+  command->add_option("--animate", options->run.animate_key,
+                      "move this input every frame as a dragged slider would: h, w, E, t, d, L");
+  command->add_flag("--report", options->run.report,
+                    "print frame times (mean, 95th percentile) and pipeline counters as JSON");
+  command->add_flag("--fresh", options->run.fresh,
+                    "do not restore or save the last session and window layout");
+  return [options] {
+    return run_guarded([&] {
+      parse_size(options->size, options->run);
+      if (!options->run.screenshot_path.empty() && options->run.frames == 0) {
+        throw InputError("--screenshot needs --frames N");
+      }
+      return gui::run_window(options->run);
+    });
+  };
+}
+
+Command add_render_command(CLI::App& app) {
+  auto options = std::make_shared<GuiCommandOptions>();
+  CLI::App* command = app.add_subcommand(
+      "render", "draw the full explorer window with no display (EGL surfaceless) into a PNG");
+  add_common_gui_options(*command, *options);
+  command->add_option("--out", options->run.screenshot_path, "PNG file to write")->required();
+  command
+      ->add_option("--frames", options->run.frames, "frames to run before the picture (default 3)")
+      ->check(CLI::Range(1, 100000));
+  command->add_option("--animate", options->run.animate_key, "as for gui");
+  command->add_flag("--report", options->run.report, "as for gui");
+  return [options] {
+    return run_guarded([&] {
+      parse_size(options->size, options->run);
+      options->run.fresh = true;
+      if (options->run.frames == 0) {
+        options->run.frames = 3;  // ImGui settles table and child sizes over the first frames
+      }
+      return gui::run_headless(options->run);
+    });
+  };
+}
+
+int run_default(bool display_available) {
+  if (display_available) {
+    const int status = run_guarded([] { return gui::run_window(gui::GuiRunOptions{}); });
+    if (status != kExitInternal) {
+      return status;
+    }
+    std::cerr << "foldlab: no window could be opened; printing the default preset instead\n";
+  }
+  return run_default_headless();
+}
+
+}  // namespace foldlab::cli

@@ -1,0 +1,27 @@
+// An orbit camera for the 3D view: it turns about a target, zooms along its view direction and
+// pans in the view plane. World coordinates are the model's with y flipped (up is +Y), in mm.
+#pragma once
+
+#include <Eigen/Core>
+
+namespace foldlab::gui {
+
+struct OrbitCamera {
+  Eigen::Vector3f target = Eigen::Vector3f::Zero();
+  float yaw_rad = 0.6f;     // about the vertical axis; 0 looks along -Z
+  float pitch_rad = 0.25f;  // above the horizon
+  float distance_mm = 4000.0f;
+  float fov_y_rad = 0.6f;
+
+  Eigen::Vector3f eye() const;
+  Eigen::Matrix4f view() const;
+  Eigen::Matrix4f projection(float aspect) const;
+
+  void orbit(float dx_px, float dy_px);
+  void zoom(float wheel_steps);
+  void pan(float dx_px, float dy_px, float viewport_height_px);
+  // Frames a box of the given centre and radius from the default direction.
+  void frame(const Eigen::Vector3f& centre, float radius_mm);
+};
+
+}  // namespace foldlab::gui

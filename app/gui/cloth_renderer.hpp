@@ -1,0 +1,69 @@
+// The 3D view: the deformed cloth with two-sided lighting, an optional wireframe, the fold lines on
+// its surface, the supports and a ground grid, drawn with OpenGL 3.3 core into a texture that an
+// ImGui window shows. GPU buffers are re-uploaded only when the scene's stage versions change.
+#pragma once
+
+#include <cstdint>
+
+#include <Eigen/Core>
+
+#include "foldlab/scene.hpp"
+#include "gui/camera.hpp"
+#include "gui/surface.hpp"
+
+namespace foldlab::gui {
+
+struct ClothStyle {
+  bool wireframe = false;
+  bool fold_lines = true;
+  bool ground = true;
+  Eigen::Vector3f front_colour{0.93f, 0.86f, 0.74f};  // the fabric's two faces
+  Eigen::Vector3f back_colour{0.72f, 0.78f, 0.92f};
+  Eigen::Vector3f positive_fold_colour{0.12f, 0.23f, 0.58f};
+  Eigen::Vector3f negative_fold_colour{0.84f, 0.15f, 0.16f};
+  Eigen::Vector3f background{0.16f, 0.17f, 0.20f};
+};
+
+struct RenderCounters {
+  std::uint64_t mesh_uploads = 0;
+  std::uint64_t fold_line_uploads = 0;
+  std::uint64_t frames = 0;
+};
+
+class ClothRenderer {
+ public:
+  ClothRenderer();
+  ~ClothRenderer();
+  ClothRenderer(const ClothRenderer&) = delete;
+  ClothRenderer& operator=(const ClothRenderer&) = delete;
+
+  // Draws the scene into the renderer's own framebuffer and returns its colour texture (GL name).
+  // Leaves the framebuffer binding at 0 and the viewport as it found it.
+  unsigned render(Scene& scene, const OrbitCamera& camera, FrameSize size, const ClothStyle& style);
+
+  // A sphere around the cloth (world coordinates) for framing the camera.
+  static void bounds(Scene& scene, Eigen::Vector3f& centre, float& radius_mm);
+
+  const RenderCounters& counters() const { return counters_; }
+  // The framebuffer render() drew into (GL name), for copying it to the screen.
+  unsigned framebuffer() const;
+
+ private:
+  struct Gl;
+  void resize(FrameSize size);
+  void upload_mesh(Scene& scene);
+  void upload_fold_lines(Scene& scene, const ClothStyle& style);
+  void upload_decorations(Scene& scene);
+
+  Gl* gl_;  // GL object names, kept out of the header so that it needs no GL include
+  FrameSize size_{};
+  // Scene versions last uploaded; none is ever ~0, so the first frame uploads everything.
+  std::uint64_t mesh_version_ = ~std::uint64_t{0};
+  std::uint64_t fold_line_version_ = ~std::uint64_t{0};
+  std::uint64_t decoration_version_ = ~std::uint64_t{0};
+  Eigen::Vector3f uploaded_positive_{-1, -1, -1};
+  Eigen::Vector3f uploaded_negative_{-1, -1, -1};
+  RenderCounters counters_;
+};
+
+}  // namespace foldlab::gui

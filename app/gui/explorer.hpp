@@ -1,0 +1,105 @@
+// The explorer: every panel of the FoldLab window, drawn once per frame with Dear ImGui. The same
+// frame code serves the GLFW window and the headless EGL renderer.
+#pragma once
+
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "foldlab/preset.hpp"
+#include "foldlab/scene.hpp"
+#include "gui/camera.hpp"
+#include "gui/cloth_renderer.hpp"
+#include "gui/plot_widget.hpp"
+#include "gui/session.hpp"
+
+namespace foldlab::gui {
+
+struct ExplorerOptions {
+  std::filesystem::path presets_dir;       // shipped presets (may be empty)
+  std::filesystem::path user_presets_dir;  // "Save as..." writes here
+  std::filesystem::path session_file;      // empty: nothing is restored or saved
+};
+
+class Explorer {
+ public:
+  // `initial` is shown unless a saved session is restored (only when no preset was asked for).
+  Explorer(const Preset& initial, const std::string& initial_path, bool restore_session,
+           ExplorerOptions options);
+  ~Explorer();
+
+  // Builds every window for this frame; between ImGui::NewFrame and ImGui::Render. May draw the
+  // 3D view into its own framebuffer (GL calls), so a GL context must be current.
+  void frame();
+
+  // Sets one input by its --set key, exactly as moving its slider does (for scripted runs).
+  std::optional<std::string> set_input(std::string_view key, double value);
+  Scene& scene() { return scene_; }
+  const Parameters& edited() const { return edited_; }
+  const RenderCounters* renderer_counters() const;
+  void save_session_now();
+
+ private:
+  void parameters_panel();
+  void results_panel();
+  void plot_panel();
+  void view3d_panel();
+  void presets_panel();
+  void teaching_panel();
+  void stats_overlay();
+
+  // A slider for one model input: unit, log scale where the range spans decades, typed values
+  // (Ctrl+click) not clamped, and the validation message of its field beside it.
+  void input_slider(const char* label, const char* field, double& value, double lo, double hi,
+                    const char* format, bool logarithmic, const char* help);
+  void show_issue(const char* field);
+  void commit_edits();
+  void load_preset_file(const std::filesystem::path& path);
+  void save_as(const std::string& name, bool overwrite);
+  void refresh_preset_list();
+  bool unsaved() const;
+
+  ExplorerOptions options_;
+  Preset loaded_;  // as loaded: "reset" returns here, the unsaved marker compares
+  std::string loaded_path_;
+  Parameters edited_;  // what the widgets show, possibly invalid
+  std::vector<ValidationIssue> issues_;
+  Scene scene_;  // always holds the last valid parameters
+  std::unique_ptr<ClothRenderer> renderer_;
+  OrbitCamera camera_;
+  bool camera_framed_ = false;
+  ClothStyle style_;
+  int grid_resolution_ = 128;
+  bool show_stats_ = false;
+  bool plot_autoscale_ = false;
+  Plot fold_plot_;
+  std::uint64_t plot_lines_version_ = ~std::uint64_t{0};
+  std::vector<std::vector<double>> plot_xs_;
+  std::vector<std::vector<double>> plot_ys_;
+  std::uint64_t plot_outline_version_ = ~std::uint64_t{0};
+  std::vector<double> outline_xs_;
+  std::vector<double> outline_ys_;
+
+  struct PresetEntry {
+    std::string name;
+    std::filesystem::path path;
+    bool user = false;
+  };
+  std::vector<PresetEntry> presets_;
+  std::string preset_message_;  // the last load/save error or confirmation, shown in the panel
+  bool preset_message_is_error_ = false;
+  char save_name_[128] = {};
+  std::string pending_overwrite_;  // name waiting for the user's "overwrite?" answer
+  std::string session_message_;
+
+  // For the teaching panel: what n was before the last change, and why it moved.
+  int previous_n_ = -1;
+  int shown_n_ = -1;
+  double previous_count_argument_ = 0.0;
+  double last_session_save_time_ = 0.0;
+  bool session_dirty_ = false;
+};
+
+}  // namespace foldlab::gui

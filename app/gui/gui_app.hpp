@@ -1,0 +1,28 @@
+// Running the explorer: in a window until closed, for a scripted number of frames (tests and
+// frame-time measurements), or headless into a PNG.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "cli/inputs.hpp"
+
+namespace foldlab::gui {
+
+struct GuiRunOptions {
+  cli::InputOptions inputs;
+  int width = 1280;
+  int height = 800;
+  int frames = 0;               // 0: until the window is closed
+  std::string screenshot_path;  // written after the last frame
+  std::string animate_key;      // moves this input every frame, as a dragged slider would
+  bool report = false;          // print frame times and pipeline counters as JSON
+  bool fresh = false;           // neither restore nor save the session
+};
+
+// The window. Returns an exit status (kExitOk, or kExitInternal when no window can be opened).
+int run_window(const GuiRunOptions& options);
+// No display, no X server: EGL surfaceless into an off-screen framebuffer, then a PNG.
+int run_headless(const GuiRunOptions& options);
+
+}  // namespace foldlab::gui

@@ -1,0 +1,842 @@
+#include "gui/plot_widget.hpp"
+
+#include <imgui_internal.h>  // SetItemUsingMouseWheel: without it the window scrolls as we zoom
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstring>
+#include <limits>
+
+namespace foldlab::gui {
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr float kHoverRadius = 12.0f;
+constexpr double kAutoscaleMargin = 0.05;
+constexpr double kWheelZoom = 1.25;  // range factor per wheel notch
+// Zooming further than this relative span only shows floating-point noise.
+constexpr double kMinRelativeSpan = 1e-12;
+constexpr double kMaxLinear = 1e300;
+constexpr double kMaxLogExponent = 300;
+constexpr float kMinWidth = 64.0f, kMinHeight = 48.0f;
+
+// ImGuiStorage holds ints, floats and pointers only; a double takes two int slots so that the
+// view survives deep zooms without float rounding.
+enum Slot { kXLo = 0, kXHi = 2, kYLo = 4, kYHi = 6, kFlags = 8, kLabelWidth = 9, kSlotCount = 10 };
+enum StateFlags { kHasRange = 1, kManualX = 2, kManualY = 4 };
+
+double load_double(const ImGuiStorage* st, const ImGuiID* keys, int slot) {
+  const auto lo = std::bit_cast<std::uint32_t>(st->GetInt(keys[slot]));
+  const auto hi = std::bit_cast<std::uint32_t>(st->GetInt(keys[slot + 1]));
+  return std::bit_cast<double>((std::uint64_t{hi} << 32) | lo);
+}
+
+void store_double(ImGuiStorage* st, const ImGuiID* keys, int slot, double v) {
+  const auto bits = std::bit_cast<std::uint64_t>(v);
+  st->SetInt(keys[slot], std::bit_cast<int>(static_cast<std::uint32_t>(bits)));
+  st->SetInt(keys[slot + 1], std::bit_cast<int>(static_cast<std::uint32_t>(bits >> 32)));
+}
+
+// Axis coordinate ("t"): the value itself, or its log10. Zoom, pan, margins and ticks work in t.
+double to_t(double v, bool log) {
+  if (!log)
+    return v;
+  return v > 0 ? std::log10(v) : kNaN;
+}
+double from_t(double t, bool log) {
+  return log ? std::pow(10.0, t) : t;
+}
+
+// Linear map from t to one screen coordinate; px0 is where t0 lands, so flipping is just
+// swapping the pixel ends.
+struct AxisMap {
+  double t0, t1, px0, scale;
+  bool log;
+  AxisMap(double lo_t, double hi_t, double px_lo, double px_hi, bool log_axis)
+      : t0(lo_t), t1(hi_t), px0(px_lo), scale((px_hi - px_lo) / (hi_t - lo_t)), log(log_axis) {}
+  double px_of_t(double t) const { return px0 + (t - t0) * scale; }
+  double px(double v) const { return px_of_t(to_t(v, log)); }
+  double t_at(double p) const { return t0 + (p - px0) / scale; }
+};
+
+AxisMap x_map(double t0, double t1, ImVec2 min, ImVec2 max, bool log, bool flipped) {
+  return flipped ? AxisMap(t0, t1, max.x, min.x, log) : AxisMap(t0, t1, min.x, max.x, log);
+}
+// Screen y grows downward, so an unflipped axis puts t0 at the bottom.
+AxisMap y_map(double t0, double t1, ImVec2 min, ImVec2 max, bool log, bool flipped) {
+  return flipped ? AxisMap(t0, t1, min.y, max.y, log) : AxisMap(t0, t1, max.y, min.y, log);
+}
+
+struct Bounds {
+  double lo = kInf, hi = -kInf;
+  void add(double t) {
+    lo = std::min(lo, t);
+    hi = std::max(hi, t);
+  }
+  bool valid() const { return lo <= hi; }
+};
+
+double min_span(double t0, double t1) {
+  return std::max({std::abs(t0), std::abs(t1), 1e-300}) * kMinRelativeSpan;
+}
+
+// Keeps a t-range finite, ordered and wide enough to map to pixels.
+void sanitize(double& t0, double& t1, bool log) {
+  const double limit = log ? kMaxLogExponent : kMaxLinear;
+  t0 = std::clamp(t0, -limit, limit);
+  t1 = std::clamp(t1, -limit, limit);
+  if (t1 < t0)
+    std::swap(t0, t1);
+  const double need = min_span(t0, t1);
+  if (t1 - t0 < need) {
+    const double mid = t0 / 2 + t1 / 2;
+    t0 = mid - need;
+    t1 = mid + need;
+  }
+}
+
+void fit(const Bounds& b, bool log, double& t0, double& t1) {
+  if (!b.valid()) {
+    t0 = 0;  // [0, 1], or [1, 10] on a log axis
+    t1 = 1;
+  } else if (b.hi - b.lo <= min_span(b.lo, b.hi)) {
+    // All values equal: centre them in a range that still shows their magnitude.
+    const double pad = log ? 0.5 : (b.lo == 0 ? 1.0 : std::abs(b.lo) * 0.1);
+    t0 = b.lo - pad;
+    t1 = b.hi + pad;
+  } else {
+    const double margin = (b.hi - b.lo) * kAutoscaleMargin;
+    t0 = b.lo - margin;
+    t1 = b.hi + margin;
+  }
+  sanitize(t0, t1, log);
+}
+
+double nice_step(double raw) {
+  const double mag = std::pow(10.0, std::floor(std::log10(raw)));
+  const double norm = raw / mag;
+  const double nice = norm < 1.5 ? 1 : norm < 3 ? 2 : norm < 7 ? 5 : 10;
+  return nice * mag;
+}
+
+// k·m·10^e rounded once: dividing by an exact power of ten keeps 0.6 from becoming
+// 0.6000000000000001, which would otherwise show up in the labels.
+double scaled(double k, int e) {
+  return e >= 0 ? k * std::pow(10.0, e) : k / std::pow(10.0, -e);
+}
+
+void nice_ticks_into(double lo, double hi, int target, std::vector<double>& out) {
+  out.clear();
+  if (!std::isfinite(lo) || !std::isfinite(hi))
+    return;
+  if (lo > hi)
+    std::swap(lo, hi);
+  if (lo == hi) {
+    out.push_back(lo);
+    return;
+  }
+  target = std::max(target, 1);
+  // Divided first so that [-DBL_MAX, DBL_MAX] does not overflow.
+  const double step = nice_step(hi / target - lo / target);
+  if (!(step > 0) || !std::isfinite(step)) {
+    out.push_back(lo);
+    return;
+  }
+  const int e = static_cast<int>(std::floor(std::log10(step) + 1e-9));
+  const double mantissa = std::round(step / std::pow(10.0, e));  // 1, 2, 5 or 10
+  const double k0 = std::ceil(lo / step - 1e-9), k1 = std::floor(hi / step + 1e-9);
+  // Beyond 2^53 consecutive k are no longer distinct doubles: the range is below resolution.
+  if (!(std::abs(k0) < 1e15 && std::abs(k1) < 1e15) || k1 - k0 > 10.0 * target + 10) {
+    out.push_back(lo);
+    out.push_back(hi);
+    return;
+  }
+  for (double k = k0; k <= k1; k += 1) {
+    double v = scaled(k * mantissa, e);
+    if (std::abs(v) < step * 1e-9)
+      v = 0;
+    if (out.empty() || v > out.back())
+      out.push_back(v);
+  }
+}
+
+void log_ticks_into(double lo, double hi, int target, std::vector<double>& out) {
+  out.clear();
+  if (!std::isfinite(lo) || !std::isfinite(hi))
+    return;
+  if (lo > hi)
+    std::swap(lo, hi);
+  if (hi <= 0)
+    return;
+  lo = std::max(lo, std::numeric_limits<double>::min());
+  if (lo == hi) {
+    out.push_back(lo);
+    return;
+  }
+  target = std::max(target, 1);
+  const double e0 = std::log10(lo), e1 = std::log10(hi);
+  const auto inside = [&](double v) { return v >= lo * (1 - 1e-9) && v <= hi * (1 + 1e-9); };
+  const int d_first = static_cast<int>(std::floor(e0)), d_last = static_cast<int>(std::ceil(e1));
+
+  // 1, 2, 5 per decade while that is not too many.
+  const double limit = std::max(3.0, target * 1.5);
+  int count = 0;
+  for (int d = d_first; d <= d_last && count <= limit; ++d) {
+    for (const double m : {1.0, 2.0, 5.0})
+      count += inside(scaled(m, d)) ? 1 : 0;
+  }
+  if (count >= 2 && count <= limit) {
+    for (int d = d_first; d <= d_last; ++d) {
+      for (const double m : {1.0, 2.0, 5.0}) {
+        if (inside(scaled(m, d)))
+          out.push_back(scaled(m, d));
+      }
+    }
+    return;
+  }
+  const int decades = static_cast<int>(std::floor(e1 + 1e-9) - std::ceil(e0 - 1e-9)) + 1;
+  if (decades >= 2) {
+    const int every = std::max(1, (decades + target - 1) / target);
+    for (int d = d_first; d <= d_last; ++d) {
+      if (((d % every) + every) % every == 0 && inside(scaled(1, d)))
+        out.push_back(scaled(1, d));
+    }
+    if (out.size() >= 2)
+      return;
+    out.clear();
+    for (int d = d_first; d <= d_last; ++d) {
+      if (inside(scaled(1, d)))
+        out.push_back(scaled(1, d));
+    }
+    return;
+  }
+  // Within about one decade the log scale is nearly linear: plain nice ticks read best.
+  nice_ticks_into(lo, hi, target, out);
+  std::erase_if(out, [](double v) { return !(v > 0); });
+}
+
+void format_tick_into(char* buf, std::size_t size, double value, double step) {
+  step = std::abs(step);
+  if (!std::isfinite(value)) {
+    std::snprintf(buf, size, "%g", value);
+    return;
+  }
+  if (!(step > 0) || !std::isfinite(step))
+    step = value != 0 ? std::abs(value) : 1.0;
+  if (std::abs(value) < step * 1e-6) {  // rounding noise, and -0
+    std::snprintf(buf, size, "0");
+    return;
+  }
+  const double mag = std::abs(value);
+  const double step_exp = std::floor(std::log10(step) + 1e-9);
+  if (mag >= 1e6 || mag < 1e-4) {
+    const double digits = std::floor(std::log10(mag) + 1e-9) - step_exp + 1;
+    const int decimals = static_cast<int>(std::clamp(digits - 1, 0.0, 15.0));
+    std::snprintf(buf, size, "%.*e", decimals, value);
+    // "1.50e+09" -> "1.5e+09": trailing zeros of the mantissa carry no information here.
+    char* e = std::strchr(buf, 'e');
+    if (e != nullptr && std::strchr(buf, '.') != nullptr) {
+      char* end = e;
+      while (end[-1] == '0')
+        --end;
+      if (end[-1] == '.')
+        --end;
+      std::memmove(end, e, std::strlen(e) + 1);
+    }
+    return;
+  }
+  const int decimals = static_cast<int>(std::clamp(-step_exp, 0.0, 15.0));
+  std::snprintf(buf, size, "%.*f", decimals, value);
+}
+
+// The label step for tick i: its distance to the nearer neighbour, so that log ticks 1, 2, 5 get
+// no decimals while linear ticks all share the same precision.
+double tick_step(const std::vector<double>& ticks, std::size_t i) {
+  double step = kInf;
+  if (i > 0)
+    step = std::min(step, ticks[i] - ticks[i - 1]);
+  if (i + 1 < ticks.size())
+    step = std::min(step, ticks[i + 1] - ticks[i]);
+  return std::isfinite(step) ? step : std::abs(ticks[i]);
+}
+
+void axis_ticks(double t0, double t1, bool log, int target, std::vector<double>& out) {
+  if (log)
+    log_ticks_into(from_t(t0, true), from_t(t1, true), target, out);
+  else
+    nice_ticks_into(t0, t1, target, out);
+}
+
+// Liang-Barsky: clips segment a-b to the box; reports whether each end moved.
+bool clip_segment(double& ax, double& ay, double& bx, double& by, const double box[4],
+                  bool& a_moved, bool& b_moved) {
+  const double dx = bx - ax, dy = by - ay;
+  const double p[4] = {-dx, dx, -dy, dy};
+  const double q[4] = {ax - box[0], box[2] - ax, ay - box[1], box[3] - ay};
+  double u0 = 0, u1 = 1;
+  for (int i = 0; i < 4; ++i) {
+    if (p[i] == 0) {
+      if (q[i] < 0)
+        return false;
+      continue;
+    }
+    const double r = q[i] / p[i];
+    if (p[i] < 0) {
+      if (r > u1)
+        return false;
+      u0 = std::max(u0, r);
+    } else {
+      if (r < u0)
+        return false;
+      u1 = std::min(u1, r);
+    }
+  }
+  a_moved = u0 > 0;
+  b_moved = u1 < 1;
+  const double x0 = ax, y0 = ay;
+  if (b_moved) {
+    bx = x0 + u1 * dx;
+    by = y0 + u1 * dy;
+  }
+  if (a_moved) {
+    ax = x0 + u0 * dx;
+    ay = y0 + u0 * dy;
+  }
+  return true;
+}
+
+ImVec2 vec(double x, double y) {
+  return ImVec2(static_cast<float>(x), static_cast<float>(y));
+}
+
+void draw_marker(ImDrawList* dl, ImVec2 c, float r, ImU32 col, MarkerShape shape) {
+  constexpr float th = 1.5f;
+  const float h = r * 0.7071f;  // half-diagonal of the cross, same extent as the circle
+  switch (shape) {
+    case MarkerShape::Circle:
+      dl->AddCircle(c, r, col, 12, th);
+      break;
+    case MarkerShape::Square:
+      dl->AddRect({c.x - r, c.y - r}, {c.x + r, c.y + r}, col, 0.0f, 0, th);
+      break;
+    case MarkerShape::Diamond:
+      dl->AddQuad({c.x, c.y - r}, {c.x + r, c.y}, {c.x, c.y + r}, {c.x - r, c.y}, col, th);
+      break;
+    case MarkerShape::Triangle:
+      dl->AddTriangle({c.x, c.y - r}, {c.x + r * 0.866f, c.y + r * 0.5f},
+                      {c.x - r * 0.866f, c.y + r * 0.5f}, col, th);
+      break;
+    case MarkerShape::Cross:
+      dl->AddLine({c.x - h, c.y - h}, {c.x + h, c.y + h}, col, th);
+      dl->AddLine({c.x - h, c.y + h}, {c.x + h, c.y - h}, col, th);
+      break;
+    case MarkerShape::Plus:
+      dl->AddLine({c.x - r, c.y}, {c.x + r, c.y}, col, th);
+      dl->AddLine({c.x, c.y - r}, {c.x, c.y + r}, col, th);
+      break;
+  }
+}
+
+struct Layout {
+  ImVec2 min, max;
+};
+
+// Space around the data area: y tick labels on the left, x tick labels and the x title below,
+// the y title above (horizontal text: ImGui cannot rotate it).
+Layout layout(ImVec2 fmin, ImVec2 fmax, float y_label_width, bool x_title, bool y_title,
+              float font) {
+  const float pad = std::round(font * 0.35f);
+  Layout l;
+  l.min.x = fmin.x + y_label_width + 2 * pad;
+  l.max.x = fmax.x - font;  // half of the last x tick label may stick out
+  l.min.y = fmin.y + (y_title ? font + pad : std::round(font * 0.5f) + 1);
+  l.max.y = fmax.y - (font + pad) - (x_title ? font + pad : 0);
+  l.max.x = std::max(l.max.x, l.min.x + 1);
+  l.max.y = std::max(l.max.y, l.min.y + 1);
+  return l;
+}
+
+bool inside(ImVec2 p, ImVec2 min, ImVec2 max) {
+  return p.x >= min.x && p.x <= max.x && p.y >= min.y && p.y <= max.y;
+}
+
+}  // namespace
+
+std::vector<double> nice_ticks(double lo, double hi, int target) {
+  std::vector<double> out;
+  nice_ticks_into(lo, hi, target, out);
+  return out;
+}
+
+std::vector<double> log_ticks(double lo, double hi, int target) {
+  std::vector<double> out;
+  log_ticks_into(lo, hi, target, out);
+  return out;
+}
+
+std::string format_tick(double value, double step) {
+  char buf[64];
+  format_tick_into(buf, sizeof buf, value, step);
+  return buf;
+}
+
+ImVec2 PlotView::to_screen(double x, double y) const {
+  const AxisMap xm = x_map(to_t(x_lo, x_log), to_t(x_hi, x_log), min, max, x_log, x_flipped);
+  const AxisMap ym = y_map(to_t(y_lo, y_log), to_t(y_hi, y_log), min, max, y_log, y_flipped);
+  return vec(xm.px(x), ym.px(y));
+}
+
+std::pair<double, double> PlotView::to_data(ImVec2 screen) const {
+  const AxisMap xm = x_map(to_t(x_lo, x_log), to_t(x_hi, x_log), min, max, x_log, x_flipped);
+  const AxisMap ym = y_map(to_t(y_lo, y_log), to_t(y_hi, y_log), min, max, y_log, y_flipped);
+  return {from_t(xm.t_at(screen.x), x_log), from_t(ym.t_at(screen.y), y_log)};
+}
+
+bool Plot::begin(const char* id, ImVec2 size, const PlotAxis& x, const PlotAxis& y) {
+  open_ = false;
+  autoscale_requested_ = false;
+  series_.clear();
+  legend_.clear();
+  vlines_.clear();
+  legend_text_.clear();
+
+  const ImVec2 avail = ImGui::GetContentRegionAvail();
+  if (size.x <= 0)
+    size.x = std::max(avail.x + size.x, kMinWidth);
+  if (size.y <= 0)
+    size.y = std::max(avail.y + size.y, kMinHeight);
+  if (!ImGui::IsRectVisible(size)) {
+    ImGui::Dummy(size);  // keeps the layout (and the scroll extent) the same as when visible
+    return false;
+  }
+
+  ImGui::PushID(id);
+  for (int i = 0; i < kSlotCount; ++i) {
+    keys_[i] = ImGui::GetID(reinterpret_cast<const void*>(static_cast<std::uintptr_t>(i + 1)));
+  }
+  ImGui::PopID();
+
+  ImGui::InvisibleButton(id, size);
+  hovered_ = ImGui::IsItemHovered();
+  active_ = ImGui::IsItemActive();
+  double_clicked_ = hovered_ && ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left);
+  frame_min_ = ImGui::GetItemRectMin();
+  frame_max_ = ImGui::GetItemRectMax();
+  if (hovered_)
+    ImGui::SetItemUsingMouseWheel();
+  // Keyed to the button's id (not a string) so that two plots in a window get two menus.
+  if (ImGui::BeginPopupContextItem(nullptr)) {
+    if (ImGui::MenuItem("Autoscale"))
+      autoscale_requested_ = true;
+    ImGui::EndPopup();
+  }
+
+  x_axis_ = x;
+  y_axis_ = y;
+  open_ = true;
+  return true;
+}
+
+std::size_t Plot::store_text(const char* text) {
+  const std::size_t offset = legend_text_.size();
+  legend_text_.append(text);
+  legend_text_.push_back('\0');
+  return offset;
+}
+
+void Plot::add_series(Kind kind, const char* legend, std::span<const double> xs,
+                      std::span<const double> ys, ImU32 colour, float size, MarkerShape shape) {
+  if (!open_)
+    return;
+  const std::size_t n = std::min(xs.size(), ys.size());
+  int entry = -1;
+  if (legend != nullptr && legend[0] != '\0') {
+    for (std::size_t i = 0; i < legend_.size() && entry < 0; ++i) {
+      if (std::strcmp(legend_text_.c_str() + legend_[i].text, legend) == 0) {
+        entry = static_cast<int>(i);
+      }
+    }
+    if (entry < 0) {
+      entry = static_cast<int>(legend_.size());
+      legend_.push_back({store_text(legend), kind, colour, shape});
+    }
+  }
+  series_.push_back({kind, xs.first(n), ys.first(n), colour, size, shape, entry});
+}
+
+void Plot::line(const char* legend, std::span<const double> xs, std::span<const double> ys,
+                ImU32 colour, float thickness) {
+  add_series(Kind::Line, legend, xs, ys, colour, thickness, MarkerShape::Circle);
+}
+
+void Plot::steps(const char* legend, std::span<const double> xs, std::span<const double> ys,
+                 ImU32 colour, float thickness) {
+  add_series(Kind::Steps, legend, xs, ys, colour, thickness, MarkerShape::Circle);
+}
+
+void Plot::markers(const char* legend, std::span<const double> xs, std::span<const double> ys,
+                   ImU32 colour, MarkerShape shape, float radius) {
+  add_series(Kind::Markers, legend, xs, ys, colour, radius, shape);
+}
+
+void Plot::vertical_line(double x, ImU32 colour, const char* label) {
+  if (!open_)
+    return;
+  const std::size_t text =
+      (label != nullptr && label[0] != '\0') ? store_text(label) : std::string::npos;
+  vlines_.push_back({x, colour, text});
+}
+
+// Draws path_ (screen coordinates, NaN = gap) as polylines, cut to the clip box grown by the
+// line width. ImGui's clip rect alone would hide the overhang, but far-off vertices would still
+// be emitted, and zoomed-in coordinates can exceed what float vertices represent.
+void Plot::stroke(ImDrawList* dl, ImU32 colour, float thickness, ImVec2 clip_min, ImVec2 clip_max) {
+  const double pad = thickness + 1.0;
+  const double box[4] = {clip_min.x - pad, clip_min.y - pad, clip_max.x + pad, clip_max.y + pad};
+  screen_.clear();
+  const auto flush = [&] {
+    if (screen_.size() >= 2) {
+      dl->AddPolyline(screen_.data(), static_cast<int>(screen_.size()), colour, ImDrawFlags_None,
+                      thickness);
+    }
+    screen_.clear();
+  };
+  for (std::size_t i = 1; i < path_.size(); ++i) {
+    double ax = path_[i - 1].x, ay = path_[i - 1].y, bx = path_[i].x, by = path_[i].y;
+    bool a_moved = false, b_moved = false;
+    if (!(std::isfinite(ax) && std::isfinite(ay) && std::isfinite(bx) && std::isfinite(by)) ||
+        !clip_segment(ax, ay, bx, by, box, a_moved, b_moved)) {
+      flush();
+      continue;
+    }
+    if (a_moved)
+      flush();
+    if (screen_.empty())
+      screen_.push_back(vec(ax, ay));
+    // A zero-length segment has no direction and pinches the anti-aliased joint around it.
+    const ImVec2 b = vec(bx, by);
+    if (b.x != screen_.back().x || b.y != screen_.back().y)
+      screen_.push_back(b);
+    if (b_moved)
+      flush();
+  }
+  flush();
+}
+
+std::optional<PlotHit> Plot::end() {
+  if (!open_)
+    return std::nullopt;
+  open_ = false;
+
+  ImGuiStorage* st = ImGui::GetStateStorage();
+  ImDrawList* dl = ImGui::GetWindowDrawList();
+  const ImGuiIO& io = ImGui::GetIO();
+  const float font = ImGui::GetFontSize();
+  const bool x_log = x_axis_.log, y_log = y_axis_.log;
+  const bool x_title = !x_axis_.label.empty(), y_title = !y_axis_.label.empty();
+
+  // --- view range: stored (the user zoomed or panned) or fitted to the data ---
+  int flags = st->GetInt(keys_[kFlags], 0);
+  if (autoscale_requested_ || double_clicked_)
+    flags &= ~(kManualX | kManualY);
+  bool manual_x = (flags & kHasRange) && (flags & kManualX);
+  bool manual_y = (flags & kHasRange) && (flags & kManualY);
+  double xt0 = 0, xt1 = 1, yt0 = 0, yt1 = 1;
+  if (manual_x) {
+    xt0 = to_t(load_double(st, keys_, kXLo), x_log);
+    xt1 = to_t(load_double(st, keys_, kXHi), x_log);
+    manual_x = std::isfinite(xt0) && std::isfinite(xt1) && xt0 < xt1;
+  }
+  if (manual_y) {
+    yt0 = to_t(load_double(st, keys_, kYLo), y_log);
+    yt1 = to_t(load_double(st, keys_, kYHi), y_log);
+    manual_y = std::isfinite(yt0) && std::isfinite(yt1) && yt0 < yt1;
+  }
+  if (!manual_x || !manual_y) {
+    // With one axis fixed by the user, fit the other to what is visible of the data; all of it
+    // when no sample is visible (zoomed in between two samples).
+    Bounds bx, by, all_x, all_y;
+    for (const Series& s : series_) {
+      for (std::size_t i = 0; i < s.xs.size(); ++i) {
+        const double tx = to_t(s.xs[i], x_log), ty = to_t(s.ys[i], y_log);
+        if (!std::isfinite(tx) || !std::isfinite(ty))
+          continue;
+        all_x.add(tx);
+        all_y.add(ty);
+        if (manual_x && (tx < xt0 || tx > xt1))
+          continue;
+        if (manual_y && (ty < yt0 || ty > yt1))
+          continue;
+        bx.add(tx);
+        by.add(ty);
+      }
+    }
+    for (const VLine& v : vlines_) {
+      const double tx = to_t(v.x, x_log);
+      if (std::isfinite(tx))
+        bx.add(tx);
+    }
+    if (!manual_x)
+      fit(bx.valid() ? bx : all_x, x_log, xt0, xt1);
+    if (!manual_y)
+      fit(by.valid() ? by : all_y, y_log, yt0, yt1);
+  }
+
+  // --- input, in the layout the user saw last frame ---
+  float label_width = st->GetFloat(keys_[kLabelWidth], 0.0f);
+  Layout lay = layout(frame_min_, frame_max_, label_width, x_title, y_title, font);
+  if (hovered_ && io.MouseWheel != 0) {
+    const bool zoom_x = !(io.KeyCtrl && !io.KeyShift), zoom_y = !(io.KeyShift && !io.KeyCtrl);
+    const double f = std::pow(kWheelZoom, -static_cast<double>(io.MouseWheel));
+    const auto zoom = [f](double& t0, double& t1, double c, bool log) {
+      double n0 = c + (t0 - c) * f, n1 = c + (t1 - c) * f;
+      if (n1 - n0 < min_span(n0, n1))
+        return;  // as far in as is meaningful
+      sanitize(n0, n1, log);
+      t0 = n0;
+      t1 = n1;
+    };
+    if (zoom_x) {
+      const AxisMap m = x_map(xt0, xt1, lay.min, lay.max, x_log, x_axis_.flipped);
+      zoom(xt0, xt1, m.t_at(io.MousePos.x), x_log);
+      manual_x = true;
+    }
+    if (zoom_y) {
+      const AxisMap m = y_map(yt0, yt1, lay.min, lay.max, y_log, y_axis_.flipped);
+      zoom(yt0, yt1, m.t_at(io.MousePos.y), y_log);
+      manual_y = true;
+    }
+  }
+  if (active_) {
+    // Only real motion counts, so that the clicks of a double-click do not end autoscale.
+    if (io.MouseDelta.x != 0) {
+      const AxisMap m = x_map(xt0, xt1, lay.min, lay.max, x_log, x_axis_.flipped);
+      const double dt = -io.MouseDelta.x / m.scale;
+      xt0 += dt;
+      xt1 += dt;
+      sanitize(xt0, xt1, x_log);
+      manual_x = true;
+    }
+    if (io.MouseDelta.y != 0) {
+      const AxisMap m = y_map(yt0, yt1, lay.min, lay.max, y_log, y_axis_.flipped);
+      const double dt = -io.MouseDelta.y / m.scale;
+      yt0 += dt;
+      yt1 += dt;
+      sanitize(yt0, yt1, y_log);
+      manual_y = true;
+    }
+  }
+
+  // --- ticks and final layout ---
+  char buf[64];
+  const float plot_h = lay.max.y - lay.min.y;
+  axis_ticks(yt0, yt1, y_log, std::clamp(static_cast<int>(plot_h / (font * 2.5f)), 2, 12),
+             y_ticks_);
+  float needed = 0;
+  for (std::size_t i = 0; i < y_ticks_.size(); ++i) {
+    format_tick_into(buf, sizeof buf, y_ticks_[i], tick_step(y_ticks_, i));
+    needed = std::max(needed, ImGui::CalcTextSize(buf).x);
+  }
+  // Hysteresis: a label width that flickers by a digit would make the whole plot jitter.
+  if (needed > label_width || needed < label_width - font)
+    label_width = needed;
+  lay = layout(frame_min_, frame_max_, label_width, x_title, y_title, font);
+  const float plot_w = lay.max.x - lay.min.x;
+  axis_ticks(xt0, xt1, x_log, std::clamp(static_cast<int>(plot_w / (font * 5.0f)), 2, 12),
+             x_ticks_);
+
+  const AxisMap xm = x_map(xt0, xt1, lay.min, lay.max, x_log, x_axis_.flipped);
+  const AxisMap ym = y_map(yt0, yt1, lay.min, lay.max, y_log, y_axis_.flipped);
+
+  // --- drawing ---
+  const ImU32 col_bg = ImGui::GetColorU32(ImGuiCol_FrameBg);
+  const ImU32 col_grid = ImGui::GetColorU32(ImGuiCol_Text, 0.12f);
+  const ImU32 col_border = ImGui::GetColorU32(ImGuiCol_Border);
+  const ImU32 col_text = ImGui::GetColorU32(ImGuiCol_Text);
+  const float pad = std::round(font * 0.35f);
+
+  dl->AddRectFilled(lay.min, lay.max, col_bg);
+  for (const double v : x_ticks_) {
+    const float px = static_cast<float>(xm.px(v));
+    dl->AddLine({px, lay.min.y}, {px, lay.max.y}, col_grid);
+  }
+  for (const double v : y_ticks_) {
+    const float py = static_cast<float>(ym.px(v));
+    dl->AddLine({lay.min.x, py}, {lay.max.x, py}, col_grid);
+  }
+
+  dl->PushClipRect(lay.min, lay.max, true);
+  for (const Series& s : series_) {
+    const std::size_t n = s.xs.size();
+    if (s.kind == Kind::Markers) {
+      for (std::size_t i = 0; i < n; ++i) {
+        const double px = xm.px(s.xs[i]), py = ym.px(s.ys[i]);
+        if (!(px >= lay.min.x - s.size && px <= lay.max.x + s.size && py >= lay.min.y - s.size &&
+              py <= lay.max.y + s.size)) {
+          continue;  // also skips NaN
+        }
+        draw_marker(dl, vec(px, py), s.size, s.colour, s.shape);
+      }
+      continue;
+    }
+    path_.clear();
+    if (s.kind == Kind::Line) {
+      for (std::size_t i = 0; i < n; ++i)
+        path_.push_back({xm.px(s.xs[i]), ym.px(s.ys[i])});
+    } else {
+      const auto px_at = [&](std::size_t i) {
+        const double px = xm.px(s.xs[i]);
+        return std::isfinite(px) && std::isfinite(ym.px(s.ys[i])) ? px : kNaN;
+      };
+      double prev = kNaN, cur = n > 0 ? px_at(0) : kNaN;
+      for (std::size_t i = 0; i < n; ++i) {
+        const double next = i + 1 < n ? px_at(i + 1) : kNaN;
+        if (std::isnan(cur)) {
+          path_.push_back({kNaN, kNaN});
+        } else {
+          const double py = ym.px(s.ys[i]);
+          path_.push_back({std::isnan(prev) ? cur : (prev + cur) / 2, py});
+          path_.push_back({std::isnan(next) ? cur : (cur + next) / 2, py});
+        }
+        prev = cur;
+        cur = next;
+      }
+    }
+    stroke(dl, s.colour, s.size, lay.min, lay.max);
+  }
+  for (const VLine& v : vlines_) {
+    const double px = xm.px(v.x);
+    if (!(px >= lay.min.x && px <= lay.max.x))
+      continue;
+    const float fx = static_cast<float>(px);
+    dl->AddLine({fx, lay.min.y}, {fx, lay.max.y}, v.colour, 1.5f);
+    if (v.text != std::string::npos) {
+      dl->AddText({fx + pad, lay.min.y + pad}, v.colour, legend_text_.c_str() + v.text);
+    }
+  }
+
+  // Hover: nearest point on screen, not in data units, since the axes' scales differ.
+  std::optional<PlotHit> hit;
+  const ImVec2 mouse = io.MousePos;
+  if (hovered_ && !(active_ && (io.MouseDelta.x != 0 || io.MouseDelta.y != 0)) &&
+      inside(mouse, lay.min, lay.max)) {
+    double best = static_cast<double>(kHoverRadius) * kHoverRadius;
+    for (std::size_t si = 0; si < series_.size(); ++si) {
+      const Series& s = series_[si];
+      for (std::size_t i = 0; i < s.xs.size(); ++i) {
+        const double dx = xm.px(s.xs[i]) - mouse.x, dy = ym.px(s.ys[i]) - mouse.y;
+        const double d2 = dx * dx + dy * dy;
+        if (d2 < best) {  // false for NaN
+          best = d2;
+          hit = PlotHit{static_cast<int>(si), static_cast<int>(i), s.xs[i], s.ys[i]};
+        }
+      }
+    }
+    if (hit) {
+      const Series& s = series_[static_cast<std::size_t>(hit->series)];
+      const ImVec2 p = vec(xm.px(hit->x), ym.px(hit->y));
+      dl->AddCircleFilled(p, 3.5f, s.colour, 12);
+      dl->AddCircle(p, 7.0f, col_text, 16, 1.5f);
+      ImGui::BeginTooltip();
+      if (s.legend >= 0) {
+        ImGui::TextUnformatted(legend_text_.c_str() +
+                               legend_[static_cast<std::size_t>(s.legend)].text);
+      }
+      ImGui::Text("%s: %.6g", x_title ? x_axis_.label.c_str() : "x", hit->x);
+      ImGui::Text("%s: %.6g", y_title ? y_axis_.label.c_str() : "y", hit->y);
+      ImGui::EndTooltip();
+    }
+  }
+  dl->PopClipRect();
+
+  dl->AddRect(lay.min, lay.max, col_border);
+
+  // Tick labels and titles may use the whole frame but not spill onto neighbouring widgets.
+  dl->PushClipRect(frame_min_, frame_max_, true);
+  float edge = 0;  // screen edge of the last drawn x label, facing the next one
+  for (std::size_t i = 0; i < x_ticks_.size(); ++i) {
+    const float px = static_cast<float>(xm.px(x_ticks_[i]));
+    dl->AddLine({px, lay.max.y}, {px, lay.max.y + pad}, col_border);
+    format_tick_into(buf, sizeof buf, x_ticks_[i], tick_step(x_ticks_, i));
+    const float w = ImGui::CalcTextSize(buf).x;
+    const float left = px - w / 2, right = px + w / 2, gap = font * 0.5f;
+    // Ticks ascend in value, which runs right to left on a flipped axis.
+    const bool overlaps = i > 0 && (x_axis_.flipped ? right > edge - gap : left < edge + gap);
+    if (overlaps)
+      continue;
+    dl->AddText({left, lay.max.y + pad}, col_text, buf);
+    edge = x_axis_.flipped ? left : right;
+  }
+  for (std::size_t i = 0; i < y_ticks_.size(); ++i) {
+    const float py = static_cast<float>(ym.px(y_ticks_[i]));
+    dl->AddLine({lay.min.x - pad, py}, {lay.min.x, py}, col_border);
+    format_tick_into(buf, sizeof buf, y_ticks_[i], tick_step(y_ticks_, i));
+    const ImVec2 sz = ImGui::CalcTextSize(buf);
+    dl->AddText({lay.min.x - pad - sz.x, py - sz.y / 2}, col_text, buf);
+  }
+  if (x_title) {
+    const float w = ImGui::CalcTextSize(x_axis_.label.c_str()).x;
+    dl->AddText({(lay.min.x + lay.max.x - w) / 2, lay.max.y + pad + font + pad / 2}, col_text,
+                x_axis_.label.c_str());
+  }
+  // Above the axis rather than beside the tick labels, where the top label could collide.
+  if (y_title)
+    dl->AddText({lay.min.x, frame_min_.y}, col_text, y_axis_.label.c_str());
+  dl->PopClipRect();
+
+  // Legend in the top right corner of the data area, on top of the data.
+  if (!legend_.empty()) {
+    const float swatch = font * 1.6f, row = font + 2;
+    float text_w = 0;
+    for (const LegendEntry& e : legend_) {
+      text_w = std::max(text_w, ImGui::CalcTextSize(legend_text_.c_str() + e.text).x);
+    }
+    const ImVec2 box_max{lay.max.x - pad,
+                         lay.min.y + pad + 2 * pad + row * static_cast<float>(legend_.size())};
+    const ImVec2 box_min{box_max.x - (swatch + 3 * pad + text_w), lay.min.y + pad};
+    dl->PushClipRect(lay.min, lay.max, true);
+    dl->AddRectFilled(box_min, box_max, ImGui::GetColorU32(ImGuiCol_PopupBg, 0.85f));
+    dl->AddRect(box_min, box_max, col_border);
+    float y = box_min.y + pad;
+    for (const LegendEntry& e : legend_) {
+      const ImVec2 mid{box_min.x + pad + swatch / 2, y + row / 2};
+      if (e.kind == Kind::Markers) {
+        draw_marker(dl, mid, std::min(4.0f, row / 2 - 1), e.colour, e.shape);
+      } else {
+        dl->AddLine({mid.x - swatch / 2, mid.y}, {mid.x + swatch / 2, mid.y}, e.colour, 2.0f);
+      }
+      dl->AddText({box_min.x + 2 * pad + swatch, y + 1}, col_text, legend_text_.c_str() + e.text);
+      y += row;
+    }
+    dl->PopClipRect();
+  }
+
+  // --- state for the next frame and for the caller ---
+  view_.min = lay.min;
+  view_.max = lay.max;
+  view_.x_lo = from_t(xt0, x_log);
+  view_.x_hi = from_t(xt1, x_log);
+  view_.y_lo = from_t(yt0, y_log);
+  view_.y_hi = from_t(yt1, y_log);
+  view_.x_log = x_log;
+  view_.y_log = y_log;
+  view_.x_flipped = x_axis_.flipped;
+  view_.y_flipped = y_axis_.flipped;
+  view_.x_auto = !manual_x;
+  view_.y_auto = !manual_y;
+  view_.legend_entries = static_cast<int>(legend_.size());
+
+  store_double(st, keys_, kXLo, view_.x_lo);
+  store_double(st, keys_, kXHi, view_.x_hi);
+  store_double(st, keys_, kYLo, view_.y_lo);
+  store_double(st, keys_, kYHi, view_.y_hi);
+  st->SetInt(keys_[kFlags], kHasRange | (manual_x ? kManualX : 0) | (manual_y ? kManualY : 0));
+  st->SetFloat(keys_[kLabelWidth], label_width);
+  return hit;
+}
+
+}  // namespace foldlab::gui

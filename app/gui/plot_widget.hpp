@@ -1,0 +1,152 @@
+// A small 2D plot drawn with ImGui draw lists (ImPlot is not packaged for Debian 12).
+//
+// Immediate mode, like ImGui itself:
+//
+//   static foldlab::gui::Plot plot;  // one object per plot keeps its buffers warm
+//   if (plot.begin("fold lines", {0, 0}, {"x (mm)"}, {"y (mm)", /*flipped=*/true})) {
+//     plot.line("positive fold", xs, ys, IM_COL32(220, 60, 40, 255));
+//     plot.markers("supports", sx, sy, IM_COL32(240, 240, 240, 255), MarkerShape::Triangle);
+//     if (auto hit = plot.end()) { /* hit->series, hit->index */ }
+//   }
+//
+// Series are only recorded until end(), which lays out, handles input and draws everything:
+// the spans must stay valid until end() returns (legend and label strings are copied). The view
+// state (visible range, autoscale on/off) lives in the current window's ImGuiStorage under the
+// plot's id, so it persists across frames and dies with the ImGui context.
+//
+// Interaction: the view follows the data (autoscale, with a 5 % margin) until the user zooms or
+// pans that axis. Mouse wheel zooms around the cursor (Shift: x only, Ctrl: y only), left drag
+// pans, double-click or the right-click menu's "Autoscale" turns autoscale back on. The data
+// point nearest to the mouse (within 12 px) is highlighted, shown in a tooltip and returned.
+#pragma once
+
+#include <imgui.h>
+
+#include <cstddef>
+#include <optional>
+#include <span>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace foldlab::gui {
+
+struct PlotAxis {
+  std::string label;     // title with its unit, e.g. "x (mm)"; tick labels are plain numbers
+  bool flipped = false;  // larger values to the left (x) or downward (y: the paper's figures)
+  bool log = false;      // log10 scale; values <= 0 are skipped as if they were NaN
+};
+
+enum class MarkerShape { Circle, Square, Diamond, Triangle, Cross, Plus };
+
+// The data point nearest to the mouse. `series` counts line(), steps() and markers() calls in the
+// order of this frame's submission (vertical lines are not series); `index` is into its spans.
+struct PlotHit {
+  int series;
+  int index;
+  double x;
+  double y;
+};
+
+// What end() drew this frame: the data rectangle on screen and the visible data ranges.
+struct PlotView {
+  ImVec2 min{0, 0}, max{0, 0};  // screen rectangle of the data area
+  double x_lo = 0, x_hi = 1;    // visible ranges, lo < hi whatever the axis direction
+  double y_lo = 0, y_hi = 1;
+  bool x_log = false, y_log = false;
+  bool x_flipped = false, y_flipped = false;
+  bool x_auto = true, y_auto = true;  // the axis follows the data
+  int legend_entries = 0;             // after de-duplication by label
+
+  ImVec2 to_screen(double x, double y) const;
+  std::pair<double, double> to_data(ImVec2 screen) const;
+};
+
+class Plot {
+ public:
+  // Starts a plot of `size` under `id` (unique within the window). A size component <= 0 means
+  // the available region plus that amount, as in ImGui. Returns false when the plot is clipped
+  // or hidden: then call nothing else, not even end().
+  bool begin(const char* id, ImVec2 size, const PlotAxis& x, const PlotAxis& y);
+
+  // Series. A null or empty legend adds no legend entry; entries with equal labels show once.
+  // Points with a NaN or infinite coordinate are gaps; spans of unequal length use the shorter.
+  void line(const char* legend, std::span<const double> xs, std::span<const double> ys,
+            ImU32 colour, float thickness = 1.5f);
+  // Sampled step function (e.g. the wrinkle count n over a sweep): each sample's value holds up
+  // to half-way to its neighbours, since the true jump is only known to lie between two samples.
+  void steps(const char* legend, std::span<const double> xs, std::span<const double> ys,
+             ImU32 colour, float thickness = 1.5f);
+  void markers(const char* legend, std::span<const double> xs, std::span<const double> ys,
+               ImU32 colour, MarkerShape shape = MarkerShape::Circle, float radius = 4.0f);
+  // A full-height line, e.g. the current value of a sweep; it is included in x autoscale.
+  void vertical_line(double x, ImU32 colour, const char* label = nullptr);
+
+  // Fit both axes to the data again, from this frame on (between begin() and end()).
+  void request_autoscale() { autoscale_requested_ = true; }
+
+  // Draws axes, grid, ticks, series and legend, handles zoom/pan/autoscale and returns the
+  // data point nearest to the mouse, if any is within 12 px.
+  std::optional<PlotHit> end();
+
+  // Valid after end(); the same until the next end().
+  const PlotView& view() const { return view_; }
+
+ private:
+  enum class Kind { Line, Steps, Markers };
+  struct Series {
+    Kind kind;
+    std::span<const double> xs, ys;
+    ImU32 colour;
+    float size;  // line thickness or marker radius
+    MarkerShape shape;
+    int legend;  // index into legend_, -1 for none
+  };
+  struct LegendEntry {
+    std::size_t text;  // offset into legend_text_
+    Kind kind;
+    ImU32 colour;
+    MarkerShape shape;
+  };
+  struct VLine {
+    double x;
+    ImU32 colour;
+    std::size_t text;  // offset into legend_text_, npos for none
+  };
+  struct DPoint {
+    double x, y;
+  };
+
+  void add_series(Kind kind, const char* legend, std::span<const double> xs,
+                  std::span<const double> ys, ImU32 colour, float size, MarkerShape shape);
+  std::size_t store_text(const char* text);
+  void stroke(ImDrawList* dl, ImU32 colour, float thickness, ImVec2 clip_min, ImVec2 clip_max);
+
+  bool open_ = false;
+  bool hovered_ = false, active_ = false, double_clicked_ = false;
+  bool autoscale_requested_ = false;
+  ImGuiID keys_[10] = {};
+  ImVec2 frame_min_{0, 0}, frame_max_{0, 0};
+  PlotAxis x_axis_, y_axis_;
+  std::vector<Series> series_;
+  std::vector<LegendEntry> legend_;
+  std::vector<VLine> vlines_;
+  std::string legend_text_;  // NUL-separated copies: callers may pass temporaries' c_str()
+  // Per-frame scratch, kept here so a long-lived Plot does not allocate once warm.
+  std::vector<double> x_ticks_, y_ticks_;
+  std::vector<DPoint> path_;
+  std::vector<ImVec2> screen_;
+  PlotView view_;
+};
+
+// "Nice" ticks (1, 2 or 5 × 10^k apart) inside [lo, hi] (either order), about `target` of them,
+// ascending. lo == hi gives that one value; a non-finite bound gives none.
+std::vector<double> nice_ticks(double lo, double hi, int target);
+// Ticks for a log axis over [lo, hi] (positive): decades, with 2 and 5 added when there are few
+// decades, every k-th decade when there are many, linear nice ticks inside a single decade.
+std::vector<double> log_ticks(double lo, double hi, int target);
+// Label for a tick `value` on an axis whose ticks are `step` apart: as many decimals as the step
+// needs, exponent notation for very large or small values, never "-0".
+std::string format_tick(double value, double step);
+
+}  // namespace foldlab::gui

@@ -1,0 +1,56 @@
+// Where a frame is drawn: a GL 3.3 core context plus a framebuffer. Two backends share one frame
+// loop, in the manner of Polyscope's render engines: a GLFW window (the explorer, and scripted
+// window runs under Xvfb) and an EGL surfaceless context with an off-screen framebuffer (headless
+// rendering with no display and no X server).
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <stdexcept>
+#include <vector>
+
+namespace foldlab::gui {
+
+struct FrameSize {
+  int width = 0;
+  int height = 0;
+};
+
+class SurfaceError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+class Surface {
+ public:
+  virtual ~Surface() = default;
+  // Initialises ImGui's platform side for this backend (the renderer side is shared).
+  virtual void init_imgui_platform() = 0;
+  virtual void shutdown_imgui_platform() = 0;
+  // False once the user asked to close the window.
+  virtual bool open() const = 0;
+  // Polls input and starts ImGui's platform frame: display size, time step, mouse, keys.
+  virtual void new_frame() = 0;
+  virtual FrameSize framebuffer_size() const = 0;
+  // Makes the frame's own framebuffer current (0 for a window, the off-screen one headless).
+  virtual void bind_framebuffer() = 0;
+  virtual void present() = 0;
+  // Blocks until the frame is on the screen or in the buffer: for timing and screenshots.
+  virtual void finish() = 0;
+};
+
+struct SurfaceOptions {
+  int width = 1280;
+  int height = 800;
+  bool vsync = true;  // window only
+};
+
+std::unique_ptr<Surface> make_window_surface(const SurfaceOptions& options);
+std::unique_ptr<Surface> make_headless_surface(const SurfaceOptions& options);
+
+// RGBA pixels of the current framebuffer, top row first.
+std::vector<std::uint8_t> read_framebuffer_rgba(FrameSize size);
+// Writes RGBA pixels (top row first) as PNG. Throws SurfaceError naming the path on failure.
+void write_png(const char* path, FrameSize size, const std::vector<std::uint8_t>& rgba);
+
+}  // namespace foldlab::gui

@@ -1,0 +1,209 @@
+// The explorer as a person sees it: `foldlab render` (EGL, no display) and `foldlab gui` in a real
+// window under Xvfb, checked on the pictures they write.
+#include <cmath>
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+#include <stb_image.h>
+#include <nlohmann/json.hpp>
+
+#include "process.hpp"
+#include "temp_dir.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+using foldlab::testing::RunResult;
+
+const std::string kExecutable = FOLDLAB_EXECUTABLE;
+const fs::path kPresetsDir = FOLDLAB_PRESETS_DIR;
+
+struct Image {
+  int width = 0;
+  int height = 0;
+  std::vector<std::uint8_t> rgb;
+
+  const std::uint8_t* at(int x, int y) const {
+    return &rgb[(static_cast<std::size_t>(y) * width + x) * 3];
+  }
+};
+
+Image load_png(const fs::path& path) {
+  Image image;
+  int channels = 0;
+  std::uint8_t* data = stbi_load(path.c_str(), &image.width, &image.height, &channels, 3);
+  if (data == nullptr) {
+    ADD_FAILURE() << "cannot read " << path;
+    return image;
+  }
+  image.rgb.assign(data, data + static_cast<std::size_t>(image.width) * image.height * 3);
+  stbi_image_free(data);
+  return image;
+}
+
+// Pixels within `tolerance` (per channel) of a colour, inside the rectangle given as fractions of
+// the picture (the explorer's first-use layout is in fractions of the window).
+int count_colour(const Image& image, std::array<int, 3> colour, float x0, float y0, float x1,
+                 float y1, int tolerance = 24) {
+  int count = 0;
+  for (int y = static_cast<int>(y0 * image.height); y < static_cast<int>(y1 * image.height); ++y) {
+    for (int x = static_cast<int>(x0 * image.width); x < static_cast<int>(x1 * image.width); ++x) {
+      const std::uint8_t* p = image.at(x, y);
+      bool near = true;
+      for (int c = 0; c < 3; ++c) {
+        near = near && std::abs(p[c] - colour[static_cast<std::size_t>(c)]) <= tolerance;
+      }
+      count += near;
+    }
+  }
+  return count;
+}
+
+double fraction_different(const Image& a, const Image& b) {
+  if (a.width != b.width || a.height != b.height) {
+    return 1.0;
+  }
+  std::size_t differ = 0;
+  for (std::size_t i = 0; i < a.rgb.size(); i += 3) {
+    differ += a.rgb[i] != b.rgb[i] || a.rgb[i + 1] != b.rgb[i + 1] || a.rgb[i + 2] != b.rgb[i + 2];
+  }
+  return static_cast<double>(differ) / (a.rgb.size() / 3);
+}
+
+// The fold-line colours of the plot (and of the paper: negative folds red).
+constexpr std::array<int, 3> kNegativeFold = {214, 39, 40};
+constexpr std::array<int, 3> kPositiveFold = {31, 58, 147};
+// The plot window's first-use place: x 30-65 %, y 0-56 % of the window.
+constexpr float kPlotX0 = 0.30f, kPlotY0 = 0.0f, kPlotX1 = 0.65f, kPlotY1 = 0.56f;
+
+class GuiTest : public foldlab::testing::TempDirTest {
+ protected:
+  GuiTest() : TempDirTest("foldlab_gui_") {}
+
+  foldlab::testing::Environment environment() const {
+    foldlab::testing::Environment env;
+    env.set = {{"XDG_CONFIG_HOME", (dir_ / "config").string()}, {"HOME", dir_.string()}};
+    return env;
+  }
+
+  Image render(const std::string& name, std::vector<std::string> args) {
+    const fs::path out = dir_ / (name + ".png");
+    args.insert(args.begin(), {"render", "--out", out.string()});
+    const RunResult r = foldlab::testing::run_process(kExecutable, args, dir_, environment());
+    EXPECT_EQ(r.exit_status, 0) << r.err;
+    return load_png(out);
+  }
+};
+
+TEST_F(GuiTest, RenderDrawsTheWholeWindowWithFoldColoursInThePlot) {
+  const Image image = render("default", {"--size", "1280x800"});
+  ASSERT_EQ(image.width, 1280);
+  ASSERT_EQ(image.height, 800);
+  // Not blank: many distinct colours (text, lines, shaded cloth).
+  std::vector<bool> seen(1 << 15, false);
+  int distinct = 0;
+  for (std::size_t i = 0; i < image.rgb.size(); i += 3) {
+    const int key =
+        (image.rgb[i] >> 3) << 10 | (image.rgb[i + 1] >> 3) << 5 | image.rgb[i + 2] >> 3;
+    distinct += !seen[static_cast<std::size_t>(key)];
+    seen[static_cast<std::size_t>(key)] = true;
+  }
+  EXPECT_GT(distinct, 200);
+  // The default preset has n = 8: four negative (red) and five positive (blue) fold lines.
+  EXPECT_GT(count_colour(image, kNegativeFold, kPlotX0, kPlotY0, kPlotX1, kPlotY1), 500);
+  EXPECT_GT(count_colour(image, kPositiveFold, kPlotX0, kPlotY0, kPlotX1, kPlotY1), 500);
+}
+
+TEST_F(GuiTest, AnotherPresetOrParameterGivesAnotherPicture) {
+  const Image base = render("default", {});
+  const Image table1 =
+      render("h900", {"--preset", (kPresetsDir / "paper-table1-h900.json").string()});
+  const Image taller = render("h2350", {"--set", "h=2350"});
+  EXPECT_GT(fraction_different(base, table1), 0.01);
+  EXPECT_GT(fraction_different(base, taller), 0.01);
+  // h = 2350 mm has 14 folds against 8: more red in the plot.
+  EXPECT_GT(count_colour(taller, kNegativeFold, kPlotX0, kPlotY0, kPlotX1, kPlotY1),
+            count_colour(base, kNegativeFold, kPlotX0, kPlotY0, kPlotX1, kPlotY1));
+}
+
+TEST_F(GuiTest, NoSlackShowsNoFoldLines) {
+  const Image flat = render("flat", {"--set", "d=0"});
+  ASSERT_EQ(flat.width, 1280);
+  EXPECT_LT(count_colour(flat, kNegativeFold, kPlotX0, kPlotY0, kPlotX1, kPlotY1), 20);
+}
+
+TEST_F(GuiTest, RenderRejectsBadInputWithExitTwo) {
+  const fs::path out = dir_ / "x.png";
+  const RunResult bad_set = foldlab::testing::run_process(
+      kExecutable, {"render", "--out", out.string(), "--set", "d=700"}, dir_, environment());
+  EXPECT_EQ(bad_set.exit_status, 2);
+  EXPECT_NE(bad_set.err.find("d_mm = 700 must be"), std::string::npos) << bad_set.err;
+  const RunResult bad_size = foldlab::testing::run_process(
+      kExecutable, {"render", "--out", out.string(), "--size", "12x7"}, dir_, environment());
+  EXPECT_EQ(bad_size.exit_status, 2);
+  EXPECT_FALSE(fs::exists(out));
+}
+
+bool have_xvfb() {
+  return std::system("command -v xvfb-run >/dev/null 2>&1") == 0;
+}
+
+RunResult run_in_xvfb(const fs::path& dir, const foldlab::testing::Environment& env,
+                      std::vector<std::string> args) {
+  args.insert(args.begin(), {"-a", "-s", "-screen 0 1280x800x24", kExecutable, "gui"});
+  return foldlab::testing::run_process("xvfb-run", args, dir, env);
+}
+
+TEST_F(GuiTest, WindowUnderXvfbShowsTheSamePictureAsHeadless) {
+  if (!have_xvfb()) {
+    GTEST_SKIP() << "xvfb-run is not installed (scripts/install-deps.sh installs it)";
+  }
+  const fs::path shot = dir_ / "window.png";
+  const RunResult r =
+      run_in_xvfb(dir_, environment(), {"--frames", "3", "--fresh", "--screenshot", shot.string()});
+  ASSERT_EQ(r.exit_status, 0) << r.err;
+  const Image window = load_png(shot);
+  ASSERT_EQ(window.width, 1280);
+  ASSERT_EQ(window.height, 800);
+  const Image headless = render("headless", {});
+  // Same frame code, same llvmpipe: the two backends draw the same picture.
+  EXPECT_LT(fraction_different(window, headless), 0.001);
+}
+
+TEST_F(GuiTest, ScriptedDragResolvesEveryFrameAndBuildsTheGridOnlyWhenShown) {
+  if (!have_xvfb()) {
+    GTEST_SKIP() << "xvfb-run is not installed (scripts/install-deps.sh installs it)";
+  }
+  const RunResult r =
+      run_in_xvfb(dir_, environment(), {"--frames", "20", "--fresh", "--report", "--animate", "h"});
+  ASSERT_EQ(r.exit_status, 0) << r.err;
+  const nlohmann::json report = nlohmann::json::parse(r.out);
+  EXPECT_EQ(report.at("frames").get<int>(), 20);
+  // The slider moves every frame: one solve per frame (plus the first), one grid per solve.
+  const nlohmann::json& stats = report.at("stats");
+  EXPECT_GE(stats.at("solution").at("evaluations").get<int>(), 20);
+  EXPECT_EQ(stats.at("grid").at("evaluations").get<int>(),
+            stats.at("solution").at("evaluations").get<int>());
+  EXPECT_GT(report.at("mean_ms").get<double>(), 0.0);
+  EXPECT_GE(report.at("p95_ms").get<double>(), report.at("mean_ms").get<double>() * 0.5);
+}
+
+TEST_F(GuiTest, TheLastSessionIsRestored) {
+  if (!have_xvfb()) {
+    GTEST_SKIP() << "xvfb-run is not installed (scripts/install-deps.sh installs it)";
+  }
+  const RunResult first =
+      run_in_xvfb(dir_, environment(), {"--frames", "2", "--set", "h=1777", "--report"});
+  ASSERT_EQ(first.exit_status, 0) << first.err;
+  EXPECT_TRUE(fs::exists(dir_ / "config" / "foldlab" / "session.json"));
+  const RunResult second = run_in_xvfb(dir_, environment(), {"--frames", "2", "--report"});
+  ASSERT_EQ(second.exit_status, 0) << second.err;
+  const nlohmann::json report = nlohmann::json::parse(second.out);
+  EXPECT_EQ(report.at("solution").at("inputs").at("height_mm").get<double>(), 1777.0);
+  EXPECT_TRUE(fs::exists(dir_ / "config" / "foldlab" / "imgui.ini"));
+}
+
+}  // namespace

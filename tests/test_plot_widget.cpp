@@ -1,0 +1,670 @@
+// The plot widget: tick helpers as plain functions, the widget driven through a headless ImGui
+// context (no window, no GL) and judged by the vertices it leaves in ImGui's draw data.
+#include <gtest/gtest.h>
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <cfloat>
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <functional>
+#include <limits>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "gui/plot_widget.hpp"
+
+namespace foldlab::gui {
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+// True when step is 1, 2 or 5 times a power of ten.
+bool is_nice_step(double step) {
+  const double mantissa = step / std::pow(10.0, std::floor(std::log10(step) + 1e-9));
+  return std::abs(mantissa - 1) < 1e-6 || std::abs(mantissa - 2) < 1e-6 ||
+         std::abs(mantissa - 5) < 1e-6;
+}
+
+TEST(PlotTicks, ZeroTo1400) {
+  EXPECT_EQ(nice_ticks(0, 1400, 7), (std::vector<double>{0, 200, 400, 600, 800, 1000, 1200, 1400}));
+}
+
+TEST(PlotTicks, SymmetricRange) {
+  EXPECT_EQ(nice_ticks(-650, 650, 7), (std::vector<double>{-600, -400, -200, 0, 200, 400, 600}));
+}
+
+TEST(PlotTicks, DecimalStepsAreExactDecimals) {
+  // 3 * 0.2 would be 0.6000000000000001 and print as such.
+  EXPECT_EQ(nice_ticks(0, 1, 5), (std::vector<double>{0, 0.2, 0.4, 0.6, 0.8, 1}));
+}
+
+TEST(PlotTicks, ReversedRangeGivesAscendingTicks) {
+  EXPECT_EQ(nice_ticks(1400, 0, 7), nice_ticks(0, 1400, 7));
+}
+
+TEST(PlotTicks, EqualBoundsGiveOneTick) {
+  EXPECT_EQ(nice_ticks(3.5, 3.5, 7), (std::vector<double>{3.5}));
+}
+
+TEST(PlotTicks, NonFiniteBoundsGiveNoTicks) {
+  EXPECT_TRUE(nice_ticks(kNaN, 1, 5).empty());
+  EXPECT_TRUE(nice_ticks(0, kInf, 5).empty());
+}
+
+TEST(PlotTicks, TinyAndHugeRanges) {
+  const struct {
+    double lo, hi;
+    int target;
+  } cases[] = {{0, 1e-9, 5},       {1.0, 1.0 + 1e-10, 5}, {-3e-7, -1e-7, 4},  {0, 3e12, 6},
+               {-1e308, 1e308, 5}, {1399.9, 1400.3, 7},   {-0.013, 0.0021, 6}};
+  for (const auto& c : cases) {
+    SCOPED_TRACE(testing::Message() << "[" << c.lo << ", " << c.hi << "] target " << c.target);
+    const std::vector<double> t = nice_ticks(c.lo, c.hi, c.target);
+    ASSERT_GE(t.size(), 2u);
+    EXPECT_LE(t.size(), static_cast<std::size_t>(2 * c.target + 1));
+    const double step = t[1] - t[0];
+    EXPECT_TRUE(is_nice_step(step)) << step;
+    for (std::size_t i = 0; i < t.size(); ++i) {
+      EXPECT_TRUE(std::isfinite(t[i]));
+      EXPECT_GE(t[i], c.lo - std::abs(c.lo) * 1e-12);
+      EXPECT_LE(t[i], c.hi + std::abs(c.hi) * 1e-12);
+      if (i > 0) {
+        EXPECT_NEAR(t[i] - t[i - 1], step, step * 1e-6);
+      }
+    }
+  }
+  EXPECT_EQ(nice_ticks(0, 3e12, 6),
+            (std::vector<double>{0, 5e11, 1e12, 1.5e12, 2e12, 2.5e12, 3e12}));
+}
+
+TEST(PlotTicks, LogAxisDecadesAndMantissas) {
+  EXPECT_EQ(log_ticks(1, 1e6, 7), (std::vector<double>{1, 10, 100, 1e3, 1e4, 1e5, 1e6}));
+  EXPECT_EQ(log_ticks(1, 100, 7), (std::vector<double>{1, 2, 5, 10, 20, 50, 100}));
+  EXPECT_EQ(log_ticks(1, 1e30, 5), (std::vector<double>{1, 1e7, 1e14, 1e21, 1e28}));
+  // Inside one decade a log axis is nearly linear.
+  EXPECT_EQ(log_ticks(2, 4, 5), (std::vector<double>{2, 2.5, 3, 3.5, 4}));
+  EXPECT_TRUE(log_ticks(-5, -1, 5).empty());
+}
+
+TEST(PlotTicks, Labels) {
+  EXPECT_EQ(format_tick(1400, 200), "1400");
+  EXPECT_EQ(format_tick(-600, 200), "-600");
+  EXPECT_EQ(format_tick(0.6, 0.2), "0.6");
+  EXPECT_EQ(format_tick(0.25, 0.05), "0.25");
+  EXPECT_EQ(format_tick(-1e-17, 0.2), "0");  // rounding noise around zero
+  EXPECT_EQ(format_tick(-0.0, 1), "0");
+  EXPECT_EQ(format_tick(0, 0.05), "0");  // not "0.00"
+  EXPECT_EQ(format_tick(1.5e9, 5e8), "1.5e+09");
+  EXPECT_EQ(format_tick(1e9, 1e9), "1e+09");
+  EXPECT_EQ(format_tick(2e-6, 1e-6), "2e-06");
+  EXPECT_EQ(format_tick(1.00000000002, 2e-11), "1.00000000002");
+}
+
+// --- the widget, headless ---------------------------------------------------------------------
+
+constexpr ImU32 kColA = IM_COL32(201, 17, 33, 255);
+constexpr ImU32 kColB = IM_COL32(17, 99, 201, 255);
+constexpr ImU32 kColC = IM_COL32(33, 201, 17, 255);
+const ImVec2 kPlotSize{600, 400};
+
+struct Vertex {
+  ImVec2 pos;
+  ImVec4 clip;
+};
+
+class PlotWidget : public testing::Test {
+ protected:
+  void SetUp() override {
+    context_ = ImGui::CreateContext();
+    ImGuiIO& io = ImGui::GetIO();
+    io.DisplaySize = ImVec2(800, 600);
+    io.DeltaTime = 1.0f / 60.0f;
+    io.IniFilename = nullptr;
+    unsigned char* pixels = nullptr;
+    int w = 0, h = 0;
+    io.Fonts->GetTexDataAsRGBA32(&pixels, &w, &h);
+    io.Fonts->SetTexID(reinterpret_cast<ImTextureID>(static_cast<std::intptr_t>(1)));
+    io.MousePos = ImVec2(-FLT_MAX, -FLT_MAX);
+  }
+  void TearDown() override { ImGui::DestroyContext(context_); }
+
+  // One frame with `body` inside a borderless window covering the display. Input (io.MousePos,
+  // io.MouseDown, io.MouseWheel, io.KeyShift/KeyCtrl) is set by the caller beforehand.
+  void frame(const std::function<void()>& body) {
+    ImGui::NewFrame();
+    ImGui::SetNextWindowPos(ImVec2(0, 0));
+    ImGui::SetNextWindowSize(ImVec2(800, 600));
+    ImGui::Begin(
+        "test", nullptr,
+        ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings);
+    body();
+    ImGui::End();
+    ImGui::Render();
+  }
+
+  // A frame with the standard two lines, A and B (or the given data).
+  std::optional<PlotHit> frame_ab(const std::function<void(Plot&)>& extra = {}) {
+    std::optional<PlotHit> hit;
+    frame([&] {
+      ASSERT_TRUE(plot_.begin("plot", kPlotSize, x_axis_, y_axis_));
+      plot_.line("A", ax_, ay_, kColA);
+      plot_.line("B", bx_, by_, kColB);
+      if (extra)
+        extra(plot_);
+      hit = plot_.end();
+    });
+    return hit;
+  }
+
+  // Every vertex of the given colour that ImGui would render, with its command's clip rect.
+  static std::vector<Vertex> vertices_of(ImU32 colour) {
+    std::vector<Vertex> out;
+    const ImDrawData* dd = ImGui::GetDrawData();
+    for (int l = 0; l < dd->CmdListsCount; ++l) {
+      const ImDrawList* list = dd->CmdLists[l];
+      for (const ImDrawCmd& cmd : list->CmdBuffer) {
+        for (unsigned k = cmd.IdxOffset; k < cmd.IdxOffset + cmd.ElemCount; ++k) {
+          const ImDrawVert& v = list->VtxBuffer[static_cast<int>(cmd.VtxOffset) +
+                                                list->IdxBuffer[static_cast<int>(k)]];
+          if (v.col == colour)
+            out.push_back({v.pos, cmd.ClipRect});
+        }
+      }
+    }
+    return out;
+  }
+
+  static ImVec2 centroid(const std::vector<Vertex>& vs) {
+    ImVec2 c(0, 0);
+    for (const Vertex& v : vs) {
+      c.x += v.pos.x / static_cast<float>(vs.size());
+      c.y += v.pos.y / static_cast<float>(vs.size());
+    }
+    return c;
+  }
+
+  static void move_mouse(ImVec2 p) { ImGui::GetIO().MousePos = p; }
+
+  ImGuiContext* context_ = nullptr;
+  Plot plot_;
+  PlotAxis x_axis_{"x (mm)"};
+  PlotAxis y_axis_{"y (mm)"};
+  std::vector<double> ax_{0, 100, 200, 300}, ay_{0, 50, 20, 80};
+  std::vector<double> bx_{0, 150, 300}, by_{100, 40, 10};
+};
+
+TEST_F(PlotWidget, AutoscalesToAllSeriesWithMargin) {
+  frame_ab();
+  const PlotView& v = plot_.view();
+  EXPECT_TRUE(v.x_auto);
+  EXPECT_TRUE(v.y_auto);
+  EXPECT_NEAR(v.x_lo, -15, 1e-9);  // [0, 300] plus 5 % each side
+  EXPECT_NEAR(v.x_hi, 315, 1e-9);
+  EXPECT_NEAR(v.y_lo, -5, 1e-9);  // [0, 100]
+  EXPECT_NEAR(v.y_hi, 105, 1e-9);
+  // The data area lies inside the requested widget size, leaving room for labels.
+  EXPECT_GT(v.min.x, 8.0f);
+  EXPECT_LT(v.max.x, 8.0f + kPlotSize.x + 1);
+  EXPECT_GT(v.max.y - v.min.y, kPlotSize.y * 0.7f);
+  EXPECT_LT(v.max.y, 8.0f + kPlotSize.y + 1);
+}
+
+TEST_F(PlotWidget, LinesAreDrawnInTheirColoursInsideThePlotRect) {
+  frame_ab();
+  const PlotView& v = plot_.view();
+  for (const ImU32 colour : {kColA, kColB}) {
+    const std::vector<Vertex> vs = vertices_of(colour);
+    ASSERT_GE(vs.size(), 8u) << std::hex << colour;
+    for (const Vertex& vx : vs) {
+      EXPECT_GE(vx.pos.x, v.min.x);
+      EXPECT_LE(vx.pos.x, v.max.x);
+      EXPECT_GE(vx.pos.y, v.min.y);
+      EXPECT_LE(vx.pos.y, v.max.y);
+      EXPECT_NEAR(vx.clip.x, v.min.x, 0.5f);  // scissored to the data area
+      EXPECT_NEAR(vx.clip.y, v.min.y, 0.5f);
+      EXPECT_NEAR(vx.clip.z, v.max.x, 0.5f);
+      EXPECT_NEAR(vx.clip.w, v.max.y, 0.5f);
+    }
+  }
+  // The line's end points are where the view maps them.
+  const std::vector<Vertex> a = vertices_of(kColA);
+  const ImVec2 first = v.to_screen(ax_.front(), ay_.front());
+  EXPECT_TRUE(std::any_of(a.begin(), a.end(), [&](const Vertex& vx) {
+    return std::abs(vx.pos.x - first.x) < 2 && std::abs(vx.pos.y - first.y) < 2;
+  }));
+}
+
+TEST_F(PlotWidget, ZoomedInLinesAreCutToThePlotRect) {
+  frame_ab();
+  move_mouse(plot_.view().to_screen(150, 50));
+  ImGui::GetIO().MouseWheel = 8;  // 1.25^8: about 6x in
+  frame_ab();
+  ImGui::GetIO().MouseWheel = 0;
+  const PlotView& v = plot_.view();
+  ASSERT_GT(v.x_lo, 0);  // the data now extends past the plot on both sides
+  ASSERT_LT(v.x_hi, 300);
+  const std::vector<Vertex> vs = vertices_of(kColA);
+  ASSERT_FALSE(vs.empty());
+  const float slack = 1.5f + 2.0f;  // line width and anti-aliasing around the cut
+  for (const Vertex& vx : vs) {
+    EXPECT_GE(vx.pos.x, v.min.x - slack);
+    EXPECT_LE(vx.pos.x, v.max.x + slack);
+    EXPECT_GE(vx.pos.y, v.min.y - slack);
+    EXPECT_LE(vx.pos.y, v.max.y + slack);
+  }
+}
+
+TEST_F(PlotWidget, FlippedYAxisPutsLargerValuesLower) {
+  const double xs[] = {5}, y_small[] = {0}, y_large[] = {10};
+  for (const bool flipped : {true, false}) {
+    SCOPED_TRACE(flipped ? "flipped" : "not flipped");
+    y_axis_.flipped = flipped;
+    frame([&] {
+      ASSERT_TRUE(plot_.begin("plot", kPlotSize, x_axis_, y_axis_));
+      plot_.markers(nullptr, xs, y_small, kColA, MarkerShape::Square);
+      plot_.markers(nullptr, xs, y_large, kColB, MarkerShape::Square);
+      plot_.end();
+    });
+    const ImVec2 small = centroid(vertices_of(kColA)), large = centroid(vertices_of(kColB));
+    ASSERT_FALSE(vertices_of(kColA).empty());
+    ASSERT_FALSE(vertices_of(kColB).empty());
+    if (flipped)
+      EXPECT_GT(large.y, small.y + 100);
+    else
+      EXPECT_LT(large.y, small.y - 100);
+    EXPECT_NEAR(large.x, small.x, 0.5f);
+    EXPECT_NEAR(plot_.view().to_screen(5, 10).y, large.y, 1.0f);
+  }
+}
+
+TEST_F(PlotWidget, LogAxisSpacesDecadesEvenly) {
+  x_axis_.log = true;
+  const double x1[] = {10}, x2[] = {100}, x3[] = {1000}, y[] = {1};
+  frame([&] {
+    ASSERT_TRUE(plot_.begin("plot", kPlotSize, x_axis_, y_axis_));
+    plot_.markers(nullptr, x1, y, kColA, MarkerShape::Plus);
+    plot_.markers(nullptr, x2, y, kColB, MarkerShape::Plus);
+    plot_.markers(nullptr, x3, y, kColC, MarkerShape::Plus);
+    plot_.end();
+  });
+  const float a = centroid(vertices_of(kColA)).x, b = centroid(vertices_of(kColB)).x,
+              c = centroid(vertices_of(kColC)).x;
+  EXPECT_GT(c - a, 300);
+  EXPECT_NEAR(b, (a + c) / 2, 1.0f);
+}
+
+TEST_F(PlotWidget, HoverReturnsTheNearestPoint) {
+  frame_ab();
+  const PlotView v = plot_.view();
+  const ImVec2 a2 = v.to_screen(ax_[2], ay_[2]);
+  move_mouse(ImVec2(a2.x + 3, a2.y - 2));
+  std::optional<PlotHit> hit = frame_ab();
+  ASSERT_TRUE(hit.has_value());
+  EXPECT_EQ(hit->series, 0);
+  EXPECT_EQ(hit->index, 2);
+  EXPECT_EQ(hit->x, ax_[2]);
+  EXPECT_EQ(hit->y, ay_[2]);
+
+  const ImVec2 b1 = v.to_screen(bx_[1], by_[1]);
+  move_mouse(ImVec2(b1.x - 4, b1.y + 4));
+  hit = frame_ab();
+  ASSERT_TRUE(hit.has_value());
+  EXPECT_EQ(hit->series, 1);
+  EXPECT_EQ(hit->index, 1);
+
+  // 13 px away from the nearest point (and further from all others): nothing.
+  move_mouse(ImVec2(a2.x + 13, a2.y));
+  for (const auto& [xs, ys] : {std::pair{&ax_, &ay_}, std::pair{&bx_, &by_}}) {
+    for (std::size_t i = 0; i < xs->size(); ++i) {
+      const ImVec2 p = v.to_screen((*xs)[i], (*ys)[i]);
+      ASSERT_GE(std::hypot(p.x - a2.x - 13, p.y - a2.y), 13.0f);
+    }
+  }
+  EXPECT_FALSE(frame_ab().has_value());
+}
+
+TEST_F(PlotWidget, WheelZoomsAroundTheCursor) {
+  frame_ab();
+  const PlotView before = plot_.view();
+  const ImVec2 cursor(before.min.x + (before.max.x - before.min.x) * 0.3f,
+                      before.min.y + (before.max.y - before.min.y) * 0.6f);
+  const auto [dx, dy] = before.to_data(cursor);
+  move_mouse(cursor);
+  ImGui::GetIO().MouseWheel = 1;
+  frame_ab();
+  const PlotView after = plot_.view();
+  EXPECT_NEAR(after.x_hi - after.x_lo, (before.x_hi - before.x_lo) / 1.25, 1e-9);
+  EXPECT_NEAR(after.y_hi - after.y_lo, (before.y_hi - before.y_lo) / 1.25, 1e-9);
+  const auto [ax, ay] = after.to_data(cursor);
+  const double px_x = (after.x_hi - after.x_lo) / (after.max.x - after.min.x);
+  const double px_y = (after.y_hi - after.y_lo) / (after.max.y - after.min.y);
+  EXPECT_NEAR(ax, dx, px_x);  // the point under the cursor stays under it
+  EXPECT_NEAR(ay, dy, px_y);
+  EXPECT_FALSE(after.x_auto);
+  EXPECT_FALSE(after.y_auto);
+
+  // Wheel down zooms back out.
+  ImGui::GetIO().MouseWheel = -1;
+  frame_ab();
+  EXPECT_NEAR(plot_.view().x_hi - plot_.view().x_lo, before.x_hi - before.x_lo, 1e-9);
+}
+
+TEST_F(PlotWidget, ShiftZoomsOnlyXAndCtrlOnlyY) {
+  frame_ab();
+  const PlotView before = plot_.view();
+  move_mouse(before.to_screen(150, 50));
+  ImGuiIO& io = ImGui::GetIO();
+  io.KeyShift = true;
+  io.MouseWheel = 2;
+  frame_ab();
+  io.KeyShift = false;
+  EXPECT_LT(plot_.view().x_hi - plot_.view().x_lo, before.x_hi - before.x_lo);
+  EXPECT_EQ(plot_.view().y_lo, before.y_lo);
+  EXPECT_EQ(plot_.view().y_hi, before.y_hi);
+  EXPECT_FALSE(plot_.view().x_auto);
+  EXPECT_TRUE(plot_.view().y_auto);
+
+  const PlotView mid = plot_.view();
+  io.KeyCtrl = true;
+  io.MouseWheel = 2;
+  frame_ab();
+  io.KeyCtrl = false;
+  EXPECT_EQ(plot_.view().x_lo, mid.x_lo);
+  EXPECT_EQ(plot_.view().x_hi, mid.x_hi);
+  EXPECT_LT(plot_.view().y_hi - plot_.view().y_lo, mid.y_hi - mid.y_lo);
+  EXPECT_FALSE(plot_.view().y_auto);
+}
+
+TEST_F(PlotWidget, YFollowsTheVisibleDataWhenOnlyXIsZoomed) {
+  frame_ab();
+  // Zoom x around x = 0 until only the samples at x = 0 remain visible.
+  move_mouse(plot_.view().to_screen(0, 50));
+  ImGuiIO& io = ImGui::GetIO();
+  io.KeyShift = true;
+  io.MouseWheel = 8;
+  frame_ab();
+  io.KeyShift = false;
+  frame_ab();  // y is fitted to what the zoomed x range shows
+  const PlotView& v = plot_.view();
+  ASSERT_LT(v.x_hi, 100);
+  EXPECT_TRUE(v.y_auto);
+  // Only A's (0, 0) and B's (0, 100) are inside; B's 10 at x = 300 no longer stretches the range.
+  EXPECT_NEAR(v.y_lo, -5, 1e-9);
+  EXPECT_NEAR(v.y_hi, 105, 1e-9);
+  ay_[0] = 60;  // the lowest visible point moves: y follows, with x still fixed
+  frame_ab();
+  EXPECT_NEAR(plot_.view().y_lo, 60 - 2, 1e-9);
+  EXPECT_NEAR(plot_.view().y_hi, 100 + 2, 1e-9);
+}
+
+TEST_F(PlotWidget, YKeepsAllDataWhenZoomedInBetweenSamples) {
+  frame_ab();
+  move_mouse(plot_.view().to_screen(50, 50));
+  ImGuiIO& io = ImGui::GetIO();
+  io.KeyShift = true;
+  io.MouseWheel = 15;  // x narrows to about 12 mm around 50: no sample of A or B inside
+  frame_ab();
+  io.KeyShift = false;
+  frame_ab();
+  const PlotView& v = plot_.view();
+  ASSERT_GT(v.x_lo, 0);
+  ASSERT_LT(v.x_hi, 100);
+  EXPECT_TRUE(v.y_auto);
+  EXPECT_NEAR(v.y_lo, -5, 1e-9);  // rather than an empty fit
+  EXPECT_NEAR(v.y_hi, 105, 1e-9);
+}
+
+TEST_F(PlotWidget, DragPansAndLeavesTheOtherAxisAuto) {
+  frame_ab();
+  const ImVec2 start = plot_.view().to_screen(100, 50);
+  const auto [sx, sy] = plot_.view().to_data(start);
+  ImGuiIO& io = ImGui::GetIO();
+  move_mouse(start);
+  frame_ab();
+  io.MouseDown[0] = true;
+  frame_ab();
+  const ImVec2 end(start.x + 60, start.y);
+  move_mouse(end);
+  frame_ab();
+  io.MouseDown[0] = false;
+  const PlotView& v = plot_.view();
+  const auto [ex, ey] = v.to_data(end);
+  const double px = (v.x_hi - v.x_lo) / (v.max.x - v.min.x);
+  EXPECT_NEAR(ex, sx, px);  // the grabbed point followed the mouse
+  EXPECT_NEAR(v.x_lo, -15 - 60 * px, 2 * px);
+  EXPECT_FALSE(v.x_auto);
+  EXPECT_TRUE(v.y_auto);
+  EXPECT_NEAR(ey, sy, 1e-9);
+}
+
+TEST_F(PlotWidget, ZoomStopsAutoscaleAndDoubleClickRestoresIt) {
+  frame_ab();
+  const ImVec2 centre = plot_.view().to_screen(150, 50);
+  move_mouse(centre);
+  ImGuiIO& io = ImGui::GetIO();
+  io.MouseWheel = 3;
+  frame_ab();
+  const PlotView zoomed = plot_.view();
+
+  for (double& x : ax_)
+    x *= 2;  // new data: the zoomed view must not follow it
+  for (double& x : bx_)
+    x *= 2;
+  frame_ab();
+  EXPECT_EQ(plot_.view().x_lo, zoomed.x_lo);
+  EXPECT_EQ(plot_.view().x_hi, zoomed.x_hi);
+
+  for (const bool down : {true, false, true}) {
+    io.MouseDown[0] = down;
+    frame_ab();
+  }
+  io.MouseDown[0] = false;
+  frame_ab();
+  EXPECT_TRUE(plot_.view().x_auto);
+  EXPECT_TRUE(plot_.view().y_auto);
+  EXPECT_NEAR(plot_.view().x_lo, -30, 1e-9);  // [0, 600] now
+  EXPECT_NEAR(plot_.view().x_hi, 630, 1e-9);
+}
+
+TEST_F(PlotWidget, RequestAutoscaleRefitsAfterZoom) {
+  frame_ab();
+  move_mouse(plot_.view().to_screen(150, 50));
+  ImGui::GetIO().MouseWheel = 3;
+  frame_ab();
+  ASSERT_FALSE(plot_.view().x_auto);
+  move_mouse(ImVec2(-FLT_MAX, -FLT_MAX));
+  frame_ab([](Plot& p) { p.request_autoscale(); });
+  EXPECT_TRUE(plot_.view().x_auto);
+  EXPECT_NEAR(plot_.view().x_lo, -15, 1e-9);
+  EXPECT_NEAR(plot_.view().x_hi, 315, 1e-9);
+  frame_ab();  // and it stays on
+  EXPECT_TRUE(plot_.view().x_auto);
+}
+
+TEST_F(PlotWidget, TwoPlotsKeepSeparateViews) {
+  Plot other;
+  const auto both = [&] {
+    frame([&] {
+      ASSERT_TRUE(plot_.begin("first", ImVec2(380, 300), x_axis_, y_axis_));
+      plot_.line("A", ax_, ay_, kColA);
+      plot_.end();
+      ImGui::SameLine();
+      ASSERT_TRUE(other.begin("second", ImVec2(380, 300), x_axis_, y_axis_));
+      other.line("A", ax_, ay_, kColA);
+      other.end();
+    });
+  };
+  both();
+  move_mouse(other.view().to_screen(150, 40));
+  ImGui::GetIO().MouseWheel = 2;
+  both();
+  EXPECT_TRUE(plot_.view().x_auto);
+  EXPECT_FALSE(other.view().x_auto);
+  EXPECT_NEAR(plot_.view().x_lo, -15, 1e-9);
+}
+
+TEST_F(PlotWidget, DegenerateDataNeitherAssertsNorBreaksTheView) {
+  const std::vector<double> empty;
+  const std::vector<double> same_x{5, 5, 5}, same_y{7, 7, 7};
+  const std::vector<double> bad_x{0, kNaN, 2, kInf, 4}, bad_y{0, 1, kInf, 3, 4};
+  const auto check = [](const PlotView& v) {
+    EXPECT_TRUE(std::isfinite(v.x_lo) && std::isfinite(v.x_hi) && v.x_lo < v.x_hi);
+    EXPECT_TRUE(std::isfinite(v.y_lo) && std::isfinite(v.y_hi) && v.y_lo < v.y_hi);
+  };
+  frame([&] {
+    ASSERT_TRUE(plot_.begin("plot", kPlotSize, x_axis_, y_axis_));
+    plot_.end();  // no series at all
+  });
+  check(plot_.view());
+
+  frame([&] {
+    ASSERT_TRUE(plot_.begin("plot", kPlotSize, x_axis_, y_axis_));
+    plot_.line("empty", empty, empty, kColA);
+    plot_.steps("empty steps", empty, empty, kColB);
+    plot_.line("one value", same_x, same_y, kColC);
+    plot_.end();
+  });
+  check(plot_.view());
+  EXPECT_LT(plot_.view().x_lo, 5);
+  EXPECT_GT(plot_.view().x_hi, 5);
+  EXPECT_LT(plot_.view().y_lo, 7);
+  EXPECT_GT(plot_.view().y_hi, 7);
+  EXPECT_FALSE(vertices_of(kColC).empty());  // its legend swatch at least
+
+  frame([&] {
+    ASSERT_TRUE(plot_.begin("plot", kPlotSize, x_axis_, y_axis_));
+    plot_.line(nullptr, bad_x, bad_y, kColA);
+    plot_.steps(nullptr, bad_x, bad_y, kColB);
+    plot_.markers(nullptr, bad_x, bad_y, kColC);
+    plot_.end();
+  });
+  check(plot_.view());
+  EXPECT_NEAR(plot_.view().x_lo, -0.2, 1e-12);  // only (0, 0) and (4, 4) count
+  EXPECT_NEAR(plot_.view().x_hi, 4.2, 1e-12);
+
+  // Non-positive values on a log axis are skipped the same way.
+  y_axis_.log = true;
+  const std::vector<double> xs{0, 1, 2, 3}, ys{-1, 0, 10, 1000};
+  frame([&] {
+    ASSERT_TRUE(plot_.begin("plot", kPlotSize, x_axis_, y_axis_));
+    plot_.line(nullptr, xs, ys, kColA);
+    plot_.end();
+  });
+  check(plot_.view());
+  EXPECT_NEAR(std::log10(plot_.view().y_lo), 1 - 0.1, 1e-9);
+  EXPECT_NEAR(std::log10(plot_.view().y_hi), 3 + 0.1, 1e-9);
+}
+
+TEST_F(PlotWidget, LegendShowsEachLabelOnce) {
+  frame([&] {
+    ASSERT_TRUE(plot_.begin("plot", kPlotSize, x_axis_, y_axis_));
+    for (int i = 0; i < 5; ++i)
+      plot_.line("positive fold", ax_, ay_, kColA);
+    plot_.line("negative fold", bx_, by_, kColB);
+    plot_.line(nullptr, bx_, by_, kColC);
+    plot_.markers("", bx_, by_, kColC);
+    plot_.end();
+  });
+  EXPECT_EQ(plot_.view().legend_entries, 2);
+}
+
+TEST_F(PlotWidget, StepsJumpHalfWayBetweenSamples) {
+  const std::vector<double> xs{0, 1, 2}, ys{1, 1, 2};
+  const auto draw = [&](bool as_steps) {
+    frame([&] {
+      ASSERT_TRUE(plot_.begin("plot", kPlotSize, x_axis_, y_axis_));
+      if (as_steps)
+        plot_.steps(nullptr, xs, ys, kColA);
+      else
+        plot_.line(nullptr, xs, ys, kColA);
+      plot_.end();
+    });
+  };
+  const auto has_vertex_near = [](ImVec2 p) {
+    const std::vector<Vertex> vs = vertices_of(kColA);
+    return std::any_of(vs.begin(), vs.end(), [&](const Vertex& v) {
+      return std::abs(v.pos.x - p.x) < 2 && std::abs(v.pos.y - p.y) < 2;
+    });
+  };
+  draw(true);
+  const PlotView v = plot_.view();
+  EXPECT_TRUE(has_vertex_near(v.to_screen(1.5, 1)));  // the riser's foot
+  EXPECT_TRUE(has_vertex_near(v.to_screen(1.5, 2)));  // and its top
+  EXPECT_FALSE(has_vertex_near(v.to_screen(1, 1)));   // mid-tread: no corner at the sample
+  draw(false);  // the same samples as a line: corners at the samples, none half-way
+  EXPECT_TRUE(has_vertex_near(v.to_screen(1, 1)));
+  EXPECT_FALSE(has_vertex_near(v.to_screen(1.5, 2)));
+}
+
+TEST_F(PlotWidget, VerticalLineSpansThePlotAndJoinsTheXAutoscale) {
+  frame_ab([](Plot& p) { p.vertical_line(500, kColC, "current"); });
+  const PlotView& v = plot_.view();
+  EXPECT_NEAR(v.x_hi, 500 + 0.05 * 500, 1e-9);
+  const std::vector<Vertex> vs = vertices_of(kColC);
+  ASSERT_FALSE(vs.empty());
+  const float x = v.to_screen(500, 0).x;
+  float top = FLT_MAX, bottom = -FLT_MAX;
+  for (const Vertex& vx : vs) {
+    if (std::abs(vx.pos.x - x) > 2)
+      continue;  // its label is drawn in the same colour
+    top = std::min(top, vx.pos.y);
+    bottom = std::max(bottom, vx.pos.y);
+  }
+  EXPECT_NEAR(top, v.min.y, 1.5f);
+  EXPECT_NEAR(bottom, v.max.y, 1.5f);
+}
+
+TEST_F(PlotWidget, ClippedPlotReturnsFalse) {
+  bool shown = true;
+  frame([&] {
+    ImGui::SetCursorPosY(2000);  // far below the 600 px window
+    shown = plot_.begin("plot", kPlotSize, x_axis_, y_axis_);
+    if (shown)
+      plot_.end();
+  });
+  EXPECT_FALSE(shown);
+}
+
+TEST_F(PlotWidget, TwentyLinesOf200PointsTakeWellUnderAMillisecond) {
+#ifndef NDEBUG
+  GTEST_SKIP() << "timing budget applies to optimised builds (about 1.7 ms at -O0)";
+#endif
+  std::vector<std::vector<double>> xs(20), ys(20);
+  for (std::size_t k = 0; k < 20; ++k) {
+    for (int i = 0; i < 200; ++i) {
+      xs[k].push_back(-700 + 7.0 * i);
+      ys[k].push_back(1400.0 * i / 200 + 30 * std::sin(0.1 * i + static_cast<double>(k)));
+    }
+  }
+  y_axis_.flipped = true;
+  std::vector<double> us;
+  frame([] {});
+  move_mouse(ImVec2(300, 200));  // hover search included
+  for (int f = 0; f < 41; ++f) {
+    frame([&] {
+      const auto t0 = std::chrono::steady_clock::now();
+      ASSERT_TRUE(plot_.begin("plot", kPlotSize, x_axis_, y_axis_));
+      for (std::size_t k = 0; k < 20; ++k) {
+        plot_.line(k % 2 == 0 ? "positive fold" : "negative fold", xs[k], ys[k],
+                   k % 2 == 0 ? kColA : kColB);
+      }
+      plot_.end();
+      us.push_back(
+          std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - t0).count());
+    });
+  }
+  std::nth_element(us.begin(), us.begin() + 20, us.end());
+  RecordProperty("median_us", std::to_string(us[20]));
+  std::printf("plot of 20 x 200 points: median %.0f us per frame\n", us[20]);
+  EXPECT_LT(us[20], 1000.0);
+}
+
+}  // namespace
+}  // namespace foldlab::gui
