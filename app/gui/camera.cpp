@@ -64,7 +64,7 @@ void OrbitCamera::pan(float dx_px, float dy_px, float viewport_height_px) {
 void OrbitCamera::frame(const Eigen::Vector3f& centre, float radius_mm) {
   *this = OrbitCamera{};
   target = centre;
-  distance_mm = std::max(radius_mm, 1.0f) / std::sin(0.5f * fov_y_rad) * 1.05f;
+  distance_mm = std::max(radius_mm, 1.0f) / std::sin(0.5f * fov_y_rad) * 1.15f;
 }
 
 }  // namespace foldlab::gui

@@ -211,6 +211,7 @@ void Explorer::load_preset_file(const std::filesystem::path& path) {
     edited_ = preset.parameters;
     commit_edits();
     camera_framed_ = false;
+    camera_user_moved_ = false;
     preset_message_ = "Loaded " + preset.name + ".";
     preset_message_is_error_ = false;
     session_dirty_ = true;
@@ -550,12 +551,23 @@ void Explorer::view3d_panel() {
   if (!renderer_) {
     renderer_ = std::make_unique<ClothRenderer>();
   }
-  if (reset || !camera_framed_) {
+  // Until the user moves the camera it follows the cloth, so a slider never drags it out of view.
+  if (reset) {
+    camera_user_moved_ = false;
+  }
+  if (reset || !camera_framed_ ||
+      (!camera_user_moved_ && camera_solution_version_ != scene_.version(Stage::solution))) {
     Eigen::Vector3f centre;
     float radius = 1.0f;
     ClothRenderer::bounds(scene_, centre, radius);
+    const OrbitCamera previous = camera_;
     camera_.frame(centre, radius);
+    if (camera_framed_ && !reset) {
+      camera_.yaw_rad = previous.yaw_rad;  // keep the user's direction, refit the distance only
+      camera_.pitch_rad = previous.pitch_rad;
+    }
     camera_framed_ = true;
+    camera_solution_version_ = scene_.version(Stage::solution);
   }
   const ImVec2 origin = ImGui::GetCursorScreenPos();
   ImGui::InvisibleButton("view",
@@ -563,7 +575,8 @@ void Explorer::view3d_panel() {
                          ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonRight |
                              ImGuiButtonFlags_MouseButtonMiddle);
   const ImGuiIO& io = ImGui::GetIO();
-  if (ImGui::IsItemActive()) {
+  if (ImGui::IsItemActive() && (io.MouseDelta.x != 0.0f || io.MouseDelta.y != 0.0f)) {
+    camera_user_moved_ = true;
     if (ImGui::IsMouseDown(ImGuiMouseButton_Left)) {
       camera_.orbit(io.MouseDelta.x, io.MouseDelta.y);
     } else {
@@ -571,6 +584,7 @@ void Explorer::view3d_panel() {
     }
   }
   if (ImGui::IsItemHovered() && io.MouseWheel != 0.0f) {
+    camera_user_moved_ = true;
     camera_.zoom(io.MouseWheel);
   }
   renderer_->render(scene_, camera_, size, style_);

@@ -70,6 +70,8 @@ class Explorer {
   std::unique_ptr<ClothRenderer> renderer_;
   OrbitCamera camera_;
   bool camera_framed_ = false;
+  bool camera_user_moved_ = false;
+  std::uint64_t camera_solution_version_ = 0;
   ClothStyle style_;
   int grid_resolution_ = 128;
   bool show_stats_ = false;
