@@ -11,9 +11,13 @@
 namespace foldlab::gui {
 namespace {
 
-// Model coordinates have y pointing down (gravity); the view's world has +Y up.
-Eigen::Vector3f to_world(const Eigen::Vector3f& model) {
-  return {model.x(), -model.y(), model.z()};
+// Model coordinates have y pointing down (gravity); the view's world has +Y up. z may be drawn
+// exaggerated; a normal then scales by the inverse (the inverse transpose of the stretch).
+Eigen::Vector3f to_world(const Eigen::Vector3f& model, float z_scale = 1.0f) {
+  return {model.x(), -model.y(), z_scale * model.z()};
+}
+Eigen::Vector3f normal_to_world(const Eigen::Vector3f& normal, float z_scale) {
+  return Eigen::Vector3f(normal.x(), -normal.y(), normal.z() / z_scale).normalized();
 }
 
 constexpr const char* kMeshVertex = R"(#version 330 core
@@ -201,12 +205,12 @@ void ClothRenderer::resize(FrameSize size) {
                             gl_->depth_buffer);
 }
 
-void ClothRenderer::upload_mesh(Scene& scene) {
+void ClothRenderer::upload_mesh(Scene& scene, float z_scale) {
   const std::vector<Eigen::Vector3f>& normals = scene.normals();
   const DeformedGrid& grid = scene.grid();
   std::vector<Vertex> vertices(grid.positions_mm.size());
   for (std::size_t i = 0; i < vertices.size(); ++i) {
-    vertices[i] = {to_world(grid.positions_mm[i]), to_world(normals[i])};
+    vertices[i] = {to_world(grid.positions_mm[i], z_scale), normal_to_world(normals[i], z_scale)};
   }
   glBindVertexArray(gl_->mesh_vao);
   glBindBuffer(GL_ARRAY_BUFFER, gl_->mesh_vbo);
@@ -217,6 +221,7 @@ void ClothRenderer::upload_mesh(Scene& scene) {
                grid.triangle_indices.data(), GL_DYNAMIC_DRAW);
   glBindVertexArray(0);
   gl_->mesh_index_count = static_cast<GLsizei>(grid.triangle_indices.size());
+  mesh_z_scale_ = z_scale;
   ++counters_.mesh_uploads;
 }
 
@@ -231,13 +236,14 @@ void ClothRenderer::upload_fold_lines(Scene& scene, const ClothStyle& style) {
     const Eigen::Vector3f& colour =
         line.sign < 0 ? style.negative_fold_colour : style.positive_fold_colour;
     for (const Eigen::Vector3d& p : line.points_mm) {
-      vertices.push_back({to_world(p.cast<float>()), colour});
+      vertices.push_back({to_world(p.cast<float>(), style.z_exaggeration), colour});
     }
   }
   glBindBuffer(GL_ARRAY_BUFFER, gl_->lines_vbo);
   glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(vertices.size() * sizeof(Vertex)),
                vertices.data(), GL_DYNAMIC_DRAW);
   uploaded_positive_ = style.positive_fold_colour;
+  lines_z_scale_ = style.z_exaggeration;
   uploaded_negative_ = style.negative_fold_colour;
   ++counters_.fold_line_uploads;
 }
@@ -286,14 +292,15 @@ unsigned ClothRenderer::render(Scene& scene, const OrbitCamera& camera, FrameSiz
   resize(size);
   // Bring the stages this view needs up to date (lazily), then upload only what changed.
   scene.normals();
-  if (scene.version(Stage::normals) != mesh_version_) {
-    upload_mesh(scene);
+  if (scene.version(Stage::normals) != mesh_version_ || mesh_z_scale_ != style.z_exaggeration) {
+    upload_mesh(scene, style.z_exaggeration);
     mesh_version_ = scene.version(Stage::normals);
   }
   if (style.fold_lines) {
     scene.fold_lines();
     if (scene.version(Stage::fold_lines) != fold_line_version_ ||
         uploaded_positive_ != style.positive_fold_colour ||
+        lines_z_scale_ != style.z_exaggeration ||
         uploaded_negative_ != style.negative_fold_colour) {
       upload_fold_lines(scene, style);
       fold_line_version_ = scene.version(Stage::fold_lines);

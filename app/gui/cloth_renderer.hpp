@@ -17,6 +17,7 @@ struct ClothStyle {
   bool wireframe = false;
   bool fold_lines = true;
   bool ground = true;
+  float z_exaggeration = 1.0f;  // draws z (out of plane) this many times deeper; a view aid only
   Eigen::Vector3f front_colour{0.93f, 0.86f, 0.74f};  // the fabric's two faces
   Eigen::Vector3f back_colour{0.72f, 0.78f, 0.92f};
   Eigen::Vector3f positive_fold_colour{0.12f, 0.23f, 0.58f};
@@ -51,7 +52,7 @@ class ClothRenderer {
  private:
   struct Gl;
   void resize(FrameSize size);
-  void upload_mesh(Scene& scene);
+  void upload_mesh(Scene& scene, float z_scale);
   void upload_fold_lines(Scene& scene, const ClothStyle& style);
   void upload_decorations(Scene& scene);
 
@@ -61,6 +62,8 @@ class ClothRenderer {
   std::uint64_t mesh_version_ = ~std::uint64_t{0};
   std::uint64_t fold_line_version_ = ~std::uint64_t{0};
   std::uint64_t decoration_version_ = ~std::uint64_t{0};
+  float mesh_z_scale_ = -1.0f;  // the exaggeration the uploaded buffers were made with
+  float lines_z_scale_ = -1.0f;
   Eigen::Vector3f uploaded_positive_{-1, -1, -1};
   Eigen::Vector3f uploaded_negative_{-1, -1, -1};
   RenderCounters counters_;

@@ -545,6 +545,12 @@ void Explorer::view3d_panel() {
   ImGui::Checkbox("ground", &style_.ground);
   ImGui::SameLine();
   const bool reset = ImGui::SmallButton("reset camera");
+  ImGui::SetNextItemWidth(160.0f);
+  ImGui::SliderFloat("z exaggeration", &style_.z_exaggeration, 1.0f, 20.0f, "x %.1f",
+                     ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp);
+  help_marker(
+      "Draws the out-of-plane depth z this many times deeper, to see the folds; the "
+      "numbers are not changed.");
   const ImVec2 available = ImGui::GetContentRegionAvail();
   const FrameSize size{std::max(16, static_cast<int>(available.x)),
                        std::max(16, static_cast<int>(available.y))};
