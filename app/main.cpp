@@ -19,6 +19,10 @@ int main(int argc, char** argv) {
   commands["solve"] = add_solve_command(app);
   commands["export"] = add_export_command(app);
   commands["compare"] = add_compare_command(app);
+  commands["sweep"] = add_sweep_command(app);
+  commands["calibrate"] = add_calibrate_command(app);
+  commands["bench"] = add_bench_command(app);
+  commands["stress"] = add_stress_command(app);
 #ifdef FOLDLAB_WITH_GUI
   commands["gui"] = add_gui_command(app);
   commands["render"] = add_render_command(app);

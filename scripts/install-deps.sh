@@ -9,6 +9,7 @@ packages=(
   libimgui-dev libstb-dev libglfw3-dev libepoxy-dev libegl-dev libgl-dev
   libegl-mesa0 libgl1-mesa-dri
   googletest libgtest-dev libbenchmark-dev
+  clang libclang-rt-14-dev libfuzzer-14-dev
   xvfb xauth
 )
 

@@ -145,3 +145,94 @@ TEST(VertexNormals, AreaWeightedOnAKnownMesh) {
 
 }  // namespace
 }  // namespace foldlab
+
+namespace foldlab {
+namespace {
+
+TEST(Shapes, StripRepeatsTheSpanAndKeepsEverySupportFixed) {
+  Parameters p = exact_default();
+  p.shape.kind = ShapeKind::strip;
+  p.shape.supports = 4;  // three spans
+  const Solution s = solve(p);
+  const double l = s.span_mm;
+  const FoldLines lines = fold_lines(s, p.shape, 21);
+  ASSERT_EQ(lines.lines.size(), 3u * (s.n + 1));
+  // Continuity between spans: each line of span j ends where the same line of span j+1 starts,
+  // at a support on y = 0.
+  for (std::size_t k = 0; k + (s.n + 1) < lines.lines.size(); ++k) {
+    const FoldLine& left = lines.lines[k];
+    const FoldLine& right = lines.lines[k + s.n + 1];
+    ASSERT_EQ(left.index, right.index);
+    EXPECT_NEAR((left.points_mm.back() - right.points_mm.front()).norm(), 0.0, 1e-9);
+    EXPECT_NEAR(left.points_mm.back().y(), 0.0, 1e-9);
+  }
+  EXPECT_NEAR(lines.lines.front().points_mm.front().x(), -1.5 * l, 1e-9);
+  EXPECT_NEAR(lines.lines.back().points_mm.back().x(), 1.5 * l, 1e-9);
+  // The grid: columns at the four supports collapse onto their support points.
+  const int nx = 3 * 16 + 1;
+  const DeformedGrid grid = deformed_grid(s, p, nx, 33);
+  for (int support = 0; support < 4; ++support) {
+    const int i = support * 16;
+    for (int j = 0; j < 33; ++j) {
+      const Eigen::Vector3f v = grid.positions_mm[static_cast<std::size_t>(j * nx + i)];
+      EXPECT_NEAR(v.x(), (support - 1.5) * l, 1e-3);
+      EXPECT_NEAR(v.y(), 0.0, 1e-3);
+      EXPECT_NEAR(v.z(), 0.0, 1e-3);
+    }
+  }
+}
+
+TEST(Shapes, InclinedSupportsShearThePatternAndKeepTheFoldCount) {
+  Parameters p = exact_default();
+  const Solution s = solve(p);
+  const FoldLines straight = fold_lines(s, p.shape, 41);
+  p.shape.kind = ShapeKind::inclined;
+  p.shape.incline_deg = 20.0;
+  const FoldLines sheared = fold_lines(s, p.shape, 41);
+  ASSERT_EQ(sheared.lines.size(), straight.lines.size());
+  const double rise = s.span_mm * std::tan(20.0 * std::numbers::pi / 180.0);
+  for (std::size_t k = 0; k < sheared.lines.size(); ++k) {
+    // The left support stays, the right one is higher by l tan(incline) (y points down).
+    EXPECT_NEAR(sheared.lines[k].points_mm.front().y(), 0.0, 1e-9);
+    EXPECT_NEAR(sheared.lines[k].points_mm.back().y(), -rise, 1e-9);
+    for (std::size_t q = 0; q < sheared.lines[k].points_mm.size(); ++q) {
+      const Eigen::Vector3d a = straight.lines[k].points_mm[q];
+      const Eigen::Vector3d b = sheared.lines[k].points_mm[q];
+      EXPECT_NEAR(b.y() - a.y(), -(a.x() + 0.5 * s.span_mm) * rise / s.span_mm, 1e-9);
+      EXPECT_EQ(b.z(), a.z());
+    }
+  }
+  // A shear moves every point of a fibre by the same amount: fibre lengths are unchanged.
+  EXPECT_NEAR(deformed_grid(s, p, 9, 257).worst_fibre_error,
+              deformed_grid(s, exact_default(), 9, 257).worst_fibre_error, 1e-6);
+}
+
+TEST(Shapes, RectangularClothHangsStraightBelowTheLowestFold) {
+  Parameters p = exact_default();
+  p.shape.kind = ShapeKind::rectangular;
+  const Solution s = solve(p);
+  const int nx = 17;
+  const int ny = 801;
+  const DeformedGrid grid = deformed_grid(s, p, nx, ny);
+  auto at = [&](int i, int j) { return grid.positions_mm[static_cast<std::size_t>(j * nx + i)]; };
+  const double h = p.hanging.height_mm;
+  // At a support the whole fibre hangs straight down from it: y from 0 to h, z = 0.
+  for (int j = 0; j < ny; j += 100) {
+    EXPECT_NEAR(at(0, j).x(), -s.span_mm / 2, 1e-3);
+    EXPECT_NEAR(at(0, j).y(), h * j / (ny - 1), 1e-2);
+    EXPECT_NEAR(at(0, j).z(), 0.0, 1e-3);
+  }
+  // Every fibre keeps its length h (up to sampling the zig-zag's corners).
+  EXPECT_LT(grid.worst_fibre_error, 5e-3);
+  // Between the supports the bottom of a fibre lies below its lowest fold, straight under it.
+  const int quarter = nx / 4;  // X = -L/4
+  const double c = std::cos(std::numbers::pi / 4);
+  EXPECT_NEAR(at(quarter, ny - 1).z(), c * s.z_max_mm, 1e-2);
+  EXPECT_NEAR(at(quarter, ny - 1).y(), c * s.a_mm.front() + (h - c * h), 0.5);
+  // Material coordinates run over the flat rectangle.
+  EXPECT_NEAR(grid.material_mm.back().x(), p.hanging.length_mm / 2, 1e-3);
+  EXPECT_NEAR(grid.material_mm.back().y(), h, 1e-3);
+}
+
+}  // namespace
+}  // namespace foldlab

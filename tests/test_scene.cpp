@@ -111,3 +111,24 @@ TEST(Scene, ResetStatsKeepsVersions) {
 
 }  // namespace
 }  // namespace foldlab
+
+namespace foldlab {
+namespace {
+
+TEST(Scene, ShapeChangesRedrawWithoutResolving) {
+  Scene scene;
+  scene.normals();
+  scene.fold_lines();
+  Parameters p = scene.parameters();
+  p.shape.kind = ShapeKind::strip;
+  p.shape.supports = 3;
+  scene.set_parameters(p);
+  EXPECT_EQ(scene.fold_lines().lines.size(), 2u * (scene.solution().n + 1));
+  scene.normals();
+  EXPECT_EQ(scene.stats(Stage::solution).evaluations, 1u);
+  EXPECT_EQ(scene.stats(Stage::fold_lines).evaluations, 2u);
+  EXPECT_EQ(scene.stats(Stage::grid).evaluations, 2u);
+}
+
+}  // namespace
+}  // namespace foldlab

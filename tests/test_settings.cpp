@@ -242,6 +242,25 @@ TEST(Settings, WholeNumberKeysRejectFractions) {
   EXPECT_EQ(p.model.simpson_intervals, 30);
 }
 
+TEST(Settings, ShapeKeysSetTheShape) {
+  Parameters p;
+  EXPECT_FALSE(foldlab::apply_setting(p, "shape", "inclined"));
+  EXPECT_EQ(p.shape.kind, foldlab::ShapeKind::inclined);
+  EXPECT_FALSE(foldlab::apply_setting(p, "incline_deg", "20"));
+  EXPECT_EQ(p.shape.incline_deg, 20.0);
+  EXPECT_FALSE(foldlab::apply_setting(p, "supports", "5"));
+  EXPECT_EQ(p.shape.supports, 5);
+  const auto error = foldlab::apply_setting(p, "shape", "round");
+  ASSERT_TRUE(error.has_value());
+  EXPECT_NE(error->find("cosine, rectangular, strip, inclined"), std::string::npos);
+  p.shape.supports = 1;
+  p.shape.incline_deg = 85.0;
+  const auto issues = foldlab::validate(p);
+  ASSERT_EQ(issues.size(), 2u);
+  EXPECT_EQ(issues[0].field, "supports");
+  EXPECT_EQ(issues[1].field, "incline_deg");
+}
+
 TEST(Settings, EveryListedKeyIsAccepted) {
   const std::vector<std::string> expected = {"t",
                                              "E",
@@ -252,21 +271,28 @@ TEST(Settings, EveryListedKeyIsAccepted) {
                                              "d",
                                              "K",
                                              "c",
+                                             "p",
                                              "method",
                                              "span_rule",
                                              "int_rounding",
                                              "simpson_intervals",
                                              "length_tolerance",
-                                             "max_iterations"};
+                                             "max_iterations",
+                                             "length_quadrature",
+                                             "shape",
+                                             "supports",
+                                             "incline_deg"};
   std::vector<std::string> listed;
   for (const foldlab::SettingKey& k : foldlab::setting_keys()) {
     listed.emplace_back(k.key);
     EXPECT_FALSE(k.description.empty()) << k.key;
     Parameters p;
-    const char* value = k.key == "method"         ? "exact"
-                        : k.key == "span_rule"    ? "L-2d"
-                        : k.key == "int_rounding" ? "floor"
-                                                  : "4";
+    const char* value = k.key == "method"              ? "exact"
+                        : k.key == "span_rule"         ? "L-2d"
+                        : k.key == "int_rounding"      ? "floor"
+                        : k.key == "length_quadrature" ? "trapezoid"
+                        : k.key == "shape"             ? "strip"
+                                                       : "4";
     const auto error = foldlab::apply_setting(p, k.key, value);
     EXPECT_FALSE(error.has_value()) << k.key << ": " << error.value_or("");
   }

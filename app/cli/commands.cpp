@@ -20,41 +20,7 @@
 #include "foldlab/solver.hpp"
 
 namespace foldlab::cli {
-namespace {
-
-// --preset, --set and --method, shared by every command that solves.
-void add_input_options(CLI::App& command, InputOptions& options) {
-  command.add_option("--preset", options.preset_path,
-                     "preset JSON file (default: the built-in Table 1, h = 1400 mm preset)");
-  std::string keys;
-  for (const SettingKey& k : setting_keys()) {
-    keys += "\n    " + std::string(k.key) +
-            (k.unit.empty() ? "" : " (" + std::string(k.unit) + ")") + ": " +
-            std::string(k.description);
-  }
-  command.add_option("--set", options.assignments, "override an input, KEY=VALUE; keys:" + keys)
-      ->type_name("KEY=VALUE");
-  command.add_option("--method", options.method, "solution method (default: the preset's)")
-      ->check(CLI::IsMember({"paper", "exact"}));
-}
-
-// Runs `body`, turning InputError into exit 2 and anything else into exit 1, messages on stderr.
-int guarded(const std::function<int()>& body) {
-  try {
-    return body();
-  } catch (const InputError& e) {
-    std::cerr << "foldlab: invalid input:\n" << e.what() << "\n";
-    return kExitInvalidInput;
-  } catch (const WriteError& e) {
-    std::cerr << "foldlab: " << e.what() << "\n";
-    return kExitInternal;
-  } catch (const std::exception& e) {
-    std::cerr << "foldlab: internal error: " << e.what() << "\n";
-    return kExitInternal;
-  }
-}
-
-}  // namespace
+namespace {}  // namespace
 
 Command add_solve_command(CLI::App& app) {
   struct Options {

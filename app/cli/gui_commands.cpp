@@ -22,33 +22,16 @@ void parse_size(const std::string& text, gui::GuiRunOptions& options) {
   options.height = std::stoi(match[2]);
 }
 
-int run_guarded(const std::function<int()>& body) {
-  try {
-    return body();
-  } catch (const InputError& e) {
-    std::cerr << "foldlab: invalid input:\n" << e.what() << "\n";
-    return kExitInvalidInput;
-  } catch (const gui::SurfaceError& e) {
-    std::cerr << "foldlab: " << e.what() << "\n";
-    return kExitInternal;
-  } catch (const std::exception& e) {
-    std::cerr << "foldlab: internal error: " << e.what() << "\n";
-    return kExitInternal;
-  }
-}
-
 struct GuiCommandOptions {
   gui::GuiRunOptions run;
   std::string size = "1280x800";
 };
 
 void add_common_gui_options(CLI::App& command, GuiCommandOptions& options) {
-  command.add_option("--preset", options.run.inputs.preset_path, "preset JSON file to show");
-  command.add_option("--set", options.run.inputs.assignments, "override an input, KEY=VALUE")
-      ->type_name("KEY=VALUE");
-  command.add_option("--method", options.run.inputs.method, "solution method")
-      ->check(CLI::IsMember({"paper", "exact"}));
+  add_input_options(command, options.run.inputs);
   command.add_option("--size", options.size, "window or picture size WxH (default 1280x800)");
+  command.add_option("--tab", options.run.analysis_tab, "analysis tab shown at start")
+      ->check(CLI::IsMember({"equations", "sweep", "map"}));
 }
 
 }  // namespace
@@ -70,7 +53,7 @@ Command add_gui_command(CLI::App& app) {
   command->add_flag("--fresh", options->run.fresh,
                     "do not restore or save the last session and window layout");
   return [options] {
-    return run_guarded([&] {
+    return guarded([&] {
       parse_size(options->size, options->run);
       if (!options->run.screenshot_path.empty() && options->run.frames == 0) {
         throw InputError("--screenshot needs --frames N");
@@ -92,7 +75,7 @@ Command add_render_command(CLI::App& app) {
   command->add_option("--animate", options->run.animate_key, "as for gui");
   command->add_flag("--report", options->run.report, "as for gui");
   return [options] {
-    return run_guarded([&] {
+    return guarded([&] {
       parse_size(options->size, options->run);
       options->run.fresh = true;
       if (options->run.frames == 0) {
@@ -105,7 +88,7 @@ Command add_render_command(CLI::App& app) {
 
 int run_default(bool display_available) {
   if (display_available) {
-    const int status = run_guarded([] { return gui::run_window(gui::GuiRunOptions{}); });
+    const int status = guarded([] { return gui::run_window(gui::GuiRunOptions{}); });
     if (status != kExitInternal) {
       return status;
     }

@@ -1,5 +1,8 @@
 #include "cli/inputs.hpp"
 
+#include <iostream>
+
+#include "foldlab/io.hpp"
 #include "foldlab/settings.hpp"
 
 namespace foldlab::cli {
@@ -27,6 +30,39 @@ Preset resolve_inputs(const InputOptions& options) {
     throw InputError(problems);
   }
   return preset;
+}
+
+void add_input_options(CLI::App& command, InputOptions& options) {
+  command.add_option("--preset", options.preset_path,
+                     "preset JSON file (default: the built-in Table 1, h = 1400 mm preset)");
+  std::string keys;
+  for (const SettingKey& k : setting_keys()) {
+    keys += "\n    " + std::string(k.key) +
+            (k.unit.empty() ? "" : " (" + std::string(k.unit) + ")") + ": " +
+            std::string(k.description);
+  }
+  command.add_option("--set", options.assignments, "override an input, KEY=VALUE; keys:" + keys)
+      ->type_name("KEY=VALUE");
+  command.add_option("--method", options.method, "solution method (default: the preset's)")
+      ->check(CLI::IsMember({"paper", "exact"}));
+}
+
+int guarded(const std::function<int()>& body) {
+  try {
+    return body();
+  } catch (const InputError& e) {
+    std::cerr << "foldlab: invalid input:\n" << e.what() << "\n";
+    return kExitInvalidInput;
+  } catch (const EnvironmentError& e) {
+    std::cerr << "foldlab: " << e.what() << "\n";
+    return kExitInternal;
+  } catch (const WriteError& e) {
+    std::cerr << "foldlab: " << e.what() << "\n";
+    return kExitInternal;
+  } catch (const std::exception& e) {
+    std::cerr << "foldlab: internal error: " << e.what() << "\n";
+    return kExitInternal;
+  }
 }
 
 }  // namespace foldlab::cli

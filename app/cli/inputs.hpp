@@ -1,10 +1,13 @@
 // What every headless command reads first: a preset, --set overrides and --method.
 #pragma once
 
+#include <functional>
 #include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
+
+#include <CLI/CLI.hpp>
 
 #include "foldlab/preset.hpp"
 
@@ -21,6 +24,13 @@ class InputError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// The environment cannot do what was asked (no display, no EGL): exit kExitInternal, the message
+// printed as it is.
+class EnvironmentError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
 struct InputOptions {
   std::string preset_path;  // empty: the built-in default preset
   std::vector<std::string> assignments;
@@ -29,5 +39,12 @@ struct InputOptions {
 
 // The preset with the overrides applied and validated. Throws InputError listing every problem.
 Preset resolve_inputs(const InputOptions& options);
+
+// --preset, --set and --method, for every command that solves.
+void add_input_options(CLI::App& command, InputOptions& options);
+
+// Runs a command's body: InputError gives exit 2, EnvironmentError and WriteError exit 1 with
+// their message, anything else exit 1 as an internal error; messages go to stderr.
+int guarded(const std::function<int()>& body);
 
 }  // namespace foldlab::cli

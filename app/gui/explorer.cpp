@@ -11,6 +11,7 @@
 #include "foldlab/equations.hpp"
 #include "foldlab/io.hpp"
 #include "foldlab/settings.hpp"
+#include "gui/analysis_panels.hpp"
 #include "gui/fast_fill.hpp"
 #include "gui/plot_widget.hpp"
 
@@ -109,7 +110,8 @@ Explorer::Explorer(const Preset& initial, const std::string& initial_path, bool 
       loaded_(initial),
       loaded_path_(initial_path),
       edited_(initial.parameters),
-      scene_(initial.parameters) {
+      scene_(initial.parameters),
+      sweep_panel_(options_.presets_dir) {
   if (restore_session && !options_.session_file.empty()) {
     std::string error;
     if (std::optional<Session> s = load_session(options_.session_file, error)) {
@@ -136,6 +138,10 @@ Explorer::~Explorer() {
   } catch (const std::exception&) {
     // Leaving must not fail because the config folder is read-only; the session is a convenience.
   }
+}
+
+bool Explorer::busy() const {
+  return regime_map_panel_.computing();
 }
 
 const RenderCounters* Explorer::renderer_counters() const {
@@ -264,6 +270,9 @@ void Explorer::frame() {
   view3d_panel();
   results_panel();
   teaching_panel();
+  if (calibration_panel_.draw(edited_, loaded_)) {
+    commit_edits();  // the fitted constants, applied as a slider would
+  }
   if (show_stats_) {
     stats_overlay();
   }
@@ -659,15 +668,52 @@ void Explorer::presets_panel() {
     ImGui::TextColored(kDimText, "%s", session_message_.c_str());
   }
   ImGui::Checkbox("pipeline stats", &show_stats_);
+  ImGui::SameLine();
+  calibration_panel_.open_button(scene_.parameters());
   ImGui::End();
 }
 
 void Explorer::teaching_panel() {
   place_window(0.65f, 0.56f, 0.35f, 0.44f);
-  if (!begin_panel("Equations")) {
+  if (!begin_panel("Analysis")) {
     ImGui::End();
     return;
   }
+  // Only the selected tab draws, so a hidden sweep or map computes nothing.
+  if (ImGui::BeginTabBar("analysis tabs")) {
+    // The tab named by the options is selected once, at the first frame.
+    auto flags_for = [this](const char* name) {
+      return !analysis_tab_selected_ && options_.analysis_tab == name
+                 ? ImGuiTabItemFlags_SetSelected
+                 : ImGuiTabItemFlags_None;
+    };
+    const ImGuiTabItemFlags equations_flags = flags_for("equations");
+    const ImGuiTabItemFlags sweep_flags = flags_for("sweep");
+    const ImGuiTabItemFlags map_flags = flags_for("map");
+    analysis_tab_selected_ = true;
+    if (ImGui::BeginTabItem("Equations", nullptr, equations_flags)) {
+      ImGui::BeginChild("equations");
+      equations_tab();
+      ImGui::EndChild();
+      ImGui::EndTabItem();
+    }
+    const PanelActions actions{
+        [this](const std::string& key, double value) { set_input(key, value); },
+        [this](const std::filesystem::path& path) { load_preset_file(path); }};
+    if (ImGui::BeginTabItem("Sweep", nullptr, sweep_flags)) {
+      sweep_panel_.draw(scene_.parameters(), actions);
+      ImGui::EndTabItem();
+    }
+    if (ImGui::BeginTabItem("Regime map", nullptr, map_flags)) {
+      regime_map_panel_.draw(scene_.parameters(), actions);
+      ImGui::EndTabItem();
+    }
+    ImGui::EndTabBar();
+  }
+  ImGui::End();
+}
+
+void Explorer::equations_tab() {
   const Solution& s = scene_.solution();
   const Parameters& p = scene_.parameters();
   const double K = stiffness_constant_K(p);
@@ -689,7 +735,6 @@ void Explorer::teaching_panel() {
   if (s.a_mm.empty()) {
     ImGui::Separator();
     ImGui::TextWrapped("%s", describe(s, p).c_str());
-    ImGui::End();
     return;
   }
   const double a0 = s.a_mm.front();
@@ -726,7 +771,6 @@ void Explorer::teaching_panel() {
     ImGui::Text("n = 1 (no Q7: stiff)");
   }
   ImGui::Text("Q = (a_0/a_n)^(1/n) = %.4f", s.Q);
-  ImGui::End();
 }
 
 void Explorer::stats_overlay() {

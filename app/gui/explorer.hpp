@@ -10,6 +10,8 @@
 
 #include "foldlab/preset.hpp"
 #include "foldlab/scene.hpp"
+#include "gui/analysis_panels.hpp"
+#include "gui/calibration_panel.hpp"
 #include "gui/camera.hpp"
 #include "gui/cloth_renderer.hpp"
 #include "gui/plot_widget.hpp"
@@ -21,6 +23,7 @@ struct ExplorerOptions {
   std::filesystem::path presets_dir;       // shipped presets (may be empty)
   std::filesystem::path user_presets_dir;  // "Save as..." writes here
   std::filesystem::path session_file;      // empty: nothing is restored or saved
+  std::string analysis_tab;                // "equations", "sweep" or "map": selected at start
 };
 
 class Explorer {
@@ -40,6 +43,8 @@ class Explorer {
   const Parameters& edited() const { return edited_; }
   const RenderCounters* renderer_counters() const;
   void save_session_now();
+  // True while background work (the regime map) is still filling in what the window shows.
+  bool busy() const;
 
  private:
   void parameters_panel();
@@ -48,6 +53,7 @@ class Explorer {
   void view3d_panel();
   void presets_panel();
   void teaching_panel();
+  void equations_tab();
   void stats_overlay();
 
   // A slider for one model input: unit, log scale where the range spans decades, typed values
@@ -76,6 +82,9 @@ class Explorer {
   int grid_resolution_ = 128;
   bool show_stats_ = false;
   bool plot_autoscale_ = false;
+  SweepPanel sweep_panel_;
+  RegimeMapPanel regime_map_panel_;
+  bool analysis_tab_selected_ = false;
   Plot fold_plot_;
   std::uint64_t plot_lines_version_ = ~std::uint64_t{0};
   std::vector<std::vector<double>> plot_xs_;
@@ -95,6 +104,7 @@ class Explorer {
   char save_name_[128] = {};
   std::string pending_overwrite_;  // name waiting for the user's "overwrite?" answer
   std::string session_message_;
+  CalibrationPanel calibration_panel_;  // "Fit to measurements", opened from the Presets panel
 
   // For the teaching panel: what n was before the last change, and why it moved.
   int previous_n_ = -1;

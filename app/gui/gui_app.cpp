@@ -78,7 +78,8 @@ int run_frames(Surface& surface, const GuiRunOptions& options, bool interactive)
   const bool persist = interactive && !options.fresh;
   std::filesystem::create_directories(config_dir());
   ExplorerOptions explorer_options{cli::find_presets_dir(), user_presets_dir(),
-                                   persist ? config_dir() / "session.json" : ""};
+                                   persist ? config_dir() / "session.json" : "",
+                                   options.analysis_tab};
   ImGuiContextGuard imgui(surface, persist ? (config_dir() / "imgui.ini").string() : "");
   // A preset named on the command line wins over the restored session.
   const bool restore =
@@ -87,7 +88,15 @@ int run_frames(Surface& surface, const GuiRunOptions& options, bool interactive)
 
   std::vector<double> frame_ms;
   const int frames = options.frames;
-  for (int frame = 0; (frames == 0 || frame < frames) && surface.open(); ++frame) {
+  // A scripted run waits (up to 30 s) for background work before its last frame, so that the
+  // picture shows a finished regime map.
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(30);
+  int extra_frames = 0;
+  for (int frame = 0; (frames == 0 || frame < frames + extra_frames) && surface.open(); ++frame) {
+    if (frames > 0 && frame + 1 == frames + extra_frames && explorer.busy() &&
+        std::chrono::steady_clock::now() < deadline) {
+      ++extra_frames;
+    }
     const auto start = std::chrono::steady_clock::now();
     surface.new_frame();
     if (frames > 0) {
@@ -109,7 +118,7 @@ int run_frames(Surface& surface, const GuiRunOptions& options, bool interactive)
     glClearColor(0.10f, 0.10f, 0.12f, 1.0f);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
-    const bool last = frames > 0 && frame + 1 == frames;
+    const bool last = frames > 0 && frame + 1 == frames + extra_frames;
     if (last && !options.screenshot_path.empty()) {
       surface.finish();
       write_png(options.screenshot_path.c_str(), size, read_framebuffer_rgba(size));

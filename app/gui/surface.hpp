@@ -9,6 +9,8 @@
 #include <stdexcept>
 #include <vector>
 
+#include "cli/inputs.hpp"
+
 namespace foldlab::gui {
 
 struct FrameSize {
@@ -16,9 +18,9 @@ struct FrameSize {
   int height = 0;
 };
 
-class SurfaceError : public std::runtime_error {
+class SurfaceError : public cli::EnvironmentError {
  public:
-  using std::runtime_error::runtime_error;
+  using cli::EnvironmentError::EnvironmentError;
 };
 
 class Surface {

@@ -27,7 +27,9 @@ EllipticKE elliptic_KE_complement(double m, double m1) {
     a = a_next;
     weight *= 2.0;
     sum += weight * c * c;
-    if (std::abs(c) <= 1e-17 * a) {
+    // c shrinks quadratically, c_next = c² / (4 a): once c <= 1e-9 a, later steps move a by less
+    // than 1e-18 a. Waiting for c = 0, which rounding may never give, cost up to 40 steps.
+    if (std::abs(c) <= 1e-9 * a) {
       break;
     }
   }
@@ -36,11 +38,12 @@ EllipticKE elliptic_KE_complement(double m, double m1) {
 }
 
 // The upper edge in units of the span: f(k) = (2/pi) ∫_0^{pi/2} sqrt(1 + k² sin²θ) dθ = L/l, with
-// k = pi A / l, and its derivative. Below k = 1e-2 the closed form loses digits to cancellation in
-// f - 1 and f'; its Maclaurin series is exact there to ~1e-16.
+// k = pi A / l, and its first two derivatives. Below k = 1e-2 the closed form loses digits to
+// cancellation in f - 1 and f'; its Maclaurin series is exact there to ~1e-16.
 struct EdgeRatio {
   double f_minus_1;
   double derivative;
+  double second_derivative;
 };
 
 EdgeRatio edge_ratio(double k) {
@@ -49,7 +52,8 @@ EdgeRatio edge_ratio(double k) {
     // f = 1 + k²/4 - 3k⁴/64 + 5k⁶/256 - 175k⁸/16384 + ...
     const double f_minus_1 = k2 * (0.25 + k2 * (-3.0 / 64.0 + k2 * (5.0 / 256.0)));
     const double derivative = k * (0.5 + k2 * (-3.0 / 16.0 + k2 * (15.0 / 128.0)));
-    return {f_minus_1, derivative};
+    const double second = 0.5 + k2 * (-9.0 / 16.0 + k2 * (75.0 / 128.0));
+    return {f_minus_1, derivative, second};
   }
   const double one_plus_k2 = 1.0 + k2;
   const double root = std::sqrt(one_plus_k2);
@@ -57,7 +61,9 @@ EdgeRatio edge_ratio(double k) {
   // Imaginary-modulus transformation: E(-k²) = sqrt(1+k²) E(m), K(-k²) = K(m) / sqrt(1+k²).
   const double e_neg = root * ke.E;
   const double k_neg = ke.K / root;
-  return {2.0 / kPi * e_neg - 1.0, 2.0 / kPi * (e_neg - k_neg) / k};
+  // The derivatives from dE/dm = (E - K)/(2m) and dK/dm = (E - (1-m) K)/(2m(1-m)) at m = -k².
+  return {2.0 / kPi * e_neg - 1.0, 2.0 / kPi * (e_neg - k_neg) / k,
+          2.0 / kPi * (e_neg / one_plus_k2 - (e_neg - k_neg) / k2)};
 }
 
 double edge_integrand(double amplitude_mm, double span_mm, double x_mm) {
@@ -129,24 +135,34 @@ double amplitude_for_upper_edge_length(double length_mm, double span_mm) {
   // r/2.
   double lo = std::sqrt(2.0 * excess * (r + 1.0));
   double hi = std::max(lo, 0.5 * kPi * r);
-  double k = lo;
-  // f is increasing and convex in k, so Newton from the left bound overshoots once and then
-  // approaches from the right; the bracket keeps any rounding excursion in bounds.
+  // Start from the inverted series k² = 4x + 3x² - x³/2 + O(x⁴) (x = f - 1) where it is close,
+  // from the lower bound otherwise.
+  double k = excess < 0.25 ? std::sqrt(excess * (4.0 + excess * (3.0 - 0.5 * excess))) : lo;
+  k = std::clamp(k, lo, hi);
   for (int iteration = 0; iteration < 100; ++iteration) {
     const EdgeRatio e = edge_ratio(k);
     const double g = e.f_minus_1 - excess;
+    if (g == 0.0) {
+      break;
+    }
     if (g > 0.0) {
       hi = std::min(hi, k);
     } else {
       lo = std::max(lo, k);
     }
-    double next = (e.derivative > 0.0) ? k - g / e.derivative : 0.5 * (lo + hi);
+    // Halley's step: cubic convergence, and f, f' and f'' all come from one K, E pair.
+    const double denominator = 2.0 * e.derivative * e.derivative - g * e.second_derivative;
+    const double step = denominator > 0.0 ? -2.0 * g * e.derivative / denominator : 0.0;
+    if (step != 0.0 && std::abs(step) <= 1e-6 * k) {
+      // The error left after this step is about step³ / k² < 1e-18 k. Waiting for a smaller step
+      // can take long: f - 1 carries a rounding error of about 1e-16, which puts a floor of about
+      // 1e-16 / k² under the step for small k.
+      k += step;
+      break;
+    }
+    double next = k + step;
     if (!(next > lo && next < hi)) {
       next = 0.5 * (lo + hi);
-    }
-    if (std::abs(next - k) <= 4.0 * std::numeric_limits<double>::epsilon() * k) {
-      k = next;
-      break;
     }
     k = next;
   }
@@ -228,8 +244,12 @@ double z_max_for_fibre_length(double a0_mm, double Q, int n, double height_mm) {
 }
 
 int wrinkle_count(double a0_over_an, double Q, bool round_to_nearest) {
+  return wrinkle_count_from_logs(std::log(a0_over_an), std::log(Q), round_to_nearest);
+}
+
+int wrinkle_count_from_logs(double log_a0_over_an, double log_Q, bool round_to_nearest) {
   constexpr double kMax = 1e9;
-  double x = std::log(a0_over_an) / std::log(Q);
+  double x = log_a0_over_an / log_Q;
   if (!(x < kMax)) {
     x = kMax;  // Q so close to 1 (or a_0/a_n so large) that n exceeds what an int holds
   }

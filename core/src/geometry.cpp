@@ -50,27 +50,41 @@ std::vector<Eigen::Vector2d> sample_by_arc_length(const std::vector<Eigen::Vecto
 
 }  // namespace
 
-FoldLines fold_lines(const Solution& s, int samples, int max_lines) {
+Eigen::Vector3d place_on_shape(const Eigen::Vector3d& span_point, int span, double span_mm,
+                               const Shape& shape) {
+  const int spans = shape.span_count();
+  const double x = span_point.x() + (span - 0.5 * (spans - 1)) * span_mm;
+  // Shear about the left support: y' = y - tan(incline) (x + W/2), W the whole width.
+  const double y = span_point.y() - shape.shear() * (x + 0.5 * spans * span_mm);
+  return {x, y, span_point.z()};
+}
+
+FoldLines fold_lines(const Solution& s, const Shape& shape, int samples, int max_lines) {
   FoldLines out;
   if (s.a_mm.empty()) {
     return out;
   }
   samples = std::max(2, samples);
-  const int line_count = s.n + 1;
+  const int spans = shape.span_count();
+  const int line_count = (s.n + 1) * spans;
   out.stride = std::max(1, (line_count + max_lines - 1) / std::max(1, max_lines));
   const double l = s.span_mm;
-  for (int i = 0; i <= s.n; i += out.stride) {
-    FoldLine line;
-    line.index = i;
-    line.sign = fold_sign(i);
-    line.points_mm.reserve(static_cast<std::size_t>(samples));
-    const double a = s.a_mm[static_cast<std::size_t>(i)];
-    for (int k = 0; k < samples; ++k) {
-      const double x = l * (static_cast<double>(k) / (samples - 1) - 0.5);
-      const double c = std::cos(kPi * x / l);
-      line.points_mm.emplace_back(x, a * c, line.sign * s.z_max_mm * c);
+  for (int span = 0; span < spans; ++span) {
+    for (int i = 0; i <= s.n; i += out.stride) {
+      FoldLine line;
+      line.index = i;
+      line.sign = fold_sign(i);
+      line.span = span;
+      line.points_mm.reserve(static_cast<std::size_t>(samples));
+      const double a = s.a_mm[static_cast<std::size_t>(i)];
+      for (int k = 0; k < samples; ++k) {
+        const double x = l * (static_cast<double>(k) / (samples - 1) - 0.5);
+        const double c = std::cos(kPi * x / l);
+        line.points_mm.push_back(
+            place_on_shape({x, a * c, line.sign * s.z_max_mm * c}, span, l, shape));
+      }
+      out.lines.push_back(std::move(line));
     }
-    out.lines.push_back(std::move(line));
   }
   return out;
 }
@@ -81,6 +95,44 @@ DeformedGrid deformed_grid(const Solution& s, const Parameters& p, int nx, int n
   return grid;
 }
 
+namespace {
+
+// The central fibre's zig-zag with its cumulative arc lengths, for points at a given arc length.
+struct Zigzag {
+  std::vector<Eigen::Vector2d> points;  // (y, z) from the upper edge down to a_0
+  std::vector<double> cumulative;
+
+  double length() const { return cumulative.back(); }
+
+  // The point at arc length `at` (clamped to the zig-zag); `segment` remembers where the last
+  // lookup ended, so increasing lookups walk the polyline once.
+  Eigen::Vector2d at_length(double at, std::size_t& segment) const {
+    at = std::clamp(at, 0.0, length());
+    while (segment + 2 < points.size() && cumulative[segment + 1] < at) {
+      ++segment;
+    }
+    const double piece = cumulative[segment + 1] - cumulative[segment];
+    const double t = piece > 0.0 ? (at - cumulative[segment]) / piece : 0.0;
+    return points[segment] + std::clamp(t, 0.0, 1.0) * (points[segment + 1] - points[segment]);
+  }
+};
+
+Zigzag make_zigzag(const Solution& s, double h) {
+  Zigzag z;
+  z.points = central_zigzag(s);
+  if (z.points.empty()) {
+    z.points = {Eigen::Vector2d(s.sag_amplitude_mm, 0.0),
+                Eigen::Vector2d(s.sag_amplitude_mm + h, 0.0)};
+  }
+  z.cumulative.assign(z.points.size(), 0.0);
+  for (std::size_t k = 1; k < z.points.size(); ++k) {
+    z.cumulative[k] = z.cumulative[k - 1] + (z.points[k] - z.points[k - 1]).norm();
+  }
+  return z;
+}
+
+}  // namespace
+
 DeformedGrid deformed_grid_positions(const Solution& s, const Parameters& p, int nx, int ny) {
   DeformedGrid grid;
   grid.nx = std::max(2, nx);
@@ -88,40 +140,59 @@ DeformedGrid deformed_grid_positions(const Solution& s, const Parameters& p, int
   const double h = p.hanging.height_mm;
   const double L = p.hanging.length_mm;
   const double l = s.span_mm > 0.0 ? s.span_mm : span_mm(p);
+  const Shape& shape = p.shape;
+  const int spans = shape.span_count();
+  const bool rectangular = shape.kind == ShapeKind::rectangular;
+  const Zigzag zigzag = make_zigzag(s, h);
 
-  std::vector<Eigen::Vector2d> zigzag = central_zigzag(s);
-  if (zigzag.empty()) {
-    zigzag = {Eigen::Vector2d(s.sag_amplitude_mm, 0.0),
-              Eigen::Vector2d(s.sag_amplitude_mm + h, 0.0)};
-  }
-  // Every column is the central fibre scaled by cos(pi x/l), so the rows are sampled once.
-  const std::vector<Eigen::Vector2d> rows = sample_by_arc_length(zigzag, grid.ny);
-  double sampled_length = 0.0;
-  for (std::size_t j = 1; j < rows.size(); ++j) {
-    sampled_length += (rows[j] - rows[j - 1]).norm();
-  }
+  // The membrane's rows sit at the same fraction of every fibre: sample the central one once.
+  const std::vector<Eigen::Vector2d> rows = sample_by_arc_length(zigzag.points, grid.ny);
 
-  // Per column: x and the cosine that scales the central fibre there.
-  std::vector<float> column_x(static_cast<std::size_t>(grid.nx));
-  std::vector<double> column_scale(static_cast<std::size_t>(grid.nx));
+  const std::size_t count = static_cast<std::size_t>(grid.nx) * grid.ny;
+  grid.positions_mm.resize(count);
+  grid.material_mm.resize(count);
+  const double total_width = spans * L;
   for (int i = 0; i < grid.nx; ++i) {
-    const double X = L * (static_cast<double>(i) / (grid.nx - 1) - 0.5);
+    // Which span the column falls in, and where in it.
+    const double X_total = total_width * (static_cast<double>(i) / (grid.nx - 1) - 0.5);
+    const int span =
+        std::clamp(static_cast<int>(std::floor((X_total + 0.5 * total_width) / L)), 0, spans - 1);
+    const double X = X_total + 0.5 * total_width - (span + 0.5) * L;
     const double c = std::max(0.0, std::cos(kPi * X / L));  // = cos(pi x / l) at x = X l / L
-    column_x[static_cast<std::size_t>(i)] = static_cast<float>(X * l / L);
-    column_scale[static_cast<std::size_t>(i)] = c;
-    // The membrane's fibre at X is h cos(pi X / L) long; the grid's is c times the sampled one.
-    grid.worst_fibre_error =
-        std::max(grid.worst_fibre_error, std::abs(c * sampled_length - c * h) / h);
-  }
-  grid.positions_mm.resize(static_cast<std::size_t>(grid.nx) * grid.ny);
-  Eigen::Vector3f* out = grid.positions_mm.data();
-  for (int j = 0; j < grid.ny; ++j) {
-    const Eigen::Vector2d& r = rows[static_cast<std::size_t>(j)];
-    for (int i = 0; i < grid.nx; ++i) {
-      const double c = column_scale[static_cast<std::size_t>(i)];
-      *out++ = Eigen::Vector3f(column_x[static_cast<std::size_t>(i)], static_cast<float>(c * r.x()),
-                               static_cast<float>(c * r.y()));
+    const double x = X * l / L;
+    double column_length = 0.0;
+    Eigen::Vector3d previous;
+    std::size_t segment = 0;
+    for (int j = 0; j < grid.ny; ++j) {
+      const double fraction = static_cast<double>(j) / (grid.ny - 1);
+      Eigen::Vector2d yz;
+      double material_Y;
+      if (!rectangular) {
+        yz = c * rows[static_cast<std::size_t>(j)];
+        material_Y = fraction * h * c;
+      } else {
+        // Arc length Y along the zig-zag (c times the central one), then straight down.
+        material_Y = fraction * h;
+        const double zigzag_here = c * zigzag.length();
+        if (material_Y <= zigzag_here && c > 0.0) {
+          yz = c * zigzag.at_length(material_Y / c, segment);
+        } else {
+          yz = c * zigzag.points.back() + Eigen::Vector2d(material_Y - zigzag_here, 0.0);
+        }
+      }
+      const Eigen::Vector3d point = place_on_shape({x, yz.x(), yz.y()}, span, l, shape);
+      if (j > 0) {
+        column_length += (point - previous).norm();
+      }
+      previous = point;
+      const std::size_t v = static_cast<std::size_t>(j) * grid.nx + i;
+      grid.positions_mm[v] = point.cast<float>();
+      grid.material_mm[v] =
+          Eigen::Vector2f(static_cast<float>(X_total), static_cast<float>(material_Y));
     }
+    const double flat_length = rectangular ? h : h * c;
+    grid.worst_fibre_error =
+        std::max(grid.worst_fibre_error, std::abs(column_length - flat_length) / h);
   }
 
   grid.triangle_indices.resize(static_cast<std::size_t>(grid.nx - 1) * (grid.ny - 1) * 6);

@@ -85,9 +85,12 @@ std::vector<ValidationIssue> validate(const Parameters& p) {
   }
   check_range(issues, "c", m.load_constant_c, 0.0, 1e6, false, true,
               "the load-condition constant of eq. 7 is positive");
+  check_range(issues, "p", m.stress_exponent_p, 0.0, 5.0, false, true,
+              "the exponent on eq. 7's stress ratio (1 = the paper); above 0 so that stiffer "
+              "fabric still gives fewer folds, at most 5 (the calibration's search range)");
   check_range(issues, "simpson_intervals", m.simpson_intervals, 2.0, 1e6, true, true,
               "composite Simpson needs at least 2 intervals");
-  if (m.simpson_intervals % 2 != 0) {
+  if (m.simpson_intervals % 2 != 0 && m.length_quadrature == LengthQuadrature::simpson) {
     issues.push_back({"simpson_intervals", static_cast<double>(m.simpson_intervals),
                       "simpson_intervals = " + std::to_string(m.simpson_intervals) +
                           " must be even: composite Simpson pairs its intervals"});
@@ -96,6 +99,10 @@ std::vector<ValidationIssue> validate(const Parameters& p) {
               "the paper method's relative tolerance on L, e.g. 0.05 for the paper's 5%");
   check_range(issues, "max_iterations", m.max_iterations, 1.0, 1e6, true, true,
               "the paper method needs at least one iteration");
+  check_range(issues, "supports", p.shape.supports, 2.0, 64.0, true, true,
+              "a strip hangs from 2 to 64 equally spaced supports");
+  check_range(issues, "incline_deg", p.shape.incline_deg, -80.0, 80.0, false, false,
+              "the line through inclined supports is steeper than vertical beyond +-80 deg");
   return issues;
 }
 
@@ -117,6 +124,9 @@ std::string_view to_string(SpanRule r) {
 std::string_view to_string(IntRounding r) {
   return r == IntRounding::floor ? "floor" : "nearest";
 }
+std::string_view to_string(LengthQuadrature q) {
+  return q == LengthQuadrature::simpson ? "simpson" : "trapezoid";
+}
 
 bool parse_method(std::string_view s, Method& out) {
   return parse_named(s, out, {Method::paper, Method::exact});
@@ -126,6 +136,9 @@ bool parse_span_rule(std::string_view s, SpanRule& out) {
 }
 bool parse_int_rounding(std::string_view s, IntRounding& out) {
   return parse_named(s, out, {IntRounding::floor, IntRounding::nearest});
+}
+bool parse_length_quadrature(std::string_view s, LengthQuadrature& out) {
+  return parse_named(s, out, {LengthQuadrature::simpson, LengthQuadrature::trapezoid});
 }
 
 }  // namespace foldlab

@@ -26,9 +26,12 @@ const char* json_pointer_for(const std::string& field) {
       {"L_mm", "/hanging/length_mm"},
       {"d_mm", "/hanging/support_displacement_mm"},
       {"c", "/model/load_constant_c"},
+      {"p", "/model/stress_exponent_p"},
       {"simpson_intervals", "/model/simpson_intervals"},
       {"length_tolerance", "/model/length_tolerance"},
       {"max_iterations", "/model/max_iterations"},
+      {"supports", "/shape/supports"},
+      {"incline_deg", "/shape/incline_deg"},
   };
   for (const auto& [name, pointer] : table) {
     if (field == name) {
@@ -163,7 +166,7 @@ Preset preset_from_json(const json& j, const std::string& origin) {
   Preset preset;
   if (!r.object(j, "",
                 {"foldlab_preset", "name", "description", "source", "fabric", "hanging", "model",
-                 "published"})) {
+                 "shape", "published"})) {
     throw PresetError(join_lines(problems));
   }
   if (!j.contains("foldlab_preset")) {
@@ -200,9 +203,10 @@ Preset preset_from_json(const json& j, const std::string& origin) {
   }
   if (j.contains("model")) {
     const json& m = j.at("model");
-    if (r.object(m, "/model",
-                 {"method", "load_constant_c", "span_rule", "int_rounding", "simpson_intervals",
-                  "length_tolerance", "max_iterations"})) {
+    if (r.object(
+            m, "/model",
+            {"method", "load_constant_c", "span_rule", "int_rounding", "simpson_intervals",
+             "length_tolerance", "max_iterations", "length_quadrature", "stress_exponent_p"})) {
       r.named(m, "/model", "method", p.model.method, &parse_method, "paper, exact");
       r.number(m, "/model", "load_constant_c", p.model.load_constant_c, false);
       r.named(m, "/model", "span_rule", p.model.span_rule, &parse_span_rule, "L-d, L-2d");
@@ -211,6 +215,18 @@ Preset preset_from_json(const json& j, const std::string& origin) {
       r.integer(m, "/model", "simpson_intervals", p.model.simpson_intervals);
       r.number(m, "/model", "length_tolerance", p.model.length_tolerance, false);
       r.integer(m, "/model", "max_iterations", p.model.max_iterations);
+      r.named(m, "/model", "length_quadrature", p.model.length_quadrature, &parse_length_quadrature,
+              "simpson, trapezoid");
+      r.number(m, "/model", "stress_exponent_p", p.model.stress_exponent_p, false);
+    }
+  }
+  if (j.contains("shape")) {
+    const json& sh = j.at("shape");
+    if (r.object(sh, "/shape", {"kind", "supports", "incline_deg"})) {
+      r.named(sh, "/shape", "kind", p.shape.kind, &parse_shape_kind,
+              "cosine, rectangular, strip, inclined");
+      r.integer(sh, "/shape", "supports", p.shape.supports);
+      r.number(sh, "/shape", "incline_deg", p.shape.incline_deg, false);
     }
   }
   if (j.contains("published")) {
@@ -292,7 +308,13 @@ json preset_to_json(const Preset& preset) {
         {"int_rounding", to_string(p.model.int_rounding)},
         {"simpson_intervals", p.model.simpson_intervals},
         {"length_tolerance", p.model.length_tolerance},
-        {"max_iterations", p.model.max_iterations}}},
+        {"max_iterations", p.model.max_iterations},
+        {"length_quadrature", to_string(p.model.length_quadrature)},
+        {"stress_exponent_p", p.model.stress_exponent_p}}},
+      {"shape",
+       {{"kind", to_string(p.shape.kind)},
+        {"supports", p.shape.supports},
+        {"incline_deg", p.shape.incline_deg}}},
   };
   json published = json::object();
   if (preset.published.n)

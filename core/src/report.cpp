@@ -48,6 +48,7 @@ nlohmann::json solution_to_json(const Solution& s, const Parameters& p) {
         {"support_displacement_mm", p.hanging.support_displacement_mm},
         {"load_constant_c", p.model.load_constant_c},
         {"K", stiffness_constant_K(p)},
+        {"stress_exponent_p", p.model.stress_exponent_p},
         {"span_rule", to_string(p.model.span_rule)},
         {"int_rounding", to_string(p.model.int_rounding)}}},
   };
@@ -68,6 +69,10 @@ std::string solution_table(const Solution& s, const Parameters& p, const std::st
   out += line("upper edge length", "L", p.hanging.length_mm, "mm");
   out += line("support displacement", "d", p.hanging.support_displacement_mm, "mm");
   out += line("eq. 7 constant c/(1-nu^2)", "K", stiffness_constant_K(p), "");
+  if (p.model.stress_exponent_p != 1.0) {
+    // Only the calibrated variant prints its exponent: the paper's form reads as before.
+    out += line("eq. 7 exponent, s -> s^p", "p", p.model.stress_exponent_p, "");
+  }
   out += "  span rule l = " + std::string(to_string(p.model.span_rule)) +
          ", Int[] of eq. 10 = " + std::string(to_string(p.model.int_rounding)) + "\n";
 

@@ -44,8 +44,17 @@ void Scene::set_parameters(const Parameters& parameters) {
   if (parameters == parameters_) {
     return;
   }
+  // The shape only lays the solution out: a new shape redraws, it does not re-solve.
+  Parameters same_shape = parameters;
+  same_shape.shape = parameters_.shape;
+  const bool solver_inputs_changed = !(same_shape == parameters_);
   parameters_ = parameters;
-  invalidate_from(Stage::solution);
+  if (solver_inputs_changed) {
+    invalidate_from(Stage::solution);
+  } else {
+    invalidate_from(Stage::fold_lines);
+    invalidate_from(Stage::grid);
+  }
 }
 
 void Scene::set_grid_resolution(int nx, int ny) {
@@ -92,7 +101,8 @@ const Solution& Scene::solution() {
 const FoldLines& Scene::fold_lines() {
   if (stale_[index(Stage::fold_lines)]) {
     const Solution& s = solution();
-    run(Stage::fold_lines, [&] { fold_lines_ = foldlab::fold_lines(s, fold_line_samples_); });
+    run(Stage::fold_lines,
+        [&] { fold_lines_ = foldlab::fold_lines(s, parameters_.shape, fold_line_samples_); });
   }
   return fold_lines_;
 }

@@ -6,7 +6,16 @@
 namespace foldlab {
 namespace {
 
-enum class Kind { number, whole_number, stiffness_K, method, span_rule, int_rounding };
+enum class Kind {
+  number,
+  whole_number,
+  stiffness_K,
+  method,
+  span_rule,
+  int_rounding,
+  length_quadrature,
+  shape
+};
 
 // The one table of keys: help texts, parsing and the field each key sets all come from here.
 struct Binding {
@@ -43,6 +52,9 @@ const std::vector<Binding>& bindings() {
       {{"c", "", "load-condition constant of eq. 7"},
        Kind::number,
        [](Parameters& p) -> double& { return p.model.load_constant_c; }},
+      {{"p", "", "exponent on eq. 7's stress ratio, s -> s^p (1 = the paper; foldlab calibrate)"},
+       Kind::number,
+       [](Parameters& p) -> double& { return p.model.stress_exponent_p; }},
       {{"method", "", "paper | exact"}, Kind::method},
       {{"span_rule", "", "L-d | L-2d: how the span l follows from L and d"}, Kind::span_rule},
       {{"int_rounding", "", "nearest | floor: Int[] of eq. 10"}, Kind::int_rounding},
@@ -57,6 +69,18 @@ const std::vector<Binding>& bindings() {
        Kind::whole_number,
        nullptr,
        [](Parameters& p) -> int& { return p.model.max_iterations; }},
+      {{"length_quadrature", "",
+        "simpson | trapezoid: paper method's rule for eq. 8 (simpson_intervals intervals)"},
+       Kind::length_quadrature},
+      {{"shape", "", "cosine | rectangular | strip | inclined: the cloth the pattern is laid on"},
+       Kind::shape},
+      {{"supports", "", "strip: number of equally spaced supports (k - 1 spans)"},
+       Kind::whole_number,
+       nullptr,
+       [](Parameters& p) -> int& { return p.shape.supports; }},
+      {{"incline_deg", "deg", "inclined: angle of the line through the supports"},
+       Kind::number,
+       [](Parameters& p) -> double& { return p.shape.incline_deg; }},
   };
   return table;
 }
@@ -113,6 +137,12 @@ std::optional<std::string> apply_setting(Parameters& p, std::string_view key,
       return set_named(key, value, p.model.span_rule, parse_span_rule, "L-d, L-2d");
     case Kind::int_rounding:
       return set_named(key, value, p.model.int_rounding, parse_int_rounding, "nearest, floor");
+    case Kind::length_quadrature:
+      return set_named(key, value, p.model.length_quadrature, parse_length_quadrature,
+                       "simpson, trapezoid");
+    case Kind::shape:
+      return set_named(key, value, p.shape.kind, parse_shape_kind,
+                       "cosine, rectangular, strip, inclined");
     default:
       break;
   }

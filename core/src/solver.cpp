@@ -1,9 +1,12 @@
 #include "foldlab/solver.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <numbers>
+#include <optional>
 
 #include "foldlab/equations.hpp"
 #include "root_finding.hpp"
@@ -25,6 +28,7 @@ struct Setup {
   double s;
   std::optional<double> Q7;
   bool nearest;
+  double log_Q7 = 0.0;  // exact method: log Q7, which every count of eq. 10 divides by
 };
 
 Setup make_setup(const Parameters& p) {
@@ -36,7 +40,10 @@ Setup make_setup(const Parameters& p) {
   u.sag = amplitude_for_upper_edge_length(u.L, u.l);
   u.s = stress_ratio(stiffness_constant_K(p), p.fabric.youngs_modulus_MPa, p.fabric.thickness_mm,
                      p.fabric.weight_N_per_mm2, u.h, u.l);
-  u.Q7 = wrinkle_ratio_from_stress_ratio(u.s);
+  // The calibrated variant of eq. 7 solves it with s^p. p = 1, the paper's form, skips pow so that
+  // the paper's numbers stay bit for bit; Solution::stress_ratio reports s itself either way.
+  const double exponent = p.model.stress_exponent_p;
+  u.Q7 = wrinkle_ratio_from_stress_ratio(exponent == 1.0 ? u.s : std::pow(u.s, exponent));
   u.nearest = p.model.int_rounding == IntRounding::nearest;
   return u;
 }
@@ -113,8 +120,11 @@ Solution solve_paper(const Parameters& p) {
     n = count_for(u, u.a0 / an, capped);
     const double Q = std::pow(u.a0 / an, 1.0 / n);
     z = z_max_for_fibre_length(u.a0, Q, n, u.h);
+    const double amplitude = std::hypot(an, z);
     const double length =
-        upper_edge_length_simpson(std::hypot(an, z), u.l, p.model.simpson_intervals);
+        p.model.length_quadrature == LengthQuadrature::simpson
+            ? upper_edge_length_simpson(amplitude, u.l, p.model.simpson_intervals)
+            : upper_edge_length_trapezoid(amplitude, u.l, p.model.simpson_intervals);
     if (std::abs(length / u.L - 1.0) <= p.model.length_tolerance) {
       converged = true;
       break;
@@ -129,81 +139,260 @@ Solution solve_paper(const Parameters& p) {
   return out;
 }
 
-// Exact method: for a given n, a_n in (0, A) with z² = A² - a_n² such that eq. 9 holds.
-// F(a_n) = fibre length - h is positive as a_n -> 0 (a_0 > h) and equals 0.01 h - A < 0 at a_n = A,
-// so a root is bracketed and Brent's method finds it.
-double upper_amplitude_for_count(const Setup& u, int n) {
-  const double A2 = u.sag * u.sag;
-  auto F = [&](double an) {
-    const double Q = std::exp(std::log(u.a0 / an) / n);
-    return fibre_length(u.a0, Q, n, std::sqrt(std::max(0.0, A2 - an * an))) - u.h;
-  };
-  // Near a_n -> 0, Q blows up; start the bracket where Q^n = 1e12 (F is still positive there).
-  const double lo = u.a0 * 1e-12 < u.sag ? u.a0 * 1e-12 : 0.5 * u.sag;
-  const double hi = u.sag;
-  return detail::brent_root(F, lo, hi, F(lo), F(hi), 1e-15);
+// Exact method. For one n, eq. 8 leaves one degree of freedom on the circle a_n² + z² = A²; its
+// angle theta (a_n = A cos theta, z = A sin theta) is the unknown of eq. 9, because a_n alone
+// loses z's digits where z << A (z = sqrt(A² - a_n²) cancels) and z alone loses a_n's where a_n <<
+// A.
+struct UpperFold {
+  double an;
+  double z;
+};
+
+UpperFold on_circle(const Setup& u, double theta) {
+  return {u.sag * std::cos(theta), u.sag * std::sin(theta)};
 }
 
+double angle(const UpperFold& f) {
+  return std::atan2(f.z, f.an);
+}
+
+// Eq. 9's fibre length minus h at (a_n, z) with Q = (a_0/a_n)^(1/n) formed as finish() forms it,
+// so that the reported residual is that of the root found.
+double fibre_excess(const Setup& u, int n, const UpperFold& f) {
+  return fibre_length(u.a0, std::pow(u.a0 / f.an, 1.0 / n), n, f.z) - u.h;
+}
+
+// The same with its slope in theta, summed term by term.
+struct ExcessAndSlope {
+  double value;
+  double slope;
+};
+
+ExcessAndSlope fibre_excess_and_slope(const Setup& u, int n, const UpperFold& f) {
+  const double Q = std::pow(u.a0 / f.an, 1.0 / n);
+  const double shrink = 1.0 / Q;
+  const double b2 = 4.0 * f.z * f.z;
+  double difference = u.a0 * (Q - 1.0) * shrink;  // a_{i-1} - a_i for i = 1, as fibre_length
+  double a_i = u.a0;
+  double sum = 0.0;
+  double sum_inverse = 0.0;
+  double sum_shift = 0.0;
+  for (int i = 1; i <= n; ++i) {
+    a_i *= shrink;
+    const double S = std::sqrt(difference * difference + b2);
+    const double inverse = 1.0 / S;
+    sum += S;
+    sum_inverse += inverse;
+    // a_i = a_0^(1-i/n) a_n^(i/n), so d(a_{i-1} - a_i)/d a_n = ((i-1)(a_{i-1} - a_i) - a_i)/(n
+    // a_n).
+    sum_shift += difference * ((i - 1) * difference - a_i) * inverse;
+    difference *= shrink;
+  }
+  const double dF_dan = sum_shift / (n * f.an);
+  const double dF_dz = 4.0 * f.z * sum_inverse;
+  // da_n/dtheta = -z, dz/dtheta = a_n.
+  return {sum - u.h, -f.z * dF_dan + f.an * dF_dz};
+}
+
+constexpr int kDirectSumMax = 64;
+
+// Int[] of eq. 10 at a_n, with every count above the cap merged into kMaxWrinkles + 1.
+int count_at(const Setup& u, double an) {
+  return std::min(wrinkle_count_from_logs(std::log(u.a0 / an), u.log_Q7, u.nearest),
+                  kMaxWrinkles + 1);
+}
+
+// The a_n at the lower edge of count c's cell, where Int[x] of eq. 10 changes from c - 1 to c.
+double cell_edge_an(const Setup& u, int c) {
+  // wrinkle_count rounds x to nearest, or floors x (1 + 1e-9) (its guard against x = n - 1 ulp).
+  const double x = u.nearest ? c - 0.5 : c / (1.0 + 1e-9);
+  return u.a0 * std::exp(-x * u.log_Q7);
+}
+
+// The root of eq. 9 for one n, inside a bracket that tightens as it is used. The fixed-point
+// iteration over n needs only Int[log(a_0/a_n)/log Q7] at the root, and one sign test of eq. 9 at
+// the a_n where Int[] changes tells on which side of it the root lies: most visits of n are
+// decided by 0-2 such tests, and only the n reported is solved to full precision.
+class CountRoot {
+ public:
+  // The bracket comes from two closed forms around eq. 9: Minkowski's inequality gives
+  // sum sqrt(delta_i² + 4z²) >= sqrt((a_0 - a_n)² + (2nz)²) and the triangle inequality gives
+  // <= (a_0 - a_n) + 2nz. The fibre length falls as a_n grows along the circle, so the a_n that
+  // make these equal to h bound the root from below and from above. Each z comes from its own
+  // equation, not from sqrt(A² - a_n²), so that the angles keep their digits.
+  CountRoot(const Setup& u, int n) : u_(&u), n_(n) {
+    const double h = u.h;
+    const double e = u.a0 - h;  // 0.01 h
+    const double A = u.sag;
+    const double nn = static_cast<double>(n) * n;
+    const double C = u.a0 * u.a0 + 4.0 * nn * A * A - h * h;
+    const double an_min = C / (u.a0 + std::sqrt(u.a0 * u.a0 + (4.0 * nn - 1.0) * C));
+    const double an_max =
+        (e + 2.0 * n * std::sqrt((4.0 * nn + 1.0) * A * A - e * e)) / (4.0 * nn + 1.0);
+    // (a_0 - a_n)² + (2nz)² = h² and (a_0 - a_n) + 2nz = h respectively.
+    const double z_at_min =
+        std::sqrt(std::max(0.0, (an_min - e) * (h + u.a0 - an_min))) / (2.0 * n);
+    const double z_at_max = std::max(0.0, an_max - e) / (2.0 * n);
+    // theta grows as a_n falls.
+    lo_ = {an_max, z_at_max};
+    hi_ = {an_min, z_at_min};
+  }
+
+  // Int[] of eq. 10 at the root, capped as count_at().
+  int count() {
+    if (solved_) {
+      return count_at(*u_, root_.an);
+    }
+    // a_n falls as theta grows, so the count grows with theta.
+    int c_min = count_at(*u_, lo_.an);
+    int c_max = count_at(*u_, hi_.an);
+    while (c_min < c_max) {
+      const int c = c_min + (c_max - c_min + 1) / 2;
+      const double an = std::max(hi_.an, std::min(lo_.an, cell_edge_an(*u_, c)));
+      const UpperFold edge{an, std::sqrt(std::max(0.0, (u_->sag - an) * (u_->sag + an)))};
+      if (fibre_excess(*u_, n_, edge) <= 0.0) {  // the root lies at or beyond the edge
+        lo_ = edge;
+        c_min = c;
+      } else {
+        hi_ = edge;
+        c_max = c - 1;
+      }
+    }
+    return c_min;
+  }
+
+  UpperFold solve() {
+    if (solved_) {
+      return root_;
+    }
+    solved_ = true;
+    // Widened by far more than the rounding of the bounds' closed forms.
+    double lo = std::max(0.0, angle(lo_) * (1.0 - 1e-9));
+    double hi = std::min(0.5 * std::numbers::pi, angle(hi_) * (1.0 + 1e-9));
+    // fibre_length sums term by term for n <= 64 and for steep progressions (log Q >= 0.01);
+    // otherwise its sums are O(1) and the root is found from values alone.
+    if (n_ > kDirectSumMax && std::log(u_->a0 / lo_.an) < 0.01 * n_) {
+      auto F = [&](double theta) { return fibre_excess(*u_, n_, on_circle(*u_, theta)); };
+      root_ = on_circle(*u_, detail::brent_root(F, lo, hi, F(lo), F(hi), 1e-15));
+      return root_;
+    }
+    // Safeguarded Newton from near the Minkowski end, where the root sits (exactly on it for
+    // n = 1, where the inequality is an equality).
+    double theta = hi;
+    if (n_ > 1) {
+      theta = std::clamp(theta - spread_correction(), lo, hi);
+    }
+    for (int iteration = 0; iteration < 200; ++iteration) {
+      const ExcessAndSlope e = fibre_excess_and_slope(*u_, n_, on_circle(*u_, theta));
+      if (e.value == 0.0) {
+        break;
+      }
+      (e.value < 0.0 ? lo : hi) = theta;  // the excess grows with theta
+      const double step = -e.value / e.slope;
+      if (std::abs(step) <= 1e-9 * theta) {
+        // Quadratic convergence: after a step this small the error is below rounding.
+        theta += step;
+        break;
+      }
+      theta = (theta + step > lo && theta + step < hi) ? theta + step : 0.5 * (lo + hi);
+      if (hi - lo <= 4e-16 * theta) {
+        break;
+      }
+    }
+    root_ = on_circle(*u_, theta);
+    return root_;
+  }
+
+ private:
+  // Minkowski's bound treats the a-differences as equal. To second order in their spread,
+  // sum f(delta_i) = n f(mean) + f''(mean)/2 sum (delta_i - mean)² with f = sqrt(delta² + 4z²):
+  // one linearised step of that correction moves the start about as far as a Newton step would.
+  double spread_correction() const {
+    const UpperFold& m = hi_;
+    const double D = u_->a0 - m.an;
+    const double b = 2.0 * m.z;
+    const double mean = D / n_;
+    const double q = std::pow(m.an / u_->a0, 1.0 / n_);  // 1/Q
+    const double first = u_->a0 * (1.0 - q);
+    const double ratio = m.an / u_->a0;  // q^n
+    const double sum_of_squares = first * first * (1.0 - ratio * ratio) / (1.0 - q * q);
+    const double S2 = mean * mean + b * b;
+    const double excess = 0.5 * b * b / (S2 * std::sqrt(S2)) * (sum_of_squares - D * mean);
+    const double M = std::sqrt(D * D + n_ * n_ * b * b);
+    const double slope = (D * m.z + 4.0 * n_ * n_ * m.z * m.an) / M;  // dM/dtheta
+    return slope > 0.0 ? excess / slope : 0.0;
+  }
+
+  const Setup* u_;
+  int n_;
+  UpperFold lo_{};  // the root's theta is at or above lo_'s, at or below hi_'s
+  UpperFold hi_{};
+  bool solved_ = false;
+  UpperFold root_{};
+};
+
 Solution solve_exact(const Parameters& p) {
-  const Setup u = make_setup(p);
+  Setup u = make_setup(p);
+  if (u.Q7) {
+    u.log_Q7 = std::log(*u.Q7);
+  }
   Solution out = start_solution(p, u);
   if (settle_degenerate(out, u)) {
     return out;
   }
-  bool capped = false;
   if (!u.Q7) {
     out.regime = Regime::stiff;
     out.iterations = 1;
-    const double an = upper_amplitude_for_count(u, 1);
-    finish(out, u, 1, an, std::sqrt(u.sag * u.sag - an * an));
+    const UpperFold f = CountRoot(u, 1).solve();
+    finish(out, u, 1, f.an, f.z);
     return out;
   }
   // Fixed point of n -> Int[log(a_0/a_n(n)) / log Q7], starting from the paper's initial guess.
-  struct Visit {
-    int n;
-    double an;
-  };
-  std::vector<Visit> visited;
-  int n = count_for(u, 1.0 / kInitialGuessFactor * kLowerBoundaryFactor, capped);
+  bool capped = false;
   constexpr int kMaxSteps = 64;
-  std::size_t chosen = 0;
+  std::array<int, kMaxSteps> visited{};
+  int visits = 0;
+  std::optional<CountRoot> last;  // the latest visit's bracket: usually the n reported
+  int n = count_for(u, 1.0 / kInitialGuessFactor * kLowerBoundaryFactor, capped);
+  int chosen = 0;
   bool settled = false;
-  for (int step = 0; step < kMaxSteps && !settled; ++step) {
-    const double an = upper_amplitude_for_count(u, n);
-    visited.push_back({n, an});
-    const int next = count_for(u, u.a0 / an, capped);
-    for (std::size_t i = 0; i < visited.size(); ++i) {
-      if (visited[i].n != next) {
+  while (visits < kMaxSteps && !settled) {
+    visited[static_cast<std::size_t>(visits++)] = n;
+    last.emplace(u, n);
+    int next = last->count();
+    if (next > kMaxWrinkles) {
+      capped = true;
+      next = kMaxWrinkles;
+    }
+    for (int i = 0; i < visits && !settled; ++i) {
+      if (visited[static_cast<std::size_t>(i)] != next) {
         continue;
       }
       settled = true;
       chosen = i;
       // A cycle: every visit from i on; report the smallest n among them.
-      for (std::size_t j = i; j < visited.size(); ++j) {
-        out.n_cycle.push_back(visited[j].n);
-        if (visited[j].n < visited[chosen].n) {
+      for (int j = i; j < visits; ++j) {
+        if (visits - i > 1) {
+          out.n_cycle.push_back(visited[static_cast<std::size_t>(j)]);
+        }
+        if (visited[static_cast<std::size_t>(j)] < visited[static_cast<std::size_t>(chosen)]) {
           chosen = j;
         }
       }
-      break;
     }
     n = next;
   }
-  out.iterations = static_cast<int>(visited.size());
+  out.iterations = visits;
   if (!settled) {
     out.hit_iteration_cap = true;
-    chosen = visited.size() - 1;
+    chosen = visits - 1;
   }
   std::sort(out.n_cycle.begin(), out.n_cycle.end());
-  if (out.n_cycle.size() <= 1) {
-    out.n_cycle.clear();
-    out.regime = Regime::wrinkled;
-  } else {
-    out.regime = Regime::n_cycle;
-  }
+  out.regime = out.n_cycle.empty() ? Regime::wrinkled : Regime::n_cycle;
   out.n_capped = capped;
-  const Visit& v = visited[chosen];
-  finish(out, u, v.n, v.an, std::sqrt(std::max(0.0, u.sag * u.sag - v.an * v.an)));
+  const int n_reported = visited[static_cast<std::size_t>(chosen)];
+  const UpperFold fold = chosen == visits - 1 ? last->solve() : CountRoot(u, n_reported).solve();
+  finish(out, u, n_reported, fold.an, fold.z);
   return out;
 }
 

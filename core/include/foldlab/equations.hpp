@@ -40,6 +40,8 @@ double z_max_for_fibre_length(double a0_mm, double Q, int n, double height_mm);
 // Eq. 10: n = Int[log(a_0/a_n) / log Q], at least 1. Floor carries a relative guard of 1e-9 so
 // that log(Q^n)/log Q landing an ulp below n still gives n.
 int wrinkle_count(double a0_over_an, double Q, bool round_to_nearest);
+// The same from log(a_0/a_n) and log Q, for a caller that counts many times with one Q.
+int wrinkle_count_from_logs(double log_a0_over_an, double log_Q, bool round_to_nearest);
 
 // Fold amplitudes a_i = a_0 / Q^i, i = 0..n.
 void fold_amplitudes(double a0_mm, double Q, int n, std::span<double> out);

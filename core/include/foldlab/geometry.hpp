@@ -24,6 +24,7 @@ inline constexpr int kMaxDrawnFoldLines = 1000;
 struct FoldLine {
   int index = 0;  // i: 0 is the lower boundary a_0, n the upper edge a_n
   int sign = 1;
+  int span = 0;                            // which span of a strip (0 otherwise)
   std::vector<Eigen::Vector3d> points_mm;  // (x, a_i cos(pi x/l), sign z_max cos(pi x/l))
 };
 
@@ -32,8 +33,18 @@ struct FoldLines {
   int stride = 1;  // 1 when every line is drawn
 };
 
-// samples >= 2 points per line from x = -l/2 to l/2. Empty when the solution has no folds.
-FoldLines fold_lines(const Solution& s, int samples, int max_lines = kMaxDrawnFoldLines);
+// samples >= 2 points per line and span, from x = -l/2 to l/2 of each span. Empty when the
+// solution has no folds. The shape repeats the lines per span (strip) or shears them (inclined).
+FoldLines fold_lines(const Solution& s, const Shape& shape, int samples,
+                     int max_lines = kMaxDrawnFoldLines);
+inline FoldLines fold_lines(const Solution& s, int samples, int max_lines = kMaxDrawnFoldLines) {
+  return fold_lines(s, Shape{}, samples, max_lines);
+}
+
+// Where the shape puts a point (x, y, z) of one span's solution: span j of a strip is shifted by
+// its offset, and an inclined pattern is sheared so that the right support sits higher.
+Eigen::Vector3d place_on_shape(const Eigen::Vector3d& span_point, int span, double span_mm,
+                               const Shape& shape);
 
 // The deformed cloth: an nx x ny grid over the flat cloth (X across, Y down the fibre), row-major
 // with X fastest, two triangles per cell, and per-vertex normals (area weighted, unit length).
@@ -41,6 +52,7 @@ struct DeformedGrid {
   int nx = 0;
   int ny = 0;
   std::vector<Eigen::Vector3f> positions_mm;
+  std::vector<Eigen::Vector2f> material_mm;  // (X, Y) of each vertex on the flat cloth: for prints
   std::vector<Eigen::Vector3f> normals;
   std::vector<std::uint32_t> triangle_indices;
   // max over the grid's columns of |deformed polyline length - flat fibre length| / h: how well the
@@ -48,9 +60,12 @@ struct DeformedGrid {
   double worst_fibre_error = 0.0;
 };
 
-// nx, ny >= 2. The flat cloth is the cosine membrane: the fibre at X has length h cos(pi X/L) and
-// its points sit at arc-length fraction Y/h of the zig-zag through the fold points at
-// x = X l/L. The supports (X = +-L/2) stay fixed.
+// nx, ny >= 2, over the whole flat cloth (all spans of a strip). The cosine membrane (MODEL.md
+// item 7): the fibre at X has length h cos(pi X/L) and its points sit at arc-length fraction Y/h
+// of the zig-zag through the fold points at x = X l/L. The rectangular cloth: every fibre is h
+// long; its point Y sits at arc length Y along the zig-zag, and below the lowest fold it hangs
+// straight down (as the paper does; near the supports, where the zig-zag shrinks to nothing, this
+// is where the model stops describing a real cloth). The supports stay fixed.
 DeformedGrid deformed_grid(const Solution& s, const Parameters& p, int nx, int ny);
 // The same without normals (left empty): the scene computes them as a stage of their own.
 DeformedGrid deformed_grid_positions(const Solution& s, const Parameters& p, int nx, int ny);

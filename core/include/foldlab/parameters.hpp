@@ -6,6 +6,8 @@
 #include <string_view>
 #include <vector>
 
+#include "foldlab/shape.hpp"
+
 namespace foldlab {
 
 // c calibrated on Tables 1-2 of the paper with nu = 0.3, so K = c / (1 - nu²) = 29.56: the middle
@@ -36,6 +38,9 @@ enum class Method { paper, exact };
 enum class SpanRule { L_minus_d, L_minus_2d };
 // Int[·] of eq. 10 (MODEL.md item 2).
 enum class IntRounding { floor, nearest };
+// The paper method's quadrature of eq. 8: the paper's composite Simpson, or the trapezoid rule,
+// which converges exponentially on this smooth periodic integrand (MODEL.md, eq. 8).
+enum class LengthQuadrature { simpson, trapezoid };
 
 struct ModelSettings {
   Method method = Method::paper;
@@ -44,9 +49,13 @@ struct ModelSettings {
   double load_constant_c = kCalibratedLoadConstantC;
   SpanRule span_rule = SpanRule::L_minus_d;
   IntRounding int_rounding = IntRounding::nearest;
-  int simpson_intervals = 20;      // paper method: composite Simpson intervals for eq. 8
+  int simpson_intervals = 20;      // paper method: intervals of the eq. 8 quadrature
   double length_tolerance = 0.05;  // paper method: stop when |L'/L - 1| <= this
   int max_iterations = 200;        // paper method: iteration cap
+  LengthQuadrature length_quadrature = LengthQuadrature::simpson;  // paper method: rule for eq. 8
+  // The calibrated variant of eq. 7: its stress ratio s enters as s^p. p = 1 is the paper's form
+  // (MODEL.md, consistency check; README, "Calibrating against measurements").
+  double stress_exponent_p = 1.0;
 
   bool operator==(const ModelSettings&) const = default;
 };
@@ -55,6 +64,7 @@ struct Parameters {
   Fabric fabric;
   Hanging hanging;
   ModelSettings model;
+  Shape shape;  // how the solution is laid out; never an input of the solver
 
   bool operator==(const Parameters&) const = default;
 };
@@ -81,9 +91,11 @@ std::string format_issues(const std::vector<ValidationIssue>& issues);
 std::string_view to_string(Method m);
 std::string_view to_string(SpanRule r);
 std::string_view to_string(IntRounding r);
+std::string_view to_string(LengthQuadrature q);
 // Parse the names above; return false (and leave `out` alone) for anything else.
 bool parse_method(std::string_view s, Method& out);
 bool parse_span_rule(std::string_view s, SpanRule& out);
 bool parse_int_rounding(std::string_view s, IntRounding& out);
+bool parse_length_quadrature(std::string_view s, LengthQuadrature& out);
 
 }  // namespace foldlab

@@ -1,0 +1,370 @@
+// `foldlab calibrate`: fits eq. 7's constants to measured n, z_max and Q (core/calibration.hpp)
+// and prints the fit beside its held-out figures, so that a user sees how much of it is real.
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <memory>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "cli/commands.hpp"
+#include "cli/inputs.hpp"
+#include "foldlab/calibration.hpp"
+#include "foldlab/io.hpp"
+#include "foldlab/measurements.hpp"
+#include "foldlab/preset.hpp"
+
+namespace foldlab::cli {
+namespace {
+
+using nlohmann::json;
+
+std::string format(const char* pattern, double value) {
+  char text[64];
+  std::snprintf(text, sizeof text, pattern, value);
+  return text;
+}
+
+// How many observed z_max and Q values a summary stands on: a summary of none reads 0 %, which
+// must print as "none observed" instead.
+struct Observed {
+  int z = 0;
+  int Q = 0;
+};
+
+Observed observed_in(const CalibrationReport& r, MeasurementRole role) {
+  Observed o;
+  for (const CalibrationRow& row : r.rows) {
+    if (row.measurement.role == role) {
+      o.z += row.measurement.observed.z_max_mm.has_value();
+      o.Q += row.measurement.observed.Q.has_value();
+    }
+  }
+  return o;
+}
+
+// "n exact 3/6, within ±1 5/6; |z_max error| median 8.0 %, max 74.2 %; |Q error| median ..."
+std::string summary_line(const ComparisonSummary& s, Observed observed = {1, 1}) {
+  std::string out = "n exact " + std::to_string(s.n_exact) + "/" + std::to_string(s.rows_with_n) +
+                    ", within ±1 " + std::to_string(s.n_within_one) + "/" +
+                    std::to_string(s.rows_with_n);
+  auto errors = [&out](const char* label, int count, double median, double max) {
+    out += std::string("; |") + label + " error| ";
+    out += count == 0 ? std::string("none observed")
+                      : "median " + format("%.1f", 100 * median) + " %, max " +
+                            format("%.1f", 100 * max) + " %";
+  };
+  errors("z_max", observed.z, s.median_abs_z_error, s.max_abs_z_error);
+  errors("Q", observed.Q, s.median_abs_Q_error, s.max_abs_Q_error);
+  return out;
+}
+
+// When the best score reaches the end of the p search range, the data do not bound p there.
+std::string edge_note(const FittedConstants& f, FitConstants fit) {
+  const CalibrationOptions defaults;
+  if (fit == FitConstants::K_and_p && (f.best_p_min <= defaults.p_min * (1 + 1e-9) ||
+                                       f.best_p_max >= defaults.p_max * (1 - 1e-9))) {
+    return " [the best score reaches the end of the p search range]";
+  }
+  return "";
+}
+
+std::string score_line(const CalibrationScore& s, int rows_with_n) {
+  return "n missed in " + std::to_string(s.n_missed) + " of " + std::to_string(rows_with_n) +
+         " rows (by more than one in " + std::to_string(s.n_missed_by_more_than_one) +
+         "), mean capped error " + format("%.2f", 100 * s.mean_relative_error) + " % over " +
+         std::to_string(s.error_terms) + " z_max and Q values";
+}
+
+std::string range(double lo, double hi, const char* pattern) {
+  return "[" + format(pattern, lo) + ", " + (std::isinf(hi) ? "inf" : format(pattern, hi)) + ")";
+}
+
+template <class T>
+std::string optional_cell(const std::optional<T>& v, const char* pattern) {
+  return v ? format(pattern, static_cast<double>(*v)) : "–";
+}
+
+// "7 | 43.4 (-9.6%) | 1.251 (-3.0%)"
+std::string model_cells(const PublishedComparison& c) {
+  auto with_error = [](double value, const std::optional<double>& error, const char* pattern) {
+    std::string out = format(pattern, value);
+    if (error) {
+      out += " (" + format("%+.1f", 100.0 * *error) + "%)";
+    }
+    return out;
+  };
+  return std::to_string(c.solution.n) + " | " + with_error(c.solution.z_max_mm, c.z_error, "%.1f") +
+         " | " + with_error(c.solution.Q, c.Q_error, "%.3f");
+}
+
+json summary_json(const ComparisonSummary& s) {
+  return {{"rows_with_n", s.rows_with_n},         {"n_exact", s.n_exact},
+          {"n_within_one", s.n_within_one},       {"median_abs_z_error", s.median_abs_z_error},
+          {"max_abs_z_error", s.max_abs_z_error}, {"median_abs_Q_error", s.median_abs_Q_error},
+          {"max_abs_Q_error", s.max_abs_Q_error}};
+}
+
+json number_or_null(double v) {
+  return std::isfinite(v) ? json(v) : json(nullptr);
+}
+
+json fit_json(const FittedConstants& f) {
+  return {
+      {"K", f.K},
+      {"p", f.p},
+      {"score",
+       {{"n_missed", f.score.n_missed},
+        {"n_missed_by_more_than_one", f.score.n_missed_by_more_than_one},
+        {"mean_relative_error", f.score.mean_relative_error},
+        {"error_terms", f.score.error_terms}}},
+      {"K_range_at_p", {f.K_low, number_or_null(f.K_high)}},
+      {"p_range_at_K", {f.p_low, f.p_high}},
+      {"equally_good_elsewhere", f.equally_good_elsewhere},
+      {"best_score_envelope",
+       {{"K", {f.best_K_min, number_or_null(f.best_K_max)}}, {"p", {f.best_p_min, f.best_p_max}}}}};
+}
+
+json comparison_json(const PublishedComparison& c) {
+  auto optional = [](const std::optional<double>& v) { return v ? json(*v) : json(nullptr); };
+  return {{"n", c.solution.n},
+          {"z_max_mm", c.solution.z_max_mm},
+          {"Q", c.solution.Q},
+          {"regime", to_string(c.solution.regime)},
+          {"z_error", optional(c.z_error)},
+          {"Q_error", optional(c.Q_error)}};
+}
+
+json report_json(const CalibrationReport& r, const std::string& data_path) {
+  json rows = json::array();
+  for (const CalibrationRow& row : r.rows) {
+    const Measurement& m = row.measurement;
+    json j = {{"name", m.name},
+              {"group", m.group},
+              {"role", to_string(m.role)},
+              {"observed",
+               {{"n", m.observed.n ? json(*m.observed.n) : json(nullptr)},
+                {"z_max_mm", m.observed.z_max_mm ? json(*m.observed.z_max_mm) : json(nullptr)},
+                {"Q", m.observed.Q ? json(*m.observed.Q) : json(nullptr)}}},
+              {"baseline", comparison_json(row.baseline)},
+              {"fitted", comparison_json(row.fitted)}};
+    if (row.held_out) {
+      j["held_out"] = comparison_json(*row.held_out);
+      j["held_out"]["K"] = row.held_out_K;
+      j["held_out"]["p"] = row.held_out_p;
+    }
+    rows.push_back(std::move(j));
+  }
+  json splits = json::array();
+  for (const GroupSplit& s : r.group_splits) {
+    splits.push_back({{"test_group", s.test_group},
+                      {"fit", fit_json(s.fit)},
+                      {"train", summary_json(s.train)},
+                      {"test", summary_json(s.test)}});
+  }
+  return {{"data", data_path},
+          {"fit", to_string(r.fit)},
+          {"method", to_string(r.base.model.method)},
+          {"base",
+           {{"K", stiffness_constant_K(r.base)},
+            {"p", r.base.model.stress_exponent_p},
+            {"load_constant_c", r.base.model.load_constant_c},
+            {"poisson_ratio", r.base.fabric.poisson_ratio},
+            {"form", describe_model_form(r.base)}}},
+          {"fitted", fit_json(r.fitted)},
+          {"fitted_load_constant_c",
+           with_constants(r.base, r.fitted.K, r.fitted.p).model.load_constant_c},
+          {"fit_rows", r.fit_row_count},
+          {"check_rows", r.check_row_count},
+          {"rows", rows},
+          {"totals",
+           {{"baseline_fit_rows", summary_json(r.baseline_fit_rows)},
+            {"baseline_check_rows", summary_json(r.baseline_check_rows)},
+            {"in_sample", summary_json(r.in_sample)},
+            {"leave_one_out", summary_json(r.leave_one_out)},
+            {"group_split_test", summary_json(r.group_split_test)},
+            {"check_rows", summary_json(r.check_rows)}}},
+          {"group_splits", splits}};
+}
+
+void print_report(const CalibrationReport& r, const std::string& data_path,
+                  const std::string& base_name) {
+  const FittedConstants& f = r.fitted;
+  std::cout << "FoldLab calibrate: " << data_path << " (" << r.fit_row_count << " fit row"
+            << (r.fit_row_count == 1 ? "" : "s") << ", " << r.check_row_count << " check row"
+            << (r.check_row_count == 1 ? "" : "s") << "), " << to_string(r.base.model.method)
+            << " method, fitting " << to_string(r.fit) << "\n";
+  std::cout << "Base: \"" << base_name << "\", " << describe_model_form(r.base) << "\n";
+  std::cout << "Loss (lexicographic): rows whose n is missed, then rows missed by more than one, "
+               "then the mean of min(|model/observed - 1|, 1) over every observed z_max and Q.\n\n";
+  const Parameters fitted = with_constants(r.base, f.K, f.p);
+  std::cout << "Fitted: K = " << format("%.4g", f.K) << ", p = " << format("%.4g", f.p)
+            << "  (c = " << format("%.4g", fitted.model.load_constant_c)
+            << " at nu = " << format("%.3g", r.base.fabric.poisson_ratio) << ")\n";
+  std::cout << "  score: " << score_line(f.score, r.in_sample.rows_with_n) << "\n";
+  std::cout << "  the score stays the same for K in " << range(f.K_low, f.K_high, "%.4g")
+            << " at p = " << format("%.4g", f.p);
+  if (r.fit == FitConstants::K_and_p) {
+    std::cout << ", and for p in [" << format("%.4g", f.p_low) << ", " << format("%.4g", f.p_high)
+              << "] at K = " << format("%.4g", f.K) << "\n";
+    std::cout << "  every point with this score lies in K "
+              << range(f.best_K_min, f.best_K_max, "%.4g") << ", p ["
+              << format("%.3g", f.best_p_min) << ", " << format("%.3g", f.best_p_max)
+              << "] (K and p trade off along a valley)" << edge_note(f, r.fit) << "\n";
+  } else {
+    std::cout << "\n";
+    if (f.equally_good_elsewhere > 0) {
+      std::cout << "  " << f.equally_good_elsewhere
+                << " other band(s) of K reach the same score, within K "
+                << range(f.best_K_min, f.best_K_max, "%.4g") << "; the widest is taken\n";
+    }
+  }
+  std::cout << "\n| row | observed n | z_max (mm) | Q | fitted n | z_max (mm) | Q | held-out n "
+               "| z_max (mm) | Q | held-out K | p |\n"
+               "|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+  for (const CalibrationRow& row : r.rows) {
+    const Measurement& m = row.measurement;
+    std::cout << "| " << (m.name.empty() ? "row " + std::to_string(m.row) : m.name)
+              << (m.role == MeasurementRole::check ? " (check)" : "") << " | "
+              << optional_cell(m.observed.n, "%.0f") << " | "
+              << optional_cell(m.observed.z_max_mm, "%g") << " | "
+              << optional_cell(m.observed.Q, "%.2f") << " | " << model_cells(row.fitted) << " | ";
+    if (row.held_out) {
+      std::cout << model_cells(*row.held_out) << " | " << format("%.4g", row.held_out_K) << " | "
+                << format("%.3g", row.held_out_p) << " |\n";
+    } else {
+      std::cout << "– | – | – | – | – |\n";
+    }
+  }
+  std::cout << "\nHeld out: fit rows by leave-one-out (each predicted by a fit on the others); "
+               "check rows by the in-sample fit, which never sees them.\n\n";
+  const Observed fit_rows = observed_in(r, MeasurementRole::fit);
+  const Observed check_rows = observed_in(r, MeasurementRole::check);
+  std::cout << "Totals\n";
+  std::cout << "  base constants, fit rows:           "
+            << summary_line(r.baseline_fit_rows, fit_rows) << "\n";
+  std::cout << "  in-sample fit, fit rows:            " << summary_line(r.in_sample, fit_rows)
+            << "\n";
+  if (r.fit_row_count >= 2) {
+    std::cout << "  leave-one-out, fit rows:            " << summary_line(r.leave_one_out, fit_rows)
+              << "\n";
+  }
+  if (!r.group_splits.empty()) {
+    std::cout << "  fit on other groups, test rows:     "
+              << summary_line(r.group_split_test, fit_rows) << "\n";
+    for (const GroupSplit& s : r.group_splits) {
+      Observed in_group;
+      for (const CalibrationRow& row : r.rows) {
+        if (row.measurement.role == MeasurementRole::fit && row.measurement.group == s.test_group) {
+          in_group.z += row.measurement.observed.z_max_mm.has_value();
+          in_group.Q += row.measurement.observed.Q.has_value();
+        }
+      }
+      std::cout << "    test " << (s.test_group.empty() ? "(no group)" : s.test_group)
+                << " (fit on the rest: K = " << format("%.4g", s.fit.K)
+                << ", p = " << format("%.3g", s.fit.p) << edge_note(s.fit, r.fit)
+                << "): " << summary_line(s.test, in_group) << "\n";
+    }
+  }
+  if (r.check_row_count > 0) {
+    std::cout << "  base constants, check rows:         "
+              << summary_line(r.baseline_check_rows, check_rows) << "\n";
+    std::cout << "  fitted constants, check rows:       " << summary_line(r.check_rows, check_rows)
+              << "\n";
+  }
+}
+
+}  // namespace
+
+Command add_calibrate_command(CLI::App& app) {
+  struct Options {
+    std::string data_path;
+    std::string fit = "K";
+    InputOptions inputs;
+    std::string save_preset_path;
+    bool json = false;
+    bool no_held_out = false;
+  };
+  auto options = std::make_shared<Options>();
+  CLI::App* command = app.add_subcommand(
+      "calibrate",
+      "fit eq. 7's constants (K, or K and the exponent p) to measured n, z_max and Q, with "
+      "leave-one-out and group-split figures beside the in-sample ones");
+  command
+      ->add_option("--data", options->data_path,
+                   "measurements, CSV or JSON (e.g. data/paper-measurements.csv)")
+      ->required();
+  command
+      ->add_option("--fit", options->fit,
+                   "K: fit K = c/(1-nu²) alone (p as the base has it); K,p: K and the exponent p "
+                   "of s -> s^p in eq. 7")
+      ->check(CLI::IsMember({"K", "K,p"}));
+  command->add_option("--method", options->inputs.method, "solution method (default: the base's)")
+      ->check(CLI::IsMember({"paper", "exact"}));
+  command->add_option("--preset", options->inputs.preset_path,
+                      "base preset: its model settings are used for every row, and --save-preset "
+                      "starts from it (default: the built-in preset)");
+  command
+      ->add_option("--set", options->inputs.assignments,
+                   "override a base setting, KEY=VALUE (e.g. span_rule=L-2d)")
+      ->type_name("KEY=VALUE");
+  command->add_option("--save-preset", options->save_preset_path,
+                      "write the base preset with the fitted constants (model.load_constant_c, "
+                      "model.stress_exponent_p)");
+  command->add_flag("--json", options->json, "print JSON instead of tables");
+  command->add_flag("--no-held-out", options->no_held_out,
+                    "skip leave-one-out and group splits (the in-sample fit only)");
+  return [options] {
+    try {
+      const Preset base = resolve_inputs(options->inputs);
+      MeasurementSet data;
+      try {
+        data = load_measurements(options->data_path);
+      } catch (const MeasurementError& e) {
+        throw InputError(e.what());
+      }
+      CalibrationOptions calibration;
+      parse_fit_constants(options->fit, calibration.fit);
+      calibration.held_out = !options->no_held_out;
+      CalibrationReport report;
+      try {
+        report = calibrate(data, base.parameters, calibration);
+      } catch (const CalibrationError& e) {
+        throw InputError(e.what());
+      }
+      if (options->json) {
+        std::cout << report_json(report, options->data_path).dump(2) << "\n";
+      } else {
+        print_report(report, options->data_path, base.name);
+      }
+      if (!options->save_preset_path.empty()) {
+        Preset out = base;
+        const FittedConstants& f = report.fitted;
+        out.parameters = with_constants(base.parameters, f.K, f.p);
+        out.name = base.name + " (calibrated: K = " + format("%.4g", f.K) +
+                   ", p = " + format("%.4g", f.p) + ")";
+        out.description = "Eq. 7's constants fitted by foldlab calibrate --fit " +
+                          std::string(to_string(report.fit)) + " on " + options->data_path + " (" +
+                          std::string(to_string(base.parameters.model.method)) +
+                          " method): in-sample " + summary_line(report.in_sample) +
+                          "; leave-one-out " + summary_line(report.leave_one_out) + ".";
+        save_preset(out, options->save_preset_path);
+        std::cerr << "foldlab: wrote " << options->save_preset_path << "\n";
+      }
+      return kExitOk;
+    } catch (const InputError& e) {
+      std::cerr << "foldlab: invalid input:\n" << e.what() << "\n";
+      return kExitInvalidInput;
+    } catch (const PresetError& e) {
+      std::cerr << "foldlab: " << e.what() << "\n";
+      return kExitInternal;
+    } catch (const std::exception& e) {
+      std::cerr << "foldlab: internal error: " << e.what() << "\n";
+      return kExitInternal;
+    }
+  };
+}
+
+}  // namespace foldlab::cli

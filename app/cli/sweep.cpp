@@ -1,0 +1,64 @@
+#include <cstdio>
+#include <iostream>
+#include <memory>
+
+#include "cli/commands.hpp"
+#include "cli/inputs.hpp"
+#include "foldlab/sweep.hpp"
+
+namespace foldlab::cli {
+
+Command add_sweep_command(CLI::App& app) {
+  struct Options {
+    InputOptions inputs;
+    SweepAxis axis;
+    bool csv = false;
+    bool log = false;
+    bool linear = false;
+  };
+  auto options = std::make_shared<Options>();
+  options->axis.steps = 50;
+  CLI::App* command = app.add_subcommand(
+      "sweep", "solve over a range of one input and print n, Q and z_max for each value");
+  add_input_options(*command, options->inputs);
+  command->add_option("--param", options->axis.key, "the input to sweep: t, E, w, h, L, d, K, nu")
+      ->required();
+  command->add_option("--from", options->axis.from, "first value (its unit: mm, MPa, N/mm²)")
+      ->required();
+  command->add_option("--to", options->axis.to, "last value")->required();
+  command->add_option("--steps", options->axis.steps, "number of values (default 50)");
+  command->add_flag("--log", options->log, "logarithmic spacing (default for t, E, w, K)");
+  command->add_flag("--linear", options->linear, "linear spacing (default for h, L, d, nu)");
+  command->add_flag("--csv", options->csv, "CSV instead of a table");
+  return [options] {
+    return guarded([&] {
+      SweepAxis axis = options->axis;
+      if (options->log && options->linear) {
+        throw InputError("--log and --linear exclude each other");
+      }
+      axis.logarithmic = options->log || (!options->linear && natural_log_scale(axis.key));
+      if (auto problem = check_axis(axis)) {
+        throw InputError(*problem);
+      }
+      const Preset preset = resolve_inputs(options->inputs);
+      const std::vector<SweepPoint> points = sweep(preset.parameters, axis);
+      if (options->csv) {
+        std::printf("%s,n,Q,z_max_mm,regime\n", axis.key.c_str());
+      } else {
+        std::printf("%14s %6s %10s %12s  %s\n", axis.key.c_str(), "n", "Q", "z_max (mm)", "regime");
+      }
+      for (const SweepPoint& p : points) {
+        const std::string regime = p.valid ? std::string(to_string(p.regime)) : "invalid";
+        if (options->csv) {
+          std::printf("%.9g,%d,%.9g,%.9g,%s\n", p.value, p.n, p.Q, p.z_max_mm, regime.c_str());
+        } else {
+          std::printf("%14.6g %6d %10.4f %12.2f  %s\n", p.value, p.n, p.Q, p.z_max_mm,
+                      regime.c_str());
+        }
+      }
+      return kExitOk;
+    });
+  };
+}
+
+}  // namespace foldlab::cli

@@ -1,0 +1,386 @@
+#include "gui/calibration_panel.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <set>
+
+#include <imgui.h>
+
+#include "cli/presets_dir.hpp"
+#include "gui/fast_fill.hpp"
+
+namespace foldlab::gui {
+namespace {
+
+const ImVec4 kErrorText(1.0f, 0.45f, 0.40f, 1.0f);
+const ImVec4 kOkText(0.55f, 0.85f, 0.55f, 1.0f);
+const ImVec4 kNoteText(1.0f, 0.78f, 0.35f, 1.0f);
+const ImVec4 kDimText(0.65f, 0.65f, 0.70f, 1.0f);
+const ImVec4 kHeading(0.55f, 0.75f, 1.0f, 1.0f);
+
+// The paper's Tables 1-2 and Fig. 4 as shipped (data/ beside presets/), when they can be found.
+std::filesystem::path default_data_file() {
+  std::filesystem::path presets = cli::find_presets_dir();
+  if (presets.empty()) {
+    return {};
+  }
+  if (!presets.has_filename()) {
+    presets = presets.parent_path();  // "…/presets/" names the folder itself
+  }
+  const std::filesystem::path file = presets.parent_path() / "data" / "paper-measurements.csv";
+  std::error_code error;
+  return std::filesystem::is_regular_file(file, error) ? file : std::filesystem::path();
+}
+
+void section(const char* title) {
+  ImGui::Spacing();
+  ImGui::TextColored(kHeading, "%s", title);
+  ImGui::Separator();
+}
+
+std::string format(const char* pattern, double value) {
+  char text[64];
+  std::snprintf(text, sizeof text, pattern, value);
+  return text;
+}
+
+// The tag beside the button, coloured by whether eq. 7 is the paper's: the longest wording that
+// fits the space left on the line (the Presets panel is narrow at small window sizes).
+void form_tag(const Parameters& p) {
+  const ModelForm form = model_form(p.model);
+  char calibrated[48];
+  std::snprintf(calibrated, sizeof calibrated, "eq. 7: calibrated, p = %.3g",
+                p.model.stress_exponent_p);
+  const char* long_text = form == ModelForm::paper           ? "eq. 7: paper's form"
+                          : form == ModelForm::paper_other_c ? "eq. 7: paper's, own c"
+                                                             : calibrated;
+  const char* short_text = form == ModelForm::paper           ? "paper's"
+                           : form == ModelForm::paper_other_c ? "own c"
+                                                              : "calibrated";
+  const float available = ImGui::GetContentRegionAvail().x;
+  const char* text = ImGui::CalcTextSize(long_text).x <= available ? long_text : short_text;
+  ImGui::TextColored(form == ModelForm::paper ? kOkText : kNoteText, "%s", text);
+}
+
+// A row of the totals table: how often n is right and how far z_max and Q land.
+void totals_row(const char* label, const ComparisonSummary& s, bool has_z, bool has_Q) {
+  ImGui::TableNextRow();
+  ImGui::TableSetColumnIndex(0);
+  ImGui::TextUnformatted(label);
+  ImGui::TableSetColumnIndex(1);
+  ImGui::Text("%d / %d", s.n_exact, s.rows_with_n);
+  ImGui::TableSetColumnIndex(2);
+  ImGui::Text("%d / %d", s.n_within_one, s.rows_with_n);
+  auto percent = [](int column, bool present, double value) {
+    ImGui::TableSetColumnIndex(column);
+    if (present) {
+      ImGui::Text("%.1f %%", 100.0 * value);
+    } else {
+      ImGui::TextDisabled("-");
+    }
+  };
+  percent(3, has_z, s.median_abs_z_error);
+  percent(4, has_z, s.max_abs_z_error);
+  percent(5, has_Q, s.median_abs_Q_error);
+  percent(6, has_Q, s.max_abs_Q_error);
+}
+
+// n, z_max and Q of one model prediction, with their errors against the observation.
+void prediction_cells(int first_column, const PublishedComparison& c) {
+  ImGui::TableSetColumnIndex(first_column);
+  ImGui::Text("%d", c.solution.n);
+  ImGui::TableSetColumnIndex(first_column + 1);
+  if (c.z_error) {
+    ImGui::Text("%.1f (%+.0f%%)", c.solution.z_max_mm, 100.0 * *c.z_error);
+  } else {
+    ImGui::Text("%.1f", c.solution.z_max_mm);
+  }
+  ImGui::TableSetColumnIndex(first_column + 2);
+  if (c.Q_error) {
+    ImGui::Text("%.3f (%+.0f%%)", c.solution.Q, 100.0 * *c.Q_error);
+  } else {
+    ImGui::Text("%.3f", c.solution.Q);
+  }
+}
+
+}  // namespace
+
+CalibrationPanel::CalibrationPanel() {
+  const std::string path = default_data_file().string();
+  std::snprintf(data_path_, sizeof data_path_, "%s", path.c_str());
+}
+
+CalibrationPanel::~CalibrationPanel() {
+  cancel_requested_ = true;
+  if (worker_.joinable()) {
+    worker_.join();
+  }
+}
+
+void CalibrationPanel::open_button(const Parameters& current) {
+  if (ImGui::SmallButton("Fit to measurements...")) {
+    open_ = true;
+    focus_on_open_ = true;
+  }
+  if (ImGui::IsItemHovered()) {
+    ImGui::SetTooltip("Fit eq. 7's K (and p) to measured n, z_max and Q.\nNow: %s",
+                      describe_model_form(current).c_str());
+  }
+  ImGui::SameLine();
+  form_tag(current);
+}
+
+void CalibrationPanel::load_data() {
+  data_.reset();
+  try {
+    MeasurementSet set = load_measurements(data_path_);
+    int fit = 0;
+    std::set<std::string> groups;
+    for (const Measurement& m : set.rows) {
+      if (m.role == MeasurementRole::fit) {
+        ++fit;
+        groups.insert(m.group.empty() ? "(none)" : m.group);
+      }
+    }
+    std::string group_list;
+    for (const std::string& g : groups) {
+      group_list += (group_list.empty() ? "" : ", ") + g;
+    }
+    data_message_ = std::to_string(set.rows.size()) + " rows: " + std::to_string(fit) +
+                    " to fit (groups " + group_list + "), " +
+                    std::to_string(set.rows.size() - static_cast<std::size_t>(fit)) +
+                    " check rows (never fitted).";
+    data_message_is_error_ = false;
+    data_ = std::move(set);
+  } catch (const MeasurementError& e) {
+    data_message_ = std::string("Not loaded:\n") + e.what();
+    data_message_is_error_ = true;
+  }
+}
+
+void CalibrationPanel::start(const Parameters& base) {
+  CalibrationOptions options;
+  options.fit = fit_choice_ == 0 ? FitConstants::K : FitConstants::K_and_p;
+  cancel_requested_ = false;
+  progress_ = 0.0;
+  running_ = true;
+  run_message_.clear();
+  worker_ = std::thread([this, data = *data_, base, options] {
+    std::optional<CalibrationReport> report;
+    std::string error;
+    try {
+      report = calibrate(data, base, options, [this](double fraction) {
+        progress_ = fraction;
+        return !cancel_requested_.load();
+      });
+    } catch (const std::exception& e) {
+      error = e.what();
+    }
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      finished_report_ = std::move(report);
+      finished_error_ = std::move(error);
+    }
+    running_ = false;
+  });
+}
+
+void CalibrationPanel::collect_finished_run() {
+  if (running_ || !worker_.joinable()) {
+    return;
+  }
+  worker_.join();
+  std::lock_guard<std::mutex> lock(mutex_);
+  if (!finished_error_.empty()) {
+    run_message_ = "The fit did not run: " + finished_error_;
+    run_message_is_error_ = true;
+  } else if (finished_report_ && finished_report_->cancelled) {
+    run_message_ = "Cancelled; the previous result (if any) is kept.";
+    run_message_is_error_ = false;
+  } else if (finished_report_) {
+    report_ = std::move(finished_report_);
+    run_message_.clear();
+  }
+  finished_report_.reset();
+  finished_error_.clear();
+}
+
+bool CalibrationPanel::draw(Parameters& edited, const Preset& loaded) {
+  collect_finished_run();
+  if (!open_) {
+    return false;
+  }
+  // A floating window over the tiled panels: it opens on demand from the Presets panel.
+  const ImVec2 display = ImGui::GetIO().DisplaySize;
+  ImGui::SetNextWindowPos(ImVec2(0.14f * display.x, 0.06f * display.y), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowSize(ImVec2(0.72f * display.x, 0.88f * display.y), ImGuiCond_FirstUseEver);
+  if (focus_on_open_) {
+    ImGui::SetNextWindowFocus();
+    focus_on_open_ = false;
+  }
+  bool changed = false;
+  if (ImGui::Begin("Fit to measurements", &open_)) {
+    fill_current_window_background();  // the style's window background is transparent
+    section("The model's constants");
+    ImGui::TextColored(kDimText, "now:");
+    ImGui::SameLine();
+    ImGui::TextWrapped("%s", describe_model_form(edited).c_str());
+    ImGui::TextColored(kDimText, "preset \"%s\" carries:", loaded.name.c_str());
+    ImGui::SameLine();
+    ImGui::TextWrapped("%s", describe_model_form(loaded.parameters).c_str());
+
+    section("Measurements");
+    if (!data_ && !data_message_is_error_ && data_message_.empty() && data_path_[0] != '\0') {
+      load_data();  // the shipped paper data, on first opening
+    }
+    ImGui::SetNextItemWidth(-ImGui::CalcTextSize("Load").x -
+                            3.0f * ImGui::GetStyle().ItemSpacing.x);
+    ImGui::InputTextWithHint("##data", "measurements file, CSV or JSON", data_path_,
+                             sizeof data_path_);
+    ImGui::SameLine();
+    if (ImGui::Button("Load")) {
+      load_data();
+    }
+    if (!data_message_.empty()) {
+      ImGui::PushStyleColor(ImGuiCol_Text, data_message_is_error_ ? kErrorText : kDimText);
+      ImGui::TextWrapped("%s", data_message_.c_str());
+      ImGui::PopStyleColor();
+    }
+
+    section("Fit");
+    ImGui::RadioButton("K alone (p as now)", &fit_choice_, 0);
+    ImGui::SameLine();
+    ImGui::RadioButton("K and p (s -> s^p)", &fit_choice_, 1);
+    ImGui::TextColored(
+        kDimText,
+        "Every row is solved with the current model settings: %s method, l = %s, Int = %s.",
+        std::string(to_string(edited.model.method)).c_str(),
+        std::string(to_string(edited.model.span_rule)).c_str(),
+        std::string(to_string(edited.model.int_rounding)).c_str());
+    const bool valid = validate(edited).empty();
+    if (running_) {
+      ImGui::ProgressBar(static_cast<float>(progress_.load()), ImVec2(-90.0f, 0.0f));
+      ImGui::SameLine();
+      if (ImGui::Button("Cancel")) {
+        cancel_requested_ = true;
+      }
+    } else {
+      ImGui::BeginDisabled(!data_ || !valid);
+      if (ImGui::Button("Run the fit")) {
+        start(edited);
+      }
+      ImGui::EndDisabled();
+      if (!valid) {
+        ImGui::SameLine();
+        ImGui::TextColored(kErrorText, "the current parameters are not valid");
+      }
+    }
+    if (!run_message_.empty()) {
+      ImGui::PushStyleColor(ImGuiCol_Text, run_message_is_error_ ? kErrorText : kNoteText);
+      ImGui::TextWrapped("%s", run_message_.c_str());
+      ImGui::PopStyleColor();
+    }
+    if (report_) {
+      changed = apply_section(edited);
+      results_section();
+    }
+  }
+  ImGui::End();
+  return changed;
+}
+
+bool CalibrationPanel::apply_section(Parameters& edited) {
+  const FittedConstants& f = report_->fitted;
+  const std::string label = "Apply K = " + format("%.4g", f.K) + ", p = " + format("%.4g", f.p) +
+                            " to the current parameters";
+  bool changed = false;
+  if (ImGui::Button(label.c_str())) {
+    edited = with_constants(edited, f.K, f.p);
+    changed = true;
+  }
+  if (ImGui::IsItemHovered()) {
+    ImGui::SetTooltip(
+        "Sets c = K (1 - nu²) at the current nu, and p. Save a preset to keep them.\nThe "
+        "paper's form is p = 1, c = 26.9.");
+  }
+  return changed;
+}
+
+void CalibrationPanel::results_section() {
+  const CalibrationReport& r = *report_;
+  const FittedConstants& f = r.fitted;
+  section("Result");
+  ImGui::Text("Fitted (%s, %s method): K = %.4g, p = %.4g   (c = %.4g at nu = %.3g)",
+              std::string(to_string(r.fit)).c_str(),
+              std::string(to_string(r.base.model.method)).c_str(), f.K, f.p,
+              with_constants(r.base, f.K, f.p).model.load_constant_c, r.base.fabric.poisson_ratio);
+  const std::string K_high = std::isinf(f.K_high) ? "inf" : format("%.4g", f.K_high);
+  ImGui::TextWrapped(
+      "The score stays the same for K in [%.4g, %s) at this p, and for p in [%.4g, %.4g] at this "
+      "K: n misses %d (by more than one %d), mean capped error %.1f %%.",
+      f.K_low, K_high.c_str(), f.p_low, f.p_high, f.score.n_missed,
+      f.score.n_missed_by_more_than_one, 100.0 * f.score.mean_relative_error);
+
+  bool fit_z = false, fit_Q = false, check_z = false, check_Q = false;
+  for (const CalibrationRow& row : r.rows) {
+    const bool fit = row.measurement.role == MeasurementRole::fit;
+    (fit ? fit_z : check_z) |= row.measurement.observed.z_max_mm.has_value();
+    (fit ? fit_Q : check_Q) |= row.measurement.observed.Q.has_value();
+  }
+  const ImGuiTableFlags flags =
+      ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit;
+  if (ImGui::BeginTable("totals", 7, flags)) {
+    for (const char* heading :
+         {"", "n exact", "n ±1", "z_max median", "z_max max", "Q median", "Q max"}) {
+      ImGui::TableSetupColumn(heading);
+    }
+    ImGui::TableHeadersRow();
+    totals_row("base constants (no fit)", r.baseline_fit_rows, fit_z, fit_Q);
+    totals_row("in-sample fit", r.in_sample, fit_z, fit_Q);
+    if (r.fit_row_count >= 2) {
+      totals_row("held out: leave-one-out", r.leave_one_out, fit_z, fit_Q);
+    }
+    if (!r.group_splits.empty()) {
+      totals_row("held out: fit on the other groups", r.group_split_test, fit_z, fit_Q);
+    }
+    if (r.check_row_count > 0) {
+      totals_row("check rows (never fitted)", r.check_rows, check_z, check_Q);
+    }
+    ImGui::EndTable();
+  }
+  ImGui::TextColored(kDimText,
+                     "Fit rows. Held out: each row predicted by a fit that never saw it. If the "
+                     "held-out rows are much worse than in-sample, the fit is mostly noise.");
+
+  if (ImGui::BeginTable("rows", 10, flags | ImGuiTableFlags_ScrollY)) {
+    ImGui::TableSetupScrollFreeze(1, 1);
+    for (const char* heading : {"row", "n", "z_max", "Q", "fitted n", "z_max (mm)", "Q",
+                                "held-out n", "z_max (mm)", "Q"}) {
+      ImGui::TableSetupColumn(heading);
+    }
+    ImGui::TableHeadersRow();
+    for (const CalibrationRow& row : r.rows) {
+      const Measurement& m = row.measurement;
+      ImGui::TableNextRow();
+      ImGui::TableSetColumnIndex(0);
+      ImGui::Text("%s%s",
+                  m.name.empty() ? ("row " + std::to_string(m.row)).c_str() : m.name.c_str(),
+                  m.role == MeasurementRole::check ? " (check)" : "");
+      ImGui::TableSetColumnIndex(1);
+      m.observed.n ? ImGui::Text("%d", *m.observed.n) : ImGui::TextDisabled("-");
+      ImGui::TableSetColumnIndex(2);
+      m.observed.z_max_mm ? ImGui::Text("%g", *m.observed.z_max_mm) : ImGui::TextDisabled("-");
+      ImGui::TableSetColumnIndex(3);
+      m.observed.Q ? ImGui::Text("%.2f", *m.observed.Q) : ImGui::TextDisabled("-");
+      prediction_cells(4, row.fitted);
+      if (row.held_out) {
+        prediction_cells(7, *row.held_out);
+      }
+    }
+    ImGui::EndTable();
+  }
+}
+
+}  // namespace foldlab::gui

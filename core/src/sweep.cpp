@@ -1,0 +1,129 @@
+#include "foldlab/sweep.hpp"
+
+#include <cmath>
+
+#include "foldlab/settings.hpp"
+
+namespace foldlab {
+
+double SweepAxis::value(int i) const {
+  const double f = steps > 1 ? static_cast<double>(i) / (steps - 1) : 0.0;
+  return logarithmic ? from * std::pow(to / from, f) : from + (to - from) * f;
+}
+
+const std::vector<std::string>& sweepable_keys() {
+  static const std::vector<std::string> keys = {"t", "E", "w", "h", "L", "d", "K", "nu"};
+  return keys;
+}
+
+bool natural_log_scale(const std::string& key) {
+  return key == "t" || key == "E" || key == "w" || key == "K";
+}
+
+bool set_number(Parameters& p, const std::string& key, double value) {
+  if (key == "t") {
+    p.fabric.thickness_mm = value;
+  } else if (key == "E") {
+    p.fabric.youngs_modulus_MPa = value;
+  } else if (key == "w") {
+    p.fabric.weight_N_per_mm2 = value;
+  } else if (key == "nu") {
+    p.fabric.poisson_ratio = value;
+  } else if (key == "h") {
+    p.hanging.height_mm = value;
+  } else if (key == "L") {
+    p.hanging.length_mm = value;
+  } else if (key == "d") {
+    p.hanging.support_displacement_mm = value;
+  } else if (key == "K") {
+    set_stiffness_constant_K(p, value);
+  } else {
+    return false;
+  }
+  return true;
+}
+
+double get_number(const Parameters& p, const std::string& key) {
+  if (key == "t")
+    return p.fabric.thickness_mm;
+  if (key == "E")
+    return p.fabric.youngs_modulus_MPa;
+  if (key == "w")
+    return p.fabric.weight_N_per_mm2;
+  if (key == "nu")
+    return p.fabric.poisson_ratio;
+  if (key == "h")
+    return p.hanging.height_mm;
+  if (key == "L")
+    return p.hanging.length_mm;
+  if (key == "d")
+    return p.hanging.support_displacement_mm;
+  if (key == "K")
+    return stiffness_constant_K(p);
+  return 0.0;
+}
+
+std::optional<std::string> check_axis(const SweepAxis& axis) {
+  Parameters probe;
+  if (!set_number(probe, axis.key, 1.0)) {
+    std::string known;
+    for (const std::string& k : sweepable_keys()) {
+      known += (known.empty() ? "" : ", ") + k;
+    }
+    return "'" + axis.key + "' cannot be swept (one of: " + known + ")";
+  }
+  if (!std::isfinite(axis.from) || !std::isfinite(axis.to)) {
+    return "the range of " + axis.key + " must be finite";
+  }
+  if (axis.steps < 2 || axis.steps > 100000) {
+    return "steps = " + std::to_string(axis.steps) + " must be in [2, 100000]";
+  }
+  if (axis.logarithmic && !(axis.from > 0.0 && axis.to > 0.0)) {
+    return "a logarithmic range of " + axis.key + " needs positive ends";
+  }
+  return std::nullopt;
+}
+
+std::vector<SweepPoint> sweep(const Parameters& base, const SweepAxis& axis) {
+  std::vector<SweepPoint> points(static_cast<std::size_t>(std::max(axis.steps, 0)));
+  Parameters p = base;
+  for (int i = 0; i < axis.steps; ++i) {
+    SweepPoint& point = points[static_cast<std::size_t>(i)];
+    point.value = axis.value(i);
+    set_number(p, axis.key, point.value);
+    if (!validate(p).empty()) {
+      continue;
+    }
+    const Solution s = solve(p);
+    point.valid = true;
+    point.n = s.n;
+    point.Q = s.Q;
+    point.z_max_mm = s.z_max_mm;
+    point.regime = s.regime;
+  }
+  return points;
+}
+
+void map_rows(const Parameters& base, const SweepAxis& x, const SweepAxis& y, int row_begin,
+              int row_end, std::span<MapCell> out) {
+  Parameters p = base;
+  std::size_t k = 0;
+  for (int j = row_begin; j < row_end; ++j) {
+    set_number(p, y.key, y.value(j));
+    for (int i = 0; i < x.steps && k < out.size(); ++i, ++k) {
+      set_number(p, x.key, x.value(i));
+      MapCell& cell = out[k];
+      cell = MapCell{};
+      if (!validate(p).empty()) {
+        continue;
+      }
+      const Solution s = solve(p);
+      cell.valid = true;
+      cell.n = s.n;
+      cell.z_max_mm = static_cast<float>(s.z_max_mm);
+      cell.regime = s.regime;
+    }
+  }
+}
+
+}  // namespace foldlab
