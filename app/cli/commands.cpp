@@ -12,6 +12,7 @@
 #include "foldlab/comparison.hpp"
 #include "foldlab/export.hpp"
 #include "foldlab/geometry.hpp"
+#include "foldlab/gltf_export.hpp"
 #include "foldlab/io.hpp"
 #include "foldlab/report.hpp"
 #include "foldlab/scene.hpp"
@@ -60,6 +61,7 @@ Command add_export_command(CLI::App& app) {
   struct Options {
     InputOptions inputs;
     std::string obj_path;
+    std::string glb_path;
     std::string csv_path;
     std::string svg_path;
     std::string grid = "128x128";
@@ -67,10 +69,11 @@ Command add_export_command(CLI::App& app) {
     bool stats = false;
   };
   auto options = std::make_shared<Options>();
-  CLI::App* command =
-      app.add_subcommand("export", "write the deformed mesh (OBJ) and the fold lines (CSV, SVG)");
+  CLI::App* command = app.add_subcommand(
+      "export", "write the deformed mesh (OBJ, glTF) and the fold lines (CSV, SVG)");
   add_input_options(*command, options->inputs);
   command->add_option("--obj", options->obj_path, "deformed mesh, Wavefront OBJ");
+  command->add_option("--glb", options->glb_path, "deformed mesh, binary glTF (metres, +Y up)");
   command->add_option("--csv", options->csv_path, "fold lines as CSV");
   command->add_option("--svg", options->svg_path, "fold lines as an SVG drawing");
   command->add_option("--grid", options->grid, "mesh resolution NXxNY (default 128x128)");
@@ -80,8 +83,10 @@ Command add_export_command(CLI::App& app) {
                     "print the pipeline's per-stage counters as JSON on stdout");
   return [options] {
     return guarded([&] {
-      if (options->obj_path.empty() && options->csv_path.empty() && options->svg_path.empty()) {
-        throw InputError("export needs at least one of --obj FILE, --csv FILE, --svg FILE");
+      if (options->obj_path.empty() && options->glb_path.empty() && options->csv_path.empty() &&
+          options->svg_path.empty()) {
+        throw InputError(
+            "export needs at least one of --obj FILE, --glb FILE, --csv FILE, --svg FILE");
       }
       std::smatch match;
       static const std::regex grid_pattern(R"((\d{1,5})x(\d{1,5}))");
@@ -104,6 +109,10 @@ Command add_export_command(CLI::App& app) {
       if (!options->obj_path.empty()) {
         scene.normals();
         write_file_atomically(options->obj_path, mesh_to_obj(scene.grid(), preset.name));
+      }
+      if (!options->glb_path.empty()) {
+        scene.normals();
+        write_file_atomically(options->glb_path, mesh_to_glb(scene.grid(), preset.name));
       }
       if (!options->csv_path.empty()) {
         write_file_atomically(options->csv_path, fold_lines_to_csv(scene.fold_lines()));

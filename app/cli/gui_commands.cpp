@@ -30,6 +30,11 @@ struct GuiCommandOptions {
 void add_common_gui_options(CLI::App& command, GuiCommandOptions& options) {
   add_input_options(command, options.run.inputs);
   command.add_option("--size", options.size, "window or picture size WxH (default 1280x800)");
+  command
+      .add_option("--view", options.run.view_settings,
+                  "3D view setting KEY=VALUE: print=plain|checks|stripes, breeze=0|1, "
+                  "breeze_mm, time (s), z (exaggeration), wireframe, fold_lines, ground")
+      ->type_name("KEY=VALUE");
   command.add_option("--tab", options.run.analysis_tab, "analysis tab shown at start")
       ->check(CLI::IsMember({"equations", "sweep", "map"}));
 }

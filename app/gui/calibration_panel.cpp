@@ -148,10 +148,11 @@ void CalibrationPanel::load_data() {
     for (const std::string& g : groups) {
       group_list += (group_list.empty() ? "" : ", ") + g;
     }
-    data_message_ = std::to_string(set.rows.size()) + " rows: " + std::to_string(fit) +
-                    " to fit (groups " + group_list + "), " +
-                    std::to_string(set.rows.size() - static_cast<std::size_t>(fit)) +
-                    " check rows (never fitted).";
+    data_message_ =
+        std::to_string(set.rows.size()) + " rows: " + std::to_string(fit) + " to fit (groups " +
+        group_list + "), " + std::to_string(set.rows.size() - static_cast<std::size_t>(fit)) +
+        (set.rows.size() - static_cast<std::size_t>(fit) == 1 ? " check row" : " check rows") +
+        " (never fitted).";
     data_message_is_error_ = false;
     data_ = std::move(set);
   } catch (const MeasurementError& e) {

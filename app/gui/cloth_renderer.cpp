@@ -20,30 +20,67 @@ Eigen::Vector3f normal_to_world(const Eigen::Vector3f& normal, float z_scale) {
   return Eigen::Vector3f(normal.x(), -normal.y(), normal.z() / z_scale).normalized();
 }
 
-constexpr const char* kMeshVertex = R"(#version 330 core
+// foldlab::breeze_offset (core/src/geometry.cpp) on the GPU, in world coordinates (y up): both
+// vertex shaders prepend it so that the fold lines move with the cloth.
+constexpr const char* kBreezeGlsl = R"(#version 330 core
+uniform float breeze_amplitude_mm;
+uniform float breeze_depth_mm;
+uniform float time_s;
+uniform float z_scale;
+vec3 breeze(vec3 world) {
+  const float omega = 2.0 * 3.14159265 * 0.4;
+  float down = max(0.0, -world.y) / max(breeze_depth_mm, 1.0);
+  float weight = breeze_amplitude_mm * down * down;
+  return vec3(0.25 * weight * sin(0.7 * omega * time_s + 1.3), 0.0,
+              z_scale * weight * sin(omega * time_s - 2.5 * 3.14159265 * down));
+}
+)";
+
+constexpr const char* kMeshVertex = R"(
 layout(location = 0) in vec3 position;
 layout(location = 1) in vec3 normal;
+layout(location = 2) in vec2 material;
 uniform mat4 view_projection;
 out vec3 world_normal;
 out vec3 world_position;
+out vec2 material_mm;
 void main() {
   world_normal = normal;
-  world_position = position;
-  gl_Position = view_projection * vec4(position, 1.0);
+  world_position = position + breeze(position);
+  material_mm = material;
+  gl_Position = view_projection * vec4(world_position, 1.0);
 }
 )";
 
 // Cloth has two faces: the back face is lit with the flipped normal and has its own colour.
+// A print follows the material coordinates (X, Y on the flat cloth, mm), so it folds with it.
 constexpr const char* kMeshFragment = R"(#version 330 core
 in vec3 world_normal;
 in vec3 world_position;
+in vec2 material_mm;
 uniform vec3 eye;
 uniform vec3 front_colour;
 uniform vec3 back_colour;
+uniform int print_kind;  // 0 plain, 1 woven checks, 2 stripes
+uniform float print_mm;
 out vec4 colour;
+vec3 print(vec3 base) {
+  if (print_kind == 1) {
+    vec2 cell = floor(material_mm / print_mm);
+    float dark = mod(cell.x + cell.y, 2.0);
+    vec2 thread = abs(fract(material_mm / (print_mm / 8.0)) - 0.5);
+    float weave = 0.92 + 0.08 * step(0.35, max(thread.x, thread.y));
+    return base * mix(1.0, 0.62, dark) * weave;
+  }
+  if (print_kind == 2) {
+    float band = mod(floor(material_mm.x / print_mm), 2.0);
+    return mix(base, vec3(0.20, 0.35, 0.62), 0.75 * band);
+  }
+  return base;
+}
 void main() {
   vec3 n = normalize(world_normal);
-  vec3 base = front_colour;
+  vec3 base = print(front_colour);
   if (!gl_FrontFacing) { n = -n; base = back_colour; }
   vec3 to_eye = normalize(eye - world_position);
   vec3 key = normalize(vec3(0.4, 0.8, 0.6));
@@ -54,7 +91,7 @@ void main() {
 }
 )";
 
-constexpr const char* kLineVertex = R"(#version 330 core
+constexpr const char* kLineVertex = R"(
 layout(location = 0) in vec3 position;
 layout(location = 1) in vec3 vertex_colour;
 uniform mat4 view_projection;
@@ -62,7 +99,7 @@ uniform float point_size;
 out vec3 line_colour;
 void main() {
   line_colour = vertex_colour;
-  gl_Position = view_projection * vec4(position, 1.0);
+  gl_Position = view_projection * vec4(position + breeze(position), 1.0);
   gl_PointSize = point_size;
 }
 )";
@@ -76,9 +113,15 @@ void main() {
 }
 )";
 
-GLuint compile(GLenum type, const char* source) {
+// `prefix` (may be null) is prepended to `source`: the shared breeze function.
+GLuint compile(GLenum type, const char* prefix, const char* source) {
   const GLuint shader = glCreateShader(type);
-  glShaderSource(shader, 1, &source, nullptr);
+  const char* parts[] = {prefix, source};
+  if (prefix != nullptr) {
+    glShaderSource(shader, 2, parts, nullptr);
+  } else {
+    glShaderSource(shader, 1, &source, nullptr);
+  }
   glCompileShader(shader);
   GLint ok = 0;
   glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
@@ -92,8 +135,8 @@ GLuint compile(GLenum type, const char* source) {
 
 GLuint link(const char* vertex, const char* fragment) {
   const GLuint program = glCreateProgram();
-  const GLuint vs = compile(GL_VERTEX_SHADER, vertex);
-  const GLuint fs = compile(GL_FRAGMENT_SHADER, fragment);
+  const GLuint vs = compile(GL_VERTEX_SHADER, kBreezeGlsl, vertex);
+  const GLuint fs = compile(GL_FRAGMENT_SHADER, nullptr, fragment);
   glAttachShader(program, vs);
   glAttachShader(program, fs);
   glLinkProgram(program);
@@ -115,6 +158,14 @@ struct Vertex {
   Eigen::Vector3f attribute;
 };
 static_assert(sizeof(Vertex) == 6 * sizeof(float));
+
+// The cloth's vertices also carry their material coordinates, for prints.
+struct MeshVertex {
+  Eigen::Vector3f position;
+  Eigen::Vector3f normal;
+  Eigen::Vector2f material;
+};
+static_assert(sizeof(MeshVertex) == 8 * sizeof(float));
 
 void describe_vertex_layout() {
   glEnableVertexAttribArray(0);
@@ -155,12 +206,21 @@ ClothRenderer::ClothRenderer() : gl_(new Gl) {
   gl_->lines_vbo = buffers[2];
   gl_->decor_vbo = buffers[3];
   for (auto [vao, vbo] :
-       {std::pair{gl_->mesh_vao, gl_->mesh_vbo}, std::pair{gl_->lines_vao, gl_->lines_vbo},
-        std::pair{gl_->decor_vao, gl_->decor_vbo}}) {
+       {std::pair{gl_->lines_vao, gl_->lines_vbo}, std::pair{gl_->decor_vao, gl_->decor_vbo}}) {
     glBindVertexArray(vao);
     glBindBuffer(GL_ARRAY_BUFFER, vbo);
     describe_vertex_layout();
   }
+  glBindVertexArray(gl_->mesh_vao);
+  glBindBuffer(GL_ARRAY_BUFFER, gl_->mesh_vbo);
+  glEnableVertexAttribArray(0);
+  glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(MeshVertex), nullptr);
+  glEnableVertexAttribArray(1);
+  glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, sizeof(MeshVertex),
+                        reinterpret_cast<const void*>(3 * sizeof(float)));
+  glEnableVertexAttribArray(2);
+  glVertexAttribPointer(2, 2, GL_FLOAT, GL_FALSE, sizeof(MeshVertex),
+                        reinterpret_cast<const void*>(6 * sizeof(float)));
   glBindVertexArray(gl_->mesh_vao);
   glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, gl_->mesh_ebo);
   glBindVertexArray(0);
@@ -208,13 +268,14 @@ void ClothRenderer::resize(FrameSize size) {
 void ClothRenderer::upload_mesh(Scene& scene, float z_scale) {
   const std::vector<Eigen::Vector3f>& normals = scene.normals();
   const DeformedGrid& grid = scene.grid();
-  std::vector<Vertex> vertices(grid.positions_mm.size());
+  std::vector<MeshVertex> vertices(grid.positions_mm.size());
   for (std::size_t i = 0; i < vertices.size(); ++i) {
-    vertices[i] = {to_world(grid.positions_mm[i], z_scale), normal_to_world(normals[i], z_scale)};
+    vertices[i] = {to_world(grid.positions_mm[i], z_scale), normal_to_world(normals[i], z_scale),
+                   grid.material_mm[i]};
   }
   glBindVertexArray(gl_->mesh_vao);
   glBindBuffer(GL_ARRAY_BUFFER, gl_->mesh_vbo);
-  glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(vertices.size() * sizeof(Vertex)),
+  glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(vertices.size() * sizeof(MeshVertex)),
                vertices.data(), GL_DYNAMIC_DRAW);
   glBufferData(GL_ELEMENT_ARRAY_BUFFER,
                static_cast<GLsizeiptr>(grid.triangle_indices.size() * sizeof(std::uint32_t)),
@@ -285,6 +346,17 @@ void ClothRenderer::bounds(Scene& scene, Eigen::Vector3f& centre, float& radius_
   radius_mm = static_cast<float>(0.5 * std::hypot(std::max(s.span_mm, 1.0), depth));
 }
 
+void ClothRenderer::set_breeze_uniforms(unsigned program, Scene& scene, const ClothStyle& style) {
+  const Solution& s = scene.solution();
+  const float depth = static_cast<float>(
+      s.a_mm.empty() ? s.sag_amplitude_mm + scene.parameters().hanging.height_mm : s.a_mm.front());
+  glUniform1f(glGetUniformLocation(program, "breeze_amplitude_mm"),
+              style.breeze ? style.breeze_mm : 0.0f);
+  glUniform1f(glGetUniformLocation(program, "breeze_depth_mm"), depth);
+  glUniform1f(glGetUniformLocation(program, "time_s"), style.time_s);
+  glUniform1f(glGetUniformLocation(program, "z_scale"), style.z_exaggeration);
+}
+
 unsigned ClothRenderer::render(Scene& scene, const OrbitCamera& camera, FrameSize size,
                                const ClothStyle& style) {
   GLint previous_viewport[4];
@@ -335,6 +407,9 @@ unsigned ClothRenderer::render(Scene& scene, const OrbitCamera& camera, FrameSiz
   glUniform3fv(glGetUniformLocation(gl_->mesh_program, "front_colour"), 1,
                style.front_colour.data());
   glUniform3fv(glGetUniformLocation(gl_->mesh_program, "back_colour"), 1, style.back_colour.data());
+  glUniform1i(glGetUniformLocation(gl_->mesh_program, "print_kind"), static_cast<int>(style.print));
+  glUniform1f(glGetUniformLocation(gl_->mesh_program, "print_mm"), style.print_mm);
+  set_breeze_uniforms(gl_->mesh_program, scene, style);
   glBindVertexArray(gl_->mesh_vao);
   glDrawElements(GL_TRIANGLES, gl_->mesh_index_count, GL_UNSIGNED_INT, nullptr);
   glDisable(GL_POLYGON_OFFSET_FILL);
@@ -344,6 +419,7 @@ unsigned ClothRenderer::render(Scene& scene, const OrbitCamera& camera, FrameSiz
                      view_projection.data());
   const GLint override_colour = glGetUniformLocation(gl_->line_program, "override_colour");
   glUniform1f(glGetUniformLocation(gl_->line_program, "point_size"), 1.0f);
+  set_breeze_uniforms(gl_->line_program, scene, style);
   if (style.wireframe) {
     glUniform4f(override_colour, 0.1f, 0.1f, 0.1f, 1.0f);
     glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);

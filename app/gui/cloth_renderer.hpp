@@ -18,6 +18,11 @@ struct ClothStyle {
   bool fold_lines = true;
   bool ground = true;
   float z_exaggeration = 1.0f;  // draws z (out of plane) this many times deeper; a view aid only
+  enum class Print { plain, checks, stripes } print = Print::plain;
+  float print_mm = 60.0f;  // size of a check or the width of a stripe on the flat cloth
+  bool breeze = false;     // foldlab::breeze_offset on top of the wrinkles
+  float breeze_mm = 60.0f;
+  float time_s = 0.0f;
   Eigen::Vector3f front_colour{0.93f, 0.86f, 0.74f};  // the fabric's two faces
   Eigen::Vector3f back_colour{0.72f, 0.78f, 0.92f};
   Eigen::Vector3f positive_fold_colour{0.12f, 0.23f, 0.58f};
@@ -55,6 +60,7 @@ class ClothRenderer {
   void upload_mesh(Scene& scene, float z_scale);
   void upload_fold_lines(Scene& scene, const ClothStyle& style);
   void upload_decorations(Scene& scene);
+  void set_breeze_uniforms(unsigned program, Scene& scene, const ClothStyle& style);
 
   Gl* gl_;  // GL object names, kept out of the header so that it needs no GL include
   FrameSize size_{};

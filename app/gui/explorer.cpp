@@ -140,6 +140,43 @@ Explorer::~Explorer() {
   }
 }
 
+std::optional<std::string> Explorer::set_view(std::string_view key, std::string_view value) {
+  if (key == "print") {
+    if (value == "plain" || value == "checks" || value == "stripes") {
+      style_.print = value == "plain"    ? ClothStyle::Print::plain
+                     : value == "checks" ? ClothStyle::Print::checks
+                                         : ClothStyle::Print::stripes;
+      return std::nullopt;
+    }
+    return "print = '" + std::string(value) + "' is not one of: plain, checks, stripes";
+  }
+  const std::optional<double> number = parse_number(value);
+  if (!number) {
+    return std::string(key) + " = '" + std::string(value) + "' is not a number";
+  }
+  const float v = static_cast<float>(*number);
+  if (key == "breeze") {
+    style_.breeze = v != 0.0f;
+  } else if (key == "breeze_mm") {
+    style_.breeze_mm = v;
+  } else if (key == "time") {
+    style_.time_s = v;
+    breeze_playing_ = false;  // a scripted picture shows that instant
+  } else if (key == "z") {
+    style_.z_exaggeration = std::clamp(v, 1.0f, 20.0f);
+  } else if (key == "wireframe") {
+    style_.wireframe = v != 0.0f;
+  } else if (key == "fold_lines") {
+    style_.fold_lines = v != 0.0f;
+  } else if (key == "ground") {
+    style_.ground = v != 0.0f;
+  } else {
+    return "unknown view key '" + std::string(key) +
+           "' (known: print, breeze, breeze_mm, time, z, wireframe, fold_lines, ground)";
+  }
+  return std::nullopt;
+}
+
 bool Explorer::busy() const {
   return regime_map_panel_.computing();
 }
@@ -560,6 +597,32 @@ void Explorer::view3d_panel() {
   help_marker(
       "Draws the out-of-plane depth z this many times deeper, to see the folds; the "
       "numbers are not changed.");
+  ImGui::SetNextItemWidth(100.0f);
+  int print = static_cast<int>(style_.print);
+  if (ImGui::Combo("print", &print, "plain\0woven checks\0stripes\0")) {
+    style_.print = static_cast<ClothStyle::Print>(print);
+  }
+  if (style_.print != ClothStyle::Print::plain) {
+    ImGui::SameLine();
+    ImGui::SetNextItemWidth(110.0f);
+    ImGui::SliderFloat("##print size", &style_.print_mm, 10.0f, 300.0f, "%.0f mm",
+                       ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp);
+  }
+  ImGui::SameLine();
+  ImGui::Checkbox("breeze", &style_.breeze);
+  if (style_.breeze) {
+    ImGui::SameLine();
+    if (ImGui::SmallButton(breeze_playing_ ? "pause" : "play")) {
+      breeze_playing_ = !breeze_playing_;
+    }
+    ImGui::SameLine();
+    ImGui::SetNextItemWidth(100.0f);
+    ImGui::SliderFloat("##breeze", &style_.breeze_mm, 5.0f, 300.0f, "%.0f mm",
+                       ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp);
+    if (breeze_playing_) {
+      style_.time_s += ImGui::GetIO().DeltaTime;  // the solver does not run: only the shader moves
+    }
+  }
   const ImVec2 available = ImGui::GetContentRegionAvail();
   const FrameSize size{std::max(16, static_cast<int>(available.x)),
                        std::max(16, static_cast<int>(available.y))};

@@ -43,6 +43,9 @@ class Explorer {
   const Parameters& edited() const { return edited_; }
   const RenderCounters* renderer_counters() const;
   void save_session_now();
+  // A view setting by name (print=checks, breeze=1, breeze_mm=80, time=1.5, z=8, wireframe=1,
+  // fold_lines=0, ground=0): for scripted pictures. Returns the problem, if any.
+  std::optional<std::string> set_view(std::string_view key, std::string_view value);
   // True while background work (the regime map) is still filling in what the window shows.
   bool busy() const;
 
@@ -77,6 +80,7 @@ class Explorer {
   OrbitCamera camera_;
   bool camera_framed_ = false;
   bool camera_user_moved_ = false;
+  bool breeze_playing_ = true;
   std::uint64_t camera_solution_version_ = 0;
   ClothStyle style_;
   int grid_resolution_ = 128;

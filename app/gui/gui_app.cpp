@@ -86,6 +86,16 @@ int run_frames(Surface& surface, const GuiRunOptions& options, bool interactive)
       persist && options.inputs.preset_path.empty() && options.inputs.assignments.empty();
   Explorer explorer(preset, options.inputs.preset_path, restore, explorer_options);
 
+  for (const std::string& setting : options.view_settings) {
+    const std::size_t eq = setting.find('=');
+    const std::optional<std::string> problem =
+        eq == std::string::npos ? std::optional<std::string>("'" + setting + "' is not KEY=VALUE")
+                                : explorer.set_view(std::string_view(setting).substr(0, eq),
+                                                    std::string_view(setting).substr(eq + 1));
+    if (problem) {
+      throw cli::InputError("--view " + *problem);
+    }
+  }
   std::vector<double> frame_ms;
   const int frames = options.frames;
   // A scripted run waits (up to 30 s) for background work before its last frame, so that the

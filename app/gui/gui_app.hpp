@@ -19,6 +19,7 @@ struct GuiRunOptions {
   bool report = false;          // print frame times and pipeline counters as JSON
   bool fresh = false;           // neither restore nor save the session
   std::string analysis_tab;     // equations, sweep or map: the tab shown at start
+  std::vector<std::string> view_settings;  // KEY=VALUE, see Explorer::set_view
 };
 
 // The window. Returns an exit status (kExitOk, or kExitInternal when no window can be opened).

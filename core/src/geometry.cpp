@@ -232,3 +232,16 @@ std::vector<Eigen::Vector3f> vertex_normals(const std::vector<Eigen::Vector3f>& 
 }
 
 }  // namespace foldlab
+
+namespace foldlab {
+
+Eigen::Vector3f breeze_offset(const Eigen::Vector3f& position_mm, float depth_mm,
+                              float amplitude_mm, float time_s) {
+  constexpr float kOmega = 2.0f * static_cast<float>(kPi) * 0.4f;  // 0.4 Hz
+  const float down = std::max(0.0f, position_mm.y()) / std::max(depth_mm, 1.0f);
+  const float weight = amplitude_mm * down * down;
+  return {0.25f * weight * std::sin(0.7f * kOmega * time_s + 1.3f), 0.0f,
+          weight * std::sin(kOmega * time_s - 2.5f * static_cast<float>(kPi) * down)};
+}
+
+}  // namespace foldlab

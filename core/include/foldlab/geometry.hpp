@@ -75,3 +75,15 @@ std::vector<Eigen::Vector3f> vertex_normals(const std::vector<Eigen::Vector3f>& 
                                             const std::vector<std::uint32_t>& triangle_indices);
 
 }  // namespace foldlab
+
+namespace foldlab {
+
+// A breeze on top of the static wrinkles (paper Fig. 5, "combined with other displacements"): a
+// smooth offset that grows from nothing at the line of the supports (y = 0) to `amplitude_mm` at
+// depth `depth_mm`, as a wave running down the cloth. Model coordinates (y down), mm, seconds.
+// The 3D view computes the same function on the GPU (app/gui/cloth_renderer.cpp, kBreezeGlsl);
+// the solver never re-runs for it.
+Eigen::Vector3f breeze_offset(const Eigen::Vector3f& position_mm, float depth_mm,
+                              float amplitude_mm, float time_s);
+
+}  // namespace foldlab
