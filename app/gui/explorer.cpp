@@ -9,6 +9,8 @@
 
 #include "cli/presets_dir.hpp"
 #include "foldlab/equations.hpp"
+#include "foldlab/export.hpp"
+#include "foldlab/gltf_export.hpp"
 #include "foldlab/io.hpp"
 #include "foldlab/settings.hpp"
 #include "gui/analysis_panels.hpp"
@@ -175,6 +177,74 @@ std::optional<std::string> Explorer::set_view(std::string_view key, std::string_
            "' (known: print, breeze, breeze_mm, time, z, wireframe, fold_lines, ground)";
   }
   return std::nullopt;
+}
+
+void Explorer::notify(const std::string& message, bool is_error) {
+  preset_message_ = message;
+  preset_message_is_error_ = is_error;
+}
+
+std::optional<std::string> Explorer::take_screenshot_request() {
+  std::optional<std::string> request;
+  request.swap(screenshot_request_);
+  return request;
+}
+
+// The mesh as the 3D view shows it now: with the breeze's offset at this instant when it blows
+// (z exaggeration is a view aid and is not exported).
+DeformedGrid Explorer::current_frame_mesh() {
+  scene_.normals();
+  DeformedGrid grid = scene_.grid();
+  if (style_.breeze) {
+    const Solution& s = scene_.solution();
+    const float depth = static_cast<float>(
+        s.a_mm.empty() ? s.sag_amplitude_mm + scene_.parameters().hanging.height_mm
+                       : s.a_mm.front());
+    for (Eigen::Vector3f& v : grid.positions_mm) {
+      v += breeze_offset(v, depth, style_.breeze_mm, style_.time_s);
+    }
+    grid.normals = vertex_normals(grid.positions_mm, grid.triangle_indices);
+  }
+  return grid;
+}
+
+void Explorer::export_section() {
+  if (!ImGui::CollapsingHeader("Export")) {
+    return;
+  }
+  ImGui::SetNextItemWidth(-1.0f);
+  ImGui::InputText("##export stem", export_stem_, sizeof export_stem_);
+  const std::string stem = export_stem_;
+  auto write = [this](const std::string& path, auto&& make) {
+    try {
+      write_file_atomically(path, make());
+      preset_message_ = "Wrote " + std::filesystem::absolute(path).string();
+      preset_message_is_error_ = false;
+    } catch (const std::exception& e) {
+      preset_message_ = std::string("Not exported: ") + e.what();
+      preset_message_is_error_ = true;
+    }
+  };
+  if (ImGui::Button("OBJ")) {
+    write(stem + ".obj", [&] { return mesh_to_obj(current_frame_mesh(), loaded_.name); });
+  }
+  ImGui::SameLine();
+  if (ImGui::Button("glTF (.glb)")) {
+    write(stem + ".glb", [&] { return mesh_to_glb(current_frame_mesh(), loaded_.name); });
+  }
+  ImGui::SameLine();
+  if (ImGui::Button("SVG")) {
+    write(stem + ".svg",
+          [&] { return fold_lines_to_svg(scene_.fold_lines(), scene_.solution(), loaded_.name); });
+  }
+  ImGui::SameLine();
+  if (ImGui::Button("CSV")) {
+    write(stem + ".csv", [&] { return fold_lines_to_csv(scene_.fold_lines()); });
+  }
+  ImGui::SameLine();
+  if (ImGui::Button("PNG")) {
+    screenshot_request_ = stem + ".png";
+  }
 }
 
 bool Explorer::busy() const {
@@ -681,8 +751,9 @@ void Explorer::presets_panel() {
     ImGui::End();
     return;
   }
-  const float list_height =
-      std::max(60.0f, ImGui::GetContentRegionAvail().y - 3.2f * ImGui::GetFrameHeightWithSpacing());
+  const float list_height = std::max(
+      60.0f, ImGui::GetContentRegionAvail().y -
+                 (ImGui::IsWindowCollapsed() ? 3.2f : 4.4f) * ImGui::GetFrameHeightWithSpacing());
   if (ImGui::BeginChild("preset list", ImVec2(0.0f, list_height), true)) {
     bool user_header = false;
     for (const PresetEntry& entry : presets_) {
@@ -731,6 +802,7 @@ void Explorer::presets_panel() {
     ImGui::TextColored(kDimText, "%s", session_message_.c_str());
   }
   ImGui::Checkbox("pipeline stats", &show_stats_);
+  export_section();
   ImGui::SameLine();
   calibration_panel_.open_button(scene_.parameters());
   ImGui::End();

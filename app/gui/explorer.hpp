@@ -46,6 +46,10 @@ class Explorer {
   // A view setting by name (print=checks, breeze=1, breeze_mm=80, time=1.5, z=8, wireframe=1,
   // fold_lines=0, ground=0): for scripted pictures. Returns the problem, if any.
   std::optional<std::string> set_view(std::string_view key, std::string_view value);
+  // A PNG the user asked for with the Export buttons, taken by the frame loop after drawing.
+  std::optional<std::string> take_screenshot_request();
+  // Shows a line in the Presets panel (the outcome of an export done by the frame loop).
+  void notify(const std::string& message, bool is_error);
   // True while background work (the regime map) is still filling in what the window shows.
   bool busy() const;
 
@@ -58,6 +62,8 @@ class Explorer {
   void teaching_panel();
   void equations_tab();
   void stats_overlay();
+  void export_section();
+  DeformedGrid current_frame_mesh();
 
   // A slider for one model input: unit, log scale where the range spans decades, typed values
   // (Ctrl+click) not clamped, and the validation message of its field beside it.
@@ -81,6 +87,8 @@ class Explorer {
   bool camera_framed_ = false;
   bool camera_user_moved_ = false;
   bool breeze_playing_ = true;
+  char export_stem_[256] = "foldlab-export";
+  std::optional<std::string> screenshot_request_;
   std::uint64_t camera_solution_version_ = 0;
   ClothStyle style_;
   int grid_resolution_ = 128;

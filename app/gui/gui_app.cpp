@@ -129,6 +129,15 @@ int run_frames(Surface& surface, const GuiRunOptions& options, bool interactive)
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
     const bool last = frames > 0 && frame + 1 == frames + extra_frames;
+    if (const std::optional<std::string> path = explorer.take_screenshot_request()) {
+      surface.finish();
+      try {
+        write_png(path->c_str(), size, read_framebuffer_rgba(size));
+        explorer.notify("Wrote " + std::filesystem::absolute(*path).string(), false);
+      } catch (const SurfaceError& e) {
+        explorer.notify(std::string("Not exported: ") + e.what(), true);
+      }
+    }
     if (last && !options.screenshot_path.empty()) {
       surface.finish();
       write_png(options.screenshot_path.c_str(), size, read_framebuffer_rgba(size));
