@@ -751,9 +751,8 @@ void Explorer::presets_panel() {
     ImGui::End();
     return;
   }
-  const float list_height = std::max(
-      60.0f, ImGui::GetContentRegionAvail().y -
-                 (ImGui::IsWindowCollapsed() ? 3.2f : 4.4f) * ImGui::GetFrameHeightWithSpacing());
+  const float list_height =
+      std::max(60.0f, ImGui::GetContentRegionAvail().y - 4.4f * ImGui::GetFrameHeightWithSpacing());
   if (ImGui::BeginChild("preset list", ImVec2(0.0f, list_height), true)) {
     bool user_header = false;
     for (const PresetEntry& entry : presets_) {
