@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
+#include <cstdint>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -248,16 +249,19 @@ TEST_F(CliTest, ExportWritesObjCsvAndSvg) {
                            csv.string(), "--svg", svg.string(), "--grid", "16x12"});
   ASSERT_EQ(r.exit_status, 0) << r.err;
 
-  // OBJ: 16 x 12 vertices and normals, two triangles per cell.
+  // OBJ: 16 x 12 vertices, texture coordinates and normals, two triangles per cell.
   int v = 0;
+  int vt = 0;
   int vn = 0;
   int f = 0;
   for (const std::string& line : split_lines(read_file(obj))) {
     v += starts_with(line, "v ");
+    vt += starts_with(line, "vt ");
     vn += starts_with(line, "vn ");
     f += starts_with(line, "f ");
   }
   EXPECT_EQ(v, 16 * 12);
+  EXPECT_EQ(vt, 16 * 12);
   EXPECT_EQ(vn, 16 * 12);
   EXPECT_EQ(f, 2 * 15 * 11);
 
@@ -310,6 +314,23 @@ TEST_F(CliTest, ExportNeedsAnOutput) {
   const RunResult r = run({"export", "--preset", kH900});
   EXPECT_EQ(r.exit_status, 2);
   EXPECT_TRUE(contains(r.err, "--obj")) << r.err;
+  EXPECT_TRUE(contains(r.err, "--glb")) << r.err;
+}
+
+TEST_F(CliTest, ExportWritesBinaryGltf) {
+  const fs::path glb = dir_ / "X.glb";
+  const RunResult r = run({"export", "--preset", kH900, "--glb", glb.string(), "--grid", "16x12"});
+  ASSERT_EQ(r.exit_status, 0) << r.err;
+  const std::string bytes = read_file(glb);
+  ASSERT_GE(bytes.size(), 12u);
+  EXPECT_EQ(bytes.substr(0, 4), "glTF");
+  // The GLB header's total length (little-endian uint32 at byte 8) is the file's size.
+  const auto byte = [&](std::size_t i) {
+    return static_cast<std::uint32_t>(static_cast<unsigned char>(bytes[i]));
+  };
+  const std::uint32_t length = byte(8) | byte(9) << 8 | byte(10) << 16 | byte(11) << 24;
+  EXPECT_EQ(length, bytes.size());
+  EXPECT_EQ(entries(), std::vector<std::string>{"X.glb"});  // no temporaries left
 }
 
 TEST_F(CliTest, ExportRejectsBadGrids) {
@@ -361,4 +382,21 @@ TEST_F(CliTest, ExportStatsRunOnlyTheStagesItsOutputsNeed) {
   EXPECT_EQ(b.at("fold_lines").at("evaluations").get<int>(), 1);  // shared by CSV and SVG
   EXPECT_EQ(b.at("grid").at("evaluations").get<int>(), 1);
   EXPECT_EQ(b.at("normals").at("evaluations").get<int>(), 1);
+}
+
+TEST_F(CliTest, SweepPrintsOneRowPerStepAsCsv) {
+  const RunResult r =
+      run({"sweep", "--param", "h", "--from", "900", "--to", "2350", "--steps", "4", "--csv"});
+  ASSERT_EQ(r.exit_status, 0) << r.err;
+  const std::vector<std::string> lines = split_lines(r.out);
+  ASSERT_EQ(lines.size(), 5u);
+  EXPECT_EQ(lines[0], "h,n,Q,z_max_mm,regime");
+  EXPECT_TRUE(starts_with(lines[1], "900,"));
+  EXPECT_TRUE(starts_with(lines[4], "2350,"));
+  // The first row is the Table 1, h = 900 mm case: the same n as `solve`.
+  const json j = solve_json({"--set", "h=900"});
+  EXPECT_TRUE(starts_with(lines[1], "900," + std::to_string(j.at("n").get<int>()) + ","));
+  const RunResult bad = run({"sweep", "--param", "q", "--from", "1", "--to", "2"});
+  EXPECT_EQ(bad.exit_status, 2);
+  EXPECT_TRUE(contains(bad.err, "cannot be swept"));
 }

@@ -194,6 +194,36 @@ void SweepPanel::recompute(const Parameters& current) {
   computed_ = true;
 }
 
+namespace {
+
+// One click: the paper's case, its input swept, its printed rows overlaid.
+struct PaperCase {
+  const char* preset;
+  const char* prefix;
+  int key;
+  double from, to;
+  bool log;
+};
+const char* const kPaperCaseButtons[] = {"Table 1 (h)", "Table 2 (w)", "Fig. 4 (h)"};
+const PaperCase kPaperCaseList[] = {
+    {"paper-table1-h1400.json", "paper-table1-", 3, 500.0, 3000.0, false},
+    {"paper-table2-w33.json", "paper-table2-", 2, 5e-7, 8e-6, true},
+    {"paper-fig4.json", "paper-fig4", 3, 500.0, 3000.0, false},
+};
+
+}  // namespace
+
+void SweepPanel::select_paper_case(int which, const PanelActions& actions) {
+  const PaperCase& c = kPaperCaseList[which];
+  actions.load_preset(presets_dir_ / c.preset);
+  key_index_ = c.key;
+  from_ = c.from;
+  to_ = c.to;
+  logarithmic_ = c.log;
+  load_overlay(c.prefix, std::string("paper, ") + kPaperCaseButtons[which]);
+  n_plot_.request_autoscale();
+}
+
 void SweepPanel::draw(const Parameters& current, const PanelActions& actions) {
   const std::vector<std::string>& keys = sweepable_keys();
   if (key_combo("input", key_index_)) {
@@ -210,29 +240,9 @@ void SweepPanel::draw(const Parameters& current, const PanelActions& actions) {
   ImGui::SetNextItemWidth(80.0f);
   ImGui::SliderInt("steps", &steps_, 10, 1000, "%d", ImGuiSliderFlags_AlwaysClamp);
 
-  // One click: the paper's case, its input swept, its printed rows overlaid.
-  struct PaperCase {
-    const char* button;
-    const char* preset;
-    const char* prefix;
-    int key;
-    double from, to;
-    bool log;
-  };
-  static const PaperCase cases[] = {
-      {"Table 1 (h)", "paper-table1-h1400.json", "paper-table1-", 3, 500.0, 3000.0, false},
-      {"Table 2 (w)", "paper-table2-w33.json", "paper-table2-", 2, 5e-7, 8e-6, true},
-      {"Fig. 4 (h)", "paper-fig4.json", "paper-fig4", 3, 500.0, 3000.0, false},
-  };
-  for (const PaperCase& c : cases) {
-    if (ImGui::SmallButton(c.button)) {
-      actions.load_preset(presets_dir_ / c.preset);
-      key_index_ = c.key;
-      from_ = c.from;
-      to_ = c.to;
-      logarithmic_ = c.log;
-      load_overlay(c.prefix, std::string("paper, ") + c.button);
-      n_plot_.request_autoscale();
+  for (int which = 0; which < kPaperCases; ++which) {
+    if (ImGui::SmallButton(kPaperCaseButtons[which])) {
+      select_paper_case(which, actions);
     }
     ImGui::SameLine();
   }

@@ -27,6 +27,9 @@ class SweepPanel {
  public:
   explicit SweepPanel(std::filesystem::path presets_dir);
   void draw(const Parameters& current, const PanelActions& actions);
+  // One click's worth: 0 Table 1, 1 Table 2, 2 Fig. 4 (loads the preset, sweeps, overlays).
+  void select_paper_case(int which, const PanelActions& actions);
+  static constexpr int kPaperCases = 3;
 
  private:
   void recompute(const Parameters& current);

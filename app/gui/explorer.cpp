@@ -143,6 +143,17 @@ Explorer::~Explorer() {
 }
 
 std::optional<std::string> Explorer::set_view(std::string_view key, std::string_view value) {
+  if (key == "sweep") {
+    static const char* const names[] = {"table1", "table2", "fig4"};
+    for (int which = 0; which < SweepPanel::kPaperCases; ++which) {
+      if (value == names[which]) {
+        sweep_panel_.select_paper_case(which, panel_actions());
+        options_.analysis_tab = "sweep";
+        return std::nullopt;
+      }
+    }
+    return "sweep = '" + std::string(value) + "' is not one of: table1, table2, fig4";
+  }
   if (key == "print") {
     if (value == "plain" || value == "checks" || value == "stripes") {
       style_.print = value == "plain"    ? ClothStyle::Print::plain
@@ -245,6 +256,11 @@ void Explorer::export_section() {
   if (ImGui::Button("PNG")) {
     screenshot_request_ = stem + ".png";
   }
+}
+
+PanelActions Explorer::panel_actions() {
+  return {[this](const std::string& key, double value) { set_input(key, value); },
+          [this](const std::filesystem::path& path) { load_preset_file(path); }};
 }
 
 bool Explorer::busy() const {
@@ -831,9 +847,7 @@ void Explorer::teaching_panel() {
       ImGui::EndChild();
       ImGui::EndTabItem();
     }
-    const PanelActions actions{
-        [this](const std::string& key, double value) { set_input(key, value); },
-        [this](const std::filesystem::path& path) { load_preset_file(path); }};
+    const PanelActions actions = panel_actions();
     if (ImGui::BeginTabItem("Sweep", nullptr, sweep_flags)) {
       sweep_panel_.draw(scene_.parameters(), actions);
       ImGui::EndTabItem();

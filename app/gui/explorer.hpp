@@ -63,6 +63,7 @@ class Explorer {
   void equations_tab();
   void stats_overlay();
   void export_section();
+  PanelActions panel_actions();
   DeformedGrid current_frame_mesh();
 
   // A slider for one model input: unit, log scale where the range spans decades, typed values

@@ -1,0 +1,94 @@
+// Sweeps and regime maps are solves at the swept values; the breeze leaves the supports alone.
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include "foldlab/geometry.hpp"
+#include "foldlab/sweep.hpp"
+
+namespace foldlab {
+namespace {
+
+TEST(Sweep, EachPointIsTheSolveAtThatValue) {
+  Parameters base;
+  base.model.method = Method::exact;
+  const SweepAxis axis{"h", 900.0, 2350.0, 30, false};
+  const std::vector<SweepPoint> points = sweep(base, axis);
+  ASSERT_EQ(points.size(), 30u);
+  EXPECT_DOUBLE_EQ(points.front().value, 900.0);
+  EXPECT_DOUBLE_EQ(points.back().value, 2350.0);
+  for (const SweepPoint& point : points) {
+    Parameters p = base;
+    p.hanging.height_mm = point.value;
+    const Solution s = solve(p);
+    ASSERT_TRUE(point.valid);
+    EXPECT_EQ(point.n, s.n);
+    EXPECT_EQ(point.z_max_mm, s.z_max_mm);
+  }
+  // The paper's trend: n grows with h (Table 1: 5, 7, 8 at 900, 1400, 2350 mm).
+  EXPECT_LT(points.front().n, points.back().n);
+}
+
+TEST(Sweep, LogarithmicAxisAndKAtTheCurrentNu) {
+  const SweepAxis axis{"K", 10.0, 1000.0, 3, true};
+  EXPECT_NEAR(axis.value(1), 100.0, 1e-9);
+  Parameters p;
+  ASSERT_TRUE(set_number(p, "K", 40.0));
+  EXPECT_NEAR(stiffness_constant_K(p), 40.0, 1e-12);
+  EXPECT_NEAR(get_number(p, "K"), 40.0, 1e-12);
+}
+
+TEST(Sweep, InvalidValuesAreMarkedNotSolved) {
+  Parameters base;
+  const std::vector<SweepPoint> points = sweep(base, SweepAxis{"d", 0.0, 800.0, 9, false});
+  EXPECT_TRUE(points.front().valid);  // d = 0: no slack, a valid answer
+  EXPECT_EQ(points.front().regime, Regime::no_slack);
+  EXPECT_FALSE(points.back().valid);  // d = 800 >= L/2 = 700
+}
+
+TEST(Sweep, AxisChecksSayWhatIsWrong) {
+  EXPECT_NE(check_axis({"q", 1, 2, 10, false})->find("cannot be swept"), std::string::npos);
+  EXPECT_NE(check_axis({"E", -1, 2, 10, true})->find("positive"), std::string::npos);
+  EXPECT_NE(check_axis({"E", 1, 2, 1, false})->find("steps"), std::string::npos);
+  EXPECT_FALSE(check_axis({"w", 1e-7, 1e-5, 64, true}).has_value());
+}
+
+TEST(RegimeMap, RowsAreSolvesAtTheGridValues) {
+  Parameters base;
+  const SweepAxis x{"h", 500.0, 3000.0, 8, false};
+  const SweepAxis y{"w", 5e-7, 5e-6, 6, true};
+  std::vector<MapCell> cells(8 * 6);
+  // Two halves, as two threads would compute them.
+  map_rows(base, x, y, 0, 3, std::span<MapCell>(cells).first(24));
+  map_rows(base, x, y, 3, 6, std::span<MapCell>(cells).subspan(24));
+  for (int j = 0; j < 6; ++j) {
+    for (int i = 0; i < 8; ++i) {
+      Parameters p = base;
+      p.hanging.height_mm = x.value(i);
+      p.fabric.weight_N_per_mm2 = y.value(j);
+      const MapCell& cell = cells[static_cast<std::size_t>(j * 8 + i)];
+      ASSERT_TRUE(cell.valid);
+      EXPECT_EQ(cell.n, solve(p).n) << i << ", " << j;
+    }
+  }
+  // n grows with w (the paper's Table 2): the top row has at least the bottom row's folds.
+  for (int i = 0; i < 8; ++i) {
+    EXPECT_GE(cells[static_cast<std::size_t>(5 * 8 + i)].n, cells[static_cast<std::size_t>(i)].n);
+  }
+}
+
+TEST(Breeze, SupportsStayAndTheOffsetIsBounded) {
+  for (float t : {0.0f, 0.7f, 2.5f}) {
+    EXPECT_EQ(breeze_offset({-650.0f, 0.0f, 0.0f}, 1414.0f, 80.0f, t), Eigen::Vector3f::Zero());
+    const Eigen::Vector3f bottom = breeze_offset({0.0f, 1414.0f, 40.0f}, 1414.0f, 80.0f, t);
+    EXPECT_LE(std::abs(bottom.z()), 80.0f + 1e-4f);
+    EXPECT_LE(std::abs(bottom.x()), 20.0f + 1e-4f);
+    EXPECT_EQ(bottom.y(), 0.0f);
+  }
+  // It moves: two instants give two offsets.
+  EXPECT_NE(breeze_offset({0, 1000, 0}, 1414, 80, 0.0f),
+            breeze_offset({0, 1000, 0}, 1414, 80, 0.3f));
+}
+
+}  // namespace
+}  // namespace foldlab
