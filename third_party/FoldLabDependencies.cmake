@@ -4,6 +4,9 @@ find_package(Eigen3 3.4 REQUIRED NO_MODULE)
 find_package(nlohmann_json 3.11 REQUIRED)
 find_package(CLI11 REQUIRED)
 find_package(Threads REQUIRED)
+# glTF export: Debian builds tinygltf as a shared library (README.Debian), so no
+# TINYGLTF_IMPLEMENTATION, stb or JSON defines are needed here.
+find_package(TinyGLTF REQUIRED)
 
 # The GUI: Dear ImGui 1.86 (static, with its GLFW and OpenGL3 backends inside libimgui.a), stb for
 # PNG, GLFW for the window, libepoxy for our own GL calls, EGL for headless rendering.

@@ -817,9 +817,9 @@ void Explorer::presets_panel() {
     ImGui::TextColored(kDimText, "%s", session_message_.c_str());
   }
   ImGui::Checkbox("pipeline stats", &show_stats_);
-  export_section();
   ImGui::SameLine();
   calibration_panel_.open_button(scene_.parameters());
+  export_section();
   ImGui::End();
 }
 

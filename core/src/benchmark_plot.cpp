@@ -74,7 +74,7 @@ std::string benchmark_svg(const std::vector<BenchmarkRow>& rows, const std::stri
   constexpr double kWidth = 960;
   constexpr double kHeight = 640;
   constexpr double kLeft = 90;
-  constexpr double kRight = 230;  // room for the legend and labels
+  constexpr double kRight = 250;  // room for the legend and labels
   constexpr double kTop = 70;
   constexpr double kBottom = 70;
   auto shown_error = [](const BenchmarkRow& r) {
@@ -210,13 +210,13 @@ std::string benchmark_svg(const std::vector<BenchmarkRow>& rows, const std::stri
               "Pareto front (ringed)");
   ly += 6;
   for (const char* text : {"pale: tolerance 5 %", "mid: tolerance 1 %", "dark: tolerance 0.1 %",
-                           "N in {4, 8, 16, 20, 32, 64, 128}"}) {
+                           "N = 4, 8, 16, 20, 32, 64, 128"}) {
     svg +=
         format("<text x=\"%.1f\" y=\"%.1f\" fill=\"#555\">", lx - 8, ly + 4) + text + "</text>\n";
     ly += 18;
   }
   svg += format("<text x=\"%.1f\" y=\"%.1f\" fill=\"#555\">", lx - 8, ly + 4) +
-         format("errors below %.0e drawn at %.0e", kErrorFloor, kErrorFloor) + "</text>\n";
+         format("errors &lt; %.0e drawn at %.0e", kErrorFloor, kErrorFloor) + "</text>\n";
   svg += "</svg>\n";
   return svg;
 }

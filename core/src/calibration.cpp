@@ -213,8 +213,6 @@ class Fitter {
     return sweep(std::move(breaks), p_min, p_max, [&](double p) { return score_at(log_K, p); });
   }
 
-  std::size_t size() const { return tables_.size(); }
-
   // The mean over the rows of |ln s| at p = 1: how far a unit change of p moves ln s^p.
   double mean_abs_log_s(double log_K) const {
     double sum = 0.0;

@@ -55,15 +55,43 @@ constexpr const char* kNegativeColour = "#d62728";
 
 }  // namespace
 
+std::vector<Eigen::Vector2f> texture_coordinates(const DeformedGrid& grid) {
+  std::vector<Eigen::Vector2f> uv(grid.material_mm.size(), Eigen::Vector2f::Zero());
+  if (grid.material_mm.empty()) {
+    return uv;
+  }
+  float x_min = grid.material_mm.front().x();
+  float x_max = x_min;
+  float y_max = 0.0f;
+  for (const Eigen::Vector2f& m : grid.material_mm) {
+    x_min = std::min(x_min, m.x());
+    x_max = std::max(x_max, m.x());
+    y_max = std::max(y_max, m.y());
+  }
+  // A degenerate extent (no width, or a cloth without height) maps to 0 rather than NaN.
+  const float width = x_max - x_min;
+  for (std::size_t v = 0; v < uv.size(); ++v) {
+    const Eigen::Vector2f& m = grid.material_mm[v];
+    uv[v] = Eigen::Vector2f(width > 0.0f ? (m.x() - x_min) / width : 0.0f,
+                            y_max > 0.0f ? m.y() / y_max : 0.0f);
+  }
+  return uv;
+}
+
 std::string mesh_to_obj(const DeformedGrid& grid, const std::string& title) {
   std::string out = "# FoldLab deformed cloth: " + title + "\n";
   out += "# units mm; x across, y down (gravity), z out of the initial plane\n";
   out += printf_string("# grid %d x %d, worst fibre-length error %.3e of h\n", grid.nx, grid.ny,
                        grid.worst_fibre_error);
+  out += "# vt: u across the flat cloth, v = Y / Y_max down it (v = 0 at the upper edge)\n";
   out += "o cloth\n";
-  out.reserve(out.size() + grid.positions_mm.size() * 80 + grid.triangle_indices.size() * 12);
+  out.reserve(out.size() + grid.positions_mm.size() * 110 + grid.triangle_indices.size() * 20);
   for (const Eigen::Vector3f& v : grid.positions_mm) {
     out += printf_string("v %.6g %.6g %.6g\n", v.x(), v.y(), v.z());
+  }
+  for (const Eigen::Vector2f& t : texture_coordinates(grid)) {
+    // OBJ puts v = 0 at the bottom of an image, glTF at the top: flip for OBJ.
+    out += printf_string("vt %.6g %.6g\n", t.x(), 1.0f - t.y());
   }
   for (const Eigen::Vector3f& n : grid.normals) {
     out += printf_string("vn %.6g %.6g %.6g\n", n.x(), n.y(), n.z());
@@ -72,7 +100,8 @@ std::string mesh_to_obj(const DeformedGrid& grid, const std::string& title) {
     const unsigned a = grid.triangle_indices[t] + 1;
     const unsigned b = grid.triangle_indices[t + 1] + 1;
     const unsigned c = grid.triangle_indices[t + 2] + 1;
-    out += printf_string("f %u//%u %u//%u %u//%u\n", a, a, b, b, c, c);
+    // Position, texture coordinate and normal share the vertex's index.
+    out += printf_string("f %u/%u/%u %u/%u/%u %u/%u/%u\n", a, a, a, b, b, b, c, c, c);
   }
   return out;
 }

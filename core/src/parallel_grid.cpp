@@ -37,7 +37,7 @@ DeformedGrid deformed_grid_parallel(const Solution& s, const Parameters& p, int 
   if (threads <= 0) {
     threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   }
-  if (static_cast<long long>(grid.nx) * grid.ny < 64 * 64) {
+  if (static_cast<long long>(grid.nx) * grid.ny < 128 * 128) {
     threads = 1;
   }
   grid.normals = grid_vertex_normals(grid, std::min(threads, grid.ny));

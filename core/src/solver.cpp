@@ -140,9 +140,8 @@ Solution solve_paper(const Parameters& p) {
 }
 
 // Exact method. For one n, eq. 8 leaves one degree of freedom on the circle a_n² + z² = A²; its
-// angle theta (a_n = A cos theta, z = A sin theta) is the unknown of eq. 9, because a_n alone
-// loses z's digits where z << A (z = sqrt(A² - a_n²) cancels) and z alone loses a_n's where a_n <<
-// A.
+// angle theta (a_n = A cos theta, z = A sin theta) is the unknown of eq. 9: a_n alone would lose
+// z's digits where z << A (z = sqrt(A² - a_n²) cancels), and z alone a_n's where a_n << A.
 struct UpperFold {
   double an;
   double z;
@@ -183,8 +182,7 @@ ExcessAndSlope fibre_excess_and_slope(const Setup& u, int n, const UpperFold& f)
     const double inverse = 1.0 / S;
     sum += S;
     sum_inverse += inverse;
-    // a_i = a_0^(1-i/n) a_n^(i/n), so d(a_{i-1} - a_i)/d a_n = ((i-1)(a_{i-1} - a_i) - a_i)/(n
-    // a_n).
+    // a_i = a_0^(1-i/n) a_n^(i/n): d(a_{i-1} - a_i)/da_n = ((i-1)(a_{i-1} - a_i) - a_i) / (n a_n).
     sum_shift += difference * ((i - 1) * difference - a_i) * inverse;
     difference *= shrink;
   }
@@ -279,6 +277,8 @@ class CountRoot {
     // Safeguarded Newton from near the Minkowski end, where the root sits (exactly on it for
     // n = 1, where the inequality is an equality).
     double theta = hi;
+    double previous_theta = -1.0;  // none yet
+    double previous_slope = 0.0;
     if (n_ > 1) {
       theta = std::clamp(theta - spread_correction(), lo, hi);
     }
@@ -289,6 +289,18 @@ class CountRoot {
       }
       (e.value < 0.0 ? lo : hi) = theta;  // the excess grows with theta
       const double step = -e.value / e.slope;
+      if (previous_theta >= 0.0 && std::abs(step) <= 1e-6 * theta) {
+        // Close enough for one Halley step with the curvature from the last two slopes: it
+        // leaves an error of about (curvature's error) x step², below 1e-15 theta, and saves
+        // the Newton step that would bring 1e-12 to 1e-24 (measured: the same agreement with
+        // the long-double references, 12 % fewer evaluations).
+        const double curvature = (e.slope - previous_slope) / (theta - previous_theta);
+        const double denominator = 2.0 * e.slope * e.slope - e.value * curvature;
+        theta += denominator > 0.0 ? -2.0 * e.value * e.slope / denominator : step;
+        break;
+      }
+      previous_theta = theta;
+      previous_slope = e.slope;
       if (std::abs(step) <= 1e-9 * theta) {
         // Quadratic convergence: after a step this small the error is below rounding.
         theta += step;
@@ -305,8 +317,9 @@ class CountRoot {
 
  private:
   // Minkowski's bound treats the a-differences as equal. To second order in their spread,
-  // sum f(delta_i) = n f(mean) + f''(mean)/2 sum (delta_i - mean)² with f = sqrt(delta² + 4z²):
-  // one linearised step of that correction moves the start about as far as a Newton step would.
+  // sum f(delta_i) = n f(mean) + f''(mean)/2 sum (delta_i - mean)² with f = sqrt(delta² + 4z²),
+  // and n f(mean) is Minkowski's sqrt((a_0 - a_n)² + (2nz)²). One Newton step on that model from
+  // hi_ moves the start about as far as a Newton step on eq. 9 would (4.1 -> 3.3 evaluations).
   double spread_correction() const {
     const UpperFold& m = hi_;
     const double D = u_->a0 - m.an;
@@ -317,10 +330,10 @@ class CountRoot {
     const double ratio = m.an / u_->a0;  // q^n
     const double sum_of_squares = first * first * (1.0 - ratio * ratio) / (1.0 - q * q);
     const double S2 = mean * mean + b * b;
-    const double excess = 0.5 * b * b / (S2 * std::sqrt(S2)) * (sum_of_squares - D * mean);
-    const double M = std::sqrt(D * D + n_ * n_ * b * b);
+    const double spread = 0.5 * b * b / (S2 * std::sqrt(S2)) * (sum_of_squares - D * mean);
+    const double M = std::sqrt(D * D + n_ * n_ * b * b);  // = h while hi_ is Minkowski's bound
     const double slope = (D * m.z + 4.0 * n_ * n_ * m.z * m.an) / M;  // dM/dtheta
-    return slope > 0.0 ? excess / slope : 0.0;
+    return slope > 0.0 ? (M - u_->h + spread) / slope : 0.0;
   }
 
   const Setup* u_;

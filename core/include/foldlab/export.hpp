@@ -3,12 +3,21 @@
 #pragma once
 
 #include <string>
+#include <vector>
+
+#include <Eigen/Core>
 
 #include "foldlab/geometry.hpp"
 
 namespace foldlab {
 
-// Wavefront OBJ: v (mm), vn, f with v//vn; y points down as in the model (see the header comment).
+// Texture coordinates of every grid vertex from its place on the flat cloth, so that a print on the
+// fabric follows the folds: u = (X - X_min) / (X_max - X_min), v = Y / Y_max over the grid (v = 0
+// at the upper edge). A coordinate whose range over the grid has zero length is 0.
+std::vector<Eigen::Vector2f> texture_coordinates(const DeformedGrid& grid);
+
+// Wavefront OBJ: v (mm), vt (texture_coordinates), vn, f with v/vt/vn; y points down as in the
+// model (see the header comment).
 std::string mesh_to_obj(const DeformedGrid& grid, const std::string& title);
 
 // CSV with a header: line,sign,x_mm,y_mm,z_mm; one row per sampled point.

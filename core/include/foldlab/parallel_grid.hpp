@@ -9,8 +9,8 @@
 namespace foldlab {
 
 // threads <= 0 means std::thread::hardware_concurrency(). The grid's rows are split into one
-// band per thread; below 64 x 64 vertices one thread is used (starting threads costs more than it
-// saves there).
+// band per thread; below 128 x 128 vertices one thread is used (starting threads costs more than
+// it saves there).
 DeformedGrid deformed_grid_parallel(const Solution& s, const Parameters& p, int nx, int ny,
                                     int threads = 0);
 

@@ -53,7 +53,10 @@ struct MethodStress {
   double max_residual_height = 0.0;
   int max_n = 0;
   double seconds = 0.0;  // total solve time
+  // The slowest case, by the best of three timings of the slowest few (a busy machine can stall
+  // any single solve).
   StressCase slowest;
+  std::vector<StressCase> slow_candidates;
 };
 
 struct StressReport {
