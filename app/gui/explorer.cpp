@@ -872,11 +872,17 @@ void Explorer::equations_tab() {
                      p.fabric.youngs_modulus_MPa, t, p.fabric.weight_N_per_mm2, p.hanging.height_mm,
                      s.span_mm);
   ImGui::Text("  = %.5g", s.stress_ratio);
+  // A calibrated eq. 7 uses s^p (p = 1 is the paper's form).
+  const double exponent = p.model.stress_exponent_p;
+  const double s_used = exponent == 1.0 ? s.stress_ratio : std::pow(s.stress_ratio, exponent);
+  if (exponent != 1.0) {
+    ImGui::TextColored(kNoteText, "calibrated form: s^p = %.5g^%.3g = %.5g", s.stress_ratio,
+                       exponent, s_used);
+  }
   if (s.Q7) {
     const double q = *s.Q7;
-    ImGui::Text("(Q7 - 1)² = s Q7 (Q7 + 1)  ->  Q7 = %.5f", q);
-    ImGui::TextColored(kDimText, "  check: %.6g = %.6g", (q - 1) * (q - 1),
-                       s.stress_ratio * q * (q + 1));
+    ImGui::Text("(Q7 - 1)² = %s Q7 (Q7 + 1)  ->  Q7 = %.5f", exponent == 1.0 ? "s" : "s^p", q);
+    ImGui::TextColored(kDimText, "  check: %.6g = %.6g", (q - 1) * (q - 1), s_used * q * (q + 1));
   } else {
     ImGui::TextColored(kErrorText, "s >= 1: no root; at most one fold.");
   }
