@@ -52,6 +52,8 @@ class Explorer {
   void notify(const std::string& message, bool is_error);
   // True while background work (the regime map) is still filling in what the window shows.
   bool busy() const;
+  // The last finished regime map's wall time in ms (0 before one finishes).
+  double regime_map_ms() const { return regime_map_panel_.last_map_ms(); }
 
  private:
   void parameters_panel();

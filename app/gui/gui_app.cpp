@@ -165,6 +165,7 @@ int run_frames(Surface& surface, const GuiRunOptions& options, bool interactive)
         {"grid", std::to_string(explorer.scene().grid_nx()) + "x" +
                      std::to_string(explorer.scene().grid_ny())},
         {"animate", options.animate_key},
+        {"regime_map_ms", explorer.regime_map_ms()},
         {"stats", scene_stats_to_json(explorer.scene())},
         {"solution", solution_to_json(explorer.scene().solution(), explorer.scene().parameters())},
     };
