@@ -75,7 +75,7 @@ Command add_bench_command(CLI::App& app) {
   command->add_option("--svg", options->svg_path, "also write the run-time-against-error plot");
   command->add_flag("--no-pipeline", options->no_pipeline, "skip the fold line and grid timings");
   return [options] {
-    try {
+    return guarded([&] {
       std::vector<BenchmarkCase> cases = realistic_cases(options->cases);
       int table_rows = 0;
       if (const std::filesystem::path dir = find_presets_dir(); !dir.empty()) {
@@ -226,13 +226,7 @@ Command add_bench_command(CLI::App& app) {
         }
       }
       return kExitOk;
-    } catch (const PresetError& e) {
-      std::cerr << "foldlab: " << e.what() << "\n";
-      return kExitInvalidInput;
-    } catch (const std::exception& e) {
-      std::cerr << "foldlab: " << e.what() << "\n";
-      return kExitInternal;
-    }
+    });
   };
 }
 

@@ -317,7 +317,7 @@ Command add_calibrate_command(CLI::App& app) {
   command->add_flag("--no-held-out", options->no_held_out,
                     "skip leave-one-out and group splits (the in-sample fit only)");
   return [options] {
-    try {
+    return guarded([&] {
       const Preset base = resolve_inputs(options->inputs);
       MeasurementSet data;
       try {
@@ -354,16 +354,7 @@ Command add_calibrate_command(CLI::App& app) {
         std::cerr << "foldlab: wrote " << options->save_preset_path << "\n";
       }
       return kExitOk;
-    } catch (const InputError& e) {
-      std::cerr << "foldlab: invalid input:\n" << e.what() << "\n";
-      return kExitInvalidInput;
-    } catch (const PresetError& e) {
-      std::cerr << "foldlab: " << e.what() << "\n";
-      return kExitInternal;
-    } catch (const std::exception& e) {
-      std::cerr << "foldlab: internal error: " << e.what() << "\n";
-      return kExitInternal;
-    }
+    });
   };
 }
 

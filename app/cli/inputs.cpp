@@ -53,6 +53,9 @@ int guarded(const std::function<int()>& body) {
   } catch (const InputError& e) {
     std::cerr << "foldlab: invalid input:\n" << e.what() << "\n";
     return kExitInvalidInput;
+  } catch (const PresetError& e) {
+    std::cerr << "foldlab: invalid input:\n" << e.what() << "\n";
+    return kExitInvalidInput;
   } catch (const EnvironmentError& e) {
     std::cerr << "foldlab: " << e.what() << "\n";
     return kExitInternal;

@@ -43,7 +43,7 @@ Preset resolve_inputs(const InputOptions& options);
 // --preset, --set and --method, for every command that solves.
 void add_input_options(CLI::App& command, InputOptions& options);
 
-// Runs a command's body: InputError gives exit 2, EnvironmentError and WriteError exit 1 with
+// Runs a command's body: InputError and PresetError give exit 2, EnvironmentError and WriteError exit 1 with
 // their message, anything else exit 1 as an internal error; messages go to stderr.
 int guarded(const std::function<int()>& body);
 

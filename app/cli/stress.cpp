@@ -30,7 +30,7 @@ Command add_stress_command(CLI::App& app) {
       ->check(CLI::Range(0, 256));
   command->add_flag("--json", options->json, "print one JSON object instead of a table");
   return [options] {
-    try {
+    return guarded([&] {
       StressOptions o;
       o.samples = options->samples;
       o.seed = options->seed;
@@ -42,10 +42,7 @@ Command add_stress_command(CLI::App& app) {
         std::cout << stress_table(report);
       }
       return report.passed() ? kExitOk : kExitInternal;
-    } catch (const std::exception& e) {
-      std::cerr << "foldlab: internal error: " << e.what() << "\n";
-      return kExitInternal;
-    }
+    });
   };
 }
 

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "foldlab/benchmark_cases.hpp"
+#include "text_format.hpp"
 
 namespace foldlab {
 namespace {
@@ -14,33 +15,8 @@ namespace {
 // the long-double reference, and log axes have no 0.
 constexpr double kErrorFloor = 1e-16;
 
-std::string escape(const std::string& text) {
-  std::string out;
-  for (char c : text) {
-    switch (c) {
-      case '&':
-        out += "&amp;";
-        break;
-      case '<':
-        out += "&lt;";
-        break;
-      case '>':
-        out += "&gt;";
-        break;
-      case '"':
-        out += "&quot;";
-        break;
-      default:
-        out += c;
-    }
-  }
-  return out;
-}
-
 std::string format(const char* pattern, double a, double b = 0, double c = 0, double d = 0) {
-  char buffer[256];
-  std::snprintf(buffer, sizeof buffer, pattern, a, b, c, d);
-  return buffer;
+  return detail::printf_string(pattern, a, b, c, d);
 }
 
 // 10^k as SVG text with a raised exponent.
@@ -106,7 +82,8 @@ std::string benchmark_svg(const std::vector<BenchmarkRow>& rows, const std::stri
   svg += "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
   svg += format("<text x=\"%.0f\" y=\"28\" font-size=\"17\" font-weight=\"bold\">", kLeft) +
          "FoldLab: run time against error of z_max</text>\n";
-  svg += format("<text x=\"%.0f\" y=\"50\" fill=\"#555\">", kLeft) + escape(subtitle) + "</text>\n";
+  svg += format("<text x=\"%.0f\" y=\"50\" fill=\"#555\">", kLeft) + detail::xml_escape(subtitle) +
+         "</text>\n";
 
   // Decade grid and labels.
   for (int k = static_cast<int>(x.lo_log); k <= static_cast<int>(x.hi_log); ++k) {
@@ -165,7 +142,7 @@ std::string benchmark_svg(const std::vector<BenchmarkRow>& rows, const std::stri
         format(" fill-opacity=\"%.2f\" stroke=\"#000\" stroke-width=\"%.1f\"",
                r.method.method == Method::exact ? 1.0 : opacity, r.pareto ? 2.0 : 0.5);
     const std::string title =
-        "<title>" + escape(r.method.name) +
+        "<title>" + detail::xml_escape(r.method.name) +
         format(": %.0f ns, z_max error %.2g", r.timing.median_ns, r.accuracy.median_z_error) +
         "</title>";
     if (r.method.method == Method::exact) {
@@ -185,15 +162,15 @@ std::string benchmark_svg(const std::vector<BenchmarkRow>& rows, const std::stri
     const double px = x.at(r->timing.median_ns);
     const double py = y.at(shown_error(*r));
     svg += format("<text x=\"%.1f\" y=\"%.1f\" font-size=\"11\">", px + 11, py + 4) +
-           escape(r->method.name) + "</text>\n";
+           detail::xml_escape(r->method.name) + "</text>\n";
   }
 
   // Legend.
   const double lx = kWidth - kRight + 20;
   double ly = kTop + 10;
   auto legend_line = [&](const std::string& marker, const std::string& text) {
-    svg += marker + format("<text x=\"%.1f\" y=\"%.1f\">", lx + 18, ly + 4) + escape(text) +
-           "</text>\n";
+    svg += marker + format("<text x=\"%.1f\" y=\"%.1f\">", lx + 18, ly + 4) +
+           detail::xml_escape(text) + "</text>\n";
     ly += 22;
   };
   legend_line(format("<circle cx=\"%.1f\" cy=\"%.1f\" r=\"6\" fill=\"#2166ac\"/>", lx, ly),

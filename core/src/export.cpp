@@ -1,5 +1,7 @@
 #include "foldlab/export.hpp"
 
+#include "text_format.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -7,36 +9,8 @@
 namespace foldlab {
 namespace {
 
-template <class... Args>
-std::string printf_string(const char* format, Args... args) {
-  const int size = std::snprintf(nullptr, 0, format, args...);
-  std::string out(static_cast<std::size_t>(std::max(0, size)), '\0');
-  std::snprintf(out.data(), out.size() + 1, format, args...);
-  return out;
-}
-
-std::string xml_escape(const std::string& text) {
-  std::string out;
-  for (char c : text) {
-    switch (c) {
-      case '&':
-        out += "&amp;";
-        break;
-      case '<':
-        out += "&lt;";
-        break;
-      case '>':
-        out += "&gt;";
-        break;
-      case '"':
-        out += "&quot;";
-        break;
-      default:
-        out += c;
-    }
-  }
-  return out;
-}
+using detail::printf_string;
+using detail::xml_escape;
 
 // A "nice" tick step (1, 2 or 5 times a power of ten) giving about `target` ticks over `range`.
 double tick_step(double range, int target) {

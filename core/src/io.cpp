@@ -7,9 +7,28 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <fstream>
+#include <sstream>
 #include <string>
 
 namespace foldlab {
+
+std::string read_text_file(const std::filesystem::path& path) {
+  std::error_code error;
+  if (std::filesystem::exists(path, error) && !std::filesystem::is_regular_file(path, error)) {
+    throw ReadError(path.string() + ": cannot open for reading: not a regular file");
+  }
+  std::ifstream in(path, std::ios::binary);
+  if (!in) {
+    throw ReadError(path.string() + ": cannot open for reading");
+  }
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (in.bad()) {
+    throw ReadError(path.string() + ": read error");
+  }
+  return text.str();
+}
 
 void write_file_atomically(const std::filesystem::path& path, std::string_view contents) {
   // Unique per process and per call, so concurrent saves of one path never share a temporary.

@@ -1,4 +1,5 @@
 #include "foldlab/measurements.hpp"
+#include "foldlab/io.hpp"
 
 #include <algorithm>
 #include <charconv>
@@ -515,20 +516,13 @@ MeasurementSet measurements_from_text(const std::string& text, const std::string
 }
 
 MeasurementSet load_measurements(const std::filesystem::path& path) {
-  std::error_code error;
-  if (std::filesystem::exists(path, error) && !std::filesystem::is_regular_file(path, error)) {
-    throw MeasurementError(path.string() + ": cannot open for reading: not a regular file");
+  std::string text;
+  try {
+    text = read_text_file(path);
+  } catch (const ReadError& e) {
+    throw MeasurementError(e.what());
   }
-  std::ifstream in(path, std::ios::binary);
-  if (!in) {
-    throw MeasurementError(path.string() + ": cannot open for reading");
-  }
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (in.bad()) {
-    throw MeasurementError(path.string() + ": read error");
-  }
-  return measurements_from_text(text.str(), path.string(), path.extension().string());
+  return measurements_from_text(text, path.string(), path.extension().string());
 }
 
 std::string measurements_to_csv(const MeasurementSet& set) {

@@ -330,20 +330,13 @@ json preset_to_json(const Preset& preset) {
 }
 
 Preset load_preset(const std::filesystem::path& path) {
-  std::error_code error;
-  if (std::filesystem::exists(path, error) && !std::filesystem::is_regular_file(path, error)) {
-    throw PresetError(path.string() + ": cannot open for reading: not a regular file");
+  std::string text;
+  try {
+    text = read_text_file(path);
+  } catch (const ReadError& e) {
+    throw PresetError(e.what());
   }
-  std::ifstream in(path, std::ios::binary);
-  if (!in) {
-    throw PresetError(path.string() + ": cannot open for reading");
-  }
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (in.bad()) {
-    throw PresetError(path.string() + ": read error");
-  }
-  return preset_from_text(text.str(), path.string());
+  return preset_from_text(text, path.string());
 }
 
 void save_preset(const Preset& preset, const std::filesystem::path& path) {

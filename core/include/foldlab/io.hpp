@@ -3,6 +3,7 @@
 
 #include <filesystem>
 #include <stdexcept>
+#include <string>
 #include <string_view>
 
 namespace foldlab {
@@ -11,6 +12,14 @@ class WriteError : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
 };
+
+class ReadError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// The whole file as text. Throws ReadError naming the path: absent, not a regular file, unreadable.
+std::string read_text_file(const std::filesystem::path& path);
 
 // Writes `contents` to a temporary file beside `path`, flushes it to disk and renames it over
 // `path`: readers see the old file or the new one, never a mix. Throws WriteError naming the path.
