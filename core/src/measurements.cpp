@@ -13,6 +13,7 @@
 
 #include "foldlab/settings.hpp"
 #include "foldlab/shape.hpp"
+#include "text_format.hpp"
 
 namespace foldlab {
 namespace {
@@ -207,13 +208,7 @@ class RowReader {
   std::vector<std::string>& problems_;
 };
 
-std::string join_lines(const std::vector<std::string>& lines) {
-  std::string out;
-  for (std::size_t i = 0; i < lines.size(); ++i) {
-    out += (i ? "\n" : "") + lines[i];
-  }
-  return out;
-}
+using detail::join_lines;
 
 std::string_view trim(std::string_view s) {
   const std::size_t first = s.find_first_not_of(" \t");

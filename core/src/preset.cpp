@@ -9,6 +9,7 @@
 
 #include "default_preset_text.hpp"
 #include "foldlab/io.hpp"
+#include "text_format.hpp"
 
 namespace foldlab {
 namespace {
@@ -150,13 +151,7 @@ class Reader {
   std::vector<std::string>& problems_;
 };
 
-std::string join_lines(const std::vector<std::string>& lines) {
-  std::string out;
-  for (std::size_t i = 0; i < lines.size(); ++i) {
-    out += (i ? "\n" : "") + lines[i];
-  }
-  return out;
-}
+using detail::join_lines;
 
 }  // namespace
 

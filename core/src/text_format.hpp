@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <string>
+#include <vector>
 
 namespace foldlab::detail {
 
@@ -36,6 +37,18 @@ inline std::string xml_escape(const std::string& text) {
       default:
         out += c;
     }
+  }
+  return out;
+}
+
+// Lines joined with newlines, none after the last.
+inline std::string join_lines(const std::vector<std::string>& lines) {
+  std::string out;
+  for (std::size_t i = 0; i < lines.size(); ++i) {
+    if (i > 0) {
+      out += '\n';
+    }
+    out += lines[i];
   }
   return out;
 }
