@@ -236,3 +236,28 @@ TEST(Shapes, RectangularClothHangsStraightBelowTheLowestFold) {
 
 }  // namespace
 }  // namespace foldlab
+
+namespace foldlab {
+namespace {
+
+TEST(Shapes, SupportPointsFollowTheShape) {
+  Shape strip;
+  strip.kind = ShapeKind::strip;
+  strip.supports = 4;
+  const std::vector<Eigen::Vector3d> on_strip = support_points(1300.0, strip);
+  ASSERT_EQ(on_strip.size(), 4u);
+  for (int k = 0; k < 4; ++k) {
+    EXPECT_NEAR(on_strip[static_cast<std::size_t>(k)].x(), (k - 1.5) * 1300.0, 1e-9);
+    EXPECT_EQ(on_strip[static_cast<std::size_t>(k)].y(), 0.0);
+  }
+  Shape inclined;
+  inclined.kind = ShapeKind::inclined;
+  inclined.incline_deg = 30.0;
+  const std::vector<Eigen::Vector3d> raised = support_points(1300.0, inclined);
+  ASSERT_EQ(raised.size(), 2u);
+  EXPECT_NEAR(raised[0].y(), 0.0, 1e-9);
+  EXPECT_NEAR(raised[1].y(), -1300.0 / std::sqrt(3.0), 1e-9);  // tan 30° = 1/sqrt(3)
+}
+
+}  // namespace
+}  // namespace foldlab

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -187,7 +188,8 @@ struct ClothRenderer::Gl {
   std::vector<GLsizei> line_counts;
   GLuint decor_vao = 0, decor_vbo = 0;
   GLsizei ground_vertex_count = 0;  // GL_LINES, from 0
-  GLsizei support_first = 0;        // GL_POINTS, 2 of them
+  GLsizei support_first = 0;        // GL_POINTS, support_count of them
+  GLsizei support_count = 0;
   GLuint framebuffer = 0, colour_texture = 0, depth_buffer = 0;
 };
 
@@ -313,7 +315,6 @@ void ClothRenderer::upload_fold_lines(Scene& scene, const ClothStyle& style) {
 void ClothRenderer::upload_decorations(Scene& scene) {
   const Solution& s = scene.solution();
   const Parameters& p = scene.parameters();
-  const float half_span = static_cast<float>(0.5 * s.span_mm);
   const float depth = static_cast<float>(
       (s.a_mm.empty() ? s.sag_amplitude_mm + p.hanging.height_mm : s.a_mm.front()) +
       0.05 * p.hanging.height_mm);
@@ -331,19 +332,25 @@ void ClothRenderer::upload_decorations(Scene& scene) {
   gl_->ground_vertex_count = static_cast<GLsizei>(vertices.size());
   gl_->support_first = static_cast<GLsizei>(vertices.size());
   const Eigen::Vector3f support_colour(0.95f, 0.85f, 0.25f);
-  vertices.push_back({{-half_span, 0.0f, 0.0f}, support_colour});
-  vertices.push_back({{half_span, 0.0f, 0.0f}, support_colour});
+  for (const Eigen::Vector3d& support : support_points(s.span_mm, p.shape)) {
+    vertices.push_back({to_world(support.cast<float>()), support_colour});
+  }
+  gl_->support_count = static_cast<GLsizei>(vertices.size()) - gl_->support_first;
   glBindBuffer(GL_ARRAY_BUFFER, gl_->decor_vbo);
   glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(vertices.size() * sizeof(Vertex)),
                vertices.data(), GL_DYNAMIC_DRAW);
 }
 
+// The grid's bounding box in world coordinates, whatever the shape.
 void ClothRenderer::bounds(Scene& scene, Eigen::Vector3f& centre, float& radius_mm) {
-  const Solution& s = scene.solution();
-  const Parameters& p = scene.parameters();
-  const double depth = s.a_mm.empty() ? s.sag_amplitude_mm + p.hanging.height_mm : s.a_mm.front();
-  centre = Eigen::Vector3f(0.0f, static_cast<float>(-0.5 * depth), 0.0f);
-  radius_mm = static_cast<float>(0.5 * std::hypot(std::max(s.span_mm, 1.0), depth));
+  Eigen::Vector3f lo = Eigen::Vector3f::Constant(std::numeric_limits<float>::max());
+  Eigen::Vector3f hi = -lo;
+  for (const Eigen::Vector3f& v : scene.grid().positions_mm) {
+    lo = lo.cwiseMin(to_world(v));
+    hi = hi.cwiseMax(to_world(v));
+  }
+  centre = 0.5f * (lo + hi);
+  radius_mm = std::max(1.0f, 0.5f * (hi - lo).norm());
 }
 
 void ClothRenderer::set_breeze_uniforms(unsigned program, Scene& scene, const ClothStyle& style) {
@@ -378,9 +385,10 @@ unsigned ClothRenderer::render(Scene& scene, const OrbitCamera& camera, FrameSiz
       fold_line_version_ = scene.version(Stage::fold_lines);
     }
   }
-  if (scene.version(Stage::solution) != decoration_version_) {
+  // The supports and the ground follow the solution and the shape: both re-make the grid.
+  if (scene.version(Stage::grid) != decoration_version_) {
     upload_decorations(scene);
-    decoration_version_ = scene.version(Stage::solution);
+    decoration_version_ = scene.version(Stage::grid);
   }
 
   glBindFramebuffer(GL_FRAMEBUFFER, gl_->framebuffer);
@@ -439,7 +447,7 @@ unsigned ClothRenderer::render(Scene& scene, const OrbitCamera& camera, FrameSiz
   glEnable(GL_PROGRAM_POINT_SIZE);
   glUniform1f(glGetUniformLocation(gl_->line_program, "point_size"), 12.0f);
   glDisable(GL_DEPTH_TEST);  // the supports are always visible
-  glDrawArrays(GL_POINTS, gl_->support_first, 2);
+  glDrawArrays(GL_POINTS, gl_->support_first, gl_->support_count);
   glDisable(GL_PROGRAM_POINT_SIZE);
 
   glBindVertexArray(0);

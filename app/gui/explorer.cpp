@@ -649,8 +649,12 @@ void Explorer::plot_panel() {
       fold_plot_.line("lower edge of the flat cloth", outline_xs_, outline_ys_,
                       IM_COL32(170, 170, 180, 255), 1.2f);
     }
-    const double supports_x[] = {-0.5 * s.span_mm, 0.5 * s.span_mm};
-    const double supports_y[] = {0.0, 0.0};
+    std::vector<double> supports_x;
+    std::vector<double> supports_y;
+    for (const Eigen::Vector3d& support : support_points(s.span_mm, scene_.parameters().shape)) {
+      supports_x.push_back(support.x());
+      supports_y.push_back(support.y());
+    }
     fold_plot_.markers("supports", supports_x, supports_y, IM_COL32(240, 200, 60, 255),
                        MarkerShape::Triangle, 6.0f);
     const std::optional<PlotHit> hit = fold_plot_.end();
@@ -720,7 +724,7 @@ void Explorer::view3d_panel() {
     camera_user_moved_ = false;
   }
   if (reset || !camera_framed_ ||
-      (!camera_user_moved_ && camera_solution_version_ != scene_.version(Stage::solution))) {
+      (!camera_user_moved_ && camera_solution_version_ != scene_.version(Stage::grid))) {
     Eigen::Vector3f centre;
     float radius = 1.0f;
     ClothRenderer::bounds(scene_, centre, radius);
@@ -731,7 +735,7 @@ void Explorer::view3d_panel() {
       camera_.pitch_rad = previous.pitch_rad;
     }
     camera_framed_ = true;
-    camera_solution_version_ = scene_.version(Stage::solution);
+    camera_solution_version_ = scene_.version(Stage::grid);
   }
   const ImVec2 origin = ImGui::GetCursorScreenPos();
   ImGui::InvisibleButton("view",

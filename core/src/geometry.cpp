@@ -59,6 +59,17 @@ Eigen::Vector3d place_on_shape(const Eigen::Vector3d& span_point, int span, doub
   return {x, y, span_point.z()};
 }
 
+std::vector<Eigen::Vector3d> support_points(double span_mm, const Shape& shape) {
+  std::vector<Eigen::Vector3d> points;
+  for (int span = 0; span < shape.span_count(); ++span) {
+    if (span == 0) {
+      points.push_back(place_on_shape({-0.5 * span_mm, 0.0, 0.0}, span, span_mm, shape));
+    }
+    points.push_back(place_on_shape({0.5 * span_mm, 0.0, 0.0}, span, span_mm, shape));
+  }
+  return points;
+}
+
 FoldLines fold_lines(const Solution& s, const Shape& shape, int samples, int max_lines) {
   FoldLines out;
   if (s.a_mm.empty()) {

@@ -46,6 +46,9 @@ inline FoldLines fold_lines(const Solution& s, int samples, int max_lines = kMax
 Eigen::Vector3d place_on_shape(const Eigen::Vector3d& span_point, int span, double span_mm,
                                const Shape& shape);
 
+// Where the supports are once moved (k of them on a strip, the right one raised when inclined).
+std::vector<Eigen::Vector3d> support_points(double span_mm, const Shape& shape);
+
 // The deformed cloth: an nx x ny grid over the flat cloth (X across, Y down the fibre), row-major
 // with X fastest, two triangles per cell, and per-vertex normals (area weighted, unit length).
 struct DeformedGrid {
