@@ -315,9 +315,8 @@ void ClothRenderer::upload_fold_lines(Scene& scene, const ClothStyle& style) {
 void ClothRenderer::upload_decorations(Scene& scene) {
   const Solution& s = scene.solution();
   const Parameters& p = scene.parameters();
-  const float depth = static_cast<float>(
-      (s.a_mm.empty() ? s.sag_amplitude_mm + p.hanging.height_mm : s.a_mm.front()) +
-      0.05 * p.hanging.height_mm);
+  const float depth =
+      static_cast<float>(lowest_point_mm(s, p.hanging.height_mm) + 0.05 * p.hanging.height_mm);
   const float extent =
       static_cast<float>(0.75 * std::max(p.hanging.length_mm, p.hanging.height_mm));
   const float spacing = std::pow(10.0f, std::floor(std::log10(extent / 2.0f)));
@@ -354,9 +353,8 @@ void ClothRenderer::bounds(Scene& scene, Eigen::Vector3f& centre, float& radius_
 }
 
 void ClothRenderer::set_breeze_uniforms(unsigned program, Scene& scene, const ClothStyle& style) {
-  const Solution& s = scene.solution();
-  const float depth = static_cast<float>(
-      s.a_mm.empty() ? s.sag_amplitude_mm + scene.parameters().hanging.height_mm : s.a_mm.front());
+  const float depth =
+      static_cast<float>(lowest_point_mm(scene.solution(), scene.parameters().hanging.height_mm));
   glUniform1f(glGetUniformLocation(program, "breeze_amplitude_mm"),
               style.breeze ? style.breeze_mm : 0.0f);
   glUniform1f(glGetUniformLocation(program, "breeze_depth_mm"), depth);

@@ -207,10 +207,8 @@ DeformedGrid Explorer::current_frame_mesh() {
   scene_.normals();
   DeformedGrid grid = scene_.grid();
   if (style_.breeze) {
-    const Solution& s = scene_.solution();
     const float depth = static_cast<float>(
-        s.a_mm.empty() ? s.sag_amplitude_mm + scene_.parameters().hanging.height_mm
-                       : s.a_mm.front());
+        lowest_point_mm(scene_.solution(), scene_.parameters().hanging.height_mm));
     for (Eigen::Vector3f& v : grid.positions_mm) {
       v += breeze_offset(v, depth, style_.breeze_mm, style_.time_s);
     }
@@ -639,7 +637,7 @@ void Explorer::plot_panel() {
         plot_outline_version_ = scene_.version(Stage::solution);
         outline_xs_.clear();
         outline_ys_.clear();
-        const double depth = s.sag_amplitude_mm + scene_.parameters().hanging.height_mm;
+        const double depth = lowest_point_mm(s, scene_.parameters().hanging.height_mm);
         for (int k = 0; k <= 100; ++k) {
           const double x = s.span_mm * (k / 100.0 - 0.5);
           outline_xs_.push_back(x);

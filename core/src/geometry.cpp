@@ -59,6 +59,10 @@ Eigen::Vector3d place_on_shape(const Eigen::Vector3d& span_point, int span, doub
   return {x, y, span_point.z()};
 }
 
+double lowest_point_mm(const Solution& s, double height_mm) {
+  return s.a_mm.empty() ? s.sag_amplitude_mm + height_mm : s.a_mm.front();
+}
+
 std::vector<Eigen::Vector3d> support_points(double span_mm, const Shape& shape) {
   std::vector<Eigen::Vector3d> points;
   for (int span = 0; span < shape.span_count(); ++span) {

@@ -117,12 +117,43 @@ std::optional<double> parse_number(std::string_view text) {
   return value;
 }
 
+static const Binding* find_binding(std::string_view key) {
+  for (const Binding& b : bindings()) {
+    if (b.key.key == key) {
+      return &b;
+    }
+  }
+  return nullptr;
+}
+
+bool set_numeric_setting(Parameters& p, std::string_view key, double value) {
+  const Binding* binding = find_binding(key);
+  if (binding != nullptr && binding->kind == Kind::number) {
+    binding->number(p) = value;
+    return true;
+  }
+  if (binding != nullptr && binding->kind == Kind::stiffness_K) {
+    set_stiffness_constant_K(p, value);
+    return true;
+  }
+  return false;
+}
+
+std::optional<double> numeric_setting(const Parameters& p, std::string_view key) {
+  const Binding* binding = find_binding(key);
+  if (binding != nullptr && binding->kind == Kind::number) {
+    // The table's accessors take a mutable Parameters; this one only reads.
+    return binding->number(const_cast<Parameters&>(p));
+  }
+  if (binding != nullptr && binding->kind == Kind::stiffness_K) {
+    return stiffness_constant_K(p);
+  }
+  return std::nullopt;
+}
+
 std::optional<std::string> apply_setting(Parameters& p, std::string_view key,
                                          std::string_view value) {
-  const Binding* binding = nullptr;
-  for (const Binding& b : bindings()) {
-    binding = b.key.key == key ? &b : binding;
-  }
+  const Binding* binding = find_binding(key);
   if (binding == nullptr) {
     std::string known;
     for (const SettingKey& k : setting_keys()) {

@@ -1,5 +1,6 @@
 #include "foldlab/sweep.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "foldlab/settings.hpp"
@@ -20,47 +21,15 @@ bool natural_log_scale(const std::string& key) {
   return key == "t" || key == "E" || key == "w" || key == "K";
 }
 
+// The sweepable keys only; the key -> field table itself lives in settings.cpp.
 bool set_number(Parameters& p, const std::string& key, double value) {
-  if (key == "t") {
-    p.fabric.thickness_mm = value;
-  } else if (key == "E") {
-    p.fabric.youngs_modulus_MPa = value;
-  } else if (key == "w") {
-    p.fabric.weight_N_per_mm2 = value;
-  } else if (key == "nu") {
-    p.fabric.poisson_ratio = value;
-  } else if (key == "h") {
-    p.hanging.height_mm = value;
-  } else if (key == "L") {
-    p.hanging.length_mm = value;
-  } else if (key == "d") {
-    p.hanging.support_displacement_mm = value;
-  } else if (key == "K") {
-    set_stiffness_constant_K(p, value);
-  } else {
-    return false;
-  }
-  return true;
+  const std::vector<std::string>& keys = sweepable_keys();
+  return std::find(keys.begin(), keys.end(), key) != keys.end() &&
+         set_numeric_setting(p, key, value);
 }
 
 double get_number(const Parameters& p, const std::string& key) {
-  if (key == "t")
-    return p.fabric.thickness_mm;
-  if (key == "E")
-    return p.fabric.youngs_modulus_MPa;
-  if (key == "w")
-    return p.fabric.weight_N_per_mm2;
-  if (key == "nu")
-    return p.fabric.poisson_ratio;
-  if (key == "h")
-    return p.hanging.height_mm;
-  if (key == "L")
-    return p.hanging.length_mm;
-  if (key == "d")
-    return p.hanging.support_displacement_mm;
-  if (key == "K")
-    return stiffness_constant_K(p);
-  return 0.0;
+  return numeric_setting(p, key).value_or(0.0);
 }
 
 std::optional<std::string> check_axis(const SweepAxis& axis) {

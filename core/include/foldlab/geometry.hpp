@@ -46,6 +46,11 @@ inline FoldLines fold_lines(const Solution& s, int samples, int max_lines = kMax
 Eigen::Vector3d place_on_shape(const Eigen::Vector3d& span_point, int span, double span_mm,
                                const Shape& shape);
 
+// How far below the supports' line the cloth reaches at the centre (mm): a_0, or A + h when there
+// are no folds (no slack, short cloth). The 3D view's ground, the breeze's depth and the flat
+// cloth's outline all start from it.
+double lowest_point_mm(const Solution& s, double height_mm);
+
 // Where the supports are once moved (k of them on a strip, the right one raised when inclined).
 std::vector<Eigen::Vector3d> support_points(double span_mm, const Shape& shape);
 

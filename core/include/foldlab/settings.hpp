@@ -26,6 +26,11 @@ const std::vector<SettingKey>& setting_keys();
 std::optional<std::string> apply_setting(Parameters& p, std::string_view key,
                                          std::string_view value);
 
+// A numeric input by its key without going through text (K sets c at the current nu, as above).
+// False, or nullopt, for keys that do not name a number (method, shape, whole numbers, ...).
+bool set_numeric_setting(Parameters& p, std::string_view key, double value);
+std::optional<double> numeric_setting(const Parameters& p, std::string_view key);
+
 // Applies "KEY=VALUE" assignments in order, except that every K comes after all the others
 // (so `--set K=30 --set nu=0.2` means K = 30 at nu = 0.2). Returns every error at once.
 std::vector<std::string> apply_assignments(Parameters& p,
