@@ -1,31 +1,43 @@
-// foldlab: the explorer GUI and the headless commands that scripts and tests rely on.
+// foldlab: parses the command line and hands over to the CLI's or the explorer's command.
 #include <cstdlib>
 #include <iostream>
 #include <map>
 
 #include <CLI/CLI.hpp>
 
-#include "cli/commands.hpp"
-#include "cli/inputs.hpp"
+#include "app/cli/commands.hpp"
+#ifdef FOLDLAB_WITH_GUI
+#include "app/gui/commands.hpp"
+#endif
+
+namespace {
+
+bool display_available() {
+  const char* x11 = std::getenv("DISPLAY");
+  const char* wayland = std::getenv("WAYLAND_DISPLAY");
+  return (x11 != nullptr && *x11 != '\0') || (wayland != nullptr && *wayland != '\0');
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
-  using namespace foldlab::cli;
+  using namespace foldlab;
   CLI::App app{
       "FoldLab: how a vertically hung fabric wrinkles after it buckles (tension field theory, "
       "A. Conci). Units: mm, MPa, N/mm².\nWith no command: opens the explorer where a display "
       "exists, else solves the default preset and prints it."};
   app.set_help_all_flag("--help-all", "help for every command");
-  std::map<std::string, Command> commands;
-  commands["solve"] = add_solve_command(app);
-  commands["export"] = add_export_command(app);
-  commands["compare"] = add_compare_command(app);
-  commands["sweep"] = add_sweep_command(app);
-  commands["calibrate"] = add_calibrate_command(app);
-  commands["bench"] = add_bench_command(app);
-  commands["stress"] = add_stress_command(app);
+  std::map<std::string, app::Command> commands;
+  commands["solve"] = cli::add_solve_command(app);
+  commands["export"] = cli::add_export_command(app);
+  commands["compare"] = cli::add_compare_command(app);
+  commands["sweep"] = cli::add_sweep_command(app);
+  commands["calibrate"] = cli::add_calibrate_command(app);
+  commands["bench"] = cli::add_bench_command(app);
+  commands["stress"] = cli::add_stress_command(app);
 #ifdef FOLDLAB_WITH_GUI
-  commands["gui"] = add_gui_command(app);
-  commands["render"] = add_render_command(app);
+  commands["gui"] = gui::add_gui_command(app);
+  commands["render"] = gui::add_render_command(app);
 #endif
   app.require_subcommand(0, 1);
   try {
@@ -36,16 +48,19 @@ int main(int argc, char** argv) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
     app.exit(e);  // prints the message
-    return kExitInvalidInput;
+    return app::kExitInvalidInput;
   }
   for (CLI::App* sub : app.get_subcommands()) {
     return commands.at(sub->get_name())();
   }
 #ifdef FOLDLAB_WITH_GUI
-  const char* display = std::getenv("DISPLAY");
-  const char* wayland = std::getenv("WAYLAND_DISPLAY");
-  return run_default((display && *display) || (wayland && *wayland));
-#else
-  return run_default_headless();
+  if (display_available()) {
+    const int status = gui::run_default_window();
+    if (status != app::kExitInternal) {
+      return status;
+    }
+    std::cerr << "foldlab: no window could be opened; printing the default preset instead\n";
+  }
 #endif
+  return cli::run_default_headless();
 }

@@ -5,10 +5,10 @@
 
 #include <benchmark/benchmark.h>
 
-#include "foldlab/benchmark_cases.hpp"
-#include "foldlab/equations.hpp"
-#include "foldlab/geometry.hpp"
-#include "foldlab/parallel_grid.hpp"
+#include "core/geometry/geometry.hpp"
+#include "core/geometry/parallel_grid.hpp"
+#include "core/model/equations.hpp"
+#include "core/tools/benchmark_cases.hpp"
 
 namespace foldlab {
 namespace {

@@ -10,11 +10,11 @@
 
 #include <nlohmann/json.hpp>
 
-#include "foldlab/benchmark_cases.hpp"
-#include "foldlab/equations.hpp"
-#include "foldlab/parallel_grid.hpp"
-#include "foldlab/preset.hpp"
-#include "foldlab/settings.hpp"
+#include "core/geometry/parallel_grid.hpp"
+#include "core/io/preset.hpp"
+#include "core/model/equations.hpp"
+#include "core/model/settings.hpp"
+#include "core/tools/benchmark_cases.hpp"
 
 namespace foldlab {
 namespace {

@@ -13,12 +13,12 @@
 
 #include <nlohmann/json.hpp>
 
-#include "foldlab/calibration.hpp"
-#include "foldlab/equations.hpp"
-#include "foldlab/measurements.hpp"
-#include "foldlab/preset.hpp"
-#include "foldlab/settings.hpp"
-#include "foldlab/solver.hpp"
+#include "core/analysis/calibration.hpp"
+#include "core/io/measurements.hpp"
+#include "core/io/preset.hpp"
+#include "core/model/equations.hpp"
+#include "core/model/settings.hpp"
+#include "core/model/solver.hpp"
 #include "process.hpp"
 #include "temp_dir.hpp"
 
@@ -643,7 +643,7 @@ TEST_F(CalibrationCli, MalformedDataIsInvalidInputNamingRowAndColumn) {
 
   const testing::RunResult p = run({"calibrate", "--data", kPaperCsv.string(), "--set", "p=0"});
   EXPECT_EQ(p.exit_status, 2);
-  EXPECT_TRUE(contains(p.err, "p = 0 must be in (0, 5]")) << p.err;
+  EXPECT_TRUE(contains(p.err, "p = 0 must be in [0.05, 5]")) << p.err;
 
   const testing::RunResult fit = run({"calibrate", "--data", kPaperCsv.string(), "--fit", "p"});
   EXPECT_EQ(fit.exit_status, 2);

@@ -4,7 +4,7 @@
 
 #include <gtest/gtest.h>
 
-#include "foldlab/equations.hpp"
+#include "core/model/equations.hpp"
 
 namespace foldlab {
 namespace {

@@ -17,10 +17,10 @@
 
 #include <tiny_gltf.h>
 
-#include "foldlab/export.hpp"
-#include "foldlab/geometry.hpp"
-#include "foldlab/gltf_export.hpp"
-#include "foldlab/solver.hpp"
+#include "core/geometry/geometry.hpp"
+#include "core/io/export.hpp"
+#include "core/io/gltf_export.hpp"
+#include "core/model/solver.hpp"
 
 namespace foldlab {
 namespace {

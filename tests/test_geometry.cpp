@@ -4,8 +4,8 @@
 
 #include <gtest/gtest.h>
 
-#include "foldlab/geometry.hpp"
-#include "foldlab/solver.hpp"
+#include "core/geometry/geometry.hpp"
+#include "core/model/solver.hpp"
 
 namespace foldlab {
 namespace {

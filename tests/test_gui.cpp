@@ -46,8 +46,8 @@ Image load_png(const fs::path& path) {
 
 // Pixels within `tolerance` (per channel) of a colour, inside the rectangle given as fractions of
 // the picture (the explorer's first-use layout is in fractions of the window).
-int count_colour(const Image& image, std::array<int, 3> colour, float x0, float y0, float x1,
-                 float y1, int tolerance = 24) {
+int count_colour(const Image& image, std::array<int, 3> colour, double x0, double y0, double x1,
+                 double y1, int tolerance = 24) {
   int count = 0;
   for (int y = static_cast<int>(y0 * image.height); y < static_cast<int>(y1 * image.height); ++y) {
     for (int x = static_cast<int>(x0 * image.width); x < static_cast<int>(x1 * image.width); ++x) {
@@ -70,14 +70,14 @@ double fraction_different(const Image& a, const Image& b) {
   for (std::size_t i = 0; i < a.rgb.size(); i += 3) {
     differ += a.rgb[i] != b.rgb[i] || a.rgb[i + 1] != b.rgb[i + 1] || a.rgb[i + 2] != b.rgb[i + 2];
   }
-  return static_cast<double>(differ) / (a.rgb.size() / 3);
+  return static_cast<double>(differ) / static_cast<double>(a.rgb.size() / 3);
 }
 
 // The fold-line colours of the plot (and of the paper: negative folds red).
 constexpr std::array<int, 3> kNegativeFold = {214, 39, 40};
 constexpr std::array<int, 3> kPositiveFold = {31, 58, 147};
 // The plot window's first-use place: x 30-65 %, y 0-56 % of the window.
-constexpr float kPlotX0 = 0.30f, kPlotY0 = 0.0f, kPlotX1 = 0.65f, kPlotY1 = 0.56f;
+constexpr double kPlotX0 = 0.30, kPlotY0 = 0.0, kPlotX1 = 0.65, kPlotY1 = 0.56;
 
 class GuiTest : public foldlab::testing::TempDirTest {
  protected:

@@ -17,7 +17,7 @@
 #include <utility>
 #include <vector>
 
-#include "gui/plot_widget.hpp"
+#include "app/gui/plot_widget.hpp"
 
 namespace foldlab::gui {
 namespace {

@@ -1,6 +1,6 @@
 // Presets: loading every shipped file, the JSON round trip, error messages that name the file, the
 // key and the problem, and the atomic save.
-#include "foldlab/preset.hpp"
+#include "core/io/preset.hpp"
 
 #include <unistd.h>
 
@@ -18,7 +18,7 @@
 #include <nlohmann/json.hpp>
 #include "temp_dir.hpp"
 
-#include "foldlab/parameters.hpp"
+#include "core/model/parameters.hpp"
 
 namespace fs = std::filesystem;
 using nlohmann::json;

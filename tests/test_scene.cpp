@@ -1,7 +1,7 @@
 // The scene recomputes a stage only when one of its inputs changed and somebody asks for it.
 #include <gtest/gtest.h>
 
-#include "foldlab/scene.hpp"
+#include "core/geometry/scene.hpp"
 
 namespace foldlab {
 namespace {

@@ -1,5 +1,5 @@
 // Named inputs (--set KEY=VALUE): apply_setting, apply_assignments, parse_number, and validate().
-#include "foldlab/settings.hpp"
+#include "core/model/settings.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -10,7 +10,7 @@
 
 #include <gtest/gtest.h>
 
-#include "foldlab/parameters.hpp"
+#include "core/model/parameters.hpp"
 
 namespace {
 
@@ -283,9 +283,9 @@ TEST(Settings, EveryListedKeyIsAccepted) {
                                              "supports",
                                              "incline_deg"};
   std::vector<std::string> listed;
-  for (const foldlab::SettingKey& k : foldlab::setting_keys()) {
+  for (const foldlab::InputSpec& k : foldlab::input_table()) {
     listed.emplace_back(k.key);
-    EXPECT_FALSE(k.description.empty()) << k.key;
+    EXPECT_FALSE(k.help.empty()) << k.key;
     Parameters p;
     const char* value = k.key == "method"              ? "exact"
                         : k.key == "span_rule"         ? "L-2d"
@@ -402,6 +402,69 @@ TEST(SettingsValidate, PoissonRatioOfOneHalfIsRejected) {
   EXPECT_EQ(issues[0].field, "nu");
   p.fabric.poisson_ratio = 0.0;
   EXPECT_TRUE(foldlab::validate(p).empty());
+}
+
+// Values that cannot describe a cloth, each from a reported attack: refused with the range.
+TEST(SettingsValidate, PhysicalRangesRefuseWhatNoClothCanBe) {
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"t", "1e-200"},
+      {"L", "1e-320"},
+      {"h", "1e-320"},
+      {"p", "1e-300"},
+      {"E", "1e300"},
+      {"w", "1e-320"},
+      {"c", "1e-300"},
+      {"simpson_intervals", "1000000"},
+      {"max_iterations", "1000000"},
+      {"length_tolerance", "1e-300"},
+  };
+  for (const auto& [key, value] : cases) {
+    SCOPED_TRACE(key + "=" + value);
+    Parameters p;
+    ASSERT_FALSE(foldlab::apply_setting(p, key, value).has_value());
+    const auto issues = foldlab::validate(p);
+    ASSERT_EQ(issues.size(), 1u) << foldlab::format_issues(issues);
+    const foldlab::InputSpec* spec = foldlab::find_input(key);
+    ASSERT_NE(spec, nullptr);
+    EXPECT_EQ(issues[0].field, spec->field);
+    EXPECT_TRUE(contains(issues[0].message, "must be in")) << issues[0].message;
+  }
+}
+
+TEST(SettingsValidate, MessagesDoNotRoundAwayTheValueRefused) {
+  Parameters p;
+  p.model.stress_exponent_p = 5.0000001;
+  const auto issues = foldlab::validate(p);
+  ASSERT_EQ(issues.size(), 1u);
+  EXPECT_TRUE(contains(issues[0].message, "p = 5.0000001")) << issues[0].message;
+}
+
+// The table is the one source of truth: check its rows against each other and against the
+// parameters' defaults, which must lie inside the ranges they declare.
+TEST(InputTable, RowsAreConsistent) {
+  const Parameters defaults;
+  for (const foldlab::InputSpec& spec : foldlab::input_table()) {
+    SCOPED_TRACE(std::string(spec.key));
+    EXPECT_EQ(foldlab::find_input(spec.key), &spec);
+    EXPECT_FALSE(spec.help.empty());
+    if (spec.kind == foldlab::InputKind::choice) {
+      EXPECT_FALSE(spec.choices.empty());
+      EXPECT_NE(spec.set_choice, nullptr);
+      EXPECT_NE(spec.choice, nullptr);
+      continue;
+    }
+    EXPECT_LT(spec.typical_lo, spec.typical_hi);
+    if (spec.kind == foldlab::InputKind::stiffness_K) {
+      continue;
+    }
+    EXPECT_EQ(foldlab::find_input_by_field(spec.field), &spec);
+    EXPECT_TRUE(spec.valid.contains(spec.typical_lo) || spec.key == "nu") << spec.typical_lo;
+    EXPECT_TRUE(spec.valid.contains(spec.typical_hi)) << spec.typical_hi;
+    EXPECT_TRUE(spec.valid.contains(*spec.value(defaults)));
+    if (spec.scale == foldlab::InputScale::logarithmic) {
+      EXPECT_GT(spec.typical_lo, 0.0);
+    }
+  }
 }
 
 }  // namespace

@@ -8,9 +8,9 @@
 
 #include <gtest/gtest.h>
 
-#include "foldlab/equations.hpp"
-#include "foldlab/preset.hpp"
-#include "foldlab/solver.hpp"
+#include "core/io/preset.hpp"
+#include "core/model/equations.hpp"
+#include "core/model/solver.hpp"
 
 namespace foldlab {
 namespace {
@@ -73,9 +73,10 @@ INSTANTIATE_TEST_SUITE_P(
                       PublishedRow{"paper-table2-w54", Method::exact, 0, 0.080, 0.025},
                       PublishedRow{"paper-fig4", Method::paper, 5, 0.450, -1.0},
                       PublishedRow{"paper-fig4", Method::exact, 5, 0.455, -1.0}),
-    [](const auto& info) {
+    // Not `info`: INSTANTIATE_TEST_SUITE_P wraps this lambda in one whose parameter has that name.
+    [](const auto& row_info) {
       std::string name =
-          std::string(info.param.preset) + "_" + std::string(to_string(info.param.method));
+          std::string(row_info.param.preset) + "_" + std::string(to_string(row_info.param.method));
       for (char& c : name) {
         c = std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
       }

@@ -13,8 +13,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "foldlab/solver.hpp"
-#include "foldlab/stress.hpp"
+#include "core/model/solver.hpp"
+#include "core/tools/stress.hpp"
 #include "process.hpp"
 #include "temp_dir.hpp"
 

@@ -3,8 +3,8 @@
 
 #include <gtest/gtest.h>
 
-#include "foldlab/geometry.hpp"
-#include "foldlab/sweep.hpp"
+#include "core/analysis/sweep.hpp"
+#include "core/geometry/geometry.hpp"
 
 namespace foldlab {
 namespace {

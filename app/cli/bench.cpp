@@ -8,12 +8,12 @@
 
 #include <nlohmann/json.hpp>
 
-#include "cli/commands.hpp"
-#include "cli/inputs.hpp"
-#include "cli/presets_dir.hpp"
-#include "foldlab/benchmark_cases.hpp"
-#include "foldlab/io.hpp"
-#include "foldlab/preset.hpp"
+#include "app/cli/commands.hpp"
+#include "app/common/inputs.hpp"
+#include "app/common/presets_dir.hpp"
+#include "core/io/io.hpp"
+#include "core/io/preset.hpp"
+#include "core/tools/benchmark_cases.hpp"
 
 namespace foldlab::cli {
 namespace {

@@ -9,57 +9,20 @@
 
 #include <nlohmann/json.hpp>
 
-#include "cli/commands.hpp"
-#include "cli/inputs.hpp"
-#include "foldlab/calibration.hpp"
-#include "foldlab/io.hpp"
-#include "foldlab/measurements.hpp"
-#include "foldlab/preset.hpp"
+#include "app/cli/commands.hpp"
+#include "app/common/inputs.hpp"
+#include "core/analysis/calibration.hpp"
+#include "core/io/io.hpp"
+#include "core/io/measurements.hpp"
+#include "core/io/preset.hpp"
+#include "core/model/text_format.hpp"
 
 namespace foldlab::cli {
 namespace {
 
 using nlohmann::json;
 
-std::string format(const char* pattern, double value) {
-  char text[64];
-  std::snprintf(text, sizeof text, pattern, value);
-  return text;
-}
-
-// How many observed z_max and Q values a summary stands on: a summary of none reads 0 %, which
-// must print as "none observed" instead.
-struct Observed {
-  int z = 0;
-  int Q = 0;
-};
-
-Observed observed_in(const CalibrationReport& r, MeasurementRole role) {
-  Observed o;
-  for (const CalibrationRow& row : r.rows) {
-    if (row.measurement.role == role) {
-      o.z += row.measurement.observed.z_max_mm.has_value();
-      o.Q += row.measurement.observed.Q.has_value();
-    }
-  }
-  return o;
-}
-
-// "n exact 3/6, within ±1 5/6; |z_max error| median 8.0 %, max 74.2 %; |Q error| median ..."
-std::string summary_line(const ComparisonSummary& s, Observed observed = {1, 1}) {
-  std::string out = "n exact " + std::to_string(s.n_exact) + "/" + std::to_string(s.rows_with_n) +
-                    ", within ±1 " + std::to_string(s.n_within_one) + "/" +
-                    std::to_string(s.rows_with_n);
-  auto errors = [&out](const char* label, int count, double median, double max) {
-    out += std::string("; |") + label + " error| ";
-    out += count == 0 ? std::string("none observed")
-                      : "median " + format("%.1f", 100 * median) + " %, max " +
-                            format("%.1f", 100 * max) + " %";
-  };
-  errors("z_max", observed.z, s.median_abs_z_error, s.max_abs_z_error);
-  errors("Q", observed.Q, s.median_abs_Q_error, s.max_abs_Q_error);
-  return out;
-}
+using detail::printf_string;
 
 // When the best score reaches the end of the p search range, the data do not bound p there.
 std::string edge_note(const FittedConstants& f, FitConstants fit) {
@@ -74,25 +37,26 @@ std::string edge_note(const FittedConstants& f, FitConstants fit) {
 std::string score_line(const CalibrationScore& s, int rows_with_n) {
   return "n missed in " + std::to_string(s.n_missed) + " of " + std::to_string(rows_with_n) +
          " rows (by more than one in " + std::to_string(s.n_missed_by_more_than_one) +
-         "), mean capped error " + format("%.2f", 100 * s.mean_relative_error) + " % over " +
+         "), mean capped error " + printf_string("%.2f", 100 * s.mean_relative_error) + " % over " +
          std::to_string(s.error_terms) + " z_max and Q values";
 }
 
 std::string range(double lo, double hi, const char* pattern) {
-  return "[" + format(pattern, lo) + ", " + (std::isinf(hi) ? "inf" : format(pattern, hi)) + ")";
+  return "[" + printf_string(pattern, lo) + ", " +
+         (std::isinf(hi) ? "inf" : printf_string(pattern, hi)) + ")";
 }
 
 template <class T>
 std::string optional_cell(const std::optional<T>& v, const char* pattern) {
-  return v ? format(pattern, static_cast<double>(*v)) : "–";
+  return v ? printf_string(pattern, static_cast<double>(*v)) : "–";
 }
 
 // "7 | 43.4 (-9.6%) | 1.251 (-3.0%)"
 std::string model_cells(const PublishedComparison& c) {
   auto with_error = [](double value, const std::optional<double>& error, const char* pattern) {
-    std::string out = format(pattern, value);
+    std::string out = printf_string(pattern, value);
     if (error) {
-      out += " (" + format("%+.1f", 100.0 * *error) + "%)";
+      out += " (" + printf_string("%+.1f", 100.0 * *error) + "%)";
     }
     return out;
   };
@@ -200,18 +164,20 @@ void print_report(const CalibrationReport& r, const std::string& data_path,
   std::cout << "Loss (lexicographic): rows whose n is missed, then rows missed by more than one, "
                "then the mean of min(|model/observed - 1|, 1) over every observed z_max and Q.\n\n";
   const Parameters fitted = with_constants(r.base, f.K, f.p);
-  std::cout << "Fitted: K = " << format("%.4g", f.K) << ", p = " << format("%.4g", f.p)
-            << "  (c = " << format("%.4g", fitted.model.load_constant_c)
-            << " at nu = " << format("%.3g", r.base.fabric.poisson_ratio) << ")\n";
+  std::cout << "Fitted: K = " << printf_string("%.4g", f.K)
+            << ", p = " << printf_string("%.4g", f.p)
+            << "  (c = " << printf_string("%.4g", fitted.model.load_constant_c)
+            << " at nu = " << printf_string("%.3g", r.base.fabric.poisson_ratio) << ")\n";
   std::cout << "  score: " << score_line(f.score, r.in_sample.rows_with_n) << "\n";
   std::cout << "  the score stays the same for K in " << range(f.K_low, f.K_high, "%.4g")
-            << " at p = " << format("%.4g", f.p);
+            << " at p = " << printf_string("%.4g", f.p);
   if (r.fit == FitConstants::K_and_p) {
-    std::cout << ", and for p in [" << format("%.4g", f.p_low) << ", " << format("%.4g", f.p_high)
-              << "] at K = " << format("%.4g", f.K) << "\n";
+    std::cout << ", and for p in [" << printf_string("%.4g", f.p_low) << ", "
+              << printf_string("%.4g", f.p_high) << "] at K = " << printf_string("%.4g", f.K)
+              << "\n";
     std::cout << "  every point with this score lies in K "
               << range(f.best_K_min, f.best_K_max, "%.4g") << ", p ["
-              << format("%.3g", f.best_p_min) << ", " << format("%.3g", f.best_p_max)
+              << printf_string("%.3g", f.best_p_min) << ", " << printf_string("%.3g", f.best_p_max)
               << "] (K and p trade off along a valley)" << edge_note(f, r.fit) << "\n";
   } else {
     std::cout << "\n";
@@ -232,47 +198,35 @@ void print_report(const CalibrationReport& r, const std::string& data_path,
               << optional_cell(m.observed.z_max_mm, "%g") << " | "
               << optional_cell(m.observed.Q, "%.2f") << " | " << model_cells(row.fitted) << " | ";
     if (row.held_out) {
-      std::cout << model_cells(*row.held_out) << " | " << format("%.4g", row.held_out_K) << " | "
-                << format("%.3g", row.held_out_p) << " |\n";
+      std::cout << model_cells(*row.held_out) << " | " << printf_string("%.4g", row.held_out_K)
+                << " | " << printf_string("%.3g", row.held_out_p) << " |\n";
     } else {
       std::cout << "– | – | – | – | – |\n";
     }
   }
   std::cout << "\nHeld out: fit rows by leave-one-out (each predicted by a fit on the others); "
                "check rows by the in-sample fit, which never sees them.\n\n";
-  const Observed fit_rows = observed_in(r, MeasurementRole::fit);
-  const Observed check_rows = observed_in(r, MeasurementRole::check);
   std::cout << "Totals\n";
-  std::cout << "  base constants, fit rows:           "
-            << summary_line(r.baseline_fit_rows, fit_rows) << "\n";
-  std::cout << "  in-sample fit, fit rows:            " << summary_line(r.in_sample, fit_rows)
+  std::cout << "  base constants, fit rows:           " << summary_text(r.baseline_fit_rows)
             << "\n";
+  std::cout << "  in-sample fit, fit rows:            " << summary_text(r.in_sample) << "\n";
   if (r.fit_row_count >= 2) {
-    std::cout << "  leave-one-out, fit rows:            " << summary_line(r.leave_one_out, fit_rows)
-              << "\n";
+    std::cout << "  leave-one-out, fit rows:            " << summary_text(r.leave_one_out) << "\n";
   }
   if (!r.group_splits.empty()) {
-    std::cout << "  fit on other groups, test rows:     "
-              << summary_line(r.group_split_test, fit_rows) << "\n";
+    std::cout << "  fit on other groups, test rows:     " << summary_text(r.group_split_test)
+              << "\n";
     for (const GroupSplit& s : r.group_splits) {
-      Observed in_group;
-      for (const CalibrationRow& row : r.rows) {
-        if (row.measurement.role == MeasurementRole::fit && row.measurement.group == s.test_group) {
-          in_group.z += row.measurement.observed.z_max_mm.has_value();
-          in_group.Q += row.measurement.observed.Q.has_value();
-        }
-      }
       std::cout << "    test " << (s.test_group.empty() ? "(no group)" : s.test_group)
-                << " (fit on the rest: K = " << format("%.4g", s.fit.K)
-                << ", p = " << format("%.3g", s.fit.p) << edge_note(s.fit, r.fit)
-                << "): " << summary_line(s.test, in_group) << "\n";
+                << " (fit on the rest: K = " << printf_string("%.4g", s.fit.K)
+                << ", p = " << printf_string("%.3g", s.fit.p) << edge_note(s.fit, r.fit)
+                << "): " << summary_text(s.test) << "\n";
     }
   }
   if (r.check_row_count > 0) {
-    std::cout << "  base constants, check rows:         "
-              << summary_line(r.baseline_check_rows, check_rows) << "\n";
-    std::cout << "  fitted constants, check rows:       " << summary_line(r.check_rows, check_rows)
+    std::cout << "  base constants, check rows:         " << summary_text(r.baseline_check_rows)
               << "\n";
+    std::cout << "  fitted constants, check rows:       " << summary_text(r.check_rows) << "\n";
   }
 }
 
@@ -343,13 +297,13 @@ Command add_calibrate_command(CLI::App& app) {
         Preset out = base;
         const FittedConstants& f = report.fitted;
         out.parameters = with_constants(base.parameters, f.K, f.p);
-        out.name = base.name + " (calibrated: K = " + format("%.4g", f.K) +
-                   ", p = " + format("%.4g", f.p) + ")";
+        out.name = base.name + " (calibrated: K = " + printf_string("%.4g", f.K) +
+                   ", p = " + printf_string("%.4g", f.p) + ")";
         out.description = "Eq. 7's constants fitted by foldlab calibrate --fit " +
                           std::string(to_string(report.fit)) + " on " + options->data_path + " (" +
                           std::string(to_string(base.parameters.model.method)) +
-                          " method): in-sample " + summary_line(report.in_sample) +
-                          "; leave-one-out " + summary_line(report.leave_one_out) + ".";
+                          " method): in-sample " + summary_text(report.in_sample) +
+                          "; leave-one-out " + summary_text(report.leave_one_out) + ".";
         save_preset(out, options->save_preset_path);
         std::cerr << "foldlab: wrote " << options->save_preset_path << "\n";
       }

@@ -1,4 +1,4 @@
-#include "cli/commands.hpp"
+#include "app/cli/commands.hpp"
 
 #include <cstdio>
 #include <iostream>
@@ -7,21 +7,20 @@
 
 #include <nlohmann/json.hpp>
 
-#include "cli/inputs.hpp"
-#include "cli/presets_dir.hpp"
-#include "foldlab/comparison.hpp"
-#include "foldlab/export.hpp"
-#include "foldlab/geometry.hpp"
-#include "foldlab/gltf_export.hpp"
-#include "foldlab/io.hpp"
-#include "foldlab/report.hpp"
-#include "foldlab/scene.hpp"
-#include "foldlab/scene_report.hpp"
-#include "foldlab/settings.hpp"
-#include "foldlab/solver.hpp"
+#include "app/common/inputs.hpp"
+#include "app/common/presets_dir.hpp"
+#include "core/analysis/comparison.hpp"
+#include "core/geometry/geometry.hpp"
+#include "core/geometry/scene.hpp"
+#include "core/io/export.hpp"
+#include "core/io/gltf_export.hpp"
+#include "core/io/io.hpp"
+#include "core/io/report.hpp"
+#include "core/io/scene_report.hpp"
+#include "core/model/settings.hpp"
+#include "core/model/solver.hpp"
 
 namespace foldlab::cli {
-namespace {}  // namespace
 
 Command add_solve_command(CLI::App& app) {
   struct Options {
@@ -231,12 +230,7 @@ Command add_compare_command(CLI::App& app) {
       std::cout << "\n";
       for (int m = 0; m < 2; ++m) {
         const ComparisonSummary sum = summarize(rows[static_cast<std::size_t>(m)]);
-        std::printf(
-            "%s method: n exact in %d of %d rows, within ±1 in %d; |z_max error| median %.1f%%, "
-            "max %.1f%%; |Q error| median %.1f%%, max %.1f%%\n",
-            m == 0 ? "paper" : "exact", sum.n_exact, sum.rows_with_n, sum.n_within_one,
-            100 * sum.median_abs_z_error, 100 * sum.max_abs_z_error, 100 * sum.median_abs_Q_error,
-            100 * sum.max_abs_Q_error);
+        std::cout << (m == 0 ? "paper" : "exact") << " method: " << summary_text(sum) << "\n";
       }
       return kExitOk;
     });

@@ -5,9 +5,9 @@
 
 #include <nlohmann/json.hpp>
 
-#include "cli/commands.hpp"
-#include "cli/inputs.hpp"
-#include "foldlab/stress.hpp"
+#include "app/cli/commands.hpp"
+#include "app/common/inputs.hpp"
+#include "core/tools/stress.hpp"
 
 namespace foldlab::cli {
 

@@ -2,9 +2,9 @@
 #include <iostream>
 #include <memory>
 
-#include "cli/commands.hpp"
-#include "cli/inputs.hpp"
-#include "foldlab/sweep.hpp"
+#include "app/cli/commands.hpp"
+#include "app/common/inputs.hpp"
+#include "core/analysis/sweep.hpp"
 
 namespace foldlab::cli {
 

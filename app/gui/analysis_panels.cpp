@@ -1,4 +1,4 @@
-#include "gui/analysis_panels.hpp"
+#include "app/gui/analysis_panels.hpp"
 
 #include <epoxy/gl.h>
 
@@ -9,7 +9,7 @@
 
 #include <imgui.h>
 
-#include "cli/presets_dir.hpp"
+#include "app/common/presets_dir.hpp"
 
 namespace foldlab::gui {
 namespace {
@@ -143,7 +143,7 @@ void SweepPanel::load_overlay(const std::string& prefix, const std::string& labe
   overlay_Q_.clear();
   overlay_z_.clear();
   overlay_Q_x_.clear();
-  for (const auto& file : cli::preset_files(presets_dir_)) {
+  for (const auto& file : app::preset_files(presets_dir_)) {
     if (file.filename().string().rfind(prefix, 0) != 0) {
       continue;
     }
@@ -476,7 +476,8 @@ void RegimeMapPanel::draw(const Parameters& current, const PanelActions& actions
   update_texture();
   const int done = job_->rows_done.load();
   if (done < resolution_) {
-    ImGui::ProgressBar(static_cast<float>(done) / resolution_, ImVec2(-1.0f, 0.0f));
+    ImGui::ProgressBar(static_cast<float>(done) / static_cast<float>(resolution_),
+                       ImVec2(-1.0f, 0.0f));
   } else {
     last_map_ms_ = job_->elapsed_ms.load();
     ImGui::TextDisabled("%d x %d solves in %.0f ms on %zu threads; click to move the sliders there",

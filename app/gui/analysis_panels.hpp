@@ -11,9 +11,9 @@
 #include <thread>
 #include <vector>
 
-#include "foldlab/preset.hpp"
-#include "foldlab/sweep.hpp"
-#include "gui/plot_widget.hpp"
+#include "app/gui/plot_widget.hpp"
+#include "core/analysis/sweep.hpp"
+#include "core/io/preset.hpp"
 
 namespace foldlab::gui {
 

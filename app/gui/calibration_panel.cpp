@@ -1,4 +1,4 @@
-#include "gui/calibration_panel.hpp"
+#include "app/gui/calibration_panel.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -8,8 +8,9 @@
 
 #include <imgui.h>
 
-#include "cli/presets_dir.hpp"
-#include "gui/fast_fill.hpp"
+#include "app/common/presets_dir.hpp"
+#include "app/gui/fast_fill.hpp"
+#include "core/model/text_format.hpp"
 
 namespace foldlab::gui {
 namespace {
@@ -22,7 +23,7 @@ const ImVec4 kHeading(0.55f, 0.75f, 1.0f, 1.0f);
 
 // The paper's Tables 1-2 and Fig. 4 as shipped (data/ beside presets/), when they can be found.
 std::filesystem::path default_data_file() {
-  std::filesystem::path presets = cli::find_presets_dir();
+  std::filesystem::path presets = app::find_presets_dir();
   if (presets.empty()) {
     return {};
   }
@@ -40,11 +41,7 @@ void section(const char* title) {
   ImGui::Separator();
 }
 
-std::string format(const char* pattern, double value) {
-  char text[64];
-  std::snprintf(text, sizeof text, pattern, value);
-  return text;
-}
+using detail::printf_string;
 
 // The tag beside the button, coloured by whether eq. 7 is the paper's: the longest wording that
 // fits the space left on the line (the Presets panel is narrow at small window sizes).
@@ -144,10 +141,7 @@ void CalibrationPanel::load_data() {
         groups.insert(m.group.empty() ? "(none)" : m.group);
       }
     }
-    std::string group_list;
-    for (const std::string& g : groups) {
-      group_list += (group_list.empty() ? "" : ", ") + g;
-    }
+    const std::string group_list = detail::join(groups, ", ");
     data_message_ =
         std::to_string(set.rows.size()) + " rows: " + std::to_string(fit) + " to fit (groups " +
         group_list + "), " + std::to_string(set.rows.size() - static_cast<std::size_t>(fit)) +
@@ -294,8 +288,8 @@ bool CalibrationPanel::draw(Parameters& edited, const Preset& loaded) {
 
 bool CalibrationPanel::apply_section(Parameters& edited) {
   const FittedConstants& f = report_->fitted;
-  const std::string label = "Apply K = " + format("%.4g", f.K) + ", p = " + format("%.4g", f.p) +
-                            " to the current parameters";
+  const std::string label = "Apply K = " + printf_string("%.4g", f.K) +
+                            ", p = " + printf_string("%.4g", f.p) + " to the current parameters";
   bool changed = false;
   if (ImGui::Button(label.c_str())) {
     edited = with_constants(edited, f.K, f.p);
@@ -317,7 +311,7 @@ void CalibrationPanel::results_section() {
               std::string(to_string(r.fit)).c_str(),
               std::string(to_string(r.base.model.method)).c_str(), f.K, f.p,
               with_constants(r.base, f.K, f.p).model.load_constant_c, r.base.fabric.poisson_ratio);
-  const std::string K_high = std::isinf(f.K_high) ? "inf" : format("%.4g", f.K_high);
+  const std::string K_high = std::isinf(f.K_high) ? "inf" : printf_string("%.4g", f.K_high);
   ImGui::TextWrapped(
       "The score stays the same for K in [%.4g, %s) at this p, and for p in [%.4g, %.4g] at this "
       "K: n misses %d (by more than one %d), mean capped error %.1f %%.",

@@ -11,9 +11,9 @@
 #include <string>
 #include <thread>
 
-#include "foldlab/calibration.hpp"
-#include "foldlab/measurements.hpp"
-#include "foldlab/preset.hpp"
+#include "core/analysis/calibration.hpp"
+#include "core/io/measurements.hpp"
+#include "core/io/preset.hpp"
 
 namespace foldlab::gui {
 

@@ -1,4 +1,4 @@
-#include "gui/camera.hpp"
+#include "app/gui/camera.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "gui/cloth_renderer.hpp"
+#include "app/gui/cloth_renderer.hpp"
 
 #include <epoxy/gl.h>
 

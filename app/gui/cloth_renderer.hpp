@@ -7,9 +7,9 @@
 
 #include <Eigen/Core>
 
-#include "foldlab/scene.hpp"
-#include "gui/camera.hpp"
-#include "gui/surface.hpp"
+#include "app/gui/camera.hpp"
+#include "app/gui/surface.hpp"
+#include "core/geometry/scene.hpp"
 
 namespace foldlab::gui {
 

@@ -1,4 +1,4 @@
-#include "gui/explorer.hpp"
+#include "app/gui/explorer.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -7,15 +7,15 @@
 
 #include <imgui.h>
 
-#include "cli/presets_dir.hpp"
-#include "foldlab/equations.hpp"
-#include "foldlab/export.hpp"
-#include "foldlab/gltf_export.hpp"
-#include "foldlab/io.hpp"
-#include "foldlab/settings.hpp"
-#include "gui/analysis_panels.hpp"
-#include "gui/fast_fill.hpp"
-#include "gui/plot_widget.hpp"
+#include "app/common/presets_dir.hpp"
+#include "app/gui/analysis_panels.hpp"
+#include "app/gui/fast_fill.hpp"
+#include "app/gui/plot_widget.hpp"
+#include "core/io/export.hpp"
+#include "core/io/gltf_export.hpp"
+#include "core/io/io.hpp"
+#include "core/model/equations.hpp"
+#include "core/model/settings.hpp"
 
 namespace foldlab::gui {
 namespace {
@@ -316,7 +316,7 @@ void Explorer::refresh_preset_list() {
     if (dir.empty()) {
       return;
     }
-    for (const auto& file : cli::preset_files(dir)) {
+    for (const auto& file : app::preset_files(dir)) {
       PresetEntry entry{file.stem().string(), file, user};
       try {
         entry.name = load_preset(file).name;

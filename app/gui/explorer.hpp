@@ -8,14 +8,14 @@
 #include <string>
 #include <vector>
 
-#include "foldlab/preset.hpp"
-#include "foldlab/scene.hpp"
-#include "gui/analysis_panels.hpp"
-#include "gui/calibration_panel.hpp"
-#include "gui/camera.hpp"
-#include "gui/cloth_renderer.hpp"
-#include "gui/plot_widget.hpp"
-#include "gui/session.hpp"
+#include "app/gui/analysis_panels.hpp"
+#include "app/gui/calibration_panel.hpp"
+#include "app/gui/camera.hpp"
+#include "app/gui/cloth_renderer.hpp"
+#include "app/gui/plot_widget.hpp"
+#include "app/gui/session.hpp"
+#include "core/geometry/scene.hpp"
+#include "core/io/preset.hpp"
 
 namespace foldlab::gui {
 

@@ -7,7 +7,7 @@
 
 #include <imgui.h>
 
-#include "gui/surface.hpp"
+#include "app/gui/surface.hpp"
 
 namespace foldlab::gui {
 

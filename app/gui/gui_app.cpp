@@ -1,4 +1,4 @@
-#include "gui/gui_app.hpp"
+#include "app/gui/gui_app.hpp"
 
 #include <epoxy/gl.h>
 
@@ -11,12 +11,12 @@
 #include <imgui.h>
 #include <nlohmann/json.hpp>
 
+#include "app/common/presets_dir.hpp"
+#include "app/gui/explorer.hpp"
+#include "app/gui/surface.hpp"
 #include "backends/imgui_impl_opengl3.h"
-#include "cli/presets_dir.hpp"
-#include "foldlab/report.hpp"
-#include "foldlab/scene_report.hpp"
-#include "gui/explorer.hpp"
-#include "gui/surface.hpp"
+#include "core/io/report.hpp"
+#include "core/io/scene_report.hpp"
 
 namespace foldlab::gui {
 namespace {
@@ -65,19 +65,19 @@ struct ImGuiContextGuard {
 };
 
 int run_frames(Surface& surface, const GuiRunOptions& options, bool interactive) {
-  const Preset preset = cli::resolve_inputs(options.inputs);
+  const Preset preset = app::resolve_inputs(options.inputs);
   const Sweep* sweep = nullptr;
   if (!options.animate_key.empty()) {
     for (const Sweep& s : kSweeps) {
       sweep = options.animate_key == s.key ? &s : sweep;
     }
     if (sweep == nullptr) {
-      throw cli::InputError("--animate " + options.animate_key + ": not one of h, w, E, t, d, L");
+      throw app::InputError("--animate " + options.animate_key + ": not one of h, w, E, t, d, L");
     }
   }
   const bool persist = interactive && !options.fresh;
   std::filesystem::create_directories(config_dir());
-  ExplorerOptions explorer_options{cli::find_presets_dir(), user_presets_dir(),
+  ExplorerOptions explorer_options{app::find_presets_dir(), user_presets_dir(),
                                    persist ? config_dir() / "session.json" : "",
                                    options.analysis_tab};
   ImGuiContextGuard imgui(surface, persist ? (config_dir() / "imgui.ini").string() : "");
@@ -93,7 +93,7 @@ int run_frames(Surface& surface, const GuiRunOptions& options, bool interactive)
                                 : explorer.set_view(std::string_view(setting).substr(0, eq),
                                                     std::string_view(setting).substr(eq + 1));
     if (problem) {
-      throw cli::InputError("--view " + *problem);
+      throw app::InputError("--view " + *problem);
     }
   }
   std::vector<double> frame_ms;
@@ -153,9 +153,10 @@ int run_frames(Surface& surface, const GuiRunOptions& options, bool interactive)
   if (options.report && !frame_ms.empty()) {
     std::vector<double> sorted = frame_ms;
     std::sort(sorted.begin(), sorted.end());
-    const double mean = std::accumulate(sorted.begin(), sorted.end(), 0.0) / sorted.size();
-    const double p95 =
-        sorted[std::min(sorted.size() - 1, static_cast<std::size_t>(0.95 * sorted.size()))];
+    const double mean =
+        std::accumulate(sorted.begin(), sorted.end(), 0.0) / static_cast<double>(sorted.size());
+    const double p95 = sorted[std::min(
+        sorted.size() - 1, static_cast<std::size_t>(0.95 * static_cast<double>(sorted.size())))];
     nlohmann::json report = {
         {"backend", interactive ? "window" : "headless"},
         {"frames", sorted.size()},
@@ -176,7 +177,7 @@ int run_frames(Surface& surface, const GuiRunOptions& options, bool interactive)
     }
     std::cout << report.dump(2) << "\n";
   }
-  return cli::kExitOk;
+  return app::kExitOk;
 }
 
 }  // namespace

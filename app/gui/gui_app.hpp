@@ -5,12 +5,12 @@
 #include <string>
 #include <vector>
 
-#include "cli/inputs.hpp"
+#include "app/common/inputs.hpp"
 
 namespace foldlab::gui {
 
 struct GuiRunOptions {
-  cli::InputOptions inputs;
+  app::InputOptions inputs;
   int width = 1280;
   int height = 800;
   int frames = 0;               // 0: until the window is closed

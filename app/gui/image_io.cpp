@@ -6,8 +6,8 @@
 
 #include <string>
 
-#include "foldlab/io.hpp"
-#include "gui/surface.hpp"
+#include "app/gui/surface.hpp"
+#include "core/io/io.hpp"
 
 namespace foldlab::gui {
 

@@ -1,4 +1,4 @@
-#include "gui/plot_widget.hpp"
+#include "app/gui/plot_widget.hpp"
 
 #include <imgui_internal.h>  // SetItemUsingMouseWheel: without it the window scrolls as we zoom
 

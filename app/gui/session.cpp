@@ -1,4 +1,4 @@
-#include "gui/session.hpp"
+#include "app/gui/session.hpp"
 
 #include <cstdlib>
 #include <fstream>
@@ -6,7 +6,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "foldlab/io.hpp"
+#include "core/io/io.hpp"
 
 namespace foldlab::gui {
 

@@ -7,7 +7,7 @@
 #include <optional>
 #include <string>
 
-#include "foldlab/preset.hpp"
+#include "core/io/preset.hpp"
 
 namespace foldlab::gui {
 

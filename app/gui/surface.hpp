@@ -9,7 +9,7 @@
 #include <stdexcept>
 #include <vector>
 
-#include "cli/inputs.hpp"
+#include "app/common/inputs.hpp"
 
 namespace foldlab::gui {
 
@@ -18,9 +18,9 @@ struct FrameSize {
   int height = 0;
 };
 
-class SurfaceError : public cli::EnvironmentError {
+class SurfaceError : public app::EnvironmentError {
  public:
-  using cli::EnvironmentError::EnvironmentError;
+  using app::EnvironmentError::EnvironmentError;
 };
 
 class Surface {

@@ -4,8 +4,8 @@
 
 #include <string>
 
+#include "app/gui/surface.hpp"
 #include "backends/imgui_impl_glfw.h"
-#include "gui/surface.hpp"
 
 namespace foldlab::gui {
 namespace {

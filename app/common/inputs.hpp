@@ -1,0 +1,55 @@
+// What the CLI and the explorer share: exit statuses, error types, and the inputs every command
+// reads first (a preset, --set overrides and --method).
+#pragma once
+
+#include <functional>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+#include "core/io/preset.hpp"
+
+namespace foldlab::app {
+
+// A registered command: run() is called after parsing when its subcommand was given, and returns
+// the exit status.
+using Command = std::function<int()>;
+
+// Exit statuses of every command (the contract scripts rely on).
+inline constexpr int kExitOk = 0;
+inline constexpr int kExitInternal = 1;
+inline constexpr int kExitInvalidInput = 2;
+
+// Bad input from the user: the message goes to stderr and the exit status is kExitInvalidInput.
+class InputError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// The environment cannot do what was asked (no display, no EGL): exit kExitInternal, the message
+// printed as it is.
+class EnvironmentError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+struct InputOptions {
+  std::string preset_path;  // empty: the built-in default preset
+  std::vector<std::string> assignments;
+  std::string method;  // empty: the preset's
+};
+
+// The preset with the overrides applied and validated. Throws InputError listing every problem.
+Preset resolve_inputs(const InputOptions& options);
+
+// --preset, --set and --method, for every command that solves.
+void add_input_options(CLI::App& command, InputOptions& options);
+
+// Runs a command's body: InputError and PresetError give exit 2, EnvironmentError and WriteError
+// exit 1 with their message, anything else exit 1 as an internal error; messages go to stderr.
+int guarded(const std::function<int()>& body);
+
+}  // namespace foldlab::app

@@ -1,0 +1,83 @@
+#include "app/common/presets_dir.hpp"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cstdlib>
+#include <string>
+#include <string_view>
+#include <system_error>
+
+namespace foldlab::app {
+namespace {
+
+// "h900" before "h1400": runs of digits compare by their value.
+bool natural_less(const std::string& a, const std::string& b) {
+  std::size_t i = 0;
+  std::size_t j = 0;
+  while (i < a.size() && j < b.size()) {
+    if (std::isdigit(static_cast<unsigned char>(a[i])) &&
+        std::isdigit(static_cast<unsigned char>(b[j]))) {
+      std::size_t i_end = i;
+      std::size_t j_end = j;
+      while (i_end < a.size() && std::isdigit(static_cast<unsigned char>(a[i_end])))
+        ++i_end;
+      while (j_end < b.size() && std::isdigit(static_cast<unsigned char>(b[j_end])))
+        ++j_end;
+      const std::string_view da(a.data() + i, i_end - i);
+      const std::string_view db(b.data() + j, j_end - j);
+      if (da.size() != db.size()) {
+        return da.size() < db.size();
+      }
+      if (da != db) {
+        return da < db;
+      }
+      i = i_end;
+      j = j_end;
+    } else {
+      if (a[i] != b[j]) {
+        return a[i] < b[j];
+      }
+      ++i;
+      ++j;
+    }
+  }
+  return a.size() - i < b.size() - j;
+}
+
+}  // namespace
+
+std::filesystem::path find_presets_dir() {
+  std::error_code error;
+  if (const char* env = std::getenv("FOLDLAB_PRESETS_DIR"); env && *env) {
+    return env;
+  }
+  if (std::filesystem::is_directory(FOLDLAB_SOURCE_PRESETS_DIR, error)) {
+    return FOLDLAB_SOURCE_PRESETS_DIR;
+  }
+  const std::filesystem::path exe = std::filesystem::read_symlink("/proc/self/exe", error);
+  if (!error) {
+    const auto installed = exe.parent_path().parent_path() / "share" / "foldlab" / "presets";
+    if (std::filesystem::is_directory(installed, error)) {
+      return installed;
+    }
+  }
+  return {};
+}
+
+std::vector<std::filesystem::path> preset_files(const std::filesystem::path& dir) {
+  std::vector<std::filesystem::path> files;
+  std::error_code error;
+  for (const auto& entry : std::filesystem::directory_iterator(dir, error)) {
+    if (entry.is_regular_file(error) && entry.path().extension() == ".json") {
+      files.push_back(entry.path());
+    }
+  }
+  std::sort(files.begin(), files.end(), [](const auto& a, const auto& b) {
+    return natural_less(a.filename().string(), b.filename().string());
+  });
+  return files;
+}
+
+}  // namespace foldlab::app

@@ -1,0 +1,99 @@
+#include "app/gui/commands.hpp"
+
+#include <memory>
+#include <regex>
+
+#include "app/gui/gui_app.hpp"
+
+namespace foldlab::gui {
+using app::guarded;
+using app::InputError;
+using app::kExitInternal;
+
+namespace {
+
+void parse_size(const std::string& text, GuiRunOptions& options) {
+  static const std::regex pattern(R"((\d{2,5})x(\d{2,5}))");
+  std::smatch match;
+  if (!std::regex_match(text, match, pattern) || std::stoi(match[1]) < 320 ||
+      std::stoi(match[2]) < 240 || std::stoi(match[1]) > 8192 || std::stoi(match[2]) > 8192) {
+    throw InputError("--size " + text + " must be WxH with 320 <= W <= 8192, 240 <= H <= 8192");
+  }
+  options.width = std::stoi(match[1]);
+  options.height = std::stoi(match[2]);
+}
+
+struct GuiCommandOptions {
+  GuiRunOptions run;
+  std::string size = "1280x800";
+};
+
+void add_common_gui_options(CLI::App& command, GuiCommandOptions& options) {
+  app::add_input_options(command, options.run.inputs);
+  command.add_option("--size", options.size, "window or picture size WxH (default 1280x800)");
+  command
+      .add_option("--view", options.run.view_settings,
+                  "3D view setting KEY=VALUE: print=plain|checks|stripes, breeze=0|1, "
+                  "breeze_mm, time (s), z (exaggeration), wireframe, fold_lines, ground")
+      ->type_name("KEY=VALUE");
+  command.add_option("--tab", options.run.analysis_tab, "analysis tab shown at start")
+      ->check(CLI::IsMember({"equations", "sweep", "map"}));
+}
+
+}  // namespace
+
+app::Command add_gui_command(CLI::App& app) {
+  auto options = std::make_shared<GuiCommandOptions>();
+  CLI::App* command = app.add_subcommand("gui", "open the explorer window");
+  add_common_gui_options(*command, *options);
+  command
+      ->add_option("--frames", options->run.frames,
+                   "run this many frames, then exit (scripted runs take no mouse input)")
+      ->check(CLI::Range(1, 1000000));
+  command->add_option("--screenshot", options->run.screenshot_path,
+                      "with --frames: write the last frame as PNG");
+  command->add_option("--animate", options->run.animate_key,
+                      "move this input every frame as a dragged slider would: h, w, E, t, d, L");
+  command->add_flag("--report", options->run.report,
+                    "print frame times (mean, 95th percentile) and pipeline counters as JSON");
+  command->add_flag("--fresh", options->run.fresh,
+                    "do not restore or save the last session and window layout");
+  return [options] {
+    return guarded([&] {
+      parse_size(options->size, options->run);
+      if (!options->run.screenshot_path.empty() && options->run.frames == 0) {
+        throw InputError("--screenshot needs --frames N");
+      }
+      return run_window(options->run);
+    });
+  };
+}
+
+app::Command add_render_command(CLI::App& app) {
+  auto options = std::make_shared<GuiCommandOptions>();
+  CLI::App* command = app.add_subcommand(
+      "render", "draw the full explorer window with no display (EGL surfaceless) into a PNG");
+  add_common_gui_options(*command, *options);
+  command->add_option("--out", options->run.screenshot_path, "PNG file to write")->required();
+  command
+      ->add_option("--frames", options->run.frames, "frames to run before the picture (default 3)")
+      ->check(CLI::Range(1, 100000));
+  command->add_option("--animate", options->run.animate_key, "as for gui");
+  command->add_flag("--report", options->run.report, "as for gui");
+  return [options] {
+    return guarded([&] {
+      parse_size(options->size, options->run);
+      options->run.fresh = true;
+      if (options->run.frames == 0) {
+        options->run.frames = 3;  // ImGui settles table and child sizes over the first frames
+      }
+      return run_headless(options->run);
+    });
+  };
+}
+
+int run_default_window() {
+  return guarded([] { return run_window(GuiRunOptions{}); });
+}
+
+}  // namespace foldlab::gui

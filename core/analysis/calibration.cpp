@@ -1,0 +1,685 @@
+#include "core/analysis/calibration.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <numbers>
+#include <set>
+#include <utility>
+
+#include "core/model/equations.hpp"
+
+namespace foldlab {
+namespace {
+
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+// A change of a row's prediction is located to this width in ln s (1e-10 relative in s).
+constexpr double kEdgeTolerance = 1e-10;
+// Below s = 1e-12 (about 2e6 folds) nothing is followed: the prediction there is held constant.
+constexpr double kLowestLogS = -27.631021115928547;  // ln 1e-12
+
+int fold_cap_for(const Measurement& m) {
+  return std::max(kCalibrationFoldCap, m.observed.n ? 4 * *m.observed.n : 0);
+}
+
+bool close(double x, double y) {
+  return std::abs(x - y) <= 1e-9 * std::max(std::abs(x), std::abs(y));
+}
+
+// Two predictions are the same when n agrees and z_max, Q agree to 1e-9: the exact method's last
+// digits depend on the bracket its search for n went through, not on the constants.
+bool same_prediction(const RowPrediction& a, const RowPrediction& b) {
+  if (a.beyond_cap || b.beyond_cap) {
+    return a.beyond_cap == b.beyond_cap;
+  }
+  return a.n == b.n && close(a.z_max_mm, b.z_max_mm) && close(a.Q, b.Q);
+}
+
+// The loss of score_predictions, summed one row at a time.
+struct ScoreSum {
+  int n_missed = 0;
+  int n_missed_by_more_than_one = 0;
+  double error_sum = 0.0;
+  int terms = 0;
+
+  void add(const PublishedResult& observed, const RowPrediction& p) {
+    if (observed.n) {
+      const int difference = p.beyond_cap ? kCalibrationFoldCap : std::abs(p.n - *observed.n);
+      n_missed += difference != 0;
+      n_missed_by_more_than_one += difference > 1;
+    }
+    auto error = [&p](double model, double seen) {
+      return p.beyond_cap ? 1.0 : std::min(std::abs(model / seen - 1.0), 1.0);
+    };
+    if (observed.z_max_mm) {
+      error_sum += error(p.z_max_mm, *observed.z_max_mm);
+      ++terms;
+    }
+    if (observed.Q) {
+      error_sum += error(p.Q, *observed.Q);
+      ++terms;
+    }
+  }
+
+  CalibrationScore score() const {
+    return {n_missed, n_missed_by_more_than_one, terms ? error_sum / terms : 0.0, terms};
+  }
+};
+
+// One row's whole prediction as a function of x = ln s^p. K and p enter the solver only through
+// the stress ratio eq. 7 is solved with (s = K E t³/(w h l²), raised to p), so a row tabulated once
+// against x is scored at any (K, p) by a lookup at x = p (ln K + log_g), and its plateaus are known
+// exactly instead of being sampled.
+struct RowTable {
+  double log_g = 0.0;                 // ln s at K = 1
+  std::vector<double> edges;          // ascending x where the prediction changes
+  std::vector<RowPrediction> states;  // states[j] on [edges[j-1], edges[j]); one more than edges
+
+  std::size_t index_at(double x) const {
+    return static_cast<std::size_t>(std::upper_bound(edges.begin(), edges.end(), x) -
+                                    edges.begin());
+  }
+  const RowPrediction& at(double x) const { return states[index_at(x)]; }
+};
+
+// Scans x from 0 (s = 1: the stiff regime, unchanged above) down on a log grid until n passes
+// the row's fold cap, bisecting between every two grid points that differ. A change that starts
+// and ends inside one grid step (0.23 % in s by default) is the only thing it can miss.
+std::optional<RowTable> tabulate(const Measurement& m, const Parameters& base, double step_decades,
+                                 const std::function<bool()>& keep_going) {
+  Parameters p = parameters_for(m, base);
+  p.model.stress_exponent_p = 1.0;
+  const double g = stress_ratio(1.0, p.fabric.youngs_modulus_MPa, p.fabric.thickness_mm,
+                                p.fabric.weight_N_per_mm2, p.hanging.height_mm, span_mm(p));
+  const int cap = fold_cap_for(m);
+  auto predict = [&](double x) {
+    set_stiffness_constant_K(p, std::exp(x) / g);
+    return prediction_of(solve(p), cap);
+  };
+  std::vector<std::pair<double, RowPrediction>> samples;
+  // Every change between two differing samples, found by recursive bisection.
+  auto refine = [&](auto& self, double x_lo, const RowPrediction& lo, double x_hi,
+                    const RowPrediction& hi) -> void {
+    if (x_hi - x_lo <= kEdgeTolerance) {
+      return;
+    }
+    const double x_mid = 0.5 * (x_lo + x_hi);
+    const RowPrediction mid = predict(x_mid);
+    samples.emplace_back(x_mid, mid);
+    if (!same_prediction(lo, mid)) {
+      self(self, x_lo, lo, x_mid, mid);
+    }
+    if (!same_prediction(mid, hi)) {
+      self(self, x_mid, mid, x_hi, hi);
+    }
+  };
+  const double step = step_decades * std::numbers::ln10;
+  double x = 0.0;
+  RowPrediction above = predict(x);
+  samples.emplace_back(x, above);
+  for (int count = 1; !above.beyond_cap && x > kLowestLogS; ++count) {
+    const double next = x - step;
+    const RowPrediction here = predict(next);
+    samples.emplace_back(next, here);
+    if (!same_prediction(here, above)) {
+      refine(refine, next, here, x, above);
+    }
+    x = next;
+    above = here;
+    if (count % 256 == 0 && !keep_going()) {
+      return std::nullopt;
+    }
+  }
+  std::sort(samples.begin(), samples.end(),
+            [](const auto& a, const auto& b) { return a.first < b.first; });
+  RowTable table;
+  table.log_g = std::log(g);
+  table.states.push_back(samples.front().second);
+  for (std::size_t i = 1; i < samples.size(); ++i) {
+    if (!same_prediction(samples[i].second, table.states.back())) {
+      table.edges.push_back(0.5 * (samples[i - 1].first + samples[i].first));
+      table.states.push_back(samples[i].second);
+    }
+  }
+  return table;
+}
+
+// A stretch of one coordinate (ln K, or p) over which the score stays the same.
+struct Segment {
+  double lo = -kInfinity;
+  double hi = kInfinity;
+  CalibrationScore score;
+
+  double width() const { return hi - lo; }
+  // The middle; a decade inside the finite end of an unbounded stretch.
+  double middle() const {
+    if (std::isinf(lo) && std::isinf(hi)) {
+      return 0.0;
+    }
+    if (std::isinf(lo)) {
+      return hi - std::numbers::ln10;
+    }
+    if (std::isinf(hi)) {
+      return lo + std::numbers::ln10;
+    }
+    return 0.5 * (lo + hi);
+  }
+  bool contains(double v) const { return lo <= v && (v < hi || (v == hi && std::isinf(hi))); }
+};
+
+// Scores the tabulated rows of one fit at any (ln K, p).
+class Fitter {
+ public:
+  Fitter(std::vector<const RowTable*> tables, std::vector<const Measurement*> rows)
+      : tables_(std::move(tables)), rows_(std::move(rows)) {}
+
+  CalibrationScore score_at(double log_K, double p) const {
+    ScoreSum sum;
+    for (std::size_t i = 0; i < tables_.size(); ++i) {
+      sum.add(rows_[i]->observed, tables_[i]->at(p * (log_K + tables_[i]->log_g)));
+    }
+    return sum.score();
+  }
+
+  // Every plateau along ln K at fixed p: a row's prediction changes where p (ln K + log_g) crosses
+  // one of its edges, so the breakpoints are known and nothing between them is missed.
+  std::vector<Segment> sweep_K(double p) const {
+    std::vector<double> breaks;
+    for (const RowTable* t : tables_) {
+      for (double e : t->edges) {
+        breaks.push_back(e / p - t->log_g);
+      }
+    }
+    return sweep(std::move(breaks), -kInfinity, kInfinity,
+                 [&](double log_K) { return score_at(log_K, p); });
+  }
+
+  // Every plateau along p in [p_min, p_max] at fixed ln K.
+  std::vector<Segment> sweep_p(double log_K, double p_min, double p_max) const {
+    std::vector<double> breaks;
+    for (const RowTable* t : tables_) {
+      const double c = log_K + t->log_g;  // ln s at p = 1
+      if (c == 0.0) {
+        continue;
+      }
+      for (double e : t->edges) {
+        const double p = e / c;
+        if (p > p_min && p < p_max) {
+          breaks.push_back(p);
+        }
+      }
+    }
+    return sweep(std::move(breaks), p_min, p_max, [&](double p) { return score_at(log_K, p); });
+  }
+
+  // The mean over the rows of |ln s| at p = 1: how far a unit change of p moves ln s^p.
+  double mean_abs_log_s(double log_K) const {
+    double sum = 0.0;
+    for (const RowTable* t : tables_) {
+      sum += std::abs(log_K + t->log_g);
+    }
+    return tables_.empty() ? 0.0 : sum / static_cast<double>(tables_.size());
+  }
+
+ private:
+  template <class Score>
+  static std::vector<Segment> sweep(std::vector<double> breaks, double lo, double hi,
+                                    const Score& score) {
+    std::sort(breaks.begin(), breaks.end());
+    breaks.erase(std::unique(breaks.begin(), breaks.end()), breaks.end());
+    breaks.insert(breaks.begin(), lo);
+    breaks.push_back(hi);
+    std::vector<Segment> segments;
+    for (std::size_t i = 0; i + 1 < breaks.size(); ++i) {
+      Segment s{breaks[i], breaks[i + 1], {}};
+      if (!(s.hi > s.lo)) {
+        continue;
+      }
+      s.score = score(s.middle());
+      if (!segments.empty() && same_score(segments.back().score, s.score)) {
+        segments.back().hi = s.hi;  // the score stays the same across this break
+      } else {
+        segments.push_back(s);
+      }
+    }
+    return segments;
+  }
+
+  std::vector<const RowTable*> tables_;
+  std::vector<const Measurement*> rows_;
+};
+
+// The best segment: lowest score, then the widest (the fit least sensitive to its constants).
+const Segment* best_segment(const std::vector<Segment>& segments) {
+  const Segment* best = nullptr;
+  for (const Segment& s : segments) {
+    if (!best || better(s.score, best->score) ||
+        (same_score(s.score, best->score) && s.width() > best->width())) {
+      best = &s;
+    }
+  }
+  return best;
+}
+
+const Segment* segment_containing(const std::vector<Segment>& segments, double v) {
+  for (const Segment& s : segments) {
+    if (s.contains(v)) {
+      return &s;
+    }
+  }
+  return segments.empty() ? nullptr : &segments.back();
+}
+
+// K alone: every plateau along ln K is visited; the widest of the best is taken, at its
+// geometric middle (as README, "Calibration", fixed c).
+FittedConstants fit_K(const Fitter& fitter, double p) {
+  const std::vector<Segment> segments = fitter.sweep_K(p);
+  const Segment& best = *best_segment(segments);
+  FittedConstants fit;
+  fit.p = fit.p_low = fit.p_high = fit.best_p_min = fit.best_p_max = p;
+  fit.K = std::exp(best.middle());
+  fit.K_low = std::exp(best.lo);
+  fit.K_high = std::exp(best.hi);
+  fit.score = best.score;
+  fit.best_K_min = kInfinity;
+  fit.best_K_max = 0.0;
+  for (const Segment& s : segments) {
+    if (same_score(s.score, best.score)) {
+      fit.equally_good_elsewhere += &s != &best;
+      fit.best_K_min = std::min(fit.best_K_min, std::exp(s.lo));
+      fit.best_K_max = std::max(fit.best_K_max, std::exp(s.hi));
+    }
+  }
+  return fit;
+}
+
+// K and p: a coarse grid in p with every plateau along ln K at each p, then a grid ten times finer
+// in p around the best p values (a narrow plateau between two coarse p values is found there),
+// then, of the constants that reach the best score, those nearest the paper's form (p closest to
+// 1), centred in their plateau along both coordinates. Where the data cannot tell p apart (the
+// best score holds along a valley of (K, p)), that departs from the paper no further than they
+// demand, instead of drifting to whichever end of the valley is widest.
+std::optional<FittedConstants> fit_K_and_p(const Fitter& fitter, const CalibrationOptions& o,
+                                           const std::function<bool(double)>& keep_going) {
+  struct Candidate {
+    double p;
+    Segment along_K;
+  };
+  std::vector<Candidate> candidates;
+  std::vector<std::pair<CalibrationScore, double>> best_at_p;
+  auto visit = [&](double p) {
+    const std::vector<Segment> segments = fitter.sweep_K(p);
+    const Segment* best = best_segment(segments);
+    best_at_p.emplace_back(best->score, p);
+    for (const Segment& s : segments) {
+      if (same_score(s.score, best->score)) {
+        candidates.push_back({p, s});
+      }
+    }
+  };
+  const int coarse = static_cast<int>(std::floor((o.p_max - o.p_min) / o.p_step + 1e-9)) + 1;
+  for (int i = 0; i < coarse; ++i) {
+    visit(o.p_min + i * o.p_step);
+    if (!keep_going(0.8 * (i + 1) / coarse)) {
+      return std::nullopt;
+    }
+  }
+  std::vector<std::pair<CalibrationScore, double>> ranked = best_at_p;
+  std::stable_sort(ranked.begin(), ranked.end(),
+                   [](const auto& a, const auto& b) { return better(a.first, b.first); });
+  std::vector<double> refined;
+  for (const auto& [score, p] : ranked) {
+    if (static_cast<int>(refined.size()) >= o.refined_p_values) {
+      break;
+    }
+    // One refinement per neighbourhood: the finer grid around p covers its neighbours' gaps.
+    if (std::none_of(refined.begin(), refined.end(),
+                     [&](double q) { return std::abs(q - p) < 1.5 * o.p_step; })) {
+      refined.push_back(p);
+    }
+  }
+  for (std::size_t r = 0; r < refined.size(); ++r) {
+    for (int k = -9; k <= 9; ++k) {
+      const double p = refined[r] + k * 0.1 * o.p_step;
+      if (k != 0 && p >= o.p_min && p <= o.p_max) {
+        visit(p);
+      }
+    }
+    if (!keep_going(0.8 + 0.1 * static_cast<double>(r + 1) / static_cast<double>(refined.size()))) {
+      return std::nullopt;
+    }
+  }
+  CalibrationScore best = candidates.front().along_K.score;
+  for (const Candidate& c : candidates) {
+    best = better(c.along_K.score, best) ? c.along_K.score : best;
+  }
+  FittedConstants fit;
+  fit.score = best;
+  fit.best_K_min = fit.best_p_min = kInfinity;
+  fit.best_K_max = fit.best_p_max = 0.0;
+  double robustness = -kInfinity;
+  double log_K = 0.0;
+  double p = 1.0;
+  for (const Candidate& c : candidates) {
+    if (!same_score(c.along_K.score, best)) {
+      continue;
+    }
+    fit.best_K_min = std::min(fit.best_K_min, std::exp(c.along_K.lo));
+    fit.best_K_max = std::max(fit.best_K_max, std::exp(c.along_K.hi));
+    fit.best_p_min = std::min(fit.best_p_min, c.p);
+    fit.best_p_max = std::max(fit.best_p_max, c.p);
+    const double u = c.along_K.middle();
+    const Segment* along_p = segment_containing(fitter.sweep_p(u, o.p_min, o.p_max), c.p);
+    const double per_p = fitter.mean_abs_log_s(u);
+    const double r = std::min({c.p * (u - c.along_K.lo), c.p * (c.along_K.hi - u),
+                               per_p * (c.p - along_p->lo), per_p * (along_p->hi - c.p)});
+    if (r > robustness) {
+      robustness = r;
+      log_K = u;
+      p = c.p;
+    }
+  }
+  // Centre along p, then along ln K, a few times: each move stays on the same plateau.
+  for (int round = 0; round < 3; ++round) {
+    const Segment* along_p = segment_containing(fitter.sweep_p(log_K, o.p_min, o.p_max), p);
+    const double p_next = std::sqrt(along_p->lo * along_p->hi);
+    const Segment* along_K = segment_containing(fitter.sweep_K(p_next), log_K);
+    if (!same_score(along_K->score, best)) {
+      break;
+    }
+    p = p_next;
+    log_K = along_K->middle();
+  }
+  const Segment along_K = *segment_containing(fitter.sweep_K(p), log_K);
+  const Segment along_p = *segment_containing(fitter.sweep_p(log_K, o.p_min, o.p_max), p);
+  fit.K = std::exp(log_K);
+  fit.p = p;
+  fit.K_low = std::exp(along_K.lo);
+  fit.K_high = std::exp(along_K.hi);
+  fit.p_low = along_p.lo;
+  fit.p_high = along_p.hi;
+  fit.score = fitter.score_at(log_K, p);
+  return fit;
+}
+
+std::optional<FittedConstants> fit_with(const Fitter& fitter, double base_p,
+                                        const CalibrationOptions& o,
+                                        const std::function<bool(double)>& keep_going) {
+  if (o.fit == FitConstants::K) {
+    return fit_K(fitter, base_p);
+  }
+  return fit_K_and_p(fitter, o, keep_going);
+}
+
+void check_options(const CalibrationOptions& o) {
+  if (!(o.p_min > 0.0 && o.p_max <= 5.0 && o.p_min < o.p_max && o.p_step > 0.0 &&
+        o.tabulation_step_decades > 0.0 && o.tabulation_step_decades <= 0.1)) {
+    throw CalibrationError(
+        "calibration options: need 0 < p_min < p_max <= 5, p_step > 0 and a tabulation step in "
+        "(0, 0.1] decades");
+  }
+}
+
+void check_base(const Parameters& base) {
+  if (const auto issues = validate(base); !issues.empty()) {
+    throw CalibrationError("the base parameters are not valid:\n" + format_issues(issues));
+  }
+}
+
+}  // namespace
+
+std::string_view to_string(FitConstants f) {
+  return f == FitConstants::K ? "K" : "K,p";
+}
+
+bool parse_fit_constants(std::string_view s, FitConstants& out) {
+  if (s == "K" || s == "K,p") {
+    out = s == "K" ? FitConstants::K : FitConstants::K_and_p;
+    return true;
+  }
+  return false;
+}
+
+RowPrediction prediction_of(const Solution& s, int fold_cap) {
+  RowPrediction p;
+  if (s.n > fold_cap || s.n_capped) {
+    p.beyond_cap = true;
+    return p;
+  }
+  p.n = s.n;
+  p.z_max_mm = s.z_max_mm;
+  p.Q = s.Q;
+  return p;
+}
+
+bool better(const CalibrationScore& a, const CalibrationScore& b) {
+  if (a.n_missed != b.n_missed) {
+    return a.n_missed < b.n_missed;
+  }
+  if (a.n_missed_by_more_than_one != b.n_missed_by_more_than_one) {
+    return a.n_missed_by_more_than_one < b.n_missed_by_more_than_one;
+  }
+  return a.mean_relative_error < b.mean_relative_error - 1e-9;
+}
+
+bool same_score(const CalibrationScore& a, const CalibrationScore& b) {
+  return !better(a, b) && !better(b, a);
+}
+
+CalibrationScore score_predictions(const std::vector<Measurement>& rows,
+                                   const std::vector<RowPrediction>& predictions) {
+  ScoreSum sum;
+  for (std::size_t i = 0; i < rows.size() && i < predictions.size(); ++i) {
+    sum.add(rows[i].observed, predictions[i]);
+  }
+  return sum.score();
+}
+
+Parameters with_constants(const Parameters& base, double K, double p) {
+  Parameters out = base;
+  out.model.stress_exponent_p = p;
+  set_stiffness_constant_K(out, K);
+  return out;
+}
+
+std::optional<FittedConstants> fit_constants(const std::vector<Measurement>& rows,
+                                             const Parameters& base,
+                                             const CalibrationOptions& options,
+                                             const CalibrationProgress& progress) {
+  check_options(options);
+  check_base(base);
+  if (rows.empty()) {
+    throw CalibrationError("nothing to fit: no rows");
+  }
+  auto keep_going = [&](double fraction) { return !progress || progress(fraction); };
+  std::vector<RowTable> tables;
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    const double done = 0.5 * static_cast<double>(i) / static_cast<double>(rows.size());
+    std::optional<RowTable> t =
+        tabulate(rows[i], base, options.tabulation_step_decades, [&] { return keep_going(done); });
+    if (!t) {
+      return std::nullopt;
+    }
+    tables.push_back(std::move(*t));
+  }
+  std::vector<const RowTable*> table_pointers;
+  std::vector<const Measurement*> row_pointers;
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    table_pointers.push_back(&tables[i]);
+    row_pointers.push_back(&rows[i]);
+  }
+  return fit_with(Fitter(table_pointers, row_pointers), base.model.stress_exponent_p, options,
+                  [&](double f) { return keep_going(0.5 + 0.5 * f); });
+}
+
+CalibrationReport calibrate(const MeasurementSet& data, const Parameters& base,
+                            const CalibrationOptions& options,
+                            const CalibrationProgress& progress) {
+  check_options(options);
+  check_base(base);
+  CalibrationReport report;
+  report.fit = options.fit;
+  report.base = base;
+  std::vector<std::size_t> fit_rows;
+  for (std::size_t i = 0; i < data.rows.size(); ++i) {
+    if (data.rows[i].role == MeasurementRole::fit) {
+      fit_rows.push_back(i);
+    }
+  }
+  report.fit_row_count = static_cast<int>(fit_rows.size());
+  report.check_row_count = static_cast<int>(data.rows.size() - fit_rows.size());
+  if (fit_rows.empty()) {
+    throw CalibrationError(data.origin + ": nothing to fit: every row has role check");
+  }
+  // The groups of the fit rows, for fitting on all but one and testing on that one.
+  std::set<std::string> groups;
+  for (std::size_t i : fit_rows) {
+    groups.insert(data.rows[i].group);
+  }
+  const bool leave_one_out = options.held_out && fit_rows.size() >= 2;
+  const bool split_groups = options.held_out && groups.size() >= 2;
+  const double fits = 1.0 + (leave_one_out ? static_cast<double>(fit_rows.size()) : 0.0) +
+                      (split_groups ? static_cast<double>(groups.size()) : 0.0);
+  double fits_done = 0.0;
+  // Tabulating is about as much work as the fits together (K,p) and far more than K alone.
+  auto keep_going = [&](double fraction) { return !progress || progress(fraction); };
+  auto fit_progress = [&](double f) { return keep_going(0.4 + 0.6 * (fits_done + f) / fits); };
+
+  std::vector<RowTable> tables(data.rows.size());
+  for (std::size_t k = 0; k < fit_rows.size(); ++k) {
+    const double done = 0.4 * static_cast<double>(k) / static_cast<double>(fit_rows.size());
+    std::optional<RowTable> t =
+        tabulate(data.rows[fit_rows[k]], base, options.tabulation_step_decades,
+                 [&] { return keep_going(done); });
+    if (!t) {
+      report.cancelled = true;
+      return report;
+    }
+    tables[fit_rows[k]] = std::move(*t);
+  }
+  auto fitter_for = [&](const auto& include) {
+    std::vector<const RowTable*> t;
+    std::vector<const Measurement*> r;
+    for (std::size_t i : fit_rows) {
+      if (include(i)) {
+        t.push_back(&tables[i]);
+        r.push_back(&data.rows[i]);
+      }
+    }
+    return Fitter(std::move(t), std::move(r));
+  };
+  const double base_p = base.model.stress_exponent_p;
+  auto run_fit = [&](const Fitter& fitter) {
+    std::optional<FittedConstants> fit = fit_with(fitter, base_p, options, fit_progress);
+    fits_done += 1.0;
+    if (fit && !keep_going(0.4 + 0.6 * fits_done / fits)) {
+      fit.reset();
+    }
+    return fit;
+  };
+  auto predict = [&](const Measurement& m, double K, double p) {
+    return compare_with_published(m.observed, with_constants(parameters_for(m, base), K, p));
+  };
+
+  const std::optional<FittedConstants> in_sample =
+      run_fit(fitter_for([](std::size_t) { return true; }));
+  if (!in_sample) {
+    report.cancelled = true;
+    return report;
+  }
+  report.fitted = *in_sample;
+  for (const Measurement& m : data.rows) {
+    CalibrationRow row;
+    row.measurement = m;
+    row.baseline = compare_with_published(m.observed, parameters_for(m, base));
+    row.fitted = predict(m, in_sample->K, in_sample->p);
+    if (m.role == MeasurementRole::check) {
+      row.held_out = row.fitted;
+      row.held_out_K = in_sample->K;
+      row.held_out_p = in_sample->p;
+    }
+    report.rows.push_back(std::move(row));
+  }
+  if (leave_one_out) {
+    for (std::size_t left_out : fit_rows) {
+      const std::optional<FittedConstants> fit =
+          run_fit(fitter_for([left_out](std::size_t i) { return i != left_out; }));
+      if (!fit) {
+        report.cancelled = true;
+        return report;
+      }
+      CalibrationRow& row = report.rows[left_out];
+      row.held_out = predict(row.measurement, fit->K, fit->p);
+      row.held_out_K = fit->K;
+      row.held_out_p = fit->p;
+    }
+  }
+  std::vector<PublishedComparison> pooled_test;
+  if (split_groups) {
+    for (const std::string& group : groups) {
+      const std::optional<FittedConstants> fit =
+          run_fit(fitter_for([&](std::size_t i) { return data.rows[i].group != group; }));
+      if (!fit) {
+        report.cancelled = true;
+        return report;
+      }
+      GroupSplit split;
+      split.test_group = group;
+      split.fit = *fit;
+      std::vector<PublishedComparison> train;
+      std::vector<PublishedComparison> test;
+      for (std::size_t i : fit_rows) {
+        (data.rows[i].group == group ? test : train)
+            .push_back(predict(data.rows[i], fit->K, fit->p));
+      }
+      split.train = summarize(train);
+      split.test = summarize(test);
+      pooled_test.insert(pooled_test.end(), test.begin(), test.end());
+      report.group_splits.push_back(std::move(split));
+    }
+  }
+  report.group_split_test = summarize(pooled_test);
+  std::vector<PublishedComparison> baseline_fit, baseline_check, fitted, held_out, check;
+  for (const CalibrationRow& row : report.rows) {
+    const bool is_fit = row.measurement.role == MeasurementRole::fit;
+    (is_fit ? baseline_fit : baseline_check).push_back(row.baseline);
+    (is_fit ? fitted : check).push_back(row.fitted);
+    if (is_fit && row.held_out) {
+      held_out.push_back(*row.held_out);
+    }
+  }
+  report.baseline_fit_rows = summarize(baseline_fit);
+  report.baseline_check_rows = summarize(baseline_check);
+  report.in_sample = summarize(fitted);
+  report.leave_one_out = summarize(held_out);
+  report.check_rows = summarize(check);
+  return report;
+}
+
+ModelForm model_form(const ModelSettings& m) {
+  if (m.stress_exponent_p != 1.0) {
+    return ModelForm::calibrated;
+  }
+  return m.load_constant_c == kCalibratedLoadConstantC ? ModelForm::paper
+                                                       : ModelForm::paper_other_c;
+}
+
+std::string describe_model_form(const Parameters& p) {
+  char constants[160];
+  std::snprintf(constants, sizeof constants, "p = %.4g, c = %.4g (K = %.4g at nu = %.3g)",
+                p.model.stress_exponent_p, p.model.load_constant_c, stiffness_constant_K(p),
+                p.fabric.poisson_ratio);
+  switch (model_form(p.model)) {
+    case ModelForm::paper:
+      return std::string("paper's form of eq. 7: ") + constants;
+    case ModelForm::paper_other_c:
+      return std::string("paper's form of eq. 7 with its own c: ") + constants +
+             "; FoldLab's default is c = 26.9";
+    case ModelForm::calibrated:
+      return std::string("calibrated eq. 7, s -> s^p: ") + constants;
+  }
+  return constants;
+}
+
+}  // namespace foldlab

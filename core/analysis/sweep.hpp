@@ -1,0 +1,60 @@
+// One input swept over a range (the sweep plots and `foldlab sweep`), and two inputs over a grid
+// (the regime map). Pure functions of the base parameters: safe to run on several threads.
+#pragma once
+
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "core/model/parameters.hpp"
+#include "core/model/solver.hpp"
+
+namespace foldlab {
+
+struct SweepAxis {
+  std::string key;  // a --set key that takes a number: t, E, w, h, L, d, K, nu, c, p ...
+  double from = 0.0;
+  double to = 1.0;
+  int steps = 100;  // points, >= 2
+  bool logarithmic = false;
+
+  double value(int i) const;  // the i-th of `steps` values, from `from` to `to`
+};
+
+// The keys a sweep or a map can run over, and whether their natural scale is logarithmic.
+const std::vector<std::string>& sweepable_keys();
+bool natural_log_scale(const std::string& key);
+
+// Checks the axis: a known numeric key, finite ends, steps in [2, 100000], positive ends on a log
+// scale. Returns the problem as a sentence, or nullopt.
+std::optional<std::string> check_axis(const SweepAxis& axis);
+
+// Sets a numeric input by its key (K at the current nu, as --set does). False for unknown keys.
+bool set_number(Parameters& p, const std::string& key, double value);
+double get_number(const Parameters& p, const std::string& key);
+
+struct SweepPoint {
+  double value = 0.0;
+  bool valid = false;  // false where the parameters do not validate (e.g. d >= L/2): no solve
+  int n = 0;
+  double Q = 1.0;
+  double z_max_mm = 0.0;
+  Regime regime = Regime::no_slack;
+};
+
+std::vector<SweepPoint> sweep(const Parameters& base, const SweepAxis& axis);
+
+struct MapCell {
+  bool valid = false;
+  int n = 0;
+  float z_max_mm = 0.0f;
+  Regime regime = Regime::no_slack;
+};
+
+// Rows [row_begin, row_end) of a map over two axes, row-major (x fastest): out has x.steps cells
+// per row. Each cell is one solve at the base parameters with the two inputs set.
+void map_rows(const Parameters& base, const SweepAxis& x, const SweepAxis& y, int row_begin,
+              int row_end, std::span<MapCell> out);
+
+}  // namespace foldlab

@@ -1,0 +1,262 @@
+#include "core/geometry/geometry.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include <Eigen/Geometry>
+
+namespace foldlab {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+// The fibre at x = 0 as a zig-zag in the (y, z) plane, from the upper edge down to a_0.
+std::vector<Eigen::Vector2d> central_zigzag(const Solution& s) {
+  std::vector<Eigen::Vector2d> points;
+  if (s.a_mm.empty()) {
+    // No folds: the cloth hangs straight from the sag of its upper edge (0 without slack).
+    return points;
+  }
+  for (int i = s.n; i >= 0; --i) {
+    points.emplace_back(s.a_mm[static_cast<std::size_t>(i)], fold_sign(i) * s.z_max_mm);
+  }
+  return points;
+}
+
+// Points at arc-length fractions f_j = j/(count-1) along a polyline.
+std::vector<Eigen::Vector2d> sample_by_arc_length(const std::vector<Eigen::Vector2d>& polyline,
+                                                  int count) {
+  std::vector<double> cumulative(polyline.size(), 0.0);
+  for (std::size_t k = 1; k < polyline.size(); ++k) {
+    cumulative[k] = cumulative[k - 1] + (polyline[k] - polyline[k - 1]).norm();
+  }
+  const double total = cumulative.back();
+  std::vector<Eigen::Vector2d> samples;
+  samples.reserve(static_cast<std::size_t>(count));
+  std::size_t segment = 1;
+  for (int j = 0; j < count; ++j) {
+    const double target = total * j / (count - 1);
+    while (segment + 1 < polyline.size() && cumulative[segment] < target) {
+      ++segment;
+    }
+    const double length = cumulative[segment] - cumulative[segment - 1];
+    const double t =
+        length > 0.0 ? std::clamp((target - cumulative[segment - 1]) / length, 0.0, 1.0) : 0.0;
+    samples.push_back(polyline[segment - 1] + t * (polyline[segment] - polyline[segment - 1]));
+  }
+  return samples;
+}
+
+}  // namespace
+
+Eigen::Vector3d place_on_shape(const Eigen::Vector3d& span_point, int span, double span_mm,
+                               const Shape& shape) {
+  const int spans = shape.span_count();
+  const double x = span_point.x() + (span - 0.5 * (spans - 1)) * span_mm;
+  // Shear about the left support: y' = y - tan(incline) (x + W/2), W the whole width.
+  const double y = span_point.y() - shape.shear() * (x + 0.5 * spans * span_mm);
+  return {x, y, span_point.z()};
+}
+
+double lowest_point_mm(const Solution& s, double height_mm) {
+  return s.a_mm.empty() ? s.sag_amplitude_mm + height_mm : s.a_mm.front();
+}
+
+std::vector<Eigen::Vector3d> support_points(double span_mm, const Shape& shape) {
+  std::vector<Eigen::Vector3d> points;
+  for (int span = 0; span < shape.span_count(); ++span) {
+    if (span == 0) {
+      points.push_back(place_on_shape({-0.5 * span_mm, 0.0, 0.0}, span, span_mm, shape));
+    }
+    points.push_back(place_on_shape({0.5 * span_mm, 0.0, 0.0}, span, span_mm, shape));
+  }
+  return points;
+}
+
+FoldLines fold_lines(const Solution& s, const Shape& shape, int samples, int max_lines) {
+  FoldLines out;
+  if (s.a_mm.empty()) {
+    return out;
+  }
+  samples = std::max(2, samples);
+  const int spans = shape.span_count();
+  const int line_count = (s.n + 1) * spans;
+  out.stride = std::max(1, (line_count + max_lines - 1) / std::max(1, max_lines));
+  const double l = s.span_mm;
+  for (int span = 0; span < spans; ++span) {
+    for (int i = 0; i <= s.n; i += out.stride) {
+      FoldLine line;
+      line.index = i;
+      line.sign = fold_sign(i);
+      line.span = span;
+      line.points_mm.reserve(static_cast<std::size_t>(samples));
+      const double a = s.a_mm[static_cast<std::size_t>(i)];
+      for (int k = 0; k < samples; ++k) {
+        const double x = l * (static_cast<double>(k) / (samples - 1) - 0.5);
+        const double c = std::cos(kPi * x / l);
+        line.points_mm.push_back(
+            place_on_shape({x, a * c, line.sign * s.z_max_mm * c}, span, l, shape));
+      }
+      out.lines.push_back(std::move(line));
+    }
+  }
+  return out;
+}
+
+DeformedGrid deformed_grid(const Solution& s, const Parameters& p, int nx, int ny) {
+  DeformedGrid grid = deformed_grid_positions(s, p, nx, ny);
+  grid.normals = vertex_normals(grid.positions_mm, grid.triangle_indices);
+  return grid;
+}
+
+namespace {
+
+// The central fibre's zig-zag with its cumulative arc lengths, for points at a given arc length.
+struct Zigzag {
+  std::vector<Eigen::Vector2d> points;  // (y, z) from the upper edge down to a_0
+  std::vector<double> cumulative;
+
+  double length() const { return cumulative.back(); }
+
+  // The point at arc length `at` (clamped to the zig-zag); `segment` remembers where the last
+  // lookup ended, so increasing lookups walk the polyline once.
+  Eigen::Vector2d at_length(double at, std::size_t& segment) const {
+    at = std::clamp(at, 0.0, length());
+    while (segment + 2 < points.size() && cumulative[segment + 1] < at) {
+      ++segment;
+    }
+    const double piece = cumulative[segment + 1] - cumulative[segment];
+    const double t = piece > 0.0 ? (at - cumulative[segment]) / piece : 0.0;
+    return points[segment] + std::clamp(t, 0.0, 1.0) * (points[segment + 1] - points[segment]);
+  }
+};
+
+Zigzag make_zigzag(const Solution& s, double h) {
+  Zigzag z;
+  z.points = central_zigzag(s);
+  if (z.points.empty()) {
+    z.points = {Eigen::Vector2d(s.sag_amplitude_mm, 0.0),
+                Eigen::Vector2d(s.sag_amplitude_mm + h, 0.0)};
+  }
+  z.cumulative.assign(z.points.size(), 0.0);
+  for (std::size_t k = 1; k < z.points.size(); ++k) {
+    z.cumulative[k] = z.cumulative[k - 1] + (z.points[k] - z.points[k - 1]).norm();
+  }
+  return z;
+}
+
+}  // namespace
+
+DeformedGrid deformed_grid_positions(const Solution& s, const Parameters& p, int nx, int ny) {
+  DeformedGrid grid;
+  grid.nx = std::max(2, nx);
+  grid.ny = std::max(2, ny);
+  const double h = p.hanging.height_mm;
+  const double L = p.hanging.length_mm;
+  const double l = s.span_mm > 0.0 ? s.span_mm : span_mm(p);
+  const Shape& shape = p.shape;
+  const int spans = shape.span_count();
+  const bool rectangular = shape.kind == ShapeKind::rectangular;
+  const Zigzag zigzag = make_zigzag(s, h);
+
+  // The membrane's rows sit at the same fraction of every fibre: sample the central one once.
+  const std::vector<Eigen::Vector2d> rows = sample_by_arc_length(zigzag.points, grid.ny);
+
+  const std::size_t count = static_cast<std::size_t>(grid.nx) * grid.ny;
+  grid.positions_mm.resize(count);
+  grid.material_mm.resize(count);
+  const double total_width = spans * L;
+  for (int i = 0; i < grid.nx; ++i) {
+    // Which span the column falls in, and where in it.
+    const double X_total = total_width * (static_cast<double>(i) / (grid.nx - 1) - 0.5);
+    const int span =
+        std::clamp(static_cast<int>(std::floor((X_total + 0.5 * total_width) / L)), 0, spans - 1);
+    const double X = X_total + 0.5 * total_width - (span + 0.5) * L;
+    const double c = std::max(0.0, std::cos(kPi * X / L));  // = cos(pi x / l) at x = X l / L
+    const double x = X * l / L;
+    double column_length = 0.0;
+    Eigen::Vector3d previous;
+    std::size_t segment = 0;
+    for (int j = 0; j < grid.ny; ++j) {
+      const double fraction = static_cast<double>(j) / (grid.ny - 1);
+      Eigen::Vector2d yz;
+      double material_Y;
+      if (!rectangular) {
+        yz = c * rows[static_cast<std::size_t>(j)];
+        material_Y = fraction * h * c;
+      } else {
+        // Arc length Y along the zig-zag (c times the central one), then straight down.
+        material_Y = fraction * h;
+        const double zigzag_here = c * zigzag.length();
+        if (material_Y <= zigzag_here && c > 0.0) {
+          yz = c * zigzag.at_length(material_Y / c, segment);
+        } else {
+          yz = c * zigzag.points.back() + Eigen::Vector2d(material_Y - zigzag_here, 0.0);
+        }
+      }
+      const Eigen::Vector3d point = place_on_shape({x, yz.x(), yz.y()}, span, l, shape);
+      if (j > 0) {
+        column_length += (point - previous).norm();
+      }
+      previous = point;
+      const std::size_t v = static_cast<std::size_t>(j) * grid.nx + i;
+      grid.positions_mm[v] = point.cast<float>();
+      grid.material_mm[v] =
+          Eigen::Vector2f(static_cast<float>(X_total), static_cast<float>(material_Y));
+    }
+    const double flat_length = rectangular ? h : h * c;
+    grid.worst_fibre_error =
+        std::max(grid.worst_fibre_error, std::abs(column_length - flat_length) / h);
+  }
+
+  grid.triangle_indices.resize(static_cast<std::size_t>(grid.nx - 1) * (grid.ny - 1) * 6);
+  std::uint32_t* index = grid.triangle_indices.data();
+  for (int j = 0; j + 1 < grid.ny; ++j) {
+    for (int i = 0; i + 1 < grid.nx; ++i) {
+      const auto v00 = static_cast<std::uint32_t>(j * grid.nx + i);
+      const auto v10 = v00 + 1;
+      const auto v01 = v00 + static_cast<std::uint32_t>(grid.nx);
+      const auto v11 = v01 + 1;
+      for (std::uint32_t v : {v00, v01, v10, v10, v01, v11}) {
+        *index++ = v;
+      }
+    }
+  }
+  return grid;
+}
+
+std::vector<Eigen::Vector3f> vertex_normals(const std::vector<Eigen::Vector3f>& positions,
+                                            const std::vector<std::uint32_t>& triangle_indices) {
+  std::vector<Eigen::Vector3f> normals(positions.size(), Eigen::Vector3f::Zero());
+  for (std::size_t t = 0; t + 2 < triangle_indices.size(); t += 3) {
+    const std::uint32_t a = triangle_indices[t];
+    const std::uint32_t b = triangle_indices[t + 1];
+    const std::uint32_t c = triangle_indices[t + 2];
+    // The cross product's length is twice the area: summing it weights by area.
+    const Eigen::Vector3f face = (positions[b] - positions[a]).cross(positions[c] - positions[a]);
+    normals[a] += face;
+    normals[b] += face;
+    normals[c] += face;
+  }
+  for (Eigen::Vector3f& n : normals) {
+    const float length = n.norm();
+    n = length > 0.0f ? Eigen::Vector3f(n / length) : Eigen::Vector3f::UnitZ();
+  }
+  return normals;
+}
+
+}  // namespace foldlab
+
+namespace foldlab {
+
+Eigen::Vector3f breeze_offset(const Eigen::Vector3f& position_mm, float depth_mm,
+                              float amplitude_mm, float time_s) {
+  constexpr float kOmega = 2.0f * static_cast<float>(kPi) * 0.4f;  // 0.4 Hz
+  const float down = std::max(0.0f, position_mm.y()) / std::max(depth_mm, 1.0f);
+  const float weight = amplitude_mm * down * down;
+  return {0.25f * weight * std::sin(0.7f * kOmega * time_s + 1.3f), 0.0f,
+          weight * std::sin(kOmega * time_s - 2.5f * static_cast<float>(kPi) * down)};
+}
+
+}  // namespace foldlab

@@ -1,0 +1,73 @@
+// The pipeline parameters -> solution -> fold lines / grid -> normals, lazy in both directions:
+// a stage recomputes only when an input it depends on has changed AND somebody asks for its
+// output. A view that is hidden does not ask, so it costs nothing; the headless `solve` never asks
+// for the grid, so it never builds one.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <string_view>
+#include <vector>
+
+#include "core/geometry/geometry.hpp"
+#include "core/model/parameters.hpp"
+#include "core/model/solver.hpp"
+
+namespace foldlab {
+
+enum class Stage { solution, fold_lines, grid, normals };
+inline constexpr int kStageCount = 4;
+std::string_view to_string(Stage s);
+
+struct StageStats {
+  std::uint64_t evaluations = 0;
+  double total_ms = 0.0;
+  double last_ms = 0.0;
+};
+
+class Scene {
+ public:
+  explicit Scene(const Parameters& parameters = Parameters{});
+
+  // Inputs. Each is a no-op when the value does not change.
+  void set_parameters(const Parameters& parameters);
+  void set_grid_resolution(int nx, int ny);
+  void set_fold_line_samples(int samples);
+
+  const Parameters& parameters() const { return parameters_; }
+  int grid_nx() const { return grid_nx_; }
+  int grid_ny() const { return grid_ny_; }
+
+  // Outputs, computed on demand.
+  const Solution& solution();
+  const FoldLines& fold_lines();
+  const DeformedGrid& grid();  // positions, triangles and fibre error; normals via normals()
+  const std::vector<Eigen::Vector3f>& normals();
+
+  const StageStats& stats(Stage stage) const { return stats_[index(stage)]; }
+  // Bumps each time the stage's output is recomputed: a consumer (a GPU buffer, say) that
+  // remembers the number it last saw knows whether to upload again.
+  std::uint64_t version(Stage stage) const { return versions_[index(stage)]; }
+  // Zeroes the counters (not the versions).
+  void reset_stats();
+
+ private:
+  static std::size_t index(Stage stage) { return static_cast<std::size_t>(stage); }
+  void invalidate_from(Stage stage);
+  template <class Compute>
+  void run(Stage stage, Compute&& compute);
+
+  Parameters parameters_;
+  int grid_nx_ = 128;
+  int grid_ny_ = 128;
+  int fold_line_samples_ = 201;
+
+  Solution solution_;
+  FoldLines fold_lines_;
+  DeformedGrid grid_;
+  std::array<bool, kStageCount> stale_{true, true, true, true};
+  std::array<StageStats, kStageCount> stats_{};
+  std::array<std::uint64_t, kStageCount> versions_{};
+};
+
+}  // namespace foldlab

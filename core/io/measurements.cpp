@@ -1,0 +1,625 @@
+#include "core/io/measurements.hpp"
+#include "core/io/io.hpp"
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <optional>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "core/model/settings.hpp"
+#include "core/model/shape.hpp"
+#include "core/model/text_format.hpp"
+
+namespace foldlab {
+namespace {
+
+using nlohmann::json;
+
+constexpr std::string_view kName = "name";
+constexpr std::string_view kGroup = "group";
+constexpr std::string_view kRole = "role";
+constexpr std::string_view kShape = "shape";
+constexpr std::string_view kCount = "n";
+constexpr std::string_view kDepth = "z_max_mm";
+constexpr std::string_view kRatio = "Q";
+
+// The inputs a row must give: the input table's required rows (the cloth and its hanging). Their
+// columns are named as validate() names its fields, so that a range problem names the column.
+const std::vector<const InputSpec*>& row_inputs() {
+  static const std::vector<const InputSpec*> rows = [] {
+    std::vector<const InputSpec*> out;
+    for (const InputSpec& spec : input_table()) {
+      if (spec.required) {
+        out.push_back(&spec);
+      }
+    }
+    return out;
+  }();
+  return rows;
+}
+
+std::string required_columns() {
+  std::vector<std::string_view> fields;
+  for (const InputSpec* spec : row_inputs()) {
+    fields.push_back(spec->field);
+  }
+  return detail::join(fields, ", ");
+}
+
+bool is_row_input(std::string_view column) {
+  return std::any_of(row_inputs().begin(), row_inputs().end(),
+                     [&](const InputSpec* spec) { return spec->field == column; });
+}
+
+// The row's inputs put into (and taken from) Parameters, where the input table's accessors reach.
+void set_inputs(Measurement& m, const Parameters& p) {
+  m.thickness_mm = p.fabric.thickness_mm;
+  m.youngs_modulus_MPa = p.fabric.youngs_modulus_MPa;
+  m.weight_N_per_mm2 = p.fabric.weight_N_per_mm2;
+  m.height_mm = p.hanging.height_mm;
+  m.length_mm = p.hanging.length_mm;
+  m.support_displacement_mm = p.hanging.support_displacement_mm;
+}
+
+std::string known_columns() {
+  return detail::join(measurement_columns(), ", ");
+}
+
+bool is_known_column(std::string_view name) {
+  const auto& columns = measurement_columns();
+  return std::find(columns.begin(), columns.end(), name) != columns.end();
+}
+
+// One cell of a row as the file gives it: absent or empty, text (every CSV cell, JSON strings),
+// a JSON number, or some other JSON value (described for the message).
+struct Cell {
+  enum class Kind { missing, text, number, other } kind = Kind::missing;
+  std::string text;
+  double number = 0.0;
+  bool number_is_integer = false;
+};
+
+// Turns the cells of one row into a Measurement, collecting every problem with its row and column.
+class RowReader {
+ public:
+  // `typed`: the file has its own number type (JSON), so text where a number belongs is an error
+  // rather than something to parse.
+  RowReader(std::string where, std::map<std::string, Cell, std::less<>> cells, bool typed,
+            std::vector<std::string>& problems)
+      : where_(std::move(where)), cells_(std::move(cells)), typed_(typed), problems_(problems) {}
+
+  void problem(std::string_view column, const std::string& what) {
+    problems_.push_back(where_ + ", column " + std::string(column) + ": " + what);
+  }
+
+  const Cell& cell(std::string_view column) const {
+    static const Cell missing;
+    const auto it = cells_.find(column);
+    return it == cells_.end() ? missing : it->second;
+  }
+
+  std::optional<double> number(std::string_view column, bool required) {
+    const Cell& c = cell(column);
+    switch (c.kind) {
+      case Cell::Kind::missing:
+        if (required) {
+          problem(column, "missing (a number is required)");
+        }
+        return std::nullopt;
+      case Cell::Kind::number:
+        return c.number;
+      case Cell::Kind::text:
+        if (const std::optional<double> value = parse_number(c.text); value && !typed_) {
+          return value;
+        }
+        problem(column, typed_ ? "expected a number, got text \"" + c.text + "\""
+                               : "'" + c.text + "' is not a number");
+        return std::nullopt;
+      case Cell::Kind::other:
+        problem(column, "expected a number, got " + c.text);
+        return std::nullopt;
+    }
+    return std::nullopt;
+  }
+
+  std::optional<int> whole_number(std::string_view column) {
+    const Cell& c = cell(column);
+    const std::size_t before = problems_.size();
+    const std::optional<double> value = number(column, false);
+    if (!value || problems_.size() != before) {
+      return std::nullopt;
+    }
+    const bool whole =
+        c.kind == Cell::Kind::number ? c.number_is_integer : *value == std::floor(*value);
+    if (!whole || std::abs(*value) > 1e9) {
+      problem(column, "'" + (c.kind == Cell::Kind::text ? c.text : json(*value).dump()) +
+                          "' is not a whole number");
+      return std::nullopt;
+    }
+    return static_cast<int>(*value);
+  }
+
+  std::string text(std::string_view column) {
+    const Cell& c = cell(column);
+    if (c.kind == Cell::Kind::missing) {
+      return "";
+    }
+    if (c.kind != Cell::Kind::text) {
+      problem(column,
+              "expected text, got " +
+                  (c.kind == Cell::Kind::number ? "the number " + json(c.number).dump() : c.text));
+      return "";
+    }
+    if (c.text.find_first_of("\r\n") != std::string::npos) {
+      problem(column, "text must be one line");
+      return "";
+    }
+    return c.text;
+  }
+
+  Measurement read(int row) {
+    Measurement m;
+    m.row = row;
+    m.name = text(kName);
+    m.group = text(kGroup);
+    if (const std::string role = text(kRole);
+        !role.empty() && !parse_measurement_role(role, m.role)) {
+      problem(kRole, "'" + role + "' is not one of: fit, check");
+    }
+    Parameters given;
+    bool all_given = true;
+    for (const InputSpec* spec : row_inputs()) {
+      const std::optional<double> value = number(spec->field, true);
+      all_given = all_given && value.has_value();
+      if (value) {
+        spec->number(given) = *value;
+      }
+    }
+    m.shape = text(kShape);
+    if (ShapeKind kind{}; !m.shape.empty() && !parse_shape_kind(m.shape, kind)) {
+      problem(kShape, "'" + m.shape +
+                          "' is not a shape FoldLab knows (cosine, rectangular, "
+                          "strip, inclined); leave it empty if unsure");
+    }
+    const std::size_t before_observed = problems_.size();
+    if (const std::optional<int> n = whole_number(kCount)) {
+      m.observed.n = *n;
+      if (*n < 0) {
+        problem(kCount, "a number of wrinkles is >= 0");
+      }
+    }
+    if (const std::optional<double> z = number(kDepth, false)) {
+      m.observed.z_max_mm = *z;
+      if (!(*z > 0.0)) {
+        problem(kDepth, json(*z).dump() + " must be > 0: an observed depth is compared by ratio");
+      }
+    }
+    if (const std::optional<double> Q = number(kRatio, false)) {
+      m.observed.Q = *Q;
+      if (!(*Q > 1.0)) {
+        problem(kRatio, json(*Q).dump() +
+                            " must be > 1: a ratio of consecutive amplitudes (leave out a "
+                            "misprint)");
+      }
+    }
+    if (problems_.size() == before_observed && !m.observed.n && !m.observed.z_max_mm &&
+        !m.observed.Q) {
+      problems_.push_back(where_ + ": nothing observed: give at least one of n, z_max_mm, Q");
+    }
+    if (all_given) {
+      set_inputs(m, given);
+      // The model's own ranges, with its reasons, for the inputs a row sets.
+      for (const ValidationIssue& issue : validate(given)) {
+        if (is_row_input(issue.field)) {
+          problem(issue.field, issue.message);
+        }
+      }
+    }
+    return m;
+  }
+
+ private:
+  std::string where_;
+  std::map<std::string, Cell, std::less<>> cells_;
+  bool typed_;
+  std::vector<std::string>& problems_;
+};
+
+using detail::join_lines;
+
+std::string_view trim(std::string_view s) {
+  const std::size_t first = s.find_first_not_of(" \t");
+  if (first == std::string_view::npos) {
+    return {};
+  }
+  return s.substr(first, s.find_last_not_of(" \t") - first + 1);
+}
+
+// One CSV line into fields (RFC 4180 quoting within one line). Returns an error sentence for an
+// unterminated quote or text after a closing quote.
+std::optional<std::string> split_csv_line(std::string_view line, std::vector<std::string>& fields) {
+  fields.clear();
+  std::size_t i = 0;
+  while (true) {
+    while (i < line.size() && (line[i] == ' ' || line[i] == '\t')) {
+      ++i;
+    }
+    std::string field;
+    if (i < line.size() && line[i] == '"') {
+      ++i;
+      bool closed = false;
+      while (i < line.size()) {
+        if (line[i] == '"') {
+          if (i + 1 < line.size() && line[i + 1] == '"') {
+            field += '"';
+            i += 2;
+            continue;
+          }
+          ++i;
+          closed = true;
+          break;
+        }
+        field += line[i++];
+      }
+      if (!closed) {
+        return "a quoted field is not closed (quotes inside a field are written \"\")";
+      }
+      while (i < line.size() && (line[i] == ' ' || line[i] == '\t')) {
+        ++i;
+      }
+      if (i < line.size() && line[i] != ',') {
+        return "text after the closing quote of field " + std::to_string(fields.size() + 1);
+      }
+    } else {
+      const std::size_t end = std::min(line.find(',', i), line.size());
+      field = std::string(trim(line.substr(i, end - i)));
+      i = end;
+    }
+    fields.push_back(std::move(field));
+    if (i >= line.size()) {
+      return std::nullopt;
+    }
+    ++i;  // the comma
+  }
+}
+
+using detail::shortest_number;
+
+std::string csv_text(const std::string& text) {
+  if (text.find_first_of("\r\n") != std::string::npos) {
+    throw MeasurementError("'" + text + "': CSV text fields must be one line");
+  }
+  const bool quote =
+      text.find_first_of(",\"") != std::string::npos ||
+      (!text.empty() && (text.front() == ' ' || text.front() == '\t' || text.back() == ' ' ||
+                         text.back() == '\t' || text.front() == '#'));
+  if (!quote) {
+    return text;
+  }
+  std::string out = "\"";
+  for (char c : text) {
+    out += c == '"' ? "\"\"" : std::string(1, c);
+  }
+  return out + "\"";
+}
+
+// The cells of one measurement by column, as the writers put them out.
+std::vector<std::pair<std::string_view, std::string>> csv_cells(const Measurement& m) {
+  auto optional_number = [](const auto& value) {
+    return value ? shortest_number(static_cast<double>(*value)) : std::string();
+  };
+  std::vector<std::pair<std::string_view, std::string>> cells = {
+      {kName, csv_text(m.name)},
+      {kGroup, csv_text(m.group)},
+      {kRole, std::string(to_string(m.role))},
+      {kShape, csv_text(m.shape)},
+      {kCount, m.observed.n ? std::to_string(*m.observed.n) : std::string()},
+      {kDepth, optional_number(m.observed.z_max_mm)},
+      {kRatio, optional_number(m.observed.Q)}};
+  const Parameters inputs = parameters_for(m, Parameters{});
+  std::vector<std::pair<std::string_view, std::string>> input_cells;
+  for (const InputSpec* spec : row_inputs()) {
+    input_cells.emplace_back(spec->field, shortest_number(*spec->value(inputs)));
+  }
+  cells.insert(cells.begin() + 3, input_cells.begin(), input_cells.end());
+  return cells;
+}
+
+std::string describe_json(const json& v) {
+  return std::string(v.is_null() ? "null" : v.type_name()) + " " + v.dump();
+}
+
+}  // namespace
+
+const std::vector<std::string_view>& measurement_columns() {
+  static const std::vector<std::string_view> columns = [] {
+    std::vector<std::string_view> out = {kName, kGroup, kRole};
+    for (const InputSpec* spec : row_inputs()) {
+      out.push_back(spec->field);
+    }
+    out.insert(out.end(), {kShape, kCount, kDepth, kRatio});
+    return out;
+  }();
+  return columns;
+}
+
+MeasurementSet measurements_from_csv(const std::string& text, const std::string& origin) {
+  MeasurementSet set;
+  set.origin = origin;
+  std::vector<std::string> problems;
+  std::vector<std::string> header;
+  std::vector<std::string> fields;
+  std::istringstream in(text);
+  std::string line;
+  int line_number = 0;
+  int row = 0;
+  bool header_ok = false;
+  while (std::getline(in, line)) {
+    ++line_number;
+    if (!line.empty() && line.back() == '\r') {
+      line.pop_back();
+    }
+    if (line_number == 1 && line.rfind("\xEF\xBB\xBF", 0) == 0) {
+      line.erase(0, 3);  // a UTF-8 byte order mark, as spreadsheets write
+    }
+    const std::string_view content = trim(line);
+    if (content.empty() || content.front() == '#') {
+      continue;
+    }
+    const std::string where = origin + ": line " + std::to_string(line_number);
+    if (header.empty()) {
+      if (const auto error = split_csv_line(line, header)) {
+        problems.push_back(where + " (header): " + *error);
+        break;
+      }
+      header_ok = true;
+      for (std::size_t i = 0; i < header.size(); ++i) {
+        if (!is_known_column(header[i])) {
+          problems.push_back(where + " (header), column " + std::to_string(i + 1) + " '" +
+                             header[i] + "': unknown column (known: " + known_columns() + ")");
+          header_ok = false;
+        } else if (std::find(header.begin(), header.begin() + static_cast<std::ptrdiff_t>(i),
+                             header[i]) != header.begin() + static_cast<std::ptrdiff_t>(i)) {
+          problems.push_back(where + " (header), column " + std::to_string(i + 1) + " '" +
+                             header[i] + "': appears twice");
+          header_ok = false;
+        }
+      }
+      std::vector<std::string_view> missing_columns;
+      for (const InputSpec* spec : row_inputs()) {
+        if (std::find(header.begin(), header.end(), spec->field) == header.end()) {
+          missing_columns.push_back(spec->field);
+        }
+      }
+      const std::string missing = detail::join(missing_columns, ", ");
+      if (!missing.empty()) {
+        problems.push_back(where + " (header): missing column(s) " + missing +
+                           " (required: " + required_columns() + ")");
+        header_ok = false;
+      }
+      if (!header_ok) {
+        break;  // every row would repeat the header's problem
+      }
+      continue;
+    }
+    ++row;
+    const std::string row_where = where + " (row " + std::to_string(row) + ")";
+    if (const auto error = split_csv_line(line, fields)) {
+      problems.push_back(row_where + ": " + *error);
+      continue;
+    }
+    if (fields.size() != header.size()) {
+      problems.push_back(row_where + ": " + std::to_string(fields.size()) +
+                         " fields, the header has " + std::to_string(header.size()));
+      continue;
+    }
+    std::map<std::string, Cell, std::less<>> cells;
+    for (std::size_t i = 0; i < header.size(); ++i) {
+      Cell cell;
+      if (!fields[i].empty()) {
+        cell.kind = Cell::Kind::text;
+        cell.text = fields[i];
+      }
+      cells[header[i]] = std::move(cell);
+    }
+    set.rows.push_back(RowReader(row_where, std::move(cells), false, problems).read(row));
+  }
+  if (problems.empty() && header.empty()) {
+    problems.push_back(origin + ": no header line (expected the columns " + known_columns() + ")");
+  } else if (problems.empty() && set.rows.empty()) {
+    problems.push_back(origin + ": no rows after the header");
+  }
+  if (!problems.empty()) {
+    throw MeasurementError(join_lines(problems));
+  }
+  return set;
+}
+
+MeasurementSet measurements_from_json(const json& j, const std::string& origin) {
+  MeasurementSet set;
+  set.origin = origin;
+  std::vector<std::string> problems;
+  auto fail = [&](const std::string& what) {
+    problems.push_back(origin + ": " + what);
+    throw MeasurementError(join_lines(problems));
+  };
+  if (!j.is_object()) {
+    fail("expected an object with \"foldlab_measurements\": 1 and \"rows\", got " +
+         describe_json(j).substr(0, 80));
+  }
+  for (const auto& [key, value] : j.items()) {
+    if (key != "foldlab_measurements" && key != "description" && key != "source" && key != "rows") {
+      problems.push_back(origin + ": /" + key +
+                         ": unknown key (allowed: foldlab_measurements, description, source, "
+                         "rows)");
+    }
+  }
+  if (!j.contains("foldlab_measurements") || !j.at("foldlab_measurements").is_number_integer() ||
+      j.at("foldlab_measurements").get<long long>() != kMeasurementsFormatVersion) {
+    problems.push_back(origin + ": /foldlab_measurements: expected " +
+                       std::to_string(kMeasurementsFormatVersion) +
+                       " (the format version of a FoldLab measurements file)");
+  }
+  for (const char* key : {"description", "source"}) {
+    if (j.contains(key) && !j.at(key).is_string()) {
+      problems.push_back(origin + ": /" + key + ": expected text, got " + describe_json(j.at(key)));
+    } else if (j.contains(key)) {
+      (std::string(key) == "description" ? set.description : set.source) =
+          j.at(key).get<std::string>();
+    }
+  }
+  if (!j.contains("rows") || !j.at("rows").is_array()) {
+    fail("/rows: expected an array of rows, one object per measured hanging");
+  }
+  const json& rows = j.at("rows");
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    const int row = static_cast<int>(i) + 1;
+    const std::string where =
+        origin + ": row " + std::to_string(row) + " (/rows/" + std::to_string(i) + ")";
+    const json& r = rows[i];
+    if (!r.is_object()) {
+      problems.push_back(where + ": expected an object, got " + describe_json(r));
+      continue;
+    }
+    std::map<std::string, Cell, std::less<>> cells;
+    for (const auto& [key, value] : r.items()) {
+      if (!is_known_column(key)) {
+        problems.push_back(where + ", column " + key +
+                           ": unknown column (known: " + known_columns() + ")");
+        continue;
+      }
+      Cell cell;
+      if (value.is_string()) {
+        cell.kind = value.get<std::string>().empty() ? Cell::Kind::missing : Cell::Kind::text;
+        cell.text = value.get<std::string>();
+      } else if (value.is_number()) {
+        cell.kind = Cell::Kind::number;
+        cell.number = value.get<double>();
+        cell.number_is_integer = value.is_number_integer();
+      } else if (!value.is_null()) {
+        cell.kind = Cell::Kind::other;
+        cell.text = describe_json(value);
+      }
+      cells[key] = std::move(cell);
+    }
+    // Read even with an unknown key, so that every other problem of the row is reported too.
+    set.rows.push_back(RowReader(where, std::move(cells), true, problems).read(row));
+  }
+  if (problems.empty() && set.rows.empty()) {
+    problems.push_back(origin + ": /rows: no rows");
+  }
+  if (!problems.empty()) {
+    throw MeasurementError(join_lines(problems));
+  }
+  return set;
+}
+
+MeasurementSet measurements_from_text(const std::string& text, const std::string& origin,
+                                      std::string_view extension) {
+  const std::string_view content = trim(text);
+  const bool is_json =
+      extension == ".json" || (extension != ".csv" && !content.empty() && content[0] == '{');
+  if (!is_json) {
+    return measurements_from_csv(text, origin);
+  }
+  json j;
+  try {
+    j = json::parse(text);
+  } catch (const json::exception& e) {
+    throw MeasurementError(origin + ": not valid JSON: " + e.what());
+  }
+  return measurements_from_json(j, origin);
+}
+
+MeasurementSet load_measurements(const std::filesystem::path& path) {
+  std::string text;
+  try {
+    text = read_text_file(path);
+  } catch (const ReadError& e) {
+    throw MeasurementError(e.what());
+  }
+  return measurements_from_text(text, path.string(), path.extension().string());
+}
+
+std::string measurements_to_csv(const MeasurementSet& set) {
+  std::string out;
+  for (const auto& [label, text] :
+       {std::pair{"description", &set.description}, std::pair{"source", &set.source}}) {
+    std::istringstream lines(*text);
+    for (std::string line; std::getline(lines, line);) {
+      out += std::string("# ") + label + ": " + line + "\n";
+    }
+  }
+  out += detail::join(measurement_columns(), ",") + "\n";
+  for (const Measurement& m : set.rows) {
+    std::vector<std::string> cells;
+    for (auto& cell : csv_cells(m)) {
+      cells.push_back(std::move(cell.second));
+    }
+    out += detail::join(cells, ",") + "\n";
+  }
+  return out;
+}
+
+json measurements_to_json(const MeasurementSet& set) {
+  json rows = json::array();
+  for (const Measurement& m : set.rows) {
+    json r = json::object();
+    auto put_text = [&r](std::string_view key, const std::string& value) {
+      if (!value.empty()) {
+        r[std::string(key)] = value;
+      }
+    };
+    put_text(kName, m.name);
+    put_text(kGroup, m.group);
+    r[std::string(kRole)] = to_string(m.role);
+    const Parameters inputs = parameters_for(m, Parameters{});
+    for (const InputSpec* spec : row_inputs()) {
+      r[std::string(spec->field)] = *spec->value(inputs);
+    }
+    put_text(kShape, m.shape);
+    r[std::string(kCount)] = m.observed.n ? json(*m.observed.n) : json(nullptr);
+    r[std::string(kDepth)] = m.observed.z_max_mm ? json(*m.observed.z_max_mm) : json(nullptr);
+    r[std::string(kRatio)] = m.observed.Q ? json(*m.observed.Q) : json(nullptr);
+    rows.push_back(std::move(r));
+  }
+  json j = {{"foldlab_measurements", kMeasurementsFormatVersion}};
+  if (!set.description.empty()) {
+    j["description"] = set.description;
+  }
+  if (!set.source.empty()) {
+    j["source"] = set.source;
+  }
+  j["rows"] = std::move(rows);
+  return j;
+}
+
+Parameters parameters_for(const Measurement& row, const Parameters& base) {
+  Parameters p = base;
+  p.fabric.thickness_mm = row.thickness_mm;
+  p.fabric.youngs_modulus_MPa = row.youngs_modulus_MPa;
+  p.fabric.weight_N_per_mm2 = row.weight_N_per_mm2;
+  p.hanging.height_mm = row.height_mm;
+  p.hanging.length_mm = row.length_mm;
+  p.hanging.support_displacement_mm = row.support_displacement_mm;
+  return p;
+}
+
+std::string_view to_string(MeasurementRole role) {
+  return role == MeasurementRole::fit ? "fit" : "check";
+}
+
+bool parse_measurement_role(std::string_view s, MeasurementRole& out) {
+  if (s == "fit" || s == "check") {
+    out = s == "fit" ? MeasurementRole::fit : MeasurementRole::check;
+    return true;
+  }
+  return false;
+}
+
+}  // namespace foldlab

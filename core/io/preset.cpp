@@ -1,0 +1,319 @@
+#include "core/io/preset.hpp"
+
+#include <fstream>
+#include <sstream>
+#include <utility>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "core/io/io.hpp"
+#include "core/model/settings.hpp"
+#include "core/model/text_format.hpp"
+#include "default_preset_text.hpp"
+
+namespace foldlab {
+namespace {
+
+using detail::join_comma;
+using detail::join_lines;
+using nlohmann::json;
+
+// The JSON key of each validated field, so that a range error names the key in the file.
+std::string json_pointer_for(const std::string& field) {
+  const InputSpec* spec = find_input_by_field(field);
+  return spec != nullptr ? std::string(spec->preset) : "";
+}
+
+std::string type_name(const json& v) {
+  return v.is_null() ? "null" : v.type_name();
+}
+
+// Reads one object's fields, collecting every problem instead of stopping at the first.
+class Reader {
+ public:
+  Reader(std::string origin, std::vector<std::string>& problems)
+      : origin_(std::move(origin)), problems_(problems) {}
+
+  void problem(const std::string& pointer, const std::string& what) {
+    problems_.push_back(origin_ + ": " + pointer + ": " + what);
+  }
+
+  // Checks that `object` is an object whose keys are all in `allowed`.
+  bool object(const json& object, const std::string& pointer,
+              const std::vector<std::string>& allowed) {
+    if (!object.is_object()) {
+      problem(pointer.empty() ? "/" : pointer, "expected an object, got " + type_name(object));
+      return false;
+    }
+    for (const auto& [key, value] : object.items()) {
+      bool known = false;
+      for (const std::string& a : allowed) {
+        known = known || key == a;
+      }
+      if (!known) {
+        problem(pointer + "/" + key, "unknown key (allowed here: " + join_comma(allowed) + ")");
+      }
+    }
+    return true;
+  }
+
+  void number(const json& object, const std::string& pointer, const char* key, double& out,
+              bool required) {
+    const std::string at = pointer + "/" + key;
+    if (!object.contains(key)) {
+      if (required) {
+        problem(at, "missing (a number is required)");
+      }
+      return;
+    }
+    const json& v = object.at(key);
+    if (!v.is_number()) {
+      problem(at, "expected a number, got " + type_name(v) + " " + v.dump());
+      return;
+    }
+    out = v.get<double>();
+  }
+
+  void integer(const json& object, const std::string& pointer, const char* key, int& out) {
+    if (!object.contains(key)) {
+      return;
+    }
+    const json& v = object.at(key);
+    if (!v.is_number_integer()) {
+      problem(pointer + "/" + key, "expected a whole number, got " + type_name(v) + " " + v.dump());
+      return;
+    }
+    // Unsigned values above 2^63 - 1 would wrap in get<long long>(): range-check them first.
+    const bool too_large = v.is_number_unsigned() && v.get<unsigned long long>() > 1'000'000'000ULL;
+    const auto value = too_large ? 0LL : v.get<long long>();
+    if (too_large || value < -1'000'000'000LL || value > 1'000'000'000LL) {
+      problem(pointer + "/" + key, "whole number " + v.dump() + " is out of range");
+      return;
+    }
+    out = static_cast<int>(value);
+  }
+
+  void text(const json& object, const std::string& pointer, const char* key, std::string& out,
+            bool required) {
+    const std::string at = pointer + "/" + key;
+    if (!object.contains(key)) {
+      if (required) {
+        problem(at, "missing (a string is required)");
+      }
+      return;
+    }
+    const json& v = object.at(key);
+    if (!v.is_string()) {
+      problem(at, "expected a string, got " + type_name(v) + " " + v.dump());
+      return;
+    }
+    out = v.get<std::string>();
+  }
+
+  // A choice of the input table (method, span rule, ...), by name.
+  void choice(const json& object, const std::string& pointer, const InputSpec& spec,
+              const std::string& key, Parameters& p) {
+    if (!object.contains(key)) {
+      return;
+    }
+    std::string value;
+    const std::size_t before = problems_.size();
+    text(object, pointer, key.c_str(), value, false);
+    if (problems_.size() == before && !spec.set_choice(p, value)) {
+      problem(pointer + "/" + key, "\"" + value + "\" is not one of: " + std::string(spec.choices));
+    }
+  }
+
+ private:
+  std::string origin_;
+  std::vector<std::string>& problems_;
+};
+
+// The inputs of one section of a preset ("fabric", "hanging", "model", "shape"): the rows of the
+// input table whose preset key lies in it.
+void read_section(Reader& r, const json& j, const std::string& section, Parameters& p) {
+  const std::string pointer = "/" + section;
+  std::vector<const InputSpec*> rows;
+  std::vector<std::string> keys;
+  bool required = false;
+  for (const InputSpec& spec : input_table()) {
+    if (spec.preset.starts_with(pointer + "/")) {
+      rows.push_back(&spec);
+      keys.emplace_back(spec.preset.substr(pointer.size() + 1));
+      required = required || spec.required;
+    }
+  }
+  if (!j.contains(section)) {
+    if (required) {
+      r.problem(pointer, "missing (an object with " + join_comma(keys) + ")");
+    }
+    return;
+  }
+  const json& object = j.at(section);
+  if (!r.object(object, pointer, keys)) {
+    return;
+  }
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    const InputSpec& spec = *rows[i];
+    switch (spec.kind) {
+      case InputKind::number:
+        r.number(object, pointer, keys[i].c_str(), spec.number(p), spec.required);
+        break;
+      case InputKind::whole_number:
+        r.integer(object, pointer, keys[i].c_str(), spec.whole_number(p));
+        break;
+      case InputKind::choice:
+        r.choice(object, pointer, spec, keys[i], p);
+        break;
+      case InputKind::stiffness_K:
+        break;  // derived from c: never stored
+    }
+  }
+}
+
+}  // namespace
+
+Preset preset_from_json(const json& j, const std::string& origin) {
+  std::vector<std::string> problems;
+  Reader r(origin, problems);
+  Preset preset;
+  if (!r.object(j, "",
+                {"foldlab_preset", "name", "description", "source", "fabric", "hanging", "model",
+                 "shape", "published"})) {
+    throw PresetError(join_lines(problems));
+  }
+  if (!j.contains("foldlab_preset")) {
+    r.problem("/foldlab_preset", "missing: not a FoldLab preset (expected \"foldlab_preset\": " +
+                                     std::to_string(kPresetFormatVersion) + ")");
+  } else if (!j.at("foldlab_preset").is_number_integer() ||
+             j.at("foldlab_preset").get<long long>() != kPresetFormatVersion) {
+    r.problem("/foldlab_preset", "format version " + j.at("foldlab_preset").dump() +
+                                     " is not supported (this FoldLab reads version " +
+                                     std::to_string(kPresetFormatVersion) + ")");
+  }
+  r.text(j, "", "name", preset.name, true);
+  r.text(j, "", "description", preset.description, false);
+  r.text(j, "", "source", preset.source, false);
+
+  Parameters& p = preset.parameters;
+  for (const char* section : {"fabric", "hanging", "model", "shape"}) {
+    read_section(r, j, section, p);
+  }
+  if (j.contains("published")) {
+    const json& pub = j.at("published");
+    if (r.object(pub, "/published", {"n", "z_max_mm", "Q"})) {
+      int n = 0;
+      double z = 0.0;
+      double Q = 0.0;
+      const std::size_t before = problems.size();
+      if (pub.contains("n")) {
+        r.integer(pub, "/published", "n", n);
+        preset.published.n = n;
+      }
+      if (pub.contains("z_max_mm")) {
+        r.number(pub, "/published", "z_max_mm", z, false);
+        preset.published.z_max_mm = z;
+      }
+      if (pub.contains("Q")) {
+        r.number(pub, "/published", "Q", Q, false);
+        preset.published.Q = Q;
+      }
+      if (preset.published.n && *preset.published.n < 0) {
+        r.problem("/published/n", "a number of wrinkles is >= 0");
+      }
+      if (preset.published.z_max_mm && !(*preset.published.z_max_mm >= 0.0)) {
+        r.problem("/published/z_max_mm", "an out-of-plane depth is >= 0");
+      }
+      if (preset.published.Q && !(*preset.published.Q > 1.0)) {
+        r.problem("/published/Q",
+                  "a ratio of consecutive amplitudes is > 1 (leave out a misprint)");
+      }
+      if (problems.size() != before) {
+        preset.published = {};
+      }
+    }
+  }
+  if (problems.empty()) {
+    for (const ValidationIssue& issue : validate(p)) {
+      r.problem(json_pointer_for(issue.field), issue.message);
+    }
+  }
+  if (!problems.empty()) {
+    throw PresetError(join_lines(problems));
+  }
+  return preset;
+}
+
+Preset preset_from_text(const std::string& text, const std::string& origin) {
+  json j;
+  try {
+    j = json::parse(text);
+  } catch (const json::exception& e) {
+    // parse_error, and out_of_range for a number no double holds (e.g. 1e400).
+    throw PresetError(origin + ": not valid JSON: " + e.what());
+  }
+  return preset_from_json(j, origin);
+}
+
+json preset_to_json(const Preset& preset) {
+  const Parameters& p = preset.parameters;
+  json j = {
+      {"foldlab_preset", kPresetFormatVersion},
+      {"name", preset.name},
+      {"description", preset.description},
+      {"source", preset.source},
+  };
+  for (const InputSpec& spec : input_table()) {
+    if (spec.preset.empty()) {
+      continue;
+    }
+    const json::json_pointer at{std::string(spec.preset)};
+    if (spec.kind == InputKind::choice) {
+      j[at] = spec.choice(p);
+    } else if (spec.kind == InputKind::whole_number) {
+      j[at] = spec.whole_number(const_cast<Parameters&>(p));
+    } else {
+      j[at] = *spec.value(p);
+    }
+  }
+  json published = json::object();
+  if (preset.published.n)
+    published["n"] = *preset.published.n;
+  if (preset.published.z_max_mm)
+    published["z_max_mm"] = *preset.published.z_max_mm;
+  if (preset.published.Q)
+    published["Q"] = *preset.published.Q;
+  if (!published.empty()) {
+    j["published"] = published;
+  }
+  return j;
+}
+
+Preset load_preset(const std::filesystem::path& path) {
+  std::string text;
+  try {
+    text = read_text_file(path);
+  } catch (const ReadError& e) {
+    throw PresetError(e.what());
+  }
+  return preset_from_text(text, path.string());
+}
+
+void save_preset(const Preset& preset, const std::filesystem::path& path) {
+  if (const auto issues = validate(preset.parameters); !issues.empty()) {
+    throw PresetError(path.string() + ": not saved: " + format_issues(issues));
+  }
+  try {
+    write_file_atomically(path, preset_to_json(preset).dump(2) + "\n");
+  } catch (const WriteError& e) {
+    throw PresetError(e.what());
+  }
+}
+
+const Preset& default_preset() {
+  static const Preset preset = preset_from_text(kDefaultPresetText, kDefaultPresetOrigin);
+  return preset;
+}
+
+}  // namespace foldlab

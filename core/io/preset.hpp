@@ -1,0 +1,53 @@
+// Presets: versioned JSON files with the units in every key (see presets/README.md for the format).
+#pragma once
+
+#include <filesystem>
+#include <optional>
+#include <stdexcept>
+#include <string>
+
+#include <nlohmann/json_fwd.hpp>
+
+#include "core/model/parameters.hpp"
+
+namespace foldlab {
+
+inline constexpr int kPresetFormatVersion = 1;
+
+// Results printed in the paper for the case a preset reproduces; any of them may be absent.
+struct PublishedResult {
+  std::optional<int> n;
+  std::optional<double> z_max_mm;
+  std::optional<double> Q;
+};
+
+struct Preset {
+  std::string name;
+  std::string description;
+  std::string source;  // where the numbers come from
+  Parameters parameters;
+  PublishedResult published;
+};
+
+// A preset that cannot be read: the message names the file, the key (as a JSON pointer) and the
+// problem, one line per problem.
+class PresetError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// `origin` names the source in messages (a file path, or "<default preset>").
+Preset preset_from_json(const nlohmann::json& j, const std::string& origin);
+Preset preset_from_text(const std::string& text, const std::string& origin);
+nlohmann::json preset_to_json(const Preset& preset);
+
+Preset load_preset(const std::filesystem::path& path);
+// Writes a temporary file beside `path`, flushes it to disk and renames it over `path`, so that a
+// crash leaves either the old file or the new one, never half of one. Throws PresetError.
+void save_preset(const Preset& preset, const std::filesystem::path& path);
+
+// The default preset (Table 1, h = 1400 mm: the case of the paper's Fig. 5), compiled in from
+// presets/paper-table1-h1400.json so that it is there without the presets folder.
+const Preset& default_preset();
+
+}  // namespace foldlab

@@ -1,0 +1,113 @@
+#include "core/io/report.hpp"
+
+#include <cstdio>
+
+#include <nlohmann/json.hpp>
+
+#include "core/model/settings.hpp"
+
+namespace foldlab {
+namespace {
+
+std::string line(const char* label, const char* symbol, double value, const char* unit,
+                 const char* format = "%.6g") {
+  char number[64];
+  std::snprintf(number, sizeof number, format, value);
+  char out[160];
+  std::snprintf(out, sizeof out, "  %-34s %-6s %14s%s%s\n", label, symbol, number, *unit ? " " : "",
+                unit);
+  return out;
+}
+
+}  // namespace
+
+nlohmann::json solution_to_json(const Solution& s, const Parameters& p) {
+  nlohmann::json j = {
+      {"method", to_string(s.method)},
+      {"regime", to_string(s.regime)},
+      {"message", describe(s, p)},
+      {"n", s.n},
+      {"Q", s.Q},
+      {"Q7", s.Q7 ? nlohmann::json(*s.Q7) : nlohmann::json(nullptr)},
+      {"s", s.stress_ratio},
+      {"z_max_mm", s.z_max_mm},
+      {"a_mm", s.a_mm},
+      {"l_mm", s.span_mm},
+      {"A_mm", s.sag_amplitude_mm},
+      {"iterations", s.iterations},
+      {"hit_iteration_cap", s.hit_iteration_cap},
+      {"n_capped", s.n_capped},
+      {"n_cycle", s.n_cycle},
+      {"residual_length", s.residual_length},
+      {"residual_height", s.residual_height},
+  };
+  nlohmann::json& inputs = j["inputs"];
+  for (const InputSpec& spec : input_table()) {
+    // The preset's key for what a preset stores, the --set key for K (derived from c and nu).
+    const std::string_view name =
+        spec.preset.empty() ? spec.key : spec.preset.substr(spec.preset.rfind('/') + 1);
+    if (spec.kind == InputKind::choice) {
+      inputs[std::string(name)] = spec.choice(p);
+    } else {
+      inputs[std::string(name)] = *spec.value(p);
+    }
+  }
+  return j;
+}
+
+std::string solution_table(const Solution& s, const Parameters& p, const std::string& preset_name) {
+  std::string out = "FoldLab: " + std::string(to_string(s.method)) + " method";
+  if (!preset_name.empty()) {
+    out += ", preset \"" + preset_name + "\"";
+  }
+  out += "\n\nInputs\n";
+  for (const InputSpec& spec : input_table()) {
+    const bool cloth = spec.preset.starts_with("/fabric/") || spec.preset.starts_with("/hanging/");
+    // Only the calibrated variant prints its exponent: the paper's form reads as before.
+    const bool shown = cloth || spec.key == "K" || (spec.key == "p" && *spec.value(p) != 1.0);
+    if (shown) {
+      out += line(std::string(spec.name).c_str(), std::string(spec.key).c_str(), *spec.value(p),
+                  std::string(spec.unit).c_str());
+    }
+  }
+  out += "  span rule l = " + std::string(to_string(p.model.span_rule)) +
+         ", Int[] of eq. 10 = " + std::string(to_string(p.model.int_rounding)) + "\n";
+
+  out += "\nResult: " + std::string(to_string(s.regime)) + "\n";
+  if (const std::string message = describe(s, p); !message.empty()) {
+    out += "  " + message + "\n";
+  }
+  out += line("number of wrinkles", "n", s.n, "", "%.0f");
+  out += line("amplitude ratio (a_0/a_n)^(1/n)", "Q", s.Q, "");
+  if (s.Q7) {
+    out += line("root of eq. 7", "Q7", *s.Q7, "");
+  } else {
+    out += "  root of eq. 7                      Q7               none (s >= 1)\n";
+  }
+  out += line("stress ratio of eq. 7", "s", s.stress_ratio, "");
+  out += line("out-of-plane depth", "z_max", s.z_max_mm, "mm", "%.2f");
+  out += line("span between supports", "l", s.span_mm, "mm", "%.2f");
+  out += line("sag of the upper edge", "A", s.sag_amplitude_mm, "mm", "%.2f");
+  out += line("iterations", "", s.iterations, "", "%.0f");
+  out += line("residual of eq. 8, L'/L - 1", "", s.residual_length, "", "%.3e");
+  out += line("residual of eq. 9, fibre/h - 1", "", s.residual_height, "", "%.3e");
+  if (!s.a_mm.empty()) {
+    out += "\n  fold amplitudes a_i (mm), i = 0 (lower boundary) .. n (upper edge):\n";
+    const std::size_t shown = std::min<std::size_t>(s.a_mm.size(), 40);
+    for (std::size_t i = 0; i < shown; ++i) {
+      char cell[48];
+      std::snprintf(cell, sizeof cell, "    a_%-3zu %10.2f%s", i, s.a_mm[i],
+                    (i % 4 == 3) ? "\n" : "");
+      out += cell;
+    }
+    if (shown % 4 != 0) {
+      out += "\n";
+    }
+    if (shown < s.a_mm.size()) {
+      out += "    ... " + std::to_string(s.a_mm.size() - shown) + " more (see --json)\n";
+    }
+  }
+  return out;
+}
+
+}  // namespace foldlab

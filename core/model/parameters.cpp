@@ -1,0 +1,115 @@
+#include "core/model/parameters.hpp"
+
+#include <cmath>
+#include <initializer_list>
+
+#include "core/model/settings.hpp"
+#include "core/model/text_format.hpp"
+
+namespace foldlab {
+namespace {
+
+using detail::shortest_number;
+
+void check_range(std::vector<ValidationIssue>& issues, std::string_view field, double value,
+                 const InputInterval& range, std::string_view why) {
+  if (range.contains(value)) {
+    return;
+  }
+  std::string message = std::string(field) + " = " + shortest_number(value) + " must be ";
+  message += range.lo_open ? "in (" : "in [";
+  message += shortest_number(range.lo) + ", " + shortest_number(range.hi);
+  message += range.hi_open ? ")" : "]";
+  message += ": " + std::string(why);
+  issues.push_back({std::string(field), value, std::move(message)});
+}
+
+template <class Enum>
+bool parse_named(std::string_view s, Enum& out, std::initializer_list<Enum> values) {
+  for (Enum v : values) {
+    if (s == to_string(v)) {
+      out = v;
+      return true;
+    }
+  }
+  return false;
+}
+
+}  // namespace
+
+double stiffness_constant_K(const Parameters& p) {
+  const double nu = p.fabric.poisson_ratio;
+  return p.model.load_constant_c / (1.0 - nu * nu);
+}
+
+void set_stiffness_constant_K(Parameters& p, double K) {
+  const double nu = p.fabric.poisson_ratio;
+  p.model.load_constant_c = K * (1.0 - nu * nu);
+}
+
+double span_mm(const Parameters& p) {
+  const double L = p.hanging.length_mm;
+  const double d = p.hanging.support_displacement_mm;
+  return p.model.span_rule == SpanRule::L_minus_d ? L - d : L - 2.0 * d;
+}
+
+std::vector<ValidationIssue> validate(const Parameters& p) {
+  std::vector<ValidationIssue> issues;
+  for (const InputSpec& spec : input_table()) {
+    if (spec.kind == InputKind::number || spec.kind == InputKind::whole_number) {
+      check_range(issues, spec.field, *spec.value(p), spec.valid, spec.why);
+    }
+  }
+  const double L = p.hanging.length_mm;
+  const double d = p.hanging.support_displacement_mm;
+  if (find_input("L")->valid.contains(L) && find_input("d")->valid.contains(d)) {
+    const double half = 0.5 * L;
+    check_range(issues, "d_mm", d, {0.0, half, false, true},
+                "each support moves inward by d, so d must stay below L/2 = " +
+                    shortest_number(half) + " where the supports would meet");
+  }
+  const ModelSettings& m = p.model;
+  if (m.simpson_intervals % 2 != 0 && m.length_quadrature == LengthQuadrature::simpson) {
+    issues.push_back({"simpson_intervals", static_cast<double>(m.simpson_intervals),
+                      "simpson_intervals = " + std::to_string(m.simpson_intervals) +
+                          " must be even: composite Simpson pairs its intervals"});
+  }
+  return issues;
+}
+
+std::string format_issues(const std::vector<ValidationIssue>& issues) {
+  std::string out;
+  for (const ValidationIssue& issue : issues) {
+    out += issue.message;
+    out += '\n';
+  }
+  return out;
+}
+
+std::string_view to_string(Method m) {
+  return m == Method::paper ? "paper" : "exact";
+}
+std::string_view to_string(SpanRule r) {
+  return r == SpanRule::L_minus_d ? "L-d" : "L-2d";
+}
+std::string_view to_string(IntRounding r) {
+  return r == IntRounding::floor ? "floor" : "nearest";
+}
+std::string_view to_string(LengthQuadrature q) {
+  return q == LengthQuadrature::simpson ? "simpson" : "trapezoid";
+}
+
+bool parse_method(std::string_view s, Method& out) {
+  return parse_named(s, out, {Method::paper, Method::exact});
+}
+bool parse_span_rule(std::string_view s, SpanRule& out) {
+  return parse_named(s, out, {SpanRule::L_minus_d, SpanRule::L_minus_2d});
+}
+bool parse_int_rounding(std::string_view s, IntRounding& out) {
+  return parse_named(s, out, {IntRounding::floor, IntRounding::nearest});
+}
+bool parse_length_quadrature(std::string_view s, LengthQuadrature& out) {
+  return parse_named(s, out, {LengthQuadrature::simpson, LengthQuadrature::trapezoid});
+}
+
+}  // namespace foldlab

@@ -1,0 +1,428 @@
+#include "core/model/settings.hpp"
+
+#include "core/model/text_format.hpp"
+
+#include <charconv>
+#include <cmath>
+
+namespace foldlab {
+namespace {
+
+constexpr InputInterval closed(double lo, double hi) {
+  return {lo, hi, false, false};
+}
+
+template <class Enum>
+bool set_named(Enum& field, std::string_view text, bool (*parse)(std::string_view, Enum&)) {
+  return parse(text, field);
+}
+
+// One row per input. `valid` is where a value can still describe a cloth (or a sane numerical
+// setting); `typical` is where the fabrics one meets lie, used by sliders and the stress test.
+const std::vector<InputSpec>& build_table() {
+  static const std::vector<InputSpec> table = {
+      {.key = "t",
+       .name = "thickness",
+       .unit = "mm",
+       .field = "t_mm",
+       .preset = "/fabric/thickness_mm",
+       .help = "fabric thickness",
+       .valid = closed(1e-3, 50.0),
+       .why = "a membrane or fabric from 1 micrometre to 50 mm thick",
+       .typical_lo = 0.01,
+       .typical_hi = 5.0,
+       .scale = InputScale::logarithmic,
+       .format = "%.3g",
+       .required = true,
+       .number = [](Parameters& p) -> double& { return p.fabric.thickness_mm; }},
+      {.key = "E",
+       .name = "Young's modulus",
+       .unit = "MPa",
+       .field = "E_MPa",
+       .preset = "/fabric/youngs_modulus_MPa",
+       .help = "Young's modulus (MPa = N/mm²)",
+       .valid = closed(1e-3, 1e6),
+       .why = "from a soft gel (1e-3 MPa) to beyond steel (1e6 MPa)",
+       .typical_lo = 1.0,
+       .typical_hi = 1e4,
+       .scale = InputScale::logarithmic,
+       .format = "%.4g",
+       .required = true,
+       .number = [](Parameters& p) -> double& { return p.fabric.youngs_modulus_MPa; }},
+      {.key = "w",
+       .name = "weight per area",
+       .unit = "N/mm²",
+       .field = "w_N_per_mm2",
+       .preset = "/fabric/weight_N_per_mm2",
+       .help = "weight per area (1.5e-6 N/mm² = 153 g/m²)",
+       .valid = closed(1e-9, 1e-2),
+       .why = "from 0.1 g/m² (the lightest tissue) to 1 t/m²",
+       .typical_lo = 1e-7,
+       .typical_hi = 1e-4,
+       .scale = InputScale::logarithmic,
+       .format = "%.3e",
+       .required = true,
+       .number = [](Parameters& p) -> double& { return p.fabric.weight_N_per_mm2; }},
+      {.key = "nu",
+       .name = "Poisson's ratio",
+       .field = "nu",
+       .preset = "/fabric/poisson_ratio",
+       .help = "Poisson's ratio",
+       .valid = {0.0, 0.5, false, true},
+       .why = "Poisson's ratio of an isotropic material, 0 <= nu < 0.5",
+       .typical_lo = 0.0,
+       .typical_hi = 0.49,
+       .format = "%.3f",
+       .expert = true,
+       .number = [](Parameters& p) -> double& { return p.fabric.poisson_ratio; }},
+      {.key = "h",
+       .name = "height",
+       .unit = "mm",
+       .field = "h_mm",
+       .preset = "/hanging/height_mm",
+       .help = "height of the cloth at the centre",
+       .valid = closed(1.0, 1e5),
+       .why = "the cloth's height, from 1 mm to 100 m",
+       .typical_lo = 100.0,
+       .typical_hi = 5000.0,
+       .format = "%.0f",
+       .required = true,
+       .number = [](Parameters& p) -> double& { return p.hanging.height_mm; }},
+      {.key = "L",
+       .name = "width",
+       .unit = "mm",
+       .field = "L_mm",
+       .preset = "/hanging/length_mm",
+       .help = "length of the upper edge (width)",
+       .valid = closed(1.0, 1e5),
+       .why = "the upper edge's length, from 1 mm to 100 m",
+       .typical_lo = 100.0,
+       .typical_hi = 5000.0,
+       .format = "%.0f",
+       .required = true,
+       .number = [](Parameters& p) -> double& { return p.hanging.length_mm; }},
+      // d < L/2 as well: validate() adds that check, which needs L.
+      {.key = "d",
+       .name = "support displacement",
+       .unit = "mm",
+       .field = "d_mm",
+       .preset = "/hanging/support_displacement_mm",
+       .help = "inward displacement of each support",
+       .valid = closed(0.0, 5e4),
+       .why = "each support moves inward by d, at most half of the largest L",
+       .typical_lo = 0.0,
+       .typical_hi = 2500.0,
+       .format = "%.0f",
+       .required = true,
+       .number = [](Parameters& p) -> double& { return p.hanging.support_displacement_mm; }},
+      {.key = "K",
+       .name = "eq. 7 constant c/(1-nu²)",
+       .field = "K",
+       .help = "c/(1-nu²) of eq. 7 (sets c at the current nu)",
+       .kind = InputKind::stiffness_K,
+       .typical_lo = 0.5,
+       .typical_hi = 300.0,
+       .scale = InputScale::logarithmic,
+       .format = "%.3g",
+       .expert = true},
+      {.key = "c",
+       .name = "load-condition constant",
+       .field = "c",
+       .preset = "/model/load_constant_c",
+       .help = "load-condition constant of eq. 7",
+       .valid = closed(1e-3, 1e4),
+       .why = "the load-condition constant of eq. 7, from 1e-3 to 1e4",
+       .typical_lo = 0.5,
+       .typical_hi = 300.0,
+       .scale = InputScale::logarithmic,
+       .format = "%.3g",
+       .expert = true,
+       .number = [](Parameters& p) -> double& { return p.model.load_constant_c; }},
+      {.key = "p",
+       .name = "eq. 7 exponent, s -> s^p",
+       .field = "p",
+       .preset = "/model/stress_exponent_p",
+       .help = "exponent on eq. 7's stress ratio, s -> s^p (1 = the paper; foldlab calibrate)",
+       .valid = closed(0.05, 5.0),
+       .why = "the exponent on eq. 7's stress ratio (1 = the paper), from 0.05 (below, s^p is 1 "
+              "for any cloth) to 5 (the calibration's search range)",
+       .typical_lo = 0.2,
+       .typical_hi = 2.0,
+       .format = "%.3f",
+       .expert = true,
+       .number = [](Parameters& p) -> double& { return p.model.stress_exponent_p; }},
+      {.key = "method",
+       .name = "method",
+       .preset = "/model/method",
+       .help = "paper | exact",
+       .kind = InputKind::choice,
+       .expert = true,
+       .choices = "paper, exact",
+       .set_choice = [](Parameters& p,
+                        std::string_view v) { return set_named(p.model.method, v, parse_method); },
+       .choice = [](const Parameters& p) { return to_string(p.model.method); }},
+      {.key = "span_rule",
+       .name = "span rule",
+       .preset = "/model/span_rule",
+       .help = "L-d | L-2d: how the span l follows from L and d",
+       .kind = InputKind::choice,
+       .expert = true,
+       .choices = "L-d, L-2d",
+       .set_choice =
+           [](Parameters& p, std::string_view v) {
+             return set_named(p.model.span_rule, v, parse_span_rule);
+           },
+       .choice = [](const Parameters& p) { return to_string(p.model.span_rule); }},
+      {.key = "int_rounding",
+       .name = "Int[]",
+       .preset = "/model/int_rounding",
+       .help = "nearest | floor: Int[] of eq. 10",
+       .kind = InputKind::choice,
+       .expert = true,
+       .choices = "nearest, floor",
+       .set_choice =
+           [](Parameters& p, std::string_view v) {
+             return set_named(p.model.int_rounding, v, parse_int_rounding);
+           },
+       .choice = [](const Parameters& p) { return to_string(p.model.int_rounding); }},
+      {.key = "simpson_intervals",
+       .name = "quadrature intervals",
+       .field = "simpson_intervals",
+       .preset = "/model/simpson_intervals",
+       .help = "paper method: intervals of the eq. 8 quadrature (even for Simpson)",
+       .kind = InputKind::whole_number,
+       .valid = closed(2.0, 10000.0),
+       .why = "the paper method's quadrature of eq. 8 needs at least 2 intervals; beyond 10000 "
+              "it is exact to rounding and only slower",
+       .typical_lo = 2.0,
+       .typical_hi = 200.0,
+       .format = "%.0f",
+       .expert = true,
+       .whole_number = [](Parameters& p) -> int& { return p.model.simpson_intervals; }},
+      {.key = "length_tolerance",
+       .name = "length tolerance",
+       .field = "length_tolerance",
+       .preset = "/model/length_tolerance",
+       .help = "paper method: stop when |L'/L - 1| <= this",
+       .valid = closed(1e-12, 0.5),
+       .why = "the paper method's relative tolerance on L (0.05 is the paper's 5%), from 1e-12 "
+              "(rounding) to 0.5",
+       .typical_lo = 1e-4,
+       .typical_hi = 0.1,
+       .scale = InputScale::logarithmic,
+       .format = "%.3g",
+       .expert = true,
+       .number = [](Parameters& p) -> double& { return p.model.length_tolerance; }},
+      {.key = "max_iterations",
+       .name = "iteration cap",
+       .field = "max_iterations",
+       .preset = "/model/max_iterations",
+       .help = "paper method: iteration cap",
+       .kind = InputKind::whole_number,
+       .valid = closed(1.0, 1000.0),
+       .why = "the paper method needs at least one iteration; it converges or cycles within a "
+              "few dozen, so more than 1000 only costs time",
+       .typical_lo = 1.0,
+       .typical_hi = 1000.0,
+       .format = "%.0f",
+       .expert = true,
+       .whole_number = [](Parameters& p) -> int& { return p.model.max_iterations; }},
+      {.key = "length_quadrature",
+       .name = "quadrature rule",
+       .preset = "/model/length_quadrature",
+       .help = "simpson | trapezoid: paper method's rule for eq. 8 (simpson_intervals intervals)",
+       .kind = InputKind::choice,
+       .expert = true,
+       .choices = "simpson, trapezoid",
+       .set_choice =
+           [](Parameters& p, std::string_view v) {
+             return set_named(p.model.length_quadrature, v, parse_length_quadrature);
+           },
+       .choice = [](const Parameters& p) { return to_string(p.model.length_quadrature); }},
+      {.key = "shape",
+       .name = "shape",
+       .preset = "/shape/kind",
+       .help = "cosine | rectangular | strip | inclined: the cloth the pattern is laid on",
+       .kind = InputKind::choice,
+       .choices = "cosine, rectangular, strip, inclined",
+       .set_choice =
+           [](Parameters& p, std::string_view v) {
+             return set_named(p.shape.kind, v, parse_shape_kind);
+           },
+       .choice = [](const Parameters& p) { return to_string(p.shape.kind); }},
+      {.key = "supports",
+       .name = "supports",
+       .field = "supports",
+       .preset = "/shape/supports",
+       .help = "strip: number of equally spaced supports (k - 1 spans)",
+       .kind = InputKind::whole_number,
+       .valid = closed(2.0, 64.0),
+       .why = "a strip hangs from 2 to 64 equally spaced supports",
+       .typical_lo = 2.0,
+       .typical_hi = 8.0,
+       .format = "%.0f",
+       .whole_number = [](Parameters& p) -> int& { return p.shape.supports; }},
+      {.key = "incline_deg",
+       .name = "incline",
+       .unit = "deg",
+       .field = "incline_deg",
+       .preset = "/shape/incline_deg",
+       .help = "inclined: angle of the line through the supports",
+       .valid = {-80.0, 80.0, true, true},
+       .why = "the line through inclined supports is steeper than vertical beyond +-80 deg",
+       .typical_lo = -45.0,
+       .typical_hi = 45.0,
+       .format = "%.1f",
+       .number = [](Parameters& p) -> double& { return p.shape.incline_deg; }},
+  };
+  return table;
+}
+
+}  // namespace
+
+bool InputInterval::contains(double v) const {
+  const bool above_lo = lo_open ? v > lo : v >= lo;
+  const bool below_hi = hi_open ? v < hi : v <= hi;
+  return std::isfinite(v) && above_lo && below_hi;
+}
+
+std::optional<double> InputSpec::value(const Parameters& p) const {
+  // The accessors take a mutable Parameters so that one function serves reading and writing.
+  Parameters& mutable_p = const_cast<Parameters&>(p);
+  switch (kind) {
+    case InputKind::number:
+      return number(mutable_p);
+    case InputKind::whole_number:
+      return static_cast<double>(whole_number(mutable_p));
+    case InputKind::stiffness_K:
+      return stiffness_constant_K(p);
+    case InputKind::choice:
+      break;
+  }
+  return std::nullopt;
+}
+
+const std::vector<InputSpec>& input_table() {
+  return build_table();
+}
+
+const InputSpec* find_input(std::string_view key) {
+  for (const InputSpec& spec : input_table()) {
+    if (spec.key == key) {
+      return &spec;
+    }
+  }
+  return nullptr;
+}
+
+const InputSpec* find_input_by_field(std::string_view field) {
+  for (const InputSpec& spec : input_table()) {
+    if (!spec.field.empty() && spec.field == field) {
+      return &spec;
+    }
+  }
+  return nullptr;
+}
+
+std::string input_label(const InputSpec& spec) {
+  return spec.unit.empty() ? std::string(spec.key)
+                           : std::string(spec.key) + " (" + std::string(spec.unit) + ")";
+}
+
+std::optional<double> parse_number(std::string_view text) {
+  double value = 0.0;
+  const char* end = text.data() + text.size();
+  const auto [ptr, ec] = std::from_chars(text.data(), end, value);
+  if (text.empty() || ec != std::errc() || ptr != end || !std::isfinite(value)) {
+    return std::nullopt;
+  }
+  return value;
+}
+
+bool set_numeric_setting(Parameters& p, std::string_view key, double value) {
+  const InputSpec* spec = find_input(key);
+  if (spec != nullptr && spec->kind == InputKind::number) {
+    spec->number(p) = value;
+    return true;
+  }
+  if (spec != nullptr && spec->kind == InputKind::stiffness_K) {
+    set_stiffness_constant_K(p, value);
+    return true;
+  }
+  return false;
+}
+
+std::optional<double> numeric_setting(const Parameters& p, std::string_view key) {
+  const InputSpec* spec = find_input(key);
+  if (spec == nullptr || spec->kind == InputKind::whole_number) {
+    return std::nullopt;
+  }
+  return spec->value(p);
+}
+
+std::optional<std::string> apply_setting(Parameters& p, std::string_view key,
+                                         std::string_view value) {
+  const InputSpec* spec = find_input(key);
+  if (spec == nullptr) {
+    std::vector<std::string_view> known;
+    for (const InputSpec& k : input_table()) {
+      known.push_back(k.key);
+    }
+    return "unknown key '" + std::string(key) + "' (known: " + detail::join(known, ", ") + ")";
+  }
+  if (spec->kind == InputKind::choice) {
+    if (spec->set_choice(p, value)) {
+      return std::nullopt;
+    }
+    return std::string(key) + " = '" + std::string(value) +
+           "' is not one of: " + std::string(spec->choices);
+  }
+  const std::optional<double> number = parse_number(value);
+  if (!number) {
+    return std::string(key) + " = '" + std::string(value) + "' is not a number";
+  }
+  switch (spec->kind) {
+    case InputKind::stiffness_K:
+      set_stiffness_constant_K(p, *number);
+      break;
+    case InputKind::whole_number:
+      if (*number != std::floor(*number) || std::abs(*number) > 1e9) {
+        return std::string(key) + " = '" + std::string(value) + "' must be a whole number";
+      }
+      spec->whole_number(p) = static_cast<int>(*number);
+      break;
+    default:
+      spec->number(p) = *number;
+  }
+  return std::nullopt;
+}
+
+std::vector<std::string> apply_assignments(Parameters& p,
+                                           const std::vector<std::string>& assignments) {
+  std::vector<std::string> errors;
+  std::vector<std::pair<std::string, std::string>> deferred;
+  for (const std::string& assignment : assignments) {
+    const std::size_t eq = assignment.find('=');
+    if (eq == std::string::npos || eq == 0) {
+      errors.push_back("'" + assignment + "' is not KEY=VALUE");
+      continue;
+    }
+    std::string key = assignment.substr(0, eq);
+    std::string value = assignment.substr(eq + 1);
+    if (key == "K") {
+      deferred.emplace_back(std::move(key), std::move(value));
+      continue;
+    }
+    if (auto error = apply_setting(p, key, value)) {
+      errors.push_back(*error);
+    }
+  }
+  for (const auto& [key, value] : deferred) {
+    if (auto error = apply_setting(p, key, value)) {
+      errors.push_back(*error);
+    }
+  }
+  return errors;
+}
+
+}  // namespace foldlab

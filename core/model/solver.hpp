@@ -1,0 +1,53 @@
+// The two solution methods of MODEL.md: `paper` (the paper's 5%-tolerance iteration as we read it)
+// and `exact` (eqs. 8 and 9 to machine precision, n as the fixed point of eq. 10).
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/model/parameters.hpp"
+
+namespace foldlab {
+
+// Every outcome is a regime with a message; none is an error and none yields NaN (MODEL.md item 6).
+enum class Regime {
+  wrinkled,          // n >= 1 folds, all equations hold
+  no_slack,          // d = 0: L = l, flat cloth, n = 0
+  stiff,             // s >= 1: eq. 7 has no root, a single fold at most
+  short_cloth,       // the upper edge needs a sag A(L, l) >= a_0 = 1.01 h: no folds fit
+  negligible_slack,  // A(L, l) <= 0.01 h: eq. 9 has no root; flat folds (z_max = 0) shown
+  n_cycle,           // exact method: eq. 10 cycles between values of n; the smallest is used
+};
+
+// Above this n the solve stops growing n (the count is reported as capped).
+inline constexpr int kMaxWrinkles = 10'000'000;
+
+struct Solution {
+  Method method = Method::paper;
+  Regime regime = Regime::no_slack;
+  int n = 0;                  // number of wrinkles
+  double Q = 1.0;             // (a_0/a_n)^(1/n), the ratio the fold amplitudes actually have
+  std::optional<double> Q7;   // root of eq. 7; none in the stiff regime
+  double stress_ratio = 0.0;  // s = K E t³ / (w h l²) of eq. 7
+  double z_max_mm = 0.0;
+  std::vector<double> a_mm;        // a_0 (lower boundary) .. a_n (upper edge); empty when n = 0
+  double span_mm = 0.0;            // l
+  double sag_amplitude_mm = 0.0;   // A(L, l) = sqrt(a_n² + z_max²) that eq. 8 needs
+  int iterations = 0;              // paper: iterations of the loop; exact: values of n tried
+  bool hit_iteration_cap = false;  // paper: stopped at max_iterations without meeting tolerance
+  bool n_capped = false;           // eq. 10 asked for more than kMaxWrinkles folds
+  std::vector<int> n_cycle;        // exact: the values of n that eq. 10 cycles through
+  double residual_length = 0.0;    // L(eq. 8, closed form)/L - 1 for the reported a_n, z_max
+  double residual_height = 0.0;    // fibre length(eq. 9)/h - 1 for the reported a_i, z_max
+};
+
+// Precondition: validate(p) is empty. Never throws for valid input.
+Solution solve(const Parameters& p);
+
+// One line for the user; empty for the plain wrinkled regime.
+std::string describe(const Solution& s, const Parameters& p);
+
+std::string_view to_string(Regime r);
+
+}  // namespace foldlab
