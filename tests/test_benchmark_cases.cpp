@@ -1,4 +1,4 @@
-// Run time against error (issue 4, part 1): the case set, the long-double references, the method
+// Run time against error: the case set, the long-double references, the method
 // variants (with the paper method's trapezoid option), the accuracy and Pareto bookkeeping, the
 // CSV and SVG writers, and the parallel grid.
 #include <algorithm>
@@ -42,7 +42,8 @@ TEST(BenchmarkCases, FixedSeedGivesTheSameValidCases) {
 }
 
 TEST(Reference, AgreesWithTheExactMethodOnTheTablesAndTheReadme) {
-  // README's comparison table (exact method, defaults): n, z_max to 0.1 mm, Q to 0.001.
+  // docs/calibration.md's comparison table (exact method, defaults): n, z_max to 0.1 mm, Q to
+  // 0.001.
   struct Row {
     const char* preset;
     int n;

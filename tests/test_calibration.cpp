@@ -1,4 +1,4 @@
-// Calibration against measurements (issue 6): the loss on hand-made cases, the search on synthetic
+// Calibration against measurements: the loss on hand-made cases, the search on synthetic
 // data made by the model itself with planted K and p, the plateau it reports checked against the
 // real solver, the measurements file format, the eq. 7 exponent p, and `foldlab calibrate` end to
 // end on the shipped paper data and on malformed files.
@@ -138,7 +138,8 @@ TEST(CalibrationExponent, PaperFormIsTheDefaultEverywhere) {
   EXPECT_EQ(Parameters{}.model.stress_exponent_p, 1.0);
   EXPECT_EQ(default_preset().parameters.model.stress_exponent_p, 1.0);
   EXPECT_EQ(model_form(default_preset().parameters.model), ModelForm::paper);
-  // README's comparison table (written before p existed): Table 1, h = 1400 mm, paper method.
+  // docs/calibration.md's comparison table (written before p existed): Table 1, h = 1400 mm, paper
+  // method.
   const Solution s = solve(default_preset().parameters);
   EXPECT_EQ(s.n, 8);
   EXPECT_NEAR(s.z_max_mm, 43.4, 0.05);
@@ -295,7 +296,7 @@ TEST(CalibrationSearch, PlateauEndsAreWhereTheRealScoreChanges) {
   }
 }
 
-// On the paper's Tables 1-2, K alone lands in README's band ("Calibration": c in [26.18, 27.67) at
+// On the paper's Tables 1-2, K alone lands in docs/calibration.md's band (c in [26.18, 27.67) at
 // nu = 0.3, found by an independent scan) with its figures: n exact 3/6, within one 5/6. K and p
 // include p = 1, so they can only do as well or better in-sample.
 TEST(CalibrationSearch, PaperTablesReproduceReadmeCalibration) {
@@ -380,7 +381,7 @@ TEST(CalibrationSearch, NothingToFitIsAnError) {
 
 // ---- The measurements file ----------------------------------------------------------------------
 
-// MODEL.md, "Published results": Tables 1-2 and Fig. 4, with README's choices (h = 1450, L = 900
+// The paper's Tables 1-2 and Fig. 4, with docs/calibration.md's choices (h = 1450, L = 900
 // for Table 2; d = 100 assumed for Fig. 4, its impossible Q = 0.6 left out).
 TEST(CalibrationMeasurements, ShippedFilesHoldThePapersTables) {
   for (const fs::path& path : {kPaperCsv, kPaperJson}) {
@@ -594,7 +595,7 @@ TEST_F(CalibrationCli, KAloneOnTheShippedFileMatchesReadme) {
   EXPECT_EQ(j.at("fit"), "K");
   EXPECT_EQ(j.at("rows").size(), 7u);
   const json& range = j.at("fitted").at("K_range_at_p");
-  EXPECT_LE(range[0].get<double>(), 26.9 / 0.91);  // README, "Calibration": K = 29.56
+  EXPECT_LE(range[0].get<double>(), 26.9 / 0.91);  // docs/calibration.md: K = 29.56
   EXPECT_GT(range[1].get<double>(), 26.9 / 0.91);
   EXPECT_EQ(j.at("totals").at("in_sample").at("n_exact"), 3);
   EXPECT_EQ(j.at("totals").at("in_sample").at("n_within_one"), 5);

@@ -87,7 +87,7 @@ TEST(UpperEdgeLength, SimpsonAndTrapezoidConvergeToTheClosedForm) {
     previous_error = error;
   }
   EXPECT_LT(std::abs(upper_edge_length_simpson(amplitude, span, 64) / exact - 1.0), 1e-12);
-  // The integrand is smooth and periodic: at equal N the trapezoid rule beats Simpson (MODEL.md).
+  // The integrand is smooth and periodic: at equal N the trapezoid rule beats Simpson.
   for (int n : {4, 8, 16, 20}) {
     EXPECT_LT(std::abs(upper_edge_length_trapezoid(amplitude, span, n) / exact - 1.0),
               std::abs(upper_edge_length_simpson(amplitude, span, n) / exact - 1.0))
@@ -103,7 +103,7 @@ TEST(UpperEdgeLength, SimpsonWithTwoIntervalsByHand) {
   const double k = std::numbers::pi * amplitude / span;
   const double by_hand = span / 6.0 * (2.0 * std::sqrt(1.0 + k * k) + 4.0);
   EXPECT_NEAR(upper_edge_length_simpson(amplitude, span, 2), by_hand, 1e-9);
-  // MODEL.md: N = 2 under-estimates L' by about 3 % (here -2.5 %).
+  // Simpson with N = 2 under-estimates L' by about 3 % (here -2.5 %).
   EXPECT_NEAR(by_hand / upper_edge_length_closed_form(amplitude, span) - 1.0, -0.025, 0.005);
 }
 

@@ -1,4 +1,4 @@
-// The mesh exports of issue 5: OBJ with texture coordinates, and binary glTF read back with
+// The mesh exports: OBJ with texture coordinates, and binary glTF read back with
 // tinygltf's own loader. Expected values come from the grid and the parameters, never from the
 // exporters.
 #include <algorithm>

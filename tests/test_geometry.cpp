@@ -1,4 +1,4 @@
-// Fold lines (eq. 6 and eq. 4) and the deformed grid (MODEL.md item 7).
+// Fold lines (eq. 6 and eq. 4) and the deformed grid (docs/model.md, "The deformed cloth").
 #include <cmath>
 #include <numbers>
 

@@ -1,5 +1,5 @@
 // Both methods against the paper's Tables 1-2 and Fig. 4, the exact method's residuals, and every
-// regime of MODEL.md item 6.
+// regime the solver reports instead of an error.
 #include <cmath>
 #include <filesystem>
 #include <ostream>
@@ -22,9 +22,9 @@ Parameters preset_parameters(const std::string& name, Method method) {
   return p;
 }
 
-// One row of the README's comparison table: the paper's printed values (from the preset file) and
-// how far each method lands from them with the calibrated defaults, as measured (README,
-// "Calibration"); tolerances are the measured errors rounded up to the next 0.5 %.
+// One row of docs/calibration.md's comparison table: the paper's printed values (from the preset
+// file) and how far each method lands from them with the calibrated defaults, as measured;
+// tolerances are the measured errors rounded up to the next 0.5 %.
 struct PublishedRow {
   const char* preset;
   Method method;

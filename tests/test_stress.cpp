@@ -1,4 +1,4 @@
-// Numerical stress (issue 4, part 2): the `foldlab stress` run on 1e5 samples, invariants over
+// Numerical stress: the `foldlab stress` run on 1e5 samples, invariants over
 // random inputs checked against long-double sums written here, continuity, the paper's trends,
 // and the edge cases that tests/test_solver.cpp does not already cover.
 #include <algorithm>

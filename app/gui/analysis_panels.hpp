@@ -63,7 +63,7 @@ class RegimeMapPanel {
 
   void draw(const Parameters& current, const PanelActions& actions);
 
-  // For tests and the README's figure: the last completed map's size and time.
+  // For tests and the docs' figure: the last completed map's size and time.
   double last_map_ms() const { return last_map_ms_; }
   // True from a (re)start until every row has been computed.
   bool computing() const;

@@ -272,7 +272,7 @@ const Segment* segment_containing(const std::vector<Segment>& segments, double v
 }
 
 // K alone: every plateau along ln K is visited; the widest of the best is taken, at its
-// geometric middle (as README, "Calibration", fixed c).
+// geometric middle (as docs/calibration.md fixed the default c).
 FittedConstants fit_K(const Fitter& fitter, double p) {
   const std::vector<Segment> segments = fitter.sweep_K(p);
   const Segment& best = *best_segment(segments);

@@ -1,7 +1,6 @@
 // Fitting eq. 7's constants to measured n, z_max and Q, and showing honestly how much of the fit
-// is real: the loss, the search, leave-one-out and group-split validation (README, "Calibrating
-// against measurements"). Pure functions; a caller that wants progress or cancellation passes a
-// callback.
+// is real: the loss, the search, leave-one-out and group-split validation (docs/calibration.md).
+// Pure functions; a caller that wants progress or cancellation passes a callback.
 #pragma once
 
 #include <functional>
@@ -150,7 +149,7 @@ CalibrationReport calibrate(const MeasurementSet& data, const Parameters& base,
                             const CalibrationOptions& options,
                             const CalibrationProgress& progress = {});
 
-// Whether eq. 7 is the paper's form (p = 1 with FoldLab's c = 26.9, README "Calibration"), the
+// Whether eq. 7 is the paper's form (p = 1 with FoldLab's c = 26.9, docs/calibration.md), the
 // paper's form with some other c, or the calibrated variant (p != 1).
 enum class ModelForm { paper, paper_other_c, calibrated };
 ModelForm model_form(const ModelSettings& m);

@@ -1,4 +1,5 @@
-// What the solution looks like: the fold lines of eq. 6 and the deformed cloth of MODEL.md item 7.
+// What the solution looks like: the fold lines of eq. 6 and the deformed cloth (docs/model.md,
+// "The deformed cloth").
 // Coordinates in mm: x across (0 midway between the supports), y down, z out of the initial plane.
 #pragma once
 
@@ -68,8 +69,8 @@ struct DeformedGrid {
   double worst_fibre_error = 0.0;
 };
 
-// nx, ny >= 2, over the whole flat cloth (all spans of a strip). The cosine membrane (MODEL.md
-// item 7): the fibre at X has length h cos(pi X/L) and its points sit at arc-length fraction Y/h
+// nx, ny >= 2, over the whole flat cloth (all spans of a strip). The cosine membrane: the
+// fibre at X has length h cos(pi X/L) and its points sit at arc-length fraction Y/h
 // of the zig-zag through the fold points at x = X l/L. The rectangular cloth: every fibre is h
 // long; its point Y sits at arc length Y along the zig-zag, and below the lowest fold it hangs
 // straight down (as the paper does; near the supports, where the zig-zag shrinks to nothing, this

@@ -1,6 +1,6 @@
-// Measured hangings: the inputs of one experiment (t, E, w, h, L, d in MODEL.md units) and what was
+// Measured hangings: the inputs of one experiment (t, E, w, h, L, d in mm, MPa, N/mm²) and what was
 // observed (n, z_max, Q; any of them may be missing), read from CSV or JSON for `foldlab
-// calibrate`. The format is described in README, "Calibrating against measurements".
+// calibrate`. The format is described in docs/calibration.md.
 #pragma once
 
 #include <filesystem>

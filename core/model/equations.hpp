@@ -1,4 +1,4 @@
-// The model's equations 7-10 as pure functions (MODEL.md, "Equations"). Lengths in mm.
+// The model's equations 7-10 as pure functions (docs/model.md, "Equations"). Lengths in mm.
 #pragma once
 
 #include <optional>

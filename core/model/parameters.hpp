@@ -11,8 +11,8 @@
 namespace foldlab {
 
 // c calibrated on Tables 1-2 of the paper with nu = 0.3, so K = c / (1 - nu²) = 29.56: the middle
-// (geometric mean) of the widest band of c that gets the most rows' n exactly (README,
-// "Calibration").
+// (geometric mean) of the widest band of c that gets the most rows' n exactly
+// (docs/calibration.md).
 inline constexpr double kCalibratedLoadConstantC = 26.9;
 inline constexpr double kDefaultPoissonRatio = 0.3;
 
@@ -34,18 +34,19 @@ struct Hanging {
 };
 
 enum class Method { paper, exact };
-// How the span l between the supports follows from L and d (MODEL.md item 4).
+// How the span l between the supports follows from L and d. The paper's text says L - 2d, its
+// printed tables fit L - d (docs/model.md), so both are offered.
 enum class SpanRule { L_minus_d, L_minus_2d };
-// Int[·] of eq. 10 (MODEL.md item 2).
+// Int[·] of eq. 10: the paper does not say whether it rounds down or to the nearest.
 enum class IntRounding { floor, nearest };
 // The paper method's quadrature of eq. 8: the paper's composite Simpson, or the trapezoid rule,
-// which converges exponentially on this smooth periodic integrand (MODEL.md, eq. 8).
+// which converges exponentially on this smooth periodic integrand.
 enum class LengthQuadrature { simpson, trapezoid };
 
 struct ModelSettings {
   Method method = Method::paper;
   // c of eq. 7, the load-condition constant; eq. 7 uses K = c / (1 - nu²). Calibrated on Tables 1-2
-  // (see README, "Calibration").
+  // (docs/calibration.md).
   double load_constant_c = kCalibratedLoadConstantC;
   SpanRule span_rule = SpanRule::L_minus_d;
   IntRounding int_rounding = IntRounding::nearest;
@@ -54,7 +55,7 @@ struct ModelSettings {
   int max_iterations = 200;        // paper method: iteration cap
   LengthQuadrature length_quadrature = LengthQuadrature::simpson;  // paper method: rule for eq. 8
   // The calibrated variant of eq. 7: its stress ratio s enters as s^p. p = 1 is the paper's form
-  // (MODEL.md, consistency check; README, "Calibrating against measurements").
+  // (docs/calibration.md: the printed tables make n depend on w, t, E and h less than eq. 7 does).
   double stress_exponent_p = 1.0;
 
   bool operator==(const ModelSettings&) const = default;
@@ -73,7 +74,7 @@ struct Parameters {
 double stiffness_constant_K(const Parameters& p);
 // Sets c so that K takes the given value at the current Poisson ratio.
 void set_stiffness_constant_K(Parameters& p, double K);
-// l of MODEL.md, by the chosen span rule.
+// The span l between the supports, by the chosen span rule.
 double span_mm(const Parameters& p);
 
 // One problem with one input: which field (the paper's symbol with its unit), its value, and a

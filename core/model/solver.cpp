@@ -15,7 +15,7 @@
 namespace foldlab {
 namespace {
 
-// The paper's initial guesses (MODEL.md): a_0 = 1.01 h, a_n = z_max = 0.01 h.
+// The paper's initial guesses: a_0 = 1.01 h, a_n = z_max = 0.01 h.
 constexpr double kLowerBoundaryFactor = 1.01;
 constexpr double kInitialGuessFactor = 0.01;
 

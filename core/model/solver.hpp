@@ -1,5 +1,5 @@
-// The two solution methods of MODEL.md: `paper` (the paper's 5%-tolerance iteration as we read it)
-// and `exact` (eqs. 8 and 9 to machine precision, n as the fixed point of eq. 10).
+// The two solution methods (docs/model.md): `paper` (the paper's 5%-tolerance iteration as we read
+// it) and `exact` (eqs. 8 and 9 to machine precision, n as the fixed point of eq. 10).
 #pragma once
 
 #include <optional>
@@ -10,7 +10,8 @@
 
 namespace foldlab {
 
-// Every outcome is a regime with a message; none is an error and none yields NaN (MODEL.md item 6).
+// Every outcome is a regime with a message; none is an error and none yields NaN, so
+// a sweep, a slider or a batch never stops at an awkward input.
 enum class Regime {
   wrinkled,          // n >= 1 folds, all equations hold
   no_slack,          // d = 0: L = l, flat cloth, n = 0

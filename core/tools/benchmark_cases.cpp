@@ -207,7 +207,7 @@ ReferenceSolution reference_solution(const Parameters& p) {
   const Real A = ref.sag_mm;
   Real theta = 0.0L;
   if (exact.regime == Regime::negligible_slack) {
-    ref.an_mm = A;  // the flat-fold answer of MODEL.md: a_n = A, z = 0
+    ref.an_mm = A;  // the solver's flat-fold answer: a_n = A, z = 0
   } else {
     theta = reference_theta(a0, h, A, ref.n);
     ref.an_mm = A * std::cos(theta);

@@ -1,4 +1,4 @@
-// Run time against error (issue 4, part 1): a fixed set of realistic cases, a reference solution
+// Run time against error: a fixed set of realistic cases, a reference solution
 // per case that does not share code with the solver, the method variants to compare, and the
 // measurements (time per solve, error in n, Q and z_max) that `foldlab bench`, docs/bench.csv and
 // docs/bench.svg report.

@@ -1,6 +1,6 @@
-// The numerical stress test (issue 4, part 2): both methods over inputs far wider than real
-// fabrics, counting what MODEL.md item 6 promises never happens (NaN, inf, hangs) and what the
-// solver reports instead (regimes, iteration caps, n cycles, residuals).
+// The numerical stress test: both methods over inputs far wider than real fabrics, counting what
+// the solver promises never happens (NaN, inf, hangs) and what it reports instead (regimes,
+// iteration caps, n cycles, residuals).
 #pragma once
 
 #include <cstdint>
@@ -48,7 +48,7 @@ struct MethodStress {
   int iteration_cap_hits = 0;
   int n_capped = 0;  // eq. 10 asked for more than kMaxWrinkles folds
   // Max |residual| of eqs. 8 and 9 over the regimes where both equations hold (wrinkled, n_cycle,
-  // stiff); negligible_slack misses eq. 9 by design (MODEL.md item 6).
+  // stiff); negligible_slack misses eq. 9 by design (it has no root there).
   double max_residual_length = 0.0;
   double max_residual_height = 0.0;
   int max_n = 0;
