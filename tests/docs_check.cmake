@@ -1,7 +1,8 @@
 # Checks the documentation as a reader meets it (run by CTest as `cmake -P`, with -DROOT=<repo>):
 # - README's first code block holds the two commands, first, and they are the scripts that exist
 #   and that CI runs;
-# - every relative link in README.md, docs/*.md and presets/README.md names a file that exists;
+# - every relative link in README.md, docs/*.md and presets/README.md names a file that exists,
+#   and a heading of it when the link has an anchor;
 # - nothing in the repository points outside it to the developers' model notes, and no comment
 #   names a tracker number, which means nothing to a reader of the code.
 cmake_minimum_required(VERSION 3.20)
@@ -63,32 +64,65 @@ if(NOT ci_run MATCHES "scripts/test\\.sh")
   list(APPEND failures ".ci/run does not run README command 2 (scripts/test.sh)")
 endif()
 
-# Links: [text](target), read as <text>(target) after read_lines, with a relative target,
-# resolved from the page's folder; #anchors are not checked.
+# The anchors a Markdown renderer gives a page's headings: lower case, punctuation dropped, spaces
+# as hyphens ("## Two methods" -> "two-methods").
+function(heading_anchors path out)
+  read_lines("${path}" lines)
+  set(anchors "")
+  foreach(line IN LISTS lines)
+    if(line MATCHES "^#+ (.*)$")
+      string(TOLOWER "${CMAKE_MATCH_1}" slug)
+      string(REGEX REPLACE "[^a-z0-9 _-]" "" slug "${slug}")
+      string(REPLACE " " "-" slug "${slug}")
+      list(APPEND anchors "${slug}")
+    endif()
+  endforeach()
+  set(${out} "${anchors}" PARENT_SCOPE)
+endfunction()
+
+# Links: [text](target#anchor), read as <text>(target#anchor) after read_lines, with a relative
+# target resolved from the page's folder; an anchor into a Markdown page must name a heading.
 file(GLOB pages "${ROOT}/README.md" "${ROOT}/docs/*.md" "${ROOT}/presets/README.md")
 list(LENGTH pages page_count)
 if(page_count LESS 3)
   list(APPEND failures "found only ${page_count} documentation pages under ${ROOT}")
 endif()
 set(link_count 0)
+set(anchor_count 0)
 foreach(page IN LISTS pages)
   read_lines("${page}" text)
   get_filename_component(folder "${page}" DIRECTORY)
   file(RELATIVE_PATH page_name "${ROOT}" "${page}")
-  string(REGEX MATCHALL ">\\([^)# ]*[)#]" links "${text}")
+  string(REGEX MATCHALL ">\\([^) ]*\\)" links "${text}")
   foreach(link IN LISTS links)
-    string(REGEX REPLACE "^>\\(([^)# ]*)[)#]$" "\\1" target "${link}")
-    if(target STREQUAL "" OR target MATCHES "^[a-z]+:")
+    string(REGEX REPLACE "^>\\(([^) ]*)\\)$" "\\1" target "${link}")
+    if(target MATCHES "^[a-z]+:")
       continue()
     endif()
+    set(anchor "")
+    if(target MATCHES "^([^#]*)#(.*)$")
+      set(target "${CMAKE_MATCH_1}")
+      set(anchor "${CMAKE_MATCH_2}")
+    endif()
+    set(path "${page}")
+    if(NOT target STREQUAL "")
+      set(path "${folder}/${target}")
+    endif()
     math(EXPR link_count "${link_count} + 1")
-    if(NOT EXISTS "${folder}/${target}")
+    if(NOT EXISTS "${path}")
       list(APPEND failures "${page_name}: link to ${target}, which does not exist")
+    elseif(NOT anchor STREQUAL "" AND path MATCHES "\\.md$")
+      math(EXPR anchor_count "${anchor_count} + 1")
+      heading_anchors("${path}" anchors)
+      if(NOT anchor IN_LIST anchors)
+        list(APPEND failures "${page_name}: link to ${target}#${anchor}, a heading that does not exist")
+      endif()
     endif()
   endforeach()
 endforeach()
-if(link_count LESS 10)
-  list(APPEND failures "found only ${link_count} relative links: is the link pattern still right?")
+if(link_count LESS 10 OR anchor_count LESS 3)
+  list(APPEND failures "found only ${link_count} relative links (${anchor_count} with anchors): "
+    "is the link pattern still right?")
 endif()
 
 # No pointer to the developers' notes outside the repository, no tracker numbers in comments.
@@ -117,4 +151,5 @@ if(failures)
   list(JOIN failures "\n  " report)
   message(FATAL_ERROR "docs_check:\n  ${report}")
 endif()
-message(STATUS "docs_check: README's two commands first; ${link_count} links resolve")
+message(STATUS "docs_check: README's two commands first; ${link_count} links resolve "
+  "(${anchor_count} to a heading)")
