@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include <Eigen/Geometry>
 
@@ -65,6 +66,19 @@ void OrbitCamera::frame(const Eigen::Vector3f& centre, float radius_mm) {
   *this = OrbitCamera{};
   target = centre;
   distance_mm = std::max(radius_mm, 1.0f) / std::sin(0.5f * fov_y_rad) * 1.15f;
+}
+
+// The grid's bounding box in world coordinates (y up), whatever the shape.
+void cloth_bounds(Scene& scene, Eigen::Vector3f& centre, float& radius_mm) {
+  Eigen::Vector3f lo = Eigen::Vector3f::Constant(std::numeric_limits<float>::max());
+  Eigen::Vector3f hi = -lo;
+  for (const Eigen::Vector3f& v : scene.grid().positions_mm) {
+    const Eigen::Vector3f world(v.x(), -v.y(), v.z());
+    lo = lo.cwiseMin(world);
+    hi = hi.cwiseMax(world);
+  }
+  centre = 0.5f * (lo + hi);
+  radius_mm = std::max(1.0f, 0.5f * (hi - lo).norm());
 }
 
 }  // namespace foldlab::gui

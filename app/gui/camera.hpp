@@ -4,6 +4,8 @@
 
 #include <Eigen/Core>
 
+#include "core/geometry/scene.hpp"
+
 namespace foldlab::gui {
 
 struct OrbitCamera {
@@ -23,5 +25,8 @@ struct OrbitCamera {
   // Frames a box of the given centre and radius from the default direction.
   void frame(const Eigen::Vector3f& centre, float radius_mm);
 };
+
+// A sphere around the cloth's grid (world coordinates) for framing the camera.
+void cloth_bounds(Scene& scene, Eigen::Vector3f& centre, float& radius_mm);
 
 }  // namespace foldlab::gui

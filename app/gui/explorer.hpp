@@ -1,20 +1,24 @@
-// The explorer: every panel of the FoldLab window, drawn once per frame with Dear ImGui. The same
-// frame code serves the GLFW window and the headless EGL renderer.
+// The explorer: the coordinator of the FoldLab window. It owns the document (the one copy of the
+// state the panels share) and one object per panel, and draws them once per frame with Dear
+// ImGui. It draws through a Renderer, never GL itself: the GL renderer serves the window and
+// headless pictures, the null renderer serves unit tests.
 #pragma once
 
 #include <filesystem>
-#include <memory>
 #include <optional>
 #include <string>
-#include <vector>
+#include <string_view>
 
-#include "app/gui/analysis_panels.hpp"
-#include "app/gui/calibration_panel.hpp"
-#include "app/gui/camera.hpp"
-#include "app/gui/cloth_renderer.hpp"
-#include "app/gui/plot_widget.hpp"
-#include "app/gui/session.hpp"
-#include "core/geometry/scene.hpp"
+#include "app/gui/document.hpp"
+#include "app/gui/panels/analysis_panel.hpp"
+#include "app/gui/panels/calibration_panel.hpp"
+#include "app/gui/panels/cloth_view_panel.hpp"
+#include "app/gui/panels/export_panel.hpp"
+#include "app/gui/panels/fold_plot_panel.hpp"
+#include "app/gui/panels/parameters_panel.hpp"
+#include "app/gui/panels/presets_panel.hpp"
+#include "app/gui/panels/results_panel.hpp"
+#include "app/gui/renderer.hpp"
 #include "core/io/preset.hpp"
 
 namespace foldlab::gui {
@@ -29,104 +33,58 @@ struct ExplorerOptions {
 class Explorer {
  public:
   // `initial` is shown unless a saved session is restored (only when no preset was asked for).
+  // The renderer must outlive the explorer.
   Explorer(const Preset& initial, const std::string& initial_path, bool restore_session,
-           ExplorerOptions options);
+           ExplorerOptions options, Renderer& renderer);
   ~Explorer();
+  Explorer(const Explorer&) = delete;
+  Explorer& operator=(const Explorer&) = delete;
 
-  // Builds every window for this frame; between ImGui::NewFrame and ImGui::Render. May draw the
-  // 3D view into its own framebuffer (GL calls), so a GL context must be current.
+  // Builds every window for this frame; between ImGui::NewFrame and ImGui::Render.
   void frame();
 
   // Sets one input by its --set key, exactly as moving its slider does (for scripted runs).
   std::optional<std::string> set_input(std::string_view key, double value);
-  Scene& scene() { return scene_; }
-  const Parameters& edited() const { return edited_; }
-  const RenderCounters* renderer_counters() const;
-  void save_session_now();
-  // A view setting by name (print=checks, breeze=1, breeze_mm=80, time=1.5, z=8, wireframe=1,
-  // fold_lines=0, ground=0): for scripted pictures. Returns the problem, if any.
+  // A view setting by name (see ClothViewPanel::set_view, plus sweep=table1|table2|fig4).
   std::optional<std::string> set_view(std::string_view key, std::string_view value);
+  void load_preset_file(const std::filesystem::path& path) { document_.load_preset_file(path); }
+
+  Document& document() { return document_; }
+  Scene& scene() { return document_.scene(); }
+  const Parameters& edited() const { return document_.edited(); }
+  const RenderCounters& renderer_counters() const { return renderer_.counters(); }
+  const AnalysisPanel& analysis() const { return analysis_; }
+  const PresetsPanel& presets() const { return presets_; }
+
+  void save_session_now();
   // A PNG the user asked for with the Export buttons, taken by the frame loop after drawing.
-  std::optional<std::string> take_screenshot_request();
+  std::optional<std::string> take_screenshot_request() {
+    return export_.take_screenshot_request();
+  }
   // Shows a line in the Presets panel (the outcome of an export done by the frame loop).
-  void notify(const std::string& message, bool is_error);
+  void notify(const std::string& message, bool is_error) { document_.notify(message, is_error); }
   // True while background work (the regime map) is still filling in what the window shows.
-  bool busy() const;
+  bool busy() const { return analysis_.regime_map().computing(); }
   // The last finished regime map's wall time in ms (0 before one finishes).
-  double regime_map_ms() const { return regime_map_panel_.last_map_ms(); }
+  double regime_map_ms() const { return analysis_.regime_map().last_map_ms(); }
 
  private:
-  void parameters_panel();
-  void results_panel();
-  void plot_panel();
-  void view3d_panel();
-  void presets_panel();
-  void teaching_panel();
-  void equations_tab();
-  void stats_overlay();
-  void export_section();
-  PanelActions panel_actions();
-  DeformedGrid current_frame_mesh();
-
-  // A slider for one model input: unit, log scale where the range spans decades, typed values
-  // (Ctrl+click) not clamped, and the validation message of its field beside it.
-  void input_slider(const char* label, const char* field, double& value, double lo, double hi,
-                    const char* format, bool logarithmic, const char* help);
-  void show_issue(const char* field);
-  void commit_edits();
-  void load_preset_file(const std::filesystem::path& path);
-  void save_as(const std::string& name, bool overwrite);
-  void refresh_preset_list();
-  bool unsaved() const;
+  void save_session_when_idle();
 
   ExplorerOptions options_;
-  Preset loaded_;  // as loaded: "reset" returns here, the unsaved marker compares
-  std::string loaded_path_;
-  Parameters edited_;  // what the widgets show, possibly invalid
-  std::vector<ValidationIssue> issues_;
-  Scene scene_;  // always holds the last valid parameters
-  std::unique_ptr<ClothRenderer> renderer_;
-  OrbitCamera camera_;
-  bool camera_framed_ = false;
-  bool camera_user_moved_ = false;
-  bool breeze_playing_ = true;
-  char export_stem_[256] = "foldlab-export";
-  std::optional<std::string> screenshot_request_;
-  std::uint64_t camera_solution_version_ = 0;
-  ClothStyle style_;
-  int grid_resolution_ = 128;
+  Renderer& renderer_;
+  Document document_;
+  ParametersPanel parameters_;
+  PresetsPanel presets_;
+  ExportPanel export_;
+  FoldPlotPanel fold_plot_;
+  ClothViewPanel cloth_view_;
+  ResultsPanel results_;
+  AnalysisPanel analysis_;
+  CalibrationPanel calibration_;  // "Fit to measurements", opened from the Presets panel
   bool show_stats_ = false;
-  bool plot_autoscale_ = false;
-  SweepPanel sweep_panel_;
-  RegimeMapPanel regime_map_panel_;
-  bool analysis_tab_selected_ = false;
-  Plot fold_plot_;
-  std::uint64_t plot_lines_version_ = ~std::uint64_t{0};
-  std::vector<std::vector<double>> plot_xs_;
-  std::vector<std::vector<double>> plot_ys_;
-  std::uint64_t plot_outline_version_ = ~std::uint64_t{0};
-  std::vector<double> outline_xs_;
-  std::vector<double> outline_ys_;
-
-  struct PresetEntry {
-    std::string name;
-    std::filesystem::path path;
-    bool user = false;
-  };
-  std::vector<PresetEntry> presets_;
-  std::string preset_message_;  // the last load/save error or confirmation, shown in the panel
-  bool preset_message_is_error_ = false;
-  char save_name_[128] = {};
-  std::string pending_overwrite_;  // name waiting for the user's "overwrite?" answer
   std::string session_message_;
-  CalibrationPanel calibration_panel_;  // "Fit to measurements", opened from the Presets panel
-
-  // For the teaching panel: what n was before the last change, and why it moved.
-  int previous_n_ = -1;
-  int shown_n_ = -1;
-  double previous_count_argument_ = 0.0;
   double last_session_save_time_ = 0.0;
-  bool session_dirty_ = false;
 };
 
 }  // namespace foldlab::gui

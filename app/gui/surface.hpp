@@ -10,13 +10,9 @@
 #include <vector>
 
 #include "app/common/inputs.hpp"
+#include "app/gui/renderer.hpp"
 
 namespace foldlab::gui {
-
-struct FrameSize {
-  int width = 0;
-  int height = 0;
-};
 
 class SurfaceError : public app::EnvironmentError {
  public:
@@ -50,8 +46,6 @@ struct SurfaceOptions {
 std::unique_ptr<Surface> make_window_surface(const SurfaceOptions& options);
 std::unique_ptr<Surface> make_headless_surface(const SurfaceOptions& options);
 
-// RGBA pixels of the current framebuffer, top row first.
-std::vector<std::uint8_t> read_framebuffer_rgba(FrameSize size);
 // Writes RGBA pixels (top row first) as PNG. Throws SurfaceError naming the path on failure.
 void write_png(const char* path, FrameSize size, const std::vector<std::uint8_t>& rgba);
 

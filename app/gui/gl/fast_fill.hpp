@@ -7,7 +7,7 @@
 
 #include <imgui.h>
 
-#include "app/gui/surface.hpp"
+#include "app/gui/renderer.hpp"
 
 namespace foldlab::gui {
 

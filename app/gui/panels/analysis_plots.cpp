@@ -1,6 +1,4 @@
-#include "app/gui/analysis_panels.hpp"
-
-#include <epoxy/gl.h>
+#include "app/gui/panels/analysis_plots.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -10,6 +8,7 @@
 #include <imgui.h>
 
 #include "app/common/presets_dir.hpp"
+#include "core/model/settings.hpp"
 
 namespace foldlab::gui {
 namespace {
@@ -18,30 +17,21 @@ constexpr ImU32 kCurveColour = IM_COL32(90, 170, 255, 255);
 constexpr ImU32 kPaperColour = IM_COL32(255, 120, 60, 255);
 constexpr ImU32 kCurrentColour = IM_COL32(240, 220, 90, 200);
 
-const char* unit_of(const std::string& key) {
-  if (key == "t" || key == "h" || key == "L" || key == "d")
-    return "mm";
-  if (key == "E")
-    return "MPa";
-  if (key == "w")
-    return "N/mm²";
-  return "";
-}
-
+// "h (mm)": the key with its unit from the input table.
 std::string axis_label(const std::string& key) {
-  const std::string unit = unit_of(key);
-  return unit.empty() ? key : key + " (" + unit + ")";
+  const InputSpec* spec = find_input(key);
+  return spec != nullptr ? input_label(*spec) : key;
 }
 
-bool key_combo(const char* label, int& index) {
-  const std::vector<std::string>& keys = sweepable_keys();
+// Inputs are chosen by key: the table's order may change without moving a panel's choice.
+bool key_combo(const char* label, std::string& key) {
   bool changed = false;
   ImGui::SetNextItemWidth(70.0f);
-  if (ImGui::BeginCombo(label, keys[static_cast<std::size_t>(index)].c_str())) {
-    for (int i = 0; i < static_cast<int>(keys.size()); ++i) {
-      if (ImGui::Selectable(keys[static_cast<std::size_t>(i)].c_str(), i == index)) {
-        changed = i != index;
-        index = i;
+  if (ImGui::BeginCombo(label, key.c_str())) {
+    for (const std::string& option : sweepable_keys()) {
+      if (ImGui::Selectable(option.c_str(), option == key)) {
+        changed = option != key;
+        key = option;
       }
     }
     ImGui::EndCombo();
@@ -137,7 +127,7 @@ SweepPanel::SweepPanel(std::filesystem::path presets_dir) : presets_dir_(std::mo
 
 void SweepPanel::load_overlay(const std::string& prefix, const std::string& label) {
   overlay_label_ = label;
-  overlay_key_ = sweepable_keys()[static_cast<std::size_t>(key_index_)];
+  overlay_key_ = key_;
   overlay_x_.clear();
   overlay_n_.clear();
   overlay_Q_.clear();
@@ -167,8 +157,7 @@ void SweepPanel::load_overlay(const std::string& prefix, const std::string& labe
 }
 
 void SweepPanel::recompute(const Parameters& current) {
-  SweepAxis axis{sweepable_keys()[static_cast<std::size_t>(key_index_)], from_, to_, steps_,
-                 logarithmic_};
+  SweepAxis axis{key_, from_, to_, steps_, logarithmic_};
   if (check_axis(axis)) {
     return;
   }
@@ -200,23 +189,23 @@ namespace {
 struct PaperCase {
   const char* preset;
   const char* prefix;
-  int key;
+  const char* key;
   double from, to;
   bool log;
 };
 const char* const kPaperCaseButtons[] = {"Table 1 (h)", "Table 2 (w)", "Fig. 4 (h)"};
 const PaperCase kPaperCaseList[] = {
-    {"paper-table1-h1400.json", "paper-table1-", 3, 500.0, 3000.0, false},
-    {"paper-table2-w33.json", "paper-table2-", 2, 5e-7, 8e-6, true},
-    {"paper-fig4.json", "paper-fig4", 3, 500.0, 3000.0, false},
+    {"paper-table1-h1400.json", "paper-table1-", "h", 500.0, 3000.0, false},
+    {"paper-table2-w33.json", "paper-table2-", "w", 5e-7, 8e-6, true},
+    {"paper-fig4.json", "paper-fig4", "h", 500.0, 3000.0, false},
 };
 
 }  // namespace
 
-void SweepPanel::select_paper_case(int which, const PanelActions& actions) {
+void SweepPanel::select_paper_case(int which, Document& document) {
   const PaperCase& c = kPaperCaseList[which];
-  actions.load_preset(presets_dir_ / c.preset);
-  key_index_ = c.key;
+  document.load_preset_file(presets_dir_ / c.preset);
+  key_ = c.key;
   from_ = c.from;
   to_ = c.to;
   logarithmic_ = c.log;
@@ -224,12 +213,11 @@ void SweepPanel::select_paper_case(int which, const PanelActions& actions) {
   n_plot_.request_autoscale();
 }
 
-void SweepPanel::draw(const Parameters& current, const PanelActions& actions) {
-  const std::vector<std::string>& keys = sweepable_keys();
-  if (key_combo("input", key_index_)) {
-    const std::string& key = keys[static_cast<std::size_t>(key_index_)];
-    logarithmic_ = natural_log_scale(key);
-    default_range(key, get_number(current, key), from_, to_);
+void SweepPanel::draw(Document& document) {
+  const Parameters& current = document.scene().parameters();
+  if (key_combo("input", key_)) {
+    logarithmic_ = natural_log_scale(key_);
+    default_range(key_, get_number(current, key_), from_, to_);
     overlay_label_.clear();
   }
   ImGui::SameLine();
@@ -242,13 +230,13 @@ void SweepPanel::draw(const Parameters& current, const PanelActions& actions) {
 
   for (int which = 0; which < kPaperCases; ++which) {
     if (ImGui::SmallButton(kPaperCaseButtons[which])) {
-      select_paper_case(which, actions);
+      select_paper_case(which, document);
     }
     ImGui::SameLine();
   }
   ImGui::NewLine();
 
-  SweepAxis check{keys[static_cast<std::size_t>(key_index_)], from_, to_, steps_, logarithmic_};
+  SweepAxis check{key_, from_, to_, steps_, logarithmic_};
   if (auto problem = check_axis(check)) {
     ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.4f, 1.0f), "%s", problem->c_str());
     return;
@@ -315,9 +303,6 @@ RegimeMapPanel::RegimeMapPanel() = default;
 
 RegimeMapPanel::~RegimeMapPanel() {
   stop();
-  if (texture_ != 0) {
-    glDeleteTextures(1, &texture_);
-  }
 }
 
 bool RegimeMapPanel::computing() const {
@@ -336,12 +321,9 @@ void RegimeMapPanel::stop() {
 
 void RegimeMapPanel::restart(const Parameters& base) {
   stop();
-  const std::vector<std::string>& keys = sweepable_keys();
   auto job = std::make_shared<Job>();
-  job->x = {keys[static_cast<std::size_t>(x_key_)], x_from_, x_to_, resolution_,
-            natural_log_scale(keys[static_cast<std::size_t>(x_key_)])};
-  job->y = {keys[static_cast<std::size_t>(y_key_)], y_from_, y_to_, resolution_,
-            natural_log_scale(keys[static_cast<std::size_t>(y_key_)])};
+  job->x = {x_key_, x_from_, x_to_, resolution_, natural_log_scale(x_key_)};
+  job->y = {y_key_, y_from_, y_to_, resolution_, natural_log_scale(y_key_)};
   job->base = base;
   job->cells.assign(static_cast<std::size_t>(resolution_) * resolution_, MapCell{});
   job->row_done = std::make_unique<std::atomic<bool>[]>(static_cast<std::size_t>(resolution_));
@@ -374,17 +356,13 @@ void RegimeMapPanel::restart(const Parameters& base) {
   }
 }
 
-void RegimeMapPanel::update_texture() {
+void RegimeMapPanel::update_image(Renderer& renderer) {
   const int n = resolution_;
-  if (texture_ == 0 || texture_size_ != n) {
-    if (texture_ == 0) {
-      glGenTextures(1, &texture_);
-    }
-    glBindTexture(GL_TEXTURE_2D, texture_);
-    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, n, n, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    texture_size_ = n;
+  if (image_ < 0) {
+    image_ = renderer.create_image();
+  }
+  if (image_size_ != n) {
+    image_size_ = n;
     rows_shown_ = -1;
   }
   if (!job_ || rows_shown_ == n) {
@@ -405,21 +383,18 @@ void RegimeMapPanel::update_texture() {
     }
   }
   if (changed) {
-    glBindTexture(GL_TEXTURE_2D, texture_);
-    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-    glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, n, n, GL_RGBA, GL_UNSIGNED_BYTE, pixels_.data());
+    renderer.update_image(image_, n, n, pixels_.data());
   }
   rows_shown_ = shown == n ? n : 0;
 }
 
-void RegimeMapPanel::draw(const Parameters& current, const PanelActions& actions) {
-  const std::vector<std::string>& keys = sweepable_keys();
+void RegimeMapPanel::draw(Document& document, Renderer& renderer) {
+  const Parameters& current = document.scene().parameters();
   bool restart_needed = !job_started_;
   ImGui::TextUnformatted("x");
   ImGui::SameLine();
   if (key_combo("##x key", x_key_)) {
-    default_range(keys[static_cast<std::size_t>(x_key_)],
-                  get_number(current, keys[static_cast<std::size_t>(x_key_)]), x_from_, x_to_);
+    default_range(x_key_, get_number(current, x_key_), x_from_, x_to_);
     restart_needed = true;
   }
   ImGui::SameLine();
@@ -427,8 +402,7 @@ void RegimeMapPanel::draw(const Parameters& current, const PanelActions& actions
   ImGui::TextUnformatted("y");
   ImGui::SameLine();
   if (key_combo("##y key", y_key_)) {
-    default_range(keys[static_cast<std::size_t>(y_key_)],
-                  get_number(current, keys[static_cast<std::size_t>(y_key_)]), y_from_, y_to_);
+    default_range(y_key_, get_number(current, y_key_), y_from_, y_to_);
     restart_needed = true;
   }
   ImGui::SameLine();
@@ -451,15 +425,15 @@ void RegimeMapPanel::draw(const Parameters& current, const PanelActions& actions
   // The map depends on every input except its two axes.
   Parameters base_now = current;
   Parameters base_job = job_base_;
-  set_number(base_now, keys[static_cast<std::size_t>(x_key_)], 1.0);
-  set_number(base_now, keys[static_cast<std::size_t>(y_key_)], 1.0);
-  set_number(base_job, keys[static_cast<std::size_t>(x_key_)], 1.0);
-  set_number(base_job, keys[static_cast<std::size_t>(y_key_)], 1.0);
+  set_number(base_now, x_key_, 1.0);
+  set_number(base_now, y_key_, 1.0);
+  set_number(base_job, x_key_, 1.0);
+  set_number(base_job, y_key_, 1.0);
   restart_needed |= !(base_now == base_job);
-  const SweepAxis x_check{keys[static_cast<std::size_t>(x_key_)], x_from_, x_to_, resolution_,
-                          natural_log_scale(keys[static_cast<std::size_t>(x_key_)])};
-  const SweepAxis y_check{keys[static_cast<std::size_t>(y_key_)], y_from_, y_to_, resolution_,
-                          natural_log_scale(keys[static_cast<std::size_t>(y_key_)])};
+  const SweepAxis x_check{x_key_, x_from_, x_to_, resolution_,
+                          natural_log_scale(x_key_)};
+  const SweepAxis y_check{y_key_, y_from_, y_to_, resolution_,
+                          natural_log_scale(y_key_)};
   for (const SweepAxis* axis : {&x_check, &y_check}) {
     if (auto problem = check_axis(*axis)) {
       ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.4f, 1.0f), "%s", problem->c_str());
@@ -473,7 +447,7 @@ void RegimeMapPanel::draw(const Parameters& current, const PanelActions& actions
   if (restart_needed) {
     restart(current);
   }
-  update_texture();
+  update_image(renderer);
   const int done = job_->rows_done.load();
   if (done < resolution_) {
     ImGui::ProgressBar(static_cast<float>(done) / static_cast<float>(resolution_),
@@ -489,7 +463,7 @@ void RegimeMapPanel::draw(const Parameters& current, const PanelActions& actions
   const ImVec2 origin(ImGui::GetCursorScreenPos().x + 50.0f, ImGui::GetCursorScreenPos().y);
   ImGui::SetCursorScreenPos(origin);
   // Row 0 is the lowest y: the texture's first row goes to the bottom.
-  ImGui::Image(reinterpret_cast<ImTextureID>(static_cast<std::intptr_t>(texture_)),
+  ImGui::Image(renderer.texture(image_),
                ImVec2(side, side), ImVec2(0, 1), ImVec2(1, 0));
   const bool hovered = ImGui::IsItemHovered();
   const bool clicked = ImGui::IsItemClicked(ImGuiMouseButton_Left);
@@ -535,8 +509,8 @@ void RegimeMapPanel::draw(const Parameters& current, const PanelActions& actions
                         cell.n, cell.z_max_mm);
     }
     if (clicked) {
-      actions.set_input(job.x.key, x_value);
-      actions.set_input(job.y.key, y_value);
+      document.set_input(job.x.key, x_value);
+      document.set_input(job.y.key, y_value);
     }
   }
 }

@@ -1,4 +1,4 @@
-#include "app/gui/calibration_panel.hpp"
+#include "app/gui/panels/calibration_panel.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -9,7 +9,7 @@
 #include <imgui.h>
 
 #include "app/common/presets_dir.hpp"
-#include "app/gui/fast_fill.hpp"
+#include "app/gui/renderer.hpp"
 #include "core/model/text_format.hpp"
 
 namespace foldlab::gui {
@@ -202,7 +202,7 @@ void CalibrationPanel::collect_finished_run() {
   finished_error_.clear();
 }
 
-bool CalibrationPanel::draw(Parameters& edited, const Preset& loaded) {
+bool CalibrationPanel::draw(Parameters& edited, const Preset& loaded, Renderer& renderer) {
   collect_finished_run();
   if (!open_) {
     return false;
@@ -217,7 +217,7 @@ bool CalibrationPanel::draw(Parameters& edited, const Preset& loaded) {
   }
   bool changed = false;
   if (ImGui::Begin("Fit to measurements", &open_)) {
-    fill_current_window_background();  // the style's window background is transparent
+    renderer.fill_window_background();  // the style's window background is transparent
     section("The model's constants");
     ImGui::TextColored(kDimText, "now:");
     ImGui::SameLine();

@@ -1,4 +1,4 @@
-#include "app/gui/cloth_renderer.hpp"
+#include "app/gui/gl/cloth_renderer.hpp"
 
 #include <epoxy/gl.h>
 
@@ -338,18 +338,6 @@ void ClothRenderer::upload_decorations(Scene& scene) {
   glBindBuffer(GL_ARRAY_BUFFER, gl_->decor_vbo);
   glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(vertices.size() * sizeof(Vertex)),
                vertices.data(), GL_DYNAMIC_DRAW);
-}
-
-// The grid's bounding box in world coordinates, whatever the shape.
-void ClothRenderer::bounds(Scene& scene, Eigen::Vector3f& centre, float& radius_mm) {
-  Eigen::Vector3f lo = Eigen::Vector3f::Constant(std::numeric_limits<float>::max());
-  Eigen::Vector3f hi = -lo;
-  for (const Eigen::Vector3f& v : scene.grid().positions_mm) {
-    lo = lo.cwiseMin(to_world(v));
-    hi = hi.cwiseMax(to_world(v));
-  }
-  centre = 0.5f * (lo + hi);
-  radius_mm = std::max(1.0f, 0.5f * (hi - lo).norm());
 }
 
 void ClothRenderer::set_breeze_uniforms(unsigned program, Scene& scene, const ClothStyle& style) {

@@ -11,6 +11,7 @@
 #include <string>
 #include <thread>
 
+#include "app/gui/renderer.hpp"
 #include "core/analysis/calibration.hpp"
 #include "core/io/measurements.hpp"
 #include "core/io/preset.hpp"
@@ -32,7 +33,7 @@ class CalibrationPanel {
   // The window, when open. `edited` are the explorer's parameters: "Apply" writes the fitted K
   // (as c at their Poisson ratio) and p into them and returns true, so that the explorer commits
   // them as it does a slider. `loaded` is the preset as loaded, whose constants are shown.
-  bool draw(Parameters& edited, const Preset& loaded);
+  bool draw(Parameters& edited, const Preset& loaded, Renderer& renderer);
 
  private:
   void load_data();

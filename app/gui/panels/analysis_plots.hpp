@@ -5,31 +5,30 @@
 
 #include <atomic>
 #include <filesystem>
-#include <functional>
 #include <memory>
 #include <string>
 #include <thread>
 #include <vector>
 
+#include "app/gui/document.hpp"
 #include "app/gui/plot_widget.hpp"
+#include "app/gui/renderer.hpp"
 #include "core/analysis/sweep.hpp"
 #include "core/io/preset.hpp"
 
 namespace foldlab::gui {
 
-// What a panel may ask of the explorer.
-struct PanelActions {
-  std::function<void(const std::string& key, double value)> set_input;  // as moving a slider
-  std::function<void(const std::filesystem::path& preset)> load_preset;
-};
-
 class SweepPanel {
  public:
   explicit SweepPanel(std::filesystem::path presets_dir);
-  void draw(const Parameters& current, const PanelActions& actions);
+  void draw(Document& document);
   // One click's worth: 0 Table 1, 1 Table 2, 2 Fig. 4 (loads the preset, sweeps, overlays).
-  void select_paper_case(int which, const PanelActions& actions);
+  void select_paper_case(int which, Document& document);
   static constexpr int kPaperCases = 3;
+
+  // The swept input's key and the paper's points over it (empty without an overlay).
+  const std::string& key() const { return key_; }
+  const std::vector<double>& overlay_x() const { return overlay_x_; }
 
  private:
   void recompute(const Parameters& current);
@@ -37,7 +36,7 @@ class SweepPanel {
   void load_overlay(const std::string& prefix, const std::string& label);
 
   std::filesystem::path presets_dir_;
-  int key_index_ = 3;  // h
+  std::string key_ = "h";
   double from_ = 500.0;
   double to_ = 3000.0;
   int steps_ = 200;
@@ -61,8 +60,10 @@ class RegimeMapPanel {
   RegimeMapPanel(const RegimeMapPanel&) = delete;
   RegimeMapPanel& operator=(const RegimeMapPanel&) = delete;
 
-  void draw(const Parameters& current, const PanelActions& actions);
+  void draw(Document& document, Renderer& renderer);
 
+  const std::string& x_key() const { return x_key_; }
+  const std::string& y_key() const { return y_key_; }
   // For tests and the docs' figure: the last completed map's size and time.
   double last_map_ms() const { return last_map_ms_; }
   // True from a (re)start until every row has been computed.
@@ -72,10 +73,10 @@ class RegimeMapPanel {
   struct Job;
   void restart(const Parameters& base);
   void stop();
-  void update_texture();
+  void update_image(Renderer& renderer);
 
-  int x_key_ = 3;  // h
-  int y_key_ = 2;  // w
+  std::string x_key_ = "h";
+  std::string y_key_ = "w";
   double x_from_ = 300.0, x_to_ = 3000.0;
   double y_from_ = 3e-7, y_to_ = 1e-5;
   int resolution_ = 256;
@@ -85,8 +86,8 @@ class RegimeMapPanel {
   std::vector<std::thread> workers_;
   Parameters job_base_;
   bool job_started_ = false;
-  unsigned texture_ = 0;
-  int texture_size_ = 0;
+  int image_ = -1;  // the renderer's image of the map
+  int image_size_ = 0;
   std::vector<std::uint32_t> pixels_;
   int rows_shown_ = -1;
   double last_map_ms_ = 0.0;

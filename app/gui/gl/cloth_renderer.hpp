@@ -8,33 +8,10 @@
 #include <Eigen/Core>
 
 #include "app/gui/camera.hpp"
-#include "app/gui/surface.hpp"
+#include "app/gui/renderer.hpp"
 #include "core/geometry/scene.hpp"
 
 namespace foldlab::gui {
-
-struct ClothStyle {
-  bool wireframe = false;
-  bool fold_lines = true;
-  bool ground = true;
-  float z_exaggeration = 1.0f;  // draws z (out of plane) this many times deeper; a view aid only
-  enum class Print { plain, checks, stripes } print = Print::plain;
-  float print_mm = 60.0f;  // size of a check or the width of a stripe on the flat cloth
-  bool breeze = false;     // foldlab::breeze_offset on top of the wrinkles
-  float breeze_mm = 60.0f;
-  float time_s = 0.0f;
-  Eigen::Vector3f front_colour{0.93f, 0.86f, 0.74f};  // the fabric's two faces
-  Eigen::Vector3f back_colour{0.72f, 0.78f, 0.92f};
-  Eigen::Vector3f positive_fold_colour{0.12f, 0.23f, 0.58f};
-  Eigen::Vector3f negative_fold_colour{0.84f, 0.15f, 0.16f};
-  Eigen::Vector3f background{0.16f, 0.17f, 0.20f};
-};
-
-struct RenderCounters {
-  std::uint64_t mesh_uploads = 0;
-  std::uint64_t fold_line_uploads = 0;
-  std::uint64_t frames = 0;
-};
 
 class ClothRenderer {
  public:
@@ -46,9 +23,6 @@ class ClothRenderer {
   // Draws the scene into the renderer's own framebuffer and returns its colour texture (GL name).
   // Leaves the framebuffer binding at 0 and the viewport as it found it.
   unsigned render(Scene& scene, const OrbitCamera& camera, FrameSize size, const ClothStyle& style);
-
-  // A sphere around the cloth (world coordinates) for framing the camera.
-  static void bounds(Scene& scene, Eigen::Vector3f& centre, float& radius_mm);
 
   const RenderCounters& counters() const { return counters_; }
   // The framebuffer render() drew into (GL name), for copying it to the screen.

@@ -1,4 +1,4 @@
-#include "app/gui/fast_fill.hpp"
+#include "app/gui/gl/fast_fill.hpp"
 
 #include <epoxy/gl.h>
 

@@ -1,0 +1,118 @@
+// The OpenGL 3.3 renderer: ImGui's OpenGL3 backend for the draw data, ClothRenderer for the 3D
+// view, fast_fill.hpp for opaque backgrounds and the view's copy, textures for images.
+#include <epoxy/gl.h>
+
+#include <algorithm>
+#include <memory>
+#include <vector>
+
+#include "app/gui/gl/cloth_renderer.hpp"
+#include "app/gui/gl/fast_fill.hpp"
+#include "app/gui/renderer.hpp"
+#include "backends/imgui_impl_opengl3.h"
+
+namespace foldlab::gui {
+namespace {
+
+class GlRenderer final : public Renderer {
+ public:
+  GlRenderer() { ImGui_ImplOpenGL3_Init("#version 330 core"); }
+  ~GlRenderer() override {
+    if (!textures_.empty()) {
+      glDeleteTextures(static_cast<GLsizei>(textures_.size()), textures_.data());
+    }
+    cloth_.reset();
+    ImGui_ImplOpenGL3_Shutdown();
+  }
+  GlRenderer(const GlRenderer&) = delete;
+  GlRenderer& operator=(const GlRenderer&) = delete;
+
+  void new_frame() override {
+    ImGui_ImplOpenGL3_NewFrame();
+    begin_fast_fill_frame();
+  }
+
+  void fill_window_background() override { fill_current_window_background(); }
+
+  void draw_cloth(ImDrawList* draw_list, ImVec2 min, Scene& scene, const OrbitCamera& camera,
+                  FrameSize size, const ClothStyle& style) override {
+    if (!cloth_) {
+      cloth_ = std::make_unique<ClothRenderer>();
+    }
+    cloth_->render(scene, camera, size, style);
+    add_framebuffer_blit(draw_list, cloth_->framebuffer(), size, min,
+                         ImVec2(min.x + static_cast<float>(size.width),
+                                min.y + static_cast<float>(size.height)));
+  }
+
+  const RenderCounters& counters() const override {
+    return cloth_ ? cloth_->counters() : no_counters_;
+  }
+
+  int create_image() override {
+    GLuint texture = 0;
+    glGenTextures(1, &texture);
+    textures_.push_back(texture);
+    sizes_.push_back({});
+    return static_cast<int>(textures_.size()) - 1;
+  }
+
+  void update_image(int image, int width, int height, const std::uint32_t* rgba) override {
+    const auto i = static_cast<std::size_t>(image);
+    glBindTexture(GL_TEXTURE_2D, textures_[i]);
+    if (sizes_[i].width != width || sizes_[i].height != height) {
+      glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, width, height, 0, GL_RGBA, GL_UNSIGNED_BYTE,
+                   nullptr);
+      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+      sizes_[i] = {width, height};
+    }
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, rgba);
+  }
+
+  ImTextureID texture(int image) const override {
+    return reinterpret_cast<ImTextureID>(
+        static_cast<std::intptr_t>(textures_[static_cast<std::size_t>(image)]));
+  }
+
+  void render_draw_data(FrameSize size) override {
+    glViewport(0, 0, size.width, size.height);
+    glClearColor(0.10f, 0.10f, 0.12f, 1.0f);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+  }
+
+  std::vector<std::uint8_t> read_pixels(FrameSize size) override {
+    const auto row_bytes = static_cast<std::size_t>(size.width) * 4;
+    std::vector<std::uint8_t> pixels(row_bytes * static_cast<std::size_t>(size.height));
+    glFinish();
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadPixels(0, 0, size.width, size.height, GL_RGBA, GL_UNSIGNED_BYTE, pixels.data());
+    // GL's first row is the bottom one; images start at the top.
+    std::vector<std::uint8_t> top_down(pixels.size());
+    for (int y = 0; y < size.height; ++y) {
+      std::copy_n(pixels.begin() + static_cast<std::ptrdiff_t>(row_bytes * (size.height - 1 - y)),
+                  row_bytes, top_down.begin() + static_cast<std::ptrdiff_t>(row_bytes * y));
+    }
+    // The picture is opaque whatever ImGui's blending left in the alpha channel.
+    for (std::size_t i = 3; i < top_down.size(); i += 4) {
+      top_down[i] = 255;
+    }
+    return top_down;
+  }
+
+ private:
+  std::unique_ptr<ClothRenderer> cloth_;
+  RenderCounters no_counters_;
+  std::vector<GLuint> textures_;
+  std::vector<FrameSize> sizes_;
+};
+
+}  // namespace
+
+std::unique_ptr<Renderer> make_gl_renderer() {
+  return std::make_unique<GlRenderer>();
+}
+
+}  // namespace foldlab::gui

@@ -1,0 +1,47 @@
+#include <cstdint>
+#include <vector>
+
+#include "app/gui/renderer.hpp"
+
+namespace foldlab::gui {
+
+void NullRenderer::draw_cloth(ImDrawList* draw_list, ImVec2 min, Scene& scene,
+                              const OrbitCamera& camera, FrameSize size, const ClothStyle& style) {
+  (void)draw_list;
+  (void)min;
+  (void)camera;
+  (void)size;
+  scene.normals();
+  if (scene.version(Stage::normals) != mesh_version_) {
+    ++counters_.mesh_uploads;
+    mesh_version_ = scene.version(Stage::normals);
+  }
+  if (style.fold_lines) {
+    scene.fold_lines();
+    if (scene.version(Stage::fold_lines) != fold_line_version_) {
+      ++counters_.fold_line_uploads;
+      fold_line_version_ = scene.version(Stage::fold_lines);
+    }
+  }
+  ++counters_.frames;
+}
+
+void NullRenderer::update_image(int image, int width, int height, const std::uint32_t* rgba) {
+  (void)image;
+  (void)width;
+  (void)height;
+  (void)rgba;
+  ++image_updates_;
+}
+
+ImTextureID NullRenderer::texture(int image) const {
+  // Any non-null id: ImGui only passes it through to a backend, and there is none.
+  return reinterpret_cast<ImTextureID>(static_cast<std::intptr_t>(image + 1));
+}
+
+std::vector<std::uint8_t> NullRenderer::read_pixels(FrameSize size) {
+  return std::vector<std::uint8_t>(
+      static_cast<std::size_t>(size.width) * static_cast<std::size_t>(size.height) * 4, 0);
+}
+
+}  // namespace foldlab::gui

@@ -1,0 +1,124 @@
+#include "app/gui/panels/analysis_panel.hpp"
+
+#include <cmath>
+#include <numbers>
+#include <string>
+#include <utility>
+
+#include <imgui.h>
+
+#include "app/gui/panels/widgets.hpp"
+#include "core/model/equations.hpp"
+
+namespace foldlab::gui {
+
+AnalysisPanel::AnalysisPanel(std::filesystem::path presets_dir, std::string initial_tab)
+    : initial_tab_(std::move(initial_tab)), sweep_(std::move(presets_dir)) {}
+
+void AnalysisPanel::show_paper_case(int which, Document& document) {
+  sweep_.select_paper_case(which, document);
+  initial_tab_ = "sweep";
+  tab_selected_ = false;
+}
+
+void AnalysisPanel::draw(Document& document, Renderer& renderer) {
+  place_window(0.65f, 0.56f, 0.35f, 0.44f);
+  if (!begin_panel("Analysis", renderer)) {
+    ImGui::End();
+    return;
+  }
+  if (ImGui::BeginTabBar("analysis tabs")) {
+    // The tab named at start is selected once, at the first frame.
+    auto flags_for = [this](const char* name) {
+      return !tab_selected_ && initial_tab_ == name ? ImGuiTabItemFlags_SetSelected
+                                                    : ImGuiTabItemFlags_None;
+    };
+    const ImGuiTabItemFlags equations_flags = flags_for("equations");
+    const ImGuiTabItemFlags sweep_flags = flags_for("sweep");
+    const ImGuiTabItemFlags map_flags = flags_for("map");
+    tab_selected_ = true;
+    if (ImGui::BeginTabItem("Equations", nullptr, equations_flags)) {
+      ImGui::BeginChild("equations");
+      equations_.draw(document);
+      ImGui::EndChild();
+      ImGui::EndTabItem();
+    }
+    if (ImGui::BeginTabItem("Sweep", nullptr, sweep_flags)) {
+      sweep_.draw(document);
+      ImGui::EndTabItem();
+    }
+    if (ImGui::BeginTabItem("Regime map", nullptr, map_flags)) {
+      regime_map_.draw(document, renderer);
+      ImGui::EndTabItem();
+    }
+    ImGui::EndTabBar();
+  }
+  ImGui::End();
+}
+
+void EquationsTab::draw(Document& document) {
+  const Solution& s = document.scene().solution();
+  const Parameters& p = document.scene().parameters();
+  const double K = stiffness_constant_K(p);
+  const double t = p.fabric.thickness_mm;
+  ImGui::TextWrapped("The model with today's numbers (mm, MPa, N/mm²).");
+  section("eq. 7: critical stress gives Q7");
+  ImGui::TextWrapped("s = K E t³ / (w h l²) = %.4g × %.4g × %.4g³ / (%.3g × %.4g × %.5g²)", K,
+                     p.fabric.youngs_modulus_MPa, t, p.fabric.weight_N_per_mm2, p.hanging.height_mm,
+                     s.span_mm);
+  ImGui::Text("  = %.5g", s.stress_ratio);
+  // A calibrated eq. 7 uses s^p (p = 1 is the paper's form).
+  const double exponent = p.model.stress_exponent_p;
+  const double s_used = exponent == 1.0 ? s.stress_ratio : std::pow(s.stress_ratio, exponent);
+  if (exponent != 1.0) {
+    ImGui::TextColored(kNoteText, "calibrated form: s^p = %.5g^%.3g = %.5g", s.stress_ratio,
+                       exponent, s_used);
+  }
+  if (s.Q7) {
+    const double q = *s.Q7;
+    ImGui::Text("(Q7 - 1)² = %s Q7 (Q7 + 1)  ->  Q7 = %.5f", exponent == 1.0 ? "s" : "s^p", q);
+    ImGui::TextColored(kDimText, "  check: %.6g = %.6g", (q - 1) * (q - 1), s_used * q * (q + 1));
+  } else {
+    ImGui::TextColored(kErrorText, "s >= 1: no root; at most one fold.");
+  }
+  if (s.a_mm.empty()) {
+    ImGui::Separator();
+    ImGui::TextWrapped("%s", describe(s, p).c_str());
+    return;
+  }
+  const double a0 = s.a_mm.front();
+  const double an = s.a_mm.back();
+  section("eq. 8: the upper edge keeps its length L");
+  const double A = std::hypot(an, s.z_max_mm);
+  ImGui::Text("A = sqrt(a_n² + z_max²) = sqrt(%.2f² + %.2f²) = %.2f mm", an, s.z_max_mm, A);
+  ImGui::Text("L' = (2l/pi) sqrt(1+k²) E(k²/(1+k²)), k = pi A/l = %.4f",
+              std::numbers::pi * A / s.span_mm);
+  ImGui::Text("   = %.3f mm  vs  L = %.1f mm  (residual %.2e)",
+              upper_edge_length_closed_form(A, s.span_mm), p.hanging.length_mm, s.residual_length);
+  section("eq. 9: the centre fibre keeps its length h");
+  ImGui::Text("h' = sum of sqrt((a_i-1 - a_i)² + (2 z_max)²), i = 1..%d", s.n);
+  ImGui::Text("   = %.3f mm  vs  h = %.1f mm  (residual %.2e)",
+              fibre_length(a0, s.Q, s.n, s.z_max_mm), p.hanging.height_mm, s.residual_height);
+  section("eq. 10: the number of wrinkles");
+  if (s.Q7) {
+    const double argument = std::log(a0 / an) / std::log(*s.Q7);
+    ImGui::TextWrapped("n = Int[log(a_0/a_n) / log Q7] = Int[log(%.1f/%.2f) / log %.4f]", a0, an,
+                       *s.Q7);
+    ImGui::Text("  = Int[%.3f] = %d   (Int = %s)", argument, s.n,
+                std::string(to_string(p.model.int_rounding)).c_str());
+    if (shown_n_ != s.n) {
+      previous_n_ = shown_n_;
+      shown_n_ = s.n;
+    }
+    if (previous_n_ >= 0 && previous_n_ != s.n) {
+      ImGui::TextColored(
+          kOkText, "n changed from %d to %d: log(a_0/a_n)/log Q7 crossed %s.", previous_n_, s.n,
+          p.model.int_rounding == IntRounding::nearest ? "a half-integer" : "an integer");
+    }
+  } else {
+    ImGui::Text("n = 1 (no Q7: stiff)");
+  }
+  ImGui::Text("Q = (a_0/a_n)^(1/n) = %.4f", s.Q);
+}
+
+}  // namespace foldlab::gui

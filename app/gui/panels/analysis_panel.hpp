@@ -1,0 +1,43 @@
+// The Analysis panel: three tabs, of which only the selected one draws (so a hidden sweep or map
+// computes nothing): the equations with today's numbers, the sweep plots and the regime map.
+#pragma once
+
+#include <filesystem>
+#include <string>
+
+#include "app/gui/document.hpp"
+#include "app/gui/panels/analysis_plots.hpp"
+#include "app/gui/renderer.hpp"
+
+namespace foldlab::gui {
+
+// Eqs. 7-10 with the current numbers, and why n last changed.
+class EquationsTab {
+ public:
+  void draw(Document& document);
+
+ private:
+  int previous_n_ = -1;
+  int shown_n_ = -1;
+};
+
+class AnalysisPanel {
+ public:
+  // `initial_tab`: "equations", "sweep" or "map", selected at the first frame.
+  AnalysisPanel(std::filesystem::path presets_dir, std::string initial_tab);
+  void draw(Document& document, Renderer& renderer);
+  // Selects the Sweep tab with one of the paper's cases (0 Table 1, 1 Table 2, 2 Fig. 4).
+  void show_paper_case(int which, Document& document);
+
+  const SweepPanel& sweep() const { return sweep_; }
+  const RegimeMapPanel& regime_map() const { return regime_map_; }
+
+ private:
+  std::string initial_tab_;
+  bool tab_selected_ = false;
+  EquationsTab equations_;
+  SweepPanel sweep_;
+  RegimeMapPanel regime_map_;
+};
+
+}  // namespace foldlab::gui

@@ -1,0 +1,40 @@
+// The "Cloth (3D)" panel: the view's settings (wireframe, fold lines, ground, z exaggeration,
+// print, breeze) and the orbit camera, with the picture drawn by the renderer. Until the user
+// moves the camera it follows the cloth, so a slider never drags the cloth out of view.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include "app/gui/camera.hpp"
+#include "app/gui/document.hpp"
+#include "app/gui/renderer.hpp"
+
+namespace foldlab::gui {
+
+class ClothViewPanel {
+ public:
+  void draw(Document& document, Renderer& renderer);
+
+  ClothStyle& style() { return style_; }
+  const ClothStyle& style() const { return style_; }
+  // A view setting by name (print=checks, breeze=1, breeze_mm=80, time=1.5, z=8, wireframe=1,
+  // fold_lines=0, ground=0): for scripted pictures. Returns the problem, if any.
+  std::optional<std::string> set_view(std::string_view key, std::string_view value);
+
+ private:
+  void settings_row();
+  void follow_the_cloth(Scene& scene, bool reset);
+
+  ClothStyle style_;
+  OrbitCamera camera_;
+  bool camera_framed_ = false;
+  bool camera_user_moved_ = false;
+  std::uint64_t camera_grid_version_ = 0;
+  std::uint64_t camera_loads_ = 0;  // the document's preset loads the camera was framed for
+  bool breeze_playing_ = true;
+};
+
+}  // namespace foldlab::gui

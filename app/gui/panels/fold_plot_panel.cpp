@@ -1,0 +1,95 @@
+#include "app/gui/panels/fold_plot_panel.hpp"
+
+#include <cmath>
+#include <numbers>
+#include <optional>
+
+#include <imgui.h>
+
+#include "app/gui/panels/widgets.hpp"
+#include "core/geometry/geometry.hpp"
+
+namespace foldlab::gui {
+namespace {
+
+constexpr ImU32 kPositiveFold = IM_COL32(31, 58, 147, 255);
+constexpr ImU32 kNegativeFold = IM_COL32(214, 39, 40, 255);
+
+}  // namespace
+
+void FoldPlotPanel::draw(Document& document, Renderer& renderer) {
+  place_window(0.30f, 0.0f, 0.35f, 0.56f);
+  if (!begin_panel("Fold lines (2D)", renderer)) {
+    ImGui::End();
+    return;  // hidden: the fold lines are not even computed
+  }
+  Scene& scene = document.scene();
+  const FoldLines& lines = scene.fold_lines();
+  const Solution& s = scene.solution();
+  if (ImGui::SmallButton("autoscale")) {
+    autoscale_ = true;
+  }
+  ImGui::SameLine();
+  ImGui::TextDisabled("wheel: zoom, drag: pan, double-click: autoscale");
+  if (lines.stride > 1) {
+    ImGui::TextColored(kDimText, "every %d-th of %d lines drawn", lines.stride, s.n + 1);
+  }
+  // The plot keeps pointers into these until end(): rebuild them only when the lines change.
+  if (lines_version_ != scene.version(Stage::fold_lines)) {
+    lines_version_ = scene.version(Stage::fold_lines);
+    xs_.assign(lines.lines.size(), {});
+    ys_.assign(lines.lines.size(), {});
+    for (std::size_t k = 0; k < lines.lines.size(); ++k) {
+      for (const Eigen::Vector3d& p : lines.lines[k].points_mm) {
+        xs_[k].push_back(p.x());
+        ys_[k].push_back(p.y());
+      }
+    }
+  }
+  if (plot_.begin("fold lines", ImVec2(0.0f, 0.0f), PlotAxis{"x (mm)", false, false},
+                       PlotAxis{"y (mm, down)", true, false})) {
+    if (autoscale_) {
+      plot_.request_autoscale();
+      autoscale_ = false;
+    }
+    for (std::size_t k = 0; k < lines.lines.size(); ++k) {
+      const bool negative = lines.lines[k].sign < 0;
+      plot_.line(negative ? "negative fold" : "positive fold", xs_[k], ys_[k],
+                      negative ? kNegativeFold : kPositiveFold, 1.6f);
+    }
+    if (lines.lines.empty()) {
+      // No folds (no slack, short cloth): show the cloth itself, y = (A + h) cos(pi x / l).
+      if (outline_version_ != scene.version(Stage::solution)) {
+        outline_version_ = scene.version(Stage::solution);
+        outline_xs_.clear();
+        outline_ys_.clear();
+        const double depth = lowest_point_mm(s, scene.parameters().hanging.height_mm);
+        for (int k = 0; k <= 100; ++k) {
+          const double x = s.span_mm * (k / 100.0 - 0.5);
+          outline_xs_.push_back(x);
+          outline_ys_.push_back(depth * std::cos(std::numbers::pi * x / s.span_mm));
+        }
+      }
+      plot_.line("lower edge of the flat cloth", outline_xs_, outline_ys_,
+                      IM_COL32(170, 170, 180, 255), 1.2f);
+    }
+    std::vector<double> supports_x;
+    std::vector<double> supports_y;
+    for (const Eigen::Vector3d& support : support_points(s.span_mm, scene.parameters().shape)) {
+      supports_x.push_back(support.x());
+      supports_y.push_back(support.y());
+    }
+    plot_.markers("supports", supports_x, supports_y, IM_COL32(240, 200, 60, 255),
+                       MarkerShape::Triangle, 6.0f);
+    const std::optional<PlotHit> hit = plot_.end();
+    if (hit && hit->series < static_cast<int>(lines.lines.size())) {
+      const FoldLine& line = lines.lines[static_cast<std::size_t>(hit->series)];
+      const Eigen::Vector3d& p = line.points_mm[static_cast<std::size_t>(hit->index)];
+      ImGui::SetTooltip("fold line %d (%s)\nx = %.1f mm\ny = %.1f mm\nz = %+.1f mm", line.index,
+                        line.sign < 0 ? "negative" : "positive", p.x(), p.y(), p.z());
+    }
+  }
+  ImGui::End();
+}
+
+}  // namespace foldlab::gui

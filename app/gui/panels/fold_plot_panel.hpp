@@ -1,0 +1,30 @@
+// The "Fold lines (2D)" panel: the fold lines in the x-y plane coloured by sign, the supports, and
+// the flat cloth's lower edge when there are no folds. Hidden, it computes nothing.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "app/gui/document.hpp"
+#include "app/gui/plot_widget.hpp"
+#include "app/gui/renderer.hpp"
+
+namespace foldlab::gui {
+
+class FoldPlotPanel {
+ public:
+  void draw(Document& document, Renderer& renderer);
+
+ private:
+  Plot plot_;
+  bool autoscale_ = false;
+  // The plot keeps pointers into these until end(): rebuilt only when the lines change.
+  std::uint64_t lines_version_ = ~std::uint64_t{0};
+  std::vector<std::vector<double>> xs_;
+  std::vector<std::vector<double>> ys_;
+  std::uint64_t outline_version_ = ~std::uint64_t{0};
+  std::vector<double> outline_xs_;
+  std::vector<double> outline_ys_;
+};
+
+}  // namespace foldlab::gui

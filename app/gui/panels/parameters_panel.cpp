@@ -1,0 +1,145 @@
+#include "app/gui/panels/parameters_panel.hpp"
+
+#include <algorithm>
+#include <string>
+#include <vector>
+
+#include <imgui.h>
+
+#include "app/gui/panels/widgets.hpp"
+#include "core/analysis/sweep.hpp"
+#include "core/model/settings.hpp"
+
+namespace foldlab::gui {
+namespace {
+
+constexpr double kGramsPerSquareMetrePerNPerMm2 = 1.0 / 9.81e-9;  // w in N/mm² -> g/m²
+
+// The model settings a user may change here; the rest stay with presets and --set.
+constexpr const char* kChoiceKeys[] = {"method", "span_rule", "int_rounding"};
+
+std::string slider_label(const InputSpec& spec) {
+  return std::string(spec.key) + " (" + std::string(spec.name) + ")";
+}
+
+// The issues of one input. K is derived: validation names the constant c it sets.
+void show_issues(const Document& document, const InputSpec& spec) {
+  for (const ValidationIssue& issue : document.issues()) {
+    if (issue.field == spec.field ||
+        (spec.kind == InputKind::stiffness_K && issue.field == "c")) {
+      ImGui::PushStyleColor(ImGuiCol_Text, kErrorText);
+      ImGui::TextWrapped("%s", issue.message.c_str());
+      ImGui::PopStyleColor();
+    }
+  }
+}
+
+// A slider for one row of the input table: log scale where its row says so, typed values
+// (Ctrl+click) not clamped, so that validation rather than the widget decides.
+void input_slider(Document& document, const InputSpec& spec, float width) {
+  double value = spec.value(document.edited()).value_or(0.0);
+  const double lo = spec.typical_lo;
+  const double hi = spec.typical_hi;
+  const std::string format =
+      std::string(spec.format) + (spec.unit.empty() ? "" : " " + std::string(spec.unit));
+  const ImGuiSliderFlags flags = spec.scale == InputScale::logarithmic
+                                     ? ImGuiSliderFlags_Logarithmic
+                                     : ImGuiSliderFlags_None;
+  ImGui::SetNextItemWidth(width);
+  if (ImGui::SliderScalar(slider_label(spec).c_str(), ImGuiDataType_Double, &value, &lo, &hi,
+                          format.c_str(), flags)) {
+    set_numeric_setting(document.edited(), spec.key, value);
+    document.commit();
+  }
+  help_marker(std::string(spec.help).c_str());
+  show_issues(document, spec);
+}
+
+void choice_combo(Document& document, const InputSpec& spec) {
+  const std::string current(spec.choice(document.edited()));
+  ImGui::SetNextItemWidth(120.0f);
+  if (ImGui::BeginCombo(std::string(spec.name).c_str(), current.c_str())) {
+    std::string_view rest = spec.choices;
+    while (!rest.empty()) {
+      const std::size_t comma = rest.find(',');
+      const std::string option(rest.substr(0, comma));
+      rest = comma == std::string_view::npos ? std::string_view() : rest.substr(comma + 1);
+      while (!rest.empty() && rest.front() == ' ') {
+        rest.remove_prefix(1);
+      }
+      if (ImGui::Selectable(option.c_str(), option == current) && option != current) {
+        spec.set_choice(document.edited(), option);
+        document.commit();
+      }
+    }
+    ImGui::EndCombo();
+  }
+  help_marker(std::string(spec.help).c_str());
+}
+
+}  // namespace
+
+void ParametersPanel::draw(Document& document, Renderer& renderer) {
+  place_window(0.0f, 0.0f, 0.30f, 0.62f);
+  const bool unsaved = document.unsaved();
+  const std::string title = std::string("Parameters") + (unsaved ? " *" : "") + "###parameters";
+  if (!begin_panel(title.c_str(), renderer)) {
+    ImGui::End();
+    return;
+  }
+  ImGui::TextColored(kDimText, "%s%s", document.loaded().name.c_str(),
+                     unsaved ? " (unsaved changes)" : "");
+  if (ImGui::Button("Reset to preset")) {
+    document.reset_to_loaded();
+  }
+  ImGui::SameLine();
+  ImGui::TextDisabled("Ctrl+click a slider to type a value");
+  ImGui::Separator();
+
+  // Sliders leave room on their right for the longest label and its (?) marker.
+  std::vector<const InputSpec*> sliders;
+  float label_width = 0.0f;
+  for (const std::string& key : sweepable_keys()) {
+    const InputSpec* spec = find_input(key);
+    sliders.push_back(spec);
+    label_width = std::max(label_width, ImGui::CalcTextSize(slider_label(*spec).c_str()).x);
+  }
+  const ImGuiStyle& style = ImGui::GetStyle();
+  const float width = std::max(80.0f, ImGui::GetContentRegionAvail().x - label_width -
+                                           ImGui::CalcTextSize(" (?)").x -
+                                           2.0f * style.ItemInnerSpacing.x - style.ItemSpacing.x);
+  for (const InputSpec* spec : sliders) {
+    input_slider(document, *spec, width);
+    if (spec->key == "w") {
+      ImGui::TextColored(kDimText, "    w = %.0f g/m²",
+                         document.edited().fabric.weight_N_per_mm2 *
+                             kGramsPerSquareMetrePerNPerMm2);
+    }
+  }
+  ImGui::TextColored(kDimText, "    c = %.4g (load-condition constant)",
+                     document.edited().model.load_constant_c);
+
+  ImGui::Separator();
+  for (const char* key : kChoiceKeys) {
+    choice_combo(document, *find_input(key));
+  }
+  Scene& scene = document.scene();
+  int grid = scene.grid_nx();
+  ImGui::SetNextItemWidth(width);
+  if (ImGui::SliderInt("grid", &grid, 8, 512, "%d per side", ImGuiSliderFlags_AlwaysClamp)) {
+    scene.set_grid_resolution(grid, grid);
+    document.session_dirty = true;
+  }
+  help_marker(
+      "Resolution of the 3D cloth mesh (vertices per side). Changing it does not re-solve.");
+  if (!document.issues().empty()) {
+    ImGui::Separator();
+    ImGui::PushStyleColor(ImGuiCol_Text, kErrorText);
+    ImGui::TextWrapped("%zu input(s) refused: the views show the last valid state.",
+                       document.issues().size());
+    ImGui::PopStyleColor();
+  }
+  ImGui::End();
+}
+
+}  // namespace foldlab::gui

@@ -1,0 +1,142 @@
+#include "app/gui/panels/presets_panel.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <utility>
+
+#include <imgui.h>
+
+#include "app/common/presets_dir.hpp"
+#include "app/gui/panels/widgets.hpp"
+
+namespace foldlab::gui {
+
+std::string preset_slug(const std::string& name) {
+  std::string out;
+  for (char c : name) {
+    if (std::isalnum(static_cast<unsigned char>(c))) {
+      out += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    } else if (!out.empty() && out.back() != '-') {
+      out += '-';
+    }
+  }
+  while (!out.empty() && out.back() == '-') {
+    out.pop_back();
+  }
+  return out;
+}
+
+PresetsPanel::PresetsPanel(std::filesystem::path presets_dir,
+                           std::filesystem::path user_presets_dir)
+    : presets_dir_(std::move(presets_dir)), user_presets_dir_(std::move(user_presets_dir)) {
+  refresh();
+}
+
+void PresetsPanel::refresh() {
+  entries_.clear();
+  auto add_folder = [this](const std::filesystem::path& dir, bool user) {
+    if (dir.empty()) {
+      return;
+    }
+    for (const auto& file : app::preset_files(dir)) {
+      Entry entry{file.stem().string(), file, user};
+      try {
+        entry.name = load_preset(file).name;
+      } catch (const PresetError&) {
+        entry.name = file.filename().string() + " (unreadable)";
+      }
+      entries_.push_back(std::move(entry));
+    }
+  };
+  add_folder(presets_dir_, false);
+  add_folder(user_presets_dir_, true);
+}
+
+void PresetsPanel::save_as(Document& document, const std::string& name, bool overwrite) {
+  const std::string file = preset_slug(name);
+  if (file.empty()) {
+    document.notify("Give the preset a name with at least one letter or digit.", true);
+    return;
+  }
+  const std::filesystem::path path = user_presets_dir_ / (file + ".json");
+  if (!overwrite && std::filesystem::exists(path)) {
+    pending_overwrite_ = name;
+    ImGui::OpenPopup("Overwrite preset?");
+    return;
+  }
+  const Preset& loaded = document.loaded();
+  Preset preset = loaded;
+  preset.name = name;
+  preset.parameters = document.scene().parameters();
+  if (loaded.name != name) {
+    preset.description = "Saved from FoldLab, based on \"" + loaded.name + "\".";
+    preset.published = {};  // published results belong to the paper's case, not to an edit
+  }
+  try {
+    std::filesystem::create_directories(user_presets_dir_);
+    save_preset(preset, path);
+    document.adopt(preset, path.string());
+    document.notify("Saved " + path.string(), false);
+    refresh();
+  } catch (const std::exception& e) {
+    document.notify(std::string("Not saved: ") + e.what(), true);
+  }
+}
+
+void PresetsPanel::draw(Document& document, Renderer& renderer,
+                        const std::function<void()>& footer) {
+  place_window(0.0f, 0.62f, 0.30f, 0.38f);
+  if (!begin_panel("Presets", renderer)) {
+    ImGui::End();
+    return;
+  }
+  const float list_height =
+      std::max(60.0f, ImGui::GetContentRegionAvail().y - 4.4f * ImGui::GetFrameHeightWithSpacing());
+  if (ImGui::BeginChild("preset list", ImVec2(0.0f, list_height), true)) {
+    bool user_header = false;
+    for (const Entry& entry : entries_) {
+      if (entry.user && !user_header) {
+        ImGui::Separator();
+        ImGui::TextDisabled("your presets (%s)", user_presets_dir_.string().c_str());
+        user_header = true;
+      }
+      const bool current = entry.path.string() == document.loaded_path();
+      if (ImGui::Selectable(entry.name.c_str(), current)) {
+        document.load_preset_file(entry.path);
+      }
+      if (ImGui::IsItemHovered()) {
+        ImGui::SetTooltip("%s", entry.path.string().c_str());
+      }
+    }
+  }
+  ImGui::EndChild();
+  ImGui::SetNextItemWidth(-ImGui::CalcTextSize("Save as...").x -
+                          2.0f * ImGui::GetStyle().ItemSpacing.x - 8.0f);
+  ImGui::InputTextWithHint("##save name", "name of the new preset", save_name_, sizeof save_name_);
+  ImGui::SameLine();
+  if (ImGui::Button("Save as...")) {
+    save_as(document, save_name_, false);
+  }
+  if (ImGui::BeginPopupModal("Overwrite preset?", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
+    ImGui::Text("A preset named \"%s\" exists. Replace it?", pending_overwrite_.c_str());
+    if (ImGui::Button("Replace")) {
+      save_as(document, pending_overwrite_, true);
+      ImGui::CloseCurrentPopup();
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("Cancel")) {
+      document.notify("Not saved.", false);
+      ImGui::CloseCurrentPopup();
+    }
+    ImGui::EndPopup();
+  }
+  if (!document.message().empty()) {
+    ImGui::PushStyleColor(ImGuiCol_Text, document.message_is_error() ? kErrorText : kOkText);
+    ImGui::TextWrapped("%s", document.message().c_str());
+    ImGui::PopStyleColor();
+  }
+  footer();
+  ImGui::End();
+}
+
+}  // namespace foldlab::gui

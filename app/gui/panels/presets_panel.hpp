@@ -1,0 +1,44 @@
+// The Presets panel: the shipped and the user's presets (a click loads one), "Save as..." with an
+// overwrite question, and the document's status line. What else sits in the panel (the Export
+// section, the calibration window's button) the explorer draws through `footer`.
+#pragma once
+
+#include <filesystem>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "app/gui/document.hpp"
+#include "app/gui/renderer.hpp"
+
+namespace foldlab::gui {
+
+class PresetsPanel {
+ public:
+  PresetsPanel(std::filesystem::path presets_dir, std::filesystem::path user_presets_dir);
+  void draw(Document& document, Renderer& renderer, const std::function<void()>& footer);
+  // Saves the current valid parameters as a user preset named `name` (the file name is its slug);
+  // asks before replacing a file unless `overwrite`.
+  void save_as(Document& document, const std::string& name, bool overwrite);
+
+  struct Entry {
+    std::string name;
+    std::filesystem::path path;
+    bool user = false;
+  };
+  const std::vector<Entry>& entries() const { return entries_; }
+
+ private:
+  void refresh();
+
+  std::filesystem::path presets_dir_;
+  std::filesystem::path user_presets_dir_;
+  std::vector<Entry> entries_;
+  char save_name_[128] = {};
+  std::string pending_overwrite_;  // name waiting for the user's "overwrite?" answer
+};
+
+// A file name from a preset name: lower-case letters, digits and dashes.
+std::string preset_slug(const std::string& name);
+
+}  // namespace foldlab::gui

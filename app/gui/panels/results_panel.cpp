@@ -1,0 +1,86 @@
+#include "app/gui/panels/results_panel.hpp"
+
+#include <algorithm>
+#include <string>
+
+#include <imgui.h>
+
+#include "app/gui/panels/widgets.hpp"
+#include "core/model/equations.hpp"
+#include "core/model/text_format.hpp"
+
+namespace foldlab::gui {
+
+void ResultsPanel::draw(Document& document, Renderer& renderer) {
+  place_window(0.30f, 0.56f, 0.35f, 0.44f);
+  if (!begin_panel("Results", renderer)) {
+    ImGui::End();
+    return;
+  }
+  Scene& scene = document.scene();
+  const Solution& s = scene.solution();
+  const StageStats& timing = scene.stats(Stage::solution);
+  ImGui::Text("Regime: %s", std::string(to_string(s.regime)).c_str());
+  if (const std::string message = describe(s, scene.parameters()); !message.empty()) {
+    ImGui::PushStyleColor(ImGuiCol_Text, s.regime == Regime::wrinkled ? kDimText : kNoteText);
+    ImGui::TextWrapped("%s", message.c_str());
+    ImGui::PopStyleColor();
+  }
+  if (ImGui::BeginTable("results", 3, ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit)) {
+    auto row = [](const char* name, const char* symbol, const std::string& value) {
+      ImGui::TableNextRow();
+      ImGui::TableSetColumnIndex(0);
+      ImGui::TextUnformatted(name);
+      ImGui::TableSetColumnIndex(1);
+      ImGui::TextUnformatted(symbol);
+      ImGui::TableSetColumnIndex(2);
+      ImGui::TextUnformatted(value.c_str());
+    };
+    auto fmt = [](const char* format, double v) { return detail::printf_string(format, v); };
+    row("number of wrinkles", "n", fmt("%.0f", s.n));
+    row("amplitude ratio", "Q", fmt("%.4f", s.Q));
+    row("root of eq. 7", "Q7", s.Q7 ? fmt("%.4f", *s.Q7) : std::string("none (s >= 1)"));
+    row("stress ratio", "s", fmt("%.4g", s.stress_ratio));
+    row("out-of-plane depth", "z_max", fmt("%.2f mm", s.z_max_mm));
+    row("span", "l", fmt("%.1f mm", s.span_mm));
+    row("sag of the upper edge", "A", fmt("%.2f mm", s.sag_amplitude_mm));
+    row("iterations", "", fmt("%.0f", s.iterations));
+    row("residual eq. 8", "L'/L-1", fmt("%.2e", s.residual_length));
+    row("residual eq. 9", "fibre/h-1", fmt("%.2e", s.residual_height));
+    row("solve time", "", fmt("%.1f µs", timing.last_ms * 1000.0));
+    ImGui::EndTable();
+  }
+  if (!s.a_mm.empty() &&
+      ImGui::CollapsingHeader("fold amplitudes a_i", ImGuiTreeNodeFlags_DefaultOpen)) {
+    if (ImGui::BeginTable(
+            "amplitudes", 3,
+            ImGuiTableFlags_RowBg | ImGuiTableFlags_ScrollY | ImGuiTableFlags_BordersInnerV,
+            ImVec2(0.0f, std::max(80.0f, ImGui::GetContentRegionAvail().y)))) {
+      ImGui::TableSetupScrollFreeze(0, 1);
+      ImGui::TableSetupColumn("i");
+      ImGui::TableSetupColumn("a_i (mm)");
+      ImGui::TableSetupColumn("fold");
+      ImGui::TableHeadersRow();
+      ImGuiListClipper clipper;
+      clipper.Begin(static_cast<int>(s.a_mm.size()));
+      while (clipper.Step()) {
+        for (int i = clipper.DisplayStart; i < clipper.DisplayEnd; ++i) {
+          ImGui::TableNextRow();
+          ImGui::TableSetColumnIndex(0);
+          ImGui::Text("%d%s", i, i == 0 ? " (lower)" : (i == s.n ? " (upper edge)" : ""));
+          ImGui::TableSetColumnIndex(1);
+          ImGui::Text("%.2f", s.a_mm[static_cast<std::size_t>(i)]);
+          ImGui::TableSetColumnIndex(2);
+          const bool negative = fold_sign(i) < 0;
+          ImGui::TextColored(
+              negative ? ImVec4(0.95f, 0.35f, 0.35f, 1.0f) : ImVec4(0.45f, 0.6f, 1.0f, 1.0f),
+              negative ? "negative" : "positive");
+        }
+      }
+      ImGui::EndTable();
+    }
+  }
+  ImGui::End();
+}
+
+}  // namespace foldlab::gui

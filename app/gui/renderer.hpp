@@ -1,0 +1,105 @@
+// The renderer layer: the only place that talks to the GPU. Panels and the frame loop ask it for
+// what they need (the 3D view of the cloth, an image for ImGui::Image, opaque window backgrounds,
+// the frame's pixels) and never call GL themselves. GlRenderer (app/gui/gl/) draws with OpenGL
+// 3.3; NullRenderer draws nothing, so that the explorer runs in a test process with no context.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include <Eigen/Core>
+#include <imgui.h>
+
+#include "app/gui/camera.hpp"
+#include "core/geometry/scene.hpp"
+
+namespace foldlab::gui {
+
+struct FrameSize {
+  int width = 0;
+  int height = 0;
+};
+
+struct ClothStyle {
+  bool wireframe = false;
+  bool fold_lines = true;
+  bool ground = true;
+  float z_exaggeration = 1.0f;  // draws z (out of plane) this many times deeper; a view aid only
+  enum class Print { plain, checks, stripes } print = Print::plain;
+  float print_mm = 60.0f;  // size of a check or the width of a stripe on the flat cloth
+  bool breeze = false;     // foldlab::breeze_offset on top of the wrinkles
+  float breeze_mm = 60.0f;
+  float time_s = 0.0f;
+  Eigen::Vector3f front_colour{0.93f, 0.86f, 0.74f};  // the fabric's two faces
+  Eigen::Vector3f back_colour{0.72f, 0.78f, 0.92f};
+  Eigen::Vector3f positive_fold_colour{0.12f, 0.23f, 0.58f};
+  Eigen::Vector3f negative_fold_colour{0.84f, 0.15f, 0.16f};
+  Eigen::Vector3f background{0.16f, 0.17f, 0.20f};
+};
+
+// What reached the GPU: uploads happen only when the scene's stage versions change.
+struct RenderCounters {
+  std::uint64_t mesh_uploads = 0;
+  std::uint64_t fold_line_uploads = 0;
+  std::uint64_t frames = 0;
+};
+
+class Renderer {
+ public:
+  virtual ~Renderer() = default;
+
+  // Once per frame, before ImGui::NewFrame.
+  virtual void new_frame() = 0;
+  // Fills the current window's content area with the style's (opaque) window background, behind
+  // everything the window draws. The style's own WindowBg is transparent.
+  virtual void fill_window_background() = 0;
+  // Draws the cloth as a `size` picture into [min, min + size) of `draw_list`, bringing the
+  // scene's stages it needs up to date (lazily) and uploading only what changed.
+  virtual void draw_cloth(ImDrawList* draw_list, ImVec2 min, Scene& scene,
+                          const OrbitCamera& camera, FrameSize size, const ClothStyle& style) = 0;
+  virtual const RenderCounters& counters() const = 0;
+
+  // An RGBA image for ImGui::Image, kept by the renderer until it is destroyed. The first row of
+  // `rgba` is the image's first (GL: bottom) row.
+  virtual int create_image() = 0;
+  virtual void update_image(int image, int width, int height, const std::uint32_t* rgba) = 0;
+  virtual ImTextureID texture(int image) const = 0;
+
+  // Draws ImGui's draw data onto the frame's framebuffer (bound by the surface), cleared first.
+  virtual void render_draw_data(FrameSize size) = 0;
+  // The frame's pixels, top row first, opaque: for screenshots.
+  virtual std::vector<std::uint8_t> read_pixels(FrameSize size) = 0;
+};
+
+// Draws nothing and reads nothing, but pulls the scene's stages as the GL renderer does, so that
+// what a frame computes is the same with and without a GPU. Images are never sampled.
+class NullRenderer final : public Renderer {
+ public:
+  void new_frame() override {}
+  void fill_window_background() override {}
+  void draw_cloth(ImDrawList* draw_list, ImVec2 min, Scene& scene, const OrbitCamera& camera,
+                  FrameSize size, const ClothStyle& style) override;
+  const RenderCounters& counters() const override { return counters_; }
+  int create_image() override { return image_count_++; }
+  void update_image(int image, int width, int height, const std::uint32_t* rgba) override;
+  ImTextureID texture(int image) const override;
+  void render_draw_data(FrameSize) override {}
+  std::vector<std::uint8_t> read_pixels(FrameSize size) override;
+
+  // How many times update_image sent pixels (the GL renderer would upload each).
+  std::uint64_t image_updates() const { return image_updates_; }
+
+ private:
+  RenderCounters counters_;
+  std::uint64_t mesh_version_ = ~std::uint64_t{0};
+  std::uint64_t fold_line_version_ = ~std::uint64_t{0};
+  int image_count_ = 0;
+  std::uint64_t image_updates_ = 0;
+};
+
+// The GL renderer; needs a current GL 3.3 context and an ImGui context (it initialises ImGui's
+// OpenGL3 backend and shuts it down when destroyed).
+std::unique_ptr<Renderer> make_gl_renderer();
+
+}  // namespace foldlab::gui
