@@ -4,6 +4,8 @@
 #include <regex>
 
 #include "app/gui/gui_app.hpp"
+#include "core/analysis/sweep.hpp"
+#include "core/model/text_format.hpp"
 
 namespace foldlab::gui {
 using app::guarded;
@@ -53,7 +55,9 @@ app::Command add_gui_command(CLI::App& app) {
   command->add_option("--screenshot", options->run.screenshot_path,
                       "with --frames: write the last frame as PNG");
   command->add_option("--animate", options->run.animate_key,
-                      "move this input every frame as a dragged slider would: h, w, E, t, d, L");
+                      "move this input every frame as a dragged slider would, over the slider's "
+                      "range: " +
+                          detail::join_comma(sweepable_keys()));
   command->add_flag("--report", options->run.report,
                     "print frame times (mean, 95th percentile) and pipeline counters as JSON");
   command->add_flag("--fresh", options->run.fresh,

@@ -58,9 +58,7 @@ class Explorer {
 
   void save_session_now();
   // A PNG the user asked for with the Export buttons, taken by the frame loop after drawing.
-  std::optional<std::string> take_screenshot_request() {
-    return export_.take_screenshot_request();
-  }
+  std::optional<std::string> take_screenshot_request() { return export_.take_screenshot_request(); }
   // Shows a line in the Presets panel (the outcome of an export done by the frame loop).
   void notify(const std::string& message, bool is_error) { document_.notify(message, is_error); }
   // True while background work (the regime map) is still filling in what the window shows.

@@ -8,8 +8,8 @@
 #include <memory>
 #include <vector>
 
-#include <Eigen/Core>
 #include <imgui.h>
+#include <Eigen/Core>
 
 #include "app/gui/camera.hpp"
 #include "core/geometry/scene.hpp"

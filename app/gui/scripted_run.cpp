@@ -38,8 +38,8 @@ AnimatedInput::AnimatedInput(const std::string& key, const Parameters& base) : k
   std::optional<double> first;
   double last = 0.0;
   for (int i = 0; i <= kProbes; ++i) {
-    const double v = along(spec.typical_lo, spec.typical_hi, logarithmic_,
-                           static_cast<double>(i) / kProbes);
+    const double v =
+        along(spec.typical_lo, spec.typical_hi, logarithmic_, static_cast<double>(i) / kProbes);
     Parameters p = base;
     if (set_numeric_setting(p, key, v) && validate(p).empty()) {
       first = first.value_or(v);
@@ -47,7 +47,8 @@ AnimatedInput::AnimatedInput(const std::string& key, const Parameters& base) : k
     }
   }
   if (!first) {
-    throw app::InputError("--animate " + key + ": no value of its slider is valid with the other inputs");
+    throw app::InputError("--animate " + key +
+                          ": no value of its slider is valid with the other inputs");
   }
   lo_ = *first;
   hi_ = last;
@@ -95,8 +96,7 @@ void FrameTimes::stop(Surface& surface) {
   }
   surface.finish();
   frame_ms_.push_back(
-      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start_)
-          .count());
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start_).count());
 }
 
 void FrameTimes::print_report(const char* backend, const std::string& animate_key,

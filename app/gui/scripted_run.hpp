@@ -61,8 +61,7 @@ class FrameTimes {
   // After present: waits for the GPU so that the time covers the whole frame.
   void stop(Surface& surface);
   // Prints the JSON report (frame times, pipeline counters, the solution) on stdout.
-  void print_report(const char* backend, const std::string& animate_key,
-                    Explorer& explorer) const;
+  void print_report(const char* backend, const std::string& animate_key, Explorer& explorer) const;
 
  private:
   bool enabled_;

@@ -40,9 +40,9 @@ class GlRenderer final : public Renderer {
       cloth_ = std::make_unique<ClothRenderer>();
     }
     cloth_->render(scene, camera, size, style);
-    add_framebuffer_blit(draw_list, cloth_->framebuffer(), size, min,
-                         ImVec2(min.x + static_cast<float>(size.width),
-                                min.y + static_cast<float>(size.height)));
+    add_framebuffer_blit(
+        draw_list, cloth_->framebuffer(), size, min,
+        ImVec2(min.x + static_cast<float>(size.width), min.y + static_cast<float>(size.height)));
   }
 
   const RenderCounters& counters() const override {

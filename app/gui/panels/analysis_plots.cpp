@@ -430,10 +430,8 @@ void RegimeMapPanel::draw(Document& document, Renderer& renderer) {
   set_number(base_job, x_key_, 1.0);
   set_number(base_job, y_key_, 1.0);
   restart_needed |= !(base_now == base_job);
-  const SweepAxis x_check{x_key_, x_from_, x_to_, resolution_,
-                          natural_log_scale(x_key_)};
-  const SweepAxis y_check{y_key_, y_from_, y_to_, resolution_,
-                          natural_log_scale(y_key_)};
+  const SweepAxis x_check{x_key_, x_from_, x_to_, resolution_, natural_log_scale(x_key_)};
+  const SweepAxis y_check{y_key_, y_from_, y_to_, resolution_, natural_log_scale(y_key_)};
   for (const SweepAxis* axis : {&x_check, &y_check}) {
     if (auto problem = check_axis(*axis)) {
       ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.4f, 1.0f), "%s", problem->c_str());
@@ -463,8 +461,7 @@ void RegimeMapPanel::draw(Document& document, Renderer& renderer) {
   const ImVec2 origin(ImGui::GetCursorScreenPos().x + 50.0f, ImGui::GetCursorScreenPos().y);
   ImGui::SetCursorScreenPos(origin);
   // Row 0 is the lowest y: the texture's first row goes to the bottom.
-  ImGui::Image(renderer.texture(image_),
-               ImVec2(side, side), ImVec2(0, 1), ImVec2(1, 0));
+  ImGui::Image(renderer.texture(image_), ImVec2(side, side), ImVec2(0, 1), ImVec2(1, 0));
   const bool hovered = ImGui::IsItemHovered();
   const bool clicked = ImGui::IsItemClicked(ImGuiMouseButton_Left);
   ImDrawList* draw = ImGui::GetWindowDrawList();

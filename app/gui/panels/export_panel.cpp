@@ -14,8 +14,8 @@ DeformedGrid mesh_as_shown(Scene& scene, const ClothStyle& style) {
   scene.normals();
   DeformedGrid grid = scene.grid();
   if (style.breeze) {
-    const float depth = static_cast<float>(
-        lowest_point_mm(scene.solution(), scene.parameters().hanging.height_mm));
+    const float depth =
+        static_cast<float>(lowest_point_mm(scene.solution(), scene.parameters().hanging.height_mm));
     for (Eigen::Vector3f& v : grid.positions_mm) {
       v += breeze_offset(v, depth, style.breeze_mm, style.time_s);
     }

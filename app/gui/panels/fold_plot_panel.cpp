@@ -47,7 +47,7 @@ void FoldPlotPanel::draw(Document& document, Renderer& renderer) {
     }
   }
   if (plot_.begin("fold lines", ImVec2(0.0f, 0.0f), PlotAxis{"x (mm)", false, false},
-                       PlotAxis{"y (mm, down)", true, false})) {
+                  PlotAxis{"y (mm, down)", true, false})) {
     if (autoscale_) {
       plot_.request_autoscale();
       autoscale_ = false;
@@ -55,7 +55,7 @@ void FoldPlotPanel::draw(Document& document, Renderer& renderer) {
     for (std::size_t k = 0; k < lines.lines.size(); ++k) {
       const bool negative = lines.lines[k].sign < 0;
       plot_.line(negative ? "negative fold" : "positive fold", xs_[k], ys_[k],
-                      negative ? kNegativeFold : kPositiveFold, 1.6f);
+                 negative ? kNegativeFold : kPositiveFold, 1.6f);
     }
     if (lines.lines.empty()) {
       // No folds (no slack, short cloth): show the cloth itself, y = (A + h) cos(pi x / l).
@@ -71,7 +71,7 @@ void FoldPlotPanel::draw(Document& document, Renderer& renderer) {
         }
       }
       plot_.line("lower edge of the flat cloth", outline_xs_, outline_ys_,
-                      IM_COL32(170, 170, 180, 255), 1.2f);
+                 IM_COL32(170, 170, 180, 255), 1.2f);
     }
     std::vector<double> supports_x;
     std::vector<double> supports_y;
@@ -80,7 +80,7 @@ void FoldPlotPanel::draw(Document& document, Renderer& renderer) {
       supports_y.push_back(support.y());
     }
     plot_.markers("supports", supports_x, supports_y, IM_COL32(240, 200, 60, 255),
-                       MarkerShape::Triangle, 6.0f);
+                  MarkerShape::Triangle, 6.0f);
     const std::optional<PlotHit> hit = plot_.end();
     if (hit && hit->series < static_cast<int>(lines.lines.size())) {
       const FoldLine& line = lines.lines[static_cast<std::size_t>(hit->series)];

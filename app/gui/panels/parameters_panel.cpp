@@ -25,8 +25,7 @@ std::string slider_label(const InputSpec& spec) {
 // The issues of one input. K is derived: validation names the constant c it sets.
 void show_issues(const Document& document, const InputSpec& spec) {
   for (const ValidationIssue& issue : document.issues()) {
-    if (issue.field == spec.field ||
-        (spec.kind == InputKind::stiffness_K && issue.field == "c")) {
+    if (issue.field == spec.field || (spec.kind == InputKind::stiffness_K && issue.field == "c")) {
       ImGui::PushStyleColor(ImGuiCol_Text, kErrorText);
       ImGui::TextWrapped("%s", issue.message.c_str());
       ImGui::PopStyleColor();
@@ -42,9 +41,8 @@ void input_slider(Document& document, const InputSpec& spec, float width) {
   const double hi = spec.typical_hi;
   const std::string format =
       std::string(spec.format) + (spec.unit.empty() ? "" : " " + std::string(spec.unit));
-  const ImGuiSliderFlags flags = spec.scale == InputScale::logarithmic
-                                     ? ImGuiSliderFlags_Logarithmic
-                                     : ImGuiSliderFlags_None;
+  const ImGuiSliderFlags flags =
+      spec.scale == InputScale::logarithmic ? ImGuiSliderFlags_Logarithmic : ImGuiSliderFlags_None;
   ImGui::SetNextItemWidth(width);
   if (ImGui::SliderScalar(slider_label(spec).c_str(), ImGuiDataType_Double, &value, &lo, &hi,
                           format.c_str(), flags)) {
@@ -106,14 +104,14 @@ void ParametersPanel::draw(Document& document, Renderer& renderer) {
   }
   const ImGuiStyle& style = ImGui::GetStyle();
   const float width = std::max(80.0f, ImGui::GetContentRegionAvail().x - label_width -
-                                           ImGui::CalcTextSize(" (?)").x -
-                                           2.0f * style.ItemInnerSpacing.x - style.ItemSpacing.x);
+                                          ImGui::CalcTextSize(" (?)").x -
+                                          2.0f * style.ItemInnerSpacing.x - style.ItemSpacing.x);
   for (const InputSpec* spec : sliders) {
     input_slider(document, *spec, width);
     if (spec->key == "w") {
-      ImGui::TextColored(kDimText, "    w = %.0f g/m²",
-                         document.edited().fabric.weight_N_per_mm2 *
-                             kGramsPerSquareMetrePerNPerMm2);
+      ImGui::TextColored(
+          kDimText, "    w = %.0f g/m²",
+          document.edited().fabric.weight_N_per_mm2 * kGramsPerSquareMetrePerNPerMm2);
     }
   }
   ImGui::TextColored(kDimText, "    c = %.4g (load-condition constant)",

@@ -1,0 +1,260 @@
+// The explorer in a test process: an ImGui context with no platform and no GL (fonts built, a
+// display size set), the null renderer, and Explorer::frame() between NewFrame and Render. What a
+// frame shows is read back from the glyphs in ImGui's draw data, so the checks see the words and
+// numbers a user would read.
+#include <gtest/gtest.h>
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <memory>
+#include <string>
+
+#include "app/gui/explorer.hpp"
+#include "app/gui/renderer.hpp"
+#include "app/gui/scripted_run.hpp"
+#include "core/io/preset.hpp"
+#include "core/model/settings.hpp"
+#include "temp_dir.hpp"
+
+namespace foldlab::gui {
+namespace {
+
+namespace fs = std::filesystem;
+const fs::path kPresetsDir = FOLDLAB_PRESETS_DIR;
+
+class ExplorerTest : public foldlab::testing::TempDirTest {
+ protected:
+  ExplorerTest() : TempDirTest("foldlab_explorer_") {}
+
+  void SetUp() override {
+    TempDirTest::SetUp();
+    context_ = ImGui::CreateContext();
+    ImGuiIO& io = ImGui::GetIO();
+    io.IniFilename = nullptr;
+    io.DisplaySize = ImVec2(1280, 800);
+    io.DeltaTime = 1.0f / 60.0f;
+    unsigned char* pixels = nullptr;
+    int w = 0;
+    int h = 0;
+    io.Fonts->GetTexDataAsRGBA32(&pixels, &w, &h);
+    io.Fonts->SetTexID(reinterpret_cast<ImTextureID>(static_cast<std::intptr_t>(1)));
+    explorer_ = std::make_unique<Explorer>(
+        load_preset(kPresetsDir / "paper-table1-h1400.json"),
+        (kPresetsDir / "paper-table1-h1400.json").string(), false,
+        ExplorerOptions{kPresetsDir, dir_ / "user-presets", "", "equations"}, renderer_);
+    // ImGui sizes tables and child windows from what the previous frame held.
+    frame();
+    frame();
+  }
+
+  void TearDown() override {
+    explorer_.reset();
+    ImGui::DestroyContext(context_);
+    TempDirTest::TearDown();
+  }
+
+  // One frame; returns every text it drew, in drawing order.
+  std::string frame() {
+    ImGui::NewFrame();
+    explorer_->frame();
+    ImGui::Render();
+    return drawn_text(*ImGui::GetDrawData());
+  }
+
+  static void append_utf8(std::string& text, unsigned codepoint) {
+    if (codepoint < 0x80) {
+      text += static_cast<char>(codepoint);
+    } else if (codepoint < 0x800) {
+      text += static_cast<char>(0xC0 | (codepoint >> 6));
+      text += static_cast<char>(0x80 | (codepoint & 0x3F));
+    } else {
+      text += static_cast<char>(0xE0 | (codepoint >> 12));
+      text += static_cast<char>(0x80 | ((codepoint >> 6) & 0x3F));
+      text += static_cast<char>(0x80 | (codepoint & 0x3F));
+    }
+  }
+
+  // The text in the draw data: a glyph is a quad whose corners carry its UV rectangle in the font
+  // atlas. A space draws nothing, so a gap wider than a glyph's advance becomes one space and a
+  // move to another baseline a new line.
+  static std::string drawn_text(const ImDrawData& data) {
+    const ImFont* font = ImGui::GetFont();
+    const float advance = font->FindGlyph('a')->AdvanceX;
+    std::string text;
+    float last_x = -1e9f;
+    float last_y = -1e9f;
+    for (int l = 0; l < data.CmdListsCount; ++l) {
+      const ImVector<ImDrawVert>& v = data.CmdLists[l]->VtxBuffer;
+      for (int i = 0; i + 3 < v.Size; ++i) {
+        const ImFontGlyph* glyph = nullptr;
+        for (const ImFontGlyph& g : font->Glyphs) {
+          if (g.Visible && v[i].uv.x == g.U0 && v[i].uv.y == g.V0 && v[i + 2].uv.x == g.U1 &&
+              v[i + 2].uv.y == g.V1 && v[i + 1].uv.x == g.U1 && v[i + 3].uv.y == g.V1) {
+            glyph = &g;
+            break;
+          }
+        }
+        if (glyph == nullptr) {
+          continue;
+        }
+        const float x = v[i].pos.x - glyph->X0;
+        const float y = v[i].pos.y - glyph->Y0;
+        if (std::abs(y - last_y) > 1.0f) {
+          text += '\n';
+        } else if (x - last_x > 1.5f * advance) {
+          text += ' ';
+        }
+        append_utf8(text, glyph->Codepoint);
+        last_x = x;
+        last_y = y;
+        i += 3;
+      }
+    }
+    return text;
+  }
+
+  // The number after `label` in a frame's text (NaN when the label is not shown).
+  static double number_after(const std::string& text, const std::string& label) {
+    const std::size_t at = text.find(label);
+    if (at == std::string::npos) {
+      return std::nan("");
+    }
+    return std::strtod(text.c_str() + at + label.size(), nullptr);
+  }
+
+  std::uint64_t evaluations(Stage stage) { return explorer_->scene().stats(stage).evaluations; }
+
+  ImGuiContext* context_ = nullptr;
+  NullRenderer renderer_;
+  std::unique_ptr<Explorer> explorer_;
+};
+
+TEST_F(ExplorerTest, AFrameShowsTheResultsOfTheLoadedPreset) {
+  const std::string text = frame();
+  EXPECT_NE(text.find("Table 1, h = 1400 mm"), std::string::npos) << text;
+  EXPECT_NE(text.find("Regime: wrinkled"), std::string::npos);
+  // The model's n for Table 1's h = 1400 mm row (`foldlab compare`: 8; the paper printed 7).
+  EXPECT_EQ(number_after(text, "number of wrinkles n "), 8.0) << text;
+}
+
+TEST_F(ExplorerTest, ChangingAnInputChangesTheResultsShown) {
+  frame();
+  // Table 1's h = 900 mm row differs from the loaded h = 1400 mm only in h; the paper printed
+  // n = 5 and Q = 1.31 for it, which the model reproduces.
+  ASSERT_EQ(explorer_->set_input("h", 900.0), std::nullopt);
+  const std::string text = frame();
+  EXPECT_EQ(number_after(text, "number of wrinkles n "), 5.0) << text;
+  EXPECT_NEAR(number_after(text, "amplitude ratio Q "), 1.31, 0.005) << text;
+  EXPECT_NE(text.find("Parameters *"), std::string::npos) << "the unsaved marker";
+}
+
+TEST_F(ExplorerTest, ARefusedValueKeepsTheLastValidStateAndSaysWhy) {
+  frame();
+  // d must stay below L/2 = 700 mm.
+  ASSERT_EQ(explorer_->set_input("d", 800.0), std::nullopt);
+  const std::string text = frame();
+  EXPECT_EQ(explorer_->scene().parameters().hanging.support_displacement_mm, 100.0);
+  EXPECT_EQ(explorer_->edited().hanging.support_displacement_mm, 800.0);
+  EXPECT_NE(text.find("1 input(s) refused"), std::string::npos) << text;
+  EXPECT_EQ(number_after(text, "number of wrinkles n "), 8.0);
+}
+
+TEST_F(ExplorerTest, SwitchingPresetShowsTheNewPreset) {
+  frame();
+  explorer_->load_preset_file(kPresetsDir / "paper-table2-w54.json");
+  const std::string text = frame();
+  EXPECT_NE(text.find("Loaded Table 2, w = 54e-7 N/mm²."), std::string::npos) << text;
+  EXPECT_EQ(explorer_->scene().parameters().fabric.weight_N_per_mm2, 54e-7);
+  // Table 2's w = 54e-7 row: the paper printed n = 7, as the model gives.
+  EXPECT_EQ(number_after(text, "number of wrinkles n "), 7.0) << text;
+  EXPECT_EQ(text.find("Parameters *"), std::string::npos) << "a fresh preset has no edits";
+}
+
+TEST_F(ExplorerTest, IdleFramesRecomputeNothingAndADragRecomputesOnce) {
+  for (int i = 0; i < 3; ++i) {
+    frame();
+  }
+  const Stage stages[] = {Stage::solution, Stage::fold_lines, Stage::grid, Stage::normals};
+  std::uint64_t before[4];
+  for (int k = 0; k < 4; ++k) {
+    before[k] = evaluations(stages[k]);
+    EXPECT_GE(before[k], 1u) << to_string(stages[k]) << ": the views need every stage";
+  }
+  const RenderCounters counters = explorer_->renderer_counters();
+  for (int i = 0; i < 10; ++i) {
+    frame();
+  }
+  for (int k = 0; k < 4; ++k) {
+    EXPECT_EQ(evaluations(stages[k]), before[k]) << to_string(stages[k]);
+  }
+  EXPECT_EQ(explorer_->renderer_counters().mesh_uploads, counters.mesh_uploads);
+  EXPECT_EQ(explorer_->renderer_counters().frames, counters.frames + 10);
+
+  explorer_->set_input("h", 1500.0);
+  frame();
+  for (int k = 0; k < 4; ++k) {
+    EXPECT_EQ(evaluations(stages[k]), before[k] + 1) << to_string(stages[k]);
+  }
+  EXPECT_EQ(explorer_->renderer_counters().mesh_uploads, counters.mesh_uploads + 1);
+}
+
+// The analysis panels once chose inputs by their index in the input table, which moved when the
+// table was reordered (index 3 became nu): Table 1 was swept over nu, the map's x axis was nu.
+TEST_F(ExplorerTest, AnalysisPanelsSweepThePapersInputsByKey) {
+  EXPECT_EQ(explorer_->analysis().sweep().key(), "h");
+  EXPECT_EQ(explorer_->analysis().regime_map().x_key(), "h");
+  EXPECT_EQ(explorer_->analysis().regime_map().y_key(), "w");
+
+  ASSERT_EQ(explorer_->set_view("sweep", "table1"), std::nullopt);
+  std::string text = frame();
+  EXPECT_EQ(explorer_->analysis().sweep().key(), "h");
+  // The heights of the paper's Table 1 rows that ship as presets.
+  std::vector<double> xs = explorer_->analysis().sweep().overlay_x();
+  std::sort(xs.begin(), xs.end());
+  EXPECT_EQ(xs, (std::vector<double>{900.0, 1400.0, 2350.0}));
+  EXPECT_EQ(text.find("cannot be swept"), std::string::npos) << text;
+
+  ASSERT_EQ(explorer_->set_view("sweep", "table2"), std::nullopt);
+  text = frame();
+  EXPECT_EQ(explorer_->analysis().sweep().key(), "w");
+  xs = explorer_->analysis().sweep().overlay_x();
+  std::sort(xs.begin(), xs.end());
+  ASSERT_EQ(xs.size(), 3u);
+  EXPECT_DOUBLE_EQ(xs[0], 10e-7);
+  EXPECT_DOUBLE_EQ(xs[2], 54e-7);
+}
+
+TEST_F(ExplorerTest, SlidersShowTheInputTablesFormatAndUnit) {
+  const std::string text = frame();
+  // w's row: "%.3e" in N/mm²; h's row: "%.0f" in mm.
+  EXPECT_NE(text.find("1.500e-06 N/mm²"), std::string::npos) << text;
+  EXPECT_NE(text.find("1400 mm"), std::string::npos) << text;
+  for (const char* key : {"t", "E", "w", "nu", "h", "L", "d", "K"}) {
+    const InputSpec* spec = find_input(key);
+    const std::string label = std::string(key) + " (" + std::string(spec->name) + ")";
+    EXPECT_NE(text.find(label), std::string::npos) << label;
+  }
+}
+
+TEST(AnimatedInput, MovesOverTheSlidersRangeWhereTheModelAcceptsIt) {
+  const Parameters base = load_preset(kPresetsDir / "paper-table1-h1400.json").parameters;
+  // h: the table's typical range, 100 to 5000 mm, all valid with L = 1400 mm.
+  const AnimatedInput h("h", base);
+  EXPECT_DOUBLE_EQ(h.lo(), 100.0);
+  EXPECT_DOUBLE_EQ(h.hi(), 5000.0);
+  EXPECT_DOUBLE_EQ(h.value(0), 100.0);    // the first frame starts at the low end
+  EXPECT_DOUBLE_EQ(h.value(60), 5000.0);  // 60 frames a way
+  // d: its slider reaches 2500 mm, but d < L/2 = 700 mm with L = 1400 mm.
+  const AnimatedInput d("d", base);
+  EXPECT_DOUBLE_EQ(d.lo(), 0.0);
+  EXPECT_LT(d.hi(), 700.0);
+  EXPECT_GT(d.hi(), 680.0);
+  EXPECT_THROW(AnimatedInput("method", base), app::InputError);
+}
+
+}  // namespace
+}  // namespace foldlab::gui
