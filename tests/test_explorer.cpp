@@ -42,10 +42,16 @@ class ExplorerTest : public foldlab::testing::TempDirTest {
     int h = 0;
     io.Fonts->GetTexDataAsRGBA32(&pixels, &w, &h);
     io.Fonts->SetTexID(reinterpret_cast<ImTextureID>(static_cast<std::intptr_t>(1)));
+    open_explorer("equations");
+  }
+
+  // The explorer on Table 1's h = 1400 mm row, with `tab` shown in the Analysis panel.
+  void open_explorer(const std::string& tab) {
+    explorer_.reset();
     explorer_ = std::make_unique<Explorer>(
         load_preset(kPresetsDir / "paper-table1-h1400.json"),
         (kPresetsDir / "paper-table1-h1400.json").string(), false,
-        ExplorerOptions{kPresetsDir, dir_ / "user-presets", "", "equations"}, renderer_);
+        ExplorerOptions{kPresetsDir, dir_ / "user-presets", "", tab}, renderer_);
     // ImGui sizes tables and child windows from what the previous frame held.
     frame();
     frame();
@@ -210,8 +216,10 @@ TEST_F(ExplorerTest, AnalysisPanelsSweepThePapersInputsByKey) {
   EXPECT_EQ(explorer_->analysis().regime_map().y_key(), "w");
 
   ASSERT_EQ(explorer_->set_view("sweep", "table1"), std::nullopt);
+  frame();  // a tab selected now shows from the next frame on
   std::string text = frame();
   EXPECT_EQ(explorer_->analysis().sweep().key(), "h");
+  EXPECT_NE(text.find("h (mm)"), std::string::npos) << "the sweep's x axis\n" << text;
   // The heights of the paper's Table 1 rows that ship as presets.
   std::vector<double> xs = explorer_->analysis().sweep().overlay_x();
   std::sort(xs.begin(), xs.end());
@@ -226,6 +234,13 @@ TEST_F(ExplorerTest, AnalysisPanelsSweepThePapersInputsByKey) {
   ASSERT_EQ(xs.size(), 3u);
   EXPECT_DOUBLE_EQ(xs[0], 10e-7);
   EXPECT_DOUBLE_EQ(xs[2], 54e-7);
+  EXPECT_NE(frame().find("w (N/mm²)"), std::string::npos) << "the sweep's x axis";
+
+  open_explorer("map");
+  text = frame();
+  EXPECT_NE(text.find("h (mm)"), std::string::npos) << "the map's x axis\n" << text;
+  EXPECT_NE(text.find("w (N/mm²)"), std::string::npos) << "the map's y axis";
+  EXPECT_EQ(text.find("nu"), text.find("nu (Poisson's ratio)")) << "nu only on its slider";
 }
 
 TEST_F(ExplorerTest, SlidersShowTheInputTablesFormatAndUnit) {
