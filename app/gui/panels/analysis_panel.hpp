@@ -6,7 +6,8 @@
 #include <string>
 
 #include "app/gui/document.hpp"
-#include "app/gui/panels/analysis_plots.hpp"
+#include "app/gui/panels/regime_map_panel.hpp"
+#include "app/gui/panels/sweep_panel.hpp"
 #include "app/gui/renderer.hpp"
 
 namespace foldlab::gui {

@@ -1,0 +1,180 @@
+#include "app/gui/panels/sweep_panel.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <imgui.h>
+
+#include "app/common/presets_dir.hpp"
+#include "app/gui/panels/axis_inputs.hpp"
+
+namespace foldlab::gui {
+namespace {
+
+constexpr ImU32 kCurveColour = IM_COL32(90, 170, 255, 255);
+constexpr ImU32 kPaperColour = IM_COL32(255, 120, 60, 255);
+constexpr ImU32 kCurrentColour = IM_COL32(240, 220, 90, 200);
+
+}  // namespace
+
+SweepPanel::SweepPanel(std::filesystem::path presets_dir) : presets_dir_(std::move(presets_dir)) {}
+
+void SweepPanel::load_overlay(const std::string& prefix, const std::string& label) {
+  overlay_label_ = label;
+  overlay_key_ = key_;
+  overlay_x_.clear();
+  overlay_n_.clear();
+  overlay_Q_.clear();
+  overlay_z_.clear();
+  overlay_Q_x_.clear();
+  for (const auto& file : app::preset_files(presets_dir_)) {
+    if (file.filename().string().rfind(prefix, 0) != 0) {
+      continue;
+    }
+    try {
+      const Preset p = load_preset(file);
+      if (!p.published.n || !p.published.z_max_mm) {
+        continue;
+      }
+      const double x = get_number(p.parameters, overlay_key_);
+      overlay_x_.push_back(x);
+      overlay_n_.push_back(*p.published.n);
+      overlay_z_.push_back(*p.published.z_max_mm);
+      if (p.published.Q) {
+        overlay_Q_x_.push_back(x);
+        overlay_Q_.push_back(*p.published.Q);
+      }
+    } catch (const PresetError&) {
+      // An unreadable file simply adds no point; the presets panel reports it.
+    }
+  }
+}
+
+void SweepPanel::recompute(const Parameters& current) {
+  SweepAxis axis{key_, from_, to_, steps_, logarithmic_};
+  if (check_axis(axis)) {
+    return;
+  }
+  if (computed_ && current == computed_for_ && axis.key == computed_axis_.key &&
+      axis.from == computed_axis_.from && axis.to == computed_axis_.to &&
+      axis.steps == computed_axis_.steps && axis.logarithmic == computed_axis_.logarithmic) {
+    return;
+  }
+  const std::vector<SweepPoint> points = sweep(current, axis);
+  xs_.clear();
+  n_.clear();
+  Q_.clear();
+  z_.clear();
+  for (const SweepPoint& p : points) {
+    const double nan = std::nan("");
+    xs_.push_back(p.value);
+    n_.push_back(p.valid ? p.n : nan);
+    Q_.push_back(p.valid && p.n > 0 ? p.Q : nan);
+    z_.push_back(p.valid ? p.z_max_mm : nan);
+  }
+  computed_for_ = current;
+  computed_axis_ = axis;
+  computed_ = true;
+}
+
+namespace {
+
+// One click: the paper's case, its input swept, its printed rows overlaid.
+struct PaperCase {
+  const char* preset;
+  const char* prefix;
+  const char* key;
+  double from, to;
+  bool log;
+};
+const char* const kPaperCaseButtons[] = {"Table 1 (h)", "Table 2 (w)", "Fig. 4 (h)"};
+const PaperCase kPaperCaseList[] = {
+    {"paper-table1-h1400.json", "paper-table1-", "h", 500.0, 3000.0, false},
+    {"paper-table2-w33.json", "paper-table2-", "w", 5e-7, 8e-6, true},
+    {"paper-fig4.json", "paper-fig4", "h", 500.0, 3000.0, false},
+};
+
+}  // namespace
+
+void SweepPanel::select_paper_case(int which, Document& document) {
+  const PaperCase& c = kPaperCaseList[which];
+  document.load_preset_file(presets_dir_ / c.preset);
+  key_ = c.key;
+  from_ = c.from;
+  to_ = c.to;
+  logarithmic_ = c.log;
+  load_overlay(c.prefix, std::string("paper, ") + kPaperCaseButtons[which]);
+  n_plot_.request_autoscale();
+}
+
+void SweepPanel::draw(Document& document) {
+  const Parameters& current = document.scene().parameters();
+  if (key_combo("input", key_)) {
+    logarithmic_ = natural_log_scale(key_);
+    default_range(key_, get_number(current, key_), from_, to_);
+    overlay_label_.clear();
+  }
+  ImGui::SameLine();
+  range_inputs("range", from_, to_);
+  ImGui::SameLine();
+  ImGui::Checkbox("log", &logarithmic_);
+  ImGui::SameLine();
+  ImGui::SetNextItemWidth(80.0f);
+  ImGui::SliderInt("steps", &steps_, 10, 1000, "%d", ImGuiSliderFlags_AlwaysClamp);
+
+  for (int which = 0; which < kPaperCases; ++which) {
+    if (ImGui::SmallButton(kPaperCaseButtons[which])) {
+      select_paper_case(which, document);
+    }
+    ImGui::SameLine();
+  }
+  ImGui::NewLine();
+
+  SweepAxis check{key_, from_, to_, steps_, logarithmic_};
+  if (auto problem = check_axis(check)) {
+    ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.4f, 1.0f), "%s", problem->c_str());
+    return;
+  }
+  recompute(current);
+  const std::string& key = computed_axis_.key;
+  const double now = get_number(current, key);
+  const bool overlay = !overlay_label_.empty() && overlay_key_ == key;
+  const float height = std::max(60.0f, (ImGui::GetContentRegionAvail().y - 8.0f) / 3.0f);
+  struct Quantity {
+    Plot& plot;
+    const char* id;
+    const char* label;
+    const std::vector<double>& ys;
+    const std::vector<double>& paper_x;
+    const std::vector<double>& paper_y;
+    bool steps;
+  };
+  const Quantity quantities[] = {
+      {n_plot_, "sweep n", "n", n_, overlay_x_, overlay_n_, true},
+      {Q_plot_, "sweep Q", "Q", Q_, overlay_Q_x_, overlay_Q_, false},
+      {z_plot_, "sweep z", "z_max (mm)", z_, overlay_x_, overlay_z_, false},
+  };
+  for (const Quantity& q : quantities) {
+    // The x title only under the last plot; a legend only when the paper's points are shown.
+    const bool last = &q == &quantities[2];
+    if (!q.plot.begin(q.id, ImVec2(0.0f, height),
+                      PlotAxis{last ? axis_label(key) : std::string(), false, logarithmic_},
+                      PlotAxis{q.label, false, false})) {
+      continue;
+    }
+    const char* legend = overlay ? "model" : nullptr;
+    if (q.steps) {
+      q.plot.steps(legend, xs_, q.ys, kCurveColour, 2.0f);
+    } else {
+      q.plot.line(legend, xs_, q.ys, kCurveColour, 2.0f);
+    }
+    if (overlay) {
+      q.plot.markers(overlay_label_.c_str(), q.paper_x, q.paper_y, kPaperColour,
+                     MarkerShape::Diamond, 5.0f);
+    }
+    q.plot.vertical_line(now, kCurrentColour);
+    q.plot.end();
+  }
+}
+
+}  // namespace foldlab::gui
