@@ -53,6 +53,16 @@ double span_mm(const Parameters& p) {
   return p.model.span_rule == SpanRule::L_minus_d ? L - d : L - 2.0 * d;
 }
 
+double bending_stiffness_Nmm(const Fabric& f) {
+  const double t = f.thickness_mm;
+  const double nu = f.poisson_ratio;
+  return f.youngs_modulus_MPa * t * t * t / (12.0 * (1.0 - nu * nu));
+}
+
+double bending_length_mm(const Fabric& f) {
+  return std::cbrt(bending_stiffness_Nmm(f) / f.weight_N_per_mm2);
+}
+
 std::vector<ValidationIssue> validate(const Parameters& p) {
   std::vector<ValidationIssue> issues;
   for (const InputSpec& spec : input_table()) {

@@ -77,6 +77,13 @@ void set_stiffness_constant_K(Parameters& p, double K);
 // The span l between the supports, by the chosen span rule.
 double span_mm(const Parameters& p);
 
+// The fabric's plate bending stiffness per unit width, B = E t³ / (12 (1 - nu²)), in N mm
+// (N mm² per mm of width): the moment per unit width that bends it to unit curvature.
+double bending_stiffness_Nmm(const Fabric& f);
+// Peirce's bending length c_b = (B / w)^(1/3), mm: the length over which the fabric's own weight
+// bends it as much as its stiffness resists, the radius its folds take (docs/rounded-folds.md).
+double bending_length_mm(const Fabric& f);
+
 // One problem with one input: which field (the paper's symbol with its unit), its value, and a
 // sentence with the allowed range and the reason.
 struct ValidationIssue {
