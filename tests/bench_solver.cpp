@@ -70,18 +70,23 @@ void BM_AmplitudeForUpperEdgeLength(benchmark::State& state) {
 }
 BENCHMARK(BM_AmplitudeForUpperEdgeLength);
 
-const Solution& default_solution() {
-  static const Solution s = [] {
-    Parameters p;
-    p.model.method = Method::exact;
-    return solve(p);
+const Parameters& default_parameters() {
+  static const Parameters p = [] {
+    Parameters exact;
+    exact.model.method = Method::exact;
+    return exact;
   }();
+  return p;
+}
+
+const Solution& default_solution() {
+  static const Solution s = solve(default_parameters());
   return s;
 }
 
 void BM_FoldLines(benchmark::State& state) {
   for (auto _ : state) {
-    benchmark::DoNotOptimize(fold_lines(default_solution(), 201));
+    benchmark::DoNotOptimize(fold_lines(default_solution(), default_parameters(), 201));
   }
 }
 BENCHMARK(BM_FoldLines);

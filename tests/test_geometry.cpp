@@ -19,7 +19,8 @@ Parameters exact_default() {
 TEST(FoldLines, FollowTheCosineOfEq6) {
   const Parameters p = exact_default();
   const Solution s = solve(p);
-  const FoldLines lines = fold_lines(s, 33);
+  const FoldLines lines = fold_lines(s, p, 33);
+  const FoldRounding rounding = fold_rounding(s, p);
   ASSERT_EQ(lines.lines.size(), static_cast<std::size_t>(s.n) + 1);
   EXPECT_EQ(lines.stride, 1);
   const double l = s.span_mm;
@@ -30,7 +31,9 @@ TEST(FoldLines, FollowTheCosineOfEq6) {
     for (const Eigen::Vector3d& q : line.points_mm) {
       const double c = std::cos(std::numbers::pi * q.x() / l);
       EXPECT_NEAR(q.y(), a * c, 1e-9);
-      EXPECT_NEAR(q.z(), line.sign * s.z_max_mm * c, 1e-9);
+      // Eq. 4 with the depth the rounded folds keep: z_max at the upper edge, a little less below.
+      const double depth = line.index == s.n ? s.z_max_mm : rounding.depth_scale * s.z_max_mm;
+      EXPECT_NEAR(q.z(), line.sign * depth * c, 1e-9);
     }
     // Ends at the supports, x = -+l/2, where y = z = 0.
     EXPECT_NEAR(line.points_mm.front().x(), -l / 2, 1e-9);
@@ -47,7 +50,7 @@ TEST(FoldLines, ManyFoldsAreThinnedForDrawingOnly) {
   p.fabric.thickness_mm = 0.01;  // s ~ 1e-6: thousands of folds
   const Solution s = solve(p);
   ASSERT_GT(s.n, 1000);
-  const FoldLines lines = fold_lines(s, 5, 100);
+  const FoldLines lines = fold_lines(s, p, 5, 100);
   EXPECT_LE(static_cast<int>(lines.lines.size()), 100);
   EXPECT_GT(lines.stride, 1);
   EXPECT_EQ(lines.lines[1].index, lines.stride);
@@ -57,7 +60,7 @@ TEST(FoldLines, ManyFoldsAreThinnedForDrawingOnly) {
 TEST(FoldLines, NoneWithoutFolds) {
   Parameters p = exact_default();
   p.hanging.support_displacement_mm = 0.0;
-  EXPECT_TRUE(fold_lines(solve(p), 10).lines.empty());
+  EXPECT_TRUE(fold_lines(solve(p), p, 10).lines.empty());
 }
 
 TEST(DeformedGrid, ShapeSupportsAndCentralFibre) {
@@ -77,13 +80,15 @@ TEST(DeformedGrid, ShapeSupportsAndCentralFibre) {
     EXPECT_NEAR(at(0, j).y(), 0.0, 1e-3);
     EXPECT_NEAR(at(0, j).z(), 0.0, 1e-3);
   }
-  // The central column starts at the upper edge (a_n, sign_n z) and ends at a_0 (+z).
+  // The central column starts at the upper edge (a_n, sign_n z_max) and ends at a_0 (+z of the
+  // rounded folds).
   const int mid = nx / 2;
+  const double lowest_depth = fold_rounding(s, p).fold_depth_mm(s, 0);
   EXPECT_NEAR(at(mid, 0).x(), 0.0, 1e-3);
   EXPECT_NEAR(at(mid, 0).y(), s.a_mm.back(), 1e-3);
   EXPECT_NEAR(at(mid, 0).z(), fold_sign(s.n) * s.z_max_mm, 1e-3);
   EXPECT_NEAR(at(mid, ny - 1).y(), s.a_mm.front(), 1e-2);
-  EXPECT_NEAR(at(mid, ny - 1).z(), s.z_max_mm, 1e-2);
+  EXPECT_NEAR(at(mid, ny - 1).z(), lowest_depth, 1e-2);
   // The central fibre is inextensible (eq. 9): its sampled length approaches h from below.
   double length = 0.0;
   for (int j = 1; j < ny; ++j) {
@@ -155,7 +160,7 @@ TEST(Shapes, StripRepeatsTheSpanAndKeepsEverySupportFixed) {
   p.shape.supports = 4;  // three spans
   const Solution s = solve(p);
   const double l = s.span_mm;
-  const FoldLines lines = fold_lines(s, p.shape, 21);
+  const FoldLines lines = fold_lines(s, p, 21);
   ASSERT_EQ(lines.lines.size(), 3u * (s.n + 1));
   // Continuity between spans: each line of span j ends where the same line of span j+1 starts,
   // at a support on y = 0.
@@ -185,10 +190,10 @@ TEST(Shapes, StripRepeatsTheSpanAndKeepsEverySupportFixed) {
 TEST(Shapes, InclinedSupportsShearThePatternAndKeepTheFoldCount) {
   Parameters p = exact_default();
   const Solution s = solve(p);
-  const FoldLines straight = fold_lines(s, p.shape, 41);
+  const FoldLines straight = fold_lines(s, p, 41);
   p.shape.kind = ShapeKind::inclined;
   p.shape.incline_deg = 20.0;
-  const FoldLines sheared = fold_lines(s, p.shape, 41);
+  const FoldLines sheared = fold_lines(s, p, 41);
   ASSERT_EQ(sheared.lines.size(), straight.lines.size());
   const double rise = s.span_mm * std::tan(20.0 * std::numbers::pi / 180.0);
   for (std::size_t k = 0; k < sheared.lines.size(); ++k) {
@@ -227,7 +232,7 @@ TEST(Shapes, RectangularClothHangsStraightBelowTheLowestFold) {
   // Between the supports the bottom of a fibre lies below its lowest fold, straight under it.
   const int quarter = nx / 4;  // X = -L/4
   const double c = std::cos(std::numbers::pi / 4);
-  EXPECT_NEAR(at(quarter, ny - 1).z(), c * s.z_max_mm, 1e-2);
+  EXPECT_NEAR(at(quarter, ny - 1).z(), c * fold_rounding(s, p).fold_depth_mm(s, 0), 1e-2);
   EXPECT_NEAR(at(quarter, ny - 1).y(), c * s.a_mm.front() + (h - c * h), 0.5);
   // Material coordinates run over the flat rectangle.
   EXPECT_NEAR(grid.material_mm.back().x(), p.hanging.length_mm / 2, 1e-3);

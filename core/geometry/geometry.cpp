@@ -11,43 +11,6 @@ namespace {
 
 constexpr double kPi = std::numbers::pi;
 
-// The fibre at x = 0 as a zig-zag in the (y, z) plane, from the upper edge down to a_0.
-std::vector<Eigen::Vector2d> central_zigzag(const Solution& s) {
-  std::vector<Eigen::Vector2d> points;
-  if (s.a_mm.empty()) {
-    // No folds: the cloth hangs straight from the sag of its upper edge (0 without slack).
-    return points;
-  }
-  for (int i = s.n; i >= 0; --i) {
-    points.emplace_back(s.a_mm[static_cast<std::size_t>(i)], fold_sign(i) * s.z_max_mm);
-  }
-  return points;
-}
-
-// Points at arc-length fractions f_j = j/(count-1) along a polyline.
-std::vector<Eigen::Vector2d> sample_by_arc_length(const std::vector<Eigen::Vector2d>& polyline,
-                                                  int count) {
-  std::vector<double> cumulative(polyline.size(), 0.0);
-  for (std::size_t k = 1; k < polyline.size(); ++k) {
-    cumulative[k] = cumulative[k - 1] + (polyline[k] - polyline[k - 1]).norm();
-  }
-  const double total = cumulative.back();
-  std::vector<Eigen::Vector2d> samples;
-  samples.reserve(static_cast<std::size_t>(count));
-  std::size_t segment = 1;
-  for (int j = 0; j < count; ++j) {
-    const double target = total * j / (count - 1);
-    while (segment + 1 < polyline.size() && cumulative[segment] < target) {
-      ++segment;
-    }
-    const double length = cumulative[segment] - cumulative[segment - 1];
-    const double t =
-        length > 0.0 ? std::clamp((target - cumulative[segment - 1]) / length, 0.0, 1.0) : 0.0;
-    samples.push_back(polyline[segment - 1] + t * (polyline[segment] - polyline[segment - 1]));
-  }
-  return samples;
-}
-
 }  // namespace
 
 Eigen::Vector3d place_on_shape(const Eigen::Vector3d& span_point, int span, double span_mm,
@@ -74,7 +37,8 @@ std::vector<Eigen::Vector3d> support_points(double span_mm, const Shape& shape) 
   return points;
 }
 
-FoldLines fold_lines(const Solution& s, const Shape& shape, int samples, int max_lines) {
+FoldLines fold_lines(const Solution& s, const FoldRounding& rounding, const Shape& shape,
+                     int samples, int max_lines) {
   FoldLines out;
   if (s.a_mm.empty()) {
     return out;
@@ -92,16 +56,20 @@ FoldLines fold_lines(const Solution& s, const Shape& shape, int samples, int max
       line.span = span;
       line.points_mm.reserve(static_cast<std::size_t>(samples));
       const double a = s.a_mm[static_cast<std::size_t>(i)];
+      const double z = line.sign * rounding.fold_depth_mm(s, i);
       for (int k = 0; k < samples; ++k) {
         const double x = l * (static_cast<double>(k) / (samples - 1) - 0.5);
         const double c = std::cos(kPi * x / l);
-        line.points_mm.push_back(
-            place_on_shape({x, a * c, line.sign * s.z_max_mm * c}, span, l, shape));
+        line.points_mm.push_back(place_on_shape({x, a * c, z * c}, span, l, shape));
       }
       out.lines.push_back(std::move(line));
     }
   }
   return out;
+}
+
+FoldLines fold_lines(const Solution& s, const Parameters& p, int samples, int max_lines) {
+  return fold_lines(s, fold_rounding(s, p), p.shape, samples, max_lines);
 }
 
 DeformedGrid deformed_grid(const Solution& s, const Parameters& p, int nx, int ny) {
@@ -110,45 +78,13 @@ DeformedGrid deformed_grid(const Solution& s, const Parameters& p, int nx, int n
   return grid;
 }
 
-namespace {
-
-// The central fibre's zig-zag with its cumulative arc lengths, for points at a given arc length.
-struct Zigzag {
-  std::vector<Eigen::Vector2d> points;  // (y, z) from the upper edge down to a_0
-  std::vector<double> cumulative;
-
-  double length() const { return cumulative.back(); }
-
-  // The point at arc length `at` (clamped to the zig-zag); `segment` remembers where the last
-  // lookup ended, so increasing lookups walk the polyline once.
-  Eigen::Vector2d at_length(double at, std::size_t& segment) const {
-    at = std::clamp(at, 0.0, length());
-    while (segment + 2 < points.size() && cumulative[segment + 1] < at) {
-      ++segment;
-    }
-    const double piece = cumulative[segment + 1] - cumulative[segment];
-    const double t = piece > 0.0 ? (at - cumulative[segment]) / piece : 0.0;
-    return points[segment] + std::clamp(t, 0.0, 1.0) * (points[segment + 1] - points[segment]);
-  }
-};
-
-Zigzag make_zigzag(const Solution& s, double h) {
-  Zigzag z;
-  z.points = central_zigzag(s);
-  if (z.points.empty()) {
-    z.points = {Eigen::Vector2d(s.sag_amplitude_mm, 0.0),
-                Eigen::Vector2d(s.sag_amplitude_mm + h, 0.0)};
-  }
-  z.cumulative.assign(z.points.size(), 0.0);
-  for (std::size_t k = 1; k < z.points.size(); ++k) {
-    z.cumulative[k] = z.cumulative[k - 1] + (z.points[k] - z.points[k - 1]).norm();
-  }
-  return z;
+DeformedGrid deformed_grid_positions(const Solution& s, const Parameters& p, int nx, int ny) {
+  return deformed_grid_positions(s, p, CentreFibre(s, p.hanging.height_mm, fold_rounding(s, p)), nx,
+                                 ny);
 }
 
-}  // namespace
-
-DeformedGrid deformed_grid_positions(const Solution& s, const Parameters& p, int nx, int ny) {
+DeformedGrid deformed_grid_positions(const Solution& s, const Parameters& p,
+                                     const CentreFibre& fibre, int nx, int ny) {
   DeformedGrid grid;
   grid.nx = std::max(2, nx);
   grid.ny = std::max(2, ny);
@@ -158,10 +94,15 @@ DeformedGrid deformed_grid_positions(const Solution& s, const Parameters& p, int
   const Shape& shape = p.shape;
   const int spans = shape.span_count();
   const bool rectangular = shape.kind == ShapeKind::rectangular;
-  const Zigzag zigzag = make_zigzag(s, h);
+  const double fibre_mm = fibre.length_mm();
 
   // The membrane's rows sit at the same fraction of every fibre: sample the central one once.
-  const std::vector<Eigen::Vector2d> rows = sample_by_arc_length(zigzag.points, grid.ny);
+  std::vector<Eigen::Vector2d> rows(static_cast<std::size_t>(grid.ny));
+  std::size_t row_piece = 0;
+  for (int j = 0; j < grid.ny; ++j) {
+    rows[static_cast<std::size_t>(j)] = fibre.at_length(fibre_mm * j / (grid.ny - 1), row_piece);
+  }
+  grid.sharpest_turn_deg = sharpest_turn_deg(rows);
 
   const std::size_t count = static_cast<std::size_t>(grid.nx) * grid.ny;
   grid.positions_mm.resize(count);
@@ -177,7 +118,7 @@ DeformedGrid deformed_grid_positions(const Solution& s, const Parameters& p, int
     const double x = X * l / L;
     double column_length = 0.0;
     Eigen::Vector3d previous;
-    std::size_t segment = 0;
+    std::size_t piece = 0;
     for (int j = 0; j < grid.ny; ++j) {
       const double fraction = static_cast<double>(j) / (grid.ny - 1);
       Eigen::Vector2d yz;
@@ -186,13 +127,13 @@ DeformedGrid deformed_grid_positions(const Solution& s, const Parameters& p, int
         yz = c * rows[static_cast<std::size_t>(j)];
         material_Y = fraction * h * c;
       } else {
-        // Arc length Y along the zig-zag (c times the central one), then straight down.
+        // Arc length Y along the fibre (c times the central one), then straight down.
         material_Y = fraction * h;
-        const double zigzag_here = c * zigzag.length();
-        if (material_Y <= zigzag_here && c > 0.0) {
-          yz = c * zigzag.at_length(material_Y / c, segment);
+        const double fibre_here = c * fibre_mm;
+        if (material_Y <= fibre_here && c > 0.0) {
+          yz = c * fibre.at_length(material_Y / c, piece);
         } else {
-          yz = c * zigzag.points.back() + Eigen::Vector2d(material_Y - zigzag_here, 0.0);
+          yz = c * rows.back() + Eigen::Vector2d(material_Y - fibre_here, 0.0);
         }
       }
       const Eigen::Vector3d point = place_on_shape({x, yz.x(), yz.y()}, span, l, shape);

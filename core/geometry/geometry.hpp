@@ -8,6 +8,7 @@
 
 #include <Eigen/Core>
 
+#include "core/geometry/rounded_folds.hpp"
 #include "core/model/parameters.hpp"
 #include "core/model/solver.hpp"
 
@@ -26,7 +27,7 @@ struct FoldLine {
   int index = 0;  // i: 0 is the lower boundary a_0, n the upper edge a_n
   int sign = 1;
   int span = 0;                            // which span of a strip (0 otherwise)
-  std::vector<Eigen::Vector3d> points_mm;  // (x, a_i cos(pi x/l), sign z_max cos(pi x/l))
+  std::vector<Eigen::Vector3d> points_mm;  // (x, a_i cos(pi x/l), sign z_i cos(pi x/l))
 };
 
 struct FoldLines {
@@ -36,11 +37,13 @@ struct FoldLines {
 
 // samples >= 2 points per line and span, from x = -l/2 to l/2 of each span. Empty when the
 // solution has no folds. The shape repeats the lines per span (strip) or shears them (inclined).
-FoldLines fold_lines(const Solution& s, const Shape& shape, int samples,
+// z_i is the depth of fold i once rounded (FoldRounding::fold_depth_mm), so the lines lie on the
+// grid's crests.
+FoldLines fold_lines(const Solution& s, const FoldRounding& rounding, const Shape& shape,
+                     int samples, int max_lines = kMaxDrawnFoldLines);
+// With the fabric's rounding and the parameters' shape.
+FoldLines fold_lines(const Solution& s, const Parameters& p, int samples,
                      int max_lines = kMaxDrawnFoldLines);
-inline FoldLines fold_lines(const Solution& s, int samples, int max_lines = kMaxDrawnFoldLines) {
-  return fold_lines(s, Shape{}, samples, max_lines);
-}
 
 // Where the shape puts a point (x, y, z) of one span's solution: span j of a strip is shifted by
 // its offset, and an inclined pattern is sheared so that the right support sits higher.
@@ -65,19 +68,28 @@ struct DeformedGrid {
   std::vector<Eigen::Vector3f> normals;
   std::vector<std::uint32_t> triangle_indices;
   // max over the grid's columns of |deformed polyline length - flat fibre length| / h: how well the
-  // grid resolves the zig-zag of folds (it shrinks as ny grows past 2n).
+  // grid resolves the folds (it shrinks as ny grows past 2n).
   double worst_fibre_error = 0.0;
+  // Largest angle (degrees) between neighbouring segments of the centre fibre as the grid's ny rows
+  // sample it: how sharp the sharpest crease looks. Every column of the cosine membrane is the
+  // centre fibre scaled, so it holds for all of them.
+  double sharpest_turn_deg = 0.0;
 };
 
-// nx, ny >= 2, over the whole flat cloth (all spans of a strip). The cosine membrane: the
-// fibre at X has length h cos(pi X/L) and its points sit at arc-length fraction Y/h
-// of the zig-zag through the fold points at x = X l/L. The rectangular cloth: every fibre is h
-// long; its point Y sits at arc length Y along the zig-zag, and below the lowest fold it hangs
-// straight down (as the paper does; near the supports, where the zig-zag shrinks to nothing, this
-// is where the model stops describing a real cloth). The supports stay fixed.
+// nx, ny >= 2, over the whole flat cloth (all spans of a strip). The cosine membrane: the fibre
+// at X has length h cos(pi X/L) and its points sit at arc-length fraction Y/h of the centre fibre
+// through the fold points, scaled by cos(pi X/L), at x = X l/L. The centre fibre has rounded
+// crests (rounded_folds.hpp) where the paper has a sharp zig-zag. The rectangular cloth: every
+// fibre is h long; its point Y sits at arc length Y along the scaled centre fibre, and below the
+// lowest fold it hangs straight down (as the paper does; near the supports, where the folds shrink
+// to nothing, this is where the model stops describing a real cloth). The supports stay fixed.
 DeformedGrid deformed_grid(const Solution& s, const Parameters& p, int nx, int ny);
 // The same without normals (left empty): the scene computes them as a stage of their own.
 DeformedGrid deformed_grid_positions(const Solution& s, const Parameters& p, int nx, int ny);
+// The same along a given centre fibre (the scene keeps one per solution; a sharp one reproduces
+// the paper's zig-zag).
+DeformedGrid deformed_grid_positions(const Solution& s, const Parameters& p,
+                                     const CentreFibre& fibre, int nx, int ny);
 
 // Per-vertex unit normals of an indexed triangle mesh, area weighted; (0, 0, 1) where degenerate.
 std::vector<Eigen::Vector3f> vertex_normals(const std::vector<Eigen::Vector3f>& positions,

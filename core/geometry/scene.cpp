@@ -26,6 +26,8 @@ void Scene::invalidate_from(Stage stage) {
   switch (stage) {
     case Stage::solution:
       stale_.fill(true);
+      rounding_stale_ = true;
+      fibre_.reset();
       break;
     case Stage::fold_lines:
       stale_[index(Stage::fold_lines)] = true;
@@ -101,8 +103,9 @@ const Solution& Scene::solution() {
 const FoldLines& Scene::fold_lines() {
   if (stale_[index(Stage::fold_lines)]) {
     const Solution& s = solution();
-    run(Stage::fold_lines,
-        [&] { fold_lines_ = foldlab::fold_lines(s, parameters_.shape, fold_line_samples_); });
+    run(Stage::fold_lines, [&] {
+      fold_lines_ = foldlab::fold_lines(s, fold_rounding(), parameters_.shape, fold_line_samples_);
+    });
   }
   return fold_lines_;
 }
@@ -110,7 +113,9 @@ const FoldLines& Scene::fold_lines() {
 const DeformedGrid& Scene::grid() {
   if (stale_[index(Stage::grid)]) {
     const Solution& s = solution();
-    run(Stage::grid, [&] { grid_ = deformed_grid_positions(s, parameters_, grid_nx_, grid_ny_); });
+    run(Stage::grid, [&] {
+      grid_ = deformed_grid_positions(s, parameters_, centre_fibre(), grid_nx_, grid_ny_);
+    });
     stale_[index(Stage::normals)] = true;
   }
   return grid_;
@@ -123,6 +128,23 @@ const std::vector<Eigen::Vector3f>& Scene::normals() {
         [this] { grid_.normals = vertex_normals(grid_.positions_mm, grid_.triangle_indices); });
   }
   return grid_.normals;
+}
+
+const FoldRounding& Scene::fold_rounding() {
+  const Solution& s = solution();
+  if (rounding_stale_) {
+    rounding_ = foldlab::fold_rounding(s, parameters_);
+    rounding_stale_ = false;
+  }
+  return rounding_;
+}
+
+const CentreFibre& Scene::centre_fibre() {
+  if (!fibre_) {
+    const FoldRounding& rounding = fold_rounding();
+    fibre_.emplace(solution_, parameters_.hanging.height_mm, rounding);
+  }
+  return *fibre_;
 }
 
 void Scene::reset_stats() {

@@ -6,6 +6,7 @@
 
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <string_view>
 #include <vector>
 
@@ -43,6 +44,10 @@ class Scene {
   const FoldLines& fold_lines();
   const DeformedGrid& grid();  // positions, triangles and fibre error; normals via normals()
   const std::vector<Eigen::Vector3f>& normals();
+  // How the solution's folds are rounded, and the centre fibre through them: computed with the
+  // first of fold lines or grid that needs them (and timed with it), kept until the next solve.
+  const FoldRounding& fold_rounding();
+  const CentreFibre& centre_fibre();
 
   const StageStats& stats(Stage stage) const { return stats_[index(stage)]; }
   // Bumps each time the stage's output is recomputed: a consumer (a GPU buffer, say) that
@@ -63,6 +68,9 @@ class Scene {
   int fold_line_samples_ = 201;
 
   Solution solution_;
+  FoldRounding rounding_;
+  std::optional<CentreFibre> fibre_;  // empty while stale, like the rounding
+  bool rounding_stale_ = true;
   FoldLines fold_lines_;
   DeformedGrid grid_;
   std::array<bool, kStageCount> stale_{true, true, true, true};

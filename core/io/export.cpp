@@ -57,6 +57,8 @@ std::string mesh_to_obj(const DeformedGrid& grid, const std::string& title) {
   out += "# units mm; x across, y down (gravity), z out of the initial plane\n";
   out += printf_string("# grid %d x %d, worst fibre-length error %.3e of h\n", grid.nx, grid.ny,
                        grid.worst_fibre_error);
+  out += printf_string("# sharpest turn of the centre fibre between neighbouring rows %.2f deg\n",
+                       grid.sharpest_turn_deg);
   out += "# vt: u across the flat cloth, v = Y / Y_max down it (v = 0 at the upper edge)\n";
   out += "o cloth\n";
   out.reserve(out.size() + grid.positions_mm.size() * 110 + grid.triangle_indices.size() * 20);

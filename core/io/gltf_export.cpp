@@ -124,6 +124,10 @@ std::string mesh_to_glb(const DeformedGrid& grid, const std::string& title) {
 
   tinygltf::Mesh mesh;
   mesh.name = title;
+  // Diagnostics a viewer ignores and a script can read.
+  mesh.extras = tinygltf::Value(
+      tinygltf::Value::Object{{"worst_fibre_error", tinygltf::Value(grid.worst_fibre_error)},
+                              {"sharpest_turn_deg", tinygltf::Value(grid.sharpest_turn_deg)}});
   mesh.primitives.push_back(primitive);
   model.meshes.push_back(mesh);
   tinygltf::Node node;

@@ -1,13 +1,18 @@
 #include "core/io/report.hpp"
 
+#include <algorithm>
 #include <cstdio>
 
 #include <nlohmann/json.hpp>
 
+#include "core/geometry/rounded_folds.hpp"
 #include "core/model/settings.hpp"
+#include "core/model/text_format.hpp"
 
 namespace foldlab {
 namespace {
+
+using detail::printf_string;
 
 std::string line(const char* label, const char* symbol, double value, const char* unit,
                  const char* format = "%.6g") {
@@ -40,6 +45,14 @@ nlohmann::json solution_to_json(const Solution& s, const Parameters& p) {
       {"n_cycle", s.n_cycle},
       {"residual_length", s.residual_length},
       {"residual_height", s.residual_height},
+      {"B_Nmm", bending_stiffness_Nmm(p.fabric)},
+      {"c_b_mm", bending_length_mm(p.fabric)},
+  };
+  const FoldRounding rounding = fold_rounding(s, p);
+  j["rounded_folds"] = {
+      {"rounded", rounding.rounded},         {"radius_mm", rounding.radius_mm},
+      {"depth_scale", rounding.depth_scale}, {"z_fold_mm", rounding.depth_scale * s.z_max_mm},
+      {"length_kept", rounding.length_kept},
   };
   nlohmann::json& inputs = j["inputs"];
   for (const InputSpec& spec : input_table()) {
@@ -88,6 +101,18 @@ std::string solution_table(const Solution& s, const Parameters& p, const std::st
   out += line("out-of-plane depth", "z_max", s.z_max_mm, "mm", "%.2f");
   out += line("span between supports", "l", s.span_mm, "mm", "%.2f");
   out += line("sag of the upper edge", "A", s.sag_amplitude_mm, "mm", "%.2f");
+  out += line("bending stiffness Et^3/12(1-nu^2)", "B", bending_stiffness_Nmm(p.fabric), "N mm");
+  out += line("bending length (B/w)^(1/3)", "c_b", bending_length_mm(p.fabric), "mm", "%.2f");
+  if (const FoldRounding rounding = fold_rounding(s, p); rounding.rounded) {
+    const auto [smallest, largest] =
+        std::minmax_element(rounding.radius_mm.begin(), rounding.radius_mm.end());
+    out += line("crest radius (at most c_b), min", "R", *smallest, "mm", "%.2f");
+    out += line("crest radius (at most c_b), max", "R", *largest, "mm", "%.2f");
+    out += line(
+        "rounded fold depth", "z_fold", rounding.depth_scale * s.z_max_mm,
+        printf_string("mm (%.2f %% below z_max)", 100.0 * (1.0 - rounding.depth_scale)).c_str(),
+        "%.2f");
+  }
   out += line("iterations", "", s.iterations, "", "%.0f");
   out += line("residual of eq. 8, L'/L - 1", "", s.residual_length, "", "%.3e");
   out += line("residual of eq. 9, fibre/h - 1", "", s.residual_height, "", "%.3e");

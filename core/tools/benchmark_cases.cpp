@@ -388,7 +388,7 @@ std::vector<PipelineTiming> time_pipeline(const Solution& s, const Parameters& p
     std::vector<double> parallel_ms;
     for (int r = 0; r < repeats; ++r) {
       auto start = Clock::now();
-      const FoldLines lines = fold_lines(s, 201);
+      const FoldLines lines = fold_lines(s, p, 201);
       lines_ms.push_back(ms_since(start));
       start = Clock::now();
       const DeformedGrid serial = deformed_grid(s, p, size, size);

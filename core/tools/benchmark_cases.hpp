@@ -117,7 +117,7 @@ ReferenceCheck check_references(const std::vector<Solution>& exact,
 // The rest of the pipeline for one solution, milliseconds per call (median of `repeats`).
 struct PipelineTiming {
   int grid_size = 0;             // vertices per side
-  double fold_lines_ms = 0;      // fold_lines(s, 201)
+  double fold_lines_ms = 0;      // fold_lines(s, p, 201)
   double grid_serial_ms = 0;     // deformed_grid: positions, triangles, normals, one thread
   double normals_serial_ms = 0;  // of which vertex_normals
   double grid_parallel_ms = 0;   // deformed_grid_parallel with `threads` threads
