@@ -89,8 +89,9 @@ class CliTest : public foldlab::testing::TempDirTest {
 TEST_F(CliTest, SolveJsonHasEveryKeyAndAConsistentSolution) {
   const json j = solve_json({"--preset", kH900});
   ASSERT_TRUE(j.is_object());
-  for (const char* key : {"method", "regime", "message", "n", "Q", "Q7", "z_max_mm", "a_mm", "l_mm",
-                          "iterations", "residual_length", "residual_height"}) {
+  for (const char* key :
+       {"method", "regime", "message", "n", "Q", "Q7", "z_max_mm", "a_mm", "l_mm", "iterations",
+        "residual_length", "residual_height", "B_Nmm", "c_b_mm", "rounded_folds"}) {
     EXPECT_TRUE(j.contains(key)) << key;
   }
   EXPECT_EQ(j.at("method"), "paper");
@@ -112,6 +113,13 @@ TEST_F(CliTest, SolveJsonHasEveryKeyAndAConsistentSolution) {
   // The inputs echo the preset file.
   EXPECT_EQ(j.at("inputs").at("height_mm").get<double>(), 900.0);
   EXPECT_EQ(j.at("inputs").at("length_mm").get<double>(), 1400.0);
+  // Table 1's fabric: B = 165 x 0.25³ / (12 x 0.91) N mm, c_b = (B / 1.5e-6)^(1/3) mm.
+  EXPECT_NEAR(j.at("B_Nmm").get<double>(), 0.2360920, 1e-6);
+  EXPECT_NEAR(j.at("c_b_mm").get<double>(), 53.99208, 1e-4);
+  const json& rounded = j.at("rounded_folds");
+  EXPECT_TRUE(rounded.at("rounded").get<bool>());
+  EXPECT_EQ(static_cast<int>(rounded.at("radius_mm").size()), n + 1);
+  EXPECT_LT(rounded.at("z_fold_mm").get<double>(), j.at("z_max_mm").get<double>());
 }
 
 TEST_F(CliTest, ExactMethodSolvesToMachinePrecision) {

@@ -9,6 +9,7 @@
 
 #include "core/geometry/geometry.hpp"
 #include "core/geometry/rounded_folds.hpp"
+#include "core/geometry/scene.hpp"
 #include "core/model/solver.hpp"
 
 namespace foldlab {
@@ -266,6 +267,35 @@ TEST(RoundedFolds, DegenerateCasesStayFinite) {
   ASSERT_TRUE(huge.rounded);
   EXPECT_TRUE(std::isfinite(huge.depth_scale));
   EXPECT_NEAR(CentreFibre(s, p.hanging.height_mm, huge).length_mm(), p.hanging.height_mm, 1e-9);
+}
+
+}  // namespace
+}  // namespace foldlab
+
+namespace foldlab {
+namespace {
+
+TEST(RoundedFolds, SceneDrawsFoldLinesOnTheRoundedGrid) {
+  const Parameters p = chiffon();
+  Scene scene(p);
+  scene.set_grid_resolution(129, 513);
+  const Solution& s = scene.solution();
+  const DeformedGrid reference = deformed_grid_positions(s, p, 129, 513);
+  const DeformedGrid& grid = scene.grid();
+  ASSERT_EQ(grid.positions_mm.size(), reference.positions_mm.size());
+  for (std::size_t v = 0; v < grid.positions_mm.size(); v += 97) {
+    EXPECT_EQ(grid.positions_mm[v], reference.positions_mm[v]) << v;
+  }
+  EXPECT_EQ(grid.sharpest_turn_deg, reference.sharpest_turn_deg);
+  // The lowest fold line meets the grid's bottom row at the centre: both at the rounded depth.
+  const FoldLines& lines = scene.fold_lines();
+  const FoldLine& lowest = lines.lines.front();
+  ASSERT_EQ(lowest.index, 0);
+  const Eigen::Vector3d middle = lowest.points_mm[lowest.points_mm.size() / 2];
+  const Eigen::Vector3f bottom = grid.positions_mm[static_cast<std::size_t>(512 * 129 + 64)];
+  EXPECT_NEAR(middle.y(), bottom.y(), 1e-3);
+  EXPECT_NEAR(middle.z(), bottom.z(), 1e-3);
+  EXPECT_LT(middle.z(), s.z_max_mm * 0.95);
 }
 
 }  // namespace
