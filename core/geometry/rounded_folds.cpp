@@ -13,41 +13,46 @@ namespace {
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
-// A flank runs from one crest down to the next: it drops by D (mm, along y) while it crosses H
-// (mm, along z) from one side of the cloth to the other. Both crests leave it along +y.
+// A flank runs from one crest down to the next: it drops by D = drop_mm (along y) while it crosses
+// H = across_mm (along z) from one side of the cloth to the other. Both crests leave it along +y;
+// rho = radii_mm is the sum of their radii.
 //
 // The largest sum of its two crest radii: when H < D the crests meet with no straight part between
 // them (D² + H² = 2 H rho); when H >= D the flank would turn past horizontal and run upward first,
 // which a fibre pulled down by the weight below it does not do, so the turn stops at 90° (rho = D).
-double radius_sum_limit(double D, double H) {
-  if (H <= 0.0) {
+double radius_sum_limit(double drop_mm, double across_mm) {
+  if (across_mm <= 0.0) {
     return kInfinity;
   }
-  return H >= D ? D : (D * D + H * H) / (2.0 * H);
+  return across_mm >= drop_mm ? drop_mm
+                              : (drop_mm * drop_mm + across_mm * across_mm) / (2.0 * across_mm);
 }
 
 // How far each crest of the flank turns (rad): its straight part leaves the first crest at this
 // angle to +y. Arcs of radii summing to rho and a straight part of length s close the flank when
 // D = rho sin(theta) + s cos(theta) and H = rho (1 - cos(theta)) + s sin(theta); eliminating s
 // gives D sin(theta) - (H - rho) cos(theta) = rho.
-double flank_turn(double D, double H, double rho) {
-  if (rho <= 0.0) {
-    return std::atan2(H, D);
+double flank_turn(double drop_mm, double across_mm, double radii_mm) {
+  if (radii_mm <= 0.0) {
+    return std::atan2(across_mm, drop_mm);
   }
-  const double r = std::hypot(D, H - rho);
-  return std::max(0.0, std::atan2(H - rho, D) + std::asin(std::min(1.0, rho / r)));
+  const double r = std::hypot(drop_mm, across_mm - radii_mm);
+  return std::max(
+      0.0, std::atan2(across_mm - radii_mm, drop_mm) + std::asin(std::min(1.0, radii_mm / r)));
 }
 
 // The straight part's length: the tangent from one crest circle to the other.
-double flank_straight_mm(double D, double H, double rho) {
-  return std::sqrt(std::max(0.0, D * D + H * H - 2.0 * H * rho));
+double flank_straight_mm(double drop_mm, double across_mm, double radii_mm) {
+  return std::sqrt(
+      std::max(0.0, drop_mm * drop_mm + across_mm * across_mm - 2.0 * across_mm * radii_mm));
 }
 
-double flank_length_mm(double D, double H, double rho) {
-  if (rho <= 0.0) {
-    return std::hypot(D, H);
+double flank_length_mm(double drop_mm, double across_mm, double radii_mm) {
+  if (radii_mm <= 0.0) {
+    return std::hypot(drop_mm, across_mm);
   }
-  return rho * flank_turn(D, H, rho) + flank_straight_mm(D, H, rho);
+  return radii_mm * flank_turn(drop_mm, across_mm, radii_mm) +
+         flank_straight_mm(drop_mm, across_mm, radii_mm);
 }
 
 struct Rounder {
@@ -57,10 +62,10 @@ struct Rounder {
   double depth_mm(int i, double depth_scale) const {
     return i == s.n ? s.z_max_mm : depth_scale * s.z_max_mm;
   }
-  double drop_mm(int k) const {  // flank k joins fold k to fold k - 1 below it
+  double flank_drop_mm(int k) const {  // flank k joins fold k to fold k - 1 below it
     return s.a_mm[static_cast<std::size_t>(k - 1)] - s.a_mm[static_cast<std::size_t>(k)];
   }
-  double travel_mm(int k, double depth_scale) const {
+  double flank_across_mm(int k, double depth_scale) const {
     return depth_mm(k, depth_scale) + depth_mm(k - 1, depth_scale);
   }
 
@@ -68,7 +73,7 @@ struct Rounder {
   void radii(double depth_scale, std::vector<double>& out) const {
     out.assign(static_cast<std::size_t>(s.n) + 1, target_radius_mm);
     for (int k = 1; k <= s.n; ++k) {
-      const double half = 0.5 * radius_sum_limit(drop_mm(k), travel_mm(k, depth_scale));
+      const double half = 0.5 * radius_sum_limit(flank_drop_mm(k), flank_across_mm(k, depth_scale));
       for (int i : {k, k - 1}) {
         double& r = out[static_cast<std::size_t>(i)];
         r = std::min(r, half);
@@ -80,9 +85,9 @@ struct Rounder {
     radii(depth_scale, scratch);
     double total = 0.0;
     for (int k = 1; k <= s.n; ++k) {
-      const double rho =
+      const double radii_mm =
           scratch[static_cast<std::size_t>(k)] + scratch[static_cast<std::size_t>(k - 1)];
-      total += flank_length_mm(drop_mm(k), travel_mm(k, depth_scale), rho);
+      total += flank_length_mm(flank_drop_mm(k), flank_across_mm(k, depth_scale), radii_mm);
     }
     return total;
   }
@@ -154,22 +159,24 @@ CentreFibre::CentreFibre(const Solution& s, double height_mm, const FoldRounding
       continue;
     }
     const double sigma = fold_sign(k);  // the upper crest's side; the flank heads for -sigma
-    const double r_upper = rounding.radius_mm[static_cast<std::size_t>(k)];
-    const double r_lower = rounding.radius_mm[static_cast<std::size_t>(k - 1)];
-    const double D = lower.x() - upper.x();
-    const double H = sigma * (upper.y() - lower.y());
-    const double theta = flank_turn(D, H, r_upper + r_lower);
+    const double upper_radius_mm = rounding.radius_mm[static_cast<std::size_t>(k)];
+    const double lower_radius_mm = rounding.radius_mm[static_cast<std::size_t>(k - 1)];
+    const double drop_mm = lower.x() - upper.x();
+    const double across_mm = sigma * (upper.y() - lower.y());
+    const double theta = flank_turn(drop_mm, across_mm, upper_radius_mm + lower_radius_mm);
     const double sin_t = std::sin(theta);
     const double versine = 1.0 - std::cos(theta);
     // Each crest arc turns by theta: it advances R sin(theta) down and R (1 - cos theta) across.
-    const Eigen::Vector2d leave = upper + r_upper * Eigen::Vector2d(sin_t, -sigma * versine);
-    const Eigen::Vector2d arrive = lower - r_lower * Eigen::Vector2d(sin_t, -sigma * versine);
-    if (r_upper > 0.0) {
-      add(upper, r_upper * theta, 0.0, -sigma / r_upper);
+    const Eigen::Vector2d leave =
+        upper + upper_radius_mm * Eigen::Vector2d(sin_t, -sigma * versine);
+    const Eigen::Vector2d arrive =
+        lower - lower_radius_mm * Eigen::Vector2d(sin_t, -sigma * versine);
+    if (upper_radius_mm > 0.0) {
+      add(upper, upper_radius_mm * theta, 0.0, -sigma / upper_radius_mm);
     }
     add(leave, (arrive - leave).norm(), -sigma * theta, 0.0);
-    if (r_lower > 0.0) {
-      add(arrive, r_lower * theta, -sigma * theta, sigma / r_lower);
+    if (lower_radius_mm > 0.0) {
+      add(arrive, lower_radius_mm * theta, -sigma * theta, sigma / lower_radius_mm);
     }
   }
 }
