@@ -625,6 +625,38 @@ TEST_F(CalibrationCli, KAndPAreSavedIntoAPresetThatSolves) {
   EXPECT_EQ(json::parse(solved.out).at("inputs").at("stress_exponent_p").get<double>(), p);
 }
 
+// The K-and-p search's last steps centre the fit in its plateau; the reported plateau must be
+// where the solver itself, row by row, gives the reported score. (These steps once read a freed
+// sweep: AddressSanitizer stopped this very command.)
+TEST_F(CalibrationCli, KAndPPlateauIsWhereTheSolverGivesTheReportedScore) {
+  const json j = run_json({"--data", kPaperCsv.string(), "--fit", "K,p", "--no-held-out"});
+  ASSERT_TRUE(j.is_object());
+  const json& fitted = j.at("fitted");
+  const double K = fitted.at("K").get<double>();
+  const double p = fitted.at("p").get<double>();
+  const double K_low = fitted.at("K_range_at_p")[0].get<double>();
+  const double K_high = fitted.at("K_range_at_p")[1].get<double>();
+  const double p_low = fitted.at("p_range_at_K")[0].get<double>();
+  const double p_high = fitted.at("p_range_at_K")[1].get<double>();
+  EXPECT_LT(K_low, K);
+  EXPECT_LT(K, K_high);
+  EXPECT_LT(p_low, p);
+  EXPECT_LT(p, p_high);
+
+  const std::vector<Measurement> rows = fit_rows_of(load_measurements(kPaperCsv));
+  const Parameters base = default_preset().parameters;
+  const CalibrationScore at_fit = direct_score(rows, base, K, p);
+  EXPECT_EQ(at_fit.n_missed, fitted.at("score").at("n_missed").get<int>());
+  EXPECT_NEAR(at_fit.mean_relative_error,
+              fitted.at("score").at("mean_relative_error").get<double>(), 1e-12);
+  for (const double inside : {p_low + 1e-6, p_high - 1e-6}) {
+    EXPECT_TRUE(same_score(direct_score(rows, base, K, inside), at_fit)) << inside;
+  }
+  for (const double outside : {p_low - 1e-6, p_high + 1e-6}) {
+    EXPECT_FALSE(same_score(direct_score(rows, base, K, outside), at_fit)) << outside;
+  }
+}
+
 TEST_F(CalibrationCli, MalformedDataIsInvalidInputNamingRowAndColumn) {
   const fs::path bad = dir_ / "bad.csv";
   std::ofstream(bad) << "name,t_mm,E_MPa,w_N_per_mm2,h_mm,L_mm,d_mm,n\n"

@@ -271,6 +271,11 @@ const Segment* segment_containing(const std::vector<Segment>& segments, double v
   return segments.empty() ? nullptr : &segments.back();
 }
 
+// Both return a pointer into their argument, which a temporary (a sweep's result passed straight
+// in) would free before the pointer is read: name the sweep's result first.
+const Segment* best_segment(std::vector<Segment>&& segments) = delete;
+const Segment* segment_containing(std::vector<Segment>&& segments, double v) = delete;
+
 // K alone: every plateau along ln K is visited; the widest of the best is taken, at its
 // geometric middle (as docs/calibration.md fixed the default c).
 FittedConstants fit_K(const Fitter& fitter, double p) {
@@ -370,7 +375,8 @@ std::optional<FittedConstants> fit_K_and_p(const Fitter& fitter, const Calibrati
     fit.best_p_min = std::min(fit.best_p_min, c.p);
     fit.best_p_max = std::max(fit.best_p_max, c.p);
     const double u = c.along_K.middle();
-    const Segment* along_p = segment_containing(fitter.sweep_p(u, o.p_min, o.p_max), c.p);
+    const std::vector<Segment> along_p_all = fitter.sweep_p(u, o.p_min, o.p_max);
+    const Segment* along_p = segment_containing(along_p_all, c.p);
     const double per_p = fitter.mean_abs_log_s(u);
     const double r = std::min({c.p * (u - c.along_K.lo), c.p * (c.along_K.hi - u),
                                per_p * (c.p - along_p->lo), per_p * (along_p->hi - c.p)});
@@ -382,17 +388,21 @@ std::optional<FittedConstants> fit_K_and_p(const Fitter& fitter, const Calibrati
   }
   // Centre along p, then along ln K, a few times: each move stays on the same plateau.
   for (int round = 0; round < 3; ++round) {
-    const Segment* along_p = segment_containing(fitter.sweep_p(log_K, o.p_min, o.p_max), p);
+    const std::vector<Segment> along_p_all = fitter.sweep_p(log_K, o.p_min, o.p_max);
+    const Segment* along_p = segment_containing(along_p_all, p);
     const double p_next = std::sqrt(along_p->lo * along_p->hi);
-    const Segment* along_K = segment_containing(fitter.sweep_K(p_next), log_K);
+    const std::vector<Segment> along_K_all = fitter.sweep_K(p_next);
+    const Segment* along_K = segment_containing(along_K_all, log_K);
     if (!same_score(along_K->score, best)) {
       break;
     }
     p = p_next;
     log_K = along_K->middle();
   }
-  const Segment along_K = *segment_containing(fitter.sweep_K(p), log_K);
-  const Segment along_p = *segment_containing(fitter.sweep_p(log_K, o.p_min, o.p_max), p);
+  const std::vector<Segment> along_K_all = fitter.sweep_K(p);
+  const std::vector<Segment> along_p_all = fitter.sweep_p(log_K, o.p_min, o.p_max);
+  const Segment along_K = *segment_containing(along_K_all, log_K);
+  const Segment along_p = *segment_containing(along_p_all, p);
   fit.K = std::exp(log_K);
   fit.p = p;
   fit.K_low = std::exp(along_K.lo);
