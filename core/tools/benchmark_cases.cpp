@@ -161,7 +161,8 @@ double quantile_of(std::vector<double> values, double q) {
     return 0.0;
   }
   std::sort(values.begin(), values.end());
-  const auto index = static_cast<std::size_t>(q * static_cast<double>(values.size() - 1) + 0.5);
+  const auto index =
+      static_cast<std::size_t>(std::lround(q * static_cast<double>(values.size() - 1)));
   return values[std::min(index, values.size() - 1)];
 }
 
@@ -293,6 +294,7 @@ std::vector<TimingSummary> time_methods(const std::vector<std::vector<Parameters
 
   // times[method][case][repeat]
   std::vector<std::vector<std::vector<double>>> times;
+  times.reserve(methods.size());
   for (const std::vector<Parameters>& cases : methods) {
     times.emplace_back(cases.size(), std::vector<double>(static_cast<std::size_t>(repeats)));
   }
