@@ -135,6 +135,7 @@ Solution solve_paper(const Parameters& p) {
   out.regime = u.Q7 ? Regime::wrinkled : Regime::stiff;
   out.iterations = iteration;
   out.hit_iteration_cap = !converged;
+  out.stopped_at_first_iterate = converged && iteration == 1;
   out.n_capped = capped;
   finish(out, u, n, an, z);
   return out;
@@ -483,9 +484,17 @@ std::string describe(const Solution& s, const Parameters& p) {
   if (s.hit_iteration_cap) {
     append(s.method == Method::paper
                ? printf_string("The paper iteration stopped after %.0f iterations without reaching "
-                               "|L'/L - 1| <= %.3g; the last iterate is shown.",
+                               "|L'/L - 1| <= %.3g; the last iterate is shown and its z_max is "
+                               "not a prediction.",
                                s.iterations, p.model.length_tolerance)
                : "The n iteration did not settle; the last n is shown.");
+  }
+  if (s.stopped_at_first_iterate) {
+    append(printf_string(
+        "The paper iteration stopped at its first iterate: the initial guess a_n = 0.01 h already "
+        "meets |L'/L - 1| <= %.3g, so z_max is eq. 9 at that guess, not a prediction (the exact "
+        "method solves eq. 8).",
+        p.model.length_tolerance));
   }
   if (s.n_capped) {
     append(printf_string("Eq. 10 asks for more than %.0f folds; n is capped there.", kMaxWrinkles));

@@ -37,10 +37,13 @@ struct Solution {
   double sag_amplitude_mm = 0.0;   // A(L, l) = sqrt(a_n² + z_max²) that eq. 8 needs
   int iterations = 0;              // paper: iterations of the loop; exact: values of n tried
   bool hit_iteration_cap = false;  // paper: stopped at max_iterations without meeting tolerance
-  bool n_capped = false;           // eq. 10 asked for more than kMaxWrinkles folds
-  std::vector<int> n_cycle;        // exact: the values of n that eq. 10 cycles through
-  double residual_length = 0.0;    // L(eq. 8, closed form)/L - 1 for the reported a_n, z_max
-  double residual_height = 0.0;    // fibre length(eq. 9)/h - 1 for the reported a_i, z_max
+  // Paper: the initial guess already met the tolerance, so eq. 8 never moved a_n and z_max off
+  // their starting values. Like hitting the cap, its z_max is then no prediction.
+  bool stopped_at_first_iterate = false;
+  bool n_capped = false;         // eq. 10 asked for more than kMaxWrinkles folds
+  std::vector<int> n_cycle;      // exact: the values of n that eq. 10 cycles through
+  double residual_length = 0.0;  // L(eq. 8, closed form)/L - 1 for the reported a_n, z_max
+  double residual_height = 0.0;  // fibre length(eq. 9)/h - 1 for the reported a_i, z_max
 };
 
 // Precondition: validate(p) is empty. Never throws for valid input.
