@@ -12,6 +12,7 @@
 #include "app/cli/commands.hpp"
 #include "app/common/inputs.hpp"
 #include "core/analysis/calibration.hpp"
+#include "core/analysis/uncertainty.hpp"
 #include "core/io/io.hpp"
 #include "core/io/measurements.hpp"
 #include "core/io/preset.hpp"
@@ -238,6 +239,7 @@ Command add_calibrate_command(CLI::App& app) {
     std::string fit = "K";
     InputOptions inputs;
     std::string save_preset_path;
+    std::string calibrated_on;
     bool json = false;
     bool no_held_out = false;
   };
@@ -267,6 +269,9 @@ Command add_calibrate_command(CLI::App& app) {
   command->add_option("--save-preset", options->save_preset_path,
                       "write the base preset with the fitted constants (model.load_constant_c, "
                       "model.stress_exponent_p)");
+  command->add_option("--calibrated-on", options->calibrated_on,
+                      "how --save-preset names the data in its calibration record and labels "
+                      "(default: the --data file's name)");
   command->add_flag("--json", options->json, "print JSON instead of tables");
   command->add_flag("--no-held-out", options->no_held_out,
                     "skip leave-one-out and group splits (the in-sample fit only)");
@@ -304,6 +309,11 @@ Command add_calibrate_command(CLI::App& app) {
                           std::string(to_string(base.parameters.model.method)) +
                           " method): in-sample " + summary_text(report.in_sample) +
                           "; leave-one-out " + summary_text(report.leave_one_out) + ".";
+        const std::string data_label =
+            options->calibrated_on.empty()
+                ? std::filesystem::path(options->data_path).filename().string()
+                : options->calibrated_on;
+        out.calibration = calibration_record(report, data_label);
         save_preset(out, options->save_preset_path);
         std::cerr << "foldlab: wrote " << options->save_preset_path << "\n";
       }

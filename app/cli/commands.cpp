@@ -10,6 +10,7 @@
 #include "app/common/inputs.hpp"
 #include "app/common/presets_dir.hpp"
 #include "core/analysis/comparison.hpp"
+#include "core/analysis/uncertainty.hpp"
 #include "core/geometry/geometry.hpp"
 #include "core/geometry/scene.hpp"
 #include "core/io/export.hpp"
@@ -39,14 +40,15 @@ Command add_solve_command(CLI::App& app) {
       const Preset preset = resolve_inputs(options->inputs);
       Scene scene(preset.parameters);
       const Solution& solution = scene.solution();
+      const ModelStanding standing = model_standing(preset.parameters, preset.calibration);
       if (options->json) {
-        nlohmann::json out = solution_to_json(solution, preset.parameters);
+        nlohmann::json out = solution_to_json(solution, preset.parameters, &standing);
         if (options->stats) {
           out["stats"] = scene_stats_to_json(scene);
         }
         std::cout << out.dump(2) << "\n";
       } else {
-        std::cout << solution_table(solution, preset.parameters, preset.name);
+        std::cout << solution_table(solution, preset.parameters, preset.name, &standing);
         if (options->stats) {
           std::cout << "\n" << scene_stats_table(scene);
         }
@@ -241,7 +243,8 @@ int run_default_headless() {
   return guarded([] {
     const Preset& preset = default_preset();
     const Solution solution = solve(preset.parameters);
-    std::cout << solution_table(solution, preset.parameters, preset.name);
+    const ModelStanding standing = model_standing(preset.parameters, preset.calibration);
+    std::cout << solution_table(solution, preset.parameters, preset.name, &standing);
     return kExitOk;
   });
 }

@@ -294,6 +294,7 @@ FittedConstants fit_K(const Fitter& fitter, double p) {
       fit.equally_good_elsewhere += &s != &best;
       fit.best_K_min = std::min(fit.best_K_min, std::exp(s.lo));
       fit.best_K_max = std::max(fit.best_K_max, std::exp(s.hi));
+      fit.equally_good_ends.push_back({std::exp(s.middle()), p});
     }
   }
   return fit;
@@ -366,10 +367,14 @@ std::optional<FittedConstants> fit_K_and_p(const Fitter& fitter, const Calibrati
   double robustness = -kInfinity;
   double log_K = 0.0;
   double p = 1.0;
+  const Candidate* lowest_p = nullptr;
+  const Candidate* highest_p = nullptr;
   for (const Candidate& c : candidates) {
     if (!same_score(c.along_K.score, best)) {
       continue;
     }
+    lowest_p = lowest_p == nullptr || c.p < lowest_p->p ? &c : lowest_p;
+    highest_p = highest_p == nullptr || c.p > highest_p->p ? &c : highest_p;
     fit.best_K_min = std::min(fit.best_K_min, std::exp(c.along_K.lo));
     fit.best_K_max = std::max(fit.best_K_max, std::exp(c.along_K.hi));
     fit.best_p_min = std::min(fit.best_p_min, c.p);
@@ -410,6 +415,9 @@ std::optional<FittedConstants> fit_K_and_p(const Fitter& fitter, const Calibrati
   fit.p_low = along_p.lo;
   fit.p_high = along_p.hi;
   fit.score = fitter.score_at(log_K, p);
+  for (const Candidate* end : {lowest_p, highest_p}) {
+    fit.equally_good_ends.push_back({std::exp(end->along_K.middle()), end->p});
+  }
   return fit;
 }
 

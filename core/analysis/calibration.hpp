@@ -86,6 +86,10 @@ struct FittedConstants {
   double best_K_max = 0.0;
   double best_p_min = 1.0;
   double best_p_max = 1.0;
+  // Points at the ends of the set with the best score, inside it: the smallest and the largest p
+  // reached (K and p), or each equally good band of K (K alone). Predictions there are what the
+  // data cannot tell apart from the fit's.
+  std::vector<Eq7Constants> equally_good_ends;
 };
 
 // Returns false to cancel. `fraction_done` is in [0, 1].

@@ -172,6 +172,58 @@ void read_section(Reader& r, const json& j, const std::string& section, Paramete
   }
 }
 
+// [[K, p], ...] with K > 0 and p > 0.
+std::vector<Eq7Constants> read_constants_list(Reader& r, const json& list,
+                                              const std::string& pointer) {
+  std::vector<Eq7Constants> out;
+  if (!list.is_array()) {
+    r.problem(pointer, "expected an array of [K, p] pairs, got " + type_name(list));
+    return out;
+  }
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    const json& pair = list[i];
+    if (!pair.is_array() || pair.size() != 2 || !pair[0].is_number() || !pair[1].is_number() ||
+        !(pair[0].get<double>() > 0.0) || !(pair[1].get<double>() > 0.0)) {
+      r.problem(pointer + "/" + std::to_string(i),
+                "expected [K, p] with K > 0 and p > 0, got " + pair.dump());
+      continue;
+    }
+    out.push_back({pair[0].get<double>(), pair[1].get<double>()});
+  }
+  return out;
+}
+
+std::optional<CalibrationRecord> read_calibration(Reader& r, const json& c,
+                                                  std::vector<std::string>& problems) {
+  const std::string at = "/calibration";
+  if (!r.object(
+          c, at,
+          {"calibrated_on", "method", "K", "p", "fit_rows", "equally_good", "leave_one_out"})) {
+    return std::nullopt;
+  }
+  const std::size_t before = problems.size();
+  CalibrationRecord record;
+  r.text(c, at, "calibrated_on", record.calibrated_on, true);
+  std::string method;
+  r.text(c, at, "method", method, true);
+  if (!method.empty() && !parse_method(method, record.method)) {
+    r.problem(at + "/method", "\"" + method + "\" is not one of: paper, exact");
+  }
+  r.number(c, at, "K", record.fitted.K, true);
+  r.number(c, at, "p", record.fitted.p, true);
+  r.integer(c, at, "fit_rows", record.fit_rows);
+  if (c.contains("equally_good")) {
+    record.equally_good = read_constants_list(r, c.at("equally_good"), at + "/equally_good");
+  }
+  if (c.contains("leave_one_out")) {
+    record.leave_one_out = read_constants_list(r, c.at("leave_one_out"), at + "/leave_one_out");
+  }
+  if (problems.size() == before && !(record.fitted.K > 0.0 && record.fitted.p > 0.0)) {
+    r.problem(at, "K and p must be > 0");
+  }
+  return problems.size() == before ? std::optional(record) : std::nullopt;
+}
+
 }  // namespace
 
 Preset preset_from_json(const json& j, const std::string& origin) {
@@ -180,7 +232,7 @@ Preset preset_from_json(const json& j, const std::string& origin) {
   Preset preset;
   if (!r.object(j, "",
                 {"foldlab_preset", "name", "description", "source", "fabric", "hanging", "model",
-                 "shape", "published"})) {
+                 "shape", "published", "calibration"})) {
     throw PresetError(join_lines(problems));
   }
   if (!j.contains("foldlab_preset")) {
@@ -234,6 +286,9 @@ Preset preset_from_json(const json& j, const std::string& origin) {
       }
     }
   }
+  if (j.contains("calibration")) {
+    preset.calibration = read_calibration(r, j.at("calibration"), problems);
+  }
   if (problems.empty()) {
     for (const ValidationIssue& issue : validate(p)) {
       r.problem(json_pointer_for(issue.field), issue.message);
@@ -286,6 +341,22 @@ json preset_to_json(const Preset& preset) {
     published["Q"] = *preset.published.Q;
   if (!published.empty()) {
     j["published"] = published;
+  }
+  if (const auto& c = preset.calibration) {
+    auto pairs = [](const std::vector<Eq7Constants>& list) {
+      json out = json::array();
+      for (const Eq7Constants& k : list) {
+        out.push_back({k.K, k.p});
+      }
+      return out;
+    };
+    j["calibration"] = {{"calibrated_on", c->calibrated_on},
+                        {"method", to_string(c->method)},
+                        {"K", c->fitted.K},
+                        {"p", c->fitted.p},
+                        {"fit_rows", c->fit_rows},
+                        {"equally_good", pairs(c->equally_good)},
+                        {"leave_one_out", pairs(c->leave_one_out)}};
   }
   return j;
 }

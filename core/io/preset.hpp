@@ -5,6 +5,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json_fwd.hpp>
 
@@ -21,12 +22,29 @@ struct PublishedResult {
   std::optional<double> Q;
 };
 
+// Where a preset's eq. 7 constants come from, with what else fitted the same data as well: the
+// prediction ranges (core/analysis/uncertainty.hpp) evaluate these stored constants rather than
+// calibrating again at every solve.
+struct CalibrationRecord {
+  std::string calibrated_on;  // the data, for labels: "Conci's Tables 1–2"
+  Method method = Method::exact;
+  Eq7Constants fitted;  // the constants the preset was given
+  int fit_rows = 0;
+  // Constants at the ends of the set that scores as well as `fitted` on the same data.
+  std::vector<Eq7Constants> equally_good;
+  // The fits on the data without one row each (empty when there was only one row).
+  std::vector<Eq7Constants> leave_one_out;
+
+  bool operator==(const CalibrationRecord&) const = default;
+};
+
 struct Preset {
   std::string name;
   std::string description;
   std::string source;  // where the numbers come from
   Parameters parameters;
   PublishedResult published;
+  std::optional<CalibrationRecord> calibration;
 };
 
 // A preset that cannot be read: the message names the file, the key (as a JSON pointer) and the

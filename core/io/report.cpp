@@ -15,18 +15,24 @@ namespace {
 using detail::printf_string;
 
 std::string line(const char* label, const char* symbol, double value, const char* unit,
-                 const char* format = "%.6g") {
+                 const char* format = "%.6g", const std::string& after = "") {
   char number[64];
   std::snprintf(number, sizeof number, format, value);
   char out[160];
-  std::snprintf(out, sizeof out, "  %-34s %-6s %14s%s%s\n", label, symbol, number, *unit ? " " : "",
+  std::snprintf(out, sizeof out, "  %-34s %-6s %14s%s%s", label, symbol, number, *unit ? " " : "",
                 unit);
-  return out;
+  return out + after + "\n";
+}
+
+// " (6–8)"; " (7–7)" says that the range was computed and is a single value.
+std::string range_text(double lo, double hi, const char* format) {
+  return " (" + detail::printf_string(format, lo) + "–" + detail::printf_string(format, hi) + ")";
 }
 
 }  // namespace
 
-nlohmann::json solution_to_json(const Solution& s, const Parameters& p) {
+nlohmann::json solution_to_json(const Solution& s, const Parameters& p,
+                                const ModelStanding* standing) {
   nlohmann::json j = {
       {"method", to_string(s.method)},
       {"regime", to_string(s.regime)},
@@ -41,6 +47,7 @@ nlohmann::json solution_to_json(const Solution& s, const Parameters& p) {
       {"A_mm", s.sag_amplitude_mm},
       {"iterations", s.iterations},
       {"hit_iteration_cap", s.hit_iteration_cap},
+      {"stopped_at_first_iterate", s.stopped_at_first_iterate},
       {"n_capped", s.n_capped},
       {"n_cycle", s.n_cycle},
       {"residual_length", s.residual_length},
@@ -54,6 +61,18 @@ nlohmann::json solution_to_json(const Solution& s, const Parameters& p) {
       {"depth_scale", rounding.depth_scale}, {"z_fold_mm", rounding.depth_scale * s.z_max_mm},
       {"length_kept", rounding.length_kept},
   };
+  if (standing != nullptr) {
+    const auto& r = standing->range;
+    auto pair = [&r](auto lo, auto hi) {
+      return r ? nlohmann::json::array({*r.*lo, *r.*hi}) : nlohmann::json(nullptr);
+    };
+    j["form"] = standing->form;
+    j["form_label"] = standing->label;
+    j["n_range"] = pair(&PredictionRange::n_min, &PredictionRange::n_max);
+    j["z_max_range_mm"] = pair(&PredictionRange::z_max_min_mm, &PredictionRange::z_max_max_mm);
+    j["Q_range"] = pair(&PredictionRange::Q_min, &PredictionRange::Q_max);
+    j["range_basis"] = standing->range_basis;
+  }
   nlohmann::json& inputs = j["inputs"];
   for (const InputSpec& spec : input_table()) {
     // The preset's key for what a preset stores, the --set key for K (derived from c and nu).
@@ -68,7 +87,8 @@ nlohmann::json solution_to_json(const Solution& s, const Parameters& p) {
   return j;
 }
 
-std::string solution_table(const Solution& s, const Parameters& p, const std::string& preset_name) {
+std::string solution_table(const Solution& s, const Parameters& p, const std::string& preset_name,
+                           const ModelStanding* standing) {
   std::string out = "FoldLab: " + std::string(to_string(s.method)) + " method";
   if (!preset_name.empty()) {
     out += ", preset \"" + preset_name + "\"";
@@ -85,20 +105,36 @@ std::string solution_table(const Solution& s, const Parameters& p, const std::st
   }
   out += "  span rule l = " + std::string(to_string(p.model.span_rule)) +
          ", Int[] of eq. 10 = " + std::string(to_string(p.model.int_rounding)) + "\n";
+  const PredictionRange* range = nullptr;
+  if (standing != nullptr) {
+    out += "  form of eq. 7: " + standing->form + ", " + standing->label + "\n";
+    range = standing->range ? &*standing->range : nullptr;
+  }
+  auto in_range = [range](auto lo, auto hi, const char* format) {
+    return range != nullptr ? range_text(static_cast<double>(range->*lo),
+                                         static_cast<double>(range->*hi), format)
+                            : std::string();
+  };
 
   out += "\nResult: " + std::string(to_string(s.regime)) + "\n";
   if (const std::string message = describe(s, p); !message.empty()) {
     out += "  " + message + "\n";
   }
-  out += line("number of wrinkles", "n", s.n, "", "%.0f");
-  out += line("amplitude ratio (a_0/a_n)^(1/n)", "Q", s.Q, "");
+  out += line("number of wrinkles", "n", s.n, "", "%.0f",
+              in_range(&PredictionRange::n_min, &PredictionRange::n_max, "%.0f"));
+  out += line("amplitude ratio (a_0/a_n)^(1/n)", "Q", s.Q, "", "%.6g",
+              in_range(&PredictionRange::Q_min, &PredictionRange::Q_max, "%.3g"));
   if (s.Q7) {
     out += line("root of eq. 7", "Q7", *s.Q7, "");
   } else {
     out += "  root of eq. 7                      Q7               none (s >= 1)\n";
   }
   out += line("stress ratio of eq. 7", "s", s.stress_ratio, "");
-  out += line("out-of-plane depth", "z_max", s.z_max_mm, "mm", "%.2f");
+  out += line("out-of-plane depth", "z_max", s.z_max_mm, "mm", "%.2f",
+              in_range(&PredictionRange::z_max_min_mm, &PredictionRange::z_max_max_mm, "%.1f"));
+  if (standing != nullptr) {
+    out += "  range: " + standing->range_basis + "\n";
+  }
   out += line("span between supports", "l", s.span_mm, "mm", "%.2f");
   out += line("sag of the upper edge", "A", s.sag_amplitude_mm, "mm", "%.2f");
   out += line("bending stiffness Et^3/12(1-nu^2)", "B", bending_stiffness_Nmm(p.fabric), "N mm");

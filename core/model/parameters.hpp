@@ -10,9 +10,10 @@
 
 namespace foldlab {
 
-// c calibrated on Tables 1-2 of the paper with nu = 0.3, so K = c / (1 - nu²) = 29.56: the middle
-// (geometric mean) of the widest band of c that gets the most rows' n exactly
-// (docs/calibration.md).
+// c of eq. 7 as printed (p = 1), calibrated on Tables 1-2 of the paper with nu = 0.3, so
+// K = c / (1 - nu²) = 29.56: the middle (geometric mean) of the widest band of c that gets the most
+// rows' n exactly (docs/calibration.md). The solver's neutral default and the paper presets'
+// constant; the default preset uses the calibrated form s -> s^p (docs/default-model.md).
 inline constexpr double kCalibratedLoadConstantC = 26.9;
 inline constexpr double kDefaultPoissonRatio = 0.3;
 
@@ -68,6 +69,14 @@ struct Parameters {
   Shape shape;  // how the solution is laid out; never an input of the solver
 
   bool operator==(const Parameters&) const = default;
+};
+
+// The constants of eq. 7 as a calibration sees them: K = c / (1 - nu²) and the exponent p.
+struct Eq7Constants {
+  double K = 0.0;
+  double p = 1.0;
+
+  bool operator==(const Eq7Constants&) const = default;
 };
 
 // K = c / (1 - nu²): the only combination of c and nu that eq. 7 sees.
