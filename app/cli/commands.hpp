@@ -27,6 +27,8 @@ Command add_compare_command(CLI::App& app);
 Command add_sweep_command(CLI::App& app);
 // Fits eq. 7's constants to measurements (calibrate.cpp).
 Command add_calibrate_command(CLI::App& app);
+// Folds measured on a real cloth to n, Q and a measurements row (measure.cpp).
+Command add_measure_command(CLI::App& app);
 // Run time against error (bench.cpp) and the numerical stress test (stress.cpp).
 Command add_bench_command(CLI::App& app);
 Command add_stress_command(CLI::App& app);

@@ -546,6 +546,68 @@ MeasurementSet load_measurements(const std::filesystem::path& path) {
   return measurements_from_text(text, path.string(), path.extension().string());
 }
 
+void append_measurement(const std::filesystem::path& path, const Measurement& row) {
+  const std::string origin = path.string();
+  std::string text;
+  std::error_code error;
+  const bool exists = std::filesystem::exists(path, error);
+  MeasurementSet set;
+  if (exists) {
+    try {
+      text = read_text_file(path);
+    } catch (const ReadError& e) {
+      throw MeasurementError(e.what());
+    }
+    set = measurements_from_text(text, origin, path.extension().string());
+  }
+  std::string out;
+  const bool is_json = path.extension() == ".json" || (exists && trim(text).starts_with("{"));
+  if (is_json || !exists) {
+    set.rows.push_back(row);
+    out = is_json ? measurements_to_json(set).dump(2) + "\n" : measurements_to_csv(set);
+  } else {
+    // Append in the file's own column order, so that its comments and layout stay as they are.
+    std::vector<std::string> header;
+    std::istringstream lines(text);
+    for (std::string line; header.empty() && std::getline(lines, line);) {
+      if (!line.empty() && line.back() == '\r') {
+        line.pop_back();
+      }
+      if (line.rfind("\xEF\xBB\xBF", 0) == 0) {
+        line.erase(0, 3);
+      }
+      const std::string_view content = trim(line);
+      if (!content.empty() && content.front() != '#') {
+        split_csv_line(line, header);
+      }
+    }
+    std::vector<std::string> cells(header.size());
+    std::vector<std::string> problems;
+    for (auto& [column, value] : csv_cells(row)) {
+      const auto at = std::find(header.begin(), header.end(), column);
+      if (at != header.end()) {
+        cells[static_cast<std::size_t>(at - header.begin())] = std::move(value);
+      } else if (!value.empty()) {
+        problems.push_back(origin + ": no column " + std::string(column) + " for the value " +
+                           value + " (add the column, or append to a new file)");
+      }
+    }
+    if (!problems.empty()) {
+      throw MeasurementError(detail::join_lines(problems));
+    }
+    out = text;
+    if (!out.empty() && out.back() != '\n') {
+      out += '\n';
+    }
+    out += detail::join(cells, ",") + "\n";
+  }
+  try {
+    write_file_atomically(path, out);
+  } catch (const WriteError& e) {
+    throw MeasurementError(e.what());
+  }
+}
+
 std::string measurements_to_csv(const MeasurementSet& set) {
   std::string out;
   for (const auto& [label, text] :

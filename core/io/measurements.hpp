@@ -74,6 +74,12 @@ MeasurementSet load_measurements(const std::filesystem::path& path);
 std::string measurements_to_csv(const MeasurementSet& set);
 nlohmann::json measurements_to_json(const MeasurementSet& set);
 
+// Adds one row to a measurements file, creating a CSV file with its header when there is none. An
+// existing file must read as it is (so the result is a file `calibrate` reads) and keeps its
+// format, comments and column order; a row value with no column there is refused. Throws
+// MeasurementError (the file's problems, or a write error).
+void append_measurement(const std::filesystem::path& path, const Measurement& row);
+
 // `base` with the measured fabric and hanging put in (its model settings and Poisson ratio kept).
 Parameters parameters_for(const Measurement& row, const Parameters& base);
 

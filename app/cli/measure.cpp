@@ -1,0 +1,219 @@
+// `foldlab measure`: folds measured on a real cloth (depths, or points clicked on a photo) to n
+// and Q, and a row of the measurements file that `foldlab calibrate` fits.
+#include <cmath>
+#include <filesystem>
+#include <iostream>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <stb_image.h>
+#include <nlohmann/json.hpp>
+
+#include "app/cli/commands.hpp"
+#include "core/analysis/fold_measurement.hpp"
+#include "core/io/measurements.hpp"
+#include "core/model/settings.hpp"
+#include "core/model/text_format.hpp"
+
+namespace foldlab::cli {
+namespace {
+
+using detail::printf_string;
+
+// "A0,A1,..." into numbers; InputError naming the option otherwise.
+std::vector<double> number_list(const std::string& option, const std::string& text,
+                                std::size_t at_least, std::size_t exactly = 0) {
+  std::vector<double> out;
+  std::size_t start = 0;
+  while (true) {
+    const std::size_t comma = text.find(',', start);
+    const std::string item = text.substr(start, comma - start);
+    const std::optional<double> value = parse_number(item);
+    if (!value) {
+      throw InputError(option + " " + text + ": \"" + item +
+                       "\" is not a number (give numbers separated by commas)");
+    }
+    out.push_back(*value);
+    if (comma == std::string::npos) {
+      break;
+    }
+    start = comma + 1;
+  }
+  if (exactly != 0 && out.size() != exactly) {
+    throw InputError(option + " " + text + ": expected " + std::to_string(exactly) +
+                     " numbers, got " + std::to_string(out.size()));
+  }
+  if (out.size() < at_least) {
+    throw InputError(option + " " + text + ": expected at least " + std::to_string(at_least) +
+                     " numbers, got " + std::to_string(out.size()));
+  }
+  return out;
+}
+
+// The photo's size in pixels; InputError when it is not an image stb reads (PNG, JPEG, ...).
+std::pair<int, int> photo_size(const std::string& path) {
+  int width = 0;
+  int height = 0;
+  int channels = 0;
+  if (stbi_info(path.c_str(), &width, &height, &channels) == 0) {
+    const char* reason = stbi_failure_reason();
+    throw InputError("--photo " + path + ": cannot read the image (" +
+                     (reason != nullptr ? std::string(reason) : std::string("unknown format")) +
+                     "; PNG or JPEG)");
+  }
+  return {width, height};
+}
+
+void check_inside(const std::string& option, const std::vector<double>& values, bool x_and_y,
+                  std::pair<int, int> size) {
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    const bool is_x = x_and_y && i % 2 == 0;
+    const double limit = is_x ? size.first : size.second;
+    if (!(values[i] >= 0.0 && values[i] <= limit)) {
+      throw InputError(option + ": " + (is_x ? "x" : "y") + " = " +
+                       detail::shortest_number(values[i]) + " px lies outside the photo (" +
+                       std::to_string(size.first) + " x " + std::to_string(size.second) + " px)");
+    }
+  }
+}
+
+std::string number_text(const std::vector<double>& values) {
+  std::vector<std::string> items;
+  for (double v : values) {
+    items.push_back(printf_string("%.4g", v));
+  }
+  return detail::join_comma(items);
+}
+
+}  // namespace
+
+Command add_measure_command(CLI::App& app) {
+  struct Options {
+    std::string preset_path;
+    std::vector<std::string> assignments;
+    std::string depths_mm;
+    std::string photo;
+    std::string supports_px;
+    std::string folds_px;
+    std::optional<double> z_max_mm;
+    std::string name;
+    std::string append_path;
+    bool json = false;
+  };
+  auto options = std::make_shared<Options>();
+  CLI::App* command = app.add_subcommand(
+      "measure",
+      "n and Q of folds measured on a real cloth (a least-squares fit of ln a_i against i), and "
+      "the measurements row that `foldlab calibrate --data` reads");
+  command->add_option("--preset", options->preset_path,
+                      "the cloth's preset: its fabric and hanging go into the row, its span l "
+                      "scales a photo (default: the built-in preset)");
+  command
+      ->add_option("--set", options->assignments,
+                   "override an input of the cloth, KEY=VALUE (see `foldlab solve --help`)")
+      ->type_name("KEY=VALUE");
+  command->add_option("--depths-mm", options->depths_mm,
+                      "the folds' depths below the supports' line at the centre, lowest first "
+                      "(a_0, a_1, ..., a_n in mm)");
+  command->add_option("--photo", options->photo,
+                      "a front photo of the hanging cloth (PNG or JPEG) that the pixels refer to");
+  command->add_option("--supports-px", options->supports_px,
+                      "the two supports in the photo, X1,Y1,X2,Y2 (pixels, y downward): their "
+                      "distance is the span l");
+  command->add_option("--folds-px", options->folds_px,
+                      "the pixel rows where the folds cross the centre line, lowest first");
+  command->add_option("--z-max-mm", options->z_max_mm,
+                      "the largest out-of-plane depth, if measured (a front photo does not show "
+                      "it)");
+  command->add_option("--name", options->name, "a label for the row");
+  command->add_option("--append", options->append_path,
+                      "add the row to this measurements file (created with its header if absent)");
+  command->add_flag("--json", options->json, "print JSON instead of text");
+  return [options] {
+    return guarded([&] {
+      const Options& o = *options;
+      const bool by_depth = !o.depths_mm.empty();
+      const bool by_photo = !o.photo.empty() || !o.supports_px.empty() || !o.folds_px.empty();
+      if (by_depth == by_photo) {
+        throw InputError(
+            "measure needs either --depths-mm A0,A1,... or --photo FILE --supports-px "
+            "X1,Y1,X2,Y2 --folds-px Y0,Y1,..., not both");
+      }
+      if (by_photo) {
+        for (const auto& [option, value] :
+             {std::pair{"--photo", &o.photo}, std::pair{"--supports-px", &o.supports_px},
+              std::pair{"--folds-px", &o.folds_px}}) {
+          if (value->empty()) {
+            throw InputError(std::string(option) +
+                             " is missing: a photo needs --photo, --supports-px and --folds-px");
+          }
+        }
+      }
+      if (o.z_max_mm && !(*o.z_max_mm >= 0.0 && std::isfinite(*o.z_max_mm))) {
+        throw InputError("--z-max-mm " + detail::shortest_number(*o.z_max_mm) +
+                         ": an out-of-plane depth is a finite number >= 0");
+      }
+      const Preset preset = resolve_inputs({o.preset_path, o.assignments, ""});
+      const Parameters& p = preset.parameters;
+      std::vector<double> depths;
+      try {
+        if (by_depth) {
+          depths = number_list("--depths-mm", o.depths_mm, 1);
+        } else {
+          const std::vector<double> supports = number_list("--supports-px", o.supports_px, 4, 4);
+          const std::vector<double> folds = number_list("--folds-px", o.folds_px, 1);
+          const std::pair<int, int> size = photo_size(o.photo);
+          check_inside("--supports-px", supports, true, size);
+          check_inside("--folds-px", folds, false, size);
+          depths = depths_from_pixels({supports[0], supports[1]}, {supports[2], supports[3]}, folds,
+                                      span_mm(p));
+        }
+      } catch (const FoldMeasurementError& e) {
+        throw InputError("--" + e.input() + (e.input() == "depths" ? "-mm" : "-px") + ": " +
+                         e.what());
+      }
+      FoldMeasurement folds;
+      try {
+        folds = measure_folds(depths);
+      } catch (const FoldMeasurementError& e) {
+        throw InputError(std::string(by_depth ? "--depths-mm" : "--folds-px") + ": " + e.what());
+      }
+      const Measurement row = measurement_row(p, folds, o.z_max_mm, o.name);
+      if (!o.append_path.empty()) {
+        try {
+          append_measurement(o.append_path, row);
+        } catch (const MeasurementError& e) {
+          throw InputError(std::string("--append: ") + e.what());
+        }
+      }
+      MeasurementSet one;
+      one.rows.push_back(row);
+      const std::string row_csv = measurements_to_csv(one);
+      if (o.json) {
+        nlohmann::json out = {
+            {"n", folds.n},
+            {"Q", folds.Q},
+            {"a_mm", folds.a_mm},
+            {"fit_residual", folds.fit_residual},
+            {"z_max_mm", o.z_max_mm ? nlohmann::json(*o.z_max_mm) : nullptr},
+            {"row", measurements_to_json(one)["rows"][0]},
+            {"appended_to",
+             o.append_path.empty() ? nlohmann::json(nullptr) : nlohmann::json(o.append_path)}};
+        std::cout << out.dump(2) << "\n";
+      } else {
+        std::cout << "n = " << folds.n << "\nQ = " << printf_string("%.4g", folds.Q)
+                  << "\na_mm = " << number_text(folds.a_mm)
+                  << "\nfit_residual = " << printf_string("%.3g", folds.fit_residual)
+                  << " (rms of ln a_i about the fitted line)\n";
+        std::cout << (o.append_path.empty() ? "row (not appended: no --append):\n"
+                                            : "row appended to " + o.append_path + ":\n")
+                  << row_csv;
+      }
+      return kExitOk;
+    });
+  };
+}
+
+}  // namespace foldlab::cli
