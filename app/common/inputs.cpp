@@ -33,8 +33,10 @@ Preset resolve_inputs(const InputOptions& options) {
 }
 
 void add_input_options(CLI::App& command, InputOptions& options) {
-  command.add_option("--preset", options.preset_path,
-                     "preset JSON file (default: the built-in Table 1, h = 1400 mm preset)");
+  command.add_option(
+      "--preset", options.preset_path,
+      "preset JSON file (default: the built-in presets/default.json, eq. 7 calibrated on "
+      "Conci's Tables 1–2)");
   std::string keys;
   for (const InputSpec& spec : input_table()) {
     keys += "\n    " + input_label(spec) + ": " + std::string(spec.help);
