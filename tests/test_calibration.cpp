@@ -33,6 +33,13 @@ const fs::path kPresetsDir = FOLDLAB_PRESETS_DIR;
 const fs::path kPaperCsv = kDataDir / "paper-measurements.csv";
 const fs::path kPaperJson = kDataDir / "paper-measurements.json";
 
+// The paper's form of eq. 7 with the paper method on the case of its Fig. 5 (Table 1,
+// h = 1400 mm): the base the calibration's own figures are stated against.
+const Preset& paper_preset() {
+  static const Preset preset = load_preset(kPresetsDir / "paper-table1-h1400.json");
+  return preset;
+}
+
 bool contains(const std::string& haystack, const std::string& needle) {
   return haystack.find(needle) != std::string::npos;
 }
@@ -134,13 +141,13 @@ TEST(CalibrationLoss, NComesFirstThenFarMissesThenErrors) {
 
 // ---- eq. 7's exponent p -------------------------------------------------------------------------
 
-TEST(CalibrationExponent, PaperFormIsTheDefaultEverywhere) {
+TEST(CalibrationExponent, PaperPresetsKeepThePapersForm) {
   EXPECT_EQ(Parameters{}.model.stress_exponent_p, 1.0);
-  EXPECT_EQ(default_preset().parameters.model.stress_exponent_p, 1.0);
-  EXPECT_EQ(model_form(default_preset().parameters.model), ModelForm::paper);
+  EXPECT_EQ(paper_preset().parameters.model.stress_exponent_p, 1.0);
+  EXPECT_EQ(model_form(paper_preset().parameters.model), ModelForm::paper);
   // docs/calibration.md's comparison table (written before p existed): Table 1, h = 1400 mm, paper
   // method.
-  const Solution s = solve(default_preset().parameters);
+  const Solution s = solve(paper_preset().parameters);
   EXPECT_EQ(s.n, 8);
   EXPECT_NEAR(s.z_max_mm, 43.4, 0.05);
 }
@@ -148,7 +155,7 @@ TEST(CalibrationExponent, PaperFormIsTheDefaultEverywhere) {
 // What makes the search's tables valid: K and p reach the solver only as eq. 7's s^p, so (K, p)
 // and the K' with K' g = (K g)^p at p = 1 give the same prediction.
 TEST(CalibrationExponent, KAndPEnterOnlyAsSToThePowerP) {
-  const Parameters base = default_preset().parameters;
+  const Parameters base = paper_preset().parameters;
   for (Method method : {Method::paper, Method::exact}) {
     for (const auto& [h, K, p] : {std::tuple{900.0, 1.37, 0.51}, std::tuple{2350.0, 12.0, 0.8},
                                   std::tuple{1400.0, 300.0, 1.3}}) {
@@ -170,7 +177,7 @@ TEST(CalibrationExponent, KAndPEnterOnlyAsSToThePowerP) {
 }
 
 TEST(CalibrationExponent, IsAPresetFieldAndASettingWithARange) {
-  Preset preset = default_preset();
+  Preset preset = paper_preset();
   preset.parameters.model.stress_exponent_p = 0.5097;
   const Preset back = preset_from_json(preset_to_json(preset), "<round trip>");
   EXPECT_EQ(back.parameters.model.stress_exponent_p, 0.5097);
@@ -185,7 +192,7 @@ TEST(CalibrationExponent, IsAPresetFieldAndASettingWithARange) {
     ASSERT_EQ(issues.size(), 1u) << bad;
     EXPECT_EQ(issues[0].field, "p");
   }
-  json j = preset_to_json(default_preset());
+  json j = preset_to_json(paper_preset());
   j["model"]["stress_exponent_p"] = 0;
   try {
     preset_from_json(j, "x.json");
@@ -224,7 +231,7 @@ std::vector<Measurement> synthetic_rows(const Parameters& base, double K, double
 }
 
 TEST(CalibrationSearch, FindsAPlantedKOnSyntheticData) {
-  const Parameters base = default_preset().parameters;
+  const Parameters base = paper_preset().parameters;
   const double planted_K = 40.0;
   const std::vector<Measurement> rows = synthetic_rows(base, planted_K, 1.0);
   for (const Measurement& m : rows) {
@@ -244,7 +251,7 @@ TEST(CalibrationSearch, FindsAPlantedKOnSyntheticData) {
 }
 
 TEST(CalibrationSearch, FindsAPlantedKAndPOffTheGrid) {
-  const Parameters base = default_preset().parameters;
+  const Parameters base = paper_preset().parameters;
   const double planted_K = 12.0;
   const double planted_p = 0.737;  // between the coarse grid's p values (step 0.02)
   const std::vector<Measurement> rows = synthetic_rows(base, planted_K, planted_p);
@@ -274,7 +281,7 @@ TEST(CalibrationSearch, FindsAPlantedKAndPOffTheGrid) {
 TEST(CalibrationSearch, PlateauEndsAreWhereTheRealScoreChanges) {
   const MeasurementSet paper = load_measurements(kPaperCsv);
   const std::vector<Measurement> rows = fit_rows_of(paper);
-  const Parameters base = default_preset().parameters;
+  const Parameters base = paper_preset().parameters;
   for (FitConstants mode : {FitConstants::K, FitConstants::K_and_p}) {
     SCOPED_TRACE(std::string(to_string(mode)));
     CalibrationOptions options;
@@ -301,7 +308,7 @@ TEST(CalibrationSearch, PlateauEndsAreWhereTheRealScoreChanges) {
 // include p = 1, so they can only do as well or better in-sample.
 TEST(CalibrationSearch, PaperTablesReproduceReadmeCalibration) {
   const MeasurementSet paper = load_measurements(kPaperCsv);
-  const Parameters base = default_preset().parameters;
+  const Parameters base = paper_preset().parameters;
   CalibrationOptions k_only;
   k_only.held_out = false;
   const CalibrationReport k = calibrate(paper, base, k_only);
@@ -321,7 +328,7 @@ TEST(CalibrationSearch, PaperTablesReproduceReadmeCalibration) {
 
 TEST(CalibrationSearch, HeldOutFiguresComeFromFitsThatNeverSawTheRow) {
   const MeasurementSet paper = load_measurements(kPaperCsv);
-  const Parameters base = default_preset().parameters;
+  const Parameters base = paper_preset().parameters;
   CalibrationOptions options;
   options.tabulation_step_decades = 0.004;  // coarser than the default, to keep the test quick
   const CalibrationReport r = calibrate(paper, base, options);
@@ -352,7 +359,7 @@ TEST(CalibrationSearch, HeldOutFiguresComeFromFitsThatNeverSawTheRow) {
 
 TEST(CalibrationSearch, ReportsProgressAndCanBeCancelled) {
   const MeasurementSet paper = load_measurements(kPaperCsv);
-  const Parameters base = default_preset().parameters;
+  const Parameters base = paper_preset().parameters;
   std::vector<double> fractions;
   const CalibrationReport done = calibrate(paper, base, CalibrationOptions{}, [&](double f) {
     fractions.push_back(f);
@@ -589,8 +596,11 @@ TEST_F(CalibrationCli, PrintsPerRowTotalsHeldOutAndThePlateau) {
   EXPECT_TRUE(r.err.empty()) << r.err;
 }
 
+// README's figures are those of the paper's form and method: the paper preset is the base (the
+// built-in default is already calibrated).
 TEST_F(CalibrationCli, KAloneOnTheShippedFileMatchesReadme) {
-  const json j = run_json({"--data", kPaperCsv.string()});
+  const std::string paper = (kPresetsDir / "paper-table1-h1400.json").string();
+  const json j = run_json({"--data", kPaperCsv.string(), "--preset", paper});
   ASSERT_TRUE(j.is_object());
   EXPECT_EQ(j.at("fit"), "K");
   EXPECT_EQ(j.at("rows").size(), 7u);
@@ -601,7 +611,7 @@ TEST_F(CalibrationCli, KAloneOnTheShippedFileMatchesReadme) {
   EXPECT_EQ(j.at("totals").at("in_sample").at("n_within_one"), 5);
   EXPECT_EQ(j.at("totals").at("leave_one_out").at("rows_with_n"), 6);
   // The JSON twin of the data file gives the same fit.
-  const json twin = run_json({"--data", kPaperJson.string(), "--no-held-out"});
+  const json twin = run_json({"--data", kPaperJson.string(), "--no-held-out", "--preset", paper});
   EXPECT_EQ(twin.at("fitted").at("K"), j.at("fitted").at("K"));
 }
 

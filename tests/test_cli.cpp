@@ -27,8 +27,9 @@ namespace {
 const std::string kExecutable = FOLDLAB_EXECUTABLE;
 const fs::path kPresetsDir = FOLDLAB_PRESETS_DIR;
 const std::string kH900 = (kPresetsDir / "paper-table1-h900.json").string();
-// The name written in presets/paper-table1-h1400.json, the built-in default.
-const std::string kDefaultPresetName = "Table 1, h = 1400 mm (default)";
+// The name written in presets/default.json, the built-in default.
+const std::string kDefaultPresetName =
+    "Default: the Table 1 cloth, h = 1400 mm, eq. 7 calibrated on Conci's Tables 1–2";
 
 using foldlab::testing::read_file;
 using foldlab::testing::RunResult;

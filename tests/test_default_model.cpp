@@ -1,0 +1,533 @@
+// The default model (exact method, eq. 7 calibrated on the paper's Tables 1-2) against the paper's
+// numbers, the ranges it reports, `foldlab measure` from depths and from a photo FoldLab draws
+// itself, and the paper method's early stops.
+#include <stb_image.h>
+#include <stb_image_write.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <numbers>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include "core/analysis/calibration.hpp"
+#include "core/analysis/fold_measurement.hpp"
+#include "core/analysis/uncertainty.hpp"
+#include "core/geometry/geometry.hpp"
+#include "core/io/measurements.hpp"
+#include "core/io/preset.hpp"
+#include "core/model/equations.hpp"
+#include "core/model/solver.hpp"
+#include "core/model/text_format.hpp"
+#include "process.hpp"
+#include "temp_dir.hpp"
+
+namespace foldlab {
+namespace {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+const fs::path kDataDir = FOLDLAB_DATA_DIR;
+const fs::path kPresetsDir = FOLDLAB_PRESETS_DIR;
+const fs::path kPaperCsv = kDataDir / "paper-measurements.csv";
+
+bool contains(const std::string& haystack, const std::string& needle) {
+  return haystack.find(needle) != std::string::npos;
+}
+
+std::vector<Measurement> paper_fit_rows() {
+  std::vector<Measurement> rows;
+  for (const Measurement& m : load_measurements(kPaperCsv).rows) {
+    if (m.role == MeasurementRole::fit) {
+      rows.push_back(m);
+    }
+  }
+  return rows;
+}
+
+// ---- The default model on Tables 1-2 ------------------------------------------------------------
+
+// The stored constants are what `foldlab calibrate --fit K,p --method exact` finds on the shipped
+// Tables 1-2 today: a change to the solver or the search that moves them fails here, not silently.
+TEST(DefaultModel, IsTheExactMethodWithTheConstantsCalibrateFinds) {
+  const Preset& preset = default_preset();
+  ASSERT_TRUE(preset.calibration);
+  const CalibrationRecord& stored = *preset.calibration;
+  EXPECT_EQ(stored.calibrated_on, kConciTables12);
+  EXPECT_EQ(preset.parameters.model.method, Method::exact);
+  EXPECT_TRUE(record_applies(preset.parameters, stored));
+
+  Parameters base = load_preset(kPresetsDir / "paper-table1-h1400.json").parameters;
+  base.model.method = Method::exact;
+  CalibrationOptions options;
+  options.fit = FitConstants::K_and_p;
+  const CalibrationReport report = calibrate(load_measurements(kPaperCsv), base, options);
+  const CalibrationRecord fresh = calibration_record(report, kConciTables12);
+  EXPECT_NEAR(fresh.fitted.K, stored.fitted.K, 1e-9 * stored.fitted.K);
+  EXPECT_NEAR(fresh.fitted.p, stored.fitted.p, 1e-12);
+  EXPECT_EQ(fresh.fit_rows, 6);  // Fig. 4 is a check row, never fitted
+  ASSERT_EQ(fresh.equally_good.size(), stored.equally_good.size());
+  ASSERT_EQ(fresh.leave_one_out.size(), stored.leave_one_out.size());
+  for (std::size_t i = 0; i < fresh.leave_one_out.size(); ++i) {
+    EXPECT_NEAR(fresh.leave_one_out[i].K, stored.leave_one_out[i].K,
+                1e-9 * stored.leave_one_out[i].K);
+  }
+  // The out-of-sample figures came from K about 1.4-1.7 and p about 0.51-0.52.
+  EXPECT_GT(stored.fitted.K, 1.4);
+  EXPECT_LT(stored.fitted.K, 1.75);
+  EXPECT_GT(stored.fitted.p, 0.50);
+  EXPECT_LT(stored.fitted.p, 0.53);
+}
+
+// In-sample: each of Tables 1-2's six rows solved with the default model beside the published n,
+// z_max and Q. Leave-one-out: each row predicted by constants fitted on the other five. The
+// printed form (the paper presets' model) is the baseline the calibration must beat on n.
+TEST(DefaultModel, FiguresOnTables12InSampleAndLeaveOneOut) {
+  std::vector<PublishedComparison> calibrated;
+  std::vector<PublishedComparison> printed;
+  const Parameters paper = load_preset(kPresetsDir / "paper-table1-h1400.json").parameters;
+  for (const Measurement& m : paper_fit_rows()) {
+    calibrated.push_back(
+        compare_with_published(m.observed, parameters_for(m, default_preset().parameters)));
+    printed.push_back(compare_with_published(m.observed, parameters_for(m, paper)));
+  }
+  const ComparisonSummary in_sample = summarize(calibrated);
+  EXPECT_EQ(in_sample.rows_with_n, 6);
+  EXPECT_EQ(in_sample.n_exact, 5);
+  EXPECT_EQ(in_sample.n_within_one, 5);
+  EXPECT_NEAR(in_sample.median_abs_z_error, 0.063, 0.001);
+  const ComparisonSummary baseline = summarize(printed);
+  EXPECT_GT(in_sample.n_exact, baseline.n_exact);
+
+  Parameters base = paper;
+  base.model.method = Method::exact;
+  CalibrationOptions options;
+  options.fit = FitConstants::K_and_p;
+  const CalibrationReport report = calibrate(load_measurements(kPaperCsv), base, options);
+  EXPECT_EQ(report.leave_one_out.rows_with_n, 6);
+  EXPECT_EQ(report.leave_one_out.n_exact, 3);
+  EXPECT_EQ(report.leave_one_out.n_within_one, 5);
+  EXPECT_NEAR(report.leave_one_out.median_abs_z_error, 0.050, 0.001);
+}
+
+TEST(DefaultModel, EveryFabricPresetCarriesTheCalibration) {
+  const Preset& reference = default_preset();
+  int fabrics = 0;
+  for (const auto& entry : fs::directory_iterator(kPresetsDir)) {
+    const std::string name = entry.path().filename().string();
+    if (!name.starts_with("fabric-")) {
+      continue;
+    }
+    SCOPED_TRACE(name);
+    ++fabrics;
+    const Preset preset = load_preset(entry.path());
+    EXPECT_EQ(preset.parameters.model.method, Method::exact);
+    EXPECT_EQ(preset.calibration, reference.calibration);
+    EXPECT_EQ(model_standing(preset.parameters, preset.calibration).form, "calibrated");
+    EXPECT_TRUE(contains(preset.description, "calibrated on Conci's Tables 1–2"));
+  }
+  EXPECT_EQ(fabrics, 8);
+}
+
+// The presets that reproduce the paper's own tables keep its form, constant and method.
+TEST(DefaultModel, PaperPresetsKeepThePapersFormAndMethod) {
+  int papers = 0;
+  for (const auto& entry : fs::directory_iterator(kPresetsDir)) {
+    const std::string name = entry.path().filename().string();
+    if (!name.starts_with("paper-")) {
+      continue;
+    }
+    SCOPED_TRACE(name);
+    ++papers;
+    const Preset preset = load_preset(entry.path());
+    EXPECT_EQ(preset.parameters.model.method, Method::paper);
+    EXPECT_EQ(preset.parameters.model.stress_exponent_p, 1.0);
+    EXPECT_FALSE(preset.calibration);
+    const ModelStanding standing = model_standing(preset.parameters, preset.calibration);
+    EXPECT_EQ(standing.form, "printed");
+    EXPECT_TRUE(contains(standing.label, "Conci's eq. 7 as printed")) << standing.label;
+    EXPECT_FALSE(standing.range);
+  }
+  EXPECT_EQ(papers, 7);
+}
+
+// The range is the spread of the stored constants' predictions, so it holds the model's own n,
+// and it is wide exactly where Tables 1-2 cannot pin n down: every published n of the six rows
+// lies inside it except Table 1, h = 2350 mm, which no constant of the valley reaches.
+TEST(DefaultModel, RangesSpanTheStoredConstantsAndHoldThePublishedN) {
+  const Preset& preset = default_preset();
+  for (const Measurement& m : paper_fit_rows()) {
+    SCOPED_TRACE(m.name);
+    const Parameters p = parameters_for(m, preset.parameters);
+    const ModelStanding standing = model_standing(p, preset.calibration);
+    ASSERT_TRUE(standing.range);
+    const PredictionRange& r = *standing.range;
+    const Solution own = solve(p);
+    EXPECT_LE(r.n_min, own.n);
+    EXPECT_GE(r.n_max, own.n);
+    EXPECT_LE(r.z_max_min_mm, own.z_max_mm);
+    EXPECT_GE(r.z_max_max_mm, own.z_max_mm);
+    // Each end of the valley, solved on its own, lies in the range.
+    for (const Eq7Constants& k : preset.calibration->equally_good) {
+      const Solution s = solve(with_constants(p, k.K, k.p));
+      EXPECT_GE(s.n, r.n_min);
+      EXPECT_LE(s.n, r.n_max);
+    }
+    const int published = *m.observed.n;
+    const bool inside = published >= r.n_min && published <= r.n_max;
+    EXPECT_EQ(inside, m.name != "Table 1, h = 2350 mm")
+        << r.n_min << "–" << r.n_max << " against " << published;
+  }
+}
+
+TEST(DefaultModel, OtherConstantsHaveNoRangeAndSaySo) {
+  Parameters p = default_preset().parameters;
+  p.model.stress_exponent_p = 1.0;
+  set_stiffness_constant_K(p, 29.56);
+  const ModelStanding printed = model_standing(p, default_preset().calibration);
+  EXPECT_EQ(printed.form, "printed");
+  EXPECT_TRUE(contains(printed.label, "as printed")) << printed.label;
+  EXPECT_FALSE(printed.range);
+  EXPECT_TRUE(contains(printed.range_basis, "differ")) << printed.range_basis;
+  // The calibration was made with the exact method: the paper method's numbers are another model.
+  Parameters paper_method = default_preset().parameters;
+  paper_method.model.method = Method::paper;
+  EXPECT_FALSE(model_standing(paper_method, default_preset().calibration).range);
+}
+
+TEST(DefaultModel, AMalformedCalibrationBlockNamesItsKey) {
+  json j = preset_to_json(default_preset());
+  j["calibration"]["equally_good"][1] = json::array({1.0});
+  j["calibration"]["method"] = "guess";
+  try {
+    preset_from_json(j, "x.json");
+    ADD_FAILURE() << "accepted";
+  } catch (const PresetError& e) {
+    EXPECT_TRUE(contains(e.what(), "x.json: /calibration/equally_good/1: expected [K, p]"))
+        << e.what();
+    EXPECT_TRUE(contains(e.what(), "/calibration/method")) << e.what();
+  }
+}
+
+// ---- The paper method's early stops ---------------------------------------------------------
+
+// With d = 20 mm (1.4 % of L) the initial guess a_n = 0.01 h already gives an upper edge within
+// 5 % of L, so the iteration stops before eq. 8 has moved anything.
+TEST(PaperMethodStops, AtItsFirstIterateWhenTheSlackIsSmall) {
+  Parameters p = load_preset(kPresetsDir / "paper-table1-h1400.json").parameters;
+  const Solution table = solve(p);
+  EXPECT_FALSE(table.stopped_at_first_iterate);
+  EXPECT_GT(table.iterations, 1);
+  p.hanging.support_displacement_mm = 20.0;
+  const Solution s = solve(p);
+  EXPECT_EQ(s.regime, Regime::wrinkled);
+  EXPECT_TRUE(s.stopped_at_first_iterate);
+  EXPECT_EQ(s.iterations, 1);
+  // Its a_n is the initial guess, not the a_n that eq. 8 asks for.
+  EXPECT_DOUBLE_EQ(s.a_mm.back(), 0.01 * p.hanging.height_mm);
+  const std::string message = describe(s, p);
+  EXPECT_TRUE(contains(message, "first iterate")) << message;
+  EXPECT_TRUE(contains(message, "not a prediction")) << message;
+  p.model.method = Method::exact;
+  EXPECT_FALSE(solve(p).stopped_at_first_iterate);
+}
+
+TEST(PaperMethodStops, AtItsCapSayingZMaxIsNoPrediction) {
+  Parameters p = load_preset(kPresetsDir / "paper-table1-h1400.json").parameters;
+  p.model.length_tolerance = 1e-9;
+  p.model.max_iterations = 3;
+  const Solution s = solve(p);
+  EXPECT_TRUE(s.hit_iteration_cap);
+  EXPECT_FALSE(s.stopped_at_first_iterate);
+  EXPECT_TRUE(contains(describe(s, p), "not a prediction")) << describe(s, p);
+}
+
+// ---- Folds measured on a cloth ------------------------------------------------------------------
+
+TEST(FoldMeasurement, AGeometricProgressionGivesBackNAndQ) {
+  std::vector<double> depths;
+  for (int i = 0; i <= 6; ++i) {
+    depths.push_back(1414.0 / std::pow(1.3, i));
+  }
+  const FoldMeasurement m = measure_folds(depths);
+  EXPECT_EQ(m.n, 6);
+  EXPECT_NEAR(m.Q, 1.3, 1e-12);
+  EXPECT_LT(m.fit_residual, 1e-12);
+  EXPECT_EQ(m.a_mm, depths);
+}
+
+// Three folds: the least-squares slope is (ln a_2 - ln a_0)/2, and with e the middle fold's
+// departure ln a_1 - (ln a_0 + ln a_2)/2 the residuals are -e/3, 2e/3, -e/3, whose rms is
+// sqrt(2)/3 |e|.
+TEST(FoldMeasurement, ThreeFoldsMatchTheClosedForm) {
+  const std::vector<double> depths = {900.0, 560.0, 400.0};
+  const FoldMeasurement m = measure_folds(depths);
+  EXPECT_EQ(m.n, 2);
+  EXPECT_NEAR(m.Q, std::sqrt(900.0 / 400.0), 1e-12);
+  const double e = std::log(560.0) - 0.5 * (std::log(900.0) + std::log(400.0));
+  EXPECT_NEAR(m.fit_residual, std::sqrt(2.0) / 3.0 * std::abs(e), 1e-12);
+}
+
+TEST(FoldMeasurement, RefusesWhatCannotBeFolds) {
+  for (const std::vector<double>& bad :
+       {std::vector<double>{500.0}, std::vector<double>{500.0, 600.0},
+        std::vector<double>{500.0, 500.0}, std::vector<double>{500.0, -1.0},
+        std::vector<double>{500.0, std::nan("")}}) {
+    try {
+      measure_folds(bad);
+      ADD_FAILURE() << "accepted " << bad.size() << " depths";
+    } catch (const FoldMeasurementError& e) {
+      EXPECT_EQ(e.input(), "depths");
+    }
+  }
+}
+
+// A photo taken turned by 8° at 0.37 px/mm: the depths come back in mm.
+TEST(FoldMeasurement, PixelsOfATurnedPhotoGiveDepthsInMm) {
+  const double l = 1300.0;
+  const double scale = 0.37;
+  const double angle = 8.0 * std::numbers::pi / 180.0;
+  auto to_px = [&](double x, double y) {
+    return PixelPoint{410.0 + scale * (x * std::cos(angle) - y * std::sin(angle)),
+                      95.0 + scale * (x * std::sin(angle) + y * std::cos(angle))};
+  };
+  const std::vector<double> depths = {1200.0, 800.0, 500.0, 130.0};
+  std::vector<double> rows;
+  for (double a : depths) {
+    rows.push_back(to_px(0.0, a).y);
+  }
+  const std::vector<double> back = depths_from_pixels(to_px(-l / 2, 0), to_px(l / 2, 0), rows, l);
+  ASSERT_EQ(back.size(), depths.size());
+  for (std::size_t i = 0; i < depths.size(); ++i) {
+    EXPECT_NEAR(back[i], depths[i], 1e-9 * depths[i]);
+  }
+  try {
+    depths_from_pixels(to_px(-l / 2, 0), to_px(l / 2, 0), {to_px(0, -10).y}, l);
+    ADD_FAILURE() << "a fold above the supports was accepted";
+  } catch (const FoldMeasurementError& e) {
+    EXPECT_EQ(e.input(), "folds");
+  }
+  try {
+    depths_from_pixels({100, 100}, {110, 300}, rows, l);
+    ADD_FAILURE() << "a steep supports' line was accepted";
+  } catch (const FoldMeasurementError& e) {
+    EXPECT_EQ(e.input(), "supports");
+  }
+}
+
+// ---- `foldlab solve` and `foldlab measure` --------------------------------------------------
+
+class DefaultModelCli : public testing::TempDirTest {
+ protected:
+  DefaultModelCli() : TempDirTest("foldlab_default_model_") {}
+
+  testing::RunResult run(const std::vector<std::string>& args) {
+    return testing::run_process(FOLDLAB_EXECUTABLE, args, dir_);
+  }
+
+  json run_json(std::vector<std::string> args) {
+    args.push_back("--json");
+    const testing::RunResult r = run(args);
+    EXPECT_EQ(r.exit_status, 0) << r.err;
+    try {
+      return json::parse(r.out);
+    } catch (const json::exception& e) {
+      ADD_FAILURE() << e.what() << "\n" << r.out;
+      return json();
+    }
+  }
+};
+
+TEST_F(DefaultModelCli, SolveWithNoOptionsUsesTheCalibratedModelAndPrintsItsRange) {
+  const json j = run_json({"solve"});
+  ASSERT_TRUE(j.is_object());
+  EXPECT_EQ(j.at("method"), "exact");
+  EXPECT_EQ(j.at("form"), "calibrated");
+  EXPECT_TRUE(contains(j.at("form_label").get<std::string>(), "calibrated on Conci's Tables 1–2"));
+  EXPECT_EQ(j.at("n"), 7);  // Table 1, h = 1400 mm: the paper's n
+  const json& n = j.at("n_range");
+  ASSERT_TRUE(n.is_array());
+  EXPECT_LE(n[0].get<int>(), 7);
+  EXPECT_GE(n[1].get<int>(), 7);
+  EXPECT_LE(j.at("z_max_range_mm")[0].get<double>(), j.at("z_max_mm").get<double>());
+  EXPECT_GE(j.at("Q_range")[1].get<double>(), j.at("Q").get<double>());
+
+  const testing::RunResult table = run({"solve"});
+  ASSERT_EQ(table.exit_status, 0) << table.err;
+  const std::string n_range =
+      "7 (" + std::to_string(n[0].get<int>()) + "–" + std::to_string(n[1].get<int>()) + ")";
+  EXPECT_TRUE(contains(table.out, n_range)) << n_range << "\n" << table.out;
+  EXPECT_TRUE(contains(table.out, "form of eq. 7: calibrated")) << table.out;
+}
+
+TEST_F(DefaultModelCli, ThePrintedFormIsOneSetAway) {
+  const json j = run_json({"solve", "--set", "p=1", "--set", "c=26.9"});
+  ASSERT_TRUE(j.is_object());
+  EXPECT_EQ(j.at("form"), "printed");
+  EXPECT_TRUE(contains(j.at("form_label").get<std::string>(), "Conci's eq. 7 as printed"));
+  EXPECT_TRUE(j.at("n_range").is_null());
+  // With the paper method too, it is the paper preset's own model on the same cloth.
+  const json paper = run_json({"solve", "--set", "p=1", "--set", "c=26.9", "--method", "paper"});
+  const json reference =
+      run_json({"solve", "--preset", (kPresetsDir / "paper-table1-h1400.json").string()});
+  EXPECT_EQ(paper.at("n"), reference.at("n"));
+  EXPECT_EQ(paper.at("z_max_mm"), reference.at("z_max_mm"));
+}
+
+TEST_F(DefaultModelCli, SolveSaysWhenThePaperMethodStoppedAtItsFirstIterate) {
+  const json j = run_json({"solve", "--method", "paper", "--set", "d=20"});
+  ASSERT_TRUE(j.is_object());
+  EXPECT_TRUE(j.at("stopped_at_first_iterate").get<bool>());
+  EXPECT_TRUE(contains(j.at("message").get<std::string>(), "first iterate")) << j.dump(2);
+  const testing::RunResult table = run({"solve", "--method", "paper", "--set", "d=20"});
+  EXPECT_TRUE(contains(table.out, "first iterate")) << table.out;
+}
+
+// FoldLab draws the fold lines of a known solution into a PNG, turned and scaled as a camera
+// might; the "clicks" are where the geometry puts the supports and each fold on the centre line,
+// and `foldlab measure` must give back the solution's n and Q.
+TEST_F(DefaultModelCli, MeasureGetsNAndQBackFromAPhotoOfKnownFolds) {
+  const Preset& preset = default_preset();
+  const Solution s = solve(preset.parameters);
+  ASSERT_GE(s.n, 3);
+  const double l = s.span_mm;
+  const double scale = 0.4;  // px per mm
+  const double angle = 3.0 * std::numbers::pi / 180.0;
+  const int width = 700;
+  const int height = 700;
+  auto to_px = [&](double x, double y) {
+    return PixelPoint{350.0 + scale * (x * std::cos(angle) - y * std::sin(angle)),
+                      60.0 + scale * (x * std::sin(angle) + y * std::cos(angle))};
+  };
+  std::vector<unsigned char> rgb(static_cast<std::size_t>(width * height * 3), 235);
+  auto dot = [&](PixelPoint q) {
+    for (int dy = -1; dy <= 1; ++dy) {
+      for (int dx = -1; dx <= 1; ++dx) {
+        const int x = static_cast<int>(std::lround(q.x)) + dx;
+        const int y = static_cast<int>(std::lround(q.y)) + dy;
+        if (x >= 0 && x < width && y >= 0 && y < height) {
+          for (int c = 0; c < 3; ++c) {
+            rgb[static_cast<std::size_t>((y * width + x) * 3 + c)] = 20;
+          }
+        }
+      }
+    }
+  };
+  const FoldLines lines = fold_lines(s, 401);
+  ASSERT_EQ(lines.lines.size(), static_cast<std::size_t>(s.n + 1));
+  for (const FoldLine& line : lines.lines) {
+    for (std::size_t k = 0; k + 1 < line.points_mm.size(); ++k) {
+      for (int t = 0; t <= 8; ++t) {
+        const Eigen::Vector3d q =
+            line.points_mm[k] + (line.points_mm[k + 1] - line.points_mm[k]) * (t / 8.0);
+        dot(to_px(q.x(), q.y()));
+      }
+    }
+  }
+  const fs::path photo = dir_ / "folds.png";
+  ASSERT_NE(stbi_write_png(photo.string().c_str(), width, height, 3, rgb.data(), width * 3), 0);
+
+  const PixelPoint left = to_px(-l / 2, 0.0);
+  const PixelPoint right = to_px(l / 2, 0.0);
+  std::string folds;
+  int loaded_w = 0;
+  int loaded_h = 0;
+  int channels = 0;
+  unsigned char* loaded = stbi_load(photo.string().c_str(), &loaded_w, &loaded_h, &channels, 1);
+  ASSERT_NE(loaded, nullptr);
+  for (std::size_t i = 0; i < s.a_mm.size(); ++i) {
+    const PixelPoint fold = to_px(0.0, s.a_mm[i]);
+    // The click lands on a drawn line.
+    const auto at = static_cast<std::size_t>(std::lround(fold.y) * loaded_w + std::lround(fold.x));
+    EXPECT_LT(loaded[at], 128) << "fold " << i;
+    folds += (i == 0 ? "" : ",") + detail::shortest_number(fold.y);
+  }
+  stbi_image_free(loaded);
+  const std::string supports =
+      detail::shortest_number(left.x) + "," + detail::shortest_number(left.y) + "," +
+      detail::shortest_number(right.x) + "," + detail::shortest_number(right.y);
+  const fs::path csv = dir_ / "mine.csv";
+  const json j = run_json({"measure", "--photo", photo.string(), "--supports-px", supports,
+                           "--folds-px", folds, "--name", "rendered", "--append", csv.string()});
+  ASSERT_TRUE(j.is_object());
+  EXPECT_EQ(j.at("n"), s.n);
+  EXPECT_NEAR(j.at("Q").get<double>(), s.Q, 1e-9 * s.Q);
+  EXPECT_LT(j.at("fit_residual").get<double>(), 1e-9);
+  const MeasurementSet written = load_measurements(csv);
+  ASSERT_EQ(written.rows.size(), 1u);
+  EXPECT_EQ(written.rows[0].name, "rendered");
+  EXPECT_EQ(written.rows[0].observed.n, s.n);
+  EXPECT_EQ(written.rows[0].height_mm, preset.parameters.hanging.height_mm);
+}
+
+// Rows appended by `measure` are rows `calibrate` fits, in a new file and after the shipped ones
+// (whose comments stay).
+TEST_F(DefaultModelCli, MeasuredRowsAreReadByCalibrate) {
+  const fs::path fresh = dir_ / "fresh.csv";
+  const fs::path shipped = dir_ / "paper.csv";
+  fs::copy_file(kPaperCsv, shipped);
+  for (const fs::path& file : {fresh, shipped}) {
+    for (const char* h : {"900", "1400"}) {
+      const testing::RunResult r = run({"measure", "--set", std::string("h=") + h, "--depths-mm",
+                                        "900,560,330,200,120", "--z-max-mm", "50", "--name",
+                                        std::string("mine, h = ") + h, "--append", file.string()});
+      ASSERT_EQ(r.exit_status, 0) << r.err;
+      EXPECT_TRUE(contains(r.out, "n = 4")) << r.out;
+      EXPECT_TRUE(contains(r.out, "row appended to")) << r.out;
+    }
+  }
+  const MeasurementSet rows = load_measurements(fresh);
+  ASSERT_EQ(rows.rows.size(), 2u);
+  EXPECT_EQ(rows.rows[1].name, "mine, h = 1400");
+  EXPECT_EQ(rows.rows[1].height_mm, 1400.0);
+  EXPECT_EQ(rows.rows[1].observed.z_max_mm, 50.0);
+  EXPECT_NEAR(*rows.rows[1].observed.Q, std::exp(-std::log(120.0 / 900.0) / 4.0), 0.05);
+  EXPECT_EQ(load_measurements(shipped).rows.size(), 9u);
+  EXPECT_TRUE(contains(testing::read_file(shipped), "# Fig. 4 gives no d"));
+  for (const fs::path& file : {fresh, shipped}) {
+    const json j = run_json({"calibrate", "--data", file.string(), "--no-held-out"});
+    ASSERT_TRUE(j.is_object());
+    EXPECT_EQ(j.at("fit_rows"), file == fresh ? 2 : 8);
+  }
+}
+
+TEST_F(DefaultModelCli, MalformedMeasureInputIsExitTwoNamingTheArgument) {
+  const fs::path photo = dir_ / "small.png";
+  const std::vector<unsigned char> grey(100 * 80, 200);
+  ASSERT_NE(stbi_write_png(photo.string().c_str(), 100, 80, 1, grey.data(), 100), 0);
+  const std::string png = photo.string();
+  const std::vector<std::pair<std::vector<std::string>, std::string>> cases = {
+      {{"measure", "--depths-mm", "900,abc,300"}, "--depths-mm"},
+      {{"measure", "--depths-mm", "900"}, "--depths-mm"},
+      {{"measure", "--depths-mm", "300,900"}, "--depths-mm"},
+      {{"measure"}, "--depths-mm"},
+      {{"measure", "--depths-mm", "900,300", "--photo", png}, "--photo"},
+      {{"measure", "--photo", png, "--supports-px", "1,2,3", "--folds-px", "50"}, "--supports-px"},
+      {{"measure", "--photo", png, "--supports-px", "10,10,90,10", "--folds-px", "5"},
+       "--folds-px"},
+      {{"measure", "--photo", png, "--supports-px", "10,10,90,10", "--folds-px", "70,500"},
+       "--folds-px"},
+      {{"measure", "--photo", png, "--supports-px", "10,10,90,10"}, "--folds-px"},
+      {{"measure", "--photo", (dir_ / "none.png").string(), "--supports-px", "10,10,90,10",
+        "--folds-px", "70,40"},
+       "--photo"},
+      {{"measure", "--depths-mm", "900,300", "--z-max-mm", "-3"}, "--z-max-mm"},
+      {{"measure", "--depths-mm", "900,300", "--set", "t=-1"}, "t"},
+  };
+  for (const auto& [args, named] : cases) {
+    const testing::RunResult r = run(args);
+    EXPECT_EQ(r.exit_status, 2) << args.back() << "\n" << r.err;
+    EXPECT_TRUE(contains(r.err, named)) << named << "\n" << r.err;
+    EXPECT_TRUE(r.out.empty()) << r.out;
+  }
+}
+
+}  // namespace
+}  // namespace foldlab
