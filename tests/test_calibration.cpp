@@ -596,8 +596,8 @@ TEST_F(CalibrationCli, PrintsPerRowTotalsHeldOutAndThePlateau) {
   EXPECT_TRUE(r.err.empty()) << r.err;
 }
 
-// README's figures are those of the paper's form and method: the paper preset is the base (the
-// built-in default is already calibrated).
+// docs/calibration.md's figures are those of the paper's form and method: the paper preset is the
+// base (the built-in default is already calibrated).
 TEST_F(CalibrationCli, KAloneOnTheShippedFileMatchesReadme) {
   const std::string paper = (kPresetsDir / "paper-table1-h1400.json").string();
   const json j = run_json({"--data", kPaperCsv.string(), "--preset", paper});
