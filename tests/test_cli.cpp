@@ -1,9 +1,12 @@
 // End-to-end tests of the foldlab executable: run it as a user or a script would and check the exit
 // status, stdout and stderr.
+#include <sys/stat.h>
+
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -408,4 +411,114 @@ TEST_F(CliTest, SweepPrintsOneRowPerStepAsCsv) {
   const RunResult bad = run({"sweep", "--param", "q", "--from", "1", "--to", "2"});
   EXPECT_EQ(bad.exit_status, 2);
   EXPECT_TRUE(contains(bad.err, "cannot be swept"));
+}
+
+// A stranger's input: every case below ends in a clear message and the documented exit status.
+
+namespace {
+
+// The h = 900 mm preset with the text of its thickness value replaced by `value`.
+std::string h900_with_thickness(const std::string& value) {
+  std::string text = read_file(kH900);
+  const std::string key = "\"thickness_mm\": 0.25";
+  const std::size_t at = text.find(key);
+  EXPECT_NE(at, std::string::npos);
+  return text.replace(at, key.size(), "\"thickness_mm\": " + value);
+}
+
+}  // namespace
+
+TEST_F(CliTest, DeeplyNestedPresetIsInvalidInputNotACrash) {
+  const fs::path path = dir_ / "deep.json";
+  std::ofstream(path) << h900_with_thickness(std::string(60000, '[') + "1" +
+                                             std::string(60000, ']'));
+  for (const std::vector<std::string>& args :
+       {std::vector<std::string>{"solve", "--preset", path.string()},
+        std::vector<std::string>{"compare", "--preset", path.string()}}) {
+    const RunResult r = run(args);
+    EXPECT_EQ(r.exit_status, 2) << args[0] << ": " << r.err;
+    EXPECT_TRUE(contains(r.err, "nested deeper than 64 levels")) << r.err;
+    EXPECT_LT(r.err.size(), 400u) << r.err;
+  }
+}
+
+TEST_F(CliTest, DuplicateKeyInAPresetIsInvalidInputNamingIt) {
+  const fs::path path = dir_ / "dup.json";
+  std::ofstream(path) << h900_with_thickness("-5, \"thickness_mm\": 0.25");
+  const RunResult r = run({"solve", "--preset", path.string()});
+  EXPECT_EQ(r.exit_status, 2) << r.out;
+  EXPECT_TRUE(contains(r.err, "/fabric/thickness_mm: duplicate key")) << r.err;
+}
+
+TEST_F(CliTest, SetReportsParseAndRangeProblemsTogether) {
+  const RunResult r = run({"solve", "--set", "t=abc", "--set", "h=-5"});
+  EXPECT_EQ(r.exit_status, 2);
+  EXPECT_TRUE(contains(r.err, "t = 'abc' is not a number")) << r.err;
+  EXPECT_TRUE(contains(r.err, "h_mm = -5 must be in")) << r.err;
+}
+
+TEST_F(CliTest, AHugeBadValueIsEchoedCut) {
+  const RunResult r = run({"solve", "--set", "t=" + std::string(100000, 'x')});
+  EXPECT_EQ(r.exit_status, 2);
+  EXPECT_LT(r.err.size(), 300u);
+  EXPECT_TRUE(contains(r.err, "xxx…' is not a number")) << r.err;
+}
+
+TEST_F(CliTest, ExportThroughASymlinkWritesItsTarget) {
+  std::ofstream(dir_ / "real.csv") << "old\n";
+  fs::create_symlink("real.csv", dir_ / "link.csv");
+  const RunResult r = run({"export", "--csv", (dir_ / "link.csv").string()});
+  ASSERT_EQ(r.exit_status, 0) << r.err;
+  EXPECT_TRUE(fs::is_symlink(dir_ / "link.csv"));
+  EXPECT_TRUE(starts_with(read_file(dir_ / "real.csv"), "line,sign,x_mm,y_mm,z_mm\n"));
+}
+
+TEST_F(CliTest, ExportToAFifoOrDirectoryIsAFileErrorAndLeavesItAlone) {
+  const fs::path fifo = dir_ / "out.obj";
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0644), 0);
+  const RunResult r = run({"export", "--obj", fifo.string(), "--grid", "8x8"});
+  EXPECT_EQ(r.exit_status, 1);
+  EXPECT_TRUE(contains(r.err, "a FIFO, not a regular file")) << r.err;
+  EXPECT_TRUE(fs::is_fifo(fifo));
+  fs::create_directory(dir_ / "dir.svg");
+  const RunResult d = run({"export", "--svg", (dir_ / "dir.svg").string()});
+  EXPECT_EQ(d.exit_status, 1);
+  EXPECT_TRUE(contains(d.err, "a directory, not a regular file")) << d.err;
+}
+
+TEST_F(CliTest, CalibrateSavePresetThatCannotBeWrittenExitsOne) {
+  std::ofstream(dir_ / "one.csv") << "t_mm,E_MPa,w_N_per_mm2,h_mm,L_mm,d_mm,n\n"
+                                     "0.25,165,1.5e-6,900,1400,100,5\n";
+  std::ofstream(dir_ / "plain") << "a file, not a folder\n";
+  const fs::path target = dir_ / "plain" / "fitted.json";
+  const RunResult r = run({"calibrate", "--data", (dir_ / "one.csv").string(), "--fit", "K",
+                           "--save-preset", target.string()});
+  EXPECT_EQ(r.exit_status, 1) << r.err;
+  EXPECT_TRUE(contains(r.err, target.string() + ": cannot write (Not a directory)")) << r.err;
+  EXPECT_FALSE(contains(r.err, "invalid input")) << r.err;
+}
+
+TEST_F(CliTest, UnreadablePresetGivesTheSystemsReason) {
+  std::ofstream(dir_ / "plain") << "x\n";
+  const RunResult r = run({"solve", "--preset", (dir_ / "plain" / "p.json").string()});
+  EXPECT_EQ(r.exit_status, 2);
+  EXPECT_TRUE(contains(r.err, "cannot open for reading (Not a directory)")) << r.err;
+}
+
+TEST_F(CliTest, StiffMessageWithAnExponentShowsSToTheP) {
+  // t = 50 mm makes s = K E t^3 / (w h l^2) far above 1; eq. 7 sees s^p.
+  const json j = solve_json({"--set", "t=50", "--set", "p=0.5"});
+  ASSERT_EQ(j.at("regime"), "stiff");
+  const std::string message = j.at("message");
+  EXPECT_TRUE(contains(message, "Stiff: s^p = ")) << message;
+  const double s = j.at("s").get<double>();
+  char expected[64];
+  std::snprintf(expected, sizeof expected, "= %.3g >= 1", std::sqrt(s));
+  EXPECT_TRUE(contains(message, expected)) << message << " / " << expected;
+}
+
+TEST_F(CliTest, ExponentJustAboveItsLimitIsEchoedUnrounded) {
+  const RunResult r = run({"solve", "--set", "p=5.0000001"});
+  EXPECT_EQ(r.exit_status, 2);
+  EXPECT_TRUE(contains(r.err, "p = 5.0000001 must be in [0.05, 5]")) << r.err;
 }

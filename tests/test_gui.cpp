@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
+#include <fstream>
 #include <string>
 #include <vector>
 
@@ -207,3 +208,44 @@ TEST_F(GuiTest, TheLastSessionIsRestored) {
 }
 
 }  // namespace
+
+// A config folder left in a bad state must not stop the explorer with a crash or an "internal
+// error": an unusable session is set aside for the default preset, and a config folder that
+// cannot exist says so.
+TEST_F(GuiTest, AHostileSessionFileStartsFromTheDefaultPreset) {
+  if (!have_xvfb()) {
+    GTEST_SKIP() << "xvfb-run is not installed (scripts/install-deps.sh installs it)";
+  }
+  const fs::path config = dir_ / "config" / "foldlab";
+  fs::create_directories(config);
+  // A preset value nested 60,000 levels deep, inside the session.
+  std::ofstream(config / "session.json")
+      << R"({"foldlab_session": 1, "current": {"fabric": {"thickness_mm": )"
+      << std::string(60000, '[') << "1" << std::string(60000, ']') << "}}}";
+  const RunResult deep = run_in_xvfb(dir_, environment(), {"--frames", "2", "--report"});
+  EXPECT_EQ(deep.exit_status, 0) << deep.err;
+  EXPECT_EQ(nlohmann::json::parse(deep.out).at("solution").at("inputs").at("height_mm"), 1400.0);
+
+  fs::remove(config / "session.json");
+  fs::create_symlink("session.json", config / "session.json");  // a loop
+  const RunResult loop = run_in_xvfb(dir_, environment(), {"--frames", "2", "--report"});
+  EXPECT_EQ(loop.exit_status, 0) << loop.err;
+  EXPECT_EQ(loop.err.find("internal error"), std::string::npos) << loop.err;
+}
+
+TEST_F(GuiTest, AConfigFolderThatIsAFileIsNamedNotAnInternalError) {
+  if (!have_xvfb()) {
+    GTEST_SKIP() << "xvfb-run is not installed (scripts/install-deps.sh installs it)";
+  }
+  fs::create_directories(dir_ / "config");
+  std::ofstream(dir_ / "config" / "foldlab") << "a file where the config folder belongs\n";
+  const RunResult r = run_in_xvfb(dir_, environment(), {"--frames", "2"});
+  EXPECT_EQ(r.exit_status, 1);
+  EXPECT_NE(r.err.find("the config folder " + (dir_ / "config" / "foldlab").string() +
+                       " cannot be created (Not a directory)"),
+            std::string::npos)
+      << r.err;
+  EXPECT_EQ(r.err.find("internal error"), std::string::npos) << r.err;
+  // --fresh needs no config folder at all.
+  EXPECT_EQ(run_in_xvfb(dir_, environment(), {"--frames", "2", "--fresh"}).exit_status, 0);
+}

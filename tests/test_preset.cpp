@@ -18,6 +18,7 @@
 #include <nlohmann/json.hpp>
 #include "temp_dir.hpp"
 
+#include "core/io/io.hpp"
 #include "core/model/parameters.hpp"
 
 namespace fs = std::filesystem;
@@ -458,8 +459,10 @@ TEST_F(PresetTest, SaveIntoAMissingDirectoryThrowsAndLeavesNothing) {
   try {
     foldlab::save_preset(awkward_preset(), path);
     ADD_FAILURE() << "save_preset into a missing directory did not throw";
-  } catch (const foldlab::PresetError& e) {
+  } catch (const foldlab::WriteError& e) {
+    // A WriteError (exit 1), not a PresetError (exit 2): the preset is fine, the disk is not.
     EXPECT_TRUE(contains(e.what(), path.string())) << e.what();
+    EXPECT_TRUE(contains(e.what(), "No such file or directory")) << e.what();
   }
   EXPECT_FALSE(fs::exists(dir_ / "does-not-exist"));
   EXPECT_TRUE(directory_entries(dir_).empty());

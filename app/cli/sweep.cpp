@@ -5,6 +5,7 @@
 #include "app/cli/commands.hpp"
 #include "app/common/inputs.hpp"
 #include "core/analysis/sweep.hpp"
+#include "core/model/text_format.hpp"
 
 namespace foldlab::cli {
 
@@ -42,6 +43,12 @@ Command add_sweep_command(CLI::App& app) {
       }
       const Preset preset = resolve_inputs(options->inputs);
       const std::vector<SweepPoint> points = sweep(preset.parameters, axis);
+      // Checked before the first row goes out, so that a bad row never leaves half a table.
+      for (const SweepPoint& p : points) {
+        detail::finite_or_throw(p.value, axis.key);
+        detail::finite_or_throw(p.Q, "Q");
+        detail::finite_or_throw(p.z_max_mm, "z_max_mm");
+      }
       if (options->csv) {
         std::printf("%s,n,Q,z_max_mm,regime\n", axis.key.c_str());
       } else {

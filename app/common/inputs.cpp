@@ -22,9 +22,9 @@ Preset resolve_inputs(const InputOptions& options) {
   for (const std::string& error : apply_assignments(preset.parameters, assignments)) {
     problems += "--set " + error + "\n";
   }
-  if (problems.empty()) {
-    problems = format_issues(validate(preset.parameters));
-  }
+  // Range problems as well: a value that did not parse left the preset's (valid) value in place,
+  // so every range problem reported is a real one.
+  problems += format_issues(validate(preset.parameters));
   if (!problems.empty()) {
     problems.pop_back();  // the final newline
     throw InputError(problems);

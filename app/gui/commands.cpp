@@ -19,7 +19,8 @@ void parse_size(const std::string& text, GuiRunOptions& options) {
   std::smatch match;
   if (!std::regex_match(text, match, pattern) || std::stoi(match[1]) < 320 ||
       std::stoi(match[2]) < 240 || std::stoi(match[1]) > 8192 || std::stoi(match[2]) > 8192) {
-    throw InputError("--size " + text + " must be WxH with 320 <= W <= 8192, 240 <= H <= 8192");
+    throw InputError("--size " + detail::cut(text) +
+                     " must be WxH with 320 <= W <= 8192, 240 <= H <= 8192");
   }
   options.width = std::stoi(match[1]);
   options.height = std::stoi(match[2]);

@@ -8,6 +8,7 @@
 #include "app/gui/panels/stats_overlay.hpp"
 #include "app/gui/panels/widgets.hpp"
 #include "app/gui/session.hpp"
+#include "core/model/text_format.hpp"
 
 namespace foldlab::gui {
 
@@ -30,7 +31,7 @@ Explorer::Explorer(const Preset& initial, const std::string& initial_path, bool 
       style.fold_lines = s->fold_lines_3d;
       style.ground = s->ground;
       session_message_ = "Restored the last session.";
-    } else if (std::filesystem::exists(options_.session_file)) {
+    } else if (!error.empty()) {
       session_message_ = error;
     }
   }
@@ -58,7 +59,7 @@ std::optional<std::string> Explorer::set_view(std::string_view key, std::string_
         return std::nullopt;
       }
     }
-    return "sweep = '" + std::string(value) + "' is not one of: table1, table2, fig4";
+    return "sweep = '" + detail::cut(value) + "' is not one of: table1, table2, fig4";
   }
   return cloth_view_.set_view(key, value);
 }

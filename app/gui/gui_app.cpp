@@ -86,7 +86,12 @@ int run(Surface& surface, const GuiRunOptions& options, bool interactive) {
     animation.emplace(options.animate_key, preset.parameters);
   }
   const bool persist = interactive && !options.fresh;
-  std::filesystem::create_directories(config_dir());
+  if (std::error_code error;
+      persist && !std::filesystem::create_directories(config_dir(), error) && error) {
+    throw app::EnvironmentError("the config folder " + config_dir().string() +
+                                " cannot be created (" + error.message() +
+                                "); move what is there away, or run with --fresh");
+  }
   ExplorerOptions explorer_options{app::find_presets_dir(), user_presets_dir(),
                                    persist ? config_dir() / "session.json" : "",
                                    options.analysis_tab};

@@ -1,12 +1,11 @@
 #include "app/gui/session.hpp"
 
 #include <cstdlib>
-#include <fstream>
-#include <sstream>
 
 #include <nlohmann/json.hpp>
 
 #include "core/io/io.hpp"
+#include "core/io/json_input.hpp"
 
 namespace foldlab::gui {
 
@@ -25,15 +24,14 @@ std::filesystem::path user_presets_dir() {
 }
 
 std::optional<Session> load_session(const std::filesystem::path& path, std::string& error) {
-  std::ifstream in(path);
-  if (!in) {
-    error = "no saved session at " + path.string();
-    return std::nullopt;
+  error.clear();
+  std::error_code absent;
+  if (std::filesystem::symlink_status(path, absent).type() ==
+      std::filesystem::file_type::not_found) {
+    return std::nullopt;  // a first start: nothing to say
   }
-  std::stringstream text;
-  text << in.rdbuf();
   try {
-    const nlohmann::json j = nlohmann::json::parse(text.str());
+    const nlohmann::json j = parse_json(read_text_file(path), path.string());
     Session s;
     s.current = preset_from_json(j.at("current"), path.string() + " (current)");
     s.loaded = preset_from_json(j.at("loaded"), path.string() + " (loaded)");
@@ -52,7 +50,12 @@ std::optional<Session> load_session(const std::filesystem::path& path, std::stri
 }
 
 void save_session(const std::filesystem::path& path, const Session& session) {
-  std::filesystem::create_directories(path.parent_path());
+  std::error_code error;
+  std::filesystem::create_directories(path.parent_path(), error);
+  if (error) {
+    throw WriteError(path.string() + ": cannot create the folder " + path.parent_path().string() +
+                     " (" + error.message() + ")");
+  }
   const nlohmann::json j = {
       {"foldlab_session", 1},
       {"current", preset_to_json(session.current)},

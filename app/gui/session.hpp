@@ -25,8 +25,8 @@ struct Session {
 std::filesystem::path config_dir();
 std::filesystem::path user_presets_dir();
 
-// Reads a session file; nullopt with `error` set when it is absent or unusable (then the caller
-// starts from the default preset and says why).
+// Reads a session file; nullopt when it is absent (`error` empty) or unusable (`error` says why;
+// the caller starts from the default preset and shows it).
 std::optional<Session> load_session(const std::filesystem::path& path, std::string& error);
 // Atomic write (see write_file_atomically); throws WriteError.
 void save_session(const std::filesystem::path& path, const Session& session);

@@ -9,8 +9,17 @@
 namespace foldlab {
 namespace {
 
+using detail::finite_or_throw;
 using detail::printf_string;
 using detail::xml_escape;
+
+// Every coordinate of a point, checked before it is written.
+template <class Vector>
+void check_finite(const Vector& v, const char* field) {
+  for (int i = 0; i < v.size(); ++i) {
+    finite_or_throw(static_cast<double>(v[i]), field);
+  }
+}
 
 // A "nice" tick step (1, 2 or 5 times a power of ten) giving about `target` ticks over `range`.
 double tick_step(double range, int target) {
@@ -63,13 +72,16 @@ std::string mesh_to_obj(const DeformedGrid& grid, const std::string& title) {
   out += "o cloth\n";
   out.reserve(out.size() + grid.positions_mm.size() * 110 + grid.triangle_indices.size() * 20);
   for (const Eigen::Vector3f& v : grid.positions_mm) {
+    check_finite(v, "OBJ vertex position (mm)");
     out += printf_string("v %.6g %.6g %.6g\n", v.x(), v.y(), v.z());
   }
   for (const Eigen::Vector2f& t : texture_coordinates(grid)) {
     // OBJ puts v = 0 at the bottom of an image, glTF at the top: flip for OBJ.
+    check_finite(t, "OBJ texture coordinate");
     out += printf_string("vt %.6g %.6g\n", t.x(), 1.0f - t.y());
   }
   for (const Eigen::Vector3f& n : grid.normals) {
+    check_finite(n, "OBJ vertex normal");
     out += printf_string("vn %.6g %.6g %.6g\n", n.x(), n.y(), n.z());
   }
   for (std::size_t t = 0; t + 2 < grid.triangle_indices.size(); t += 3) {
@@ -86,6 +98,7 @@ std::string fold_lines_to_csv(const FoldLines& lines) {
   std::string out = "line,sign,x_mm,y_mm,z_mm\n";
   for (const FoldLine& line : lines.lines) {
     for (const Eigen::Vector3d& p : line.points_mm) {
+      check_finite(p, "fold-line point (mm)");
       out += printf_string("%d,%d,%.9g,%.9g,%.9g\n", line.index, line.sign, p.x(), p.y(), p.z());
     }
   }
@@ -93,6 +106,12 @@ std::string fold_lines_to_csv(const FoldLines& lines) {
 }
 
 std::string fold_lines_to_svg(const FoldLines& lines, const Solution& s, const std::string& title) {
+  finite_or_throw(s.Q, "Q");
+  finite_or_throw(s.z_max_mm, "z_max_mm");
+  finite_or_throw(s.span_mm, "l_mm");
+  for (double a : s.a_mm) {
+    finite_or_throw(a, "a_mm");
+  }
   const double width_px = 800.0;
   const double height_px = 560.0;
   const double margin_left = 80.0;
@@ -151,6 +170,7 @@ std::string fold_lines_to_svg(const FoldLines& lines, const Solution& s, const s
     out += printf_string("<polyline fill=\"none\" stroke=\"%s\" stroke-width=\"1.5\" points=\"",
                          line.sign < 0 ? kNegativeColour : kPositiveColour);
     for (const Eigen::Vector3d& p : line.points_mm) {
+      check_finite(p, "fold-line point (mm)");
       out += printf_string("%.2f,%.2f ", px(p.x()), py(p.y()));
     }
     out += printf_string("\"><title>line %d (%s fold)</title></polyline>\n", line.index,

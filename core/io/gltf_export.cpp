@@ -9,6 +9,7 @@
 #include <tiny_gltf.h>
 
 #include "core/io/export.hpp"
+#include "core/model/text_format.hpp"
 
 namespace foldlab {
 namespace {
@@ -65,11 +66,17 @@ std::string mesh_to_glb(const DeformedGrid& grid, const std::string& title) {
   Eigen::Vector3f max_m = Eigen::Vector3f::Constant(std::numeric_limits<float>::lowest());
   for (std::size_t v = 0; v < vertex_count; ++v) {
     positions[v] = to_gltf_position(grid.positions_mm[v]);
+    for (int i = 0; i < 3; ++i) {
+      detail::finite_or_throw(positions[v][i], "glTF POSITION (m)");
+    }
     min_m = min_m.cwiseMin(positions[v]);
     max_m = max_m.cwiseMax(positions[v]);
   }
   for (std::size_t v = 0; v < normals.size(); ++v) {
     normals[v] = to_gltf_direction(grid.normals[v]);
+    for (int i = 0; i < 3; ++i) {
+      detail::finite_or_throw(normals[v][i], "glTF NORMAL");
+    }
   }
   const std::vector<Eigen::Vector2f> uv = texture_coordinates(grid);
   // Mirroring y turns every triangle's geometric normal against the mirrored vertex normals:

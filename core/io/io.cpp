@@ -1,75 +1,203 @@
 #include "core/io/io.hpp"
 
 #include <fcntl.h>
+#include <signal.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <atomic>
 #include <cerrno>
-#include <cstdio>
+#include <charconv>
 #include <cstring>
-#include <fstream>
-#include <sstream>
 #include <string>
+#include <system_error>
 
 namespace foldlab {
+namespace {
+
+namespace fs = std::filesystem;
+
+// Linux's own limit on symbolic links followed in one path.
+constexpr int kMaxSymlinkHops = 40;
+
+std::string reason(int error) {
+  return std::strerror(error);
+}
+
+std::string file_kind(mode_t mode) {
+  if (S_ISDIR(mode)) {
+    return "a directory";
+  }
+  if (S_ISFIFO(mode)) {
+    return "a FIFO";
+  }
+  if (S_ISCHR(mode)) {
+    return "a character device";
+  }
+  if (S_ISBLK(mode)) {
+    return "a block device";
+  }
+  if (S_ISSOCK(mode)) {
+    return "a socket";
+  }
+  return "not a regular file";
+}
+
+// Closes a descriptor on every way out.
+struct FileDescriptor {
+  int fd = -1;
+  ~FileDescriptor() {
+    if (fd >= 0) {
+      ::close(fd);
+    }
+  }
+};
+
+// The file a save really replaces: `path` itself, or the end of its chain of symbolic links, so
+// that saving through a link updates what it points to (as editors do) instead of replacing the
+// link with a plain file. Sets `target_stat_valid` when the target exists.
+fs::path resolve_symlinks(const fs::path& path, struct stat& target_stat, bool& exists) {
+  fs::path target = path;
+  for (int hops = 0;; ++hops) {
+    if (::lstat(target.c_str(), &target_stat) != 0) {
+      if (errno == ENOENT) {
+        exists = false;
+        return target;  // a new file (or a dangling link's target, created as editors do)
+      }
+      throw WriteError(path.string() + ": cannot write (" + reason(errno) + ")");
+    }
+    if (!S_ISLNK(target_stat.st_mode)) {
+      exists = true;
+      return target;
+    }
+    if (hops == kMaxSymlinkHops) {
+      throw WriteError(path.string() + ": cannot write (" + reason(ELOOP) + ")");
+    }
+    std::error_code error;
+    const fs::path link = fs::read_symlink(target, error);
+    if (error) {
+      throw WriteError(path.string() + ": cannot write (" + error.message() + ")");
+    }
+    target = link.is_absolute() ? link : target.parent_path() / link;
+  }
+}
+
+// Removes temporaries that an earlier save of `target` left behind when its process was killed:
+// `NAME.tmp.PID.N` whose PID no longer runs. A running process's temporaries are left alone.
+void remove_stale_temporaries(const fs::path& target) {
+  const std::string prefix = target.filename().string() + ".tmp.";
+  const fs::path dir = target.has_parent_path() ? target.parent_path() : fs::path(".");
+  std::error_code error;
+  for (fs::directory_iterator it(dir, error), end; !error && it != end; it.increment(error)) {
+    const std::string name = it->path().filename().string();
+    if (!name.starts_with(prefix)) {
+      continue;
+    }
+    const std::string_view rest = std::string_view(name).substr(prefix.size());
+    long long pid = 0;
+    const auto [ptr, ec] = std::from_chars(rest.data(), rest.data() + rest.size(), pid);
+    const std::string_view counter(ptr, static_cast<std::size_t>(rest.data() + rest.size() - ptr));
+    const bool well_formed = ec == std::errc() && pid > 0 && counter.size() > 1 &&
+                             counter[0] == '.' &&
+                             counter.find_first_not_of("0123456789", 1) == std::string_view::npos;
+    if (!well_formed) {
+      continue;
+    }
+    if (::kill(static_cast<pid_t>(pid), 0) != 0 && errno == ESRCH) {
+      std::error_code ignored;
+      fs::remove(it->path(), ignored);
+    }
+  }
+}
+
+}  // namespace
 
 std::string read_text_file(const std::filesystem::path& path) {
-  std::error_code error;
-  if (std::filesystem::exists(path, error) && !std::filesystem::is_regular_file(path, error)) {
-    throw ReadError(path.string() + ": cannot open for reading: not a regular file");
+  // O_NONBLOCK: opening a FIFO for reading would otherwise wait for a writer forever.
+  FileDescriptor file{::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK)};
+  if (file.fd < 0) {
+    throw ReadError(path.string() + ": cannot open for reading (" + reason(errno) + ")");
   }
-  std::ifstream in(path, std::ios::binary);
-  if (!in) {
-    throw ReadError(path.string() + ": cannot open for reading");
+  struct stat info {};
+  if (::fstat(file.fd, &info) != 0) {
+    throw ReadError(path.string() + ": cannot open for reading (" + reason(errno) + ")");
   }
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (in.bad()) {
-    throw ReadError(path.string() + ": read error");
+  if (!S_ISREG(info.st_mode)) {
+    throw ReadError(path.string() + ": cannot open for reading: " + file_kind(info.st_mode) +
+                    ", not a regular file");
   }
-  return text.str();
+  std::string text;
+  char buffer[65536];
+  while (true) {
+    const ssize_t n = ::read(file.fd, buffer, sizeof buffer);
+    if (n < 0 && errno == EINTR) {
+      continue;
+    }
+    if (n < 0) {
+      throw ReadError(path.string() + ": read error (" + reason(errno) + ")");
+    }
+    if (n == 0) {
+      break;
+    }
+    text.append(buffer, static_cast<std::size_t>(n));
+  }
+  return text;
 }
 
 void write_file_atomically(const std::filesystem::path& path, std::string_view contents) {
+  struct stat target_stat {};
+  bool exists = false;
+  const fs::path target = resolve_symlinks(path, target_stat, exists);
+  const std::string through =
+      target == path ? "" : " (the symbolic link's target " + target.string() + ")";
+  if (exists && !S_ISREG(target_stat.st_mode)) {
+    // Renaming over a device, FIFO or directory would replace it: refuse instead.
+    throw WriteError(path.string() + through + ": cannot write: " + file_kind(target_stat.st_mode) +
+                     ", not a regular file (FoldLab writes only regular files)");
+  }
+  remove_stale_temporaries(target);
   // Unique per process and per call, so concurrent saves of one path never share a temporary.
   static std::atomic<unsigned> counter{0};
-  std::filesystem::path temporary = path;
+  fs::path temporary = target;
   temporary += ".tmp." + std::to_string(::getpid()) + "." + std::to_string(counter++);
   auto fail = [&](const std::string& what, int error) {
     std::error_code ignored;
-    std::filesystem::remove(temporary, ignored);
-    throw WriteError(path.string() + ": " + what + " (" + std::strerror(error) + ")");
+    fs::remove(temporary, ignored);
+    throw WriteError(path.string() + through + ": " + what + " (" + reason(error) + ")");
   };
-  const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
-  if (fd < 0) {
-    throw WriteError(path.string() + ": cannot write (" + std::strerror(errno) + ")");
+  FileDescriptor file{
+      ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_TRUNC | O_CLOEXEC, 0644)};
+  if (file.fd < 0) {
+    throw WriteError(path.string() + through + ": cannot write (" + reason(errno) + ")");
+  }
+  if (exists) {
+    // Replacing a file keeps its permissions, as an in-place write would.
+    ::fchmod(file.fd, target_stat.st_mode & 07777);
   }
   std::size_t written = 0;
   while (written < contents.size()) {
-    const ssize_t w = ::write(fd, contents.data() + written, contents.size() - written);
+    const ssize_t w = ::write(file.fd, contents.data() + written, contents.size() - written);
     if (w < 0 && errno == EINTR) {
       continue;
     }
     if (w < 0) {
-      const int error = errno;
-      ::close(fd);
-      fail("write failed", error);
+      fail("write failed", errno);
     }
     written += static_cast<std::size_t>(w);
   }
-  const int sync_error = ::fsync(fd) == 0 ? 0 : errno;
-  const int close_error = ::close(fd) == 0 ? 0 : errno;
+  const int sync_error = ::fsync(file.fd) == 0 ? 0 : errno;
+  const int close_error = ::close(file.fd) == 0 ? 0 : errno;
+  file.fd = -1;
   if (sync_error != 0 || close_error != 0) {
     fail("could not flush to disk", sync_error != 0 ? sync_error : close_error);
   }
-  if (std::rename(temporary.c_str(), path.c_str()) != 0) {
+  if (std::rename(temporary.c_str(), target.c_str()) != 0) {
     fail("could not replace the file", errno);
   }
   // The rename itself is durable only once the directory entry is on disk.
-  const std::filesystem::path parent = path.has_parent_path() ? path.parent_path() : ".";
-  if (const int dir = ::open(parent.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC); dir >= 0) {
-    ::fsync(dir);
-    ::close(dir);
+  const fs::path parent = target.has_parent_path() ? target.parent_path() : ".";
+  if (FileDescriptor dir{::open(parent.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC)}; dir.fd >= 0) {
+    ::fsync(dir.fd);
   }
 }
 

@@ -1,5 +1,6 @@
 #include "core/io/measurements.hpp"
 #include "core/io/io.hpp"
+#include "core/io/json_input.hpp"
 
 #include <algorithm>
 #include <charconv>
@@ -18,6 +19,7 @@
 namespace foldlab {
 namespace {
 
+using detail::shortest_number;
 using nlohmann::json;
 
 constexpr std::string_view kName = "name";
@@ -117,8 +119,8 @@ class RowReader {
         if (const std::optional<double> value = parse_number(c.text); value && !typed_) {
           return value;
         }
-        problem(column, typed_ ? "expected a number, got text \"" + c.text + "\""
-                               : "'" + c.text + "' is not a number");
+        problem(column, typed_ ? "expected a number, got text \"" + detail::cut(c.text) + "\""
+                               : "'" + detail::cut(c.text) + "' is not a number");
         return std::nullopt;
       case Cell::Kind::other:
         problem(column, "expected a number, got " + c.text);
@@ -137,8 +139,9 @@ class RowReader {
     const bool whole =
         c.kind == Cell::Kind::number ? c.number_is_integer : *value == std::floor(*value);
     if (!whole || std::abs(*value) > 1e9) {
-      problem(column, "'" + (c.kind == Cell::Kind::text ? c.text : json(*value).dump()) +
-                          "' is not a whole number");
+      problem(column,
+              "'" + (c.kind == Cell::Kind::text ? detail::cut(c.text) : shortest_number(*value)) +
+                  "' is not a whole number");
       return std::nullopt;
     }
     return static_cast<int>(*value);
@@ -150,9 +153,9 @@ class RowReader {
       return "";
     }
     if (c.kind != Cell::Kind::text) {
-      problem(column,
-              "expected text, got " +
-                  (c.kind == Cell::Kind::number ? "the number " + json(c.number).dump() : c.text));
+      problem(column, "expected text, got " + (c.kind == Cell::Kind::number
+                                                   ? "the number " + shortest_number(c.number)
+                                                   : c.text));
       return "";
     }
     if (c.text.find_first_of("\r\n") != std::string::npos) {
@@ -169,7 +172,7 @@ class RowReader {
     m.group = text(kGroup);
     if (const std::string role = text(kRole);
         !role.empty() && !parse_measurement_role(role, m.role)) {
-      problem(kRole, "'" + role + "' is not one of: fit, check");
+      problem(kRole, "'" + detail::cut(role) + "' is not one of: fit, check");
     }
     Parameters given;
     bool all_given = true;
@@ -182,7 +185,7 @@ class RowReader {
     }
     m.shape = text(kShape);
     if (ShapeKind kind{}; !m.shape.empty() && !parse_shape_kind(m.shape, kind)) {
-      problem(kShape, "'" + m.shape +
+      problem(kShape, "'" + detail::cut(m.shape) +
                           "' is not a shape FoldLab knows (cosine, rectangular, "
                           "strip, inclined); leave it empty if unsure");
     }
@@ -196,13 +199,14 @@ class RowReader {
     if (const std::optional<double> z = number(kDepth, false)) {
       m.observed.z_max_mm = *z;
       if (!(*z > 0.0)) {
-        problem(kDepth, json(*z).dump() + " must be > 0: an observed depth is compared by ratio");
+        problem(kDepth,
+                shortest_number(*z) + " must be > 0: an observed depth is compared by ratio");
       }
     }
     if (const std::optional<double> Q = number(kRatio, false)) {
       m.observed.Q = *Q;
       if (!(*Q > 1.0)) {
-        problem(kRatio, json(*Q).dump() +
+        problem(kRatio, shortest_number(*Q) +
                             " must be > 1: a ratio of consecutive amplitudes (leave out a "
                             "misprint)");
       }
@@ -288,8 +292,6 @@ std::optional<std::string> split_csv_line(std::string_view line, std::vector<std
   }
 }
 
-using detail::shortest_number;
-
 std::string csv_text(const std::string& text) {
   if (text.find_first_of("\r\n") != std::string::npos) {
     throw MeasurementError("'" + text + "': CSV text fields must be one line");
@@ -310,8 +312,9 @@ std::string csv_text(const std::string& text) {
 
 // The cells of one measurement by column, as the writers put them out.
 std::vector<std::pair<std::string_view, std::string>> csv_cells(const Measurement& m) {
-  auto optional_number = [](const auto& value) {
-    return value ? shortest_number(static_cast<double>(*value)) : std::string();
+  auto optional_number = [](const auto& value, std::string_view field) {
+    return value ? shortest_number(detail::finite_or_throw(static_cast<double>(*value), field))
+                 : std::string();
   };
   std::vector<std::pair<std::string_view, std::string>> cells = {
       {kName, csv_text(m.name)},
@@ -319,19 +322,16 @@ std::vector<std::pair<std::string_view, std::string>> csv_cells(const Measuremen
       {kRole, std::string(to_string(m.role))},
       {kShape, csv_text(m.shape)},
       {kCount, m.observed.n ? std::to_string(*m.observed.n) : std::string()},
-      {kDepth, optional_number(m.observed.z_max_mm)},
-      {kRatio, optional_number(m.observed.Q)}};
+      {kDepth, optional_number(m.observed.z_max_mm, kDepth)},
+      {kRatio, optional_number(m.observed.Q, kRatio)}};
   const Parameters inputs = parameters_for(m, Parameters{});
   std::vector<std::pair<std::string_view, std::string>> input_cells;
   for (const InputSpec* spec : row_inputs()) {
-    input_cells.emplace_back(spec->field, shortest_number(*spec->value(inputs)));
+    input_cells.emplace_back(
+        spec->field, shortest_number(detail::finite_or_throw(*spec->value(inputs), spec->field)));
   }
   cells.insert(cells.begin() + 3, input_cells.begin(), input_cells.end());
   return cells;
-}
-
-std::string describe_json(const json& v) {
-  return std::string(v.is_null() ? "null" : v.type_name()) + " " + v.dump();
 }
 
 }  // namespace
@@ -381,12 +381,13 @@ MeasurementSet measurements_from_csv(const std::string& text, const std::string&
       for (std::size_t i = 0; i < header.size(); ++i) {
         if (!is_known_column(header[i])) {
           problems.push_back(where + " (header), column " + std::to_string(i + 1) + " '" +
-                             header[i] + "': unknown column (known: " + known_columns() + ")");
+                             detail::cut(header[i]) +
+                             "': unknown column (known: " + known_columns() + ")");
           header_ok = false;
         } else if (std::find(header.begin(), header.begin() + static_cast<std::ptrdiff_t>(i),
                              header[i]) != header.begin() + static_cast<std::ptrdiff_t>(i)) {
           problems.push_back(where + " (header), column " + std::to_string(i + 1) + " '" +
-                             header[i] + "': appears twice");
+                             detail::cut(header[i]) + "': appears twice");
           header_ok = false;
         }
       }
@@ -450,11 +451,11 @@ MeasurementSet measurements_from_json(const json& j, const std::string& origin) 
   };
   if (!j.is_object()) {
     fail("expected an object with \"foldlab_measurements\": 1 and \"rows\", got " +
-         describe_json(j).substr(0, 80));
+         describe_json(j));
   }
   for (const auto& [key, value] : j.items()) {
     if (key != "foldlab_measurements" && key != "description" && key != "source" && key != "rows") {
-      problems.push_back(origin + ": /" + key +
+      problems.push_back(origin + ": /" + detail::cut(key) +
                          ": unknown key (allowed: foldlab_measurements, description, source, "
                          "rows)");
     }
@@ -489,7 +490,7 @@ MeasurementSet measurements_from_json(const json& j, const std::string& origin) 
     std::map<std::string, Cell, std::less<>> cells;
     for (const auto& [key, value] : r.items()) {
       if (!is_known_column(key)) {
-        problems.push_back(where + ", column " + key +
+        problems.push_back(where + ", column " + detail::cut(key) +
                            ": unknown column (known: " + known_columns() + ")");
         continue;
       }
@@ -529,9 +530,9 @@ MeasurementSet measurements_from_text(const std::string& text, const std::string
   }
   json j;
   try {
-    j = json::parse(text);
-  } catch (const json::exception& e) {
-    throw MeasurementError(origin + ": not valid JSON: " + e.what());
+    j = parse_json(text, origin);
+  } catch (const JsonInputError& e) {
+    throw MeasurementError(e.what());
   }
   return measurements_from_json(j, origin);
 }
@@ -642,12 +643,15 @@ json measurements_to_json(const MeasurementSet& set) {
     r[std::string(kRole)] = to_string(m.role);
     const Parameters inputs = parameters_for(m, Parameters{});
     for (const InputSpec* spec : row_inputs()) {
-      r[std::string(spec->field)] = *spec->value(inputs);
+      r[std::string(spec->field)] = detail::finite_or_throw(*spec->value(inputs), spec->field);
     }
     put_text(kShape, m.shape);
     r[std::string(kCount)] = m.observed.n ? json(*m.observed.n) : json(nullptr);
-    r[std::string(kDepth)] = m.observed.z_max_mm ? json(*m.observed.z_max_mm) : json(nullptr);
-    r[std::string(kRatio)] = m.observed.Q ? json(*m.observed.Q) : json(nullptr);
+    r[std::string(kDepth)] = m.observed.z_max_mm
+                                 ? json(detail::finite_or_throw(*m.observed.z_max_mm, kDepth))
+                                 : json(nullptr);
+    r[std::string(kRatio)] =
+        m.observed.Q ? json(detail::finite_or_throw(*m.observed.Q, kRatio)) : json(nullptr);
     rows.push_back(std::move(r));
   }
   json j = {{"foldlab_measurements", kMeasurementsFormatVersion}};

@@ -1,5 +1,6 @@
 #include "core/io/preset.hpp"
 
+#include <algorithm>
 #include <fstream>
 #include <sstream>
 #include <utility>
@@ -8,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/io/io.hpp"
+#include "core/io/json_input.hpp"
 #include "core/model/settings.hpp"
 #include "core/model/text_format.hpp"
 #include "default_preset_text.hpp"
@@ -25,10 +27,6 @@ std::string json_pointer_for(const std::string& field) {
   return spec != nullptr ? std::string(spec->preset) : "";
 }
 
-std::string type_name(const json& v) {
-  return v.is_null() ? "null" : v.type_name();
-}
-
 // Reads one object's fields, collecting every problem instead of stopping at the first.
 class Reader {
  public:
@@ -43,7 +41,7 @@ class Reader {
   bool object(const json& object, const std::string& pointer,
               const std::vector<std::string>& allowed) {
     if (!object.is_object()) {
-      problem(pointer.empty() ? "/" : pointer, "expected an object, got " + type_name(object));
+      problem(pointer.empty() ? "/" : pointer, "expected an object, got " + describe_json(object));
       return false;
     }
     for (const auto& [key, value] : object.items()) {
@@ -52,7 +50,8 @@ class Reader {
         known = known || key == a;
       }
       if (!known) {
-        problem(pointer + "/" + key, "unknown key (allowed here: " + join_comma(allowed) + ")");
+        problem(pointer + "/" + detail::cut(key),
+                "unknown key (allowed here: " + join_comma(allowed) + ")");
       }
     }
     return true;
@@ -69,7 +68,7 @@ class Reader {
     }
     const json& v = object.at(key);
     if (!v.is_number()) {
-      problem(at, "expected a number, got " + type_name(v) + " " + v.dump());
+      problem(at, "expected a number, got " + describe_json(v));
       return;
     }
     out = v.get<double>();
@@ -81,7 +80,7 @@ class Reader {
     }
     const json& v = object.at(key);
     if (!v.is_number_integer()) {
-      problem(pointer + "/" + key, "expected a whole number, got " + type_name(v) + " " + v.dump());
+      problem(pointer + "/" + key, "expected a whole number, got " + describe_json(v));
       return;
     }
     // Unsigned values above 2^63 - 1 would wrap in get<long long>(): range-check them first.
@@ -105,7 +104,7 @@ class Reader {
     }
     const json& v = object.at(key);
     if (!v.is_string()) {
-      problem(at, "expected a string, got " + type_name(v) + " " + v.dump());
+      problem(at, "expected a string, got " + describe_json(v));
       return;
     }
     out = v.get<std::string>();
@@ -121,7 +120,8 @@ class Reader {
     const std::size_t before = problems_.size();
     text(object, pointer, key.c_str(), value, false);
     if (problems_.size() == before && !spec.set_choice(p, value)) {
-      problem(pointer + "/" + key, "\"" + value + "\" is not one of: " + std::string(spec.choices));
+      problem(pointer + "/" + key,
+              "\"" + detail::cut(value) + "\" is not one of: " + std::string(spec.choices));
     }
   }
 
@@ -240,7 +240,7 @@ Preset preset_from_json(const json& j, const std::string& origin) {
                                      std::to_string(kPresetFormatVersion) + ")");
   } else if (!j.at("foldlab_preset").is_number_integer() ||
              j.at("foldlab_preset").get<long long>() != kPresetFormatVersion) {
-    r.problem("/foldlab_preset", "format version " + j.at("foldlab_preset").dump() +
+    r.problem("/foldlab_preset", "format version " + describe_json(j.at("foldlab_preset")) +
                                      " is not supported (this FoldLab reads version " +
                                      std::to_string(kPresetFormatVersion) + ")");
   }
@@ -289,9 +289,17 @@ Preset preset_from_json(const json& j, const std::string& origin) {
   if (j.contains("calibration")) {
     preset.calibration = read_calibration(r, j.at("calibration"), problems);
   }
-  if (problems.empty()) {
-    for (const ValidationIssue& issue : validate(p)) {
-      r.problem(json_pointer_for(issue.field), issue.message);
+  // Range problems too, except for a key that already has one: its value was not read, so the
+  // range check would be about the default standing in for it.
+  const std::vector<std::string> read_problems = problems;
+  for (const ValidationIssue& issue : validate(p)) {
+    const std::string pointer = json_pointer_for(issue.field);
+    const std::string prefix = origin + ": " + pointer + ":";
+    const bool already =
+        std::any_of(read_problems.begin(), read_problems.end(),
+                    [&](const std::string& line) { return line.starts_with(prefix); });
+    if (!already) {
+      r.problem(pointer, issue.message);
     }
   }
   if (!problems.empty()) {
@@ -303,10 +311,9 @@ Preset preset_from_json(const json& j, const std::string& origin) {
 Preset preset_from_text(const std::string& text, const std::string& origin) {
   json j;
   try {
-    j = json::parse(text);
-  } catch (const json::exception& e) {
-    // parse_error, and out_of_range for a number no double holds (e.g. 1e400).
-    throw PresetError(origin + ": not valid JSON: " + e.what());
+    j = parse_json(text, origin);
+  } catch (const JsonInputError& e) {
+    throw PresetError(e.what());
   }
   return preset_from_json(j, origin);
 }
@@ -329,16 +336,17 @@ json preset_to_json(const Preset& preset) {
     } else if (spec.kind == InputKind::whole_number) {
       j[at] = spec.whole_number(const_cast<Parameters&>(p));
     } else {
-      j[at] = *spec.value(p);
+      j[at] = detail::finite_or_throw(*spec.value(p), spec.preset);
     }
   }
   json published = json::object();
   if (preset.published.n)
     published["n"] = *preset.published.n;
   if (preset.published.z_max_mm)
-    published["z_max_mm"] = *preset.published.z_max_mm;
+    published["z_max_mm"] =
+        detail::finite_or_throw(*preset.published.z_max_mm, "/published/z_max_mm");
   if (preset.published.Q)
-    published["Q"] = *preset.published.Q;
+    published["Q"] = detail::finite_or_throw(*preset.published.Q, "/published/Q");
   if (!published.empty()) {
     j["published"] = published;
   }
@@ -375,11 +383,8 @@ void save_preset(const Preset& preset, const std::filesystem::path& path) {
   if (const auto issues = validate(preset.parameters); !issues.empty()) {
     throw PresetError(path.string() + ": not saved: " + format_issues(issues));
   }
-  try {
-    write_file_atomically(path, preset_to_json(preset).dump(2) + "\n");
-  } catch (const WriteError& e) {
-    throw PresetError(e.what());
-  }
+  // A WriteError stays one: a file that cannot be written is not bad input.
+  write_file_atomically(path, preset_to_json(preset).dump(2) + "\n");
 }
 
 const Preset& default_preset() {

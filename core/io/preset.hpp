@@ -61,7 +61,8 @@ nlohmann::json preset_to_json(const Preset& preset);
 
 Preset load_preset(const std::filesystem::path& path);
 // Writes a temporary file beside `path`, flushes it to disk and renames it over `path`, so that a
-// crash leaves either the old file or the new one, never half of one. Throws PresetError.
+// crash leaves either the old file or the new one, never half of one. Throws PresetError for
+// parameters out of range, WriteError (io.hpp) for a file that cannot be written.
 void save_preset(const Preset& preset, const std::filesystem::path& path);
 
 // The default preset (Table 1, h = 1400 mm: the case of the paper's Fig. 5), compiled in from

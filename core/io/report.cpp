@@ -12,10 +12,12 @@
 namespace foldlab {
 namespace {
 
+using detail::finite_or_throw;
 using detail::printf_string;
 
 std::string line(const char* label, const char* symbol, double value, const char* unit,
                  const char* format = "%.6g", const std::string& after = "") {
+  finite_or_throw(value, *symbol != '\0' ? symbol : label);
   char number[64];
   std::snprintf(number, sizeof number, format, value);
   char out[160];
@@ -33,32 +35,40 @@ std::string range_text(double lo, double hi, const char* format) {
 
 nlohmann::json solution_to_json(const Solution& s, const Parameters& p,
                                 const ModelStanding* standing) {
+  for (std::size_t i = 0; i < s.a_mm.size(); ++i) {
+    finite_or_throw(s.a_mm[i], "a_mm[" + std::to_string(i) + "]");
+  }
   nlohmann::json j = {
       {"method", to_string(s.method)},
       {"regime", to_string(s.regime)},
       {"message", describe(s, p)},
       {"n", s.n},
-      {"Q", s.Q},
-      {"Q7", s.Q7 ? nlohmann::json(*s.Q7) : nlohmann::json(nullptr)},
-      {"s", s.stress_ratio},
-      {"z_max_mm", s.z_max_mm},
+      {"Q", finite_or_throw(s.Q, "Q")},
+      {"Q7", s.Q7 ? nlohmann::json(finite_or_throw(*s.Q7, "Q7")) : nlohmann::json(nullptr)},
+      {"s", finite_or_throw(s.stress_ratio, "s")},
+      {"z_max_mm", finite_or_throw(s.z_max_mm, "z_max_mm")},
       {"a_mm", s.a_mm},
-      {"l_mm", s.span_mm},
-      {"A_mm", s.sag_amplitude_mm},
+      {"l_mm", finite_or_throw(s.span_mm, "l_mm")},
+      {"A_mm", finite_or_throw(s.sag_amplitude_mm, "A_mm")},
       {"iterations", s.iterations},
       {"hit_iteration_cap", s.hit_iteration_cap},
       {"stopped_at_first_iterate", s.stopped_at_first_iterate},
       {"n_capped", s.n_capped},
       {"n_cycle", s.n_cycle},
-      {"residual_length", s.residual_length},
-      {"residual_height", s.residual_height},
-      {"B_Nmm", bending_stiffness_Nmm(p.fabric)},
-      {"c_b_mm", bending_length_mm(p.fabric)},
+      {"residual_length", finite_or_throw(s.residual_length, "residual_length")},
+      {"residual_height", finite_or_throw(s.residual_height, "residual_height")},
+      {"B_Nmm", finite_or_throw(bending_stiffness_Nmm(p.fabric), "B_Nmm")},
+      {"c_b_mm", finite_or_throw(bending_length_mm(p.fabric), "c_b_mm")},
   };
   const FoldRounding rounding = fold_rounding(s, p);
+  for (double radius_mm : rounding.radius_mm) {
+    finite_or_throw(radius_mm, "rounded_folds.radius_mm");
+  }
   j["rounded_folds"] = {
-      {"rounded", rounding.rounded},         {"radius_mm", rounding.radius_mm},
-      {"depth_scale", rounding.depth_scale}, {"z_fold_mm", rounding.depth_scale * s.z_max_mm},
+      {"rounded", rounding.rounded},
+      {"radius_mm", rounding.radius_mm},
+      {"depth_scale", finite_or_throw(rounding.depth_scale, "rounded_folds.depth_scale")},
+      {"z_fold_mm", finite_or_throw(rounding.depth_scale * s.z_max_mm, "rounded_folds.z_fold_mm")},
       {"length_kept", rounding.length_kept},
   };
   if (standing != nullptr) {
@@ -81,7 +91,7 @@ nlohmann::json solution_to_json(const Solution& s, const Parameters& p,
     if (spec.kind == InputKind::choice) {
       inputs[std::string(name)] = spec.choice(p);
     } else {
-      inputs[std::string(name)] = *spec.value(p);
+      inputs[std::string(name)] = finite_or_throw(*spec.value(p), name);
     }
   }
   return j;
@@ -156,6 +166,7 @@ std::string solution_table(const Solution& s, const Parameters& p, const std::st
     out += "\n  fold amplitudes a_i (mm), i = 0 (lower boundary) .. n (upper edge):\n";
     const std::size_t shown = std::min<std::size_t>(s.a_mm.size(), 40);
     for (std::size_t i = 0; i < shown; ++i) {
+      finite_or_throw(s.a_mm[i], "a_" + std::to_string(i));
       char cell[48];
       std::snprintf(cell, sizeof cell, "    a_%-3zu %10.2f%s", i, s.a_mm[i],
                     (i % 4 == 3) ? "\n" : "");

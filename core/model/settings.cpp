@@ -368,18 +368,18 @@ std::optional<std::string> apply_setting(Parameters& p, std::string_view key,
     for (const InputSpec& k : input_table()) {
       known.push_back(k.key);
     }
-    return "unknown key '" + std::string(key) + "' (known: " + detail::join(known, ", ") + ")";
+    return "unknown key '" + detail::cut(key) + "' (known: " + detail::join(known, ", ") + ")";
   }
   if (spec->kind == InputKind::choice) {
     if (spec->set_choice(p, value)) {
       return std::nullopt;
     }
-    return std::string(key) + " = '" + std::string(value) +
+    return std::string(key) + " = '" + detail::cut(value) +
            "' is not one of: " + std::string(spec->choices);
   }
   const std::optional<double> number = parse_number(value);
   if (!number) {
-    return std::string(key) + " = '" + std::string(value) + "' is not a number";
+    return std::string(key) + " = '" + detail::cut(value) + "' is not a number";
   }
   switch (spec->kind) {
     case InputKind::stiffness_K:
@@ -387,7 +387,7 @@ std::optional<std::string> apply_setting(Parameters& p, std::string_view key,
       break;
     case InputKind::whole_number:
       if (*number != std::floor(*number) || std::abs(*number) > 1e9) {
-        return std::string(key) + " = '" + std::string(value) + "' must be a whole number";
+        return std::string(key) + " = '" + detail::cut(value) + "' must be a whole number";
       }
       spec->whole_number(p) = static_cast<int>(*number);
       break;
@@ -404,7 +404,7 @@ std::vector<std::string> apply_assignments(Parameters& p,
   for (const std::string& assignment : assignments) {
     const std::size_t eq = assignment.find('=');
     if (eq == std::string::npos || eq == 0) {
-      errors.push_back("'" + assignment + "' is not KEY=VALUE");
+      errors.push_back("'" + detail::cut(assignment) + "' is not KEY=VALUE");
       continue;
     }
     std::string key = assignment.substr(0, eq);

@@ -412,6 +412,7 @@ Solution solve_exact(const Parameters& p) {
 }
 
 using detail::printf_string;
+using detail::shortest_number;
 
 }  // namespace
 
@@ -448,10 +449,13 @@ std::string describe(const Solution& s, const Parameters& p) {
           "flat.";
       break;
     case Regime::stiff:
-      text = printf_string(
-          "Stiff: s = %.3g >= 1, eq. 7 has no root (buckling stress above the weight's); at most "
-          "one fold.",
-          s.stress_ratio);
+      // Eq. 7 sees s^p: with p != 1 that, not s, is what reached 1.
+      text = p.model.stress_exponent_p == 1.0
+                 ? printf_string("Stiff: s = %.3g >= 1", s.stress_ratio)
+                 : printf_string("Stiff: s^p = %.3g^%s = %.3g >= 1", s.stress_ratio,
+                                 shortest_number(p.model.stress_exponent_p).c_str(),
+                                 std::pow(s.stress_ratio, p.model.stress_exponent_p));
+      text += ", eq. 7 has no root (buckling stress above the weight's); at most one fold.";
       break;
     case Regime::short_cloth:
       text = printf_string(

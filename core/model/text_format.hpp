@@ -4,7 +4,9 @@
 
 #include <algorithm>
 #include <charconv>
+#include <cmath>
 #include <cstdio>
+#include <stdexcept>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -25,6 +27,30 @@ inline std::string shortest_number(double value) {
   char buffer[64];
   const auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
   return std::string(buffer, result.ptr);
+}
+
+// Text echoed in a message, cut to about `max_bytes` with "…" so that a 5 MB value stays a line.
+// Never cuts inside a UTF-8 character.
+inline std::string cut(std::string_view text, std::size_t max_bytes = 60) {
+  if (text.size() <= max_bytes) {
+    return std::string(text);
+  }
+  std::size_t end = max_bytes;
+  while (end > 0 && (static_cast<unsigned char>(text[end]) & 0xC0) == 0x80) {
+    --end;
+  }
+  return std::string(text.substr(0, end)) + "…";
+}
+
+// `value` itself when finite. A writer calls this on every number it puts out: an infinity or NaN
+// there is a bug upstream (the input ranges exclude them), so it stops as an internal error naming
+// the field rather than writing "inf", "nan" or JSON null.
+inline double finite_or_throw(double value, std::string_view field) {
+  if (!std::isfinite(value)) {
+    throw std::logic_error("non-finite " + std::string(field) + " (" + shortest_number(value) +
+                           "): refusing to write it");
+  }
+  return value;
 }
 
 // Text safe inside XML (SVG) elements and attribute values.

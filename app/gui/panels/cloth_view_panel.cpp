@@ -6,6 +6,7 @@
 
 #include "app/gui/panels/widgets.hpp"
 #include "core/model/settings.hpp"
+#include "core/model/text_format.hpp"
 
 namespace foldlab::gui {
 
@@ -17,11 +18,11 @@ std::optional<std::string> ClothViewPanel::set_view(std::string_view key, std::s
                                          : ClothStyle::Print::stripes;
       return std::nullopt;
     }
-    return "print = '" + std::string(value) + "' is not one of: plain, checks, stripes";
+    return "print = '" + detail::cut(value) + "' is not one of: plain, checks, stripes";
   }
   const std::optional<double> number = parse_number(value);
   if (!number) {
-    return std::string(key) + " = '" + std::string(value) + "' is not a number";
+    return detail::cut(key) + " = '" + detail::cut(value) + "' is not a number";
   }
   const float v = static_cast<float>(*number);
   if (key == "breeze") {
@@ -40,7 +41,7 @@ std::optional<std::string> ClothViewPanel::set_view(std::string_view key, std::s
   } else if (key == "ground") {
     style_.ground = v != 0.0f;
   } else {
-    return "unknown view key '" + std::string(key) +
+    return "unknown view key '" + detail::cut(key) +
            "' (known: sweep, print, breeze, breeze_mm, time, z, wireframe, fold_lines, ground)";
   }
   return std::nullopt;
