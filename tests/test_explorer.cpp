@@ -11,11 +11,13 @@
 #include <cstdint>
 #include <cstdlib>
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
 
 #include "app/gui/explorer.hpp"
+#include "app/gui/input_player.hpp"
 #include "app/gui/renderer.hpp"
 #include "app/gui/scripted_run.hpp"
 #include "core/io/preset.hpp"
@@ -271,6 +273,66 @@ TEST(AnimatedInput, MovesOverTheSlidersRangeWhereTheModelAcceptsIt) {
   EXPECT_LT(d.hi(), 700.0);
   EXPECT_GT(d.hi(), 680.0);
   EXPECT_THROW(AnimatedInput("method", base), app::InputError);
+}
+
+// Input playback with the null renderer: the script's frames run in this process.
+int play(Explorer& explorer, const nlohmann::json& script, const std::function<void()>& frame) {
+  InputPlayer player(script, "test script");
+  while (player.before_new_frame(ImGui::GetIO(), explorer)) {
+    frame();
+  }
+  return player.exit_status();
+}
+
+TEST_F(ExplorerTest, DraggingTheWSliderFromItsHandleMovesWOneThirdOfADecadePer40Pixels) {
+  // ImGui 1.86 floats: a 10 px handle inside 2 px of padding, so the handle's centre travels
+  // W - 14 px over the slider's three decades (1e-7 to 1e-4 N/mm², the table's typical range).
+  const double w0 = explorer_->edited().fabric.weight_N_per_mm2;
+  const SliderPlace place = explorer_->parameters_panel().slider_places().at("w");
+  const double travel_px = place.max.x - place.min.x - 14.0;
+  for (const double dx : {40.0, -40.0}) {
+    explorer_->set_input("w", w0);
+    frame();
+    ASSERT_EQ(play(*explorer_, {{"steps", {{{"drag", "w"}, {"dx", dx}}}}}, [&] { frame(); }), 0);
+    const double decades = std::log10(explorer_->edited().fabric.weight_N_per_mm2 / w0);
+    // ImGui floors the mouse position: up to a pixel either way.
+    EXPECT_NEAR(decades, 3.0 * dx / travel_px, 3.0 * 1.5 / travel_px) << "dx " << dx;
+    EXPECT_TRUE(explorer_->document().issues().empty());
+  }
+}
+
+TEST_F(ExplorerTest, APlayedScriptFailsAtTheFirstExpectThatDoesNotHold) {
+  InputPlayer player({{"steps",
+                       {{{"expect", {{"parameters.h_mm", 1400}}}},
+                        {{"expect", {{"parameters.h_mm", {100, 200}}}}},
+                        {{"expect", {{"parameters.h_mm", 1400}}}}}}},
+                     "test script");
+  int frames = 0;
+  while (player.before_new_frame(ImGui::GetIO(), *explorer_)) {
+    frame();
+    ++frames;
+  }
+  EXPECT_LT(frames, 10);
+  EXPECT_EQ(player.exit_status(), 1);
+  EXPECT_NE(player.failure().find("step 2 "), std::string::npos) << player.failure();
+}
+
+TEST_F(ExplorerTest, AMalformedScriptNamesEveryProblem) {
+  try {
+    InputPlayer player({{"steps",
+                         {{{"drag", "q"}, {"dx", 1}},
+                          {{"click", "w"}, {"at", 2}},
+                          {{"frames", 3}},
+                          {{"type", 5}}}}},
+                       "test script");
+    FAIL() << "accepted";
+  } catch (const app::InputError& e) {
+    const std::string message = e.what();
+    for (const char* step : {"step 1:", "step 2:", "step 4:"}) {
+      EXPECT_NE(message.find(step), std::string::npos) << message;
+    }
+    EXPECT_EQ(message.find("step 3:"), std::string::npos) << message;
+  }
 }
 
 }  // namespace

@@ -43,6 +43,25 @@ void add_common_gui_options(CLI::App& command, GuiCommandOptions& options) {
       ->check(CLI::IsMember({"equations", "sweep", "map"}));
 }
 
+void add_play_option(CLI::App& command, GuiRunOptions& options) {
+  command
+      .add_option("--play", options.play_path,
+                  "feed the steps of SCRIPT.json to the explorer as mouse, keys and text; exit "
+                  "0 when every expect holds, 1 naming the step that failed, 2 for a malformed "
+                  "script (see docs/cli.md)")
+      ->type_name("SCRIPT.json");
+}
+
+// A played script sets its own frames, input and screenshots.
+void check_play_options(const GuiRunOptions& options) {
+  if (!options.play_path.empty() &&
+      (options.frames != 0 || !options.animate_key.empty() || !options.screenshot_path.empty())) {
+    throw InputError(
+        "--play takes its frames, input and screenshots from the script: "
+        "drop --frames, --animate, --screenshot and --out");
+  }
+}
+
 }  // namespace
 
 app::Command add_gui_command(CLI::App& app) {
@@ -63,9 +82,11 @@ app::Command add_gui_command(CLI::App& app) {
                     "print frame times (mean, 95th percentile) and pipeline counters as JSON");
   command->add_flag("--fresh", options->run.fresh,
                     "do not restore or save the last session and window layout");
+  add_play_option(*command, options->run);
   return [options] {
     return guarded([&] {
       parse_size(options->size, options->run);
+      check_play_options(options->run);
       if (!options->run.screenshot_path.empty() && options->run.frames == 0) {
         throw InputError("--screenshot needs --frames N");
       }
@@ -79,17 +100,22 @@ app::Command add_render_command(CLI::App& app) {
   CLI::App* command = app.add_subcommand(
       "render", "draw the full explorer window with no display (EGL surfaceless) into a PNG");
   add_common_gui_options(*command, *options);
-  command->add_option("--out", options->run.screenshot_path, "PNG file to write")->required();
+  command->add_option("--out", options->run.screenshot_path, "PNG file to write");
   command
       ->add_option("--frames", options->run.frames, "frames to run before the picture (default 3)")
       ->check(CLI::Range(1, 100000));
   command->add_option("--animate", options->run.animate_key, "as for gui");
   command->add_flag("--report", options->run.report, "as for gui");
+  add_play_option(*command, options->run);
   return [options] {
     return guarded([&] {
       parse_size(options->size, options->run);
+      check_play_options(options->run);
+      if (options->run.screenshot_path.empty() && options->run.play_path.empty()) {
+        throw InputError("render needs --out FILE.png (or --play SCRIPT.json)");
+      }
       options->run.fresh = true;
-      if (options->run.frames == 0) {
+      if (options->run.frames == 0 && options->run.play_path.empty()) {
         options->run.frames = 3;  // ImGui settles table and child sizes over the first frames
       }
       return run_headless(options->run);

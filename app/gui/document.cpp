@@ -4,6 +4,7 @@
 #include <utility>
 
 #include "core/model/settings.hpp"
+#include "core/model/text_format.hpp"
 
 namespace foldlab::gui {
 
@@ -61,6 +62,17 @@ void Document::adopt(const Preset& loaded, std::string path) {
 
 bool Document::unsaved() const {
   return !(scene_.parameters() == loaded_.parameters);
+}
+
+std::optional<std::string> Document::refusal() const {
+  if (issues_.empty()) {
+    return std::nullopt;
+  }
+  std::vector<std::string> messages;
+  for (const ValidationIssue& issue : issues_) {
+    messages.push_back(issue.message);
+  }
+  return detail::join_lines(messages);
 }
 
 void Document::notify(std::string message, bool is_error) {

@@ -46,6 +46,13 @@ class Document {
   // Counts preset loads, so that views can reframe for a new cloth.
   std::uint64_t loads() const { return loads_; }
 
+  // What playback reports: the refusal shown under the sliders (null when all are accepted), the
+  // title of the modal dialog open now (none yet), and how many edits undo can take back (none
+  // yet).
+  std::optional<std::string> refusal() const;
+  std::optional<std::string> modal_title() const { return std::nullopt; }
+  std::size_t undo_depth() const { return 0; }
+
   void notify(std::string message, bool is_error);
   const std::string& message() const { return message_; }
   bool message_is_error() const { return message_is_error_; }

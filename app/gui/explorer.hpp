@@ -55,6 +55,7 @@ class Explorer {
   const RenderCounters& renderer_counters() const { return renderer_.counters(); }
   const AnalysisPanel& analysis() const { return analysis_; }
   const PresetsPanel& presets() const { return presets_; }
+  const ParametersPanel& parameters_panel() const { return parameters_; }
 
   void save_session_now();
   // A PNG the user asked for with the Export buttons, taken by the frame loop after drawing.

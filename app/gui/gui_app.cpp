@@ -65,6 +65,9 @@ void run_frames(Surface& surface, Renderer& renderer, Explorer& explorer, Script
   for (int frame = 0; surface.open() && script.wants_frame(frame, explorer); ++frame) {
     times.start();
     surface.new_frame();
+    if (!script.play(explorer, surface)) {
+      break;
+    }
     script.before_new_frame(explorer, frame);
     renderer.new_frame();
     ImGui::NewFrame();
@@ -74,12 +77,27 @@ void run_frames(Surface& surface, Renderer& renderer, Explorer& explorer, Script
     renderer.render_draw_data(surface.framebuffer_size());
     take_screenshots(explorer, renderer, surface.framebuffer_size(), screenshot_path,
                      script.is_last(frame));
+    if (const std::optional<std::string> path = script.take_play_screenshot()) {
+      write_png(path->c_str(), surface.framebuffer_size(),
+                renderer.read_pixels(surface.framebuffer_size()));
+    }
     surface.present();
     times.stop(surface);
   }
 }
 
-int run(Surface& surface, const GuiRunOptions& options, bool interactive) {
+// A script is checked before any window or context exists, so that a malformed one is reported
+// as such wherever it runs.
+std::optional<InputPlayer> read_script(const GuiRunOptions& options) {
+  std::optional<InputPlayer> player;
+  if (!options.play_path.empty()) {
+    player.emplace(options.play_path);
+  }
+  return player;
+}
+
+int run(Surface& surface, const GuiRunOptions& options, bool interactive,
+        std::optional<InputPlayer> player) {
   const Preset preset = app::resolve_inputs(options.inputs);
   std::optional<AnimatedInput> animation;
   if (!options.animate_key.empty()) {
@@ -103,25 +121,28 @@ int run(Surface& surface, const GuiRunOptions& options, bool interactive) {
   Explorer explorer(preset, options.inputs.preset_path, restore, explorer_options, *renderer);
   apply_view_settings(explorer, options.view_settings);
 
-  ScriptedRun script(options.frames, std::move(animation));
+  ScriptedRun script(options.frames, std::move(animation), std::move(player));
   FrameTimes times(options.report);
   run_frames(surface, *renderer, explorer, script, times, options.screenshot_path);
   times.print_report(interactive ? "window" : "headless", options.animate_key, explorer);
-  return app::kExitOk;
+  return script.exit_status();
 }
 
 }  // namespace
 
 int run_window(const GuiRunOptions& options) {
-  SurfaceOptions surface_options{options.width, options.height, options.frames == 0};
+  std::optional<InputPlayer> player = read_script(options);
+  SurfaceOptions surface_options{options.width, options.height,
+                                 options.frames == 0 && options.play_path.empty()};
   std::unique_ptr<Surface> surface = make_window_surface(surface_options);
-  return run(*surface, options, true);
+  return run(*surface, options, true, std::move(player));
 }
 
 int run_headless(const GuiRunOptions& options) {
+  std::optional<InputPlayer> player = read_script(options);
   SurfaceOptions surface_options{options.width, options.height, false};
   std::unique_ptr<Surface> surface = make_headless_surface(surface_options);
-  return run(*surface, options, false);
+  return run(*surface, options, false, std::move(player));
 }
 
 }  // namespace foldlab::gui

@@ -18,6 +18,7 @@ struct GuiRunOptions {
   std::string animate_key;      // moves this input every frame, as a dragged slider would
   bool report = false;          // print frame times and pipeline counters as JSON
   bool fresh = false;           // neither restore nor save the session
+  std::string play_path;        // input playback script (see InputPlayer)
   std::string analysis_tab;     // equations, sweep or map: the tab shown at start
   std::vector<std::string> view_settings;  // KEY=VALUE, see Explorer::set_view
 };

@@ -59,9 +59,11 @@ double AnimatedInput::value(int frame) const {
   return along(lo_, hi_, logarithmic_, 1.0 - phase);
 }
 
-ScriptedRun::ScriptedRun(int frames, std::optional<AnimatedInput> animation)
+ScriptedRun::ScriptedRun(int frames, std::optional<AnimatedInput> animation,
+                         std::optional<InputPlayer> player)
     : frames_(frames),
       animation_(std::move(animation)),
+      player_(std::move(player)),
       deadline_(std::chrono::steady_clock::now() + std::chrono::seconds(30)) {}
 
 bool ScriptedRun::wants_frame(int frame, const Explorer& explorer) {
@@ -84,6 +86,31 @@ void ScriptedRun::before_new_frame(Explorer& explorer, int frame) const {
   if (animation_) {
     explorer.set_input(animation_->key(), animation_->value(frame));
   }
+}
+
+bool ScriptedRun::play(Explorer& explorer, Surface& surface) {
+  if (!player_) {
+    return true;
+  }
+  if (!player_->before_new_frame(ImGui::GetIO(), explorer)) {
+    return false;
+  }
+  if (const std::optional<std::pair<int, int>> size = player_->take_resize_request()) {
+    surface.resize(FrameSize{size->first, size->second});
+  }
+  return true;
+}
+
+std::optional<std::string> ScriptedRun::take_play_screenshot() {
+  return player_ ? player_->take_screenshot_request() : std::nullopt;
+}
+
+int ScriptedRun::exit_status() const {
+  if (!player_ || player_->exit_status() == app::kExitOk) {
+    return app::kExitOk;
+  }
+  std::cerr << "foldlab gui --play: " << player_->failure() << "\n";
+  return player_->exit_status();
 }
 
 void FrameTimes::start() {
@@ -110,24 +137,11 @@ void FrameTimes::print_report(const char* backend, const std::string& animate_ke
       std::accumulate(sorted.begin(), sorted.end(), 0.0) / static_cast<double>(sorted.size());
   const double p95 = sorted[std::min(
       sorted.size() - 1, static_cast<std::size_t>(0.95 * static_cast<double>(sorted.size())))];
-  Scene& scene = explorer.scene();
-  const RenderCounters& counters = explorer.renderer_counters();
-  const nlohmann::json report = {
-      {"backend", backend},
-      {"frames", sorted.size()},
-      {"mean_ms", mean},
-      {"p95_ms", p95},
-      {"max_ms", sorted.back()},
-      {"grid", std::to_string(scene.grid_nx()) + "x" + std::to_string(scene.grid_ny())},
-      {"animate", animate_key},
-      {"regime_map_ms", explorer.regime_map_ms()},
-      {"stats", scene_stats_to_json(scene)},
-      {"solution", solution_to_json(scene.solution(), scene.parameters())},
-      {"renderer",
-       {{"mesh_uploads", counters.mesh_uploads},
-        {"fold_line_uploads", counters.fold_line_uploads},
-        {"frames", counters.frames}}},
+  nlohmann::json report = {
+      {"backend", backend}, {"frames", sorted.size()}, {"mean_ms", mean},
+      {"p95_ms", p95},      {"max_ms", sorted.back()}, {"animate", animate_key},
   };
+  report.update(explorer_state_json(explorer));
   std::cout << report.dump(2) << "\n";
 }
 

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "app/gui/explorer.hpp"
+#include "app/gui/input_player.hpp"
 #include "app/gui/renderer.hpp"
 #include "app/gui/surface.hpp"
 
@@ -36,8 +37,10 @@ class AnimatedInput {
 // How many frames to run, and what a scripted frame does before ImGui::NewFrame.
 class ScriptedRun {
  public:
-  // frames == 0: until the window is closed, with the user's input.
-  ScriptedRun(int frames, std::optional<AnimatedInput> animation);
+  // frames == 0: until the window is closed, with the user's input, or until `player` has played
+  // its script.
+  ScriptedRun(int frames, std::optional<AnimatedInput> animation,
+              std::optional<InputPlayer> player = std::nullopt);
   // True while another frame should run. A scripted run waits (up to 30 s) for background work
   // before its last frame, so that the picture shows a finished regime map.
   bool wants_frame(int frame, const Explorer& explorer);
@@ -45,11 +48,19 @@ class ScriptedRun {
   // After the surface polled its input: scripted frames take no pointer input, so that a stray
   // cursor cannot change the picture; the animated input moves.
   void before_new_frame(Explorer& explorer, int frame) const;
+  // After the surface polled its input: the played input replaces it, and the surface follows a
+  // resize step. False when the script is over (or failed): this frame does not run.
+  bool play(Explorer& explorer, Surface& surface);
+  // A screenshot step's PNG, to write from the frame just drawn.
+  std::optional<std::string> take_play_screenshot();
+  // kExitOk, or 1 with the failed step on stderr.
+  int exit_status() const;
 
  private:
   int frames_;
   int extra_frames_ = 0;
   std::optional<AnimatedInput> animation_;
+  std::optional<InputPlayer> player_;
   std::chrono::steady_clock::time_point deadline_;
 };
 

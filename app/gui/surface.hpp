@@ -30,6 +30,8 @@ class Surface {
   // Polls input and starts ImGui's platform frame: display size, time step, mouse, keys.
   virtual void new_frame() = 0;
   virtual FrameSize framebuffer_size() const = 0;
+  // Asks for a new size (input playback); a window may take a frame or two to follow.
+  virtual void resize(FrameSize size) = 0;
   // Makes the frame's own framebuffer current (0 for a window, the off-screen one headless).
   virtual void bind_framebuffer() = 0;
   virtual void present() = 0;

@@ -83,6 +83,15 @@ class HeadlessSurface final : public Surface {
   }
 
   FrameSize framebuffer_size() const override { return size_; }
+  void resize(FrameSize size) override {
+    size_ = size;
+    glBindRenderbuffer(GL_RENDERBUFFER, renderbuffers_[0]);
+    glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, size_.width, size_.height);
+    glBindRenderbuffer(GL_RENDERBUFFER, renderbuffers_[1]);
+    glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH24_STENCIL8, size_.width, size_.height);
+    ImGui::GetIO().DisplaySize =
+        ImVec2(static_cast<float>(size_.width), static_cast<float>(size_.height));
+  }
   void bind_framebuffer() override { glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_); }
   void present() override {}
   void finish() override { glFinish(); }

@@ -62,6 +62,7 @@ class WindowSurface final : public Surface {
   }
 
   void bind_framebuffer() override { glBindFramebuffer(GL_FRAMEBUFFER, 0); }
+  void resize(FrameSize size) override { glfwSetWindowSize(window_, size.width, size.height); }
   void present() override { glfwSwapBuffers(window_); }
   void finish() override { glFinish(); }
 

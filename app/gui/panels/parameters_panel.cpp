@@ -1,14 +1,18 @@
 #include "app/gui/panels/parameters_panel.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <map>
 #include <string>
 #include <vector>
 
 #include <imgui.h>
+#include <imgui_internal.h>
 
 #include "app/gui/panels/widgets.hpp"
 #include "core/analysis/sweep.hpp"
 #include "core/model/settings.hpp"
+#include "core/model/text_format.hpp"
 
 namespace foldlab::gui {
 namespace {
@@ -33,19 +37,75 @@ void show_issues(const Document& document, const InputSpec& spec) {
   }
 }
 
-// A slider for one row of the input table: log scale where its row says so, typed values
-// (Ctrl+click) not clamped, so that validation rather than the widget decides.
-void input_slider(Document& document, const InputSpec& spec, float width) {
+// Where a value sits on its slider, 0 at the left end and 1 at the right: on the exponent for a
+// log row, so that every decade gets the same width.
+double slider_fraction(const InputSpec& spec, double value) {
+  if (spec.scale == InputScale::logarithmic) {
+    return (std::log10(value) - std::log10(spec.typical_lo)) /
+           (std::log10(spec.typical_hi) - std::log10(spec.typical_lo));
+  }
+  return (value - spec.typical_lo) / (spec.typical_hi - spec.typical_lo);
+}
+
+double slider_value(const InputSpec& spec, double fraction) {
+  if (spec.scale == InputScale::logarithmic) {
+    return std::pow(10.0, std::log10(spec.typical_lo) + fraction * (std::log10(spec.typical_hi) -
+                                                                    std::log10(spec.typical_lo)));
+  }
+  return spec.typical_lo + fraction * (spec.typical_hi - spec.typical_lo);
+}
+
+// A slider for one row of the input table. It moves over [0, 1] and shows the value: ImGui's own
+// logarithmic slider treats values below the format's precision as zero, which put all of w's
+// range in its dead zone. Typed values (Ctrl+click) are neither mapped nor clamped, so that
+// validation rather than the widget decides.
+void input_slider(Document& document, const InputSpec& spec, float width,
+                  std::map<std::string, SliderPlace, std::less<>>& places) {
   double value = spec.value(document.edited()).value_or(0.0);
-  const double lo = spec.typical_lo;
-  const double hi = spec.typical_hi;
   const std::string format =
       std::string(spec.format) + (spec.unit.empty() ? "" : " " + std::string(spec.unit));
-  const ImGuiSliderFlags flags =
-      spec.scale == InputScale::logarithmic ? ImGuiSliderFlags_Logarithmic : ImGuiSliderFlags_None;
+  const std::string label = slider_label(spec);
   ImGui::SetNextItemWidth(width);
-  if (ImGui::SliderScalar(slider_label(spec).c_str(), ImGuiDataType_Double, &value, &lo, &hi,
-                          format.c_str(), flags)) {
+  bool changed = false;
+  if (ImGui::TempInputIsActive(ImGui::GetID(label.c_str()))) {
+    changed = ImGui::SliderScalar(label.c_str(), ImGuiDataType_Double, &value, &spec.typical_lo,
+                                  &spec.typical_hi, format.c_str());
+  } else {
+    // The shown text doubles as the text field's first contents on Ctrl+click, which parses
+    // back to the value.
+    std::string shown = detail::printf_string(format.c_str(), value);
+    for (std::size_t at = shown.find('%'); at != std::string::npos; at = shown.find('%', at + 2)) {
+      shown.insert(at, 1, '%');
+    }
+    // A typed value off the slider's scale (w <= 0) pins the handle to the left end.
+    const double on_scale = slider_fraction(spec, value);
+    const double fraction = std::isnan(on_scale) ? 0.0 : std::clamp(on_scale, 0.0, 1.0);
+    double position = fraction;
+    constexpr double kZero = 0.0;
+    constexpr double kOne = 1.0;
+    if (ImGui::SliderScalar(label.c_str(), ImGuiDataType_Double, &position, &kZero, &kOne,
+                            shown.c_str(), ImGuiSliderFlags_AlwaysClamp)) {
+      value = slider_value(spec, position);
+      changed = true;
+    } else if (ImGui::IsItemFocused() && !ImGui::IsItemActive()) {
+      // Arrow keys nudge a focused slider by 1 % of its width (Shift: 10 %).
+      const double step = ImGui::GetIO().KeyShift ? 0.1 : 0.01;
+      const int left = ImGui::GetKeyIndex(ImGuiKey_LeftArrow);
+      const int right = ImGui::GetKeyIndex(ImGuiKey_RightArrow);
+      const double nudge = (left >= 0 && ImGui::IsKeyPressed(left))     ? -step
+                           : (right >= 0 && ImGui::IsKeyPressed(right)) ? step
+                                                                        : 0.0;
+      if (nudge != 0.0) {
+        value = slider_value(spec, std::clamp(fraction + nudge, 0.0, 1.0));
+        changed = true;
+      }
+    }
+    // The item's rectangle includes its label; the slider's own frame is `width` wide.
+    const ImVec2 min = ImGui::GetItemRectMin();
+    places[std::string(spec.key)] =
+        SliderPlace{min, ImVec2(min.x + width, min.y + ImGui::GetFrameHeight()), fraction};
+  }
+  if (changed) {
     set_numeric_setting(document.edited(), spec.key, value);
     document.commit();
   }
@@ -107,7 +167,7 @@ void ParametersPanel::draw(Document& document, Renderer& renderer) {
                                           ImGui::CalcTextSize(" (?)").x -
                                           2.0f * style.ItemInnerSpacing.x - style.ItemSpacing.x);
   for (const InputSpec* spec : sliders) {
-    input_slider(document, *spec, width);
+    input_slider(document, *spec, width, places_);
     if (spec->key == "w") {
       ImGui::TextColored(
           kDimText, "    w = %.0f g/m²",

@@ -1,0 +1,604 @@
+#include "app/gui/input_player.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <cfloat>
+#include <cmath>
+#include <fstream>
+#include <iterator>
+#include <regex>
+#include <sstream>
+#include <string_view>
+#include <unordered_map>
+
+#include "app/common/inputs.hpp"
+#include "core/analysis/sweep.hpp"
+#include "core/io/report.hpp"
+#include "core/io/scene_report.hpp"
+#include "core/model/settings.hpp"
+#include "core/model/text_format.hpp"
+
+namespace foldlab::gui {
+namespace {
+
+using nlohmann::json;
+
+// The report's name for each slider's value, with its unit.
+constexpr std::pair<const char*, const char*> kParameterFields[] = {
+    {"t", "t_mm"}, {"E", "E_MPa"}, {"w", "w_N_per_mm2"}, {"h", "h_mm"},
+    {"L", "L_mm"}, {"d", "d_mm"},  {"nu", "nu"},         {"K", "K"},
+};
+
+// Key names of chords, as GLFW numbers them (the window's backend indexes io.KeysDown so; the
+// headless surface is given the same map). `imgui` is the named key ImGui itself reads, if any.
+struct KeyName {
+  const char* name;
+  int glfw;
+  int imgui;
+};
+constexpr KeyName kNamedKeys[] = {
+    {"escape", 256, ImGuiKey_Escape},
+    {"enter", 257, ImGuiKey_Enter},
+    {"tab", 258, ImGuiKey_Tab},
+    {"backspace", 259, ImGuiKey_Backspace},
+    {"insert", 260, ImGuiKey_Insert},
+    {"delete", 261, ImGuiKey_Delete},
+    {"right", 262, ImGuiKey_RightArrow},
+    {"left", 263, ImGuiKey_LeftArrow},
+    {"down", 264, ImGuiKey_DownArrow},
+    {"up", 265, ImGuiKey_UpArrow},
+    {"pageup", 266, ImGuiKey_PageUp},
+    {"pagedown", 267, ImGuiKey_PageDown},
+    {"home", 268, ImGuiKey_Home},
+    {"end", 269, ImGuiKey_End},
+    {"space", 32, ImGuiKey_Space},
+    {"minus", 45, -1},
+    {"equal", 61, -1},
+    {"plus", 61, -1},
+    {"kp_add", 334, -1},
+    {"kp_subtract", 333, -1},
+};
+constexpr int kLeftShift = 340;
+constexpr int kLeftCtrl = 341;
+constexpr int kLeftAlt = 342;
+
+struct Chord {
+  bool ctrl = false;
+  bool shift = false;
+  bool alt = false;
+  int glfw = -1;
+  int imgui = -1;
+};
+
+std::optional<Chord> parse_chord(std::string text) {
+  std::transform(text.begin(), text.end(), text.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  Chord chord;
+  std::string_view rest = text;
+  for (;;) {
+    const std::size_t plus = rest.find('+', 1);
+    if (plus == std::string_view::npos) {
+      break;
+    }
+    const std::string_view mod = rest.substr(0, plus);
+    if (mod == "ctrl") {
+      chord.ctrl = true;
+    } else if (mod == "shift") {
+      chord.shift = true;
+    } else if (mod == "alt") {
+      chord.alt = true;
+    } else {
+      return std::nullopt;
+    }
+    rest.remove_prefix(plus + 1);
+  }
+  if (rest.size() == 1 && std::isalnum(static_cast<unsigned char>(rest[0]))) {
+    chord.glfw = std::toupper(static_cast<unsigned char>(rest[0]));
+    return chord;
+  }
+  if (rest == "+") {
+    rest = "plus";
+  } else if (rest == "-") {
+    rest = "minus";
+  } else if (rest == "=") {
+    rest = "equal";
+  }
+  for (const KeyName& key : kNamedKeys) {
+    if (rest == key.name) {
+      chord.glfw = key.glfw;
+      chord.imgui = key.imgui;
+      return chord;
+    }
+  }
+  return std::nullopt;
+}
+
+bool is_slider_key(const json& value) {
+  const std::vector<std::string>& keys = sweepable_keys();
+  return value.is_string() &&
+         std::find(keys.begin(), keys.end(), value.get<std::string>()) != keys.end();
+}
+
+std::optional<std::pair<int, int>> parse_size(const std::string& text) {
+  static const std::regex pattern(R"((\d{3,4})x(\d{3,4}))");
+  std::smatch match;
+  if (!std::regex_match(text, match, pattern)) {
+    return std::nullopt;
+  }
+  return std::pair<int, int>(std::stoi(match[1]), std::stoi(match[2]));
+}
+
+// The problems of one step; empty when it can run.
+std::vector<std::string> step_problems(const json& step) {
+  if (!step.is_object() || step.empty()) {
+    return {"is not an object with one action"};
+  }
+  static const char* const kActions[] = {"drag",   "click",  "key",        "type",
+                                         "resize", "frames", "screenshot", "expect"};
+  std::vector<std::string> actions;
+  for (const char* action : kActions) {
+    if (step.contains(action)) {
+      actions.emplace_back(action);
+    }
+  }
+  if (actions.size() != 1) {
+    return {actions.empty() ? "has no action (drag, click, key, type, resize, frames, "
+                              "screenshot or expect)"
+                            : "has more than one action: " + detail::join_comma(actions)};
+  }
+  const std::string& action = actions.front();
+  std::vector<std::string> problems;
+  for (const auto& [name, value] : step.items()) {
+    const bool allowed =
+        name == action || (action == "drag" && name == "dx") || (action == "click" && name == "at");
+    if (!allowed) {
+      problems.push_back("\"" + name + "\" does not belong to a " + action + " step");
+    }
+  }
+  const json& arg = step.at(action);
+  const std::string keys = detail::join_comma(sweepable_keys());
+  if (action == "drag") {
+    if (!is_slider_key(arg)) {
+      problems.push_back("drag needs a slider key (" + keys + "), not " + arg.dump());
+    }
+    if (!step.contains("dx") || !step["dx"].is_number() ||
+        std::abs(step["dx"].get<double>()) > 10000.0) {
+      problems.push_back("drag needs \"dx\": a number of pixels");
+    }
+  } else if (action == "click") {
+    if (step.contains("at")) {
+      if (!is_slider_key(arg)) {
+        problems.push_back("click with \"at\" needs a slider key (" + keys + "), not " +
+                           arg.dump());
+      }
+      if (!step["at"].is_number() || step["at"].get<double>() < 0.0 ||
+          step["at"].get<double>() > 1.0) {
+        problems.push_back("\"at\" must be a fraction from 0 to 1, not " + step["at"].dump());
+      }
+    } else if (!arg.is_string() || arg.get<std::string>().empty()) {
+      problems.push_back("click needs a label or a slider key with \"at\", not " + arg.dump());
+    }
+  } else if (action == "key") {
+    if (!arg.is_string() || !parse_chord(arg.get<std::string>())) {
+      problems.push_back("key " + arg.dump() +
+                         " is not a chord such as \"ctrl+z\", \"ctrl+shift+z\", \"escape\"");
+    }
+  } else if (action == "type") {
+    if (!arg.is_string()) {
+      problems.push_back("type needs a string, not " + arg.dump());
+    }
+  } else if (action == "resize") {
+    if (!arg.is_string() || !parse_size(arg.get<std::string>())) {
+      problems.push_back("resize needs \"WxH\", not " + arg.dump());
+    }
+  } else if (action == "frames") {
+    if (!arg.is_number_integer() || arg.get<long long>() < 1 || arg.get<long long>() > 100000) {
+      problems.push_back("frames needs a whole number from 1 to 100000, not " + arg.dump());
+    }
+  } else if (action == "screenshot") {
+    if (!arg.is_string() || !arg.get<std::string>().ends_with(".png")) {
+      problems.push_back("screenshot needs a file name ending in .png, not " + arg.dump());
+    }
+  } else if (action == "expect") {
+    if (!arg.is_object() || arg.empty()) {
+      problems.push_back("expect needs an object of FIELD.PATH: VALUE or [LO, HI]");
+    } else {
+      for (const auto& [path, wanted] : arg.items()) {
+        const bool range = wanted.is_array() && wanted.size() == 2 && wanted[0].is_number() &&
+                           wanted[1].is_number() &&
+                           wanted[0].get<double>() <= wanted[1].get<double>();
+        if (wanted.is_array() ? !range : wanted.is_object()) {
+          problems.push_back("expect " + path + ": " + wanted.dump() +
+                             " is neither a value nor [LO, HI] with LO <= HI");
+        }
+      }
+    }
+  }
+  return problems;
+}
+
+// A field of the report by dotted path, or null when there is none.
+const json* find_field(const json& report, const std::string& path) {
+  const json* at = &report;
+  std::string_view rest = path;
+  while (true) {
+    const std::size_t dot = rest.find('.');
+    const std::string name(rest.substr(0, dot));
+    if (!at->is_object() || !at->contains(name)) {
+      return nullptr;
+    }
+    at = &(*at)[name];
+    if (dot == std::string_view::npos) {
+      return at;
+    }
+    rest.remove_prefix(dot + 1);
+  }
+}
+
+bool holds(const json& got, const json& wanted) {
+  if (wanted.is_array()) {
+    return got.is_number() && got.get<double>() >= wanted[0].get<double>() &&
+           got.get<double>() <= wanted[1].get<double>();
+  }
+  if (wanted.is_number() && got.is_number()) {
+    const double a = got.get<double>();
+    const double b = wanted.get<double>();
+    return std::abs(a - b) <= 1e-9 * std::max(std::abs(a), std::abs(b));
+  }
+  return got == wanted;
+}
+
+// Where a text is drawn in the last frame, read from the glyph quads of its draw data (the
+// words a user sees, whichever widget drew them). Prefers a whole line (a button, tab, list
+// entry or menu item has its label alone) over a match inside longer text.
+std::optional<ImVec2> find_label(const std::string& label) {
+  const ImDrawData* data = ImGui::GetDrawData();
+  if (data == nullptr || !data->Valid) {
+    return std::nullopt;
+  }
+  const ImFont* font = ImGui::GetFont();
+  std::unordered_map<std::uint64_t, const ImFontGlyph*> by_uv;
+  const auto uv_key = [](float u, float v) {
+    return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(u * 1e6f)) << 32) |
+           static_cast<std::uint32_t>(v * 1e6f);
+  };
+  for (const ImFontGlyph& g : font->Glyphs) {
+    if (g.Visible) {
+      by_uv.emplace(uv_key(g.U0, g.V0), &g);
+    }
+  }
+  const float advance = font->FindGlyph('a')->AdvanceX;
+  std::optional<ImVec2> inside;
+  for (int l = 0; l < data->CmdListsCount; ++l) {
+    const ImVector<ImDrawVert>& v = data->CmdLists[l]->VtxBuffer;
+    // One run of text at a time: its characters and each one's box.
+    std::string text;
+    std::vector<ImVec4> boxes;  // per byte of `text`
+    float last_x = -1e9f;
+    float last_y = -1e9f;
+    const auto check_run = [&]() -> std::optional<ImVec2> {
+      for (std::size_t at = text.find(label); at != std::string::npos;
+           at = text.find(label, at + 1)) {
+        const ImVec4 first = boxes[at];
+        const ImVec4 last = boxes[at + label.size() - 1];
+        const ImVec2 centre(0.5f * (first.x + last.z), 0.5f * (first.y + last.w));
+        const bool whole = (at == 0 || text[at - 1] == '\n') &&
+                           (at + label.size() == text.size() || text[at + label.size()] == '\n');
+        if (whole) {
+          return centre;
+        }
+        if (!inside) {
+          inside = centre;
+        }
+      }
+      return std::nullopt;
+    };
+    for (int i = 0; i + 3 < v.Size; ++i) {
+      const auto found = by_uv.find(uv_key(v[i].uv.x, v[i].uv.y));
+      if (found == by_uv.end() || v[i + 2].uv.x != found->second->U1 ||
+          v[i + 2].uv.y != found->second->V1) {
+        continue;
+      }
+      const ImFontGlyph& glyph = *found->second;
+      const float x = v[i].pos.x - glyph.X0;
+      const float y = v[i].pos.y - glyph.Y0;
+      const ImVec4 box(v[i].pos.x, v[i].pos.y, v[i + 2].pos.x, v[i + 2].pos.y);
+      if (std::abs(y - last_y) > 1.0f) {
+        text += '\n';
+        boxes.push_back(box);
+      } else if (x - last_x > 1.5f * advance) {
+        text += ' ';
+        boxes.push_back(box);
+      }
+      const unsigned c = glyph.Codepoint;
+      const std::size_t before = text.size();
+      if (c < 0x80) {
+        text += static_cast<char>(c);
+      } else if (c < 0x800) {
+        text += static_cast<char>(0xC0 | (c >> 6));
+        text += static_cast<char>(0x80 | (c & 0x3F));
+      } else {
+        text += static_cast<char>(0xE0 | (c >> 12));
+        text += static_cast<char>(0x80 | ((c >> 6) & 0x3F));
+        text += static_cast<char>(0x80 | (c & 0x3F));
+      }
+      boxes.resize(boxes.size() + (text.size() - before), box);
+      last_x = x;
+      last_y = y;
+      i += 3;
+    }
+    text += '\n';
+    boxes.emplace_back();
+    if (const std::optional<ImVec2> whole = check_run()) {
+      return whole;
+    }
+  }
+  return inside;
+}
+
+// Where ImGui 1.86 centres a float slider's handle for `fraction` (SliderBehaviorT's geometry).
+float handle_x(const SliderPlace& place, double fraction) {
+  constexpr float kGrabPadding = 2.0f;
+  const float slider_px = place.max.x - place.min.x - 2.0f * kGrabPadding;
+  const float grab_px = std::min(ImGui::GetStyle().GrabMinSize, slider_px);
+  return place.min.x + kGrabPadding + 0.5f * grab_px +
+         static_cast<float>(fraction) * (slider_px - grab_px);
+}
+
+}  // namespace
+
+json explorer_state_json(Explorer& explorer) {
+  Document& document = explorer.document();
+  Scene& scene = document.scene();
+  const RenderCounters& counters = explorer.renderer_counters();
+  json parameters = json::object();
+  for (const auto& [key, field] : kParameterFields) {
+    const InputSpec* spec = find_input(key);
+    const std::optional<double> value =
+        spec ? spec->value(document.edited()) : std::optional<double>();
+    parameters[field] = value ? json(*value) : json(nullptr);
+  }
+  const std::optional<std::string> refused = document.refusal();
+  const std::optional<std::string> modal = document.modal_title();
+  return {
+      {"grid", std::to_string(scene.grid_nx()) + "x" + std::to_string(scene.grid_ny())},
+      {"regime_map_ms", explorer.regime_map_ms()},
+      {"stats", scene_stats_to_json(scene)},
+      {"solution", solution_to_json(scene.solution(), scene.parameters())},
+      {"renderer",
+       {{"mesh_uploads", counters.mesh_uploads},
+        {"fold_line_uploads", counters.fold_line_uploads},
+        {"frames", counters.frames}}},
+      {"parameters", parameters},
+      {"refused", refused ? json(*refused) : json(nullptr)},
+      {"dirty", document.unsaved()},
+      {"modal", modal ? json(*modal) : json(nullptr)},
+      {"undo_depth", document.undo_depth()},
+  };
+}
+
+InputPlayer::InputPlayer(const std::filesystem::path& script_path) {
+  std::ifstream in(script_path);
+  if (!in) {
+    throw app::InputError("--play " + script_path.string() + ": cannot be read");
+  }
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const json script = json::parse(text, nullptr, false);
+  if (script.is_discarded()) {
+    throw app::InputError("--play " + script_path.string() + ": not valid JSON");
+  }
+  try {
+    parse(script);
+  } catch (const app::InputError& e) {
+    throw app::InputError("--play " + script_path.string() + ":\n" + e.what());
+  }
+}
+
+InputPlayer::InputPlayer(const json& script, const std::string& name) {
+  try {
+    parse(script);
+  } catch (const app::InputError& e) {
+    throw app::InputError(name + ":\n" + e.what());
+  }
+}
+
+void InputPlayer::parse(const json& script) {
+  if (!script.is_object() || !script.contains("steps") || !script["steps"].is_array()) {
+    throw app::InputError("  needs {\"steps\": [...]}");
+  }
+  std::vector<std::string> problems;
+  for (const auto& [name, value] : script.items()) {
+    if (name != "steps") {
+      problems.push_back("  \"" + name + "\" is not a field of a script (only \"steps\")");
+    }
+  }
+  for (std::size_t i = 0; i < script["steps"].size(); ++i) {
+    for (const std::string& problem : step_problems(script["steps"][i])) {
+      problems.push_back("  step " + std::to_string(i + 1) + ": " + problem);
+    }
+    steps_.push_back(script["steps"][i]);
+  }
+  if (!problems.empty()) {
+    throw app::InputError(detail::join_lines(problems));
+  }
+  // ImGui sizes tables and child windows from what the previous frames held.
+  queue_.assign(3, FrameInput{});
+}
+
+void InputPlayer::fail(std::size_t index, const std::string& why) {
+  failure_ = "step " + std::to_string(index + 1) + " (" + steps_[index].dump() + "): " + why;
+}
+
+int InputPlayer::exit_status() const {
+  return failure_.empty() ? app::kExitOk : 1;
+}
+
+bool InputPlayer::start_step(std::size_t index, ImGuiIO& io, Explorer& explorer) {
+  const json& step = steps_[index];
+  queue_.clear();
+  queue_at_ = 0;
+  const auto press = [&](ImVec2 from, ImVec2 to, int moves) {
+    FrameInput hover;
+    hover.mouse = from;
+    queue_.push_back(hover);
+    FrameInput down = hover;
+    down.mouse_down = true;
+    queue_.push_back(down);
+    for (int i = 1; i <= moves; ++i) {
+      const float f = static_cast<float>(i) / static_cast<float>(moves);
+      down.mouse = ImVec2(from.x + f * (to.x - from.x), from.y + f * (to.y - from.y));
+      queue_.push_back(down);
+    }
+    FrameInput up = down;
+    up.mouse_down = false;
+    queue_.push_back(up);
+    queue_.push_back(up);
+  };
+  const auto slider = [&](const std::string& key) -> const SliderPlace* {
+    const auto& places = explorer.parameters_panel().slider_places();
+    const auto found = places.find(key);
+    if (found == places.end()) {
+      fail(index, "the slider " + key + " is not shown");
+      return nullptr;
+    }
+    return &found->second;
+  };
+  if (step.contains("drag")) {
+    const SliderPlace* place = slider(step["drag"].get<std::string>());
+    if (place == nullptr) {
+      return false;
+    }
+    const ImVec2 from(handle_x(*place, place->fraction), 0.5f * (place->min.y + place->max.y));
+    press(from, ImVec2(from.x + step["dx"].get<float>(), from.y), 6);
+  } else if (step.contains("click") && step.contains("at")) {
+    const SliderPlace* place = slider(step["click"].get<std::string>());
+    if (place == nullptr) {
+      return false;
+    }
+    // The frame's right edge itself is outside the item.
+    const float x = place->min.x + step["at"].get<float>() * (place->max.x - place->min.x - 1.0f);
+    const ImVec2 at(x, 0.5f * (place->min.y + place->max.y));
+    press(at, at, 0);
+  } else if (step.contains("click")) {
+    const std::string label = step["click"].get<std::string>();
+    const std::optional<ImVec2> at = find_label(label);
+    if (!at) {
+      fail(index, "no visible \"" + label + "\"");
+      return false;
+    }
+    press(*at, *at, 0);
+  } else if (step.contains("key")) {
+    const Chord chord = *parse_chord(step["key"].get<std::string>());
+    FrameInput mods;
+    mods.mouse = mouse_;
+    mods.ctrl = chord.ctrl;
+    mods.shift = chord.shift;
+    mods.alt = chord.alt;
+    queue_.push_back(mods);
+    FrameInput pressed = mods;
+    pressed.key =
+        chord.imgui >= 0 && io.KeyMap[chord.imgui] >= 0 ? io.KeyMap[chord.imgui] : chord.glfw;
+    queue_.push_back(pressed);
+    queue_.push_back(mods);
+    FrameInput released;
+    released.mouse = mouse_;
+    queue_.push_back(released);
+  } else if (step.contains("type")) {
+    FrameInput typed;
+    typed.mouse = mouse_;
+    typed.text = step["type"].get<std::string>();
+    queue_.push_back(typed);
+    typed.text.clear();
+    queue_.push_back(typed);
+  } else if (step.contains("resize")) {
+    FrameInput resized;
+    resized.mouse = mouse_;
+    resized.resize = parse_size(step["resize"].get<std::string>());
+    queue_.push_back(resized);
+    resized.resize.reset();
+    queue_.insert(queue_.end(), 3, resized);
+  } else if (step.contains("frames")) {
+    FrameInput idle;
+    idle.mouse = mouse_;
+    queue_.assign(step["frames"].get<std::size_t>(), idle);
+  } else if (step.contains("screenshot")) {
+    FrameInput shot;
+    shot.mouse = mouse_;
+    shot.screenshot = step["screenshot"].get<std::string>();
+    queue_.push_back(shot);
+  } else if (step.contains("expect")) {
+    const json report = explorer_state_json(explorer);
+    for (const auto& [path, wanted] : step["expect"].items()) {
+      const json* got = find_field(report, path);
+      if (got == nullptr) {
+        fail(index, "the report has no field " + path);
+        return false;
+      }
+      if (!holds(*got, wanted)) {
+        fail(index, path + " is " + got->dump() + ", expected " + wanted.dump());
+        return false;
+      }
+    }
+  }
+  return true;
+}
+
+bool InputPlayer::before_new_frame(ImGuiIO& io, Explorer& explorer) {
+  // The headless surface has no key map: give it the window's, so that chords read the same.
+  for (const KeyName& key : kNamedKeys) {
+    if (key.imgui >= 0 && io.KeyMap[key.imgui] < 0) {
+      io.KeyMap[key.imgui] = key.glfw;
+    }
+  }
+  while (failure_.empty() && queue_at_ >= queue_.size()) {
+    if (next_step_ >= steps_.size()) {
+      return false;
+    }
+    const std::size_t index = next_step_++;
+    if (!start_step(index, io, explorer)) {
+      return false;
+    }
+  }
+  if (!failure_.empty()) {
+    return false;
+  }
+  const FrameInput& input = queue_[queue_at_++];
+  mouse_ = input.mouse;
+  io.MousePos = input.mouse.x < 0.0f ? ImVec2(-FLT_MAX, -FLT_MAX) : input.mouse;
+  std::fill(std::begin(io.MouseDown), std::end(io.MouseDown), false);
+  io.MouseDown[0] = input.mouse_down;
+  io.MouseWheel = 0.0f;
+  io.MouseWheelH = 0.0f;
+  std::fill(std::begin(io.KeysDown), std::end(io.KeysDown), false);
+  io.KeyCtrl = input.ctrl;
+  io.KeyShift = input.shift;
+  io.KeyAlt = input.alt;
+  io.KeySuper = false;
+  io.KeysDown[kLeftCtrl] = input.ctrl;
+  io.KeysDown[kLeftShift] = input.shift;
+  io.KeysDown[kLeftAlt] = input.alt;
+  if (input.key >= 0) {
+    io.KeysDown[input.key] = true;
+  }
+  io.InputQueueCharacters.resize(0);
+  if (!input.text.empty()) {
+    io.AddInputCharactersUTF8(input.text.c_str());
+  }
+  if (!input.screenshot.empty()) {
+    screenshot_ = input.screenshot;
+  }
+  if (input.resize) {
+    resize_ = input.resize;
+  }
+  return true;
+}
+
+std::optional<std::string> InputPlayer::take_screenshot_request() {
+  return std::exchange(screenshot_, std::nullopt);
+}
+
+std::optional<std::pair<int, int>> InputPlayer::take_resize_request() {
+  return std::exchange(resize_, std::nullopt);
+}
+
+}  // namespace foldlab::gui

@@ -1,0 +1,70 @@
+// Input playback (`gui --play SCRIPT.json`): a script's steps become the mouse, keys and text that
+// ImGui reads each frame, so that a run goes through the real widgets as a person's hands would,
+// and its `expect` steps check the report's fields between them.
+#pragma once
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <imgui.h>
+#include <nlohmann/json.hpp>
+
+#include "app/gui/explorer.hpp"
+
+namespace foldlab::gui {
+
+// What the explorer shows now, as `--report` prints it without frame times: the solution, the
+// pipeline counters, the sliders' values and the document's state.
+nlohmann::json explorer_state_json(Explorer& explorer);
+
+class InputPlayer {
+ public:
+  // Reads and checks the whole script first. Throws app::InputError naming every problem.
+  explicit InputPlayer(const std::filesystem::path& script_path);
+  InputPlayer(const nlohmann::json& script, const std::string& name);
+
+  // Before ImGui::NewFrame, after the platform polled: sets this frame's mouse, keys and text,
+  // starting the next steps as needed (an `expect` is checked when it is reached). Returns false
+  // once the script is over or a step failed: no further frame should run.
+  bool before_new_frame(ImGuiIO& io, Explorer& explorer);
+  // A PNG to write from the frame just drawn, if a `screenshot` step asked for one.
+  std::optional<std::string> take_screenshot_request();
+  // A size to switch to before the next frame, if a `resize` step asked for one.
+  std::optional<std::pair<int, int>> take_resize_request();
+  // Empty while every step held; else which step failed and how.
+  const std::string& failure() const { return failure_; }
+  // The exit status: kExitOk, or 1 when a step failed.
+  int exit_status() const;
+
+  // One frame of input.
+  struct FrameInput {
+    ImVec2 mouse{-1.0f, -1.0f};
+    bool mouse_down = false;
+    bool ctrl = false;
+    bool shift = false;
+    bool alt = false;
+    int key = -1;  // index into io.KeysDown
+    std::string text;
+    std::string screenshot;
+    std::optional<std::pair<int, int>> resize;
+  };
+
+ private:
+  void parse(const nlohmann::json& script);
+  // Turns step `index` into frames of input, or fails it; false when it failed.
+  bool start_step(std::size_t index, ImGuiIO& io, Explorer& explorer);
+  void fail(std::size_t index, const std::string& why);
+
+  std::vector<nlohmann::json> steps_;
+  std::size_t next_step_ = 0;
+  std::vector<FrameInput> queue_;  // the frames of the current step, front first
+  std::size_t queue_at_ = 0;
+  ImVec2 mouse_{-1.0f, -1.0f};
+  std::optional<std::string> screenshot_;
+  std::optional<std::pair<int, int>> resize_;
+  std::string failure_;
+};
+
+}  // namespace foldlab::gui
