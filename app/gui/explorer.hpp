@@ -48,6 +48,8 @@ class Explorer {
   // A view setting by name (see ClothViewPanel::set_view, plus sweep=table1|table2|fig4).
   std::optional<std::string> set_view(std::string_view key, std::string_view value);
   void load_preset_file(const std::filesystem::path& path) { document_.load_preset_file(path); }
+  // Ctrl+S, as the keys do.
+  void save() { presets_.save(document_); }
 
   Document& document() { return document_; }
   Scene& scene() { return document_.scene(); }
@@ -68,6 +70,10 @@ class Explorer {
 
  private:
   void save_session_when_idle();
+  // Ctrl+Z undo, Ctrl+Shift+Z and Ctrl+Y redo, Ctrl+S save.
+  void handle_shortcuts();
+  // "Save / Discard / Cancel" before a preset load replaces unsaved edits.
+  void draw_unsaved_dialog();
 
   ExplorerOptions options_;
   Renderer& renderer_;
@@ -81,7 +87,6 @@ class Explorer {
   AnalysisPanel analysis_;
   CalibrationPanel calibration_;  // "Fit to measurements", opened from the Presets panel
   bool show_stats_ = false;
-  std::string session_message_;
   double last_session_save_time_ = 0.0;
 };
 

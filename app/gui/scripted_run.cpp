@@ -123,6 +123,11 @@ void FrameTimes::print_report(const char* backend, const std::string& animate_ke
       {"regime_map_ms", explorer.regime_map_ms()},
       {"stats", scene_stats_to_json(scene)},
       {"solution", solution_to_json(scene.solution(), scene.parameters())},
+      {"dirty", explorer.document().unsaved()},
+      {"modal", explorer.document().modal_title().empty()
+                    ? nlohmann::json(nullptr)
+                    : nlohmann::json(explorer.document().modal_title())},
+      {"undo_depth", explorer.document().undo_depth()},
       {"renderer",
        {{"mesh_uploads", counters.mesh_uploads},
         {"fold_line_uploads", counters.fold_line_uploads},

@@ -22,15 +22,14 @@ std::string slider_label(const InputSpec& spec) {
   return std::string(spec.key) + " (" + std::string(spec.name) + ")";
 }
 
-// The issues of one input. K is derived: validation names the constant c it sets.
-void show_issues(const Document& document, const InputSpec& spec) {
+// Whether validation refused this input. K is derived: validation names the constant c it sets.
+bool refused(const Document& document, const InputSpec& spec) {
   for (const ValidationIssue& issue : document.issues()) {
     if (issue.field == spec.field || (spec.kind == InputKind::stiffness_K && issue.field == "c")) {
-      ImGui::PushStyleColor(ImGuiCol_Text, kErrorText);
-      ImGui::TextWrapped("%s", issue.message.c_str());
-      ImGui::PopStyleColor();
+      return true;
     }
   }
+  return false;
 }
 
 // A slider for one row of the input table: log scale where its row says so, typed values
@@ -43,14 +42,22 @@ void input_slider(Document& document, const InputSpec& spec, float width) {
       std::string(spec.format) + (spec.unit.empty() ? "" : " " + std::string(spec.unit));
   const ImGuiSliderFlags flags =
       spec.scale == InputScale::logarithmic ? ImGuiSliderFlags_Logarithmic : ImGuiSliderFlags_None;
+  // A refused value reddens its slider; the reason goes to the foot of the panel, so that no
+  // line appears between the sliders and moves the one under the mouse.
+  const bool is_refused = refused(document, spec);
+  if (is_refused) {
+    ImGui::PushStyleColor(ImGuiCol_FrameBg, ImVec4(0.55f, 0.12f, 0.10f, 1.0f));
+  }
   ImGui::SetNextItemWidth(width);
   if (ImGui::SliderScalar(slider_label(spec).c_str(), ImGuiDataType_Double, &value, &lo, &hi,
                           format.c_str(), flags)) {
     set_numeric_setting(document.edited(), spec.key, value);
     document.commit();
   }
+  if (is_refused) {
+    ImGui::PopStyleColor();
+  }
   help_marker(std::string(spec.help).c_str());
-  show_issues(document, spec);
 }
 
 void choice_combo(Document& document, const InputSpec& spec) {
@@ -135,6 +142,9 @@ void ParametersPanel::draw(Document& document, Renderer& renderer) {
     ImGui::PushStyleColor(ImGuiCol_Text, kErrorText);
     ImGui::TextWrapped("%zu input(s) refused: the views show the last valid state.",
                        document.issues().size());
+    for (const ValidationIssue& issue : document.issues()) {
+      ImGui::TextWrapped("%s", issue.message.c_str());
+    }
     ImGui::PopStyleColor();
   }
   ImGui::End();

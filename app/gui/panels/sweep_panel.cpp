@@ -124,7 +124,8 @@ void SweepPanel::draw(Document& document) {
 
   for (int which = 0; which < kPaperCases; ++which) {
     if (ImGui::SmallButton(kPaperCaseButtons[which])) {
-      select_paper_case(which, document);
+      document.replace_edits(std::string("the paper's ") + kPaperCaseButtons[which],
+                             [this, which](Document& d) { select_paper_case(which, d); });
     }
     ImGui::SameLine();
   }
