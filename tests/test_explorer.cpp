@@ -379,6 +379,27 @@ TEST_F(ExplorerTest, ThePapersCaseButtonsAskBeforeReplacingUnsavedEdits) {
   EXPECT_EQ(explorer_->analysis().sweep().key(), "w");
 }
 
+// With no session to bring them back (--fresh), closing the window lost the edits unasked.
+TEST_F(ExplorerTest, ClosingTheWindowAsksWhenEditsWouldBeLost) {
+  EXPECT_TRUE(explorer_->may_quit()) << "nothing to lose";
+  ASSERT_EQ(explorer_->set_input("d", 123.0), std::nullopt);
+  frame();
+  EXPECT_FALSE(explorer_->may_quit());
+  frame();
+  frame();  // a dialog sizes itself on its first frame and shows from the next
+  EXPECT_EQ(document().modal_title(), "Unsaved changes");
+  EXPECT_NE(last_text_.find("Closing the window loses them."), std::string::npos) << last_text_;
+  press(kEscape);
+  EXPECT_FALSE(explorer_->quit_confirmed());
+  EXPECT_EQ(shown().hanging.support_displacement_mm, 123.0);
+
+  EXPECT_FALSE(explorer_->may_quit());
+  frame();
+  frame();
+  click("Discard");
+  EXPECT_TRUE(explorer_->quit_confirmed());
+}
+
 TEST_F(ExplorerTest, UndoAndRedoRestoreTheExactValues) {
   ASSERT_EQ(explorer_->set_input("h", 912.345678901), std::nullopt);
   ASSERT_EQ(explorer_->set_input("d", 123.456789012), std::nullopt);

@@ -64,8 +64,8 @@ class Document {
 
   // Runs `replace` (which replaces the edits, e.g. loads another preset) now when nothing would be
   // lost, else asks first: the explorer shows the modal until save_and_replace,
-  // discard_and_replace or cancel_replace answers it. `what` names the replacement for the
-  // question.
+  // discard_and_replace or cancel_replace answers it. `what` is the question's sentence on what
+  // would happen to the edits ("Loading X replaces them.").
   void replace_edits(std::string what, std::function<void(Document&)> replace);
   const std::string& pending_replacement() const { return pending_what_; }
   void discard_and_replace();

@@ -82,6 +82,17 @@ void Explorer::save_session_now() {
   document_.session_dirty = false;
 }
 
+bool Explorer::may_quit() {
+  if (quit_confirmed_ || !options_.session_file.empty() || !document_.unsaved()) {
+    return true;
+  }
+  if (document_.modal_title().empty()) {
+    document_.replace_edits("Closing the window loses them.",
+                            [this](Document&) { quit_confirmed_ = true; });
+  }
+  return false;
+}
+
 // Keeps the session on disk a second after the last change, so that a crash loses little.
 void Explorer::save_session_when_idle() {
   const double now = ImGui::GetTime();
@@ -128,7 +139,7 @@ void Explorer::draw_unsaved_dialog() {
   const bool escape = ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape), false);
   if (ImGui::BeginPopupModal(title, nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
     ImGui::Text("Your edits of \"%s\" are not saved.", document_.loaded().name.c_str());
-    ImGui::Text("Loading %s replaces them.", document_.pending_replacement().c_str());
+    ImGui::TextUnformatted(document_.pending_replacement().c_str());
     if (ImGui::Button("Save")) {
       ImGui::CloseCurrentPopup();
       document_.set_modal("");

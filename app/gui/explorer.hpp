@@ -59,6 +59,11 @@ class Explorer {
   const PresetsPanel& presets() const { return presets_; }
 
   void save_session_now();
+  // The window is asked to close: true when nothing would be lost (no unsaved edits, or a session
+  // that brings them back); otherwise asks "Save / Discard / Cancel" and returns false, and
+  // quit_confirmed() turns true once the answer lets the window close.
+  bool may_quit();
+  bool quit_confirmed() const { return quit_confirmed_; }
   // A PNG the user asked for with the Export buttons, taken by the frame loop after drawing.
   std::optional<std::string> take_screenshot_request() { return export_.take_screenshot_request(); }
   // Shows a line in the Presets panel (the outcome of an export done by the frame loop).
@@ -87,6 +92,7 @@ class Explorer {
   AnalysisPanel analysis_;
   CalibrationPanel calibration_;  // "Fit to measurements", opened from the Presets panel
   bool show_stats_ = false;
+  bool quit_confirmed_ = false;
   double last_session_save_time_ = 0.0;
 };
 

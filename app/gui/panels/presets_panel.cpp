@@ -181,7 +181,7 @@ void PresetsPanel::draw(Document& document, Renderer& renderer,
       }
       const bool current = entry.path.string() == document.loaded_path();
       if (ImGui::Selectable(entry.name.c_str(), current)) {
-        document.replace_edits("\"" + entry.name + "\"",
+        document.replace_edits("Loading \"" + entry.name + "\" replaces them.",
                                [path = entry.path](Document& d) { d.load_preset_file(path); });
       }
       if (ImGui::IsItemHovered()) {

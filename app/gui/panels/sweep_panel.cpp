@@ -124,8 +124,9 @@ void SweepPanel::draw(Document& document) {
 
   for (int which = 0; which < kPaperCases; ++which) {
     if (ImGui::SmallButton(kPaperCaseButtons[which])) {
-      document.replace_edits(std::string("the paper's ") + kPaperCaseButtons[which],
-                             [this, which](Document& d) { select_paper_case(which, d); });
+      document.replace_edits(
+          std::string("Loading the paper's ") + kPaperCaseButtons[which] + " replaces them.",
+          [this, which](Document& d) { select_paper_case(which, d); });
     }
     ImGui::SameLine();
   }
