@@ -115,6 +115,7 @@ class ExplorerTest : public foldlab::testing::TempDirTest {
   static constexpr int kEscape = 256;  // GLFW_KEY_ESCAPE
 
   const Parameters& shown() { return explorer_->scene().parameters(); }
+  static Preset cotton() { return load_preset(kPresetsDir / "fabric-cotton-jersey.json"); }
   double height_mm() { return explorer_->edited().hanging.height_mm; }
   Document& document() { return explorer_->document(); }
 
@@ -310,7 +311,7 @@ TEST_F(ExplorerTest, SlidersShowTheInputTablesFormatAndUnit) {
 TEST_F(ExplorerTest, APresetClickAsksBeforeReplacingUnsavedEditsAndCancelKeepsThem) {
   ASSERT_EQ(explorer_->set_input("d", 123.0), std::nullopt);
   frame();
-  click("Table 1, h = 900 mm");
+  click("Cotton jersey knit");
   EXPECT_EQ(document().modal_title(), "Unsaved changes");
   EXPECT_NE(last_text_.find("Discard"), std::string::npos) << last_text_;
   EXPECT_EQ(shown().hanging.support_displacement_mm, 123.0) << "nothing replaced yet";
@@ -327,7 +328,7 @@ TEST_F(ExplorerTest, APresetClickAsksBeforeReplacingUnsavedEditsAndCancelKeepsTh
 TEST_F(ExplorerTest, EscapeClosesTheUnsavedEditsDialogAndKeepsTheEdits) {
   ASSERT_EQ(explorer_->set_input("d", 123.0), std::nullopt);
   frame();
-  click("Table 1, h = 900 mm");
+  click("Cotton jersey knit");
   ASSERT_EQ(document().modal_title(), "Unsaved changes");
   press(kEscape);
   EXPECT_EQ(document().modal_title(), "");
@@ -339,12 +340,11 @@ TEST_F(ExplorerTest, EscapeClosesTheUnsavedEditsDialogAndKeepsTheEdits) {
 TEST_F(ExplorerTest, DiscardLoadsThePresetClickedAndWithoutEditsNothingIsAsked) {
   ASSERT_EQ(explorer_->set_input("d", 123.0), std::nullopt);
   frame();
-  click("Table 1, h = 900 mm");
+  click("Cotton jersey knit");
   click("Discard");
   EXPECT_EQ(document().modal_title(), "");
-  EXPECT_EQ(document().loaded().name, "Table 1, h = 900 mm");
-  EXPECT_EQ(shown().hanging.height_mm, 900.0);
-  EXPECT_EQ(shown().hanging.support_displacement_mm, 100.0);
+  EXPECT_EQ(document().loaded().name, "Cotton jersey knit");
+  EXPECT_TRUE(shown() == cotton().parameters);
   EXPECT_FALSE(document().unsaved());
 
   click("Fig. 4, h = L = 1400 mm");
@@ -356,7 +356,7 @@ TEST_F(ExplorerTest, DiscardLoadsThePresetClickedAndWithoutEditsNothingIsAsked) 
 TEST_F(ExplorerTest, SaveInTheDialogWritesTheEditsThenLoads) {
   ASSERT_EQ(explorer_->set_input("d", 123.0), std::nullopt);
   frame();
-  click("Table 1, h = 900 mm");
+  click("Cotton jersey knit");
   click("Save");
   EXPECT_EQ(document().modal_title(), "Save as");
   click("Save");
@@ -364,7 +364,7 @@ TEST_F(ExplorerTest, SaveInTheDialogWritesTheEditsThenLoads) {
   ASSERT_TRUE(fs::exists(written)) << last_text_;
   EXPECT_EQ(load_preset(written).parameters.hanging.support_displacement_mm, 123.0);
   EXPECT_EQ(document().modal_title(), "");
-  EXPECT_EQ(document().loaded().name, "Table 1, h = 900 mm");
+  EXPECT_EQ(document().loaded().name, "Cotton jersey knit");
 }
 
 TEST_F(ExplorerTest, ThePapersCaseButtonsAskBeforeReplacingUnsavedEdits) {
@@ -423,16 +423,15 @@ TEST_F(ExplorerTest, UndoAndRedoRestoreTheExactValues) {
 TEST_F(ExplorerTest, UndoBringsBackTheEditsAPresetLoadReplaced) {
   ASSERT_EQ(explorer_->set_input("d", 123.0), std::nullopt);
   frame();
-  click("Table 1, h = 900 mm");
+  click("Cotton jersey knit");
   click("Discard");
-  ASSERT_EQ(shown().hanging.height_mm, 900.0);
+  ASSERT_TRUE(shown() == cotton().parameters);
   press('Z', true);
   EXPECT_EQ(document().loaded().name, "Table 1, h = 1400 mm (default)");
   EXPECT_EQ(shown().hanging.support_displacement_mm, 123.0);
-  EXPECT_EQ(shown().hanging.height_mm, 1400.0);
+  EXPECT_EQ(shown().fabric.weight_N_per_mm2, 15e-7);
   press('Y', true);
-  EXPECT_EQ(shown().hanging.height_mm, 900.0);
-  EXPECT_EQ(shown().hanging.support_displacement_mm, 100.0);
+  EXPECT_TRUE(shown() == cotton().parameters);
 }
 
 // A drag changes h on every frame it moves; undo takes the whole drag back at once.
@@ -492,13 +491,13 @@ TEST_F(ExplorerTest, NotSavingIsAWarningNotASuccess) {
 }
 
 TEST_F(ExplorerTest, StatusMessagesExpire) {
-  click("Table 1, h = 900 mm");
-  EXPECT_NE(frame().find("Loaded Table 1, h = 900 mm."), std::string::npos);
+  click("Cotton jersey knit");
+  EXPECT_NE(frame().find("Loaded Cotton jersey knit."), std::string::npos);
   ImGui::GetIO().DeltaTime = 5.0f;
   frame();
   frame();
   ImGui::GetIO().DeltaTime = 1.0f / 60.0f;
-  EXPECT_EQ(frame().find("Loaded Table 1"), std::string::npos) << "10 s later";
+  EXPECT_EQ(frame().find("Loaded Cotton"), std::string::npos) << "10 s later";
 }
 
 // A refused value's reason once appeared under its slider and pushed every slider below it down.
