@@ -41,6 +41,7 @@ class ExplorerTest : public foldlab::testing::TempDirTest {
     io.IniFilename = nullptr;
     io.DisplaySize = ImVec2(1280, 800);
     io.DeltaTime = 1.0f / 60.0f;
+    io.KeyMap[ImGuiKey_Escape] = kEscape;
     unsigned char* pixels = nullptr;
     int w = 0;
     int h = 0;
@@ -72,8 +73,53 @@ class ExplorerTest : public foldlab::testing::TempDirTest {
     ImGui::NewFrame();
     explorer_->frame();
     ImGui::Render();
-    return drawn_text(*ImGui::GetDrawData());
+    last_text_ = drawn_text(*ImGui::GetDrawData(), &last_positions_);
+    return last_text_;
   }
+
+  // Where the last frame drew `label` (the top left of its first glyph); fails the test when it
+  // did not draw it.
+  ImVec2 position_of(const std::string& label) {
+    const std::size_t at = last_text_.rfind(label);
+    EXPECT_NE(at, std::string::npos) << label << " is not shown:\n" << last_text_;
+    return at == std::string::npos ? ImVec2(-100.0f, -100.0f) : last_positions_[at];
+  }
+
+  // A left click as a hand makes it: press, then release on the next frame.
+  void click_at(ImVec2 at) {
+    ImGuiIO& io = ImGui::GetIO();
+    io.MousePos = at;
+    frame();
+    io.MouseDown[0] = true;
+    frame();
+    io.MouseDown[0] = false;
+    frame();
+    frame();  // what the click opened is drawn
+  }
+  void click(const std::string& label) {
+    const ImVec2 at = position_of(label);
+    click_at(ImVec2(at.x + 3.0f, at.y + 4.0f));
+  }
+
+  // A key with Ctrl and Shift as given (letters by their upper-case ASCII code, as GLFW sends
+  // them; Escape by the code the key map names).
+  void press(int key, bool ctrl = false, bool shift = false) {
+    ImGuiIO& io = ImGui::GetIO();
+    io.KeyCtrl = ctrl;
+    io.KeyShift = shift;
+    io.KeysDown[key] = true;
+    frame();
+    io.KeysDown[key] = false;
+    io.KeyCtrl = false;
+    io.KeyShift = false;
+    frame();
+  }
+  static constexpr int kEscape = 256;  // GLFW_KEY_ESCAPE
+
+  const Parameters& shown() { return explorer_->scene().parameters(); }
+  static Preset cotton() { return load_preset(kPresetsDir / "fabric-cotton-jersey.json"); }
+  double height_mm() { return explorer_->edited().hanging.height_mm; }
+  Document& document() { return explorer_->document(); }
 
   static void append_utf8(std::string& text, unsigned codepoint) {
     if (codepoint < 0x80) {
@@ -91,7 +137,7 @@ class ExplorerTest : public foldlab::testing::TempDirTest {
   // The text in the draw data: a glyph is a quad whose corners carry its UV rectangle in the font
   // atlas. A space draws nothing, so a gap wider than a glyph's advance becomes one space and a
   // move to another baseline a new line.
-  static std::string drawn_text(const ImDrawData& data) {
+  static std::string drawn_text(const ImDrawData& data, std::vector<ImVec2>* positions) {
     const ImFont* font = ImGui::GetFont();
     const float advance = font->FindGlyph('a')->AdvanceX;
     std::string text;
@@ -118,7 +164,9 @@ class ExplorerTest : public foldlab::testing::TempDirTest {
         } else if (x - last_x > 1.5f * advance) {
           text += ' ';
         }
+        positions->resize(text.size(), ImVec2(x, y));
         append_utf8(text, glyph->Codepoint);
+        positions->resize(text.size(), ImVec2(x, y));
         last_x = x;
         last_y = y;
         i += 3;
@@ -138,6 +186,8 @@ class ExplorerTest : public foldlab::testing::TempDirTest {
 
   std::uint64_t evaluations(Stage stage) { return explorer_->scene().stats(stage).evaluations; }
 
+  std::string last_text_;
+  std::vector<ImVec2> last_positions_;  // where each byte of last_text_ was drawn
   ImGuiContext* context_ = nullptr;
   NullRenderer renderer_;
   std::unique_ptr<Explorer> explorer_;
@@ -257,6 +307,211 @@ TEST_F(ExplorerTest, SlidersShowTheInputTablesFormatAndUnit) {
     const std::string label = std::string(key) + " (" + std::string(spec->name) + ")";
     EXPECT_NE(text.find(label), std::string::npos) << label;
   }
+}
+
+// Clicking a preset once replaced unsaved edits with no question.
+TEST_F(ExplorerTest, APresetClickAsksBeforeReplacingUnsavedEditsAndCancelKeepsThem) {
+  ASSERT_EQ(explorer_->set_input("d", 123.0), std::nullopt);
+  frame();
+  click("Cotton jersey knit");
+  EXPECT_EQ(document().modal_title(), "Unsaved changes");
+  EXPECT_NE(last_text_.find("Discard"), std::string::npos) << last_text_;
+  EXPECT_EQ(shown().hanging.support_displacement_mm, 123.0) << "nothing replaced yet";
+  EXPECT_EQ(shown().hanging.height_mm, 1400.0);
+
+  click("Cancel");
+  EXPECT_EQ(document().modal_title(), "");
+  EXPECT_EQ(shown().hanging.support_displacement_mm, 123.0);
+  EXPECT_EQ(document().loaded().name, "Table 1, h = 1400 mm (default)");
+  EXPECT_TRUE(document().unsaved());
+  EXPECT_EQ(frame().find("Discard"), std::string::npos) << "the dialog is closed";
+}
+
+TEST_F(ExplorerTest, EscapeClosesTheUnsavedEditsDialogAndKeepsTheEdits) {
+  ASSERT_EQ(explorer_->set_input("d", 123.0), std::nullopt);
+  frame();
+  click("Cotton jersey knit");
+  ASSERT_EQ(document().modal_title(), "Unsaved changes");
+  press(kEscape);
+  EXPECT_EQ(document().modal_title(), "");
+  EXPECT_EQ(frame().find("Discard"), std::string::npos) << "the dialog is closed";
+  EXPECT_EQ(shown().hanging.support_displacement_mm, 123.0);
+  EXPECT_EQ(document().loaded().name, "Table 1, h = 1400 mm (default)");
+}
+
+TEST_F(ExplorerTest, DiscardLoadsThePresetClickedAndWithoutEditsNothingIsAsked) {
+  ASSERT_EQ(explorer_->set_input("d", 123.0), std::nullopt);
+  frame();
+  click("Cotton jersey knit");
+  click("Discard");
+  EXPECT_EQ(document().modal_title(), "");
+  EXPECT_EQ(document().loaded().name, "Cotton jersey knit");
+  EXPECT_TRUE(shown() == cotton().parameters);
+  EXPECT_FALSE(document().unsaved());
+
+  click("Fig. 4, h = L = 1400 mm");
+  EXPECT_EQ(document().modal_title(), "");
+  EXPECT_EQ(document().loaded().name, "Fig. 4, h = L = 1400 mm");
+}
+
+// "Save" on a shipped preset asks for a name, writes the user preset, then loads the one clicked.
+TEST_F(ExplorerTest, SaveInTheDialogWritesTheEditsThenLoads) {
+  ASSERT_EQ(explorer_->set_input("d", 123.0), std::nullopt);
+  frame();
+  click("Cotton jersey knit");
+  click("Save");
+  EXPECT_EQ(document().modal_title(), "Save as");
+  click("Save");
+  const fs::path written = dir_ / "user-presets" / "table-1-h-1400-mm-default-edited.json";
+  ASSERT_TRUE(fs::exists(written)) << last_text_;
+  EXPECT_EQ(load_preset(written).parameters.hanging.support_displacement_mm, 123.0);
+  EXPECT_EQ(document().modal_title(), "");
+  EXPECT_EQ(document().loaded().name, "Cotton jersey knit");
+}
+
+TEST_F(ExplorerTest, ThePapersCaseButtonsAskBeforeReplacingUnsavedEdits) {
+  open_explorer("sweep");
+  ASSERT_EQ(explorer_->set_input("h", 900.0), std::nullopt);
+  frame();
+  click("Table 2 (w)");
+  EXPECT_EQ(document().modal_title(), "Unsaved changes");
+  EXPECT_EQ(shown().hanging.height_mm, 900.0);
+  click("Discard");
+  EXPECT_EQ(document().loaded().name, "Table 2, w = 33e-7 N/mm²");
+  EXPECT_EQ(explorer_->analysis().sweep().key(), "w");
+}
+
+// With no session to bring them back (--fresh), closing the window lost the edits unasked.
+TEST_F(ExplorerTest, ClosingTheWindowAsksWhenEditsWouldBeLost) {
+  EXPECT_TRUE(explorer_->may_quit()) << "nothing to lose";
+  ASSERT_EQ(explorer_->set_input("d", 123.0), std::nullopt);
+  frame();
+  EXPECT_FALSE(explorer_->may_quit());
+  frame();
+  frame();  // a dialog sizes itself on its first frame and shows from the next
+  EXPECT_EQ(document().modal_title(), "Unsaved changes");
+  EXPECT_NE(last_text_.find("Closing the window loses them."), std::string::npos) << last_text_;
+  press(kEscape);
+  EXPECT_FALSE(explorer_->quit_confirmed());
+  EXPECT_EQ(shown().hanging.support_displacement_mm, 123.0);
+
+  EXPECT_FALSE(explorer_->may_quit());
+  frame();
+  frame();
+  click("Discard");
+  EXPECT_TRUE(explorer_->quit_confirmed());
+}
+
+TEST_F(ExplorerTest, UndoAndRedoRestoreTheExactValues) {
+  ASSERT_EQ(explorer_->set_input("h", 912.345678901), std::nullopt);
+  ASSERT_EQ(explorer_->set_input("d", 123.456789012), std::nullopt);
+  frame();
+  EXPECT_EQ(document().undo_depth(), 2u);
+  press('Z', true);
+  EXPECT_EQ(shown().hanging.support_displacement_mm, 100.0);
+  EXPECT_EQ(shown().hanging.height_mm, 912.345678901);
+  press('Z', true);
+  EXPECT_EQ(shown().hanging.height_mm, 1400.0);
+  EXPECT_FALSE(document().unsaved());
+  EXPECT_EQ(document().undo_depth(), 0u);
+  press('Z', true, true);  // Ctrl+Shift+Z
+  EXPECT_EQ(shown().hanging.height_mm, 912.345678901);
+  EXPECT_EQ(shown().hanging.support_displacement_mm, 100.0);
+  press('Y', true);
+  EXPECT_EQ(shown().hanging.support_displacement_mm, 123.456789012);
+  EXPECT_EQ(document().undo_depth(), 2u);
+}
+
+TEST_F(ExplorerTest, UndoBringsBackTheEditsAPresetLoadReplaced) {
+  ASSERT_EQ(explorer_->set_input("d", 123.0), std::nullopt);
+  frame();
+  click("Cotton jersey knit");
+  click("Discard");
+  ASSERT_TRUE(shown() == cotton().parameters);
+  press('Z', true);
+  EXPECT_EQ(document().loaded().name, "Table 1, h = 1400 mm (default)");
+  EXPECT_EQ(shown().hanging.support_displacement_mm, 123.0);
+  EXPECT_EQ(shown().fabric.weight_N_per_mm2, 15e-7);
+  press('Y', true);
+  EXPECT_TRUE(shown() == cotton().parameters);
+}
+
+// A drag changes h on every frame it moves; undo takes the whole drag back at once.
+TEST_F(ExplorerTest, OneDragOfASliderIsOneUndoStep) {
+  const ImVec2 label = position_of("h (height)");
+  ImGuiIO& io = ImGui::GetIO();
+  io.MousePos = ImVec2(label.x - 60.0f, label.y + 4.0f);
+  frame();
+  io.MouseDown[0] = true;
+  frame();
+  std::vector<double> seen{height_mm()};
+  for (int step = 1; step <= 8; ++step) {
+    io.MousePos.x -= 5.0f;
+    frame();
+    seen.push_back(height_mm());
+  }
+  io.MouseDown[0] = false;
+  frame();
+  frame();
+  std::sort(seen.begin(), seen.end());
+  EXPECT_GT(std::unique(seen.begin(), seen.end()) - seen.begin(), 3) << "h moved over the drag";
+  EXPECT_NE(shown().hanging.height_mm, 1400.0);
+  EXPECT_EQ(document().undo_depth(), 1u);
+  press('Z', true);
+  EXPECT_EQ(shown().hanging.height_mm, 1400.0);
+  EXPECT_EQ(document().undo_depth(), 0u);
+}
+
+TEST_F(ExplorerTest, CtrlSSavesAsThenOverTheUsersPreset) {
+  ASSERT_EQ(explorer_->set_input("h", 900.0), std::nullopt);
+  frame();
+  press('S', true);
+  EXPECT_EQ(document().modal_title(), "Save as") << "a shipped preset is never overwritten";
+  click("Save");
+  const fs::path written = dir_ / "user-presets" / "table-1-h-1400-mm-default-edited.json";
+  ASSERT_TRUE(fs::exists(written));
+  EXPECT_EQ(document().message(), "Saved to " + written.string());
+  EXPECT_NE(frame().find("Saved to"), std::string::npos) << last_text_;
+  EXPECT_FALSE(document().unsaved());
+
+  // Now the loaded preset is the user's: Ctrl+S writes over it without asking.
+  ASSERT_EQ(explorer_->set_input("h", 950.0), std::nullopt);
+  press('S', true);
+  EXPECT_EQ(document().modal_title(), "");
+  EXPECT_EQ(load_preset(written).parameters.hanging.height_mm, 950.0);
+  EXPECT_FALSE(document().unsaved());
+}
+
+TEST_F(ExplorerTest, NotSavingIsAWarningNotASuccess) {
+  press('S', true);
+  ASSERT_EQ(document().modal_title(), "Save as");
+  press(kEscape);
+  EXPECT_EQ(document().modal_title(), "");
+  EXPECT_EQ(document().message(), "Not saved.");
+  EXPECT_EQ(document().message_kind(), MessageKind::warning);
+  EXPECT_FALSE(fs::exists(dir_ / "user-presets"));
+}
+
+TEST_F(ExplorerTest, StatusMessagesExpire) {
+  click("Cotton jersey knit");
+  EXPECT_NE(frame().find("Loaded Cotton jersey knit."), std::string::npos);
+  ImGui::GetIO().DeltaTime = 5.0f;
+  frame();
+  frame();
+  ImGui::GetIO().DeltaTime = 1.0f / 60.0f;
+  EXPECT_EQ(frame().find("Loaded Cotton"), std::string::npos) << "10 s later";
+}
+
+// A refused value's reason once appeared under its slider and pushed every slider below it down.
+TEST_F(ExplorerTest, ARefusedValueMovesNoSliderAndMarksTheViewsStale) {
+  const ImVec2 before = position_of("K (");
+  EXPECT_EQ(last_text_.find("stale"), std::string::npos);
+  ASSERT_EQ(explorer_->set_input("d", 800.0), std::nullopt);
+  const std::string text = frame();
+  const ImVec2 after = position_of("K (");
+  EXPECT_EQ(after.y, before.y);
+  EXPECT_NE(text.find("d_mm = 800"), std::string::npos) << "the reason is still shown\n" << text;
+  EXPECT_NE(text.find("stale"), std::string::npos) << text;
 }
 
 TEST(AnimatedInput, MovesOverTheSlidersRangeWhereTheModelAcceptsIt) {

@@ -7,6 +7,23 @@
 #include "core/model/text_format.hpp"
 
 namespace foldlab::gui {
+namespace {
+
+// Long enough to read twice; an error stays until the user has surely seen it.
+double lifetime_s(MessageKind kind) {
+  switch (kind) {
+    case MessageKind::info:
+    case MessageKind::success:
+      return 8.0;
+    case MessageKind::warning:
+      return 15.0;
+    case MessageKind::error:
+      return 60.0;
+  }
+  return 8.0;
+}
+
+}  // namespace
 
 Document::Document(const Preset& initial, std::string initial_path)
     : loaded_(initial),
@@ -14,6 +31,7 @@ Document::Document(const Preset& initial, std::string initial_path)
       edited_(initial.parameters),
       scene_(initial.parameters) {
   commit();
+  step_base_ = snapshot();
 }
 
 void Document::commit() {
@@ -31,26 +49,30 @@ std::optional<std::string> Document::set_input(std::string_view key, double valu
     return error;
   }
   commit();
+  end_step();
   return std::nullopt;
 }
 
 void Document::reset_to_loaded() {
   edited_ = loaded_.parameters;
   commit();
+  end_step();
 }
 
 void Document::load_preset_file(const std::filesystem::path& path) {
   try {
     Preset preset = load_preset(path);
+    end_step();  // an edit still open is a step of its own, before the load
     loaded_ = preset;
     loaded_path_ = path.string();
     edited_ = preset.parameters;
     commit();
     ++loads_;
-    notify("Loaded " + preset.name + ".", false);
+    end_step();
+    notify("Loaded " + preset.name + ".", MessageKind::success);
     session_dirty = true;
   } catch (const PresetError& e) {
-    notify(std::string("Not loaded; the current state is kept.\n") + e.what(), true);
+    notify(std::string("Not loaded; the current state is kept.\n") + e.what(), MessageKind::error);
   }
 }
 
@@ -58,6 +80,9 @@ void Document::adopt(const Preset& loaded, std::string path) {
   loaded_ = loaded;
   loaded_path_ = std::move(path);
   session_dirty = true;
+  // Saving is no edit to undo: the history goes on from the state as saved.
+  step_base_.loaded = loaded_;
+  step_base_.loaded_path = loaded_path_;
 }
 
 bool Document::unsaved() const {
@@ -75,9 +100,114 @@ std::optional<std::string> Document::refusal() const {
   return detail::join_lines(messages);
 }
 
-void Document::notify(std::string message, bool is_error) {
+Document::Snapshot Document::snapshot() const {
+  return Snapshot{loaded_, loaded_path_, edited_};
+}
+
+bool Document::same(const Snapshot& a, const Snapshot& b) {
+  return a.edited == b.edited && a.loaded_path == b.loaded_path && a.loaded.name == b.loaded.name &&
+         a.loaded.parameters == b.loaded.parameters;
+}
+
+void Document::restore(const Snapshot& s) {
+  const bool other_preset = s.loaded_path != loaded_path_ || s.loaded.name != loaded_.name;
+  loaded_ = s.loaded;
+  loaded_path_ = s.loaded_path;
+  edited_ = s.edited;
+  commit();
+  if (other_preset) {
+    ++loads_;
+  }
+  step_base_ = s;
+  session_dirty = true;
+}
+
+void Document::end_step() {
+  Snapshot now = snapshot();
+  if (same(now, step_base_)) {
+    return;
+  }
+  undo_.push_back(std::move(step_base_));
+  redo_.clear();
+  step_base_ = std::move(now);
+}
+
+bool Document::undo() {
+  end_step();
+  if (undo_.empty()) {
+    return false;
+  }
+  redo_.push_back(snapshot());
+  Snapshot previous = std::move(undo_.back());
+  undo_.pop_back();
+  restore(previous);
+  notify("Undone.", MessageKind::info);
+  return true;
+}
+
+bool Document::redo() {
+  end_step();
+  if (redo_.empty()) {
+    return false;
+  }
+  undo_.push_back(snapshot());
+  Snapshot next = std::move(redo_.back());
+  redo_.pop_back();
+  restore(next);
+  notify("Redone.", MessageKind::info);
+  return true;
+}
+
+void Document::forget_history() {
+  undo_.clear();
+  redo_.clear();
+  step_base_ = snapshot();
+}
+
+void Document::replace_edits(std::string what, std::function<void(Document&)> replace) {
+  end_step();
+  if (!unsaved()) {
+    replace(*this);
+    return;
+  }
+  pending_what_ = std::move(what);
+  pending_replace_ = std::move(replace);
+  modal_title_ = kUnsavedModal;
+}
+
+void Document::discard_and_replace() {
+  modal_title_.clear();
+  continue_replace();
+}
+
+void Document::cancel_replace() {
+  modal_title_.clear();
+  pending_what_.clear();
+  pending_replace_ = nullptr;
+}
+
+void Document::continue_replace() {
+  std::function<void(Document&)> replace = std::move(pending_replace_);
+  pending_replace_ = nullptr;
+  pending_what_.clear();
+  if (replace) {
+    replace(*this);
+  }
+}
+
+void Document::notify(std::string message, MessageKind kind) {
   message_ = std::move(message);
-  message_is_error_ = is_error;
+  message_kind_ = kind;
+  message_time_s_ = now_s_;
+}
+
+const std::string& Document::message() const {
+  static const std::string none;
+  return now_s_ - message_time_s_ > lifetime_s(message_kind_) ? none : message_;
+}
+
+void Document::tick(double now_s) {
+  now_s_ = now_s;
 }
 
 }  // namespace foldlab::gui

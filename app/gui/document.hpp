@@ -1,11 +1,13 @@
 // What the explorer's panels share, one copy of each: the preset as loaded, the parameters being
 // edited (possibly invalid) with their validation, the scene that always holds the last valid
-// parameters, and the status line. Panels change it only through these members, so that a slider,
-// a map click, a preset load and a scripted run all take the same path to the scene.
+// parameters, the undo history, the question asked before unsaved edits are replaced, and the
+// status line. Panels change it only through these members, so that a slider, a map click, a
+// preset load and a scripted run all take the same path to the scene.
 #pragma once
 
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -16,6 +18,9 @@
 #include "core/model/parameters.hpp"
 
 namespace foldlab::gui {
+
+// How a status message reads: its colour, and how long it stays.
+enum class MessageKind { info, success, warning, error };
 
 class Document {
  public:
@@ -33,8 +38,8 @@ class Document {
   // The model sees an edit only when it validates; otherwise the scene keeps the last valid state
   // and the widgets show the user's number with the reason it was refused.
   void commit();
-  // One input by its --set key, as moving its slider does; the reason when the key or the value
-  // cannot be applied at all (range problems are issues(), as for a slider).
+  // One input by its --set key, as moving its slider does, and one undo step; the reason when
+  // the key or the value cannot be applied at all (range problems are issues(), as for a slider).
   std::optional<std::string> set_input(std::string_view key, double value);
   void reset_to_loaded();
   // Loads a preset file in place of the edits; on failure keeps everything and says why.
@@ -46,29 +51,84 @@ class Document {
   // Counts preset loads, so that views can reframe for a new cloth.
   std::uint64_t loads() const { return loads_; }
 
-  // What playback reports: the refusal shown under the sliders (null when all are accepted), the
-  // title of the modal dialog open now (none yet), and how many edits undo can take back (none
-  // yet).
+  // What playback reports: the refusal shown at the foot of the sliders (null when all are
+  // accepted).
   std::optional<std::string> refusal() const;
-  std::optional<std::string> modal_title() const { return std::nullopt; }
-  std::size_t undo_depth() const { return 0; }
 
-  void notify(std::string message, bool is_error);
-  const std::string& message() const { return message_; }
-  bool message_is_error() const { return message_is_error_; }
+  // Undo history. A continuous edit (a slider being dragged, a value being typed) changes
+  // edited() frame after frame; end_step() closes it as one step, called by the frame when no
+  // widget is active, so one drag is one step. set_input and preset loads close their own step.
+  void end_step();
+  bool undo();
+  bool redo();
+  std::size_t undo_depth() const { return undo_.size(); }
+  std::size_t redo_depth() const { return redo_.size(); }
+  // The current state becomes the base of a new history (a restored session).
+  void forget_history();
+
+  // Runs `replace` (which replaces the edits, e.g. loads another preset) now when nothing would be
+  // lost, else asks first: the explorer shows the modal until save_and_replace,
+  // discard_and_replace or cancel_replace answers it. `what` is the question's sentence on what
+  // would happen to the edits ("Loading X replaces them.").
+  void replace_edits(std::string what, std::function<void(Document&)> replace);
+  const std::string& pending_replacement() const { return pending_what_; }
+  void discard_and_replace();
+  void cancel_replace();
+  // After the edits were saved: runs the pending replacement, if any.
+  void continue_replace();
+
+  // The title of the open modal dialog, empty when none. Dialogs other than the unsaved-edits
+  // question (overwrite, save as) open and close theirs with set_modal.
+  const std::string& modal_title() const { return modal_title_; }
+  void set_modal(std::string title) { modal_title_ = std::move(title); }
+  static constexpr const char* kUnsavedModal = "Unsaved changes";
+
+  // The status line. A message expires after a time that depends on its kind (errors stay
+  // longest), counted from the time given to tick().
+  void notify(std::string message, MessageKind kind);
+  void notify(std::string message, bool is_error) {
+    notify(std::move(message), is_error ? MessageKind::error : MessageKind::success);
+  }
+  // The current message, empty once expired.
+  const std::string& message() const;
+  MessageKind message_kind() const { return message_kind_; }
+  bool message_is_error() const { return message_kind_ == MessageKind::error; }
+  // The frame's clock in seconds (ImGui::GetTime()).
+  void tick(double now_s);
 
   // Set by every accepted change; the explorer saves the session and clears it.
   bool session_dirty = false;
 
  private:
+  // What an undo step restores: the preset as loaded and the edits over it.
+  struct Snapshot {
+    Preset loaded;
+    std::string loaded_path;
+    Parameters edited;
+  };
+  Snapshot snapshot() const;
+  static bool same(const Snapshot& a, const Snapshot& b);
+  void restore(const Snapshot& s);
+
   Preset loaded_;
   std::string loaded_path_;
   Parameters edited_;
   std::vector<ValidationIssue> issues_;
   Scene scene_;
   std::uint64_t loads_ = 0;
+
+  Snapshot step_base_;  // the state when the open step began
+  std::vector<Snapshot> undo_;
+  std::vector<Snapshot> redo_;
+
+  std::string pending_what_;
+  std::function<void(Document&)> pending_replace_;
+  std::string modal_title_;
+
   std::string message_;
-  bool message_is_error_ = false;
+  MessageKind message_kind_ = MessageKind::info;
+  double now_s_ = 0.0;
+  double message_time_s_ = 0.0;
 };
 
 }  // namespace foldlab::gui

@@ -30,11 +30,12 @@ Explorer::Explorer(const Preset& initial, const std::string& initial_path, bool 
       style.wireframe = s->wireframe;
       style.fold_lines = s->fold_lines_3d;
       style.ground = s->ground;
-      session_message_ = "Restored the last session.";
+      document_.notify("Restored the last session.", MessageKind::info);
     } else if (!error.empty()) {
-      session_message_ = error;
+      document_.notify(error, MessageKind::warning);
     }
   }
+  document_.forget_history();  // undo goes back no further than what the window opened with
   document_.session_dirty = false;
 }
 
@@ -81,6 +82,17 @@ void Explorer::save_session_now() {
   document_.session_dirty = false;
 }
 
+bool Explorer::may_quit() {
+  if (quit_confirmed_ || !options_.session_file.empty() || !document_.unsaved()) {
+    return true;
+  }
+  if (document_.modal_title().empty()) {
+    document_.replace_edits("Closing the window loses them.",
+                            [this](Document&) { quit_confirmed_ = true; });
+  }
+  return false;
+}
+
 // Keeps the session on disk a second after the last change, so that a crash loses little.
 void Explorer::save_session_when_idle() {
   const double now = ImGui::GetTime();
@@ -89,18 +101,70 @@ void Explorer::save_session_when_idle() {
     try {
       save_session_now();
     } catch (const std::exception& e) {
-      session_message_ = std::string("Could not save the session: ") + e.what();
+      document_.notify(std::string("Could not save the session: ") + e.what(), MessageKind::error);
       document_.session_dirty = false;
     }
   }
 }
 
+// Letters by the platform's key codes: GLFW's, which are the upper-case ASCII codes.
+void Explorer::handle_shortcuts() {
+  const ImGuiIO& io = ImGui::GetIO();
+  // A dialog answers its own keys; a widget being dragged or typed into keeps them (a text
+  // field has its own Ctrl+Z).
+  if (!document_.modal_title().empty() || ImGui::IsAnyItemActive() || !io.KeyCtrl || io.KeyAlt) {
+    return;
+  }
+  if (ImGui::IsKeyPressed('Z', false)) {
+    if (io.KeyShift) {
+      document_.redo();
+    } else {
+      document_.undo();
+    }
+  } else if (ImGui::IsKeyPressed('Y', false)) {
+    document_.redo();
+  } else if (ImGui::IsKeyPressed('S', false)) {
+    presets_.save(document_);
+  }
+}
+
+void Explorer::draw_unsaved_dialog() {
+  const char* title = Document::kUnsavedModal;
+  if (document_.modal_title() != title) {
+    return;
+  }
+  if (!ImGui::IsPopupOpen(title)) {
+    ImGui::OpenPopup(title);
+  }
+  const bool escape = ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape), false);
+  if (ImGui::BeginPopupModal(title, nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
+    ImGui::Text("Your edits of \"%s\" are not saved.", document_.loaded().name.c_str());
+    ImGui::TextUnformatted(document_.pending_replacement().c_str());
+    if (ImGui::Button("Save")) {
+      ImGui::CloseCurrentPopup();
+      document_.set_modal("");
+      presets_.save(document_);  // then loads, unless it asks for a name or fails
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("Discard")) {
+      ImGui::CloseCurrentPopup();
+      document_.discard_and_replace();
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("Cancel") || escape) {
+      ImGui::CloseCurrentPopup();
+      document_.cancel_replace();
+      document_.notify("Cancelled; your edits are kept.", MessageKind::info);
+    }
+    ImGui::EndPopup();
+  }
+}
+
 void Explorer::frame() {
+  document_.tick(ImGui::GetTime());
+  handle_shortcuts();
   parameters_.draw(document_, renderer_);
   presets_.draw(document_, renderer_, [this] {
-    if (!session_message_.empty()) {
-      ImGui::TextColored(kDimText, "%s", session_message_.c_str());
-    }
     ImGui::Checkbox("pipeline stats", &show_stats_);
     ImGui::SameLine();
     calibration_.open_button(document_.scene().parameters());
@@ -114,6 +178,11 @@ void Explorer::frame() {
     document_.commit();  // the fitted constants, applied as a slider would
   }
   stats_overlay(show_stats_, document_.scene(), renderer_.counters());
+  draw_unsaved_dialog();
+  presets_.draw_dialogs(document_);
+  if (!ImGui::IsAnyItemActive()) {
+    document_.end_step();  // a drag or a typed value ends when its widget lets go
+  }
   save_session_when_idle();
 }
 

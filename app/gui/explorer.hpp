@@ -48,6 +48,8 @@ class Explorer {
   // A view setting by name (see ClothViewPanel::set_view, plus sweep=table1|table2|fig4).
   std::optional<std::string> set_view(std::string_view key, std::string_view value);
   void load_preset_file(const std::filesystem::path& path) { document_.load_preset_file(path); }
+  // Ctrl+S, as the keys do.
+  void save() { presets_.save(document_); }
 
   Document& document() { return document_; }
   Scene& scene() { return document_.scene(); }
@@ -58,6 +60,11 @@ class Explorer {
   const ParametersPanel& parameters_panel() const { return parameters_; }
 
   void save_session_now();
+  // The window is asked to close: true when nothing would be lost (no unsaved edits, or a session
+  // that brings them back); otherwise asks "Save / Discard / Cancel" and returns false, and
+  // quit_confirmed() turns true once the answer lets the window close.
+  bool may_quit();
+  bool quit_confirmed() const { return quit_confirmed_; }
   // A PNG the user asked for with the Export buttons, taken by the frame loop after drawing.
   std::optional<std::string> take_screenshot_request() { return export_.take_screenshot_request(); }
   // Shows a line in the Presets panel (the outcome of an export done by the frame loop).
@@ -69,6 +76,10 @@ class Explorer {
 
  private:
   void save_session_when_idle();
+  // Ctrl+Z undo, Ctrl+Shift+Z and Ctrl+Y redo, Ctrl+S save.
+  void handle_shortcuts();
+  // "Save / Discard / Cancel" before a preset load replaces unsaved edits.
+  void draw_unsaved_dialog();
 
   ExplorerOptions options_;
   Renderer& renderer_;
@@ -82,7 +93,7 @@ class Explorer {
   AnalysisPanel analysis_;
   CalibrationPanel calibration_;  // "Fit to measurements", opened from the Presets panel
   bool show_stats_ = false;
-  std::string session_message_;
+  bool quit_confirmed_ = false;
   double last_session_save_time_ = 0.0;
 };
 

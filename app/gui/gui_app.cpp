@@ -62,7 +62,13 @@ void apply_view_settings(Explorer& explorer, const std::vector<std::string>& set
 // The frame loop, as plain as Dear ImGui's examples: poll, new frame, build, render, present.
 void run_frames(Surface& surface, Renderer& renderer, Explorer& explorer, ScriptedRun& script,
                 FrameTimes& times, const std::string& screenshot_path) {
-  for (int frame = 0; surface.open() && script.wants_frame(frame, explorer); ++frame) {
+  for (int frame = 0; !explorer.quit_confirmed() && script.wants_frame(frame, explorer); ++frame) {
+    if (!surface.open()) {
+      if (explorer.may_quit()) {
+        break;
+      }
+      surface.keep_open();  // the explorer asks first; its answer ends the loop or not
+    }
     times.start();
     surface.new_frame();
     if (!script.play(explorer, surface)) {

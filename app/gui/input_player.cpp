@@ -13,6 +13,7 @@
 
 #include "app/common/inputs.hpp"
 #include "core/analysis/sweep.hpp"
+#include "core/io/json_input.hpp"
 #include "core/io/report.hpp"
 #include "core/io/scene_report.hpp"
 #include "core/model/settings.hpp"
@@ -359,7 +360,7 @@ json explorer_state_json(Explorer& explorer) {
     parameters[field] = value ? json(*value) : json(nullptr);
   }
   const std::optional<std::string> refused = document.refusal();
-  const std::optional<std::string> modal = document.modal_title();
+  const std::string& modal = document.modal_title();
   return {
       {"grid", std::to_string(scene.grid_nx()) + "x" + std::to_string(scene.grid_ny())},
       {"regime_map_ms", explorer.regime_map_ms()},
@@ -372,7 +373,7 @@ json explorer_state_json(Explorer& explorer) {
       {"parameters", parameters},
       {"refused", refused ? json(*refused) : json(nullptr)},
       {"dirty", document.unsaved()},
-      {"modal", modal ? json(*modal) : json(nullptr)},
+      {"modal", modal.empty() ? json(nullptr) : json(modal)},
       {"undo_depth", document.undo_depth()},
   };
 }
@@ -383,9 +384,11 @@ InputPlayer::InputPlayer(const std::filesystem::path& script_path) {
     throw app::InputError("--play " + script_path.string() + ": cannot be read");
   }
   const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  const json script = json::parse(text, nullptr, false);
-  if (script.is_discarded()) {
-    throw app::InputError("--play " + script_path.string() + ": not valid JSON");
+  json script;
+  try {
+    script = parse_json(text, "--play " + script_path.string());
+  } catch (const JsonInputError& e) {
+    throw app::InputError(e.what());
   }
   try {
     parse(script);

@@ -27,6 +27,8 @@ class Surface {
   virtual void shutdown_imgui_platform() = 0;
   // False once the user asked to close the window.
   virtual bool open() const = 0;
+  // Undoes a close request (the user chose to stay when asked about unsaved edits).
+  virtual void keep_open() {}
   // Polls input and starts ImGui's platform frame: display size, time step, mouse, keys.
   virtual void new_frame() = 0;
   virtual FrameSize framebuffer_size() const = 0;

@@ -49,6 +49,7 @@ class WindowSurface final : public Surface {
   void init_imgui_platform() override { ImGui_ImplGlfw_InitForOpenGL(window_, true); }
   void shutdown_imgui_platform() override { ImGui_ImplGlfw_Shutdown(); }
   bool open() const override { return !glfwWindowShouldClose(window_); }
+  void keep_open() override { glfwSetWindowShouldClose(window_, GLFW_FALSE); }
 
   void new_frame() override {
     glfwPollEvents();

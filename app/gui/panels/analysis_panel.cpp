@@ -27,6 +27,7 @@ void AnalysisPanel::draw(Document& document, Renderer& renderer) {
     ImGui::End();
     return;
   }
+  stale_mark(document);
   if (ImGui::BeginTabBar("analysis tabs")) {
     // The tab named at start is selected once, at the first frame.
     auto flags_for = [this](const char* name) {

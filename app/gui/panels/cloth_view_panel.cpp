@@ -84,6 +84,7 @@ void ClothViewPanel::draw(Document& document, Renderer& renderer) {
     ImGui::End();
     return;  // hidden: no grid, no normals, no upload, no draw
   }
+  stale_mark(document);
   if (camera_loads_ != document.loads()) {
     camera_loads_ = document.loads();  // another preset: frame it afresh
     camera_framed_ = false;

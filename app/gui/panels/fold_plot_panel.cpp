@@ -23,6 +23,7 @@ void FoldPlotPanel::draw(Document& document, Renderer& renderer) {
     ImGui::End();
     return;  // hidden: the fold lines are not even computed
   }
+  stale_mark(document);
   Scene& scene = document.scene();
   const FoldLines& lines = scene.fold_lines();
   const Solution& s = scene.solution();

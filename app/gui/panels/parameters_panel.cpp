@@ -26,15 +26,14 @@ std::string slider_label(const InputSpec& spec) {
   return std::string(spec.key) + " (" + std::string(spec.name) + ")";
 }
 
-// The issues of one input. K is derived: validation names the constant c it sets.
-void show_issues(const Document& document, const InputSpec& spec) {
+// Whether validation refused this input. K is derived: validation names the constant c it sets.
+bool refused(const Document& document, const InputSpec& spec) {
   for (const ValidationIssue& issue : document.issues()) {
     if (issue.field == spec.field || (spec.kind == InputKind::stiffness_K && issue.field == "c")) {
-      ImGui::PushStyleColor(ImGuiCol_Text, kErrorText);
-      ImGui::TextWrapped("%s", issue.message.c_str());
-      ImGui::PopStyleColor();
+      return true;
     }
   }
+  return false;
 }
 
 // Where a value sits on its slider, 0 at the left end and 1 at the right: on the exponent for a
@@ -65,6 +64,12 @@ void input_slider(Document& document, const InputSpec& spec, float width,
   const std::string format =
       std::string(spec.format) + (spec.unit.empty() ? "" : " " + std::string(spec.unit));
   const std::string label = slider_label(spec);
+  // A refused value reddens its slider; the reason goes to the foot of the panel, so that no
+  // line appears between the sliders and moves the one under the mouse.
+  const bool is_refused = refused(document, spec);
+  if (is_refused) {
+    ImGui::PushStyleColor(ImGuiCol_FrameBg, ImVec4(0.55f, 0.12f, 0.10f, 1.0f));
+  }
   ImGui::SetNextItemWidth(width);
   bool changed = false;
   if (ImGui::TempInputIsActive(ImGui::GetID(label.c_str()))) {
@@ -109,8 +114,10 @@ void input_slider(Document& document, const InputSpec& spec, float width,
     set_numeric_setting(document.edited(), spec.key, value);
     document.commit();
   }
+  if (is_refused) {
+    ImGui::PopStyleColor();
+  }
   help_marker(std::string(spec.help).c_str());
-  show_issues(document, spec);
 }
 
 void choice_combo(Document& document, const InputSpec& spec) {
@@ -195,6 +202,9 @@ void ParametersPanel::draw(Document& document, Renderer& renderer) {
     ImGui::PushStyleColor(ImGuiCol_Text, kErrorText);
     ImGui::TextWrapped("%zu input(s) refused: the views show the last valid state.",
                        document.issues().size());
+    for (const ValidationIssue& issue : document.issues()) {
+      ImGui::TextWrapped("%s", issue.message.c_str());
+    }
     ImGui::PopStyleColor();
   }
   ImGui::End();

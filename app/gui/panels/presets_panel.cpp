@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cstdio>
+#include <system_error>
 #include <utility>
 
 #include <imgui.h>
@@ -61,9 +63,33 @@ void PresetsPanel::save_as(Document& document, const std::string& name, bool ove
   const std::filesystem::path path = user_presets_dir_ / (file + ".json");
   if (!overwrite && std::filesystem::exists(path)) {
     pending_overwrite_ = name;
-    ImGui::OpenPopup("Overwrite preset?");
+    document.set_modal(kOverwriteModal);
     return;
   }
+  write(document, name, path);
+}
+
+bool PresetsPanel::is_user_preset(const std::string& path) const {
+  if (path.empty() || user_presets_dir_.empty()) {
+    return false;
+  }
+  std::error_code error;
+  return std::filesystem::equivalent(std::filesystem::path(path).parent_path(), user_presets_dir_,
+                                     error);
+}
+
+void PresetsPanel::save(Document& document) {
+  if (is_user_preset(document.loaded_path())) {
+    write(document, document.loaded().name, document.loaded_path());
+    return;
+  }
+  const std::string suggestion = document.loaded().name + " (edited)";
+  std::snprintf(save_as_name_, sizeof save_as_name_, "%s", suggestion.c_str());
+  document.set_modal(kSaveAsModal);
+}
+
+void PresetsPanel::write(Document& document, const std::string& name,
+                         const std::filesystem::path& path) {
   const Preset& loaded = document.loaded();
   Preset preset = loaded;
   preset.name = name;
@@ -73,13 +99,66 @@ void PresetsPanel::save_as(Document& document, const std::string& name, bool ove
     preset.published = {};  // published results belong to the paper's case, not to an edit
   }
   try {
-    std::filesystem::create_directories(user_presets_dir_);
+    std::filesystem::create_directories(path.parent_path());
     save_preset(preset, path);
     document.adopt(preset, path.string());
-    document.notify("Saved " + path.string(), false);
+    document.notify("Saved to " + path.string(), MessageKind::success);
     refresh();
   } catch (const std::exception& e) {
-    document.notify(std::string("Not saved: ") + e.what(), true);
+    document.cancel_replace();  // what waited for the save must not replace unsaved edits
+    document.notify(std::string("Not saved: ") + e.what(), MessageKind::error);
+    return;
+  }
+  document.continue_replace();
+}
+
+void PresetsPanel::draw_dialogs(Document& document) {
+  const std::string& modal = document.modal_title();
+  if (modal != kOverwriteModal && modal != kSaveAsModal) {
+    return;
+  }
+  if (!ImGui::IsPopupOpen(modal.c_str())) {
+    ImGui::OpenPopup(modal.c_str());
+  }
+  const bool escape = ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape), false);
+  if (ImGui::BeginPopupModal(kOverwriteModal, nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
+    ImGui::Text("A preset named \"%s\" exists. Replace it?", pending_overwrite_.c_str());
+    if (ImGui::Button("Replace")) {
+      document.set_modal("");
+      ImGui::CloseCurrentPopup();
+      save_as(document, pending_overwrite_, true);
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("Cancel") || escape) {
+      document.set_modal("");
+      ImGui::CloseCurrentPopup();
+      document.cancel_replace();
+      document.notify("Not saved.", MessageKind::warning);
+    }
+    ImGui::EndPopup();
+  }
+  if (ImGui::BeginPopupModal(kSaveAsModal, nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
+    ImGui::TextUnformatted("Save the current parameters as a new preset named:");
+    if (ImGui::IsWindowAppearing()) {
+      ImGui::SetKeyboardFocusHere();
+    }
+    ImGui::SetNextItemWidth(320.0f);
+    const bool entered = ImGui::InputText("##save as name", save_as_name_, sizeof save_as_name_,
+                                          ImGuiInputTextFlags_EnterReturnsTrue);
+    ImGui::TextDisabled("in %s", user_presets_dir_.string().c_str());
+    if (ImGui::Button("Save") || entered) {
+      document.set_modal("");
+      ImGui::CloseCurrentPopup();
+      save_as(document, save_as_name_, false);
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("Cancel") || escape) {
+      document.set_modal("");
+      ImGui::CloseCurrentPopup();
+      document.cancel_replace();
+      document.notify("Not saved.", MessageKind::warning);
+    }
+    ImGui::EndPopup();
   }
 }
 
@@ -102,7 +181,8 @@ void PresetsPanel::draw(Document& document, Renderer& renderer,
       }
       const bool current = entry.path.string() == document.loaded_path();
       if (ImGui::Selectable(entry.name.c_str(), current)) {
-        document.load_preset_file(entry.path);
+        document.replace_edits("Loading \"" + entry.name + "\" replaces them.",
+                               [path = entry.path](Document& d) { d.load_preset_file(path); });
       }
       if (ImGui::IsItemHovered()) {
         ImGui::SetTooltip("%s", entry.path.string().c_str());
@@ -117,21 +197,8 @@ void PresetsPanel::draw(Document& document, Renderer& renderer,
   if (ImGui::Button("Save as...")) {
     save_as(document, save_name_, false);
   }
-  if (ImGui::BeginPopupModal("Overwrite preset?", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
-    ImGui::Text("A preset named \"%s\" exists. Replace it?", pending_overwrite_.c_str());
-    if (ImGui::Button("Replace")) {
-      save_as(document, pending_overwrite_, true);
-      ImGui::CloseCurrentPopup();
-    }
-    ImGui::SameLine();
-    if (ImGui::Button("Cancel")) {
-      document.notify("Not saved.", false);
-      ImGui::CloseCurrentPopup();
-    }
-    ImGui::EndPopup();
-  }
   if (!document.message().empty()) {
-    ImGui::PushStyleColor(ImGuiCol_Text, document.message_is_error() ? kErrorText : kOkText);
+    ImGui::PushStyleColor(ImGuiCol_Text, message_colour(document.message_kind()));
     ImGui::TextWrapped("%s", document.message().c_str());
     ImGui::PopStyleColor();
   }

@@ -1,5 +1,6 @@
-// The Presets panel: the shipped and the user's presets (a click loads one), "Save as..." with an
-// overwrite question, and the document's status line. What else sits in the panel (the Export
+// The Presets panel: the shipped and the user's presets (a click loads one, asking first when
+// that would replace unsaved edits), "Save as..." with an overwrite question, Ctrl+S, and the
+// document's status line. What else sits in the panel (the Export
 // section, the calibration window's button) the explorer draws through `footer`.
 #pragma once
 
@@ -20,6 +21,13 @@ class PresetsPanel {
   // Saves the current valid parameters as a user preset named `name` (the file name is its slug);
   // asks before replacing a file unless `overwrite`.
   void save_as(Document& document, const std::string& name, bool overwrite);
+  // Ctrl+S: over the loaded preset when it is one of the user's, else opens "Save as".
+  void save(Document& document);
+  // The overwrite question and "Save as", shown while the document names them as its modal;
+  // drawn outside any panel so that they open whether or not the panel is visible.
+  void draw_dialogs(Document& document);
+  static constexpr const char* kOverwriteModal = "Overwrite preset?";
+  static constexpr const char* kSaveAsModal = "Save as";
 
   struct Entry {
     std::string name;
@@ -30,11 +38,16 @@ class PresetsPanel {
 
  private:
   void refresh();
+  bool is_user_preset(const std::string& path) const;
+  // Writes the valid parameters as preset `name` to `path`, then goes on with what waited for
+  // the save (a preset load after "Save" in the unsaved-changes question).
+  void write(Document& document, const std::string& name, const std::filesystem::path& path);
 
   std::filesystem::path presets_dir_;
   std::filesystem::path user_presets_dir_;
   std::vector<Entry> entries_;
   char save_name_[128] = {};
+  char save_as_name_[128] = {};
   std::string pending_overwrite_;  // name waiting for the user's "overwrite?" answer
 };
 

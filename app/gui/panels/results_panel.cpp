@@ -17,6 +17,7 @@ void ResultsPanel::draw(Document& document, Renderer& renderer) {
     ImGui::End();
     return;
   }
+  stale_mark(document);
   Scene& scene = document.scene();
   const Solution& s = scene.solution();
   const StageStats& timing = scene.stats(Stage::solution);

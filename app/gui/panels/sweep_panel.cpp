@@ -124,7 +124,9 @@ void SweepPanel::draw(Document& document) {
 
   for (int which = 0; which < kPaperCases; ++which) {
     if (ImGui::SmallButton(kPaperCaseButtons[which])) {
-      select_paper_case(which, document);
+      document.replace_edits(
+          std::string("Loading the paper's ") + kPaperCaseButtons[which] + " replaces them.",
+          [this, which](Document& d) { select_paper_case(which, d); });
     }
     ImGui::SameLine();
   }
