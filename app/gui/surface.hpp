@@ -29,6 +29,9 @@ class Surface {
   virtual bool open() const = 0;
   // Polls input and starts ImGui's platform frame: display size, time step, mouse, keys.
   virtual void new_frame() = 0;
+  // Sleeps until an input event arrives or `timeout_s` passes (a window); returns at once
+  // headless, where nothing arrives.
+  virtual void wait_events(double timeout_s) = 0;
   virtual FrameSize framebuffer_size() const = 0;
   // Makes the frame's own framebuffer current (0 for a window, the off-screen one headless).
   virtual void bind_framebuffer() = 0;

@@ -84,6 +84,7 @@ class HeadlessSurface final : public Surface {
 
   FrameSize framebuffer_size() const override { return size_; }
   void bind_framebuffer() override { glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_); }
+  void wait_events(double) override {}
   void present() override {}
   void finish() override { glFinish(); }
 
