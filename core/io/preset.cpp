@@ -177,7 +177,7 @@ std::vector<Eq7Constants> read_constants_list(Reader& r, const json& list,
                                               const std::string& pointer) {
   std::vector<Eq7Constants> out;
   if (!list.is_array()) {
-    r.problem(pointer, "expected an array of [K, p] pairs, got " + type_name(list));
+    r.problem(pointer, "expected an array of [K, p] pairs, got " + describe_json(list));
     return out;
   }
   for (std::size_t i = 0; i < list.size(); ++i) {
