@@ -58,6 +58,10 @@ echo "docs.sh: explorer pictures" >&2
   --out docs/explorer-table1-h2350-exact.png
 "$foldlab" render --size "$size" --view sweep=table1 --tab sweep --out docs/explorer-sweep-table1.png
 "$foldlab" render --size "$size" --tab map --out docs/explorer-regime-map.png
+# The sizes a class sees: a laptop at the default look, a projector with the light theme at 150 %.
+"$foldlab" render --size 1280x800 --out docs/explorer-1280x800.png
+"$foldlab" render --size 1920x1080 --view theme=light --view scale=150 \
+  --out docs/explorer-1920x1080-light-150.png
 
 echo "docs.sh: comparison with the paper" >&2
 compare_block "$work/compare" 

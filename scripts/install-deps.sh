@@ -6,7 +6,7 @@ set -euo pipefail
 packages=(
   build-essential cmake ninja-build pkg-config clang-format clang-tidy
   libeigen3-dev nlohmann-json3-dev libcli11-dev libtinygltf-dev
-  libimgui-dev libstb-dev libglfw3-dev libepoxy-dev libegl-dev libgl-dev
+  libimgui-dev libstb-dev libglfw3-dev fonts-dejavu-core libepoxy-dev libegl-dev libgl-dev
   libegl-mesa0 libgl1-mesa-dri
   googletest libgtest-dev libbenchmark-dev
   clang libclang-rt-14-dev libfuzzer-14-dev

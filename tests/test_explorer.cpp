@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "app/gui/appearance.hpp"
 #include "app/gui/explorer.hpp"
 #include "app/gui/input_player.hpp"
 #include "app/gui/renderer.hpp"
@@ -51,12 +52,14 @@ class ExplorerTest : public foldlab::testing::TempDirTest {
   }
 
   // The explorer on Table 1's h = 1400 mm row, with `tab` shown in the Analysis panel.
-  void open_explorer(const std::string& tab) {
+  void open_explorer(const std::string& tab, const fs::path& font_file = {},
+                     const fs::path& session_file = {}, bool restore = false) {
     explorer_.reset();
     explorer_ = std::make_unique<Explorer>(
         load_preset(kPresetsDir / "paper-table1-h1400.json"),
-        (kPresetsDir / "paper-table1-h1400.json").string(), false,
-        ExplorerOptions{kPresetsDir, dir_ / "user-presets", "", tab}, renderer_);
+        (kPresetsDir / "paper-table1-h1400.json").string(), restore,
+        ExplorerOptions{kPresetsDir, dir_ / "user-presets", session_file, tab, font_file},
+        renderer_);
     // ImGui sizes tables and child windows from what the previous frame held.
     frame();
     frame();
@@ -70,6 +73,7 @@ class ExplorerTest : public foldlab::testing::TempDirTest {
 
   // One frame; returns every text it drew, in drawing order.
   std::string frame() {
+    explorer_->prepare_frame();
     ImGui::NewFrame();
     explorer_->frame();
     ImGui::Render();
@@ -512,6 +516,103 @@ TEST_F(ExplorerTest, ARefusedValueMovesNoSliderAndMarksTheViewsStale) {
   EXPECT_EQ(after.y, before.y);
   EXPECT_NE(text.find("d_mm = 800"), std::string::npos) << "the reason is still shown\n" << text;
   EXPECT_NE(text.find("stale"), std::string::npos) << text;
+}
+
+TEST(Contrast, MatchesHandComputedWcagRatios) {
+  const ImVec4 black(0, 0, 0, 1);
+  const ImVec4 white(1, 1, 1, 1);
+  EXPECT_NEAR(contrast_ratio(black, white), 21.0, 1e-9);
+  EXPECT_NEAR(contrast_ratio(white, black), 21.0, 1e-9);
+  EXPECT_NEAR(contrast_ratio(white, white), 1.0, 1e-12);
+  // #767676 on white: 118/255 = 0.46275 -> ((0.46275 + 0.055) / 1.055)^2.4 = 0.18116 (grey, so
+  // that is L), and 1.05 / 0.23116 = 4.542: the lightest grey that passes 4.5:1 on white.
+  const float grey = 118.0f / 255.0f;
+  EXPECT_NEAR(contrast_ratio(ImVec4(grey, grey, grey, 1), white), 4.542, 0.001);
+  // Pure red: L = 0.2126, so 1.05 / 0.2626 = 3.998 on white and 0.2626 / 0.05 = 5.252 on black.
+  EXPECT_NEAR(contrast_ratio(ImVec4(1, 0, 0, 1), white), 3.998, 0.001);
+  EXPECT_NEAR(contrast_ratio(ImVec4(1, 0, 0, 1), black), 5.252, 0.001);
+  // Half-transparent white over black is the grey 0.5: L = 0.21404, 0.26404 / 0.05 = 5.281.
+  EXPECT_NEAR(contrast_ratio(blend_over(ImVec4(1, 1, 1, 0.5f), black), black), 5.281, 0.001);
+}
+
+TEST(Contrast, FoldColoursReadOnThePlotBackgroundInBothThemes) {
+  for (const bool light : {false, true}) {
+    const ImVec4 background = plot_background(light);
+    const FoldColours colours = fold_colours(light);
+    EXPECT_GE(contrast_ratio(colours.positive, background), 4.5) << "light " << light;
+    EXPECT_GE(contrast_ratio(colours.negative, background), 4.5) << "light " << light;
+  }
+  // The blue the plot used before on the dark theme's plot: the 1.3:1 a projector washes out.
+  const ImVec4 old_blue(31 / 255.0f, 58 / 255.0f, 147 / 255.0f, 1.0f);
+  EXPECT_NEAR(contrast_ratio(old_blue, plot_background(false)), 1.3, 0.1);
+}
+
+TEST_F(ExplorerTest, TheFontHasGreekAndFallsBackWhenMissing) {
+  constexpr ImWchar kNu = 0x03BD;
+  constexpr ImWchar kCapitalSigma = 0x03A3;
+  open_explorer("equations", kDejaVuSans);
+  const ImFont* font = ImGui::GetIO().Fonts->Fonts[0];
+  EXPECT_NE(font->FindGlyphNoFallback(kNu), nullptr);
+  EXPECT_NE(font->FindGlyphNoFallback(kCapitalSigma), nullptr);
+  EXPECT_NE(font->FindGlyphNoFallback(0x03C0), nullptr);  // π
+  EXPECT_TRUE(explorer_->appearance().notice().empty()) << explorer_->appearance().notice();
+  // The equations read as in the paper, drawn with the font's own glyphs.
+  EXPECT_NE(frame().find("(2l/π)"), std::string::npos);
+
+  open_explorer("equations", dir_ / "no-such-font.ttf");
+  EXPECT_NE(explorer_->appearance().notice().find("no-such-font.ttf"), std::string::npos);
+  EXPECT_NE(frame().find("is missing"), std::string::npos) << "the notice is shown";
+  EXPECT_NE(ImGui::GetIO().Fonts->Fonts[0]->FindGlyphNoFallback('a'), nullptr);
+}
+
+TEST_F(ExplorerTest, UiScaleIsClampedAndRememberedWithTheTheme) {
+  const fs::path session = dir_ / "session.json";
+  open_explorer("equations", {}, session);
+  EXPECT_EQ(explorer_->appearance().scale_percent(), 100);
+  ASSERT_EQ(explorer_->set_view("scale", "400"), std::nullopt);
+  frame();
+  EXPECT_EQ(explorer_->appearance().scale_percent(), 250);
+  // ImGui's 13 px font rebuilt at 2.5 times its size, not stretched.
+  EXPECT_FLOAT_EQ(ImGui::GetIO().Fonts->Fonts[0]->FontSize, 33.0f);
+  EXPECT_FLOAT_EQ(ImGui::GetIO().FontGlobalScale, 1.0f);
+  ASSERT_EQ(explorer_->set_view("scale", "20"), std::nullopt);
+  frame();
+  EXPECT_EQ(explorer_->appearance().scale_percent(), 100);
+  EXPECT_FLOAT_EQ(ImGui::GetIO().Fonts->Fonts[0]->FontSize, 13.0f);
+
+  // Ctrl + (the '=' key) five times: 150 %; the style's sizes scale with it.
+  const float padding_100 = ImGui::GetStyle().FramePadding.x;
+  ImGuiIO& io = ImGui::GetIO();
+  for (int i = 0; i < 5; ++i) {
+    io.KeyCtrl = true;
+    io.KeysDown['='] = true;
+    frame();
+    io.KeysDown['='] = false;
+    frame();
+  }
+  io.KeyCtrl = false;
+  EXPECT_EQ(explorer_->appearance().scale_percent(), 150);
+  EXPECT_FLOAT_EQ(ImGui::GetStyle().FramePadding.x, 1.5f * padding_100);
+  ASSERT_EQ(explorer_->set_view("theme", "light"), std::nullopt);
+  frame();
+  EXPECT_TRUE(style_is_light());
+  explorer_->save_session_now();
+
+  open_explorer("equations", {}, session, true);
+  EXPECT_EQ(explorer_->appearance().scale_percent(), 150);
+  EXPECT_TRUE(explorer_->appearance().light_theme());
+  EXPECT_TRUE(style_is_light());
+  EXPECT_FLOAT_EQ(ImGui::GetIO().Fonts->Fonts[0]->FontSize, 20.0f);  // round(13 * 1.5)
+}
+
+TEST_F(ExplorerTest, ThePapersOverlayBelongsToItsCaseOnly) {
+  ASSERT_EQ(explorer_->set_view("sweep", "table2"), std::nullopt);
+  frame();
+  EXPECT_EQ(explorer_->analysis().sweep().overlay_x().size(), 3u) << "Table 2's printed rows";
+  explorer_->load_preset_file(kPresetsDir / "paper-table1-h900.json");
+  const std::string text = frame();
+  EXPECT_TRUE(explorer_->analysis().sweep().overlay_x().empty());
+  EXPECT_EQ(text.find("paper, Table 2"), std::string::npos) << text;
 }
 
 TEST(AnimatedInput, MovesOverTheSlidersRangeWhereTheModelAcceptsIt) {

@@ -74,9 +74,9 @@ double fraction_different(const Image& a, const Image& b) {
   return static_cast<double>(differ) / static_cast<double>(a.rgb.size() / 3);
 }
 
-// The fold-line colours of the plot (and of the paper: negative folds red).
-constexpr std::array<int, 3> kNegativeFold = {214, 39, 40};
-constexpr std::array<int, 3> kPositiveFold = {31, 58, 147};
+// The fold-line colours of the plot in the dark theme (fold_colours(false); negative folds red).
+constexpr std::array<int, 3> kNegativeFold = {255, 140, 128};
+constexpr std::array<int, 3> kPositiveFold = {140, 191, 255};
 // The plot window's first-use place: x 30-65 %, y 0-56 % of the window.
 constexpr double kPlotX0 = 0.30, kPlotY0 = 0.0, kPlotX1 = 0.65, kPlotY1 = 0.56;
 

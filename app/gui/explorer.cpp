@@ -1,5 +1,6 @@
 #include "app/gui/explorer.hpp"
 
+#include <cmath>
 #include <exception>
 #include <utility>
 
@@ -8,6 +9,7 @@
 #include "app/gui/panels/stats_overlay.hpp"
 #include "app/gui/panels/widgets.hpp"
 #include "app/gui/session.hpp"
+#include "core/model/settings.hpp"
 #include "core/model/text_format.hpp"
 
 namespace foldlab::gui {
@@ -16,6 +18,7 @@ Explorer::Explorer(const Preset& initial, const std::string& initial_path, bool 
                    ExplorerOptions options, Renderer& renderer)
     : options_(std::move(options)),
       renderer_(renderer),
+      appearance_(options_.font_file),
       document_(initial, initial_path),
       presets_(options_.presets_dir, options_.user_presets_dir),
       analysis_(options_.presets_dir, options_.analysis_tab) {
@@ -30,6 +33,7 @@ Explorer::Explorer(const Preset& initial, const std::string& initial_path, bool 
       style.wireframe = s->wireframe;
       style.fold_lines = s->fold_lines_3d;
       style.ground = s->ground;
+      appearance_.request(s->ui_scale_percent, s->light_theme);
       document_.notify("Restored the last session.", MessageKind::info);
     } else if (!error.empty()) {
       document_.notify(error, MessageKind::warning);
@@ -37,6 +41,7 @@ Explorer::Explorer(const Preset& initial, const std::string& initial_path, bool 
   }
   document_.forget_history();  // undo goes back no further than what the window opened with
   document_.session_dirty = false;
+  appearance_.apply(renderer_);
 }
 
 Explorer::~Explorer() {
@@ -62,6 +67,21 @@ std::optional<std::string> Explorer::set_view(std::string_view key, std::string_
     }
     return "sweep = '" + detail::cut(value) + "' is not one of: table1, table2, fig4";
   }
+  if (key == "theme") {
+    if (value != "dark" && value != "light") {
+      return "theme = '" + std::string(value) + "' is not one of: dark, light";
+    }
+    appearance_.request(appearance_.scale_percent(), value == "light");
+    return std::nullopt;
+  }
+  if (key == "scale") {
+    const std::optional<double> percent = parse_number(value);
+    if (!percent) {
+      return "scale = '" + std::string(value) + "' is not a number (percent)";
+    }
+    appearance_.request(static_cast<int>(std::lround(*percent)), appearance_.light_theme());
+    return std::nullopt;
+  }
   return cloth_view_.set_view(key, value);
 }
 
@@ -78,6 +98,8 @@ void Explorer::save_session_now() {
   s.wireframe = cloth_view_.style().wireframe;
   s.fold_lines_3d = cloth_view_.style().fold_lines;
   s.ground = cloth_view_.style().ground;
+  s.ui_scale_percent = appearance_.scale_percent();
+  s.light_theme = appearance_.light_theme();
   save_session(options_.session_file, s);
   document_.session_dirty = false;
 }
@@ -160,11 +182,40 @@ void Explorer::draw_unsaved_dialog() {
   }
 }
 
+// The UI scale and theme, for a projector: buttons beside the shortcuts that do the same.
+void Explorer::view_controls() {
+  int percent = appearance_.scale_percent();
+  bool light = appearance_.light_theme();
+  ImGui::AlignTextToFramePadding();
+  ImGui::Text("UI scale %d %%", percent);
+  ImGui::SameLine();
+  if (ImGui::SmallButton("-")) {
+    percent -= kUiScaleStepPercent;
+  }
+  ImGui::SameLine();
+  if (ImGui::SmallButton("+")) {
+    percent += kUiScaleStepPercent;
+  }
+  help_marker("Ctrl + and Ctrl - change the scale, Ctrl 0 resets it.");
+  ImGui::SameLine();
+  ImGui::Checkbox("light theme", &light);
+  appearance_.request(percent, light);
+  if (!appearance_.notice().empty()) {
+    ImGui::PushStyleColor(ImGuiCol_Text, kNoteText);
+    ImGui::TextWrapped("%s", appearance_.notice().c_str());
+    ImGui::PopStyleColor();
+  }
+}
+
 void Explorer::frame() {
   document_.tick(ImGui::GetTime());
+  const int scale_before = appearance_.scale_percent();
+  const bool light_before = appearance_.light_theme();
+  appearance_.handle_shortcuts();
   handle_shortcuts();
   parameters_.draw(document_, renderer_);
   presets_.draw(document_, renderer_, [this] {
+    view_controls();
     ImGui::Checkbox("pipeline stats", &show_stats_);
     ImGui::SameLine();
     calibration_.open_button(document_.scene().parameters());
@@ -182,6 +233,9 @@ void Explorer::frame() {
   presets_.draw_dialogs(document_);
   if (!ImGui::IsAnyItemActive()) {
     document_.end_step();  // a drag or a typed value ends when its widget lets go
+  }
+  if (appearance_.scale_percent() != scale_before || appearance_.light_theme() != light_before) {
+    document_.session_dirty = true;
   }
   save_session_when_idle();
 }

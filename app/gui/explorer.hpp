@@ -9,6 +9,7 @@
 #include <string>
 #include <string_view>
 
+#include "app/gui/appearance.hpp"
 #include "app/gui/document.hpp"
 #include "app/gui/panels/analysis_panel.hpp"
 #include "app/gui/panels/calibration_panel.hpp"
@@ -28,6 +29,7 @@ struct ExplorerOptions {
   std::filesystem::path user_presets_dir;  // "Save as..." writes here
   std::filesystem::path session_file;      // empty: nothing is restored or saved
   std::string analysis_tab;                // "equations", "sweep" or "map": selected at start
+  std::filesystem::path font_file;         // empty: ImGui's built-in font (no Greek)
 };
 
 class Explorer {
@@ -40,6 +42,8 @@ class Explorer {
   Explorer(const Explorer&) = delete;
   Explorer& operator=(const Explorer&) = delete;
 
+  // Before ImGui::NewFrame: applies a new UI scale or theme (fonts cannot change within a frame).
+  void prepare_frame() { appearance_.apply(renderer_); }
   // Builds every window for this frame; between ImGui::NewFrame and ImGui::Render.
   void frame();
 
@@ -58,6 +62,7 @@ class Explorer {
   const AnalysisPanel& analysis() const { return analysis_; }
   const PresetsPanel& presets() const { return presets_; }
   const ParametersPanel& parameters_panel() const { return parameters_; }
+  Appearance& appearance() { return appearance_; }
 
   void save_session_now();
   // The window is asked to close: true when nothing would be lost (no unsaved edits, or a session
@@ -71,6 +76,9 @@ class Explorer {
   void notify(const std::string& message, bool is_error) { document_.notify(message, is_error); }
   // True while background work (the regime map) is still filling in what the window shows.
   bool busy() const { return analysis_.regime_map().computing(); }
+  // True while a frame would differ from the last without any input: background work or the
+  // breeze. Otherwise the window may sleep until an event comes.
+  bool animating() const { return busy() || calibration_.running() || cloth_view_.animating(); }
   // The last finished regime map's wall time in ms (0 before one finishes).
   double regime_map_ms() const { return analysis_.regime_map().last_map_ms(); }
 
@@ -81,8 +89,11 @@ class Explorer {
   // "Save / Discard / Cancel" before a preset load replaces unsaved edits.
   void draw_unsaved_dialog();
 
+  void view_controls();
+
   ExplorerOptions options_;
   Renderer& renderer_;
+  Appearance appearance_;
   Document document_;
   ParametersPanel parameters_;
   PresetsPanel presets_;

@@ -1,5 +1,6 @@
 #include "app/gui/gui_app.hpp"
 
+#include <chrono>
 #include <filesystem>
 #include <memory>
 #include <optional>
@@ -26,11 +27,6 @@ class ImGuiContextGuard {
     ImGui::CreateContext();
     ImGuiIO& io = ImGui::GetIO();
     io.IniFilename = ini_path_.empty() ? nullptr : ini_path_.c_str();
-    ImGui::StyleColorsDark();
-    ImGuiStyle& style = ImGui::GetStyle();
-    // Square, opaque panels whose backgrounds the renderer fills: ImGui draws none of its own.
-    style.WindowRounding = 0.0f;
-    style.Colors[ImGuiCol_WindowBg].w = 0.0f;
     surface_.init_imgui_platform();
   }
   ~ImGuiContextGuard() {
@@ -59,9 +55,17 @@ void apply_view_settings(Explorer& explorer, const std::vector<std::string>& set
   }
 }
 
-// The frame loop, as plain as Dear ImGui's examples: poll, new frame, build, render, present.
+// After an input event ImGui needs a few frames to settle (hover, focus, a window's new size), and
+// the sleep has a timeout so that delayed things (tooltips, the text cursor, the session's
+// delayed save) still happen, at a rate that costs almost nothing.
+constexpr int kFramesAfterInput = 3;
+constexpr double kIdleTimeout_s = 0.5;
+
+// The frame loop, as plain as Dear ImGui's examples: poll, new frame, build, render, present;
+// with nothing to animate, it sleeps until an event instead of redrawing the same picture.
 void run_frames(Surface& surface, Renderer& renderer, Explorer& explorer, ScriptedRun& script,
                 FrameTimes& times, const std::string& screenshot_path) {
+  int frames_since_wake = 0;
   for (int frame = 0; !explorer.quit_confirmed() && script.wants_frame(frame, explorer); ++frame) {
     if (!surface.open()) {
       if (explorer.may_quit()) {
@@ -69,12 +73,22 @@ void run_frames(Surface& surface, Renderer& renderer, Explorer& explorer, Script
       }
       surface.keep_open();  // the explorer asks first; its answer ends the loop or not
     }
+    if (script.may_wait_for_input() && !explorer.animating() &&
+        frames_since_wake >= kFramesAfterInput) {
+      const auto asleep = std::chrono::steady_clock::now();
+      surface.wait_events(kIdleTimeout_s);
+      const std::chrono::duration<double> slept = std::chrono::steady_clock::now() - asleep;
+      // A timeout brought no input: one frame for what is due, then sleep again.
+      frames_since_wake = slept.count() >= 0.9 * kIdleTimeout_s ? kFramesAfterInput - 1 : 0;
+    }
+    ++frames_since_wake;
     times.start();
     surface.new_frame();
     if (!script.play(explorer, surface)) {
       break;
     }
     script.before_new_frame(explorer, frame);
+    explorer.prepare_frame();
     renderer.new_frame();
     ImGui::NewFrame();
     explorer.frame();
@@ -118,7 +132,7 @@ int run(Surface& surface, const GuiRunOptions& options, bool interactive,
   }
   ExplorerOptions explorer_options{app::find_presets_dir(), user_presets_dir(),
                                    persist ? config_dir() / "session.json" : "",
-                                   options.analysis_tab};
+                                   options.analysis_tab, kDejaVuSans};
   ImGuiContextGuard imgui(surface, persist ? (config_dir() / "imgui.ini").string() : "");
   const std::unique_ptr<Renderer> renderer = make_gl_renderer();
   // A preset named on the command line wins over the restored session.

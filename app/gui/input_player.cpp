@@ -268,7 +268,8 @@ std::optional<ImVec2> find_label(const std::string& label) {
       by_uv.emplace(uv_key(g.U0, g.V0), &g);
     }
   }
-  const float advance = font->FindGlyph('a')->AdvanceX;
+  // A space draws nothing: a gap after a glyph's advance wider than half a space is one.
+  const float space = font->FindGlyph(' ')->AdvanceX;
   std::optional<ImVec2> inside;
   for (int l = 0; l < data->CmdListsCount; ++l) {
     const ImVector<ImDrawVert>& v = data->CmdLists[l]->VtxBuffer;
@@ -277,6 +278,7 @@ std::optional<ImVec2> find_label(const std::string& label) {
     std::vector<ImVec4> boxes;  // per byte of `text`
     float last_x = -1e9f;
     float last_y = -1e9f;
+    float last_advance = 0.0f;
     const auto check_run = [&]() -> std::optional<ImVec2> {
       for (std::size_t at = text.find(label); at != std::string::npos;
            at = text.find(label, at + 1)) {
@@ -307,7 +309,7 @@ std::optional<ImVec2> find_label(const std::string& label) {
       if (std::abs(y - last_y) > 1.0f) {
         text += '\n';
         boxes.push_back(box);
-      } else if (x - last_x > 1.5f * advance) {
+      } else if (x - (last_x + last_advance) > 0.5f * space) {
         text += ' ';
         boxes.push_back(box);
       }
@@ -326,6 +328,7 @@ std::optional<ImVec2> find_label(const std::string& label) {
       boxes.resize(boxes.size() + (text.size() - before), box);
       last_x = x;
       last_y = y;
+      last_advance = glyph.AdvanceX;
       i += 3;
     }
     text += '\n';

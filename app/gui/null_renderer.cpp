@@ -34,6 +34,15 @@ void NullRenderer::update_image(int image, int width, int height, const std::uin
   ++image_updates_;
 }
 
+void NullRenderer::fonts_changed() {
+  ImGuiIO& io = ImGui::GetIO();
+  unsigned char* pixels = nullptr;
+  int width = 0;
+  int height = 0;
+  io.Fonts->GetTexDataAsRGBA32(&pixels, &width, &height);
+  io.Fonts->SetTexID(reinterpret_cast<ImTextureID>(static_cast<std::intptr_t>(1)));
+}
+
 ImTextureID NullRenderer::texture(int image) const {
   // Any non-null id: ImGui only passes it through to a backend, and there is none.
   return reinterpret_cast<ImTextureID>(static_cast<std::intptr_t>(image + 1));

@@ -51,6 +51,8 @@ class Renderer {
 
   // Once per frame, before ImGui::NewFrame.
   virtual void new_frame() = 0;
+  // The font atlas was rebuilt (a new UI scale): its texture must be made again.
+  virtual void fonts_changed() = 0;
   // Fills the current window's content area with the style's (opaque) window background, behind
   // everything the window draws. The style's own WindowBg is transparent.
   virtual void fill_window_background() = 0;
@@ -77,6 +79,8 @@ class Renderer {
 class NullRenderer final : public Renderer {
  public:
   void new_frame() override {}
+  // Builds the atlas's pixels, as a backend would before uploading them.
+  void fonts_changed() override;
   void fill_window_background() override {}
   void draw_cloth(ImDrawList* draw_list, ImVec2 min, Scene& scene, const OrbitCamera& camera,
                   FrameSize size, const ClothStyle& style) override;

@@ -45,6 +45,8 @@ class ScriptedRun {
   // before its last frame, so that the picture shows a finished regime map.
   bool wants_frame(int frame, const Explorer& explorer);
   bool is_last(int frame) const { return frames_ > 0 && frame + 1 == frames_ + extra_frames_; }
+  // Only a window in the user's hands may sleep between frames: a script wants every frame.
+  bool may_wait_for_input() const { return frames_ == 0 && !animation_ && !player_; }
   // After the surface polled its input: scripted frames take no pointer input, so that a stray
   // cursor cannot change the picture; the animated input moves.
   void before_new_frame(Explorer& explorer, int frame) const;

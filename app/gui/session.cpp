@@ -41,6 +41,8 @@ std::optional<Session> load_session(const std::filesystem::path& path, std::stri
     s.wireframe = view.value("wireframe", s.wireframe);
     s.fold_lines_3d = view.value("fold_lines", s.fold_lines_3d);
     s.ground = view.value("ground", s.ground);
+    s.ui_scale_percent = view.value("ui_scale_percent", s.ui_scale_percent);
+    s.light_theme = view.value("light_theme", s.light_theme);
     return s;
   } catch (const std::exception& e) {
     error = "the saved session " + path.string() + " could not be read (" + e.what() +
@@ -65,7 +67,9 @@ void save_session(const std::filesystem::path& path, const Session& session) {
        {{"grid_resolution", session.grid_resolution},
         {"wireframe", session.wireframe},
         {"fold_lines", session.fold_lines_3d},
-        {"ground", session.ground}}},
+        {"ground", session.ground},
+        {"ui_scale_percent", session.ui_scale_percent},
+        {"light_theme", session.light_theme}}},
   };
   write_file_atomically(path, j.dump(2) + "\n");
 }

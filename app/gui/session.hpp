@@ -19,6 +19,8 @@ struct Session {
   bool wireframe = false;
   bool fold_lines_3d = true;
   bool ground = true;
+  int ui_scale_percent = 100;
+  bool light_theme = false;
 };
 
 // $XDG_CONFIG_HOME/foldlab, else $HOME/.config/foldlab (created on demand by the savers).

@@ -31,6 +31,9 @@ class Surface {
   virtual void keep_open() {}
   // Polls input and starts ImGui's platform frame: display size, time step, mouse, keys.
   virtual void new_frame() = 0;
+  // Sleeps until an input event arrives or `timeout_s` passes (a window); returns at once
+  // headless, where nothing arrives.
+  virtual void wait_events(double timeout_s) = 0;
   virtual FrameSize framebuffer_size() const = 0;
   // Asks for a new size (input playback); a window may take a frame or two to follow.
   virtual void resize(FrameSize size) = 0;

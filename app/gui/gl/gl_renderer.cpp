@@ -28,9 +28,17 @@ class GlRenderer final : public Renderer {
   GlRenderer& operator=(const GlRenderer&) = delete;
 
   void new_frame() override {
+    // The backend creates the atlas's texture at its first frame; later atlases replace it.
     ImGui_ImplOpenGL3_NewFrame();
+    if (fonts_changed_) {
+      ImGui_ImplOpenGL3_DestroyFontsTexture();
+      ImGui_ImplOpenGL3_CreateFontsTexture();
+      fonts_changed_ = false;
+    }
     begin_fast_fill_frame();
   }
+
+  void fonts_changed() override { fonts_changed_ = true; }
 
   void fill_window_background() override { fill_current_window_background(); }
 
@@ -104,6 +112,7 @@ class GlRenderer final : public Renderer {
 
  private:
   std::unique_ptr<ClothRenderer> cloth_;
+  bool fonts_changed_ = false;
   RenderCounters no_counters_;
   std::vector<GLuint> textures_;
   std::vector<FrameSize> sizes_;

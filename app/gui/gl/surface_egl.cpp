@@ -93,6 +93,7 @@ class HeadlessSurface final : public Surface {
         ImVec2(static_cast<float>(size_.width), static_cast<float>(size_.height));
   }
   void bind_framebuffer() override { glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_); }
+  void wait_events(double) override {}
   void present() override {}
   void finish() override { glFinish(); }
 

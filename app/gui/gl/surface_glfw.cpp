@@ -56,6 +56,8 @@ class WindowSurface final : public Surface {
     ImGui_ImplGlfw_NewFrame();
   }
 
+  void wait_events(double timeout_s) override { glfwWaitEventsTimeout(timeout_s); }
+
   FrameSize framebuffer_size() const override {
     FrameSize size;
     glfwGetFramebufferSize(window_, &size.width, &size.height);

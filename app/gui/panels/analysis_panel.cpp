@@ -91,13 +91,13 @@ void EquationsTab::draw(Document& document) {
   const double an = s.a_mm.back();
   section("eq. 8: the upper edge keeps its length L");
   const double A = std::hypot(an, s.z_max_mm);
-  ImGui::Text("A = sqrt(a_n² + z_max²) = sqrt(%.2f² + %.2f²) = %.2f mm", an, s.z_max_mm, A);
-  ImGui::Text("L' = (2l/pi) sqrt(1+k²) E(k²/(1+k²)), k = pi A/l = %.4f",
+  ImGui::Text("A = √(a_n² + z_max²) = √(%.2f² + %.2f²) = %.2f mm", an, s.z_max_mm, A);
+  ImGui::Text("L′ = (2l/π) √(1+k²) E(k²/(1+k²)), k = π A/l = %.4f",
               std::numbers::pi * A / s.span_mm);
   ImGui::Text("   = %.3f mm  vs  L = %.1f mm  (residual %.2e)",
               upper_edge_length_closed_form(A, s.span_mm), p.hanging.length_mm, s.residual_length);
   section("eq. 9: the centre fibre keeps its length h");
-  ImGui::Text("h' = sum of sqrt((a_i-1 - a_i)² + (2 z_max)²), i = 1..%d", s.n);
+  ImGui::Text("h′ = Σ √((a_i-1 − a_i)² + (2 z_max)²), i = 1…%d", s.n);
   ImGui::Text("   = %.3f mm  vs  h = %.1f mm  (residual %.2e)",
               fibre_length(a0, s.Q, s.n, s.z_max_mm), p.hanging.height_mm, s.residual_height);
   section("eq. 10: the number of wrinkles");

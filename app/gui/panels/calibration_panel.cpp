@@ -297,7 +297,7 @@ bool CalibrationPanel::apply_section(Parameters& edited) {
   }
   if (ImGui::IsItemHovered()) {
     ImGui::SetTooltip(
-        "Sets c = K (1 - nu²) at the current nu, and p. Save a preset to keep them.\nThe "
+        "Sets c = K (1 − ν²) at the current ν, and p. Save a preset to keep them.\nThe "
         "paper's form is p = 1, c = 26.9.");
   }
   return changed;
@@ -307,7 +307,7 @@ void CalibrationPanel::results_section() {
   const CalibrationReport& r = *report_;
   const FittedConstants& f = r.fitted;
   section("Result");
-  ImGui::Text("Fitted (%s, %s method): K = %.4g, p = %.4g   (c = %.4g at nu = %.3g)",
+  ImGui::Text("Fitted (%s, %s method): K = %.4g, p = %.4g   (c = %.4g at ν = %.3g)",
               std::string(to_string(r.fit)).c_str(),
               std::string(to_string(r.base.model.method)).c_str(), f.K, f.p,
               with_constants(r.base, f.K, f.p).model.load_constant_c, r.base.fabric.poisson_ratio);

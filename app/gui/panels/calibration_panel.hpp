@@ -34,6 +34,8 @@ class CalibrationPanel {
   // (as c at their Poisson ratio) and p into them and returns true, so that the explorer commits
   // them as it does a slider. `loaded` is the preset as loaded, whose constants are shown.
   bool draw(Parameters& edited, const Preset& loaded, Renderer& renderer);
+  // From the start of a run until the window has taken its result.
+  bool running() const { return worker_.joinable(); }
 
  private:
   void load_data();

@@ -23,6 +23,8 @@ class ClothViewPanel {
   // A view setting by name (print=checks, breeze=1, breeze_mm=80, time=1.5, z=8, wireframe=1,
   // fold_lines=0, ground=0): for scripted pictures. Returns the problem, if any.
   std::optional<std::string> set_view(std::string_view key, std::string_view value);
+  // True while the breeze plays: every frame shows a new instant.
+  bool animating() const { return style_.breeze && breeze_playing_; }
 
  private:
   void settings_row();

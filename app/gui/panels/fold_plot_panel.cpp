@@ -6,16 +6,11 @@
 
 #include <imgui.h>
 
+#include "app/gui/appearance.hpp"
 #include "app/gui/panels/widgets.hpp"
 #include "core/geometry/geometry.hpp"
 
 namespace foldlab::gui {
-namespace {
-
-constexpr ImU32 kPositiveFold = IM_COL32(31, 58, 147, 255);
-constexpr ImU32 kNegativeFold = IM_COL32(214, 39, 40, 255);
-
-}  // namespace
 
 void FoldPlotPanel::draw(Document& document, Renderer& renderer) {
   place_window(0.30f, 0.0f, 0.35f, 0.56f);
@@ -53,10 +48,13 @@ void FoldPlotPanel::draw(Document& document, Renderer& renderer) {
       plot_.request_autoscale();
       autoscale_ = false;
     }
+    const FoldColours colours = fold_colours(style_is_light());
+    const ImU32 positive_colour = ImGui::ColorConvertFloat4ToU32(colours.positive);
+    const ImU32 negative_colour = ImGui::ColorConvertFloat4ToU32(colours.negative);
     for (std::size_t k = 0; k < lines.lines.size(); ++k) {
       const bool negative = lines.lines[k].sign < 0;
       plot_.line(negative ? "negative fold" : "positive fold", xs_[k], ys_[k],
-                 negative ? kNegativeFold : kPositiveFold, 1.6f);
+                 negative ? negative_colour : positive_colour, 1.6f);
     }
     if (lines.lines.empty()) {
       // No folds (no slack, short cloth): show the cloth itself, y = (A + h) cos(pi x / l).
@@ -72,7 +70,7 @@ void FoldPlotPanel::draw(Document& document, Renderer& renderer) {
         }
       }
       plot_.line("lower edge of the flat cloth", outline_xs_, outline_ys_,
-                 IM_COL32(170, 170, 180, 255), 1.2f);
+                 ImGui::GetColorU32(ImGuiCol_TextDisabled), 1.2f);
     }
     std::vector<double> supports_x;
     std::vector<double> supports_y;

@@ -5,6 +5,8 @@
 
 #include <imgui.h>
 
+#include "app/gui/appearance.hpp"
+
 #include "app/gui/panels/widgets.hpp"
 #include "core/model/equations.hpp"
 #include "core/model/text_format.hpp"
@@ -73,9 +75,9 @@ void ResultsPanel::draw(Document& document, Renderer& renderer) {
           ImGui::Text("%.2f", s.a_mm[static_cast<std::size_t>(i)]);
           ImGui::TableSetColumnIndex(2);
           const bool negative = fold_sign(i) < 0;
-          ImGui::TextColored(
-              negative ? ImVec4(0.95f, 0.35f, 0.35f, 1.0f) : ImVec4(0.45f, 0.6f, 1.0f, 1.0f),
-              negative ? "negative" : "positive");
+          const FoldColours colours = fold_colours(style_is_light());
+          ImGui::TextColored(negative ? colours.negative : colours.positive,
+                             negative ? "negative" : "positive");
         }
       }
       ImGui::EndTable();

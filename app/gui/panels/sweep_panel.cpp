@@ -19,14 +19,19 @@ constexpr ImU32 kCurrentColour = IM_COL32(240, 220, 90, 200);
 
 SweepPanel::SweepPanel(std::filesystem::path presets_dir) : presets_dir_(std::move(presets_dir)) {}
 
-void SweepPanel::load_overlay(const std::string& prefix, const std::string& label) {
-  overlay_label_ = label;
-  overlay_key_ = key_;
+void SweepPanel::clear_overlay() {
+  overlay_label_.clear();
   overlay_x_.clear();
   overlay_n_.clear();
   overlay_Q_.clear();
   overlay_z_.clear();
   overlay_Q_x_.clear();
+}
+
+void SweepPanel::load_overlay(const std::string& prefix, const std::string& label) {
+  clear_overlay();
+  overlay_label_ = label;
+  overlay_key_ = key_;
   for (const auto& file : app::preset_files(presets_dir_)) {
     if (file.filename().string().rfind(prefix, 0) != 0) {
       continue;
@@ -104,15 +109,20 @@ void SweepPanel::select_paper_case(int which, Document& document) {
   to_ = c.to;
   logarithmic_ = c.log;
   load_overlay(c.prefix, std::string("paper, ") + kPaperCaseButtons[which]);
+  overlay_load_ = document.loads();
   n_plot_.request_autoscale();
 }
 
 void SweepPanel::draw(Document& document) {
   const Parameters& current = document.scene().parameters();
+  // The paper's points describe the case they came with, not whatever is loaded next.
+  if (!overlay_label_.empty() && document.loads() != overlay_load_) {
+    clear_overlay();
+  }
   if (key_combo("input", key_)) {
     logarithmic_ = natural_log_scale(key_);
     default_range(key_, get_number(current, key_), from_, to_);
-    overlay_label_.clear();
+    clear_overlay();
   }
   ImGui::SameLine();
   range_inputs("range", from_, to_);

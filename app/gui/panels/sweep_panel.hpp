@@ -2,6 +2,7 @@
 // computes nothing while its tab is hidden, and again only when the inputs or the axis change.
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -42,7 +43,10 @@ class SweepPanel {
   SweepAxis computed_axis_;
   bool computed_ = false;
   std::vector<double> xs_, n_, Q_, z_;
+  void clear_overlay();
+
   std::string overlay_label_;
+  std::uint64_t overlay_load_ = 0;  // Document::loads() when the overlay's case was loaded
   std::string overlay_key_;
   std::vector<double> overlay_x_, overlay_n_, overlay_Q_, overlay_z_;
   std::vector<double> overlay_Q_x_;  // rows without a printed Q are left out of the Q plot

@@ -1,0 +1,147 @@
+#include "app/gui/appearance.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <system_error>
+
+namespace foldlab::gui {
+namespace {
+
+double linear(double srgb) {
+  return srgb <= 0.04045 ? srgb / 12.92 : std::pow((srgb + 0.055) / 1.055, 2.4);
+}
+
+// The style as a theme draws it, before scaling.
+ImGuiStyle theme_style(bool light_theme) {
+  ImGuiStyle style;
+  if (light_theme) {
+    ImGui::StyleColorsLight(&style);
+  } else {
+    ImGui::StyleColorsDark(&style);
+  }
+  // Square, opaque panels whose backgrounds the renderer fills: ImGui draws none of its own.
+  style.WindowRounding = 0.0f;
+  style.Colors[ImGuiCol_WindowBg].w = 0.0f;
+  return style;
+}
+
+// Latin-1 for text and units (², ³, ×, °), Greek for the paper's symbols, and the punctuation,
+// arrows and operators the equations use (′, −, …, ↦, ≥, √, Σ).
+const ImWchar kGlyphRanges[] = {
+    0x0020, 0x00FF,  // Basic Latin, Latin-1 Supplement
+    0x0370, 0x03FF,  // Greek
+    0x2010, 0x205E,  // general punctuation: dashes, primes, ellipsis
+    0x2190, 0x21FF,  // arrows
+    0x2200, 0x22FF,  // mathematical operators
+    0,
+};
+
+constexpr float kTtfSizePx = 15.0f;
+constexpr float kDefaultFontSizePx = 13.0f;  // ImGui's built-in ProggyClean
+
+}  // namespace
+
+double relative_luminance(double r, double g, double b) {
+  return 0.2126 * linear(r) + 0.7152 * linear(g) + 0.0722 * linear(b);
+}
+
+double contrast_ratio(ImVec4 a, ImVec4 b) {
+  const double la = relative_luminance(a.x, a.y, a.z);
+  const double lb = relative_luminance(b.x, b.y, b.z);
+  return (std::max(la, lb) + 0.05) / (std::min(la, lb) + 0.05);
+}
+
+ImVec4 blend_over(ImVec4 over, ImVec4 under) {
+  const float a = over.w;
+  return ImVec4(over.x * a + under.x * (1 - a), over.y * a + under.y * (1 - a),
+                over.z * a + under.z * (1 - a), 1.0f);
+}
+
+int clamp_ui_scale(int percent) {
+  return std::clamp(percent, kMinUiScalePercent, kMaxUiScalePercent);
+}
+
+FoldColours fold_colours(bool light_theme) {
+  if (light_theme) {
+    return {ImVec4(0.10f, 0.25f, 0.65f, 1.0f), ImVec4(0.75f, 0.10f, 0.10f, 1.0f)};
+  }
+  return {ImVec4(0.55f, 0.75f, 1.00f, 1.0f), ImVec4(1.00f, 0.55f, 0.50f, 1.0f)};
+}
+
+bool style_is_light() {
+  const ImVec4 bg = ImGui::GetStyle().Colors[ImGuiCol_WindowBg];
+  return relative_luminance(bg.x, bg.y, bg.z) > 0.5;
+}
+
+ImVec4 plot_background(bool light_theme) {
+  const ImGuiStyle style = theme_style(light_theme);
+  ImVec4 window = style.Colors[ImGuiCol_WindowBg];
+  window.w = 1.0f;  // the renderer fills it opaque
+  return blend_over(style.Colors[ImGuiCol_FrameBg], window);
+}
+
+void Appearance::request(int scale_percent, bool light_theme) {
+  scale_percent_ = clamp_ui_scale(scale_percent);
+  light_theme_ = light_theme;
+}
+
+void Appearance::apply(Renderer& renderer) {
+  if (applied_ && applied_scale_percent_ == scale_percent_ &&
+      applied_light_theme_ == light_theme_) {
+    return;
+  }
+  const float scale = static_cast<float>(scale_percent_) / 100.0f;
+  ImGuiIO& io = ImGui::GetIO();
+  io.Fonts->Clear();
+  ImFont* font = nullptr;
+  notice_.clear();
+  if (!font_file_.empty()) {
+    std::error_code ec;
+    if (std::filesystem::is_regular_file(font_file_, ec)) {
+      font = io.Fonts->AddFontFromFileTTF(font_file_.string().c_str(),
+                                          std::round(kTtfSizePx * scale), nullptr, kGlyphRanges);
+    }
+    if (font == nullptr) {
+      notice_ = "The font " + font_file_.string() +
+                " is missing (Debian package fonts-dejavu-core): Greek letters show as '?'.";
+    }
+  }
+  if (font == nullptr) {
+    // ProggyClean is a bitmap font: whole multiples stay sharp, others are still better than
+    // FontGlobalScale's stretched texture.
+    ImFontConfig config;
+    config.SizePixels = std::round(kDefaultFontSizePx * scale);
+    io.Fonts->AddFontDefault(&config);
+  }
+  io.Fonts->Build();
+  io.FontGlobalScale = 1.0f;
+  ImGuiStyle style = theme_style(light_theme_);
+  style.ScaleAllSizes(scale);
+  ImGui::GetStyle() = style;
+  renderer.fonts_changed();
+  applied_ = true;
+  applied_scale_percent_ = scale_percent_;
+  applied_light_theme_ = light_theme_;
+}
+
+void Appearance::handle_shortcuts() {
+  const ImGuiIO& io = ImGui::GetIO();
+  if (!io.KeyCtrl) {
+    return;
+  }
+  // The window's key codes are GLFW's: printable keys are their ASCII codes, the keypad's are
+  // 320 + digit, 333 (minus) and 334 (plus).
+  constexpr int kKeypad0 = 320;
+  constexpr int kKeypadMinus = 333;
+  constexpr int kKeypadPlus = 334;
+  const auto pressed = [](int key) { return ImGui::IsKeyPressed(key, false); };
+  if (pressed('=') || pressed(kKeypadPlus)) {
+    request(scale_percent_ + kUiScaleStepPercent, light_theme_);
+  } else if (pressed('-') || pressed(kKeypadMinus)) {
+    request(scale_percent_ - kUiScaleStepPercent, light_theme_);
+  } else if (pressed('0') || pressed(kKeypad0)) {
+    request(kMinUiScalePercent, light_theme_);
+  }
+}
+
+}  // namespace foldlab::gui

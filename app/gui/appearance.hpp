@@ -1,0 +1,70 @@
+// How the explorer looks: the font (a TTF with Greek, so that ν, σ, π and Σ read as in the paper),
+// the UI scale and the dark or light theme, and the colours whose contrast against their
+// background must stay readable on a projector in either theme.
+#pragma once
+
+#include <filesystem>
+#include <string>
+
+#include <imgui.h>
+
+#include "app/gui/renderer.hpp"
+
+namespace foldlab::gui {
+
+// WCAG 2 relative luminance of an sRGB colour (components in [0, 1]) and the contrast ratio of
+// two colours, (L_lighter + 0.05) / (L_darker + 0.05): 1 for equal colours, 21 for black on white.
+double relative_luminance(double r, double g, double b);
+double contrast_ratio(ImVec4 a, ImVec4 b);
+// `over` composited onto an opaque `under` with over's alpha: what a translucent fill looks like.
+ImVec4 blend_over(ImVec4 over, ImVec4 under);
+
+// The debian fonts-dejavu-core font the window uses.
+inline const std::filesystem::path kDejaVuSans = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
+
+inline constexpr int kMinUiScalePercent = 100;
+inline constexpr int kMaxUiScalePercent = 250;
+inline constexpr int kUiScaleStepPercent = 10;
+int clamp_ui_scale(int percent);
+
+// The fold colours of the 2D plot and the results for a theme: each has at least 4.5:1 contrast
+// against the plot's background in that theme.
+struct FoldColours {
+  ImVec4 positive;
+  ImVec4 negative;
+};
+FoldColours fold_colours(bool light_theme);
+// Whether the current ImGui style is a light one (by its window background's luminance).
+bool style_is_light();
+// The plot area's background as drawn: the theme's frame fill over its window background.
+ImVec4 plot_background(bool light_theme);
+
+// Builds the font atlas and the style for a scale and theme. Call outside a frame (between
+// ImGui::Render and ImGui::NewFrame); the renderer re-uploads the atlas.
+class Appearance {
+ public:
+  // `font_file` empty: ImGui's built-in font, with no notice (unit tests).
+  explicit Appearance(std::filesystem::path font_file) : font_file_(std::move(font_file)) {}
+
+  int scale_percent() const { return scale_percent_; }
+  bool light_theme() const { return light_theme_; }
+  // Takes effect at the next apply(); the scale is clamped to 100-250 %.
+  void request(int scale_percent, bool light_theme);
+  // Rebuilds the fonts and the style if a request changed them (or on the first call).
+  void apply(Renderer& renderer);
+  // Ctrl + / Ctrl - / Ctrl 0 within a frame: requests the new scale.
+  void handle_shortcuts();
+  // Why the TTF was not used (empty when it was, or when none was asked for).
+  const std::string& notice() const { return notice_; }
+
+ private:
+  std::filesystem::path font_file_;
+  int scale_percent_ = kMinUiScalePercent;
+  bool light_theme_ = false;
+  bool applied_ = false;
+  int applied_scale_percent_ = 0;
+  bool applied_light_theme_ = false;
+  std::string notice_;
+};
+
+}  // namespace foldlab::gui
