@@ -1,5 +1,6 @@
 #include "app/gui/document.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <utility>
 
@@ -66,6 +67,12 @@ bool Document::unsaved() const {
 void Document::notify(std::string message, bool is_error) {
   message_ = std::move(message);
   message_is_error_ = is_error;
+}
+
+void Document::add_notice(const std::string& notice) {
+  if (std::find(notices_.begin(), notices_.end(), notice) == notices_.end()) {
+    notices_.push_back(notice);
+  }
 }
 
 }  // namespace foldlab::gui

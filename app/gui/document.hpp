@@ -49,6 +49,10 @@ class Document {
   void notify(std::string message, bool is_error);
   const std::string& message() const { return message_; }
   bool message_is_error() const { return message_is_error_; }
+  // Lines shown in the Presets panel until the explorer closes, and listed by `gui --report`:
+  // config files that were not used, values brought into range. Repeats are kept once.
+  void add_notice(const std::string& notice);
+  const std::vector<std::string>& notices() const { return notices_; }
 
   // Set by every accepted change; the explorer saves the session and clears it.
   bool session_dirty = false;
@@ -62,6 +66,7 @@ class Document {
   std::uint64_t loads_ = 0;
   std::string message_;
   bool message_is_error_ = false;
+  std::vector<std::string> notices_;
 };
 
 }  // namespace foldlab::gui

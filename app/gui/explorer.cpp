@@ -31,9 +31,15 @@ Explorer::Explorer(const Preset& initial, const std::string& initial_path, bool 
       style.fold_lines = s->fold_lines_3d;
       style.ground = s->ground;
       session_message_ = "Restored the last session.";
+      for (const std::string& notice : s->notices) {
+        document_.add_notice(notice);
+      }
     } else if (!error.empty()) {
-      session_message_ = error;
+      document_.add_notice(error);  // present but unusable: say why the defaults are shown
     }
+  }
+  for (const std::string& notice : presets_.notices()) {
+    document_.add_notice(notice);
   }
   document_.session_dirty = false;
 }

@@ -95,12 +95,21 @@ int run(Surface& surface, const GuiRunOptions& options, bool interactive) {
   ExplorerOptions explorer_options{app::find_presets_dir(), user_presets_dir(),
                                    persist ? config_dir() / "session.json" : "",
                                    options.analysis_tab};
-  ImGuiContextGuard imgui(surface, persist ? (config_dir() / "imgui.ini").string() : "");
+  const std::filesystem::path ini_path = config_dir() / "imgui.ini";
+  ImGuiContextGuard imgui(surface, persist ? ini_path.string() : "");
   const std::unique_ptr<Renderer> renderer = make_gl_renderer();
   // A preset named on the command line wins over the restored session.
   const bool restore =
       persist && options.inputs.preset_path.empty() && options.inputs.assignments.empty();
   Explorer explorer(preset, options.inputs.preset_path, restore, explorer_options, *renderer);
+  if (persist) {
+    if (const std::optional<std::string> too_large = oversized_file(ini_path, kMaxImguiIniBytes)) {
+      // Loading settings from memory marks them loaded, so the first frame reads no file; the
+      // default layout is saved over the oversized one on exit.
+      ImGui::LoadIniSettingsFromMemory("", 0);
+      explorer.add_notice("The window layout " + *too_large + "; using the default layout.");
+    }
+  }
   apply_view_settings(explorer, options.view_settings);
 
   ScriptedRun script(options.frames, std::move(animation));

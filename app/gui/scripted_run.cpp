@@ -127,6 +127,7 @@ void FrameTimes::print_report(const char* backend, const std::string& animate_ke
        {{"mesh_uploads", counters.mesh_uploads},
         {"fold_line_uploads", counters.fold_line_uploads},
         {"frames", counters.frames}}},
+      {"notices", explorer.notices()},
   };
   std::cout << report.dump(2) << "\n";
 }
