@@ -46,11 +46,24 @@ std::optional<Session> load_session(const std::filesystem::path& path, std::stri
     error = "the saved session " + *too_large + "; starting from the default preset";
     return std::nullopt;
   }
+  std::string text;
   try {
-    const nlohmann::json j = parse_json(read_text_file(path), path.string());
+    text = read_text_file(path);
+  } catch (const ReadError& e) {
+    error = "the saved session " + path.string() + " cannot be opened (" + e.what() +
+            "); starting from the default preset";
+    return std::nullopt;
+  }
+  return session_from_text(text, path.string(), error);
+}
+
+std::optional<Session> session_from_text(const std::string& text, const std::string& origin,
+                                         std::string& error) {
+  try {
+    const nlohmann::json j = parse_json(text, origin);
     Session s;
-    s.current = preset_from_json(j.at("current"), path.string() + " (current)");
-    s.loaded = preset_from_json(j.at("loaded"), path.string() + " (loaded)");
+    s.current = preset_from_json(j.at("current"), origin + " (current)");
+    s.loaded = preset_from_json(j.at("loaded"), origin + " (loaded)");
     s.loaded_preset_path = j.value("loaded_preset_path", "");
     const nlohmann::json& view = j.at("view");
     // Read as a double: a huge stored number must be clamped, not converted to int first.
@@ -70,7 +83,7 @@ std::optional<Session> load_session(const std::filesystem::path& path, std::stri
     s.ground = view.value("ground", s.ground);
     return s;
   } catch (const std::exception& e) {
-    error = "the saved session " + path.string() + " could not be read (" + e.what() +
+    error = "the saved session " + origin + " could not be read (" + e.what() +
             "); starting from the default preset";
     return std::nullopt;
   }

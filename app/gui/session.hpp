@@ -49,6 +49,9 @@ std::filesystem::path user_presets_dir();
 // Reads a session file; nullopt when it is absent (`error` empty) or unusable (`error` says why;
 // the caller starts from the default preset and shows it).
 std::optional<Session> load_session(const std::filesystem::path& path, std::string& error);
+// The same from the file's text; `origin` names it in `error`.
+std::optional<Session> session_from_text(const std::string& text, const std::string& origin,
+                                         std::string& error);
 // Atomic write (see write_file_atomically); throws WriteError.
 void save_session(const std::filesystem::path& path, const Session& session);
 
