@@ -301,6 +301,25 @@ TEST_F(GuiConfigTest, OversizedConfigFilesAreNotReadAndSaySo) {
   EXPECT_LT(fs::file_size(config() / "imgui.ini"), 256u * 1024u);
 }
 
+TEST_F(GuiConfigTest, AnUnusableConfigFolderCostsTheSessionNotTheStart) {
+  if (!have_xvfb()) {
+    GTEST_SKIP() << "xvfb-run is not installed (scripts/install-deps.sh installs it)";
+  }
+  // A symlink loop at session.json: the defaults, and the reason.
+  fs::create_directories(config());
+  fs::create_symlink("loop.json", config() / "session.json");
+  fs::create_symlink("session.json", config() / "loop.json");
+  const nlohmann::json looped = second_run();
+  EXPECT_NE(notices_text(looped).find("session.json cannot be opened"), std::string::npos)
+      << notices_text(looped);
+  // The config folder is a plain file: "internal error", exit 1, before.
+  fs::remove_all(config());
+  write(config(), "not a folder");
+  const nlohmann::json plain = second_run();
+  EXPECT_NE(notices_text(plain).find("cannot be used"), std::string::npos) << notices_text(plain);
+  EXPECT_EQ(plain.at("solution").at("inputs").at("height_mm").get<double>(), 1400.0);
+}
+
 }  // namespace
 
 // A config folder left in a bad state must not stop the explorer with a crash or an "internal
@@ -333,12 +352,13 @@ TEST_F(GuiTest, AConfigFolderThatIsAFileIsNamedNotAnInternalError) {
   }
   fs::create_directories(dir_ / "config");
   std::ofstream(dir_ / "config" / "foldlab") << "a file where the config folder belongs\n";
-  const RunResult r = run_in_xvfb(dir_, environment(), {"--frames", "2"});
-  EXPECT_EQ(r.exit_status, 1);
-  EXPECT_NE(r.err.find("the config folder " + (dir_ / "config" / "foldlab").string() +
-                       " cannot be created (Not a directory)"),
+  // The explorer starts from the defaults without a session, and its notices name the folder.
+  const RunResult r = run_in_xvfb(dir_, environment(), {"--frames", "2", "--report"});
+  EXPECT_EQ(r.exit_status, 0) << r.err;
+  EXPECT_NE(r.out.find("The config folder " + (dir_ / "config" / "foldlab").string() +
+                       " cannot be used (Not a directory)"),
             std::string::npos)
-      << r.err;
+      << r.out;
   EXPECT_EQ(r.err.find("internal error"), std::string::npos) << r.err;
   // --fresh needs no config folder at all.
   EXPECT_EQ(run_in_xvfb(dir_, environment(), {"--frames", "2", "--fresh"}).exit_status, 0);
