@@ -47,9 +47,11 @@ if [ "$build_step" = 1 ]; then
   if [ -f "$build/CMakeCache.txt" ] && ! grep -qx "CMAKE_CXX_COMPILER:[A-Z]*=$clang" "$build/CMakeCache.txt"; then
     rm -rf "$build"
   fi
-  generator=()
-  command -v ninja >/dev/null && generator=(-G Ninja)
-  cmake -S "$root/tests/fuzz" -B "$build" "${generator[@]}" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+  cmake_args=()
+  command -v ninja >/dev/null && cmake_args=(-G Ninja)
+  # The fuzzers compile the loaders afresh with clang: ccache, when present, makes reruns quick.
+  command -v ccache >/dev/null && cmake_args+=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
+  cmake -S "$root/tests/fuzz" -B "$build" "${cmake_args[@]}" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
     -DCMAKE_CXX_COMPILER="$clang" -DFOLDLAB_GENERATED_DIR="$generated" >/dev/null
   cmake --build "$build" >/dev/null
 fi
