@@ -396,6 +396,19 @@ TEST_F(CliTest, ExportStatsRunOnlyTheStagesItsOutputsNeed) {
   EXPECT_EQ(b.at("normals").at("evaluations").get<int>(), 1);
 }
 
+TEST_F(CliTest, QuadratureSettingsThatWouldRunForHoursAreRefusedWithTheirRanges) {
+  // A million intervals times a million iterations at a tolerance below rounding ran for hours.
+  const RunResult r = run({"solve", "--set", "simpson_intervals=1000000", "--set",
+                           "max_iterations=1000000", "--set", "length_tolerance=1e-300"});
+  EXPECT_EQ(r.exit_status, 2);
+  for (const char* range : {"simpson_intervals = 1e+06 must be in [2, 10000]",
+                            "max_iterations = 1e+06 must be in [1, 1000]",
+                            "length_tolerance = 1e-300 must be in [1e-12, 0.5]"}) {
+    EXPECT_TRUE(contains(r.err, range)) << range << "\n" << r.err;
+  }
+  EXPECT_TRUE(r.out.empty()) << r.out;
+}
+
 TEST_F(CliTest, ExportRefusesAGridAboveTheVertexBudget) {
   // 4096 x 4096 peaked at 8.5 GB; the limit is 1024 x 1024 = 1048576 vertices.
   const fs::path obj = dir_ / "big.obj";
