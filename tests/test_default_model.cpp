@@ -420,7 +420,7 @@ TEST_F(DefaultModelCli, MeasureGetsNAndQBackFromAPhotoOfKnownFolds) {
       }
     }
   };
-  const FoldLines lines = fold_lines(s, 401);
+  const FoldLines lines = fold_lines(s, preset.parameters, 401);
   ASSERT_EQ(lines.lines.size(), static_cast<std::size_t>(s.n + 1));
   for (const FoldLine& line : lines.lines) {
     for (std::size_t k = 0; k + 1 < line.points_mm.size(); ++k) {
