@@ -667,6 +667,22 @@ TEST_F(CalibrationCli, KAndPPlateauIsWhereTheSolverGivesTheReportedScore) {
   }
 }
 
+TEST_F(CalibrationCli, MoreRowsThanTheLimitAreRefusedUpFront) {
+  // Each row costs about half a second of fitting; 501 rows ran for minutes before.
+  const fs::path many = dir_ / "many.csv";
+  {
+    std::ofstream out(many);
+    out << "name,t_mm,E_MPa,w_N_per_mm2,h_mm,L_mm,d_mm,n\n";
+    for (int i = 0; i < 501; ++i) {
+      out << "row " << i << ",0.25,165,1.5e-6," << 900 + i << ",1400,100,5\n";
+    }
+  }
+  const testing::RunResult r = run({"calibrate", "--data", many.string()});
+  EXPECT_EQ(r.exit_status, 2);
+  EXPECT_TRUE(contains(r.err, "501 rows, above the limit of 500")) << r.err;
+  EXPECT_TRUE(r.out.empty()) << r.out.substr(0, 200);
+}
+
 TEST_F(CalibrationCli, MalformedDataIsInvalidInputNamingRowAndColumn) {
   const fs::path bad = dir_ / "bad.csv";
   std::ofstream(bad) << "name,t_mm,E_MPa,w_N_per_mm2,h_mm,L_mm,d_mm,n\n"

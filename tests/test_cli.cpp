@@ -396,6 +396,86 @@ TEST_F(CliTest, ExportStatsRunOnlyTheStagesItsOutputsNeed) {
   EXPECT_EQ(b.at("normals").at("evaluations").get<int>(), 1);
 }
 
+TEST_F(CliTest, QuadratureSettingsThatWouldRunForHoursAreRefusedWithTheirRanges) {
+  // A million intervals times a million iterations at a tolerance below rounding ran for hours.
+  const RunResult r = run({"solve", "--set", "simpson_intervals=1000000", "--set",
+                           "max_iterations=1000000", "--set", "length_tolerance=1e-300"});
+  EXPECT_EQ(r.exit_status, 2);
+  for (const char* range : {"simpson_intervals = 1e+06 must be in [2, 10000]",
+                            "max_iterations = 1e+06 must be in [1, 1000]",
+                            "length_tolerance = 1e-300 must be in [1e-12, 0.5]"}) {
+    EXPECT_TRUE(contains(r.err, range)) << range << "\n" << r.err;
+  }
+  EXPECT_TRUE(r.out.empty()) << r.out;
+}
+
+TEST_F(CliTest, ExportRefusesAGridAboveTheVertexBudget) {
+  // 4096 x 4096 peaked at 8.5 GB; the limit is 1024 x 1024 = 1048576 vertices.
+  const fs::path obj = dir_ / "big.obj";
+  for (const char* grid : {"4096x4096", "1025x1024"}) {
+    SCOPED_TRACE(grid);
+    const RunResult r = run({"export", "--obj", obj.string(), "--grid", grid});
+    EXPECT_EQ(r.exit_status, 2);
+    EXPECT_TRUE(contains(r.err, "limit of 1048576")) << r.err;
+    EXPECT_FALSE(fs::exists(obj));
+  }
+  // The fold lines alone build no grid, so the grid's size does not matter to them.
+  const fs::path csv = dir_ / "lines.csv";
+  const RunResult lines = run({"export", "--csv", csv.string(), "--grid", "4096x4096"});
+  EXPECT_EQ(lines.exit_status, 0) << lines.err;
+  EXPECT_TRUE(fs::exists(csv));
+}
+
+TEST_F(CliTest, ExportRefusesFoldLinesAboveThePointBudget) {
+  // n is capped at 10^7 folds, of which about 1000 lines are drawn: 100000 samples a line make
+  // about 10^8 points (10.8 GB and 195 s before), far above the limit of 4000000.
+  const fs::path csv = dir_ / "lines.csv";
+  const RunResult r = run({"export", "--set", "t=1e-3", "--set", "E=1e-3", "--set", "w=1e-2",
+                           "--samples", "100000", "--csv", csv.string()});
+  EXPECT_EQ(r.exit_status, 2);
+  EXPECT_TRUE(contains(r.err, "limit of 4000000")) << r.err;
+  EXPECT_FALSE(fs::exists(csv));
+}
+
+TEST_F(CliTest, SweepRefusesEndsThatCannotDescribeACloth) {
+  // These printed rows of inf (or ran) and exited 0.
+  const std::vector<std::vector<std::string>> attacks = {
+      {"--param", "w", "--from", "1e-320", "--to", "0.01", "--steps", "2000", "--log"},
+      {"--param", "t", "--from", "1e-308", "--to", "1", "--log"},
+      {"--param", "K", "--from", "1e-300", "--to", "1e300"},
+      {"--param", "h", "--from", "900", "--to", "2350", "--steps", "100000"},
+  };
+  for (std::vector<std::string> args : attacks) {
+    SCOPED_TRACE(args[1] + " from " + args[3]);
+    args.insert(args.begin(), "sweep");
+    args.push_back("--csv");
+    const RunResult r = run(args);
+    EXPECT_EQ(r.exit_status, 2);
+    EXPECT_TRUE(r.out.empty()) << r.out.substr(0, 200);
+    EXPECT_TRUE(contains(r.err, "must be in") || contains(r.err, "subnormal")) << r.err;
+  }
+}
+
+TEST_F(CliTest, StressSeedMustBeAnUnsigned64BitNumber) {
+  // -1 and 2^64 both became 2^64 - 1.
+  for (const char* seed : {"-1", "18446744073709551616", "1.5", "", "0x10"}) {
+    SCOPED_TRACE(seed);
+    const RunResult r = run({"stress", "--samples", "1", "--seed", seed});
+    EXPECT_EQ(r.exit_status, 2);
+    EXPECT_TRUE(contains(r.err, "--seed")) << r.err;
+  }
+  const RunResult largest =
+      run({"stress", "--samples", "1", "--json", "--seed", "18446744073709551615"});
+  ASSERT_EQ(largest.exit_status, 0) << largest.err;
+  EXPECT_EQ(json::parse(largest.out).at("seed").get<std::uint64_t>(), UINT64_MAX);
+}
+
+TEST_F(CliTest, BenchRefusesMoreSolvesThanItsBudget) {
+  const RunResult r = run({"bench", "--cases", "1000000", "--repeats", "1000"});
+  EXPECT_EQ(r.exit_status, 2);
+  EXPECT_TRUE(contains(r.err, "[1, 10000000]")) << r.err;
+}
+
 TEST_F(CliTest, SweepPrintsOneRowPerStepAsCsv) {
   const RunResult r =
       run({"sweep", "--param", "h", "--from", "900", "--to", "2350", "--steps", "4", "--csv"});

@@ -57,6 +57,26 @@ TEST(FoldLines, ManyFoldsAreThinnedForDrawingOnly) {
   EXPECT_EQ(s.a_mm.size(), static_cast<std::size_t>(s.n) + 1);  // the solution keeps every fold
 }
 
+TEST(FoldLines, PointCountMatchesTheLinesBuilt) {
+  // The export budget counts points before building them: the count must be what is built.
+  for (const double thickness_mm : {0.25, 0.01}) {
+    for (const int supports : {2, 5}) {
+      Parameters p = exact_default();
+      p.fabric.thickness_mm = thickness_mm;
+      p.shape.kind = supports == 2 ? ShapeKind::cosine_membrane : ShapeKind::strip;
+      p.shape.supports = supports;
+      const Solution s = solve(p);
+      const FoldLines lines = fold_lines(s, p, 7, 100);
+      std::int64_t built = 0;
+      for (const FoldLine& line : lines.lines) {
+        built += static_cast<std::int64_t>(line.points_mm.size());
+      }
+      EXPECT_EQ(fold_line_point_count(s, p.shape, 7, 100), built)
+          << "t = " << thickness_mm << ", supports = " << supports;
+    }
+  }
+}
+
 TEST(FoldLines, NoneWithoutFolds) {
   Parameters p = exact_default();
   p.hanging.support_displacement_mm = 0.0;

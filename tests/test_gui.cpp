@@ -207,6 +207,119 @@ TEST_F(GuiTest, TheLastSessionIsRestored) {
   EXPECT_TRUE(fs::exists(dir_ / "config" / "foldlab" / "imgui.ini"));
 }
 
+// A session saved by a first run, edited by `edit`, then read back by a second run's report.
+class GuiConfigTest : public GuiTest {
+ protected:
+  fs::path config() const { return dir_ / "config" / "foldlab"; }
+
+  nlohmann::json saved_session() {
+    const RunResult first = run_in_xvfb(dir_, environment(), {"--frames", "1"});
+    EXPECT_EQ(first.exit_status, 0) << first.err;
+    std::ifstream in(config() / "session.json");
+    return nlohmann::json::parse(in);
+  }
+
+  void write(const fs::path& path, const std::string& text) {
+    std::ofstream(path, std::ios::binary) << text;
+  }
+
+  nlohmann::json second_run() {
+    const RunResult r = run_in_xvfb(dir_, environment(), {"--frames", "2", "--report"});
+    EXPECT_EQ(r.exit_status, 0) << r.err;
+    try {
+      return nlohmann::json::parse(r.out);
+    } catch (const nlohmann::json::exception& e) {
+      ADD_FAILURE() << e.what() << "\n" << r.out << r.err;
+      return nlohmann::json::object();
+    }
+  }
+
+  static std::string notices_text(const nlohmann::json& report) {
+    std::string text;
+    for (const nlohmann::json& notice : report.value("notices", nlohmann::json::array())) {
+      text += notice.get<std::string>() + "\n";
+    }
+    return text;
+  }
+};
+
+TEST_F(GuiConfigTest, StoredGridResolutionIsBroughtIntoTheSlidersRange) {
+  if (!have_xvfb()) {
+    GTEST_SKIP() << "xvfb-run is not installed (scripts/install-deps.sh installs it)";
+  }
+  // 46341^2 vertices overflowed into std::bad_alloc on every start; 1e300 is no int at all.
+  for (const double stored : {46341.0, 1e300, 2.0}) {
+    SCOPED_TRACE(stored);
+    nlohmann::json session = saved_session();
+    session["view"]["grid_resolution"] = stored;
+    write(config() / "session.json", session.dump());
+    const nlohmann::json report = second_run();
+    EXPECT_EQ(report.value("grid", ""), stored > 512 ? "512x512" : "8x8");
+    EXPECT_NE(notices_text(report).find("outside the slider's 8 to 512"), std::string::npos)
+        << notices_text(report);
+  }
+}
+
+TEST_F(GuiConfigTest, SessionSettingsOutsideTheInputTableAreNotRestored) {
+  if (!have_xvfb()) {
+    GTEST_SKIP() << "xvfb-run is not installed (scripts/install-deps.sh installs it)";
+  }
+  nlohmann::json session = saved_session();
+  session["current"]["model"]["simpson_intervals"] = 1000000;
+  session["current"]["model"]["max_iterations"] = 1000000;
+  session["current"]["hanging"]["height_mm"] = 1777.0;
+  write(config() / "session.json", session.dump());
+  const nlohmann::json report = second_run();
+  EXPECT_NE(notices_text(report).find("simpson_intervals = 1e+06 must be in [2, 10000]"),
+            std::string::npos)
+      << notices_text(report);
+  // The default preset's height, not the session's.
+  EXPECT_EQ(report.at("solution").at("inputs").at("height_mm").get<double>(), 1400.0);
+}
+
+TEST_F(GuiConfigTest, OversizedConfigFilesAreNotReadAndSaySo) {
+  if (!have_xvfb()) {
+    GTEST_SKIP() << "xvfb-run is not installed (scripts/install-deps.sh installs it)";
+  }
+  nlohmann::json session = saved_session();
+  session["current"]["hanging"]["height_mm"] = 1777.0;
+  session["padding"] = std::string(1100 * 1024, 'x');  // valid JSON, above 1 MB
+  write(config() / "session.json", session.dump());
+  // 8000 windows, each a valid entry: above 256 KB.
+  std::string ini;
+  for (int i = 0; i < 8000; ++i) {
+    ini += "[Window][w" + std::to_string(i) + "]\nPos=60,60\nSize=400,300\nCollapsed=0\n\n";
+  }
+  ASSERT_GT(ini.size(), 256u * 1024u);
+  write(config() / "imgui.ini", ini);
+  const nlohmann::json report = second_run();
+  const std::string notices = notices_text(report);
+  EXPECT_NE(notices.find("session.json is "), std::string::npos) << notices;
+  EXPECT_NE(notices.find("imgui.ini is "), std::string::npos) << notices;
+  EXPECT_EQ(report.at("solution").at("inputs").at("height_mm").get<double>(), 1400.0);
+  // The default layout replaced the oversized one on exit.
+  EXPECT_LT(fs::file_size(config() / "imgui.ini"), 256u * 1024u);
+}
+
+TEST_F(GuiConfigTest, AnUnusableConfigFolderCostsTheSessionNotTheStart) {
+  if (!have_xvfb()) {
+    GTEST_SKIP() << "xvfb-run is not installed (scripts/install-deps.sh installs it)";
+  }
+  // A symlink loop at session.json: the defaults, and the reason.
+  fs::create_directories(config());
+  fs::create_symlink("loop.json", config() / "session.json");
+  fs::create_symlink("session.json", config() / "loop.json");
+  const nlohmann::json looped = second_run();
+  EXPECT_NE(notices_text(looped).find("session.json cannot be opened"), std::string::npos)
+      << notices_text(looped);
+  // The config folder is a plain file: "internal error", exit 1, before.
+  fs::remove_all(config());
+  write(config(), "not a folder");
+  const nlohmann::json plain = second_run();
+  EXPECT_NE(notices_text(plain).find("cannot be used"), std::string::npos) << notices_text(plain);
+  EXPECT_EQ(plain.at("solution").at("inputs").at("height_mm").get<double>(), 1400.0);
+}
+
 }  // namespace
 
 // A config folder left in a bad state must not stop the explorer with a crash or an "internal
@@ -239,12 +352,13 @@ TEST_F(GuiTest, AConfigFolderThatIsAFileIsNamedNotAnInternalError) {
   }
   fs::create_directories(dir_ / "config");
   std::ofstream(dir_ / "config" / "foldlab") << "a file where the config folder belongs\n";
-  const RunResult r = run_in_xvfb(dir_, environment(), {"--frames", "2"});
-  EXPECT_EQ(r.exit_status, 1);
-  EXPECT_NE(r.err.find("the config folder " + (dir_ / "config" / "foldlab").string() +
-                       " cannot be created (Not a directory)"),
+  // The explorer starts from the defaults without a session, and its notices name the folder.
+  const RunResult r = run_in_xvfb(dir_, environment(), {"--frames", "2", "--report"});
+  EXPECT_EQ(r.exit_status, 0) << r.err;
+  EXPECT_NE(r.out.find("The config folder " + (dir_ / "config" / "foldlab").string() +
+                       " cannot be used (Not a directory)"),
             std::string::npos)
-      << r.err;
+      << r.out;
   EXPECT_EQ(r.err.find("internal error"), std::string::npos) << r.err;
   // --fresh needs no config folder at all.
   EXPECT_EQ(run_in_xvfb(dir_, environment(), {"--frames", "2", "--fresh"}).exit_status, 0);

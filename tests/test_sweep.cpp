@@ -1,5 +1,7 @@
 // Sweeps and regime maps are solves at the swept values; the breeze leaves the supports alone.
 #include <cmath>
+#include <optional>
+#include <string>
 
 #include <gtest/gtest.h>
 
@@ -51,6 +53,36 @@ TEST(Sweep, AxisChecksSayWhatIsWrong) {
   EXPECT_NE(check_axis({"E", -1, 2, 10, true})->find("positive"), std::string::npos);
   EXPECT_NE(check_axis({"E", 1, 2, 1, false})->find("steps"), std::string::npos);
   EXPECT_FALSE(check_axis({"w", 1e-7, 1e-5, 64, true}).has_value());
+}
+
+TEST(Sweep, LogarithmicEndsFarApartStayFinite) {
+  // from * pow(to / from, f) overflowed here: 0.01 / 1e-300 is above DBL_MAX.
+  const SweepAxis axis{"w", 1e-300, 1e10, 1001, true};
+  for (const int i : {1, 500, 999}) {
+    // Evenly spaced in log10 between -300 and 10.
+    const double expected_log10 = -300.0 + 310.0 * i / 1000.0;
+    EXPECT_NEAR(std::log10(axis.value(i)), expected_log10, 1e-9) << i;
+  }
+  EXPECT_NEAR(axis.value(1000), 1e10, 1e-3);
+}
+
+TEST(Sweep, EndsOutsideTheInputTableAreRefusedWithTheRange) {
+  // Subnormal, below the table's range, and K far beyond c's range divided by 1 - nu^2.
+  const std::optional<std::string> subnormal = check_axis({"w", 1e-320, 0.01, 2000, true});
+  ASSERT_TRUE(subnormal.has_value());
+  EXPECT_NE(subnormal->find("subnormal"), std::string::npos) << *subnormal;
+  const std::optional<std::string> thin = check_axis({"t", 1e-300, 1.0, 50, true});
+  ASSERT_TRUE(thin.has_value());
+  EXPECT_NE(thin->find("[0.001, 50]"), std::string::npos) << *thin;
+  const std::optional<std::string> stiff = check_axis({"K", 1e-300, 1e300, 50, true});
+  ASSERT_TRUE(stiff.has_value());
+  EXPECT_NE(stiff->find("K = 1e-300"), std::string::npos) << *stiff;
+  EXPECT_TRUE(check_axis({"K", 1.0, 1e300, 50, true}).has_value());
+  // c's upper end 1e4 over 1 - 0.5^2 (nu below 0.5): K up to 13333 can still be reached.
+  EXPECT_FALSE(check_axis({"K", 1.0, 13000.0, 50, true}).has_value());
+  EXPECT_TRUE(check_axis({"K", 1.0, 13400.0, 50, true}).has_value());
+  EXPECT_FALSE(check_axis({"h", 900.0, 2350.0, 10000, false}).has_value());
+  EXPECT_TRUE(check_axis({"h", 900.0, 2350.0, 10001, false}).has_value());
 }
 
 TEST(RegimeMap, RowsAreSolvesAtTheGridValues) {

@@ -11,6 +11,7 @@
 #include "app/cli/commands.hpp"
 #include "app/common/inputs.hpp"
 #include "app/common/presets_dir.hpp"
+#include "core/io/export_budget.hpp"
 #include "core/io/io.hpp"
 #include "core/io/preset.hpp"
 #include "core/tools/benchmark_cases.hpp"
@@ -76,6 +77,11 @@ Command add_bench_command(CLI::App& app) {
   command->add_flag("--no-pipeline", options->no_pipeline, "skip the fold line and grid timings");
   return [options] {
     return guarded([&] {
+      if (auto problem = check_count_budget(
+              "--cases x --repeats", static_cast<std::int64_t>(options->cases) * options->repeats,
+              kMaxBenchSolves)) {
+        throw InputError(*problem);
+      }
       std::vector<BenchmarkCase> cases = realistic_cases(options->cases);
       int table_rows = 0;
       if (const std::filesystem::path dir = find_presets_dir(); !dir.empty()) {

@@ -14,6 +14,7 @@
 #include "core/geometry/geometry.hpp"
 #include "core/geometry/scene.hpp"
 #include "core/io/export.hpp"
+#include "core/io/export_budget.hpp"
 #include "core/io/gltf_export.hpp"
 #include "core/io/io.hpp"
 #include "core/io/report.hpp"
@@ -98,12 +99,24 @@ Command add_export_command(CLI::App& app) {
       }
       const int nx = std::stoi(match[1]);
       const int ny = std::stoi(match[2]);
+      const bool mesh = !options->obj_path.empty() || !options->glb_path.empty();
+      const bool lines = !options->csv_path.empty() || !options->svg_path.empty();
+      if (auto problem = check_grid_budget(nx, ny); problem && mesh) {
+        throw InputError("--grid " + options->grid + ": " + *problem);
+      }
       const Preset preset = resolve_inputs(options->inputs);
       // Only the stages an output asks for run: an SVG alone builds no grid.
       Scene scene(preset.parameters);
       scene.set_grid_resolution(nx, ny);
       scene.set_fold_line_samples(options->samples);
       const Solution& solution = scene.solution();
+      if (lines) {
+        const std::int64_t points =
+            fold_line_point_count(solution, preset.parameters.shape, options->samples);
+        if (auto problem = check_fold_point_budget(points, options->samples)) {
+          throw InputError(*problem);
+        }
+      }
       if (const std::string message = describe(solution, preset.parameters); !message.empty()) {
         std::cerr << "foldlab: " << message << "\n";
       }

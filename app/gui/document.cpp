@@ -1,5 +1,6 @@
 #include "app/gui/document.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <utility>
 
@@ -208,6 +209,12 @@ const std::string& Document::message() const {
 
 void Document::tick(double now_s) {
   now_s_ = now_s;
+}
+
+void Document::add_notice(const std::string& notice) {
+  if (std::find(notices_.begin(), notices_.end(), notice) == notices_.end()) {
+    notices_.push_back(notice);
+  }
 }
 
 }  // namespace foldlab::gui

@@ -95,6 +95,10 @@ class Document {
   bool message_is_error() const { return message_kind_ == MessageKind::error; }
   // The frame's clock in seconds (ImGui::GetTime()).
   void tick(double now_s);
+  // Lines shown in the Presets panel until the explorer closes, and listed by `gui --report`:
+  // config files that were not used, values brought into range. Repeats are kept once.
+  void add_notice(const std::string& notice);
+  const std::vector<std::string>& notices() const { return notices_; }
 
   // Set by every accepted change; the explorer saves the session and clears it.
   bool session_dirty = false;
@@ -129,6 +133,7 @@ class Document {
   MessageKind message_kind_ = MessageKind::info;
   double now_s_ = 0.0;
   double message_time_s_ = 0.0;
+  std::vector<std::string> notices_;
 };
 
 }  // namespace foldlab::gui

@@ -35,9 +35,15 @@ Explorer::Explorer(const Preset& initial, const std::string& initial_path, bool 
       style.ground = s->ground;
       appearance_.request(s->ui_scale_percent, s->light_theme);
       document_.notify("Restored the last session.", MessageKind::info);
+      for (const std::string& notice : s->notices) {
+        document_.add_notice(notice);
+      }
     } else if (!error.empty()) {
-      document_.notify(error, MessageKind::warning);
+      document_.add_notice(error);  // present but unusable: say why the defaults are shown
     }
+  }
+  for (const std::string& notice : presets_.notices()) {
+    document_.add_notice(notice);
   }
   document_.forget_history();  // undo goes back no further than what the window opened with
   document_.session_dirty = false;

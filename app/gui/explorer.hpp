@@ -8,6 +8,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "app/gui/appearance.hpp"
 #include "app/gui/document.hpp"
@@ -74,6 +75,9 @@ class Explorer {
   std::optional<std::string> take_screenshot_request() { return export_.take_screenshot_request(); }
   // Shows a line in the Presets panel (the outcome of an export done by the frame loop).
   void notify(const std::string& message, bool is_error) { document_.notify(message, is_error); }
+  // A line kept in the Presets panel and listed by `gui --report` (see Document::add_notice).
+  void add_notice(const std::string& notice) { document_.add_notice(notice); }
+  const std::vector<std::string>& notices() const { return document_.notices(); }
   // True while background work (the regime map) is still filling in what the window shows.
   bool busy() const { return analysis_.regime_map().computing(); }
   // True while a frame would differ from the last without any input: background work or the

@@ -123,22 +123,41 @@ int run(Surface& surface, const GuiRunOptions& options, bool interactive,
   if (!options.animate_key.empty()) {
     animation.emplace(options.animate_key, preset.parameters);
   }
-  const bool persist = interactive && !options.fresh;
-  if (std::error_code error;
-      persist && !std::filesystem::create_directories(config_dir(), error) && error) {
-    throw app::EnvironmentError("the config folder " + config_dir().string() +
-                                " cannot be created (" + error.message() +
-                                "); move what is there away, or run with --fresh");
+  bool persist = interactive && !options.fresh;
+  std::string config_problem;
+  if (persist) {
+    // A config folder that is a plain file or cannot be created costs the session, not the start.
+    std::error_code error;
+    std::filesystem::create_directories(config_dir(), error);
+    if (error) {
+      persist = false;
+      config_problem = "The config folder " + config_dir().string() + " cannot be used (" +
+                       error.message() +
+                       "); the session and window layout are not kept until what is there is "
+                       "moved away.";
+    }
   }
   ExplorerOptions explorer_options{app::find_presets_dir(), user_presets_dir(),
                                    persist ? config_dir() / "session.json" : "",
                                    options.analysis_tab, kDejaVuSans};
-  ImGuiContextGuard imgui(surface, persist ? (config_dir() / "imgui.ini").string() : "");
+  const std::filesystem::path ini_path = config_dir() / "imgui.ini";
+  ImGuiContextGuard imgui(surface, persist ? ini_path.string() : "");
   const std::unique_ptr<Renderer> renderer = make_gl_renderer();
   // A preset named on the command line wins over the restored session.
   const bool restore =
       persist && options.inputs.preset_path.empty() && options.inputs.assignments.empty();
   Explorer explorer(preset, options.inputs.preset_path, restore, explorer_options, *renderer);
+  if (!config_problem.empty()) {
+    explorer.add_notice(config_problem);
+  }
+  if (persist) {
+    if (const std::optional<std::string> too_large = oversized_file(ini_path, kMaxImguiIniBytes)) {
+      // Loading settings from memory marks them loaded, so the first frame reads no file; the
+      // default layout is saved over the oversized one on exit.
+      ImGui::LoadIniSettingsFromMemory("", 0);
+      explorer.add_notice("The window layout " + *too_large + "; using the default layout.");
+    }
+  }
   apply_view_settings(explorer, options.view_settings);
 
   ScriptedRun script(options.frames, std::move(animation), std::move(player));

@@ -138,8 +138,13 @@ void FrameTimes::print_report(const char* backend, const std::string& animate_ke
   const double p95 = sorted[std::min(
       sorted.size() - 1, static_cast<std::size_t>(0.95 * static_cast<double>(sorted.size())))];
   nlohmann::json report = {
-      {"backend", backend}, {"frames", sorted.size()}, {"mean_ms", mean},
-      {"p95_ms", p95},      {"max_ms", sorted.back()}, {"animate", animate_key},
+      {"backend", backend},
+      {"frames", sorted.size()},
+      {"mean_ms", mean},
+      {"p95_ms", p95},
+      {"max_ms", sorted.back()},
+      {"animate", animate_key},
+      {"notices", explorer.notices()},
   };
   report.update(explorer_state_json(explorer));
   std::cout << report.dump(2) << "\n";

@@ -1,11 +1,13 @@
 #include "app/gui/session.hpp"
 
+#include <algorithm>
 #include <cstdlib>
 
 #include <nlohmann/json.hpp>
 
 #include "core/io/io.hpp"
 #include "core/io/json_input.hpp"
+#include "core/model/text_format.hpp"
 
 namespace foldlab::gui {
 
@@ -23,6 +25,16 @@ std::filesystem::path user_presets_dir() {
   return config_dir() / "presets";
 }
 
+std::optional<std::string> oversized_file(const std::filesystem::path& path, std::uintmax_t limit) {
+  std::error_code ec;
+  const std::uintmax_t bytes = std::filesystem::file_size(path, ec);
+  if (ec || bytes <= limit) {
+    return std::nullopt;  // absent or unreadable: the reader says so
+  }
+  return detail::printf_string("%s is %ju bytes, above the %ju a valid one can have; not read",
+                               path.string().c_str(), bytes, limit);
+}
+
 std::optional<Session> load_session(const std::filesystem::path& path, std::string& error) {
   error.clear();
   std::error_code absent;
@@ -30,14 +42,42 @@ std::optional<Session> load_session(const std::filesystem::path& path, std::stri
       std::filesystem::file_type::not_found) {
     return std::nullopt;  // a first start: nothing to say
   }
+  if (const std::optional<std::string> too_large = oversized_file(path, kMaxSessionBytes)) {
+    error = "the saved session " + *too_large + "; starting from the default preset";
+    return std::nullopt;
+  }
+  std::string text;
   try {
-    const nlohmann::json j = parse_json(read_text_file(path), path.string());
+    text = read_text_file(path);
+  } catch (const ReadError& e) {
+    error = "the saved session " + path.string() + " cannot be opened (" + e.what() +
+            "); starting from the default preset";
+    return std::nullopt;
+  }
+  return session_from_text(text, path.string(), error);
+}
+
+std::optional<Session> session_from_text(const std::string& text, const std::string& origin,
+                                         std::string& error) {
+  try {
+    const nlohmann::json j = parse_json(text, origin);
     Session s;
-    s.current = preset_from_json(j.at("current"), path.string() + " (current)");
-    s.loaded = preset_from_json(j.at("loaded"), path.string() + " (loaded)");
+    s.current = preset_from_json(j.at("current"), origin + " (current)");
+    s.loaded = preset_from_json(j.at("loaded"), origin + " (loaded)");
     s.loaded_preset_path = j.value("loaded_preset_path", "");
     const nlohmann::json& view = j.at("view");
-    s.grid_resolution = view.value("grid_resolution", s.grid_resolution);
+    // Read as a double: a huge stored number must be clamped, not converted to int first.
+    const double stored_resolution =
+        view.value("grid_resolution", static_cast<double>(s.grid_resolution));
+    const double clamped = std::clamp(stored_resolution, static_cast<double>(kMinGridResolution),
+                                      static_cast<double>(kMaxGridResolution));
+    s.grid_resolution = static_cast<int>(clamped);  // NaN cannot come from JSON
+    if (clamped != stored_resolution) {
+      s.notices.push_back(detail::printf_string(
+          "The saved grid resolution %s is outside the slider's %d to %d; using %d.",
+          detail::shortest_number(stored_resolution).c_str(), kMinGridResolution,
+          kMaxGridResolution, s.grid_resolution));
+    }
     s.wireframe = view.value("wireframe", s.wireframe);
     s.fold_lines_3d = view.value("fold_lines", s.fold_lines_3d);
     s.ground = view.value("ground", s.ground);
@@ -45,7 +85,7 @@ std::optional<Session> load_session(const std::filesystem::path& path, std::stri
     s.light_theme = view.value("light_theme", s.light_theme);
     return s;
   } catch (const std::exception& e) {
-    error = "the saved session " + path.string() + " could not be read (" + e.what() +
+    error = "the saved session " + origin + " could not be read (" + e.what() +
             "); starting from the default preset";
     return std::nullopt;
   }

@@ -3,13 +3,28 @@
 // ImGui's own imgui.ini that holds the window layout.
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "core/io/preset.hpp"
 
 namespace foldlab::gui {
+
+// The grid slider's range; a stored resolution outside it is brought inside.
+inline constexpr int kMinGridResolution = 8;
+inline constexpr int kMaxGridResolution = 512;
+// Config files larger than these are not read: the explorer starts from its defaults instead, so
+// that a corrupted or hostile config folder cannot delay the start (200,000 windows in imgui.ini
+// took 35 s). A real session is a few KB, a real imgui.ini a few KB.
+inline constexpr std::uintmax_t kMaxSessionBytes = 1024 * 1024;
+inline constexpr std::uintmax_t kMaxImguiIniBytes = 256 * 1024;
+// Presets in the user's folder larger than this are listed as too large, without being read.
+inline constexpr std::uintmax_t kMaxListedPresetBytes = 1024 * 1024;
+// Presets listed from one folder: each is read to show its name.
+inline constexpr std::size_t kMaxListedPresets = 500;
 
 struct Session {
   Preset current;                  // the edited parameters, named after their preset
@@ -21,7 +36,13 @@ struct Session {
   bool ground = true;
   int ui_scale_percent = 100;
   bool light_theme = false;
+  // What was changed while loading (a grid resolution brought into the slider's range), to show.
+  std::vector<std::string> notices;
 };
+
+// nullopt when the file at `path` is absent or at most `limit` bytes; else a sentence saying that
+// it is too large and is not read.
+std::optional<std::string> oversized_file(const std::filesystem::path& path, std::uintmax_t limit);
 
 // $XDG_CONFIG_HOME/foldlab, else $HOME/.config/foldlab (created on demand by the savers).
 std::filesystem::path config_dir();
@@ -30,6 +51,9 @@ std::filesystem::path user_presets_dir();
 // Reads a session file; nullopt when it is absent (`error` empty) or unusable (`error` says why;
 // the caller starts from the default preset and shows it).
 std::optional<Session> load_session(const std::filesystem::path& path, std::string& error);
+// The same from the file's text; `origin` names it in `error`.
+std::optional<Session> session_from_text(const std::string& text, const std::string& origin,
+                                         std::string& error);
 // Atomic write (see write_file_atomically); throws WriteError.
 void save_session(const std::filesystem::path& path, const Session& session);
 

@@ -8,6 +8,7 @@
 #include <set>
 #include <utility>
 
+#include "core/io/export_budget.hpp"
 #include "core/model/equations.hpp"
 
 namespace foldlab {
@@ -536,6 +537,11 @@ CalibrationReport calibrate(const MeasurementSet& data, const Parameters& base,
                             const CalibrationProgress& progress) {
   check_options(options);
   check_base(base);
+  if (static_cast<std::int64_t>(data.rows.size()) > kMaxCalibrationRows) {
+    throw CalibrationError(data.origin + ": " + std::to_string(data.rows.size()) +
+                           " rows, above the limit of " + std::to_string(kMaxCalibrationRows) +
+                           " rows a calibration fits (each costs about 0.5 s); split the file");
+  }
   CalibrationReport report;
   report.fit = options.fit;
   report.base = base;

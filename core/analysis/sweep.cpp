@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
+#include "core/io/export_budget.hpp"
 #include "core/model/settings.hpp"
 #include "core/model/text_format.hpp"
 
@@ -10,7 +12,12 @@ namespace foldlab {
 
 double SweepAxis::value(int i) const {
   const double f = steps > 1 ? static_cast<double>(i) / (steps - 1) : 0.0;
-  return logarithmic ? from * std::pow(to / from, f) : from + (to - from) * f;
+  if (logarithmic) {
+    // In log space: to / from overflows for ends far apart (1e-320 to 0.01).
+    const double log_from = std::log(from);
+    return std::exp(log_from + (std::log(to) - log_from) * f);
+  }
+  return from + (to - from) * f;
 }
 
 // The cloth, its hanging and eq. 7's K: the inputs a sweep or the regime map can vary.
@@ -44,6 +51,21 @@ double get_number(const Parameters& p, const std::string& key) {
   return numeric_setting(p, key).value_or(0.0);
 }
 
+namespace {
+
+// Where an end of a sweep over `key` may lie: the input table's range, for K the range of c
+// divided by 1 - nu² over the permitted nu (K = c / (1 - nu²)).
+InputInterval sweep_range(const InputSpec& spec) {
+  if (spec.kind != InputKind::stiffness_K) {
+    return spec.valid;
+  }
+  const InputInterval c = find_input("c")->valid;
+  const InputInterval nu = find_input("nu")->valid;
+  return {c.lo, c.hi / (1.0 - nu.hi * nu.hi), c.lo_open, nu.hi_open || c.hi_open};
+}
+
+}  // namespace
+
 std::optional<std::string> check_axis(const SweepAxis& axis) {
   Parameters probe;
   if (!set_number(probe, axis.key, 1.0)) {
@@ -53,11 +75,26 @@ std::optional<std::string> check_axis(const SweepAxis& axis) {
   if (!std::isfinite(axis.from) || !std::isfinite(axis.to)) {
     return "the range of " + axis.key + " must be finite";
   }
-  if (axis.steps < 2 || axis.steps > 100000) {
-    return "steps = " + std::to_string(axis.steps) + " must be in [2, 100000]";
+  if (axis.steps < 2 || axis.steps > kMaxSweepSteps) {
+    return "steps = " + std::to_string(axis.steps) + " must be in [2, " +
+           std::to_string(kMaxSweepSteps) + "]: more would take too long";
   }
   if (axis.logarithmic && !(axis.from > 0.0 && axis.to > 0.0)) {
     return "a logarithmic range of " + axis.key + " needs positive ends";
+  }
+  const InputSpec& spec = *find_input(axis.key);
+  const InputInterval range = sweep_range(spec);
+  for (const double end : {axis.from, axis.to}) {
+    if (end != 0.0 && std::abs(end) < std::numeric_limits<double>::min()) {
+      return "the sweep's end " + axis.key + " = " + detail::shortest_number(end) +
+             " is subnormal: no cloth is described by it";
+    }
+    if (!range.contains(end)) {
+      std::string why =
+          spec.why.empty() ? "c / (1 - nu²) with c and nu in their ranges" : std::string(spec.why);
+      return "the sweep's end " + axis.key + " = " + detail::shortest_number(end) + " must be in " +
+             range.text() + ": " + why;
+    }
   }
   return std::nullopt;
 }

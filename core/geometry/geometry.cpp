@@ -37,6 +37,28 @@ std::vector<Eigen::Vector3d> support_points(double span_mm, const Shape& shape) 
   return points;
 }
 
+namespace {
+
+// Every stride-th line is drawn so that at most about max_lines lines are.
+int fold_line_stride(const Solution& s, int spans, int max_lines) {
+  const std::int64_t line_count = (static_cast<std::int64_t>(s.n) + 1) * spans;
+  const std::int64_t per = std::max(1, max_lines);
+  return static_cast<int>(std::max<std::int64_t>(1, (line_count + per - 1) / per));
+}
+
+}  // namespace
+
+std::int64_t fold_line_point_count(const Solution& s, const Shape& shape, int samples,
+                                   int max_lines) {
+  if (s.a_mm.empty()) {
+    return 0;
+  }
+  const int spans = shape.span_count();
+  const std::int64_t stride = fold_line_stride(s, spans, max_lines);
+  const std::int64_t lines_per_span = s.n / stride + 1;
+  return lines_per_span * spans * std::max(2, samples);
+}
+
 FoldLines fold_lines(const Solution& s, const FoldRounding& rounding, const Shape& shape,
                      int samples, int max_lines) {
   FoldLines out;
@@ -45,8 +67,7 @@ FoldLines fold_lines(const Solution& s, const FoldRounding& rounding, const Shap
   }
   samples = std::max(2, samples);
   const int spans = shape.span_count();
-  const int line_count = (s.n + 1) * spans;
-  out.stride = std::max(1, (line_count + max_lines - 1) / std::max(1, max_lines));
+  out.stride = fold_line_stride(s, spans, max_lines);
   const double l = s.span_mm;
   for (int span = 0; span < spans; ++span) {
     for (int i = 0; i <= s.n; i += out.stride) {

@@ -44,6 +44,10 @@ FoldLines fold_lines(const Solution& s, const FoldRounding& rounding, const Shap
 // With the fabric's rounding and the parameters' shape.
 FoldLines fold_lines(const Solution& s, const Parameters& p, int samples,
                      int max_lines = kMaxDrawnFoldLines);
+// How many points fold_lines() would return, without building them: exports check it against their
+// budget before allocating.
+std::int64_t fold_line_point_count(const Solution& s, const Shape& shape, int samples,
+                                   int max_lines = kMaxDrawnFoldLines);
 
 // Where the shape puts a point (x, y, z) of one span's solution: span j of a strip is shifted by
 // its offset, and an inclined pattern is sheared so that the right support sits higher.

@@ -185,7 +185,7 @@ std::vector<Eq7Constants> read_constants_list(Reader& r, const json& list,
     if (!pair.is_array() || pair.size() != 2 || !pair[0].is_number() || !pair[1].is_number() ||
         !(pair[0].get<double>() > 0.0) || !(pair[1].get<double>() > 0.0)) {
       r.problem(pointer + "/" + std::to_string(i),
-                "expected [K, p] with K > 0 and p > 0, got " + pair.dump());
+                "expected [K, p] with K > 0 and p > 0, got " + describe_json(pair));
       continue;
     }
     out.push_back({pair[0].get<double>(), pair[1].get<double>()});

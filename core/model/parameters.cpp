@@ -16,11 +16,8 @@ void check_range(std::vector<ValidationIssue>& issues, std::string_view field, d
   if (range.contains(value)) {
     return;
   }
-  std::string message = std::string(field) + " = " + shortest_number(value) + " must be ";
-  message += range.lo_open ? "in (" : "in [";
-  message += shortest_number(range.lo) + ", " + shortest_number(range.hi);
-  message += range.hi_open ? ")" : "]";
-  message += ": " + std::string(why);
+  std::string message = std::string(field) + " = " + shortest_number(value) + " must be in " +
+                        range.text() + ": " + std::string(why);
   issues.push_back({std::string(field), value, std::move(message)});
 }
 

@@ -286,6 +286,11 @@ bool InputInterval::contains(double v) const {
   return std::isfinite(v) && above_lo && below_hi;
 }
 
+std::string InputInterval::text() const {
+  return std::string(lo_open ? "(" : "[") + detail::shortest_number(lo) + ", " +
+         detail::shortest_number(hi) + (hi_open ? ")" : "]");
+}
+
 std::optional<double> InputSpec::value(const Parameters& p) const {
   // The accessors take a mutable Parameters so that one function serves reading and writing.
   Parameters& mutable_p = const_cast<Parameters&>(p);

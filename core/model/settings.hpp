@@ -30,6 +30,8 @@ struct InputInterval {
   bool hi_open = false;
 
   bool contains(double v) const;
+  // "[0.001, 50]" or "[0, 0.5)": for messages.
+  std::string text() const;
 };
 
 struct InputSpec {

@@ -10,6 +10,8 @@
 
 #include "app/common/presets_dir.hpp"
 #include "app/gui/panels/widgets.hpp"
+#include "app/gui/session.hpp"
+#include "core/model/text_format.hpp"
 
 namespace foldlab::gui {
 
@@ -40,12 +42,26 @@ void PresetsPanel::refresh() {
     if (dir.empty()) {
       return;
     }
-    for (const auto& file : app::preset_files(dir)) {
+    std::vector<std::filesystem::path> files = app::preset_files(dir);
+    if (files.size() > kMaxListedPresets) {
+      const std::string notice =
+          detail::printf_string("%zu presets in %s; listing the first %zu.", files.size(),
+                                dir.string().c_str(), kMaxListedPresets);
+      if (std::find(notices_.begin(), notices_.end(), notice) == notices_.end()) {
+        notices_.push_back(notice);
+      }
+      files.resize(kMaxListedPresets);
+    }
+    for (const auto& file : files) {
       Entry entry{file.stem().string(), file, user};
-      try {
-        entry.name = load_preset(file).name;
-      } catch (const PresetError&) {
-        entry.name = file.filename().string() + " (unreadable)";
+      if (oversized_file(file, kMaxListedPresetBytes)) {
+        entry.name = file.filename().string() + " (too large to read)";
+      } else {
+        try {
+          entry.name = load_preset(file).name;
+        } catch (const PresetError&) {
+          entry.name = file.filename().string() + " (unreadable)";
+        }
       }
       entries_.push_back(std::move(entry));
     }
@@ -200,6 +216,14 @@ void PresetsPanel::draw(Document& document, Renderer& renderer,
   if (!document.message().empty()) {
     ImGui::PushStyleColor(ImGuiCol_Text, message_colour(document.message_kind()));
     ImGui::TextWrapped("%s", document.message().c_str());
+    ImGui::PopStyleColor();
+  }
+  for (const std::string& notice : notices_) {
+    document.add_notice(notice);  // a listing refreshed by "Save as..." may be newly capped
+  }
+  for (const std::string& notice : document.notices()) {
+    ImGui::PushStyleColor(ImGuiCol_Text, kErrorText);
+    ImGui::TextWrapped("%s", notice.c_str());
     ImGui::PopStyleColor();
   }
   footer();

@@ -35,6 +35,8 @@ class PresetsPanel {
     bool user = false;
   };
   const std::vector<Entry>& entries() const { return entries_; }
+  // Why the listing is not the whole folder (too many presets); the explorer shows them as notices.
+  const std::vector<std::string>& notices() const { return notices_; }
 
  private:
   void refresh();
@@ -46,6 +48,7 @@ class PresetsPanel {
   std::filesystem::path presets_dir_;
   std::filesystem::path user_presets_dir_;
   std::vector<Entry> entries_;
+  std::vector<std::string> notices_;
   char save_name_[128] = {};
   char save_as_name_[128] = {};
   std::string pending_overwrite_;  // name waiting for the user's "overwrite?" answer
