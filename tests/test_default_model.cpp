@@ -520,6 +520,8 @@ TEST_F(DefaultModelCli, MalformedMeasureInputIsExitTwoNamingTheArgument) {
        "--photo"},
       {{"measure", "--depths-mm", "900,300", "--z-max-mm", "-3"}, "--z-max-mm"},
       {{"measure", "--depths-mm", "900,300", "--set", "t=-1"}, "t"},
+      // Depths whose ratio overflows once gave "internal error: non-finite Q" (exit 1).
+      {{"measure", "--depths-mm", "1e308,1e-308"}, "--depths-mm"},
   };
   for (const auto& [args, named] : cases) {
     const testing::RunResult r = run(args);
@@ -527,6 +529,24 @@ TEST_F(DefaultModelCli, MalformedMeasureInputIsExitTwoNamingTheArgument) {
     EXPECT_TRUE(contains(r.err, named)) << named << "\n" << r.err;
     EXPECT_TRUE(r.out.empty()) << r.out;
   }
+  // 1001 folds: refused before calibrating on such a row could take minutes.
+  std::string many;
+  for (int i = 0; i < 1001; ++i) {
+    many += (i > 0 ? "," : "") + std::to_string(2000.0 - i);
+  }
+  const testing::RunResult r = run({"measure", "--depths-mm", many});
+  EXPECT_EQ(r.exit_status, 2) << r.err;
+  EXPECT_TRUE(contains(r.err, "at most 1000")) << r.err;
+}
+
+// A file that cannot be written is an I/O failure (exit 1), as for every other command.
+TEST_F(DefaultModelCli, MeasureIntoAnUnwritableFileIsExitOne) {
+  const fs::path file = dir_ / "plain-file";
+  std::ofstream(file) << "x";
+  const testing::RunResult r =
+      run({"measure", "--depths-mm", "100,50", "--append", (file / "m.csv").string()});
+  EXPECT_EQ(r.exit_status, 1) << r.err;
+  EXPECT_TRUE(contains(r.err, "cannot write")) << r.err;
 }
 
 }  // namespace

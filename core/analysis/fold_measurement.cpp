@@ -3,17 +3,30 @@
 #include <cmath>
 #include <utility>
 
+#include "core/model/settings.hpp"
 #include "core/model/text_format.hpp"
 
 namespace foldlab {
 
 using detail::shortest_number;
 
+namespace {
+// More than any photo shows, and below where calibrating on the row would take minutes.
+constexpr std::size_t kMaxMeasuredFolds = 1000;
+}  // namespace
+
 FoldMeasurement measure_folds(const std::vector<double>& depths_mm) {
+  const double min_depth_mm = find_input("t")->valid.lo;
+  const double max_depth_mm = find_input("h")->valid.hi;
   if (depths_mm.size() < 2) {
     throw FoldMeasurementError(
         "depths", "need at least two fold depths (the lower boundary and the upper edge), got " +
                       std::to_string(depths_mm.size()));
+  }
+  if (depths_mm.size() > kMaxMeasuredFolds) {
+    throw FoldMeasurementError("depths", std::to_string(depths_mm.size()) + " depths: at most " +
+                                             std::to_string(kMaxMeasuredFolds) +
+                                             " folds can be measured on one cloth");
   }
   for (std::size_t i = 0; i < depths_mm.size(); ++i) {
     const double a = depths_mm[i];
@@ -21,6 +34,13 @@ FoldMeasurement measure_folds(const std::vector<double>& depths_mm) {
       throw FoldMeasurementError("depths", "depth " + std::to_string(i) + " = " +
                                                shortest_number(a) +
                                                " mm: every fold lies below the supports (> 0)");
+    }
+    // The thinnest cloth's thickness to the tallest cloth's height: outside, Q overflows.
+    if (!(a >= min_depth_mm && a <= max_depth_mm)) {
+      throw FoldMeasurementError(
+          "depths", "depth " + std::to_string(i) + " = " + shortest_number(a) + " mm must be in [" +
+                        shortest_number(min_depth_mm) + ", " + shortest_number(max_depth_mm) +
+                        "] mm (the thinnest cloth to the tallest)");
     }
     if (i > 0 && !(a < depths_mm[i - 1])) {
       throw FoldMeasurementError(

@@ -602,11 +602,7 @@ void append_measurement(const std::filesystem::path& path, const Measurement& ro
     }
     out += detail::join(cells, ",") + "\n";
   }
-  try {
-    write_file_atomically(path, out);
-  } catch (const WriteError& e) {
-    throw MeasurementError(e.what());
-  }
+  write_file_atomically(path, out);  // WriteError: an I/O failure, not bad input
 }
 
 std::string measurements_to_csv(const MeasurementSet& set) {
