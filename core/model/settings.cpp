@@ -388,7 +388,7 @@ std::optional<std::string> apply_setting(Parameters& p, std::string_view key,
     const auto [ptr, ec] = std::from_chars(value.data(), value.data() + value.size(), ignored);
     if (ec == std::errc::result_out_of_range && ptr == value.data() + value.size()) {
       return std::string(key) + " = '" + detail::cut(value) +
-             "' is beyond the range of a double (about 1.8e308)";
+             "' is beyond the range of a double (magnitudes 2.2e-308 to 1.8e308)";
     }
     return std::string(key) + " = '" + detail::cut(value) + "' is not a number";
   }
