@@ -10,7 +10,7 @@ packages=(
   libegl-mesa0 libgl1-mesa-dri
   googletest libgtest-dev libbenchmark-dev
   clang libclang-rt-14-dev libfuzzer-14-dev
-  xvfb xauth
+  xvfb xauth xdotool
 )
 
 missing=()

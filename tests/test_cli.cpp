@@ -602,3 +602,53 @@ TEST_F(CliTest, ExponentJustAboveItsLimitIsEchoedUnrounded) {
   EXPECT_EQ(r.exit_status, 2);
   EXPECT_TRUE(contains(r.err, "p = 5.0000001 must be in [0.05, 5]")) << r.err;
 }
+
+TEST_F(CliTest, SweepPastTheValidRangeSaysWhyOnceAndAllRefusedIsInvalidInput) {
+  // L = 1400 allows d < 700 (half of L): of 600, 650, 700 only the last is refused.
+  const RunResult partly =
+      run({"sweep", "--param", "d", "--from", "600", "--to", "700", "--steps", "3", "--csv"});
+  EXPECT_EQ(partly.exit_status, 0) << partly.err;
+  EXPECT_TRUE(contains(partly.out, "700,0,1,0,invalid")) << partly.out;
+  EXPECT_TRUE(contains(partly.err, "1 of 3 values are refused")) << partly.err;
+  EXPECT_TRUE(contains(partly.err, "d = 700")) << partly.err;
+  const RunResult all =
+      run({"sweep", "--param", "d", "--from", "700", "--to", "800", "--steps", "3"});
+  EXPECT_EQ(all.exit_status, 2);
+  EXPECT_TRUE(contains(all.err, "no value of the range is valid")) << all.err;
+  EXPECT_TRUE(all.out.empty()) << all.out;
+}
+
+TEST_F(CliTest, OverflowingNumberIsNamedAsSuch) {
+  const RunResult r = run({"solve", "--set", "t=1e309"});
+  EXPECT_EQ(r.exit_status, 2);
+  EXPECT_TRUE(contains(r.err, "beyond the range of a double")) << r.err;
+}
+
+TEST_F(CliTest, ExportSamplesAcceptWholeNumbersInAnyNotation) {
+  const fs::path svg = dir_ / "lines.svg";
+  const fs::path csv = dir_ / "lines.csv";
+  const RunResult ok = run({"export", "--samples", "1e3", "--csv", csv.string()});
+  EXPECT_EQ(ok.exit_status, 0) << ok.err;
+  const RunResult half = run({"export", "--samples", "2.5", "--svg", svg.string()});
+  EXPECT_EQ(half.exit_status, 2);
+  EXPECT_TRUE(contains(half.err, "--samples 2.5 must be a whole number")) << half.err;
+  EXPECT_FALSE(fs::exists(svg));
+}
+
+TEST_F(CliTest, ExportRefusesTwoOutputsOnOnePath) {
+  const fs::path svg = dir_ / "lines.svg";
+  const fs::path same = dir_ / "." / "lines.svg";
+  const RunResult r = run({"export", "--svg", svg.string(), "--csv", same.string()});
+  EXPECT_EQ(r.exit_status, 2);
+  EXPECT_TRUE(contains(r.err, "name the same file")) << r.err;
+  EXPECT_FALSE(fs::exists(svg));
+}
+
+TEST_F(CliTest, MeasuredDepthBeyondHalfTheUpperEdgeIsRefused) {
+  // The default preset's L is 1400 mm, so no fold can stand out more than 700 mm.
+  const RunResult deep = run({"measure", "--depths-mm", "80,40,20,10", "--z-max-mm", "701"});
+  EXPECT_EQ(deep.exit_status, 2);
+  EXPECT_TRUE(contains(deep.err, "L/2 = 700 mm")) << deep.err;
+  const RunResult fine = run({"measure", "--depths-mm", "80,40,20,10", "--z-max-mm", "700"});
+  EXPECT_EQ(fine.exit_status, 0) << fine.err;
+}

@@ -176,8 +176,8 @@ TEST(Settings, UnknownKeyIsReported) {
 }
 
 TEST(Settings, MalformedNumbersAreRejected) {
-  for (const char* value : {"1.5.3", "abc", "", "1e400", "nan", "NaN", "inf", "-inf", "12mm", " 1",
-                            "1 ", "1,5", "0x10", "--1"}) {
+  for (const char* value : {"1.5.3", "abc", "", "nan", "NaN", "inf", "-inf", "12mm", " 1", "1 ",
+                            "1,5", "0x10", "--1"}) {
     SCOPED_TRACE(std::string("'") + value + "'");
     Parameters p;
     const auto error = foldlab::apply_setting(p, "t", value);
@@ -185,6 +185,17 @@ TEST(Settings, MalformedNumbersAreRejected) {
     EXPECT_TRUE(contains(*error, "is not a number")) << *error;
     EXPECT_EQ(p.fabric.thickness_mm, 0.25);
     EXPECT_FALSE(foldlab::parse_number(value).has_value());
+  }
+}
+
+TEST(Settings, NumbersBeyondADoubleAreNamedAsSuch) {
+  for (const char* value : {"1e400", "-1e400", "1e-400"}) {
+    SCOPED_TRACE(value);
+    Parameters p;
+    const auto error = foldlab::apply_setting(p, "t", value);
+    ASSERT_TRUE(error.has_value());
+    EXPECT_TRUE(contains(*error, "beyond the range of a double")) << *error;
+    EXPECT_EQ(p.fabric.thickness_mm, 0.25);
   }
 }
 

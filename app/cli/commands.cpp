@@ -1,6 +1,8 @@
 #include "app/cli/commands.hpp"
 
+#include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 #include <memory>
 #include <regex>
@@ -59,6 +61,16 @@ Command add_solve_command(CLI::App& app) {
   };
 }
 
+namespace {
+
+// Whether two command-line paths name one file, as far as can be told without creating it.
+bool same_path(const std::string& a, const std::string& b) {
+  return std::filesystem::absolute(a).lexically_normal() ==
+         std::filesystem::absolute(b).lexically_normal();
+}
+
+}  // namespace
+
 Command add_export_command(CLI::App& app) {
   struct Options {
     InputOptions inputs;
@@ -67,7 +79,7 @@ Command add_export_command(CLI::App& app) {
     std::string csv_path;
     std::string svg_path;
     std::string grid = "128x128";
-    int samples = 201;
+    double samples = 201;
     bool stats = false;
   };
   auto options = std::make_shared<Options>();
@@ -79,8 +91,8 @@ Command add_export_command(CLI::App& app) {
   command->add_option("--csv", options->csv_path, "fold lines as CSV");
   command->add_option("--svg", options->svg_path, "fold lines as an SVG drawing");
   command->add_option("--grid", options->grid, "mesh resolution NXxNY (default 128x128)");
-  command->add_option("--samples", options->samples, "points per fold line (default 201)")
-      ->check(CLI::Range(2, 100000));
+  command->add_option("--samples", options->samples,
+                      "points per fold line, a whole number in [2, 100000] (default 201)");
   command->add_flag("--stats", options->stats,
                     "print the pipeline's per-stage counters as JSON on stdout");
   return [options] {
@@ -95,7 +107,30 @@ Command add_export_command(CLI::App& app) {
       if (!std::regex_match(options->grid, match, grid_pattern) || std::stoi(match[1]) < 2 ||
           std::stoi(match[2]) < 2 || std::stoi(match[1]) > 4096 || std::stoi(match[2]) > 4096) {
         throw InputError("--grid " + options->grid +
-                         " must be NXxNY with 2 <= NX, NY <= 4096, e.g. 128x128");
+                         " must be NXxNY, whole numbers from 2 to 4096 with at most " +
+                         std::to_string(kMaxExportGridVertices) + " vertices, e.g. 128x128");
+      }
+      // Parsed as a number, not an integer, so that 1e3 means 1000 rather than a puzzling refusal.
+      if (!(options->samples >= 2 && options->samples <= 100000) ||
+          options->samples != std::floor(options->samples)) {
+        throw InputError("--samples " + detail::shortest_number(options->samples) +
+                         " must be a whole number in [2, 100000]");
+      }
+      const int samples = static_cast<int>(options->samples);
+      // Two outputs on one path would leave only the second, silently.
+      const std::pair<const char*, const std::string*> outputs[] = {{"--obj", &options->obj_path},
+                                                                    {"--glb", &options->glb_path},
+                                                                    {"--csv", &options->csv_path},
+                                                                    {"--svg", &options->svg_path}};
+      for (std::size_t i = 0; i < std::size(outputs); ++i) {
+        for (std::size_t j = i + 1; j < std::size(outputs); ++j) {
+          if (!outputs[i].second->empty() && !outputs[j].second->empty() &&
+              same_path(*outputs[i].second, *outputs[j].second)) {
+            throw InputError(std::string(outputs[i].first) + " and " + outputs[j].first +
+                             " name the same file " + *outputs[i].second +
+                             "; give each output its own path");
+          }
+        }
       }
       const int nx = std::stoi(match[1]);
       const int ny = std::stoi(match[2]);
@@ -108,12 +143,12 @@ Command add_export_command(CLI::App& app) {
       // Only the stages an output asks for run: an SVG alone builds no grid.
       Scene scene(preset.parameters);
       scene.set_grid_resolution(nx, ny);
-      scene.set_fold_line_samples(options->samples);
+      scene.set_fold_line_samples(samples);
       const Solution& solution = scene.solution();
       if (lines) {
         const std::int64_t points =
-            fold_line_point_count(solution, preset.parameters.shape, options->samples);
-        if (auto problem = check_fold_point_budget(points, options->samples)) {
+            fold_line_point_count(solution, preset.parameters.shape, samples);
+        if (auto problem = check_fold_point_budget(points, samples)) {
           throw InputError(*problem);
         }
       }

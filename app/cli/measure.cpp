@@ -157,6 +157,14 @@ Command add_measure_command(CLI::App& app) {
       }
       const Preset preset = resolve_inputs({o.preset_path, o.assignments, ""});
       const Parameters& p = preset.parameters;
+      // The upper edge is held at its supports, so no point of it lies further than half its
+      // length L from them: a deeper fold is a typing error (a unit off, say), not a measurement.
+      if (o.z_max_mm && *o.z_max_mm > 0.5 * p.hanging.length_mm) {
+        throw InputError("--z-max-mm " + detail::shortest_number(*o.z_max_mm) +
+                         " is deeper than half the upper edge, L/2 = " +
+                         detail::shortest_number(0.5 * p.hanging.length_mm) +
+                         " mm, which no fold of this cloth can reach");
+      }
       std::vector<double> depths;
       try {
         if (by_depth) {

@@ -49,6 +49,25 @@ Command add_sweep_command(CLI::App& app) {
         detail::finite_or_throw(p.Q, "Q");
         detail::finite_or_throw(p.z_max_mm, "z_max_mm");
       }
+      // A range may run past what the other inputs allow (d up to L/2, say): those rows say
+      // "invalid" and the reason is given once; a range with no valid value is an input error.
+      int refused = 0;
+      std::string first_reason;
+      for (const SweepPoint& p : points) {
+        if (!p.valid) {
+          if (refused++ == 0) {
+            Parameters at = preset.parameters;
+            set_number(at, axis.key, p.value);
+            const std::vector<ValidationIssue> issues = validate(at);
+            first_reason = axis.key + " = " + detail::shortest_number(p.value) + ": " +
+                           (issues.empty() ? std::string("refused") : issues.front().message);
+          }
+        }
+      }
+      if (refused == static_cast<int>(points.size())) {
+        throw InputError("no value of the range is valid given the other inputs; at " +
+                         first_reason);
+      }
       if (options->csv) {
         std::printf("%s,n,Q,z_max_mm,regime\n", axis.key.c_str());
       } else {
@@ -62,6 +81,11 @@ Command add_sweep_command(CLI::App& app) {
           std::printf("%14.6g %6d %10.4f %12.2f  %s\n", p.value, p.n, p.Q, p.z_max_mm,
                       regime.c_str());
         }
+      }
+      if (refused > 0) {
+        std::cerr << "foldlab: " << refused << " of " << points.size()
+                  << " values are refused given the other inputs (their rows say invalid); at "
+                  << first_reason << "\n";
       }
       return kExitOk;
     });

@@ -36,8 +36,10 @@ void add_common_gui_options(CLI::App& command, GuiCommandOptions& options) {
   command.add_option("--size", options.size, "window or picture size WxH (default 1280x800)");
   command
       .add_option("--view", options.run.view_settings,
-                  "3D view setting KEY=VALUE: print=plain|checks|stripes, breeze=0|1, "
-                  "breeze_mm, time (s), z (exaggeration), wireframe, fold_lines, ground")
+                  "view setting KEY=VALUE: print=plain|checks|stripes, breeze=0|1, breeze_mm, "
+                  "time (s), z (exaggeration), wireframe, fold_lines, ground (3D view); "
+                  "sweep=table1|table2|fig4 (the paper's case in the Sweep tab); "
+                  "theme=dark|light; scale (UI scale, percent)")
       ->type_name("KEY=VALUE");
   command.add_option("--tab", options.run.analysis_tab, "analysis tab shown at start")
       ->check(CLI::IsMember({"equations", "sweep", "map"}));

@@ -1,6 +1,7 @@
 #include "app/gui/gui_app.hpp"
 
 #include <chrono>
+#include <csignal>
 #include <filesystem>
 #include <memory>
 #include <optional>
@@ -55,6 +56,13 @@ void apply_view_settings(Explorer& explorer, const std::vector<std::string>& set
   }
 }
 
+// SIGTERM and SIGINT (a desktop's log-out, Ctrl+C in the terminal) close the window as its close
+// button does, so that the session is kept and --report still prints.
+volatile std::sig_atomic_t close_requested = 0;
+void request_close(int) {
+  close_requested = 1;
+}
+
 // After an input event ImGui needs a few frames to settle (hover, focus, a window's new size), and
 // the sleep has a timeout so that delayed things (tooltips, the text cursor, the session's
 // delayed save) still happen, at a rate that costs almost nothing.
@@ -67,7 +75,8 @@ void run_frames(Surface& surface, Renderer& renderer, Explorer& explorer, Script
                 FrameTimes& times, const std::string& screenshot_path) {
   int frames_since_wake = 0;
   for (int frame = 0; !explorer.quit_confirmed() && script.wants_frame(frame, explorer); ++frame) {
-    if (!surface.open()) {
+    if (!surface.open() || close_requested != 0) {
+      close_requested = 0;
       if (explorer.may_quit()) {
         break;
       }
@@ -160,6 +169,10 @@ int run(Surface& surface, const GuiRunOptions& options, bool interactive,
   }
   apply_view_settings(explorer, options.view_settings);
 
+  if (interactive) {
+    std::signal(SIGTERM, request_close);
+    std::signal(SIGINT, request_close);
+  }
   ScriptedRun script(options.frames, std::move(animation), std::move(player));
   FrameTimes times(options.report);
   run_frames(surface, *renderer, explorer, script, times, options.screenshot_path);

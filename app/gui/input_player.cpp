@@ -362,6 +362,15 @@ json explorer_state_json(Explorer& explorer) {
         spec ? spec->value(document.edited()) : std::optional<double>();
     parameters[field] = value ? json(*value) : json(nullptr);
   }
+  // Where each slider's handle is, so that a test driving the real window (xdotool) can press on
+  // it as a person would.
+  json sliders = json::object();
+  for (const auto& [key, place] : explorer.parameters_panel().slider_places()) {
+    const float y = 0.5f * (place.min.y + place.max.y);
+    sliders[key] = {{"handle", {handle_x(place, place.fraction), y}},
+                    {"left", place.min.x},
+                    {"right", place.max.x}};
+  }
   const std::optional<std::string> refused = document.refusal();
   const std::string& modal = document.modal_title();
   return {
@@ -378,6 +387,8 @@ json explorer_state_json(Explorer& explorer) {
       {"dirty", document.unsaved()},
       {"modal", modal.empty() ? json(nullptr) : json(modal)},
       {"undo_depth", document.undo_depth()},
+      {"sliders", sliders},
+      {"display", {ImGui::GetIO().DisplaySize.x, ImGui::GetIO().DisplaySize.y}},
   };
 }
 

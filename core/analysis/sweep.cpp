@@ -77,7 +77,8 @@ std::optional<std::string> check_axis(const SweepAxis& axis) {
   }
   if (axis.steps < 2 || axis.steps > kMaxSweepSteps) {
     return "steps = " + std::to_string(axis.steps) + " must be in [2, " +
-           std::to_string(kMaxSweepSteps) + "]: more would take too long";
+           std::to_string(kMaxSweepSteps) +
+           "]: a sweep needs its two ends, and more steps would take too long";
   }
   if (axis.logarithmic && !(axis.from > 0.0 && axis.to > 0.0)) {
     return "a logarithmic range of " + axis.key + " needs positive ends";

@@ -384,6 +384,12 @@ std::optional<std::string> apply_setting(Parameters& p, std::string_view key,
   }
   const std::optional<double> number = parse_number(value);
   if (!number) {
+    double ignored = 0.0;
+    const auto [ptr, ec] = std::from_chars(value.data(), value.data() + value.size(), ignored);
+    if (ec == std::errc::result_out_of_range && ptr == value.data() + value.size()) {
+      return std::string(key) + " = '" + detail::cut(value) +
+             "' is beyond the range of a double (magnitudes 2.2e-308 to 1.8e308)";
+    }
     return std::string(key) + " = '" + detail::cut(value) + "' is not a number";
   }
   switch (spec->kind) {

@@ -3,6 +3,7 @@
 #include <GLFW/glfw3.h>
 
 #include <string>
+#include <vector>
 
 #include "app/gui/surface.hpp"
 #include "backends/imgui_impl_glfw.h"
@@ -46,17 +47,29 @@ class WindowSurface final : public Surface {
     glfwTerminate();
   }
 
-  void init_imgui_platform() override { ImGui_ImplGlfw_InitForOpenGL(window_, true); }
+  void init_imgui_platform() override {
+    ImGui_ImplGlfw_InitForOpenGL(window_, true);
+    glfwSetWindowUserPointer(window_, this);
+    glfwSetKeyCallback(window_, on_key);
+  }
   void shutdown_imgui_platform() override { ImGui_ImplGlfw_Shutdown(); }
   bool open() const override { return !glfwWindowShouldClose(window_); }
   void keep_open() override { glfwSetWindowShouldClose(window_, GLFW_FALSE); }
 
   void new_frame() override {
+    release_keys_seen_down();
     glfwPollEvents();
     ImGui_ImplGlfw_NewFrame();
+    // The frame about to start sees these keys down; their releases go out before the next
+    // batch of events.
+    releases_due_ = std::move(deferred_releases_);
+    deferred_releases_.clear();
+    pressed_since_frame_ = false;
   }
-
-  void wait_events(double timeout_s) override { glfwWaitEventsTimeout(timeout_s); }
+  void wait_events(double timeout_s) override {
+    release_keys_seen_down();
+    glfwWaitEventsTimeout(timeout_s);
+  }
 
   FrameSize framebuffer_size() const override {
     FrameSize size;
@@ -70,7 +83,39 @@ class WindowSurface final : public Surface {
   void finish() override { glFinish(); }
 
  private:
+  struct KeyEvent {
+    int key;
+    int scancode;
+    int mods;
+  };
+
+  void release_keys_seen_down() {
+    for (const KeyEvent& release : releases_due_) {
+      ImGui_ImplGlfw_KeyCallback(window_, release.key, release.scancode, GLFW_RELEASE,
+                                 release.mods);
+    }
+    releases_due_.clear();
+  }
+
+  // ImGui 1.86 keeps only whether a key is down when a frame starts, so a chord pressed and
+  // released between two frames (a quick tap while the loop sleeps, or xdotool's) would never be
+  // seen: after a press, releases wait for the next frame, in order. A modifier held from an
+  // earlier frame counts too (Ctrl down, then = down, Ctrl up, = up in one batch).
+  static void on_key(GLFWwindow* window, int key, int scancode, int action, int mods) {
+    auto* self = static_cast<WindowSurface*>(glfwGetWindowUserPointer(window));
+    if (action == GLFW_PRESS) {
+      self->pressed_since_frame_ = true;
+    } else if (action == GLFW_RELEASE && self->pressed_since_frame_) {
+      self->deferred_releases_.push_back({key, scancode, mods});
+      return;
+    }
+    ImGui_ImplGlfw_KeyCallback(window, key, scancode, action, mods);
+  }
+
   GLFWwindow* window_ = nullptr;
+  bool pressed_since_frame_ = false;
+  std::vector<KeyEvent> deferred_releases_;
+  std::vector<KeyEvent> releases_due_;
 };
 
 }  // namespace

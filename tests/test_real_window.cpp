@@ -1,0 +1,154 @@
+// The explorer in a real X window, driven by xdotool as a person's mouse and keyboard would drive
+// it: the events go through the X server and GLFW, not through the playback that --play uses.
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "process.hpp"
+#include "temp_dir.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+using foldlab::testing::RunResult;
+using nlohmann::json;
+
+const std::string kExecutable = FOLDLAB_EXECUTABLE;
+const fs::path kPresetsDir = FOLDLAB_PRESETS_DIR;
+
+bool have(const char* program) {
+  return std::system(("command -v " + std::string(program) + " >/dev/null 2>&1").c_str()) == 0;
+}
+
+json read_json(const fs::path& path) {
+  std::ifstream in(path);
+  return json::parse(in);
+}
+
+std::string listing(const fs::path& folder) {
+  std::string names = folder.string() + ":";
+  std::error_code error;
+  for (const auto& entry : fs::directory_iterator(folder, error)) {
+    names += " " + entry.path().filename().string();
+  }
+  return names + "\n";
+}
+
+class RealWindowTest : public foldlab::testing::TempDirTest {
+ protected:
+  RealWindowTest() : TempDirTest("foldlab_real_window_") {}
+
+  void SetUp() override {
+    TempDirTest::SetUp();
+    if (!have("xvfb-run") || !have("xdotool")) {
+      GTEST_SKIP()
+          << "xvfb-run or xdotool is not installed (scripts/install-deps.sh installs both)";
+    }
+    fs::copy_file(kPresetsDir / "default.json", fabric());
+  }
+
+  fs::path fabric() const { return dir_ / "fabric.json"; }
+  fs::path config() const { return dir_ / "config"; }
+
+  foldlab::testing::Environment environment() const {
+    foldlab::testing::Environment env;
+    env.set = {{"XDG_CONFIG_HOME", config().string()}, {"HOME", dir_.string()}};
+    return env;
+  }
+
+  // The report of a few frames at this size: where the sliders' handles are. The window run
+  // below lays out the same, as both start from the same preset with no saved layout.
+  json locate(const std::string& size) {
+    const RunResult r = foldlab::testing::run_process(
+        "xvfb-run",
+        {"-a", "-s", "-screen 0 1920x1080x24", kExecutable, "gui", "--fresh", "--size", size,
+         "--preset", fabric().string(), "--frames", "3", "--report"},
+        dir_, environment());
+    EXPECT_EQ(r.exit_status, 0) << r.err;
+    return json::parse(r.out);
+  }
+
+  // Opens the explorer in a window on a fresh X server, runs the xdotool commands of `actions`
+  // (a shell fragment; $WID is the window), then asks it to close as a desktop would (SIGTERM)
+  // and returns its --report.
+  json run_window(const std::string& size, const std::string& actions) {
+    const fs::path report = dir_ / "report.json";
+    const fs::path errors = dir_ / "window-stderr.txt";
+    const std::string script =
+        "set -eu\n"
+        "\"$0\" gui --size \"$1\" --preset \"$2\" --report > \"$3\" 2> \"$4\" &\n"
+        "pid=$!\n"
+        "WID=$(xdotool search --sync --onlyvisible --name '^FoldLab$' | head -n1)\n"
+        // With no window manager nothing gives the window the keyboard; a person's click would.
+        "xdotool windowfocus --sync $WID\n"
+        "sleep 2\n" +
+        actions +
+        "\nsleep 1.5\n"  // the session is kept a second after the last change
+        "kill -TERM $pid\n"
+        "wait $pid\n";
+    const RunResult r = foldlab::testing::run_process(
+        "xvfb-run",
+        {"-a", "-s", "-screen 0 1920x1080x24", "bash", "-c", script, kExecutable, size,
+         fabric().string(), report.string(), errors.string()},
+        dir_, environment());
+    EXPECT_EQ(r.exit_status, 0) << r.err;
+    std::ifstream err_in(errors);
+    const std::string err((std::istreambuf_iterator<char>(err_in)), {});
+    EXPECT_EQ(err.find("internal error"), std::string::npos) << err;
+    return read_json(report);
+  }
+};
+
+// A designer drags w's handle 40 px to the right, saves with Ctrl+S under a new name (a preset
+// that is not the user's own is saved as a new one) and closes the window.
+TEST_F(RealWindowTest, DesignerDragsWeightSavesAndClosesKeepingTheValue) {
+  const json before = locate("1280x800");
+  const double w0 = before.at("parameters").at("w_N_per_mm2").get<double>();
+  const json handle = before.at("sliders").at("w").at("handle");
+  const int x = static_cast<int>(std::lround(handle[0].get<double>()));
+  const int y = static_cast<int>(std::lround(handle[1].get<double>()));
+  const std::string drag = "xdotool mousemove --window $WID " + std::to_string(x) + " " +
+                           std::to_string(y) +
+                           "\nsleep 0.3\nxdotool mousedown 1\n"
+                           "for i in 1 2 3 4 5 6 7 8; do xdotool mousemove_relative 5 0; sleep "
+                           "0.05; done\nsleep 0.3\nxdotool mouseup 1\nsleep 0.5\n"
+                           "xdotool key ctrl+s\nsleep 2\n"
+                           "xdotool key ctrl+a\nsleep 0.5\nxdotool key BackSpace\nsleep "
+                           "0.5\nxdotool type --delay 120 'Heavier poplin'\n"
+                           "xdotool key Return\n";
+  const json after = run_window("1280x800", drag);
+  const double w1 = after.at("parameters").at("w_N_per_mm2").get<double>();
+  // Heavier, by a drag's worth: the slider spans decades, 40 px is a fraction of one.
+  EXPECT_GT(w1, w0 * 1.05);
+  EXPECT_LT(w1, w0 * 10.0);
+  EXPECT_TRUE(after.at("refused").is_null()) << after.at("refused");
+  EXPECT_FALSE(after.at("dirty").get<bool>()) << after.dump();  // Ctrl+S saved it
+  // What the window showed is what was written: the preset file and the session.
+  const fs::path saved_file = config() / "foldlab" / "presets" / "heavier-poplin.json";
+  ASSERT_TRUE(fs::exists(saved_file)) << listing(saved_file.parent_path()) << after.dump();
+  EXPECT_EQ(read_json(saved_file).at("name"), "Heavier poplin");
+  const double saved = read_json(saved_file).at("fabric").at("weight_N_per_mm2").get<double>();
+  EXPECT_NEAR(saved, w1, 1e-9 * w1);
+  const json session = read_json(config() / "foldlab" / "session.json");
+  EXPECT_NEAR(session.at("current").at("fabric").at("weight_N_per_mm2").get<double>(), w1,
+              1e-9 * w1);
+}
+
+// A teacher enlarges the text twice for the back row and the window is made small, as on a
+// projector's 1024 x 640; the scale is remembered for the next lesson.
+TEST_F(RealWindowTest, TeacherScalesTheTextAndResizesTheWindow) {
+  const json after = run_window("1280x800",
+                                "xdotool key ctrl+plus\nsleep 1\nxdotool key ctrl+plus\n"
+                                "sleep 0.3\nxdotool windowsize --sync $WID 1024 640\nsleep 1\n");
+  EXPECT_EQ(after.at("display"), json::array({1024.0, 640.0}));
+  const json session = read_json(config() / "foldlab" / "session.json");
+  EXPECT_EQ(session.at("view").at("ui_scale_percent"), 120) << session.dump();
+}
+
+}  // namespace
