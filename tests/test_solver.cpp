@@ -298,10 +298,9 @@ struct FirstIterate {
 };
 
 TEST(IterationTrace, FirstPaperIterateMatchesAHandComputation) {
-  for (const FirstIterate& row : {FirstIterate{"paper-table1-h1400", 1.244987, 21, 1.245787,
-                                               0.928837, 2, 8},
-                                  FirstIterate{"paper-table1-h900", 1.319798, 17, 1.311902,
-                                               0.928681, 2, 5}}) {
+  for (const FirstIterate& row :
+       {FirstIterate{"paper-table1-h1400", 1.244987, 21, 1.245787, 0.928837, 2, 8},
+        FirstIterate{"paper-table1-h900", 1.319798, 17, 1.311902, 0.928681, 2, 5}}) {
     SCOPED_TRACE(row.preset);
     const IterationTrace trace = trace_iterations(preset_parameters(row.preset, Method::paper));
     ASSERT_EQ(trace.iterates.size(), static_cast<std::size_t>(row.iterates));
@@ -320,9 +319,9 @@ TEST(IterationTrace, FirstPaperIterateMatchesAHandComputation) {
 }
 
 TEST(IterationTrace, LastIterateIsWhatSolveReturnsAndTheCountFollowsTheStoppingRule) {
-  for (const char* name : {"paper-table1-h900", "paper-table1-h1400", "paper-table1-h2350",
-                           "paper-table2-w10", "paper-table2-w33", "paper-table2-w54",
-                           "paper-fig4"}) {
+  for (const char* name :
+       {"paper-table1-h900", "paper-table1-h1400", "paper-table1-h2350", "paper-table2-w10",
+        "paper-table2-w33", "paper-table2-w54", "paper-fig4"}) {
     for (const Method method : {Method::paper, Method::exact}) {
       SCOPED_TRACE(std::string(name) + " " + std::string(to_string(method)));
       const Parameters p = preset_parameters(name, method);

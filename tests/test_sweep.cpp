@@ -130,9 +130,9 @@ TEST(Breeze, SupportsStayAndTheOffsetIsBounded) {
 // K = 26.9 / (1 - 0.3²)). Before it, eq. 10 already gives one fold. A single fold's Q is
 // a_0/a_1 ~ 100 (the paper's guess a_0/a_n = 101): both stretches are bands, not a Q spike.
 TEST(Sweep, AStiffStretchIsABandAndNoSpikeInTheCurves) {
-  Parameters base = load_preset(std::filesystem::path(FOLDLAB_PRESETS_DIR) /
-                                "paper-table1-h1400.json")
-                        .parameters;
+  Parameters base =
+      load_preset(std::filesystem::path(FOLDLAB_PRESETS_DIR) / "paper-table1-h1400.json")
+          .parameters;
   const SweepAxis axis{"t", 0.1, 1.5, 141, false};  // 0.01 mm apart
   const std::vector<SweepPoint> points = sweep(base, axis);
   double wrinkled_max_Q = 0.0;  // over the points with a progression of folds (n >= 2)

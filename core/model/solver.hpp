@@ -51,11 +51,11 @@ Solution solve(const Parameters& p);
 
 // One iterate of a method, so that a teacher (or the CLI) can follow the iteration step by step.
 struct Iterate {
-  int n = 0;                    // paper: eq. 10 at the a_n this iterate starts from; exact: n visited
-  double Q = 1.0;               // (a_0/a_n)^(1/n)
-  double a_n_mm = 0.0;          // paper: the a_n this iterate starts from; exact: eq. 9's root for n
-  double z_max_mm = 0.0;        // eq. 9's root for this n and Q
-  double length_ratio = 0.0;    // L'/L; paper: eq. 8 by the model's quadrature, exact: closed form
+  int n = 0;                  // paper: eq. 10 at the a_n this iterate starts from; exact: n visited
+  double Q = 1.0;             // (a_0/a_n)^(1/n)
+  double a_n_mm = 0.0;        // paper: the a_n this iterate starts from; exact: eq. 9's root for n
+  double z_max_mm = 0.0;      // eq. 9's root for this n and Q
+  double length_ratio = 0.0;  // L'/L; paper: eq. 8 by the model's quadrature, exact: closed form
   double count_argument = 0.0;  // log(a_0/a_n) / log Q7, whose Int[] is eq. 10; 0 without Q7
   int next_n = 0;               // the n of the next iterate; for the last one, its own n
 };
