@@ -58,6 +58,13 @@ echo "docs.sh: explorer pictures" >&2
   --out docs/explorer-table1-h2350-exact.png
 "$foldlab" render --size "$size" --view sweep=table1 --tab sweep --out docs/explorer-sweep-table1.png
 "$foldlab" render --size "$size" --tab map --out docs/explorer-regime-map.png
+# The Method tab for teachers: the exact method's staircase from the paper's start to its fixed
+# point, clicked through as a person would.
+cat >"$work/method.json" <<EOF
+{"steps": [{"click": "Method"}, {"frames": 2}, {"click": "exact method"}, {"frames": 2},
+  {"click": "Run to end"}, {"frames": 2}, {"screenshot": "$root/docs/explorer-method-exact.png"}]}
+EOF
+"$foldlab" render --size "$size" --preset presets/paper-table1-h2350.json --play "$work/method.json"
 # The sizes a class sees: a laptop at the default look, a projector with the light theme at 150 %.
 "$foldlab" render --size 1280x800 --out docs/explorer-1280x800.png
 "$foldlab" render --size 1920x1080 --view theme=light --view scale=150 \

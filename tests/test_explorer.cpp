@@ -691,5 +691,99 @@ TEST_F(ExplorerTest, AMalformedScriptNamesEveryProblem) {
   }
 }
 
+// The Method tab on Table 1's h = 1400 mm row (paper method). By hand: s = 0.02147 gives
+// Q7 = 1.24499; the start a_0/a_n = 101 gives n = Int[log 101 / log Q7] = Int[21.06] = 21 and
+// L'/L = 0.92884 (Simpson, 20 intervals), 7.12 % short; the next iterate's L'/L = 1.00229 is
+// within 5 %, so the iteration stops at its second iterate.
+TEST_F(ExplorerTest, TheMethodTabStepsThroughThePapersIteration) {
+  open_explorer("method");
+  std::string text = frame();
+  EXPECT_NE(text.find("iterate 1 of 2"), std::string::npos) << text;
+  EXPECT_NE(text.find("= 101, n = Int[21.06"), std::string::npos) << text;
+  // (The test's font draws ′, − and ≤ as "?": the checks read around them.)
+  EXPECT_NE(text.find("= 7.12 % > 5 %: iterate again."), std::string::npos) << text;
+  EXPECT_NE(text.find("0.9288"), std::string::npos) << "L′/L in the table";
+  click("Step");
+  text = frame();
+  EXPECT_EQ(explorer_->analysis().method().shown(), 2);
+  EXPECT_NE(text.find("iterate 2 of 2"), std::string::npos) << text;
+  EXPECT_NE(text.find("= 0.229 % ? 5 %: stop. This is the answer."), std::string::npos) << text;
+  click("Step");  // disabled at the end: nothing moves
+  EXPECT_EQ(explorer_->analysis().method().shown(), 2);
+  click("Back");
+  EXPECT_EQ(explorer_->analysis().method().shown(), 1);
+  click("Run to end");
+  EXPECT_EQ(explorer_->analysis().method().shown(), 2);
+  click("Reset");
+  EXPECT_EQ(explorer_->analysis().method().shown(), 1);
+  EXPECT_EQ(shown().model.method, Method::paper) << "viewing a method edits nothing";
+}
+
+// The exact method from the same start, n = 21: eqs. 8 and 9 at n = 21 give
+// Int[log(a_0/a_n(21)) / log Q7] = 8, and n = 8 maps to itself.
+TEST_F(ExplorerTest, TheMethodTabShowsTheExactMethodsStaircaseToItsFixedPoint) {
+  open_explorer("method");
+  click("exact method");
+  std::string text = frame();
+  EXPECT_EQ(explorer_->analysis().method().method(), Method::exact);
+  EXPECT_EQ(shown().model.method, Method::paper);
+  EXPECT_NE(text.find("n = 21:"), std::string::npos) << text;
+  EXPECT_NE(text.find("= Int[8.18"), std::string::npos) << text;
+  EXPECT_NE(text.find("] = 8 is the next n."), std::string::npos) << text;
+  EXPECT_NE(text.find("n 21 ? 8: iterate again."), std::string::npos) << text;
+  click("Run to end");
+  text = frame();
+  EXPECT_NE(text.find("n = 8 maps to itself: the fixed point."), std::string::npos) << text;
+  EXPECT_EQ(explorer_->analysis().method().trace().solution.n, 8);
+}
+
+// At t = 0.9 mm, Table 1's cloth is stiff (s >= 1) below h = K E t³ / (w l²) =
+// 29.56 × 165 × 0.9³ / (1.5e-6 × 1300²) = 1402.6 mm (by hand). The sweep over h shows that
+// stretch as a named band, and Q's curve holds no single-fold value (a_0/a_1 = 101) there.
+TEST_F(ExplorerTest, TheSweepShowsAStiffStretchAsABandNotASpike) {
+  open_explorer("sweep");
+  ASSERT_EQ(explorer_->set_input("t", 0.9), std::nullopt);
+  frame();
+  const std::string text = frame();
+  const SweepPanel& sweep_panel = explorer_->analysis().sweep();
+  ASSERT_EQ(sweep_panel.key(), "h");
+  ASSERT_FALSE(sweep_panel.bands().empty());
+  const RegimeBand& stiff = sweep_panel.bands().front();
+  EXPECT_EQ(stiff.name, "stiff");
+  EXPECT_DOUBLE_EQ(stiff.from, 500.0);
+  EXPECT_NEAR(stiff.to, 1402.6, 2500.0 / 199.0);  // within one step of the sweep
+  EXPECT_NE(text.find("stiff"), std::string::npos) << "the band's name is drawn\n" << text;
+  // The largest Q with two or more folds, from the same sweep solved here.
+  double wrinkled_max_Q = 0.0;
+  double stiff_max_Q = 0.0;
+  for (const SweepPoint& p : sweep(shown(), SweepAxis{"h", 500.0, 3000.0, 200, false})) {
+    if (p.regime == Regime::wrinkled && p.n >= 2) {
+      wrinkled_max_Q = std::max(wrinkled_max_Q, p.Q);
+    } else if (p.regime == Regime::stiff) {
+      stiff_max_Q = std::max(stiff_max_Q, p.Q);
+    }
+  }
+  EXPECT_NEAR(stiff_max_Q, 101.0, 1e-9) << "the spike the Q curve used to show";
+  ASSERT_GT(wrinkled_max_Q, 1.0);
+  for (double Q : sweep_panel.curves().Q) {
+    EXPECT_TRUE(std::isnan(Q) || Q <= wrinkled_max_Q) << Q;
+  }
+}
+
+// The paper's Table 1 beside the model: the printed n, Q, z_max of each row and the model's at
+// the same h (the paper's form of eq. 7 in these presets gives n = 5, 8, 14).
+TEST_F(ExplorerTest, TheSweepListsThePapersTableBesideTheModel) {
+  ASSERT_EQ(explorer_->set_view("sweep", "table1"), std::nullopt);
+  frame();
+  frame();
+  click("Paper vs model (table)");
+  const std::string text = frame();
+  for (const char* printed :
+       {"n paper", "n model", "1.31", "1.29", "1.34", "54 mm", "48 mm", "60 mm"}) {
+    EXPECT_NE(text.find(printed), std::string::npos) << printed << "\n" << text;
+  }
+  EXPECT_NE(text.find("43.4 mm"), std::string::npos) << "the model's z_max at h = 1400\n" << text;
+}
+
 }  // namespace
 }  // namespace foldlab::gui

@@ -283,5 +283,114 @@ TEST(Trends, MoreWrinklesWithHeightAndWeightFewerWithStiffness) {
   EXPECT_LT(soft.Q, stiff.Q);
 }
 
+// The iteration a teacher steps through. The numbers of the first paper iterate are worked by hand
+// (a Python check of the same steps): a_0/a_n = 1.01 h / 0.01 h = 101, so n = Int[log 101 / log Q7]
+// and Q = 101^(1/n); the a-differences then add up to a_0 - a_n = h, so eq. 9 gives z_max = 0, and
+// L' is Simpson's rule (20 intervals) over the straight-sagging edge.
+struct FirstIterate {
+  const char* preset;
+  double Q7;
+  int n;
+  double Q;
+  double length_ratio;
+  int iterates;  // the same hand iteration: |L'/L - 1| first drops below 5 % at this iterate
+  int last_n;
+};
+
+TEST(IterationTrace, FirstPaperIterateMatchesAHandComputation) {
+  for (const FirstIterate& row :
+       {FirstIterate{"paper-table1-h1400", 1.244987, 21, 1.245787, 0.928837, 2, 8},
+        FirstIterate{"paper-table1-h900", 1.319798, 17, 1.311902, 0.928681, 2, 5}}) {
+    SCOPED_TRACE(row.preset);
+    const IterationTrace trace = trace_iterations(preset_parameters(row.preset, Method::paper));
+    ASSERT_EQ(trace.iterates.size(), static_cast<std::size_t>(row.iterates));
+    const Iterate& first = trace.iterates.front();
+    ASSERT_TRUE(trace.solution.Q7);
+    EXPECT_NEAR(*trace.solution.Q7, row.Q7, 1e-6);
+    EXPECT_EQ(first.n, row.n);
+    EXPECT_NEAR(first.Q, row.Q, 1e-6);
+    EXPECT_NEAR(first.a_n_mm, 0.01 * trace.solution.a_mm.front() / 1.01, 1e-9);
+    EXPECT_NEAR(first.z_max_mm, 0.0, 1e-6);
+    EXPECT_NEAR(first.length_ratio, row.length_ratio, 1e-6);
+    EXPECT_NEAR(first.count_argument, std::log(101.0) / std::log(row.Q7), 1e-4);
+    EXPECT_EQ(first.next_n, trace.iterates[1].n);
+    EXPECT_EQ(trace.iterates.back().n, row.last_n);
+  }
+}
+
+TEST(IterationTrace, LastIterateIsWhatSolveReturnsAndTheCountFollowsTheStoppingRule) {
+  for (const char* name :
+       {"paper-table1-h900", "paper-table1-h1400", "paper-table1-h2350", "paper-table2-w10",
+        "paper-table2-w33", "paper-table2-w54", "paper-fig4"}) {
+    for (const Method method : {Method::paper, Method::exact}) {
+      SCOPED_TRACE(std::string(name) + " " + std::string(to_string(method)));
+      const Parameters p = preset_parameters(name, method);
+      const IterationTrace trace = trace_iterations(p);
+      const Solution direct = solve(p);
+      ASSERT_FALSE(trace.iterates.empty());
+      ASSERT_TRUE(direct.n_cycle.empty()) << "the presets settle on one n";
+      EXPECT_EQ(trace.iterates.size(), static_cast<std::size_t>(direct.iterations));
+      const Iterate& last = trace.iterates.back();
+      EXPECT_EQ(last.n, direct.n);
+      EXPECT_EQ(last.Q, direct.Q);
+      EXPECT_EQ(last.z_max_mm, direct.z_max_mm);
+      EXPECT_EQ(last.a_n_mm, direct.a_mm.back());
+      EXPECT_EQ(trace.solution.n, direct.n);
+      EXPECT_EQ(trace.solution.z_max_mm, direct.z_max_mm);
+      for (std::size_t k = 0; k + 1 < trace.iterates.size(); ++k) {
+        EXPECT_EQ(trace.iterates[k].next_n, trace.iterates[k + 1].n) << "iterate " << k;
+      }
+      if (method == Method::paper) {
+        // Stop at the first iterate within 5 % of L, not before.
+        for (std::size_t k = 0; k + 1 < trace.iterates.size(); ++k) {
+          EXPECT_GT(std::abs(trace.iterates[k].length_ratio - 1.0), 0.05) << "iterate " << k;
+        }
+        EXPECT_LE(std::abs(last.length_ratio - 1.0), 0.05);
+      } else {
+        // Eq. 8 holds at every visit; the fixed point maps n to itself, and no n repeats before.
+        for (const Iterate& it : trace.iterates) {
+          EXPECT_NEAR(it.length_ratio, 1.0, 1e-10);
+        }
+        EXPECT_EQ(last.next_n, last.n);
+        for (std::size_t k = 0; k + 1 < trace.iterates.size(); ++k) {
+          EXPECT_NE(trace.iterates[k].n, last.n);
+        }
+      }
+    }
+  }
+}
+
+TEST(IterationTrace, ExactMethodStartsWhereThePaperDoesAndItsMapAgreesWithTheVisits) {
+  const Parameters p = preset_parameters("paper-table1-h1400", Method::exact);
+  const IterationTrace trace = trace_iterations(p);
+  ASSERT_GE(trace.iterates.size(), 2u);
+  // The paper's initial guess a_0/a_n = 101: n = Int[log 101 / log 1.244987] = Int[21.06] = 21.
+  EXPECT_EQ(trace.iterates.front().n, 21);
+  const Iterate& first = trace.iterates.front();
+  // Its a_n and z_max meet eq. 9 (summed here) and eq. 8's circle a_n² + z² = A(L, l)².
+  double fibre = 0.0;
+  for (int i = 1; i <= first.n; ++i) {
+    const double upper = 1.01 * 1400.0 / std::pow(first.Q, i - 1);
+    const double lower = upper / first.Q;
+    fibre += std::hypot(upper - lower, 2.0 * first.z_max_mm);
+  }
+  EXPECT_NEAR(fibre / 1400.0, 1.0, 1e-10);
+  EXPECT_NEAR(std::hypot(first.a_n_mm, first.z_max_mm), trace.solution.sag_amplitude_mm, 1e-9);
+  EXPECT_EQ(first.next_n, static_cast<int>(std::floor(first.count_argument + 0.5)));
+  const std::vector<CountMapPoint> map = count_map(p, 1, 25);
+  ASSERT_EQ(map.size(), 25u);
+  for (const Iterate& it : trace.iterates) {
+    const CountMapPoint& point = map[static_cast<std::size_t>(it.n - 1)];
+    EXPECT_EQ(point.n, it.n);
+    EXPECT_EQ(point.count, it.next_n);
+    EXPECT_DOUBLE_EQ(point.argument, it.count_argument);
+  }
+  // No map where the method does not iterate: d = 0 leaves no slack.
+  Parameters flat = p;
+  flat.hanging.support_displacement_mm = 0.0;
+  EXPECT_TRUE(count_map(flat, 1, 25).empty());
+  EXPECT_TRUE(trace_iterations(flat).iterates.empty());
+}
+
 }  // namespace
 }  // namespace foldlab

@@ -1,5 +1,7 @@
 // Sweeps and regime maps are solves at the swept values; the breeze leaves the supports alone.
+#include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <optional>
 #include <string>
 
@@ -7,6 +9,7 @@
 
 #include "core/analysis/sweep.hpp"
 #include "core/geometry/geometry.hpp"
+#include "core/io/preset.hpp"
 
 namespace foldlab {
 namespace {
@@ -120,6 +123,68 @@ TEST(Breeze, SupportsStayAndTheOffsetIsBounded) {
   // It moves: two instants give two offsets.
   EXPECT_NE(breeze_offset({0, 1000, 0}, 1414, 80, 0.0f),
             breeze_offset({0, 1000, 0}, 1414, 80, 0.3f));
+}
+
+// Thicker cloth on Table 1's case turns stiff where s = K E t³ / (w h l²) reaches 1, i.e. at
+// t = (w h l² / (K E))^(1/3) = (1.5e-6 × 1400 × 1300² / (29.56 × 165))^(1/3) = 0.901 mm (by hand,
+// K = 26.9 / (1 - 0.3²)). Before it, eq. 10 already gives one fold. A single fold's Q is
+// a_0/a_1 ~ 100 (the paper's guess a_0/a_n = 101): both stretches are bands, not a Q spike.
+TEST(Sweep, AStiffStretchIsABandAndNoSpikeInTheCurves) {
+  Parameters base =
+      load_preset(std::filesystem::path(FOLDLAB_PRESETS_DIR) / "paper-table1-h1400.json")
+          .parameters;
+  const SweepAxis axis{"t", 0.1, 1.5, 141, false};  // 0.01 mm apart
+  const std::vector<SweepPoint> points = sweep(base, axis);
+  double wrinkled_max_Q = 0.0;  // over the points with a progression of folds (n >= 2)
+  double single_fold_max_Q = 0.0;
+  for (const SweepPoint& p : points) {
+    ASSERT_TRUE(p.valid);
+    double& max_Q = p.regime == Regime::wrinkled && p.n >= 2 ? wrinkled_max_Q : single_fold_max_Q;
+    max_Q = std::max(max_Q, p.Q);
+  }
+  ASSERT_GT(single_fold_max_Q, 10.0 * wrinkled_max_Q) << "the spike the curves used to show";
+
+  const std::vector<RegimeBand> bands = regime_bands(points, false);
+  ASSERT_EQ(bands.size(), 2u);
+  EXPECT_EQ(bands[0].name, "one fold");
+  EXPECT_FALSE(bands[0].breaks_curve) << "n = 1 and its z_max stay on the curve";
+  EXPECT_DOUBLE_EQ(bands[0].to, bands[1].from);
+  EXPECT_EQ(bands[1].regime, Regime::stiff);
+  EXPECT_EQ(bands[1].name, "stiff");
+  EXPECT_TRUE(bands[1].breaks_curve);
+  EXPECT_NEAR(bands[1].from, 0.901, 0.01);
+  EXPECT_DOUBLE_EQ(bands[1].to, 1.5);
+
+  const SweepCurves curves = sweep_curves(points);
+  ASSERT_EQ(curves.Q.size(), points.size());
+  int gaps = 0;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    if (std::isnan(curves.Q[i])) {
+      ++gaps;
+      EXPECT_GE(points[i].value, bands[0].from);
+      EXPECT_EQ(std::isnan(curves.n[i]), points[i].value > bands[1].from);
+    } else {
+      EXPECT_LE(curves.Q[i], wrinkled_max_Q);
+      EXPECT_LT(points[i].value, bands[0].from);
+    }
+  }
+  EXPECT_GT(gaps, static_cast<int>(std::round((1.5 - 0.901) / 0.01)));
+}
+
+TEST(Sweep, RefusedAndOtherRegimesMakeTheirOwnBands) {
+  Parameters base;
+  base.hanging.length_mm = 1400.0;
+  // d from 0 (no slack) through wrinkled to d >= L/2 (refused); half-way edges between points.
+  const std::vector<SweepPoint> points = sweep(base, SweepAxis{"d", 0.0, 800.0, 9, false});
+  const std::vector<RegimeBand> bands = regime_bands(points, false);
+  ASSERT_EQ(bands.size(), 2u);
+  EXPECT_EQ(bands[0].name, "no slack");
+  EXPECT_DOUBLE_EQ(bands[0].from, 0.0);
+  EXPECT_DOUBLE_EQ(bands[0].to, 50.0);
+  EXPECT_EQ(bands[1].name, "refused");
+  EXPECT_FALSE(bands[1].valid);
+  EXPECT_DOUBLE_EQ(bands[1].from, 650.0);
+  EXPECT_DOUBLE_EQ(bands[1].to, 800.0);
 }
 
 }  // namespace

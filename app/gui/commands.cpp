@@ -42,7 +42,7 @@ void add_common_gui_options(CLI::App& command, GuiCommandOptions& options) {
                   "theme=dark|light; scale (UI scale, percent)")
       ->type_name("KEY=VALUE");
   command.add_option("--tab", options.run.analysis_tab, "analysis tab shown at start")
-      ->check(CLI::IsMember({"equations", "sweep", "map"}));
+      ->check(CLI::IsMember({"equations", "method", "sweep", "map"}));
 }
 
 void add_play_option(CLI::App& command, GuiRunOptions& options) {

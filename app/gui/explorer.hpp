@@ -29,8 +29,8 @@ struct ExplorerOptions {
   std::filesystem::path presets_dir;       // shipped presets (may be empty)
   std::filesystem::path user_presets_dir;  // "Save as..." writes here
   std::filesystem::path session_file;      // empty: nothing is restored or saved
-  std::string analysis_tab;                // "equations", "sweep" or "map": selected at start
-  std::filesystem::path font_file;         // empty: ImGui's built-in font (no Greek)
+  std::string analysis_tab;         // "equations", "method", "sweep" or "map": selected at start
+  std::filesystem::path font_file;  // empty: ImGui's built-in font (no Greek)
 };
 
 class Explorer {

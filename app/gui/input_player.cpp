@@ -349,6 +349,21 @@ float handle_x(const SliderPlace& place, double fraction) {
          static_cast<float>(fraction) * (slider_px - grab_px);
 }
 
+// The Method tab's stepper: how far it is and the iterate it shows.
+json method_step_json(const MethodPanel& stepper) {
+  if (stepper.iterates() == 0) {
+    return {{"method", to_string(stepper.method())}, {"shown", 0}, {"of", 0}};
+  }
+  const Iterate& it = stepper.trace().iterates[static_cast<std::size_t>(stepper.shown() - 1)];
+  return {{"method", to_string(stepper.method())},
+          {"shown", stepper.shown()},
+          {"of", stepper.iterates()},
+          {"n", it.n},
+          {"Q", it.Q},
+          {"z_max_mm", it.z_max_mm},
+          {"length_ratio", it.length_ratio}};
+}
+
 }  // namespace
 
 json explorer_state_json(Explorer& explorer) {
@@ -389,6 +404,7 @@ json explorer_state_json(Explorer& explorer) {
       {"undo_depth", document.undo_depth()},
       {"sliders", sliders},
       {"display", {ImGui::GetIO().DisplaySize.x, ImGui::GetIO().DisplaySize.y}},
+      {"method_step", method_step_json(explorer.analysis().method())},
   };
 }
 

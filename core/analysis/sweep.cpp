@@ -120,6 +120,89 @@ std::vector<SweepPoint> sweep(const Parameters& base, const SweepAxis& axis) {
   return points;
 }
 
+namespace {
+
+// n and z_max join the curve wherever there are folds to count; Q only where there are two or
+// more: a single fold's "ratio" is a_0/a_1, ~100 at the paper's initial guess, no progression.
+bool on_curve(const SweepPoint& p) {
+  return p.valid && (p.regime == Regime::wrinkled || p.regime == Regime::n_cycle);
+}
+bool Q_on_curve(const SweepPoint& p) {
+  return on_curve(p) && p.n >= 2;
+}
+
+bool plain(const SweepPoint& p) {
+  return p.valid && p.regime == Regime::wrinkled && p.n >= 2;
+}
+
+const char* band_name(const SweepPoint& p) {
+  if (!p.valid) {
+    return "refused";
+  }
+  switch (p.regime) {
+    case Regime::wrinkled:
+      return p.n < 2 ? "one fold" : "";
+    case Regime::no_slack:
+      return "no slack";
+    case Regime::stiff:
+      return "stiff";
+    case Regime::short_cloth:
+      return "short cloth";
+    case Regime::negligible_slack:
+      return "negligible slack";
+    case Regime::n_cycle:
+      return "n cycles";
+  }
+  return "";
+}
+
+double between(double a, double b, bool logarithmic) {
+  return logarithmic && a > 0.0 && b > 0.0 ? std::sqrt(a * b) : 0.5 * (a + b);
+}
+
+}  // namespace
+
+std::vector<RegimeBand> regime_bands(std::span<const SweepPoint> points, bool logarithmic) {
+  std::vector<RegimeBand> bands;
+  const std::size_t count = points.size();
+  for (std::size_t i = 0; i < count;) {
+    const SweepPoint& first = points[i];
+    if (plain(first)) {
+      ++i;
+      continue;
+    }
+    const std::string_view name = band_name(first);
+    std::size_t end = i + 1;
+    while (end < count && !plain(points[end]) && band_name(points[end]) == name) {
+      ++end;
+    }
+    RegimeBand band;
+    band.from = i == 0 ? first.value : between(points[i - 1].value, first.value, logarithmic);
+    band.to = end == count ? points[end - 1].value
+                           : between(points[end - 1].value, points[end].value, logarithmic);
+    band.valid = first.valid;
+    band.regime = first.regime;
+    band.breaks_curve = !on_curve(first);
+    band.name = name;
+    bands.push_back(std::move(band));
+    i = end;
+  }
+  return bands;
+}
+
+SweepCurves sweep_curves(std::span<const SweepPoint> points) {
+  SweepCurves out;
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  for (const SweepPoint& p : points) {
+    const bool shown = on_curve(p);
+    out.x.push_back(p.value);
+    out.n.push_back(shown ? p.n : nan);
+    out.Q.push_back(Q_on_curve(p) ? p.Q : nan);
+    out.z_max_mm.push_back(shown ? p.z_max_mm : nan);
+  }
+  return out;
+}
+
 void map_rows(const Parameters& base, const SweepAxis& x, const SweepAxis& y, int row_begin,
               int row_end, std::span<MapCell> out) {
   Parameters p = base;

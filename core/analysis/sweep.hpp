@@ -45,6 +45,27 @@ struct SweepPoint {
 
 std::vector<SweepPoint> sweep(const Parameters& base, const SweepAxis& axis);
 
+// A run of sweep points outside the plain wrinkled regime with two or more folds, shown as a
+// shaded band along the x axis. Its Q says nothing a curve should join: with one fold (stiff, or
+// n = 1) Q is that fold's a_0/a_1, ~100, and would flatten every wrinkled value.
+struct RegimeBand {
+  double from = 0.0;  // half-way to the neighbouring points (geometric on a log axis)
+  double to = 0.0;
+  bool valid = true;  // false: the inputs are refused (validate fails), nothing was solved
+  Regime regime = Regime::no_slack;
+  // n and z_max break here; "one fold" and "n cycles" keep them (Q breaks wherever n < 2).
+  bool breaks_curve = true;
+  std::string name;  // short, for the band's label: "stiff", "one fold", "refused", ...
+};
+std::vector<RegimeBand> regime_bands(std::span<const SweepPoint> points, bool logarithmic);
+
+// n, Q and z_max per point for the curves, NaN (a gap) where a band breaks the curve and Q's
+// gap wherever n < 2.
+struct SweepCurves {
+  std::vector<double> x, n, Q, z_max_mm;
+};
+SweepCurves sweep_curves(std::span<const SweepPoint> points);
+
 struct MapCell {
   bool valid = false;
   int n = 0;

@@ -103,7 +103,13 @@ Solution start_solution(const Parameters& p, const Setup& u) {
   return out;
 }
 
-Solution solve_paper(const Parameters& p) {
+// log(a_0/a_n) / log Q7, the argument of eq. 10's Int[]; 0 without Q7.
+double count_argument(const Setup& u, double an) {
+  return u.Q7 ? std::log(u.a0 / an) / std::log(*u.Q7) : 0.0;
+}
+
+// `trace`, when given, receives every iterate; the loop computes nothing more without it.
+Solution solve_paper(const Parameters& p, std::vector<Iterate>* trace = nullptr) {
   const Setup u = make_setup(p);
   Solution out = start_solution(p, u);
   if (settle_degenerate(out, u)) {
@@ -126,6 +132,12 @@ Solution solve_paper(const Parameters& p) {
         p.model.length_quadrature == LengthQuadrature::simpson
             ? upper_edge_length_simpson(amplitude, u.l, p.model.simpson_intervals)
             : upper_edge_length_trapezoid(amplitude, u.l, p.model.simpson_intervals);
+    if (trace != nullptr) {
+      if (!trace->empty()) {
+        trace->back().next_n = n;
+      }
+      trace->push_back({n, Q, an, z, length / u.L, count_argument(u, an), n});
+    }
     if (std::abs(length / u.L - 1.0) <= p.model.length_tolerance) {
       converged = true;
       break;
@@ -346,11 +358,23 @@ class CountRoot {
   UpperFold root_{};
 };
 
-Solution solve_exact(const Parameters& p) {
+Setup make_exact_setup(const Parameters& p) {
   Setup u = make_setup(p);
   if (u.Q7) {
     u.log_Q7 = std::log(*u.Q7);
   }
+  return u;
+}
+
+// The iterate of the exact method at n, whose a_n and z_max are the root of eqs. 8 and 9.
+Iterate exact_iterate(const Setup& u, int n, const UpperFold& f, int next) {
+  const double Q = std::pow(u.a0 / f.an, 1.0 / n);
+  const double length = upper_edge_length_closed_form(std::hypot(f.an, f.z), u.l);
+  return {n, Q, f.an, f.z, length / u.L, count_argument(u, f.an), next};
+}
+
+Solution solve_exact(const Parameters& p, std::vector<Iterate>* trace = nullptr) {
+  const Setup u = make_exact_setup(p);
   Solution out = start_solution(p, u);
   if (settle_degenerate(out, u)) {
     return out;
@@ -360,6 +384,9 @@ Solution solve_exact(const Parameters& p) {
     out.iterations = 1;
     const UpperFold f = CountRoot(u, 1).solve();
     finish(out, u, 1, f.an, f.z);
+    if (trace != nullptr) {
+      trace->push_back(exact_iterate(u, 1, f, 1));
+    }
     return out;
   }
   // Fixed point of n -> Int[log(a_0/a_n(n)) / log Q7], starting from the paper's initial guess.
@@ -378,6 +405,10 @@ Solution solve_exact(const Parameters& p) {
     if (next > kMaxWrinkles) {
       capped = true;
       next = kMaxWrinkles;
+    }
+    if (trace != nullptr) {
+      // Solving after count() only narrows the bracket count() left: the reported root is the same.
+      trace->push_back(exact_iterate(u, n, last->solve(), next));
     }
     for (int i = 0; i < visits && !settled; ++i) {
       if (visited[static_cast<std::size_t>(i)] != next) {
@@ -418,6 +449,28 @@ using detail::shortest_number;
 
 Solution solve(const Parameters& p) {
   return p.model.method == Method::paper ? solve_paper(p) : solve_exact(p);
+}
+
+IterationTrace trace_iterations(const Parameters& p) {
+  IterationTrace trace;
+  trace.solution = p.model.method == Method::paper ? solve_paper(p, &trace.iterates)
+                                                   : solve_exact(p, &trace.iterates);
+  return trace;
+}
+
+std::vector<CountMapPoint> count_map(const Parameters& p, int n_from, int n_to) {
+  std::vector<CountMapPoint> out;
+  const Setup u = make_exact_setup(p);
+  Solution probe;
+  if (!u.Q7 || settle_degenerate(probe, u)) {
+    return out;
+  }
+  for (int n = std::max(1, n_from); n <= std::min(n_to, kMaxWrinkles); ++n) {
+    CountRoot root(u, n);
+    const int count = root.count();
+    out.push_back({n, count_argument(u, root.solve().an), count});
+  }
+  return out;
 }
 
 std::string_view to_string(Regime r) {

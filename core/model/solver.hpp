@@ -49,6 +49,35 @@ struct Solution {
 // Precondition: validate(p) is empty. Never throws for valid input.
 Solution solve(const Parameters& p);
 
+// One iterate of a method, so that a teacher (or the CLI) can follow the iteration step by step.
+struct Iterate {
+  int n = 0;                  // paper: eq. 10 at the a_n this iterate starts from; exact: n visited
+  double Q = 1.0;             // (a_0/a_n)^(1/n)
+  double a_n_mm = 0.0;        // paper: the a_n this iterate starts from; exact: eq. 9's root for n
+  double z_max_mm = 0.0;      // eq. 9's root for this n and Q
+  double length_ratio = 0.0;  // L'/L; paper: eq. 8 by the model's quadrature, exact: closed form
+  double count_argument = 0.0;  // log(a_0/a_n) / log Q7, whose Int[] is eq. 10; 0 without Q7
+  int next_n = 0;               // the n of the next iterate; for the last one, its own n
+};
+
+// Every iterate solve() goes through, in order, and what solve() returns. No iterates for the
+// regimes decided before any iteration (no slack, short cloth, negligible slack).
+struct IterationTrace {
+  std::vector<Iterate> iterates;
+  Solution solution;
+};
+IterationTrace trace_iterations(const Parameters& p);
+
+// The exact method's fixed-point map at each n in [n_from, n_to]: `argument` is
+// log(a_0/a_n(n)) / log Q7 with a_n(n) the root of eqs. 8 and 9 for n, `count` its Int[] (the next
+// n). Empty when the exact method does not iterate (no Q7, or a regime decided before).
+struct CountMapPoint {
+  int n = 0;
+  double argument = 0.0;
+  int count = 0;
+};
+std::vector<CountMapPoint> count_map(const Parameters& p, int n_from, int n_to);
+
 // One line for the user; empty for the plain wrinkled regime.
 std::string describe(const Solution& s, const Parameters& p);
 

@@ -35,12 +35,19 @@ void AnalysisPanel::draw(Document& document, Renderer& renderer) {
                                                     : ImGuiTabItemFlags_None;
     };
     const ImGuiTabItemFlags equations_flags = flags_for("equations");
+    const ImGuiTabItemFlags method_flags = flags_for("method");
     const ImGuiTabItemFlags sweep_flags = flags_for("sweep");
     const ImGuiTabItemFlags map_flags = flags_for("map");
     tab_selected_ = true;
     if (ImGui::BeginTabItem("Equations", nullptr, equations_flags)) {
       ImGui::BeginChild("equations");
       equations_.draw(document);
+      ImGui::EndChild();
+      ImGui::EndTabItem();
+    }
+    if (ImGui::BeginTabItem("Method", nullptr, method_flags)) {
+      ImGui::BeginChild("method");
+      method_.draw(document);
       ImGui::EndChild();
       ImGui::EndTabItem();
     }

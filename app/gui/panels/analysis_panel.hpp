@@ -1,11 +1,13 @@
-// The Analysis panel: three tabs, of which only the selected one draws (so a hidden sweep or map
-// computes nothing): the equations with today's numbers, the sweep plots and the regime map.
+// The Analysis panel: four tabs, of which only the selected one draws (so a hidden sweep or map
+// computes nothing): the equations with today's numbers, the method's iteration step by step, the
+// sweep plots and the regime map.
 #pragma once
 
 #include <filesystem>
 #include <string>
 
 #include "app/gui/document.hpp"
+#include "app/gui/panels/method_panel.hpp"
 #include "app/gui/panels/regime_map_panel.hpp"
 #include "app/gui/panels/sweep_panel.hpp"
 #include "app/gui/renderer.hpp"
@@ -24,19 +26,22 @@ class EquationsTab {
 
 class AnalysisPanel {
  public:
-  // `initial_tab`: "equations", "sweep" or "map", selected at the first frame.
+  // `initial_tab`: "equations", "method", "sweep" or "map", selected at the first frame.
   AnalysisPanel(std::filesystem::path presets_dir, std::string initial_tab);
   void draw(Document& document, Renderer& renderer);
   // Selects the Sweep tab with one of the paper's cases (0 Table 1, 1 Table 2, 2 Fig. 4).
   void show_paper_case(int which, Document& document);
 
   const SweepPanel& sweep() const { return sweep_; }
+  const MethodPanel& method() const { return method_; }
+  MethodPanel& method() { return method_; }
   const RegimeMapPanel& regime_map() const { return regime_map_; }
 
  private:
   std::string initial_tab_;
   bool tab_selected_ = false;
   EquationsTab equations_;
+  MethodPanel method_;
   SweepPanel sweep_;
   RegimeMapPanel regime_map_;
 };

@@ -2,11 +2,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
+#include <utility>
 
 #include <imgui.h>
 
 #include "app/common/presets_dir.hpp"
 #include "app/gui/panels/axis_inputs.hpp"
+#include "core/model/solver.hpp"
 
 namespace foldlab::gui {
 namespace {
@@ -14,6 +17,9 @@ namespace {
 constexpr ImU32 kCurveColour = IM_COL32(90, 170, 255, 255);
 constexpr ImU32 kPaperColour = IM_COL32(255, 120, 60, 255);
 constexpr ImU32 kCurrentColour = IM_COL32(240, 220, 90, 200);
+constexpr ImU32 kBandFill = IM_COL32(150, 150, 160, 60);
+constexpr ImU32 kRefusedFill = IM_COL32(230, 90, 80, 60);
+constexpr ImU32 kBandText = IM_COL32(200, 200, 210, 255);
 
 }  // namespace
 
@@ -26,6 +32,7 @@ void SweepPanel::clear_overlay() {
   overlay_Q_.clear();
   overlay_z_.clear();
   overlay_Q_x_.clear();
+  overlay_row_Q_.clear();
 }
 
 void SweepPanel::load_overlay(const std::string& prefix, const std::string& label) {
@@ -45,6 +52,7 @@ void SweepPanel::load_overlay(const std::string& prefix, const std::string& labe
       overlay_x_.push_back(x);
       overlay_n_.push_back(*p.published.n);
       overlay_z_.push_back(*p.published.z_max_mm);
+      overlay_row_Q_.push_back(p.published.Q.value_or(std::nan("")));
       if (p.published.Q) {
         overlay_Q_x_.push_back(x);
         overlay_Q_.push_back(*p.published.Q);
@@ -66,17 +74,8 @@ void SweepPanel::recompute(const Parameters& current) {
     return;
   }
   const std::vector<SweepPoint> points = sweep(current, axis);
-  xs_.clear();
-  n_.clear();
-  Q_.clear();
-  z_.clear();
-  for (const SweepPoint& p : points) {
-    const double nan = std::nan("");
-    xs_.push_back(p.value);
-    n_.push_back(p.valid ? p.n : nan);
-    Q_.push_back(p.valid && p.n > 0 ? p.Q : nan);
-    z_.push_back(p.valid ? p.z_max_mm : nan);
-  }
+  curves_ = sweep_curves(points);
+  bands_ = regime_bands(points, axis.logarithmic);
   computed_for_ = current;
   computed_axis_ = axis;
   computed_ = true;
@@ -151,6 +150,10 @@ void SweepPanel::draw(Document& document) {
   const std::string& key = computed_axis_.key;
   const double now = get_number(current, key);
   const bool overlay = !overlay_label_.empty() && overlay_key_ == key;
+  // The paper's rows against the model's: folded by default, since the plots need the height.
+  if (overlay && ImGui::CollapsingHeader("Paper vs model (table)")) {
+    draw_comparison(current);
+  }
   const float height = std::max(60.0f, (ImGui::GetContentRegionAvail().y - 8.0f) / 3.0f);
   struct Quantity {
     Plot& plot;
@@ -162,9 +165,9 @@ void SweepPanel::draw(Document& document) {
     bool steps;
   };
   const Quantity quantities[] = {
-      {n_plot_, "sweep n", "n", n_, overlay_x_, overlay_n_, true},
-      {Q_plot_, "sweep Q", "Q", Q_, overlay_Q_x_, overlay_Q_, false},
-      {z_plot_, "sweep z", "z_max (mm)", z_, overlay_x_, overlay_z_, false},
+      {n_plot_, "sweep n", "n", curves_.n, overlay_x_, overlay_n_, true},
+      {Q_plot_, "sweep Q", "Q", curves_.Q, overlay_Q_x_, overlay_Q_, false},
+      {z_plot_, "sweep z", "z_max (mm)", curves_.z_max_mm, overlay_x_, overlay_z_, false},
   };
   for (const Quantity& q : quantities) {
     // The x title only under the last plot; a legend only when the paper's points are shown.
@@ -176,9 +179,9 @@ void SweepPanel::draw(Document& document) {
     }
     const char* legend = overlay ? "model" : nullptr;
     if (q.steps) {
-      q.plot.steps(legend, xs_, q.ys, kCurveColour, 2.0f);
+      q.plot.steps(legend, curves_.x, q.ys, kCurveColour, 2.0f);
     } else {
-      q.plot.line(legend, xs_, q.ys, kCurveColour, 2.0f);
+      q.plot.line(legend, curves_.x, q.ys, kCurveColour, 2.0f);
     }
     if (overlay) {
       q.plot.markers(overlay_label_.c_str(), q.paper_x, q.paper_y, kPaperColour,
@@ -186,7 +189,77 @@ void SweepPanel::draw(Document& document) {
     }
     q.plot.vertical_line(now, kCurrentColour);
     q.plot.end();
+    draw_bands(q.plot, &q == &quantities[0]);
   }
+}
+
+void SweepPanel::draw_bands(const Plot& plot, bool label) const {
+  const PlotView& view = plot.view();
+  ImDrawList* draw = ImGui::GetWindowDrawList();
+  draw->PushClipRect(view.min, view.max, true);
+  for (const RegimeBand& band : bands_) {
+    float left = view.to_screen(band.from, view.y_lo).x;
+    float right = view.to_screen(band.to, view.y_lo).x;
+    if (left > right) {
+      std::swap(left, right);
+    }
+    // A band of one sample still shows: at least 3 px wide.
+    if (right - left < 3.0f) {
+      const float middle = 0.5f * (left + right);
+      left = middle - 1.5f;
+      right = middle + 1.5f;
+    }
+    draw->AddRectFilled(ImVec2(left, view.min.y), ImVec2(right, view.max.y),
+                        band.valid ? kBandFill : kRefusedFill);
+    const ImVec2 text_size = ImGui::CalcTextSize(band.name.c_str());
+    if (label && text_size.x + 4.0f <= right - left) {
+      draw->AddText(ImVec2(0.5f * (left + right - text_size.x), view.min.y + 2.0f), kBandText,
+                    band.name.c_str());
+    }
+  }
+  draw->PopClipRect();
+}
+
+void SweepPanel::draw_comparison(const Parameters& current) {
+  const ImGuiTableFlags flags =
+      ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_SizingStretchSame;
+  if (!ImGui::BeginTable("paper vs model", 7, flags)) {
+    return;
+  }
+  const std::string x_title = axis_label(overlay_key_);
+  for (const char* title : {x_title.c_str(), "n paper", "n model", "Q paper", "Q model",
+                            "z_max paper", "z_max model"}) {
+    ImGui::TableSetupColumn(title);
+  }
+  ImGui::TableHeadersRow();
+  for (std::size_t i = 0; i < overlay_x_.size(); ++i) {
+    Parameters p = current;
+    set_number(p, overlay_key_, overlay_x_[i]);
+    if (!validate(p).empty()) {
+      continue;
+    }
+    const Solution s = solve(p);
+    ImGui::TableNextRow();
+    ImGui::TableNextColumn();
+    ImGui::Text("%.4g", overlay_x_[i]);
+    ImGui::TableNextColumn();
+    ImGui::Text("%.0f", overlay_n_[i]);
+    ImGui::TableNextColumn();
+    ImGui::Text("%d", s.n);
+    ImGui::TableNextColumn();
+    if (std::isnan(overlay_row_Q_[i])) {
+      ImGui::TextUnformatted("–");
+    } else {
+      ImGui::Text("%.2f", overlay_row_Q_[i]);
+    }
+    ImGui::TableNextColumn();
+    ImGui::Text("%.2f", s.Q);
+    ImGui::TableNextColumn();
+    ImGui::Text("%.0f mm", overlay_z_[i]);
+    ImGui::TableNextColumn();
+    ImGui::Text("%.1f mm", s.z_max_mm);
+  }
+  ImGui::EndTable();
 }
 
 }  // namespace foldlab::gui

@@ -26,6 +26,8 @@ class SweepPanel {
   // The swept input's key and the paper's points over it (empty without an overlay).
   const std::string& key() const { return key_; }
   const std::vector<double>& overlay_x() const { return overlay_x_; }
+  const std::vector<RegimeBand>& bands() const { return bands_; }
+  const SweepCurves& curves() const { return curves_; }
 
  private:
   void recompute(const Parameters& current);
@@ -42,14 +44,20 @@ class SweepPanel {
   Parameters computed_for_;
   SweepAxis computed_axis_;
   bool computed_ = false;
-  std::vector<double> xs_, n_, Q_, z_;
+  SweepCurves curves_;
+  std::vector<RegimeBand> bands_;
   void clear_overlay();
+  // Shades the bands over the data area of the plot just ended; names them when `label`.
+  void draw_bands(const Plot& plot, bool label) const;
+  // The paper's printed rows beside the model's at the same inputs.
+  void draw_comparison(const Parameters& current);
 
   std::string overlay_label_;
   std::uint64_t overlay_load_ = 0;  // Document::loads() when the overlay's case was loaded
   std::string overlay_key_;
   std::vector<double> overlay_x_, overlay_n_, overlay_Q_, overlay_z_;
-  std::vector<double> overlay_Q_x_;  // rows without a printed Q are left out of the Q plot
+  std::vector<double> overlay_Q_x_;    // rows without a printed Q are left out of the Q plot
+  std::vector<double> overlay_row_Q_;  // per row of overlay_x_, NaN where the paper prints no Q
   Plot n_plot_, Q_plot_, z_plot_;
 };
 

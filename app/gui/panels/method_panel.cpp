@@ -1,0 +1,326 @@
+#include "app/gui/panels/method_panel.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include <imgui.h>
+
+#include "app/gui/panels/widgets.hpp"
+#include "core/model/text_format.hpp"
+
+namespace foldlab::gui {
+namespace {
+
+constexpr ImU32 kIterateColour = IM_COL32(90, 170, 255, 255);
+constexpr ImU32 kBandColour = IM_COL32(120, 200, 120, 200);
+constexpr ImU32 kBandFill = IM_COL32(120, 200, 120, 40);
+constexpr ImU32 kGuideColour = IM_COL32(150, 150, 160, 160);
+constexpr ImU32 kStairColour = IM_COL32(255, 120, 60, 255);
+constexpr ImU32 kMapColour = IM_COL32(90, 170, 255, 255);
+
+// Above this many n the map plot shows a window around the visits.
+constexpr int kMapPoints = 60;
+
+using detail::printf_string;
+
+}  // namespace
+
+void MethodPanel::step() {
+  shown_ = std::min(shown_ + 1, std::max(iterates(), 1));
+}
+void MethodPanel::back() {
+  shown_ = std::max(shown_ - 1, 1);
+}
+void MethodPanel::reset() {
+  shown_ = 1;
+}
+void MethodPanel::run_to_end() {
+  shown_ = std::max(iterates(), 1);
+}
+
+void MethodPanel::recompute(const Parameters& current) {
+  Parameters p = current;
+  p.model.method = method_;
+  if (computed_ && p == computed_for_) {
+    return;
+  }
+  trace_ = trace_iterations(p);
+  map_.clear();
+  if (method_ == Method::exact && !trace_.iterates.empty()) {
+    int lo = trace_.iterates.front().n;
+    int hi = lo;
+    for (const Iterate& it : trace_.iterates) {
+      lo = std::min({lo, it.n, it.next_n});
+      hi = std::max({hi, it.n, it.next_n});
+    }
+    // From n = 1 when that fits, so the staircase reads against the whole map.
+    lo = hi + 2 <= kMapPoints ? 1 : std::max(1, lo - 2);
+    hi = std::min(hi + 2, lo + kMapPoints - 1);
+    map_ = count_map(p, lo, hi);
+  }
+  computed_for_ = p;
+  computed_ = true;
+  shown_ = 1;  // new inputs: the iteration starts again
+}
+
+void MethodPanel::draw(Document& document) {
+  const Parameters& current = document.scene().parameters();
+  if (!following_ || current.model.method != followed_) {
+    method_ = current.model.method;
+    followed_ = current.model.method;
+    following_ = true;
+  }
+  int choice = method_ == Method::paper ? 0 : 1;
+  bool changed = ImGui::RadioButton("paper method", &choice, 0);
+  ImGui::SameLine();
+  changed |= ImGui::RadioButton("exact method", &choice, 1);
+  if (changed) {
+    method_ = choice == 0 ? Method::paper : Method::exact;
+  }
+  ImGui::SameLine();
+  help_marker(method_ == Method::paper
+                  ? "a_0 = 1.01 h; a_n and z_max start at 0.01 h. Each iterate: n from eq. 10, "
+                    "Q = (a_0/a_n)^(1/n), z_max from eq. 9, L′ from eq. 8 (Simpson); stop when "
+                    "|L′/L − 1| is within the tolerance, else a_n ← √(A² − z_max²), the a_n that "
+                    "makes eq. 8 hold for this z_max."
+                  : "For each n, eqs. 8 and 9 give a_n(n) exactly; n moves to "
+                    "Int[log(a_0/a_n(n)) / log Q7] until it maps to itself. The plot is that map "
+                    "with its staircase from the paper's start to the fixed point.");
+  if (method_ != current.model.method) {
+    ImGui::SameLine();
+    ImGui::TextColored(kDimText, "(model: %s)",
+                       std::string(to_string(current.model.method)).c_str());
+  }
+  recompute(current);
+  if (trace_.iterates.empty()) {
+    ImGui::TextWrapped("No iteration: %s", describe(trace_.solution, computed_for_).c_str());
+    return;
+  }
+  draw_controls();
+  draw_table();
+  draw_change();
+  // A key in words instead of a legend: in this small plot a legend would cover the data.
+  const ImVec4 first =
+      ImGui::ColorConvertU32ToFloat4(method_ == Method::paper ? kIterateColour : kGuideColour);
+  const ImVec4 second =
+      ImGui::ColorConvertU32ToFloat4(method_ == Method::paper ? kBandColour : kMapColour);
+  const ImVec4 third = ImGui::ColorConvertU32ToFloat4(kStairColour);
+  if (method_ == Method::paper) {
+    ImGui::TextColored(first, "L′/L per iterate");
+    ImGui::SameLine();
+    ImGui::TextColored(
+        second, "the ±%s %% band",
+        detail::shortest_number(100.0 * computed_for_.model.length_tolerance).c_str());
+  } else {
+    ImGui::TextColored(first, "next n = n");
+    ImGui::SameLine();
+    ImGui::TextColored(second, "the map (squares: Int[·])");
+    ImGui::SameLine();
+    ImGui::TextColored(third, "the staircase");
+  }
+  const float height = std::max(110.0f, ImGui::GetContentRegionAvail().y - 4.0f);
+  if (method_ == Method::paper) {
+    draw_ratio_plot(height);
+  } else {
+    draw_map_plot(height);
+  }
+}
+
+void MethodPanel::draw_controls() {
+  const bool at_start = shown_ <= 1;
+  const bool at_end = shown_ >= iterates();
+  ImGui::BeginDisabled(at_end);
+  if (ImGui::Button("Step")) {
+    step();
+  }
+  ImGui::EndDisabled();
+  ImGui::SameLine();
+  ImGui::BeginDisabled(at_start);
+  if (ImGui::Button("Back")) {
+    back();
+  }
+  ImGui::SameLine();
+  if (ImGui::Button("Reset")) {
+    reset();
+  }
+  ImGui::EndDisabled();
+  ImGui::SameLine();
+  ImGui::BeginDisabled(at_end);
+  if (ImGui::Button("Run to end")) {
+    run_to_end();
+  }
+  ImGui::EndDisabled();
+  ImGui::SameLine();
+  ImGui::Text("iterate %d of %d", shown_, iterates());
+}
+
+// Why the shown iterate has its numbers, and why the iteration goes on or stops there; the table
+// above shows what changed.
+void MethodPanel::draw_change() const {
+  const std::vector<Iterate>& all = trace_.iterates;
+  const Iterate& it = all[static_cast<std::size_t>(shown_ - 1)];
+  const bool last = shown_ == iterates();
+  const Solution& s = trace_.solution;
+  if (method_ == Method::paper) {
+    std::string text;
+    if (shown_ == 1) {
+      text = s.Q7 ? printf_string(
+                        "Start: a_0/a_n = 1.01 h / 0.01 h = 101, n = Int[%.3f] = %d; "
+                        "the a-differences alone make h, so z_max = %.2f mm.",
+                        it.count_argument, it.n, it.z_max_mm)
+                  : printf_string("Start: no Q7 (stiff), so n = 1; z_max = %.2f mm.", it.z_max_mm);
+    } else {
+      text = printf_string("a_n ← √(A² − z_max²) = √(%.2f² − %.2f²) = %.2f mm, n = Int[%.3f] = %d.",
+                           s.sag_amplitude_mm, all[static_cast<std::size_t>(shown_ - 2)].z_max_mm,
+                           it.a_n_mm, it.count_argument, it.n);
+    }
+    ImGui::TextWrapped("%s", text.c_str());
+    const double miss_percent = 100.0 * std::abs(it.length_ratio - 1.0);
+    const double tolerance_percent = 100.0 * computed_for_.model.length_tolerance;
+    if (miss_percent <= tolerance_percent) {
+      ImGui::TextColored(kOkText, "|L′/L − 1| = %.3g %% ≤ %.3g %%: stop. This is the answer.",
+                         miss_percent, tolerance_percent);
+    } else if (last) {
+      ImGui::TextColored(kNoteText,
+                         "|L′/L − 1| = %.3g %% > %.3g %%, and the iteration cap is "
+                         "reached.",
+                         miss_percent, tolerance_percent);
+    } else {
+      ImGui::TextColored(kNoteText, "|L′/L − 1| = %.3g %% > %.3g %%: iterate again.", miss_percent,
+                         tolerance_percent);
+    }
+    return;
+  }
+  ImGui::TextWrapped("%sn = %d: Int[log(a_0/a_n(n)) / log Q7] = Int[%.3f] = %d is the next n.",
+                     shown_ == 1 && s.Q7 ? "Start at the paper's a_0/a_n = 101. " : "", it.n,
+                     it.count_argument, it.next_n);
+  if (!last) {
+    ImGui::TextColored(kNoteText, "n %d → %d: iterate again.", it.n, it.next_n);
+  } else if (s.n_cycle.empty() && it.next_n == it.n) {
+    ImGui::TextColored(kOkText, "n = %d maps to itself: the fixed point. This is the answer.",
+                       it.n);
+  } else {
+    ImGui::TextColored(kNoteText, "%s", describe(s, computed_for_).c_str());
+  }
+}
+
+// Every iterate so far, scrolled to the newest; two rows show, so the last step's change reads
+// row against row, with the numbers that changed in colour.
+void MethodPanel::draw_table() {
+  const float row_height = ImGui::GetTextLineHeightWithSpacing();
+  const ImGuiTableFlags flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV |
+                                ImGuiTableFlags_ScrollY | ImGuiTableFlags_SizingStretchSame;
+  if (!ImGui::BeginTable("iterates", 7, flags, ImVec2(0.0f, row_height * 3.3f))) {
+    return;
+  }
+  ImGui::TableSetupScrollFreeze(0, 1);
+  for (const char* title : {"#", "n", "Q", "a_n mm", "z_max mm", "L′/L", "next n"}) {
+    ImGui::TableSetupColumn(title);
+  }
+  ImGui::TableHeadersRow();
+  for (int k = 0; k < shown_; ++k) {
+    const Iterate& it = trace_.iterates[static_cast<std::size_t>(k)];
+    const Iterate* before = k > 0 ? &trace_.iterates[static_cast<std::size_t>(k - 1)] : nullptr;
+    const bool newest = k == shown_ - 1;
+    auto cell = [&](const std::string& text, bool changed) {
+      ImGui::TableNextColumn();
+      if (newest && changed) {
+        ImGui::TextColored(kNoteText, "%s", text.c_str());
+      } else {
+        ImGui::TextUnformatted(text.c_str());
+      }
+    };
+    // Compared as shown: a change below the last digit is no change to the reader.
+    auto number = [&](const char* format, double value, double previous) {
+      const std::string text = printf_string(format, value);
+      cell(text, before != nullptr && text != printf_string(format, previous));
+    };
+    cell(std::to_string(k + 1), false);
+    cell(std::to_string(it.n), before != nullptr && before->n != it.n);
+    number("%.4f", it.Q, before ? before->Q : 0.0);
+    number("%.2f", it.a_n_mm, before ? before->a_n_mm : 0.0);
+    number("%.2f", it.z_max_mm, before ? before->z_max_mm : 0.0);
+    number("%.4f", it.length_ratio, before ? before->length_ratio : 0.0);
+    cell(std::to_string(it.next_n), before != nullptr && before->next_n != it.next_n);
+    if (newest) {
+      ImGui::SetScrollHereY(1.0f);
+    }
+  }
+  ImGui::EndTable();
+}
+
+void MethodPanel::draw_ratio_plot(float height) {
+  const int count = iterates();
+  const double tolerance = computed_for_.model.length_tolerance;
+  step_x_.clear();
+  ratio_y_.clear();
+  for (int k = 0; k < shown_; ++k) {
+    step_x_.push_back(k + 1);
+    ratio_y_.push_back(trace_.iterates[static_cast<std::size_t>(k)].length_ratio);
+  }
+  // The band and the line at 1 span every iterate, so the x axis stays put while stepping.
+  band_x_ = {0.5, count + 0.5};
+  band_lo_ = {1.0 - tolerance, 1.0 - tolerance};
+  band_hi_ = {1.0 + tolerance, 1.0 + tolerance};
+  one_y_ = {1.0, 1.0};
+  if (!ratio_plot_.begin("method L ratio", ImVec2(0.0f, height), PlotAxis{"iterate"},
+                         PlotAxis{"L′/L"})) {
+    return;
+  }
+  ratio_plot_.line(nullptr, band_x_, band_lo_, kBandColour, 1.0f);
+  ratio_plot_.line(nullptr, band_x_, band_hi_, kBandColour, 1.0f);
+  ratio_plot_.line(nullptr, band_x_, one_y_, kGuideColour, 1.0f);
+  ratio_plot_.line(nullptr, step_x_, ratio_y_, kIterateColour, 2.0f);
+  ratio_plot_.markers(nullptr, step_x_, ratio_y_, kIterateColour, MarkerShape::Circle, 4.0f);
+  ratio_plot_.end();
+  // The band's fill, under nothing that matters: translucent over the data area.
+  const PlotView& view = ratio_plot_.view();
+  const ImVec2 lo = view.to_screen(view.x_lo, 1.0 - tolerance);
+  const ImVec2 hi = view.to_screen(view.x_hi, 1.0 + tolerance);
+  const float top = std::clamp(std::min(lo.y, hi.y), view.min.y, view.max.y);
+  const float bottom = std::clamp(std::max(lo.y, hi.y), view.min.y, view.max.y);
+  if (bottom > top) {
+    ImGui::GetWindowDrawList()->AddRectFilled(ImVec2(view.min.x, top), ImVec2(view.max.x, bottom),
+                                              kBandFill);
+  }
+}
+
+void MethodPanel::draw_map_plot(float height) {
+  map_n_.clear();
+  map_count_.clear();
+  map_argument_.clear();
+  for (const CountMapPoint& point : map_) {
+    map_n_.push_back(point.n);
+    map_count_.push_back(point.count);
+    map_argument_.push_back(point.argument);
+  }
+  diagonal_ = map_n_;
+  // The staircase: from (n, n) on the diagonal up or down to (n, next), across to (next, next).
+  stair_x_.clear();
+  stair_y_.clear();
+  visit_x_.clear();
+  visit_y_.clear();
+  for (int k = 0; k < shown_; ++k) {
+    const Iterate& it = trace_.iterates[static_cast<std::size_t>(k)];
+    stair_x_.insert(stair_x_.end(), {static_cast<double>(it.n), static_cast<double>(it.n)});
+    stair_y_.insert(stair_y_.end(), {static_cast<double>(it.n), static_cast<double>(it.next_n)});
+    visit_x_.push_back(it.n);
+    visit_y_.push_back(it.next_n);
+  }
+  const Iterate& current = trace_.iterates[static_cast<std::size_t>(shown_ - 1)];
+  stair_x_.push_back(current.next_n);
+  stair_y_.push_back(current.next_n);
+  if (!map_plot_.begin("method map", ImVec2(0.0f, height), PlotAxis{"n"},
+                       PlotAxis{"next n = Int[log(a_0/a_n(n)) / log Q7]"})) {
+    return;
+  }
+  map_plot_.line(nullptr, map_n_, diagonal_, kGuideColour, 1.0f);
+  map_plot_.line(nullptr, map_n_, map_argument_, kMapColour, 1.0f);
+  map_plot_.markers(nullptr, map_n_, map_count_, kMapColour, MarkerShape::Square, 3.0f);
+  map_plot_.line(nullptr, stair_x_, stair_y_, kStairColour, 2.0f);
+  map_plot_.markers(nullptr, visit_x_, visit_y_, kStairColour, MarkerShape::Circle, 4.5f);
+  map_plot_.end();
+}
+
+}  // namespace foldlab::gui
