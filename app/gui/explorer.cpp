@@ -88,6 +88,18 @@ std::optional<std::string> Explorer::set_view(std::string_view key, std::string_
     appearance_.request(static_cast<int>(std::lround(*percent)), appearance_.light_theme());
     return std::nullopt;
   }
+  if (key == "grid") {
+    const std::optional<double> per_side = parse_number(value);
+    if (!per_side || *per_side < kMinGridResolution || *per_side > kMaxGridResolution ||
+        *per_side != std::floor(*per_side)) {
+      return detail::printf_string(
+          "grid = '%s' is not a whole number from %d to %d (vertices per side)",
+          detail::cut(value).c_str(), kMinGridResolution, kMaxGridResolution);
+    }
+    const int n = static_cast<int>(*per_side);
+    document_.scene().set_grid_resolution(n, n);
+    return std::nullopt;
+  }
   return cloth_view_.set_view(key, value);
 }
 
