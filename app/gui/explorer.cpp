@@ -5,6 +5,7 @@
 #include <utility>
 
 #include <imgui.h>
+#include <imgui_internal.h>
 
 #include "app/gui/panels/stats_overlay.hpp"
 #include "app/gui/panels/widgets.hpp"
@@ -223,6 +224,12 @@ void Explorer::view_controls() {
     ImGui::TextWrapped("%s", appearance_.notice().c_str());
     ImGui::PopStyleColor();
   }
+}
+
+bool Explorer::awaits_time() const {
+  const ImGuiIO& io = ImGui::GetIO();
+  return !document_.message().empty() || document_.session_dirty || io.WantTextInput ||
+         io.WantSaveIniSettings || ImGui::GetCurrentContext()->SettingsDirtyTimer > 0.0f;
 }
 
 void Explorer::frame() {
