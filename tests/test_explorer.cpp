@@ -774,5 +774,19 @@ TEST_F(ExplorerTest, TheThreeDViewIsDrawnAgainOnlyWhenWhatItShowsChanges) {
   EXPECT_EQ(explorer_->renderer_counters().view_cache_hits, now.view_cache_hits + 4);
 }
 
+TEST_F(ExplorerTest, TheGridViewSettingTakesTheSlidersWholeNumbersOnly) {
+  ASSERT_EQ(explorer_->set_view("grid", "512"), std::nullopt);
+  EXPECT_EQ(explorer_->scene().grid_nx(), 512);
+  EXPECT_EQ(explorer_->scene().grid_ny(), 512);
+  ASSERT_EQ(explorer_->set_view("grid", "8"), std::nullopt);
+  EXPECT_EQ(explorer_->scene().grid_nx(), 8);
+  for (const char* refused : {"7", "513", "64.5", "many", "nan"}) {
+    const std::optional<std::string> problem = explorer_->set_view("grid", refused);
+    ASSERT_TRUE(problem.has_value()) << refused;
+    EXPECT_NE(problem->find("from 8 to 512"), std::string::npos) << *problem;
+  }
+  EXPECT_EQ(explorer_->scene().grid_nx(), 8) << "a refused value changes nothing";
+}
+
 }  // namespace
 }  // namespace foldlab::gui

@@ -42,7 +42,8 @@ std::optional<std::string> ClothViewPanel::set_view(std::string_view key, std::s
     style_.ground = v != 0.0f;
   } else {
     return "unknown view key '" + detail::cut(key) +
-           "' (known: sweep, print, breeze, breeze_mm, time, z, wireframe, fold_lines, ground)";
+           "' (known: sweep, grid, print, breeze, breeze_mm, time, z, wireframe, fold_lines, "
+           "ground)";
   }
   return std::nullopt;
 }
