@@ -7,6 +7,7 @@
 
 #include "core/geometry/geometry.hpp"
 #include "core/geometry/parallel_grid.hpp"
+#include "core/geometry/scene.hpp"
 #include "core/model/equations.hpp"
 #include "core/tools/benchmark_cases.hpp"
 
@@ -108,6 +109,24 @@ void BM_GridParallel(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations() * size * size);
 }
 BENCHMARK(BM_GridParallel)->Arg(64)->Arg(256)->Arg(1024)->Unit(benchmark::kMillisecond);
+
+// The scene stages of one explorer frame while a slider drags h: a new solve, fold lines, grid
+// and normals, all through Scene as the 3D view pulls them (the explorer's default grid is 128).
+void BM_SceneDraggedFrame(benchmark::State& state) {
+  const int size = static_cast<int>(state.range(0));
+  Scene scene(default_parameters());
+  scene.set_grid_resolution(size, size);
+  Parameters p = default_parameters();
+  const double h_mm = p.hanging.height_mm;
+  int frame = 0;
+  for (auto _ : state) {
+    p.hanging.height_mm = h_mm * (1.0 + 0.001 * (frame++ % 100));
+    scene.set_parameters(p);
+    benchmark::DoNotOptimize(scene.fold_lines());
+    benchmark::DoNotOptimize(scene.normals());
+  }
+}
+BENCHMARK(BM_SceneDraggedFrame)->Arg(128)->Arg(512)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 }  // namespace foldlab

@@ -785,5 +785,102 @@ TEST_F(ExplorerTest, TheSweepListsThePapersTableBesideTheModel) {
   EXPECT_NE(text.find("43.4 mm"), std::string::npos) << "the model's z_max at h = 1400\n" << text;
 }
 
+// The 3D view's picture is kept while what it shows is unchanged: each of its inputs, changed
+// alone, makes the next call draw again, and an unchanged call after it draws nothing.
+TEST(ClothViewCacheTest, DrawsAgainExactlyWhenSceneCameraSizeOrStyleChange) {
+  Scene scene(load_preset(kPresetsDir / "paper-table1-h1400.json").parameters);
+  OrbitCamera camera;
+  FrameSize size{400, 300};
+  ClothStyle style;
+  ClothViewCache cache;
+  RenderCounters counters;
+  const auto draws = [&] { return !cache.reuse(scene, camera, size, style, counters); };
+  EXPECT_TRUE(draws()) << "nothing drawn yet";
+  EXPECT_FALSE(draws());
+  EXPECT_FALSE(draws());
+  const std::vector<std::pair<const char*, std::function<void()>>> changes = {
+      {"camera orbit", [&] { camera.orbit(5.0f, 0.0f); }},
+      {"camera zoom", [&] { camera.zoom(1.0f); }},
+      {"view size", [&] { size.height = 301; }},
+      {"print", [&] { style.print = ClothStyle::Print::checks; }},
+      {"z exaggeration", [&] { style.z_exaggeration = 4.0f; }},
+      {"breeze time", [&] { style.time_s = 0.5f; }},
+      {"background", [&] { style.background.x() = 0.5f; }},
+      {"fold lines hidden", [&] { style.fold_lines = false; }},
+      {"h",
+       [&] {
+         Parameters p = scene.parameters();
+         p.hanging.height_mm = 1500.0;
+         scene.set_parameters(p);
+       }},
+      {"grid resolution", [&] { scene.set_grid_resolution(64, 64); }},
+  };
+  for (const auto& [what, change] : changes) {
+    change();
+    EXPECT_TRUE(draws()) << what;
+    EXPECT_FALSE(draws()) << what;
+  }
+  EXPECT_EQ(counters.view_renders, 1 + changes.size());
+  EXPECT_EQ(counters.view_cache_hits, 2 + changes.size());
+  cache.forget();
+  EXPECT_TRUE(draws());
+}
+
+TEST_F(ExplorerTest, TheThreeDViewIsDrawnAgainOnlyWhenWhatItShowsChanges) {
+  for (int i = 0; i < 3; ++i) {
+    frame();
+  }
+  const RenderCounters before = explorer_->renderer_counters();
+  for (int i = 0; i < 5; ++i) {
+    frame();
+  }
+  RenderCounters now = explorer_->renderer_counters();
+  EXPECT_EQ(now.frames, before.frames + 5);
+  EXPECT_EQ(now.view_renders, before.view_renders) << "idle frames show the kept picture";
+  EXPECT_EQ(now.view_cache_hits, before.view_cache_hits + 5);
+
+  explorer_->set_input("h", 1500.0);
+  frame();
+  frame();
+  EXPECT_EQ(explorer_->renderer_counters().view_renders, now.view_renders + 1) << "a new h";
+
+  now = explorer_->renderer_counters();
+  ASSERT_EQ(explorer_->set_view("z", "4"), std::nullopt);
+  frame();
+  frame();
+  EXPECT_EQ(explorer_->renderer_counters().view_renders, now.view_renders + 1) << "z x4";
+
+  // An orbit: a drag across the middle of the view (the panel's top right of the window).
+  now = explorer_->renderer_counters();
+  const std::uint64_t solves = evaluations(Stage::solution);
+  ImGuiIO& io = ImGui::GetIO();
+  io.MousePos = ImVec2(1060.0f, 300.0f);
+  frame();
+  io.MouseDown[0] = true;
+  frame();
+  io.MousePos = ImVec2(1100.0f, 300.0f);
+  frame();
+  io.MouseDown[0] = false;
+  frame();
+  frame();
+  EXPECT_EQ(evaluations(Stage::solution), solves) << "the drag moved the camera, not an input";
+  EXPECT_EQ(explorer_->renderer_counters().view_renders, now.view_renders + 1) << "camera moved";
+  EXPECT_EQ(explorer_->renderer_counters().view_cache_hits, now.view_cache_hits + 4);
+}
+
+TEST_F(ExplorerTest, TheGridViewSettingTakesTheSlidersWholeNumbersOnly) {
+  ASSERT_EQ(explorer_->set_view("grid", "512"), std::nullopt);
+  EXPECT_EQ(explorer_->scene().grid_nx(), 512);
+  EXPECT_EQ(explorer_->scene().grid_ny(), 512);
+  ASSERT_EQ(explorer_->set_view("grid", "8"), std::nullopt);
+  EXPECT_EQ(explorer_->scene().grid_nx(), 8);
+  for (const char* refused : {"7", "513", "64.5", "many", "nan"}) {
+    const std::optional<std::string> problem = explorer_->set_view("grid", refused);
+    ASSERT_TRUE(problem.has_value()) << refused;
+    EXPECT_NE(problem->find("from 8 to 512"), std::string::npos) << *problem;
+  }
+  EXPECT_EQ(explorer_->scene().grid_nx(), 8) << "a refused value changes nothing";
+}
+
 }  // namespace
 }  // namespace foldlab::gui

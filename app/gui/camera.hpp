@@ -14,6 +14,7 @@ struct OrbitCamera {
   float pitch_rad = 0.25f;  // above the horizon
   float distance_mm = 4000.0f;
   float fov_y_rad = 0.6f;
+  bool operator==(const OrbitCamera&) const = default;
 
   Eigen::Vector3f eye() const;
   Eigen::Matrix4f view() const;

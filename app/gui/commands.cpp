@@ -37,7 +37,8 @@ void add_common_gui_options(CLI::App& command, GuiCommandOptions& options) {
   command
       .add_option("--view", options.run.view_settings,
                   "view setting KEY=VALUE: print=plain|checks|stripes, breeze=0|1, breeze_mm, "
-                  "time (s), z (exaggeration), wireframe, fold_lines, ground (3D view); "
+                  "time (s), z (exaggeration), wireframe, fold_lines, ground, grid (vertices per "
+                  "side, 8-512) (3D view); "
                   "sweep=table1|table2|fig4 (the paper's case in the Sweep tab); "
                   "theme=dark|light; scale (UI scale, percent)")
       ->type_name("KEY=VALUE");

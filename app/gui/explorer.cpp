@@ -5,6 +5,7 @@
 #include <utility>
 
 #include <imgui.h>
+#include <imgui_internal.h>
 
 #include "app/gui/panels/stats_overlay.hpp"
 #include "app/gui/panels/widgets.hpp"
@@ -86,6 +87,18 @@ std::optional<std::string> Explorer::set_view(std::string_view key, std::string_
       return "scale = '" + std::string(value) + "' is not a number (percent)";
     }
     appearance_.request(static_cast<int>(std::lround(*percent)), appearance_.light_theme());
+    return std::nullopt;
+  }
+  if (key == "grid") {
+    const std::optional<double> per_side = parse_number(value);
+    if (!per_side || *per_side < kMinGridResolution || *per_side > kMaxGridResolution ||
+        *per_side != std::floor(*per_side)) {
+      return detail::printf_string(
+          "grid = '%s' is not a whole number from %d to %d (vertices per side)",
+          detail::cut(value).c_str(), kMinGridResolution, kMaxGridResolution);
+    }
+    const int n = static_cast<int>(*per_side);
+    document_.scene().set_grid_resolution(n, n);
     return std::nullopt;
   }
   return cloth_view_.set_view(key, value);
@@ -211,6 +224,12 @@ void Explorer::view_controls() {
     ImGui::TextWrapped("%s", appearance_.notice().c_str());
     ImGui::PopStyleColor();
   }
+}
+
+bool Explorer::awaits_time() const {
+  const ImGuiIO& io = ImGui::GetIO();
+  return !document_.message().empty() || document_.session_dirty || io.WantTextInput ||
+         io.WantSaveIniSettings || ImGui::GetCurrentContext()->SettingsDirtyTimer > 0.0f;
 }
 
 void Explorer::frame() {

@@ -83,6 +83,11 @@ class Explorer {
   // True while a frame would differ from the last without any input: background work or the
   // breeze. Otherwise the window may sleep until an event comes.
   bool animating() const { return busy() || calibration_.running() || cloth_view_.animating(); }
+  // True while a frame would differ from the last after a while, with no input: a message that
+  // will fade, a session or window layout to save, a text cursor blinking. (Tooltips show at
+  // once, in the frames that follow the mouse's move.) Call after a frame; otherwise a sleeping
+  // window needs no timeout.
+  bool awaits_time() const;
   // The last finished regime map's wall time in ms (0 before one finishes).
   double regime_map_ms() const { return analysis_.regime_map().last_map_ms(); }
 

@@ -1,5 +1,6 @@
 #include "app/gui/gui_app.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <csignal>
 #include <filesystem>
@@ -63,11 +64,34 @@ void request_close(int) {
   close_requested = 1;
 }
 
-// After an input event ImGui needs a few frames to settle (hover, focus, a window's new size), and
-// the sleep has a timeout so that delayed things (tooltips, the text cursor, the session's
-// delayed save) still happen, at a rate that costs almost nothing.
+// After an input event ImGui needs a few frames to settle (hover, focus, a window's new size).
+// While something is due after a while (the text cursor, a message fading, the session's delayed
+// save) the sleep ends after a short timeout with one frame; otherwise only after a long one, a
+// safety net for anything timed that the explorer does not know of, so that a window left alone
+// costs almost nothing. The long sleep is taken in short slices that draw nothing, since GLFW
+// resumes its wait after a signal: a close request is seen within one slice.
 constexpr int kFramesAfterInput = 3;
-constexpr double kIdleTimeout_s = 0.5;
+constexpr double kTimedWakeup_s = 0.5;
+constexpr double kRestTimeout_s = 10.0;
+
+// Sleeps until an input event, a close request or `timeout_s`; true when the time ran out.
+bool sleep_until_input(Surface& surface, double timeout_s) {
+  using Clock = std::chrono::steady_clock;
+  const Clock::time_point start = Clock::now();
+  for (;;) {
+    const double asleep_s = std::chrono::duration<double>(Clock::now() - start).count();
+    const double slice_s = std::min(kTimedWakeup_s, timeout_s - asleep_s);
+    if (slice_s <= 0.1 * kTimedWakeup_s) {
+      return true;
+    }
+    const Clock::time_point slice_start = Clock::now();
+    surface.wait_events(slice_s);
+    const std::chrono::duration<double> slept = Clock::now() - slice_start;
+    if (slept.count() < 0.9 * slice_s || close_requested != 0) {
+      return false;  // woken early: an event arrived
+    }
+  }
+}
 
 // The frame loop, as plain as Dear ImGui's examples: poll, new frame, build, render, present;
 // with nothing to animate, it sleeps until an event instead of redrawing the same picture.
@@ -84,11 +108,10 @@ void run_frames(Surface& surface, Renderer& renderer, Explorer& explorer, Script
     }
     if (script.may_wait_for_input() && !explorer.animating() &&
         frames_since_wake >= kFramesAfterInput) {
-      const auto asleep = std::chrono::steady_clock::now();
-      surface.wait_events(kIdleTimeout_s);
-      const std::chrono::duration<double> slept = std::chrono::steady_clock::now() - asleep;
+      const bool timed_out =
+          sleep_until_input(surface, explorer.awaits_time() ? kTimedWakeup_s : kRestTimeout_s);
       // A timeout brought no input: one frame for what is due, then sleep again.
-      frames_since_wake = slept.count() >= 0.9 * kIdleTimeout_s ? kFramesAfterInput - 1 : 0;
+      frames_since_wake = timed_out ? kFramesAfterInput - 1 : 0;
     }
     ++frames_since_wake;
     times.start();

@@ -9,21 +9,20 @@ void NullRenderer::draw_cloth(ImDrawList* draw_list, ImVec2 min, Scene& scene,
                               const OrbitCamera& camera, FrameSize size, const ClothStyle& style) {
   (void)draw_list;
   (void)min;
-  (void)camera;
-  (void)size;
-  scene.normals();
+  ++counters_.frames;
+  if (view_cache_.reuse(scene, camera, size, style, counters_)) {
+    return;
+  }
   if (scene.version(Stage::normals) != mesh_version_) {
     ++counters_.mesh_uploads;
     mesh_version_ = scene.version(Stage::normals);
   }
   if (style.fold_lines) {
-    scene.fold_lines();
     if (scene.version(Stage::fold_lines) != fold_line_version_) {
       ++counters_.fold_line_uploads;
       fold_line_version_ = scene.version(Stage::fold_lines);
     }
   }
-  ++counters_.frames;
 }
 
 void NullRenderer::update_image(int image, int width, int height, const std::uint32_t* rgba) {

@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include <imgui.h>
@@ -19,6 +20,7 @@ namespace foldlab::gui {
 struct FrameSize {
   int width = 0;
   int height = 0;
+  bool operator==(const FrameSize&) const = default;
 };
 
 struct ClothStyle {
@@ -36,13 +38,46 @@ struct ClothStyle {
   Eigen::Vector3f positive_fold_colour{0.12f, 0.23f, 0.58f};
   Eigen::Vector3f negative_fold_colour{0.84f, 0.15f, 0.16f};
   Eigen::Vector3f background{0.16f, 0.17f, 0.20f};
+  // Every field takes part: the 3D view's picture is kept only while its style is unchanged.
+  bool operator==(const ClothStyle&) const = default;
 };
 
-// What reached the GPU: uploads happen only when the scene's stage versions change.
+// What reached the GPU: uploads happen only when the scene's stage versions change, and the 3D
+// view's picture is drawn again only when what it shows changed (ClothViewCache).
 struct RenderCounters {
   std::uint64_t mesh_uploads = 0;
   std::uint64_t fold_line_uploads = 0;
-  std::uint64_t frames = 0;
+  std::uint64_t frames = 0;           // frames that showed the 3D view
+  std::uint64_t view_renders = 0;     // of which the picture was drawn
+  std::uint64_t view_cache_hits = 0;  // and the last picture was shown again
+};
+
+// Whether the 3D view's picture must be drawn again. On a software GL (llvmpipe) drawing the
+// cloth is most of a frame, yet most frames show the same picture: a hover, a tooltip, a plot
+// zoomed, a frame woken by the idle timeout. The picture depends on the scene's stages it shows,
+// the camera, the view's size and the style, and on nothing else; while all of them are unchanged
+// the renderer keeps the last picture and only copies it to the screen.
+class ClothViewCache {
+ public:
+  // Brings the stages the view shows up to date (lazily) and returns true when the picture drawn
+  // last shows exactly this; otherwise remembers this as the picture about to be drawn. Counts
+  // either outcome in `counters`.
+  bool reuse(Scene& scene, const OrbitCamera& camera, FrameSize size, const ClothStyle& style,
+             RenderCounters& counters);
+  // The kept picture is gone (its framebuffer was lost or re-made): the next call draws.
+  void forget() { drawn_.reset(); }
+
+ private:
+  struct Key {
+    std::uint64_t normals_version = 0;
+    std::uint64_t fold_lines_version = 0;  // 0 when the style hides the fold lines
+    std::uint64_t grid_version = 0;
+    OrbitCamera camera;
+    FrameSize size;
+    ClothStyle style;
+    bool operator==(const Key&) const = default;
+  };
+  std::optional<Key> drawn_;
 };
 
 class Renderer {
@@ -57,7 +92,8 @@ class Renderer {
   // everything the window draws. The style's own WindowBg is transparent.
   virtual void fill_window_background() = 0;
   // Draws the cloth as a `size` picture into [min, min + size) of `draw_list`, bringing the
-  // scene's stages it needs up to date (lazily) and uploading only what changed.
+  // scene's stages it needs up to date (lazily) and uploading only what changed; while nothing
+  // the picture shows has changed, shows the last one again instead of drawing it.
   virtual void draw_cloth(ImDrawList* draw_list, ImVec2 min, Scene& scene,
                           const OrbitCamera& camera, FrameSize size, const ClothStyle& style) = 0;
   virtual const RenderCounters& counters() const = 0;
@@ -96,6 +132,7 @@ class NullRenderer final : public Renderer {
 
  private:
   RenderCounters counters_;
+  ClothViewCache view_cache_;
   std::uint64_t mesh_version_ = ~std::uint64_t{0};
   std::uint64_t fold_line_version_ = ~std::uint64_t{0};
   int image_count_ = 0;

@@ -47,14 +47,21 @@ class GlRenderer final : public Renderer {
     if (!cloth_) {
       cloth_ = std::make_unique<ClothRenderer>();
     }
-    cloth_->render(scene, camera, size, style);
+    ++view_counters_.frames;
+    if (!view_cache_.reuse(scene, camera, size, style, view_counters_)) {
+      cloth_->render(scene, camera, size, style);
+    }
     add_framebuffer_blit(
         draw_list, cloth_->framebuffer(), size, min,
         ImVec2(min.x + static_cast<float>(size.width), min.y + static_cast<float>(size.height)));
   }
 
   const RenderCounters& counters() const override {
-    return cloth_ ? cloth_->counters() : no_counters_;
+    counters_ = cloth_ ? cloth_->counters() : RenderCounters{};
+    counters_.frames = view_counters_.frames;
+    counters_.view_renders = view_counters_.view_renders;
+    counters_.view_cache_hits = view_counters_.view_cache_hits;
+    return counters_;
   }
 
   int create_image() override {
@@ -113,7 +120,9 @@ class GlRenderer final : public Renderer {
  private:
   std::unique_ptr<ClothRenderer> cloth_;
   bool fonts_changed_ = false;
-  RenderCounters no_counters_;
+  ClothViewCache view_cache_;
+  RenderCounters view_counters_;     // frames, view_renders, view_cache_hits
+  mutable RenderCounters counters_;  // the uploads' counts from cloth_ joined to view_counters_
   std::vector<GLuint> textures_;
   std::vector<FrameSize> sizes_;
 };

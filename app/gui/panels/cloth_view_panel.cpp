@@ -42,7 +42,8 @@ std::optional<std::string> ClothViewPanel::set_view(std::string_view key, std::s
     style_.ground = v != 0.0f;
   } else {
     return "unknown view key '" + detail::cut(key) +
-           "' (known: sweep, print, breeze, breeze_mm, time, z, wireframe, fold_lines, ground)";
+           "' (known: sweep, grid, print, breeze, breeze_mm, time, z, wireframe, fold_lines, "
+           "ground)";
   }
   return std::nullopt;
 }
@@ -62,6 +63,9 @@ void ClothViewPanel::follow_the_cloth(Scene& scene, bool reset) {
   if (reset) {
     camera_user_moved_ = false;
   }
+  // The view is about to draw the grid anyway: bringing it up to date first frames the cloth
+  // of this frame, not the last one, so that one change of the cloth is one picture drawn.
+  scene.grid();
   if (reset || !camera_framed_ ||
       (!camera_user_moved_ && camera_grid_version_ != scene.version(Stage::grid))) {
     Eigen::Vector3f centre;
