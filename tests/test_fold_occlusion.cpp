@@ -1,5 +1,6 @@
 // The fold occlusion against surfaces whose horizons are known in closed form: a flat sheet, a
 // V-shaped pleat and its crest, and a pleat wider than the reach.
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <vector>
@@ -97,6 +98,45 @@ TEST(FoldOcclusion, WallsBeyondTheReachHideNothing) {
   // away is still on the flat bottom: the diagonals and the two sides along the pleat see 0.
   const float across = 8.0f / std::hypot(8.0f, 8.0f);
   EXPECT_NEAR(far.front[s.at(16, 16)], 2.0f * across / 8.0f, 1e-5f);
+}
+
+// A grid finer than the lattice is looked at every stride-th vertex: there it sees what the
+// coarse grid of those vertices sees, and in between it is the bilinear blend.
+TEST(FoldOcclusion, AFineGridIsSampledOnALatticeAndBlendedBetween) {
+  const auto folds = [](float x, float y) {
+    return 6.0f * std::sin(0.21f * y) + 0.5f * std::cos(0.05f * x);
+  };
+  const int fine = 2 * kFoldOcclusionSamples + 1;
+  ASSERT_EQ(fold_occlusion_stride(fine, fine), 2);
+  ASSERT_EQ(fold_occlusion_stride(kFoldOcclusionSamples + 1, kFoldOcclusionSamples + 1), 1);
+  Sheet a = height_field(fine, fine, 1.0f, folds);
+  Sheet b = height_field(kFoldOcclusionSamples + 1, kFoldOcclusionSamples + 1, 2.0f, folds);
+  // Tilted normals, the same at the same point of both grids.
+  for (Sheet* sheet : {&a, &b}) {
+    for (std::size_t v = 0; v < sheet->positions.size(); ++v) {
+      const Eigen::Vector3f& p = sheet->positions[v];
+      sheet->normals[v] =
+          Eigen::Vector3f(0.0f, -1.26f * std::cos(0.21f * p.y()), 1.0f).normalized();
+    }
+  }
+  const FoldOcclusion oa = fold_occlusion(a.positions, a.normals, fine, fine, 20.0f);
+  const FoldOcclusion ob = fold_occlusion(b.positions, b.normals, b.nx, b.ny, 20.0f);
+  float largest = 0.0f;
+  for (int j = 0; j < b.ny; ++j) {
+    for (int i = 0; i < b.nx; ++i) {
+      ASSERT_EQ(oa.front[a.at(2 * i, 2 * j)], ob.front[b.at(i, j)]) << i << ", " << j;
+      ASSERT_EQ(oa.back[a.at(2 * i, 2 * j)], ob.back[b.at(i, j)]) << i << ", " << j;
+      largest = std::max(largest, ob.front[b.at(i, j)]);
+    }
+  }
+  EXPECT_GT(largest, 0.2f) << "the folds hide some sky";
+  const float between = oa.front[a.at(21, 40)];
+  EXPECT_NEAR(between, 0.5f * (ob.front[b.at(10, 20)] + ob.front[b.at(11, 20)]), 1e-6f);
+  const float centre = oa.front[a.at(21, 41)];
+  EXPECT_NEAR(centre,
+              0.25f * (ob.front[b.at(10, 20)] + ob.front[b.at(11, 20)] + ob.front[b.at(10, 21)] +
+                       ob.front[b.at(11, 21)]),
+              1e-6f);
 }
 
 TEST(FoldOcclusion, AMismatchedGridGivesNoOcclusion) {

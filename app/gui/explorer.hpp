@@ -83,6 +83,7 @@ class Explorer {
   // True while a frame would differ from the last without any input: background work or the
   // breeze. Otherwise the window may sleep until an event comes.
   bool animating() const { return busy() || calibration_.running() || cloth_view_.animating(); }
+  const ClothStyle& cloth_style() const { return cloth_view_.style(); }
   // The last finished regime map's wall time in ms (0 before one finishes).
   double regime_map_ms() const { return analysis_.regime_map().last_map_ms(); }
 
