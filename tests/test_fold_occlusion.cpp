@@ -109,6 +109,7 @@ TEST(FoldOcclusion, AFineGridIsSampledOnALatticeAndBlendedBetween) {
   const int fine = 2 * kFoldOcclusionSamples + 1;
   ASSERT_EQ(fold_occlusion_stride(fine, fine), 2);
   ASSERT_EQ(fold_occlusion_stride(kFoldOcclusionSamples + 1, kFoldOcclusionSamples + 1), 1);
+  ASSERT_EQ(fold_occlusion_stride(512, 512), 8) << "65 lattice rows and columns, the last included";
   Sheet a = height_field(fine, fine, 1.0f, folds);
   Sheet b = height_field(kFoldOcclusionSamples + 1, kFoldOcclusionSamples + 1, 2.0f, folds);
   // Tilted normals, the same at the same point of both grids.

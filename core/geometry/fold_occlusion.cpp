@@ -42,7 +42,8 @@ Horizons horizons(const std::vector<Eigen::Vector3f>& positions, const Eigen::Ve
 }  // namespace
 
 int fold_occlusion_stride(int nx, int ny) {
-  return std::max(1, (std::max(nx, ny) - 1) / kFoldOcclusionSamples);
+  const int intervals = std::max(nx, ny) - 1;
+  return std::max(1, (intervals + kFoldOcclusionSamples - 1) / kFoldOcclusionSamples);
 }
 
 FoldOcclusion fold_occlusion(const std::vector<Eigen::Vector3f>& positions,

@@ -18,9 +18,10 @@ struct FoldOcclusion {
 };
 
 // Finer grids are looked at every stride-th row and column (the lattice, with the last row and
-// column), at most kFoldOcclusionSamples + 2 a side, and interpolated bilinearly in between: the
-// cost stays that of a 129^2 grid (about 1 ms) however fine the mesh.
-inline constexpr int kFoldOcclusionSamples = 128;
+// column), at most kFoldOcclusionSamples + 1 a side, and interpolated bilinearly in between: the
+// cost stays that of a 65^2 grid (under a millisecond) however fine the mesh. A fold is a few
+// lattice steps wide even for chiffon at the default grid, and occlusion varies smoothly across it.
+inline constexpr int kFoldOcclusionSamples = 64;
 int fold_occlusion_stride(int nx, int ny);
 
 // `positions` and `normals` are an nx x ny grid, row j's vertex i at j * nx + i (DeformedGrid's
