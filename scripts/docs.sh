@@ -70,6 +70,17 @@ EOF
 "$foldlab" render --size 1920x1080 --view theme=light --view scale=150 \
   --out docs/explorer-1920x1080-light-150.png
 
+# The 3D view alone at z x 1 (no exaggeration, no fold lines): the shading has to show the pleats.
+for fabric in silk-chiffon:chiffon cotton-poplin:poplin denim-13oz:denim; do
+  "$foldlab" render --size 960x720 --preset "presets/fabric-${fabric%%:*}.json" --view full=1 \
+    --view fold_lines=0 --out "docs/cloth-${fabric##*:}.png"
+done
+"$foldlab" render --size 960x720 --preset presets/fabric-silk-chiffon.json --view full=1 \
+  --view fold_lines=0 --view print=checks --view print_mm=20 --view theme=light \
+  --out docs/cloth-chiffon-checks-light.png
+"$foldlab" render --size 960x720 --preset presets/fabric-cotton-poplin.json --view full=1 \
+  --view colour_by=z --out docs/cloth-poplin-colour-by-z.png
+
 echo "docs.sh: comparison with the paper" >&2
 compare_block "$work/compare" 
 replace_block docs/calibration.md compare "$work/compare"

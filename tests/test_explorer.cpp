@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <functional>
@@ -21,6 +22,7 @@
 #include "app/gui/input_player.hpp"
 #include "app/gui/renderer.hpp"
 #include "app/gui/scripted_run.hpp"
+#include "app/gui/surface.hpp"
 #include "core/io/preset.hpp"
 #include "core/model/settings.hpp"
 #include "temp_dir.hpp"
@@ -236,6 +238,69 @@ TEST_F(ExplorerTest, SwitchingPresetShowsTheNewPreset) {
   // Table 2's w = 54e-7 row: the paper printed n = 7, as the model gives.
   EXPECT_EQ(number_after(text, "number of wrinkles n "), 7.0) << text;
   EXPECT_EQ(text.find("Parameters *"), std::string::npos) << "a fresh preset has no edits";
+}
+
+// The colour bar beside the 3D view shows the range the shader maps: +-z_max of the solution.
+TEST_F(ExplorerTest, ColourByZShowsABarOverTheSolutionsDepth) {
+  std::string text = frame();
+  const double z_max_mm = explorer_->scene().solution().z_max_mm;
+  ASSERT_GT(z_max_mm, 1.0);
+  char high[32];
+  char low[32];
+  std::snprintf(high, sizeof high, "+%.1f mm", z_max_mm);
+  std::snprintf(low, sizeof low, "-%.1f mm", z_max_mm);
+  EXPECT_EQ(text.find(high), std::string::npos) << "no bar while the cloth shows the fabric";
+
+  ASSERT_EQ(explorer_->set_view("colour_by", "z"), std::nullopt);
+  text = frame();
+  EXPECT_EQ(explorer_->cloth_style().colour_by, ClothStyle::ColourBy::z);
+  EXPECT_NE(text.find(high), std::string::npos) << text;
+  EXPECT_NE(text.find(low), std::string::npos) << text;
+
+  ASSERT_EQ(explorer_->set_view("colour_by", "fold_sign"), std::nullopt);
+  text = frame();
+  EXPECT_NE(text.find("z > 0"), std::string::npos) << text;
+  EXPECT_NE(text.find("z < 0"), std::string::npos) << text;
+  EXPECT_EQ(text.find(high), std::string::npos);
+
+  const auto refused = explorer_->set_view("colour_by", "height");
+  ASSERT_TRUE(refused.has_value());
+  EXPECT_NE(refused->find("none, z, fold_sign"), std::string::npos) << *refused;
+  EXPECT_EQ(explorer_->cloth_style().colour_by, ClothStyle::ColourBy::fold_sign);
+}
+
+TEST_F(ExplorerTest, ASwatchPhotoBecomesThePrintAndABadFileIsRefusedByName) {
+  const auto missing = explorer_->set_view("print_file", (dir_ / "none.png").string());
+  ASSERT_TRUE(missing.has_value());
+  EXPECT_NE(missing->find("none.png"), std::string::npos) << *missing;
+  EXPECT_NE(missing->find("no such file"), std::string::npos) << *missing;
+
+  const auto garbage_path = dir_ / "swatch.jpg";
+  std::FILE* garbage = std::fopen(garbage_path.c_str(), "wb");
+  ASSERT_NE(garbage, nullptr);
+  std::fputs("not a picture at all", garbage);
+  std::fclose(garbage);
+  const auto unreadable = explorer_->set_view("print_file", garbage_path.string());
+  ASSERT_TRUE(unreadable.has_value());
+  EXPECT_NE(unreadable->find("swatch.jpg"), std::string::npos) << *unreadable;
+  EXPECT_NE(unreadable->find("not an image"), std::string::npos) << *unreadable;
+  EXPECT_EQ(explorer_->cloth_style().print, ClothStyle::Print::plain);
+  EXPECT_TRUE(explorer_->set_view("print", "photo").has_value()) << "no photo loaded yet";
+
+  // A 3 x 2 swatch with a known pixel at each corner: the print holds them top row first.
+  const std::vector<std::uint8_t> pixels = {
+      255, 0,  0,  255, 0,  255, 0,  255, 0,  0,  255, 255,  //
+      10,  20, 30, 255, 40, 50,  60, 255, 70, 80, 90,  255};
+  const auto good_path = dir_ / "swatch.png";
+  write_png(good_path.c_str(), FrameSize{3, 2}, pixels);
+  ASSERT_EQ(explorer_->set_view("print_file", good_path.string()), std::nullopt);
+  const ClothStyle& style = explorer_->cloth_style();
+  EXPECT_EQ(style.print, ClothStyle::Print::photo);
+  ASSERT_NE(style.photo, nullptr);
+  EXPECT_EQ(style.photo->width, 3);
+  EXPECT_EQ(style.photo->height, 2);
+  EXPECT_EQ(style.photo->rgba, pixels);
+  EXPECT_NE(frame().find("photo"), std::string::npos) << "the print combo shows the photo";
 }
 
 TEST_F(ExplorerTest, IdleFramesRecomputeNothingAndADragRecomputesOnce) {

@@ -29,19 +29,33 @@ void parse_size(const std::string& text, GuiRunOptions& options) {
 struct GuiCommandOptions {
   GuiRunOptions run;
   std::string size = "1280x800";
+  std::string print_path;
 };
+
+// --print FILE is --view print_file=FILE, first so that a later --view print=... still applies.
+void apply_print_option(GuiCommandOptions& options) {
+  if (!options.print_path.empty()) {
+    options.run.view_settings.insert(options.run.view_settings.begin(),
+                                     "print_file=" + options.print_path);
+  }
+}
 
 void add_common_gui_options(CLI::App& command, GuiCommandOptions& options) {
   app::add_input_options(command, options.run.inputs);
   command.add_option("--size", options.size, "window or picture size WxH (default 1280x800)");
   command
       .add_option("--view", options.run.view_settings,
-                  "view setting KEY=VALUE: print=plain|checks|stripes, breeze=0|1, breeze_mm, "
-                  "time (s), z (exaggeration), wireframe, fold_lines, ground, grid (vertices per "
-                  "side, 8-512) (3D view); "
-                  "sweep=table1|table2|fig4 (the paper's case in the Sweep tab); "
-                  "theme=dark|light; scale (UI scale, percent)")
+                  "view setting KEY=VALUE: print=plain|checks|stripes|photo, print_file, "
+                  "print_mm, colour_by=none|z|fold_sign, breeze=0|1, breeze_mm, time (s), z "
+                  "(exaggeration), wireframe, fold_lines, ground, grid (vertices per side, 8-512), "
+                  "full=1 (the 3D view fills the window) (3D view); sweep=table1|table2|fig4 (the "
+                  "paper's case in the Sweep tab); theme=dark|light; scale (UI scale, percent)")
       ->type_name("KEY=VALUE");
+  command
+      .add_option("--print", options.print_path,
+                  "a swatch photo (PNG or JPEG) printed on the 3D view's cloth, tiled every "
+                  "print_mm (--view print_mm=..., default 60)")
+      ->type_name("FILE");
   command.add_option("--tab", options.run.analysis_tab, "analysis tab shown at start")
       ->check(CLI::IsMember({"equations", "method", "sweep", "map"}));
 }
@@ -89,6 +103,7 @@ app::Command add_gui_command(CLI::App& app) {
   return [options] {
     return guarded([&] {
       parse_size(options->size, options->run);
+      apply_print_option(*options);
       check_play_options(options->run);
       if (!options->run.screenshot_path.empty() && options->run.frames == 0) {
         throw InputError("--screenshot needs --frames N");
@@ -113,6 +128,7 @@ app::Command add_render_command(CLI::App& app) {
   return [options] {
     return guarded([&] {
       parse_size(options->size, options->run);
+      apply_print_option(*options);
       check_play_options(options->run);
       if (options->run.screenshot_path.empty() && options->run.play_path.empty()) {
         throw InputError("render needs --out FILE.png (or --play SCRIPT.json)");

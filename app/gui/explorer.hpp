@@ -88,6 +88,7 @@ class Explorer {
   // once, in the frames that follow the mouse's move.) Call after a frame; otherwise a sleeping
   // window needs no timeout.
   bool awaits_time() const;
+  const ClothStyle& cloth_style() const { return cloth_view_.style(); }
   // The last finished regime map's wall time in ms (0 before one finishes).
   double regime_map_ms() const { return analysis_.regime_map().last_map_ms(); }
 

@@ -366,6 +366,20 @@ json method_step_json(const MethodPanel& stepper) {
 
 }  // namespace
 
+namespace {
+
+// The 3D view's settings that a person picks from its combos.
+json cloth_view_json(const ClothStyle& style) {
+  static const char* const kPrints[] = {"plain", "checks", "stripes", "photo"};
+  static const char* const kColourBy[] = {"none", "z", "fold_sign"};
+  return {{"print", kPrints[static_cast<int>(style.print)]},
+          {"print_file", style.photo ? json(style.photo->path) : json(nullptr)},
+          {"colour_by", kColourBy[static_cast<int>(style.colour_by)]},
+          {"z_exaggeration", style.z_exaggeration}};
+}
+
+}  // namespace
+
 json explorer_state_json(Explorer& explorer) {
   Document& document = explorer.document();
   Scene& scene = document.scene();
@@ -407,6 +421,7 @@ json explorer_state_json(Explorer& explorer) {
       {"sliders", sliders},
       {"display", {ImGui::GetIO().DisplaySize.x, ImGui::GetIO().DisplaySize.y}},
       {"method_step", method_step_json(explorer.analysis().method())},
+      {"view", cloth_view_json(explorer.cloth_style())},
   };
 }
 

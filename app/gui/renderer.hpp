@@ -13,6 +13,7 @@
 #include <Eigen/Core>
 
 #include "app/gui/camera.hpp"
+#include "app/gui/print_image.hpp"
 #include "core/geometry/scene.hpp"
 
 namespace foldlab::gui {
@@ -28,9 +29,15 @@ struct ClothStyle {
   bool fold_lines = true;
   bool ground = true;
   float z_exaggeration = 1.0f;  // draws z (out of plane) this many times deeper; a view aid only
-  enum class Print { plain, checks, stripes } print = Print::plain;
-  float print_mm = 60.0f;  // size of a check or the width of a stripe on the flat cloth
-  bool breeze = false;     // foldlab::breeze_offset on top of the wrinkles
+  // A photo is tiled every print_mm on the flat cloth; checks and stripes are drawn from tiles made
+  // on the CPU. All three are mip-mapped textures, so fine folds show no moire.
+  enum class Print { plain, checks, stripes, photo } print = Print::plain;
+  float print_mm = 60.0f;  // size of a check, the width of a stripe, or the side of the photo
+  std::shared_ptr<const PrintImage> photo;  // print == photo; nothing else sets it
+  // Colours the cloth by its out-of-plane depth z (a diverging map over +-z_max, the colour bar
+  // beside the view) or by the sign of the fold a point belongs to; none shows the fabric.
+  enum class ColourBy { none, z, fold_sign } colour_by = ColourBy::none;
+  bool breeze = false;  // foldlab::breeze_offset on top of the wrinkles
   float breeze_mm = 60.0f;
   float time_s = 0.0f;
   Eigen::Vector3f front_colour{0.93f, 0.86f, 0.74f};  // the fabric's two faces

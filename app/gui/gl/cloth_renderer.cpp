@@ -9,6 +9,9 @@
 #include <string>
 #include <vector>
 
+#include "app/gui/colour_map.hpp"
+#include "core/geometry/fold_occlusion.hpp"
+
 namespace foldlab::gui {
 namespace {
 
@@ -41,54 +44,108 @@ constexpr const char* kMeshVertex = R"(
 layout(location = 0) in vec3 position;
 layout(location = 1) in vec3 normal;
 layout(location = 2) in vec2 material;
+layout(location = 3) in vec2 occlusion;
 uniform mat4 view_projection;
 out vec3 world_normal;
 out vec3 world_position;
 out vec2 material_mm;
+out vec2 sky_hidden;
+out float model_z_mm;
 void main() {
   world_normal = normal;
   world_position = position + breeze(position);
   material_mm = material;
+  sky_hidden = occlusion;
+  model_z_mm = position.z / max(z_scale, 1e-6);
   gl_Position = view_projection * vec4(world_position, 1.0);
 }
 )";
 
 // Cloth has two faces: the back face is lit with the flipped normal and has its own colour.
 // A print follows the material coordinates (X, Y on the flat cloth, mm), so it folds with it.
+// The light set-up reads pleats: a key light grazing the cloth from above (across the folds, which
+// run sideways), so that a pleat's upper face is lit and its lower face is not; a soft fill from
+// the front-left and a sky/ground ambient, both dimmed by the fold occlusion, so that the inside
+// of a fold stays darker than its crest under any light; a faint sheen at grazing view, as fibres
+// catch the light. Lighting is done on linear colours and the result encoded back for display.
 constexpr const char* kMeshFragment = R"(#version 330 core
 in vec3 world_normal;
 in vec3 world_position;
 in vec2 material_mm;
+in vec2 sky_hidden;
+in float model_z_mm;
 uniform vec3 eye;
 uniform vec3 front_colour;
 uniform vec3 back_colour;
-uniform int print_kind;  // 0 plain, 1 woven checks, 2 stripes
-uniform float print_mm;
+uniform int print_kind;  // 0 plain, else the print texture
+uniform float print_period_mm;
+uniform sampler2D print_texture;
+uniform int colour_by;  // 0 the fabric, 1 z, 2 fold sign
+uniform float z_range_mm;
+uniform vec3 colour_map[9];
+uniform vec3 positive_colour;
+uniform vec3 negative_colour;
+uniform vec3 key_direction;
+uniform vec3 fill_direction;
 out vec4 colour;
-vec3 print(vec3 base) {
-  if (print_kind == 1) {
-    vec2 cell = floor(material_mm / print_mm);
-    float dark = mod(cell.x + cell.y, 2.0);
-    vec2 thread = abs(fract(material_mm / (print_mm / 8.0)) - 0.5);
-    float weave = 0.92 + 0.08 * step(0.35, max(thread.x, thread.y));
-    return base * mix(1.0, 0.62, dark) * weave;
+vec3 to_linear(vec3 c) { return pow(c, vec3(2.2)); }
+vec3 surface_colour(bool front) {
+  if (colour_by == 1) {
+    float x = clamp(0.5 + 0.5 * model_z_mm / z_range_mm, 0.0, 1.0) * 8.0;
+    int i = min(int(x), 7);
+    return mix(colour_map[i], colour_map[i + 1], x - float(i));
   }
-  if (print_kind == 2) {
-    float band = mod(floor(material_mm.x / print_mm), 2.0);
-    return mix(base, vec3(0.20, 0.35, 0.62), 0.75 * band);
+  if (colour_by == 2) {
+    return mix(negative_colour, positive_colour, smoothstep(-0.05, 0.05, model_z_mm / z_range_mm));
   }
-  return base;
+  if (!front) return back_colour;
+  if (print_kind != 0) return texture(print_texture, material_mm / print_period_mm).rgb;
+  return front_colour;
 }
 void main() {
   vec3 n = normalize(world_normal);
-  vec3 base = print(front_colour);
-  if (!gl_FrontFacing) { n = -n; base = back_colour; }
+  float hidden = sky_hidden.x;
+  if (!gl_FrontFacing) { n = -n; hidden = sky_hidden.y; }
+  vec3 base = to_linear(surface_colour(gl_FrontFacing));
   vec3 to_eye = normalize(eye - world_position);
-  vec3 key = normalize(vec3(0.4, 0.8, 0.6));
-  float diffuse = 0.65 * max(dot(n, key), 0.0) + 0.35 * max(dot(n, to_eye), 0.0);
-  vec3 h = normalize(key + to_eye);
-  float specular = 0.12 * pow(max(dot(n, h), 0.0), 24.0);
-  colour = vec4(base * (0.35 + 0.65 * diffuse) + vec3(specular), 1.0);
+  float open_sky = clamp(1.0 - 2.5 * hidden, 0.1, 1.0);
+  float key = max(dot(n, key_direction), 0.0);
+  float fill = 0.5 + 0.5 * dot(n, fill_direction);
+  float sky = 0.5 + 0.5 * n.y;
+  vec3 light = vec3(1.00, 0.96, 0.90) * 1.9 * key * mix(0.5, 1.0, open_sky)
+             + vec3(0.80, 0.86, 1.00) * 0.22 * fill * open_sky
+             + mix(vec3(0.06, 0.05, 0.05), vec3(0.14, 0.15, 0.18), sky) * open_sky;
+  float sheen = 0.10 * pow(1.0 - max(dot(n, to_eye), 0.0), 4.0) * open_sky;
+  vec3 linear = base * light + vec3(sheen);
+  colour = vec4(pow(linear, vec3(1.0 / 2.2)), 1.0);
+}
+)";
+
+// The ground's shadow: a soft elliptical blob under the cloth's footprint (its extent seen from
+// above, narrowed across where a hanging cloth comes near the ground only at its middle), darkest
+// at the centre and gone `soft_mm` beyond the footprint.
+constexpr const char* kShadowVertex = R"(#version 330 core
+layout(location = 0) in vec3 position;
+uniform mat4 view_projection;
+out vec2 ground_mm;
+void main() {
+  ground_mm = position.xz;
+  gl_Position = view_projection * vec4(position, 1.0);
+}
+)";
+
+constexpr const char* kShadowFragment = R"(#version 330 core
+in vec2 ground_mm;
+uniform vec2 footprint_centre_mm;
+uniform vec2 footprint_half_mm;
+uniform float soft_mm;
+uniform float darkness;
+out vec4 colour;
+void main() {
+  vec2 reach = footprint_half_mm + vec2(soft_mm);
+  float d = length((ground_mm - footprint_centre_mm) / reach);
+  float fade = 1.0 - smoothstep(0.0, 1.0, d);
+  colour = vec4(0.0, 0.0, 0.0, darkness * fade);
 }
 )";
 
@@ -134,9 +191,9 @@ GLuint compile(GLenum type, const char* prefix, const char* source) {
   return shader;
 }
 
-GLuint link(const char* vertex, const char* fragment) {
+GLuint link(const char* vertex, const char* fragment, const char* vertex_prefix = kBreezeGlsl) {
   const GLuint program = glCreateProgram();
-  const GLuint vs = compile(GL_VERTEX_SHADER, kBreezeGlsl, vertex);
+  const GLuint vs = compile(GL_VERTEX_SHADER, vertex_prefix, vertex);
   const GLuint fs = compile(GL_FRAGMENT_SHADER, nullptr, fragment);
   glAttachShader(program, vs);
   glAttachShader(program, fs);
@@ -160,13 +217,87 @@ struct Vertex {
 };
 static_assert(sizeof(Vertex) == 6 * sizeof(float));
 
-// The cloth's vertices also carry their material coordinates, for prints.
+// The cloth's vertices also carry their material coordinates, for prints,
+// and how much of the sky each face sees (fold_occlusion.hpp).
 struct MeshVertex {
   Eigen::Vector3f position;
   Eigen::Vector3f normal;
   Eigen::Vector2f material;
+  Eigen::Vector2f occlusion;  // front, back
 };
-static_assert(sizeof(MeshVertex) == 8 * sizeof(float));
+static_assert(sizeof(MeshVertex) == 10 * sizeof(float));
+
+// A print's repeating tile, top row first: checks and stripes are made here from the front colour
+// (the tile holds two checks or two stripes a side), a photo is used as it is.
+struct Tile {
+  int width = 0;
+  int height = 0;
+  std::vector<std::uint8_t> rgba;
+};
+
+std::uint8_t to_byte(float value) {
+  return static_cast<std::uint8_t>(std::lround(std::clamp(value, 0.0f, 1.0f) * 255.0f));
+}
+
+void put(Tile& tile, int x, int y, const Eigen::Vector3f& c) {
+  const auto at = (static_cast<std::size_t>(y) * tile.width + x) * 4;
+  tile.rgba[at] = to_byte(c.x());
+  tile.rgba[at + 1] = to_byte(c.y());
+  tile.rgba[at + 2] = to_byte(c.z());
+  tile.rgba[at + 3] = 255;
+}
+
+// Woven checks: dark and light cells, each crossed by 8 threads whose gaps show a shade darker.
+Tile checks_tile(const Eigen::Vector3f& base) {
+  constexpr int kCellPx = 128;
+  Tile tile{2 * kCellPx, 2 * kCellPx, {}};
+  tile.rgba.resize(static_cast<std::size_t>(tile.width) * tile.height * 4);
+  for (int y = 0; y < tile.height; ++y) {
+    for (int x = 0; x < tile.width; ++x) {
+      const float cx = (static_cast<float>(x) + 0.5f) / kCellPx;
+      const float cy = (static_cast<float>(y) + 0.5f) / kCellPx;
+      const bool dark = (static_cast<int>(cx) + static_cast<int>(cy)) % 2 == 1;
+      const float tx = std::abs(cx * 8.0f - std::floor(cx * 8.0f) - 0.5f);
+      const float ty = std::abs(cy * 8.0f - std::floor(cy * 8.0f) - 0.5f);
+      const float weave = std::max(tx, ty) >= 0.35f ? 1.0f : 0.92f;
+      put(tile, x, y, base * (dark ? 0.62f : 1.0f) * weave);
+    }
+  }
+  return tile;
+}
+
+Tile stripes_tile(const Eigen::Vector3f& base) {
+  constexpr int kStripePx = 64;
+  Tile tile{2 * kStripePx, 4, {}};
+  tile.rgba.resize(static_cast<std::size_t>(tile.width) * tile.height * 4);
+  const Eigen::Vector3f blue(0.20f, 0.35f, 0.62f);
+  for (int y = 0; y < tile.height; ++y) {
+    for (int x = 0; x < tile.width; ++x) {
+      put(tile, x, y, x < kStripePx ? base : Eigen::Vector3f(base + 0.75f * (blue - base)));
+    }
+  }
+  return tile;
+}
+
+// Mip-mapped and, where the driver has the extension, anisotropically filtered: a print seen at a
+// grazing angle on a fine fold averages its texels instead of aliasing into moire.
+void upload_tile(GLuint texture, int width, int height, const std::uint8_t* rgba) {
+  glBindTexture(GL_TEXTURE_2D, texture);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, width, height, 0, GL_RGBA, GL_UNSIGNED_BYTE, rgba);
+  glGenerateMipmap(GL_TEXTURE_2D);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_REPEAT);
+  if (epoxy_has_gl_extension("GL_EXT_texture_filter_anisotropic") ||
+      epoxy_has_gl_extension("GL_ARB_texture_filter_anisotropic")) {
+    GLfloat most = 1.0f;
+    glGetFloatv(GL_MAX_TEXTURE_MAX_ANISOTROPY_EXT, &most);
+    glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_MAX_ANISOTROPY_EXT, std::min(most, 16.0f));
+  }
+  glBindTexture(GL_TEXTURE_2D, 0);
+}
 
 void describe_vertex_layout() {
   glEnableVertexAttribArray(0);
@@ -191,11 +322,24 @@ struct ClothRenderer::Gl {
   GLsizei support_first = 0;        // GL_POINTS, support_count of them
   GLsizei support_count = 0;
   GLuint framebuffer = 0, colour_texture = 0, depth_buffer = 0;
+  GLuint shadow_program = 0, shadow_vao = 0, shadow_vbo = 0;
+  GLuint print_texture = 0;
+  float ground_y_mm = 0.0f;                // world y of the ground plane
+  Eigen::Vector2f footprint_min_mm{0, 0};  // the cloth's extent in world (x, z), as uploaded
+  Eigen::Vector2f footprint_max_mm{0, 0};
 };
 
 ClothRenderer::ClothRenderer() : gl_(new Gl) {
   gl_->mesh_program = link(kMeshVertex, kMeshFragment);
   gl_->line_program = link(kLineVertex, kLineFragment);
+  gl_->shadow_program = link(kShadowVertex, kShadowFragment, nullptr);
+  glGenVertexArrays(1, &gl_->shadow_vao);
+  glGenBuffers(1, &gl_->shadow_vbo);
+  glBindVertexArray(gl_->shadow_vao);
+  glBindBuffer(GL_ARRAY_BUFFER, gl_->shadow_vbo);
+  glEnableVertexAttribArray(0);
+  glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 3 * sizeof(float), nullptr);
+  glGenTextures(1, &gl_->print_texture);
   GLuint vaos[3];
   GLuint buffers[4];
   glGenVertexArrays(3, vaos);
@@ -223,6 +367,9 @@ ClothRenderer::ClothRenderer() : gl_(new Gl) {
   glEnableVertexAttribArray(2);
   glVertexAttribPointer(2, 2, GL_FLOAT, GL_FALSE, sizeof(MeshVertex),
                         reinterpret_cast<const void*>(6 * sizeof(float)));
+  glEnableVertexAttribArray(3);
+  glVertexAttribPointer(3, 2, GL_FLOAT, GL_FALSE, sizeof(MeshVertex),
+                        reinterpret_cast<const void*>(8 * sizeof(float)));
   glBindVertexArray(gl_->mesh_vao);
   glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, gl_->mesh_ebo);
   glBindVertexArray(0);
@@ -238,6 +385,10 @@ ClothRenderer::~ClothRenderer() {
   glDeleteBuffers(4, buffers);
   glDeleteProgram(gl_->mesh_program);
   glDeleteProgram(gl_->line_program);
+  glDeleteProgram(gl_->shadow_program);
+  glDeleteVertexArrays(1, &gl_->shadow_vao);
+  glDeleteBuffers(1, &gl_->shadow_vbo);
+  glDeleteTextures(1, &gl_->print_texture);
   glDeleteFramebuffers(1, &gl_->framebuffer);
   glDeleteTextures(1, &gl_->colour_texture);
   glDeleteRenderbuffers(1, &gl_->depth_buffer);
@@ -270,10 +421,29 @@ void ClothRenderer::resize(FrameSize size) {
 void ClothRenderer::upload_mesh(Scene& scene, float z_scale) {
   const std::vector<Eigen::Vector3f>& normals = scene.normals();
   const DeformedGrid& grid = scene.grid();
-  std::vector<MeshVertex> vertices(grid.positions_mm.size());
+  std::vector<Eigen::Vector3f> positions(grid.positions_mm.size());
+  std::vector<Eigen::Vector3f> world_normals(positions.size());
+  Eigen::Vector2f low(std::numeric_limits<float>::max(), std::numeric_limits<float>::max());
+  Eigen::Vector2f high = -low;
+  for (std::size_t i = 0; i < positions.size(); ++i) {
+    positions[i] = to_world(grid.positions_mm[i], z_scale);
+    world_normals[i] = normal_to_world(normals[i], z_scale);
+    const Eigen::Vector2f ground(positions[i].x(), positions[i].z());
+    low = low.cwiseMin(ground);
+    high = high.cwiseMax(ground);
+  }
+  gl_->footprint_min_mm = positions.empty() ? Eigen::Vector2f::Zero() : low;
+  gl_->footprint_max_mm = positions.empty() ? Eigen::Vector2f::Zero() : high;
+  // The occlusion looks as far as a fold's spacing: the walls of the fold a point sits in, not
+  // the far side of the cloth.
+  const Solution& s = scene.solution();
+  const float reach_mm =
+      static_cast<float>(scene.parameters().hanging.height_mm / std::max(1, s.n + 1));
+  const FoldOcclusion hidden = fold_occlusion(positions, world_normals, grid.nx, grid.ny, reach_mm);
+  std::vector<MeshVertex> vertices(positions.size());
   for (std::size_t i = 0; i < vertices.size(); ++i) {
-    vertices[i] = {to_world(grid.positions_mm[i], z_scale), normal_to_world(normals[i], z_scale),
-                   grid.material_mm[i]};
+    vertices[i] = {
+        positions[i], world_normals[i], grid.material_mm[i], {hidden.front[i], hidden.back[i]}};
   }
   glBindVertexArray(gl_->mesh_vao);
   glBindBuffer(GL_ARRAY_BUFFER, gl_->mesh_vbo);
@@ -317,6 +487,7 @@ void ClothRenderer::upload_decorations(Scene& scene) {
   const Parameters& p = scene.parameters();
   const float depth =
       static_cast<float>(lowest_point_mm(s, p.hanging.height_mm) + 0.05 * p.hanging.height_mm);
+  gl_->ground_y_mm = -depth;
   const float extent =
       static_cast<float>(0.75 * std::max(p.hanging.length_mm, p.hanging.height_mm));
   const float spacing = std::pow(10.0f, std::floor(std::log10(extent / 2.0f)));
@@ -350,11 +521,94 @@ void ClothRenderer::set_breeze_uniforms(unsigned program, Scene& scene, const Cl
   glUniform1f(glGetUniformLocation(program, "z_scale"), style.z_exaggeration);
 }
 
+void ClothRenderer::update_print(const ClothStyle& style) {
+  const bool photo = style.print == ClothStyle::Print::photo && style.photo != nullptr;
+  const int kind =
+      photo ? 3
+            : static_cast<int>(style.print == ClothStyle::Print::photo ? ClothStyle::Print::plain
+                                                                       : style.print);
+  if (kind == print_kind_ && style.front_colour == print_colour_ &&
+      (!photo || style.photo.get() == print_photo_)) {
+    return;
+  }
+  print_kind_ = kind;
+  print_colour_ = style.front_colour;
+  print_photo_ = photo ? style.photo.get() : nullptr;
+  if (photo) {
+    upload_tile(gl_->print_texture, style.photo->width, style.photo->height,
+                style.photo->rgba.data());
+  } else if (kind == 1 || kind == 2) {
+    const Tile tile =
+        kind == 1 ? checks_tile(style.front_colour) : stripes_tile(style.front_colour);
+    upload_tile(gl_->print_texture, tile.width, tile.height, tile.rgba.data());
+  }
+}
+
+void ClothRenderer::set_mesh_colour_uniforms(Scene& scene, const ClothStyle& style) {
+  const GLuint program = gl_->mesh_program;
+  glUniform3fv(glGetUniformLocation(program, "front_colour"), 1, style.front_colour.data());
+  glUniform3fv(glGetUniformLocation(program, "back_colour"), 1, style.back_colour.data());
+  glUniform1i(glGetUniformLocation(program, "print_kind"), print_kind_);
+  // The checks' and stripes' tiles hold two of them a side; a photo is one swatch.
+  glUniform1f(glGetUniformLocation(program, "print_period_mm"),
+              (print_kind_ == 3 ? 1.0f : 2.0f) * std::max(style.print_mm, 1.0f));
+  glActiveTexture(GL_TEXTURE0);
+  glBindTexture(GL_TEXTURE_2D, gl_->print_texture);
+  glUniform1i(glGetUniformLocation(program, "print_texture"), 0);
+  glUniform1i(glGetUniformLocation(program, "colour_by"), static_cast<int>(style.colour_by));
+  glUniform1f(glGetUniformLocation(program, "z_range_mm"),
+              static_cast<float>(std::max(scene.solution().z_max_mm, 1e-3)));
+  glUniform3fv(glGetUniformLocation(program, "colour_map"),
+               static_cast<GLsizei>(kDivergingMap.size()), kDivergingMap.front().data());
+  glUniform3fv(glGetUniformLocation(program, "positive_colour"), 1,
+               style.positive_fold_colour.data());
+  glUniform3fv(glGetUniformLocation(program, "negative_colour"), 1,
+               style.negative_fold_colour.data());
+  // About 17 degrees above the cloth's plane, from above and a little to the left.
+  const Eigen::Vector3f key = Eigen::Vector3f(-0.3f, 1.0f, 0.32f).normalized();
+  const Eigen::Vector3f fill = Eigen::Vector3f(0.6f, 0.15f, 1.0f).normalized();
+  glUniform3fv(glGetUniformLocation(program, "key_direction"), 1, key.data());
+  glUniform3fv(glGetUniformLocation(program, "fill_direction"), 1, fill.data());
+}
+
+// Blended over the ground, under the cloth (which is drawn first and hides it), before the ground
+// lines so that they stay crisp on top.
+void ClothRenderer::draw_shadow(Scene& scene, const Eigen::Matrix4f& view_projection) {
+  const float height_mm = static_cast<float>(scene.parameters().hanging.height_mm);
+  const float soft_mm = 0.12f * height_mm;
+  const Eigen::Vector2f low = gl_->footprint_min_mm - Eigen::Vector2f::Constant(soft_mm);
+  const Eigen::Vector2f high = gl_->footprint_max_mm + Eigen::Vector2f::Constant(soft_mm);
+  const float y = gl_->ground_y_mm;
+  const float quad[] = {low.x(), y, low.y(),  high.x(), y, low.y(),
+                        low.x(), y, high.y(), high.x(), y, high.y()};
+  glBindVertexArray(gl_->shadow_vao);
+  glBindBuffer(GL_ARRAY_BUFFER, gl_->shadow_vbo);
+  glBufferData(GL_ARRAY_BUFFER, sizeof quad, quad, GL_DYNAMIC_DRAW);
+  glUseProgram(gl_->shadow_program);
+  glUniformMatrix4fv(glGetUniformLocation(gl_->shadow_program, "view_projection"), 1, GL_FALSE,
+                     view_projection.data());
+  const Eigen::Vector2f centre = 0.5f * (gl_->footprint_min_mm + gl_->footprint_max_mm);
+  const Eigen::Vector2f half =
+      0.5f *
+      (gl_->footprint_max_mm - gl_->footprint_min_mm).cwiseProduct(Eigen::Vector2f(0.5f, 1.0f));
+  glUniform2fv(glGetUniformLocation(gl_->shadow_program, "footprint_centre_mm"), 1, centre.data());
+  glUniform2fv(glGetUniformLocation(gl_->shadow_program, "footprint_half_mm"), 1, half.data());
+  glUniform1f(glGetUniformLocation(gl_->shadow_program, "soft_mm"), soft_mm);
+  glUniform1f(glGetUniformLocation(gl_->shadow_program, "darkness"), 0.45f);
+  glEnable(GL_BLEND);
+  glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+  glDepthMask(GL_FALSE);
+  glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
+  glDepthMask(GL_TRUE);
+  glDisable(GL_BLEND);
+}
+
 unsigned ClothRenderer::render(Scene& scene, const OrbitCamera& camera, FrameSize size,
                                const ClothStyle& style) {
   GLint previous_viewport[4];
   glGetIntegerv(GL_VIEWPORT, previous_viewport);
   resize(size);
+  update_print(style);
   // Bring the stages this view needs up to date (lazily), then upload only what changed.
   scene.normals();
   if (scene.version(Stage::normals) != mesh_version_ || mesh_z_scale_ != style.z_exaggeration) {
@@ -401,8 +655,7 @@ unsigned ClothRenderer::render(Scene& scene, const OrbitCamera& camera, FrameSiz
   glUniform3fv(glGetUniformLocation(gl_->mesh_program, "front_colour"), 1,
                style.front_colour.data());
   glUniform3fv(glGetUniformLocation(gl_->mesh_program, "back_colour"), 1, style.back_colour.data());
-  glUniform1i(glGetUniformLocation(gl_->mesh_program, "print_kind"), static_cast<int>(style.print));
-  glUniform1f(glGetUniformLocation(gl_->mesh_program, "print_mm"), style.print_mm);
+  set_mesh_colour_uniforms(scene, style);
   set_breeze_uniforms(gl_->mesh_program, scene, style);
   glBindVertexArray(gl_->mesh_vao);
   glDrawElements(GL_TRIANGLES, gl_->mesh_index_count, GL_UNSIGNED_INT, nullptr);
@@ -421,6 +674,10 @@ unsigned ClothRenderer::render(Scene& scene, const OrbitCamera& camera, FrameSiz
     glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
   }
   glUniform4f(override_colour, 0.0f, 0.0f, 0.0f, 0.0f);
+  if (style.ground) {
+    draw_shadow(scene, view_projection);
+    glUseProgram(gl_->line_program);
+  }
   if (style.fold_lines && !gl_->line_counts.empty()) {
     glBindVertexArray(gl_->lines_vao);
     glMultiDrawArrays(GL_LINE_STRIP, gl_->line_firsts.data(), gl_->line_counts.data(),

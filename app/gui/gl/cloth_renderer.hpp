@@ -1,6 +1,8 @@
-// The 3D view: the deformed cloth with two-sided lighting, an optional wireframe, the fold lines on
-// its surface, the supports and a ground grid, drawn with OpenGL 3.3 core into a texture that an
-// ImGui window shows. GPU buffers are re-uploaded only when the scene's stage versions change.
+// The 3D view: the deformed cloth with two-sided lighting that reads pleats (a grazing key light, a
+// fill, occlusion from the fold geometry, a soft ground shadow), prints as mip-mapped textures, an
+// optional wireframe, the fold lines on its surface, the supports and a ground grid, drawn with
+// OpenGL 3.3 core into a texture that an ImGui window shows. GPU buffers are re-uploaded only when
+// the scene's stage versions change.
 #pragma once
 
 #include <cstdint>
@@ -35,6 +37,9 @@ class ClothRenderer {
   void upload_fold_lines(Scene& scene, const ClothStyle& style);
   void upload_decorations(Scene& scene);
   void set_breeze_uniforms(unsigned program, Scene& scene, const ClothStyle& style);
+  void update_print(const ClothStyle& style);
+  void set_mesh_colour_uniforms(Scene& scene, const ClothStyle& style);
+  void draw_shadow(Scene& scene, const Eigen::Matrix4f& view_projection);
 
   Gl* gl_;  // GL object names, kept out of the header so that it needs no GL include
   FrameSize size_{};
@@ -47,6 +52,10 @@ class ClothRenderer {
   Eigen::Vector3f uploaded_positive_{-1, -1, -1};
   Eigen::Vector3f uploaded_negative_{-1, -1, -1};
   RenderCounters counters_;
+  // The print texture's contents: 0 none, 1 checks, 2 stripes (both from print_colour_), 3 photo.
+  int print_kind_ = -1;
+  Eigen::Vector3f print_colour_{-1, -1, -1};
+  const PrintImage* print_photo_ = nullptr;
 };
 
 }  // namespace foldlab::gui

@@ -4,11 +4,27 @@
 
 #include <imgui.h>
 
+#include <variant>
+
+#include "app/gui/appearance.hpp"
+#include "app/gui/colour_map.hpp"
 #include "app/gui/panels/widgets.hpp"
 #include "core/model/settings.hpp"
 #include "core/model/text_format.hpp"
 
 namespace foldlab::gui {
+
+std::optional<std::string> ClothViewPanel::load_photo(const std::string& path) {
+  auto loaded = load_print_image(path);
+  if (const std::string* problem = std::get_if<std::string>(&loaded)) {
+    photo_problem_ = *problem;
+    return *problem;
+  }
+  style_.photo = std::get<std::shared_ptr<const PrintImage>>(std::move(loaded));
+  style_.print = ClothStyle::Print::photo;
+  photo_problem_.clear();
+  return std::nullopt;
+}
 
 std::optional<std::string> ClothViewPanel::set_view(std::string_view key, std::string_view value) {
   if (key == "print") {
@@ -18,7 +34,30 @@ std::optional<std::string> ClothViewPanel::set_view(std::string_view key, std::s
                                          : ClothStyle::Print::stripes;
       return std::nullopt;
     }
-    return "print = '" + detail::cut(value) + "' is not one of: plain, checks, stripes";
+    if (value == "photo") {
+      if (style_.photo == nullptr) {
+        return std::string("print = photo needs a photo: give print_file=PATH (or --print PATH)");
+      }
+      style_.print = ClothStyle::Print::photo;
+      return std::nullopt;
+    }
+    return "print = '" + detail::cut(value) + "' is not one of: plain, checks, stripes, photo";
+  }
+  if (key == "print_file") {
+    photo_path_ = std::string(value);
+    const std::size_t shown = std::min(photo_path_.size(), sizeof photo_input_ - 1);
+    std::copy_n(photo_path_.begin(), shown, photo_input_);
+    photo_input_[shown] = '\0';
+    return load_photo(photo_path_);
+  }
+  if (key == "colour_by") {
+    if (value == "none" || value == "z" || value == "fold_sign") {
+      style_.colour_by = value == "none" ? ClothStyle::ColourBy::none
+                         : value == "z"  ? ClothStyle::ColourBy::z
+                                         : ClothStyle::ColourBy::fold_sign;
+      return std::nullopt;
+    }
+    return "colour_by = '" + detail::cut(value) + "' is not one of: none, z, fold_sign";
   }
   const std::optional<double> number = parse_number(value);
   if (!number) {
@@ -40,12 +79,63 @@ std::optional<std::string> ClothViewPanel::set_view(std::string_view key, std::s
     style_.fold_lines = v != 0.0f;
   } else if (key == "ground") {
     style_.ground = v != 0.0f;
+  } else if (key == "print_mm") {
+    style_.print_mm = std::clamp(v, 10.0f, 300.0f);
+  } else if (key == "full") {
+    fill_display_ = v != 0.0f;
   } else {
     return "unknown view key '" + detail::cut(key) +
-           "' (known: sweep, grid, print, breeze, breeze_mm, time, z, wireframe, fold_lines, "
-           "ground)";
+           "' (known: sweep, theme, scale, grid, print, print_file, print_mm, colour_by, breeze, "
+           "breeze_mm, time, z, wireframe, fold_lines, ground, full)";
   }
   return std::nullopt;
+}
+
+float ClothViewPanel::colour_bar_width() {
+  return ImGui::CalcTextSize("-000.0 mm").x + 28.0f;
+}
+
+// Beside the view, as Polyscope shows a scalar quantity's map: the colours from +z_max (top)
+// to -z_max with their values, or the two fold signs.
+void ClothViewPanel::draw_colour_bar(ImVec2 min, float height, double z_max_mm) const {
+  ImDrawList* draw = ImGui::GetWindowDrawList();
+  const float x0 = min.x + 6.0f;
+  const float x1 = x0 + 14.0f;
+  const float top = min.y + 24.0f;
+  const float bottom = min.y + std::max(height - 24.0f, 48.0f);
+  const ImU32 text = ImGui::GetColorU32(ImGuiCol_Text);
+  const auto to_u32 = [](const Eigen::Vector3f& c) {
+    return ImGui::ColorConvertFloat4ToU32(ImVec4(c.x(), c.y(), c.z(), 1.0f));
+  };
+  const float label_x = x1 + 4.0f;
+  const float line = ImGui::GetTextLineHeight();
+  if (style_.colour_by == ClothStyle::ColourBy::z) {
+    constexpr int kSteps = 32;
+    for (int i = 0; i < kSteps; ++i) {
+      const float t0 = static_cast<float>(i) / kSteps;
+      const float t1 = static_cast<float>(i + 1) / kSteps;
+      // Top is +z_max: t = 1 on the map.
+      draw->AddRectFilledMultiColor(
+          ImVec2(x0, top + t0 * (bottom - top)), ImVec2(x1, top + t1 * (bottom - top)),
+          to_u32(diverging_colour(1.0f - t0)), to_u32(diverging_colour(1.0f - t0)),
+          to_u32(diverging_colour(1.0f - t1)), to_u32(diverging_colour(1.0f - t1)));
+    }
+    const std::string high = detail::printf_string("+%.1f mm", z_max_mm);
+    const std::string low = detail::printf_string("-%.1f mm", z_max_mm);
+    draw->AddText(ImVec2(x0, min.y + 4.0f), text, "z");
+    draw->AddText(ImVec2(label_x, top), text, high.c_str());
+    draw->AddText(ImVec2(label_x, 0.5f * (top + bottom) - 0.5f * line), text, "0");
+    draw->AddText(ImVec2(label_x, bottom - line), text, low.c_str());
+  } else {
+    const float middle = 0.5f * (top + bottom);
+    draw->AddRectFilled(ImVec2(x0, top), ImVec2(x1, middle), to_u32(style_.positive_fold_colour));
+    draw->AddRectFilled(ImVec2(x0, middle), ImVec2(x1, bottom),
+                        to_u32(style_.negative_fold_colour));
+    draw->AddText(ImVec2(x0, min.y + 4.0f), text, "fold");
+    draw->AddText(ImVec2(label_x, 0.5f * (top + middle) - 0.5f * line), text, "z > 0");
+    draw->AddText(ImVec2(label_x, 0.5f * (middle + bottom) - 0.5f * line), text, "z < 0");
+  }
+  draw->AddRect(ImVec2(x0, top), ImVec2(x1, bottom), text);
 }
 
 void ClothViewPanel::settings_row() {
@@ -84,6 +174,11 @@ void ClothViewPanel::follow_the_cloth(Scene& scene, bool reset) {
 
 void ClothViewPanel::draw(Document& document, Renderer& renderer) {
   place_window(0.65f, 0.0f, 0.35f, 0.56f);
+  if (fill_display_) {
+    ImGui::SetNextWindowPos(ImVec2(0.0f, 0.0f), ImGuiCond_Always);
+    ImGui::SetNextWindowSize(ImGui::GetIO().DisplaySize, ImGuiCond_Always);
+    ImGui::SetNextWindowFocus();
+  }
   if (!begin_panel("Cloth (3D)", renderer)) {
     ImGui::End();
     return;  // hidden: no grid, no normals, no upload, no draw
@@ -104,8 +199,20 @@ void ClothViewPanel::draw(Document& document, Renderer& renderer) {
       "numbers are not changed.");
   ImGui::SetNextItemWidth(100.0f);
   int print = static_cast<int>(style_.print);
-  if (ImGui::Combo("print", &print, "plain\0woven checks\0stripes\0")) {
+  if (ImGui::Combo("print", &print, "plain\0woven checks\0stripes\0photo\0")) {
     style_.print = static_cast<ClothStyle::Print>(print);
+  }
+  if (style_.print == ClothStyle::Print::photo) {
+    ImGui::SameLine();
+    ImGui::SetNextItemWidth(180.0f);
+    if (ImGui::InputTextWithHint("##photo", "swatch PNG or JPEG path", photo_input_,
+                                 sizeof photo_input_, ImGuiInputTextFlags_EnterReturnsTrue)) {
+      photo_path_ = photo_input_;
+      load_photo(photo_path_);
+    }
+    help_marker(
+        "A photo of the fabric (PNG or JPEG), tiled over the cloth every print size; "
+        "type its path and press Enter.");
   }
   if (style_.print != ClothStyle::Print::plain) {
     ImGui::SameLine();
@@ -128,7 +235,25 @@ void ClothViewPanel::draw(Document& document, Renderer& renderer) {
       style_.time_s += ImGui::GetIO().DeltaTime;  // the solver does not run: only the shader moves
     }
   }
-  const ImVec2 available = ImGui::GetContentRegionAvail();
+  ImGui::SameLine();
+  ImGui::SetNextItemWidth(90.0f);
+  int colour_by = static_cast<int>(style_.colour_by);
+  if (ImGui::Combo("colour by", &colour_by, "fabric\0z\0fold sign\0")) {
+    style_.colour_by = static_cast<ClothStyle::ColourBy>(colour_by);
+  }
+  if (!photo_problem_.empty() && style_.print == ClothStyle::Print::photo) {
+    ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(0.9f, 0.35f, 0.3f, 1.0f));
+    ImGui::TextWrapped("%s", photo_problem_.c_str());
+    ImGui::PopStyleColor();
+  }
+  // The view follows the theme: a light page gets a light backdrop.
+  const bool light = style_is_light();
+  style_.background =
+      light ? Eigen::Vector3f(0.90f, 0.91f, 0.93f) : Eigen::Vector3f(0.16f, 0.17f, 0.20f);
+  ImVec2 available = ImGui::GetContentRegionAvail();
+  const float bar_width =
+      style_.colour_by == ClothStyle::ColourBy::none ? 0.0f : colour_bar_width();
+  available.x -= bar_width;
   const FrameSize size{std::max(16, static_cast<int>(available.x)),
                        std::max(16, static_cast<int>(available.y))};
   Scene& scene = document.scene();
@@ -152,9 +277,14 @@ void ClothViewPanel::draw(Document& document, Renderer& renderer) {
     camera_.zoom(io.MouseWheel);
   }
   renderer.draw_cloth(ImGui::GetWindowDrawList(), origin, scene, camera_, size, style_);
-  ImGui::GetWindowDrawList()->AddText(ImVec2(origin.x + 6, origin.y + 4),
-                                      IM_COL32(200, 200, 200, 200),
-                                      "drag: orbit, right-drag: pan, wheel: zoom");
+  ImGui::GetWindowDrawList()->AddText(
+      ImVec2(origin.x + 6, origin.y + 4),
+      light ? IM_COL32(60, 60, 60, 220) : IM_COL32(200, 200, 200, 200),
+      "drag: orbit, right-drag: pan, wheel: zoom");
+  if (bar_width > 0.0f) {
+    draw_colour_bar(ImVec2(origin.x + static_cast<float>(size.width), origin.y),
+                    static_cast<float>(size.height), scene.solution().z_max_mm);
+  }
   ImGui::End();
 }
 

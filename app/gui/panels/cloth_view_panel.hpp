@@ -8,6 +8,8 @@
 #include <string>
 #include <string_view>
 
+#include <imgui.h>
+
 #include "app/gui/camera.hpp"
 #include "app/gui/document.hpp"
 #include "app/gui/renderer.hpp"
@@ -20,14 +22,19 @@ class ClothViewPanel {
 
   ClothStyle& style() { return style_; }
   const ClothStyle& style() const { return style_; }
-  // A view setting by name (print=checks, breeze=1, breeze_mm=80, time=1.5, z=8, wireframe=1,
-  // fold_lines=0, ground=0): for scripted pictures. Returns the problem, if any.
+  // A view setting by name (print=checks, print_file=swatch.jpg, print_mm=40, colour_by=z,
+  // breeze=1, breeze_mm=80, time=1.5, z=8, wireframe=1, fold_lines=0, ground=0, full=1 for a
+  // view that fills the window): for scripted pictures. Returns the problem, if any.
   std::optional<std::string> set_view(std::string_view key, std::string_view value);
   // True while the breeze plays: every frame shows a new instant.
   bool animating() const { return style_.breeze && breeze_playing_; }
 
  private:
   void settings_row();
+  // Loads a swatch photo as the print; the problem (also shown in the panel), if any.
+  std::optional<std::string> load_photo(const std::string& path);
+  static float colour_bar_width();
+  void draw_colour_bar(ImVec2 min, float height, double z_max_mm) const;
   void follow_the_cloth(Scene& scene, bool reset);
 
   ClothStyle style_;
@@ -37,6 +44,10 @@ class ClothViewPanel {
   std::uint64_t camera_grid_version_ = 0;
   std::uint64_t camera_loads_ = 0;  // the document's preset loads the camera was framed for
   bool breeze_playing_ = true;
+  bool fill_display_ = false;
+  std::string photo_path_;
+  char photo_input_[512] = {};
+  std::string photo_problem_;
 };
 
 }  // namespace foldlab::gui
