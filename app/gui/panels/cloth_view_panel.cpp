@@ -49,11 +49,11 @@ std::optional<std::string> ClothViewPanel::set_view(std::string_view key, std::s
 
 void ClothViewPanel::settings_row() {
   ImGui::Checkbox("wireframe", &style_.wireframe);
-  ImGui::SameLine();
+  same_line_if_fits(checkbox_width("fold lines"));
   ImGui::Checkbox("fold lines", &style_.fold_lines);
-  ImGui::SameLine();
+  same_line_if_fits(checkbox_width("ground"));
   ImGui::Checkbox("ground", &style_.ground);
-  ImGui::SameLine();
+  same_line_if_fits(button_width("reset camera"));
 }
 
 // Reframes for a new cloth (or on request), keeping the user's direction when only the cloth's
@@ -79,7 +79,6 @@ void ClothViewPanel::follow_the_cloth(Scene& scene, bool reset) {
 }
 
 void ClothViewPanel::draw(Document& document, Renderer& renderer) {
-  place_window(0.65f, 0.0f, 0.35f, 0.56f);
   if (!begin_panel("Cloth (3D)", renderer)) {
     ImGui::End();
     return;  // hidden: no grid, no normals, no upload, no draw

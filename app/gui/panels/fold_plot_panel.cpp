@@ -13,7 +13,6 @@
 namespace foldlab::gui {
 
 void FoldPlotPanel::draw(Document& document, Renderer& renderer) {
-  place_window(0.30f, 0.0f, 0.35f, 0.56f);
   if (!begin_panel("Fold lines (2D)", renderer)) {
     ImGui::End();
     return;  // hidden: the fold lines are not even computed
@@ -25,8 +24,7 @@ void FoldPlotPanel::draw(Document& document, Renderer& renderer) {
   if (ImGui::SmallButton("autoscale")) {
     autoscale_ = true;
   }
-  ImGui::SameLine();
-  ImGui::TextDisabled("wheel: zoom, drag: pan, double-click: autoscale");
+  hint_after("wheel: zoom, drag: pan, double-click: autoscale");
   if (lines.stride > 1) {
     ImGui::TextColored(kDimText, "every %d-th of %d lines drawn", lines.stride, s.n + 1);
   }

@@ -145,7 +145,6 @@ void choice_combo(Document& document, const InputSpec& spec) {
 }  // namespace
 
 void ParametersPanel::draw(Document& document, Renderer& renderer) {
-  place_window(0.0f, 0.0f, 0.30f, 0.62f);
   const bool unsaved = document.unsaved();
   const std::string title = std::string("Parameters") + (unsaved ? " *" : "") + "###parameters";
   if (!begin_panel(title.c_str(), renderer)) {
@@ -157,8 +156,7 @@ void ParametersPanel::draw(Document& document, Renderer& renderer) {
   if (ImGui::Button("Reset to preset")) {
     document.reset_to_loaded();
   }
-  ImGui::SameLine();
-  ImGui::TextDisabled("Ctrl+click a slider to type a value");
+  hint_after("Ctrl+click a slider to type a value");
   ImGui::Separator();
 
   // Sliders leave room on their right for the longest label and its (?) marker.

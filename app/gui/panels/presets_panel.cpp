@@ -180,7 +180,6 @@ void PresetsPanel::draw_dialogs(Document& document) {
 
 void PresetsPanel::draw(Document& document, Renderer& renderer,
                         const std::function<void()>& footer) {
-  place_window(0.0f, 0.62f, 0.30f, 0.38f);
   if (!begin_panel("Presets", renderer)) {
     ImGui::End();
     return;
