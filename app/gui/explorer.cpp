@@ -228,14 +228,6 @@ float Explorer::main_menu() {
     if (!automatic_layout_ && ImGui::MenuItem("Reset layout")) {
       reset_layout();
     }
-    if (!appearance_.notice().empty()) {
-      ImGui::PushStyleColor(ImGuiCol_Text, message_colour(MessageKind::warning));
-      ImGui::TextUnformatted("font missing (Greek shows as '?')");
-      ImGui::PopStyleColor();
-      if (ImGui::IsItemHovered()) {
-        ImGui::SetTooltip("%s", appearance_.notice().c_str());
-      }
-    }
     ImGui::EndMainMenuBar();
   }
   return height;
@@ -293,8 +285,14 @@ void Explorer::frame() {
   place(Tile::parameters, layout);
   parameters_.draw(document_, renderer_);
   place(Tile::presets, layout);
-  presets_.draw(document_, renderer_,
-                [this] { calibration_.open_button(document_.scene().parameters()); });
+  presets_.draw(document_, renderer_, [this] {
+    calibration_.open_button(document_.scene().parameters());
+    if (!appearance_.notice().empty()) {
+      ImGui::PushStyleColor(ImGuiCol_Text, kNoteText);
+      ImGui::TextWrapped("%s", appearance_.notice().c_str());
+      ImGui::PopStyleColor();
+    }
+  });
   place(Tile::fold_plot, layout);
   fold_plot_.draw(document_, renderer_);
   place(Tile::cloth, layout);

@@ -76,8 +76,8 @@ void FoldPlotPanel::draw(Document& document, Renderer& renderer) {
       supports_x.push_back(support.x());
       supports_y.push_back(support.y());
     }
-    plot_.markers("supports", supports_x, supports_y, IM_COL32(240, 200, 60, 255),
-                  MarkerShape::Triangle, 6.0f);
+    plot_.markers("supports", supports_x, supports_y, kSupportMarker.u32(), MarkerShape::Triangle,
+                  6.0f);
     const std::optional<PlotHit> hit = plot_.end();
     if (hit && hit->series < static_cast<int>(lines.lines.size())) {
       const FoldLine& line = lines.lines[static_cast<std::size_t>(hit->series)];

@@ -185,7 +185,7 @@ void PresetsPanel::draw(Document& document, Renderer& renderer,
     return;
   }
   const float list_height =
-      std::max(60.0f, ImGui::GetContentRegionAvail().y - 4.4f * ImGui::GetFrameHeightWithSpacing());
+      std::max(60.0f, ImGui::GetContentRegionAvail().y - 3.2f * ImGui::GetFrameHeightWithSpacing());
   if (ImGui::BeginChild("preset list", ImVec2(0.0f, list_height), true)) {
     bool user_header = false;
     for (const Entry& entry : entries_) {

@@ -7,6 +7,7 @@
 
 #include "app/common/presets_dir.hpp"
 #include "app/gui/panels/axis_inputs.hpp"
+#include "app/gui/panels/widgets.hpp"
 
 namespace foldlab::gui {
 namespace {
@@ -144,7 +145,7 @@ void SweepPanel::draw(Document& document) {
 
   SweepAxis check{key_, from_, to_, steps_, logarithmic_};
   if (auto problem = check_axis(check)) {
-    ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.4f, 1.0f), "%s", problem->c_str());
+    ImGui::TextColored(kErrorText, "%s", problem->c_str());
     return;
   }
   recompute(current);

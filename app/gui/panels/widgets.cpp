@@ -121,7 +121,7 @@ void hint_after(const char* text) {
 
 void section(const char* title) {
   ImGui::Spacing();
-  ImGui::TextColored(ImVec4(0.55f, 0.75f, 1.0f, 1.0f), "%s", title);
+  ImGui::TextColored(kSectionText, "%s", title);
   ImGui::Separator();
 }
 

@@ -4,15 +4,11 @@
 
 #include <imgui.h>
 
+#include "app/gui/appearance.hpp"
 #include "app/gui/document.hpp"
 #include "app/gui/renderer.hpp"
 
 namespace foldlab::gui {
-
-inline const ImVec4 kErrorText(1.0f, 0.45f, 0.40f, 1.0f);
-inline const ImVec4 kOkText(0.55f, 0.85f, 0.55f, 1.0f);
-inline const ImVec4 kNoteText(1.0f, 0.78f, 0.35f, 1.0f);
-inline const ImVec4 kDimText(0.65f, 0.65f, 0.70f, 1.0f);
 
 // Information reads dim, success green, a warning amber, an error red.
 ImVec4 message_colour(MessageKind kind);
