@@ -273,15 +273,38 @@ std::vector<std::pair<std::string, PanelRect>> Explorer::panel_rects() const {
   return out;
 }
 
+bool Explorer::panels_fill_window() const {
+  const auto rects = panel_rects();
+  const ImVec2 display = ImGui::GetIO().DisplaySize;
+  double area = 0.0;
+  for (std::size_t i = 0; i < rects.size(); ++i) {
+    const PanelRect& a = rects[i].second;
+    if (a.pos.x < 0.0f || a.pos.y < menu_height_ || a.pos.x + a.size.x > display.x ||
+        a.pos.y + a.size.y > display.y) {
+      return false;
+    }
+    area += static_cast<double>(a.size.x) * a.size.y;
+    for (std::size_t j = i + 1; j < rects.size(); ++j) {
+      const PanelRect& b = rects[j].second;
+      if (a.pos.x < b.pos.x + b.size.x && b.pos.x < a.pos.x + a.size.x &&
+          a.pos.y < b.pos.y + b.size.y && b.pos.y < a.pos.y + a.size.y) {
+        return false;
+      }
+    }
+  }
+  return rects.size() == kTileCount &&
+         area == static_cast<double>(display.x) * (static_cast<double>(display.y) - menu_height_);
+}
+
 void Explorer::frame() {
   document_.tick(ImGui::GetTime());
   const int scale_before = appearance_.scale_percent();
   const bool light_before = appearance_.light_theme();
   appearance_.handle_shortcuts();
   handle_shortcuts();
-  const float menu_height = main_menu();
+  menu_height_ = main_menu();
   const TiledLayout layout =
-      tiled_layout(ImGui::GetIO().DisplaySize, menu_height, ImGui::GetFontSize());
+      tiled_layout(ImGui::GetIO().DisplaySize, menu_height_, ImGui::GetFontSize());
   place(Tile::parameters, layout);
   parameters_.draw(document_, renderer_);
   place(Tile::presets, layout);

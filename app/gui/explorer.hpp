@@ -70,6 +70,9 @@ class Explorer {
   bool automatic_layout() const { return automatic_layout_; }
   // Where each tiled panel was drawn in the last frame (ImGui's windows, after the user's moves).
   std::vector<std::pair<std::string, PanelRect>> panel_rects() const;
+  // True when the tiled panels cover the display below the menu bar exactly: no gap, no overlap,
+  // nothing outside it.
+  bool panels_fill_window() const;
   // "View > Reset layout": the automatic layout again, from the next frame.
   void reset_layout();
 
@@ -122,6 +125,7 @@ class Explorer {
   CalibrationPanel calibration_;  // "Fit to measurements", opened from the Presets panel
   bool show_stats_ = false;
   bool automatic_layout_ = true;
+  float menu_height_ = 0.0f;
   PanelRect placed_[kTileCount];  // what place() set last, to see the user's moves
   bool placed_valid_[kTileCount] = {};
   bool quit_confirmed_ = false;

@@ -245,7 +245,7 @@ bool CalibrationPanel::draw(Parameters& edited, const Preset& loaded, Renderer& 
         std::string(to_string(edited.model.int_rounding)).c_str());
     const bool valid = validate(edited).empty();
     if (running_) {
-      ImGui::ProgressBar(static_cast<float>(progress_.load()), ImVec2(-90.0f, 0.0f));
+      ImGui::ProgressBar(static_cast<float>(progress_.load()), ImVec2(-ems(7.0f), 0.0f));
       ImGui::SameLine();
       if (ImGui::Button("Cancel")) {
         cancel_requested_ = true;

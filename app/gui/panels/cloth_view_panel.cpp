@@ -91,20 +91,20 @@ void ClothViewPanel::draw(Document& document, Renderer& renderer) {
   }
   settings_row();
   const bool reset = ImGui::SmallButton("reset camera");
-  ImGui::SetNextItemWidth(160.0f);
+  ImGui::SetNextItemWidth(ems(12.0f));
   ImGui::SliderFloat("z exaggeration", &style_.z_exaggeration, 1.0f, 20.0f, "x %.1f",
                      ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp);
   help_marker(
       "Draws the out-of-plane depth z this many times deeper, to see the folds; the "
       "numbers are not changed.");
-  ImGui::SetNextItemWidth(100.0f);
+  ImGui::SetNextItemWidth(ems(7.5f));
   int print = static_cast<int>(style_.print);
   if (ImGui::Combo("print", &print, "plain\0woven checks\0stripes\0")) {
     style_.print = static_cast<ClothStyle::Print>(print);
   }
   if (style_.print != ClothStyle::Print::plain) {
     ImGui::SameLine();
-    ImGui::SetNextItemWidth(110.0f);
+    ImGui::SetNextItemWidth(ems(8.5f));
     ImGui::SliderFloat("##print size", &style_.print_mm, 10.0f, 300.0f, "%.0f mm",
                        ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp);
   }
@@ -116,7 +116,7 @@ void ClothViewPanel::draw(Document& document, Renderer& renderer) {
       breeze_playing_ = !breeze_playing_;
     }
     ImGui::SameLine();
-    ImGui::SetNextItemWidth(100.0f);
+    ImGui::SetNextItemWidth(ems(7.5f));
     ImGui::SliderFloat("##breeze", &style_.breeze_mm, 5.0f, 300.0f, "%.0f mm",
                        ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp);
     if (breeze_playing_) {

@@ -122,7 +122,7 @@ void input_slider(Document& document, const InputSpec& spec, float width,
 
 void choice_combo(Document& document, const InputSpec& spec) {
   const std::string current(spec.choice(document.edited()));
-  ImGui::SetNextItemWidth(120.0f);
+  ImGui::SetNextItemWidth(ems(9.0f));
   if (ImGui::BeginCombo(std::string(spec.name).c_str(), current.c_str())) {
     std::string_view rest = spec.choices;
     while (!rest.empty()) {
@@ -168,9 +168,9 @@ void ParametersPanel::draw(Document& document, Renderer& renderer) {
     label_width = std::max(label_width, ImGui::CalcTextSize(slider_label(*spec).c_str()).x);
   }
   const ImGuiStyle& style = ImGui::GetStyle();
-  const float width = std::max(80.0f, ImGui::GetContentRegionAvail().x - label_width -
-                                          ImGui::CalcTextSize(" (?)").x -
-                                          2.0f * style.ItemInnerSpacing.x - style.ItemSpacing.x);
+  const float width = std::max(
+      ems(6.0f), ImGui::GetContentRegionAvail().x - label_width - ImGui::CalcTextSize(" (?)").x -
+                     2.0f * style.ItemInnerSpacing.x - style.ItemSpacing.x);
   for (const InputSpec* spec : sliders) {
     input_slider(document, *spec, width, places_);
     if (spec->key == "w") {

@@ -158,7 +158,7 @@ void PresetsPanel::draw_dialogs(Document& document) {
     if (ImGui::IsWindowAppearing()) {
       ImGui::SetKeyboardFocusHere();
     }
-    ImGui::SetNextItemWidth(320.0f);
+    ImGui::SetNextItemWidth(ems(24.0f));
     const bool entered = ImGui::InputText("##save as name", save_as_name_, sizeof save_as_name_,
                                           ImGuiInputTextFlags_EnterReturnsTrue);
     ImGui::TextDisabled("in %s", user_presets_dir_.string().c_str());

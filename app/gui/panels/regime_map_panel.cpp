@@ -208,7 +208,7 @@ void RegimeMapPanel::draw(Document& document, Renderer& renderer) {
   }
   ImGui::SameLine();
   restart_needed |= range_inputs("y range", y_from_, y_to_);
-  ImGui::SetNextItemWidth(90.0f);
+  ImGui::SetNextItemWidth(ems(6.5f));
   static const int sizes[] = {64, 128, 256, 512};
   if (ImGui::BeginCombo("cells", (std::to_string(resolution_) + "²").c_str())) {
     for (int s : sizes) {
@@ -219,7 +219,7 @@ void RegimeMapPanel::draw(Document& document, Renderer& renderer) {
     }
     ImGui::EndCombo();
   }
-  ImGui::SameLine();
+  same_line_if_fits(checkbox_width("show z_max instead of n"));
   if (ImGui::Checkbox("show z_max instead of n", &show_z_)) {
     rows_shown_ = -1;
   }

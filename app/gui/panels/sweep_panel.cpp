@@ -130,7 +130,7 @@ void SweepPanel::draw(Document& document) {
   ImGui::SameLine();
   ImGui::Checkbox("log", &logarithmic_);
   ImGui::SameLine();
-  ImGui::SetNextItemWidth(80.0f);
+  ImGui::SetNextItemWidth(ems(6.0f));
   ImGui::SliderInt("steps", &steps_, 10, 1000, "%d", ImGuiSliderFlags_AlwaysClamp);
 
   for (int which = 0; which < kPaperCases; ++which) {
