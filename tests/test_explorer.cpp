@@ -827,6 +827,32 @@ TEST_F(ExplorerTest, APanelTheUserMovesStaysUntilResetLayout) {
   EXPECT_EQ(frame().find("Reset layout"), std::string::npos) << "only shown when it would act";
 }
 
+// A session remembers whether the user arranged the panels (imgui.ini keeps where), so that the
+// next start does not tile over their arrangement.
+TEST_F(ExplorerTest, TheUsersArrangementIsRememberedWithTheSession) {
+  const fs::path session = dir_ / "session.json";
+  open_explorer("equations", {}, session);
+  EXPECT_TRUE(explorer_->automatic_layout());
+  const ImVec2 title = position_of("Results");
+  ImGuiIO& io = ImGui::GetIO();
+  io.MousePos = ImVec2(title.x + 80.0f, title.y + 4.0f);
+  frame();
+  io.MouseDown[0] = true;
+  frame();
+  io.MousePos.x += 50.0f;
+  frame();
+  io.MouseDown[0] = false;
+  frame();
+  ASSERT_FALSE(explorer_->automatic_layout());
+  explorer_->save_session_now();
+  open_explorer("equations", {}, session, true);
+  EXPECT_FALSE(explorer_->automatic_layout());
+  explorer_->reset_layout();
+  explorer_->save_session_now();
+  open_explorer("equations", {}, session, true);
+  EXPECT_TRUE(explorer_->automatic_layout());
+}
+
 // The regime map's colours explained beside it: a colour bar with n's scale on the map's right
 // and the regimes without n named under it.
 TEST_F(ExplorerTest, TheRegimeMapHasAColourBarAndNamesItsRegimes) {

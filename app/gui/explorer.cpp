@@ -35,6 +35,7 @@ Explorer::Explorer(const Preset& initial, const std::string& initial_path, bool 
       style.fold_lines = s->fold_lines_3d;
       style.ground = s->ground;
       appearance_.request(s->ui_scale_percent, s->light_theme);
+      automatic_layout_ = s->automatic_layout;
       document_.notify("Restored the last session.", MessageKind::info);
       for (const std::string& notice : s->notices) {
         document_.add_notice(notice);
@@ -107,6 +108,7 @@ void Explorer::save_session_now() {
   s.ground = cloth_view_.style().ground;
   s.ui_scale_percent = appearance_.scale_percent();
   s.light_theme = appearance_.light_theme();
+  s.automatic_layout = automatic_layout_;
   save_session(options_.session_file, s);
   document_.session_dirty = false;
 }
@@ -235,6 +237,7 @@ float Explorer::main_menu() {
 
 void Explorer::reset_layout() {
   automatic_layout_ = true;
+  document_.session_dirty = true;
   for (bool& valid : placed_valid_) {
     valid = false;
   }
