@@ -563,7 +563,9 @@ TEST(Contrast, TextAndMarkerColoursReadInBothThemes) {
     for (const auto& t : texts) {
       EXPECT_GE(contrast_ratio(t.colour->get(light), window_background(light)), 4.5) << t.name;
     }
-    EXPECT_GE(contrast_ratio(kSupportMarker.get(light), plot_background(light)), 4.5);
+    for (const ThemedColour* mark : {&kSupportMarker, &kSweepCurve, &kPaperPoint, &kCurrentValue}) {
+      EXPECT_GE(contrast_ratio(mark->get(light), plot_background(light)), 4.5);
+    }
   }
   // What the light theme showed before: the dark theme's amber on its 0.94 grey, about 1.6:1.
   EXPECT_LT(contrast_ratio(kNoteText.get(false), window_background(true)), 2.0);

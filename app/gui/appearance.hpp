@@ -58,8 +58,12 @@ inline const ThemedColour kOkText{{0.55f, 0.85f, 0.55f, 1.0f}, {0.05f, 0.45f, 0.
 inline const ThemedColour kNoteText{{1.00f, 0.78f, 0.35f, 1.0f}, {0.60f, 0.30f, 0.00f, 1.0f}};
 inline const ThemedColour kDimText{{0.65f, 0.65f, 0.70f, 1.0f}, {0.35f, 0.35f, 0.38f, 1.0f}};
 inline const ThemedColour kSectionText{{0.55f, 0.75f, 1.00f, 1.0f}, {0.10f, 0.30f, 0.65f, 1.0f}};
-// The supports' markers on the fold plot, against the plot background.
+// Marks on the plots, against the plot background: the supports on the fold plot; the model's
+// curve, the paper's points and the current value on the sweeps.
 inline const ThemedColour kSupportMarker{{0.94f, 0.78f, 0.24f, 1.0f}, {0.55f, 0.35f, 0.00f, 1.0f}};
+inline const ThemedColour kSweepCurve{{0.35f, 0.67f, 1.00f, 1.0f}, {0.05f, 0.35f, 0.75f, 1.0f}};
+inline const ThemedColour kPaperPoint{{1.00f, 0.47f, 0.24f, 1.0f}, {0.75f, 0.25f, 0.00f, 1.0f}};
+inline const ThemedColour kCurrentValue{{0.94f, 0.86f, 0.35f, 1.0f}, {0.45f, 0.40f, 0.00f, 1.0f}};
 
 // Builds the font atlas and the style for a scale and theme. Call outside a frame (between
 // ImGui::Render and ImGui::NewFrame); the renderer re-uploads the atlas.

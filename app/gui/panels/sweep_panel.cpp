@@ -10,13 +10,6 @@
 #include "app/gui/panels/widgets.hpp"
 
 namespace foldlab::gui {
-namespace {
-
-constexpr ImU32 kCurveColour = IM_COL32(90, 170, 255, 255);
-constexpr ImU32 kPaperColour = IM_COL32(255, 120, 60, 255);
-constexpr ImU32 kCurrentColour = IM_COL32(240, 220, 90, 200);
-
-}  // namespace
 
 SweepPanel::SweepPanel(std::filesystem::path presets_dir) : presets_dir_(std::move(presets_dir)) {}
 
@@ -177,15 +170,15 @@ void SweepPanel::draw(Document& document) {
     }
     const char* legend = overlay ? "model" : nullptr;
     if (q.steps) {
-      q.plot.steps(legend, xs_, q.ys, kCurveColour, 2.0f);
+      q.plot.steps(legend, xs_, q.ys, kSweepCurve.u32(), 2.0f);
     } else {
-      q.plot.line(legend, xs_, q.ys, kCurveColour, 2.0f);
+      q.plot.line(legend, xs_, q.ys, kSweepCurve.u32(), 2.0f);
     }
     if (overlay) {
-      q.plot.markers(overlay_label_.c_str(), q.paper_x, q.paper_y, kPaperColour,
+      q.plot.markers(overlay_label_.c_str(), q.paper_x, q.paper_y, kPaperPoint.u32(),
                      MarkerShape::Diamond, 5.0f);
     }
-    q.plot.vertical_line(now, kCurrentColour);
+    q.plot.vertical_line(now, kCurrentValue.u32());
     q.plot.end();
   }
 }
