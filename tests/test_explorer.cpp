@@ -612,6 +612,32 @@ TEST(Contrast, FoldColoursReadOnThePlotBackgroundInBothThemes) {
   EXPECT_NEAR(contrast_ratio(old_blue, plot_background(false)), 1.3, 0.1);
 }
 
+// The text colours that read weakly on a light background before (yellow supports, the green
+// success tag, amber notes): each at least 4.5:1 against what it is drawn on, in both themes.
+TEST(Contrast, TextAndMarkerColoursReadInBothThemes) {
+  const struct {
+    const char* name;
+    const ThemedColour* colour;
+  } texts[] = {{"error", &kErrorText},
+               {"success", &kOkText},
+               {"note", &kNoteText},
+               {"dim", &kDimText},
+               {"section", &kSectionText}};
+  for (const bool light : {false, true}) {
+    SCOPED_TRACE(light ? "light theme" : "dark theme");
+    for (const auto& t : texts) {
+      EXPECT_GE(contrast_ratio(t.colour->get(light), window_background(light)), 4.5) << t.name;
+    }
+    for (const ThemedColour* mark : {&kSupportMarker, &kSweepCurve, &kPaperPoint, &kCurrentValue}) {
+      EXPECT_GE(contrast_ratio(mark->get(light), plot_background(light)), 4.5);
+    }
+  }
+  // What the light theme showed before: the dark theme's amber on its 0.94 grey, about 1.6:1.
+  EXPECT_LT(contrast_ratio(kNoteText.get(false), window_background(true)), 2.0);
+  EXPECT_NEAR(relative_luminance(0.94, 0.94, 0.94), 0.8689, 1e-4);  // ((0.94 + 0.055) / 1.055)^2.4
+  EXPECT_NEAR(window_background(true).x, 0.94f, 1e-6);
+}
+
 TEST_F(ExplorerTest, TheFontHasGreekAndFallsBackWhenMissing) {
   constexpr ImWchar kNu = 0x03BD;
   constexpr ImWchar kCapitalSigma = 0x03A3;
@@ -945,6 +971,192 @@ TEST_F(ExplorerTest, TheGridViewSettingTakesTheSlidersWholeNumbersOnly) {
     EXPECT_NE(problem->find("from 8 to 512"), std::string::npos) << *problem;
   }
   EXPECT_EQ(explorer_->scene().grid_nx(), 8) << "a refused value changes nothing";
+}
+
+// Every tiled panel, as the test reads it: ImGui's own window rectangles.
+using Rects = std::vector<std::pair<std::string, PanelRect>>;
+
+// The panels cover the display below the menu bar exactly: inside it, no two overlapping, and
+// their areas summing to the whole, so there is neither a gap nor a margin.
+void expect_tiles_fill(const Rects& rects, ImVec2 display, float menu_height) {
+  ASSERT_EQ(rects.size(), 6u);
+  double area = 0.0;
+  for (std::size_t i = 0; i < rects.size(); ++i) {
+    const PanelRect& a = rects[i].second;
+    SCOPED_TRACE(rects[i].first);
+    EXPECT_GE(a.pos.x, 0.0f);
+    EXPECT_GE(a.pos.y, menu_height);
+    EXPECT_LE(a.pos.x + a.size.x, display.x);
+    EXPECT_LE(a.pos.y + a.size.y, display.y);
+    area += static_cast<double>(a.size.x) * a.size.y;
+    for (std::size_t j = i + 1; j < rects.size(); ++j) {
+      const PanelRect& b = rects[j].second;
+      const bool apart = a.pos.x + a.size.x <= b.pos.x || b.pos.x + b.size.x <= a.pos.x ||
+                         a.pos.y + a.size.y <= b.pos.y || b.pos.y + b.size.y <= a.pos.y;
+      EXPECT_TRUE(apart) << "overlaps " << rects[j].first;
+    }
+  }
+  EXPECT_DOUBLE_EQ(area, static_cast<double>(display.x) * (display.y - menu_height));
+}
+
+TEST_F(ExplorerTest, PanelsRefitTheWindowAsItGrowsAndShrinks) {
+  ImGuiIO& io = ImGui::GetIO();
+  const float menu_height = ImGui::GetFrameHeight();  // the main menu bar: one frame high
+  for (const ImVec2 size : {ImVec2(1024, 640), ImVec2(1920, 1080), ImVec2(1280, 800),
+                            ImVec2(2560, 1440), ImVec2(1024, 640)}) {
+    SCOPED_TRACE(::testing::Message() << size.x << "x" << size.y);
+    io.DisplaySize = size;
+    frame();
+    frame();
+    EXPECT_TRUE(explorer_->automatic_layout());
+    expect_tiles_fill(explorer_->panel_rects(), size, menu_height);
+  }
+}
+
+// Widths in font sizes: at 200 % the parameters column is twice as wide (it is 25 font sizes
+// at 1024 px), and the whole window is still tiled.
+TEST_F(ExplorerTest, TheLayoutsWidthsFollowTheUiScale) {
+  ImGuiIO& io = ImGui::GetIO();
+  io.DisplaySize = ImVec2(1024, 640);
+  frame();
+  const auto width_of = [this](const std::string& name) {
+    for (const auto& [n, r] : explorer_->panel_rects()) {
+      if (n == name) {
+        return r.size.x;
+      }
+    }
+    ADD_FAILURE() << name;
+    return 0.0f;
+  };
+  EXPECT_FLOAT_EQ(width_of("parameters"), 25.0f * 13.0f);  // ProggyClean: 13 px
+  ASSERT_EQ(explorer_->set_view("scale", "200"), std::nullopt);
+  frame();
+  frame();
+  EXPECT_FLOAT_EQ(ImGui::GetFontSize(), 26.0f);
+  // 50 font sizes would be 1300 px: the column stops at 45 % of the window, 460 px.
+  EXPECT_FLOAT_EQ(width_of("parameters"), std::floor(0.45f * 1024.0f));
+  expect_tiles_fill(explorer_->panel_rects(), io.DisplaySize, ImGui::GetFrameHeight());
+  io.DisplaySize = ImVec2(2560, 1440);
+  frame();
+  frame();
+  // 30 % of 2560 px is 768 px, between 25 and 40 font sizes (650 and 1040 px).
+  EXPECT_FLOAT_EQ(width_of("parameters"), 768.0f);
+}
+
+TEST_F(ExplorerTest, APanelTheUserMovesStaysUntilResetLayout) {
+  ImGuiIO& io = ImGui::GetIO();
+  frame();
+  const auto results_pos = [this] {
+    for (const auto& [n, r] : explorer_->panel_rects()) {
+      if (n == "results") {
+        return r.pos;
+      }
+    }
+    return ImVec2(-1, -1);
+  };
+  const ImVec2 before = results_pos();
+  // Drag the Results panel by its title bar, 60 px right and 40 px down.
+  const ImVec2 title = position_of("Results");
+  const ImVec2 grab(title.x + 80.0f, title.y + 4.0f);
+  io.MousePos = grab;
+  frame();
+  io.MouseDown[0] = true;
+  frame();
+  for (float step = 1.0f; step <= 4.0f; step += 1.0f) {
+    io.MousePos = ImVec2(grab.x + 15.0f * step, grab.y + 10.0f * step);
+    frame();
+  }
+  io.MouseDown[0] = false;
+  frame();
+  frame();
+  EXPECT_FALSE(explorer_->automatic_layout());
+  EXPECT_FLOAT_EQ(results_pos().x, before.x + 60.0f);
+  EXPECT_FLOAT_EQ(results_pos().y, before.y + 40.0f);
+  // A bigger window no longer moves the user's panel.
+  io.DisplaySize = ImVec2(1600, 1000);
+  frame();
+  frame();
+  EXPECT_FLOAT_EQ(results_pos().x, before.x + 60.0f);
+  EXPECT_FLOAT_EQ(results_pos().y, before.y + 40.0f);
+  // "Reset layout" stands in the menu bar while the user's arrangement is shown.
+  click("Reset layout");
+  EXPECT_TRUE(explorer_->automatic_layout());
+  expect_tiles_fill(explorer_->panel_rects(), io.DisplaySize, ImGui::GetFrameHeight());
+  EXPECT_EQ(frame().find("Reset layout"), std::string::npos) << "only shown when it would act";
+}
+
+// A session remembers whether the user arranged the panels (imgui.ini keeps where), so that the
+// next start does not tile over their arrangement.
+TEST_F(ExplorerTest, TheUsersArrangementIsRememberedWithTheSession) {
+  const fs::path session = dir_ / "session.json";
+  open_explorer("equations", {}, session);
+  EXPECT_TRUE(explorer_->automatic_layout());
+  const ImVec2 title = position_of("Results");
+  ImGuiIO& io = ImGui::GetIO();
+  io.MousePos = ImVec2(title.x + 80.0f, title.y + 4.0f);
+  frame();
+  io.MouseDown[0] = true;
+  frame();
+  io.MousePos.x += 50.0f;
+  frame();
+  io.MouseDown[0] = false;
+  frame();
+  ASSERT_FALSE(explorer_->automatic_layout());
+  explorer_->save_session_now();
+  open_explorer("equations", {}, session, true);
+  EXPECT_FALSE(explorer_->automatic_layout());
+  explorer_->reset_layout();
+  explorer_->save_session_now();
+  open_explorer("equations", {}, session, true);
+  EXPECT_TRUE(explorer_->automatic_layout());
+}
+
+// The regime map's colours explained beside it: a colour bar with n's scale on the map's right
+// and the regimes without n named under it.
+TEST_F(ExplorerTest, TheRegimeMapHasAColourBarAndNamesItsRegimes) {
+  open_explorer("map");
+  while (explorer_->busy()) {
+    frame();
+  }
+  const std::string text = frame();
+  for (const char* name : {"no slack", "short cloth", "negligible slack", "invalid inputs"}) {
+    EXPECT_NE(text.find(name), std::string::npos) << name << "\n" << text;
+  }
+  // The bar's scale, 1 at the bottom to 200 at the top, right of the map's x range (3e+03).
+  const ImVec2 top = position_of("\n200\n");
+  const ImVec2 bottom = position_of("\n1\n");
+  const ImVec2 x_to = position_of("3e+03");
+  EXPECT_LT(top.y, bottom.y);
+  EXPECT_GT(top.x, x_to.x);
+  EXPECT_GT(bottom.x, x_to.x);
+}
+
+// At the smallest supported window the controls of each panel are drawn inside it, not cut off
+// at its right edge: the rows wrap.
+TEST_F(ExplorerTest, At1024x640NoControlIsCutOff) {
+  ImGui::GetIO().DisplaySize = ImVec2(1024, 640);
+  frame();
+  frame();
+  const Rects rects = explorer_->panel_rects();
+  const auto right_of = [&](const std::string& name) {
+    for (const auto& [n, r] : rects) {
+      if (n == name) {
+        return r.pos.x + r.size.x;
+      }
+    }
+    return 0.0f;
+  };
+  const struct {
+    const char* label;
+    const char* panel;
+  } controls[] = {{"reset camera", "cloth"},   {"breeze", "cloth"},
+                  {"z exaggeration", "cloth"}, {"Save as...", "presets"},
+                  {"autoscale", "fold_plot"},  {"Reset to preset", "parameters"},
+                  {"Regime map", "analysis"}};
+  for (const auto& c : controls) {
+    const ImVec2 at = position_of(c.label);
+    EXPECT_LE(at.x + ImGui::CalcTextSize(c.label).x, right_of(c.panel)) << c.label;
+  }
 }
 
 }  // namespace

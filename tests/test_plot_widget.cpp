@@ -190,6 +190,11 @@ class PlotWidget : public testing::Test {
     return c;
   }
 
+  static bool in_legend(const PlotView& v, ImVec2 p) {
+    return p.x >= v.legend_min.x && p.x <= v.legend_max.x && p.y >= v.legend_min.y &&
+           p.y <= v.legend_max.y;
+  }
+
   static void move_mouse(ImVec2 p) { ImGui::GetIO().MousePos = p; }
 
   ImGuiContext* context_ = nullptr;
@@ -223,6 +228,8 @@ TEST_F(PlotWidget, LinesAreDrawnInTheirColoursInsideThePlotRect) {
     const std::vector<Vertex> vs = vertices_of(colour);
     ASSERT_GE(vs.size(), 8u) << std::hex << colour;
     for (const Vertex& vx : vs) {
+      if (in_legend(v, vx.pos))
+        continue;  // the legend's swatch, under the axes
       EXPECT_GE(vx.pos.x, v.min.x);
       EXPECT_LE(vx.pos.x, v.max.x);
       EXPECT_GE(vx.pos.y, v.min.y);
@@ -254,6 +261,8 @@ TEST_F(PlotWidget, ZoomedInLinesAreCutToThePlotRect) {
   ASSERT_FALSE(vs.empty());
   const float slack = 1.5f + 2.0f;  // line width and anti-aliasing around the cut
   for (const Vertex& vx : vs) {
+    if (in_legend(v, vx.pos))
+      continue;
     EXPECT_GE(vx.pos.x, v.min.x - slack);
     EXPECT_LE(vx.pos.x, v.max.x + slack);
     EXPECT_GE(vx.pos.y, v.min.y - slack);
@@ -573,6 +582,48 @@ TEST_F(PlotWidget, LegendShowsEachLabelOnce) {
     plot_.end();
   });
   EXPECT_EQ(plot_.view().legend_entries, 2);
+}
+
+// The fold plot's supports sit in the data's top corners and the sweep's paper point at its far
+// right: wherever data lies, the legend's rectangle holds none of it (markers with their radius)
+// and lies outside the data area, and the legend's swatches are drawn there.
+TEST_F(PlotWidget, TheLegendCoversNoDataPointAtAnyWidth) {
+  const std::vector<double> sx{-650, 650}, sy{0, 0};           // supports: top corners
+  const std::vector<double> px{2350}, py{7};                   // a paper point: top right
+  const std::vector<double> cx{-650, 0, 650}, cy{0, 1400, 0};  // a sag between the supports
+  constexpr float kMarkerRadius = 5.0f;
+  for (const float width : {600.0f, 240.0f, 130.0f}) {
+    SCOPED_TRACE(testing::Message() << "plot " << width << " px wide");
+    frame([&] {
+      ASSERT_TRUE(plot_.begin("plot", ImVec2(width, 300), x_axis_, y_axis_));
+      plot_.line("positive fold", cx, cy, kColA);
+      plot_.line("negative fold with a long name", cx, cy, kColB);
+      plot_.markers("supports", sx, sy, kColC, MarkerShape::Triangle, kMarkerRadius);
+      plot_.markers("paper, Table 2", px, py, kColC, MarkerShape::Circle, kMarkerRadius);
+      plot_.end();
+    });
+    const PlotView& v = plot_.view();
+    ASSERT_EQ(v.legend_entries, 4);
+    ASSERT_LT(v.legend_min.x, v.legend_max.x);
+    ASSERT_LT(v.legend_min.y, v.legend_max.y);
+    // Below the data area: no overlap with it at all.
+    EXPECT_GE(v.legend_min.y, v.max.y);
+    const auto in_legend = [&](ImVec2 p, float r) {
+      return p.x + r > v.legend_min.x && p.x - r < v.legend_max.x && p.y + r > v.legend_min.y &&
+             p.y - r < v.legend_max.y;
+    };
+    for (const auto& [xs, ys] : {std::pair{&sx, &sy}, std::pair{&px, &py}, std::pair{&cx, &cy}}) {
+      for (std::size_t i = 0; i < xs->size(); ++i) {
+        const ImVec2 p = v.to_screen((*xs)[i], (*ys)[i]);
+        EXPECT_FALSE(in_legend(p, kMarkerRadius)) << (*xs)[i] << ", " << (*ys)[i];
+      }
+    }
+    // The swatch of line A is drawn in the legend, under the data area.
+    const std::vector<Vertex> a = vertices_of(kColA);
+    EXPECT_TRUE(std::any_of(a.begin(), a.end(), [&](const Vertex& vx) {
+      return vx.pos.y > v.max.y && in_legend(vx.pos, 0.0f);
+    }));
+  }
 }
 
 TEST_F(PlotWidget, StepsJumpHalfWayBetweenSamples) {

@@ -74,10 +74,14 @@ bool style_is_light() {
 }
 
 ImVec4 plot_background(bool light_theme) {
-  const ImGuiStyle style = theme_style(light_theme);
-  ImVec4 window = style.Colors[ImGuiCol_WindowBg];
+  return blend_over(theme_style(light_theme).Colors[ImGuiCol_FrameBg],
+                    window_background(light_theme));
+}
+
+ImVec4 window_background(bool light_theme) {
+  ImVec4 window = theme_style(light_theme).Colors[ImGuiCol_WindowBg];
   window.w = 1.0f;  // the renderer fills it opaque
-  return blend_over(style.Colors[ImGuiCol_FrameBg], window);
+  return window;
 }
 
 void Appearance::request(int scale_percent, bool light_theme) {

@@ -39,6 +39,32 @@ bool style_is_light();
 // The plot area's background as drawn: the theme's frame fill over its window background.
 ImVec4 plot_background(bool light_theme);
 
+// The window's background as the renderer fills it, opaque: what text is read against.
+ImVec4 window_background(bool light_theme);
+
+// A colour with one value per theme, each with at least 4.5:1 contrast against what it is drawn
+// on in that theme. Converts to the current theme's value, so it reads like a plain ImVec4.
+struct ThemedColour {
+  ImVec4 dark;
+  ImVec4 light;
+  ImVec4 get(bool light_theme) const { return light_theme ? light : dark; }
+  operator ImVec4() const { return get(style_is_light()); }  // NOLINT: used as an ImVec4
+  ImU32 u32() const { return ImGui::ColorConvertFloat4ToU32(*this); }
+};
+// Text colours, against the window background: an error, a success, a warning or note, a dim
+// remark, a section title.
+inline const ThemedColour kErrorText{{1.00f, 0.45f, 0.40f, 1.0f}, {0.70f, 0.05f, 0.05f, 1.0f}};
+inline const ThemedColour kOkText{{0.55f, 0.85f, 0.55f, 1.0f}, {0.05f, 0.45f, 0.10f, 1.0f}};
+inline const ThemedColour kNoteText{{1.00f, 0.78f, 0.35f, 1.0f}, {0.60f, 0.30f, 0.00f, 1.0f}};
+inline const ThemedColour kDimText{{0.65f, 0.65f, 0.70f, 1.0f}, {0.35f, 0.35f, 0.38f, 1.0f}};
+inline const ThemedColour kSectionText{{0.55f, 0.75f, 1.00f, 1.0f}, {0.10f, 0.30f, 0.65f, 1.0f}};
+// Marks on the plots, against the plot background: the supports on the fold plot; the model's
+// curve, the paper's points and the current value on the sweeps.
+inline const ThemedColour kSupportMarker{{0.94f, 0.78f, 0.24f, 1.0f}, {0.55f, 0.35f, 0.00f, 1.0f}};
+inline const ThemedColour kSweepCurve{{0.35f, 0.67f, 1.00f, 1.0f}, {0.05f, 0.35f, 0.75f, 1.0f}};
+inline const ThemedColour kPaperPoint{{1.00f, 0.47f, 0.24f, 1.0f}, {0.75f, 0.25f, 0.00f, 1.0f}};
+inline const ThemedColour kCurrentValue{{0.94f, 0.86f, 0.35f, 1.0f}, {0.45f, 0.40f, 0.00f, 1.0f}};
+
 // Builds the font atlas and the style for a scale and theme. Call outside a frame (between
 // ImGui::Render and ImGui::NewFrame); the renderer re-uploads the atlas.
 class Appearance {

@@ -5,7 +5,7 @@
 #include <utility>
 
 #include <imgui.h>
-#include <imgui_internal.h>
+#include <imgui_internal.h>  // FindWindowByName: where the user moved a panel
 
 #include "app/gui/panels/stats_overlay.hpp"
 #include "app/gui/panels/widgets.hpp"
@@ -35,6 +35,7 @@ Explorer::Explorer(const Preset& initial, const std::string& initial_path, bool 
       style.fold_lines = s->fold_lines_3d;
       style.ground = s->ground;
       appearance_.request(s->ui_scale_percent, s->light_theme);
+      automatic_layout_ = s->automatic_layout;
       document_.notify("Restored the last session.", MessageKind::info);
       for (const std::string& notice : s->notices) {
         document_.add_notice(notice);
@@ -119,6 +120,7 @@ void Explorer::save_session_now() {
   s.ground = cloth_view_.style().ground;
   s.ui_scale_percent = appearance_.scale_percent();
   s.light_theme = appearance_.light_theme();
+  s.automatic_layout = automatic_layout_;
   save_session(options_.session_file, s);
   document_.session_dirty = false;
 }
@@ -201,29 +203,112 @@ void Explorer::draw_unsaved_dialog() {
   }
 }
 
-// The UI scale and theme, for a projector: buttons beside the shortcuts that do the same.
-void Explorer::view_controls() {
+// The UI scale and theme, for a projector, beside the shortcuts that do the same.
+void Explorer::view_menu() {
   int percent = appearance_.scale_percent();
   bool light = appearance_.light_theme();
-  ImGui::AlignTextToFramePadding();
   ImGui::Text("UI scale %d %%", percent);
-  ImGui::SameLine();
-  if (ImGui::SmallButton("-")) {
-    percent -= kUiScaleStepPercent;
-  }
-  ImGui::SameLine();
-  if (ImGui::SmallButton("+")) {
+  if (ImGui::MenuItem("Larger text", "Ctrl +", false, percent < kMaxUiScalePercent)) {
     percent += kUiScaleStepPercent;
   }
-  help_marker("Ctrl + and Ctrl - change the scale, Ctrl 0 resets it.");
-  ImGui::SameLine();
-  ImGui::Checkbox("light theme", &light);
-  appearance_.request(percent, light);
-  if (!appearance_.notice().empty()) {
-    ImGui::PushStyleColor(ImGuiCol_Text, kNoteText);
-    ImGui::TextWrapped("%s", appearance_.notice().c_str());
-    ImGui::PopStyleColor();
+  if (ImGui::MenuItem("Smaller text", "Ctrl -", false, percent > kMinUiScalePercent)) {
+    percent -= kUiScaleStepPercent;
   }
+  if (ImGui::MenuItem("Default size", "Ctrl 0", false, percent != kMinUiScalePercent)) {
+    percent = kMinUiScalePercent;
+  }
+  ImGui::MenuItem("Light theme", nullptr, &light);
+  appearance_.request(percent, light);
+  ImGui::Separator();
+  ImGui::MenuItem("Pipeline stats", nullptr, &show_stats_);
+  if (ImGui::MenuItem("Reset layout", nullptr, false, !automatic_layout_)) {
+    reset_layout();
+  }
+}
+
+float Explorer::main_menu() {
+  float height = 0.0f;
+  if (ImGui::BeginMainMenuBar()) {
+    height = ImGui::GetWindowHeight();
+    if (ImGui::BeginMenu("View")) {
+      view_menu();
+      ImGui::EndMenu();
+    }
+    if (ImGui::BeginMenu("Export")) {
+      export_.menu(document_, cloth_view_.style());
+      ImGui::EndMenu();
+    }
+    // One click from the menu bar while the user's own arrangement is shown.
+    if (!automatic_layout_ && ImGui::MenuItem("Reset layout")) {
+      reset_layout();
+    }
+    ImGui::EndMainMenuBar();
+  }
+  return height;
+}
+
+void Explorer::reset_layout() {
+  automatic_layout_ = true;
+  document_.session_dirty = true;
+  for (bool& valid : placed_valid_) {
+    valid = false;
+  }
+}
+
+void Explorer::place(Tile tile, const TiledLayout& layout) {
+  const int i = static_cast<int>(tile);
+  const PanelRect& rect = layout[tile];
+  if (automatic_layout_ && placed_valid_[i]) {
+    const ImGuiWindow* window = ImGui::FindWindowByName(tile_window_name(tile));
+    const PanelRect& last = placed_[i];
+    if (window != nullptr &&
+        (window->Pos.x != last.pos.x || window->Pos.y != last.pos.y ||
+         window->SizeFull.x != last.size.x || window->SizeFull.y != last.size.y)) {
+      automatic_layout_ = false;  // the user's arrangement stays until "Reset layout"
+      document_.session_dirty = true;
+    }
+  }
+  const ImGuiCond when = automatic_layout_ ? ImGuiCond_Always : ImGuiCond_FirstUseEver;
+  ImGui::SetNextWindowPos(rect.pos, when);
+  ImGui::SetNextWindowSize(rect.size, when);
+  placed_[i] = rect;
+  placed_valid_[i] = automatic_layout_;
+}
+
+std::vector<std::pair<std::string, PanelRect>> Explorer::panel_rects() const {
+  static const char* const names[kTileCount] = {"parameters", "presets", "fold_plot",
+                                                "cloth",      "results", "analysis"};
+  std::vector<std::pair<std::string, PanelRect>> out;
+  for (int i = 0; i < kTileCount; ++i) {
+    const ImGuiWindow* window = ImGui::FindWindowByName(tile_window_name(static_cast<Tile>(i)));
+    if (window != nullptr) {
+      out.emplace_back(names[i], PanelRect{window->Pos, window->SizeFull});
+    }
+  }
+  return out;
+}
+
+bool Explorer::panels_fill_window() const {
+  const auto rects = panel_rects();
+  const ImVec2 display = ImGui::GetIO().DisplaySize;
+  double area = 0.0;
+  for (std::size_t i = 0; i < rects.size(); ++i) {
+    const PanelRect& a = rects[i].second;
+    if (a.pos.x < 0.0f || a.pos.y < menu_height_ || a.pos.x + a.size.x > display.x ||
+        a.pos.y + a.size.y > display.y) {
+      return false;
+    }
+    area += static_cast<double>(a.size.x) * a.size.y;
+    for (std::size_t j = i + 1; j < rects.size(); ++j) {
+      const PanelRect& b = rects[j].second;
+      if (a.pos.x < b.pos.x + b.size.x && b.pos.x < a.pos.x + a.size.x &&
+          a.pos.y < b.pos.y + b.size.y && b.pos.y < a.pos.y + a.size.y) {
+        return false;
+      }
+    }
+  }
+  return rects.size() == kTileCount &&
+         area == static_cast<double>(display.x) * (static_cast<double>(display.y) - menu_height_);
 }
 
 bool Explorer::awaits_time() const {
@@ -238,17 +323,27 @@ void Explorer::frame() {
   const bool light_before = appearance_.light_theme();
   appearance_.handle_shortcuts();
   handle_shortcuts();
+  menu_height_ = main_menu();
+  const TiledLayout layout =
+      tiled_layout(ImGui::GetIO().DisplaySize, menu_height_, ImGui::GetFontSize());
+  place(Tile::parameters, layout);
   parameters_.draw(document_, renderer_);
+  place(Tile::presets, layout);
   presets_.draw(document_, renderer_, [this] {
-    view_controls();
-    ImGui::Checkbox("pipeline stats", &show_stats_);
-    ImGui::SameLine();
     calibration_.open_button(document_.scene().parameters());
-    export_.draw(document_, cloth_view_.style());
+    if (!appearance_.notice().empty()) {
+      ImGui::PushStyleColor(ImGuiCol_Text, kNoteText);
+      ImGui::TextWrapped("%s", appearance_.notice().c_str());
+      ImGui::PopStyleColor();
+    }
   });
+  place(Tile::fold_plot, layout);
   fold_plot_.draw(document_, renderer_);
+  place(Tile::cloth, layout);
   cloth_view_.draw(document_, renderer_);
+  place(Tile::results, layout);
   results_.draw(document_, renderer_);
+  place(Tile::analysis, layout);
   analysis_.draw(document_, renderer_);
   if (calibration_.draw(document_.edited(), document_.loaded(), renderer_)) {
     document_.commit();  // the fitted constants, applied as a slider would

@@ -8,6 +8,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "app/gui/appearance.hpp"
@@ -20,6 +21,7 @@
 #include "app/gui/panels/parameters_panel.hpp"
 #include "app/gui/panels/presets_panel.hpp"
 #include "app/gui/panels/results_panel.hpp"
+#include "app/gui/panels/widgets.hpp"
 #include "app/gui/renderer.hpp"
 #include "core/io/preset.hpp"
 
@@ -64,6 +66,15 @@ class Explorer {
   const PresetsPanel& presets() const { return presets_; }
   const ParametersPanel& parameters_panel() const { return parameters_; }
   Appearance& appearance() { return appearance_; }
+  // True while the panels follow the window (until the user moves or resizes one).
+  bool automatic_layout() const { return automatic_layout_; }
+  // Where each tiled panel was drawn in the last frame (ImGui's windows, after the user's moves).
+  std::vector<std::pair<std::string, PanelRect>> panel_rects() const;
+  // True when the tiled panels cover the display below the menu bar exactly: no gap, no overlap,
+  // nothing outside it.
+  bool panels_fill_window() const;
+  // "View > Reset layout": the automatic layout again, from the next frame.
+  void reset_layout();
 
   void save_session_now();
   // The window is asked to close: true when nothing would be lost (no unsaved edits, or a session
@@ -99,7 +110,12 @@ class Explorer {
   // "Save / Discard / Cancel" before a preset load replaces unsaved edits.
   void draw_unsaved_dialog();
 
-  void view_controls();
+  // The menu bar (View, Export); returns its height, where the tiled panels start.
+  float main_menu();
+  void view_menu();
+  // Before a tiled panel's draw: its place in the automatic layout, set every frame until the
+  // user moves or resizes a panel (seen as a panel not where this put it last frame).
+  void place(Tile tile, const TiledLayout& layout);
 
   ExplorerOptions options_;
   Renderer& renderer_;
@@ -114,6 +130,10 @@ class Explorer {
   AnalysisPanel analysis_;
   CalibrationPanel calibration_;  // "Fit to measurements", opened from the Presets panel
   bool show_stats_ = false;
+  bool automatic_layout_ = true;
+  float menu_height_ = 0.0f;
+  PanelRect placed_[kTileCount];  // what place() set last, to see the user's moves
+  bool placed_valid_[kTileCount] = {};
   bool quit_confirmed_ = false;
   double last_session_save_time_ = 0.0;
 };

@@ -402,6 +402,10 @@ json explorer_state_json(Explorer& explorer) {
   }
   const std::optional<std::string> refused = document.refusal();
   const std::string& modal = document.modal_title();
+  json panels = json::object();
+  for (const auto& [name, rect] : explorer.panel_rects()) {
+    panels[name] = {{"x", rect.pos.x}, {"y", rect.pos.y}, {"w", rect.size.x}, {"h", rect.size.y}};
+  }
   return {
       {"grid", std::to_string(scene.grid_nx()) + "x" + std::to_string(scene.grid_ny())},
       {"regime_map_ms", explorer.regime_map_ms()},
@@ -422,6 +426,14 @@ json explorer_state_json(Explorer& explorer) {
       {"display", {ImGui::GetIO().DisplaySize.x, ImGui::GetIO().DisplaySize.y}},
       {"method_step", method_step_json(explorer.analysis().method())},
       {"view", cloth_view_json(explorer.cloth_style())},
+      {"message", document.message()},
+      {"layout",
+       {{"automatic", explorer.automatic_layout()},
+        {"fills_window", explorer.panels_fill_window()},
+        {"panels", panels}}},
+      {"appearance",
+       {{"scale_percent", explorer.appearance().scale_percent()},
+        {"light_theme", explorer.appearance().light_theme()}}},
   };
 }
 

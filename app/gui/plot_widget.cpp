@@ -586,9 +586,29 @@ std::optional<PlotHit> Plot::end() {
       fit(by.valid() ? by : all_y, y_log, yt0, yt1);
   }
 
+  // --- the legend: rows under the x title, outside the data area, so that it never hides data ---
+  const float swatch = font * 1.6f, row = font + 2, pad = std::round(font * 0.35f);
+  legend_rows_.clear();
+  {
+    const float frame_w = frame_max_.x - frame_min_.x;
+    float x = 0;
+    int rows = legend_.empty() ? 0 : 1;
+    for (const LegendEntry& e : legend_) {
+      const float w = swatch + pad + ImGui::CalcTextSize(legend_text_.c_str() + e.text).x;
+      if (x > 0 && x + w > frame_w) {
+        ++rows;
+        x = 0;
+      }
+      legend_rows_.push_back({x, static_cast<float>(rows - 1) * row, w});
+      x += w + 2 * font;
+    }
+    legend_height_ = rows > 0 ? static_cast<float>(rows) * row + pad : 0.0f;
+  }
+  const ImVec2 axes_max{frame_max_.x, std::max(frame_min_.y + 1, frame_max_.y - legend_height_)};
+
   // --- input, in the layout the user saw last frame ---
   float label_width = st->GetFloat(keys_[kLabelWidth], 0.0f);
-  Layout lay = layout(frame_min_, frame_max_, label_width, x_title, y_title, font);
+  Layout lay = layout(frame_min_, axes_max, label_width, x_title, y_title, font);
   if (hovered_ && io.MouseWheel != 0) {
     const bool zoom_x = !(io.KeyCtrl && !io.KeyShift), zoom_y = !(io.KeyShift && !io.KeyCtrl);
     const double f = std::pow(kWheelZoom, -static_cast<double>(io.MouseWheel));
@@ -644,7 +664,7 @@ std::optional<PlotHit> Plot::end() {
   // Hysteresis: a label width that flickers by a digit would make the whole plot jitter.
   if (needed > label_width || needed < label_width - font)
     label_width = needed;
-  lay = layout(frame_min_, frame_max_, label_width, x_title, y_title, font);
+  lay = layout(frame_min_, axes_max, label_width, x_title, y_title, font);
   const float plot_w = lay.max.x - lay.min.x;
   axis_ticks(xt0, xt1, x_log, std::clamp(static_cast<int>(plot_w / (font * 5.0f)), 2, 12),
              x_ticks_);
@@ -657,7 +677,6 @@ std::optional<PlotHit> Plot::end() {
   const ImU32 col_grid = ImGui::GetColorU32(ImGuiCol_Text, 0.12f);
   const ImU32 col_border = ImGui::GetColorU32(ImGuiCol_Border);
   const ImU32 col_text = ImGui::GetColorU32(ImGuiCol_Text);
-  const float pad = std::round(font * 0.35f);
 
   dl->AddRectFilled(lay.min, lay.max, col_bg);
   for (const double v : x_ticks_) {
@@ -788,31 +807,33 @@ std::optional<PlotHit> Plot::end() {
     dl->AddText({lay.min.x, frame_min_.y}, col_text, y_axis_.label.c_str());
   dl->PopClipRect();
 
-  // Legend in the top right corner of the data area, on top of the data.
+  // Legend entries flow left to right below the axes, centred when they fit on one row.
+  view_.legend_min = view_.legend_max = ImVec2(frame_min_.x, axes_max.y);
   if (!legend_.empty()) {
-    const float swatch = font * 1.6f, row = font + 2;
-    float text_w = 0;
-    for (const LegendEntry& e : legend_) {
-      text_w = std::max(text_w, ImGui::CalcTextSize(legend_text_.c_str() + e.text).x);
+    float widest = 0;
+    for (const LegendRow& r : legend_rows_) {
+      widest = std::max(widest, r.x + r.width);
     }
-    const ImVec2 box_max{lay.max.x - pad,
-                         lay.min.y + pad + 2 * pad + row * static_cast<float>(legend_.size())};
-    const ImVec2 box_min{box_max.x - (swatch + 3 * pad + text_w), lay.min.y + pad};
-    dl->PushClipRect(lay.min, lay.max, true);
-    dl->AddRectFilled(box_min, box_max, ImGui::GetColorU32(ImGuiCol_PopupBg, 0.85f));
-    dl->AddRect(box_min, box_max, col_border);
-    float y = box_min.y + pad;
-    for (const LegendEntry& e : legend_) {
-      const ImVec2 mid{box_min.x + pad + swatch / 2, y + row / 2};
+    const float left =
+        legend_rows_.back().y == 0 ? (frame_min_.x + frame_max_.x - widest) / 2 : frame_min_.x;
+    const float top = axes_max.y + pad;
+    dl->PushClipRect(frame_min_, frame_max_, true);
+    for (std::size_t i = 0; i < legend_.size(); ++i) {
+      const LegendEntry& e = legend_[i];
+      const LegendRow& r = legend_rows_[i];
+      const ImVec2 mid{left + r.x + swatch / 2, top + r.y + row / 2};
       if (e.kind == Kind::Markers) {
         draw_marker(dl, mid, std::min(4.0f, row / 2 - 1), e.colour, e.shape);
       } else {
         dl->AddLine({mid.x - swatch / 2, mid.y}, {mid.x + swatch / 2, mid.y}, e.colour, 2.0f);
       }
-      dl->AddText({box_min.x + 2 * pad + swatch, y + 1}, col_text, legend_text_.c_str() + e.text);
-      y += row;
+      dl->AddText({left + r.x + swatch + pad, top + r.y + 1}, col_text,
+                  legend_text_.c_str() + e.text);
     }
     dl->PopClipRect();
+    view_.legend_min = ImVec2(left, top);
+    view_.legend_max = ImVec2(std::min(left + widest, frame_max_.x),
+                              std::min(top + legend_rows_.back().y + row, frame_max_.y));
   }
 
   // --- state for the next frame and for the caller ---

@@ -57,6 +57,9 @@ struct PlotView {
   bool x_flipped = false, y_flipped = false;
   bool x_auto = true, y_auto = true;  // the axis follows the data
   int legend_entries = 0;             // after de-duplication by label
+  // The legend's screen rectangle: below the x axis title, outside the data area (empty, at the
+  // axes' bottom left, when there is no legend).
+  ImVec2 legend_min{0, 0}, legend_max{0, 0};
 
   ImVec2 to_screen(double x, double y) const;
   std::pair<double, double> to_data(ImVec2 screen) const;
@@ -85,8 +88,8 @@ class Plot {
   // Fit both axes to the data again, from this frame on (between begin() and end()).
   void request_autoscale() { autoscale_requested_ = true; }
 
-  // Draws axes, grid, ticks, series and legend, handles zoom/pan/autoscale and returns the
-  // data point nearest to the mouse, if any is within 12 px.
+  // Draws axes, grid, ticks, series and legend (below the axes, never over the data), handles
+  // zoom/pan/autoscale and returns the data point nearest to the mouse, if any is within 12 px.
   std::optional<PlotHit> end();
 
   // Valid after end(); the same until the next end().
@@ -113,6 +116,10 @@ class Plot {
     ImU32 colour;
     std::size_t text;  // offset into legend_text_, npos for none
   };
+  struct LegendRow {
+    float x, y;  // offset of the entry from the legend's top left
+    float width;
+  };
   struct DPoint {
     double x, y;
   };
@@ -131,6 +138,8 @@ class Plot {
   std::vector<Series> series_;
   std::vector<LegendEntry> legend_;
   std::vector<VLine> vlines_;
+  std::vector<LegendRow> legend_rows_;  // per legend entry, laid out in end()
+  float legend_height_ = 0;
   std::string legend_text_;  // NUL-separated copies: callers may pass temporaries' c_str()
   // Per-frame scratch, kept here so a long-lived Plot does not allocate once warm.
   std::vector<double> x_ticks_, y_ticks_;

@@ -36,6 +36,8 @@ struct Session {
   bool ground = true;
   int ui_scale_percent = 100;
   bool light_theme = false;
+  // False once the user moved or resized a panel: imgui.ini then holds their arrangement.
+  bool automatic_layout = true;
   // What was changed while loading (a grid resolution brought into the slider's range), to show.
   std::vector<std::string> notices;
 };

@@ -22,7 +22,6 @@ void AnalysisPanel::show_paper_case(int which, Document& document) {
 }
 
 void AnalysisPanel::draw(Document& document, Renderer& renderer) {
-  place_window(0.65f, 0.56f, 0.35f, 0.44f);
   if (!begin_panel("Analysis", renderer)) {
     ImGui::End();
     return;

@@ -4,6 +4,8 @@
 
 #include <imgui.h>
 
+#include "app/gui/panels/widgets.hpp"
+
 #include "core/analysis/sweep.hpp"
 #include "core/model/settings.hpp"
 
@@ -16,7 +18,7 @@ std::string axis_label(const std::string& key) {
 
 bool key_combo(const char* label, std::string& key) {
   bool changed = false;
-  ImGui::SetNextItemWidth(70.0f);
+  ImGui::SetNextItemWidth(ems(5.0f));
   if (ImGui::BeginCombo(label, key.c_str())) {
     for (const std::string& option : sweepable_keys()) {
       if (ImGui::Selectable(option.c_str(), option == key)) {
@@ -45,13 +47,13 @@ void default_range(const std::string& key, double current, double& from, double&
 bool range_inputs(const char* id, double& from, double& to) {
   ImGui::PushID(id);
   bool changed = false;
-  ImGui::SetNextItemWidth(90.0f);
+  ImGui::SetNextItemWidth(ems(6.5f));
   changed |=
       ImGui::InputDouble("##from", &from, 0.0, 0.0, "%.4g", ImGuiInputTextFlags_EnterReturnsTrue);
   ImGui::SameLine();
   ImGui::TextUnformatted("to");
   ImGui::SameLine();
-  ImGui::SetNextItemWidth(90.0f);
+  ImGui::SetNextItemWidth(ems(6.5f));
   changed |=
       ImGui::InputDouble("##to", &to, 0.0, 0.0, "%.4g", ImGuiInputTextFlags_EnterReturnsTrue);
   ImGui::PopID();

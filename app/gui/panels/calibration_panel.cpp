@@ -9,17 +9,12 @@
 #include <imgui.h>
 
 #include "app/common/presets_dir.hpp"
+#include "app/gui/panels/widgets.hpp"
 #include "app/gui/renderer.hpp"
 #include "core/model/text_format.hpp"
 
 namespace foldlab::gui {
 namespace {
-
-const ImVec4 kErrorText(1.0f, 0.45f, 0.40f, 1.0f);
-const ImVec4 kOkText(0.55f, 0.85f, 0.55f, 1.0f);
-const ImVec4 kNoteText(1.0f, 0.78f, 0.35f, 1.0f);
-const ImVec4 kDimText(0.65f, 0.65f, 0.70f, 1.0f);
-const ImVec4 kHeading(0.55f, 0.75f, 1.0f, 1.0f);
 
 // The paper's Tables 1-2 and Fig. 4 as shipped (data/ beside presets/), when they can be found.
 std::filesystem::path default_data_file() {
@@ -33,12 +28,6 @@ std::filesystem::path default_data_file() {
   const std::filesystem::path file = presets.parent_path() / "data" / "paper-measurements.csv";
   std::error_code error;
   return std::filesystem::is_regular_file(file, error) ? file : std::filesystem::path();
-}
-
-void section(const char* title) {
-  ImGui::Spacing();
-  ImGui::TextColored(kHeading, "%s", title);
-  ImGui::Separator();
 }
 
 using detail::printf_string;
@@ -256,7 +245,7 @@ bool CalibrationPanel::draw(Parameters& edited, const Preset& loaded, Renderer& 
         std::string(to_string(edited.model.int_rounding)).c_str());
     const bool valid = validate(edited).empty();
     if (running_) {
-      ImGui::ProgressBar(static_cast<float>(progress_.load()), ImVec2(-90.0f, 0.0f));
+      ImGui::ProgressBar(static_cast<float>(progress_.load()), ImVec2(-ems(7.0f), 0.0f));
       ImGui::SameLine();
       if (ImGui::Button("Cancel")) {
         cancel_requested_ = true;

@@ -140,11 +140,11 @@ void ClothViewPanel::draw_colour_bar(ImVec2 min, float height, double z_max_mm) 
 
 void ClothViewPanel::settings_row() {
   ImGui::Checkbox("wireframe", &style_.wireframe);
-  ImGui::SameLine();
+  same_line_if_fits(checkbox_width("fold lines"));
   ImGui::Checkbox("fold lines", &style_.fold_lines);
-  ImGui::SameLine();
+  same_line_if_fits(checkbox_width("ground"));
   ImGui::Checkbox("ground", &style_.ground);
-  ImGui::SameLine();
+  same_line_if_fits(button_width("reset camera"));
 }
 
 // Reframes for a new cloth (or on request), keeping the user's direction when only the cloth's
@@ -173,7 +173,6 @@ void ClothViewPanel::follow_the_cloth(Scene& scene, bool reset) {
 }
 
 void ClothViewPanel::draw(Document& document, Renderer& renderer) {
-  place_window(0.65f, 0.0f, 0.35f, 0.56f);
   if (fill_display_) {
     ImGui::SetNextWindowPos(ImVec2(0.0f, 0.0f), ImGuiCond_Always);
     ImGui::SetNextWindowSize(ImGui::GetIO().DisplaySize, ImGuiCond_Always);
@@ -191,13 +190,13 @@ void ClothViewPanel::draw(Document& document, Renderer& renderer) {
   }
   settings_row();
   const bool reset = ImGui::SmallButton("reset camera");
-  ImGui::SetNextItemWidth(160.0f);
+  ImGui::SetNextItemWidth(ems(12.0f));
   ImGui::SliderFloat("z exaggeration", &style_.z_exaggeration, 1.0f, 20.0f, "x %.1f",
                      ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp);
   help_marker(
       "Draws the out-of-plane depth z this many times deeper, to see the folds; the "
       "numbers are not changed.");
-  ImGui::SetNextItemWidth(100.0f);
+  ImGui::SetNextItemWidth(ems(7.5f));
   int print = static_cast<int>(style_.print);
   if (ImGui::Combo("print", &print, "plain\0woven checks\0stripes\0photo\0")) {
     style_.print = static_cast<ClothStyle::Print>(print);
@@ -216,7 +215,7 @@ void ClothViewPanel::draw(Document& document, Renderer& renderer) {
   }
   if (style_.print != ClothStyle::Print::plain) {
     ImGui::SameLine();
-    ImGui::SetNextItemWidth(110.0f);
+    ImGui::SetNextItemWidth(ems(8.5f));
     ImGui::SliderFloat("##print size", &style_.print_mm, 10.0f, 300.0f, "%.0f mm",
                        ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp);
   }
@@ -228,7 +227,7 @@ void ClothViewPanel::draw(Document& document, Renderer& renderer) {
       breeze_playing_ = !breeze_playing_;
     }
     ImGui::SameLine();
-    ImGui::SetNextItemWidth(100.0f);
+    ImGui::SetNextItemWidth(ems(7.5f));
     ImGui::SliderFloat("##breeze", &style_.breeze_mm, 5.0f, 300.0f, "%.0f mm",
                        ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp);
     if (breeze_playing_) {

@@ -4,6 +4,7 @@
 
 #include <imgui.h>
 
+#include "app/gui/panels/widgets.hpp"
 #include "core/io/export.hpp"
 #include "core/io/gltf_export.hpp"
 #include "core/io/io.hpp"
@@ -30,11 +31,9 @@ std::optional<std::string> ExportPanel::take_screenshot_request() {
   return request;
 }
 
-void ExportPanel::draw(Document& document, const ClothStyle& style) {
-  if (!ImGui::CollapsingHeader("Export")) {
-    return;
-  }
-  ImGui::SetNextItemWidth(-1.0f);
+void ExportPanel::menu(Document& document, const ClothStyle& style) {
+  ImGui::TextUnformatted("file name (without extension)");
+  ImGui::SetNextItemWidth(ems(20.0f));
   ImGui::InputText("##export stem", stem_, sizeof stem_);
   const std::string stem = stem_;
   Scene& scene = document.scene();
@@ -47,24 +46,21 @@ void ExportPanel::draw(Document& document, const ClothStyle& style) {
       document.notify(std::string("Not exported: ") + e.what(), true);
     }
   };
-  if (ImGui::Button("OBJ")) {
+  ImGui::Separator();
+  if (ImGui::MenuItem("OBJ mesh (.obj)")) {
     write(stem + ".obj", [&] { return mesh_to_obj(mesh_as_shown(scene, style), name); });
   }
-  ImGui::SameLine();
-  if (ImGui::Button("glTF (.glb)")) {
+  if (ImGui::MenuItem("glTF mesh (.glb)")) {
     write(stem + ".glb", [&] { return mesh_to_glb(mesh_as_shown(scene, style), name); });
   }
-  ImGui::SameLine();
-  if (ImGui::Button("SVG")) {
+  if (ImGui::MenuItem("Fold lines (.svg)")) {
     write(stem + ".svg",
           [&] { return fold_lines_to_svg(scene.fold_lines(), scene.solution(), name); });
   }
-  ImGui::SameLine();
-  if (ImGui::Button("CSV")) {
+  if (ImGui::MenuItem("Fold lines (.csv)")) {
     write(stem + ".csv", [&] { return fold_lines_to_csv(scene.fold_lines()); });
   }
-  ImGui::SameLine();
-  if (ImGui::Button("PNG")) {
+  if (ImGui::MenuItem("Window picture (.png)")) {
     screenshot_request_ = stem + ".png";
   }
 }

@@ -1,5 +1,6 @@
-// The Export section (inside the Presets panel): the mesh as the 3D view shows it now (OBJ, glTF),
-// the fold lines (SVG, CSV), and a PNG of the window, which the frame loop takes after drawing.
+// The Export menu (in the menu bar, so that it is one click away at any window size): the mesh as
+// the 3D view shows it now (OBJ, glTF), the fold lines (SVG, CSV), and a PNG of the window, which
+// the frame loop takes after drawing.
 #pragma once
 
 #include <optional>
@@ -13,7 +14,9 @@ namespace foldlab::gui {
 
 class ExportPanel {
  public:
-  void draw(Document& document, const ClothStyle& style);
+  // The menu's contents, between ImGui::BeginMenu and EndMenu: the file stem, then one item per
+  // format. Files are written relative to the working folder unless the stem is a path.
+  void menu(Document& document, const ClothStyle& style);
   // The PNG path the user asked for, once.
   std::optional<std::string> take_screenshot_request();
 

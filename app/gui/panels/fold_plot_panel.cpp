@@ -13,7 +13,6 @@
 namespace foldlab::gui {
 
 void FoldPlotPanel::draw(Document& document, Renderer& renderer) {
-  place_window(0.30f, 0.0f, 0.35f, 0.56f);
   if (!begin_panel("Fold lines (2D)", renderer)) {
     ImGui::End();
     return;  // hidden: the fold lines are not even computed
@@ -25,8 +24,7 @@ void FoldPlotPanel::draw(Document& document, Renderer& renderer) {
   if (ImGui::SmallButton("autoscale")) {
     autoscale_ = true;
   }
-  ImGui::SameLine();
-  ImGui::TextDisabled("wheel: zoom, drag: pan, double-click: autoscale");
+  hint_after("wheel: zoom, drag: pan, double-click: autoscale");
   if (lines.stride > 1) {
     ImGui::TextColored(kDimText, "every %d-th of %d lines drawn", lines.stride, s.n + 1);
   }
@@ -78,8 +76,8 @@ void FoldPlotPanel::draw(Document& document, Renderer& renderer) {
       supports_x.push_back(support.x());
       supports_y.push_back(support.y());
     }
-    plot_.markers("supports", supports_x, supports_y, IM_COL32(240, 200, 60, 255),
-                  MarkerShape::Triangle, 6.0f);
+    plot_.markers("supports", supports_x, supports_y, kSupportMarker.u32(), MarkerShape::Triangle,
+                  6.0f);
     const std::optional<PlotHit> hit = plot_.end();
     if (hit && hit->series < static_cast<int>(lines.lines.size())) {
       const FoldLine& line = lines.lines[static_cast<std::size_t>(hit->series)];

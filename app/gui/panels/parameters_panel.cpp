@@ -122,7 +122,7 @@ void input_slider(Document& document, const InputSpec& spec, float width,
 
 void choice_combo(Document& document, const InputSpec& spec) {
   const std::string current(spec.choice(document.edited()));
-  ImGui::SetNextItemWidth(120.0f);
+  ImGui::SetNextItemWidth(ems(9.0f));
   if (ImGui::BeginCombo(std::string(spec.name).c_str(), current.c_str())) {
     std::string_view rest = spec.choices;
     while (!rest.empty()) {
@@ -145,7 +145,6 @@ void choice_combo(Document& document, const InputSpec& spec) {
 }  // namespace
 
 void ParametersPanel::draw(Document& document, Renderer& renderer) {
-  place_window(0.0f, 0.0f, 0.30f, 0.62f);
   const bool unsaved = document.unsaved();
   const std::string title = std::string("Parameters") + (unsaved ? " *" : "") + "###parameters";
   if (!begin_panel(title.c_str(), renderer)) {
@@ -157,8 +156,7 @@ void ParametersPanel::draw(Document& document, Renderer& renderer) {
   if (ImGui::Button("Reset to preset")) {
     document.reset_to_loaded();
   }
-  ImGui::SameLine();
-  ImGui::TextDisabled("Ctrl+click a slider to type a value");
+  hint_after("Ctrl+click a slider to type a value");
   ImGui::Separator();
 
   // Sliders leave room on their right for the longest label and its (?) marker.
@@ -170,9 +168,9 @@ void ParametersPanel::draw(Document& document, Renderer& renderer) {
     label_width = std::max(label_width, ImGui::CalcTextSize(slider_label(*spec).c_str()).x);
   }
   const ImGuiStyle& style = ImGui::GetStyle();
-  const float width = std::max(80.0f, ImGui::GetContentRegionAvail().x - label_width -
-                                          ImGui::CalcTextSize(" (?)").x -
-                                          2.0f * style.ItemInnerSpacing.x - style.ItemSpacing.x);
+  const float width = std::max(
+      ems(6.0f), ImGui::GetContentRegionAvail().x - label_width - ImGui::CalcTextSize(" (?)").x -
+                     2.0f * style.ItemInnerSpacing.x - style.ItemSpacing.x);
   for (const InputSpec* spec : sliders) {
     input_slider(document, *spec, width, places_);
     if (spec->key == "w") {

@@ -158,7 +158,7 @@ void PresetsPanel::draw_dialogs(Document& document) {
     if (ImGui::IsWindowAppearing()) {
       ImGui::SetKeyboardFocusHere();
     }
-    ImGui::SetNextItemWidth(320.0f);
+    ImGui::SetNextItemWidth(ems(24.0f));
     const bool entered = ImGui::InputText("##save as name", save_as_name_, sizeof save_as_name_,
                                           ImGuiInputTextFlags_EnterReturnsTrue);
     ImGui::TextDisabled("in %s", user_presets_dir_.string().c_str());
@@ -180,13 +180,12 @@ void PresetsPanel::draw_dialogs(Document& document) {
 
 void PresetsPanel::draw(Document& document, Renderer& renderer,
                         const std::function<void()>& footer) {
-  place_window(0.0f, 0.62f, 0.30f, 0.38f);
   if (!begin_panel("Presets", renderer)) {
     ImGui::End();
     return;
   }
   const float list_height =
-      std::max(60.0f, ImGui::GetContentRegionAvail().y - 4.4f * ImGui::GetFrameHeightWithSpacing());
+      std::max(60.0f, ImGui::GetContentRegionAvail().y - 3.2f * ImGui::GetFrameHeightWithSpacing());
   if (ImGui::BeginChild("preset list", ImVec2(0.0f, list_height), true)) {
     bool user_header = false;
     for (const Entry& entry : entries_) {

@@ -9,6 +9,7 @@
 #include <imgui.h>
 
 #include "app/gui/panels/axis_inputs.hpp"
+#include "app/gui/panels/widgets.hpp"
 
 namespace foldlab::gui {
 namespace {
@@ -31,26 +32,48 @@ ImU32 ramp(double t) {
                   static_cast<int>(rgb[2] * 255), 255);
 }
 
+// The colours of the cells that have no n to show, with the names the colour bar gives them.
+constexpr ImU32 kInvalidColour = IM_COL32(0, 0, 0, 255);
+constexpr ImU32 kNoSlackColour = IM_COL32(60, 60, 60, 255);
+constexpr ImU32 kShortClothColour = IM_COL32(120, 30, 30, 255);
+constexpr ImU32 kNegligibleSlackColour = IM_COL32(90, 90, 120, 255);
+struct Swatch {
+  const char* name;
+  ImU32 colour;
+};
+constexpr Swatch kRegimeSwatches[] = {{"no slack", kNoSlackColour},
+                                      {"short cloth", kShortClothColour},
+                                      {"negligible slack", kNegligibleSlackColour},
+                                      {"invalid inputs", kInvalidColour}};
+
+// z_max from 0.1 mm to 1 m on a log scale.
+double z_fraction(double z_max_mm) {
+  return (std::log10(std::max(z_max_mm, 0.1)) + 1.0) / 4.0;
+}
+// n on a log scale up to 200.
+double n_fraction(double n) {
+  return std::log(n) / std::log(200.0);
+}
+
 ImU32 cell_colour(const MapCell& cell, bool show_z) {
   if (!cell.valid) {
-    return IM_COL32(0, 0, 0, 255);
+    return kInvalidColour;
   }
   switch (cell.regime) {
     case Regime::no_slack:
-      return IM_COL32(60, 60, 60, 255);
+      return kNoSlackColour;
     case Regime::short_cloth:
-      return IM_COL32(120, 30, 30, 255);
+      return kShortClothColour;
     case Regime::negligible_slack:
-      return IM_COL32(90, 90, 120, 255);
+      return kNegligibleSlackColour;
     default:
       break;
   }
   if (show_z) {
-    // z_max from 0.1 mm to 1 m on a log scale.
-    return ramp((std::log10(std::max(cell.z_max_mm, 0.1f)) + 1.0) / 4.0);
+    return ramp(z_fraction(cell.z_max_mm));
   }
-  // n on a log scale up to 200; odd n a little darker so that every boundary shows.
-  ImU32 c = ramp(std::log(static_cast<double>(cell.n)) / std::log(200.0));
+  // Odd n a little darker so that every boundary shows.
+  ImU32 c = ramp(n_fraction(static_cast<double>(cell.n)));
   if (cell.n % 2 == 1) {
     c = (c & 0xff000000u) | (((c & 0x00fefefeu) >> 1) + ((c & 0x00fcfcfcu) >> 2));
   }
@@ -185,7 +208,7 @@ void RegimeMapPanel::draw(Document& document, Renderer& renderer) {
   }
   ImGui::SameLine();
   restart_needed |= range_inputs("y range", y_from_, y_to_);
-  ImGui::SetNextItemWidth(90.0f);
+  ImGui::SetNextItemWidth(ems(6.5f));
   static const int sizes[] = {64, 128, 256, 512};
   if (ImGui::BeginCombo("cells", (std::to_string(resolution_) + "²").c_str())) {
     for (int s : sizes) {
@@ -196,7 +219,7 @@ void RegimeMapPanel::draw(Document& document, Renderer& renderer) {
     }
     ImGui::EndCombo();
   }
-  ImGui::SameLine();
+  same_line_if_fits(checkbox_width("show z_max instead of n"));
   if (ImGui::Checkbox("show z_max instead of n", &show_z_)) {
     rows_shown_ = -1;
   }
@@ -212,12 +235,12 @@ void RegimeMapPanel::draw(Document& document, Renderer& renderer) {
   const SweepAxis y_check{y_key_, y_from_, y_to_, resolution_, natural_log_scale(y_key_)};
   for (const SweepAxis* axis : {&x_check, &y_check}) {
     if (auto problem = check_axis(*axis)) {
-      ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.4f, 1.0f), "%s", problem->c_str());
+      ImGui::TextColored(kErrorText, "%s", problem->c_str());
       return;
     }
   }
   if (x_key_ == y_key_) {
-    ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.4f, 1.0f), "choose two different inputs");
+    ImGui::TextColored(kErrorText, "choose two different inputs");
     return;
   }
   if (restart_needed) {
@@ -230,35 +253,123 @@ void RegimeMapPanel::draw(Document& document, Renderer& renderer) {
                        ImVec2(-1.0f, 0.0f));
   } else {
     last_map_ms_ = job_->elapsed_ms.load();
-    ImGui::TextDisabled("%d x %d solves in %.0f ms on %zu threads; click to move the sliders there",
-                        resolution_, resolution_, last_map_ms_, workers_.size());
+    ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyle().Colors[ImGuiCol_TextDisabled]);
+    ImGui::TextWrapped("%d x %d solves in %.0f ms on %zu threads; click to move the sliders there",
+                       resolution_, resolution_, last_map_ms_, workers_.size());
+    ImGui::PopStyleColor();
   }
 
+  // The map with its axis labels (the y title above it, the x title under the x ticks), a colour
+  // bar on its right (the ramp with its scale) and, below, the regimes that have no n to show as
+  // swatches with their names. Every size follows the font, so the UI scale keeps it readable.
+  const ImGuiStyle& style = ImGui::GetStyle();
+  const float font = ImGui::GetFontSize();
+  const Job& job = *job_;
+  char y_to[32];
+  char y_from[32];
+  std::snprintf(y_to, sizeof y_to, "%.3g", job.y.to);
+  std::snprintf(y_from, sizeof y_from, "%.3g", job.y.from);
   const ImVec2 available = ImGui::GetContentRegionAvail();
-  const float side = std::max(64.0f, std::min(available.x - 60.0f, available.y - 24.0f));
-  const ImVec2 origin(ImGui::GetCursorScreenPos().x + 50.0f, ImGui::GetCursorScreenPos().y);
+  const float left_margin = std::max(ImGui::CalcTextSize(y_to).x, ImGui::CalcTextSize(y_from).x) +
+                            style.ItemInnerSpacing.x;
+  const float bar_width = ems(1.0f);
+  const float bar_area = style.ItemSpacing.x + bar_width + style.ItemInnerSpacing.x +
+                         ImGui::CalcTextSize(show_z_ ? "1000 mm" : "200").x;
+  float swatches_width = 0.0f;
+  for (const Swatch& swatch : kRegimeSwatches) {
+    swatches_width += ImGui::GetFrameHeight() + style.ItemInnerSpacing.x +
+                      ImGui::CalcTextSize(swatch.name).x + style.ItemSpacing.x;
+  }
+  const float swatch_rows =
+      (swatches_width <= available.x ? 1.0f : 2.0f) * ImGui::GetFrameHeightWithSpacing();
+  const float side = std::max(ems(5.0f), std::min(available.x - left_margin - bar_area,
+                                                  available.y - 3.0f * font - swatch_rows));
+  const std::string y_label = axis_label(job.y.key);
+  ImGui::TextUnformatted(y_label.c_str());
+  const ImVec2 origin(ImGui::GetCursorScreenPos().x + left_margin, ImGui::GetCursorScreenPos().y);
   ImGui::SetCursorScreenPos(origin);
   // Row 0 is the lowest y: the texture's first row goes to the bottom.
   ImGui::Image(renderer.texture(image_), ImVec2(side, side), ImVec2(0, 1), ImVec2(1, 0));
   const bool hovered = ImGui::IsItemHovered();
   const bool clicked = ImGui::IsItemClicked(ImGuiMouseButton_Left);
   ImDrawList* draw = ImGui::GetWindowDrawList();
-  const Job& job = *job_;
+  const ImU32 text_colour = ImGui::GetColorU32(ImGuiCol_Text);
   char text[64];
-  std::snprintf(text, sizeof text, "%.3g", job.y.to);
-  draw->AddText(ImVec2(origin.x - 48.0f, origin.y), IM_COL32(200, 200, 200, 255), text);
-  std::snprintf(text, sizeof text, "%.3g", job.y.from);
-  draw->AddText(ImVec2(origin.x - 48.0f, origin.y + side - 14.0f), IM_COL32(200, 200, 200, 255),
-                text);
-  draw->AddText(ImVec2(origin.x - 48.0f, origin.y + side * 0.5f - 7.0f),
-                IM_COL32(200, 200, 200, 255), axis_label(job.y.key).c_str());
+  const auto right_aligned = [&](float right, float y, const char* label) {
+    draw->AddText(ImVec2(right - ImGui::CalcTextSize(label).x, y), text_colour, label);
+  };
+  const float label_right = origin.x - style.ItemInnerSpacing.x;
+  right_aligned(label_right, origin.y, y_to);
+  right_aligned(label_right, origin.y + side - font, y_from);
   std::snprintf(text, sizeof text, "%.3g", job.x.from);
-  draw->AddText(ImVec2(origin.x, origin.y + side + 2.0f), IM_COL32(200, 200, 200, 255), text);
+  draw->AddText(ImVec2(origin.x, origin.y + side), text_colour, text);
   std::snprintf(text, sizeof text, "%.3g", job.x.to);
-  draw->AddText(ImVec2(origin.x + side - 40.0f, origin.y + side + 2.0f),
-                IM_COL32(200, 200, 200, 255), text);
-  draw->AddText(ImVec2(origin.x + side * 0.5f - 20.0f, origin.y + side + 2.0f),
-                IM_COL32(200, 200, 200, 255), axis_label(job.x.key).c_str());
+  right_aligned(origin.x + side, origin.y + side, text);
+  const std::string x_label = axis_label(job.x.key);
+  draw->AddText(ImVec2(origin.x + 0.5f * (side - ImGui::CalcTextSize(x_label.c_str()).x),
+                       origin.y + side + font),
+                text_colour, x_label.c_str());
+
+  // The colour bar: the same ramp and scale as the cells, bottom to top.
+  const ImVec2 bar_min(origin.x + side + style.ItemSpacing.x, origin.y);
+  const ImVec2 bar_max(bar_min.x + bar_width, origin.y + side);
+  constexpr int kBarSteps = 64;
+  for (int k = 0; k < kBarSteps; ++k) {
+    const float y0 = bar_max.y - side * static_cast<float>(k + 1) / kBarSteps;
+    const float y1 = bar_max.y - side * static_cast<float>(k) / kBarSteps;
+    draw->AddRectFilled(ImVec2(bar_min.x, std::floor(y0)), ImVec2(bar_max.x, std::ceil(y1)),
+                        ramp((k + 0.5) / kBarSteps));
+  }
+  draw->AddRect(bar_min, bar_max, ImGui::GetColorU32(ImGuiCol_Border));
+  static const double n_ticks[] = {1, 2, 5, 10, 20, 50, 100, 200};
+  static const double z_ticks_mm[] = {0.1, 1, 10, 100, 1000};
+  const std::span<const double> ticks =
+      show_z_ ? std::span<const double>(z_ticks_mm) : std::span<const double>(n_ticks);
+  const auto tick_y = [&](double tick) {
+    return bar_max.y - side * static_cast<float>(show_z_ ? z_fraction(tick) : n_fraction(tick));
+  };
+  const auto label_y_at = [&](float y) {
+    return std::clamp(y - 0.5f * font, bar_min.y, bar_max.y - font);
+  };
+  // Both ends of the scale are always labelled; ticks between only where their labels fit.
+  const float top_label_y = label_y_at(tick_y(ticks.back()));
+  float last_label_y = 1e9f;
+  for (std::size_t k = 0; k < ticks.size(); ++k) {
+    const double tick = ticks[k];
+    const float y = tick_y(tick);
+    draw->AddLine(ImVec2(bar_max.x - 0.3f * bar_width, y), ImVec2(bar_max.x, y), text_colour);
+    const float label_y = label_y_at(y);
+    const bool end = k == 0 || k + 1 == ticks.size();
+    if (!end && (last_label_y - label_y < font || label_y - top_label_y < font)) {
+      continue;  // no room for this label on a short bar
+    }
+    std::snprintf(text, sizeof text, show_z_ ? "%g mm" : "%g", tick);
+    draw->AddText(ImVec2(bar_max.x + style.ItemInnerSpacing.x, label_y), text_colour, text);
+    last_label_y = label_y;
+  }
+  draw->AddText(ImVec2(bar_min.x, bar_max.y), text_colour, show_z_ ? "z_max" : "n");
+
+  if (ImGui::IsMouseHoveringRect(bar_min, bar_max)) {
+    ImGui::SetTooltip(show_z_ ? "z_max of the wrinkled cells, log scale"
+                              : "n of the wrinkled cells, log scale; odd n a little darker so "
+                                "that every step shows");
+  }
+
+  // Below the map and its x labels: the regimes drawn in their own colours.
+  ImGui::SetCursorScreenPos(ImVec2(origin.x - left_margin, origin.y + side + 2.0f * font + 2.0f));
+  bool first = true;
+  for (const Swatch& swatch : kRegimeSwatches) {
+    const float width =
+        ImGui::GetFrameHeight() + style.ItemInnerSpacing.x + ImGui::CalcTextSize(swatch.name).x;
+    if (!first) {
+      same_line_if_fits(width);
+    }
+    first = false;
+    ImGui::ColorButton(swatch.name, ImGui::ColorConvertU32ToFloat4(swatch.colour),
+                       ImGuiColorEditFlags_NoTooltip | ImGuiColorEditFlags_NoDragDrop);
+    ImGui::SameLine(0.0f, style.ItemInnerSpacing.x);
+    ImGui::TextUnformatted(swatch.name);
+  }
   // The current point.
   const double fx = axis_fraction(job.x, get_number(current, job.x.key));
   const double fy = axis_fraction(job.y, get_number(current, job.y.key));

@@ -14,7 +14,6 @@
 namespace foldlab::gui {
 
 void ResultsPanel::draw(Document& document, Renderer& renderer) {
-  place_window(0.30f, 0.56f, 0.35f, 0.44f);
   if (!begin_panel("Results", renderer)) {
     ImGui::End();
     return;

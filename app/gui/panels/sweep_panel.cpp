@@ -9,17 +9,14 @@
 
 #include "app/common/presets_dir.hpp"
 #include "app/gui/panels/axis_inputs.hpp"
+#include "app/gui/panels/widgets.hpp"
 #include "core/model/solver.hpp"
 
 namespace foldlab::gui {
 namespace {
 
-constexpr ImU32 kCurveColour = IM_COL32(90, 170, 255, 255);
-constexpr ImU32 kPaperColour = IM_COL32(255, 120, 60, 255);
-constexpr ImU32 kCurrentColour = IM_COL32(240, 220, 90, 200);
 constexpr ImU32 kBandFill = IM_COL32(150, 150, 160, 60);
 constexpr ImU32 kRefusedFill = IM_COL32(230, 90, 80, 60);
-constexpr ImU32 kBandText = IM_COL32(200, 200, 210, 255);
 
 }  // namespace
 
@@ -128,7 +125,7 @@ void SweepPanel::draw(Document& document) {
   ImGui::SameLine();
   ImGui::Checkbox("log", &logarithmic_);
   ImGui::SameLine();
-  ImGui::SetNextItemWidth(80.0f);
+  ImGui::SetNextItemWidth(ems(6.0f));
   ImGui::SliderInt("steps", &steps_, 10, 1000, "%d", ImGuiSliderFlags_AlwaysClamp);
 
   for (int which = 0; which < kPaperCases; ++which) {
@@ -143,7 +140,7 @@ void SweepPanel::draw(Document& document) {
 
   SweepAxis check{key_, from_, to_, steps_, logarithmic_};
   if (auto problem = check_axis(check)) {
-    ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.4f, 1.0f), "%s", problem->c_str());
+    ImGui::TextColored(kErrorText, "%s", problem->c_str());
     return;
   }
   recompute(current);
@@ -179,15 +176,15 @@ void SweepPanel::draw(Document& document) {
     }
     const char* legend = overlay ? "model" : nullptr;
     if (q.steps) {
-      q.plot.steps(legend, curves_.x, q.ys, kCurveColour, 2.0f);
+      q.plot.steps(legend, curves_.x, q.ys, kSweepCurve.u32(), 2.0f);
     } else {
-      q.plot.line(legend, curves_.x, q.ys, kCurveColour, 2.0f);
+      q.plot.line(legend, curves_.x, q.ys, kSweepCurve.u32(), 2.0f);
     }
     if (overlay) {
-      q.plot.markers(overlay_label_.c_str(), q.paper_x, q.paper_y, kPaperColour,
+      q.plot.markers(overlay_label_.c_str(), q.paper_x, q.paper_y, kPaperPoint.u32(),
                      MarkerShape::Diamond, 5.0f);
     }
-    q.plot.vertical_line(now, kCurrentColour);
+    q.plot.vertical_line(now, kCurrentValue.u32());
     q.plot.end();
     draw_bands(q.plot, &q == &quantities[0]);
   }
@@ -213,7 +210,7 @@ void SweepPanel::draw_bands(const Plot& plot, bool label) const {
                         band.valid ? kBandFill : kRefusedFill);
     const ImVec2 text_size = ImGui::CalcTextSize(band.name.c_str());
     if (label && text_size.x + 4.0f <= right - left) {
-      draw->AddText(ImVec2(0.5f * (left + right - text_size.x), view.min.y + 2.0f), kBandText,
+      draw->AddText(ImVec2(0.5f * (left + right - text_size.x), view.min.y + 2.0f), kDimText.u32(),
                     band.name.c_str());
     }
   }

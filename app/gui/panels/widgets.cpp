@@ -1,5 +1,8 @@
 #include "app/gui/panels/widgets.hpp"
 
+#include <algorithm>
+#include <cmath>
+
 namespace foldlab::gui {
 
 ImVec4 message_colour(MessageKind kind) {
@@ -35,10 +38,52 @@ void stale_mark(const Document& document) {
   draw->PopClipRect();
 }
 
-void place_window(float x, float y, float w, float h) {
-  const ImVec2 display = ImGui::GetIO().DisplaySize;
-  ImGui::SetNextWindowPos(ImVec2(x * display.x, y * display.y), ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowSize(ImVec2(w * display.x, h * display.y), ImGuiCond_FirstUseEver);
+float ems(float ems) {
+  return std::round(ems * ImGui::GetFontSize());
+}
+
+const char* tile_window_name(Tile tile) {
+  switch (tile) {
+    case Tile::parameters:
+      return "###parameters";
+    case Tile::presets:
+      return "Presets";
+    case Tile::fold_plot:
+      return "Fold lines (2D)";
+    case Tile::cloth:
+      return "Cloth (3D)";
+    case Tile::results:
+      return "Results";
+    case Tile::analysis:
+      return "Analysis";
+  }
+  return "";
+}
+
+TiledLayout tiled_layout(ImVec2 display, float top_px, float font_px) {
+  const float width = std::max(std::floor(display.x), 1.0f);
+  const float height = std::max(std::floor(display.y - top_px), 1.0f);
+  const float top = std::floor(top_px);
+  // 25 font sizes hold a slider's label, the slider and its unit at any scale; 40 keep the
+  // sliders short enough that a pixel of drag stays a small step on a wide screen. Never more
+  // than 45 % of the width, so that the views keep the rest.
+  const float left = std::floor(
+      std::min(std::clamp(0.30f * width, 25.0f * font_px, 40.0f * font_px), 0.45f * width));
+  const float middle = std::floor((width - left) / 2.0f);
+  const float right = width - left - middle;
+  const float parameters_h = std::floor(0.62f * height);
+  const float views_h = std::floor(0.56f * height);
+  TiledLayout l;
+  const auto set = [&l](Tile tile, float x, float y, float w, float h) {
+    l.rects[static_cast<int>(tile)] = PanelRect{ImVec2(x, y), ImVec2(w, h)};
+  };
+  set(Tile::parameters, 0, top, left, parameters_h);
+  set(Tile::presets, 0, top + parameters_h, left, height - parameters_h);
+  set(Tile::fold_plot, left, top, middle, views_h);
+  set(Tile::results, left, top + views_h, middle, height - views_h);
+  set(Tile::cloth, left + middle, top, right, views_h);
+  set(Tile::analysis, left + middle, top + views_h, right, height - views_h);
+  return l;
 }
 
 bool begin_panel(const char* title, Renderer& renderer) {
@@ -49,9 +94,34 @@ bool begin_panel(const char* title, Renderer& renderer) {
   return true;
 }
 
+void same_line_if_fits(float width) {
+  const float spacing = ImGui::GetStyle().ItemSpacing.x;
+  const float right_edge = ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x;
+  if (ImGui::GetItemRectMax().x + spacing + width <= right_edge) {
+    ImGui::SameLine();
+  }
+}
+
+float checkbox_width(const char* label) {
+  const ImGuiStyle& style = ImGui::GetStyle();
+  return ImGui::GetFrameHeight() + style.ItemInnerSpacing.x +
+         ImGui::CalcTextSize(label, nullptr, true).x;
+}
+
+float button_width(const char* label) {
+  return ImGui::CalcTextSize(label, nullptr, true).x + 2.0f * ImGui::GetStyle().FramePadding.x;
+}
+
+void hint_after(const char* text) {
+  same_line_if_fits(ImGui::CalcTextSize(text).x);
+  ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyle().Colors[ImGuiCol_TextDisabled]);
+  ImGui::TextWrapped("%s", text);
+  ImGui::PopStyleColor();
+}
+
 void section(const char* title) {
   ImGui::Spacing();
-  ImGui::TextColored(ImVec4(0.55f, 0.75f, 1.0f, 1.0f), "%s", title);
+  ImGui::TextColored(kSectionText, "%s", title);
   ImGui::Separator();
 }
 

@@ -4,15 +4,11 @@
 
 #include <imgui.h>
 
+#include "app/gui/appearance.hpp"
 #include "app/gui/document.hpp"
 #include "app/gui/renderer.hpp"
 
 namespace foldlab::gui {
-
-inline const ImVec4 kErrorText(1.0f, 0.45f, 0.40f, 1.0f);
-inline const ImVec4 kOkText(0.55f, 0.85f, 0.55f, 1.0f);
-inline const ImVec4 kNoteText(1.0f, 0.78f, 0.35f, 1.0f);
-inline const ImVec4 kDimText(0.65f, 0.65f, 0.70f, 1.0f);
 
 // Information reads dim, success green, a warning amber, an error red.
 ImVec4 message_colour(MessageKind kind);
@@ -20,13 +16,44 @@ ImVec4 message_colour(MessageKind kind);
 // A line at the top of a view while an input is refused: what it shows is the last valid state.
 void stale_mark(const Document& document);
 
-// First-use layout, in fractions of the display: parameters and presets on the left, the two
-// views on top, numbers below.
-void place_window(float x, float y, float w, float h);
+// A width or height that scales with the UI scale: `ems` times the current font size.
+float ems(float ems);
+
+// A panel's place on the display, in whole pixels (ImGui floors what it is given).
+struct PanelRect {
+  ImVec2 pos{0, 0};
+  ImVec2 size{0, 0};
+};
+// The tiled panels, in the order of TiledLayout::rects.
+enum class Tile { parameters, presets, fold_plot, cloth, results, analysis };
+inline constexpr int kTileCount = 6;
+// The window names of the tiles (what ImGui::Begin is given, "###id" where the title changes).
+const char* tile_window_name(Tile tile);
+
+// The automatic layout: the display below `top_px` (the menu bar) tiled edge to edge with no gap.
+// Parameters and presets on the left, in a column wide enough for a slider with its label (in
+// font sizes, so that it follows the UI scale), the 2D plot over the results in the middle and
+// the 3D view over the analysis on the right.
+struct TiledLayout {
+  PanelRect rects[kTileCount];
+  const PanelRect& operator[](Tile tile) const { return rects[static_cast<int>(tile)]; }
+};
+TiledLayout tiled_layout(ImVec2 display, float top_px, float font_px);
 
 // ImGui::Begin for the tiled panels, with the background filled by the renderer. Call
 // ImGui::End() whatever it returns.
 bool begin_panel(const char* title, Renderer& renderer);
+
+// ImGui::SameLine() when an item `width` pixels wide still fits on the current line; otherwise
+// the item starts a new line, so that a narrow panel wraps a row of controls instead of cutting
+// it off.
+void same_line_if_fits(float width);
+// The width of a checkbox, button or small button with this label.
+float checkbox_width(const char* label);
+float button_width(const char* label);
+
+// A dim hint after the last item: on its line when it fits there, else below it, wrapped.
+void hint_after(const char* text);
 
 // ImGui 1.86 has no SeparatorText.
 void section(const char* title);

@@ -1,0 +1,76 @@
+#!/usr/bin/env python3
+"""Writes ui_WxH.json: every button, tab, menu item and dialog of the explorer clicked at one
+window size, each followed by a check of what it should have done (a tab's content is there to
+be clicked, a dialog opens and Escape closes it, the layout fills the window). The exports write
+into the working folder, which the CTest command makes a fresh temporary one and then checks.
+
+Run from this folder after changing a label; the CTest command line gives the base state:
+Table 1's h = 1400 mm preset with L = 4000 mm.
+"""
+import json
+
+SIZES = ["1024x640", "1280x800", "1920x1080"]
+# After the run the window is resized to the next size, so that every size is also reached by a
+# resize rather than only at start.
+NEXT = {"1024x640": "1920x1080", "1280x800": "1024x640", "1920x1080": "1280x800"}
+UNSAVED = "Unsaved changes"
+SAVE_AS = "Save as"
+EXPORTS = ["OBJ mesh (.obj)", "glTF mesh (.glb)", "Fold lines (.svg)", "Fold lines (.csv)",
+           "Window picture (.png)"]
+
+
+def click(label, frames=2):
+    return [{"click": label}, {"frames": frames}]
+
+
+def menu(name, item):
+    return click(name, 1) + click(item)
+
+
+def script(size):
+    tiled = {"layout.automatic": True, "layout.fills_window": True}
+    steps = [{"expect": dict(tiled, modal=None, dirty=False)}]
+    # Analysis tabs: each tab's own content is there to be clicked.
+    steps += click("Equations") + click("eq. 7: critical stress gives Q7")
+    steps += click("Sweep") + click("Table 1 (h)") + [{"expect": {"modal": None}}]
+    steps += click("Regime map") + click("show z_max instead of n")
+    steps += click("show z_max instead of n") + click("Equations")
+    # The 3D view's toggles, twice each so that the view ends as it began.
+    for label in ["wireframe", "fold lines", "ground", "breeze"]:
+        steps += click(label) + click(label)
+    steps += click("reset camera") + click("autoscale")
+    # The unsaved-edits dialog: Escape keeps the edits, Discard loads the preset clicked.
+    steps += [{"drag": "h", "dx": 40}, {"expect": {"dirty": True, "modal": None}}]
+    steps += click("Cotton jersey knit") + [{"expect": {"modal": UNSAVED}}]
+    steps += [{"key": "escape"}, {"frames": 2}, {"expect": {"modal": None, "dirty": True}}]
+    steps += click("Cotton jersey knit") + [{"expect": {"modal": UNSAVED}}]
+    steps += click("Discard") + [{"expect": {"modal": None, "dirty": False,
+                                             "parameters.h_mm": 1400}}]
+    steps += [{"drag": "d", "dx": 30}, {"expect": {"dirty": True}}]
+    steps += click("Reset to preset") + [{"expect": {"dirty": False}}]
+    # Save as: Ctrl+S on a shipped preset asks for a name; Escape closes the dialog unsaved.
+    steps += [{"key": "ctrl+s"}, {"frames": 2}, {"expect": {"modal": SAVE_AS}}]
+    steps += [{"key": "escape"}, {"frames": 2}, {"expect": {"modal": None}}]
+    steps += click("Save as...") + [{"expect": {"modal": None}}]  # no name: refused, no file
+    # The View menu.
+    steps += menu("View", "Light theme") + [{"expect": {"appearance.light_theme": True}}]
+    steps += menu("View", "Larger text") + [{"expect": {"appearance.scale_percent": 110}}]
+    steps += [{"expect": tiled}]
+    steps += menu("View", "Default size") + [{"expect": {"appearance.scale_percent": 100}}]
+    steps += menu("View", "Pipeline stats") + menu("View", "Pipeline stats")
+    steps += menu("View", "Light theme") + [{"expect": {"appearance.light_theme": False}}]
+    # The Export menu: the files are checked by the CTest command.
+    for item in EXPORTS:
+        steps += menu("Export", item)
+    steps += [{"frames": 2}, {"expect": dict(tiled, modal=None)}]
+    # Another window size: the panels refit it.
+    steps += [{"resize": NEXT[size]}, {"frames": 3}, {"expect": tiled}]
+    # The calibration window (last: it floats over the panels).
+    steps += click("Fit to measurements...", 3) + click("Measurements")
+    return {"steps": steps}
+
+
+for size in SIZES:
+    with open(f"ui_{size}.json", "w") as out:
+        json.dump(script(size), out, indent=1)
+        out.write("\n")
