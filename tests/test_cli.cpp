@@ -652,3 +652,43 @@ TEST_F(CliTest, MeasuredDepthBeyondHalfTheUpperEdgeIsRefused) {
   const RunResult fine = run({"measure", "--depths-mm", "80,40,20,10", "--z-max-mm", "700"});
   EXPECT_EQ(fine.exit_status, 0) << fine.err;
 }
+
+TEST_F(CliTest, NoOutputOverwritesAnInputOrAnotherOutputThroughLinks) {
+  const fs::path preset = dir_ / "fabric.json";
+  fs::copy_file(kH900, preset);
+  const std::string before = read_file(preset);
+  const RunResult onto_input =
+      run({"export", "--preset", preset.string(), "--obj", preset.string()});
+  EXPECT_EQ(onto_input.exit_status, 2);
+  EXPECT_TRUE(contains(onto_input.err, "would destroy the input")) << onto_input.err;
+  EXPECT_EQ(read_file(preset), before);
+  // A symlink and a hard link name the file they link to.
+  const fs::path obj = dir_ / "real.obj";
+  std::ofstream(obj) << "o kept\n";
+  fs::create_symlink(obj, dir_ / "link.glb");
+  fs::create_hard_link(obj, dir_ / "hard.csv");
+  for (const char* other : {"link.glb", "hard.csv"}) {
+    SCOPED_TRACE(other);
+    const std::string option = std::string(other).ends_with(".glb") ? "--glb" : "--csv";
+    const RunResult r = run({"export", "--obj", obj.string(), option, (dir_ / other).string()});
+    EXPECT_EQ(r.exit_status, 2);
+    EXPECT_TRUE(contains(r.err, "name the same file")) << r.err;
+    EXPECT_EQ(read_file(obj), "o kept\n");
+  }
+  const RunResult bench =
+      run({"bench", "--cases", "2", "--repeats", "1", "--csv", (dir_ / "b.csv").string(), "--svg",
+           (dir_ / "." / "b.csv").string()});
+  EXPECT_EQ(bench.exit_status, 2);
+  EXPECT_TRUE(contains(bench.err, "name the same file")) << bench.err;
+}
+
+TEST_F(CliTest, CalibrateNeverSavesOverItsMeasurements) {
+  const fs::path data = dir_ / "rows.csv";
+  fs::copy_file(kPresetsDir.parent_path() / "data" / "paper-measurements.csv", data);
+  const std::string before = read_file(data);
+  const RunResult r = run({"calibrate", "--data", data.string(), "--no-held-out", "--save-preset",
+                           (dir_ / "." / "rows.csv").string()});
+  EXPECT_EQ(r.exit_status, 2);
+  EXPECT_TRUE(contains(r.err, "would destroy the input")) << r.err;
+  EXPECT_EQ(read_file(data), before);
+}

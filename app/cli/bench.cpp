@@ -77,6 +77,7 @@ Command add_bench_command(CLI::App& app) {
   command->add_flag("--no-pipeline", options->no_pipeline, "skip the fold line and grid timings");
   return [options] {
     return guarded([&] {
+      check_distinct_files({{"--csv", options->csv_path}, {"--svg", options->svg_path}}, {});
       if (auto problem = check_count_budget(
               "--cases x --repeats", static_cast<std::int64_t>(options->cases) * options->repeats,
               kMaxBenchSolves)) {

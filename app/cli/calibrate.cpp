@@ -277,6 +277,9 @@ Command add_calibrate_command(CLI::App& app) {
                     "skip leave-one-out and group splits (the in-sample fit only)");
   return [options] {
     return guarded([&] {
+      check_distinct_files(
+          {{"--save-preset", options->save_preset_path}},
+          {{"--data", options->data_path}, {"--preset", options->inputs.preset_path}});
       const Preset base = resolve_inputs(options->inputs);
       MeasurementSet data;
       try {

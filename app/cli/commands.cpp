@@ -61,16 +61,6 @@ Command add_solve_command(CLI::App& app) {
   };
 }
 
-namespace {
-
-// Whether two command-line paths name one file, as far as can be told without creating it.
-bool same_path(const std::string& a, const std::string& b) {
-  return std::filesystem::absolute(a).lexically_normal() ==
-         std::filesystem::absolute(b).lexically_normal();
-}
-
-}  // namespace
-
 Command add_export_command(CLI::App& app) {
   struct Options {
     InputOptions inputs;
@@ -117,21 +107,11 @@ Command add_export_command(CLI::App& app) {
                          " must be a whole number in [2, 100000]");
       }
       const int samples = static_cast<int>(options->samples);
-      // Two outputs on one path would leave only the second, silently.
-      const std::pair<const char*, const std::string*> outputs[] = {{"--obj", &options->obj_path},
-                                                                    {"--glb", &options->glb_path},
-                                                                    {"--csv", &options->csv_path},
-                                                                    {"--svg", &options->svg_path}};
-      for (std::size_t i = 0; i < std::size(outputs); ++i) {
-        for (std::size_t j = i + 1; j < std::size(outputs); ++j) {
-          if (!outputs[i].second->empty() && !outputs[j].second->empty() &&
-              same_path(*outputs[i].second, *outputs[j].second)) {
-            throw InputError(std::string(outputs[i].first) + " and " + outputs[j].first +
-                             " name the same file " + *outputs[i].second +
-                             "; give each output its own path");
-          }
-        }
-      }
+      check_distinct_files({{"--obj", options->obj_path},
+                            {"--glb", options->glb_path},
+                            {"--csv", options->csv_path},
+                            {"--svg", options->svg_path}},
+                           {{"--preset", options->inputs.preset_path}});
       const int nx = std::stoi(match[1]);
       const int ny = std::stoi(match[2]);
       const bool mesh = !options->obj_path.empty() || !options->glb_path.empty();

@@ -188,6 +188,8 @@ Command add_measure_command(CLI::App& app) {
       } catch (const FoldMeasurementError& e) {
         throw InputError(std::string(by_depth ? "--depths-mm" : "--folds-px") + ": " + e.what());
       }
+      check_distinct_files({{"--append", o.append_path}},
+                           {{"--preset", o.preset_path}, {"--photo", o.photo}});
       const Measurement row = measurement_row(p, folds, o.z_max_mm, o.name);
       if (!o.append_path.empty()) {
         try {

@@ -1,5 +1,6 @@
 #include "app/common/inputs.hpp"
 
+#include <filesystem>
 #include <iostream>
 
 #include "core/io/io.hpp"
@@ -65,6 +66,49 @@ int guarded(const std::function<int()>& body) {
   } catch (const std::exception& e) {
     std::cerr << "foldlab: internal error: " << e.what() << "\n";
     return kExitInternal;
+  }
+}
+
+namespace {
+
+// Whether two paths name one file, as far as can be told: an existing pair by identity (links
+// included), otherwise by the canonical form of the part that exists.
+bool same_file(const std::string& a, const std::string& b) {
+  std::error_code error;
+  if (std::filesystem::equivalent(a, b, error) && !error) {
+    return true;
+  }
+  const std::filesystem::path canonical_a =
+      std::filesystem::weakly_canonical(std::filesystem::absolute(a), error);
+  if (error) {
+    return false;
+  }
+  const std::filesystem::path canonical_b =
+      std::filesystem::weakly_canonical(std::filesystem::absolute(b), error);
+  return !error && canonical_a == canonical_b;
+}
+
+}  // namespace
+
+void check_distinct_files(const std::vector<NamedPath>& outputs,
+                          const std::vector<NamedPath>& inputs) {
+  for (std::size_t i = 0; i < outputs.size(); ++i) {
+    if (outputs[i].path.empty()) {
+      continue;
+    }
+    const auto clash = [&](const NamedPath& other, const char* what) {
+      if (!other.path.empty() && same_file(outputs[i].path, other.path)) {
+        throw InputError(std::string(outputs[i].option) + " " + outputs[i].path + " and " +
+                         std::string(other.option) + " " + other.path + " name the same file" +
+                         what);
+      }
+    };
+    for (std::size_t j = i + 1; j < outputs.size(); ++j) {
+      clash(outputs[j], "; give each output its own path");
+    }
+    for (const NamedPath& input : inputs) {
+      clash(input, ": writing the output would destroy the input");
+    }
   }
 }
 

@@ -6,6 +6,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <CLI/CLI.hpp>
@@ -44,6 +45,17 @@ struct InputOptions {
 
 // The preset with the overrides applied and validated. Throws InputError listing every problem.
 Preset resolve_inputs(const InputOptions& options);
+
+// A file named on the command line by the option that names it.
+struct NamedPath {
+  std::string_view option;
+  std::string path;  // empty: not given
+};
+
+// Throws InputError when an output would overwrite one of the inputs or another output: two
+// spellings, symlinks or hard links of one file count as the same. Writing first would lose it.
+void check_distinct_files(const std::vector<NamedPath>& outputs,
+                          const std::vector<NamedPath>& inputs);
 
 // --preset, --set and --method, for every command that solves.
 void add_input_options(CLI::App& command, InputOptions& options);

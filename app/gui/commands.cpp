@@ -8,6 +8,7 @@
 #include "core/model/text_format.hpp"
 
 namespace foldlab::gui {
+using app::check_distinct_files;
 using app::guarded;
 using app::InputError;
 using app::kExitInternal;
@@ -105,6 +106,9 @@ app::Command add_gui_command(CLI::App& app) {
       parse_size(options->size, options->run);
       apply_print_option(*options);
       check_play_options(options->run);
+      check_distinct_files(
+          {{"--screenshot", options->run.screenshot_path}},
+          {{"--preset", options->run.inputs.preset_path}, {"--play", options->run.play_path}});
       if (!options->run.screenshot_path.empty() && options->run.frames == 0) {
         throw InputError("--screenshot needs --frames N");
       }
@@ -130,6 +134,9 @@ app::Command add_render_command(CLI::App& app) {
       parse_size(options->size, options->run);
       apply_print_option(*options);
       check_play_options(options->run);
+      check_distinct_files(
+          {{"--out", options->run.screenshot_path}},
+          {{"--preset", options->run.inputs.preset_path}, {"--play", options->run.play_path}});
       if (options->run.screenshot_path.empty() && options->run.play_path.empty()) {
         throw InputError("render needs --out FILE.png (or --play SCRIPT.json)");
       }

@@ -554,7 +554,7 @@ std::string describe(const Solution& s, const Parameters& p) {
         p.model.length_tolerance));
   }
   if (s.n_capped) {
-    append(printf_string("Eq. 10 asks for more than %.0f folds; n is capped there.", kMaxWrinkles));
+    append(printf_string("Eq. 10 asks for more than %d folds; n is capped there.", kMaxWrinkles));
   }
   return text;
 }
