@@ -25,6 +25,7 @@
 #include "core/model/equations.hpp"
 #include "core/model/solver.hpp"
 #include "core/model/text_format.hpp"
+#include "fold_photo.hpp"
 #include "process.hpp"
 #include "temp_dir.hpp"
 
@@ -397,45 +398,11 @@ TEST_F(DefaultModelCli, MeasureGetsNAndQBackFromAPhotoOfKnownFolds) {
   const Preset& preset = default_preset();
   const Solution s = solve(preset.parameters);
   ASSERT_GE(s.n, 3);
-  const double l = s.span_mm;
-  const double scale = 0.4;  // px per mm
-  const double angle = 3.0 * std::numbers::pi / 180.0;
-  const int width = 700;
-  const int height = 700;
-  auto to_px = [&](double x, double y) {
-    return PixelPoint{350.0 + scale * (x * std::cos(angle) - y * std::sin(angle)),
-                      60.0 + scale * (x * std::sin(angle) + y * std::cos(angle))};
-  };
-  std::vector<unsigned char> rgb(static_cast<std::size_t>(width * height * 3), 235);
-  auto dot = [&](PixelPoint q) {
-    for (int dy = -1; dy <= 1; ++dy) {
-      for (int dx = -1; dx <= 1; ++dx) {
-        const int x = static_cast<int>(std::lround(q.x)) + dx;
-        const int y = static_cast<int>(std::lround(q.y)) + dy;
-        if (x >= 0 && x < width && y >= 0 && y < height) {
-          for (int c = 0; c < 3; ++c) {
-            rgb[static_cast<std::size_t>((y * width + x) * 3 + c)] = 20;
-          }
-        }
-      }
-    }
-  };
-  const FoldLines lines = fold_lines(s, preset.parameters, 401);
-  ASSERT_EQ(lines.lines.size(), static_cast<std::size_t>(s.n + 1));
-  for (const FoldLine& line : lines.lines) {
-    for (std::size_t k = 0; k + 1 < line.points_mm.size(); ++k) {
-      for (int t = 0; t <= 8; ++t) {
-        const Eigen::Vector3d q =
-            line.points_mm[k] + (line.points_mm[k + 1] - line.points_mm[k]) * (t / 8.0);
-        dot(to_px(q.x(), q.y()));
-      }
-    }
-  }
   const fs::path photo = dir_ / "folds.png";
-  ASSERT_NE(stbi_write_png(photo.string().c_str(), width, height, 3, rgb.data(), width * 3), 0);
-
-  const PixelPoint left = to_px(-l / 2, 0.0);
-  const PixelPoint right = to_px(l / 2, 0.0);
+  const testing::FoldPhoto drawn = testing::write_fold_photo(s, preset.parameters, photo);
+  ASSERT_EQ(fold_lines(s, preset.parameters, 401).lines.size(), static_cast<std::size_t>(s.n + 1));
+  const PixelPoint left = drawn.left_support;
+  const PixelPoint right = drawn.right_support;
   std::string folds;
   int loaded_w = 0;
   int loaded_h = 0;
@@ -443,7 +410,7 @@ TEST_F(DefaultModelCli, MeasureGetsNAndQBackFromAPhotoOfKnownFolds) {
   unsigned char* loaded = stbi_load(photo.string().c_str(), &loaded_w, &loaded_h, &channels, 1);
   ASSERT_NE(loaded, nullptr);
   for (std::size_t i = 0; i < s.a_mm.size(); ++i) {
-    const PixelPoint fold = to_px(0.0, s.a_mm[i]);
+    const PixelPoint fold = drawn.folds[i];
     // The click lands on a drawn line.
     const auto at = static_cast<std::size_t>(std::lround(fold.y) * loaded_w + std::lround(fold.x));
     EXPECT_LT(loaded[at], 128) << "fold " << i;
