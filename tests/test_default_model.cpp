@@ -20,6 +20,7 @@
 #include "core/analysis/fold_measurement.hpp"
 #include "core/analysis/uncertainty.hpp"
 #include "core/geometry/geometry.hpp"
+#include "core/io/image.hpp"
 #include "core/io/measurements.hpp"
 #include "core/io/preset.hpp"
 #include "core/model/equations.hpp"
@@ -507,6 +508,68 @@ TEST_F(DefaultModelCli, MalformedMeasureInputIsExitTwoNamingTheArgument) {
 }
 
 // A file that cannot be written is an I/O failure (exit 1), as for every other command.
+// A photo over the size budget is refused from its header, before its pixels are decoded, and
+// `measure` names --photo for it.
+TEST_F(DefaultModelCli, APhotoOverTheSizeBudgetIsRefused) {
+  const fs::path wide = dir_ / "wide.png";
+  const std::vector<unsigned char> grey(static_cast<std::size_t>(kMaxImageSidePx + 1) * 2, 200);
+  ASSERT_NE(stbi_write_png(wide.string().c_str(), kMaxImageSidePx + 1, 2, 1, grey.data(),
+                           kMaxImageSidePx + 1),
+            0);
+  try {
+    (void)load_image(wide);
+    FAIL() << "accepted";
+  } catch (const ImageError& e) {
+    EXPECT_TRUE(contains(e.what(), "8193 x 2 px")) << e.what();
+    EXPECT_TRUE(contains(e.what(), "8192")) << e.what();
+  }
+  const testing::RunResult r = run(
+      {"measure", "--photo", wide.string(), "--supports-px", "10,1,90,1", "--folds-px", "2,1.5"});
+  EXPECT_EQ(r.exit_status, 2) << r.err;
+  EXPECT_TRUE(contains(r.err, "--photo")) << r.err;
+  EXPECT_TRUE(contains(r.err, "at most 8192 px a side")) << r.err;
+}
+
+// The decoded pixels are the file's, top row first, red in the lowest byte (ImGui's order).
+TEST_F(DefaultModelCli, APhotoDecodesToItsPixelsTopRowFirst) {
+  const fs::path png = dir_ / "two.png";
+  // Row 0: red, green; row 1: blue, white.
+  const std::vector<unsigned char> rgb = {255, 0, 0, 0, 255, 0, 0, 0, 255, 255, 255, 255};
+  ASSERT_NE(stbi_write_png(png.string().c_str(), 2, 2, 3, rgb.data(), 6), 0);
+  const Image image = load_image(png);
+  ASSERT_EQ(image.width_px, 2);
+  ASSERT_EQ(image.height_px, 2);
+  ASSERT_EQ(image.rgba.size(), 4u);
+  EXPECT_EQ(image.rgba[0], 0xFF0000FFu);  // A B G R from the top byte down
+  EXPECT_EQ(image.rgba[1], 0xFF00FF00u);
+  EXPECT_EQ(image.rgba[2], 0xFFFF0000u);
+  EXPECT_EQ(image.rgba[3], 0xFFFFFFFFu);
+  const fs::path text = dir_ / "notes.jpg";
+  std::ofstream(text) << "not a photo";
+  EXPECT_THROW((void)load_image(text), ImageError);
+  EXPECT_THROW((void)load_image(dir_ / "absent.png"), ImageError);
+}
+
+// docs/default-model.md: a preset without a "model" block gets the solver's neutral defaults,
+// Conci's eq. 7 as printed (p = 1, c = 26.9: K = 29.56 at nu = 0.3) with the paper method, as
+// before the calibrated default; only presets that store the calibration carry it.
+TEST(DefaultModel, APresetWithoutAModelBlockIsEq7AsPrinted) {
+  const Preset preset = preset_from_text(
+      R"({"foldlab_preset": 1, "name": "mine",
+          "fabric": {"thickness_mm": 0.25, "youngs_modulus_MPa": 165, "weight_N_per_mm2": 1.5e-6,
+                     "poisson_ratio": 0.3},
+          "hanging": {"height_mm": 1400, "length_mm": 1400, "support_displacement_mm": 100}})",
+      "mine.json");
+  EXPECT_EQ(preset.parameters.model.method, Method::paper);
+  EXPECT_EQ(preset.parameters.model.stress_exponent_p, 1.0);
+  EXPECT_NEAR(stiffness_constant_K(preset.parameters), 29.56, 0.005);
+  EXPECT_FALSE(preset.calibration.has_value());
+  const ModelStanding standing = model_standing(preset.parameters, preset.calibration);
+  EXPECT_EQ(standing.form, "printed");
+  EXPECT_TRUE(contains(standing.label, "as printed")) << standing.label;
+  EXPECT_FALSE(standing.range.has_value());
+}
+
 TEST_F(DefaultModelCli, MeasureIntoAnUnwritableFileIsExitOne) {
   const fs::path file = dir_ / "plain-file";
   std::ofstream(file) << "x";
