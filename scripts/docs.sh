@@ -69,6 +69,12 @@ EOF
 "$foldlab" render --size 1280x800 --out docs/explorer-1280x800.png
 "$foldlab" render --size 1920x1080 --view theme=light --view scale=150 \
   --out docs/explorer-1920x1080-light-150.png
+# The photo workflow on a "photo" that FoldLab draws of the default cloth's folds (any real photo
+# works the same): loaded, its supports and folds clicked by a playback script.
+"$build/tests/make_fold_photo" presets/default.json "$work/cloth-photo.png" "$work/photo.json" \
+  docs/explorer-photo.png >/dev/null
+XDG_CONFIG_HOME="$work/config" \
+  "$foldlab" render --size "$size" --preset presets/default.json --play "$work/photo.json" >/dev/null
 
 # The 3D view alone at z x 1 (no exaggeration, no fold lines): the shading has to show the pleats.
 for fabric in silk-chiffon:chiffon cotton-poplin:poplin denim-13oz:denim; do

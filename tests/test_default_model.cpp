@@ -20,11 +20,13 @@
 #include "core/analysis/fold_measurement.hpp"
 #include "core/analysis/uncertainty.hpp"
 #include "core/geometry/geometry.hpp"
+#include "core/io/image.hpp"
 #include "core/io/measurements.hpp"
 #include "core/io/preset.hpp"
 #include "core/model/equations.hpp"
 #include "core/model/solver.hpp"
 #include "core/model/text_format.hpp"
+#include "fold_photo.hpp"
 #include "process.hpp"
 #include "temp_dir.hpp"
 
@@ -397,45 +399,11 @@ TEST_F(DefaultModelCli, MeasureGetsNAndQBackFromAPhotoOfKnownFolds) {
   const Preset& preset = default_preset();
   const Solution s = solve(preset.parameters);
   ASSERT_GE(s.n, 3);
-  const double l = s.span_mm;
-  const double scale = 0.4;  // px per mm
-  const double angle = 3.0 * std::numbers::pi / 180.0;
-  const int width = 700;
-  const int height = 700;
-  auto to_px = [&](double x, double y) {
-    return PixelPoint{350.0 + scale * (x * std::cos(angle) - y * std::sin(angle)),
-                      60.0 + scale * (x * std::sin(angle) + y * std::cos(angle))};
-  };
-  std::vector<unsigned char> rgb(static_cast<std::size_t>(width * height * 3), 235);
-  auto dot = [&](PixelPoint q) {
-    for (int dy = -1; dy <= 1; ++dy) {
-      for (int dx = -1; dx <= 1; ++dx) {
-        const int x = static_cast<int>(std::lround(q.x)) + dx;
-        const int y = static_cast<int>(std::lround(q.y)) + dy;
-        if (x >= 0 && x < width && y >= 0 && y < height) {
-          for (int c = 0; c < 3; ++c) {
-            rgb[static_cast<std::size_t>((y * width + x) * 3 + c)] = 20;
-          }
-        }
-      }
-    }
-  };
-  const FoldLines lines = fold_lines(s, preset.parameters, 401);
-  ASSERT_EQ(lines.lines.size(), static_cast<std::size_t>(s.n + 1));
-  for (const FoldLine& line : lines.lines) {
-    for (std::size_t k = 0; k + 1 < line.points_mm.size(); ++k) {
-      for (int t = 0; t <= 8; ++t) {
-        const Eigen::Vector3d q =
-            line.points_mm[k] + (line.points_mm[k + 1] - line.points_mm[k]) * (t / 8.0);
-        dot(to_px(q.x(), q.y()));
-      }
-    }
-  }
   const fs::path photo = dir_ / "folds.png";
-  ASSERT_NE(stbi_write_png(photo.string().c_str(), width, height, 3, rgb.data(), width * 3), 0);
-
-  const PixelPoint left = to_px(-l / 2, 0.0);
-  const PixelPoint right = to_px(l / 2, 0.0);
+  const testing::FoldPhoto drawn = testing::write_fold_photo(s, preset.parameters, photo);
+  ASSERT_EQ(fold_lines(s, preset.parameters, 401).lines.size(), static_cast<std::size_t>(s.n + 1));
+  const PixelPoint left = drawn.left_support;
+  const PixelPoint right = drawn.right_support;
   std::string folds;
   int loaded_w = 0;
   int loaded_h = 0;
@@ -443,7 +411,7 @@ TEST_F(DefaultModelCli, MeasureGetsNAndQBackFromAPhotoOfKnownFolds) {
   unsigned char* loaded = stbi_load(photo.string().c_str(), &loaded_w, &loaded_h, &channels, 1);
   ASSERT_NE(loaded, nullptr);
   for (std::size_t i = 0; i < s.a_mm.size(); ++i) {
-    const PixelPoint fold = to_px(0.0, s.a_mm[i]);
+    const PixelPoint fold = drawn.folds[i];
     // The click lands on a drawn line.
     const auto at = static_cast<std::size_t>(std::lround(fold.y) * loaded_w + std::lround(fold.x));
     EXPECT_LT(loaded[at], 128) << "fold " << i;
@@ -540,6 +508,68 @@ TEST_F(DefaultModelCli, MalformedMeasureInputIsExitTwoNamingTheArgument) {
 }
 
 // A file that cannot be written is an I/O failure (exit 1), as for every other command.
+// A photo over the size budget is refused from its header, before its pixels are decoded, and
+// `measure` names --photo for it.
+TEST_F(DefaultModelCli, APhotoOverTheSizeBudgetIsRefused) {
+  const fs::path wide = dir_ / "wide.png";
+  const std::vector<unsigned char> grey(static_cast<std::size_t>(kMaxImageSidePx + 1) * 2, 200);
+  ASSERT_NE(stbi_write_png(wide.string().c_str(), kMaxImageSidePx + 1, 2, 1, grey.data(),
+                           kMaxImageSidePx + 1),
+            0);
+  try {
+    (void)load_image(wide);
+    FAIL() << "accepted";
+  } catch (const ImageError& e) {
+    EXPECT_TRUE(contains(e.what(), "8193 x 2 px")) << e.what();
+    EXPECT_TRUE(contains(e.what(), "8192")) << e.what();
+  }
+  const testing::RunResult r = run(
+      {"measure", "--photo", wide.string(), "--supports-px", "10,1,90,1", "--folds-px", "2,1.5"});
+  EXPECT_EQ(r.exit_status, 2) << r.err;
+  EXPECT_TRUE(contains(r.err, "--photo")) << r.err;
+  EXPECT_TRUE(contains(r.err, "at most 8192 px a side")) << r.err;
+}
+
+// The decoded pixels are the file's, top row first, red in the lowest byte (ImGui's order).
+TEST_F(DefaultModelCli, APhotoDecodesToItsPixelsTopRowFirst) {
+  const fs::path png = dir_ / "two.png";
+  // Row 0: red, green; row 1: blue, white.
+  const std::vector<unsigned char> rgb = {255, 0, 0, 0, 255, 0, 0, 0, 255, 255, 255, 255};
+  ASSERT_NE(stbi_write_png(png.string().c_str(), 2, 2, 3, rgb.data(), 6), 0);
+  const Image image = load_image(png);
+  ASSERT_EQ(image.width_px, 2);
+  ASSERT_EQ(image.height_px, 2);
+  ASSERT_EQ(image.rgba.size(), 4u);
+  EXPECT_EQ(image.rgba[0], 0xFF0000FFu);  // A B G R from the top byte down
+  EXPECT_EQ(image.rgba[1], 0xFF00FF00u);
+  EXPECT_EQ(image.rgba[2], 0xFFFF0000u);
+  EXPECT_EQ(image.rgba[3], 0xFFFFFFFFu);
+  const fs::path text = dir_ / "notes.jpg";
+  std::ofstream(text) << "not a photo";
+  EXPECT_THROW((void)load_image(text), ImageError);
+  EXPECT_THROW((void)load_image(dir_ / "absent.png"), ImageError);
+}
+
+// docs/default-model.md: a preset without a "model" block gets the solver's neutral defaults,
+// Conci's eq. 7 as printed (p = 1, c = 26.9: K = 29.56 at nu = 0.3) with the paper method, as
+// before the calibrated default; only presets that store the calibration carry it.
+TEST(DefaultModel, APresetWithoutAModelBlockIsEq7AsPrinted) {
+  const Preset preset = preset_from_text(
+      R"({"foldlab_preset": 1, "name": "mine",
+          "fabric": {"thickness_mm": 0.25, "youngs_modulus_MPa": 165, "weight_N_per_mm2": 1.5e-6,
+                     "poisson_ratio": 0.3},
+          "hanging": {"height_mm": 1400, "length_mm": 1400, "support_displacement_mm": 100}})",
+      "mine.json");
+  EXPECT_EQ(preset.parameters.model.method, Method::paper);
+  EXPECT_EQ(preset.parameters.model.stress_exponent_p, 1.0);
+  EXPECT_NEAR(stiffness_constant_K(preset.parameters), 29.56, 0.005);
+  EXPECT_FALSE(preset.calibration.has_value());
+  const ModelStanding standing = model_standing(preset.parameters, preset.calibration);
+  EXPECT_EQ(standing.form, "printed");
+  EXPECT_TRUE(contains(standing.label, "as printed")) << standing.label;
+  EXPECT_FALSE(standing.range.has_value());
+}
+
 TEST_F(DefaultModelCli, MeasureIntoAnUnwritableFileIsExitOne) {
   const fs::path file = dir_ / "plain-file";
   std::ofstream(file) << "x";

@@ -8,11 +8,11 @@
 #include <string>
 #include <vector>
 
-#include <stb_image.h>
 #include <nlohmann/json.hpp>
 
 #include "app/cli/commands.hpp"
 #include "core/analysis/fold_measurement.hpp"
+#include "core/io/image.hpp"
 #include "core/io/measurements.hpp"
 #include "core/model/settings.hpp"
 #include "core/model/text_format.hpp"
@@ -52,18 +52,14 @@ std::vector<double> number_list(const std::string& option, const std::string& te
   return out;
 }
 
-// The photo's size in pixels; InputError when it is not an image stb reads (PNG, JPEG, ...).
+// The photo's size in pixels; InputError when it is not an image FoldLab reads or is too large.
 std::pair<int, int> photo_size(const std::string& path) {
-  int width = 0;
-  int height = 0;
-  int channels = 0;
-  if (stbi_info(path.c_str(), &width, &height, &channels) == 0) {
-    const char* reason = stbi_failure_reason();
-    throw InputError("--photo " + path + ": cannot read the image (" +
-                     (reason != nullptr ? std::string(reason) : std::string("unknown format")) +
-                     "; PNG or JPEG)");
+  try {
+    const ImageSize size = image_size(path);
+    return {size.width_px, size.height_px};
+  } catch (const ImageError& e) {
+    throw InputError(std::string("--photo ") + e.what());
   }
-  return {width, height};
 }
 
 void check_inside(const std::string& option, const std::vector<double>& values, bool x_and_y,

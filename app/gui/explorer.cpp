@@ -22,6 +22,8 @@ Explorer::Explorer(const Preset& initial, const std::string& initial_path, bool 
       appearance_(options_.font_file),
       document_(initial, initial_path),
       presets_(options_.presets_dir, options_.user_presets_dir),
+      photo_(PhotoPaths{options_.measurements_file, options_.user_presets_dir,
+                        shipped_measurements_file(options_.presets_dir)}),
       analysis_(options_.presets_dir, options_.analysis_tab) {
   if (restore_session && !options_.session_file.empty()) {
     std::string error;
@@ -338,7 +340,7 @@ void Explorer::frame() {
     }
   });
   place(Tile::fold_plot, layout);
-  fold_plot_.draw(document_, renderer_);
+  fold_plot_.draw(document_, renderer_, photo_);
   place(Tile::cloth, layout);
   cloth_view_.draw(document_, renderer_);
   place(Tile::results, layout);
@@ -351,6 +353,10 @@ void Explorer::frame() {
   stats_overlay(show_stats_, document_.scene(), renderer_.counters());
   draw_unsaved_dialog();
   presets_.draw_dialogs(document_);
+  photo_.draw_windows(document_, renderer_);
+  if (photo_.take_saved_preset()) {
+    presets_.refresh();  // the fitted preset joins the list
+  }
   if (!ImGui::IsAnyItemActive()) {
     document_.end_step();  // a drag or a typed value ends when its widget lets go
   }

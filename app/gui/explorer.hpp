@@ -19,6 +19,7 @@
 #include "app/gui/panels/export_panel.hpp"
 #include "app/gui/panels/fold_plot_panel.hpp"
 #include "app/gui/panels/parameters_panel.hpp"
+#include "app/gui/panels/photo_overlay.hpp"
 #include "app/gui/panels/presets_panel.hpp"
 #include "app/gui/panels/results_panel.hpp"
 #include "app/gui/panels/widgets.hpp"
@@ -33,6 +34,7 @@ struct ExplorerOptions {
   std::filesystem::path session_file;      // empty: nothing is restored or saved
   std::string analysis_tab;         // "equations", "method", "sweep" or "map": selected at start
   std::filesystem::path font_file;  // empty: ImGui's built-in font (no Greek)
+  std::filesystem::path measurements_file;  // the photo's "Add to measurements" appends here
 };
 
 class Explorer {
@@ -65,6 +67,8 @@ class Explorer {
   const AnalysisPanel& analysis() const { return analysis_; }
   const PresetsPanel& presets() const { return presets_; }
   const ParametersPanel& parameters_panel() const { return parameters_; }
+  PhotoOverlay& photo() { return photo_; }
+  const PhotoOverlay& photo() const { return photo_; }
   Appearance& appearance() { return appearance_; }
   // True while the panels follow the window (until the user moves or resizes one).
   bool automatic_layout() const { return automatic_layout_; }
@@ -93,7 +97,9 @@ class Explorer {
   bool busy() const { return analysis_.regime_map().computing(); }
   // True while a frame would differ from the last without any input: background work or the
   // breeze. Otherwise the window may sleep until an event comes.
-  bool animating() const { return busy() || calibration_.running() || cloth_view_.animating(); }
+  bool animating() const {
+    return busy() || calibration_.running() || photo_.fitting() || cloth_view_.animating();
+  }
   // True while a frame would differ from the last after a while, with no input: a message that
   // will fade, a session or window layout to save, a text cursor blinking. (Tooltips show at
   // once, in the frames that follow the mouse's move.) Call after a frame; otherwise a sleeping
@@ -124,6 +130,7 @@ class Explorer {
   ParametersPanel parameters_;
   PresetsPanel presets_;
   ExportPanel export_;
+  PhotoOverlay photo_;  // the fold plot's photo and its measurement window
   FoldPlotPanel fold_plot_;
   ClothViewPanel cloth_view_;
   ResultsPanel results_;

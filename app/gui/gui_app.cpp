@@ -169,9 +169,10 @@ int run(Surface& surface, const GuiRunOptions& options, bool interactive,
                        "moved away.";
     }
   }
-  ExplorerOptions explorer_options{app::find_presets_dir(), user_presets_dir(),
-                                   persist ? config_dir() / "session.json" : "",
-                                   options.analysis_tab, kDejaVuSans};
+  const std::filesystem::path measurements = config_dir() / "measurements.csv";
+  ExplorerOptions explorer_options{
+      app::find_presets_dir(), user_presets_dir(), persist ? config_dir() / "session.json" : "",
+      options.analysis_tab,    kDejaVuSans,        measurements};
   const std::filesystem::path ini_path = config_dir() / "imgui.ini";
   ImGuiContextGuard imgui(surface, persist ? ini_path.string() : "");
   const std::unique_ptr<Renderer> renderer = make_gl_renderer();

@@ -134,8 +134,8 @@ std::vector<std::string> step_problems(const json& step) {
   if (!step.is_object() || step.empty()) {
     return {"is not an object with one action"};
   }
-  static const char* const kActions[] = {"drag",   "click",  "key",        "type",
-                                         "resize", "frames", "screenshot", "expect"};
+  static const char* const kActions[] = {"drag",   "click",  "click_photo", "key",   "type",
+                                         "resize", "frames", "screenshot",  "expect"};
   std::vector<std::string> actions;
   for (const char* action : kActions) {
     if (step.contains(action)) {
@@ -143,8 +143,8 @@ std::vector<std::string> step_problems(const json& step) {
     }
   }
   if (actions.size() != 1) {
-    return {actions.empty() ? "has no action (drag, click, key, type, resize, frames, "
-                              "screenshot or expect)"
+    return {actions.empty() ? "has no action (drag, click, click_photo, key, type, resize, "
+                              "frames, screenshot or expect)"
                             : "has more than one action: " + detail::join_comma(actions)};
   }
   const std::string& action = actions.front();
@@ -178,6 +178,12 @@ std::vector<std::string> step_problems(const json& step) {
       }
     } else if (!arg.is_string() || arg.get<std::string>().empty()) {
       problems.push_back("click needs a label or a slider key with \"at\", not " + arg.dump());
+    }
+  } else if (action == "click_photo") {
+    if (!arg.is_array() || arg.size() != 2 || !arg[0].is_number() || !arg[1].is_number() ||
+        !(arg[0].get<double>() >= 0.0) || !(arg[1].get<double>() >= 0.0)) {
+      problems.push_back("click_photo needs [X, Y]: a pixel of the loaded photo, not " +
+                         arg.dump());
     }
   } else if (action == "key") {
     if (!arg.is_string() || !parse_chord(arg.get<std::string>())) {
@@ -406,7 +412,7 @@ json explorer_state_json(Explorer& explorer) {
   for (const auto& [name, rect] : explorer.panel_rects()) {
     panels[name] = {{"x", rect.pos.x}, {"y", rect.pos.y}, {"w", rect.size.x}, {"h", rect.size.y}};
   }
-  return {
+  json state = {
       {"grid", std::to_string(scene.grid_nx()) + "x" + std::to_string(scene.grid_ny())},
       {"regime_map_ms", explorer.regime_map_ms()},
       {"stats", scene_stats_to_json(scene)},
@@ -435,6 +441,8 @@ json explorer_state_json(Explorer& explorer) {
        {{"scale_percent", explorer.appearance().scale_percent()},
         {"light_theme", explorer.appearance().light_theme()}}},
   };
+  state.update(explorer.photo().report());  // "photo" and "measured"
+  return state;
 }
 
 InputPlayer::InputPlayer(const std::filesystem::path& script_path) {
@@ -549,6 +557,14 @@ bool InputPlayer::start_step(std::size_t index, ImGuiIO& io, Explorer& explorer)
       return false;
     }
     press(*at, *at, 0);
+  } else if (step.contains("click_photo")) {
+    if (explorer.photo().report().at("photo").is_null()) {
+      fail(index, "no photo is loaded");
+      return false;
+    }
+    const ImVec2 at = explorer.photo().screen_of_pixel(step["click_photo"][0].get<double>(),
+                                                       step["click_photo"][1].get<double>());
+    press(at, at, 0);
   } else if (step.contains("key")) {
     const Chord chord = *parse_chord(step["key"].get<std::string>());
     FrameInput mods;

@@ -403,6 +403,7 @@ bool Plot::begin(const char* id, ImVec2 size, const PlotAxis& x, const PlotAxis&
   legend_.clear();
   vlines_.clear();
   legend_text_.clear();
+  backdrop_ = nullptr;
 
   const ImVec2 avail = ImGui::GetContentRegionAvail();
   if (size.x <= 0)
@@ -672,6 +673,21 @@ std::optional<PlotHit> Plot::end() {
   const AxisMap xm = x_map(xt0, xt1, lay.min, lay.max, x_log, x_axis_.flipped);
   const AxisMap ym = y_map(yt0, yt1, lay.min, lay.max, y_log, y_axis_.flipped);
 
+  // --- the view, for the backdrop and the caller ---
+  view_.min = lay.min;
+  view_.max = lay.max;
+  view_.x_lo = from_t(xt0, x_log);
+  view_.x_hi = from_t(xt1, x_log);
+  view_.y_lo = from_t(yt0, y_log);
+  view_.y_hi = from_t(yt1, y_log);
+  view_.x_log = x_log;
+  view_.y_log = y_log;
+  view_.x_flipped = x_axis_.flipped;
+  view_.y_flipped = y_axis_.flipped;
+  view_.x_auto = !manual_x;
+  view_.y_auto = !manual_y;
+  view_.legend_entries = static_cast<int>(legend_.size());
+
   // --- drawing ---
   const ImU32 col_bg = ImGui::GetColorU32(ImGuiCol_FrameBg);
   const ImU32 col_grid = ImGui::GetColorU32(ImGuiCol_Text, 0.12f);
@@ -679,6 +695,11 @@ std::optional<PlotHit> Plot::end() {
   const ImU32 col_text = ImGui::GetColorU32(ImGuiCol_Text);
 
   dl->AddRectFilled(lay.min, lay.max, col_bg);
+  if (backdrop_) {
+    dl->PushClipRect(lay.min, lay.max, true);
+    backdrop_(dl, view_);
+    dl->PopClipRect();
+  }
   for (const double v : x_ticks_) {
     const float px = static_cast<float>(xm.px(v));
     dl->AddLine({px, lay.min.y}, {px, lay.max.y}, col_grid);
@@ -836,21 +857,7 @@ std::optional<PlotHit> Plot::end() {
                               std::min(top + legend_rows_.back().y + row, frame_max_.y));
   }
 
-  // --- state for the next frame and for the caller ---
-  view_.min = lay.min;
-  view_.max = lay.max;
-  view_.x_lo = from_t(xt0, x_log);
-  view_.x_hi = from_t(xt1, x_log);
-  view_.y_lo = from_t(yt0, y_log);
-  view_.y_hi = from_t(yt1, y_log);
-  view_.x_log = x_log;
-  view_.y_log = y_log;
-  view_.x_flipped = x_axis_.flipped;
-  view_.y_flipped = y_axis_.flipped;
-  view_.x_auto = !manual_x;
-  view_.y_auto = !manual_y;
-  view_.legend_entries = static_cast<int>(legend_.size());
-
+  // --- state for the next frame ---
   store_double(st, keys_, kXLo, view_.x_lo);
   store_double(st, keys_, kXHi, view_.x_hi);
   store_double(st, keys_, kYLo, view_.y_lo);

@@ -23,6 +23,7 @@
 #include <imgui.h>
 
 #include <cstddef>
+#include <functional>
 #include <optional>
 #include <span>
 #include <string>
@@ -85,6 +86,12 @@ class Plot {
   // A full-height line, e.g. the current value of a sweep; it is included in x autoscale.
   void vertical_line(double x, ImU32 colour, const char* label = nullptr);
 
+  // Drawn by end() over the data area's background and under the grid and the series, clipped to
+  // the data area, with this frame's view: e.g. a photo that the series are compared with.
+  void backdrop(std::function<void(ImDrawList*, const PlotView&)> draw) {
+    backdrop_ = std::move(draw);
+  }
+
   // Fit both axes to the data again, from this frame on (between begin() and end()).
   void request_autoscale() { autoscale_requested_ = true; }
 
@@ -140,6 +147,7 @@ class Plot {
   std::vector<VLine> vlines_;
   std::vector<LegendRow> legend_rows_;  // per legend entry, laid out in end()
   float legend_height_ = 0;
+  std::function<void(ImDrawList*, const PlotView&)> backdrop_;
   std::string legend_text_;  // NUL-separated copies: callers may pass temporaries' c_str()
   // Per-frame scratch, kept here so a long-lived Plot does not allocate once warm.
   std::vector<double> x_ticks_, y_ticks_;

@@ -110,6 +110,9 @@ class Renderer {
   virtual int create_image() = 0;
   virtual void update_image(int image, int width, int height, const std::uint32_t* rgba) = 0;
   virtual ImTextureID texture(int image) const = 0;
+  // The same for a photo, which is drawn scaled down and rotated: sampled smoothly (mipmaps), so
+  // that thin lines in it do not break up. `rgba` is top row first, for uv (0, 0) at the top left.
+  virtual void update_photo(int image, int width, int height, const std::uint32_t* rgba) = 0;
 
   // Draws ImGui's draw data onto the frame's framebuffer (bound by the surface), cleared first.
   virtual void render_draw_data(FrameSize size) = 0;
@@ -131,6 +134,9 @@ class NullRenderer final : public Renderer {
   int create_image() override { return image_count_++; }
   void update_image(int image, int width, int height, const std::uint32_t* rgba) override;
   ImTextureID texture(int image) const override;
+  void update_photo(int image, int width, int height, const std::uint32_t* rgba) override {
+    update_image(image, width, height, rgba);
+  }
   void render_draw_data(FrameSize) override {}
   std::vector<std::uint8_t> read_pixels(FrameSize size) override;
 

@@ -27,11 +27,12 @@ std::string line(const char* label, const char* symbol, double value, const char
 }
 
 // " (6–8)"; " (7–7)" says that the range was computed and is a single value.
+
+}  // namespace
+
 std::string range_text(double lo, double hi, const char* format) {
   return " (" + detail::printf_string(format, lo) + "–" + detail::printf_string(format, hi) + ")";
 }
-
-}  // namespace
 
 nlohmann::json solution_to_json(const Solution& s, const Parameters& p,
                                 const ModelStanding* standing) {

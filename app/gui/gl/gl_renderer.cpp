@@ -86,6 +86,19 @@ class GlRenderer final : public Renderer {
     glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, rgba);
   }
 
+  void update_photo(int image, int width, int height, const std::uint32_t* rgba) override {
+    const auto i = static_cast<std::size_t>(image);
+    glBindTexture(GL_TEXTURE_2D, textures_[i]);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, width, height, 0, GL_RGBA, GL_UNSIGNED_BYTE, rgba);
+    glGenerateMipmap(GL_TEXTURE_2D);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    sizes_[i] = {width, height};
+  }
+
   ImTextureID texture(int image) const override {
     return reinterpret_cast<ImTextureID>(
         static_cast<std::intptr_t>(textures_[static_cast<std::size_t>(image)]));

@@ -14,11 +14,8 @@
 #include "core/model/text_format.hpp"
 
 namespace foldlab::gui {
-namespace {
 
-// The paper's Tables 1-2 and Fig. 4 as shipped (data/ beside presets/), when they can be found.
-std::filesystem::path default_data_file() {
-  std::filesystem::path presets = app::find_presets_dir();
+std::filesystem::path shipped_measurements_file(std::filesystem::path presets) {
   if (presets.empty()) {
     return {};
   }
@@ -29,6 +26,8 @@ std::filesystem::path default_data_file() {
   std::error_code error;
   return std::filesystem::is_regular_file(file, error) ? file : std::filesystem::path();
 }
+
+namespace {
 
 using detail::printf_string;
 
@@ -94,7 +93,7 @@ void prediction_cells(int first_column, const PublishedComparison& c) {
 }  // namespace
 
 CalibrationPanel::CalibrationPanel() {
-  const std::string path = default_data_file().string();
+  const std::string path = shipped_measurements_file(app::find_presets_dir()).string();
   std::snprintf(data_path_, sizeof data_path_, "%s", path.c_str());
 }
 

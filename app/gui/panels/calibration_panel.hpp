@@ -6,6 +6,7 @@
 #pragma once
 
 #include <atomic>
+#include <filesystem>
 #include <mutex>
 #include <optional>
 #include <string>
@@ -17,6 +18,10 @@
 #include "core/io/preset.hpp"
 
 namespace foldlab::gui {
+
+// The paper's Tables 1-2 and Fig. 4 as shipped (data/ beside the `presets` folder), empty when
+// not found.
+std::filesystem::path shipped_measurements_file(std::filesystem::path presets);
 
 class CalibrationPanel {
  public:

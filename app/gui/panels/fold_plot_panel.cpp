@@ -12,7 +12,7 @@
 
 namespace foldlab::gui {
 
-void FoldPlotPanel::draw(Document& document, Renderer& renderer) {
+void FoldPlotPanel::draw(Document& document, Renderer& renderer, PhotoOverlay& photo) {
   if (!begin_panel("Fold lines (2D)", renderer)) {
     ImGui::End();
     return;  // hidden: the fold lines are not even computed
@@ -21,6 +21,7 @@ void FoldPlotPanel::draw(Document& document, Renderer& renderer) {
   Scene& scene = document.scene();
   const FoldLines& lines = scene.fold_lines();
   const Solution& s = scene.solution();
+  photo.toolbar(document);
   if (ImGui::SmallButton("autoscale")) {
     autoscale_ = true;
   }
@@ -78,7 +79,9 @@ void FoldPlotPanel::draw(Document& document, Renderer& renderer) {
     }
     plot_.markers("supports", supports_x, supports_y, kSupportMarker.u32(), MarkerShape::Triangle,
                   6.0f);
+    photo.plot_items(plot_, document);
     const std::optional<PlotHit> hit = plot_.end();
+    photo.handle_click(plot_, document);
     if (hit && hit->series < static_cast<int>(lines.lines.size())) {
       const FoldLine& line = lines.lines[static_cast<std::size_t>(hit->series)];
       const Eigen::Vector3d& p = line.points_mm[static_cast<std::size_t>(hit->index)];

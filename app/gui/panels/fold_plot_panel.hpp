@@ -1,11 +1,13 @@
 // The "Fold lines (2D)" panel: the fold lines in the x-y plane coloured by sign, the supports, and
-// the flat cloth's lower edge when there are no folds. Hidden, it computes nothing.
+// the flat cloth's lower edge when there are no folds, over a photo when one is loaded. Hidden,
+// it computes nothing.
 #pragma once
 
 #include <cstdint>
 #include <vector>
 
 #include "app/gui/document.hpp"
+#include "app/gui/panels/photo_overlay.hpp"
 #include "app/gui/plot_widget.hpp"
 #include "app/gui/renderer.hpp"
 
@@ -13,7 +15,8 @@ namespace foldlab::gui {
 
 class FoldPlotPanel {
  public:
-  void draw(Document& document, Renderer& renderer);
+  // `photo` adds its buttons, its backdrop and its clicks to the plot.
+  void draw(Document& document, Renderer& renderer, PhotoOverlay& photo);
 
  private:
   Plot plot_;

@@ -37,9 +37,10 @@ class PresetsPanel {
   const std::vector<Entry>& entries() const { return entries_; }
   // Why the listing is not the whole folder (too many presets); the explorer shows them as notices.
   const std::vector<std::string>& notices() const { return notices_; }
+  // Reads the folders again (a preset was written elsewhere).
+  void refresh();
 
  private:
-  void refresh();
   bool is_user_preset(const std::string& path) const;
   // Writes the valid parameters as preset `name` to `path`, then goes on with what waited for
   // the save (a preset load after "Save" in the unsaved-changes question).

@@ -8,10 +8,22 @@
 #include "app/gui/appearance.hpp"
 
 #include "app/gui/panels/widgets.hpp"
+#include "core/analysis/uncertainty.hpp"
 #include "core/model/equations.hpp"
 #include "core/model/text_format.hpp"
 
 namespace foldlab::gui {
+
+const ModelStanding& ResultsPanel::standing(Document& document) {
+  Scene& scene = document.scene();
+  const std::optional<CalibrationRecord>& record = document.loaded().calibration;
+  if (standing_version_ != scene.version(Stage::solution) || standing_record_ != record) {
+    standing_version_ = scene.version(Stage::solution);
+    standing_record_ = record;
+    standing_ = model_standing(scene.parameters(), record);  // the scene's are always valid
+  }
+  return standing_;
+}
 
 void ResultsPanel::draw(Document& document, Renderer& renderer) {
   if (!begin_panel("Results", renderer)) {
@@ -28,6 +40,13 @@ void ResultsPanel::draw(Document& document, Renderer& renderer) {
     ImGui::TextWrapped("%s", message.c_str());
     ImGui::PopStyleColor();
   }
+  const ModelStanding& model = standing(document);
+  ImGui::PushStyleColor(ImGuiCol_Text, kDimText);
+  ImGui::TextWrapped("eq. 7: %s", model.label.c_str());
+  ImGui::PopStyleColor();
+  if (ImGui::IsItemHovered()) {
+    ImGui::SetTooltip("range of n, Q and z_max: %s", model.range_basis.c_str());
+  }
   if (ImGui::BeginTable("results", 3, ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit)) {
     auto row = [](const char* name, const char* symbol, const std::string& value) {
       ImGui::TableNextRow();
@@ -39,11 +58,20 @@ void ResultsPanel::draw(Document& document, Renderer& renderer) {
       ImGui::TextUnformatted(value.c_str());
     };
     auto fmt = [](const char* format, double v) { return detail::printf_string(format, v); };
-    row("number of wrinkles", "n", fmt("%.0f", s.n));
-    row("amplitude ratio", "Q", fmt("%.4f", s.Q));
+    const std::optional<PredictionRange>& range = model.range;
+    auto ranged = [&](std::string value, double lo, double hi, const char* format) {
+      return range ? value + range_text(lo, hi, format) : value;
+    };
+    row("number of wrinkles", "n",
+        ranged(fmt("%.0f", s.n), range ? range->n_min : 0, range ? range->n_max : 0, "%.0f"));
+    row("amplitude ratio", "Q",
+        ranged(fmt("%.4f", s.Q), range ? range->Q_min : 0, range ? range->Q_max : 0, "%.3g"));
     row("root of eq. 7", "Q7", s.Q7 ? fmt("%.4f", *s.Q7) : std::string("none (s >= 1)"));
     row("stress ratio", "s", fmt("%.4g", s.stress_ratio));
-    row("out-of-plane depth", "z_max", fmt("%.2f mm", s.z_max_mm));
+    row("out-of-plane depth", "z_max",
+        ranged(fmt("%.2f", s.z_max_mm), range ? range->z_max_min_mm : 0,
+               range ? range->z_max_max_mm : 0, "%.1f") +
+            " mm");
     row("span", "l", fmt("%.1f mm", s.span_mm));
     row("sag of the upper edge", "A", fmt("%.2f mm", s.sag_amplitude_mm));
     row("iterations", "", fmt("%.0f", s.iterations));

@@ -1,0 +1,114 @@
+// A photo of a real cloth behind the fold plot, and the loop it serves: the two supports clicked
+// on the photo set its rotation and scale (their distance is the span l), so the predicted fold
+// lines lie over it in photo coordinates and follow the sliders; the observed folds clicked on
+// the centre line give the measured a_i, n and Q (core's measure_folds, as `foldlab measure`
+// does); "Add to measurements" appends the row to the user's measurements file, and "Fit"
+// calibrates eq. 7 on those rows and saves a fabric preset with the constants and their
+// held-out figures.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <future>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json_fwd.hpp>
+
+#include "app/gui/document.hpp"
+#include "app/gui/plot_widget.hpp"
+#include "app/gui/renderer.hpp"
+#include "core/analysis/calibration.hpp"
+#include "core/analysis/fold_measurement.hpp"
+#include "core/io/image.hpp"
+
+namespace foldlab::gui {
+
+struct PhotoPaths {
+  std::filesystem::path measurements_file;  // "Add to measurements" appends here
+  std::filesystem::path user_presets_dir;   // "Fit" saves its preset here
+  std::filesystem::path shipped_data_file;  // Conci's Tables 1–2, empty when not found
+};
+
+class PhotoOverlay {
+ public:
+  explicit PhotoOverlay(PhotoPaths paths);
+  // Waits for a running fit: it reads this object's members.
+  ~PhotoOverlay();
+  PhotoOverlay(const PhotoOverlay&) = delete;
+  PhotoOverlay& operator=(const PhotoOverlay&) = delete;
+
+  static constexpr const char* kLoadModal = "Load photo";
+  static constexpr const char* kWindow = "Photo measurement";
+
+  // The buttons above the fold plot: "Load photo...", "Place supports", "Click folds".
+  void toolbar(Document& document);
+  // Between the plot's begin() and end(): the photo as its backdrop, the clicked points and the
+  // centre line.
+  void plot_items(Plot& plot, const Document& document);
+  // After the plot's end(): a click in its data area places a support or a fold.
+  void handle_click(const Plot& plot, const Document& document);
+  // The load dialog and the measurement window, outside the tiled panels.
+  void draw_windows(Document& document, Renderer& renderer);
+
+  // Loads a photo as the backdrop; on failure keeps the previous one and says why.
+  bool load(const std::filesystem::path& path, Document& document, Renderer& renderer);
+  // A preset "Fit" saved since the last call, for the presets list to show.
+  std::optional<std::filesystem::path> take_saved_preset();
+  bool fitting() const { return fit_.valid(); }
+
+  // Where photo pixel (x, y) is on screen in the last drawn plot (for tests and scripts).
+  ImVec2 screen_of_pixel(double x_px, double y_px) const;
+  // The photo, its supports and folds, the measurement and the files: for `gui --report`.
+  nlohmann::json report() const;
+
+ private:
+  enum class Mode { none, supports, folds };
+  // Photo pixel -> plot millimetres and back: the supports' frame once both are placed, else a
+  // provisional frame that shows the photo about a span and a fifth wide over the supports.
+  std::pair<double, double> to_plot(double x_px, double y_px, double span_mm) const;
+  std::pair<double, double> to_pixel(double x_mm, double y_mm, double span_mm) const;
+  void remeasure(const Document& document);
+  void add_row(const Document& document);
+  void start_fit(const Document& document);
+  void collect_fit(Document& document);
+  void measurement_window(Document& document, Renderer& renderer);
+
+  PhotoPaths paths_;
+  std::optional<Image> photo_;
+  std::string photo_path_;
+  int texture_ = -1;
+  ImTextureID texture_id_ = nullptr;
+  char path_field_[1024] = {};
+  std::string load_error_;
+  bool focus_path_ = false;
+
+  Mode mode_ = Mode::none;
+  std::vector<PixelPoint> supports_;  // 0, 1 or 2 clicks; two fix the frame
+  std::vector<PixelPoint> folds_;     // as clicked, any order; their rows are what counts
+  std::optional<FoldMeasurement> measured_;
+  std::string measure_error_;
+  double last_span_mm_ = 0.0;
+  PlotView view_;
+  bool have_view_ = false;
+  // The plot keeps pointers into these until end().
+  std::vector<double> marker_xs_, marker_ys_, fold_xs_, fold_ys_, centre_xs_, centre_ys_;
+
+  char z_max_field_[32] = {};
+  char name_field_[128] = {};
+  std::string rows_message_;
+  bool rows_message_is_error_ = false;
+  int rows_in_file_ = 0;
+
+  bool with_shipped_rows_ = true;
+  std::future<CalibrationReport> fit_;
+  Parameters fit_base_;
+  int fit_user_rows_ = 0;
+  std::string fit_message_;
+  bool fit_message_is_error_ = false;
+  std::optional<std::filesystem::path> saved_preset_;
+  std::optional<std::filesystem::path> unreported_preset_;
+};
+
+}  // namespace foldlab::gui
