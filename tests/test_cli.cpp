@@ -608,7 +608,7 @@ TEST_F(CliTest, SweepPastTheValidRangeSaysWhyOnceAndAllRefusedIsInvalidInput) {
   const RunResult partly =
       run({"sweep", "--param", "d", "--from", "600", "--to", "700", "--steps", "3", "--csv"});
   EXPECT_EQ(partly.exit_status, 0) << partly.err;
-  EXPECT_TRUE(contains(partly.out, "700,0,1,0,invalid")) << partly.out;
+  EXPECT_TRUE(contains(partly.out, "\n700,,,,invalid\n")) << partly.out;
   EXPECT_TRUE(contains(partly.err, "1 of 3 values are refused")) << partly.err;
   EXPECT_TRUE(contains(partly.err, "d = 700")) << partly.err;
   const RunResult all =
@@ -691,4 +691,21 @@ TEST_F(CliTest, CalibrateNeverSavesOverItsMeasurements) {
   EXPECT_EQ(r.exit_status, 2);
   EXPECT_TRUE(contains(r.err, "would destroy the input")) << r.err;
   EXPECT_EQ(read_file(data), before);
+}
+
+TEST_F(CliTest, MeasureAppendsToAnEmptyFileAsToANewOne) {
+  const fs::path rows = dir_ / "rows.csv";
+  std::ofstream{rows};  // created empty, as `touch` would
+  const RunResult r = run({"measure", "--depths-mm", "100,50", "--append", rows.string()});
+  EXPECT_EQ(r.exit_status, 0) << r.err;
+  const std::vector<std::string> lines = split_lines(read_file(rows));
+  ASSERT_EQ(lines.size(), 2u) << read_file(rows);
+  EXPECT_TRUE(starts_with(lines[0], "name,")) << lines[0];
+  EXPECT_TRUE(contains(lines[1], ",fit,")) << lines[1];
+}
+
+TEST_F(CliTest, PlayingAFolderIsInvalidInputNotAnInternalError) {
+  const RunResult r = run({"render", "--play", dir_.string()});
+  EXPECT_EQ(r.exit_status, 2) << r.err;
+  EXPECT_TRUE(contains(r.err, "is a folder")) << r.err;
 }

@@ -667,13 +667,15 @@ TEST_F(ExplorerTest, UiScaleIsClampedAndRememberedWithTheTheme) {
   const fs::path session = dir_ / "session.json";
   open_explorer("equations", {}, session);
   EXPECT_EQ(explorer_->appearance().scale_percent(), 100);
-  ASSERT_EQ(explorer_->set_view("scale", "400"), std::nullopt);
+  // A script's --view asking for more is refused; a restored or requested scale is clamped.
+  EXPECT_TRUE(explorer_->set_view("scale", "400").has_value());
+  explorer_->appearance().request(400, false);
   frame();
   EXPECT_EQ(explorer_->appearance().scale_percent(), 250);
   // ImGui's 13 px font rebuilt at 2.5 times its size, not stretched.
   EXPECT_FLOAT_EQ(ImGui::GetIO().Fonts->Fonts[0]->FontSize, 33.0f);
   EXPECT_FLOAT_EQ(ImGui::GetIO().FontGlobalScale, 1.0f);
-  ASSERT_EQ(explorer_->set_view("scale", "20"), std::nullopt);
+  explorer_->appearance().request(20, false);
   frame();
   EXPECT_EQ(explorer_->appearance().scale_percent(), 100);
   EXPECT_FLOAT_EQ(ImGui::GetIO().Fonts->Fonts[0]->FontSize, 13.0f);
@@ -1322,6 +1324,33 @@ TEST_F(ExplorerTest, ResultsShowTheRangeTheCalibrationAllows) {
   frame();
   EXPECT_TRUE(shows(frame(), "n 5 (4–5)")) << last_text_;
   EXPECT_TRUE(shows(last_text_, "(56.6–70.2) mm")) << last_text_;
+}
+
+// A scripted picture's view settings are taken as given or refused with their range; none is
+// moved to the nearest allowed value (README: values are never clamped).
+TEST_F(ExplorerTest, ViewSettingsOutsideTheirRangeAreRefusedNotClamped) {
+  for (const auto& [key, value] :
+       std::vector<std::pair<const char*, const char*>>{{"z", "100"},
+                                                        {"z", "-3"},
+                                                        {"scale", "1000"},
+                                                        {"scale", "99"},
+                                                        {"breeze", "2"},
+                                                        {"wireframe", "7"},
+                                                        {"ground", "-1"},
+                                                        {"time", "-5"},
+                                                        {"breeze_mm", "1e9"},
+                                                        {"print_mm", "5"}}) {
+    SCOPED_TRACE(std::string(key) + "=" + value);
+    const std::optional<std::string> problem = explorer_->set_view(key, value);
+    ASSERT_TRUE(problem.has_value());
+    EXPECT_NE(problem->find("must be"), std::string::npos) << *problem;
+  }
+  EXPECT_EQ(explorer_->cloth_style().z_exaggeration, 1.0f) << "a refused value changes nothing";
+  EXPECT_EQ(explorer_->set_view("z", "20"), std::nullopt);
+  EXPECT_EQ(explorer_->cloth_style().z_exaggeration, 20.0f);
+  EXPECT_EQ(explorer_->set_view("wireframe", "1"), std::nullopt);
+  EXPECT_TRUE(explorer_->cloth_style().wireframe);
+  EXPECT_EQ(explorer_->set_view("scale", "250"), std::nullopt);
 }
 
 }  // namespace

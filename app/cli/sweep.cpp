@@ -74,7 +74,16 @@ Command add_sweep_command(CLI::App& app) {
         std::printf("%14s %6s %10s %12s  %s\n", axis.key.c_str(), "n", "Q", "z_max (mm)", "regime");
       }
       for (const SweepPoint& p : points) {
-        const std::string regime = p.valid ? std::string(to_string(p.regime)) : "invalid";
+        // A refused value has no solution: empty fields, so that a spreadsheet plots no zeros.
+        if (!p.valid) {
+          if (options->csv) {
+            std::printf("%.9g,,,,invalid\n", p.value);
+          } else {
+            std::printf("%14.6g %6s %10s %12s  invalid\n", p.value, "-", "-", "-");
+          }
+          continue;
+        }
+        const std::string regime(to_string(p.regime));
         if (options->csv) {
           std::printf("%.9g,%d,%.9g,%.9g,%s\n", p.value, p.n, p.Q, p.z_max_mm, regime.c_str());
         } else {

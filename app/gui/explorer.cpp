@@ -89,6 +89,11 @@ std::optional<std::string> Explorer::set_view(std::string_view key, std::string_
     if (!percent) {
       return "scale = '" + std::string(value) + "' is not a number (percent)";
     }
+    if (*percent < kMinUiScalePercent || *percent > kMaxUiScalePercent) {
+      return "scale = " + detail::shortest_number(*percent) + " must be in [" +
+             std::to_string(kMinUiScalePercent) + ", " + std::to_string(kMaxUiScalePercent) +
+             "] (percent)";
+    }
     appearance_.request(static_cast<int>(std::lround(*percent)), appearance_.light_theme());
     return std::nullopt;
   }

@@ -446,6 +446,10 @@ json explorer_state_json(Explorer& explorer) {
 }
 
 InputPlayer::InputPlayer(const std::filesystem::path& script_path) {
+  std::error_code error;
+  if (std::filesystem::is_directory(script_path, error)) {
+    throw app::InputError("--play " + script_path.string() + ": is a folder, not a script");
+  }
   std::ifstream in(script_path);
   if (!in) {
     throw app::InputError("--play " + script_path.string() + ": cannot be read");

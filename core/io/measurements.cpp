@@ -551,7 +551,7 @@ void append_measurement(const std::filesystem::path& path, const Measurement& ro
   const std::string origin = path.string();
   std::string text;
   std::error_code error;
-  const bool exists = std::filesystem::exists(path, error);
+  bool exists = std::filesystem::exists(path, error);
   MeasurementSet set;
   if (exists) {
     try {
@@ -559,7 +559,11 @@ void append_measurement(const std::filesystem::path& path, const Measurement& ro
     } catch (const ReadError& e) {
       throw MeasurementError(e.what());
     }
-    set = measurements_from_text(text, origin, path.extension().string());
+    // An empty file (just created with `touch`, say) is a new one: it gets the header.
+    exists = !trim(text).empty();
+    if (exists) {
+      set = measurements_from_text(text, origin, path.extension().string());
+    }
   }
   std::string out;
   const bool is_json = path.extension() == ".json" || (exists && trim(text).starts_with("{"));

@@ -63,26 +63,55 @@ std::optional<std::string> ClothViewPanel::set_view(std::string_view key, std::s
   if (!number) {
     return detail::cut(key) + " = '" + detail::cut(value) + "' is not a number";
   }
-  const float v = static_cast<float>(*number);
+  // Scripted pictures name exact values: one outside what the panel's own controls allow is
+  // refused, not moved to the nearest end, so that a typo shows rather than a different picture.
+  const double x = *number;
+  const auto in = [&](double lo, double hi, const char* unit) -> std::optional<std::string> {
+    if (x >= lo && x <= hi) {
+      return std::nullopt;
+    }
+    return detail::cut(key) + " = " + detail::shortest_number(x) + " must be in [" +
+           detail::shortest_number(lo) + ", " + detail::shortest_number(hi) + "]" + unit;
+  };
+  const auto switch_value = [&](bool& field) -> std::optional<std::string> {
+    if (x != 0.0 && x != 1.0) {
+      return detail::cut(key) + " = " + detail::shortest_number(x) + " must be 0 or 1";
+    }
+    field = x == 1.0;
+    return std::nullopt;
+  };
+  const float v = static_cast<float>(x);
   if (key == "breeze") {
-    style_.breeze = v != 0.0f;
+    return switch_value(style_.breeze);
   } else if (key == "breeze_mm") {
+    if (auto problem = in(0.0, 300.0, " mm")) {
+      return problem;
+    }
     style_.breeze_mm = v;
   } else if (key == "time") {
+    if (auto problem = in(0.0, 1e6, " s")) {
+      return problem;
+    }
     style_.time_s = v;
     breeze_playing_ = false;  // a scripted picture shows that instant
   } else if (key == "z") {
-    style_.z_exaggeration = std::clamp(v, 1.0f, 20.0f);
+    if (auto problem = in(1.0, 20.0, " (times)")) {
+      return problem;
+    }
+    style_.z_exaggeration = v;
   } else if (key == "wireframe") {
-    style_.wireframe = v != 0.0f;
+    return switch_value(style_.wireframe);
   } else if (key == "fold_lines") {
-    style_.fold_lines = v != 0.0f;
+    return switch_value(style_.fold_lines);
   } else if (key == "ground") {
-    style_.ground = v != 0.0f;
+    return switch_value(style_.ground);
   } else if (key == "print_mm") {
-    style_.print_mm = std::clamp(v, 10.0f, 300.0f);
+    if (auto problem = in(10.0, 300.0, " mm")) {
+      return problem;
+    }
+    style_.print_mm = v;
   } else if (key == "full") {
-    fill_display_ = v != 0.0f;
+    return switch_value(fill_display_);
   } else {
     return "unknown view key '" + detail::cut(key) +
            "' (known: sweep, theme, scale, grid, print, print_file, print_mm, colour_by, breeze, "
