@@ -83,6 +83,7 @@ std::optional<Session> session_from_text(const std::string& text, const std::str
     s.ground = view.value("ground", s.ground);
     s.ui_scale_percent = view.value("ui_scale_percent", s.ui_scale_percent);
     s.light_theme = view.value("light_theme", s.light_theme);
+    s.expert_mode = view.value("expert", s.expert_mode);
     return s;
   } catch (const std::exception& e) {
     error = "the saved session " + origin + " could not be read (" + e.what() +
@@ -109,7 +110,8 @@ void save_session(const std::filesystem::path& path, const Session& session) {
         {"fold_lines", session.fold_lines_3d},
         {"ground", session.ground},
         {"ui_scale_percent", session.ui_scale_percent},
-        {"light_theme", session.light_theme}}},
+        {"light_theme", session.light_theme},
+        {"expert", session.expert_mode}}},
   };
   write_file_atomically(path, j.dump(2) + "\n");
 }

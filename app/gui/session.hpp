@@ -36,6 +36,7 @@ struct Session {
   bool ground = true;
   int ui_scale_percent = 100;
   bool light_theme = false;
+  bool expert_mode = false;  // beginner (false): the cloth's inputs only
   // What was changed while loading (a grid resolution brought into the slider's range), to show.
   std::vector<std::string> notices;
 };
