@@ -206,6 +206,9 @@ class ExplorerTest : public foldlab::testing::TempDirTest {
   std::unique_ptr<Explorer> explorer_;
 };
 
+// Input playback with the null renderer: the script's frames run in this process.
+int play(Explorer& explorer, const nlohmann::json& script, const std::function<void()>& frame);
+
 TEST_F(ExplorerTest, AFrameShowsTheResultsOfTheLoadedPreset) {
   const std::string text = frame();
   EXPECT_NE(text.find("Table 1, h = 1400 mm"), std::string::npos) << text;
@@ -367,6 +370,8 @@ TEST_F(ExplorerTest, AnalysisPanelsSweepThePapersInputsByKey) {
   EXPECT_NE(frame().find("w (N/mm²)"), std::string::npos) << "the sweep's x axis";
 
   open_explorer("map");
+  document().expert_mode = true;
+  frame();
   text = frame();
   EXPECT_NE(text.find("h (mm)"), std::string::npos) << "the map's x axis\n" << text;
   EXPECT_NE(text.find("w (N/mm²)"), std::string::npos) << "the map's y axis";
@@ -374,15 +379,134 @@ TEST_F(ExplorerTest, AnalysisPanelsSweepThePapersInputsByKey) {
 }
 
 TEST_F(ExplorerTest, SlidersShowTheInputTablesFormatAndUnit) {
+  click(ParametersPanel::kExpertLabel);
   const std::string text = frame();
-  // w's row: "%.3e" in N/mm²; h's row: "%.0f" in mm.
-  EXPECT_NE(text.find("1.500e-06 N/mm²"), std::string::npos) << text;
+  // w's slider in g/m²: 1.5e-6 N/mm² / 9.81e-9 = 152.9 g/m² = 4.510 oz/yd² (at 33.906 g/m²
+  // each); h's row: "%.0f" in mm.
+  EXPECT_NE(text.find("153 g/m²"), std::string::npos) << text;
+  EXPECT_NE(text.find("= 4.51 oz/yd² = 1.5e-06 N/mm²"), std::string::npos) << text;
   EXPECT_NE(text.find("1400 mm"), std::string::npos) << text;
   for (const char* key : {"t", "E", "w", "nu", "h", "L", "d", "K"}) {
     const InputSpec* spec = find_input(key);
     const std::string label = std::string(key) + " (" + std::string(spec->name) + ")";
     EXPECT_NE(text.find(label), std::string::npos) << label;
   }
+}
+
+// Every model setting was shown to a designer who has not met eq. 7.
+TEST_F(ExplorerTest, BeginnersSeeTheClothAndExpertsTheModelTooRemembered) {
+  const fs::path session = dir_ / "session.json";
+  open_explorer("equations", {}, session, true);
+  EXPECT_FALSE(document().expert_mode) << "a first start is a beginner's";
+  std::string text = frame();
+  for (const char* shown :
+       {"t (thickness)", "E (Young's modulus)", "w (weight per area)", "h (height)", "L (width)",
+        "d (support displacement)", "shape", ParametersPanel::kPrintedEq7Label}) {
+    EXPECT_NE(text.find(shown), std::string::npos) << shown << "\n" << text;
+  }
+  for (const char* hidden : {"nu (Poisson's ratio)", "K (eq. 7", "p (eq. 7", "span rule", "Int[]",
+                             "per side", "load-condition constant"}) {
+    EXPECT_EQ(text.find(hidden), std::string::npos) << hidden;
+  }
+  EXPECT_EQ(explorer_->parameters_panel().slider_places().count("K"), 0u);
+  click(ParametersPanel::kExpertLabel);
+  text = frame();
+  for (const char* shown : {"nu (Poisson's ratio)", "K (eq. 7", "p (eq. 7", "span rule", "Int[]",
+                            "method", "per side", ParametersPanel::kPrintedEq7Label}) {
+    EXPECT_NE(text.find(shown), std::string::npos) << shown << "\n" << text;
+  }
+  open_explorer("equations", {}, session, true);
+  EXPECT_TRUE(document().expert_mode) << "remembered in the session";
+}
+
+// The paper's form of eq. 7 is one click away for a beginner too: p = 1 and K = 26.9 / 0.91.
+TEST_F(ExplorerTest, ThePrintedEq7IsOneClickAwayInBothModes) {
+  explorer_->load_preset_file(kPresetsDir / "default.json");
+  frame();
+  ASSERT_NE(document().edited().model.stress_exponent_p, 1.0) << "the default is calibrated";
+  click(ParametersPanel::kPrintedEq7Label);
+  const Parameters& p = document().edited();
+  EXPECT_EQ(p.model.method, Method::paper);
+  EXPECT_EQ(p.model.stress_exponent_p, 1.0);
+  EXPECT_NEAR(stiffness_constant_K(p), 29.5604, 1e-4);
+  EXPECT_TRUE(document().issues().empty());
+}
+
+TEST_F(ExplorerTest, TheShapeIsChosenInTheParametersPanel) {
+  click("cosine");  // the combo shows the current shape
+  click("strip");
+  EXPECT_EQ(document().edited().shape.kind, ShapeKind::strip);
+  EXPECT_EQ(shown().shape.kind, ShapeKind::strip) << "the views follow";
+  EXPECT_NE(frame().find("supports"), std::string::npos) << last_text_;
+  click("strip");
+  click("inclined");
+  EXPECT_EQ(shown().shape.kind, ShapeKind::inclined);
+  EXPECT_NE(frame().find("incline_deg (incline)"), std::string::npos) << last_text_;
+}
+
+// Hovering a preset showed its path: a designer wants to know what fabric it is.
+TEST_F(ExplorerTest, HoveringAPresetShowsItsDescriptionAndThenItsPath) {
+  const ImVec2 at = position_of("Cotton jersey knit");
+  ImGui::GetIO().MousePos = ImVec2(at.x + 3.0f, at.y + 4.0f);
+  frame();
+  const std::string text = frame();
+  const std::size_t description = text.find("Single-jersey weft-knitted cotton");
+  const std::size_t path = text.find("fabric-cotton-jersey.json");
+  ASSERT_NE(description, std::string::npos) << text;
+  ASSERT_NE(path, std::string::npos) << text;
+  EXPECT_LT(description, path);
+}
+
+// A saved preset kept the source preset's description and sources as if they were its own.
+TEST_F(ExplorerTest, SaveAsRecordsWhatThePresetWasDerivedFrom) {
+  explorer_->load_preset_file(kPresetsDir / "fabric-cotton-jersey.json");
+  ASSERT_EQ(explorer_->set_input("w", 120 * kNPerMm2PerGramPerM2), std::nullopt);
+  frame();
+  press('S', true);
+  ASSERT_EQ(document().modal_title(), "Save as");
+  click("Save");
+  const fs::path written = dir_ / "user-presets" / "cotton-jersey-knit-edited.json";
+  ASSERT_TRUE(fs::exists(written)) << last_text_;
+  const Preset saved = load_preset(written);
+  const Preset source = cotton();
+  EXPECT_EQ(saved.derived_from, "Cotton jersey knit");
+  EXPECT_NE(saved.description, source.description);
+  EXPECT_EQ(saved.description.find("Single-jersey"), std::string::npos) << saved.description;
+  EXPECT_EQ(saved.source.find("Fistik"), std::string::npos) << saved.source;
+  EXPECT_EQ(saved.parameters.fabric.weight_N_per_mm2, 120 * kNPerMm2PerGramPerM2);
+  // Saving it again over itself keeps what it was derived from.
+  ASSERT_EQ(explorer_->set_input("h", 900.0), std::nullopt);
+  press('S', true);
+  EXPECT_EQ(load_preset(written).derived_from, "Cotton jersey knit");
+  // The listing's hover names the origin.
+  const auto& entries = explorer_->presets().entries();
+  const auto entry = std::find_if(entries.begin(), entries.end(), [](const auto& e) {
+    return e.path.filename() == "cotton-jersey-knit-edited.json";
+  });
+  ASSERT_NE(entry, entries.end());
+  EXPECT_NE(entry->description.find("Derived from \"Cotton jersey knit\"."), std::string::npos)
+      << entry->description;
+}
+
+// Typing "80 g/m2" was refused: a designer's unit. A bare number is g/m², as the slider shows.
+TEST_F(ExplorerTest, AWeightIsTypedInGramsPerSquareMetreOrOuncesPerSquareYard) {
+  const auto type_into_w = [&](const std::string& typed) {
+    return play(
+        *explorer_,
+        {{"steps",
+          {{{"click", "w"}, {"at", 0.5}, {"ctrl", true}}, {{"type", typed}}, {{"key", "enter"}}}}},
+        [&] { frame(); });
+  };
+  ASSERT_EQ(type_into_w("80 g/m2"), 0);
+  EXPECT_NEAR(document().edited().fabric.weight_N_per_mm2, 80 * 9.81e-9, 1e-18);
+  EXPECT_NE(frame().find("80 g/m²"), std::string::npos) << last_text_;
+  EXPECT_NE(last_text_.find("= 2.36 oz/yd²"), std::string::npos) << last_text_;  // 80 / 33.906
+  ASSERT_EQ(type_into_w("2.4 oz/yd²"), 0);
+  // 2.4 x 28.349523125 g / 0.83612736 m² = 81.3738 g/m², x 9.81e-9.
+  EXPECT_NEAR(document().edited().fabric.weight_N_per_mm2, 7.9827692e-7, 1e-14);
+  ASSERT_EQ(type_into_w("150"), 0);
+  EXPECT_NEAR(document().edited().fabric.weight_N_per_mm2, 150 * 9.81e-9, 1e-18);
+  EXPECT_TRUE(document().issues().empty());
 }
 
 // Clicking a preset once replaced unsaved edits with no question.
@@ -580,6 +704,8 @@ TEST_F(ExplorerTest, StatusMessagesExpire) {
 
 // A refused value's reason once appeared under its slider and pushed every slider below it down.
 TEST_F(ExplorerTest, ARefusedValueMovesNoSliderAndMarksTheViewsStale) {
+  document().expert_mode = true;  // K, the last slider
+  frame();
   const ImVec2 before = position_of("K (");
   EXPECT_EQ(last_text_.find("stale"), std::string::npos);
   ASSERT_EQ(explorer_->set_input("d", 800.0), std::nullopt);

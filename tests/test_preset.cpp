@@ -111,6 +111,7 @@ void expect_same_preset(const foldlab::Preset& a, const foldlab::Preset& b) {
   EXPECT_EQ(a.name, b.name);
   EXPECT_EQ(a.description, b.description);
   EXPECT_EQ(a.source, b.source);
+  EXPECT_EQ(a.derived_from, b.derived_from);
   expect_same_parameters(a.parameters, b.parameters);
   EXPECT_EQ(a.published.n, b.published.n);
   EXPECT_EQ(a.published.z_max_mm, b.published.z_max_mm);
@@ -124,6 +125,7 @@ foldlab::Preset awkward_preset() {
   p.name = "Round trip \"quoted\" \u00e9";
   p.description = "line one\nline two";
   p.source = "tests";
+  p.derived_from = "Cotton jersey knit";
   p.parameters.fabric.thickness_mm = 0.1 + 0.2;
   p.parameters.fabric.youngs_modulus_MPa = 1000.0 / 3.0;
   p.parameters.fabric.weight_N_per_mm2 = 1.2345678901234567e-6;

@@ -176,8 +176,8 @@ TEST(Settings, UnknownKeyIsReported) {
 }
 
 TEST(Settings, MalformedNumbersAreRejected) {
-  for (const char* value : {"1.5.3", "abc", "", "nan", "NaN", "inf", "-inf", "12mm", " 1", "1 ",
-                            "1,5", "0x10", "--1"}) {
+  for (const char* value : {"1.5.3", "abc", "", "nan", "NaN", "inf", "-inf", "12 furlongs", " 1",
+                            "1 ", "1,5", "0x10", "--1"}) {
     SCOPED_TRACE(std::string("'") + value + "'");
     Parameters p;
     const auto error = foldlab::apply_setting(p, "t", value);
@@ -197,6 +197,78 @@ TEST(Settings, NumbersBeyondADoubleAreNamedAsSuch) {
     EXPECT_TRUE(contains(*error, "beyond the range of a double")) << *error;
     EXPECT_EQ(p.fabric.thickness_mm, 0.25);
   }
+}
+
+// Conversions computed by hand: 1 g/m² weighs 9.81e-9 N/mm² (g = 9.81 m/s²), and
+// 1 oz/yd² = 28.349523125 g / 0.83612736 m² = 33.9057 g/m².
+TEST(Settings, WeightsAreReadInGramsPerSquareMetreAndOuncesPerSquareYard) {
+  const foldlab::InputSpec& w = *foldlab::find_input("w");
+  for (const char* text : {"80 g/m2", "80 g/m²", "80gsm", "80 GSM", "80g / m2", "80 g/m^2x"}) {
+    SCOPED_TRACE(text);
+    const std::optional<double> value = foldlab::parse_quantity(w, text);
+    if (std::string(text).ends_with("x")) {
+      EXPECT_FALSE(value.has_value());
+      continue;
+    }
+    ASSERT_TRUE(value.has_value());
+    EXPECT_NEAR(*value, 7.848e-7, 1e-18);  // 80 x 9.81e-9
+  }
+  // 2.4 oz/yd² = 81.37379 g/m² = 7.9827692e-7 N/mm².
+  ASSERT_TRUE(foldlab::parse_quantity(w, "2.4 oz/yd2").has_value());
+  EXPECT_NEAR(*foldlab::parse_quantity(w, "2.4 oz/yd2"), 7.9827692e-7, 1e-14);
+  EXPECT_NEAR(*foldlab::parse_quantity(w, "2.4oz/yd²"), 7.9827692e-7, 1e-14);
+  // A bare number is in the unit the caller names: g/m² in the explorer, N/mm² on the CLI.
+  EXPECT_NEAR(*foldlab::parse_quantity(w, "80", "g/m²"), 7.848e-7, 1e-18);
+  EXPECT_EQ(foldlab::parse_quantity(w, "1.5e-6"), 1.5e-6);
+  EXPECT_EQ(foldlab::parse_quantity(w, "1.5e-6 N/mm2"), 1.5e-6);
+  EXPECT_FALSE(foldlab::parse_quantity(w, "80 g/cm2").has_value());
+  EXPECT_FALSE(foldlab::parse_quantity(w, "g/m2").has_value());
+  // The shown unit of w and its read-out: 150 g/m² = 4.424 oz/yd².
+  EXPECT_EQ(foldlab::shown_unit(w).symbol, "g/m²");
+  EXPECT_NEAR(150.0 * foldlab::kNPerMm2PerGramPerM2 / foldlab::input_units(w)[2].per_unit, 4.4240,
+              1e-4);
+}
+
+TEST(Settings, SetAcceptsAUnitAfterTheNumber) {
+  Parameters p;
+  EXPECT_FALSE(foldlab::apply_setting(p, "w", "80g/m2"));
+  EXPECT_NEAR(p.fabric.weight_N_per_mm2, 7.848e-7, 1e-18);
+  EXPECT_FALSE(foldlab::apply_setting(p, "h", "1.4 m"));
+  EXPECT_EQ(p.hanging.height_mm, 1400.0);
+  EXPECT_FALSE(foldlab::apply_setting(p, "L", "140cm"));
+  EXPECT_EQ(p.hanging.length_mm, 1400.0);
+  EXPECT_FALSE(foldlab::apply_setting(p, "E", "0.165 GPa"));
+  EXPECT_NEAR(p.fabric.youngs_modulus_MPa, 165.0, 1e-12);
+  const auto error = foldlab::apply_setting(p, "w", "80 furlongs");
+  ASSERT_TRUE(error.has_value());
+  EXPECT_TRUE(contains(*error, "N/mm², g/m², oz/yd²")) << *error;
+  EXPECT_TRUE(foldlab::apply_setting(p, "nu", "0.3 mm").has_value()) << "nu has no unit";
+}
+
+// The slider of d stops below L/2 and that of L above 2 d, where validation starts refusing.
+TEST(Settings, SliderIntervalsStopWhereValidationRefuses) {
+  Parameters p;
+  p.hanging.length_mm = 1400.0;
+  p.hanging.support_displacement_mm = 100.0;
+  const foldlab::InputInterval d = foldlab::slider_interval(*foldlab::find_input("d"), p);
+  EXPECT_EQ(d.lo, 0.0);
+  EXPECT_LT(d.hi, 700.0);
+  EXPECT_GT(d.hi, 700.0 - 1e-9);
+  Parameters at_hi = p;
+  at_hi.hanging.support_displacement_mm = d.hi;
+  EXPECT_TRUE(foldlab::validate(at_hi).empty());
+  p.hanging.support_displacement_mm = 600.0;
+  const foldlab::InputInterval L = foldlab::slider_interval(*foldlab::find_input("L"), p);
+  EXPECT_GT(L.lo, 1200.0);
+  EXPECT_LT(L.lo, 1200.0 + 1e-9);
+  EXPECT_EQ(L.hi, 5000.0);
+  // Inputs that nothing else constrains keep the table's typical range.
+  const foldlab::InputInterval w = foldlab::slider_interval(*foldlab::find_input("w"), p);
+  EXPECT_EQ(w.lo, 1e-7);
+  EXPECT_EQ(w.hi, 1e-4);
+  // A refused value gives no hint where validity lies: the typical range.
+  p.hanging.support_displacement_mm = 900.0;
+  EXPECT_EQ(foldlab::slider_interval(*foldlab::find_input("d"), p).hi, 2500.0);
 }
 
 TEST(Settings, ParseNumberAcceptsDecimalNumbers) {

@@ -102,6 +102,9 @@ class Document {
 
   // Set by every accepted change; the explorer saves the session and clears it.
   bool session_dirty = false;
+  // Whether the panels show the model's settings as well as the cloth; remembered in the session.
+  // A first start shows the cloth alone, for a designer who has not met eq. 7.
+  bool expert_mode = false;
 
  private:
   // What an undo step restores: the preset as loaded and the edits over it.

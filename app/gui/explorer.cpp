@@ -38,6 +38,7 @@ Explorer::Explorer(const Preset& initial, const std::string& initial_path, bool 
       style.ground = s->ground;
       appearance_.request(s->ui_scale_percent, s->light_theme);
       automatic_layout_ = s->automatic_layout;
+      document_.expert_mode = s->expert_mode;
       document_.notify("Restored the last session.", MessageKind::info);
       for (const std::string& notice : s->notices) {
         document_.add_notice(notice);
@@ -128,6 +129,7 @@ void Explorer::save_session_now() {
   s.ui_scale_percent = appearance_.scale_percent();
   s.light_theme = appearance_.light_theme();
   s.automatic_layout = automatic_layout_;
+  s.expert_mode = document_.expert_mode;
   save_session(options_.session_file, s);
   document_.session_dirty = false;
 }

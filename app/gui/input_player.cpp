@@ -150,8 +150,8 @@ std::vector<std::string> step_problems(const json& step) {
   const std::string& action = actions.front();
   std::vector<std::string> problems;
   for (const auto& [name, value] : step.items()) {
-    const bool allowed =
-        name == action || (action == "drag" && name == "dx") || (action == "click" && name == "at");
+    const bool allowed = name == action || (action == "drag" && name == "dx") ||
+                         (action == "click" && (name == "at" || name == "ctrl"));
     if (!allowed) {
       problems.push_back("\"" + name + "\" does not belong to a " + action + " step");
     }
@@ -171,6 +171,9 @@ std::vector<std::string> step_problems(const json& step) {
       if (!is_slider_key(arg)) {
         problems.push_back("click with \"at\" needs a slider key (" + keys + "), not " +
                            arg.dump());
+      }
+      if (step.contains("ctrl") && !step["ctrl"].is_boolean()) {
+        problems.push_back("\"ctrl\" must be true or false, not " + step["ctrl"].dump());
       }
       if (!step["at"].is_number() || step["at"].get<double>() < 0.0 ||
           step["at"].get<double>() > 1.0) {
@@ -553,6 +556,11 @@ bool InputPlayer::start_step(std::size_t index, ImGuiIO& io, Explorer& explorer)
     const float x = place->min.x + step["at"].get<float>() * (place->max.x - place->min.x - 1.0f);
     const ImVec2 at(x, 0.5f * (place->min.y + place->max.y));
     press(at, at, 0);
+    // Ctrl+click opens the slider's text field, where a value is typed with its unit.
+    const bool ctrl = step.value("ctrl", false);
+    for (FrameInput& input : queue_) {
+      input.ctrl = ctrl;
+    }
   } else if (step.contains("click")) {
     const std::string label = step["click"].get<std::string>();
     const std::optional<ImVec2> at = find_label(label);

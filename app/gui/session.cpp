@@ -84,6 +84,7 @@ std::optional<Session> session_from_text(const std::string& text, const std::str
     s.ui_scale_percent = view.value("ui_scale_percent", s.ui_scale_percent);
     s.light_theme = view.value("light_theme", s.light_theme);
     s.automatic_layout = view.value("automatic_layout", s.automatic_layout);
+    s.expert_mode = view.value("expert", s.expert_mode);
     return s;
   } catch (const std::exception& e) {
     error = "the saved session " + origin + " could not be read (" + e.what() +
@@ -111,7 +112,8 @@ void save_session(const std::filesystem::path& path, const Session& session) {
         {"ground", session.ground},
         {"ui_scale_percent", session.ui_scale_percent},
         {"light_theme", session.light_theme},
-        {"automatic_layout", session.automatic_layout}}},
+        {"automatic_layout", session.automatic_layout},
+        {"expert", session.expert_mode}}},
   };
   write_file_atomically(path, j.dump(2) + "\n");
 }

@@ -38,6 +38,7 @@ struct Session {
   bool light_theme = false;
   // False once the user moved or resized a panel: imgui.ini then holds their arrangement.
   bool automatic_layout = true;
+  bool expert_mode = false;  // beginner (false): the cloth's inputs only
   // What was changed while loading (a grid resolution brought into the slider's range), to show.
   std::vector<std::string> notices;
 };

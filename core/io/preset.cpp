@@ -231,8 +231,8 @@ Preset preset_from_json(const json& j, const std::string& origin) {
   Reader r(origin, problems);
   Preset preset;
   if (!r.object(j, "",
-                {"foldlab_preset", "name", "description", "source", "fabric", "hanging", "model",
-                 "shape", "published", "calibration"})) {
+                {"foldlab_preset", "name", "description", "source", "derived_from", "fabric",
+                 "hanging", "model", "shape", "published", "calibration"})) {
     throw PresetError(join_lines(problems));
   }
   if (!j.contains("foldlab_preset")) {
@@ -247,6 +247,7 @@ Preset preset_from_json(const json& j, const std::string& origin) {
   r.text(j, "", "name", preset.name, true);
   r.text(j, "", "description", preset.description, false);
   r.text(j, "", "source", preset.source, false);
+  r.text(j, "", "derived_from", preset.derived_from, false);
 
   Parameters& p = preset.parameters;
   for (const char* section : {"fabric", "hanging", "model", "shape"}) {
@@ -326,6 +327,9 @@ json preset_to_json(const Preset& preset) {
       {"description", preset.description},
       {"source", preset.source},
   };
+  if (!preset.derived_from.empty()) {
+    j["derived_from"] = preset.derived_from;
+  }
   for (const InputSpec& spec : input_table()) {
     if (spec.preset.empty()) {
       continue;

@@ -42,6 +42,8 @@ struct Preset {
   std::string name;
   std::string description;
   std::string source;  // where the numbers come from
+  // The name of the preset this one was saved from in the explorer; empty for an original.
+  std::string derived_from;
   Parameters parameters;
   PublishedResult published;
   std::optional<CalibrationRecord> calibration;

@@ -2,6 +2,8 @@
 
 #include "core/model/text_format.hpp"
 
+#include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <cmath>
 
@@ -54,7 +56,7 @@ const std::vector<InputSpec>& build_table() {
        .unit = "N/mm²",
        .field = "w_N_per_mm2",
        .preset = "/fabric/weight_N_per_mm2",
-       .help = "weight per area (1.5e-6 N/mm² = 153 g/m²)",
+       .help = "weight per area (1.5e-6 N/mm² = 153 g/m²; 80g/m2, 2.4oz/yd2 are read too)",
        .valid = closed(1e-9, 1e-2),
        .why = "from 0.1 g/m² (the lightest tissue) to 1 t/m²",
        .typical_lo = 1e-7,
@@ -344,6 +346,118 @@ std::optional<double> parse_number(std::string_view text) {
   return value;
 }
 
+std::vector<InputUnit> input_units(const InputSpec& spec) {
+  const InputUnit own{spec.unit, 1.0, spec.format};
+  if (spec.unit == "N/mm²") {
+    return {own,
+            {"g/m²", kNPerMm2PerGramPerM2, "%.3g"},
+            {"oz/yd²", kGramPerM2PerOuncePerYd2 * kNPerMm2PerGramPerM2, "%.3g"}};
+  }
+  if (spec.unit == "mm") {
+    return {own, {"cm", 10.0, "%.4g"}, {"m", 1000.0, "%.4g"}};
+  }
+  if (spec.unit == "MPa") {
+    return {own, {"GPa", 1000.0, "%.4g"}};
+  }
+  if (spec.unit.empty()) {
+    return {};
+  }
+  return {own};
+}
+
+InputUnit shown_unit(const InputSpec& spec) {
+  const std::vector<InputUnit> units = input_units(spec);
+  if (units.empty()) {
+    return {{}, 1.0, spec.format};
+  }
+  return spec.key == "w" ? units[1] : units[0];
+}
+
+namespace {
+
+// A unit as typed, for comparison: no spaces, lower case, ² as 2, so that "G/M²" and "g / m2"
+// are one unit.
+std::string unit_key(std::string_view text) {
+  std::string out;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const char c = text[i];
+    if (text.substr(i).starts_with("²")) {
+      out += '2';
+      i += std::string_view("²").size() - 1;
+    } else if (c != ' ' && c != '\t') {
+      out += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+std::optional<double> parse_quantity(const InputSpec& spec, std::string_view text,
+                                     std::string_view bare_unit) {
+  double number = 0.0;
+  const char* end = text.data() + text.size();
+  const auto [rest, ec] = std::from_chars(text.data(), end, number);
+  if (text.empty() || ec != std::errc() || !std::isfinite(number)) {
+    return std::nullopt;
+  }
+  // A number alone must be the whole text, as for parse_number; before a unit, spaces may stand.
+  const std::string typed = unit_key(std::string_view(rest, static_cast<std::size_t>(end - rest)));
+  if (typed.empty() && rest != end) {
+    return std::nullopt;
+  }
+  const std::vector<InputUnit> units = input_units(spec);
+  const std::string bare = unit_key(bare_unit);
+  for (const InputUnit& unit : units) {
+    const std::string key = unit_key(unit.symbol);
+    const bool named = typed == key || (unit.symbol == "g/m²" && typed == "gsm");
+    if (named || (typed.empty() && (bare.empty() ? &unit == &units.front() : bare == key))) {
+      return number * unit.per_unit;
+    }
+  }
+  if (typed.empty() && units.empty()) {
+    return number;
+  }
+  return std::nullopt;
+}
+
+InputInterval slider_interval(const InputSpec& spec, const Parameters& p) {
+  const InputInterval typical = closed(spec.typical_lo, spec.typical_hi);
+  const std::optional<double> current = spec.value(p);
+  if (!current || spec.kind == InputKind::choice) {
+    return typical;
+  }
+  const std::size_t allowed = validate(p).size();
+  const auto accepted = [&](double v) {
+    Parameters trial = p;
+    return set_numeric_setting(trial, spec.key, v) && validate(trial).size() <= allowed;
+  };
+  if (!accepted(*current)) {
+    return typical;
+  }
+  const bool log = spec.scale == InputScale::logarithmic && spec.typical_lo > 0.0;
+  const double start = std::clamp(*current, spec.typical_lo, spec.typical_hi);
+  // Between an accepted and a refused value, the accepted one next to the boundary.
+  const auto boundary = [&](double good, double bad) {
+    for (int i = 0; i < 200 && good != bad; ++i) {
+      const double mid = log ? std::sqrt(good * bad) : 0.5 * (good + bad);
+      if (mid == good || mid == bad) {
+        break;
+      }
+      (accepted(mid) ? good : bad) = mid;
+    }
+    return good;
+  };
+  InputInterval out = typical;
+  if (!accepted(out.lo) && accepted(start)) {
+    out.lo = boundary(start, out.lo);
+  }
+  if (!accepted(out.hi) && accepted(start)) {
+    out.hi = boundary(start, out.hi);
+  }
+  return out;
+}
+
 bool set_numeric_setting(Parameters& p, std::string_view key, double value) {
   const InputSpec* spec = find_input(key);
   if (spec != nullptr && spec->kind == InputKind::number) {
@@ -382,7 +496,8 @@ std::optional<std::string> apply_setting(Parameters& p, std::string_view key,
     return std::string(key) + " = '" + detail::cut(value) +
            "' is not one of: " + std::string(spec->choices);
   }
-  const std::optional<double> number = parse_number(value);
+  const std::optional<double> number =
+      spec->kind == InputKind::whole_number ? parse_number(value) : parse_quantity(*spec, value);
   if (!number) {
     double ignored = 0.0;
     const auto [ptr, ec] = std::from_chars(value.data(), value.data() + value.size(), ignored);
@@ -390,7 +505,12 @@ std::optional<std::string> apply_setting(Parameters& p, std::string_view key,
       return std::string(key) + " = '" + detail::cut(value) +
              "' is beyond the range of a double (magnitudes 2.2e-308 to 1.8e308)";
     }
-    return std::string(key) + " = '" + detail::cut(value) + "' is not a number";
+    std::vector<std::string_view> units;
+    for (const InputUnit& unit : input_units(*spec)) {
+      units.push_back(unit.symbol);
+    }
+    return std::string(key) + " = '" + detail::cut(value) + "' is not a number" +
+           (units.size() > 1 ? " (with an optional unit: " + detail::join(units, ", ") + ")" : "");
   }
   switch (spec->kind) {
     case InputKind::stiffness_K:

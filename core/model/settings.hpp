@@ -91,4 +91,37 @@ std::vector<std::string> apply_assignments(Parameters& p,
 // Strict number parsing: the whole text must be one finite decimal number.
 std::optional<double> parse_number(std::string_view text);
 
+// The weight of 1 g/m² in N/mm², at the g = 9.81 m/s² the presets and their tables were made
+// with: every conversion between g/m² and N/mm² uses this one number.
+inline constexpr double kNPerMm2PerGramPerM2 = 9.81e-9;
+// 1 oz/yd² in g/m²: 28.349523125 g (avoirdupois ounce) over 0.83612736 m² (square yard).
+inline constexpr double kGramPerM2PerOuncePerYd2 = 28.349523125 / 0.83612736;
+
+// A unit a value may be typed in: `symbol` as shown, `per_unit` the stored value of one of it
+// (1 g/m² is 9.81e-9 N/mm²), `format` how a value in it is shown.
+struct InputUnit {
+  std::string_view symbol{};
+  double per_unit = 1.0;
+  std::string_view format{};
+};
+
+// The units a value of `spec` may be typed in, its own unit first (w: N/mm², g/m², oz/yd²;
+// lengths: mm, cm, m); empty when it has none.
+std::vector<InputUnit> input_units(const InputSpec& spec);
+// The unit the explorer shows and takes `spec` in: g/m² for w, else the row's own unit.
+InputUnit shown_unit(const InputSpec& spec);
+
+// "80 g/m2", "80 g/m²", "80gsm", "2.4 oz/yd2", "1.5e-6 N/mm2": a number, optionally followed by
+// one of input_units(spec) (spaces, case and ² vs 2 do not matter), as the value in the stored
+// unit. A bare number is in `bare_unit` (a symbol from input_units, or empty for the stored
+// unit). nullopt when the number or the unit cannot be read.
+std::optional<double> parse_quantity(const InputSpec& spec, std::string_view text,
+                                     std::string_view bare_unit = {});
+
+// The part of the slider's range (the typical range) that validate() accepts with the other
+// inputs of `p` as they are: d stops below L/2, L above 2d. Found by bisection against
+// validate(), so that it follows whatever validation checks. The typical range itself when the
+// value in `p` is refused (then nothing is known about where validity lies).
+InputInterval slider_interval(const InputSpec& spec, const Parameters& p);
+
 }  // namespace foldlab

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <map>
 #include <string>
 #include <vector>
@@ -17,9 +18,7 @@
 namespace foldlab::gui {
 namespace {
 
-constexpr double kGramsPerSquareMetrePerNPerMm2 = 1.0 / 9.81e-9;  // w in N/mm² -> g/m²
-
-// The model settings a user may change here; the rest stay with presets and --set.
+// The model settings an expert may change here; the rest stay with presets and --set.
 constexpr const char* kChoiceKeys[] = {"method", "span_rule", "int_rounding"};
 
 std::string slider_label(const InputSpec& spec) {
@@ -36,93 +35,51 @@ bool refused(const Document& document, const InputSpec& spec) {
   return false;
 }
 
+bool logarithmic(const InputSpec& spec, const InputInterval& range) {
+  return spec.scale == InputScale::logarithmic && range.lo > 0.0;
+}
+
 // Where a value sits on its slider, 0 at the left end and 1 at the right: on the exponent for a
 // log row, so that every decade gets the same width.
-double slider_fraction(const InputSpec& spec, double value) {
-  if (spec.scale == InputScale::logarithmic) {
-    return (std::log10(value) - std::log10(spec.typical_lo)) /
-           (std::log10(spec.typical_hi) - std::log10(spec.typical_lo));
+double slider_fraction(const InputSpec& spec, const InputInterval& range, double value) {
+  if (logarithmic(spec, range)) {
+    return (std::log10(value) - std::log10(range.lo)) /
+           (std::log10(range.hi) - std::log10(range.lo));
   }
-  return (value - spec.typical_lo) / (spec.typical_hi - spec.typical_lo);
+  return (value - range.lo) / (range.hi - range.lo);
 }
 
-double slider_value(const InputSpec& spec, double fraction) {
-  if (spec.scale == InputScale::logarithmic) {
-    return std::pow(10.0, std::log10(spec.typical_lo) + fraction * (std::log10(spec.typical_hi) -
-                                                                    std::log10(spec.typical_lo)));
-  }
-  return spec.typical_lo + fraction * (spec.typical_hi - spec.typical_lo);
+double slider_value(const InputSpec& spec, const InputInterval& range, double fraction) {
+  const double value =
+      logarithmic(spec, range)
+          ? std::pow(10.0, std::log10(range.lo) +
+                               fraction * (std::log10(range.hi) - std::log10(range.lo)))
+          : range.lo + fraction * (range.hi - range.lo);
+  return std::clamp(value, range.lo, range.hi);  // pow and rounding may step past an end
 }
 
-// A slider for one row of the input table. It moves over [0, 1] and shows the value: ImGui's own
-// logarithmic slider treats values below the format's precision as zero, which put all of w's
-// range in its dead zone. Typed values (Ctrl+click) are neither mapped nor clamped, so that
-// validation rather than the widget decides.
-void input_slider(Document& document, const InputSpec& spec, float width,
-                  std::map<std::string, SliderPlace, std::less<>>& places) {
-  double value = spec.value(document.edited()).value_or(0.0);
-  const std::string format =
-      std::string(spec.format) + (spec.unit.empty() ? "" : " " + std::string(spec.unit));
-  const std::string label = slider_label(spec);
-  // A refused value reddens its slider; the reason goes to the foot of the panel, so that no
-  // line appears between the sliders and moves the one under the mouse.
-  const bool is_refused = refused(document, spec);
-  if (is_refused) {
-    ImGui::PushStyleColor(ImGuiCol_FrameBg, ImVec4(0.55f, 0.12f, 0.10f, 1.0f));
+// A value in the unit the slider shows, with the unit: "153 g/m²", "0.25 mm". Large numbers are
+// written out rather than as 1.23e+03.
+std::string shown_text(const InputSpec& spec, double value) {
+  const InputUnit unit = shown_unit(spec);
+  const double in_unit = value / unit.per_unit;
+  std::string text = detail::printf_string(std::string(unit.format).c_str(), in_unit);
+  if (text.find("e+") != std::string::npos) {
+    text = detail::printf_string("%.0f", in_unit);
   }
-  ImGui::SetNextItemWidth(width);
-  bool changed = false;
-  if (ImGui::TempInputIsActive(ImGui::GetID(label.c_str()))) {
-    changed = ImGui::SliderScalar(label.c_str(), ImGuiDataType_Double, &value, &spec.typical_lo,
-                                  &spec.typical_hi, format.c_str());
-  } else {
-    // The shown text doubles as the text field's first contents on Ctrl+click, which parses
-    // back to the value.
-    std::string shown = detail::printf_string(format.c_str(), value);
-    for (std::size_t at = shown.find('%'); at != std::string::npos; at = shown.find('%', at + 2)) {
-      shown.insert(at, 1, '%');
-    }
-    // A typed value off the slider's scale (w <= 0) pins the handle to the left end.
-    const double on_scale = slider_fraction(spec, value);
-    const double fraction = std::isnan(on_scale) ? 0.0 : std::clamp(on_scale, 0.0, 1.0);
-    double position = fraction;
-    constexpr double kZero = 0.0;
-    constexpr double kOne = 1.0;
-    if (ImGui::SliderScalar(label.c_str(), ImGuiDataType_Double, &position, &kZero, &kOne,
-                            shown.c_str(), ImGuiSliderFlags_AlwaysClamp)) {
-      value = slider_value(spec, position);
-      changed = true;
-    } else if (ImGui::IsItemFocused() && !ImGui::IsItemActive()) {
-      // Arrow keys nudge a focused slider by 1 % of its width (Shift: 10 %).
-      const double step = ImGui::GetIO().KeyShift ? 0.1 : 0.01;
-      const int left = ImGui::GetKeyIndex(ImGuiKey_LeftArrow);
-      const int right = ImGui::GetKeyIndex(ImGuiKey_RightArrow);
-      const double nudge = (left >= 0 && ImGui::IsKeyPressed(left))     ? -step
-                           : (right >= 0 && ImGui::IsKeyPressed(right)) ? step
-                                                                        : 0.0;
-      if (nudge != 0.0) {
-        value = slider_value(spec, std::clamp(fraction + nudge, 0.0, 1.0));
-        changed = true;
-      }
-    }
-    // The item's rectangle includes its label; the slider's own frame is `width` wide.
-    const ImVec2 min = ImGui::GetItemRectMin();
-    places[std::string(spec.key)] =
-        SliderPlace{min, ImVec2(min.x + width, min.y + ImGui::GetFrameHeight()), fraction};
-  }
-  if (changed) {
-    set_numeric_setting(document.edited(), spec.key, value);
-    document.commit();
-  }
-  if (is_refused) {
-    ImGui::PopStyleColor();
-  }
-  help_marker(std::string(spec.help).c_str());
+  return unit.symbol.empty() ? text : text + " " + std::string(unit.symbol);
 }
 
-void choice_combo(Document& document, const InputSpec& spec) {
+std::string trimmed(const char* text) {
+  std::string out(text);
+  out.erase(0, out.find_first_not_of(" \t"));
+  out.erase(out.find_last_not_of(" \t") + 1);
+  return out;
+}
+
+void choice_combo(Document& document, const InputSpec& spec, float width) {
   const std::string current(spec.choice(document.edited()));
-  ImGui::SetNextItemWidth(ems(9.0f));
+  ImGui::SetNextItemWidth(width);
   if (ImGui::BeginCombo(std::string(spec.name).c_str(), current.c_str())) {
     std::string_view rest = spec.choices;
     while (!rest.empty()) {
@@ -144,6 +101,106 @@ void choice_combo(Document& document, const InputSpec& spec) {
 
 }  // namespace
 
+void set_printed_eq7(Parameters& p) {
+  p.model.method = Method::paper;
+  p.model.stress_exponent_p = 1.0;
+  set_stiffness_constant_K(
+      p, kCalibratedLoadConstantC / (1.0 - kDefaultPoissonRatio * kDefaultPoissonRatio));
+}
+
+bool is_printed_eq7(const Parameters& p) {
+  Parameters printed = p;
+  set_printed_eq7(printed);
+  return printed.model == p.model;
+}
+
+// A slider for one row of the input table. It moves over [0, 1] of the part of the row's typical
+// range that validation accepts with the other inputs, and shows the value in the row's shown
+// unit (w in g/m²): ImGui's own logarithmic slider treats values below the format's precision as
+// zero, which put all of w's range in its dead zone. Typed values (Ctrl+click) are read with a
+// unit, neither mapped nor clamped, so that validation rather than the widget decides.
+void ParametersPanel::input_slider(Document& document, const InputSpec& spec, float width) {
+  double value = spec.value(document.edited()).value_or(0.0);
+  const std::string label = slider_label(spec);
+  // A refused value reddens its slider; the reason goes to the foot of the panel, so that no
+  // line appears between the sliders and moves the one under the mouse.
+  const bool is_refused = refused(document, spec);
+  if (is_refused) {
+    ImGui::PushStyleColor(ImGuiCol_FrameBg, ImVec4(0.55f, 0.12f, 0.10f, 1.0f));
+  }
+  ImGui::SetNextItemWidth(width);
+  bool changed = false;
+  const ImGuiID id = ImGui::GetID(label.c_str());
+  if (ImGui::TempInputIsActive(id)) {
+    // ImGui opened its text field over the slider on the Ctrl+click, with the shown text; this
+    // field, under the same id, carries on editing it without the digits-only filter, so that a
+    // unit can be typed.
+    if (typing_id_ != id) {
+      typing_id_ = id;
+      typing_initial_ = shown_text(spec, value);
+      typing_value_ = value;
+      std::snprintf(typed_, sizeof typed_, "%s", typing_initial_.c_str());
+    }
+    if (ImGui::InputText(label.c_str(), typed_, sizeof typed_, ImGuiInputTextFlags_AutoSelectAll)) {
+      const std::string text = trimmed(typed_);
+      if (text == typing_initial_) {
+        value = typing_value_;
+        changed = true;
+      } else if (const std::optional<double> typed =
+                     parse_quantity(spec, text, shown_unit(spec).symbol)) {
+        value = *typed;
+        changed = true;
+      }
+    }
+  } else {
+    if (typing_id_ == id) {
+      typing_id_ = 0;
+    }
+    const InputInterval range = slider_interval(spec, document.edited());
+    // The shown text doubles as the text field's first contents on Ctrl+click, which parses
+    // back to the value with its unit.
+    std::string shown = shown_text(spec, value);
+    for (std::size_t at = shown.find('%'); at != std::string::npos; at = shown.find('%', at + 2)) {
+      shown.insert(at, 1, '%');
+    }
+    // A typed value off the slider's scale (w <= 0) pins the handle to the left end.
+    const double on_scale = slider_fraction(spec, range, value);
+    const double fraction = std::isnan(on_scale) ? 0.0 : std::clamp(on_scale, 0.0, 1.0);
+    double position = fraction;
+    constexpr double kZero = 0.0;
+    constexpr double kOne = 1.0;
+    if (ImGui::SliderScalar(label.c_str(), ImGuiDataType_Double, &position, &kZero, &kOne,
+                            shown.c_str(), ImGuiSliderFlags_AlwaysClamp)) {
+      value = slider_value(spec, range, position);
+      changed = true;
+    } else if (ImGui::IsItemFocused() && !ImGui::IsItemActive()) {
+      // Arrow keys nudge a focused slider by 1 % of its width (Shift: 10 %).
+      const double step = ImGui::GetIO().KeyShift ? 0.1 : 0.01;
+      const int left = ImGui::GetKeyIndex(ImGuiKey_LeftArrow);
+      const int right = ImGui::GetKeyIndex(ImGuiKey_RightArrow);
+      const double nudge = (left >= 0 && ImGui::IsKeyPressed(left))     ? -step
+                           : (right >= 0 && ImGui::IsKeyPressed(right)) ? step
+                                                                        : 0.0;
+      if (nudge != 0.0) {
+        value = slider_value(spec, range, std::clamp(fraction + nudge, 0.0, 1.0));
+        changed = true;
+      }
+    }
+    // The item's rectangle includes its label; the slider's own frame is `width` wide.
+    const ImVec2 min = ImGui::GetItemRectMin();
+    places_[std::string(spec.key)] =
+        SliderPlace{min, ImVec2(min.x + width, min.y + ImGui::GetFrameHeight()), fraction};
+  }
+  if (changed) {
+    set_numeric_setting(document.edited(), spec.key, value);
+    document.commit();
+  }
+  if (is_refused) {
+    ImGui::PopStyleColor();
+  }
+  help_marker(std::string(spec.help).c_str());
+}
+
 void ParametersPanel::draw(Document& document, Renderer& renderer) {
   const bool unsaved = document.unsaved();
   const std::string title = std::string("Parameters") + (unsaved ? " *" : "") + "###parameters";
@@ -156,14 +213,36 @@ void ParametersPanel::draw(Document& document, Renderer& renderer) {
   if (ImGui::Button("Reset to preset")) {
     document.reset_to_loaded();
   }
-  hint_after("Ctrl+click a slider to type a value");
+  ImGui::SameLine();
+  if (ImGui::Checkbox(kExpertLabel, &document.expert_mode)) {
+    document.session_dirty = true;
+  }
+  help_marker(
+      "Beginners see the cloth (t, E, w, h, L, d) and its shape; experts also the model's "
+      "settings (method, K, nu, p, Int[], span rule) and the 3D grid.");
+  // The paper's own model stays one click away whatever is shown.
+  const bool printed = is_printed_eq7(document.edited());
+  ImGui::BeginDisabled(printed);
+  if (ImGui::Button(kPrintedEq7Label)) {
+    set_printed_eq7(document.edited());
+    document.commit();
+  }
+  ImGui::EndDisabled();
+  help_marker(
+      "The paper's method and eq. 7 as printed: p = 1, K = c/(1 - nu²) = 29.56 (c = 26.9 at "
+      "nu = 0.3).");
+  hint_after(printed ? "in use" : "Ctrl+click a slider to type");
   ImGui::Separator();
 
   // Sliders leave room on their right for the longest label and its (?) marker.
   std::vector<const InputSpec*> sliders;
-  float label_width = 0.0f;
+  float label_width = ImGui::CalcTextSize("span rule").x;
   for (const std::string& key : sweepable_keys()) {
     const InputSpec* spec = find_input(key);
+    if (spec->expert && !document.expert_mode) {
+      places_.erase(key);  // playback must not press what is no longer there
+      continue;
+    }
     sliders.push_back(spec);
     label_width = std::max(label_width, ImGui::CalcTextSize(slider_label(*spec).c_str()).x);
   }
@@ -172,29 +251,52 @@ void ParametersPanel::draw(Document& document, Renderer& renderer) {
       ems(6.0f), ImGui::GetContentRegionAvail().x - label_width - ImGui::CalcTextSize(" (?)").x -
                      2.0f * style.ItemInnerSpacing.x - style.ItemSpacing.x);
   for (const InputSpec* spec : sliders) {
-    input_slider(document, *spec, width, places_);
+    input_slider(document, *spec, width);
     if (spec->key == "w") {
-      ImGui::TextColored(
-          kDimText, "    w = %.0f g/m²",
-          document.edited().fabric.weight_N_per_mm2 * kGramsPerSquareMetrePerNPerMm2);
+      const double w = document.edited().fabric.weight_N_per_mm2;
+      ImGui::TextColored(kDimText, "    = %.3g oz/yd² = %.4g N/mm²",
+                         w / input_units(*spec)[2].per_unit, w);
     }
   }
-  ImGui::TextColored(kDimText, "    c = %.4g (load-condition constant)",
-                     document.edited().model.load_constant_c);
+  if (document.expert_mode) {
+    ImGui::TextColored(kDimText, "    c = %.4g (load-condition constant)",
+                       document.edited().model.load_constant_c);
+    input_slider(document, *find_input("p"), width);
+  } else {
+    places_.erase("p");
+  }
 
   ImGui::Separator();
-  for (const char* key : kChoiceKeys) {
-    choice_combo(document, *find_input(key));
+  const InputSpec& shape = *find_input("shape");
+  choice_combo(document, shape, width);
+  if (document.edited().shape.kind == ShapeKind::strip) {
+    const InputSpec& supports = *find_input("supports");
+    int count = document.edited().shape.supports;
+    ImGui::SetNextItemWidth(width);
+    if (ImGui::SliderInt("supports", &count, static_cast<int>(supports.typical_lo),
+                         static_cast<int>(supports.typical_hi), "%d",
+                         ImGuiSliderFlags_AlwaysClamp)) {
+      document.edited().shape.supports = count;
+      document.commit();
+    }
+    help_marker(std::string(supports.help).c_str());
+  } else if (document.edited().shape.kind == ShapeKind::inclined) {
+    input_slider(document, *find_input("incline_deg"), width);
   }
-  Scene& scene = document.scene();
-  int grid = scene.grid_nx();
-  ImGui::SetNextItemWidth(width);
-  if (ImGui::SliderInt("grid", &grid, 8, 512, "%d per side", ImGuiSliderFlags_AlwaysClamp)) {
-    scene.set_grid_resolution(grid, grid);
-    document.session_dirty = true;
+  if (document.expert_mode) {
+    for (const char* key : kChoiceKeys) {
+      choice_combo(document, *find_input(key), width);
+    }
+    Scene& scene = document.scene();
+    int grid = scene.grid_nx();
+    ImGui::SetNextItemWidth(width);
+    if (ImGui::SliderInt("grid", &grid, 8, 512, "%d per side", ImGuiSliderFlags_AlwaysClamp)) {
+      scene.set_grid_resolution(grid, grid);
+      document.session_dirty = true;
+    }
+    help_marker(
+        "Resolution of the 3D cloth mesh (vertices per side). Changing it does not re-solve.");
   }
-  help_marker(
-      "Resolution of the 3D cloth mesh (vertices per side). Changing it does not re-solve.");
   if (!document.issues().empty()) {
     ImGui::Separator();
     ImGui::PushStyleColor(ImGuiCol_Text, kErrorText);

@@ -1,6 +1,7 @@
 // The Parameters panel: one slider per input of the cloth, its hanging and eq. 7's K, each with
-// the range, scale, format, unit and help of its row in the input table; the model's choices;
-// the 3D grid's resolution. Edits go into the document and are committed as they happen.
+// the scale, format, unit and help of its row in the input table and a range that stops where
+// validation would refuse; the shape; for experts also the model's choices and the 3D grid.
+// Edits go into the document and are committed as they happen.
 #pragma once
 
 #include <functional>
@@ -11,6 +12,7 @@
 
 #include "app/gui/document.hpp"
 #include "app/gui/renderer.hpp"
+#include "core/model/settings.hpp"
 
 namespace foldlab::gui {
 
@@ -28,8 +30,25 @@ class ParametersPanel {
   // By input key; a slider hidden last frame keeps its older place.
   const std::map<std::string, SliderPlace, std::less<>>& slider_places() const { return places_; }
 
+  static constexpr const char* kExpertLabel = "Expert settings";
+  static constexpr const char* kPrintedEq7Label = "Conci's eq. 7 as printed";
+
  private:
+  void input_slider(Document& document, const InputSpec& spec, float width);
+
   std::map<std::string, SliderPlace, std::less<>> places_;
+  // What is typed into a slider's text field (Ctrl+click), read with its unit on every change;
+  // the field's first text and the value it stood for, so that leaving that text (or Escape)
+  // keeps the exact value rather than its rounded display.
+  char typed_[64] = {};
+  ImGuiID typing_id_ = 0;
+  std::string typing_initial_;
+  double typing_value_ = 0.0;
 };
+
+// Sets the paper's form of eq. 7: the paper method, p = 1 and K = 29.56 (c = 26.9 at nu = 0.3)
+// at the Poisson ratio in force.
+void set_printed_eq7(Parameters& p);
+bool is_printed_eq7(const Parameters& p);
 
 }  // namespace foldlab::gui

@@ -53,12 +53,18 @@ void PresetsPanel::refresh() {
       files.resize(kMaxListedPresets);
     }
     for (const auto& file : files) {
-      Entry entry{file.stem().string(), file, user};
+      Entry entry{file.stem().string(), {}, file, user};
       if (oversized_file(file, kMaxListedPresetBytes)) {
         entry.name = file.filename().string() + " (too large to read)";
       } else {
         try {
-          entry.name = load_preset(file).name;
+          const Preset preset = load_preset(file);
+          entry.name = preset.name;
+          entry.description = preset.description;
+          if (!preset.derived_from.empty()) {
+            entry.description += (entry.description.empty() ? "" : "\n") +
+                                 std::string("Derived from \"") + preset.derived_from + "\".";
+          }
         } catch (const PresetError&) {
           entry.name = file.filename().string() + " (unreadable)";
         }
@@ -111,7 +117,11 @@ void PresetsPanel::write(Document& document, const std::string& name,
   preset.name = name;
   preset.parameters = document.scene().parameters();
   if (loaded.name != name) {
-    preset.description = "Saved from FoldLab, based on \"" + loaded.name + "\".";
+    // The source preset's description and sources describe its fabric, not this one: the new
+    // preset names where it came from instead, and that preset's file keeps its sources.
+    preset.derived_from = loaded.name;
+    preset.description = "Saved from FoldLab with edited inputs.";
+    preset.source = {};
     preset.published = {};  // published results belong to the paper's case, not to an edit
   }
   try {
@@ -200,7 +210,13 @@ void PresetsPanel::draw(Document& document, Renderer& renderer,
                                [path = entry.path](Document& d) { d.load_preset_file(path); });
       }
       if (ImGui::IsItemHovered()) {
-        ImGui::SetTooltip("%s", entry.path.string().c_str());
+        ImGui::BeginTooltip();
+        ImGui::PushTextWrapPos(ImGui::GetFontSize() * 32.0f);
+        ImGui::TextUnformatted(entry.description.empty() ? "(no description)"
+                                                         : entry.description.c_str());
+        ImGui::PopTextWrapPos();
+        ImGui::TextColored(kDimText, "%s", entry.path.string().c_str());
+        ImGui::EndTooltip();
       }
     }
   }

@@ -31,6 +31,7 @@ class PresetsPanel {
 
   struct Entry {
     std::string name;
+    std::string description;  // shown on hover, with the preset it was derived from
     std::filesystem::path path;
     bool user = false;
   };
