@@ -1,6 +1,7 @@
 #include "app/gui/panels/results_panel.hpp"
 
 #include <algorithm>
+#include <optional>
 #include <string>
 
 #include <imgui.h>
@@ -31,6 +32,14 @@ void ResultsPanel::draw(Document& document, Renderer& renderer) {
     return;
   }
   stale_mark(document);
+  // The reason for a refusal is also given at the foot of the Parameters panel, which a small
+  // window or the expert settings may scroll out of view; here it is always at the top.
+  if (const std::optional<std::string> refusal = document.refusal()) {
+    ImGui::PushStyleColor(ImGuiCol_Text, kErrorText);
+    ImGui::TextWrapped("Refused, these results are for the last valid inputs: %s",
+                       refusal->c_str());
+    ImGui::PopStyleColor();
+  }
   Scene& scene = document.scene();
   const Solution& s = scene.solution();
   const StageStats& timing = scene.stats(Stage::solution);
