@@ -367,6 +367,10 @@ TEST_F(DefaultModelCli, SolveWithNoOptionsUsesTheCalibratedModelAndPrintsItsRang
       "7 (" + std::to_string(n[0].get<int>()) + "–" + std::to_string(n[1].get<int>()) + ")";
   EXPECT_TRUE(contains(table.out, n_range)) << n_range << "\n" << table.out;
   EXPECT_TRUE(contains(table.out, "form of eq. 7: calibrated")) << table.out;
+  // The range of Q in the value's own precision: at h = 1400 mm every equally good (K, p) gives
+  // n = 7 and Q = 1.2955, which three figures would print as "1.3–1.3" beside 1.29552.
+  EXPECT_NEAR(j.at("Q_range")[0].get<double>(), 1.2955, 5e-5);
+  EXPECT_TRUE(contains(table.out, "(1.2955–1.2955)")) << table.out;
 }
 
 TEST_F(DefaultModelCli, ThePrintedFormIsOneSetAway) {

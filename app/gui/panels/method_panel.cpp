@@ -119,7 +119,7 @@ void MethodPanel::draw(Document& document) {
     ImGui::SameLine();
     ImGui::TextColored(third, "the staircase");
   }
-  const float height = std::max(110.0f, ImGui::GetContentRegionAvail().y - 4.0f);
+  const float height = std::max(ems(14.0f), ImGui::GetContentRegionAvail().y - 4.0f);
   if (method_ == Method::paper) {
     draw_ratio_plot(height);
   } else {

@@ -74,7 +74,7 @@ void ResultsPanel::draw(Document& document, Renderer& renderer) {
     row("number of wrinkles", "n",
         ranged(fmt("%.0f", s.n), range ? range->n_min : 0, range ? range->n_max : 0, "%.0f"));
     row("amplitude ratio", "Q",
-        ranged(fmt("%.4f", s.Q), range ? range->Q_min : 0, range ? range->Q_max : 0, "%.3g"));
+        ranged(fmt("%.4f", s.Q), range ? range->Q_min : 0, range ? range->Q_max : 0, "%.4f"));
     row("root of eq. 7", "Q7", s.Q7 ? fmt("%.4f", *s.Q7) : std::string("none (s >= 1)"));
     row("stress ratio", "s", fmt("%.4g", s.stress_ratio));
     row("out-of-plane depth", "z_max",
