@@ -956,7 +956,7 @@ TEST_F(ExplorerTest, TheMethodTabShowsTheExactMethodsStaircaseToItsFixedPoint) {
   EXPECT_EQ(shown().model.method, Method::paper);
   EXPECT_NE(text.find("n = 21:"), std::string::npos) << text;
   EXPECT_NE(text.find("= Int[8.18"), std::string::npos) << text;
-  EXPECT_NE(text.find("] = 8 is the next n."), std::string::npos) << text;
+  EXPECT_NE(text.find("] = 8 is the next"), std::string::npos) << text;
   EXPECT_NE(text.find("n 21 ? 8: iterate again."), std::string::npos) << text;
   click("Run to end");
   text = frame();
