@@ -709,3 +709,15 @@ TEST_F(CliTest, PlayingAFolderIsInvalidInputNotAnInternalError) {
   EXPECT_EQ(r.exit_status, 2) << r.err;
   EXPECT_TRUE(contains(r.err, "is a folder")) << r.err;
 }
+
+TEST_F(CliTest, ExportSaysWhenItDrawsOnlyEveryKthFoldLine) {
+  // t = 0.001 mm, E = 0.001 MPa, w = 1e-3 N/mm²: s is tiny and eq. 10 asks for tens of thousands
+  // of folds, above the 1000 lines a drawing holds.
+  const fs::path csv = dir_ / "lines.csv";
+  const RunResult r = run({"export", "--set", "t=0.001", "--set", "E=0.001", "--set", "w=1e-3",
+                           "--samples", "2", "--csv", csv.string()});
+  EXPECT_EQ(r.exit_status, 0) << r.err;
+  EXPECT_TRUE(contains(r.err, "are too many to draw: the CSV and SVG hold one line in")) << r.err;
+  const RunResult few = run({"export", "--csv", csv.string()});
+  EXPECT_FALSE(contains(few.err, "too many to draw")) << few.err;
+}

@@ -143,6 +143,12 @@ Command add_export_command(CLI::App& app) {
         scene.normals();
         write_file_atomically(options->glb_path, mesh_to_glb(scene.grid(), preset.name));
       }
+      if (lines && scene.fold_lines().stride > 1) {
+        // The drawing says so in its corner; the CSV's line numbers show the gaps; say it here too.
+        std::cerr << "foldlab: " << solution.n + 1 << " fold lines are too many to draw: the CSV "
+                  << "and SVG hold one line in " << scene.fold_lines().stride << " (at most "
+                  << kMaxDrawnFoldLines << " lines)\n";
+      }
       if (!options->csv_path.empty()) {
         write_file_atomically(options->csv_path, fold_lines_to_csv(scene.fold_lines()));
       }
