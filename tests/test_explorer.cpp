@@ -522,7 +522,7 @@ TEST_F(ExplorerTest, APresetClickAsksBeforeReplacingUnsavedEditsAndCancelKeepsTh
   click("Cancel");
   EXPECT_EQ(document().modal_title(), "");
   EXPECT_EQ(shown().hanging.support_displacement_mm, 123.0);
-  EXPECT_EQ(document().loaded().name, "Table 1, h = 1400 mm (default)");
+  EXPECT_EQ(document().loaded().name, "Table 1, h = 1400 mm");
   EXPECT_TRUE(document().unsaved());
   EXPECT_EQ(frame().find("Discard"), std::string::npos) << "the dialog is closed";
 }
@@ -536,7 +536,7 @@ TEST_F(ExplorerTest, EscapeClosesTheUnsavedEditsDialogAndKeepsTheEdits) {
   EXPECT_EQ(document().modal_title(), "");
   EXPECT_EQ(frame().find("Discard"), std::string::npos) << "the dialog is closed";
   EXPECT_EQ(shown().hanging.support_displacement_mm, 123.0);
-  EXPECT_EQ(document().loaded().name, "Table 1, h = 1400 mm (default)");
+  EXPECT_EQ(document().loaded().name, "Table 1, h = 1400 mm");
 }
 
 TEST_F(ExplorerTest, DiscardLoadsThePresetClickedAndWithoutEditsNothingIsAsked) {
@@ -562,7 +562,7 @@ TEST_F(ExplorerTest, SaveInTheDialogWritesTheEditsThenLoads) {
   click("Save");
   EXPECT_EQ(document().modal_title(), "Save as");
   click("Save");
-  const fs::path written = dir_ / "user-presets" / "table-1-h-1400-mm-default-edited.json";
+  const fs::path written = dir_ / "user-presets" / "table-1-h-1400-mm-edited.json";
   ASSERT_TRUE(fs::exists(written)) << last_text_;
   EXPECT_EQ(load_preset(written).parameters.hanging.support_displacement_mm, 123.0);
   EXPECT_EQ(document().modal_title(), "");
@@ -629,7 +629,7 @@ TEST_F(ExplorerTest, UndoBringsBackTheEditsAPresetLoadReplaced) {
   click("Discard");
   ASSERT_TRUE(shown() == cotton().parameters);
   press('Z', true);
-  EXPECT_EQ(document().loaded().name, "Table 1, h = 1400 mm (default)");
+  EXPECT_EQ(document().loaded().name, "Table 1, h = 1400 mm");
   EXPECT_EQ(shown().hanging.support_displacement_mm, 123.0);
   EXPECT_EQ(shown().fabric.weight_N_per_mm2, 15e-7);
   press('Y', true);
@@ -668,7 +668,7 @@ TEST_F(ExplorerTest, CtrlSSavesAsThenOverTheUsersPreset) {
   press('S', true);
   EXPECT_EQ(document().modal_title(), "Save as") << "a shipped preset is never overwritten";
   click("Save");
-  const fs::path written = dir_ / "user-presets" / "table-1-h-1400-mm-default-edited.json";
+  const fs::path written = dir_ / "user-presets" / "table-1-h-1400-mm-edited.json";
   ASSERT_TRUE(fs::exists(written));
   EXPECT_EQ(document().message(), "Saved to " + written.string());
   EXPECT_NE(frame().find("Saved to"), std::string::npos) << last_text_;
