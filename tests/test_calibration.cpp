@@ -19,6 +19,7 @@
 #include "core/model/equations.hpp"
 #include "core/model/settings.hpp"
 #include "core/model/solver.hpp"
+#include "json_output.hpp"
 #include "process.hpp"
 #include "temp_dir.hpp"
 
@@ -573,14 +574,7 @@ class CalibrationCli : public testing::TempDirTest {
   json run_json(std::vector<std::string> args) {
     args.insert(args.begin(), "calibrate");
     args.push_back("--json");
-    const testing::RunResult r = run(args);
-    EXPECT_EQ(r.exit_status, 0) << r.err;
-    try {
-      return json::parse(r.out);
-    } catch (const json::exception& e) {
-      ADD_FAILURE() << e.what() << "\n" << r.out;
-      return json();
-    }
+    return testing::json_output(run(args));
   }
 };
 

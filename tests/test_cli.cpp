@@ -19,6 +19,7 @@
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
+#include "json_output.hpp"
 #include "process.hpp"
 #include "temp_dir.hpp"
 
@@ -69,15 +70,7 @@ class CliTest : public foldlab::testing::TempDirTest {
   json solve_json(std::vector<std::string> args) {
     args.insert(args.begin(), "solve");
     args.push_back("--json");
-    const RunResult r = run(args);
-    EXPECT_EQ(r.exit_status, 0) << r.err;
-    json j;
-    try {
-      j = json::parse(r.out);
-    } catch (const json::parse_error& e) {
-      ADD_FAILURE() << "stdout is not JSON: " << e.what() << "\n" << r.out;
-    }
-    return j;
+    return foldlab::testing::json_output(run(args));
   }
 
   // Files in the test's directory, ignoring the capture files.

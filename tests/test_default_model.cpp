@@ -27,6 +27,7 @@
 #include "core/model/solver.hpp"
 #include "core/model/text_format.hpp"
 #include "fold_photo.hpp"
+#include "json_output.hpp"
 #include "process.hpp"
 #include "temp_dir.hpp"
 
@@ -336,14 +337,7 @@ class DefaultModelCli : public testing::TempDirTest {
 
   json run_json(std::vector<std::string> args) {
     args.push_back("--json");
-    const testing::RunResult r = run(args);
-    EXPECT_EQ(r.exit_status, 0) << r.err;
-    try {
-      return json::parse(r.out);
-    } catch (const json::exception& e) {
-      ADD_FAILURE() << e.what() << "\n" << r.out;
-      return json();
-    }
+    return testing::json_output(run(args));
   }
 };
 

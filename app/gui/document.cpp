@@ -134,28 +134,26 @@ void Document::end_step() {
 }
 
 bool Document::undo() {
-  end_step();
-  if (undo_.empty()) {
-    return false;
-  }
-  redo_.push_back(snapshot());
-  Snapshot previous = std::move(undo_.back());
-  undo_.pop_back();
-  restore(previous);
-  notify("Undone.", MessageKind::info);
-  return true;
+  return step_through_history(undo_, redo_, "Undone.");
 }
 
 bool Document::redo() {
+  return step_through_history(redo_, undo_, "Redone.");
+}
+
+// Undo and redo are the same move in opposite directions: the state now goes on one stack and
+// the top of the other comes back.
+bool Document::step_through_history(std::vector<Snapshot>& from, std::vector<Snapshot>& to,
+                                    const char* message) {
   end_step();
-  if (redo_.empty()) {
+  if (from.empty()) {
     return false;
   }
-  undo_.push_back(snapshot());
-  Snapshot next = std::move(redo_.back());
-  redo_.pop_back();
-  restore(next);
-  notify("Redone.", MessageKind::info);
+  to.push_back(snapshot());
+  Snapshot back = std::move(from.back());
+  from.pop_back();
+  restore(back);
+  notify(message, MessageKind::info);
   return true;
 }
 

@@ -116,6 +116,8 @@ class Document {
   Snapshot snapshot() const;
   static bool same(const Snapshot& a, const Snapshot& b);
   void restore(const Snapshot& s);
+  bool step_through_history(std::vector<Snapshot>& from, std::vector<Snapshot>& to,
+                            const char* message);
 
   Preset loaded_;
   std::string loaded_path_;

@@ -117,12 +117,7 @@ Measurement measurement_row(const Parameters& p, const FoldMeasurement& folds,
   Measurement m;
   m.name = std::move(name);
   m.role = MeasurementRole::fit;
-  m.thickness_mm = p.fabric.thickness_mm;
-  m.youngs_modulus_MPa = p.fabric.youngs_modulus_MPa;
-  m.weight_N_per_mm2 = p.fabric.weight_N_per_mm2;
-  m.height_mm = p.hanging.height_mm;
-  m.length_mm = p.hanging.length_mm;
-  m.support_displacement_mm = p.hanging.support_displacement_mm;
+  set_inputs(m, p);
   m.shape = std::string(to_string(p.shape.kind));
   m.observed.n = folds.n;
   m.observed.Q = folds.Q;

@@ -58,16 +58,6 @@ bool is_row_input(std::string_view column) {
                      [&](const InputSpec* spec) { return spec->field == column; });
 }
 
-// The row's inputs put into (and taken from) Parameters, where the input table's accessors reach.
-void set_inputs(Measurement& m, const Parameters& p) {
-  m.thickness_mm = p.fabric.thickness_mm;
-  m.youngs_modulus_MPa = p.fabric.youngs_modulus_MPa;
-  m.weight_N_per_mm2 = p.fabric.weight_N_per_mm2;
-  m.height_mm = p.hanging.height_mm;
-  m.length_mm = p.hanging.length_mm;
-  m.support_displacement_mm = p.hanging.support_displacement_mm;
-}
-
 std::string known_columns() {
   return detail::join(measurement_columns(), ", ");
 }
@@ -335,6 +325,15 @@ std::vector<std::pair<std::string_view, std::string>> csv_cells(const Measuremen
 }
 
 }  // namespace
+
+void set_inputs(Measurement& m, const Parameters& p) {
+  m.thickness_mm = p.fabric.thickness_mm;
+  m.youngs_modulus_MPa = p.fabric.youngs_modulus_MPa;
+  m.weight_N_per_mm2 = p.fabric.weight_N_per_mm2;
+  m.height_mm = p.hanging.height_mm;
+  m.length_mm = p.hanging.length_mm;
+  m.support_displacement_mm = p.hanging.support_displacement_mm;
+}
 
 const std::vector<std::string_view>& measurement_columns() {
   static const std::vector<std::string_view> columns = [] {

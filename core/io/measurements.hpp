@@ -82,6 +82,8 @@ void append_measurement(const std::filesystem::path& path, const Measurement& ro
 
 // `base` with the measured fabric and hanging put in (its model settings and Poisson ratio kept).
 Parameters parameters_for(const Measurement& row, const Parameters& base);
+// The row's inputs taken from p (the fabric and the hanging), the other way round.
+void set_inputs(Measurement& m, const Parameters& p);
 
 std::string_view to_string(MeasurementRole role);
 bool parse_measurement_role(std::string_view s, MeasurementRole& out);

@@ -119,6 +119,16 @@ bool is_printed_eq7(const Parameters& p) {
 // unit (w in g/m²): ImGui's own logarithmic slider treats values below the format's precision as
 // zero, which put all of w's range in its dead zone. Typed values (Ctrl+click) are read with a
 // unit, neither mapped nor clamped, so that validation rather than the widget decides.
+const InputInterval& ParametersPanel::interval(const InputSpec& spec, const Parameters& p) {
+  const auto found = intervals_.find(spec.key);
+  if (found != intervals_.end() && found->second.at == p) {
+    return found->second.range;
+  }
+  CachedInterval& entry = intervals_[std::string(spec.key)];
+  entry = {p, slider_interval(spec, p)};
+  return entry.range;
+}
+
 void ParametersPanel::input_slider(Document& document, const InputSpec& spec, float width) {
   double value = spec.value(document.edited()).value_or(0.0);
   const std::string label = slider_label(spec);
@@ -156,7 +166,7 @@ void ParametersPanel::input_slider(Document& document, const InputSpec& spec, fl
     if (typing_id_ == id) {
       typing_id_ = 0;
     }
-    const InputInterval range = slider_interval(spec, document.edited());
+    const InputInterval range = interval(spec, document.edited());
     // The shown text doubles as the text field's first contents on Ctrl+click, which parses
     // back to the value with its unit.
     std::string shown = shown_text(spec, value);

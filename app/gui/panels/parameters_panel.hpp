@@ -42,6 +42,14 @@ class ParametersPanel {
   // keeps the exact value rather than its rounded display.
   char typed_[64] = {};
   ImGuiID typing_id_ = 0;
+  // Each slider's range for the inputs it was found at: the search runs validation many times, so
+  // it is repeated only when an input changes, not every frame.
+  struct CachedInterval {
+    Parameters at;
+    InputInterval range;
+  };
+  std::map<std::string, CachedInterval, std::less<>> intervals_;
+  const InputInterval& interval(const InputSpec& spec, const Parameters& p);
   std::string typing_initial_;
   double typing_value_ = 0.0;
 };

@@ -31,6 +31,23 @@ using nlohmann::json;
 constexpr double kProvisionalWidthSpans = 1.2;
 constexpr double kProvisionalTopFraction = 0.08;
 
+// The frame the two supports set: origin midway between them, x along their line (unit vector
+// (c, s) in pixels), and their distance, which is the span.
+struct SupportsFrame {
+  double centre_x;
+  double centre_y;
+  double c;
+  double s;
+  double distance_px;
+};
+
+SupportsFrame supports_frame(const PixelPoint& a, const PixelPoint& b) {
+  const double dx = b.x - a.x;
+  const double dy = b.y - a.y;
+  const double distance_px = std::hypot(dx, dy);
+  return {0.5 * (a.x + b.x), 0.5 * (a.y + b.y), dx / distance_px, dy / distance_px, distance_px};
+}
+
 }  // namespace
 
 PhotoOverlay::PhotoOverlay(PhotoPaths paths) : paths_(std::move(paths)) {}
@@ -43,16 +60,12 @@ PhotoOverlay::~PhotoOverlay() {
 
 std::pair<double, double> PhotoOverlay::to_plot(double x_px, double y_px, double span_mm) const {
   if (supports_.size() == 2) {
-    const double dx = supports_[1].x - supports_[0].x;
-    const double dy = supports_[1].y - supports_[0].y;
-    const double distance_px = std::hypot(dx, dy);
-    const double mm_per_px = span_mm / distance_px;
-    const double c = dx / distance_px;
-    const double s = dy / distance_px;
-    const double rx = x_px - 0.5 * (supports_[0].x + supports_[1].x);
-    const double ry = y_px - 0.5 * (supports_[0].y + supports_[1].y);
+    const SupportsFrame f = supports_frame(supports_[0], supports_[1]);
+    const double mm_per_px = span_mm / f.distance_px;
+    const double rx = x_px - f.centre_x;
+    const double ry = y_px - f.centre_y;
     // Rotated by minus the supports' angle: their line becomes the plot's y = 0.
-    return {mm_per_px * (c * rx + s * ry), mm_per_px * (-s * rx + c * ry)};
+    return {mm_per_px * (f.c * rx + f.s * ry), mm_per_px * (-f.s * rx + f.c * ry)};
   }
   const double width = photo_->width_px;
   const double height = photo_->height_px;
@@ -62,14 +75,10 @@ std::pair<double, double> PhotoOverlay::to_plot(double x_px, double y_px, double
 
 std::pair<double, double> PhotoOverlay::to_pixel(double x_mm, double y_mm, double span_mm) const {
   if (supports_.size() == 2) {
-    const double dx = supports_[1].x - supports_[0].x;
-    const double dy = supports_[1].y - supports_[0].y;
-    const double distance_px = std::hypot(dx, dy);
-    const double px_per_mm = distance_px / span_mm;
-    const double c = dx / distance_px;
-    const double s = dy / distance_px;
-    return {0.5 * (supports_[0].x + supports_[1].x) + px_per_mm * (c * x_mm - s * y_mm),
-            0.5 * (supports_[0].y + supports_[1].y) + px_per_mm * (s * x_mm + c * y_mm)};
+    const SupportsFrame f = supports_frame(supports_[0], supports_[1]);
+    const double px_per_mm = f.distance_px / span_mm;
+    return {f.centre_x + px_per_mm * (f.c * x_mm - f.s * y_mm),
+            f.centre_y + px_per_mm * (f.s * x_mm + f.c * y_mm)};
   }
   const double width = photo_->width_px;
   const double height = photo_->height_px;

@@ -147,6 +147,12 @@ void PresetsPanel::draw_dialogs(Document& document) {
     ImGui::OpenPopup(modal.c_str());
   }
   const bool escape = ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape), false);
+  const auto cancel = [&document] {
+    document.set_modal("");
+    ImGui::CloseCurrentPopup();
+    document.cancel_replace();
+    document.notify("Not saved.", MessageKind::warning);
+  };
   if (ImGui::BeginPopupModal(kOverwriteModal, nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
     ImGui::Text("A preset named \"%s\" exists. Replace it?", pending_overwrite_.c_str());
     if (ImGui::Button("Replace")) {
@@ -156,10 +162,7 @@ void PresetsPanel::draw_dialogs(Document& document) {
     }
     ImGui::SameLine();
     if (ImGui::Button("Cancel") || escape) {
-      document.set_modal("");
-      ImGui::CloseCurrentPopup();
-      document.cancel_replace();
-      document.notify("Not saved.", MessageKind::warning);
+      cancel();
     }
     ImGui::EndPopup();
   }
@@ -179,10 +182,7 @@ void PresetsPanel::draw_dialogs(Document& document) {
     }
     ImGui::SameLine();
     if (ImGui::Button("Cancel") || escape) {
-      document.set_modal("");
-      ImGui::CloseCurrentPopup();
-      document.cancel_replace();
-      document.notify("Not saved.", MessageKind::warning);
+      cancel();
     }
     ImGui::EndPopup();
   }
