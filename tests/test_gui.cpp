@@ -1,16 +1,19 @@
 // The explorer as a person sees it: `foldlab render` (EGL, no display) and `foldlab gui` in a real
 // window under Xvfb, checked on the pictures they write.
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <gtest/gtest.h>
 #include <stb_image.h>
 #include <nlohmann/json.hpp>
 
+#include "json_output.hpp"
 #include "process.hpp"
 #include "temp_dir.hpp"
 
@@ -98,6 +101,51 @@ class GuiTest : public foldlab::testing::TempDirTest {
     return load_png(out);
   }
 };
+
+// A fine grid seen small: the view draws rows and columns a few pixels apart, not all 512 a side
+// (core/geometry/level_of_detail.hpp), and the cloth looks as it does with every vertex drawn.
+TEST_F(GuiTest, AFineGridIsDrawnWithCellsOfAFewPixelsAndLooksTheSame) {
+  const auto run = [&](const std::string& name, const std::string& lod) {
+    const fs::path out = dir_ / (name + ".png");
+    const nlohmann::json report = foldlab::testing::json_output(foldlab::testing::run_process(
+        kExecutable,
+        {"render", "--out", out.string(), "--report", "--view", "grid=512", "--view", "lod=" + lod},
+        dir_, environment()));
+    return std::make_pair(load_png(out), report);
+  };
+  const auto [detail, detail_report] = run("detail", "1");
+  const auto [every, every_report] = run("every", "0");
+  EXPECT_EQ(every_report["renderer"]["drawn_columns"], 512);
+  EXPECT_EQ(every_report["renderer"]["drawn_rows"], 512);
+  // The default cloth is about 200 px wide in a 1280 x 800 window.
+  EXPECT_LT(detail_report["renderer"]["drawn_columns"].get<int>(), 80);
+  EXPECT_LT(detail_report["renderer"]["drawn_rows"].get<int>(), 100);
+  EXPECT_GE(detail_report["renderer"]["drawn_rows"].get<int>(), 6 * (1 + 7));  // n = 7 folds
+  const nlohmann::json& cloth = detail_report["layout"]["panels"]["cloth"];
+  ASSERT_TRUE(cloth.is_object());
+  ASSERT_EQ(detail.width, every.width);
+  ASSERT_EQ(detail.height, every.height);
+  double total = 0.0;
+  int far = 0;
+  int pixels = 0;
+  for (int y = cloth["y"].get<int>() + 60; y < cloth["y"].get<int>() + cloth["h"].get<int>(); ++y) {
+    for (int x = cloth["x"].get<int>(); x < cloth["x"].get<int>() + cloth["w"].get<int>(); ++x) {
+      int largest = 0;
+      for (int c = 0; c < 3; ++c) {
+        const int d = std::abs(detail.at(x, y)[c] - every.at(x, y)[c]);
+        total += d;
+        largest = std::max(largest, d);
+      }
+      far += largest > 32;
+      ++pixels;
+    }
+  }
+  ASSERT_GT(pixels, 10000);
+  EXPECT_LT(total / (3.0 * pixels), 0.6);  // mean difference, of 255
+  EXPECT_LT(far, pixels / 1000);
+  // The two pictures are not the same one: the fine grid's is drawn from more triangles.
+  EXPECT_GT(total, 0.0);
+}
 
 TEST_F(GuiTest, RenderDrawsTheWholeWindowWithFoldColoursInThePlot) {
   const Image image = render("default", {"--size", "1280x800"});

@@ -45,12 +45,14 @@ void add_common_gui_options(CLI::App& command, GuiCommandOptions& options) {
   app::add_input_options(command, options.run.inputs);
   command.add_option("--size", options.size, "window or picture size WxH (default 1280x800)");
   command
-      .add_option("--view", options.run.view_settings,
-                  "view setting KEY=VALUE: print=plain|checks|stripes|photo, print_file, "
-                  "print_mm, colour_by=none|z|fold_sign, breeze=0|1, breeze_mm, time (s), z "
-                  "(exaggeration), wireframe, fold_lines, ground, grid (vertices per side, 8-512), "
-                  "full=1 (the 3D view fills the window) (3D view); sweep=table1|table2|fig4 (the "
-                  "paper's case in the Sweep tab); theme=dark|light; scale (UI scale, percent)")
+      .add_option(
+          "--view", options.run.view_settings,
+          "view setting KEY=VALUE: print=plain|checks|stripes|photo, print_file, "
+          "print_mm, colour_by=none|z|fold_sign, breeze=0|1, breeze_mm, time (s), z "
+          "(exaggeration), wireframe, lod=0|1 (0: every grid vertex drawn), fold_lines, ground, "
+          "grid (vertices per side, 8-512), "
+          "full=1 (the 3D view fills the window) (3D view); sweep=table1|table2|fig4 (the "
+          "paper's case in the Sweep tab); theme=dark|light; scale (UI scale, percent)")
       ->type_name("KEY=VALUE");
   command
       .add_option("--print", options.print_path,

@@ -25,7 +25,10 @@ struct FrameSize {
 };
 
 struct ClothStyle {
-  bool wireframe = false;
+  bool wireframe = false;  // shows the grid as it is, every vertex drawn
+  // Draws the grid's rows and columns a few pixels apart on screen rather than every vertex
+  // (core/geometry/level_of_detail.hpp); off draws them all, as the wireframe does.
+  bool level_of_detail = true;
   bool fold_lines = true;
   bool ground = true;
   float z_exaggeration = 1.0f;  // draws z (out of plane) this many times deeper; a view aid only
@@ -57,6 +60,8 @@ struct RenderCounters {
   std::uint64_t frames = 0;           // frames that showed the 3D view
   std::uint64_t view_renders = 0;     // of which the picture was drawn
   std::uint64_t view_cache_hits = 0;  // and the last picture was shown again
+  std::uint64_t drawn_columns = 0;    // the grid's columns and rows the 3D view drew last
+  std::uint64_t drawn_rows = 0;
 };
 
 // Whether the 3D view's picture must be drawn again. On a software GL (llvmpipe) drawing the

@@ -6,6 +6,8 @@
 
 #include <Eigen/Geometry>
 
+#include "core/geometry/level_of_detail.hpp"
+
 namespace foldlab {
 namespace {
 
@@ -172,19 +174,7 @@ DeformedGrid deformed_grid_positions(const Solution& s, const Parameters& p,
         std::max(grid.worst_fibre_error, std::abs(column_length - flat_length) / h);
   }
 
-  grid.triangle_indices.resize(static_cast<std::size_t>(grid.nx - 1) * (grid.ny - 1) * 6);
-  std::uint32_t* index = grid.triangle_indices.data();
-  for (int j = 0; j + 1 < grid.ny; ++j) {
-    for (int i = 0; i + 1 < grid.nx; ++i) {
-      const auto v00 = static_cast<std::uint32_t>(j * grid.nx + i);
-      const auto v10 = v00 + 1;
-      const auto v01 = v00 + static_cast<std::uint32_t>(grid.nx);
-      const auto v11 = v01 + 1;
-      for (std::uint32_t v : {v00, v01, v10, v10, v01, v11}) {
-        *index++ = v;
-      }
-    }
-  }
+  grid.triangle_indices = lattice_triangles(grid.nx, grid.ny);
   return grid;
 }
 

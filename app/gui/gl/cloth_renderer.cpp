@@ -11,6 +11,7 @@
 
 #include "app/gui/colour_map.hpp"
 #include "core/geometry/fold_occlusion.hpp"
+#include "core/geometry/level_of_detail.hpp"
 
 namespace foldlab::gui {
 namespace {
@@ -418,19 +419,29 @@ void ClothRenderer::resize(FrameSize size) {
                             gl_->depth_buffer);
 }
 
-void ClothRenderer::upload_mesh(Scene& scene, float z_scale) {
+void ClothRenderer::upload_mesh(Scene& scene, float z_scale, const DrawnLattice& lattice) {
   const std::vector<Eigen::Vector3f>& normals = scene.normals();
   const DeformedGrid& grid = scene.grid();
-  std::vector<Eigen::Vector3f> positions(grid.positions_mm.size());
-  std::vector<Eigen::Vector3f> world_normals(positions.size());
+  const int columns = static_cast<int>(lattice.columns.size());
+  const int rows = static_cast<int>(lattice.rows.size());
+  std::vector<Eigen::Vector3f> positions;
+  std::vector<Eigen::Vector3f> world_normals;
+  std::vector<Eigen::Vector2f> material;
+  positions.reserve(static_cast<std::size_t>(columns) * rows);
+  world_normals.reserve(positions.capacity());
+  material.reserve(positions.capacity());
   Eigen::Vector2f low(std::numeric_limits<float>::max(), std::numeric_limits<float>::max());
   Eigen::Vector2f high = -low;
-  for (std::size_t i = 0; i < positions.size(); ++i) {
-    positions[i] = to_world(grid.positions_mm[i], z_scale);
-    world_normals[i] = normal_to_world(normals[i], z_scale);
-    const Eigen::Vector2f ground(positions[i].x(), positions[i].z());
-    low = low.cwiseMin(ground);
-    high = high.cwiseMax(ground);
+  for (int j : lattice.rows) {
+    for (int i : lattice.columns) {
+      const std::size_t k = static_cast<std::size_t>(j) * grid.nx + i;
+      positions.push_back(to_world(grid.positions_mm[k], z_scale));
+      world_normals.push_back(normal_to_world(normals[k], z_scale));
+      material.push_back(grid.material_mm[k]);
+      const Eigen::Vector2f ground(positions.back().x(), positions.back().z());
+      low = low.cwiseMin(ground);
+      high = high.cwiseMax(ground);
+    }
   }
   gl_->footprint_min_mm = positions.empty() ? Eigen::Vector2f::Zero() : low;
   gl_->footprint_max_mm = positions.empty() ? Eigen::Vector2f::Zero() : high;
@@ -439,22 +450,29 @@ void ClothRenderer::upload_mesh(Scene& scene, float z_scale) {
   const Solution& s = scene.solution();
   const float reach_mm =
       static_cast<float>(scene.parameters().hanging.height_mm / std::max(1, s.n + 1));
-  const FoldOcclusion hidden = fold_occlusion(positions, world_normals, grid.nx, grid.ny, reach_mm);
+  const FoldOcclusion hidden = fold_occlusion(positions, world_normals, columns, rows, reach_mm);
   std::vector<MeshVertex> vertices(positions.size());
   for (std::size_t i = 0; i < vertices.size(); ++i) {
-    vertices[i] = {
-        positions[i], world_normals[i], grid.material_mm[i], {hidden.front[i], hidden.back[i]}};
+    vertices[i] = {positions[i], world_normals[i], material[i], {hidden.front[i], hidden.back[i]}};
   }
   glBindVertexArray(gl_->mesh_vao);
   glBindBuffer(GL_ARRAY_BUFFER, gl_->mesh_vbo);
   glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(vertices.size() * sizeof(MeshVertex)),
                vertices.data(), GL_DYNAMIC_DRAW);
-  glBufferData(GL_ELEMENT_ARRAY_BUFFER,
-               static_cast<GLsizeiptr>(grid.triangle_indices.size() * sizeof(std::uint32_t)),
-               grid.triangle_indices.data(), GL_DYNAMIC_DRAW);
+  if (columns != mesh_columns_ || rows != mesh_rows_) {
+    const std::vector<std::uint32_t> indices = lattice_triangles(columns, rows);
+    glBufferData(GL_ELEMENT_ARRAY_BUFFER,
+                 static_cast<GLsizeiptr>(indices.size() * sizeof(std::uint32_t)), indices.data(),
+                 GL_STATIC_DRAW);
+    gl_->mesh_index_count = static_cast<GLsizei>(indices.size());
+    mesh_columns_ = columns;
+    mesh_rows_ = rows;
+  }
   glBindVertexArray(0);
-  gl_->mesh_index_count = static_cast<GLsizei>(grid.triangle_indices.size());
   mesh_z_scale_ = z_scale;
+  mesh_lattice_ = lattice;
+  counters_.drawn_columns = static_cast<std::uint64_t>(columns);
+  counters_.drawn_rows = static_cast<std::uint64_t>(rows);
   ++counters_.mesh_uploads;
 }
 
@@ -609,10 +627,27 @@ unsigned ClothRenderer::render(Scene& scene, const OrbitCamera& camera, FrameSiz
   glGetIntegerv(GL_VIEWPORT, previous_viewport);
   resize(size);
   update_print(style);
-  // Bring the stages this view needs up to date (lazily), then upload only what changed.
+  const float aspect =
+      static_cast<float>(size.width) / static_cast<float>(std::max(size.height, 1));
+  const Eigen::Matrix4f view_projection = camera.projection(aspect) * camera.view();
+  // Bring the stages this view needs up to date (lazily), then upload only what changed. The
+  // wireframe shows the grid as it is; otherwise the cells are a few pixels (level_of_detail.hpp).
   scene.normals();
-  if (scene.version(Stage::normals) != mesh_version_ || mesh_z_scale_ != style.z_exaggeration) {
-    upload_mesh(scene, style.z_exaggeration);
+  const DeformedGrid& grid = scene.grid();
+  const Eigen::Matrix4f model_to_clip =
+      view_projection *
+      Eigen::Vector4f(1.0f, -1.0f, style.z_exaggeration, 1.0f).asDiagonal().toDenseMatrix();
+  const DrawnLattice lattice =
+      style.wireframe || !style.level_of_detail
+          ? full_lattice(grid)
+          : drawn_lattice(grid,
+                          screen_spacing(grid, model_to_clip,
+                                         Eigen::Vector2f(static_cast<float>(size.width),
+                                                         static_cast<float>(size.height))),
+                          scene.solution().n);
+  if (scene.version(Stage::normals) != mesh_version_ || mesh_z_scale_ != style.z_exaggeration ||
+      lattice.columns != mesh_lattice_.columns || lattice.rows != mesh_lattice_.rows) {
+    upload_mesh(scene, style.z_exaggeration, lattice);
     mesh_version_ = scene.version(Stage::normals);
   }
   if (style.fold_lines) {
@@ -640,9 +675,6 @@ unsigned ClothRenderer::render(Scene& scene, const OrbitCamera& camera, FrameSiz
   glDisable(GL_BLEND);
   glDisable(GL_SCISSOR_TEST);
 
-  const float aspect =
-      static_cast<float>(size.width) / static_cast<float>(std::max(size.height, 1));
-  const Eigen::Matrix4f view_projection = camera.projection(aspect) * camera.view();
   const Eigen::Vector3f eye = camera.eye();
 
   // The cloth, pushed back a little so that lines on its surface win the depth test.

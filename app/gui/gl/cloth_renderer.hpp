@@ -11,6 +11,7 @@
 
 #include "app/gui/camera.hpp"
 #include "app/gui/renderer.hpp"
+#include "core/geometry/level_of_detail.hpp"
 #include "core/geometry/scene.hpp"
 
 namespace foldlab::gui {
@@ -33,7 +34,7 @@ class ClothRenderer {
  private:
   struct Gl;
   void resize(FrameSize size);
-  void upload_mesh(Scene& scene, float z_scale);
+  void upload_mesh(Scene& scene, float z_scale, const DrawnLattice& lattice);
   void upload_fold_lines(Scene& scene, const ClothStyle& style);
   void upload_decorations(Scene& scene);
   void set_breeze_uniforms(unsigned program, Scene& scene, const ClothStyle& style);
@@ -48,6 +49,9 @@ class ClothRenderer {
   std::uint64_t fold_line_version_ = ~std::uint64_t{0};
   std::uint64_t decoration_version_ = ~std::uint64_t{0};
   float mesh_z_scale_ = -1.0f;  // the exaggeration the uploaded buffers were made with
+  DrawnLattice mesh_lattice_;   // the rows and columns of the grid uploaded
+  int mesh_columns_ = 0;        // the lattice the index buffer holds
+  int mesh_rows_ = 0;
   float lines_z_scale_ = -1.0f;
   Eigen::Vector3f uploaded_positive_{-1, -1, -1};
   Eigen::Vector3f uploaded_negative_{-1, -1, -1};

@@ -101,6 +101,8 @@ std::optional<std::string> ClothViewPanel::set_view(std::string_view key, std::s
     style_.z_exaggeration = v;
   } else if (key == "wireframe") {
     return switch_value(style_.wireframe);
+  } else if (key == "lod") {
+    return switch_value(style_.level_of_detail);
   } else if (key == "fold_lines") {
     return switch_value(style_.fold_lines);
   } else if (key == "ground") {
@@ -115,7 +117,7 @@ std::optional<std::string> ClothViewPanel::set_view(std::string_view key, std::s
   } else {
     return "unknown view key '" + detail::cut(key) +
            "' (known: sweep, theme, scale, grid, print, print_file, print_mm, colour_by, breeze, "
-           "breeze_mm, time, z, wireframe, fold_lines, ground, full)";
+           "breeze_mm, time, z, wireframe, lod, fold_lines, ground, full)";
   }
   return std::nullopt;
 }

@@ -50,10 +50,12 @@ void FoldPlotPanel::draw(Document& document, Renderer& renderer, PhotoOverlay& p
     const FoldColours colours = fold_colours(style_is_light());
     const ImU32 positive_colour = ImGui::ColorConvertFloat4ToU32(colours.positive);
     const ImU32 negative_colour = ImGui::ColorConvertFloat4ToU32(colours.negative);
+    // A whole-pixel width lets ImGui draw each line from its baked anti-aliased line texture: two
+    // vertices a point instead of four, which is a third of a dragged frame's plot on llvmpipe.
     for (std::size_t k = 0; k < lines.lines.size(); ++k) {
       const bool negative = lines.lines[k].sign < 0;
       plot_.line(negative ? "negative fold" : "positive fold", xs_[k], ys_[k],
-                 negative ? negative_colour : positive_colour, 1.6f);
+                 negative ? negative_colour : positive_colour, 2.0f);
     }
     if (lines.lines.empty()) {
       // No folds (no slack, short cloth): show the cloth itself, y = (A + h) cos(pi x / l).
