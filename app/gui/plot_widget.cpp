@@ -492,6 +492,8 @@ void Plot::vertical_line(double x, ImU32 colour, const char* label) {
   vlines_.push_back({x, colour, text});
 }
 
+constexpr float kShortestSegmentPx = 3.0f;
+
 // Draws path_ (screen coordinates, NaN = gap) as polylines, cut to the clip box grown by the
 // line width. ImGui's clip rect alone would hide the overhang, but far-off vertices would still
 // be emitted, and zoomed-in coordinates can exceed what float vertices represent.
@@ -518,10 +520,23 @@ void Plot::stroke(ImDrawList* dl, ImU32 colour, float thickness, ImVec2 clip_min
       flush();
     if (screen_.empty())
       screen_.push_back(vec(ax, ay));
-    // A zero-length segment has no direction and pinches the anti-aliased joint around it.
+    // A zero-length segment has no direction and pinches the anti-aliased joint around it. A
+    // point closer than kShortestSegmentPx to the one before that is replaced by the next: a
+    // software rasterizer pays for each segment, and a dense curve loses nothing a pixel shows
+    // (each kept point is on the curve, the run's ends are kept).
     const ImVec2 b = vec(bx, by);
-    if (b.x != screen_.back().x || b.y != screen_.back().y)
+    const std::size_t n = screen_.size();
+    const bool repeated = b.x == screen_.back().x && b.y == screen_.back().y;
+    const bool last_is_short =
+        n >= 2 && std::hypot(screen_[n - 1].x - screen_[n - 2].x,
+                             screen_[n - 1].y - screen_[n - 2].y) < kShortestSegmentPx;
+    if (repeated) {
+      // nothing to add
+    } else if (last_is_short) {
+      screen_.back() = b;
+    } else {
       screen_.push_back(b);
+    }
     if (b_moved)
       flush();
   }

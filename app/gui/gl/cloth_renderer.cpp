@@ -3,6 +3,7 @@
 #include <epoxy/gl.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -69,7 +70,11 @@ void main() {
 // the front-left and a sky/ground ambient, both dimmed by the fold occlusion, so that the inside
 // of a fold stays darker than its crest under any light; a faint sheen at grazing view, as fibres
 // catch the light. Lighting is done on linear colours and the result encoded back for display.
-constexpr const char* kMeshFragment = R"(#version 330 core
+// One program per surface colouring (the fabric plain, the fabric printed, by z, by fold sign):
+// llvmpipe runs both sides of a branch on every pixel, so the texture lookup and the colour map
+// are compiled only into the variants that show them. Gamma 2 (a square and a square root) stands
+// for the display's 2.2: the pow() calls were a third of the cloth's cost on llvmpipe.
+constexpr const char* kMeshFragment = R"(
 in vec3 world_normal;
 in vec3 world_position;
 in vec2 material_mm;
@@ -78,10 +83,8 @@ in float model_z_mm;
 uniform vec3 eye;
 uniform vec3 front_colour;
 uniform vec3 back_colour;
-uniform int print_kind;  // 0 plain, else the print texture
 uniform float print_period_mm;
 uniform sampler2D print_texture;
-uniform int colour_by;  // 0 the fabric, 1 z, 2 fold sign
 uniform float z_range_mm;
 uniform vec3 colour_map[9];
 uniform vec3 positive_colour;
@@ -89,25 +92,25 @@ uniform vec3 negative_colour;
 uniform vec3 key_direction;
 uniform vec3 fill_direction;
 out vec4 colour;
-vec3 to_linear(vec3 c) { return pow(c, vec3(2.2)); }
 vec3 surface_colour(bool front) {
-  if (colour_by == 1) {
-    float x = clamp(0.5 + 0.5 * model_z_mm / z_range_mm, 0.0, 1.0) * 8.0;
-    int i = min(int(x), 7);
-    return mix(colour_map[i], colour_map[i + 1], x - float(i));
-  }
-  if (colour_by == 2) {
-    return mix(negative_colour, positive_colour, smoothstep(-0.05, 0.05, model_z_mm / z_range_mm));
-  }
-  if (!front) return back_colour;
-  if (print_kind != 0) return texture(print_texture, material_mm / print_period_mm).rgb;
-  return front_colour;
+#if COLOUR_BY == 1
+  float x = clamp(0.5 + 0.5 * model_z_mm / z_range_mm, 0.0, 1.0) * 8.0;
+  int i = min(int(x), 7);
+  return mix(colour_map[i], colour_map[i + 1], x - float(i));
+#elif COLOUR_BY == 2
+  return mix(negative_colour, positive_colour, smoothstep(-0.05, 0.05, model_z_mm / z_range_mm));
+#elif PRINTED
+  return front ? texture(print_texture, material_mm / print_period_mm).rgb : back_colour;
+#else
+  return front ? front_colour : back_colour;
+#endif
 }
 void main() {
   vec3 n = normalize(world_normal);
   float hidden = sky_hidden.x;
   if (!gl_FrontFacing) { n = -n; hidden = sky_hidden.y; }
-  vec3 base = to_linear(surface_colour(gl_FrontFacing));
+  vec3 base = surface_colour(gl_FrontFacing);
+  base *= base;
   vec3 to_eye = normalize(eye - world_position);
   float open_sky = clamp(1.0 - 2.5 * hidden, 0.1, 1.0);
   float key = max(dot(n, key_direction), 0.0);
@@ -116,9 +119,10 @@ void main() {
   vec3 light = vec3(1.00, 0.96, 0.90) * 1.9 * key * mix(0.5, 1.0, open_sky)
              + vec3(0.80, 0.86, 1.00) * 0.22 * fill * open_sky
              + mix(vec3(0.06, 0.05, 0.05), vec3(0.14, 0.15, 0.18), sky) * open_sky;
-  float sheen = 0.10 * pow(1.0 - max(dot(n, to_eye), 0.0), 4.0) * open_sky;
-  vec3 linear = base * light + vec3(sheen);
-  colour = vec4(pow(linear, vec3(1.0 / 2.2)), 1.0);
+  float grazing = 1.0 - max(dot(n, to_eye), 0.0);
+  grazing *= grazing;
+  float sheen = 0.10 * grazing * grazing * open_sky;
+  colour = vec4(sqrt(base * light + vec3(sheen)), 1.0);
 }
 )";
 
@@ -192,10 +196,11 @@ GLuint compile(GLenum type, const char* prefix, const char* source) {
   return shader;
 }
 
-GLuint link(const char* vertex, const char* fragment, const char* vertex_prefix = kBreezeGlsl) {
+GLuint link(const char* vertex, const char* fragment, const char* vertex_prefix = kBreezeGlsl,
+            const char* fragment_prefix = nullptr) {
   const GLuint program = glCreateProgram();
   const GLuint vs = compile(GL_VERTEX_SHADER, vertex_prefix, vertex);
-  const GLuint fs = compile(GL_FRAGMENT_SHADER, nullptr, fragment);
+  const GLuint fs = compile(GL_FRAGMENT_SHADER, fragment_prefix, fragment);
   glAttachShader(program, vs);
   glAttachShader(program, fs);
   glLinkProgram(program);
@@ -311,7 +316,9 @@ void describe_vertex_layout() {
 }  // namespace
 
 struct ClothRenderer::Gl {
-  GLuint mesh_program = 0;
+  GLuint mesh_program = 0;  // the variant in use, one of mesh_programs
+  // By colouring: the fabric plain, printed, by z, by fold sign; made when first needed.
+  std::array<GLuint, 4> mesh_programs{};
   GLuint line_program = 0;
   GLuint mesh_vao = 0, mesh_vbo = 0, mesh_ebo = 0;
   GLsizei mesh_index_count = 0;
@@ -331,7 +338,6 @@ struct ClothRenderer::Gl {
 };
 
 ClothRenderer::ClothRenderer() : gl_(new Gl) {
-  gl_->mesh_program = link(kMeshVertex, kMeshFragment);
   gl_->line_program = link(kLineVertex, kLineFragment);
   gl_->shadow_program = link(kShadowVertex, kShadowFragment, nullptr);
   glGenVertexArrays(1, &gl_->shadow_vao);
@@ -384,7 +390,9 @@ ClothRenderer::~ClothRenderer() {
   const GLuint buffers[] = {gl_->mesh_vbo, gl_->mesh_ebo, gl_->lines_vbo, gl_->decor_vbo};
   glDeleteVertexArrays(3, vaos);
   glDeleteBuffers(4, buffers);
-  glDeleteProgram(gl_->mesh_program);
+  for (GLuint program : gl_->mesh_programs) {
+    glDeleteProgram(program);  // 0 is ignored
+  }
   glDeleteProgram(gl_->line_program);
   glDeleteProgram(gl_->shadow_program);
   glDeleteVertexArrays(1, &gl_->shadow_vao);
@@ -562,18 +570,34 @@ void ClothRenderer::update_print(const ClothStyle& style) {
   }
 }
 
+void ClothRenderer::select_mesh_program(const ClothStyle& style) {
+  static constexpr const char* kVariants[] = {
+      "#version 330 core\n#define COLOUR_BY 0\n#define PRINTED 0\n",
+      "#version 330 core\n#define COLOUR_BY 0\n#define PRINTED 1\n",
+      "#version 330 core\n#define COLOUR_BY 1\n#define PRINTED 0\n",
+      "#version 330 core\n#define COLOUR_BY 2\n#define PRINTED 0\n",
+  };
+  const std::size_t variant = style.colour_by == ClothStyle::ColourBy::z           ? 2
+                              : style.colour_by == ClothStyle::ColourBy::fold_sign ? 3
+                              : print_kind_ != 0                                   ? 1
+                                                                                   : 0;
+  GLuint& program = gl_->mesh_programs[variant];
+  if (program == 0) {
+    program = link(kMeshVertex, kMeshFragment, kBreezeGlsl, kVariants[variant]);
+  }
+  gl_->mesh_program = program;
+}
+
 void ClothRenderer::set_mesh_colour_uniforms(Scene& scene, const ClothStyle& style) {
   const GLuint program = gl_->mesh_program;
   glUniform3fv(glGetUniformLocation(program, "front_colour"), 1, style.front_colour.data());
   glUniform3fv(glGetUniformLocation(program, "back_colour"), 1, style.back_colour.data());
-  glUniform1i(glGetUniformLocation(program, "print_kind"), print_kind_);
   // The checks' and stripes' tiles hold two of them a side; a photo is one swatch.
   glUniform1f(glGetUniformLocation(program, "print_period_mm"),
               (print_kind_ == 3 ? 1.0f : 2.0f) * std::max(style.print_mm, 1.0f));
   glActiveTexture(GL_TEXTURE0);
   glBindTexture(GL_TEXTURE_2D, gl_->print_texture);
   glUniform1i(glGetUniformLocation(program, "print_texture"), 0);
-  glUniform1i(glGetUniformLocation(program, "colour_by"), static_cast<int>(style.colour_by));
   glUniform1f(glGetUniformLocation(program, "z_range_mm"),
               static_cast<float>(std::max(scene.solution().z_max_mm, 1e-3)));
   glUniform3fv(glGetUniformLocation(program, "colour_map"),
@@ -680,6 +704,7 @@ unsigned ClothRenderer::render(Scene& scene, const OrbitCamera& camera, FrameSiz
   // The cloth, pushed back a little so that lines on its surface win the depth test.
   glEnable(GL_POLYGON_OFFSET_FILL);
   glPolygonOffset(1.0f, 1.0f);
+  select_mesh_program(style);
   glUseProgram(gl_->mesh_program);
   glUniformMatrix4fv(glGetUniformLocation(gl_->mesh_program, "view_projection"), 1, GL_FALSE,
                      view_projection.data());

@@ -39,6 +39,7 @@ class ClothRenderer {
   void upload_decorations(Scene& scene);
   void set_breeze_uniforms(unsigned program, Scene& scene, const ClothStyle& style);
   void update_print(const ClothStyle& style);
+  void select_mesh_program(const ClothStyle& style);
   void set_mesh_colour_uniforms(Scene& scene, const ClothStyle& style);
   void draw_shadow(Scene& scene, const Eigen::Matrix4f& view_projection);
 
