@@ -55,6 +55,27 @@ TEST(LevelOfDetail, ScreenSpacingIsTheMeanStepInPixels) {
   EXPECT_NEAR(doubled.down_px, 4.0f, 1e-4f);
 }
 
+TEST(LevelOfDetail, ADeviationAlongTheViewStillKeepsItsRows) {
+  // Every fourth row, from row 2, 4 mm towards the eye: no pixel moves, but a lattice that skips
+  // those rows would cut through the pleats and change what hides what. Stride 2 keeps them all.
+  DeformedGrid grid = flat_grid(65, 65, 0.1f, 0.1f);
+  for (int j = 2; j < grid.ny; j += 4) {
+    for (int i = 0; i < grid.nx; ++i) {
+      grid.positions_mm[static_cast<std::size_t>(j) * grid.nx + i].z() = 4.0f;
+    }
+  }
+  const ScreenSpacing deep = screen_spacing(grid, pixel_per_mm(800, 600), {800, 600});
+  EXPECT_NEAR(deep.down_px, 0.1f, 1e-4f);  // the view direction shows no length
+  EXPECT_EQ(deep.faithful_down, 2);
+  EXPECT_GE(deep.faithful_across, 4);  // the rows themselves are straight
+  EXPECT_EQ(drawn_lattice(grid, deep, 0).rows.size(), 33u);
+  // The same pleats scaled down to 0.04 mm (a world scale of 0.01 in z) are within half a pixel.
+  const ScreenSpacing shallow = screen_spacing(grid, pixel_per_mm(800, 600), {800, 600},
+                                               Eigen::Vector3f(1.0f, 1.0f, 0.01f));
+  EXPECT_GE(shallow.faithful_down, 4);
+  EXPECT_LT(drawn_lattice(grid, shallow, 0).rows.size(), 20u);
+}
+
 TEST(LevelOfDetail, AGridBehindTheEyeIsDrawnInFull) {
   const DeformedGrid grid = flat_grid(40, 40, 1.0f, 1.0f);
   Eigen::Matrix4f behind = pixel_per_mm(800, 600);

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <numeric>
+#include <optional>
 
 #include <Eigen/Geometry>
 
@@ -21,25 +22,90 @@ const Eigen::Vector3f& at(const DeformedGrid& grid, int i, int j) {
   return grid.positions_mm[static_cast<std::size_t>(j) * grid.nx + i];
 }
 
-// The mean on-screen step between consecutive vertices of one grid line, given by `vertex(k)` for
-// k = 0 .. count - 1.
-template <class Vertex>
-float mean_step_px(int count, Vertex vertex, const Eigen::Matrix4f& model_to_clip,
-                   const Eigen::Vector2f& viewport_px) {
-  float length = 0.0f;
-  Eigen::Vector2f previous = Eigen::Vector2f::Zero();
-  for (int k = 0; k < count; ++k) {
-    const Eigen::Vector4f clip = model_to_clip * vertex(k).homogeneous();
-    if (!(clip.w() > 1e-6f)) {
-      return kInfinity;
-    }
-    const Eigen::Vector2f pixel = (clip.head<2>() / clip.w()).cwiseProduct(0.5f * viewport_px);
-    if (k > 0) {
-      length += (pixel - previous).norm();
-    }
-    previous = pixel;
+// One grid line's vertices on screen, and how many pixels a millimetre of the view's world spans
+// around each of them: the largest over the three axes, since an offset along the view direction
+// shows no length and one across it its full length. Empty when a vertex is behind the eye.
+struct ScreenLine {
+  std::vector<Eigen::Vector3f> model;
+  std::vector<Eigen::Vector2f> pixel;
+  std::vector<float> pixels_per_mm;
+};
+
+std::optional<Eigen::Vector2f> to_pixel(const Eigen::Vector3f& model,
+                                        const Eigen::Matrix4f& model_to_clip,
+                                        const Eigen::Vector2f& viewport_px) {
+  const Eigen::Vector4f clip = model_to_clip * model.homogeneous();
+  if (!(clip.w() > 1e-6f)) {
+    return std::nullopt;
   }
-  return length / static_cast<float>(std::max(1, count - 1));
+  return Eigen::Vector2f((clip.head<2>() / clip.w()).cwiseProduct(0.5f * viewport_px));
+}
+
+template <class Vertex>
+std::optional<ScreenLine> screen_line(int count, Vertex vertex,
+                                      const Eigen::Matrix4f& model_to_clip,
+                                      const Eigen::Vector2f& viewport_px,
+                                      const Eigen::Vector3f& world_scale) {
+  ScreenLine line;
+  for (int k = 0; k < count; ++k) {
+    const Eigen::Vector3f& model = vertex(k);
+    const std::optional<Eigen::Vector2f> pixel = to_pixel(model, model_to_clip, viewport_px);
+    if (!pixel) {
+      return std::nullopt;
+    }
+    float scale = 0.0f;
+    for (int axis = 0; axis < 3; ++axis) {
+      const Eigen::Vector3f one_mm = Eigen::Vector3f::Unit(axis) / world_scale[axis];
+      const std::optional<Eigen::Vector2f> moved =
+          to_pixel(model + one_mm, model_to_clip, viewport_px);
+      if (!moved) {
+        return std::nullopt;
+      }
+      scale = std::max(scale, (*moved - *pixel).norm());
+    }
+    line.model.push_back(model);
+    line.pixel.push_back(*pixel);
+    line.pixels_per_mm.push_back(scale);
+  }
+  return line;
+}
+
+float mean_step_px(const ScreenLine& line) {
+  float length = 0.0f;
+  for (std::size_t k = 1; k < line.pixel.size(); ++k) {
+    length += (line.pixel[k] - line.pixel[k - 1]).norm();
+  }
+  return length / static_cast<float>(std::max<std::size_t>(1, line.pixel.size() - 1));
+}
+
+// The largest stride up to `most` for which every dropped vertex lies within `error_px` of the
+// segment between the kept vertices around it, measured in the view's world (mm) and scaled by
+// the pixels a millimetre spans there.
+int faithful_stride(const ScreenLine& line, const Eigen::Vector3f& world_scale, int most,
+                    float error_px) {
+  const int count = static_cast<int>(line.model.size());
+  const auto world = [&](int k) -> Eigen::Vector3f {
+    return line.model[static_cast<std::size_t>(k)].cwiseProduct(world_scale);
+  };
+  for (int stride = std::min(most, count - 1); stride > 1; --stride) {
+    bool faithful = true;
+    for (int a = 0; a + 1 < count && faithful; a += stride) {
+      const int b = std::min(a + stride, count - 1);
+      const Eigen::Vector3f from = world(a);
+      const Eigen::Vector3f chord = world(b) - from;
+      const float chord_squared = std::max(chord.squaredNorm(), 1e-20f);
+      for (int j = a + 1; j < b && faithful; ++j) {
+        const Eigen::Vector3f offset = world(j) - from;
+        const float t = std::clamp(offset.dot(chord) / chord_squared, 0.0f, 1.0f);
+        const float off_mm = (offset - t * chord).norm();
+        faithful = off_mm * line.pixels_per_mm[static_cast<std::size_t>(j)] <= error_px;
+      }
+    }
+    if (faithful) {
+      return stride;
+    }
+  }
+  return 1;
 }
 
 std::vector<int> every(int stride, int count, std::vector<int> always) {
@@ -82,7 +148,8 @@ DrawnLattice full_lattice(const DeformedGrid& grid) {
 }
 
 ScreenSpacing screen_spacing(const DeformedGrid& grid, const Eigen::Matrix4f& model_to_clip,
-                             const Eigen::Vector2f& viewport_px) {
+                             const Eigen::Vector2f& viewport_px, const Eigen::Vector3f& world_scale,
+                             const DetailGoal& goal) {
   ScreenSpacing spacing;
   if (grid.nx < 2 || grid.ny < 2 || grid.positions_mm.empty()) {
     return spacing;
@@ -95,15 +162,39 @@ ScreenSpacing screen_spacing(const DeformedGrid& grid, const Eigen::Matrix4f& mo
       longest = i;
     }
   }
-  spacing.down_px = mean_step_px(
+  const auto behind_the_eye = [&] {
+    spacing.across_px = spacing.down_px = kInfinity;
+    spacing.faithful_across = spacing.faithful_down = 1;
+    return spacing;
+  };
+  // Strides coarser than the spacing allows are never drawn: no need to check them.
+  const auto candidate = [&](float spacing_px, int count) {
+    return stride_for(spacing_px, goal.cell_px, count);
+  };
+  const std::optional<ScreenLine> fibre = screen_line(
       grid.ny, [&](int j) -> const Eigen::Vector3f& { return at(grid, longest, j); }, model_to_clip,
-      viewport_px);
+      viewport_px, world_scale);
+  if (!fibre) {
+    return behind_the_eye();
+  }
+  spacing.down_px = mean_step_px(*fibre);
+  spacing.faithful_down =
+      faithful_stride(*fibre, world_scale, candidate(spacing.down_px, grid.ny), goal.error_px);
+  std::vector<ScreenLine> rows;
   for (int j : {0, grid.ny / 2}) {
-    spacing.across_px =
-        std::max(spacing.across_px,
-                 mean_step_px(
-                     grid.nx, [&](int i) -> const Eigen::Vector3f& { return at(grid, i, j); },
-                     model_to_clip, viewport_px));
+    std::optional<ScreenLine> row = screen_line(
+        grid.nx, [&](int i) -> const Eigen::Vector3f& { return at(grid, i, j); }, model_to_clip,
+        viewport_px, world_scale);
+    if (!row) {
+      return behind_the_eye();
+    }
+    spacing.across_px = std::max(spacing.across_px, mean_step_px(*row));
+    rows.push_back(std::move(*row));
+  }
+  for (const ScreenLine& row : rows) {
+    spacing.faithful_across = std::min(
+        spacing.faithful_across,
+        faithful_stride(row, world_scale, candidate(spacing.across_px, grid.nx), goal.error_px));
   }
   return spacing;
 }
@@ -113,10 +204,12 @@ DrawnLattice drawn_lattice(const DeformedGrid& grid, const ScreenSpacing& spacin
   if (grid.nx < 2 || grid.ny < 2) {
     return full_lattice(grid);
   }
-  const int column_stride = stride_for(spacing.across_px, goal.cell_px, grid.nx);
+  const int column_stride =
+      std::min(stride_for(spacing.across_px, goal.cell_px, grid.nx), spacing.faithful_across);
   const int fold_limit =
       std::max(1, (grid.ny - 1) / (std::max(1, goal.rows_per_fold) * (std::max(0, folds) + 1)));
-  const int row_stride = std::min(stride_for(spacing.down_px, goal.cell_px, grid.ny), fold_limit);
+  const int row_stride = std::min(
+      {stride_for(spacing.down_px, goal.cell_px, grid.ny), fold_limit, spacing.faithful_down});
   // A fibre pinned between two spans is shorter than its neighbours, the longest fibre of a span
   // reaches lowest and makes the outline seen edge-on: keep both.
   std::vector<int> extremes;

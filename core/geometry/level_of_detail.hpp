@@ -9,6 +9,7 @@
 #pragma once
 
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 #include <Eigen/Core>
@@ -23,6 +24,10 @@ struct DetailGoal {
   // Rows kept per fold (per mean spacing of the centre fibre's n + 1 segments), at the least: the
   // turn at a crest stays a curve of several segments, not a single kink.
   int rows_per_fold = 6;
+  // A dropped vertex may lie this far from the drawn cell's edge, in pixels at its distance from
+  // the eye (the usual screen-space error of level of detail). It counts the deviation along the
+  // view direction too, which moves no pixel but decides which surface hides which line.
+  float error_px = 0.5f;
 };
 
 struct DrawnLattice {
@@ -36,19 +41,26 @@ struct DrawnLattice {
 // Every row and column.
 DrawnLattice full_lattice(const DeformedGrid& grid);
 
-// The mean distance, in pixels, between neighbouring vertices across the grid's columns (the larger
-// of the upper edge's and the middle row's) and down its rows (along the longest fibre),
-// with `model_to_clip` taking the grid's positions (mm) to clip coordinates and a viewport of
-// `viewport_px`. Infinite when one of those vertices is behind the eye.
+// How the grid looks on screen along its widest column lines (across: the upper edge and the
+// middle row) and its longest fibre (down). `model_to_clip` takes the grid's positions (mm) to
+// clip coordinates of a viewport of `viewport_px`; the view's world is the model scaled by
+// `world_scale` (an exaggerated z, a flipped y), which the matrix includes.
 struct ScreenSpacing {
-  float across_px = 0.0f;
-  float down_px = 0.0f;
+  float across_px = 0.0f;  // the mean distance between neighbouring vertices, in pixels
+  float down_px = 0.0f;    // (infinite when a vertex is behind the eye)
+  // The largest strides whose dropped vertices all stay within the goal's error_px of the kept
+  // ones' chords.
+  int faithful_across = std::numeric_limits<int>::max();
+  int faithful_down = std::numeric_limits<int>::max();
 };
 ScreenSpacing screen_spacing(const DeformedGrid& grid, const Eigen::Matrix4f& model_to_clip,
-                             const Eigen::Vector2f& viewport_px);
+                             const Eigen::Vector2f& viewport_px,
+                             const Eigen::Vector3f& world_scale = Eigen::Vector3f::Ones(),
+                             const DetailGoal& goal = {});
 
-// Strides of whole rows and columns with cells of about goal.cell_px, the rows limited by
-// goal.rows_per_fold for a solution of `folds` folds; the last row and column always kept.
+// Strides of whole rows and columns with cells of about goal.cell_px, no coarser than the spacing's
+// faithful strides, the rows limited by goal.rows_per_fold for a solution of `folds` folds; the
+// last row and column always kept.
 DrawnLattice drawn_lattice(const DeformedGrid& grid, const ScreenSpacing& spacing, int folds,
                            const DetailGoal& goal = {});
 

@@ -658,16 +658,19 @@ unsigned ClothRenderer::render(Scene& scene, const OrbitCamera& camera, FrameSiz
   // wireframe shows the grid as it is; otherwise the cells are a few pixels (level_of_detail.hpp).
   scene.normals();
   const DeformedGrid& grid = scene.grid();
+  const Eigen::Vector3f world_scale(1.0f, -1.0f, style.z_exaggeration);  // to_world()
   const Eigen::Matrix4f model_to_clip =
-      view_projection *
-      Eigen::Vector4f(1.0f, -1.0f, style.z_exaggeration, 1.0f).asDiagonal().toDenseMatrix();
+      view_projection * Eigen::Vector4f(world_scale.x(), world_scale.y(), world_scale.z(), 1.0f)
+                            .asDiagonal()
+                            .toDenseMatrix();
   const DrawnLattice lattice =
       style.wireframe || !style.level_of_detail
           ? full_lattice(grid)
           : drawn_lattice(grid,
                           screen_spacing(grid, model_to_clip,
                                          Eigen::Vector2f(static_cast<float>(size.width),
-                                                         static_cast<float>(size.height))),
+                                                         static_cast<float>(size.height)),
+                                         world_scale),
                           scene.solution().n);
   if (scene.version(Stage::normals) != mesh_version_ || mesh_z_scale_ != style.z_exaggeration ||
       lattice.columns != mesh_lattice_.columns || lattice.rows != mesh_lattice_.rows) {
