@@ -207,6 +207,33 @@ TEST(Shapes, StripRepeatsTheSpanAndKeepsEverySupportFixed) {
   }
 }
 
+TEST(Shapes, EverySupportOfAStripIsAColumnWhateverTheGrid) {
+  Parameters p = exact_default();
+  p.shape.kind = ShapeKind::strip;
+  p.shape.supports = 4;
+  const Solution s = solve(p);
+  // 8, 32 and 101 columns: 7, 31 and 100 intervals, none a multiple of the three spans.
+  for (int nx : {8, 32, 101}) {
+    const DeformedGrid grid = deformed_grid(s, p, nx, 17);
+    for (int support = 0; support < 4; ++support) {
+      const double x = (support - 1.5) * s.span_mm;
+      int found = -1;
+      for (int i = 0; i < nx && found < 0; ++i) {
+        if (std::abs(grid.positions_mm[static_cast<std::size_t>(i)].x() - x) < 1e-3) {
+          found = i;
+        }
+      }
+      ASSERT_GE(found, 0) << "no column at support " << support << " of grid " << nx;
+      for (int j = 0; j < 17; ++j) {  // a fibre of no length: every row at the support
+        const Eigen::Vector3f v = grid.positions_mm[static_cast<std::size_t>(j * nx + found)];
+        EXPECT_NEAR(v.x(), x, 1e-3);
+        EXPECT_NEAR(v.y(), 0.0, 1e-3);
+        EXPECT_NEAR(v.z(), 0.0, 1e-3);
+      }
+    }
+  }
+}
+
 TEST(Shapes, InclinedSupportsShearThePatternAndKeepTheFoldCount) {
   Parameters p = exact_default();
   const Solution s = solve(p);

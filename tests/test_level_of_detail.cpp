@@ -70,8 +70,8 @@ TEST(LevelOfDetail, ADeviationAlongTheViewStillKeepsItsRows) {
   EXPECT_GE(deep.faithful_across, 4);  // the rows themselves are straight
   EXPECT_EQ(drawn_lattice(grid, deep, 0).rows.size(), 33u);
   // The same pleats scaled down to 0.04 mm (a world scale of 0.01 in z) are within half a pixel.
-  const ScreenSpacing shallow = screen_spacing(grid, pixel_per_mm(800, 600), {800, 600},
-                                               Eigen::Vector3f(1.0f, 1.0f, 0.01f));
+  const ScreenSpacing shallow =
+      screen_spacing(grid, pixel_per_mm(800, 600), {800, 600}, Eigen::Vector3f(1.0f, 1.0f, 0.01f));
   EXPECT_GE(shallow.faithful_down, 4);
   EXPECT_LT(drawn_lattice(grid, shallow, 0).rows.size(), 20u);
 }
@@ -126,10 +126,10 @@ TEST(LevelOfDetail, StripSupportsAndEachSpansLongestFibreAreAlwaysDrawn) {
   p.shape.kind = ShapeKind::strip;
   p.shape.supports = 4;  // three spans
   const Solution s = solve(p);
-  // 101 columns over three spans: the inner supports fall at columns 33 and 67, the spans'
-  // middles at 17, 50 and 83, none of them a multiple of the stride (6, the coarsest that keeps
+  // 103 columns over three spans: the inner supports fall at columns 34 and 68, the spans'
+  // middles at 17, 51 and 85, none of them a multiple of the stride (6, the coarsest that keeps
   // 16 columns).
-  const DeformedGrid grid = deformed_grid_positions(s, p, 101, 64);
+  const DeformedGrid grid = deformed_grid_positions(s, p, 103, 64);
   const auto fibre = [&](int i) {
     return grid.material_mm[static_cast<std::size_t>(grid.ny - 1) * grid.nx + i].y();
   };

@@ -131,11 +131,28 @@ DeformedGrid deformed_grid_positions(const Solution& s, const Parameters& p,
   grid.positions_mm.resize(count);
   grid.material_mm.resize(count);
   const double total_width = spans * L;
+  // Each span gets a whole number of the grid's intervals, so that a column falls on every support
+  // of a strip: a cell across a support would hang cloth below it.
+  const int intervals = grid.nx - 1;
+  const bool per_span = spans > 1 && intervals >= spans;
+  const auto first_column = [&](int span) {
+    return static_cast<int>(static_cast<long long>(span) * intervals / spans);
+  };
+  int span = 0;
   for (int i = 0; i < grid.nx; ++i) {
     // Which span the column falls in, and where in it.
-    const double X_total = total_width * (static_cast<double>(i) / (grid.nx - 1) - 0.5);
-    const int span =
-        std::clamp(static_cast<int>(std::floor((X_total + 0.5 * total_width) / L)), 0, spans - 1);
+    double X_total = total_width * (static_cast<double>(i) / intervals - 0.5);
+    if (per_span) {
+      while (span + 1 < spans && i > first_column(span + 1)) {
+        ++span;
+      }
+      const int from = first_column(span);
+      X_total = L * (span + static_cast<double>(i - from) / (first_column(span + 1) - from)) -
+                0.5 * total_width;
+    } else {
+      span =
+          std::clamp(static_cast<int>(std::floor((X_total + 0.5 * total_width) / L)), 0, spans - 1);
+    }
     const double X = X_total + 0.5 * total_width - (span + 0.5) * L;
     const double c = std::max(0.0, std::cos(kPi * X / L));  // = cos(pi x / l) at x = X l / L
     const double x = X * l / L;

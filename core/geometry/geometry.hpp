@@ -80,13 +80,15 @@ struct DeformedGrid {
   double sharpest_turn_deg = 0.0;
 };
 
-// nx, ny >= 2, over the whole flat cloth (all spans of a strip). The cosine membrane: the fibre
-// at X has length h cos(pi X/L) and its points sit at arc-length fraction Y/h of the centre fibre
-// through the fold points, scaled by cos(pi X/L), at x = X l/L. The centre fibre has rounded
-// crests (rounded_folds.hpp) where the paper has a sharp zig-zag. The rectangular cloth: every
-// fibre is h long; its point Y sits at arc length Y along the scaled centre fibre, and below the
-// lowest fold it hangs straight down (as the paper does; near the supports, where the folds shrink
-// to nothing, this is where the model stops describing a real cloth). The supports stay fixed.
+// nx, ny >= 2, over the whole flat cloth (all spans of a strip; each span gets a whole number of
+// the nx - 1 intervals when there are enough, so that a column falls on every support). The cosine
+// membrane: the fibre at X has length h cos(pi X/L) and its points sit at arc-length fraction Y/h
+// of the centre fibre through the fold points, scaled by cos(pi X/L), at x = X l/L. The centre
+// fibre has rounded crests (rounded_folds.hpp) where the paper has a sharp zig-zag. The rectangular
+// cloth: every fibre is h long; its point Y sits at arc length Y along the scaled centre fibre, and
+// below the lowest fold it hangs straight down (as the paper does; near the supports, where the
+// folds shrink to nothing, this is where the model stops describing a real cloth). The supports
+// stay fixed.
 DeformedGrid deformed_grid(const Solution& s, const Parameters& p, int nx, int ny);
 // The same without normals (left empty): the scene computes them as a stage of their own.
 DeformedGrid deformed_grid_positions(const Solution& s, const Parameters& p, int nx, int ny);

@@ -514,9 +514,19 @@ void ClothRenderer::upload_decorations(Scene& scene) {
   const float depth =
       static_cast<float>(lowest_point_mm(s, p.hanging.height_mm) + 0.05 * p.hanging.height_mm);
   gl_->ground_y_mm = -depth;
-  const float extent =
+  // Wide enough for every span of a strip, with a span's margin beyond the outer supports.
+  const std::vector<Eigen::Vector3d> supports = support_points(s.span_mm, p.shape);
+  double widest_mm = 0.0;
+  for (const Eigen::Vector3d& support : supports) {
+    widest_mm = std::max(widest_mm, std::abs(support.x()));
+  }
+  const float one_span =
       static_cast<float>(0.75 * std::max(p.hanging.length_mm, p.hanging.height_mm));
-  const float spacing = std::pow(10.0f, std::floor(std::log10(extent / 2.0f)));
+  const float extent = std::max(one_span, static_cast<float>(widest_mm + 0.5 * s.span_mm));
+  float spacing = std::pow(10.0f, std::floor(std::log10(one_span / 2.0f)));
+  while (extent / spacing > 50.0f) {
+    spacing *= 10.0f;  // a long strip: no more than a hundred lines each way
+  }
   const Eigen::Vector3f grey(0.36f, 0.38f, 0.42f);
   std::vector<Vertex> vertices;
   for (float v = -std::floor(extent / spacing) * spacing; v <= extent; v += spacing) {
@@ -528,7 +538,7 @@ void ClothRenderer::upload_decorations(Scene& scene) {
   gl_->ground_vertex_count = static_cast<GLsizei>(vertices.size());
   gl_->support_first = static_cast<GLsizei>(vertices.size());
   const Eigen::Vector3f support_colour(0.95f, 0.85f, 0.25f);
-  for (const Eigen::Vector3d& support : support_points(s.span_mm, p.shape)) {
+  for (const Eigen::Vector3d& support : supports) {
     vertices.push_back({to_world(support.cast<float>()), support_colour});
   }
   gl_->support_count = static_cast<GLsizei>(vertices.size()) - gl_->support_first;
