@@ -227,6 +227,12 @@ TEST_F(GuiTest, RenderRejectsBadInputWithExitTwo) {
   const RunResult bad_size = foldlab::testing::run_process(
       kExecutable, {"render", "--out", out.string(), "--size", "12x7"}, dir_, environment());
   EXPECT_EQ(bad_size.exit_status, 2);
+  // A switch given a word is told what a switch takes.
+  const RunResult bad_switch = foldlab::testing::run_process(
+      kExecutable, {"render", "--out", out.string(), "--view", "lod=yes"}, dir_, environment());
+  EXPECT_EQ(bad_switch.exit_status, 2);
+  EXPECT_NE(bad_switch.err.find("lod = 'yes' must be 0 or 1"), std::string::npos)
+      << bad_switch.err;
   EXPECT_FALSE(fs::exists(out));
 }
 

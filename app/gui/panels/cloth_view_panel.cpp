@@ -1,6 +1,7 @@
 #include "app/gui/panels/cloth_view_panel.hpp"
 
 #include <algorithm>
+#include <string_view>
 
 #include <imgui.h>
 
@@ -61,7 +62,12 @@ std::optional<std::string> ClothViewPanel::set_view(std::string_view key, std::s
   }
   const std::optional<double> number = parse_number(value);
   if (!number) {
-    return detail::cut(key) + " = '" + detail::cut(value) + "' is not a number";
+    static constexpr std::string_view kSwitches[] = {"breeze", "wireframe",  "lod",
+                                                     "ground", "fold_lines", "full"};
+    const bool is_switch =
+        std::find(std::begin(kSwitches), std::end(kSwitches), key) != std::end(kSwitches);
+    return detail::cut(key) + " = '" + detail::cut(value) + "'" +
+           (is_switch ? " must be 0 or 1" : " is not a number");
   }
   // Scripted pictures name exact values: one outside what the panel's own controls allow is
   // refused, not moved to the nearest end, so that a typo shows rather than a different picture.
@@ -233,8 +239,8 @@ void ClothViewPanel::draw(Document& document, Renderer& renderer) {
     style_.print = static_cast<ClothStyle::Print>(print);
   }
   if (style_.print == ClothStyle::Print::photo) {
-    ImGui::SameLine();
-    ImGui::SetNextItemWidth(180.0f);
+    same_line_if_fits(ems(13.0f));
+    ImGui::SetNextItemWidth(ems(13.0f));
     if (ImGui::InputTextWithHint("##photo", "swatch PNG or JPEG path", photo_input_,
                                  sizeof photo_input_, ImGuiInputTextFlags_EnterReturnsTrue)) {
       photo_path_ = photo_input_;
@@ -245,19 +251,19 @@ void ClothViewPanel::draw(Document& document, Renderer& renderer) {
         "type its path and press Enter.");
   }
   if (style_.print != ClothStyle::Print::plain) {
-    ImGui::SameLine();
+    same_line_if_fits(ems(8.5f));
     ImGui::SetNextItemWidth(ems(8.5f));
     ImGui::SliderFloat("##print size", &style_.print_mm, 10.0f, 300.0f, "%.0f mm",
                        ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp);
   }
-  ImGui::SameLine();
+  same_line_if_fits(checkbox_width("breeze"));
   ImGui::Checkbox("breeze", &style_.breeze);
   if (style_.breeze) {
-    ImGui::SameLine();
+    same_line_if_fits(button_width(breeze_playing_ ? "pause" : "play"));
     if (ImGui::SmallButton(breeze_playing_ ? "pause" : "play")) {
       breeze_playing_ = !breeze_playing_;
     }
-    ImGui::SameLine();
+    same_line_if_fits(ems(7.5f));
     ImGui::SetNextItemWidth(ems(7.5f));
     ImGui::SliderFloat("##breeze", &style_.breeze_mm, 5.0f, 300.0f, "%.0f mm",
                        ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp);
@@ -265,8 +271,8 @@ void ClothViewPanel::draw(Document& document, Renderer& renderer) {
       style_.time_s += ImGui::GetIO().DeltaTime;  // the solver does not run: only the shader moves
     }
   }
-  ImGui::SameLine();
-  ImGui::SetNextItemWidth(90.0f);
+  same_line_if_fits(labelled_width(ems(6.5f), "colour by"));
+  ImGui::SetNextItemWidth(ems(6.5f));
   int colour_by = static_cast<int>(style_.colour_by);
   if (ImGui::Combo("colour by", &colour_by, "fabric\0z\0fold sign\0")) {
     style_.colour_by = static_cast<ClothStyle::ColourBy>(colour_by);
@@ -307,10 +313,11 @@ void ClothViewPanel::draw(Document& document, Renderer& renderer) {
     camera_.zoom(io.MouseWheel);
   }
   renderer.draw_cloth(ImGui::GetWindowDrawList(), origin, scene, camera_, size, style_);
+  // Wrapped inside the view, so that a narrow view keeps it off the colour bar beside it.
   ImGui::GetWindowDrawList()->AddText(
-      ImVec2(origin.x + 6, origin.y + 4),
+      ImGui::GetFont(), ImGui::GetFontSize(), ImVec2(origin.x + 6, origin.y + 4),
       light ? IM_COL32(60, 60, 60, 220) : IM_COL32(200, 200, 200, 200),
-      "drag: orbit, right-drag: pan, wheel: zoom");
+      "drag: orbit, right-drag: pan, wheel: zoom", nullptr, static_cast<float>(size.width) - 12.0f);
   if (bar_width > 0.0f) {
     draw_colour_bar(ImVec2(origin.x + static_cast<float>(size.width), origin.y),
                     static_cast<float>(size.height), scene.solution().z_max_mm);

@@ -51,6 +51,8 @@ void same_line_if_fits(float width);
 // The width of a checkbox, button or small button with this label.
 float checkbox_width(const char* label);
 float button_width(const char* label);
+// The width of a `item_width` wide slider, combo or field followed by its label (none for "##").
+float labelled_width(float item_width, const char* label);
 
 // A dim hint after the last item: on its line when it fits there, else below it, wrapped.
 void hint_after(const char* text);
