@@ -231,9 +231,22 @@ TEST_F(GuiTest, RenderRejectsBadInputWithExitTwo) {
   const RunResult bad_switch = foldlab::testing::run_process(
       kExecutable, {"render", "--out", out.string(), "--view", "lod=yes"}, dir_, environment());
   EXPECT_EQ(bad_switch.exit_status, 2);
-  EXPECT_NE(bad_switch.err.find("lod = 'yes' must be 0 or 1"), std::string::npos)
-      << bad_switch.err;
+  EXPECT_NE(bad_switch.err.find("lod = 'yes' must be 0 or 1"), std::string::npos) << bad_switch.err;
+  // Every refused view setting is named, not only the first.
+  const RunResult three = foldlab::testing::run_process(
+      kExecutable,
+      {"render", "--out", out.string(), "--view", "foo=1", "--view", "grid=1", "--view", "z=99"},
+      dir_, environment());
+  EXPECT_EQ(three.exit_status, 2);
+  for (const char* named : {"'foo'", "grid = '1'", "z = 99"}) {
+    EXPECT_NE(three.err.find(named), std::string::npos) << named << "\n" << three.err;
+  }
   EXPECT_FALSE(fs::exists(out));
+  // Bad inputs to the window are input errors even with no display to open it on.
+  const RunResult no_display =
+      foldlab::testing::run_process(kExecutable, {"gui", "--set", "t=-1"}, dir_, environment());
+  EXPECT_EQ(no_display.exit_status, 2) << no_display.err;
+  EXPECT_NE(no_display.err.find("t_mm = -1 must be"), std::string::npos) << no_display.err;
 }
 
 bool have_xvfb() {

@@ -43,8 +43,9 @@ class ImGuiContextGuard {
   std::string ini_path_;
 };
 
-// --view KEY=VALUE settings, in order.
+// --view KEY=VALUE settings, in order; every one refused is named, one a line.
 void apply_view_settings(Explorer& explorer, const std::vector<std::string>& settings) {
+  std::string problems;
   for (const std::string& setting : settings) {
     const std::size_t eq = setting.find('=');
     const std::optional<std::string> problem =
@@ -52,8 +53,11 @@ void apply_view_settings(Explorer& explorer, const std::vector<std::string>& set
                                 : explorer.set_view(std::string_view(setting).substr(0, eq),
                                                     std::string_view(setting).substr(eq + 1));
     if (problem) {
-      throw app::InputError("--view " + *problem);
+      problems += (problems.empty() ? "--view " : "\n--view ") + *problem;
     }
+  }
+  if (!problems.empty()) {
+    throw app::InputError(problems);
   }
 }
 
@@ -148,9 +152,8 @@ std::optional<InputPlayer> read_script(const GuiRunOptions& options) {
   return player;
 }
 
-int run(Surface& surface, const GuiRunOptions& options, bool interactive,
+int run(Surface& surface, const GuiRunOptions& options, const Preset& preset, bool interactive,
         std::optional<InputPlayer> player) {
-  const Preset preset = app::resolve_inputs(options.inputs);
   std::optional<AnimatedInput> animation;
   if (!options.animate_key.empty()) {
     animation.emplace(options.animate_key, preset.parameters);
@@ -206,19 +209,23 @@ int run(Surface& surface, const GuiRunOptions& options, bool interactive,
 
 }  // namespace
 
+// The inputs and the script are checked before any window opens: a mistake in them is exit 2
+// wherever the explorer runs, with or without a display.
 int run_window(const GuiRunOptions& options) {
   std::optional<InputPlayer> player = read_script(options);
+  const Preset preset = app::resolve_inputs(options.inputs);
   SurfaceOptions surface_options{options.width, options.height,
                                  options.frames == 0 && options.play_path.empty()};
   std::unique_ptr<Surface> surface = make_window_surface(surface_options);
-  return run(*surface, options, true, std::move(player));
+  return run(*surface, options, preset, true, std::move(player));
 }
 
 int run_headless(const GuiRunOptions& options) {
   std::optional<InputPlayer> player = read_script(options);
+  const Preset preset = app::resolve_inputs(options.inputs);
   SurfaceOptions surface_options{options.width, options.height, false};
   std::unique_ptr<Surface> surface = make_headless_surface(surface_options);
-  return run(*surface, options, false, std::move(player));
+  return run(*surface, options, preset, false, std::move(player));
 }
 
 }  // namespace foldlab::gui

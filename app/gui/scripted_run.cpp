@@ -109,7 +109,7 @@ int ScriptedRun::exit_status() const {
   if (!player_ || player_->exit_status() == app::kExitOk) {
     return app::kExitOk;
   }
-  std::cerr << "foldlab gui --play: " << player_->failure() << "\n";
+  std::cerr << "foldlab: --play: " << player_->failure() << "\n";  // gui and render alike
   return player_->exit_status();
 }
 
