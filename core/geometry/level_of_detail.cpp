@@ -55,6 +55,9 @@ std::optional<ScreenLine> screen_line(int count, Vertex vertex,
     }
     float scale = 0.0f;
     for (int axis = 0; axis < 3; ++axis) {
+      if (world_scale[axis] == 0.0f) {
+        continue;  // a flattened axis has no millimetre to show
+      }
       const Eigen::Vector3f one_mm = Eigen::Vector3f::Unit(axis) / world_scale[axis];
       const std::optional<Eigen::Vector2f> moved =
           to_pixel(model + one_mm, model_to_clip, viewport_px);
