@@ -73,7 +73,7 @@ void main() {
 // One program per surface colouring (the fabric plain, the fabric printed, by z, by fold sign):
 // llvmpipe runs both sides of a branch on every pixel, so the texture lookup and the colour map
 // are compiled only into the variants that show them. Gamma 2 (a square and a square root) stands
-// for the display's 2.2: the pow() calls were a third of the cloth's cost on llvmpipe.
+// for the display's 2.2: the pow() calls were about a quarter of the cloth's cost on llvmpipe.
 constexpr const char* kMeshFragment = R"(
 in vec3 world_normal;
 in vec3 world_position;
