@@ -513,9 +513,19 @@ std::optional<std::string> apply_setting(Parameters& p, std::string_view key,
            (units.size() > 1 ? " (with an optional unit: " + detail::join(units, ", ") + ")" : "");
   }
   switch (spec->kind) {
-    case InputKind::stiffness_K:
-      set_stiffness_constant_K(p, *number);
+    case InputKind::stiffness_K: {
+      // K is stored as c: a K that makes c invalid is named as K, and c is left as it was.
+      Parameters trial = p;
+      set_stiffness_constant_K(trial, *number);
+      const InputSpec* c = find_input("c");
+      if (c != nullptr && !c->valid.contains(c->number(trial))) {
+        return std::string(key) + " = " + detail::shortest_number(*number) +
+               " gives c = K (1 - nu²) = " + detail::shortest_number(c->number(trial)) +
+               ", outside c's range " + c->valid.text();
+      }
+      p = trial;
       break;
+    }
     case InputKind::whole_number:
       if (*number != std::floor(*number) || std::abs(*number) > 1e9) {
         return std::string(key) + " = '" + detail::cut(value) + "' must be a whole number";
