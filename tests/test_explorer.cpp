@@ -1179,6 +1179,20 @@ TEST_F(ExplorerTest, TheLayoutsWidthsFollowTheUiScale) {
   EXPECT_FLOAT_EQ(width_of("parameters"), 768.0f);
 }
 
+// A large UI scale in a small window: the fold plot keeps a data area of several font sizes (the
+// panel scrolls) instead of drawing its axis labels and legend over a sliver.
+TEST_F(ExplorerTest, TheFoldPlotKeepsItsSizeAtALargeUiScale) {
+  ImGuiIO& io = ImGui::GetIO();
+  io.DisplaySize = ImVec2(1280, 800);
+  ASSERT_EQ(explorer_->set_view("scale", "250"), std::nullopt);
+  for (int i = 0; i < 3; ++i) {
+    frame();
+  }
+  const PlotView& view = explorer_->fold_plot().plot_view();
+  EXPECT_GT(view.max.y - view.min.y, 5.0f * ImGui::GetFontSize());
+  EXPECT_GE(view.legend_min.y, view.max.y);  // the legend below the data, not over it
+}
+
 TEST_F(ExplorerTest, APanelTheUserMovesStaysUntilResetLayout) {
   ImGuiIO& io = ImGui::GetIO();
   frame();

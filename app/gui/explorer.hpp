@@ -67,6 +67,7 @@ class Explorer {
   const AnalysisPanel& analysis() const { return analysis_; }
   const PresetsPanel& presets() const { return presets_; }
   const ParametersPanel& parameters_panel() const { return parameters_; }
+  const FoldPlotPanel& fold_plot() const { return fold_plot_; }
   PhotoOverlay& photo() { return photo_; }
   const PhotoOverlay& photo() const { return photo_; }
   Appearance& appearance() { return appearance_; }

@@ -41,7 +41,10 @@ void FoldPlotPanel::draw(Document& document, Renderer& renderer, PhotoOverlay& p
       }
     }
   }
-  if (plot_.begin("fold lines", ImVec2(0.0f, 0.0f), PlotAxis{"x (mm)", false, false},
+  // At a large UI scale in a small window the panel scrolls rather than squash the plot under its
+  // own axis labels and legend.
+  const float height = std::max(ems(14.0f), ImGui::GetContentRegionAvail().y);
+  if (plot_.begin("fold lines", ImVec2(0.0f, height), PlotAxis{"x (mm)", false, false},
                   PlotAxis{"y (mm, down)", true, false})) {
     if (autoscale_) {
       plot_.request_autoscale();

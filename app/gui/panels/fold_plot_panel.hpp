@@ -17,6 +17,8 @@ class FoldPlotPanel {
  public:
   // `photo` adds its buttons, its backdrop and its clicks to the plot.
   void draw(Document& document, Renderer& renderer, PhotoOverlay& photo);
+  // Where the plot was drawn last (its data area and legend, screen pixels).
+  const PlotView& plot_view() const { return plot_.view(); }
 
  private:
   Plot plot_;
