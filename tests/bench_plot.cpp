@@ -9,20 +9,13 @@
 #include <vector>
 
 #include "app/gui/plot_widget.hpp"
+#include "headless_imgui.hpp"
 
 namespace {
 
 void BM_FoldPlotTwentyLines(benchmark::State& state) {
-  ImGuiContext* context = ImGui::CreateContext();
-  ImGuiIO& io = ImGui::GetIO();
-  io.DisplaySize = ImVec2(800, 600);
-  io.DeltaTime = 1.0f / 60.0f;
-  io.IniFilename = nullptr;
-  unsigned char* pixels = nullptr;
-  int width = 0, height = 0;
-  io.Fonts->GetTexDataAsRGBA32(&pixels, &width, &height);
-  io.Fonts->SetTexID(reinterpret_cast<ImTextureID>(static_cast<std::intptr_t>(1)));
-  io.MousePos = ImVec2(300, 200);  // the hover search runs every frame
+  ImGuiContext* context = foldlab::testing::create_headless_imgui(ImVec2(800, 600));
+  ImGui::GetIO().MousePos = ImVec2(300, 200);  // the hover search runs every frame
   std::vector<std::vector<double>> xs(20), ys(20);
   for (std::size_t k = 0; k < 20; ++k) {
     for (int i = 0; i < 200; ++i) {

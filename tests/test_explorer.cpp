@@ -31,6 +31,7 @@
 #include "core/io/preset.hpp"
 #include "core/model/settings.hpp"
 #include "fold_photo.hpp"
+#include "headless_imgui.hpp"
 #include "temp_dir.hpp"
 
 namespace foldlab::gui {
@@ -45,17 +46,8 @@ class ExplorerTest : public foldlab::testing::TempDirTest {
 
   void SetUp() override {
     TempDirTest::SetUp();
-    context_ = ImGui::CreateContext();
-    ImGuiIO& io = ImGui::GetIO();
-    io.IniFilename = nullptr;
-    io.DisplaySize = ImVec2(1280, 800);
-    io.DeltaTime = 1.0f / 60.0f;
-    io.KeyMap[ImGuiKey_Escape] = kEscape;
-    unsigned char* pixels = nullptr;
-    int w = 0;
-    int h = 0;
-    io.Fonts->GetTexDataAsRGBA32(&pixels, &w, &h);
-    io.Fonts->SetTexID(reinterpret_cast<ImTextureID>(static_cast<std::intptr_t>(1)));
+    context_ = foldlab::testing::create_headless_imgui(ImVec2(1280, 800));
+    ImGui::GetIO().KeyMap[ImGuiKey_Escape] = kEscape;
     open_explorer("equations");
   }
 

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "app/gui/plot_widget.hpp"
+#include "headless_imgui.hpp"
 
 namespace foldlab::gui {
 namespace {
@@ -63,7 +64,7 @@ TEST(PlotTicks, TinyAndHugeRanges) {
   } cases[] = {{0, 1e-9, 5},       {1.0, 1.0 + 1e-10, 5}, {-3e-7, -1e-7, 4},  {0, 3e12, 6},
                {-1e308, 1e308, 5}, {1399.9, 1400.3, 7},   {-0.013, 0.0021, 6}};
   for (const auto& c : cases) {
-    SCOPED_TRACE(testing::Message() << "[" << c.lo << ", " << c.hi << "] target " << c.target);
+    SCOPED_TRACE(::testing::Message() << "[" << c.lo << ", " << c.hi << "] target " << c.target);
     const std::vector<double> t = nice_ticks(c.lo, c.hi, c.target);
     ASSERT_GE(t.size(), 2u);
     EXPECT_LE(t.size(), static_cast<std::size_t>(2 * c.target + 1));
@@ -117,19 +118,11 @@ struct Vertex {
   ImVec4 clip;
 };
 
-class PlotWidget : public testing::Test {
+class PlotWidget : public ::testing::Test {
  protected:
   void SetUp() override {
-    context_ = ImGui::CreateContext();
-    ImGuiIO& io = ImGui::GetIO();
-    io.DisplaySize = ImVec2(800, 600);
-    io.DeltaTime = 1.0f / 60.0f;
-    io.IniFilename = nullptr;
-    unsigned char* pixels = nullptr;
-    int w = 0, h = 0;
-    io.Fonts->GetTexDataAsRGBA32(&pixels, &w, &h);
-    io.Fonts->SetTexID(reinterpret_cast<ImTextureID>(static_cast<std::intptr_t>(1)));
-    io.MousePos = ImVec2(-FLT_MAX, -FLT_MAX);
+    context_ = foldlab::testing::create_headless_imgui(ImVec2(800, 600));
+    ImGui::GetIO().MousePos = ImVec2(-FLT_MAX, -FLT_MAX);
   }
   void TearDown() override { ImGui::DestroyContext(context_); }
 
@@ -591,7 +584,7 @@ TEST_F(PlotWidget, TheLegendCoversNoDataPointAtAnyWidth) {
   const std::vector<double> cx{-650, 0, 650}, cy{0, 1400, 0};  // a sag between the supports
   constexpr float kMarkerRadius = 5.0f;
   for (const float width : {600.0f, 240.0f, 130.0f}) {
-    SCOPED_TRACE(testing::Message() << "plot " << width << " px wide");
+    SCOPED_TRACE(::testing::Message() << "plot " << width << " px wide");
     frame([&] {
       ASSERT_TRUE(plot_.begin("plot", ImVec2(width, 300), x_axis_, y_axis_));
       plot_.line("positive fold", cx, cy, kColA);

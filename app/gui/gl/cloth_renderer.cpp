@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "app/gui/colour_map.hpp"
+#include "app/gui/gl/mipmapped_texture.hpp"
 #include "core/geometry/fold_occlusion.hpp"
 #include "core/geometry/level_of_detail.hpp"
 
@@ -19,11 +20,14 @@ namespace {
 
 // Model coordinates have y pointing down (gravity); the view's world has +Y up. z may be drawn
 // exaggerated; a normal then scales by the inverse (the inverse transpose of the stretch).
+Eigen::Vector3f world_scale(float z_scale) {
+  return {1.0f, -1.0f, z_scale};
+}
 Eigen::Vector3f to_world(const Eigen::Vector3f& model, float z_scale = 1.0f) {
-  return {model.x(), -model.y(), z_scale * model.z()};
+  return model.cwiseProduct(world_scale(z_scale));
 }
 Eigen::Vector3f normal_to_world(const Eigen::Vector3f& normal, float z_scale) {
-  return Eigen::Vector3f(normal.x(), -normal.y(), normal.z() / z_scale).normalized();
+  return normal.cwiseQuotient(world_scale(z_scale)).normalized();
 }
 
 // foldlab::breeze_offset (core/src/geometry.cpp) on the GPU, in world coordinates (y up): both
@@ -285,26 +289,6 @@ Tile stripes_tile(const Eigen::Vector3f& base) {
   return tile;
 }
 
-// Mip-mapped and, where the driver has the extension, anisotropically filtered: a print seen at a
-// grazing angle on a fine fold averages its texels instead of aliasing into moire.
-void upload_tile(GLuint texture, int width, int height, const std::uint8_t* rgba) {
-  glBindTexture(GL_TEXTURE_2D, texture);
-  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, width, height, 0, GL_RGBA, GL_UNSIGNED_BYTE, rgba);
-  glGenerateMipmap(GL_TEXTURE_2D);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_REPEAT);
-  if (epoxy_has_gl_extension("GL_EXT_texture_filter_anisotropic") ||
-      epoxy_has_gl_extension("GL_ARB_texture_filter_anisotropic")) {
-    GLfloat most = 1.0f;
-    glGetFloatv(GL_MAX_TEXTURE_MAX_ANISOTROPY_EXT, &most);
-    glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_MAX_ANISOTROPY_EXT, std::min(most, 16.0f));
-  }
-  glBindTexture(GL_TEXTURE_2D, 0);
-}
-
 void describe_vertex_layout() {
   glEnableVertexAttribArray(0);
   glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(Vertex), nullptr);
@@ -467,14 +451,13 @@ void ClothRenderer::upload_mesh(Scene& scene, float z_scale, const DrawnLattice&
   glBindBuffer(GL_ARRAY_BUFFER, gl_->mesh_vbo);
   glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(vertices.size() * sizeof(MeshVertex)),
                vertices.data(), GL_DYNAMIC_DRAW);
-  if (columns != mesh_columns_ || rows != mesh_rows_) {
+  if (lattice.columns.size() != mesh_lattice_.columns.size() ||
+      lattice.rows.size() != mesh_lattice_.rows.size()) {
     const std::vector<std::uint32_t> indices = lattice_triangles(columns, rows);
     glBufferData(GL_ELEMENT_ARRAY_BUFFER,
                  static_cast<GLsizeiptr>(indices.size() * sizeof(std::uint32_t)), indices.data(),
                  GL_STATIC_DRAW);
     gl_->mesh_index_count = static_cast<GLsizei>(indices.size());
-    mesh_columns_ = columns;
-    mesh_rows_ = rows;
   }
   glBindVertexArray(0);
   mesh_z_scale_ = z_scale;
@@ -571,12 +554,12 @@ void ClothRenderer::update_print(const ClothStyle& style) {
   print_colour_ = style.front_colour;
   print_photo_ = photo ? style.photo.get() : nullptr;
   if (photo) {
-    upload_tile(gl_->print_texture, style.photo->width, style.photo->height,
-                style.photo->rgba.data());
+    upload_mipmapped(gl_->print_texture, style.photo->width, style.photo->height,
+                     style.photo->rgba.data(), true);
   } else if (kind == 1 || kind == 2) {
     const Tile tile =
         kind == 1 ? checks_tile(style.front_colour) : stripes_tile(style.front_colour);
-    upload_tile(gl_->print_texture, tile.width, tile.height, tile.rgba.data());
+    upload_mipmapped(gl_->print_texture, tile.width, tile.height, tile.rgba.data(), true);
   }
 }
 
@@ -668,11 +651,10 @@ unsigned ClothRenderer::render(Scene& scene, const OrbitCamera& camera, FrameSiz
   // wireframe shows the grid as it is; otherwise the cells are a few pixels (level_of_detail.hpp).
   scene.normals();
   const DeformedGrid& grid = scene.grid();
-  const Eigen::Vector3f world_scale(1.0f, -1.0f, style.z_exaggeration);  // to_world()
+  const Eigen::Vector3f scale = world_scale(style.z_exaggeration);
   const Eigen::Matrix4f model_to_clip =
-      view_projection * Eigen::Vector4f(world_scale.x(), world_scale.y(), world_scale.z(), 1.0f)
-                            .asDiagonal()
-                            .toDenseMatrix();
+      view_projection *
+      Eigen::Vector4f(scale.x(), scale.y(), scale.z(), 1.0f).asDiagonal().toDenseMatrix();
   const DrawnLattice lattice =
       style.wireframe || !style.level_of_detail
           ? full_lattice(grid)
@@ -680,7 +662,7 @@ unsigned ClothRenderer::render(Scene& scene, const OrbitCamera& camera, FrameSiz
                           screen_spacing(grid, model_to_clip,
                                          Eigen::Vector2f(static_cast<float>(size.width),
                                                          static_cast<float>(size.height)),
-                                         world_scale),
+                                         scale),
                           scene.solution().n);
   if (scene.version(Stage::normals) != mesh_version_ || mesh_z_scale_ != style.z_exaggeration ||
       lattice.columns != mesh_lattice_.columns || lattice.rows != mesh_lattice_.rows) {

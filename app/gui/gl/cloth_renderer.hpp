@@ -50,9 +50,7 @@ class ClothRenderer {
   std::uint64_t fold_line_version_ = ~std::uint64_t{0};
   std::uint64_t decoration_version_ = ~std::uint64_t{0};
   float mesh_z_scale_ = -1.0f;  // the exaggeration the uploaded buffers were made with
-  DrawnLattice mesh_lattice_;   // the rows and columns of the grid uploaded
-  int mesh_columns_ = 0;        // the lattice the index buffer holds
-  int mesh_rows_ = 0;
+  DrawnLattice mesh_lattice_;   // the rows and columns of the grid uploaded (and indexed)
   float lines_z_scale_ = -1.0f;
   Eigen::Vector3f uploaded_positive_{-1, -1, -1};
   Eigen::Vector3f uploaded_negative_{-1, -1, -1};

@@ -8,6 +8,7 @@
 
 #include "app/gui/gl/cloth_renderer.hpp"
 #include "app/gui/gl/fast_fill.hpp"
+#include "app/gui/gl/mipmapped_texture.hpp"
 #include "app/gui/renderer.hpp"
 #include "backends/imgui_impl_opengl3.h"
 
@@ -88,14 +89,7 @@ class GlRenderer final : public Renderer {
 
   void update_photo(int image, int width, int height, const std::uint32_t* rgba) override {
     const auto i = static_cast<std::size_t>(image);
-    glBindTexture(GL_TEXTURE_2D, textures_[i]);
-    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, width, height, 0, GL_RGBA, GL_UNSIGNED_BYTE, rgba);
-    glGenerateMipmap(GL_TEXTURE_2D);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    upload_mipmapped(textures_[i], width, height, rgba, false);
     sizes_[i] = {width, height};
   }
 

@@ -60,72 +60,55 @@ std::optional<std::string> ClothViewPanel::set_view(std::string_view key, std::s
     }
     return "colour_by = '" + detail::cut(value) + "' is not one of: none, z, fold_sign";
   }
+  // One row a key: the switches (0 or 1) and the numbers with their range. Scripted pictures
+  // name exact values: one outside what the panel's own controls allow is refused, not moved to
+  // the nearest end, so that a typo shows rather than a different picture.
+  const std::pair<std::string_view, bool*> switches[] = {
+      {"breeze", &style_.breeze},       {"wireframe", &style_.wireframe},
+      {"lod", &style_.level_of_detail}, {"fold_lines", &style_.fold_lines},
+      {"ground", &style_.ground},       {"full", &fill_display_}};
+  struct NumberRow {
+    std::string_view key;
+    float* field;
+    double lo;
+    double hi;
+    const char* unit;
+  };
+  const NumberRow numbers[] = {{"breeze_mm", &style_.breeze_mm, 0.0, 300.0, " mm"},
+                               {"time", &style_.time_s, 0.0, 1e6, " s"},
+                               {"z", &style_.z_exaggeration, 1.0, 20.0, " (times)"},
+                               {"print_mm", &style_.print_mm, 10.0, 300.0, " mm"}};
   const std::optional<double> number = parse_number(value);
-  if (!number) {
-    static constexpr std::string_view kSwitches[] = {"breeze", "wireframe",  "lod",
-                                                     "ground", "fold_lines", "full"};
-    const bool is_switch =
-        std::find(std::begin(kSwitches), std::end(kSwitches), key) != std::end(kSwitches);
-    return detail::cut(key) + " = '" + detail::cut(value) + "'" +
-           (is_switch ? " must be 0 or 1" : " is not a number");
-  }
-  // Scripted pictures name exact values: one outside what the panel's own controls allow is
-  // refused, not moved to the nearest end, so that a typo shows rather than a different picture.
-  const double x = *number;
-  const auto in = [&](double lo, double hi, const char* unit) -> std::optional<std::string> {
-    if (x >= lo && x <= hi) {
+  for (const auto& [name, field] : switches) {
+    if (key == name) {
+      if (number != 0.0 && number != 1.0) {
+        return detail::cut(key) + " = '" + detail::cut(value) + "' must be 0 or 1";
+      }
+      *field = number == 1.0;
       return std::nullopt;
     }
-    return detail::cut(key) + " = " + detail::shortest_number(x) + " must be in [" +
-           detail::shortest_number(lo) + ", " + detail::shortest_number(hi) + "]" + unit;
-  };
-  const auto switch_value = [&](bool& field) -> std::optional<std::string> {
-    if (x != 0.0 && x != 1.0) {
-      return detail::cut(key) + " = " + detail::shortest_number(x) + " must be 0 or 1";
-    }
-    field = x == 1.0;
-    return std::nullopt;
-  };
-  const float v = static_cast<float>(x);
-  if (key == "breeze") {
-    return switch_value(style_.breeze);
-  } else if (key == "breeze_mm") {
-    if (auto problem = in(0.0, 300.0, " mm")) {
-      return problem;
-    }
-    style_.breeze_mm = v;
-  } else if (key == "time") {
-    if (auto problem = in(0.0, 1e6, " s")) {
-      return problem;
-    }
-    style_.time_s = v;
-    breeze_playing_ = false;  // a scripted picture shows that instant
-  } else if (key == "z") {
-    if (auto problem = in(1.0, 20.0, " (times)")) {
-      return problem;
-    }
-    style_.z_exaggeration = v;
-  } else if (key == "wireframe") {
-    return switch_value(style_.wireframe);
-  } else if (key == "lod") {
-    return switch_value(style_.level_of_detail);
-  } else if (key == "fold_lines") {
-    return switch_value(style_.fold_lines);
-  } else if (key == "ground") {
-    return switch_value(style_.ground);
-  } else if (key == "print_mm") {
-    if (auto problem = in(10.0, 300.0, " mm")) {
-      return problem;
-    }
-    style_.print_mm = v;
-  } else if (key == "full") {
-    return switch_value(fill_display_);
-  } else {
-    return "unknown view key '" + detail::cut(key) +
-           "' (known: sweep, theme, scale, grid, print, print_file, print_mm, colour_by, breeze, "
-           "breeze_mm, time, z, wireframe, lod, fold_lines, ground, full)";
   }
-  return std::nullopt;
+  for (const NumberRow& row : numbers) {
+    if (key != row.key) {
+      continue;
+    }
+    if (!number) {
+      return detail::cut(key) + " = '" + detail::cut(value) + "' is not a number";
+    }
+    if (!(*number >= row.lo && *number <= row.hi)) {
+      return detail::cut(key) + " = " + detail::shortest_number(*number) + " must be in [" +
+             detail::shortest_number(row.lo) + ", " + detail::shortest_number(row.hi) + "]" +
+             row.unit;
+    }
+    *row.field = static_cast<float>(*number);
+    if (row.field == &style_.time_s) {
+      breeze_playing_ = false;  // a scripted picture shows that instant
+    }
+    return std::nullopt;
+  }
+  return "unknown view key '" + detail::cut(key) +
+         "' (known: sweep, theme, scale, grid, print, print_file, print_mm, colour_by, breeze, "
+         "breeze_mm, time, z, wireframe, lod, fold_lines, ground, full)";
 }
 
 float ClothViewPanel::colour_bar_width() {
