@@ -226,6 +226,18 @@ TEST(Regimes, NCycleReportsTheSmallerN) {
   EXPECT_NE(describe(s, p).find("1 2"), std::string::npos);
 }
 
+// The message counts the iterations as the loop ran them (a whole number, checked by -Wformat).
+TEST(Regimes, IterationCapMessageCountsTheIterations) {
+  Parameters p = preset_parameters("paper-table1-h1400", Method::paper);
+  p.model.length_tolerance = 1e-12;
+  p.model.max_iterations = 3;
+  const Solution s = solve(p);
+  ASSERT_TRUE(s.hit_iteration_cap);
+  const std::string text = describe(s, p);
+  EXPECT_NE(text.find("stopped after 3 iterations"), std::string::npos) << text;
+  EXPECT_EQ(text.find('\0'), std::string::npos);
+}
+
 TEST(Robustness, ExtremeInputsNeverGiveNaN) {
   const double thicknesses[] = {0.001, 0.01, 1.0, 50.0};
   const double moduli[] = {0.01, 1.0, 1e3, 1e6};

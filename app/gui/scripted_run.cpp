@@ -41,7 +41,7 @@ AnimatedInput::AnimatedInput(const std::string& key, const Parameters& base) : k
     const double v =
         along(spec.typical_lo, spec.typical_hi, logarithmic_, static_cast<double>(i) / kProbes);
     Parameters p = base;
-    if (set_numeric_setting(p, key, v) && validate(p).empty()) {
+    if (!set_input(p, key, v) && validate(p).empty()) {
       first = first.value_or(v);
       last = v;
     }

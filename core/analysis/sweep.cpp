@@ -43,8 +43,7 @@ bool natural_log_scale(const std::string& key) {
 // The sweepable keys only; the key -> field table itself lives in settings.cpp.
 bool set_number(Parameters& p, const std::string& key, double value) {
   const std::vector<std::string>& keys = sweepable_keys();
-  return std::find(keys.begin(), keys.end(), key) != keys.end() &&
-         set_numeric_setting(p, key, value);
+  return std::find(keys.begin(), keys.end(), key) != keys.end() && !set_input(p, key, value);
 }
 
 double get_number(const Parameters& p, const std::string& key) {

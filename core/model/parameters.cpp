@@ -67,6 +67,11 @@ std::vector<ValidationIssue> validate(const Parameters& p) {
       check_range(issues, spec.field, *spec.value(p), spec.valid, spec.why);
     }
   }
+  // c is what K is stored as: whoever set K reads it by that name too.
+  if (!issues.empty() && issues.back().field == "c") {
+    issues.back().message +=
+        " (K = c / (1 - nu²) = " + shortest_number(stiffness_constant_K(p)) + ")";
+  }
   const double L = p.hanging.length_mm;
   const double d = p.hanging.support_displacement_mm;
   if (find_input("L")->valid.contains(L) && find_input("d")->valid.contains(d)) {

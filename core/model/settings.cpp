@@ -430,7 +430,7 @@ InputInterval slider_interval(const InputSpec& spec, const Parameters& p) {
   const std::size_t allowed = validate(p).size();
   const auto accepted = [&](double v) {
     Parameters trial = p;
-    return set_numeric_setting(trial, spec.key, v) && validate(trial).size() <= allowed;
+    return !set_input(trial, spec.key, v) && validate(trial).size() <= allowed;
   };
   if (!accepted(*current)) {
     return typical;
@@ -458,17 +458,34 @@ InputInterval slider_interval(const InputSpec& spec, const Parameters& p) {
   return out;
 }
 
-bool set_numeric_setting(Parameters& p, std::string_view key, double value) {
+std::optional<std::string> set_input(Parameters& p, std::string_view key, double value) {
   const InputSpec* spec = find_input(key);
-  if (spec != nullptr && spec->kind == InputKind::number) {
-    spec->number(p) = value;
-    return true;
+  if (spec == nullptr) {
+    std::vector<std::string_view> known;
+    for (const InputSpec& k : input_table()) {
+      known.push_back(k.key);
+    }
+    return "unknown key '" + detail::cut(key) + "' (known: " + detail::join(known, ", ") + ")";
   }
-  if (spec != nullptr && spec->kind == InputKind::stiffness_K) {
-    set_stiffness_constant_K(p, value);
-    return true;
+  switch (spec->kind) {
+    case InputKind::choice:
+      return std::string(key) + " takes one of: " + std::string(spec->choices) + ", not a number";
+    case InputKind::stiffness_K:
+      // Stored as c; a K that puts c out of range is then named by validate(), as every range is.
+      set_stiffness_constant_K(p, value);
+      return std::nullopt;
+    case InputKind::whole_number:
+      if (value != std::floor(value) || std::abs(value) > 1e9) {
+        return std::string(key) + " = " + detail::shortest_number(value) +
+               " must be a whole number";
+      }
+      spec->whole_number(p) = static_cast<int>(value);
+      return std::nullopt;
+    case InputKind::number:
+      break;
   }
-  return false;
+  spec->number(p) = value;
+  return std::nullopt;
 }
 
 std::optional<double> numeric_setting(const Parameters& p, std::string_view key) {
@@ -482,19 +499,15 @@ std::optional<double> numeric_setting(const Parameters& p, std::string_view key)
 std::optional<std::string> apply_setting(Parameters& p, std::string_view key,
                                          std::string_view value) {
   const InputSpec* spec = find_input(key);
-  if (spec == nullptr) {
-    std::vector<std::string_view> known;
-    for (const InputSpec& k : input_table()) {
-      known.push_back(k.key);
-    }
-    return "unknown key '" + detail::cut(key) + "' (known: " + detail::join(known, ", ") + ")";
-  }
-  if (spec->kind == InputKind::choice) {
+  if (spec != nullptr && spec->kind == InputKind::choice) {
     if (spec->set_choice(p, value)) {
       return std::nullopt;
     }
     return std::string(key) + " = '" + detail::cut(value) +
            "' is not one of: " + std::string(spec->choices);
+  }
+  if (spec == nullptr) {
+    return set_input(p, key, 0.0);  // the unknown-key sentence
   }
   const std::optional<double> number =
       spec->kind == InputKind::whole_number ? parse_number(value) : parse_quantity(*spec, value);
@@ -512,30 +525,7 @@ std::optional<std::string> apply_setting(Parameters& p, std::string_view key,
     return std::string(key) + " = '" + detail::cut(value) + "' is not a number" +
            (units.size() > 1 ? " (with an optional unit: " + detail::join(units, ", ") + ")" : "");
   }
-  switch (spec->kind) {
-    case InputKind::stiffness_K: {
-      // K is stored as c: a K that makes c invalid is named as K, and c is left as it was.
-      Parameters trial = p;
-      set_stiffness_constant_K(trial, *number);
-      const InputSpec* c = find_input("c");
-      if (c != nullptr && !c->valid.contains(c->number(trial))) {
-        return std::string(key) + " = " + detail::shortest_number(*number) +
-               " gives c = K (1 - nu²) = " + detail::shortest_number(c->number(trial)) +
-               ", outside c's range " + c->valid.text();
-      }
-      p = trial;
-      break;
-    }
-    case InputKind::whole_number:
-      if (*number != std::floor(*number) || std::abs(*number) > 1e9) {
-        return std::string(key) + " = '" + detail::cut(value) + "' must be a whole number";
-      }
-      spec->whole_number(p) = static_cast<int>(*number);
-      break;
-    default:
-      spec->number(p) = *number;
-  }
-  return std::nullopt;
+  return set_input(p, key, *number);
 }
 
 std::vector<std::string> apply_assignments(Parameters& p,

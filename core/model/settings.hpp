@@ -73,14 +73,16 @@ const InputSpec* find_input_by_field(std::string_view field);
 std::string input_label(const InputSpec& spec);
 
 // Sets one input from its text. Returns an error sentence for an unknown key or a value that is
-// not a number (or not one of the allowed names); range checks are validate()'s job. `K` sets c so
+// not a number (or not one of the allowed names); then set_input() stores it. `K` sets c so
 // that c / (1 - nu²) = K at the Poisson ratio in force: apply it after `nu`.
 std::optional<std::string> apply_setting(Parameters& p, std::string_view key,
                                          std::string_view value);
 
-// A numeric input by its key without going through text (K sets c at the current nu, as above).
-// False, or nullopt, for keys that do not name a real number (choices and whole numbers).
-bool set_numeric_setting(Parameters& p, std::string_view key, double value);
+// The one way a value reaches a field of Parameters, for text (apply_setting), sliders, sweeps,
+// scripts and map clicks alike. Stores the value and leaves range checks to validate(), so that a
+// refused value is kept as typed with its reason; an error sentence only for an unknown key, a
+// choice, or a whole number given a fraction. K sets c at the Poisson ratio in force.
+std::optional<std::string> set_input(Parameters& p, std::string_view key, double value);
 std::optional<double> numeric_setting(const Parameters& p, std::string_view key);
 
 // Applies "KEY=VALUE" assignments in order, except that every K comes after all the others

@@ -540,7 +540,7 @@ std::string describe(const Solution& s, const Parameters& p) {
   };
   if (s.hit_iteration_cap) {
     append(s.method == Method::paper
-               ? printf_string("The paper iteration stopped after %.0f iterations without reaching "
+               ? printf_string("The paper iteration stopped after %d iterations without reaching "
                                "|L'/L - 1| <= %.3g; the last iterate is shown and its z_max is "
                                "not a prediction.",
                                s.iterations, p.model.length_tolerance)

@@ -13,14 +13,10 @@
 
 namespace foldlab::detail {
 
-// snprintf into a std::string of exactly the right size.
-template <class... Args>
-std::string printf_string(const char* format, Args... args) {
-  const int size = std::snprintf(nullptr, 0, format, args...);
-  std::string out(static_cast<std::size_t>(std::max(0, size)), '\0');
-  std::snprintf(out.data(), out.size() + 1, format, args...);
-  return out;
-}
+// snprintf into a std::string of exactly the right size. A C variadic function rather than a
+// template so that the format attribute lets -Wformat check every call's arguments against its
+// format, as it checks printf's.
+[[gnu::format(printf, 1, 2)]] std::string printf_string(const char* format, ...);
 
 // The shortest text that reads back as exactly this double (5.0000001 stays 5.0000001).
 inline std::string shortest_number(double value) {

@@ -202,7 +202,7 @@ void ParametersPanel::input_slider(Document& document, const InputSpec& spec, fl
         SliderPlace{min, ImVec2(min.x + width, min.y + ImGui::GetFrameHeight()), fraction};
   }
   if (changed) {
-    set_numeric_setting(document.edited(), spec.key, value);
+    set_input(document.edited(), spec.key, value);
     document.commit();
   }
   if (is_refused) {
