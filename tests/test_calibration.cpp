@@ -47,12 +47,12 @@ bool contains(const std::string& haystack, const std::string& needle) {
 
 Measurement row(double t, double E, double w, double h, double L, double d) {
   Measurement m;
-  m.thickness_mm = t;
-  m.youngs_modulus_MPa = E;
-  m.weight_N_per_mm2 = w;
-  m.height_mm = h;
-  m.length_mm = L;
-  m.support_displacement_mm = d;
+  m.inputs.fabric.thickness_mm = t;
+  m.inputs.fabric.youngs_modulus_MPa = E;
+  m.inputs.fabric.weight_N_per_mm2 = w;
+  m.inputs.hanging.height_mm = h;
+  m.inputs.hanging.length_mm = L;
+  m.inputs.hanging.support_displacement_mm = d;
   return m;
 }
 
@@ -405,24 +405,24 @@ TEST(CalibrationMeasurements, ShippedFilesHoldThePapersTables) {
       const Measurement& m = set.rows[i];
       EXPECT_EQ(m.observed.n, n[i]) << i;
       EXPECT_EQ(m.observed.z_max_mm, z[i]) << i;
-      EXPECT_DOUBLE_EQ(m.height_mm, h[i]) << i;
-      EXPECT_DOUBLE_EQ(m.weight_N_per_mm2, w[i]) << i;
+      EXPECT_DOUBLE_EQ(m.inputs.hanging.height_mm, h[i]) << i;
+      EXPECT_DOUBLE_EQ(m.inputs.fabric.weight_N_per_mm2, w[i]) << i;
       if (i < 6) {
         EXPECT_EQ(m.observed.Q, Q[i]) << i;
         EXPECT_EQ(m.role, MeasurementRole::fit) << i;
       }
     }
     const Measurement& t2 = set.rows[3];
-    EXPECT_EQ(t2.length_mm, 900.0);
-    EXPECT_EQ(t2.support_displacement_mm, 85.0);
-    EXPECT_EQ(t2.thickness_mm, 0.35);
-    EXPECT_EQ(t2.youngs_modulus_MPa, 150.0);
+    EXPECT_EQ(t2.inputs.hanging.length_mm, 900.0);
+    EXPECT_EQ(t2.inputs.hanging.support_displacement_mm, 85.0);
+    EXPECT_EQ(t2.inputs.fabric.thickness_mm, 0.35);
+    EXPECT_EQ(t2.inputs.fabric.youngs_modulus_MPa, 150.0);
     const Measurement& fig4 = set.rows[6];
     EXPECT_EQ(fig4.role, MeasurementRole::check);
     EXPECT_FALSE(fig4.observed.Q);
-    EXPECT_EQ(fig4.support_displacement_mm, 100.0);
-    EXPECT_EQ(fig4.thickness_mm, 0.4);
-    EXPECT_EQ(fig4.youngs_modulus_MPa, 40.0);
+    EXPECT_EQ(fig4.inputs.hanging.support_displacement_mm, 100.0);
+    EXPECT_EQ(fig4.inputs.fabric.thickness_mm, 0.4);
+    EXPECT_EQ(fig4.inputs.fabric.youngs_modulus_MPa, 40.0);
   }
 }
 
@@ -453,12 +453,12 @@ void expect_same_rows(const MeasurementSet& a, const MeasurementSet& b) {
     EXPECT_EQ(x.group, y.group);
     EXPECT_EQ(x.role, y.role);
     EXPECT_EQ(x.shape, y.shape);
-    EXPECT_EQ(x.thickness_mm, y.thickness_mm);
-    EXPECT_EQ(x.youngs_modulus_MPa, y.youngs_modulus_MPa);
-    EXPECT_EQ(x.weight_N_per_mm2, y.weight_N_per_mm2);
-    EXPECT_EQ(x.height_mm, y.height_mm);
-    EXPECT_EQ(x.length_mm, y.length_mm);
-    EXPECT_EQ(x.support_displacement_mm, y.support_displacement_mm);
+    EXPECT_EQ(x.inputs.fabric.thickness_mm, y.inputs.fabric.thickness_mm);
+    EXPECT_EQ(x.inputs.fabric.youngs_modulus_MPa, y.inputs.fabric.youngs_modulus_MPa);
+    EXPECT_EQ(x.inputs.fabric.weight_N_per_mm2, y.inputs.fabric.weight_N_per_mm2);
+    EXPECT_EQ(x.inputs.hanging.height_mm, y.inputs.hanging.height_mm);
+    EXPECT_EQ(x.inputs.hanging.length_mm, y.inputs.hanging.length_mm);
+    EXPECT_EQ(x.inputs.hanging.support_displacement_mm, y.inputs.hanging.support_displacement_mm);
     EXPECT_EQ(x.observed.n, y.observed.n);
     EXPECT_EQ(x.observed.z_max_mm, y.observed.z_max_mm);
     EXPECT_EQ(x.observed.Q, y.observed.Q);
@@ -489,7 +489,7 @@ TEST(CalibrationMeasurements, CsvAcceptsAnyColumnOrderCommentsCrlfAndABom) {
   EXPECT_EQ(set.rows[0].observed.Q, 1.31);
   EXPECT_EQ(set.rows[0].observed.n, 5);
   EXPECT_FALSE(set.rows[0].observed.z_max_mm);
-  EXPECT_EQ(set.rows[0].thickness_mm, 0.25);
+  EXPECT_EQ(set.rows[0].inputs.fabric.thickness_mm, 0.25);
   EXPECT_EQ(set.rows[0].row, 1);
 }
 

@@ -430,7 +430,7 @@ TEST_F(DefaultModelCli, MeasureGetsNAndQBackFromAPhotoOfKnownFolds) {
   ASSERT_EQ(written.rows.size(), 1u);
   EXPECT_EQ(written.rows[0].name, "rendered");
   EXPECT_EQ(written.rows[0].observed.n, s.n);
-  EXPECT_EQ(written.rows[0].height_mm, preset.parameters.hanging.height_mm);
+  EXPECT_EQ(written.rows[0].inputs.hanging.height_mm, preset.parameters.hanging.height_mm);
 }
 
 // Rows appended by `measure` are rows `calibrate` fits, in a new file and after the shipped ones
@@ -452,7 +452,7 @@ TEST_F(DefaultModelCli, MeasuredRowsAreReadByCalibrate) {
   const MeasurementSet rows = load_measurements(fresh);
   ASSERT_EQ(rows.rows.size(), 2u);
   EXPECT_EQ(rows.rows[1].name, "mine, h = 1400");
-  EXPECT_EQ(rows.rows[1].height_mm, 1400.0);
+  EXPECT_EQ(rows.rows[1].inputs.hanging.height_mm, 1400.0);
   EXPECT_EQ(rows.rows[1].observed.z_max_mm, 50.0);
   EXPECT_NEAR(*rows.rows[1].observed.Q, std::exp(-std::log(120.0 / 900.0) / 4.0), 0.05);
   EXPECT_EQ(load_measurements(shipped).rows.size(), 9u);

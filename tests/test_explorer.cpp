@@ -1386,8 +1386,8 @@ TEST_F(ExplorerTest, APhotoOfKnownFoldsClickedGivesItsNAndQAndFeedsAFit) {
   EXPECT_EQ(rows.rows[0].observed.n, s.n);
   EXPECT_EQ(*rows.rows[0].observed.Q, report.at("measured").at("Q").get<double>());
   EXPECT_FALSE(rows.rows[0].observed.z_max_mm.has_value());
-  EXPECT_EQ(rows.rows[0].height_mm, p.hanging.height_mm);
-  EXPECT_EQ(rows.rows[0].thickness_mm, p.fabric.thickness_mm);
+  EXPECT_EQ(rows.rows[0].inputs.hanging.height_mm, p.hanging.height_mm);
+  EXPECT_EQ(rows.rows[0].inputs.fabric.thickness_mm, p.fabric.thickness_mm);
   EXPECT_NE(last_text_.find("1 row in"), std::string::npos) << last_text_;
 
   click("Fit K and p to my rows");

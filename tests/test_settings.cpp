@@ -356,6 +356,7 @@ TEST(Settings, EveryListedKeyIsAccepted) {
                                              "c",
                                              "p",
                                              "method",
+                                             "law",
                                              "span_rule",
                                              "int_rounding",
                                              "simpson_intervals",
@@ -371,6 +372,7 @@ TEST(Settings, EveryListedKeyIsAccepted) {
     EXPECT_FALSE(k.help.empty()) << k.key;
     Parameters p;
     const char* value = k.key == "method"              ? "exact"
+                        : k.key == "law"               ? "cerda-mahadevan"
                         : k.key == "span_rule"         ? "L-2d"
                         : k.key == "int_rounding"      ? "floor"
                         : k.key == "length_quadrature" ? "trapezoid"

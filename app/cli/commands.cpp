@@ -168,6 +168,7 @@ Command add_compare_command(CLI::App& app) {
   struct Options {
     std::vector<std::string> presets;
     std::vector<std::string> assignments;
+    std::string law;
     bool json = false;
   };
   auto options = std::make_shared<Options>();
@@ -178,6 +179,8 @@ Command add_compare_command(CLI::App& app) {
                       "results)");
   command->add_option("--set", options->assignments, "override an input of every preset, KEY=VALUE")
       ->type_name("KEY=VALUE");
+  command->add_option("--law", options->law,
+                      "solve every preset with this wrinkle law and its published constants");
   command->add_flag("--json", options->json, "print JSON instead of a Markdown table");
   return [options] {
     return guarded([&] {
@@ -194,7 +197,7 @@ Command add_compare_command(CLI::App& app) {
       std::vector<Preset> presets;
       std::vector<std::vector<PublishedComparison>> rows(2);  // [paper, exact]
       for (const std::string& path : paths) {
-        InputOptions inputs{path, options->assignments, ""};
+        InputOptions inputs{path, options->assignments, "", options->law};
         Preset preset = resolve_inputs(inputs);
         const PublishedResult& pub = preset.published;
         if (!pub.n && !pub.z_max_mm && !pub.Q) {

@@ -151,7 +151,7 @@ Command add_measure_command(CLI::App& app) {
         throw InputError("--z-max-mm " + detail::shortest_number(*o.z_max_mm) +
                          ": an out-of-plane depth is a finite number >= 0");
       }
-      const Preset preset = resolve_inputs({o.preset_path, o.assignments, ""});
+      const Preset preset = resolve_inputs({o.preset_path, o.assignments, "", ""});
       const Parameters& p = preset.parameters;
       // The upper edge is held at its supports, so no point of it lies further than half its
       // length L from them: a deeper fold is a typing error (a unit off, say), not a measurement.

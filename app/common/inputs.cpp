@@ -5,6 +5,8 @@
 
 #include "core/io/io.hpp"
 #include "core/model/settings.hpp"
+#include "core/model/text_format.hpp"
+#include "core/model/wrinkle_law.hpp"
 
 namespace foldlab::app {
 
@@ -15,7 +17,18 @@ Preset resolve_inputs(const InputOptions& options) {
   } catch (const PresetError& e) {
     throw InputError(e.what());
   }
-  std::vector<std::string> assignments = options.assignments;
+  std::vector<std::string> assignments;
+  // A law comes with its published constants, which --set c, K or p then override.
+  if (!options.law.empty()) {
+    assignments.push_back("law=" + options.law);
+    WrinkleLawKind kind{};
+    if (parse_wrinkle_law(options.law, kind)) {
+      assignments.push_back("c=" +
+                            detail::shortest_number(wrinkle_law(kind).published_load_constant_c()));
+      assignments.emplace_back("p=1");
+    }
+  }
+  assignments.insert(assignments.end(), options.assignments.begin(), options.assignments.end());
   if (!options.method.empty()) {
     assignments.push_back("method=" + options.method);
   }
@@ -46,6 +59,15 @@ void add_input_options(CLI::App& command, InputOptions& options) {
       ->type_name("KEY=VALUE");
   command.add_option("--method", options.method, "solution method (default: the preset's)")
       ->check(CLI::IsMember({"paper", "exact"}));
+  std::vector<std::string> laws;
+  for (const WrinkleLaw* law : wrinkle_laws()) {
+    laws.emplace_back(law->key());
+  }
+  command
+      .add_option("--law", options.law,
+                  "the law that counts the folds, with its published constants (c, p = 1); "
+                  "--set c=, K= or p= override them (default: the preset's law and constants)")
+      ->check(CLI::IsMember(laws));
 }
 
 int guarded(const std::function<int()>& body) {

@@ -41,6 +41,7 @@ struct InputOptions {
   std::string preset_path;  // empty: the built-in default preset
   std::vector<std::string> assignments;
   std::string method;  // empty: the preset's
+  std::string law;     // empty: the preset's law and constants
 };
 
 // The preset with the overrides applied and validated. Throws InputError listing every problem.
@@ -57,7 +58,7 @@ struct NamedPath {
 void check_distinct_files(const std::vector<NamedPath>& outputs,
                           const std::vector<NamedPath>& inputs);
 
-// --preset, --set and --method, for every command that solves.
+// --preset, --set, --method and --law, for every command that solves.
 void add_input_options(CLI::App& command, InputOptions& options);
 
 // Runs a command's body: InputError and PresetError give exit 2, EnvironmentError and WriteError

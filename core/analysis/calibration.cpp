@@ -10,6 +10,7 @@
 
 #include "core/io/export_budget.hpp"
 #include "core/model/equations.hpp"
+#include "core/model/text_format.hpp"
 
 namespace foldlab {
 namespace {
@@ -84,7 +85,8 @@ struct RowTable {
   const RowPrediction& at(double x) const { return states[index_at(x)]; }
 };
 
-// Scans x from 0 (s = 1: the stiff regime, unchanged above) down on a log grid until n passes
+// Scans x from the law's ceiling (Conci: 0, s = 1, the stiff regime above) down on a log grid
+// until n passes
 // the row's fold cap, bisecting between every two grid points that differ. A change that starts
 // and ends inside one grid step (0.23 % in s by default) is the only thing it can miss.
 std::optional<RowTable> tabulate(const Measurement& m, const Parameters& base, double step_decades,
@@ -116,7 +118,8 @@ std::optional<RowTable> tabulate(const Measurement& m, const Parameters& base, d
     }
   };
   const double step = step_decades * std::numbers::ln10;
-  double x = 0.0;
+  double x = wrinkle_law(p.model.law)
+                 .log_strength_ceiling(kLowerBoundaryFactor * p.hanging.height_mm, span_mm(p));
   RowPrediction above = predict(x);
   samples.emplace_back(x, above);
   for (int count = 1; !above.beyond_cap && x > kLowestLogS; ++count) {
@@ -685,23 +688,31 @@ ModelForm model_form(const ModelSettings& m) {
   if (m.stress_exponent_p != 1.0) {
     return ModelForm::calibrated;
   }
-  return m.load_constant_c == kCalibratedLoadConstantC ? ModelForm::paper
-                                                       : ModelForm::paper_other_c;
+  return m.load_constant_c == wrinkle_law(m.law).published_load_constant_c()
+             ? ModelForm::paper
+             : ModelForm::paper_other_c;
 }
 
 std::string describe_model_form(const Parameters& p) {
-  char constants[160];
-  std::snprintf(constants, sizeof constants, "p = %.4g, c = %.4g (K = %.4g at nu = %.3g)",
-                p.model.stress_exponent_p, p.model.load_constant_c, stiffness_constant_K(p),
-                p.fabric.poisson_ratio);
+  const WrinkleLaw& law = wrinkle_law(p.model.law);
+  const std::string constants = detail::printf_string(
+      "p = %.4g, c = %.4g (K = %.4g at nu = %.3g)", p.model.stress_exponent_p,
+      p.model.load_constant_c, stiffness_constant_K(p), p.fabric.poisson_ratio);
+  // Conci's law keeps the words FoldLab has always used for eq. 7; another law names itself.
+  const bool conci = p.model.law == WrinkleLawKind::conci;
+  const std::string printed =
+      conci ? "paper's form of eq. 7" : std::string(law.title()) + ", as published";
   switch (model_form(p.model)) {
     case ModelForm::paper:
-      return std::string("paper's form of eq. 7: ") + constants;
+      return printed + ": " + constants;
     case ModelForm::paper_other_c:
-      return std::string("paper's form of eq. 7 with its own c: ") + constants +
-             "; FoldLab's default is c = 26.9";
+      return printed + " with its own c: " + constants + "; " +
+             (conci ? "FoldLab's default is c = 26.9"
+                    : "the published c is " +
+                          detail::printf_string("%.4g", law.published_load_constant_c()));
     case ModelForm::calibrated:
-      return std::string("calibrated eq. 7, s -> s^p: ") + constants;
+      return (conci ? std::string("calibrated eq. 7") : std::string(law.title()) + ", calibrated") +
+             ", s -> s^p: " + constants;
   }
   return constants;
 }

@@ -117,7 +117,7 @@ Measurement measurement_row(const Parameters& p, const FoldMeasurement& folds,
   Measurement m;
   m.name = std::move(name);
   m.role = MeasurementRole::fit;
-  set_inputs(m, p);
+  m.inputs = p;
   m.shape = std::string(to_string(p.shape.kind));
   m.observed.n = folds.n;
   m.observed.Q = folds.Q;

@@ -206,7 +206,7 @@ class RowReader {
       problems_.push_back(where_ + ": nothing observed: give at least one of n, z_max_mm, Q");
     }
     if (all_given) {
-      set_inputs(m, given);
+      m.inputs = given;
       // The model's own ranges, with its reasons, for the inputs a row sets.
       for (const ValidationIssue& issue : validate(given)) {
         if (is_row_input(issue.field)) {
@@ -314,26 +314,16 @@ std::vector<std::pair<std::string_view, std::string>> csv_cells(const Measuremen
       {kCount, m.observed.n ? std::to_string(*m.observed.n) : std::string()},
       {kDepth, optional_number(m.observed.z_max_mm, kDepth)},
       {kRatio, optional_number(m.observed.Q, kRatio)}};
-  const Parameters inputs = parameters_for(m, Parameters{});
   std::vector<std::pair<std::string_view, std::string>> input_cells;
   for (const InputSpec* spec : row_inputs()) {
     input_cells.emplace_back(
-        spec->field, shortest_number(detail::finite_or_throw(*spec->value(inputs), spec->field)));
+        spec->field, shortest_number(detail::finite_or_throw(*spec->value(m.inputs), spec->field)));
   }
   cells.insert(cells.begin() + 3, input_cells.begin(), input_cells.end());
   return cells;
 }
 
 }  // namespace
-
-void set_inputs(Measurement& m, const Parameters& p) {
-  m.thickness_mm = p.fabric.thickness_mm;
-  m.youngs_modulus_MPa = p.fabric.youngs_modulus_MPa;
-  m.weight_N_per_mm2 = p.fabric.weight_N_per_mm2;
-  m.height_mm = p.hanging.height_mm;
-  m.length_mm = p.hanging.length_mm;
-  m.support_displacement_mm = p.hanging.support_displacement_mm;
-}
 
 const std::vector<std::string_view>& measurement_columns() {
   static const std::vector<std::string_view> columns = [] {
@@ -640,9 +630,8 @@ json measurements_to_json(const MeasurementSet& set) {
     put_text(kName, m.name);
     put_text(kGroup, m.group);
     r[std::string(kRole)] = to_string(m.role);
-    const Parameters inputs = parameters_for(m, Parameters{});
     for (const InputSpec* spec : row_inputs()) {
-      r[std::string(spec->field)] = detail::finite_or_throw(*spec->value(inputs), spec->field);
+      r[std::string(spec->field)] = detail::finite_or_throw(*spec->value(m.inputs), spec->field);
     }
     put_text(kShape, m.shape);
     r[std::string(kCount)] = m.observed.n ? json(*m.observed.n) : json(nullptr);
@@ -666,12 +655,10 @@ json measurements_to_json(const MeasurementSet& set) {
 
 Parameters parameters_for(const Measurement& row, const Parameters& base) {
   Parameters p = base;
-  p.fabric.thickness_mm = row.thickness_mm;
-  p.fabric.youngs_modulus_MPa = row.youngs_modulus_MPa;
-  p.fabric.weight_N_per_mm2 = row.weight_N_per_mm2;
-  p.hanging.height_mm = row.height_mm;
-  p.hanging.length_mm = row.length_mm;
-  p.hanging.support_displacement_mm = row.support_displacement_mm;
+  Parameters& inputs = const_cast<Parameters&>(row.inputs);  // the table's accessors are mutable
+  for (const InputSpec* spec : row_inputs()) {
+    spec->number(p) = spec->number(inputs);
+  }
   return p;
 }
 

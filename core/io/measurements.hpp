@@ -26,12 +26,9 @@ struct Measurement {
   std::string name;   // optional label, e.g. "Table 1, h = 900 mm"
   std::string group;  // optional series, e.g. "table1": held-out validation fits on the others
   MeasurementRole role = MeasurementRole::fit;
-  double thickness_mm = 0.0;
-  double youngs_modulus_MPa = 0.0;
-  double weight_N_per_mm2 = 0.0;
-  double height_mm = 0.0;
-  double length_mm = 0.0;
-  double support_displacement_mm = 0.0;
+  // The row's inputs: the input table's required rows (t, E, w, h, L, d) as measured; the other
+  // fields are not part of a row and come from the base a calibration solves it with.
+  Parameters inputs;
   // Optional: the cloth's shape by its ShapeKind name (shape.hpp). Recorded, not used by the fit:
   // the solver is the same for every shape.
   std::string shape;
@@ -82,8 +79,6 @@ void append_measurement(const std::filesystem::path& path, const Measurement& ro
 
 // `base` with the measured fabric and hanging put in (its model settings and Poisson ratio kept).
 Parameters parameters_for(const Measurement& row, const Parameters& base);
-// The row's inputs taken from p (the fabric and the hanging), the other way round.
-void set_inputs(Measurement& m, const Parameters& p);
 
 std::string_view to_string(MeasurementRole role);
 bool parse_measurement_role(std::string_view s, MeasurementRole& out);

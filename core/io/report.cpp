@@ -41,11 +41,16 @@ nlohmann::json solution_to_json(const Solution& s, const Parameters& p,
   }
   nlohmann::json j = {
       {"method", to_string(s.method)},
+      {"law", to_string(p.model.law)},
       {"regime", to_string(s.regime)},
       {"message", describe(s, p)},
       {"n", s.n},
       {"Q", finite_or_throw(s.Q, "Q")},
       {"Q7", s.Q7 ? nlohmann::json(finite_or_throw(*s.Q7, "Q7")) : nlohmann::json(nullptr)},
+      {"fold_spacing_mm",
+       s.count_rule && s.count_rule->spacing == FoldSpacing::even
+           ? nlohmann::json(finite_or_throw(s.count_rule->step, "fold_spacing_mm"))
+           : nlohmann::json(nullptr)},
       {"s", finite_or_throw(s.stress_ratio, "s")},
       {"z_max_mm", finite_or_throw(s.z_max_mm, "z_max_mm")},
       {"a_mm", s.a_mm},
@@ -100,7 +105,8 @@ nlohmann::json solution_to_json(const Solution& s, const Parameters& p,
 
 std::string solution_table(const Solution& s, const Parameters& p, const std::string& preset_name,
                            const ModelStanding* standing) {
-  std::string out = "FoldLab: " + std::string(to_string(s.method)) + " method";
+  std::string out = "FoldLab: " + std::string(to_string(s.method)) + " method, " +
+                    std::string(wrinkle_law(p.model.law).title());
   if (!preset_name.empty()) {
     out += ", preset \"" + preset_name + "\"";
   }
@@ -137,6 +143,8 @@ std::string solution_table(const Solution& s, const Parameters& p, const std::st
               in_range(&PredictionRange::Q_min, &PredictionRange::Q_max, "%.4f"));
   if (s.Q7) {
     out += line("root of eq. 7", "Q7", *s.Q7, "");
+  } else if (s.count_rule && s.count_rule->spacing == FoldSpacing::even) {
+    out += line("fold spacing (wavelength)", "lambda", s.count_rule->step, "mm", "%.2f");
   } else {
     out += "  root of eq. 7                      Q7               none (s >= 1)\n";
   }

@@ -34,7 +34,8 @@ struct ModelStanding {
 // " (lo–hi)", each end printed with `format`: a range after the value it brackets.
 std::string range_text(double lo, double hi, const char* format);
 
-// Keys: method, regime, message, n, Q, Q7 (null when eq. 7 has no root), s, z_max_mm, a_mm,
+// Keys: method, law, regime, message, n, Q, Q7 (null when eq. 7 has no root or under another
+// law), fold_spacing_mm (the law's lambda for evenly spaced folds, else null), s, z_max_mm, a_mm,
 // l_mm, A_mm, iterations, hit_iteration_cap, n_capped, n_cycle, residual_length, residual_height,
 // B_Nmm (bending stiffness), c_b_mm (bending length), "rounded_folds" (rounded, radius_mm per fold,
 // depth_scale, z_fold_mm, length_kept; see FoldRounding), stopped_at_first_iterate, and the inputs

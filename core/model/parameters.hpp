@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "core/model/shape.hpp"
+#include "core/model/wrinkle_law.hpp"
 
 namespace foldlab {
 
@@ -46,6 +47,8 @@ enum class LengthQuadrature { simpson, trapezoid };
 
 struct ModelSettings {
   Method method = Method::paper;
+  // Which law counts the folds (core/model/wrinkle_law.hpp); c and p are its constants.
+  WrinkleLawKind law = WrinkleLawKind::conci;
   // c of eq. 7, the load-condition constant; eq. 7 uses K = c / (1 - nu²). Calibrated on Tables 1-2
   // (docs/calibration.md).
   double load_constant_c = kCalibratedLoadConstantC;

@@ -163,6 +163,18 @@ const std::vector<InputSpec>& build_table() {
        .set_choice = [](Parameters& p,
                         std::string_view v) { return set_named(p.model.method, v, parse_method); },
        .choice = [](const Parameters& p) { return to_string(p.model.method); }},
+      {.key = "law",
+       .name = "wrinkle law",
+       .preset = "/model/law",
+       .help = "conci | cerda-mahadevan: the law that counts the folds (c and p are its constants)",
+       .kind = InputKind::choice,
+       .expert = true,
+       .choices = "conci, cerda-mahadevan",
+       .set_choice =
+           [](Parameters& p, std::string_view v) {
+             return set_named(p.model.law, v, parse_wrinkle_law);
+           },
+       .choice = [](const Parameters& p) { return to_string(p.model.law); }},
       {.key = "span_rule",
        .name = "span rule",
        .preset = "/model/span_rule",

@@ -15,8 +15,7 @@
 namespace foldlab {
 namespace {
 
-// The paper's initial guesses: a_0 = 1.01 h, a_n = z_max = 0.01 h.
-constexpr double kLowerBoundaryFactor = 1.01;
+// The paper's initial guesses: a_n = z_max = 0.01 h (a_0 = kLowerBoundaryFactor h).
 constexpr double kInitialGuessFactor = 0.01;
 
 // What both methods share: the inputs reduced to the quantities the equations use.
@@ -27,9 +26,10 @@ struct Setup {
   double a0;
   double sag;  // A(L, l)
   double s;
-  std::optional<double> Q7;
+  std::optional<double> Q7;  // Conci's law: the root of eq. 7
+  // The law's count of eq. 10; none when it allows one fold at most (the stiff regime).
+  std::optional<FoldCountRule> rule;
   bool nearest;
-  double log_Q7 = 0.0;  // exact method: log Q7, which every count of eq. 10 divides by
 };
 
 Setup make_setup(const Parameters& p) {
@@ -41,20 +41,24 @@ Setup make_setup(const Parameters& p) {
   u.sag = amplitude_for_upper_edge_length(u.L, u.l);
   u.s = stress_ratio(stiffness_constant_K(p), p.fabric.youngs_modulus_MPa, p.fabric.thickness_mm,
                      p.fabric.weight_N_per_mm2, u.h, u.l);
-  // The calibrated variant of eq. 7 solves it with s^p. p = 1, the paper's form, skips pow so that
+  // The calibrated variant solves the law with s^p. p = 1, the printed form, skips pow so that
   // the paper's numbers stay bit for bit; Solution::stress_ratio reports s itself either way.
   const double exponent = p.model.stress_exponent_p;
-  u.Q7 = wrinkle_ratio_from_stress_ratio(exponent == 1.0 ? u.s : std::pow(u.s, exponent));
+  const double strength = exponent == 1.0 ? u.s : std::pow(u.s, exponent);
+  u.rule = wrinkle_law(p.model.law).count_rule(strength, u.l);
+  if (u.rule && u.rule->spacing == FoldSpacing::geometric) {
+    u.Q7 = u.rule->ratio;
+  }
   u.nearest = p.model.int_rounding == IntRounding::nearest;
   return u;
 }
 
-// n of eq. 10 for a given a_0/a_n; one fold when eq. 7 has no root (Q7 infinite).
-int count_for(const Setup& u, double a0_over_an, bool& capped) {
-  if (!u.Q7) {
+// n of eq. 10 at a_n; one fold when the law allows no more (Conci: eq. 7 has no root).
+int count_for(const Setup& u, double an, bool& capped) {
+  if (!u.rule) {
     return 1;
   }
-  const int n = wrinkle_count(a0_over_an, *u.Q7, u.nearest);
+  const int n = u.rule->count(u.a0, an, u.nearest);
   capped = capped || n > kMaxWrinkles;
   return std::min(n, kMaxWrinkles);
 }
@@ -86,7 +90,7 @@ bool settle_degenerate(Solution& out, const Setup& u) {
     // The nearest meaningful answer: flat folds (z = 0) with the upper edge carrying the whole sag.
     out.regime = Regime::negligible_slack;
     bool capped = false;
-    finish(out, u, count_for(u, u.a0 / u.sag, capped), u.sag, 0.0);
+    finish(out, u, count_for(u, u.sag, capped), u.sag, 0.0);
     out.n_capped = capped;
     return true;
   }
@@ -97,15 +101,16 @@ Solution start_solution(const Parameters& p, const Setup& u) {
   Solution out;
   out.method = p.model.method;
   out.Q7 = u.Q7;
+  out.count_rule = u.rule;
   out.stress_ratio = u.s;
   out.span_mm = u.l;
   out.sag_amplitude_mm = u.sag;
   return out;
 }
 
-// log(a_0/a_n) / log Q7, the argument of eq. 10's Int[]; 0 without Q7.
+// The argument of eq. 10's Int[] under the law; 0 when it counts no folds.
 double count_argument(const Setup& u, double an) {
-  return u.Q7 ? std::log(u.a0 / an) / std::log(*u.Q7) : 0.0;
+  return u.rule ? u.rule->argument(u.a0, an) : 0.0;
 }
 
 // `trace`, when given, receives every iterate; the loop computes nothing more without it.
@@ -124,7 +129,7 @@ Solution solve_paper(const Parameters& p, std::vector<Iterate>* trace = nullptr)
   int iteration = 0;
   while (iteration < p.model.max_iterations) {
     ++iteration;
-    n = count_for(u, u.a0 / an, capped);
+    n = count_for(u, an, capped);
     const double Q = std::pow(u.a0 / an, 1.0 / n);
     z = z_max_for_fibre_length(u.a0, Q, n, u.h);
     const double amplitude = std::hypot(an, z);
@@ -144,7 +149,7 @@ Solution solve_paper(const Parameters& p, std::vector<Iterate>* trace = nullptr)
     }
     an = std::sqrt(std::max(u.sag * u.sag - z * z, an_floor * an_floor));
   }
-  out.regime = u.Q7 ? Regime::wrinkled : Regime::stiff;
+  out.regime = u.rule ? Regime::wrinkled : Regime::stiff;
   out.iterations = iteration;
   out.hit_iteration_cap = !converged;
   out.stopped_at_first_iterate = converged && iteration == 1;
@@ -210,19 +215,18 @@ constexpr int kDirectSumMax = 64;
 
 // Int[] of eq. 10 at a_n, with every count above the cap merged into kMaxWrinkles + 1.
 int count_at(const Setup& u, double an) {
-  return std::min(wrinkle_count_from_logs(std::log(u.a0 / an), u.log_Q7, u.nearest),
-                  kMaxWrinkles + 1);
+  return std::min(u.rule->count(u.a0, an, u.nearest), kMaxWrinkles + 1);
 }
 
 // The a_n at the lower edge of count c's cell, where Int[x] of eq. 10 changes from c - 1 to c.
 double cell_edge_an(const Setup& u, int c) {
   // wrinkle_count rounds x to nearest, or floors x (1 + 1e-9) (its guard against x = n - 1 ulp).
   const double x = u.nearest ? c - 0.5 : c / (1.0 + 1e-9);
-  return u.a0 * std::exp(-x * u.log_Q7);
+  return u.rule->amplitude_at(u.a0, x);
 }
 
 // The root of eq. 9 for one n, inside a bracket that tightens as it is used. The fixed-point
-// iteration over n needs only Int[log(a_0/a_n)/log Q7] at the root, and one sign test of eq. 9 at
+// iteration over n needs only eq. 10's Int[] at the root, and one sign test of eq. 9 at
 // the a_n where Int[] changes tells on which side of it the root lies: most visits of n are
 // decided by 0-2 such tests, and only the n reported is solved to full precision.
 class CountRoot {
@@ -358,14 +362,6 @@ class CountRoot {
   UpperFold root_{};
 };
 
-Setup make_exact_setup(const Parameters& p) {
-  Setup u = make_setup(p);
-  if (u.Q7) {
-    u.log_Q7 = std::log(*u.Q7);
-  }
-  return u;
-}
-
 // The iterate of the exact method at n, whose a_n and z_max are the root of eqs. 8 and 9.
 Iterate exact_iterate(const Setup& u, int n, const UpperFold& f, int next) {
   const double Q = std::pow(u.a0 / f.an, 1.0 / n);
@@ -374,12 +370,12 @@ Iterate exact_iterate(const Setup& u, int n, const UpperFold& f, int next) {
 }
 
 Solution solve_exact(const Parameters& p, std::vector<Iterate>* trace = nullptr) {
-  const Setup u = make_exact_setup(p);
+  const Setup u = make_setup(p);
   Solution out = start_solution(p, u);
   if (settle_degenerate(out, u)) {
     return out;
   }
-  if (!u.Q7) {
+  if (!u.rule) {
     out.regime = Regime::stiff;
     out.iterations = 1;
     const UpperFold f = CountRoot(u, 1).solve();
@@ -389,13 +385,13 @@ Solution solve_exact(const Parameters& p, std::vector<Iterate>* trace = nullptr)
     }
     return out;
   }
-  // Fixed point of n -> Int[log(a_0/a_n(n)) / log Q7], starting from the paper's initial guess.
+  // Fixed point of n -> eq. 10's Int[] at a_n(n), starting from the paper's initial guess.
   bool capped = false;
   constexpr int kMaxSteps = 64;
   std::array<int, kMaxSteps> visited{};
   int visits = 0;
   std::optional<CountRoot> last;  // the latest visit's bracket: usually the n reported
-  int n = count_for(u, 1.0 / kInitialGuessFactor * kLowerBoundaryFactor, capped);
+  int n = count_for(u, kInitialGuessFactor * u.h, capped);
   int chosen = 0;
   bool settled = false;
   while (visits < kMaxSteps && !settled) {
@@ -460,9 +456,9 @@ IterationTrace trace_iterations(const Parameters& p) {
 
 std::vector<CountMapPoint> count_map(const Parameters& p, int n_from, int n_to) {
   std::vector<CountMapPoint> out;
-  const Setup u = make_exact_setup(p);
+  const Setup u = make_setup(p);
   Solution probe;
-  if (!u.Q7 || settle_degenerate(probe, u)) {
+  if (!u.rule || settle_degenerate(probe, u)) {
     return out;
   }
   for (int n = std::max(1, n_from); n <= std::min(n_to, kMaxWrinkles); ++n) {

@@ -21,15 +21,21 @@ enum class Regime {
   n_cycle,           // exact method: eq. 10 cycles between values of n; the smallest is used
 };
 
+// The paper's lower boundary a_0 = 1.01 h, which both methods keep.
+inline constexpr double kLowerBoundaryFactor = 1.01;
+
 // Above this n the solve stops growing n (the count is reported as capped).
 inline constexpr int kMaxWrinkles = 10'000'000;
 
 struct Solution {
   Method method = Method::paper;
   Regime regime = Regime::no_slack;
-  int n = 0;                  // number of wrinkles
-  double Q = 1.0;             // (a_0/a_n)^(1/n), the ratio the fold amplitudes actually have
-  std::optional<double> Q7;   // root of eq. 7; none in the stiff regime
+  int n = 0;                 // number of wrinkles
+  double Q = 1.0;            // (a_0/a_n)^(1/n), the ratio the fold amplitudes actually have
+  std::optional<double> Q7;  // Conci's law: root of eq. 7; none in the stiff regime or other laws
+  // The law's count of eq. 10 (FoldCountRule::step is ln Q7, or the fold spacing lambda in mm);
+  // none when the law allows one fold at most.
+  std::optional<FoldCountRule> count_rule;
   double stress_ratio = 0.0;  // s = K E t³ / (w h l²) of eq. 7
   double z_max_mm = 0.0;
   std::vector<double> a_mm;        // a_0 (lower boundary) .. a_n (upper edge); empty when n = 0
@@ -56,7 +62,7 @@ struct Iterate {
   double a_n_mm = 0.0;        // paper: the a_n this iterate starts from; exact: eq. 9's root for n
   double z_max_mm = 0.0;      // eq. 9's root for this n and Q
   double length_ratio = 0.0;  // L'/L; paper: eq. 8 by the model's quadrature, exact: closed form
-  double count_argument = 0.0;  // log(a_0/a_n) / log Q7, whose Int[] is eq. 10; 0 without Q7
+  double count_argument = 0.0;  // the argument of eq. 10's Int[] under the law; 0 without a count
   int next_n = 0;               // the n of the next iterate; for the last one, its own n
 };
 
@@ -68,9 +74,10 @@ struct IterationTrace {
 };
 IterationTrace trace_iterations(const Parameters& p);
 
-// The exact method's fixed-point map at each n in [n_from, n_to]: `argument` is
-// log(a_0/a_n(n)) / log Q7 with a_n(n) the root of eqs. 8 and 9 for n, `count` its Int[] (the next
-// n). Empty when the exact method does not iterate (no Q7, or a regime decided before).
+// The exact method's fixed-point map at each n in [n_from, n_to]: `argument` is eq. 10's argument
+// under the law (log(a_0/a_n(n)) / log Q7 for Conci's) with a_n(n) the root of eqs. 8 and 9 for n,
+// `count` its Int[] (the next n). Empty when the exact method does not iterate (a law that allows
+// one fold at most, or a regime decided before).
 struct CountMapPoint {
   int n = 0;
   double argument = 0.0;

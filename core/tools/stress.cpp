@@ -237,6 +237,11 @@ Parameters stress_sample(std::uint64_t seed, int index) {
   // unit() < 1, so d < L/2 (validate() wants d in [0, L/2)).
   const double d = 0.5 * p.hanging.length_mm * unit(random);
   p.hanging.support_displacement_mm = index % 100 == 0 ? 0.0 : d;
+  // Every law by turns, each with its published constant.
+  const std::span<const WrinkleLaw* const> laws = wrinkle_laws();
+  const WrinkleLaw& law = *laws[static_cast<std::size_t>(index) % laws.size()];
+  p.model.law = law.kind();
+  p.model.load_constant_c = law.published_load_constant_c();
   return p;
 }
 
