@@ -24,6 +24,7 @@
 #include "app/gui/appearance.hpp"
 #include "app/gui/explorer.hpp"
 #include "app/gui/input_player.hpp"
+#include "app/gui/panel.hpp"
 #include "app/gui/renderer.hpp"
 #include "app/gui/scripted_run.hpp"
 #include "app/gui/surface.hpp"
@@ -1484,6 +1485,119 @@ TEST_F(ExplorerTest, ViewSettingsOutsideTheirRangeAreRefusedNotClamped) {
   EXPECT_EQ(explorer_->set_view("wireframe", "1"), std::nullopt);
   EXPECT_TRUE(explorer_->cloth_style().wireframe);
   EXPECT_EQ(explorer_->set_view("scale", "250"), std::nullopt);
+}
+
+// One write path: a refused value stays as typed with its reason, the scene keeps the last valid
+// state, and a key that cannot be applied at all changes nothing.
+TEST_F(ExplorerTest, ApplyKeepsARefusedValueWithItsIssueAndTheSceneAtTheLastValidState) {
+  const Parameters valid = shown();
+  ASSERT_EQ(document().apply(Edit::input("h", -5.0)), std::nullopt);
+  EXPECT_EQ(document().edited().hanging.height_mm, -5.0) << "kept as typed";
+  ASSERT_EQ(document().issues().size(), 1u);
+  EXPECT_EQ(document().issues()[0].field, "h_mm");
+  EXPECT_TRUE(shown() == valid) << "the scene keeps the last valid state";
+  const std::size_t depth = document().undo_depth();
+  EXPECT_NE(document().apply(Edit::input("no_such_key", 1.0)), std::nullopt);
+  EXPECT_NE(document().apply(Edit::inputs({{"d", 50.0}, {"supports", 2.5}})), std::nullopt);
+  EXPECT_EQ(document().edited().hanging.height_mm, -5.0) << "a failed edit changes nothing";
+  EXPECT_EQ(document().edited().hanging.support_displacement_mm,
+            valid.hanging.support_displacement_mm);
+  EXPECT_EQ(document().undo_depth(), depth);
+  ASSERT_EQ(document().apply(Edit::choose("h", "1.2 m")), std::nullopt);
+  EXPECT_EQ(shown().hanging.height_mm, 1200.0) << "text with a unit, as --set reads it";
+  EXPECT_TRUE(document().issues().empty());
+}
+
+// Scripted --set and --animate take the same path: K is stored as c, and a K that puts c out of
+// range is refused by validation naming both.
+TEST_F(ExplorerTest, AScriptedKOutOfRangeShowsCsIssueNamingK) {
+  const Parameters valid = shown();
+  ASSERT_EQ(explorer_->set_input("K", 1e9), std::nullopt);
+  const std::optional<std::string> refusal = document().refusal();
+  ASSERT_TRUE(refusal.has_value());
+  EXPECT_NE(refusal->find("c = 9.1e+08 must be in [0.001, 10000]"), std::string::npos) << *refusal;
+  EXPECT_NE(refusal->find("(K = c / (1 - nu²) = 1e+09)"), std::string::npos) << *refusal;
+  EXPECT_TRUE(shown() == valid);
+  const std::string text = frame();
+  EXPECT_NE(text.find("1 input(s) refused"), std::string::npos) << text;
+}
+
+// Several inputs in one edit are one undo step.
+TEST_F(ExplorerTest, OneEditOfSeveralInputsIsOneUndoStep) {
+  const Parameters before = shown();
+  ASSERT_EQ(document().apply(Edit::inputs({{"h", 900.0}, {"d", 120.0}})), std::nullopt);
+  EXPECT_EQ(shown().hanging.height_mm, 900.0);
+  EXPECT_EQ(shown().hanging.support_displacement_mm, 120.0);
+  EXPECT_EQ(document().undo_depth(), 1u);
+  ASSERT_TRUE(document().undo());
+  EXPECT_TRUE(shown() == before);
+}
+
+// A click on the regime map moves both of its inputs, and one undo brings both back.
+TEST_F(ExplorerTest, ARegimeMapClickIsOneUndoStep) {
+  open_explorer("map");
+  while (explorer_->busy()) {
+    frame();
+  }
+  frame();
+  const Parameters before = shown();
+  const std::size_t depth = document().undo_depth();
+  // The map lies between its x labels (300 at its left, 3e+03 under its right edge) and between
+  // its top y label (1e-05) and the x labels under it.
+  const ImVec2 x_from = position_of("300 3e+03");
+  const ImVec2 x_to = position_of("3e+03");
+  const ImVec2 y_to = position_of("1e-05");
+  const ImVec2 middle(0.5f * (x_from.x + x_to.x), 0.5f * (y_to.y + x_to.y));
+  click_at(middle);
+  EXPECT_NE(shown().hanging.height_mm, before.hanging.height_mm);
+  EXPECT_NE(shown().fabric.weight_N_per_mm2, before.fabric.weight_N_per_mm2);
+  EXPECT_EQ(document().undo_depth(), depth + 1) << "x and y in one step";
+  ASSERT_TRUE(document().undo());
+  EXPECT_EQ(shown().hanging.height_mm, before.hanging.height_mm);
+  EXPECT_EQ(shown().fabric.weight_N_per_mm2, before.fabric.weight_N_per_mm2);
+}
+
+// The panels are one list: each has a title and a key of its own, and the report's panels are
+// the tiled ones of that list, by key, in its order.
+TEST_F(ExplorerTest, EveryPanelHasADistinctNameAndTheReportNamesComeFromTheList) {
+  std::vector<std::string> names;
+  std::vector<std::string> keys;
+  std::vector<std::string> tiled;
+  for (const std::unique_ptr<Panel>& panel : explorer_->panels()) {
+    ASSERT_NE(panel->name(), nullptr);
+    ASSERT_NE(panel->key(), nullptr);
+    EXPECT_FALSE(std::string(panel->name()).empty());
+    EXPECT_FALSE(std::string(panel->key()).empty());
+    names.emplace_back(panel->name());
+    keys.emplace_back(panel->key());
+    if (panel->tile()) {
+      tiled.emplace_back(panel->key());
+    }
+  }
+  EXPECT_GE(names.size(), 8u);
+  for (std::vector<std::string>* list : {&names, &keys}) {
+    std::vector<std::string> sorted = *list;
+    std::sort(sorted.begin(), sorted.end());
+    EXPECT_EQ(std::adjacent_find(sorted.begin(), sorted.end()), sorted.end());
+  }
+  EXPECT_EQ(tiled.size(), static_cast<std::size_t>(kTileCount));
+  frame();
+  std::vector<std::string> reported;
+  for (const auto& [key, rect] : explorer_->panel_rects()) {
+    reported.push_back(key);
+  }
+  EXPECT_EQ(reported, tiled);
+  const nlohmann::json state = explorer_state_json(*explorer_);
+  for (const std::string& key : tiled) {
+    EXPECT_TRUE(state.at("layout").at("panels").contains(key)) << key;
+  }
+  // Each title is the one its window shows.
+  const std::string text = frame();
+  for (const std::unique_ptr<Panel>& panel : explorer_->panels()) {
+    if (panel->tile()) {
+      EXPECT_NE(text.find(panel->name()), std::string::npos) << panel->name();
+    }
+  }
 }
 
 }  // namespace

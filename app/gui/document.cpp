@@ -1,7 +1,6 @@
 #include "app/gui/document.hpp"
 
 #include <algorithm>
-#include <cstdio>
 #include <utility>
 
 #include "core/model/settings.hpp"
@@ -26,6 +25,32 @@ double lifetime_s(MessageKind kind) {
 
 }  // namespace
 
+Edit Edit::input(std::string key, double value) {
+  return inputs({{std::move(key), value}});
+}
+
+Edit Edit::inputs(std::vector<std::pair<std::string, double>> values) {
+  Edit e;
+  e.kind = Kind::inputs;
+  e.values = std::move(values);
+  return e;
+}
+
+Edit Edit::choose(std::string key, std::string text) {
+  Edit e;
+  e.kind = Kind::text;
+  e.key = std::move(key);
+  e.text = std::move(text);
+  return e;
+}
+
+Edit Edit::replace(Parameters parameters) {
+  Edit e;
+  e.kind = Kind::replace;
+  e.parameters = std::move(parameters);
+  return e;
+}
+
 Document::Document(const Preset& initial, std::string initial_path)
     : loaded_(initial),
       loaded_path_(std::move(initial_path)),
@@ -43,21 +68,35 @@ void Document::commit() {
   }
 }
 
-std::optional<std::string> Document::set_input(std::string_view key, double value) {
-  char text[64];
-  std::snprintf(text, sizeof text, "%.17g", value);
-  if (auto error = apply_setting(edited_, key, text)) {
-    return error;
+std::optional<std::string> Document::apply(const Edit& edit) {
+  Parameters next = edited_;
+  switch (edit.kind) {
+    case Edit::Kind::inputs:
+      for (const auto& [key, value] : edit.values) {
+        if (auto error = set_input(next, key, value)) {
+          return error;
+        }
+      }
+      break;
+    case Edit::Kind::text:
+      if (auto error = apply_setting(next, edit.key, edit.text)) {
+        return error;
+      }
+      break;
+    case Edit::Kind::replace:
+      next = edit.parameters;
+      break;
   }
+  edited_ = std::move(next);
   commit();
-  end_step();
+  if (edit.closes_step) {
+    end_step();
+  }
   return std::nullopt;
 }
 
 void Document::reset_to_loaded() {
-  edited_ = loaded_.parameters;
-  commit();
-  end_step();
+  apply(Edit::replace(loaded_.parameters));
 }
 
 void Document::load_preset_file(const std::filesystem::path& path) {
@@ -66,10 +105,8 @@ void Document::load_preset_file(const std::filesystem::path& path) {
     end_step();  // an edit still open is a step of its own, before the load
     loaded_ = preset;
     loaded_path_ = path.string();
-    edited_ = preset.parameters;
-    commit();
     ++loads_;
-    end_step();
+    apply(Edit::replace(preset.parameters));
     notify("Loaded " + preset.name + ".", MessageKind::success);
     session_dirty = true;
   } catch (const PresetError& e) {

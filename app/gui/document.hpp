@@ -1,8 +1,9 @@
 // What the explorer's panels share, one copy of each: the preset as loaded, the parameters being
 // edited (possibly invalid) with their validation, the scene that always holds the last valid
 // parameters, the undo history, the question asked before unsaved edits are replaced, and the
-// status line. Panels change it only through these members, so that a slider, a map click, a
-// preset load and a scripted run all take the same path to the scene.
+// status line. The parameters change only through apply(Edit) (and the preset loads, undo and
+// redo built on it), so that a slider, a map click, a preset load and a scripted run all take the
+// same path to the scene: one validation, one commit, one piece of undo bookkeeping.
 #pragma once
 
 #include <cstdint>
@@ -11,6 +12,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "core/geometry/scene.hpp"
@@ -22,25 +24,53 @@ namespace foldlab::gui {
 // How a status message reads: its colour, and how long it stays.
 enum class MessageKind { info, success, warning, error };
 
+// One change to the parameters, as a value: what Document::apply takes.
+struct Edit {
+  enum class Kind {
+    inputs,   // one or several inputs by --set key, to numbers (core set_input), in order
+    text,     // one input by key, to text: a choice's name or a number with a unit (apply_setting)
+    replace,  // the whole Parameters (a calibration's constants applied, a restored session)
+  };
+  Kind kind = Kind::inputs;
+  std::vector<std::pair<std::string, double>> values;  // for inputs
+  std::string key;                                     // for text
+  std::string text;                                    // for text
+  Parameters parameters;                               // for replace
+  // True: the edit is an undo step of its own (a script, a map click, a button). False: it stays
+  // open and later edits join it until Document::end_step (a slider being dragged).
+  bool closes_step = true;
+
+  static Edit input(std::string key, double value);
+  // Several inputs at once, one undo step (a regime-map click sets x and y).
+  static Edit inputs(std::vector<std::pair<std::string, double>> values);
+  static Edit choose(std::string key, std::string text);
+  static Edit replace(Parameters parameters);
+  // The same edit, left open for the widget that is still being dragged or typed into.
+  Edit open() && {
+    closes_step = false;
+    return std::move(*this);
+  }
+};
+
 class Document {
  public:
   Document(const Preset& initial, std::string initial_path);
 
   const Preset& loaded() const { return loaded_; }
   const std::string& loaded_path() const { return loaded_path_; }
-  // What the widgets show. After writing into it, call commit().
-  Parameters& edited() { return edited_; }
+  // What the widgets show: the last edit, possibly refused. Changed only by apply().
   const Parameters& edited() const { return edited_; }
   const std::vector<ValidationIssue>& issues() const { return issues_; }
   Scene& scene() { return scene_; }
   const Scene& scene() const { return scene_; }
 
-  // The model sees an edit only when it validates; otherwise the scene keeps the last valid state
-  // and the widgets show the user's number with the reason it was refused.
-  void commit();
-  // One input by its --set key, as moving its slider does, and one undo step; the reason when
-  // the key or the value cannot be applied at all (range problems are issues(), as for a slider).
-  std::optional<std::string> set_input(std::string_view key, double value);
+  // The one write path for the parameters. The edit replaces edited() and is validated once; the
+  // model (the scene) sees it only when it validates, otherwise the scene keeps the last valid
+  // state and the widgets show the user's value with the reason it was refused (issues()). Then
+  // the undo step is closed unless the edit is open(). Returns the reason when a key or a value
+  // cannot be applied at all (an unknown key, a fraction for a whole number, an unknown name);
+  // then nothing changes. Range problems are issues(), never a return value.
+  std::optional<std::string> apply(const Edit& edit);
   void reset_to_loaded();
   // Loads a preset file in place of the edits; on failure keeps everything and says why.
   void load_preset_file(const std::filesystem::path& path);
@@ -57,7 +87,7 @@ class Document {
 
   // Undo history. A continuous edit (a slider being dragged, a value being typed) changes
   // edited() frame after frame; end_step() closes it as one step, called by the frame when no
-  // widget is active, so one drag is one step. set_input and preset loads close their own step.
+  // widget is active, so one drag is one step. Closing edits and preset loads close their own.
   void end_step();
   bool undo();
   bool redo();
@@ -113,6 +143,8 @@ class Document {
     std::string loaded_path;
     Parameters edited;
   };
+  // Validates edited_ and hands it to the scene when valid.
+  void commit();
   Snapshot snapshot() const;
   static bool same(const Snapshot& a, const Snapshot& b);
   void restore(const Snapshot& s);

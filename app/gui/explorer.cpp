@@ -1,5 +1,6 @@
 #include "app/gui/explorer.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <exception>
 #include <utility>
@@ -20,25 +21,36 @@ Explorer::Explorer(const Preset& initial, const std::string& initial_path, bool 
     : options_(std::move(options)),
       renderer_(renderer),
       appearance_(options_.font_file),
-      document_(initial, initial_path),
-      presets_(options_.presets_dir, options_.user_presets_dir),
-      photo_(PhotoPaths{options_.measurements_file, options_.user_presets_dir,
-                        shipped_measurements_file(options_.presets_dir)}),
-      analysis_(options_.presets_dir, options_.analysis_tab) {
+      document_(initial, initial_path) {
+  // The panels, in drawing order: the tiled ones in the layout's order, then the floating windows.
+  parameters_ = add<ParametersPanel>();
+  presets_ = add<PresetsPanel>(options_.presets_dir, options_.user_presets_dir);
+  fold_plot_ = add<FoldPlotPanel>();
+  cloth_view_ = add<ClothViewPanel>();
+  add<ResultsPanel>();
+  analysis_ = add<AnalysisPanel>(options_.presets_dir, options_.analysis_tab);
+  calibration_ = add<CalibrationPanel>();
+  photo_ = add<PhotoOverlay>(PhotoPaths{options_.measurements_file, options_.user_presets_dir,
+                                        shipped_measurements_file(options_.presets_dir)});
+
+  presets_->set_footer([this] {
+    calibration_->open_button(document_.scene().parameters());
+    if (!appearance_.notice().empty()) {
+      ImGui::PushStyleColor(ImGuiCol_Text, kNoteText);
+      ImGui::TextWrapped("%s", appearance_.notice().c_str());
+      ImGui::PopStyleColor();
+    }
+  });
   if (restore_session && !options_.session_file.empty()) {
     std::string error;
     if (std::optional<Session> s = load_session(options_.session_file, error)) {
       document_.adopt(s->loaded, s->loaded_preset_path);
-      document_.edited() = s->current.parameters;
-      document_.commit();
+      document_.apply(Edit::replace(s->current.parameters));
       document_.scene().set_grid_resolution(s->grid_resolution, s->grid_resolution);
-      ClothStyle& style = cloth_view_.style();
-      style.wireframe = s->wireframe;
-      style.fold_lines = s->fold_lines_3d;
-      style.ground = s->ground;
-      appearance_.request(s->ui_scale_percent, s->light_theme);
-      automatic_layout_ = s->automatic_layout;
-      document_.expert_mode = s->expert_mode;
+      load_settings(s->view);
+      for (const std::unique_ptr<Panel>& panel : panels_) {
+        panel->load_settings(s->view);
+      }
       document_.notify("Restored the last session.", MessageKind::info);
       for (const std::string& notice : s->notices) {
         document_.add_notice(notice);
@@ -47,7 +59,7 @@ Explorer::Explorer(const Preset& initial, const std::string& initial_path, bool 
       document_.add_notice(error);  // present but unusable: say why the defaults are shown
     }
   }
-  for (const std::string& notice : presets_.notices()) {
+  for (const std::string& notice : presets_->notices()) {
     document_.add_notice(notice);
   }
   document_.forget_history();  // undo goes back no further than what the window opened with
@@ -64,7 +76,7 @@ Explorer::~Explorer() {
 }
 
 std::optional<std::string> Explorer::set_input(std::string_view key, double value) {
-  return document_.set_input(key, value);
+  return document_.apply(Edit::input(std::string(key), value));
 }
 
 std::optional<std::string> Explorer::set_view(std::string_view key, std::string_view value) {
@@ -72,7 +84,7 @@ std::optional<std::string> Explorer::set_view(std::string_view key, std::string_
     static const char* const names[] = {"table1", "table2", "fig4"};
     for (int which = 0; which < SweepPanel::kPaperCases; ++which) {
       if (value == names[which]) {
-        analysis_.show_paper_case(which, document_);
+        analysis_->show_paper_case(which, document_);
         return std::nullopt;
       }
     }
@@ -110,7 +122,26 @@ std::optional<std::string> Explorer::set_view(std::string_view key, std::string_
     document_.scene().set_grid_resolution(n, n);
     return std::nullopt;
   }
-  return cloth_view_.set_view(key, value);
+  return cloth_view_->set_view(key, value);
+}
+
+bool Explorer::busy() const {
+  return std::any_of(panels_.begin(), panels_.end(),
+                     [](const std::unique_ptr<Panel>& panel) { return panel->busy(); });
+}
+
+void Explorer::save_settings(SessionSettings& settings) const {
+  settings.set("ui_scale_percent", appearance_.scale_percent());
+  settings.set("light_theme", appearance_.light_theme());
+  settings.set("automatic_layout", automatic_layout_);
+  settings.set("expert", document_.expert_mode);
+}
+
+void Explorer::load_settings(const SessionSettings& settings) {
+  appearance_.request(settings.get("ui_scale_percent", appearance_.scale_percent()),
+                      settings.get("light_theme", appearance_.light_theme()));
+  automatic_layout_ = settings.get("automatic_layout", automatic_layout_);
+  document_.expert_mode = settings.get("expert", document_.expert_mode);
 }
 
 void Explorer::save_session_now() {
@@ -123,13 +154,10 @@ void Explorer::save_session_now() {
   s.loaded = document_.loaded();
   s.loaded_preset_path = document_.loaded_path();
   s.grid_resolution = document_.scene().grid_nx();
-  s.wireframe = cloth_view_.style().wireframe;
-  s.fold_lines_3d = cloth_view_.style().fold_lines;
-  s.ground = cloth_view_.style().ground;
-  s.ui_scale_percent = appearance_.scale_percent();
-  s.light_theme = appearance_.light_theme();
-  s.automatic_layout = automatic_layout_;
-  s.expert_mode = document_.expert_mode;
+  save_settings(s.view);
+  for (const std::unique_ptr<Panel>& panel : panels_) {
+    panel->save_settings(s.view);
+  }
   save_session(options_.session_file, s);
   document_.session_dirty = false;
 }
@@ -176,7 +204,7 @@ void Explorer::handle_shortcuts() {
   } else if (ImGui::IsKeyPressed('Y', false)) {
     document_.redo();
   } else if (ImGui::IsKeyPressed('S', false)) {
-    presets_.save(document_);
+    presets_->save(document_);
   }
 }
 
@@ -195,7 +223,7 @@ void Explorer::draw_unsaved_dialog() {
     if (ImGui::Button("Save")) {
       ImGui::CloseCurrentPopup();
       document_.set_modal("");
-      presets_.save(document_);  // then loads, unless it asks for a name or fails
+      presets_->save(document_);  // then loads, unless it asks for a name or fails
     }
     ImGui::SameLine();
     if (ImGui::Button("Discard")) {
@@ -244,7 +272,7 @@ float Explorer::main_menu() {
       ImGui::EndMenu();
     }
     if (ImGui::BeginMenu("Export")) {
-      export_.menu(document_, cloth_view_.style());
+      export_.menu(document_, cloth_view_->style());
       ImGui::EndMenu();
     }
     // One click from the menu bar while the user's own arrangement is shown.
@@ -264,11 +292,11 @@ void Explorer::reset_layout() {
   }
 }
 
-void Explorer::place(Tile tile, const TiledLayout& layout) {
+void Explorer::place(const Panel& panel, Tile tile, const TiledLayout& layout) {
   const int i = static_cast<int>(tile);
   const PanelRect& rect = layout[tile];
   if (automatic_layout_ && placed_valid_[i]) {
-    const ImGuiWindow* window = ImGui::FindWindowByName(tile_window_name(tile));
+    const ImGuiWindow* window = ImGui::FindWindowByName(panel.window_label().c_str());
     const PanelRect& last = placed_[i];
     if (window != nullptr &&
         (window->Pos.x != last.pos.x || window->Pos.y != last.pos.y ||
@@ -285,13 +313,14 @@ void Explorer::place(Tile tile, const TiledLayout& layout) {
 }
 
 std::vector<std::pair<std::string, PanelRect>> Explorer::panel_rects() const {
-  static const char* const names[kTileCount] = {"parameters", "presets", "fold_plot",
-                                                "cloth",      "results", "analysis"};
   std::vector<std::pair<std::string, PanelRect>> out;
-  for (int i = 0; i < kTileCount; ++i) {
-    const ImGuiWindow* window = ImGui::FindWindowByName(tile_window_name(static_cast<Tile>(i)));
+  for (const std::unique_ptr<Panel>& panel : panels_) {
+    if (!panel->tile()) {
+      continue;
+    }
+    const ImGuiWindow* window = ImGui::FindWindowByName(panel->window_label().c_str());
     if (window != nullptr) {
-      out.emplace_back(names[i], PanelRect{window->Pos, window->SizeFull});
+      out.emplace_back(panel->key(), PanelRect{window->Pos, window->SizeFull});
     }
   }
   return out;
@@ -335,34 +364,18 @@ void Explorer::frame() {
   menu_height_ = main_menu();
   const TiledLayout layout =
       tiled_layout(ImGui::GetIO().DisplaySize, menu_height_, ImGui::GetFontSize());
-  place(Tile::parameters, layout);
-  parameters_.draw(document_, renderer_);
-  place(Tile::presets, layout);
-  presets_.draw(document_, renderer_, [this] {
-    calibration_.open_button(document_.scene().parameters());
-    if (!appearance_.notice().empty()) {
-      ImGui::PushStyleColor(ImGuiCol_Text, kNoteText);
-      ImGui::TextWrapped("%s", appearance_.notice().c_str());
-      ImGui::PopStyleColor();
+  PanelContext context{document_, renderer_, *photo_, wake_};
+  for (const std::unique_ptr<Panel>& panel : panels_) {
+    if (const std::optional<Tile> tile = panel->tile()) {
+      place(*panel, *tile, layout);
     }
-  });
-  place(Tile::fold_plot, layout);
-  fold_plot_.draw(document_, renderer_, photo_);
-  place(Tile::cloth, layout);
-  cloth_view_.draw(document_, renderer_);
-  place(Tile::results, layout);
-  results_.draw(document_, renderer_);
-  place(Tile::analysis, layout);
-  analysis_.draw(document_, renderer_);
-  if (calibration_.draw(document_.edited(), document_.loaded(), renderer_)) {
-    document_.commit();  // the fitted constants, applied as a slider would
+    panel->draw(context);
   }
   stats_overlay(show_stats_, document_.scene(), renderer_.counters());
   draw_unsaved_dialog();
-  presets_.draw_dialogs(document_);
-  photo_.draw_windows(document_, renderer_);
-  if (photo_.take_saved_preset()) {
-    presets_.refresh();  // the fitted preset joins the list
+  presets_->draw_dialogs(document_);
+  if (photo_->take_saved_preset()) {
+    presets_->refresh();  // the fitted preset joins the list
   }
   if (!ImGui::IsAnyItemActive()) {
     document_.end_step();  // a drag or a typed value ends when its widget lets go

@@ -1,10 +1,12 @@
 // The explorer: the coordinator of the FoldLab window. It owns the document (the one copy of the
-// state the panels share) and one object per panel, and draws them once per frame with Dear
+// state the panels share) and one list of panels, and draws them once per frame with Dear
 // ImGui. It draws through a Renderer, never GL itself: the GL renderer serves the window and
 // headless pictures, the null renderer serves unit tests.
 #pragma once
 
 #include <filesystem>
+#include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -13,6 +15,7 @@
 
 #include "app/gui/appearance.hpp"
 #include "app/gui/document.hpp"
+#include "app/gui/panel.hpp"
 #include "app/gui/panels/analysis_panel.hpp"
 #include "app/gui/panels/calibration_panel.hpp"
 #include "app/gui/panels/cloth_view_panel.hpp"
@@ -52,28 +55,35 @@ class Explorer {
   // Builds every window for this frame; between ImGui::NewFrame and ImGui::Render.
   void frame();
 
-  // Sets one input by its --set key, exactly as moving its slider does (for scripted runs).
+  // Sets one input by its --set key through Document::apply, as one undo step (scripted runs,
+  // --animate, tests): a refused value is kept with its reason, as a slider's is.
   std::optional<std::string> set_input(std::string_view key, double value);
   // A view setting by name (see ClothViewPanel::set_view, plus sweep=table1|table2|fig4).
   std::optional<std::string> set_view(std::string_view key, std::string_view value);
   void load_preset_file(const std::filesystem::path& path) { document_.load_preset_file(path); }
   // Ctrl+S, as the keys do.
-  void save() { presets_.save(document_); }
+  void save() { presets_->save(document_); }
 
   Document& document() { return document_; }
   Scene& scene() { return document_.scene(); }
   const Parameters& edited() const { return document_.edited(); }
   const RenderCounters& renderer_counters() const { return renderer_.counters(); }
-  const AnalysisPanel& analysis() const { return analysis_; }
-  const PresetsPanel& presets() const { return presets_; }
-  const ParametersPanel& parameters_panel() const { return parameters_; }
-  const FoldPlotPanel& fold_plot() const { return fold_plot_; }
-  PhotoOverlay& photo() { return photo_; }
-  const PhotoOverlay& photo() const { return photo_; }
+  const AnalysisPanel& analysis() const { return *analysis_; }
+  const PresetsPanel& presets() const { return *presets_; }
+  const ParametersPanel& parameters_panel() const { return *parameters_; }
+  const FoldPlotPanel& fold_plot() const { return *fold_plot_; }
+  PhotoOverlay& photo() { return *photo_; }
+  const PhotoOverlay& photo() const { return *photo_; }
+  // Every panel, in the order they are drawn (the tiled ones first, in the layout's order).
+  const std::vector<std::unique_ptr<Panel>>& panels() const { return panels_; }
+  // How a background job that finished wakes the frame loop while it sleeps (the window's
+  // empty event); callable from any thread. None by default: a test's loop never sleeps.
+  void set_wake(std::function<void()> wake) { wake_ = std::move(wake); }
   Appearance& appearance() { return appearance_; }
   // True while the panels follow the window (until the user moves or resizes one).
   bool automatic_layout() const { return automatic_layout_; }
-  // Where each tiled panel was drawn in the last frame (ImGui's windows, after the user's moves).
+  // Where each tiled panel was drawn in the last frame (ImGui's windows, after the user's moves),
+  // by Panel::key().
   std::vector<std::pair<std::string, PanelRect>> panel_rects() const;
   // True when the tiled panels cover the display below the menu bar exactly: no gap, no overlap,
   // nothing outside it.
@@ -94,21 +104,20 @@ class Explorer {
   // A line kept in the Presets panel and listed by `gui --report` (see Document::add_notice).
   void add_notice(const std::string& notice) { document_.add_notice(notice); }
   const std::vector<std::string>& notices() const { return document_.notices(); }
-  // True while background work (the regime map) is still filling in what the window shows.
-  bool busy() const { return analysis_.regime_map().computing(); }
+  // True while background work of any panel (the regime map, a calibration, the photo's fit) is
+  // still to show up in what the window shows.
+  bool busy() const;
   // True while a frame would differ from the last without any input: background work or the
-  // breeze. Otherwise the window may sleep until an event comes.
-  bool animating() const {
-    return busy() || calibration_.running() || photo_.fitting() || cloth_view_.animating();
-  }
+  // breeze. Otherwise the window may sleep until an event (or a finished job's wake) comes.
+  bool animating() const { return busy() || cloth_view_->animating(); }
   // True while a frame would differ from the last after a while, with no input: a message that
   // will fade, a session or window layout to save, a text cursor blinking. (Tooltips show at
   // once, in the frames that follow the mouse's move.) Call after a frame; otherwise a sleeping
   // window needs no timeout.
   bool awaits_time() const;
-  const ClothStyle& cloth_style() const { return cloth_view_.style(); }
+  const ClothStyle& cloth_style() const { return cloth_view_->style(); }
   // The last finished regime map's wall time in ms (0 before one finishes).
-  double regime_map_ms() const { return analysis_.regime_map().last_map_ms(); }
+  double regime_map_ms() const { return analysis_->regime_map().last_map_ms(); }
 
  private:
   void save_session_when_idle();
@@ -122,21 +131,36 @@ class Explorer {
   void view_menu();
   // Before a tiled panel's draw: its place in the automatic layout, set every frame until the
   // user moves or resizes a panel (seen as a panel not where this put it last frame).
-  void place(Tile tile, const TiledLayout& layout);
+  void place(const Panel& panel, Tile tile, const TiledLayout& layout);
+  // The settings the explorer itself remembers (UI scale and theme, automatic layout, expert
+  // mode); each panel saves and loads its own.
+  void save_settings(SessionSettings& settings) const;
+  void load_settings(const SessionSettings& settings);
+  // Appends a panel to the list and returns it.
+  template <class P, class... Args>
+  P* add(Args&&... args) {
+    auto panel = std::make_unique<P>(std::forward<Args>(args)...);
+    P* raw = panel.get();
+    panels_.push_back(std::move(panel));
+    return raw;
+  }
 
   ExplorerOptions options_;
   Renderer& renderer_;
   Appearance appearance_;
   Document document_;
-  ParametersPanel parameters_;
-  PresetsPanel presets_;
-  ExportPanel export_;
-  PhotoOverlay photo_;  // the fold plot's photo and its measurement window
-  FoldPlotPanel fold_plot_;
-  ClothViewPanel cloth_view_;
-  ResultsPanel results_;
-  AnalysisPanel analysis_;
-  CalibrationPanel calibration_;  // "Fit to measurements", opened from the Presets panel
+  ExportPanel export_;  // the Export menu, in the menu bar
+  // The panels, in drawing order; the pointers below point into it, for what the explorer's
+  // own interface offers of them.
+  std::vector<std::unique_ptr<Panel>> panels_;
+  ParametersPanel* parameters_ = nullptr;
+  PresetsPanel* presets_ = nullptr;
+  FoldPlotPanel* fold_plot_ = nullptr;
+  ClothViewPanel* cloth_view_ = nullptr;
+  AnalysisPanel* analysis_ = nullptr;
+  CalibrationPanel* calibration_ = nullptr;  // "Fit to measurements", opened from the Presets panel
+  PhotoOverlay* photo_ = nullptr;            // the fold plot's photo and its measurement window
+  std::function<void()> wake_;
   bool show_stats_ = false;
   bool automatic_layout_ = true;
   float menu_height_ = 0.0f;

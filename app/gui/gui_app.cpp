@@ -8,6 +8,8 @@
 #include <optional>
 #include <string>
 
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
 #include <imgui.h>
 
 #include "app/common/presets_dir.hpp"
@@ -183,6 +185,12 @@ int run(Surface& surface, const GuiRunOptions& options, const Preset& preset, bo
   const bool restore =
       persist && options.inputs.preset_path.empty() && options.inputs.assignments.empty();
   Explorer explorer(preset, options.inputs.preset_path, restore, explorer_options, *renderer);
+  if (interactive) {
+    // A background job that finishes while the window sleeps wakes it to show its result (the
+    // regime map's last rows, a calibration's table). Thread-safe; the window outlives the
+    // explorer, whose jobs end with it.
+    explorer.set_wake([] { glfwPostEmptyEvent(); });
+  }
   if (!config_problem.empty()) {
     explorer.add_notice(config_problem);
   }

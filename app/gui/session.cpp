@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <stdexcept>
 
 #include <nlohmann/json.hpp>
 
@@ -33,6 +34,21 @@ std::optional<std::string> oversized_file(const std::filesystem::path& path, std
   }
   return detail::printf_string("%s is %ju bytes, above the %ju a valid one can have; not read",
                                path.string().c_str(), bytes, limit);
+}
+
+SessionSettings SessionSettings::from_json(const nlohmann::json& view) {
+  SessionSettings out;
+  if (!view.is_object()) {
+    throw std::runtime_error("view must be an object");
+  }
+  for (const auto& [key, value] : view.items()) {
+    if (!value.is_boolean() && !value.is_number()) {
+      throw std::runtime_error("view." + key + " must be true, false or a number, not " +
+                               std::string(value.type_name()));
+    }
+    out.values_[key] = value;
+  }
+  return out;
 }
 
 std::optional<Session> load_session(const std::filesystem::path& path, std::string& error) {
@@ -78,13 +94,7 @@ std::optional<Session> session_from_text(const std::string& text, const std::str
           detail::shortest_number(stored_resolution).c_str(), kMinGridResolution,
           kMaxGridResolution, s.grid_resolution));
     }
-    s.wireframe = view.value("wireframe", s.wireframe);
-    s.fold_lines_3d = view.value("fold_lines", s.fold_lines_3d);
-    s.ground = view.value("ground", s.ground);
-    s.ui_scale_percent = view.value("ui_scale_percent", s.ui_scale_percent);
-    s.light_theme = view.value("light_theme", s.light_theme);
-    s.automatic_layout = view.value("automatic_layout", s.automatic_layout);
-    s.expert_mode = view.value("expert", s.expert_mode);
+    s.view = SessionSettings::from_json(view);
     return s;
   } catch (const std::exception& e) {
     error = "the saved session " + origin + " could not be read (" + e.what() +
@@ -100,20 +110,14 @@ void save_session(const std::filesystem::path& path, const Session& session) {
     throw WriteError(path.string() + ": cannot create the folder " + path.parent_path().string() +
                      " (" + error.message() + ")");
   }
+  nlohmann::json view = session.view.json();
+  view["grid_resolution"] = session.grid_resolution;
   const nlohmann::json j = {
       {"foldlab_session", 1},
       {"current", preset_to_json(session.current)},
       {"loaded", preset_to_json(session.loaded)},
       {"loaded_preset_path", session.loaded_preset_path},
-      {"view",
-       {{"grid_resolution", session.grid_resolution},
-        {"wireframe", session.wireframe},
-        {"fold_lines", session.fold_lines_3d},
-        {"ground", session.ground},
-        {"ui_scale_percent", session.ui_scale_percent},
-        {"light_theme", session.light_theme},
-        {"automatic_layout", session.automatic_layout},
-        {"expert", session.expert_mode}}},
+      {"view", view},
   };
   write_file_atomically(path, j.dump(2) + "\n");
 }

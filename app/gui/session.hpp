@@ -7,7 +7,10 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <type_traits>
 #include <vector>
+
+#include <nlohmann/json.hpp>
 
 #include "core/io/preset.hpp"
 
@@ -26,19 +29,46 @@ inline constexpr std::uintmax_t kMaxListedPresetBytes = 1024 * 1024;
 // Presets listed from one folder: each is read to show its name.
 inline constexpr std::size_t kMaxListedPresets = 500;
 
+// The session's "view" object: settings by name, true/false or numbers. Each panel saves and
+// restores its own under keys of its own (Panel::save_settings, load_settings), and gives the
+// default itself, so that remembering one more setting is written in one place.
+class SessionSettings {
+ public:
+  // The stored value, or `fallback` when it is absent or of another type.
+  template <class T>
+  T get(const char* key, T fallback) const {
+    const auto found = values_.find(key);
+    if (found == values_.end()) {
+      return fallback;
+    }
+    if constexpr (std::is_same_v<T, bool>) {
+      return found->is_boolean() ? found->template get<bool>() : fallback;
+    } else {
+      return found->is_number() ? found->template get<T>() : fallback;
+    }
+  }
+  template <class T>
+  void set(const char* key, T value) {
+    values_[key] = value;
+  }
+  bool has(const char* key) const { return values_.contains(key); }
+  // As stored in the file.
+  const nlohmann::json& json() const { return values_; }
+  // Throws nlohmann::json's exceptions unless `view` is an object of true/false and numbers.
+  static SessionSettings from_json(const nlohmann::json& view);
+
+ private:
+  nlohmann::json values_ = nlohmann::json::object();
+};
+
 struct Session {
   Preset current;                  // the edited parameters, named after their preset
   std::string loaded_preset_path;  // empty for the built-in default
   Preset loaded;                   // the preset as loaded, for "reset" and the unsaved marker
   int grid_resolution = 128;
-  bool wireframe = false;
-  bool fold_lines_3d = true;
-  bool ground = true;
-  int ui_scale_percent = 100;
-  bool light_theme = false;
-  // False once the user moved or resized a panel: imgui.ini then holds their arrangement.
-  bool automatic_layout = true;
-  bool expert_mode = false;  // beginner (false): the cloth's inputs only
+  // Everything else the panels and the explorer remember (the 3D view's switches, the UI scale
+  // and theme, whether the layout is automatic, expert mode), saved by each of them.
+  SessionSettings view;
   // What was changed while loading (a grid resolution brought into the slider's range), to show.
   std::vector<std::string> notices;
 };

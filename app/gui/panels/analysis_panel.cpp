@@ -21,8 +21,9 @@ void AnalysisPanel::show_paper_case(int which, Document& document) {
   tab_selected_ = false;
 }
 
-void AnalysisPanel::draw(Document& document, Renderer& renderer) {
-  if (!begin_panel("Analysis", renderer)) {
+void AnalysisPanel::draw(PanelContext& context) {
+  Document& document = context.document;
+  if (!begin(context.renderer)) {
     ImGui::End();
     return;
   }
@@ -55,7 +56,7 @@ void AnalysisPanel::draw(Document& document, Renderer& renderer) {
       ImGui::EndTabItem();
     }
     if (ImGui::BeginTabItem("Regime map", nullptr, map_flags)) {
-      regime_map_.draw(document, renderer);
+      regime_map_.draw(context);
       ImGui::EndTabItem();
     }
     ImGui::EndTabBar();

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "app/gui/document.hpp"
+#include "app/gui/panel.hpp"
 #include "app/gui/panels/method_panel.hpp"
 #include "app/gui/panels/regime_map_panel.hpp"
 #include "app/gui/panels/sweep_panel.hpp"
@@ -24,11 +25,16 @@ class EquationsTab {
   int shown_n_ = -1;
 };
 
-class AnalysisPanel {
+class AnalysisPanel : public Panel {
  public:
   // `initial_tab`: "equations", "method", "sweep" or "map", selected at the first frame.
   AnalysisPanel(std::filesystem::path presets_dir, std::string initial_tab);
-  void draw(Document& document, Renderer& renderer);
+  const char* name() const override { return "Analysis"; }
+  const char* key() const override { return "analysis"; }
+  std::optional<Tile> tile() const override { return Tile::analysis; }
+  void draw(PanelContext& context) override;
+  // While the regime map is being computed.
+  bool busy() const override { return regime_map_.computing(); }
   // Selects the Sweep tab with one of the paper's cases (0 Table 1, 1 Table 2, 2 Fig. 4).
   void show_paper_case(int which, Document& document);
 

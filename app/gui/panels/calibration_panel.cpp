@@ -97,12 +97,7 @@ CalibrationPanel::CalibrationPanel() {
   std::snprintf(data_path_, sizeof data_path_, "%s", path.c_str());
 }
 
-CalibrationPanel::~CalibrationPanel() {
-  cancel_requested_ = true;
-  if (worker_.joinable()) {
-    worker_.join();
-  }
-}
+CalibrationPanel::~CalibrationPanel() = default;  // the job cancels and joins its thread
 
 void CalibrationPanel::open_button(const Parameters& current) {
   if (ImGui::SmallButton("Fit to measurements...")) {
@@ -143,58 +138,50 @@ void CalibrationPanel::load_data() {
   }
 }
 
-void CalibrationPanel::start(const Parameters& base) {
+void CalibrationPanel::start(const Parameters& base, const std::function<void()>& wake) {
   CalibrationOptions options;
   options.fit = fit_choice_ == 0 ? FitConstants::K : FitConstants::K_and_p;
-  cancel_requested_ = false;
-  progress_ = 0.0;
-  running_ = true;
   run_message_.clear();
-  worker_ = std::thread([this, data = *data_, base, options] {
-    std::optional<CalibrationReport> report;
-    std::string error;
-    try {
-      report = calibrate(data, base, options, [this](double fraction) {
-        progress_ = fraction;
-        return !cancel_requested_.load();
-      });
-    } catch (const std::exception& e) {
-      error = e.what();
-    }
-    {
-      std::lock_guard<std::mutex> lock(mutex_);
-      finished_report_ = std::move(report);
-      finished_error_ = std::move(error);
-    }
-    running_ = false;
-  });
+  job_.start(
+      [data = *data_, base, options](JobToken& token) {
+        return calibrate(data, base, options, [&token](double fraction) {
+          token.report(fraction);
+          return !token.cancelled();
+        });
+      },
+      wake);
 }
 
 void CalibrationPanel::collect_finished_run() {
-  if (running_ || !worker_.joinable()) {
+  std::optional<CalibrationReport> finished;
+  try {
+    finished = job_.take_result();
+  } catch (const std::exception& e) {
+    run_message_ = std::string("The fit did not run: ") + e.what();
+    run_message_is_error_ = true;
     return;
   }
-  worker_.join();
-  std::lock_guard<std::mutex> lock(mutex_);
-  if (!finished_error_.empty()) {
-    run_message_ = "The fit did not run: " + finished_error_;
-    run_message_is_error_ = true;
-  } else if (finished_report_ && finished_report_->cancelled) {
+  if (!finished) {
+    return;
+  }
+  if (finished->cancelled) {
     run_message_ = "Cancelled; the previous result (if any) is kept.";
     run_message_is_error_ = false;
-  } else if (finished_report_) {
-    report_ = std::move(finished_report_);
+  } else {
+    report_ = std::move(finished);
     run_message_.clear();
   }
-  finished_report_.reset();
-  finished_error_.clear();
 }
 
-bool CalibrationPanel::draw(Parameters& edited, const Preset& loaded, Renderer& renderer) {
+void CalibrationPanel::draw(PanelContext& context) {
+  Document& document = context.document;
+  Renderer& renderer = context.renderer;
   collect_finished_run();
   if (!open_) {
-    return false;
+    return;
   }
+  const Parameters& edited = document.edited();
+  const Preset& loaded = document.loaded();
   // A floating window over the tiled panels: it opens on demand from the Presets panel.
   const ImVec2 display = ImGui::GetIO().DisplaySize;
   ImGui::SetNextWindowPos(ImVec2(0.14f * display.x, 0.06f * display.y), ImGuiCond_FirstUseEver);
@@ -203,8 +190,7 @@ bool CalibrationPanel::draw(Parameters& edited, const Preset& loaded, Renderer& 
     ImGui::SetNextWindowFocus();
     focus_on_open_ = false;
   }
-  bool changed = false;
-  if (ImGui::Begin("Fit to measurements", &open_)) {
+  if (ImGui::Begin(window_label().c_str(), &open_)) {
     renderer.fill_window_background();  // the style's window background is transparent
     section("The model's constants");
     ImGui::TextColored(kDimText, "now:");
@@ -243,16 +229,16 @@ bool CalibrationPanel::draw(Parameters& edited, const Preset& loaded, Renderer& 
         std::string(to_string(edited.model.span_rule)).c_str(),
         std::string(to_string(edited.model.int_rounding)).c_str());
     const bool valid = validate(edited).empty();
-    if (running_) {
-      ImGui::ProgressBar(static_cast<float>(progress_.load()), ImVec2(-ems(7.0f), 0.0f));
+    if (job_.pending()) {
+      ImGui::ProgressBar(static_cast<float>(job_.progress()), ImVec2(-ems(7.0f), 0.0f));
       ImGui::SameLine();
       if (ImGui::Button("Cancel")) {
-        cancel_requested_ = true;
+        job_.cancel();
       }
     } else {
       ImGui::BeginDisabled(!data_ || !valid);
       if (ImGui::Button("Run the fit")) {
-        start(edited);
+        start(edited, context.wake);
       }
       ImGui::EndDisabled();
       if (!valid) {
@@ -266,29 +252,25 @@ bool CalibrationPanel::draw(Parameters& edited, const Preset& loaded, Renderer& 
       ImGui::PopStyleColor();
     }
     if (report_) {
-      changed = apply_section(edited);
+      apply_section(document);
       results_section();
     }
   }
   ImGui::End();
-  return changed;
 }
 
-bool CalibrationPanel::apply_section(Parameters& edited) {
+void CalibrationPanel::apply_section(Document& document) {
   const FittedConstants& f = report_->fitted;
   const std::string label = "Apply K = " + printf_string("%.4g", f.K) +
                             ", p = " + printf_string("%.4g", f.p) + " to the current parameters";
-  bool changed = false;
   if (ImGui::Button(label.c_str())) {
-    edited = with_constants(edited, f.K, f.p);
-    changed = true;
+    document.apply(Edit::replace(with_constants(document.edited(), f.K, f.p)));
   }
   if (ImGui::IsItemHovered()) {
     ImGui::SetTooltip(
         "Sets c = K (1 − ν²) at the current ν, and p. Save a preset to keep them.\nThe "
         "paper's form is p = 1, c = 26.9.");
   }
-  return changed;
 }
 
 void CalibrationPanel::results_section() {

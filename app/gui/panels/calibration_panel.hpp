@@ -5,14 +5,14 @@
 // whether eq. 7 is the paper's form or the calibrated one.
 #pragma once
 
-#include <atomic>
 #include <filesystem>
-#include <mutex>
+#include <functional>
 #include <optional>
 #include <string>
-#include <thread>
 
-#include "app/gui/renderer.hpp"
+#include "app/gui/background_job.hpp"
+#include "app/gui/document.hpp"
+#include "app/gui/panel.hpp"
 #include "core/analysis/calibration.hpp"
 #include "core/io/measurements.hpp"
 #include "core/io/preset.hpp"
@@ -23,10 +23,10 @@ namespace foldlab::gui {
 // not found.
 std::filesystem::path shipped_measurements_file(std::filesystem::path presets);
 
-class CalibrationPanel {
+class CalibrationPanel : public Panel {
  public:
   CalibrationPanel();
-  // Cancels a running calibration and waits for its thread: it reads this object's members.
+  // Cancels a running calibration and waits for its thread (the job does).
   ~CalibrationPanel();
   CalibrationPanel(const CalibrationPanel&) = delete;
   CalibrationPanel& operator=(const CalibrationPanel&) = delete;
@@ -35,19 +35,21 @@ class CalibrationPanel {
   // Presets panel).
   void open_button(const Parameters& current);
 
-  // The window, when open. `edited` are the explorer's parameters: "Apply" writes the fitted K
-  // (as c at their Poisson ratio) and p into them and returns true, so that the explorer commits
-  // them as it does a slider. `loaded` is the preset as loaded, whose constants are shown.
-  bool draw(Parameters& edited, const Preset& loaded, Renderer& renderer);
+  const char* name() const override { return "Fit to measurements"; }
+  const char* key() const override { return "calibration"; }
+  // The window, when open. "Apply" sets the fitted K (as c at the edited Poisson ratio) and p
+  // through Document::apply, one undo step; the preset as loaded shows its own constants.
+  void draw(PanelContext& context) override;
+  bool busy() const override { return running(); }
   // From the start of a run until the window has taken its result.
-  bool running() const { return worker_.joinable(); }
+  bool running() const { return job_.pending(); }
 
  private:
   void load_data();
-  void start(const Parameters& base);
+  void start(const Parameters& base, const std::function<void()>& wake);
   void collect_finished_run();
   void results_section();
-  bool apply_section(Parameters& edited);
+  void apply_section(Document& document);
 
   bool open_ = false;
   bool focus_on_open_ = false;
@@ -57,15 +59,7 @@ class CalibrationPanel {
   bool data_message_is_error_ = false;
   int fit_choice_ = 0;  // 0: K alone, 1: K and p
 
-  // The background run. The worker writes progress_ and, under mutex_, finished_*; the UI thread
-  // reads them and joins the worker once running_ is false.
-  std::thread worker_;
-  std::atomic<bool> running_{false};
-  std::atomic<bool> cancel_requested_{false};
-  std::atomic<double> progress_{0.0};
-  std::mutex mutex_;
-  std::optional<CalibrationReport> finished_report_;
-  std::string finished_error_;
+  BackgroundJob<CalibrationReport> job_;  // the run, with its progress and cancel
 
   std::optional<CalibrationReport> report_;  // the last completed run, shown
   std::string run_message_;

@@ -192,13 +192,27 @@ void ClothViewPanel::follow_the_cloth(Scene& scene, bool reset) {
   }
 }
 
-void ClothViewPanel::draw(Document& document, Renderer& renderer) {
+void ClothViewPanel::save_settings(SessionSettings& settings) const {
+  settings.set("wireframe", style_.wireframe);
+  settings.set("fold_lines", style_.fold_lines);
+  settings.set("ground", style_.ground);
+}
+
+void ClothViewPanel::load_settings(const SessionSettings& settings) {
+  style_.wireframe = settings.get("wireframe", style_.wireframe);
+  style_.fold_lines = settings.get("fold_lines", style_.fold_lines);
+  style_.ground = settings.get("ground", style_.ground);
+}
+
+void ClothViewPanel::draw(PanelContext& context) {
+  Document& document = context.document;
+  Renderer& renderer = context.renderer;
   if (fill_display_) {
     ImGui::SetNextWindowPos(ImVec2(0.0f, 0.0f), ImGuiCond_Always);
     ImGui::SetNextWindowSize(ImGui::GetIO().DisplaySize, ImGuiCond_Always);
     ImGui::SetNextWindowFocus();
   }
-  if (!begin_panel("Cloth (3D)", renderer)) {
+  if (!begin(renderer)) {
     ImGui::End();
     return;  // hidden: no grid, no normals, no upload, no draw
   }

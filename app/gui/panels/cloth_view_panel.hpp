@@ -12,13 +12,19 @@
 
 #include "app/gui/camera.hpp"
 #include "app/gui/document.hpp"
-#include "app/gui/renderer.hpp"
+#include "app/gui/panel.hpp"
 
 namespace foldlab::gui {
 
-class ClothViewPanel {
+class ClothViewPanel : public Panel {
  public:
-  void draw(Document& document, Renderer& renderer);
+  const char* name() const override { return "Cloth (3D)"; }
+  const char* key() const override { return "cloth"; }
+  std::optional<Tile> tile() const override { return Tile::cloth; }
+  void draw(PanelContext& context) override;
+  // Wireframe, fold lines and ground.
+  void save_settings(SessionSettings& settings) const override;
+  void load_settings(const SessionSettings& settings) override;
 
   ClothStyle& style() { return style_; }
   const ClothStyle& style() const { return style_; }

@@ -12,8 +12,11 @@
 
 namespace foldlab::gui {
 
-void FoldPlotPanel::draw(Document& document, Renderer& renderer, PhotoOverlay& photo) {
-  if (!begin_panel("Fold lines (2D)", renderer)) {
+void FoldPlotPanel::draw(PanelContext& context) {
+  Document& document = context.document;
+  Renderer& renderer = context.renderer;
+  PhotoOverlay& photo = context.photo;
+  if (!begin(renderer)) {
     ImGui::End();
     return;  // hidden: the fold lines are not even computed
   }

@@ -7,16 +7,20 @@
 #include <vector>
 
 #include "app/gui/document.hpp"
+#include "app/gui/panel.hpp"
 #include "app/gui/panels/photo_overlay.hpp"
 #include "app/gui/plot_widget.hpp"
 #include "app/gui/renderer.hpp"
 
 namespace foldlab::gui {
 
-class FoldPlotPanel {
+class FoldPlotPanel : public Panel {
  public:
-  // `photo` adds its buttons, its backdrop and its clicks to the plot.
-  void draw(Document& document, Renderer& renderer, PhotoOverlay& photo);
+  const char* name() const override { return "Fold lines (2D)"; }
+  const char* key() const override { return "fold_plot"; }
+  std::optional<Tile> tile() const override { return Tile::fold_plot; }
+  // The context's photo adds its buttons, its backdrop and its clicks to the plot.
+  void draw(PanelContext& context) override;
   // Where the plot was drawn last (its data area and legend, screen pixels).
   const PlotView& plot_view() const { return plot_.view(); }
 

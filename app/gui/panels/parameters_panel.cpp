@@ -90,8 +90,7 @@ void choice_combo(Document& document, const InputSpec& spec, float width) {
         rest.remove_prefix(1);
       }
       if (ImGui::Selectable(option.c_str(), option == current) && option != current) {
-        spec.set_choice(document.edited(), option);
-        document.commit();
+        document.apply(Edit::choose(std::string(spec.key), option));
       }
     }
     ImGui::EndCombo();
@@ -202,8 +201,8 @@ void ParametersPanel::input_slider(Document& document, const InputSpec& spec, fl
         SliderPlace{min, ImVec2(min.x + width, min.y + ImGui::GetFrameHeight()), fraction};
   }
   if (changed) {
-    set_input(document.edited(), spec.key, value);
-    document.commit();
+    // Open: the frame closes the step when the slider or its text field lets go.
+    document.apply(Edit::input(std::string(spec.key), value).open());
   }
   if (is_refused) {
     ImGui::PopStyleColor();
@@ -211,10 +210,10 @@ void ParametersPanel::input_slider(Document& document, const InputSpec& spec, fl
   help_marker(std::string(spec.help).c_str());
 }
 
-void ParametersPanel::draw(Document& document, Renderer& renderer) {
+void ParametersPanel::draw(PanelContext& context) {
+  Document& document = context.document;
   const bool unsaved = document.unsaved();
-  const std::string title = std::string("Parameters") + (unsaved ? " *" : "") + "###parameters";
-  if (!begin_panel(title.c_str(), renderer)) {
+  if (!begin(context.renderer, unsaved ? " *" : "")) {
     ImGui::End();
     return;
   }
@@ -234,8 +233,9 @@ void ParametersPanel::draw(Document& document, Renderer& renderer) {
   const bool printed = is_printed_eq7(document.edited());
   ImGui::BeginDisabled(printed);
   if (ImGui::Button(kPrintedEq7Label)) {
-    set_printed_eq7(document.edited());
-    document.commit();
+    Parameters p = document.edited();
+    set_printed_eq7(p);
+    document.apply(Edit::replace(p));
   }
   ImGui::EndDisabled();
   help_marker(
@@ -286,8 +286,7 @@ void ParametersPanel::draw(Document& document, Renderer& renderer) {
     if (ImGui::SliderInt("supports", &count, static_cast<int>(supports.typical_lo),
                          static_cast<int>(supports.typical_hi), "%d",
                          ImGuiSliderFlags_AlwaysClamp)) {
-      document.edited().shape.supports = count;
-      document.commit();
+      document.apply(Edit::input("supports", count).open());
     }
     help_marker(std::string(supports.help).c_str());
   } else if (document.edited().shape.kind == ShapeKind::inclined) {

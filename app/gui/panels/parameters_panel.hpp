@@ -1,7 +1,7 @@
 // The Parameters panel: one slider per input of the cloth, its hanging and eq. 7's K, each with
 // the scale, format, unit and help of its row in the input table and a range that stops where
 // validation would refuse; the shape; for experts also the model's choices and the 3D grid.
-// Edits go into the document and are committed as they happen.
+// Every change goes through Document::apply as it happens; a drag stays one open undo step.
 #pragma once
 
 #include <functional>
@@ -11,7 +11,7 @@
 #include <imgui.h>
 
 #include "app/gui/document.hpp"
-#include "app/gui/renderer.hpp"
+#include "app/gui/panel.hpp"
 #include "core/model/settings.hpp"
 
 namespace foldlab::gui {
@@ -24,9 +24,12 @@ struct SliderPlace {
   double fraction = 0.0;
 };
 
-class ParametersPanel {
+class ParametersPanel : public Panel {
  public:
-  void draw(Document& document, Renderer& renderer);
+  const char* name() const override { return "Parameters"; }
+  const char* key() const override { return "parameters"; }
+  std::optional<Tile> tile() const override { return Tile::parameters; }
+  void draw(PanelContext& context) override;
   // By input key; a slider hidden last frame keeps its older place.
   const std::map<std::string, SliderPlace, std::less<>>& slider_places() const { return places_; }
 

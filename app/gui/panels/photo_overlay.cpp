@@ -52,11 +52,7 @@ SupportsFrame supports_frame(const PixelPoint& a, const PixelPoint& b) {
 
 PhotoOverlay::PhotoOverlay(PhotoPaths paths) : paths_(std::move(paths)) {}
 
-PhotoOverlay::~PhotoOverlay() {
-  if (fit_.valid()) {
-    fit_.wait();
-  }
-}
+PhotoOverlay::~PhotoOverlay() = default;  // the fit's job waits for its thread
 
 std::pair<double, double> PhotoOverlay::to_plot(double x_px, double y_px, double span_mm) const {
   if (supports_.size() == 2) {
@@ -325,16 +321,17 @@ void PhotoOverlay::start_fit(const Document& document) {
   options.fit = FitConstants::K_and_p;
   fit_message_ = "Fitting K and p to " + std::to_string(data.rows.size()) + " rows...";
   fit_message_is_error_ = false;
-  fit_ = std::async(std::launch::async,
-                    [data, base = fit_base_, options] { return calibrate(data, base, options); });
+  fit_.start(
+      [data, base = fit_base_, options](JobToken&) { return calibrate(data, base, options); },
+      wake_);
 }
 
 void PhotoOverlay::collect_fit(Document& document) {
-  if (!fit_.valid() || fit_.wait_for(std::chrono::seconds(0)) != std::future_status::ready) {
+  if (!fit_.finished()) {
     return;
   }
   try {
-    const CalibrationReport report = fit_.get();
+    const CalibrationReport report = *fit_.take_result();
     const FittedConstants& f = report.fitted;
     const std::string data_label = with_shipped_rows_ && !paths_.shipped_data_file.empty()
                                        ? "my measurements and " + std::string(kConciTables12)
@@ -423,7 +420,7 @@ void PhotoOverlay::measurement_window(Document& document, Renderer& renderer) {
   const ImVec2 display = ImGui::GetIO().DisplaySize;
   ImGui::SetNextWindowPos(ImVec2(0.65f * display.x, 0.0f), ImGuiCond_FirstUseEver);
   ImGui::SetNextWindowSize(ImVec2(0.35f * display.x, 0.56f * display.y), ImGuiCond_FirstUseEver);
-  if (!ImGui::Begin(kWindow)) {
+  if (!ImGui::Begin(window_label().c_str())) {
     ImGui::End();
     return;
   }

@@ -9,14 +9,16 @@
 
 #include <cstdint>
 #include <filesystem>
-#include <future>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include <nlohmann/json_fwd.hpp>
 
+#include "app/gui/background_job.hpp"
 #include "app/gui/document.hpp"
+#include "app/gui/panel.hpp"
 #include "app/gui/plot_widget.hpp"
 #include "app/gui/renderer.hpp"
 #include "core/analysis/calibration.hpp"
@@ -31,16 +33,23 @@ struct PhotoPaths {
   std::filesystem::path shipped_data_file;  // Conci's Tables 1–2, empty when not found
 };
 
-class PhotoOverlay {
+class PhotoOverlay : public Panel {
  public:
   explicit PhotoOverlay(PhotoPaths paths);
-  // Waits for a running fit: it reads this object's members.
+  // Waits for a running fit (its job does).
   ~PhotoOverlay();
   PhotoOverlay(const PhotoOverlay&) = delete;
   PhotoOverlay& operator=(const PhotoOverlay&) = delete;
 
   static constexpr const char* kLoadModal = "Load photo";
-  static constexpr const char* kWindow = "Photo measurement";
+  const char* name() const override { return "Photo measurement"; }
+  const char* key() const override { return "photo"; }
+  // The load dialog and the measurement window (the fold plot draws the rest).
+  void draw(PanelContext& context) override {
+    wake_ = context.wake;  // for the fit started from the window
+    draw_windows(context.document, context.renderer);
+  }
+  bool busy() const override { return fitting(); }
 
   // The buttons above the fold plot: "Load photo...", "Place supports", "Click folds".
   void toolbar(Document& document);
@@ -56,7 +65,8 @@ class PhotoOverlay {
   bool load(const std::filesystem::path& path, Document& document, Renderer& renderer);
   // A preset "Fit" saved since the last call, for the presets list to show.
   std::optional<std::filesystem::path> take_saved_preset();
-  bool fitting() const { return fit_.valid(); }
+  // From "Fit" until its result is collected.
+  bool fitting() const { return fit_.pending(); }
 
   // Where photo pixel (x, y) is on screen in the last drawn plot (for tests and scripts).
   ImVec2 screen_of_pixel(double x_px, double y_px) const;
@@ -102,7 +112,8 @@ class PhotoOverlay {
   int rows_in_file_ = 0;
 
   bool with_shipped_rows_ = true;
-  std::future<CalibrationReport> fit_;
+  BackgroundJob<CalibrationReport> fit_;
+  std::function<void()> wake_;
   Parameters fit_base_;
   int fit_user_rows_ = 0;
   std::string fit_message_;

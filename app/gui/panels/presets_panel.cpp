@@ -188,9 +188,9 @@ void PresetsPanel::draw_dialogs(Document& document) {
   }
 }
 
-void PresetsPanel::draw(Document& document, Renderer& renderer,
-                        const std::function<void()>& footer) {
-  if (!begin_panel("Presets", renderer)) {
+void PresetsPanel::draw(PanelContext& context) {
+  Document& document = context.document;
+  if (!begin(context.renderer)) {
     ImGui::End();
     return;
   }
@@ -241,7 +241,9 @@ void PresetsPanel::draw(Document& document, Renderer& renderer,
     ImGui::TextWrapped("%s", notice.c_str());
     ImGui::PopStyleColor();
   }
-  footer();
+  if (footer_) {
+    footer_();
+  }
   ImGui::End();
 }
 

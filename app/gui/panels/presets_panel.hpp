@@ -10,14 +10,19 @@
 #include <vector>
 
 #include "app/gui/document.hpp"
-#include "app/gui/renderer.hpp"
+#include "app/gui/panel.hpp"
 
 namespace foldlab::gui {
 
-class PresetsPanel {
+class PresetsPanel : public Panel {
  public:
   PresetsPanel(std::filesystem::path presets_dir, std::filesystem::path user_presets_dir);
-  void draw(Document& document, Renderer& renderer, const std::function<void()>& footer);
+  const char* name() const override { return "Presets"; }
+  const char* key() const override { return "presets"; }
+  std::optional<Tile> tile() const override { return Tile::presets; }
+  void draw(PanelContext& context) override;
+  // What the explorer adds at the foot of the panel (the calibration window's button).
+  void set_footer(std::function<void()> footer) { footer_ = std::move(footer); }
   // Saves the current valid parameters as a user preset named `name` (the file name is its slug);
   // asks before replacing a file unless `overwrite`.
   void save_as(Document& document, const std::string& name, bool overwrite);
@@ -54,6 +59,7 @@ class PresetsPanel {
   char save_name_[128] = {};
   char save_as_name_[128] = {};
   std::string pending_overwrite_;  // name waiting for the user's "overwrite?" answer
+  std::function<void()> footer_;
 };
 
 // A file name from a preset name: lower-case letters, digits and dashes.

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <span>
+#include <thread>
 
 #include <imgui.h>
 
@@ -87,7 +88,9 @@ double axis_fraction(const SweepAxis& axis, double value) {
 
 }  // namespace
 
-struct RegimeMapPanel::Job {
+// The map's cells and which rows are done, shared by the job's threads and the panel, which
+// shows the rows as they arrive.
+struct RegimeMapPanel::Cells {
   SweepAxis x;
   SweepAxis y;
   Parameters base;
@@ -95,66 +98,56 @@ struct RegimeMapPanel::Job {
   std::unique_ptr<std::atomic<bool>[]> row_done;
   std::atomic<int> next_row{0};
   std::atomic<int> rows_done{0};
-  std::atomic<bool> cancel{false};
-  std::chrono::steady_clock::time_point start;
-  std::atomic<double> elapsed_ms{0.0};
 };
 
 RegimeMapPanel::RegimeMapPanel() = default;
 
-RegimeMapPanel::~RegimeMapPanel() {
-  stop();
-}
+RegimeMapPanel::~RegimeMapPanel() = default;  // the job cancels and joins its threads
 
-bool RegimeMapPanel::computing() const {
-  return job_ && job_->rows_done.load() < job_->y.steps && !job_->cancel;
-}
-
-void RegimeMapPanel::stop() {
-  if (job_) {
-    job_->cancel = true;
-  }
-  for (std::thread& t : workers_) {
-    t.join();
-  }
-  workers_.clear();
-}
-
-void RegimeMapPanel::restart(const Parameters& base) {
-  stop();
-  auto job = std::make_shared<Job>();
-  job->x = {x_key_, x_from_, x_to_, resolution_, natural_log_scale(x_key_)};
-  job->y = {y_key_, y_from_, y_to_, resolution_, natural_log_scale(y_key_)};
-  job->base = base;
-  job->cells.assign(static_cast<std::size_t>(resolution_) * resolution_, MapCell{});
-  job->row_done = std::make_unique<std::atomic<bool>[]>(static_cast<std::size_t>(resolution_));
-  job->start = std::chrono::steady_clock::now();
-  job_ = job;
+void RegimeMapPanel::restart(const Parameters& base, const std::function<void()>& wake) {
+  job_.stop();
+  auto cells = std::make_shared<Cells>();
+  cells->x = {x_key_, x_from_, x_to_, resolution_, natural_log_scale(x_key_)};
+  cells->y = {y_key_, y_from_, y_to_, resolution_, natural_log_scale(y_key_)};
+  cells->base = base;
+  cells->cells.assign(static_cast<std::size_t>(resolution_) * resolution_, MapCell{});
+  cells->row_done = std::make_unique<std::atomic<bool>[]>(static_cast<std::size_t>(resolution_));
+  cells_ = cells;
   job_base_ = base;
   job_started_ = true;
   rows_shown_ = -1;
-  pixels_.assign(job->cells.size(), IM_COL32(25, 25, 30, 255));
+  pixels_.assign(cells->cells.size(), IM_COL32(25, 25, 30, 255));
+  threads_ = std::max(1u, std::thread::hardware_concurrency());
   // Rows are handed out one at a time to every core, so the map fills evenly and a cancel is
   // honoured within one row.
-  const unsigned threads = std::max(1u, std::thread::hardware_concurrency());
-  for (unsigned t = 0; t < threads; ++t) {
-    workers_.emplace_back([job] {
-      const int rows = job->y.steps;
-      const int columns = job->x.steps;
-      for (int row = job->next_row++; row < rows && !job->cancel; row = job->next_row++) {
-        map_rows(job->base, job->x, job->y, row, row + 1,
-                 std::span<MapCell>(job->cells)
-                     .subspan(static_cast<std::size_t>(row) * columns,
-                              static_cast<std::size_t>(columns)));
-        job->row_done[static_cast<std::size_t>(row)].store(true, std::memory_order_release);
-        if (++job->rows_done == rows) {
-          job->elapsed_ms = std::chrono::duration<double, std::milli>(
-                                std::chrono::steady_clock::now() - job->start)
-                                .count();
+  job_.start(
+      [cells, threads = threads_](JobToken& token) {
+        const auto start = std::chrono::steady_clock::now();
+        const int rows = cells->y.steps;
+        const int columns = cells->x.steps;
+        const auto work = [&] {
+          for (int row = cells->next_row++; row < rows && !token.cancelled();
+               row = cells->next_row++) {
+            map_rows(cells->base, cells->x, cells->y, row, row + 1,
+                     std::span<MapCell>(cells->cells)
+                         .subspan(static_cast<std::size_t>(row) * columns,
+                                  static_cast<std::size_t>(columns)));
+            cells->row_done[static_cast<std::size_t>(row)].store(true, std::memory_order_release);
+            token.report(static_cast<double>(++cells->rows_done) / rows);
+          }
+        };
+        std::vector<std::thread> helpers;
+        for (unsigned t = 1; t < threads; ++t) {
+          helpers.emplace_back(work);
         }
-      }
-    });
-  }
+        work();
+        for (std::thread& helper : helpers) {
+          helper.join();
+        }
+        return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+            .count();
+      },
+      wake);
 }
 
 void RegimeMapPanel::update_image(Renderer& renderer) {
@@ -166,19 +159,19 @@ void RegimeMapPanel::update_image(Renderer& renderer) {
     image_size_ = n;
     rows_shown_ = -1;
   }
-  if (!job_ || rows_shown_ == n) {
+  if (!cells_ || rows_shown_ == n) {
     return;
   }
   bool changed = rows_shown_ < 0;
   int shown = 0;
   for (int row = 0; row < n; ++row) {
-    if (!job_->row_done[static_cast<std::size_t>(row)].load(std::memory_order_acquire)) {
+    if (!cells_->row_done[static_cast<std::size_t>(row)].load(std::memory_order_acquire)) {
       continue;
     }
     ++shown;
     for (int i = 0; i < n; ++i) {
       const std::size_t k = static_cast<std::size_t>(row) * n + i;
-      const ImU32 c = cell_colour(job_->cells[k], show_z_);
+      const ImU32 c = cell_colour(cells_->cells[k], show_z_);
       changed |= pixels_[k] != c;
       pixels_[k] = c;
     }
@@ -189,8 +182,7 @@ void RegimeMapPanel::update_image(Renderer& renderer) {
   rows_shown_ = shown == n ? n : 0;
 }
 
-void RegimeMapPanel::draw(Document& document, Renderer& renderer) {
-  const Parameters& current = document.scene().parameters();
+bool RegimeMapPanel::controls(const Parameters& current) {
   bool restart_needed = !job_started_;
   ImGui::TextUnformatted("x");
   ImGui::SameLine();
@@ -223,57 +215,67 @@ void RegimeMapPanel::draw(Document& document, Renderer& renderer) {
   if (ImGui::Checkbox("show z_max instead of n", &show_z_)) {
     rows_shown_ = -1;
   }
-  // The map depends on every input except its two axes.
+  return restart_needed;
+}
+
+// The map depends on every input except its two axes.
+bool RegimeMapPanel::other_inputs_changed(const Parameters& current) const {
   Parameters base_now = current;
   Parameters base_job = job_base_;
   set_number(base_now, x_key_, 1.0);
   set_number(base_now, y_key_, 1.0);
   set_number(base_job, x_key_, 1.0);
   set_number(base_job, y_key_, 1.0);
-  restart_needed |= !(base_now == base_job);
+  return !(base_now == base_job);
+}
+
+bool RegimeMapPanel::axes_refused() const {
   const SweepAxis x_check{x_key_, x_from_, x_to_, resolution_, natural_log_scale(x_key_)};
   const SweepAxis y_check{y_key_, y_from_, y_to_, resolution_, natural_log_scale(y_key_)};
   for (const SweepAxis* axis : {&x_check, &y_check}) {
     if (auto problem = check_axis(*axis)) {
       ImGui::TextColored(kErrorText, "%s", problem->c_str());
-      return;
+      return true;
     }
   }
   if (x_key_ == y_key_) {
     ImGui::TextColored(kErrorText, "choose two different inputs");
-    return;
+    return true;
   }
-  if (restart_needed) {
-    restart(current);
+  return false;
+}
+
+void RegimeMapPanel::status_line() {
+  if (std::optional<double> ms = job_.take_result()) {
+    last_map_ms_ = *ms;
   }
-  update_image(renderer);
-  const int done = job_->rows_done.load();
-  if (done < resolution_) {
+  const int done = cells_->rows_done.load();
+  if (job_.running() || done < resolution_) {
     ImGui::ProgressBar(static_cast<float>(done) / static_cast<float>(resolution_),
                        ImVec2(-1.0f, 0.0f));
   } else {
-    last_map_ms_ = job_->elapsed_ms.load();
     ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyle().Colors[ImGuiCol_TextDisabled]);
-    ImGui::TextWrapped("%d x %d solves in %.0f ms on %zu threads; click to move the sliders there",
-                       resolution_, resolution_, last_map_ms_, workers_.size());
+    ImGui::TextWrapped("%d x %d solves in %.0f ms on %u threads; click to move the sliders there",
+                       resolution_, resolution_, last_map_ms_, threads_);
     ImGui::PopStyleColor();
   }
+}
 
-  // The map with its axis labels (the y title above it, the x title under the x ticks), a colour
-  // bar on its right (the ramp with its scale) and, below, the regimes that have no n to show as
-  // swatches with their names. Every size follows the font, so the UI scale keeps it readable.
+// The map with its axis labels (the y title above it, the x title under the x ticks), a colour
+// bar on its right (the ramp with its scale) and, below, the regimes that have no n to show as
+// swatches with their names. Every size follows the font, so the UI scale keeps it readable.
+RegimeMapPanel::Placement RegimeMapPanel::place_map() {
   const ImGuiStyle& style = ImGui::GetStyle();
   const float font = ImGui::GetFontSize();
-  const Job& job = *job_;
   char y_to[32];
   char y_from[32];
-  std::snprintf(y_to, sizeof y_to, "%.3g", job.y.to);
-  std::snprintf(y_from, sizeof y_from, "%.3g", job.y.from);
+  std::snprintf(y_to, sizeof y_to, "%.3g", cells_->y.to);
+  std::snprintf(y_from, sizeof y_from, "%.3g", cells_->y.from);
   const ImVec2 available = ImGui::GetContentRegionAvail();
-  const float left_margin = std::max(ImGui::CalcTextSize(y_to).x, ImGui::CalcTextSize(y_from).x) +
-                            style.ItemInnerSpacing.x;
-  const float bar_width = ems(1.0f);
-  const float bar_area = style.ItemSpacing.x + bar_width + style.ItemInnerSpacing.x +
+  Placement at;
+  at.left_margin = std::max(ImGui::CalcTextSize(y_to).x, ImGui::CalcTextSize(y_from).x) +
+                   style.ItemInnerSpacing.x;
+  const float bar_area = style.ItemSpacing.x + ems(1.0f) + style.ItemInnerSpacing.x +
                          ImGui::CalcTextSize(show_z_ ? "1000 mm" : "200").x;
   float swatches_width = 0.0f;
   for (const Swatch& swatch : kRegimeSwatches) {
@@ -282,37 +284,48 @@ void RegimeMapPanel::draw(Document& document, Renderer& renderer) {
   }
   const float swatch_rows =
       (swatches_width <= available.x ? 1.0f : 2.0f) * ImGui::GetFrameHeightWithSpacing();
-  const float side = std::max(ems(5.0f), std::min(available.x - left_margin - bar_area,
-                                                  available.y - 3.0f * font - swatch_rows));
-  const std::string y_label = axis_label(job.y.key);
+  at.side = std::max(ems(5.0f), std::min(available.x - at.left_margin - bar_area,
+                                         available.y - 3.0f * font - swatch_rows));
+  const std::string y_label = axis_label(cells_->y.key);
   ImGui::TextUnformatted(y_label.c_str());
-  const ImVec2 origin(ImGui::GetCursorScreenPos().x + left_margin, ImGui::GetCursorScreenPos().y);
-  ImGui::SetCursorScreenPos(origin);
-  // Row 0 is the lowest y: the texture's first row goes to the bottom.
-  ImGui::Image(renderer.texture(image_), ImVec2(side, side), ImVec2(0, 1), ImVec2(1, 0));
-  const bool hovered = ImGui::IsItemHovered();
-  const bool clicked = ImGui::IsItemClicked(ImGuiMouseButton_Left);
+  at.origin = ImVec2(ImGui::GetCursorScreenPos().x + at.left_margin, ImGui::GetCursorScreenPos().y);
+  return at;
+}
+
+void RegimeMapPanel::axis_labels(const Placement& at) const {
+  const ImGuiStyle& style = ImGui::GetStyle();
+  const float font = ImGui::GetFontSize();
   ImDrawList* draw = ImGui::GetWindowDrawList();
   const ImU32 text_colour = ImGui::GetColorU32(ImGuiCol_Text);
-  char text[64];
   const auto right_aligned = [&](float right, float y, const char* label) {
     draw->AddText(ImVec2(right - ImGui::CalcTextSize(label).x, y), text_colour, label);
   };
-  const float label_right = origin.x - style.ItemInnerSpacing.x;
-  right_aligned(label_right, origin.y, y_to);
-  right_aligned(label_right, origin.y + side - font, y_from);
-  std::snprintf(text, sizeof text, "%.3g", job.x.from);
-  draw->AddText(ImVec2(origin.x, origin.y + side), text_colour, text);
-  std::snprintf(text, sizeof text, "%.3g", job.x.to);
-  right_aligned(origin.x + side, origin.y + side, text);
-  const std::string x_label = axis_label(job.x.key);
-  draw->AddText(ImVec2(origin.x + 0.5f * (side - ImGui::CalcTextSize(x_label.c_str()).x),
-                       origin.y + side + font),
+  char text[64];
+  const float label_right = at.origin.x - style.ItemInnerSpacing.x;
+  std::snprintf(text, sizeof text, "%.3g", cells_->y.to);
+  right_aligned(label_right, at.origin.y, text);
+  std::snprintf(text, sizeof text, "%.3g", cells_->y.from);
+  right_aligned(label_right, at.origin.y + at.side - font, text);
+  std::snprintf(text, sizeof text, "%.3g", cells_->x.from);
+  draw->AddText(ImVec2(at.origin.x, at.origin.y + at.side), text_colour, text);
+  std::snprintf(text, sizeof text, "%.3g", cells_->x.to);
+  right_aligned(at.origin.x + at.side, at.origin.y + at.side, text);
+  const std::string x_label = axis_label(cells_->x.key);
+  draw->AddText(ImVec2(at.origin.x + 0.5f * (at.side - ImGui::CalcTextSize(x_label.c_str()).x),
+                       at.origin.y + at.side + font),
                 text_colour, x_label.c_str());
+}
 
-  // The colour bar: the same ramp and scale as the cells, bottom to top.
-  const ImVec2 bar_min(origin.x + side + style.ItemSpacing.x, origin.y);
-  const ImVec2 bar_max(bar_min.x + bar_width, origin.y + side);
+// The same ramp and scale as the cells, bottom to top.
+void RegimeMapPanel::colour_bar(const Placement& at) const {
+  const ImGuiStyle& style = ImGui::GetStyle();
+  const float font = ImGui::GetFontSize();
+  const float side = at.side;
+  const float bar_width = ems(1.0f);
+  ImDrawList* draw = ImGui::GetWindowDrawList();
+  const ImU32 text_colour = ImGui::GetColorU32(ImGuiCol_Text);
+  const ImVec2 bar_min(at.origin.x + side + style.ItemSpacing.x, at.origin.y);
+  const ImVec2 bar_max(bar_min.x + bar_width, at.origin.y + side);
   constexpr int kBarSteps = 64;
   for (int k = 0; k < kBarSteps; ++k) {
     const float y0 = bar_max.y - side * static_cast<float>(k + 1) / kBarSteps;
@@ -334,6 +347,7 @@ void RegimeMapPanel::draw(Document& document, Renderer& renderer) {
   // Both ends of the scale are always labelled; ticks between only where their labels fit.
   const float top_label_y = label_y_at(tick_y(ticks.back()));
   float last_label_y = 1e9f;
+  char text[64];
   for (std::size_t k = 0; k < ticks.size(); ++k) {
     const double tick = ticks[k];
     const float y = tick_y(tick);
@@ -354,9 +368,14 @@ void RegimeMapPanel::draw(Document& document, Renderer& renderer) {
                               : "n of the wrinkled cells, log scale; odd n a little darker so "
                                 "that every step shows");
   }
+}
 
-  // Below the map and its x labels: the regimes drawn in their own colours.
-  ImGui::SetCursorScreenPos(ImVec2(origin.x - left_margin, origin.y + side + 2.0f * font + 2.0f));
+// Below the map and its x labels: the regimes drawn in their own colours.
+void RegimeMapPanel::regime_swatches(const Placement& at) const {
+  const ImGuiStyle& style = ImGui::GetStyle();
+  const float font = ImGui::GetFontSize();
+  ImGui::SetCursorScreenPos(
+      ImVec2(at.origin.x - at.left_margin, at.origin.y + at.side + 2.0f * font + 2.0f));
   bool first = true;
   for (const Swatch& swatch : kRegimeSwatches) {
     const float width =
@@ -370,34 +389,68 @@ void RegimeMapPanel::draw(Document& document, Renderer& renderer) {
     ImGui::SameLine(0.0f, style.ItemInnerSpacing.x);
     ImGui::TextUnformatted(swatch.name);
   }
-  // The current point.
-  const double fx = axis_fraction(job.x, get_number(current, job.x.key));
-  const double fy = axis_fraction(job.y, get_number(current, job.y.key));
+}
+
+void RegimeMapPanel::current_point(const Placement& at, const Parameters& current) const {
+  const double fx = axis_fraction(cells_->x, get_number(current, cells_->x.key));
+  const double fy = axis_fraction(cells_->y, get_number(current, cells_->y.key));
   if (fx >= 0.0 && fx <= 1.0 && fy >= 0.0 && fy <= 1.0) {
-    const ImVec2 p(origin.x + static_cast<float>(fx) * side,
-                   origin.y + static_cast<float>(1.0 - fy) * side);
+    ImDrawList* draw = ImGui::GetWindowDrawList();
+    const ImVec2 p(at.origin.x + static_cast<float>(fx) * at.side,
+                   at.origin.y + static_cast<float>(1.0 - fy) * at.side);
     draw->AddCircle(p, 6.0f, IM_COL32(255, 255, 255, 255), 16, 2.0f);
     draw->AddCircle(p, 8.0f, IM_COL32(0, 0, 0, 255), 16, 1.0f);
   }
+}
+
+void RegimeMapPanel::hover_and_click(const Placement& at, Document& document, bool clicked) const {
+  const Cells& job = *cells_;
+  const ImVec2 mouse = ImGui::GetIO().MousePos;
+  const double u = std::clamp((mouse.x - at.origin.x) / at.side, 0.0f, 1.0f);
+  const double v = std::clamp(1.0f - (mouse.y - at.origin.y) / at.side, 0.0f, 1.0f);
+  const int i = std::min(resolution_ - 1, static_cast<int>(u * resolution_));
+  const int j = std::min(resolution_ - 1, static_cast<int>(v * resolution_));
+  const double x_value = job.x.value(i);
+  const double y_value = job.y.value(j);
+  const MapCell& cell = job.cells[static_cast<std::size_t>(j) * resolution_ + i];
+  if (job.row_done[static_cast<std::size_t>(j)].load()) {
+    ImGui::SetTooltip("%s = %.4g, %s = %.4g\n%s\nn = %d, z_max = %.1f mm", job.x.key.c_str(),
+                      x_value, job.y.key.c_str(), y_value,
+                      cell.valid ? std::string(to_string(cell.regime)).c_str() : "invalid inputs",
+                      cell.n, cell.z_max_mm);
+  }
+  if (clicked) {
+    // Both axes at once: one undo step brings back the point before the click.
+    document.apply(Edit::inputs({{job.x.key, x_value}, {job.y.key, y_value}}));
+  }
+}
+
+void RegimeMapPanel::draw(PanelContext& context) {
+  Document& document = context.document;
+  const Parameters& current = document.scene().parameters();
+  bool restart_needed = controls(current);
+  restart_needed |= other_inputs_changed(current);
+  if (axes_refused()) {
+    return;
+  }
+  if (restart_needed) {
+    restart(current, context.wake);
+  }
+  update_image(context.renderer);
+  status_line();
+  const Placement at = place_map();
+  ImGui::SetCursorScreenPos(at.origin);
+  // Row 0 is the lowest y: the texture's first row goes to the bottom.
+  ImGui::Image(context.renderer.texture(image_), ImVec2(at.side, at.side), ImVec2(0, 1),
+               ImVec2(1, 0));
+  const bool hovered = ImGui::IsItemHovered();
+  const bool clicked = ImGui::IsItemClicked(ImGuiMouseButton_Left);
+  axis_labels(at);
+  colour_bar(at);
+  regime_swatches(at);
+  current_point(at, current);
   if (hovered) {
-    const ImVec2 mouse = ImGui::GetIO().MousePos;
-    const double u = std::clamp((mouse.x - origin.x) / side, 0.0f, 1.0f);
-    const double v = std::clamp(1.0f - (mouse.y - origin.y) / side, 0.0f, 1.0f);
-    const int i = std::min(resolution_ - 1, static_cast<int>(u * resolution_));
-    const int j = std::min(resolution_ - 1, static_cast<int>(v * resolution_));
-    const double x_value = job.x.value(i);
-    const double y_value = job.y.value(j);
-    const MapCell& cell = job.cells[static_cast<std::size_t>(j) * resolution_ + i];
-    if (job.row_done[static_cast<std::size_t>(j)].load()) {
-      ImGui::SetTooltip("%s = %.4g, %s = %.4g\n%s\nn = %d, z_max = %.1f mm", job.x.key.c_str(),
-                        x_value, job.y.key.c_str(), y_value,
-                        cell.valid ? std::string(to_string(cell.regime)).c_str() : "invalid inputs",
-                        cell.n, cell.z_max_mm);
-    }
-    if (clicked) {
-      document.set_input(job.x.key, x_value);
-      document.set_input(job.y.key, y_value);
-    }
+    hover_and_click(at, document, clicked);
   }
 }
 

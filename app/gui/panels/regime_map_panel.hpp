@@ -5,10 +5,13 @@
 #include <atomic>
 #include <memory>
 #include <string>
-#include <thread>
 #include <vector>
 
+#include <imgui.h>
+
+#include "app/gui/background_job.hpp"
 #include "app/gui/document.hpp"
+#include "app/gui/panel.hpp"
 #include "app/gui/renderer.hpp"
 #include "core/analysis/sweep.hpp"
 
@@ -21,20 +24,43 @@ class RegimeMapPanel {
   RegimeMapPanel(const RegimeMapPanel&) = delete;
   RegimeMapPanel& operator=(const RegimeMapPanel&) = delete;
 
-  void draw(Document& document, Renderer& renderer);
+  void draw(PanelContext& context);
 
   const std::string& x_key() const { return x_key_; }
   const std::string& y_key() const { return y_key_; }
   // For tests and the docs' figure: the last completed map's size and time.
   double last_map_ms() const { return last_map_ms_; }
   // True from a (re)start until every row has been computed.
-  bool computing() const;
+  bool computing() const { return job_.running(); }
 
  private:
-  struct Job;
-  void restart(const Parameters& base);
-  void stop();
+  struct Cells;
+  // Where the map was drawn this frame: its top-left corner and side, and the margin on its
+  // left that holds the y labels.
+  struct Placement {
+    ImVec2 origin;
+    float side = 0.0f;
+    float left_margin = 0.0f;
+  };
+
+  // The axes, their ranges, the cell count and what is shown; true when the map must restart.
+  bool controls(const Parameters& current);
+  // True when an input other than the two axes changed since the map was started.
+  bool other_inputs_changed(const Parameters& current) const;
+  // Says what is wrong with the axes, if anything; true when nothing can be drawn.
+  bool axes_refused() const;
+  void restart(const Parameters& base, const std::function<void()>& wake);
   void update_image(Renderer& renderer);
+  // The progress bar while rows arrive, else the last map's time and the hint.
+  void status_line();
+  // The map's side and margins for the space left in the panel, and its y title.
+  Placement place_map();
+  void axis_labels(const Placement& at) const;
+  void colour_bar(const Placement& at) const;
+  void regime_swatches(const Placement& at) const;
+  void current_point(const Placement& at, const Parameters& current) const;
+  // The hovered cell's tooltip; a click moves both sliders there as one undo step.
+  void hover_and_click(const Placement& at, Document& document, bool clicked) const;
 
   std::string x_key_ = "h";
   std::string y_key_ = "w";
@@ -43,8 +69,9 @@ class RegimeMapPanel {
   int resolution_ = 256;
   bool show_z_ = false;
 
-  std::shared_ptr<Job> job_;
-  std::vector<std::thread> workers_;
+  std::shared_ptr<Cells> cells_;  // the running or last map, row by row as they arrive
+  BackgroundJob<double> job_;     // fills cells_; returns its wall time in ms
+  unsigned threads_ = 1;
   Parameters job_base_;
   bool job_started_ = false;
   int image_ = -1;  // the renderer's image of the map

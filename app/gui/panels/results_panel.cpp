@@ -26,8 +26,9 @@ const ModelStanding& ResultsPanel::standing(Document& document) {
   return standing_;
 }
 
-void ResultsPanel::draw(Document& document, Renderer& renderer) {
-  if (!begin_panel("Results", renderer)) {
+void ResultsPanel::draw(PanelContext& context) {
+  Document& document = context.document;
+  if (!begin(context.renderer)) {
     ImGui::End();
     return;
   }

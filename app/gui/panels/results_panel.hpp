@@ -8,15 +8,18 @@
 #include <optional>
 
 #include "app/gui/document.hpp"
-#include "app/gui/renderer.hpp"
+#include "app/gui/panel.hpp"
 #include "core/io/preset.hpp"
 #include "core/io/report.hpp"
 
 namespace foldlab::gui {
 
-class ResultsPanel {
+class ResultsPanel : public Panel {
  public:
-  void draw(Document& document, Renderer& renderer);
+  const char* name() const override { return "Results"; }
+  const char* key() const override { return "results"; }
+  std::optional<Tile> tile() const override { return Tile::results; }
+  void draw(PanelContext& context) override;
 
  private:
   const ModelStanding& standing(Document& document);

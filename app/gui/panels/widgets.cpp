@@ -42,24 +42,6 @@ float ems(float ems) {
   return std::round(ems * ImGui::GetFontSize());
 }
 
-const char* tile_window_name(Tile tile) {
-  switch (tile) {
-    case Tile::parameters:
-      return "###parameters";
-    case Tile::presets:
-      return "Presets";
-    case Tile::fold_plot:
-      return "Fold lines (2D)";
-    case Tile::cloth:
-      return "Cloth (3D)";
-    case Tile::results:
-      return "Results";
-    case Tile::analysis:
-      return "Analysis";
-  }
-  return "";
-}
-
 TiledLayout tiled_layout(ImVec2 display, float top_px, float font_px) {
   const float width = std::max(std::floor(display.x), 1.0f);
   const float height = std::max(std::floor(display.y - top_px), 1.0f);

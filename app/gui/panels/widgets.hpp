@@ -24,11 +24,10 @@ struct PanelRect {
   ImVec2 pos{0, 0};
   ImVec2 size{0, 0};
 };
-// The tiled panels, in the order of TiledLayout::rects.
+// The tiled panels' places, in the order of TiledLayout::rects (each panel names its own with
+// Panel::tile()).
 enum class Tile { parameters, presets, fold_plot, cloth, results, analysis };
 inline constexpr int kTileCount = 6;
-// The window names of the tiles (what ImGui::Begin is given, "###id" where the title changes).
-const char* tile_window_name(Tile tile);
 
 // The automatic layout: the display below `top_px` (the menu bar) tiled edge to edge with no gap.
 // Parameters and presets on the left, in a column wide enough for a slider with its label (in

@@ -1,0 +1,63 @@
+// What every panel of the explorer is to the Explorer: a name (its window's title, said once,
+// here), a draw with what panels share, whether it has background work in progress, and the
+// settings it remembers in the session. The Explorer keeps its panels in one list, draws them in a
+// loop, asks them all whether it is busy and lets each save and restore its own settings, so that
+// adding a panel is its two files and one line in that list.
+#pragma once
+
+#include <functional>
+#include <optional>
+#include <string>
+
+#include "app/gui/document.hpp"
+#include "app/gui/panels/widgets.hpp"
+#include "app/gui/renderer.hpp"
+#include "app/gui/session.hpp"
+
+namespace foldlab::gui {
+
+class PhotoOverlay;
+
+// What a panel's draw is given: the one copy of the state, the way to the GPU and the pieces one
+// panel lends another.
+struct PanelContext {
+  Document& document;
+  Renderer& renderer;
+  PhotoOverlay& photo;  // the fold plot's backdrop, its clicks and its measurement window
+  // Wakes the frame loop when it sleeps; callable from any thread (a background job's end).
+  std::function<void()> wake;
+};
+
+class Panel {
+ public:
+  virtual ~Panel() = default;
+
+  // The window's title as shown ("Fold lines (2D)"): the one place it is written.
+  virtual const char* name() const = 0;
+  // The panel's key in reports, scripts and ImGui's window id ("fold_plot"): lower case, stable
+  // when the title changes.
+  virtual const char* key() const = 0;
+  // Where the automatic layout puts it; nullopt for a window that floats over the tiles.
+  virtual std::optional<Tile> tile() const { return std::nullopt; }
+  // Once per frame, between ImGui::NewFrame and ImGui::Render.
+  virtual void draw(PanelContext& context) = 0;
+  // True while background work of the panel is still to show up in what it draws: the frame loop
+  // keeps drawing, and scripted runs wait for it before their last frame.
+  virtual bool busy() const { return false; }
+  // The settings the panel remembers between runs, under keys of its own in the session.
+  virtual void save_settings(SessionSettings& /*settings*/) const {}
+  virtual void load_settings(const SessionSettings& /*settings*/) {}
+
+  // What ImGui::Begin is given: the title, then after "###" the key, so that a title with a
+  // changing mark ("Parameters *") is the same window. `mark` is appended to the title.
+  std::string window_label(const char* mark = "") const {
+    return std::string(name()) + mark + "###" + key();
+  }
+  // ImGui::Begin with the window label and the renderer's background (begin_panel). Call
+  // ImGui::End() whatever it returns.
+  bool begin(Renderer& renderer, const char* mark = "") const {
+    return begin_panel(window_label(mark).c_str(), renderer);
+  }
+};
+
+}  // namespace foldlab::gui
