@@ -99,6 +99,29 @@ replace_block docs/calibration.md calibrate-K "$work/calibrate-K"
 fenced "$work/calibrate-Kp" calibrate --data data/paper-measurements.csv --fit K,p
 replace_block docs/calibration.md calibrate-Kp "$work/calibrate-Kp"
 
+echo "docs.sh: the wrinkle laws on the same data" >&2
+# One row per law and fitted constants: in-sample, leave-one-out and table-split figures.
+law_block() {
+  local out="$1" cell
+  cell() { grep -m1 "^  $1" | sed -e "s/^  $1 *//" -e 's/; |Q error.*//' -e 's/|z_max error| //'; }
+  {
+    echo '| law | fit | in-sample | leave-one-out | fit on one table, test on the other |'
+    echo '|---|---|---|---|---|'
+    for law in conci cerda-mahadevan; do
+      for fit in K K,p; do
+        "$foldlab" calibrate --data data/paper-measurements.csv --method exact --law "$law" \
+          --fit "$fit" >"$work/law-$law-$fit"
+        printf '| %s | %s | %s | %s | %s |\n' "$law" "$fit" \
+          "$(cell 'in-sample fit, fit rows:' <"$work/law-$law-$fit")" \
+          "$(cell 'leave-one-out, fit rows:' <"$work/law-$law-$fit")" \
+          "$(cell 'fit on other groups, test rows:' <"$work/law-$law-$fit")"
+      done
+    done
+  } >"$out"
+}
+law_block "$work/laws"
+replace_block docs/model.md law-comparison "$work/laws"
+
 echo "docs.sh: bench (about a minute) and stress test" >&2
 "$foldlab" bench --csv docs/bench.csv --svg docs/bench.svg >"$work/bench"
 replace_block docs/performance.md bench "$work/bench"

@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <numbers>
 #include <set>
 #include <sstream>
 #include <string>
@@ -171,6 +172,30 @@ TEST_F(CliTest, UnknownMethodIsInvalidInput) {
   EXPECT_EQ(r.exit_status, 2);
   EXPECT_TRUE(contains(r.err, "fast")) << r.err;
   EXPECT_TRUE(r.out.empty()) << r.out;
+}
+
+// --law brings the law's published constant (c = 4 pi² / 3 for Cerda-Mahadevan, p = 1), which
+// --set then overrides; the JSON names the law and its fold spacing.
+TEST_F(CliTest, LawIsChosenWithItsPublishedConstants) {
+  const json cm = solve_json({"--preset", kH900, "--law", "cerda-mahadevan", "--method", "exact"});
+  EXPECT_EQ(cm.at("law"), "cerda-mahadevan");
+  EXPECT_TRUE(cm.at("Q7").is_null());
+  // lambda = sqrt(2 pi 1300 0.25) / (3 (1 - 0.09) 1.5e-6 x 900 / (165 x 0.25))^(1/4)
+  //        = 45.189 / 0.097222 = 464.8 mm
+  EXPECT_NEAR(cm.at("fold_spacing_mm").get<double>(), 464.8, 0.1);
+  EXPECT_NEAR(cm.at("inputs").at("load_constant_c").get<double>(),
+              4.0 * std::numbers::pi * std::numbers::pi / 3.0, 1e-9);
+  const json tuned = solve_json(
+      {"--preset", kH900, "--law", "cerda-mahadevan", "--set", "c=3", "--method", "exact"});
+  EXPECT_EQ(tuned.at("inputs").at("load_constant_c"), 3.0);
+  EXPECT_LT(tuned.at("fold_spacing_mm").get<double>(), cm.at("fold_spacing_mm").get<double>());
+  const json conci = solve_json({"--preset", kH900});
+  EXPECT_EQ(conci.at("law"), "conci");
+  EXPECT_TRUE(conci.at("fold_spacing_mm").is_null());
+
+  const RunResult bad = run({"solve", "--preset", kH900, "--law", "hooke"});
+  EXPECT_EQ(bad.exit_status, 2);
+  EXPECT_TRUE(contains(bad.err, "hooke")) << bad.err;
 }
 
 TEST_F(CliTest, UnknownOptionIsInvalidInput) {

@@ -259,6 +259,7 @@ Command add_calibrate_command(CLI::App& app) {
       ->check(CLI::IsMember({"K", "K,p"}));
   command->add_option("--method", options->inputs.method, "solution method (default: the base's)")
       ->check(CLI::IsMember({"paper", "exact"}));
+  app::add_law_option(*command, options->inputs.law);
   command->add_option("--preset", options->inputs.preset_path,
                       "base preset: its model settings are used for every row, and --save-preset "
                       "starts from it (default: the built-in preset)");

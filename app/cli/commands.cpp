@@ -179,8 +179,7 @@ Command add_compare_command(CLI::App& app) {
                       "results)");
   command->add_option("--set", options->assignments, "override an input of every preset, KEY=VALUE")
       ->type_name("KEY=VALUE");
-  command->add_option("--law", options->law,
-                      "solve every preset with this wrinkle law and its published constants");
+  app::add_law_option(*command, options->law);
   command->add_flag("--json", options->json, "print JSON instead of a Markdown table");
   return [options] {
     return guarded([&] {

@@ -59,12 +59,16 @@ void add_input_options(CLI::App& command, InputOptions& options) {
       ->type_name("KEY=VALUE");
   command.add_option("--method", options.method, "solution method (default: the preset's)")
       ->check(CLI::IsMember({"paper", "exact"}));
+  add_law_option(command, options.law);
+}
+
+void add_law_option(CLI::App& command, std::string& law) {
   std::vector<std::string> laws;
-  for (const WrinkleLaw* law : wrinkle_laws()) {
-    laws.emplace_back(law->key());
+  for (const WrinkleLaw* each : wrinkle_laws()) {
+    laws.emplace_back(each->key());
   }
   command
-      .add_option("--law", options.law,
+      .add_option("--law", law,
                   "the law that counts the folds, with its published constants (c, p = 1); "
                   "--set c=, K= or p= override them (default: the preset's law and constants)")
       ->check(CLI::IsMember(laws));

@@ -60,6 +60,8 @@ void check_distinct_files(const std::vector<NamedPath>& outputs,
 
 // --preset, --set, --method and --law, for every command that solves.
 void add_input_options(CLI::App& command, InputOptions& options);
+// --law alone, for a command that gathers its inputs otherwise (InputOptions::law).
+void add_law_option(CLI::App& command, std::string& law);
 
 // Runs a command's body: InputError and PresetError give exit 2, EnvironmentError and WriteError
 // exit 1 with their message, anything else exit 1 as an internal error; messages go to stderr.

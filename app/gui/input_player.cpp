@@ -26,8 +26,8 @@ using nlohmann::json;
 
 // The report's name for each slider's value, with its unit.
 constexpr std::pair<const char*, const char*> kParameterFields[] = {
-    {"t", "t_mm"}, {"E", "E_MPa"}, {"w", "w_N_per_mm2"}, {"h", "h_mm"},
-    {"L", "L_mm"}, {"d", "d_mm"},  {"nu", "nu"},         {"K", "K"},
+    {"t", "t_mm"}, {"E", "E_MPa"}, {"w", "w_N_per_mm2"}, {"h", "h_mm"}, {"L", "L_mm"},
+    {"d", "d_mm"}, {"nu", "nu"},   {"K", "K"},           {"c", "c"},    {"p", "p"},
 };
 
 // Key names of chords, as GLFW numbers them (the window's backend indexes io.KeysDown so; the

@@ -70,7 +70,10 @@ void EquationsTab::draw(Document& document) {
   const double K = stiffness_constant_K(p);
   const double t = p.fabric.thickness_mm;
   ImGui::TextWrapped("The model with today's numbers (mm, MPa, N/mm²).");
-  section("eq. 7: critical stress gives Q7");
+  const WrinkleLaw& law = wrinkle_law(p.model.law);
+  const bool even = s.count_rule && s.count_rule->spacing == FoldSpacing::even;
+  section(even ? "Cerda-Mahadevan: the wrinkle wavelength lambda"
+               : "eq. 7: critical stress gives Q7");
   ImGui::TextWrapped("s = K E t³ / (w h l²) = %.4g × %.4g × %.4g³ / (%.3g × %.4g × %.5g²)", K,
                      p.fabric.youngs_modulus_MPa, t, p.fabric.weight_N_per_mm2, p.hanging.height_mm,
                      s.span_mm);
@@ -82,7 +85,12 @@ void EquationsTab::draw(Document& document) {
     ImGui::TextColored(kNoteText, "calibrated form: s^p = %.5g^%.3g = %.5g", s.stress_ratio,
                        exponent, s_used);
   }
-  if (s.Q7) {
+  if (even) {
+    ImGui::TextWrapped(
+        "lambda = l (%s)^(1/4) = %.5g × %.5g^(1/4) = %.2f mm: the folds sit lambda "
+        "apart down the centre fibre",
+        exponent == 1.0 ? "s" : "s^p", s.span_mm, s_used, s.count_rule->step);
+  } else if (s.Q7) {
     const double q = *s.Q7;
     ImGui::Text("(Q7 - 1)² = %s Q7 (Q7 + 1)  ->  Q7 = %.5f", exponent == 1.0 ? "s" : "s^p", q);
     ImGui::TextColored(kDimText, "  check: %.6g = %.6g", (q - 1) * (q - 1), s_used * q * (q + 1));
@@ -108,10 +116,15 @@ void EquationsTab::draw(Document& document) {
   ImGui::Text("   = %.3f mm  vs  h = %.1f mm  (residual %.2e)",
               fibre_length(a0, s.Q, s.n, s.z_max_mm), p.hanging.height_mm, s.residual_height);
   section("eq. 10: the number of wrinkles");
-  if (s.Q7) {
-    const double argument = std::log(a0 / an) / std::log(*s.Q7);
-    ImGui::TextWrapped("n = Int[log(a_0/a_n) / log Q7] = Int[log(%.1f/%.2f) / log %.4f]", a0, an,
-                       *s.Q7);
+  if (s.count_rule) {
+    const double argument = s.count_rule->argument(a0, an);
+    if (even) {
+      ImGui::TextWrapped("n = %s = Int[(%.1f - %.2f) / %.2f]",
+                         std::string(law.count_formula()).c_str(), a0, an, s.count_rule->step);
+    } else {
+      ImGui::TextWrapped("n = %s = Int[log(%.1f/%.2f) / log %.4f]",
+                         std::string(law.count_formula()).c_str(), a0, an, *s.Q7);
+    }
     ImGui::Text("  = Int[%.3f] = %d   (Int = %s)", argument, s.n,
                 std::string(to_string(p.model.int_rounding)).c_str());
     if (shown_n_ != s.n) {
@@ -120,7 +133,7 @@ void EquationsTab::draw(Document& document) {
     }
     if (previous_n_ >= 0 && previous_n_ != s.n) {
       ImGui::TextColored(
-          kOkText, "n changed from %d to %d: log(a_0/a_n)/log Q7 crossed %s.", previous_n_, s.n,
+          kOkText, "n changed from %d to %d: the argument of Int[] crossed %s.", previous_n_, s.n,
           p.model.int_rounding == IntRounding::nearest ? "a half-integer" : "an integer");
     }
   } else {

@@ -79,14 +79,16 @@ void MethodPanel::draw(Document& document) {
     method_ = choice == 0 ? Method::paper : Method::exact;
   }
   ImGui::SameLine();
+  const std::string count_formula(wrinkle_law(current.model.law).count_formula());
   help_marker(method_ == Method::paper
                   ? "a_0 = 1.01 h; a_n and z_max start at 0.01 h. Each iterate: n from eq. 10, "
                     "Q = (a_0/a_n)^(1/n), z_max from eq. 9, L′ from eq. 8 (Simpson); stop when "
                     "|L′/L − 1| is within the tolerance, else a_n ← √(A² − z_max²), the a_n that "
                     "makes eq. 8 hold for this z_max."
-                  : "For each n, eqs. 8 and 9 give a_n(n) exactly; n moves to "
-                    "Int[log(a_0/a_n(n)) / log Q7] until it maps to itself. The plot is that map "
-                    "with its staircase from the paper's start to the fixed point.");
+                  : ("For each n, eqs. 8 and 9 give a_n(n) exactly; n moves to " + count_formula +
+                     " at a_n(n) until it maps to itself. The plot is that map with its staircase "
+                     "from the paper's start to the fixed point.")
+                        .c_str());
   if (method_ != current.model.method) {
     ImGui::SameLine();
     ImGui::TextColored(kDimText, "(model: %s)",
@@ -165,11 +167,12 @@ void MethodPanel::draw_change() const {
   if (method_ == Method::paper) {
     std::string text;
     if (shown_ == 1) {
-      text = s.Q7 ? printf_string(
-                        "Start: a_0/a_n = 1.01 h / 0.01 h = 101, n = Int[%.3f] = %d; "
-                        "the a-differences alone make h, so z_max = %.2f mm.",
-                        it.count_argument, it.n, it.z_max_mm)
-                  : printf_string("Start: no Q7 (stiff), so n = 1; z_max = %.2f mm.", it.z_max_mm);
+      text = s.count_rule
+                 ? printf_string(
+                       "Start: a_0/a_n = 1.01 h / 0.01 h = 101, n = Int[%.3f] = %d; "
+                       "the a-differences alone make h, so z_max = %.2f mm.",
+                       it.count_argument, it.n, it.z_max_mm)
+                 : printf_string("Start: no Q7 (stiff), so n = 1; z_max = %.2f mm.", it.z_max_mm);
     } else {
       text = printf_string("a_n ← √(A² − z_max²) = √(%.2f² − %.2f²) = %.2f mm, n = Int[%.3f] = %d.",
                            s.sag_amplitude_mm, all[static_cast<std::size_t>(shown_ - 2)].z_max_mm,
@@ -192,8 +195,10 @@ void MethodPanel::draw_change() const {
     }
     return;
   }
-  ImGui::TextWrapped("%sn = %d: Int[log(a_0/a_n(n)) / log Q7] = Int[%.3f] = %d is the next n.",
-                     shown_ == 1 && s.Q7 ? "Start at the paper's a_0/a_n = 101. " : "", it.n,
+  ImGui::TextWrapped("%sn = %d: %s = Int[%.3f] = %d is the next n.",
+                     shown_ == 1 && s.count_rule ? "Start at the paper's a_0/a_n = 101. " : "",
+                     it.n,
+                     std::string(wrinkle_law(computed_for_.model.law).count_formula()).c_str(),
                      it.count_argument, it.next_n);
   if (!last) {
     ImGui::TextColored(kNoteText, "n %d → %d: iterate again.", it.n, it.next_n);
@@ -311,8 +316,9 @@ void MethodPanel::draw_map_plot(float height) {
   const Iterate& current = trace_.iterates[static_cast<std::size_t>(shown_ - 1)];
   stair_x_.push_back(current.next_n);
   stair_y_.push_back(current.next_n);
-  if (!map_plot_.begin("method map", ImVec2(0.0f, height), PlotAxis{"n"},
-                       PlotAxis{"next n = Int[log(a_0/a_n(n)) / log Q7]"})) {
+  const std::string next_n_axis =
+      "next n = " + std::string(wrinkle_law(computed_for_.model.law).count_formula());
+  if (!map_plot_.begin("method map", ImVec2(0.0f, height), PlotAxis{"n"}, PlotAxis{next_n_axis})) {
     return;
   }
   map_plot_.line(nullptr, map_n_, diagonal_, kGuideColour, 1.0f);

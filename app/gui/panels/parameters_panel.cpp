@@ -98,10 +98,35 @@ void choice_combo(Document& document, const InputSpec& spec, float width) {
   help_marker(std::string(spec.help).c_str());
 }
 
+// The laws by their titles; choosing one brings its published constants (c, p = 1) in the same
+// undo step, since a law's constants mean nothing to another law.
+void law_combo(Document& document, float width) {
+  const WrinkleLaw& current = wrinkle_law(document.edited().model.law);
+  ImGui::SetNextItemWidth(width);
+  if (ImGui::BeginCombo("wrinkle law", std::string(current.title()).c_str())) {
+    for (const WrinkleLaw* law : wrinkle_laws()) {
+      if (ImGui::Selectable(std::string(law->title()).c_str(), law == &current) &&
+          law != &current) {
+        Parameters p = document.edited();
+        p.model.law = law->kind();
+        p.model.load_constant_c = law->published_load_constant_c();
+        p.model.stress_exponent_p = 1.0;
+        document.apply(Edit::replace(p));
+      }
+    }
+    ImGui::EndCombo();
+  }
+  help_marker(
+      "Which law counts the folds: Conci's critical stress (eq. 7, folds in a geometric "
+      "progression) or Cerda and Mahadevan's wrinkle wavelength (evenly spaced folds). Choosing "
+      "one sets its published constants; K and p then tune it.");
+}
+
 }  // namespace
 
 void set_printed_eq7(Parameters& p) {
   p.model.method = Method::paper;
+  p.model.law = WrinkleLawKind::conci;
   p.model.stress_exponent_p = 1.0;
   set_stiffness_constant_K(
       p, kCalibratedLoadConstantC / (1.0 - kDefaultPoissonRatio * kDefaultPoissonRatio));
@@ -228,7 +253,7 @@ void ParametersPanel::draw(PanelContext& context) {
   }
   help_marker(
       "Beginners see the cloth (t, E, w, h, L, d) and its shape; experts also the model's "
-      "settings (method, K, nu, p, Int[], span rule) and the 3D grid.");
+      "settings (method, wrinkle law, K, nu, p, Int[], span rule) and the 3D grid.");
   // The paper's own model stays one click away whatever is shown.
   const bool printed = is_printed_eq7(document.edited());
   ImGui::BeginDisabled(printed);
@@ -239,8 +264,8 @@ void ParametersPanel::draw(PanelContext& context) {
   }
   ImGui::EndDisabled();
   help_marker(
-      "The paper's method and eq. 7 as printed: p = 1, K = c/(1 - nu²) = 29.56 (c = 26.9 at "
-      "nu = 0.3).");
+      "The paper's method and Conci's eq. 7 as printed: p = 1, K = c/(1 - nu²) = 29.56 (c = 26.9 "
+      "at nu = 0.3).");
   hint_after(printed ? "in use" : "Ctrl+click a slider to type");
   ImGui::Separator();
 
@@ -293,6 +318,7 @@ void ParametersPanel::draw(PanelContext& context) {
     input_slider(document, *find_input("incline_deg"), width);
   }
   if (document.expert_mode) {
+    law_combo(document, width);
     for (const char* key : kChoiceKeys) {
       choice_combo(document, *find_input(key), width);
     }
