@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "app/gui/cloth_uploads.hpp"
 #include "app/gui/colour_map.hpp"
 #include "app/gui/gl/mipmapped_texture.hpp"
 #include "core/geometry/fold_occlusion.hpp"
@@ -18,11 +19,8 @@
 namespace foldlab::gui {
 namespace {
 
-// Model coordinates have y pointing down (gravity); the view's world has +Y up. z may be drawn
-// exaggerated; a normal then scales by the inverse (the inverse transpose of the stretch).
-Eigen::Vector3f world_scale(float z_scale) {
-  return {1.0f, -1.0f, z_scale};
-}
+// World coordinates (cloth_uploads.hpp: y up, z maybe exaggerated); a normal scales by the inverse
+// of the stretch (its inverse transpose).
 Eigen::Vector3f to_world(const Eigen::Vector3f& model, float z_scale = 1.0f) {
   return model.cwiseProduct(world_scale(z_scale));
 }
@@ -411,7 +409,8 @@ void ClothRenderer::resize(FrameSize size) {
                             gl_->depth_buffer);
 }
 
-void ClothRenderer::upload_mesh(Scene& scene, float z_scale, const DrawnLattice& lattice) {
+void ClothRenderer::upload_mesh(Scene& scene, float z_scale, const DrawnLattice& lattice,
+                                bool indices_too) {
   const std::vector<Eigen::Vector3f>& normals = scene.normals();
   const DeformedGrid& grid = scene.grid();
   const int columns = static_cast<int>(lattice.columns.size());
@@ -451,8 +450,7 @@ void ClothRenderer::upload_mesh(Scene& scene, float z_scale, const DrawnLattice&
   glBindBuffer(GL_ARRAY_BUFFER, gl_->mesh_vbo);
   glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(vertices.size() * sizeof(MeshVertex)),
                vertices.data(), GL_DYNAMIC_DRAW);
-  if (lattice.columns.size() != mesh_lattice_.columns.size() ||
-      lattice.rows.size() != mesh_lattice_.rows.size()) {
+  if (indices_too) {
     const std::vector<std::uint32_t> indices = lattice_triangles(columns, rows);
     glBufferData(GL_ELEMENT_ARRAY_BUFFER,
                  static_cast<GLsizeiptr>(indices.size() * sizeof(std::uint32_t)), indices.data(),
@@ -460,8 +458,6 @@ void ClothRenderer::upload_mesh(Scene& scene, float z_scale, const DrawnLattice&
     gl_->mesh_index_count = static_cast<GLsizei>(indices.size());
   }
   glBindVertexArray(0);
-  mesh_z_scale_ = z_scale;
-  mesh_lattice_ = lattice;
   counters_.drawn_columns = static_cast<std::uint64_t>(columns);
   counters_.drawn_rows = static_cast<std::uint64_t>(rows);
   ++counters_.mesh_uploads;
@@ -484,9 +480,6 @@ void ClothRenderer::upload_fold_lines(Scene& scene, const ClothStyle& style) {
   glBindBuffer(GL_ARRAY_BUFFER, gl_->lines_vbo);
   glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(vertices.size() * sizeof(Vertex)),
                vertices.data(), GL_DYNAMIC_DRAW);
-  uploaded_positive_ = style.positive_fold_colour;
-  lines_z_scale_ = style.z_exaggeration;
-  uploaded_negative_ = style.negative_fold_colour;
   ++counters_.fold_line_uploads;
 }
 
@@ -647,42 +640,19 @@ unsigned ClothRenderer::render(Scene& scene, const OrbitCamera& camera, FrameSiz
   const float aspect =
       static_cast<float>(size.width) / static_cast<float>(std::max(size.height, 1));
   const Eigen::Matrix4f view_projection = camera.projection(aspect) * camera.view();
-  // Bring the stages this view needs up to date (lazily), then upload only what changed. The
-  // wireframe shows the grid as it is; otherwise the cells are a few pixels (level_of_detail.hpp).
-  scene.normals();
-  const DeformedGrid& grid = scene.grid();
-  const Eigen::Vector3f scale = world_scale(style.z_exaggeration);
-  const Eigen::Matrix4f model_to_clip =
-      view_projection *
-      Eigen::Vector4f(scale.x(), scale.y(), scale.z(), 1.0f).asDiagonal().toDenseMatrix();
-  const DrawnLattice lattice =
-      style.wireframe || !style.level_of_detail
-          ? full_lattice(grid)
-          : drawn_lattice(grid,
-                          screen_spacing(grid, model_to_clip,
-                                         Eigen::Vector2f(static_cast<float>(size.width),
-                                                         static_cast<float>(size.height)),
-                                         scale),
-                          scene.solution().n);
-  if (scene.version(Stage::normals) != mesh_version_ || mesh_z_scale_ != style.z_exaggeration ||
-      lattice.columns != mesh_lattice_.columns || lattice.rows != mesh_lattice_.rows) {
-    upload_mesh(scene, style.z_exaggeration, lattice);
-    mesh_version_ = scene.version(Stage::normals);
+  // Bring the stages this view needs up to date (lazily), then upload only what changed
+  // (cloth_uploads.hpp). The wireframe shows the grid as it is; otherwise the cells are a few
+  // pixels (level_of_detail.hpp).
+  const ClothBufferSources sources = cloth_buffer_sources(scene, camera, size, style);
+  const ClothUploads uploads = upload_rule_.next(sources);
+  if (uploads.mesh) {
+    upload_mesh(scene, style.z_exaggeration, sources.lattice, uploads.mesh_indices);
   }
-  if (style.fold_lines) {
-    scene.fold_lines();
-    if (scene.version(Stage::fold_lines) != fold_line_version_ ||
-        uploaded_positive_ != style.positive_fold_colour ||
-        lines_z_scale_ != style.z_exaggeration ||
-        uploaded_negative_ != style.negative_fold_colour) {
-      upload_fold_lines(scene, style);
-      fold_line_version_ = scene.version(Stage::fold_lines);
-    }
+  if (uploads.fold_lines) {
+    upload_fold_lines(scene, style);
   }
-  // The supports and the ground follow the solution and the shape: both re-make the grid.
-  if (scene.version(Stage::grid) != decoration_version_) {
+  if (uploads.decorations) {
     upload_decorations(scene);
-    decoration_version_ = scene.version(Stage::grid);
   }
 
   glBindFramebuffer(GL_FRAMEBUFFER, gl_->framebuffer);
