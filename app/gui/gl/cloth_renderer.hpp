@@ -5,7 +5,7 @@
 // the scene's stage versions change.
 #pragma once
 
-#include <cstdint>
+#include <memory>
 
 #include <Eigen/Core>
 
@@ -39,13 +39,13 @@ class ClothRenderer {
   void upload_mesh(Scene& scene, float z_scale, const DrawnLattice& lattice, bool indices_too);
   void upload_fold_lines(Scene& scene, const ClothStyle& style);
   void upload_decorations(Scene& scene);
-  void set_breeze_uniforms(unsigned program, Scene& scene, const ClothStyle& style);
   void update_print(const ClothStyle& style);
   void select_mesh_program(const ClothStyle& style);
   void set_mesh_colour_uniforms(Scene& scene, const ClothStyle& style);
   void draw_shadow(Scene& scene, const Eigen::Matrix4f& view_projection);
 
-  Gl* gl_;  // GL object names, kept out of the header so that it needs no GL include
+  // The GL objects, each owned by a handle; kept out of the header so that it needs no GL include.
+  std::unique_ptr<Gl> gl_;
   FrameSize size_{};
   ClothUploadRule upload_rule_;  // what the buffers were last made from
   RenderCounters counters_;
