@@ -53,8 +53,9 @@ struct ClothStyle {
   bool operator==(const ClothStyle&) const = default;
 };
 
-// What reached the GPU: uploads happen only when the scene's stage versions change, and the 3D
-// view's picture is drawn again only when what it shows changed (ClothViewCache).
+// What reached the GPU: buffers are uploaded only when what they are made from changed
+// (ClothUploadRule), and the 3D view's picture is drawn again only when what it shows changed
+// (ClothViewCache).
 struct RenderCounters {
   std::uint64_t mesh_uploads = 0;
   std::uint64_t fold_line_uploads = 0;
