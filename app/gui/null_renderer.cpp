@@ -13,15 +13,15 @@ void NullRenderer::draw_cloth(ImDrawList* draw_list, ImVec2 min, Scene& scene,
   if (view_cache_.reuse(scene, camera, size, style, counters_)) {
     return;
   }
-  if (scene.version(Stage::normals) != mesh_version_) {
+  const ClothBufferSources sources = cloth_buffer_sources(scene, camera, size, style);
+  const ClothUploads uploads = upload_rule_.next(sources);
+  if (uploads.mesh) {
     ++counters_.mesh_uploads;
-    mesh_version_ = scene.version(Stage::normals);
+    counters_.drawn_columns = sources.lattice.columns.size();
+    counters_.drawn_rows = sources.lattice.rows.size();
   }
-  if (style.fold_lines) {
-    if (scene.version(Stage::fold_lines) != fold_line_version_) {
-      ++counters_.fold_line_uploads;
-      fold_line_version_ = scene.version(Stage::fold_lines);
-    }
+  if (uploads.fold_lines) {
+    ++counters_.fold_line_uploads;
   }
 }
 

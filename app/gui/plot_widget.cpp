@@ -543,134 +543,193 @@ void Plot::stroke(ImDrawList* dl, ImU32 colour, float thickness, ImVec2 clip_min
   flush();
 }
 
+// What end() works out, step by step: the visible range, the legend's and the axes' layout, the
+// ticks, and the maps from data to screen that the drawing steps share.
+struct Plot::Frame {
+  ImGuiStorage* storage = nullptr;
+  ImDrawList* draw_list = nullptr;
+  const ImGuiIO* io = nullptr;
+  float font = 0;
+  float swatch = 0, row = 0, pad = 0;  // legend swatch width, legend row height, padding
+  bool x_log = false, y_log = false;
+  bool x_title = false, y_title = false;
+  double xt0 = 0, xt1 = 1, yt0 = 0, yt1 = 1;  // the visible range in axis coordinates
+  bool manual_x = false, manual_y = false;    // the user zoomed or panned that axis
+  ImVec2 axes_max{0, 0};                      // the frame's bottom right above the legend
+  float label_width = 0;                      // of the y tick labels
+  Layout lay{};
+  AxisMap xm{0, 1, 0, 1, false}, ym{0, 1, 0, 1, false};
+  ImU32 col_grid = 0, col_border = 0, col_text = 0;
+};
+
 std::optional<PlotHit> Plot::end() {
   if (!open_)
     return std::nullopt;
   open_ = false;
 
-  ImGuiStorage* st = ImGui::GetStateStorage();
-  ImDrawList* dl = ImGui::GetWindowDrawList();
-  const ImGuiIO& io = ImGui::GetIO();
-  const float font = ImGui::GetFontSize();
-  const bool x_log = x_axis_.log, y_log = y_axis_.log;
-  const bool x_title = !x_axis_.label.empty(), y_title = !y_axis_.label.empty();
+  Frame f;
+  f.storage = ImGui::GetStateStorage();
+  f.draw_list = ImGui::GetWindowDrawList();
+  f.io = &ImGui::GetIO();
+  f.font = ImGui::GetFontSize();
+  f.swatch = f.font * 1.6f;
+  f.row = f.font + 2;
+  f.pad = std::round(f.font * 0.35f);
+  f.x_log = x_axis_.log;
+  f.y_log = y_axis_.log;
+  f.x_title = !x_axis_.label.empty();
+  f.y_title = !y_axis_.label.empty();
 
-  // --- view range: stored (the user zoomed or panned) or fitted to the data ---
-  int flags = st->GetInt(keys_[kFlags], 0);
+  fit_view_range(f);
+  lay_out_legend(f);
+  zoom_and_pan(f);
+  place_ticks(f);
+  publish_view(f);
+
+  f.col_grid = ImGui::GetColorU32(ImGuiCol_Text, 0.12f);
+  f.col_border = ImGui::GetColorU32(ImGuiCol_Border);
+  f.col_text = ImGui::GetColorU32(ImGuiCol_Text);
+  draw_background_and_grid(f);
+  f.draw_list->PushClipRect(f.lay.min, f.lay.max, true);
+  draw_series(f);
+  draw_vertical_lines(f);
+  const std::optional<PlotHit> hit = hover(f);
+  f.draw_list->PopClipRect();
+  f.draw_list->AddRect(f.lay.min, f.lay.max, f.col_border);
+  draw_tick_labels_and_titles(f);
+  draw_legend(f);
+  store_view_state(f);
+  return hit;
+}
+
+// The view range: stored (the user zoomed or panned) or fitted to the data.
+void Plot::fit_view_range(Frame& f) const {
+  int flags = f.storage->GetInt(keys_[kFlags], 0);
   if (autoscale_requested_ || double_clicked_)
     flags &= ~(kManualX | kManualY);
-  bool manual_x = (flags & kHasRange) && (flags & kManualX);
-  bool manual_y = (flags & kHasRange) && (flags & kManualY);
-  double xt0 = 0, xt1 = 1, yt0 = 0, yt1 = 1;
-  if (manual_x) {
-    xt0 = to_t(load_double(st, keys_, kXLo), x_log);
-    xt1 = to_t(load_double(st, keys_, kXHi), x_log);
-    manual_x = std::isfinite(xt0) && std::isfinite(xt1) && xt0 < xt1;
+  f.manual_x = (flags & kHasRange) && (flags & kManualX);
+  f.manual_y = (flags & kHasRange) && (flags & kManualY);
+  if (f.manual_x) {
+    f.xt0 = to_t(load_double(f.storage, keys_, kXLo), f.x_log);
+    f.xt1 = to_t(load_double(f.storage, keys_, kXHi), f.x_log);
+    f.manual_x = std::isfinite(f.xt0) && std::isfinite(f.xt1) && f.xt0 < f.xt1;
   }
-  if (manual_y) {
-    yt0 = to_t(load_double(st, keys_, kYLo), y_log);
-    yt1 = to_t(load_double(st, keys_, kYHi), y_log);
-    manual_y = std::isfinite(yt0) && std::isfinite(yt1) && yt0 < yt1;
+  if (f.manual_y) {
+    f.yt0 = to_t(load_double(f.storage, keys_, kYLo), f.y_log);
+    f.yt1 = to_t(load_double(f.storage, keys_, kYHi), f.y_log);
+    f.manual_y = std::isfinite(f.yt0) && std::isfinite(f.yt1) && f.yt0 < f.yt1;
   }
-  if (!manual_x || !manual_y) {
-    // With one axis fixed by the user, fit the other to what is visible of the data; all of it
-    // when no sample is visible (zoomed in between two samples).
-    Bounds bx, by, all_x, all_y;
-    for (const Series& s : series_) {
-      for (std::size_t i = 0; i < s.xs.size(); ++i) {
-        const double tx = to_t(s.xs[i], x_log), ty = to_t(s.ys[i], y_log);
-        if (!std::isfinite(tx) || !std::isfinite(ty))
-          continue;
-        all_x.add(tx);
-        all_y.add(ty);
-        if (manual_x && (tx < xt0 || tx > xt1))
-          continue;
-        if (manual_y && (ty < yt0 || ty > yt1))
-          continue;
-        bx.add(tx);
-        by.add(ty);
-      }
+  if (f.manual_x && f.manual_y)
+    return;
+  // With one axis fixed by the user, fit the other to what is visible of the data; all of it
+  // when no sample is visible (zoomed in between two samples).
+  Bounds bx, by, all_x, all_y;
+  for (const Series& s : series_) {
+    for (std::size_t i = 0; i < s.xs.size(); ++i) {
+      const double tx = to_t(s.xs[i], f.x_log), ty = to_t(s.ys[i], f.y_log);
+      if (!std::isfinite(tx) || !std::isfinite(ty))
+        continue;
+      all_x.add(tx);
+      all_y.add(ty);
+      if (f.manual_x && (tx < f.xt0 || tx > f.xt1))
+        continue;
+      if (f.manual_y && (ty < f.yt0 || ty > f.yt1))
+        continue;
+      bx.add(tx);
+      by.add(ty);
     }
-    for (const VLine& v : vlines_) {
-      const double tx = to_t(v.x, x_log);
-      if (std::isfinite(tx))
-        bx.add(tx);
-    }
-    if (!manual_x)
-      fit(bx.valid() ? bx : all_x, x_log, xt0, xt1);
-    if (!manual_y)
-      fit(by.valid() ? by : all_y, y_log, yt0, yt1);
   }
+  for (const VLine& v : vlines_) {
+    const double tx = to_t(v.x, f.x_log);
+    if (std::isfinite(tx))
+      bx.add(tx);
+  }
+  if (!f.manual_x)
+    fit(bx.valid() ? bx : all_x, f.x_log, f.xt0, f.xt1);
+  if (!f.manual_y)
+    fit(by.valid() ? by : all_y, f.y_log, f.yt0, f.yt1);
+}
 
-  // --- the legend: rows under the x title, outside the data area, so that it never hides data ---
-  const float swatch = font * 1.6f, row = font + 2, pad = std::round(font * 0.35f);
+// The legend: rows under the x title, outside the data area, so that it never hides data.
+void Plot::lay_out_legend(Frame& f) {
   legend_rows_.clear();
-  {
-    const float frame_w = frame_max_.x - frame_min_.x;
-    float x = 0;
-    int rows = legend_.empty() ? 0 : 1;
-    for (const LegendEntry& e : legend_) {
-      const float w = swatch + pad + ImGui::CalcTextSize(legend_text_.c_str() + e.text).x;
-      if (x > 0 && x + w > frame_w) {
-        ++rows;
-        x = 0;
-      }
-      legend_rows_.push_back({x, static_cast<float>(rows - 1) * row, w});
-      x += w + 2 * font;
+  const float frame_w = frame_max_.x - frame_min_.x;
+  float x = 0;
+  int rows = legend_.empty() ? 0 : 1;
+  for (const LegendEntry& e : legend_) {
+    const float w = f.swatch + f.pad + ImGui::CalcTextSize(legend_text_.c_str() + e.text).x;
+    if (x > 0 && x + w > frame_w) {
+      ++rows;
+      x = 0;
     }
-    legend_height_ = rows > 0 ? static_cast<float>(rows) * row + pad : 0.0f;
+    legend_rows_.push_back({x, static_cast<float>(rows - 1) * f.row, w});
+    x += w + 2 * f.font;
   }
-  const ImVec2 axes_max{frame_max_.x, std::max(frame_min_.y + 1, frame_max_.y - legend_height_)};
+  legend_height_ = rows > 0 ? static_cast<float>(rows) * f.row + f.pad : 0.0f;
+  f.axes_max = {frame_max_.x, std::max(frame_min_.y + 1, frame_max_.y - legend_height_)};
+}
 
-  // --- input, in the layout the user saw last frame ---
-  float label_width = st->GetFloat(keys_[kLabelWidth], 0.0f);
-  Layout lay = layout(frame_min_, axes_max, label_width, x_title, y_title, font);
-  if (hovered_ && io.MouseWheel != 0) {
-    const bool zoom_x = !(io.KeyCtrl && !io.KeyShift), zoom_y = !(io.KeyShift && !io.KeyCtrl);
-    const double f = std::pow(kWheelZoom, -static_cast<double>(io.MouseWheel));
-    const auto zoom = [f](double& t0, double& t1, double c, bool log) {
-      double n0 = c + (t0 - c) * f, n1 = c + (t1 - c) * f;
-      if (n1 - n0 < min_span(n0, n1))
-        return;  // as far in as is meaningful
-      sanitize(n0, n1, log);
-      t0 = n0;
-      t1 = n1;
-    };
-    if (zoom_x) {
-      const AxisMap m = x_map(xt0, xt1, lay.min, lay.max, x_log, x_axis_.flipped);
-      zoom(xt0, xt1, m.t_at(io.MousePos.x), x_log);
-      manual_x = true;
-    }
-    if (zoom_y) {
-      const AxisMap m = y_map(yt0, yt1, lay.min, lay.max, y_log, y_axis_.flipped);
-      zoom(yt0, yt1, m.t_at(io.MousePos.y), y_log);
-      manual_y = true;
-    }
-  }
-  if (active_) {
-    // Only real motion counts, so that the clicks of a double-click do not end autoscale.
-    if (io.MouseDelta.x != 0) {
-      const AxisMap m = x_map(xt0, xt1, lay.min, lay.max, x_log, x_axis_.flipped);
-      const double dt = -io.MouseDelta.x / m.scale;
-      xt0 += dt;
-      xt1 += dt;
-      sanitize(xt0, xt1, x_log);
-      manual_x = true;
-    }
-    if (io.MouseDelta.y != 0) {
-      const AxisMap m = y_map(yt0, yt1, lay.min, lay.max, y_log, y_axis_.flipped);
-      const double dt = -io.MouseDelta.y / m.scale;
-      yt0 += dt;
-      yt1 += dt;
-      sanitize(yt0, yt1, y_log);
-      manual_y = true;
-    }
-  }
+// Wheel zoom and drag pan, in the layout the user saw last frame.
+void Plot::zoom_and_pan(Frame& f) const {
+  f.label_width = f.storage->GetFloat(keys_[kLabelWidth], 0.0f);
+  f.lay = layout(frame_min_, f.axes_max, f.label_width, f.x_title, f.y_title, f.font);
+  if (hovered_ && f.io->MouseWheel != 0)
+    wheel_zoom(f);
+  if (active_)
+    drag_pan(f);
+}
 
-  // --- ticks and final layout ---
+// Around the cursor; Shift zooms x only, Ctrl y only.
+void Plot::wheel_zoom(Frame& f) const {
+  const ImGuiIO& io = *f.io;
+  const bool zoom_x = !(io.KeyCtrl && !io.KeyShift), zoom_y = !(io.KeyShift && !io.KeyCtrl);
+  const double factor = std::pow(kWheelZoom, -static_cast<double>(io.MouseWheel));
+  const auto zoom = [factor](double& t0, double& t1, double c, bool log) {
+    double n0 = c + (t0 - c) * factor, n1 = c + (t1 - c) * factor;
+    if (n1 - n0 < min_span(n0, n1))
+      return;  // as far in as is meaningful
+    sanitize(n0, n1, log);
+    t0 = n0;
+    t1 = n1;
+  };
+  if (zoom_x) {
+    const AxisMap m = x_map(f.xt0, f.xt1, f.lay.min, f.lay.max, f.x_log, x_axis_.flipped);
+    zoom(f.xt0, f.xt1, m.t_at(io.MousePos.x), f.x_log);
+    f.manual_x = true;
+  }
+  if (zoom_y) {
+    const AxisMap m = y_map(f.yt0, f.yt1, f.lay.min, f.lay.max, f.y_log, y_axis_.flipped);
+    zoom(f.yt0, f.yt1, m.t_at(io.MousePos.y), f.y_log);
+    f.manual_y = true;
+  }
+}
+
+void Plot::drag_pan(Frame& f) const {
+  const ImGuiIO& io = *f.io;
+  // Only real motion counts, so that the clicks of a double-click do not end autoscale.
+  if (io.MouseDelta.x != 0) {
+    const AxisMap m = x_map(f.xt0, f.xt1, f.lay.min, f.lay.max, f.x_log, x_axis_.flipped);
+    const double dt = -io.MouseDelta.x / m.scale;
+    f.xt0 += dt;
+    f.xt1 += dt;
+    sanitize(f.xt0, f.xt1, f.x_log);
+    f.manual_x = true;
+  }
+  if (io.MouseDelta.y != 0) {
+    const AxisMap m = y_map(f.yt0, f.yt1, f.lay.min, f.lay.max, f.y_log, y_axis_.flipped);
+    const double dt = -io.MouseDelta.y / m.scale;
+    f.yt0 += dt;
+    f.yt1 += dt;
+    sanitize(f.yt0, f.yt1, f.y_log);
+    f.manual_y = true;
+  }
+}
+
+// The ticks, the y tick labels' width and with it the final layout and the maps to the screen.
+void Plot::place_ticks(Frame& f) {
   char buf[64];
-  const float plot_h = lay.max.y - lay.min.y;
-  axis_ticks(yt0, yt1, y_log, std::clamp(static_cast<int>(plot_h / (font * 2.5f)), 2, 12),
+  const float plot_h = f.lay.max.y - f.lay.min.y;
+  axis_ticks(f.yt0, f.yt1, f.y_log, std::clamp(static_cast<int>(plot_h / (f.font * 2.5f)), 2, 12),
              y_ticks_);
   float needed = 0;
   for (std::size_t i = 0; i < y_ticks_.size(); ++i) {
@@ -678,208 +737,264 @@ std::optional<PlotHit> Plot::end() {
     needed = std::max(needed, ImGui::CalcTextSize(buf).x);
   }
   // Hysteresis: a label width that flickers by a digit would make the whole plot jitter.
-  if (needed > label_width || needed < label_width - font)
-    label_width = needed;
-  lay = layout(frame_min_, axes_max, label_width, x_title, y_title, font);
-  const float plot_w = lay.max.x - lay.min.x;
-  axis_ticks(xt0, xt1, x_log, std::clamp(static_cast<int>(plot_w / (font * 5.0f)), 2, 12),
+  if (needed > f.label_width || needed < f.label_width - f.font)
+    f.label_width = needed;
+  f.lay = layout(frame_min_, f.axes_max, f.label_width, f.x_title, f.y_title, f.font);
+  const float plot_w = f.lay.max.x - f.lay.min.x;
+  axis_ticks(f.xt0, f.xt1, f.x_log, std::clamp(static_cast<int>(plot_w / (f.font * 5.0f)), 2, 12),
              x_ticks_);
+  f.xm = x_map(f.xt0, f.xt1, f.lay.min, f.lay.max, f.x_log, x_axis_.flipped);
+  f.ym = y_map(f.yt0, f.yt1, f.lay.min, f.lay.max, f.y_log, y_axis_.flipped);
+}
 
-  const AxisMap xm = x_map(xt0, xt1, lay.min, lay.max, x_log, x_axis_.flipped);
-  const AxisMap ym = y_map(yt0, yt1, lay.min, lay.max, y_log, y_axis_.flipped);
-
-  // --- the view, for the backdrop and the caller ---
-  view_.min = lay.min;
-  view_.max = lay.max;
-  view_.x_lo = from_t(xt0, x_log);
-  view_.x_hi = from_t(xt1, x_log);
-  view_.y_lo = from_t(yt0, y_log);
-  view_.y_hi = from_t(yt1, y_log);
-  view_.x_log = x_log;
-  view_.y_log = y_log;
+// The view, for the backdrop and the caller.
+void Plot::publish_view(const Frame& f) {
+  view_.min = f.lay.min;
+  view_.max = f.lay.max;
+  view_.x_lo = from_t(f.xt0, f.x_log);
+  view_.x_hi = from_t(f.xt1, f.x_log);
+  view_.y_lo = from_t(f.yt0, f.y_log);
+  view_.y_hi = from_t(f.yt1, f.y_log);
+  view_.x_log = f.x_log;
+  view_.y_log = f.y_log;
   view_.x_flipped = x_axis_.flipped;
   view_.y_flipped = y_axis_.flipped;
-  view_.x_auto = !manual_x;
-  view_.y_auto = !manual_y;
+  view_.x_auto = !f.manual_x;
+  view_.y_auto = !f.manual_y;
   view_.legend_entries = static_cast<int>(legend_.size());
+}
 
-  // --- drawing ---
-  const ImU32 col_bg = ImGui::GetColorU32(ImGuiCol_FrameBg);
-  const ImU32 col_grid = ImGui::GetColorU32(ImGuiCol_Text, 0.12f);
-  const ImU32 col_border = ImGui::GetColorU32(ImGuiCol_Border);
-  const ImU32 col_text = ImGui::GetColorU32(ImGuiCol_Text);
-
-  dl->AddRectFilled(lay.min, lay.max, col_bg);
+// The data area's background, the caller's backdrop over it, and the grid lines at the ticks.
+void Plot::draw_background_and_grid(const Frame& f) const {
+  ImDrawList* dl = f.draw_list;
+  const ImU32 col_grid = f.col_grid;
+  dl->AddRectFilled(f.lay.min, f.lay.max, ImGui::GetColorU32(ImGuiCol_FrameBg));
   if (backdrop_) {
-    dl->PushClipRect(lay.min, lay.max, true);
+    dl->PushClipRect(f.lay.min, f.lay.max, true);
     backdrop_(dl, view_);
     dl->PopClipRect();
   }
   for (const double v : x_ticks_) {
-    const float px = static_cast<float>(xm.px(v));
-    dl->AddLine({px, lay.min.y}, {px, lay.max.y}, col_grid);
+    const float px = static_cast<float>(f.xm.px(v));
+    dl->AddLine({px, f.lay.min.y}, {px, f.lay.max.y}, col_grid);
   }
   for (const double v : y_ticks_) {
-    const float py = static_cast<float>(ym.px(v));
-    dl->AddLine({lay.min.x, py}, {lay.max.x, py}, col_grid);
+    const float py = static_cast<float>(f.ym.px(v));
+    dl->AddLine({f.lay.min.x, py}, {f.lay.max.x, py}, col_grid);
   }
+}
 
-  dl->PushClipRect(lay.min, lay.max, true);
+// Every series in its submission order: markers one by one, lines and steps as polylines.
+void Plot::draw_series(const Frame& f) {
   for (const Series& s : series_) {
-    const std::size_t n = s.xs.size();
     if (s.kind == Kind::Markers) {
-      for (std::size_t i = 0; i < n; ++i) {
-        const double px = xm.px(s.xs[i]), py = ym.px(s.ys[i]);
-        if (!(px >= lay.min.x - s.size && px <= lay.max.x + s.size && py >= lay.min.y - s.size &&
-              py <= lay.max.y + s.size)) {
-          continue;  // also skips NaN
-        }
-        draw_marker(dl, vec(px, py), s.size, s.colour, s.shape);
-      }
+      draw_markers(f, s);
       continue;
     }
-    path_.clear();
-    if (s.kind == Kind::Line) {
-      for (std::size_t i = 0; i < n; ++i)
-        path_.push_back({xm.px(s.xs[i]), ym.px(s.ys[i])});
-    } else {
-      const auto px_at = [&](std::size_t i) {
-        const double px = xm.px(s.xs[i]);
-        return std::isfinite(px) && std::isfinite(ym.px(s.ys[i])) ? px : kNaN;
-      };
-      double prev = kNaN, cur = n > 0 ? px_at(0) : kNaN;
-      for (std::size_t i = 0; i < n; ++i) {
-        const double next = i + 1 < n ? px_at(i + 1) : kNaN;
-        if (std::isnan(cur)) {
-          path_.push_back({kNaN, kNaN});
-        } else {
-          const double py = ym.px(s.ys[i]);
-          path_.push_back({std::isnan(prev) ? cur : (prev + cur) / 2, py});
-          path_.push_back({std::isnan(next) ? cur : (cur + next) / 2, py});
-        }
-        prev = cur;
-        cur = next;
-      }
-    }
-    stroke(dl, s.colour, s.size, lay.min, lay.max);
+    if (s.kind == Kind::Line)
+      line_path(f, s);
+    else
+      steps_path(f, s);
+    stroke(f.draw_list, s.colour, s.size, f.lay.min, f.lay.max);
   }
+}
+
+void Plot::draw_markers(const Frame& f, const Series& s) const {
+  for (std::size_t i = 0; i < s.xs.size(); ++i) {
+    const double px = f.xm.px(s.xs[i]), py = f.ym.px(s.ys[i]);
+    if (!(px >= f.lay.min.x - s.size && px <= f.lay.max.x + s.size && py >= f.lay.min.y - s.size &&
+          py <= f.lay.max.y + s.size)) {
+      continue;  // also skips NaN
+    }
+    draw_marker(f.draw_list, vec(px, py), s.size, s.colour, s.shape);
+  }
+}
+
+// A line's samples on screen, into path_.
+void Plot::line_path(const Frame& f, const Series& s) {
+  const AxisMap xm = f.xm, ym = f.ym;  // copies: path_'s writes cannot alias them
+  path_.clear();
+  for (std::size_t i = 0; i < s.xs.size(); ++i)
+    path_.push_back({xm.px(s.xs[i]), ym.px(s.ys[i])});
+}
+
+// A step function on screen, into path_: each sample's value held from half-way to the sample
+// before to half-way to the next (to the sample itself beside a gap or at an end).
+void Plot::steps_path(const Frame& f, const Series& s) {
+  const AxisMap xm = f.xm, ym = f.ym;
+  path_.clear();
+  const std::size_t n = s.xs.size();
+  const auto px_at = [&](std::size_t i) {
+    const double px = xm.px(s.xs[i]);
+    return std::isfinite(px) && std::isfinite(ym.px(s.ys[i])) ? px : kNaN;
+  };
+  double prev = kNaN, cur = n > 0 ? px_at(0) : kNaN;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double next = i + 1 < n ? px_at(i + 1) : kNaN;
+    if (std::isnan(cur)) {
+      path_.push_back({kNaN, kNaN});
+    } else {
+      const double py = ym.px(s.ys[i]);
+      path_.push_back({std::isnan(prev) ? cur : (prev + cur) / 2, py});
+      path_.push_back({std::isnan(next) ? cur : (cur + next) / 2, py});
+    }
+    prev = cur;
+    cur = next;
+  }
+}
+
+void Plot::draw_vertical_lines(const Frame& f) const {
   for (const VLine& v : vlines_) {
-    const double px = xm.px(v.x);
-    if (!(px >= lay.min.x && px <= lay.max.x))
+    const double px = f.xm.px(v.x);
+    if (!(px >= f.lay.min.x && px <= f.lay.max.x))
       continue;
     const float fx = static_cast<float>(px);
-    dl->AddLine({fx, lay.min.y}, {fx, lay.max.y}, v.colour, 1.5f);
+    f.draw_list->AddLine({fx, f.lay.min.y}, {fx, f.lay.max.y}, v.colour, 1.5f);
     if (v.text != std::string::npos) {
-      dl->AddText({fx + pad, lay.min.y + pad}, v.colour, legend_text_.c_str() + v.text);
+      f.draw_list->AddText({fx + f.pad, f.lay.min.y + f.pad}, v.colour,
+                           legend_text_.c_str() + v.text);
     }
   }
+}
 
-  // Hover: nearest point on screen, not in data units, since the axes' scales differ.
+// The point nearest to the mouse, highlighted and shown in a tooltip; none while dragging.
+std::optional<PlotHit> Plot::hover(const Frame& f) const {
+  const ImGuiIO& io = *f.io;
+  if (!hovered_ || (active_ && (io.MouseDelta.x != 0 || io.MouseDelta.y != 0)) ||
+      !inside(io.MousePos, f.lay.min, f.lay.max)) {
+    return std::nullopt;
+  }
+  const std::optional<PlotHit> hit = nearest_point(f, io.MousePos);
+  if (hit)
+    show_hit(f, *hit);
+  return hit;
+}
+
+// Nearest on screen, not in data units, since the axes' scales differ.
+std::optional<PlotHit> Plot::nearest_point(const Frame& f, ImVec2 mouse) const {
+  const AxisMap xm = f.xm, ym = f.ym;
   std::optional<PlotHit> hit;
-  const ImVec2 mouse = io.MousePos;
-  if (hovered_ && !(active_ && (io.MouseDelta.x != 0 || io.MouseDelta.y != 0)) &&
-      inside(mouse, lay.min, lay.max)) {
-    double best = static_cast<double>(kHoverRadius) * kHoverRadius;
-    for (std::size_t si = 0; si < series_.size(); ++si) {
-      const Series& s = series_[si];
-      for (std::size_t i = 0; i < s.xs.size(); ++i) {
-        const double dx = xm.px(s.xs[i]) - mouse.x, dy = ym.px(s.ys[i]) - mouse.y;
-        const double d2 = dx * dx + dy * dy;
-        if (d2 < best) {  // false for NaN
-          best = d2;
-          hit = PlotHit{static_cast<int>(si), static_cast<int>(i), s.xs[i], s.ys[i]};
-        }
+  double best = static_cast<double>(kHoverRadius) * kHoverRadius;
+  for (std::size_t si = 0; si < series_.size(); ++si) {
+    const Series& s = series_[si];
+    for (std::size_t i = 0; i < s.xs.size(); ++i) {
+      const double dx = xm.px(s.xs[i]) - mouse.x, dy = ym.px(s.ys[i]) - mouse.y;
+      const double d2 = dx * dx + dy * dy;
+      if (d2 < best) {  // false for NaN
+        best = d2;
+        hit = PlotHit{static_cast<int>(si), static_cast<int>(i), s.xs[i], s.ys[i]};
       }
-    }
-    if (hit) {
-      const Series& s = series_[static_cast<std::size_t>(hit->series)];
-      const ImVec2 p = vec(xm.px(hit->x), ym.px(hit->y));
-      dl->AddCircleFilled(p, 3.5f, s.colour, 12);
-      dl->AddCircle(p, 7.0f, col_text, 16, 1.5f);
-      ImGui::BeginTooltip();
-      if (s.legend >= 0) {
-        ImGui::TextUnformatted(legend_text_.c_str() +
-                               legend_[static_cast<std::size_t>(s.legend)].text);
-      }
-      ImGui::Text("%s: %.6g", x_title ? x_axis_.label.c_str() : "x", hit->x);
-      ImGui::Text("%s: %.6g", y_title ? y_axis_.label.c_str() : "y", hit->y);
-      ImGui::EndTooltip();
     }
   }
-  dl->PopClipRect();
+  return hit;
+}
 
-  dl->AddRect(lay.min, lay.max, col_border);
+void Plot::show_hit(const Frame& f, const PlotHit& hit) const {
+  const Series& s = series_[static_cast<std::size_t>(hit.series)];
+  const ImVec2 p = vec(f.xm.px(hit.x), f.ym.px(hit.y));
+  f.draw_list->AddCircleFilled(p, 3.5f, s.colour, 12);
+  f.draw_list->AddCircle(p, 7.0f, f.col_text, 16, 1.5f);
+  ImGui::BeginTooltip();
+  if (s.legend >= 0) {
+    ImGui::TextUnformatted(legend_text_.c_str() + legend_[static_cast<std::size_t>(s.legend)].text);
+  }
+  ImGui::Text("%s: %.6g", f.x_title ? x_axis_.label.c_str() : "x", hit.x);
+  ImGui::Text("%s: %.6g", f.y_title ? y_axis_.label.c_str() : "y", hit.y);
+  ImGui::EndTooltip();
+}
 
-  // Tick labels and titles may use the whole frame but not spill onto neighbouring widgets.
-  dl->PushClipRect(frame_min_, frame_max_, true);
+// Tick labels and titles may use the whole frame but not spill onto neighbouring widgets.
+void Plot::draw_tick_labels_and_titles(const Frame& f) const {
+  f.draw_list->PushClipRect(frame_min_, frame_max_, true);
+  draw_x_tick_labels(f);
+  draw_y_tick_labels(f);
+  const ImU32 col_text = f.col_text;
+  if (f.x_title) {
+    const float w = ImGui::CalcTextSize(x_axis_.label.c_str()).x;
+    f.draw_list->AddText(
+        {(f.lay.min.x + f.lay.max.x - w) / 2, f.lay.max.y + f.pad + f.font + f.pad / 2}, col_text,
+        x_axis_.label.c_str());
+  }
+  // Above the axis rather than beside the tick labels, where the top label could collide.
+  if (f.y_title)
+    f.draw_list->AddText({f.lay.min.x, frame_min_.y}, col_text, y_axis_.label.c_str());
+  f.draw_list->PopClipRect();
+}
+
+// Tick marks below the axis, and the labels that do not overlap the one drawn before.
+void Plot::draw_x_tick_labels(const Frame& f) const {
+  const ImU32 col_border = f.col_border, col_text = f.col_text;
+  char buf[64];
   float edge = 0;  // screen edge of the last drawn x label, facing the next one
   for (std::size_t i = 0; i < x_ticks_.size(); ++i) {
-    const float px = static_cast<float>(xm.px(x_ticks_[i]));
-    dl->AddLine({px, lay.max.y}, {px, lay.max.y + pad}, col_border);
+    const float px = static_cast<float>(f.xm.px(x_ticks_[i]));
+    f.draw_list->AddLine({px, f.lay.max.y}, {px, f.lay.max.y + f.pad}, col_border);
     format_tick_into(buf, sizeof buf, x_ticks_[i], tick_step(x_ticks_, i));
     const float w = ImGui::CalcTextSize(buf).x;
-    const float left = px - w / 2, right = px + w / 2, gap = font * 0.5f;
+    const float left = px - w / 2, right = px + w / 2, gap = f.font * 0.5f;
     // Ticks ascend in value, which runs right to left on a flipped axis.
     const bool overlaps = i > 0 && (x_axis_.flipped ? right > edge - gap : left < edge + gap);
     if (overlaps)
       continue;
-    dl->AddText({left, lay.max.y + pad}, col_text, buf);
+    f.draw_list->AddText({left, f.lay.max.y + f.pad}, col_text, buf);
     edge = x_axis_.flipped ? left : right;
   }
+}
+
+void Plot::draw_y_tick_labels(const Frame& f) const {
+  const ImU32 col_border = f.col_border, col_text = f.col_text;
+  char buf[64];
   for (std::size_t i = 0; i < y_ticks_.size(); ++i) {
-    const float py = static_cast<float>(ym.px(y_ticks_[i]));
-    dl->AddLine({lay.min.x - pad, py}, {lay.min.x, py}, col_border);
+    const float py = static_cast<float>(f.ym.px(y_ticks_[i]));
+    f.draw_list->AddLine({f.lay.min.x - f.pad, py}, {f.lay.min.x, py}, col_border);
     format_tick_into(buf, sizeof buf, y_ticks_[i], tick_step(y_ticks_, i));
     const ImVec2 sz = ImGui::CalcTextSize(buf);
-    dl->AddText({lay.min.x - pad - sz.x, py - sz.y / 2}, col_text, buf);
+    f.draw_list->AddText({f.lay.min.x - f.pad - sz.x, py - sz.y / 2}, col_text, buf);
   }
-  if (x_title) {
-    const float w = ImGui::CalcTextSize(x_axis_.label.c_str()).x;
-    dl->AddText({(lay.min.x + lay.max.x - w) / 2, lay.max.y + pad + font + pad / 2}, col_text,
-                x_axis_.label.c_str());
+}
+
+// Legend entries flow left to right below the axes, centred when they fit on one row.
+void Plot::draw_legend(const Frame& f) {
+  view_.legend_min = view_.legend_max = ImVec2(frame_min_.x, f.axes_max.y);
+  if (legend_.empty())
+    return;
+  float widest = 0;
+  for (const LegendRow& r : legend_rows_) {
+    widest = std::max(widest, r.x + r.width);
   }
-  // Above the axis rather than beside the tick labels, where the top label could collide.
-  if (y_title)
-    dl->AddText({lay.min.x, frame_min_.y}, col_text, y_axis_.label.c_str());
+  const float left =
+      legend_rows_.back().y == 0 ? (frame_min_.x + frame_max_.x - widest) / 2 : frame_min_.x;
+  const float top = f.axes_max.y + f.pad;
+  const ImU32 col_text = f.col_text;
+  ImDrawList* dl = f.draw_list;
+  dl->PushClipRect(frame_min_, frame_max_, true);
+  for (std::size_t i = 0; i < legend_.size(); ++i) {
+    const LegendEntry& e = legend_[i];
+    const LegendRow& r = legend_rows_[i];
+    const ImVec2 mid{left + r.x + f.swatch / 2, top + r.y + f.row / 2};
+    if (e.kind == Kind::Markers) {
+      draw_marker(dl, mid, std::min(4.0f, f.row / 2 - 1), e.colour, e.shape);
+    } else {
+      dl->AddLine({mid.x - f.swatch / 2, mid.y}, {mid.x + f.swatch / 2, mid.y}, e.colour, 2.0f);
+    }
+    dl->AddText({left + r.x + f.swatch + f.pad, top + r.y + 1}, col_text,
+                legend_text_.c_str() + e.text);
+  }
   dl->PopClipRect();
+  view_.legend_min = ImVec2(left, top);
+  view_.legend_max = ImVec2(std::min(left + widest, frame_max_.x),
+                            std::min(top + legend_rows_.back().y + f.row, frame_max_.y));
+}
 
-  // Legend entries flow left to right below the axes, centred when they fit on one row.
-  view_.legend_min = view_.legend_max = ImVec2(frame_min_.x, axes_max.y);
-  if (!legend_.empty()) {
-    float widest = 0;
-    for (const LegendRow& r : legend_rows_) {
-      widest = std::max(widest, r.x + r.width);
-    }
-    const float left =
-        legend_rows_.back().y == 0 ? (frame_min_.x + frame_max_.x - widest) / 2 : frame_min_.x;
-    const float top = axes_max.y + pad;
-    dl->PushClipRect(frame_min_, frame_max_, true);
-    for (std::size_t i = 0; i < legend_.size(); ++i) {
-      const LegendEntry& e = legend_[i];
-      const LegendRow& r = legend_rows_[i];
-      const ImVec2 mid{left + r.x + swatch / 2, top + r.y + row / 2};
-      if (e.kind == Kind::Markers) {
-        draw_marker(dl, mid, std::min(4.0f, row / 2 - 1), e.colour, e.shape);
-      } else {
-        dl->AddLine({mid.x - swatch / 2, mid.y}, {mid.x + swatch / 2, mid.y}, e.colour, 2.0f);
-      }
-      dl->AddText({left + r.x + swatch + pad, top + r.y + 1}, col_text,
-                  legend_text_.c_str() + e.text);
-    }
-    dl->PopClipRect();
-    view_.legend_min = ImVec2(left, top);
-    view_.legend_max = ImVec2(std::min(left + widest, frame_max_.x),
-                              std::min(top + legend_rows_.back().y + row, frame_max_.y));
-  }
-
-  // --- state for the next frame ---
+// The view and the label width, kept for the next frame.
+void Plot::store_view_state(const Frame& f) const {
+  ImGuiStorage* st = f.storage;
   store_double(st, keys_, kXLo, view_.x_lo);
   store_double(st, keys_, kXHi, view_.x_hi);
   store_double(st, keys_, kYLo, view_.y_lo);
   store_double(st, keys_, kYHi, view_.y_hi);
-  st->SetInt(keys_[kFlags], kHasRange | (manual_x ? kManualX : 0) | (manual_y ? kManualY : 0));
-  st->SetFloat(keys_[kLabelWidth], label_width);
-  return hit;
+  st->SetInt(keys_[kFlags], kHasRange | (f.manual_x ? kManualX : 0) | (f.manual_y ? kManualY : 0));
+  st->SetFloat(keys_[kLabelWidth], f.label_width);
 }
 
 }  // namespace foldlab::gui

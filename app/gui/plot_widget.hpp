@@ -136,6 +136,30 @@ class Plot {
   std::size_t store_text(const char* text);
   void stroke(ImDrawList* dl, ImU32 colour, float thickness, ImVec2 clip_min, ImVec2 clip_max);
 
+  // end()'s steps, in their order; Frame carries what one step works out for the next.
+  struct Frame;
+  void fit_view_range(Frame& f) const;
+  void lay_out_legend(Frame& f);
+  void zoom_and_pan(Frame& f) const;
+  void wheel_zoom(Frame& f) const;
+  void drag_pan(Frame& f) const;
+  void place_ticks(Frame& f);
+  void publish_view(const Frame& f);
+  void draw_background_and_grid(const Frame& f) const;
+  void draw_series(const Frame& f);
+  void draw_markers(const Frame& f, const Series& s) const;
+  void line_path(const Frame& f, const Series& s);
+  void steps_path(const Frame& f, const Series& s);
+  void draw_vertical_lines(const Frame& f) const;
+  std::optional<PlotHit> hover(const Frame& f) const;
+  std::optional<PlotHit> nearest_point(const Frame& f, ImVec2 mouse) const;
+  void show_hit(const Frame& f, const PlotHit& hit) const;
+  void draw_tick_labels_and_titles(const Frame& f) const;
+  void draw_x_tick_labels(const Frame& f) const;
+  void draw_y_tick_labels(const Frame& f) const;
+  void draw_legend(const Frame& f);
+  void store_view_state(const Frame& f) const;
+
   bool open_ = false;
   bool hovered_ = false, active_ = false, double_clicked_ = false;
   bool autoscale_requested_ = false;

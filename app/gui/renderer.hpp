@@ -13,6 +13,7 @@
 #include <Eigen/Core>
 
 #include "app/gui/camera.hpp"
+#include "app/gui/cloth_uploads.hpp"
 #include "app/gui/print_image.hpp"
 #include "core/geometry/scene.hpp"
 
@@ -52,8 +53,9 @@ struct ClothStyle {
   bool operator==(const ClothStyle&) const = default;
 };
 
-// What reached the GPU: uploads happen only when the scene's stage versions change, and the 3D
-// view's picture is drawn again only when what it shows changed (ClothViewCache).
+// What reached the GPU: buffers are uploaded only when what they are made from changed
+// (ClothUploadRule), and the 3D view's picture is drawn again only when what it shows changed
+// (ClothViewCache).
 struct RenderCounters {
   std::uint64_t mesh_uploads = 0;
   std::uint64_t fold_line_uploads = 0;
@@ -125,8 +127,9 @@ class Renderer {
   virtual std::vector<std::uint8_t> read_pixels(FrameSize size) = 0;
 };
 
-// Draws nothing and reads nothing, but pulls the scene's stages as the GL renderer does, so that
-// what a frame computes is the same with and without a GPU. Images are never sampled.
+// Draws nothing and reads nothing, but pulls the scene's stages and counts uploads by the GL
+// renderer's own rule (cloth_uploads.hpp), so that what a frame computes and uploads is the same
+// with and without a GPU. Images are never sampled.
 class NullRenderer final : public Renderer {
  public:
   void new_frame() override {}
@@ -151,8 +154,7 @@ class NullRenderer final : public Renderer {
  private:
   RenderCounters counters_;
   ClothViewCache view_cache_;
-  std::uint64_t mesh_version_ = ~std::uint64_t{0};
-  std::uint64_t fold_line_version_ = ~std::uint64_t{0};
+  ClothUploadRule upload_rule_;
   int image_count_ = 0;
   std::uint64_t image_updates_ = 0;
 };

@@ -6,11 +6,14 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "app/gui/cloth_uploads.hpp"
 #include "app/gui/colour_map.hpp"
+#include "app/gui/gl/gl_handles.hpp"
 #include "app/gui/gl/mipmapped_texture.hpp"
 #include "core/geometry/fold_occlusion.hpp"
 #include "core/geometry/level_of_detail.hpp"
@@ -18,11 +21,8 @@
 namespace foldlab::gui {
 namespace {
 
-// Model coordinates have y pointing down (gravity); the view's world has +Y up. z may be drawn
-// exaggerated; a normal then scales by the inverse (the inverse transpose of the stretch).
-Eigen::Vector3f world_scale(float z_scale) {
-  return {1.0f, -1.0f, z_scale};
-}
+// World coordinates (cloth_uploads.hpp: y up, z maybe exaggerated); a normal scales by the inverse
+// of the stretch (its inverse transpose).
 Eigen::Vector3f to_world(const Eigen::Vector3f& model, float z_scale = 1.0f) {
   return model.cwiseProduct(world_scale(z_scale));
 }
@@ -181,43 +181,115 @@ void main() {
 )";
 
 // `prefix` (may be null) is prepended to `source`: the shared breeze function.
-GLuint compile(GLenum type, const char* prefix, const char* source) {
-  const GLuint shader = glCreateShader(type);
+GlShader compile(GLenum type, const char* prefix, const char* source) {
+  GlShader shader(glCreateShader(type));
   const char* parts[] = {prefix, source};
   if (prefix != nullptr) {
-    glShaderSource(shader, 2, parts, nullptr);
+    glShaderSource(shader.get(), 2, parts, nullptr);
   } else {
-    glShaderSource(shader, 1, &source, nullptr);
+    glShaderSource(shader.get(), 1, &source, nullptr);
   }
-  glCompileShader(shader);
+  glCompileShader(shader.get());
   GLint ok = 0;
-  glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
+  glGetShaderiv(shader.get(), GL_COMPILE_STATUS, &ok);
   if (!ok) {
     char log[1024];
-    glGetShaderInfoLog(shader, sizeof log, nullptr, log);
+    glGetShaderInfoLog(shader.get(), sizeof log, nullptr, log);
     throw std::runtime_error(std::string("shader compilation failed: ") + log);
   }
   return shader;
 }
 
-GLuint link(const char* vertex, const char* fragment, const char* vertex_prefix = kBreezeGlsl,
-            const char* fragment_prefix = nullptr) {
-  const GLuint program = glCreateProgram();
-  const GLuint vs = compile(GL_VERTEX_SHADER, vertex_prefix, vertex);
-  const GLuint fs = compile(GL_FRAGMENT_SHADER, fragment_prefix, fragment);
-  glAttachShader(program, vs);
-  glAttachShader(program, fs);
-  glLinkProgram(program);
-  glDeleteShader(vs);
-  glDeleteShader(fs);
+// A failed compilation or link throws; whatever was made by then is deleted.
+GlProgram link(const char* vertex, const char* fragment, const char* vertex_prefix = kBreezeGlsl,
+               const char* fragment_prefix = nullptr) {
+  GlProgram program = GlProgram::make();
+  {
+    // Attached shaders live on with the program; deleting them here only drops their names.
+    const GlShader vs = compile(GL_VERTEX_SHADER, vertex_prefix, vertex);
+    const GlShader fs = compile(GL_FRAGMENT_SHADER, fragment_prefix, fragment);
+    glAttachShader(program.get(), vs.get());
+    glAttachShader(program.get(), fs.get());
+    glLinkProgram(program.get());
+  }
   GLint ok = 0;
-  glGetProgramiv(program, GL_LINK_STATUS, &ok);
+  glGetProgramiv(program.get(), GL_LINK_STATUS, &ok);
   if (!ok) {
     char log[1024];
-    glGetProgramInfoLog(program, sizeof log, nullptr, log);
+    glGetProgramInfoLog(program.get(), sizeof log, nullptr, log);
     throw std::runtime_error(std::string("shader link failed: ") + log);
   }
   return program;
+}
+
+GLint uniform(const GlProgram& program, const char* name) {
+  return glGetUniformLocation(program.get(), name);
+}
+
+// Each program with its uniforms' locations, looked up once when it is linked. A uniform that the
+// compiler left out (unused in a variant) is at -1, which glUniform* ignores.
+struct BreezeUniforms {
+  GLint amplitude_mm, depth_mm, time_s, z_scale;
+  explicit BreezeUniforms(const GlProgram& p)
+      : amplitude_mm(uniform(p, "breeze_amplitude_mm")),
+        depth_mm(uniform(p, "breeze_depth_mm")),
+        time_s(uniform(p, "time_s")),
+        z_scale(uniform(p, "z_scale")) {}
+};
+
+struct MeshProgram {
+  GlProgram program;
+  GLint view_projection, eye, front_colour, back_colour, print_period_mm, print_texture, z_range_mm,
+      colour_map, positive_colour, negative_colour, key_direction, fill_direction;
+  BreezeUniforms breeze;
+  explicit MeshProgram(GlProgram linked)
+      : program(std::move(linked)),
+        view_projection(uniform(program, "view_projection")),
+        eye(uniform(program, "eye")),
+        front_colour(uniform(program, "front_colour")),
+        back_colour(uniform(program, "back_colour")),
+        print_period_mm(uniform(program, "print_period_mm")),
+        print_texture(uniform(program, "print_texture")),
+        z_range_mm(uniform(program, "z_range_mm")),
+        colour_map(uniform(program, "colour_map")),
+        positive_colour(uniform(program, "positive_colour")),
+        negative_colour(uniform(program, "negative_colour")),
+        key_direction(uniform(program, "key_direction")),
+        fill_direction(uniform(program, "fill_direction")),
+        breeze(program) {}
+};
+
+struct LineProgram {
+  GlProgram program;
+  GLint view_projection, point_size, override_colour;
+  BreezeUniforms breeze;
+  explicit LineProgram(GlProgram linked)
+      : program(std::move(linked)),
+        view_projection(uniform(program, "view_projection")),
+        point_size(uniform(program, "point_size")),
+        override_colour(uniform(program, "override_colour")),
+        breeze(program) {}
+};
+
+struct ShadowProgram {
+  GlProgram program;
+  GLint view_projection, footprint_centre_mm, footprint_half_mm, soft_mm, darkness;
+  explicit ShadowProgram(GlProgram linked)
+      : program(std::move(linked)),
+        view_projection(uniform(program, "view_projection")),
+        footprint_centre_mm(uniform(program, "footprint_centre_mm")),
+        footprint_half_mm(uniform(program, "footprint_half_mm")),
+        soft_mm(uniform(program, "soft_mm")),
+        darkness(uniform(program, "darkness")) {}
+};
+
+void set_breeze_uniforms(const BreezeUniforms& u, Scene& scene, const ClothStyle& style) {
+  const float depth =
+      static_cast<float>(lowest_point_mm(scene.solution(), scene.parameters().hanging.height_mm));
+  glUniform1f(u.amplitude_mm, style.breeze ? style.breeze_mm : 0.0f);
+  glUniform1f(u.depth_mm, depth);
+  glUniform1f(u.time_s, style.time_s);
+  glUniform1f(u.z_scale, style.z_exaggeration);
 }
 
 // Position + colour (or normal) pairs, the layout every buffer here uses.
@@ -299,57 +371,48 @@ void describe_vertex_layout() {
 
 }  // namespace
 
+// Every GL object the view uses, each owned by a handle: made in this order, deleted in reverse,
+// and nothing left behind if a shader fails part-way.
 struct ClothRenderer::Gl {
-  GLuint mesh_program = 0;  // the variant in use, one of mesh_programs
+  LineProgram line_program{link(kLineVertex, kLineFragment)};
+  ShadowProgram shadow_program{link(kShadowVertex, kShadowFragment, nullptr)};
   // By colouring: the fabric plain, printed, by z, by fold sign; made when first needed.
-  std::array<GLuint, 4> mesh_programs{};
-  GLuint line_program = 0;
-  GLuint mesh_vao = 0, mesh_vbo = 0, mesh_ebo = 0;
+  std::array<std::optional<MeshProgram>, 4> mesh_programs;
+  const MeshProgram* mesh_program = nullptr;  // the variant in use, one of mesh_programs
+  GlVertexArray shadow_vao = GlVertexArray::make();
+  GlBuffer shadow_vbo = GlBuffer::make();
+  GlTexture print_texture = GlTexture::make();
+  GlVertexArray mesh_vao = GlVertexArray::make(), lines_vao = GlVertexArray::make(),
+                decor_vao = GlVertexArray::make();
+  GlBuffer mesh_vbo = GlBuffer::make(), mesh_ebo = GlBuffer::make(), lines_vbo = GlBuffer::make(),
+           decor_vbo = GlBuffer::make();
+  GlFramebuffer framebuffer = GlFramebuffer::make();
+  GlTexture colour_texture = GlTexture::make();
+  GlRenderbuffer depth_buffer = GlRenderbuffer::make();
   GLsizei mesh_index_count = 0;
-  GLuint lines_vao = 0, lines_vbo = 0;
   std::vector<GLint> line_firsts;
   std::vector<GLsizei> line_counts;
-  GLuint decor_vao = 0, decor_vbo = 0;
   GLsizei ground_vertex_count = 0;  // GL_LINES, from 0
   GLsizei support_first = 0;        // GL_POINTS, support_count of them
   GLsizei support_count = 0;
-  GLuint framebuffer = 0, colour_texture = 0, depth_buffer = 0;
-  GLuint shadow_program = 0, shadow_vao = 0, shadow_vbo = 0;
-  GLuint print_texture = 0;
   float ground_y_mm = 0.0f;                // world y of the ground plane
   Eigen::Vector2f footprint_min_mm{0, 0};  // the cloth's extent in world (x, z), as uploaded
   Eigen::Vector2f footprint_max_mm{0, 0};
 };
 
-ClothRenderer::ClothRenderer() : gl_(new Gl) {
-  gl_->line_program = link(kLineVertex, kLineFragment);
-  gl_->shadow_program = link(kShadowVertex, kShadowFragment, nullptr);
-  glGenVertexArrays(1, &gl_->shadow_vao);
-  glGenBuffers(1, &gl_->shadow_vbo);
-  glBindVertexArray(gl_->shadow_vao);
-  glBindBuffer(GL_ARRAY_BUFFER, gl_->shadow_vbo);
+ClothRenderer::ClothRenderer() : gl_(std::make_unique<Gl>()) {
+  glBindVertexArray(gl_->shadow_vao.get());
+  glBindBuffer(GL_ARRAY_BUFFER, gl_->shadow_vbo.get());
   glEnableVertexAttribArray(0);
   glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 3 * sizeof(float), nullptr);
-  glGenTextures(1, &gl_->print_texture);
-  GLuint vaos[3];
-  GLuint buffers[4];
-  glGenVertexArrays(3, vaos);
-  glGenBuffers(4, buffers);
-  gl_->mesh_vao = vaos[0];
-  gl_->lines_vao = vaos[1];
-  gl_->decor_vao = vaos[2];
-  gl_->mesh_vbo = buffers[0];
-  gl_->mesh_ebo = buffers[1];
-  gl_->lines_vbo = buffers[2];
-  gl_->decor_vbo = buffers[3];
-  for (auto [vao, vbo] :
-       {std::pair{gl_->lines_vao, gl_->lines_vbo}, std::pair{gl_->decor_vao, gl_->decor_vbo}}) {
+  for (auto [vao, vbo] : {std::pair{gl_->lines_vao.get(), gl_->lines_vbo.get()},
+                          std::pair{gl_->decor_vao.get(), gl_->decor_vbo.get()}}) {
     glBindVertexArray(vao);
     glBindBuffer(GL_ARRAY_BUFFER, vbo);
     describe_vertex_layout();
   }
-  glBindVertexArray(gl_->mesh_vao);
-  glBindBuffer(GL_ARRAY_BUFFER, gl_->mesh_vbo);
+  glBindVertexArray(gl_->mesh_vao.get());
+  glBindBuffer(GL_ARRAY_BUFFER, gl_->mesh_vbo.get());
   glEnableVertexAttribArray(0);
   glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(MeshVertex), nullptr);
   glEnableVertexAttribArray(1);
@@ -361,35 +424,14 @@ ClothRenderer::ClothRenderer() : gl_(new Gl) {
   glEnableVertexAttribArray(3);
   glVertexAttribPointer(3, 2, GL_FLOAT, GL_FALSE, sizeof(MeshVertex),
                         reinterpret_cast<const void*>(8 * sizeof(float)));
-  glBindVertexArray(gl_->mesh_vao);
-  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, gl_->mesh_ebo);
+  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, gl_->mesh_ebo.get());
   glBindVertexArray(0);
-  glGenFramebuffers(1, &gl_->framebuffer);
-  glGenTextures(1, &gl_->colour_texture);
-  glGenRenderbuffers(1, &gl_->depth_buffer);
 }
 
-ClothRenderer::~ClothRenderer() {
-  const GLuint vaos[] = {gl_->mesh_vao, gl_->lines_vao, gl_->decor_vao};
-  const GLuint buffers[] = {gl_->mesh_vbo, gl_->mesh_ebo, gl_->lines_vbo, gl_->decor_vbo};
-  glDeleteVertexArrays(3, vaos);
-  glDeleteBuffers(4, buffers);
-  for (GLuint program : gl_->mesh_programs) {
-    glDeleteProgram(program);  // 0 is ignored
-  }
-  glDeleteProgram(gl_->line_program);
-  glDeleteProgram(gl_->shadow_program);
-  glDeleteVertexArrays(1, &gl_->shadow_vao);
-  glDeleteBuffers(1, &gl_->shadow_vbo);
-  glDeleteTextures(1, &gl_->print_texture);
-  glDeleteFramebuffers(1, &gl_->framebuffer);
-  glDeleteTextures(1, &gl_->colour_texture);
-  glDeleteRenderbuffers(1, &gl_->depth_buffer);
-  delete gl_;
-}
+ClothRenderer::~ClothRenderer() = default;
 
 unsigned ClothRenderer::framebuffer() const {
-  return gl_->framebuffer;
+  return gl_->framebuffer.get();
 }
 
 void ClothRenderer::resize(FrameSize size) {
@@ -397,21 +439,22 @@ void ClothRenderer::resize(FrameSize size) {
     return;
   }
   size_ = size;
-  glBindTexture(GL_TEXTURE_2D, gl_->colour_texture);
+  glBindTexture(GL_TEXTURE_2D, gl_->colour_texture.get());
   glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, size.width, size.height, 0, GL_RGBA, GL_UNSIGNED_BYTE,
                nullptr);
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-  glBindRenderbuffer(GL_RENDERBUFFER, gl_->depth_buffer);
+  glBindRenderbuffer(GL_RENDERBUFFER, gl_->depth_buffer.get());
   glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, size.width, size.height);
-  glBindFramebuffer(GL_FRAMEBUFFER, gl_->framebuffer);
-  glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, gl_->colour_texture,
-                         0);
+  glBindFramebuffer(GL_FRAMEBUFFER, gl_->framebuffer.get());
+  glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D,
+                         gl_->colour_texture.get(), 0);
   glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER,
-                            gl_->depth_buffer);
+                            gl_->depth_buffer.get());
 }
 
-void ClothRenderer::upload_mesh(Scene& scene, float z_scale, const DrawnLattice& lattice) {
+void ClothRenderer::upload_mesh(Scene& scene, float z_scale, const DrawnLattice& lattice,
+                                bool indices_too) {
   const std::vector<Eigen::Vector3f>& normals = scene.normals();
   const DeformedGrid& grid = scene.grid();
   const int columns = static_cast<int>(lattice.columns.size());
@@ -447,12 +490,11 @@ void ClothRenderer::upload_mesh(Scene& scene, float z_scale, const DrawnLattice&
   for (std::size_t i = 0; i < vertices.size(); ++i) {
     vertices[i] = {positions[i], world_normals[i], material[i], {hidden.front[i], hidden.back[i]}};
   }
-  glBindVertexArray(gl_->mesh_vao);
-  glBindBuffer(GL_ARRAY_BUFFER, gl_->mesh_vbo);
+  glBindVertexArray(gl_->mesh_vao.get());
+  glBindBuffer(GL_ARRAY_BUFFER, gl_->mesh_vbo.get());
   glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(vertices.size() * sizeof(MeshVertex)),
                vertices.data(), GL_DYNAMIC_DRAW);
-  if (lattice.columns.size() != mesh_lattice_.columns.size() ||
-      lattice.rows.size() != mesh_lattice_.rows.size()) {
+  if (indices_too) {
     const std::vector<std::uint32_t> indices = lattice_triangles(columns, rows);
     glBufferData(GL_ELEMENT_ARRAY_BUFFER,
                  static_cast<GLsizeiptr>(indices.size() * sizeof(std::uint32_t)), indices.data(),
@@ -460,8 +502,6 @@ void ClothRenderer::upload_mesh(Scene& scene, float z_scale, const DrawnLattice&
     gl_->mesh_index_count = static_cast<GLsizei>(indices.size());
   }
   glBindVertexArray(0);
-  mesh_z_scale_ = z_scale;
-  mesh_lattice_ = lattice;
   counters_.drawn_columns = static_cast<std::uint64_t>(columns);
   counters_.drawn_rows = static_cast<std::uint64_t>(rows);
   ++counters_.mesh_uploads;
@@ -481,12 +521,9 @@ void ClothRenderer::upload_fold_lines(Scene& scene, const ClothStyle& style) {
       vertices.push_back({to_world(p.cast<float>(), style.z_exaggeration), colour});
     }
   }
-  glBindBuffer(GL_ARRAY_BUFFER, gl_->lines_vbo);
+  glBindBuffer(GL_ARRAY_BUFFER, gl_->lines_vbo.get());
   glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(vertices.size() * sizeof(Vertex)),
                vertices.data(), GL_DYNAMIC_DRAW);
-  uploaded_positive_ = style.positive_fold_colour;
-  lines_z_scale_ = style.z_exaggeration;
-  uploaded_negative_ = style.negative_fold_colour;
   ++counters_.fold_line_uploads;
 }
 
@@ -525,19 +562,9 @@ void ClothRenderer::upload_decorations(Scene& scene) {
     vertices.push_back({to_world(support.cast<float>()), support_colour});
   }
   gl_->support_count = static_cast<GLsizei>(vertices.size()) - gl_->support_first;
-  glBindBuffer(GL_ARRAY_BUFFER, gl_->decor_vbo);
+  glBindBuffer(GL_ARRAY_BUFFER, gl_->decor_vbo.get());
   glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(vertices.size() * sizeof(Vertex)),
                vertices.data(), GL_DYNAMIC_DRAW);
-}
-
-void ClothRenderer::set_breeze_uniforms(unsigned program, Scene& scene, const ClothStyle& style) {
-  const float depth =
-      static_cast<float>(lowest_point_mm(scene.solution(), scene.parameters().hanging.height_mm));
-  glUniform1f(glGetUniformLocation(program, "breeze_amplitude_mm"),
-              style.breeze ? style.breeze_mm : 0.0f);
-  glUniform1f(glGetUniformLocation(program, "breeze_depth_mm"), depth);
-  glUniform1f(glGetUniformLocation(program, "time_s"), style.time_s);
-  glUniform1f(glGetUniformLocation(program, "z_scale"), style.z_exaggeration);
 }
 
 void ClothRenderer::update_print(const ClothStyle& style) {
@@ -554,12 +581,12 @@ void ClothRenderer::update_print(const ClothStyle& style) {
   print_colour_ = style.front_colour;
   print_photo_ = photo ? style.photo.get() : nullptr;
   if (photo) {
-    upload_mipmapped(gl_->print_texture, style.photo->width, style.photo->height,
+    upload_mipmapped(gl_->print_texture.get(), style.photo->width, style.photo->height,
                      style.photo->rgba.data(), true);
   } else if (kind == 1 || kind == 2) {
     const Tile tile =
         kind == 1 ? checks_tile(style.front_colour) : stripes_tile(style.front_colour);
-    upload_mipmapped(gl_->print_texture, tile.width, tile.height, tile.rgba.data(), true);
+    upload_mipmapped(gl_->print_texture.get(), tile.width, tile.height, tile.rgba.data(), true);
   }
 }
 
@@ -574,36 +601,33 @@ void ClothRenderer::select_mesh_program(const ClothStyle& style) {
                               : style.colour_by == ClothStyle::ColourBy::fold_sign ? 3
                               : print_kind_ != 0                                   ? 1
                                                                                    : 0;
-  GLuint& program = gl_->mesh_programs[variant];
-  if (program == 0) {
-    program = link(kMeshVertex, kMeshFragment, kBreezeGlsl, kVariants[variant]);
+  std::optional<MeshProgram>& program = gl_->mesh_programs[variant];
+  if (!program) {
+    program.emplace(link(kMeshVertex, kMeshFragment, kBreezeGlsl, kVariants[variant]));
   }
-  gl_->mesh_program = program;
+  gl_->mesh_program = &*program;
 }
 
 void ClothRenderer::set_mesh_colour_uniforms(Scene& scene, const ClothStyle& style) {
-  const GLuint program = gl_->mesh_program;
-  glUniform3fv(glGetUniformLocation(program, "front_colour"), 1, style.front_colour.data());
-  glUniform3fv(glGetUniformLocation(program, "back_colour"), 1, style.back_colour.data());
+  const MeshProgram& program = *gl_->mesh_program;
+  glUniform3fv(program.front_colour, 1, style.front_colour.data());
+  glUniform3fv(program.back_colour, 1, style.back_colour.data());
   // The checks' and stripes' tiles hold two of them a side; a photo is one swatch.
-  glUniform1f(glGetUniformLocation(program, "print_period_mm"),
+  glUniform1f(program.print_period_mm,
               (print_kind_ == 3 ? 1.0f : 2.0f) * std::max(style.print_mm, 1.0f));
   glActiveTexture(GL_TEXTURE0);
-  glBindTexture(GL_TEXTURE_2D, gl_->print_texture);
-  glUniform1i(glGetUniformLocation(program, "print_texture"), 0);
-  glUniform1f(glGetUniformLocation(program, "z_range_mm"),
-              static_cast<float>(std::max(scene.solution().z_max_mm, 1e-3)));
-  glUniform3fv(glGetUniformLocation(program, "colour_map"),
-               static_cast<GLsizei>(kDivergingMap.size()), kDivergingMap.front().data());
-  glUniform3fv(glGetUniformLocation(program, "positive_colour"), 1,
-               style.positive_fold_colour.data());
-  glUniform3fv(glGetUniformLocation(program, "negative_colour"), 1,
-               style.negative_fold_colour.data());
+  glBindTexture(GL_TEXTURE_2D, gl_->print_texture.get());
+  glUniform1i(program.print_texture, 0);
+  glUniform1f(program.z_range_mm, static_cast<float>(std::max(scene.solution().z_max_mm, 1e-3)));
+  glUniform3fv(program.colour_map, static_cast<GLsizei>(kDivergingMap.size()),
+               kDivergingMap.front().data());
+  glUniform3fv(program.positive_colour, 1, style.positive_fold_colour.data());
+  glUniform3fv(program.negative_colour, 1, style.negative_fold_colour.data());
   // About 17 degrees above the cloth's plane, from above and a little to the left.
   const Eigen::Vector3f key = Eigen::Vector3f(-0.3f, 1.0f, 0.32f).normalized();
   const Eigen::Vector3f fill = Eigen::Vector3f(0.6f, 0.15f, 1.0f).normalized();
-  glUniform3fv(glGetUniformLocation(program, "key_direction"), 1, key.data());
-  glUniform3fv(glGetUniformLocation(program, "fill_direction"), 1, fill.data());
+  glUniform3fv(program.key_direction, 1, key.data());
+  glUniform3fv(program.fill_direction, 1, fill.data());
 }
 
 // Blended over the ground, under the cloth (which is drawn first and hides it), before the ground
@@ -616,20 +640,20 @@ void ClothRenderer::draw_shadow(Scene& scene, const Eigen::Matrix4f& view_projec
   const float y = gl_->ground_y_mm;
   const float quad[] = {low.x(), y, low.y(),  high.x(), y, low.y(),
                         low.x(), y, high.y(), high.x(), y, high.y()};
-  glBindVertexArray(gl_->shadow_vao);
-  glBindBuffer(GL_ARRAY_BUFFER, gl_->shadow_vbo);
+  const ShadowProgram& shadow = gl_->shadow_program;
+  glBindVertexArray(gl_->shadow_vao.get());
+  glBindBuffer(GL_ARRAY_BUFFER, gl_->shadow_vbo.get());
   glBufferData(GL_ARRAY_BUFFER, sizeof quad, quad, GL_DYNAMIC_DRAW);
-  glUseProgram(gl_->shadow_program);
-  glUniformMatrix4fv(glGetUniformLocation(gl_->shadow_program, "view_projection"), 1, GL_FALSE,
-                     view_projection.data());
+  glUseProgram(shadow.program.get());
+  glUniformMatrix4fv(shadow.view_projection, 1, GL_FALSE, view_projection.data());
   const Eigen::Vector2f centre = 0.5f * (gl_->footprint_min_mm + gl_->footprint_max_mm);
   const Eigen::Vector2f half =
       0.5f *
       (gl_->footprint_max_mm - gl_->footprint_min_mm).cwiseProduct(Eigen::Vector2f(0.5f, 1.0f));
-  glUniform2fv(glGetUniformLocation(gl_->shadow_program, "footprint_centre_mm"), 1, centre.data());
-  glUniform2fv(glGetUniformLocation(gl_->shadow_program, "footprint_half_mm"), 1, half.data());
-  glUniform1f(glGetUniformLocation(gl_->shadow_program, "soft_mm"), soft_mm);
-  glUniform1f(glGetUniformLocation(gl_->shadow_program, "darkness"), 0.45f);
+  glUniform2fv(shadow.footprint_centre_mm, 1, centre.data());
+  glUniform2fv(shadow.footprint_half_mm, 1, half.data());
+  glUniform1f(shadow.soft_mm, soft_mm);
+  glUniform1f(shadow.darkness, 0.45f);
   glEnable(GL_BLEND);
   glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
   glDepthMask(GL_FALSE);
@@ -647,45 +671,22 @@ unsigned ClothRenderer::render(Scene& scene, const OrbitCamera& camera, FrameSiz
   const float aspect =
       static_cast<float>(size.width) / static_cast<float>(std::max(size.height, 1));
   const Eigen::Matrix4f view_projection = camera.projection(aspect) * camera.view();
-  // Bring the stages this view needs up to date (lazily), then upload only what changed. The
-  // wireframe shows the grid as it is; otherwise the cells are a few pixels (level_of_detail.hpp).
-  scene.normals();
-  const DeformedGrid& grid = scene.grid();
-  const Eigen::Vector3f scale = world_scale(style.z_exaggeration);
-  const Eigen::Matrix4f model_to_clip =
-      view_projection *
-      Eigen::Vector4f(scale.x(), scale.y(), scale.z(), 1.0f).asDiagonal().toDenseMatrix();
-  const DrawnLattice lattice =
-      style.wireframe || !style.level_of_detail
-          ? full_lattice(grid)
-          : drawn_lattice(grid,
-                          screen_spacing(grid, model_to_clip,
-                                         Eigen::Vector2f(static_cast<float>(size.width),
-                                                         static_cast<float>(size.height)),
-                                         scale),
-                          scene.solution().n);
-  if (scene.version(Stage::normals) != mesh_version_ || mesh_z_scale_ != style.z_exaggeration ||
-      lattice.columns != mesh_lattice_.columns || lattice.rows != mesh_lattice_.rows) {
-    upload_mesh(scene, style.z_exaggeration, lattice);
-    mesh_version_ = scene.version(Stage::normals);
+  // Bring the stages this view needs up to date (lazily), then upload only what changed
+  // (cloth_uploads.hpp). The wireframe shows the grid as it is; otherwise the cells are a few
+  // pixels (level_of_detail.hpp).
+  const ClothBufferSources sources = cloth_buffer_sources(scene, camera, size, style);
+  const ClothUploads uploads = upload_rule_.next(sources);
+  if (uploads.mesh) {
+    upload_mesh(scene, style.z_exaggeration, sources.lattice, uploads.mesh_indices);
   }
-  if (style.fold_lines) {
-    scene.fold_lines();
-    if (scene.version(Stage::fold_lines) != fold_line_version_ ||
-        uploaded_positive_ != style.positive_fold_colour ||
-        lines_z_scale_ != style.z_exaggeration ||
-        uploaded_negative_ != style.negative_fold_colour) {
-      upload_fold_lines(scene, style);
-      fold_line_version_ = scene.version(Stage::fold_lines);
-    }
+  if (uploads.fold_lines) {
+    upload_fold_lines(scene, style);
   }
-  // The supports and the ground follow the solution and the shape: both re-make the grid.
-  if (scene.version(Stage::grid) != decoration_version_) {
+  if (uploads.decorations) {
     upload_decorations(scene);
-    decoration_version_ = scene.version(Stage::grid);
   }
 
-  glBindFramebuffer(GL_FRAMEBUFFER, gl_->framebuffer);
+  glBindFramebuffer(GL_FRAMEBUFFER, gl_->framebuffer.get());
   glViewport(0, 0, size.width, size.height);
   glClearColor(style.background.x(), style.background.y(), style.background.z(), 1.0f);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
@@ -700,25 +701,22 @@ unsigned ClothRenderer::render(Scene& scene, const OrbitCamera& camera, FrameSiz
   glEnable(GL_POLYGON_OFFSET_FILL);
   glPolygonOffset(1.0f, 1.0f);
   select_mesh_program(style);
-  glUseProgram(gl_->mesh_program);
-  glUniformMatrix4fv(glGetUniformLocation(gl_->mesh_program, "view_projection"), 1, GL_FALSE,
-                     view_projection.data());
-  glUniform3fv(glGetUniformLocation(gl_->mesh_program, "eye"), 1, eye.data());
-  glUniform3fv(glGetUniformLocation(gl_->mesh_program, "front_colour"), 1,
-               style.front_colour.data());
-  glUniform3fv(glGetUniformLocation(gl_->mesh_program, "back_colour"), 1, style.back_colour.data());
+  const MeshProgram& mesh = *gl_->mesh_program;
+  glUseProgram(mesh.program.get());
+  glUniformMatrix4fv(mesh.view_projection, 1, GL_FALSE, view_projection.data());
+  glUniform3fv(mesh.eye, 1, eye.data());
   set_mesh_colour_uniforms(scene, style);
-  set_breeze_uniforms(gl_->mesh_program, scene, style);
-  glBindVertexArray(gl_->mesh_vao);
+  set_breeze_uniforms(mesh.breeze, scene, style);
+  glBindVertexArray(gl_->mesh_vao.get());
   glDrawElements(GL_TRIANGLES, gl_->mesh_index_count, GL_UNSIGNED_INT, nullptr);
   glDisable(GL_POLYGON_OFFSET_FILL);
 
-  glUseProgram(gl_->line_program);
-  glUniformMatrix4fv(glGetUniformLocation(gl_->line_program, "view_projection"), 1, GL_FALSE,
-                     view_projection.data());
-  const GLint override_colour = glGetUniformLocation(gl_->line_program, "override_colour");
-  glUniform1f(glGetUniformLocation(gl_->line_program, "point_size"), 1.0f);
-  set_breeze_uniforms(gl_->line_program, scene, style);
+  const LineProgram& line = gl_->line_program;
+  glUseProgram(line.program.get());
+  glUniformMatrix4fv(line.view_projection, 1, GL_FALSE, view_projection.data());
+  const GLint override_colour = line.override_colour;
+  glUniform1f(line.point_size, 1.0f);
+  set_breeze_uniforms(line.breeze, scene, style);
   if (style.wireframe) {
     glUniform4f(override_colour, 0.1f, 0.1f, 0.1f, 1.0f);
     glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
@@ -728,19 +726,19 @@ unsigned ClothRenderer::render(Scene& scene, const OrbitCamera& camera, FrameSiz
   glUniform4f(override_colour, 0.0f, 0.0f, 0.0f, 0.0f);
   if (style.ground) {
     draw_shadow(scene, view_projection);
-    glUseProgram(gl_->line_program);
+    glUseProgram(line.program.get());
   }
   if (style.fold_lines && !gl_->line_counts.empty()) {
-    glBindVertexArray(gl_->lines_vao);
+    glBindVertexArray(gl_->lines_vao.get());
     glMultiDrawArrays(GL_LINE_STRIP, gl_->line_firsts.data(), gl_->line_counts.data(),
                       static_cast<GLsizei>(gl_->line_counts.size()));
   }
-  glBindVertexArray(gl_->decor_vao);
+  glBindVertexArray(gl_->decor_vao.get());
   if (style.ground) {
     glDrawArrays(GL_LINES, 0, gl_->ground_vertex_count);
   }
   glEnable(GL_PROGRAM_POINT_SIZE);
-  glUniform1f(glGetUniformLocation(gl_->line_program, "point_size"), 12.0f);
+  glUniform1f(line.point_size, 12.0f);
   glDisable(GL_DEPTH_TEST);  // the supports are always visible
   glDrawArrays(GL_POINTS, gl_->support_first, gl_->support_count);
   glDisable(GL_PROGRAM_POINT_SIZE);
@@ -751,7 +749,7 @@ unsigned ClothRenderer::render(Scene& scene, const OrbitCamera& camera, FrameSiz
   glViewport(previous_viewport[0], previous_viewport[1], previous_viewport[2],
              previous_viewport[3]);
   ++counters_.frames;
-  return gl_->colour_texture;
+  return gl_->colour_texture.get();
 }
 
 }  // namespace foldlab::gui

@@ -5,11 +5,12 @@
 // the scene's stage versions change.
 #pragma once
 
-#include <cstdint>
+#include <memory>
 
 #include <Eigen/Core>
 
 #include "app/gui/camera.hpp"
+#include "app/gui/cloth_uploads.hpp"
 #include "app/gui/renderer.hpp"
 #include "core/geometry/level_of_detail.hpp"
 #include "core/geometry/scene.hpp"
@@ -34,26 +35,19 @@ class ClothRenderer {
  private:
   struct Gl;
   void resize(FrameSize size);
-  void upload_mesh(Scene& scene, float z_scale, const DrawnLattice& lattice);
+  // `indices_too`: the lattice's size changed, so its triangles are uploaded as well.
+  void upload_mesh(Scene& scene, float z_scale, const DrawnLattice& lattice, bool indices_too);
   void upload_fold_lines(Scene& scene, const ClothStyle& style);
   void upload_decorations(Scene& scene);
-  void set_breeze_uniforms(unsigned program, Scene& scene, const ClothStyle& style);
   void update_print(const ClothStyle& style);
   void select_mesh_program(const ClothStyle& style);
   void set_mesh_colour_uniforms(Scene& scene, const ClothStyle& style);
   void draw_shadow(Scene& scene, const Eigen::Matrix4f& view_projection);
 
-  Gl* gl_;  // GL object names, kept out of the header so that it needs no GL include
+  // The GL objects, each owned by a handle; kept out of the header so that it needs no GL include.
+  std::unique_ptr<Gl> gl_;
   FrameSize size_{};
-  // Scene versions last uploaded; none is ever ~0, so the first frame uploads everything.
-  std::uint64_t mesh_version_ = ~std::uint64_t{0};
-  std::uint64_t fold_line_version_ = ~std::uint64_t{0};
-  std::uint64_t decoration_version_ = ~std::uint64_t{0};
-  float mesh_z_scale_ = -1.0f;  // the exaggeration the uploaded buffers were made with
-  DrawnLattice mesh_lattice_;   // the rows and columns of the grid uploaded (and indexed)
-  float lines_z_scale_ = -1.0f;
-  Eigen::Vector3f uploaded_positive_{-1, -1, -1};
-  Eigen::Vector3f uploaded_negative_{-1, -1, -1};
+  ClothUploadRule upload_rule_;  // what the buffers were last made from
   RenderCounters counters_;
   // The print texture's contents: 0 none, 1 checks, 2 stripes (both from print_colour_), 3 photo.
   int print_kind_ = -1;

@@ -8,6 +8,7 @@
 
 #include "app/gui/gl/cloth_renderer.hpp"
 #include "app/gui/gl/fast_fill.hpp"
+#include "app/gui/gl/gl_handles.hpp"
 #include "app/gui/gl/mipmapped_texture.hpp"
 #include "app/gui/renderer.hpp"
 #include "backends/imgui_impl_opengl3.h"
@@ -19,9 +20,7 @@ class GlRenderer final : public Renderer {
  public:
   GlRenderer() { ImGui_ImplOpenGL3_Init("#version 330 core"); }
   ~GlRenderer() override {
-    if (!textures_.empty()) {
-      glDeleteTextures(static_cast<GLsizei>(textures_.size()), textures_.data());
-    }
+    textures_.clear();
     cloth_.reset();
     ImGui_ImplOpenGL3_Shutdown();
   }
@@ -66,16 +65,14 @@ class GlRenderer final : public Renderer {
   }
 
   int create_image() override {
-    GLuint texture = 0;
-    glGenTextures(1, &texture);
-    textures_.push_back(texture);
+    textures_.push_back(GlTexture::make());
     sizes_.push_back({});
     return static_cast<int>(textures_.size()) - 1;
   }
 
   void update_image(int image, int width, int height, const std::uint32_t* rgba) override {
     const auto i = static_cast<std::size_t>(image);
-    glBindTexture(GL_TEXTURE_2D, textures_[i]);
+    glBindTexture(GL_TEXTURE_2D, textures_[i].get());
     if (sizes_[i].width != width || sizes_[i].height != height) {
       glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, width, height, 0, GL_RGBA, GL_UNSIGNED_BYTE,
                    nullptr);
@@ -89,13 +86,13 @@ class GlRenderer final : public Renderer {
 
   void update_photo(int image, int width, int height, const std::uint32_t* rgba) override {
     const auto i = static_cast<std::size_t>(image);
-    upload_mipmapped(textures_[i], width, height, rgba, false);
+    upload_mipmapped(textures_[i].get(), width, height, rgba, false);
     sizes_[i] = {width, height};
   }
 
   ImTextureID texture(int image) const override {
     return reinterpret_cast<ImTextureID>(
-        static_cast<std::intptr_t>(textures_[static_cast<std::size_t>(image)]));
+        static_cast<std::intptr_t>(textures_[static_cast<std::size_t>(image)].get()));
   }
 
   void render_draw_data(FrameSize size) override {
@@ -130,7 +127,7 @@ class GlRenderer final : public Renderer {
   ClothViewCache view_cache_;
   RenderCounters view_counters_;     // frames, view_renders, view_cache_hits
   mutable RenderCounters counters_;  // the uploads' counts from cloth_ joined to view_counters_
-  std::vector<GLuint> textures_;
+  std::vector<GlTexture> textures_;
   std::vector<FrameSize> sizes_;
 };
 

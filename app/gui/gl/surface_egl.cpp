@@ -5,6 +5,7 @@
 
 #include <imgui.h>
 
+#include "app/gui/gl/gl_handles.hpp"
 #include "app/gui/surface.hpp"
 
 namespace foldlab::gui {
@@ -16,12 +17,24 @@ std::string egl_error_text() {
   return std::string("EGL error ") + code;
 }
 
-// Mesa's surfaceless platform: a GL context with no window system at all, drawing into an
-// off-screen framebuffer. Input is absent, and the time step is a fixed 1/60 s so that frames,
-// and therefore pictures, are reproducible.
-class HeadlessSurface final : public Surface {
+// Mesa's surfaceless display with a desktop OpenGL 3.3 core context made current; released in
+// reverse, also when making it fails part-way.
+class EglContext {
  public:
-  explicit HeadlessSurface(const SurfaceOptions& options) : size_{options.width, options.height} {
+  EglContext() {
+    try {
+      make();
+    } catch (...) {
+      release();
+      throw;
+    }
+  }
+  ~EglContext() { release(); }
+  EglContext(const EglContext&) = delete;
+  EglContext& operator=(const EglContext&) = delete;
+
+ private:
+  void make() {
     display_ =
         eglGetPlatformDisplayEXT(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
     EGLint major = 0;
@@ -30,6 +43,7 @@ class HeadlessSurface final : public Surface {
       throw SurfaceError("cannot open Mesa's surfaceless EGL display (" + egl_error_text() +
                          "); is libegl-mesa0 installed?");
     }
+    initialized_ = true;
     if (!eglBindAPI(EGL_OPENGL_API)) {
       throw SurfaceError("EGL has no desktop OpenGL (" + egl_error_text() + ")");
     }
@@ -46,28 +60,44 @@ class HeadlessSurface final : public Surface {
       throw SurfaceError("cannot create a surfaceless OpenGL 3.3 core context (" +
                          egl_error_text() + ")");
     }
-    glGenFramebuffers(1, &framebuffer_);
-    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
-    glGenRenderbuffers(2, renderbuffers_);
-    glBindRenderbuffer(GL_RENDERBUFFER, renderbuffers_[0]);
-    glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, size_.width, size_.height);
-    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER,
-                              renderbuffers_[0]);
-    glBindRenderbuffer(GL_RENDERBUFFER, renderbuffers_[1]);
-    glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH24_STENCIL8, size_.width, size_.height);
-    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER,
-                              renderbuffers_[1]);
-    if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
-      throw SurfaceError("the off-screen framebuffer is incomplete");
+  }
+  void release() {
+    if (context_ != EGL_NO_CONTEXT) {
+      eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
+      eglDestroyContext(display_, context_);
+      context_ = EGL_NO_CONTEXT;
+    }
+    if (initialized_) {
+      eglTerminate(display_);
+      initialized_ = false;
     }
   }
 
-  ~HeadlessSurface() override {
-    glDeleteRenderbuffers(2, renderbuffers_);
-    glDeleteFramebuffers(1, &framebuffer_);
-    eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
-    eglDestroyContext(display_, context_);
-    eglTerminate(display_);
+  EGLDisplay display_ = EGL_NO_DISPLAY;
+  bool initialized_ = false;
+  EGLContext context_ = EGL_NO_CONTEXT;
+};
+
+// Mesa's surfaceless platform: a GL context with no window system at all, drawing into an
+// off-screen framebuffer. Input is absent, and the time step is a fixed 1/60 s so that frames,
+// and therefore pictures, are reproducible.
+class HeadlessSurface final : public Surface {
+ public:
+  explicit HeadlessSurface(const SurfaceOptions& options) : size_{options.width, options.height} {
+    framebuffer_ = GlFramebuffer::make();
+    colour_ = GlRenderbuffer::make();
+    depth_ = GlRenderbuffer::make();
+    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_.get());
+    glBindRenderbuffer(GL_RENDERBUFFER, colour_.get());
+    glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, size_.width, size_.height);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, colour_.get());
+    glBindRenderbuffer(GL_RENDERBUFFER, depth_.get());
+    glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH24_STENCIL8, size_.width, size_.height);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER,
+                              depth_.get());
+    if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
+      throw SurfaceError("the off-screen framebuffer is incomplete");
+    }
   }
 
   void init_imgui_platform() override { ImGui::GetIO().BackendPlatformName = "foldlab_headless"; }
@@ -85,24 +115,24 @@ class HeadlessSurface final : public Surface {
   FrameSize framebuffer_size() const override { return size_; }
   void resize(FrameSize size) override {
     size_ = size;
-    glBindRenderbuffer(GL_RENDERBUFFER, renderbuffers_[0]);
+    glBindRenderbuffer(GL_RENDERBUFFER, colour_.get());
     glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, size_.width, size_.height);
-    glBindRenderbuffer(GL_RENDERBUFFER, renderbuffers_[1]);
+    glBindRenderbuffer(GL_RENDERBUFFER, depth_.get());
     glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH24_STENCIL8, size_.width, size_.height);
     ImGui::GetIO().DisplaySize =
         ImVec2(static_cast<float>(size_.width), static_cast<float>(size_.height));
   }
-  void bind_framebuffer() override { glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_); }
+  void bind_framebuffer() override { glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_.get()); }
   void wait_events(double) override {}
   void present() override {}
   void finish() override { glFinish(); }
 
  private:
   FrameSize size_;
-  EGLDisplay display_ = EGL_NO_DISPLAY;
-  EGLContext context_ = EGL_NO_CONTEXT;
-  GLuint framebuffer_ = 0;
-  GLuint renderbuffers_[2] = {0, 0};
+  // The context first: members go in reverse, so the GL objects are deleted while it is current.
+  EglContext egl_;
+  GlFramebuffer framebuffer_;
+  GlRenderbuffer colour_, depth_;
 };
 
 }  // namespace
