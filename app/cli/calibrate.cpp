@@ -242,6 +242,7 @@ Command add_calibrate_command(CLI::App& app) {
     std::string calibrated_on;
     bool json = false;
     bool no_held_out = false;
+    bool coverage = false;
   };
   auto options = std::make_shared<Options>();
   CLI::App* command = app.add_subcommand(
@@ -276,6 +277,10 @@ Command add_calibrate_command(CLI::App& app) {
   command->add_flag("--json", options->json, "print JSON instead of tables");
   command->add_flag("--no-held-out", options->no_held_out,
                     "skip leave-one-out and group splits (the in-sample fit only)");
+  command->add_flag("--coverage", options->coverage,
+                    "measure how often the prediction intervals cover rows they were not fitted "
+                    "to (nested leave-one-out and group splits: about m² fits); always done with "
+                    "--save-preset, which stores it with the intervals");
   return [options] {
     return guarded([&] {
       check_distinct_files(
@@ -297,10 +302,32 @@ Command add_calibrate_command(CLI::App& app) {
       } catch (const CalibrationError& e) {
         throw InputError(e.what());
       }
+      std::string coverage;
+      if (calibration.held_out && (options->coverage || !options->save_preset_path.empty())) {
+        try {
+          coverage =
+              describe_coverage(*cross_validated_coverage(data, base.parameters, calibration));
+        } catch (const CalibrationError& e) {
+          throw InputError(e.what());
+        }
+      }
       if (options->json) {
-        std::cout << report_json(report, options->data_path).dump(2) << "\n";
+        nlohmann::json j = report_json(report, options->data_path);
+        const CalibrationRecord record = calibration_record(report, "");
+        const std::optional<PredictionRange> level =
+            prediction_interval(with_constants(base.parameters, report.fitted.K, report.fitted.p),
+                                record.leave_one_out, record.residuals);
+        j["interval_level"] = level ? nlohmann::json(level->level) : nlohmann::json(nullptr);
+        j["interval_coverage"] =
+            coverage.empty() ? nlohmann::json(nullptr) : nlohmann::json(coverage);
+        std::cout << j.dump(2) << "\n";
       } else {
         print_report(report, options->data_path, base.name);
+        if (!coverage.empty()) {
+          std::cout << "\nPrediction intervals (jackknife+ over the leave-one-out fits), how often "
+                       "they covered rows they were not fitted to:\n  "
+                    << coverage << "\n";
+        }
       }
       if (!options->save_preset_path.empty()) {
         Preset out = base;
@@ -317,7 +344,7 @@ Command add_calibrate_command(CLI::App& app) {
             options->calibrated_on.empty()
                 ? std::filesystem::path(options->data_path).filename().string()
                 : options->calibrated_on;
-        out.calibration = calibration_record(report, data_label);
+        out.calibration = calibration_record(report, data_label, coverage);
         save_preset(out, options->save_preset_path);
         std::cerr << "foldlab: wrote " << options->save_preset_path << "\n";
       }

@@ -505,6 +505,17 @@ Parameters with_constants(const Parameters& base, double K, double p) {
   return out;
 }
 
+void check_fit_row_count(int fit_rows, FitConstants fit) {
+  const int constants = fit == FitConstants::K ? 1 : 2;
+  if (fit_rows < constants) {
+    throw CalibrationError(detail::printf_string(
+        "%d fit row%s cannot determine %d constants (%s): the fit would be anything that "
+        "passes through %s; add rows, or fit K alone",
+        fit_rows, fit_rows == 1 ? "" : "s", constants, std::string(to_string(fit)).c_str(),
+        fit_rows == 1 ? "that row" : "those rows"));
+  }
+}
+
 std::optional<FittedConstants> fit_constants(const std::vector<Measurement>& rows,
                                              const Parameters& base,
                                              const CalibrationOptions& options,
@@ -559,13 +570,22 @@ CalibrationReport calibrate(const MeasurementSet& data, const Parameters& base,
   if (fit_rows.empty()) {
     throw CalibrationError(data.origin + ": nothing to fit: every row has role check");
   }
+  check_fit_row_count(static_cast<int>(fit_rows.size()), options.fit);
   // The groups of the fit rows, for fitting on all but one and testing on that one.
   std::set<std::string> groups;
   for (std::size_t i : fit_rows) {
     groups.insert(data.rows[i].group);
   }
-  const bool leave_one_out = options.held_out && fit_rows.size() >= 2;
-  const bool split_groups = options.held_out && groups.size() >= 2;
+  // A held-out fit, like every fit, stands on at least as many rows as it has constants.
+  const std::size_t constants = options.fit == FitConstants::K ? 1 : 2;
+  const bool leave_one_out = options.held_out && fit_rows.size() >= constants + 1;
+  const bool split_groups = options.held_out && groups.size() >= 2 &&
+                            std::all_of(groups.begin(), groups.end(), [&](const std::string& g) {
+                              return static_cast<std::size_t>(std::count_if(
+                                         fit_rows.begin(), fit_rows.end(), [&](std::size_t i) {
+                                           return data.rows[i].group != g;
+                                         })) >= constants;
+                            });
   const double fits = 1.0 + (leave_one_out ? static_cast<double>(fit_rows.size()) : 0.0) +
                       (split_groups ? static_cast<double>(groups.size()) : 0.0);
   double fits_done = 0.0;

@@ -101,6 +101,10 @@ class CalibrationError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// Throws CalibrationError when `fit_rows` rows are fewer than the constants `fit` asks for (one
+// row cannot pin down both K and p).
+void check_fit_row_count(int fit_rows, FitConstants fit);
+
 // The search on every row given (roles ignored): the rows' inputs with `base`'s model settings.
 // nullopt when cancelled.
 std::optional<FittedConstants> fit_constants(const std::vector<Measurement>& rows,

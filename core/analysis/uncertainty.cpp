@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
+#include <limits>
+#include <set>
 #include <utility>
 
 #include "core/model/solver.hpp"
@@ -27,19 +30,82 @@ bool is_printed_constant(const Parameters& p) {
 
 }  // namespace
 
-PredictionRange prediction_range(const Parameters& p, const std::vector<Eq7Constants>& constants) {
-  const Solution own = solve(p);
-  PredictionRange r{own.n, own.n, own.z_max_mm, own.z_max_mm, own.Q, own.Q};
-  for (const Eq7Constants& k : constants) {
-    const Solution s = solve(with_constants(p, k.K, k.p));
-    r.n_min = std::min(r.n_min, s.n);
-    r.n_max = std::max(r.n_max, s.n);
-    r.z_max_min_mm = std::min(r.z_max_min_mm, s.z_max_mm);
-    r.z_max_max_mm = std::max(r.z_max_max_mm, s.z_max_mm);
-    r.Q_min = std::min(r.Q_min, s.Q);
-    r.Q_max = std::max(r.Q_max, s.Q);
+double interval_level(int residuals) {
+  return residuals >= 2 ? (residuals - 1.0) / (residuals + 1.0) : 0.0;
+}
+
+HeldOutResidual held_out_residual(const PublishedResult& observed, const Solution& predicted) {
+  HeldOutResidual r;
+  if (observed.n) {
+    r.n = *observed.n - predicted.n;
+  }
+  if (observed.z_max_mm && predicted.z_max_mm > 0.0) {
+    r.log_z_max = std::log(*observed.z_max_mm) - std::log(predicted.z_max_mm);
+  }
+  if (observed.Q && predicted.n >= 1) {
+    r.log_Q = std::log(*observed.Q) - std::log(predicted.Q);
   }
   return r;
+}
+
+namespace {
+
+// The smallest and largest of the shifted predictions of one quantity.
+struct Extremes {
+  double lo = std::numeric_limits<double>::infinity();
+  double hi = -std::numeric_limits<double>::infinity();
+  int count = 0;
+  void add(double v) {
+    lo = std::min(lo, v);
+    hi = std::max(hi, v);
+    ++count;
+  }
+};
+
+}  // namespace
+
+std::optional<PredictionRange> prediction_interval(const Parameters& p,
+                                                   const std::vector<Eq7Constants>& fits,
+                                                   const std::vector<HeldOutResidual>& residuals) {
+  Extremes n;
+  Extremes log_z;
+  Extremes log_Q;
+  for (std::size_t i = 0; i < fits.size() && i < residuals.size(); ++i) {
+    const Solution s = solve(with_constants(p, fits[i].K, fits[i].p));
+    const HeldOutResidual& r = residuals[i];
+    // Symmetric about each fit's prediction, as the jackknife+ has it: an error seen one way on
+    // one row can go the other way on the next (signed shifts missed the table split's Q rows).
+    auto add = [](Extremes& e, double prediction, double residual) {
+      e.add(prediction - std::abs(residual));
+      e.add(prediction + std::abs(residual));
+      --e.count;  // one residual, two ends
+    };
+    if (r.n) {
+      add(n, s.n, *r.n);
+    }
+    if (r.log_z_max && s.z_max_mm > 0.0) {
+      add(log_z, std::log(s.z_max_mm), *r.log_z_max);
+    }
+    if (r.log_Q && s.n >= 1) {
+      add(log_Q, std::log(s.Q), *r.log_Q);
+    }
+  }
+  if (n.count < 2) {
+    return std::nullopt;
+  }
+  PredictionRange out;
+  out.level = interval_level(n.count);
+  out.n_min = std::max(0, static_cast<int>(std::lround(n.lo)));
+  out.n_max = std::max(out.n_min, static_cast<int>(std::lround(n.hi)));
+  // A quantity the data never observed often enough is bounded by the geometry alone: z_max
+  // from 0 to h, Q from 1 to a_0 / (0.01 h) = 101.
+  const bool z_known = log_z.count >= 2;
+  out.z_max_min_mm = z_known ? std::exp(log_z.lo) : 0.0;
+  out.z_max_max_mm = z_known ? std::exp(log_z.hi) : p.hanging.height_mm;
+  const bool Q_known = log_Q.count >= 2;
+  out.Q_min = Q_known ? std::max(1.0, std::exp(log_Q.lo)) : 1.0;
+  out.Q_max = Q_known ? std::max(out.Q_min, std::exp(log_Q.hi)) : 101.0;
+  return out;
 }
 
 bool record_applies(const Parameters& p, const CalibrationRecord& record) {
@@ -71,18 +137,21 @@ ModelStanding model_standing(const Parameters& p, const std::optional<Calibratio
                : "none: the preset carries no calibration";
     return out;
   }
-  std::vector<Eq7Constants> constants_list = record->equally_good;
-  constants_list.insert(constants_list.end(), record->leave_one_out.begin(),
-                        record->leave_one_out.end());
-  out.range = prediction_range(p, constants_list);
-  out.range_basis = "over the " + std::to_string(record->equally_good.size()) +
-                    " ends of the constants that fit " + record->calibrated_on +
-                    " equally well and the " + std::to_string(record->leave_one_out.size()) +
-                    " leave-one-out fits";
+  out.range = prediction_interval(p, record->leave_one_out, record->residuals);
+  if (!out.range) {
+    out.range_basis = "none: the calibration stored fewer than two leave-one-out residuals";
+    return out;
+  }
+  out.range_basis = printf_string("jackknife+ over the %zu leave-one-out fits on ",
+                                  record->leave_one_out.size()) +
+                    record->calibrated_on + " and each one's error on the row it left out" +
+                    (record->coverage.empty() ? std::string("; coverage not measured")
+                                              : "; cross-validated coverage: " + record->coverage);
   return out;
 }
 
-CalibrationRecord calibration_record(const CalibrationReport& report, std::string calibrated_on) {
+CalibrationRecord calibration_record(const CalibrationReport& report, std::string calibrated_on,
+                                     std::string coverage) {
   CalibrationRecord record;
   record.calibrated_on = std::move(calibrated_on);
   record.method = report.base.model.method;
@@ -92,9 +161,137 @@ CalibrationRecord calibration_record(const CalibrationReport& report, std::strin
   for (const CalibrationRow& row : report.rows) {
     if (row.measurement.role == MeasurementRole::fit && row.held_out) {
       record.leave_one_out.push_back({row.held_out_K, row.held_out_p});
+      record.residuals.push_back(
+          held_out_residual(row.measurement.observed, row.held_out->solution));
     }
   }
+  record.coverage = std::move(coverage);
   return record;
+}
+
+namespace {
+
+// One held-out part of the fit rows and the rows it is predicted from.
+struct Split {
+  std::vector<std::size_t> train;
+  std::vector<std::size_t> test;
+};
+
+void count(QuantityCoverage& into, std::optional<double> observed, double lo, double hi,
+           double level) {
+  if (!observed) {
+    return;
+  }
+  // Weighted by rows, so that the stated level reads as the share the rows should have met.
+  into.level = (into.level * into.total + level) / (into.total + 1);
+  ++into.total;
+  into.covered += *observed >= lo && *observed <= hi;
+}
+
+}  // namespace
+
+std::optional<std::vector<CoverageCheck>> cross_validated_coverage(
+    const MeasurementSet& data, const Parameters& base, const CalibrationOptions& options,
+    const CalibrationProgress& progress) {
+  std::vector<std::size_t> fit_rows;
+  for (std::size_t i = 0; i < data.rows.size(); ++i) {
+    if (data.rows[i].role == MeasurementRole::fit) {
+      fit_rows.push_back(i);
+    }
+  }
+  check_fit_row_count(static_cast<int>(fit_rows.size()), options.fit);
+  std::vector<std::pair<std::string, std::vector<Split>>> checks(1);
+  checks[0].first = "leave-one-out";
+  std::set<std::string> groups;
+  for (std::size_t i : fit_rows) {
+    Split split;
+    split.test = {i};
+    std::copy_if(fit_rows.begin(), fit_rows.end(), std::back_inserter(split.train),
+                 [i](std::size_t k) { return k != i; });
+    checks[0].second.push_back(std::move(split));
+    groups.insert(data.rows[i].group);
+  }
+  if (groups.size() > 1) {
+    checks.push_back({"fit on the other groups, test on one", {}});
+    for (const std::string& group : groups) {
+      Split split;
+      for (std::size_t i : fit_rows) {
+        (data.rows[i].group == group ? split.test : split.train).push_back(i);
+      }
+      checks.back().second.push_back(std::move(split));
+    }
+  }
+  CalibrationOptions inner = options;
+  inner.held_out = false;
+  const int needed = options.fit == FitConstants::K ? 1 : 2;
+  int done = 0;
+  int total = 0;
+  for (const auto& [name, splits] : checks) {
+    for (const Split& split : splits) {
+      total += static_cast<int>(split.train.size());
+    }
+  }
+  std::vector<CoverageCheck> out;
+  for (const auto& [name, splits] : checks) {
+    CoverageCheck check;
+    check.name = name;
+    for (const Split& split : splits) {
+      // Each training row's residual under the fit without it: that fit needs `needed` rows.
+      if (static_cast<int>(split.train.size()) < needed + 1) {
+        done += static_cast<int>(split.train.size());
+        continue;
+      }
+      std::vector<Eq7Constants> fits;
+      std::vector<HeldOutResidual> residuals;
+      for (std::size_t left_out : split.train) {
+        std::vector<Measurement> rows;
+        for (std::size_t k : split.train) {
+          if (k != left_out) {
+            rows.push_back(data.rows[k]);
+          }
+        }
+        const std::optional<FittedConstants> fit = fit_constants(rows, base, inner);
+        if (!fit || (progress && !progress(static_cast<double>(++done) / total))) {
+          return std::nullopt;
+        }
+        const Measurement& m = data.rows[left_out];
+        fits.push_back({fit->K, fit->p});
+        residuals.push_back(held_out_residual(
+            m.observed, solve(with_constants(parameters_for(m, base), fit->K, fit->p))));
+      }
+      for (std::size_t j : split.test) {
+        const Measurement& m = data.rows[j];
+        const std::optional<PredictionRange> r =
+            prediction_interval(parameters_for(m, base), fits, residuals);
+        if (!r) {
+          continue;
+        }
+        const std::optional<double> n =
+            m.observed.n ? std::optional<double>(*m.observed.n) : std::nullopt;
+        count(check.n, n, r->n_min, r->n_max, r->level);
+        count(check.z_max, m.observed.z_max_mm, r->z_max_min_mm, r->z_max_max_mm, r->level);
+        count(check.Q, m.observed.Q, r->Q_min, r->Q_max, r->level);
+      }
+    }
+    out.push_back(std::move(check));
+  }
+  return out;
+}
+
+std::string describe_coverage(const std::vector<CoverageCheck>& checks) {
+  std::string out;
+  for (const CoverageCheck& c : checks) {
+    if (c.n.total == 0) {
+      continue;
+    }
+    auto part = [](const char* name, const QuantityCoverage& q) {
+      return q.total > 0 ? printf_string(", %s %d/%d", name, q.covered, q.total) : std::string();
+    };
+    out += (out.empty() ? "" : "; ") + c.name + printf_string(" n %d/%d", c.n.covered, c.n.total) +
+           part("z_max", c.z_max) + part("Q", c.Q) +
+           printf_string(" at a stated %.0f %%", 100.0 * c.n.level);
+  }
+  return out;
 }
 
 }  // namespace foldlab

@@ -1,6 +1,7 @@
 #include "core/io/preset.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <fstream>
 #include <sstream>
 #include <utility>
@@ -193,12 +194,43 @@ std::vector<Eq7Constants> read_constants_list(Reader& r, const json& list,
   return out;
 }
 
+// [[n, ln z_max, ln Q], ...]: finite numbers or null, n a whole number.
+std::vector<HeldOutResidual> read_residuals(Reader& r, const json& list,
+                                            const std::string& pointer) {
+  std::vector<HeldOutResidual> out;
+  if (!list.is_array()) {
+    r.problem(pointer,
+              "expected an array of [n, ln z_max, ln Q] residuals, got " + describe_json(list));
+    return out;
+  }
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    const json& triple = list[i];
+    auto usable = [](const json& v) {
+      return v.is_null() ||
+             (v.is_number() && std::isfinite(v.get<double>()) && std::abs(v.get<double>()) < 1e6);
+    };
+    if (!triple.is_array() || triple.size() != 3 || !usable(triple[0]) || !usable(triple[1]) ||
+        !usable(triple[2]) ||
+        (triple[0].is_number() && triple[0].get<double>() != std::floor(triple[0].get<double>()))) {
+      r.problem(pointer + "/" + std::to_string(i),
+                "expected [n, ln z_max, ln Q] (finite numbers or null, n whole), got " +
+                    describe_json(triple));
+      continue;
+    }
+    auto value = [](const json& v) {
+      return v.is_null() ? std::optional<double>() : std::optional<double>(v.get<double>());
+    };
+    out.push_back({value(triple[0]), value(triple[1]), value(triple[2])});
+  }
+  return out;
+}
+
 std::optional<CalibrationRecord> read_calibration(Reader& r, const json& c,
                                                   std::vector<std::string>& problems) {
   const std::string at = "/calibration";
-  if (!r.object(
-          c, at,
-          {"calibrated_on", "method", "K", "p", "fit_rows", "equally_good", "leave_one_out"})) {
+  if (!r.object(c, at,
+                {"calibrated_on", "method", "K", "p", "fit_rows", "equally_good", "leave_one_out",
+                 "residuals", "coverage"})) {
     return std::nullopt;
   }
   const std::size_t before = problems.size();
@@ -218,6 +250,15 @@ std::optional<CalibrationRecord> read_calibration(Reader& r, const json& c,
   if (c.contains("leave_one_out")) {
     record.leave_one_out = read_constants_list(r, c.at("leave_one_out"), at + "/leave_one_out");
   }
+  if (c.contains("residuals")) {
+    record.residuals = read_residuals(r, c.at("residuals"), at + "/residuals");
+    if (record.residuals.size() != record.leave_one_out.size()) {
+      r.problem(at + "/residuals", "expected one residual per leave_one_out fit (" +
+                                       std::to_string(record.leave_one_out.size()) + "), got " +
+                                       std::to_string(record.residuals.size()));
+    }
+  }
+  r.text(c, at, "coverage", record.coverage, false);
   if (problems.size() == before && !(record.fitted.K > 0.0 && record.fitted.p > 0.0)) {
     r.problem(at, "K and p must be > 0");
   }
@@ -369,6 +410,17 @@ json preset_to_json(const Preset& preset) {
                         {"fit_rows", c->fit_rows},
                         {"equally_good", pairs(c->equally_good)},
                         {"leave_one_out", pairs(c->leave_one_out)}};
+    if (!c->residuals.empty()) {
+      json residuals = json::array();
+      for (const HeldOutResidual& r : c->residuals) {
+        auto value = [](const std::optional<double>& v) { return v ? json(*v) : json(nullptr); };
+        residuals.push_back({value(r.n), value(r.log_z_max), value(r.log_Q)});
+      }
+      j["calibration"]["residuals"] = std::move(residuals);
+    }
+    if (!c->coverage.empty()) {
+      j["calibration"]["coverage"] = c->coverage;
+    }
   }
   return j;
 }

@@ -25,6 +25,17 @@ struct PublishedResult {
 // Where a preset's eq. 7 constants come from, with what else fitted the same data as well: the
 // prediction ranges (core/analysis/uncertainty.hpp) evaluate these stored constants rather than
 // calibrating again at every solve.
+// One fit row's leave-one-out residual: what was observed minus what the fit without the row
+// predicts for it; n as a difference, z_max and Q as natural-log ratios (they scale). Absent where
+// the row observed nothing, or the prediction has no folds to compare.
+struct HeldOutResidual {
+  std::optional<double> n;
+  std::optional<double> log_z_max;
+  std::optional<double> log_Q;
+
+  bool operator==(const HeldOutResidual&) const = default;
+};
+
 struct CalibrationRecord {
   std::string calibrated_on;  // the data, for labels: "Conci's Tables 1–2"
   Method method = Method::exact;
@@ -34,6 +45,11 @@ struct CalibrationRecord {
   std::vector<Eq7Constants> equally_good;
   // The fits on the data without one row each (empty when there was only one row).
   std::vector<Eq7Constants> leave_one_out;
+  // The residual of each leave-one-out fit on the row it left out, in leave_one_out's order: with
+  // those fits they make the prediction intervals (core/analysis/uncertainty.hpp).
+  std::vector<HeldOutResidual> residuals;
+  // How often such intervals covered rows they were not fitted to, in words (empty: not measured).
+  std::string coverage;
 
   bool operator==(const CalibrationRecord&) const = default;
 };

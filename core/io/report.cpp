@@ -88,6 +88,8 @@ nlohmann::json solution_to_json(const Solution& s, const Parameters& p,
     j["z_max_range_mm"] = pair(&PredictionRange::z_max_min_mm, &PredictionRange::z_max_max_mm);
     j["Q_range"] = pair(&PredictionRange::Q_min, &PredictionRange::Q_max);
     j["range_basis"] = standing->range_basis;
+    j["interval_level"] = r ? nlohmann::json(r->level) : nlohmann::json(nullptr);
+    j["interval_basis"] = standing->range_basis;
   }
   nlohmann::json& inputs = j["inputs"];
   for (const InputSpec& spec : input_table()) {
@@ -152,7 +154,10 @@ std::string solution_table(const Solution& s, const Parameters& p, const std::st
   out += line("out-of-plane depth", "z_max", s.z_max_mm, "mm", "%.2f",
               in_range(&PredictionRange::z_max_min_mm, &PredictionRange::z_max_max_mm, "%.1f"));
   if (standing != nullptr) {
-    out += "  range: " + standing->range_basis + "\n";
+    out += standing->range ? detail::printf_string("  %.0f %% prediction interval: ",
+                                                   100.0 * standing->range->level)
+                           : std::string("  interval: ");
+    out += standing->range_basis + "\n";
   }
   out += line("span between supports", "l", s.span_mm, "mm", "%.2f");
   out += line("sag of the upper edge", "A", s.sag_amplitude_mm, "mm", "%.2f");

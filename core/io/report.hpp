@@ -13,7 +13,10 @@ namespace foldlab {
 
 // The predictions at the ends of the constants that fit the calibration data as well as the ones
 // in force (and of the fits that left one row out): what the data allow, not an error bar.
+// A prediction interval: each of n, z_max and Q with the ends that the leave-one-out residuals of
+// the data behind the constants allow at `level` (core/analysis/uncertainty.hpp).
 struct PredictionRange {
+  double level = 0.0;  // the interval's stated level, e.g. 0.714 for six residuals
   int n_min = 0;
   int n_max = 0;
   double z_max_min_mm = 0.0;

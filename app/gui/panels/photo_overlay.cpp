@@ -322,7 +322,13 @@ void PhotoOverlay::start_fit(const Document& document) {
   fit_message_ = "Fitting K and p to " + std::to_string(data.rows.size()) + " rows...";
   fit_message_is_error_ = false;
   fit_.start(
-      [data, base = fit_base_, options](JobToken&) { return calibrate(data, base, options); },
+      [data, base = fit_base_, options](JobToken&) {
+        FitOutcome outcome{calibrate(data, base, options), {}};
+        if (const auto checks = cross_validated_coverage(data, base, options)) {
+          outcome.coverage = describe_coverage(*checks);
+        }
+        return outcome;
+      },
       wake_);
 }
 
@@ -331,7 +337,8 @@ void PhotoOverlay::collect_fit(Document& document) {
     return;
   }
   try {
-    const CalibrationReport report = *fit_.take_result();
+    const FitOutcome outcome = *fit_.take_result();
+    const CalibrationReport& report = outcome.report;
     const FittedConstants& f = report.fitted;
     const std::string data_label = with_shipped_rows_ && !paths_.shipped_data_file.empty()
                                        ? "my measurements and " + std::string(kConciTables12)
@@ -348,7 +355,7 @@ void PhotoOverlay::collect_fit(Document& document) {
                       summary_text(report.in_sample) + "; leave-one-out " +
                       summary_text(report.leave_one_out) + ".";
     out.published = {};
-    out.calibration = calibration_record(report, data_label);
+    out.calibration = calibration_record(report, data_label, outcome.coverage);
     const std::filesystem::path path =
         paths_.user_presets_dir / (preset_slug("fitted to my measurements") + ".json");
     std::filesystem::create_directories(path.parent_path());

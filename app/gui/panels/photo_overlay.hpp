@@ -112,7 +112,12 @@ class PhotoOverlay : public Panel {
   int rows_in_file_ = 0;
 
   bool with_shipped_rows_ = true;
-  BackgroundJob<CalibrationReport> fit_;
+  // The fit, and how often its prediction intervals covered rows they were not fitted to.
+  struct FitOutcome {
+    CalibrationReport report;
+    std::string coverage;
+  };
+  BackgroundJob<FitOutcome> fit_;
   std::function<void()> wake_;
   Parameters fit_base_;
   int fit_user_rows_ = 0;

@@ -54,8 +54,14 @@ void ResultsPanel::draw(PanelContext& context) {
   ImGui::PushStyleColor(ImGuiCol_Text, kDimText);
   ImGui::TextWrapped("eq. 7: %s", model.label.c_str());
   ImGui::PopStyleColor();
+  if (model.range) {
+    ImGui::PushStyleColor(ImGuiCol_Text, kDimText);
+    ImGui::TextWrapped("(brackets: %.0f %% prediction intervals, hover for how often they held)",
+                       100.0 * model.range->level);
+    ImGui::PopStyleColor();
+  }
   if (ImGui::IsItemHovered()) {
-    ImGui::SetTooltip("range of n, Q and z_max: %s", model.range_basis.c_str());
+    ImGui::SetTooltip("intervals of n, Q and z_max: %s", model.range_basis.c_str());
   }
   if (ImGui::BeginTable("results", 3, ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit)) {
     auto row = [](const char* name, const char* symbol, const std::string& value) {
@@ -76,7 +82,11 @@ void ResultsPanel::draw(PanelContext& context) {
         ranged(fmt("%.0f", s.n), range ? range->n_min : 0, range ? range->n_max : 0, "%.0f"));
     row("amplitude ratio", "Q",
         ranged(fmt("%.4f", s.Q), range ? range->Q_min : 0, range ? range->Q_max : 0, "%.4f"));
-    row("root of eq. 7", "Q7", s.Q7 ? fmt("%.4f", *s.Q7) : std::string("none (s >= 1)"));
+    if (s.count_rule && s.count_rule->spacing == FoldSpacing::even) {
+      row("fold spacing", "lambda", fmt("%.1f mm", s.count_rule->step));
+    } else {
+      row("root of eq. 7", "Q7", s.Q7 ? fmt("%.4f", *s.Q7) : std::string("none (s >= 1)"));
+    }
     row("stress ratio", "s", fmt("%.4g", s.stress_ratio));
     row("out-of-plane depth", "z_max",
         ranged(fmt("%.2f", s.z_max_mm), range ? range->z_max_min_mm : 0,
