@@ -19,6 +19,19 @@ bool set_named(Enum& field, std::string_view text, bool (*parse)(std::string_vie
   return parse(text, field);
 }
 
+// "conci, cerda-mahadevan": the laws' keys from their one list, so that a new law needs no edit
+// here.
+std::string_view law_choices() {
+  static const std::string text = [] {
+    std::string out;
+    for (const WrinkleLaw* law : wrinkle_laws()) {
+      out += (out.empty() ? "" : ", ") + std::string(law->key());
+    }
+    return out;
+  }();
+  return text;
+}
+
 // One row per input. `valid` is where a value can still describe a cloth (or a sane numerical
 // setting); `typical` is where the fabrics one meets lie, used by sliders and the stress test.
 const std::vector<InputSpec>& build_table() {
@@ -166,10 +179,10 @@ const std::vector<InputSpec>& build_table() {
       {.key = "law",
        .name = "wrinkle law",
        .preset = "/model/law",
-       .help = "conci | cerda-mahadevan: the law that counts the folds (c and p are its constants)",
+       .help = "the law that counts the folds (c and p are its constants): see model.md",
        .kind = InputKind::choice,
        .expert = true,
-       .choices = "conci, cerda-mahadevan",
+       .choices = law_choices(),
        .set_choice =
            [](Parameters& p, std::string_view v) {
              return set_named(p.model.law, v, parse_wrinkle_law);
