@@ -124,6 +124,11 @@ ModelStanding model_standing(const Parameters& p, const std::optional<Calibratio
     out.label = "calibrated on " + record->calibrated_on + " (" + constants + ", " +
                 std::to_string(record->fit_rows) + " rows, " +
                 std::string(to_string(record->method)) + " method)";
+  } else if (p.model.law != WrinkleLawKind::conci) {
+    const WrinkleLaw& law = wrinkle_law(p.model.law);
+    out.label = std::string(law.title()) +
+                (model_form(p.model) == ModelForm::paper ? ", as published (" : ", tuned (") +
+                constants + ")";
   } else if (is_printed_constant(p)) {
     out.label = "Conci's eq. 7 as printed (" + constants + ")";
   } else if (exponent == 1.0) {

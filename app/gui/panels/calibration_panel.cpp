@@ -35,13 +35,20 @@ using detail::printf_string;
 // fits the space left on the line (the Presets panel is narrow at small window sizes).
 void form_tag(const Parameters& p) {
   const ModelForm form = model_form(p.model);
-  char calibrated[48];
-  std::snprintf(calibrated, sizeof calibrated, "eq. 7: calibrated, p = %.3g",
-                p.model.stress_exponent_p);
-  const char* long_text = form == ModelForm::paper           ? "eq. 7: paper's form"
-                          : form == ModelForm::paper_other_c ? "eq. 7: paper's, own c"
-                                                             : calibrated;
-  const char* short_text = form == ModelForm::paper           ? "paper's"
+  // Conci's law is "eq. 7"; another law goes by its key.
+  const std::string law = p.model.law == WrinkleLawKind::conci
+                              ? std::string("eq. 7")
+                              : std::string(wrinkle_law(p.model.law).key());
+  const std::string calibrated =
+      printf_string("%s: calibrated, p = %.3g", law.c_str(), p.model.stress_exponent_p);
+  const std::string printed =
+      law + (p.model.law == WrinkleLawKind::conci ? ": paper's form" : ": as published");
+  const std::string own_c = law + ": own c";
+  const char* long_text = form == ModelForm::paper           ? printed.c_str()
+                          : form == ModelForm::paper_other_c ? own_c.c_str()
+                                                             : calibrated.c_str();
+  const char* short_text = form == ModelForm::paper
+                               ? (p.model.law == WrinkleLawKind::conci ? "paper's" : "published")
                            : form == ModelForm::paper_other_c ? "own c"
                                                               : "calibrated";
   const float available = ImGui::GetContentRegionAvail().x;

@@ -52,7 +52,7 @@ void ResultsPanel::draw(PanelContext& context) {
   }
   const ModelStanding& model = standing(document);
   ImGui::PushStyleColor(ImGuiCol_Text, kDimText);
-  ImGui::TextWrapped("eq. 7: %s", model.label.c_str());
+  ImGui::TextWrapped("model: %s", model.label.c_str());
   ImGui::PopStyleColor();
   if (model.range) {
     ImGui::PushStyleColor(ImGuiCol_Text, kDimText);
