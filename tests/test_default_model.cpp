@@ -257,6 +257,12 @@ TEST(DefaultModel, OtherConstantsHaveNoRangeAndSaySo) {
   Parameters paper_method = default_preset().parameters;
   paper_method.model.method = Method::paper;
   EXPECT_FALSE(model_standing(paper_method, default_preset().calibration).range);
+  // Nor are another law's, even at the same constants: the stored fits and errors are Conci's.
+  Parameters other_law = default_preset().parameters;
+  other_law.model.law = WrinkleLawKind::cerda_mahadevan;
+  const ModelStanding cm = model_standing(other_law, default_preset().calibration);
+  EXPECT_FALSE(cm.range);
+  EXPECT_TRUE(contains(cm.range_basis, "law")) << cm.range_basis;
 }
 
 TEST(DefaultModel, AMalformedCalibrationBlockNamesItsKey) {

@@ -145,6 +145,7 @@ foldlab::Preset awkward_preset() {
   p.published.Q = 1.0 / 0.77;
   p.calibration = foldlab::CalibrationRecord{"Tables 1–2 \"quoted\"",
                                              foldlab::Method::paper,
+                                             foldlab::WrinkleLawKind::cerda_mahadevan,
                                              {1.0 / 3.0, 0.1 * 7.0},
                                              6,
                                              {{0.1 + 0.2, 0.466}, {5.4458657092013, 2.0 / 3.0}},

@@ -109,7 +109,8 @@ std::optional<PredictionRange> prediction_interval(const Parameters& p,
 }
 
 bool record_applies(const Parameters& p, const CalibrationRecord& record) {
-  return p.model.method == record.method && close(stiffness_constant_K(p), record.fitted.K) &&
+  return p.model.method == record.method && p.model.law == record.law &&
+         close(stiffness_constant_K(p), record.fitted.K) &&
          close(p.model.stress_exponent_p, record.fitted.p);
 }
 
@@ -138,7 +139,8 @@ ModelStanding model_standing(const Parameters& p, const std::optional<Calibratio
   }
   if (!applies) {
     out.range_basis =
-        record ? "none: these constants or this method differ from the preset's calibration"
+        record ? "none: these constants, this method or this law differ from the preset's "
+                 "calibration"
                : "none: the preset carries no calibration";
     return out;
   }
@@ -160,6 +162,7 @@ CalibrationRecord calibration_record(const CalibrationReport& report, std::strin
   CalibrationRecord record;
   record.calibrated_on = std::move(calibrated_on);
   record.method = report.base.model.method;
+  record.law = report.base.model.law;
   record.fitted = {report.fitted.K, report.fitted.p};
   record.fit_rows = report.fit_row_count;
   record.equally_good = report.fitted.equally_good_ends;

@@ -229,8 +229,8 @@ std::optional<CalibrationRecord> read_calibration(Reader& r, const json& c,
                                                   std::vector<std::string>& problems) {
   const std::string at = "/calibration";
   if (!r.object(c, at,
-                {"calibrated_on", "method", "K", "p", "fit_rows", "equally_good", "leave_one_out",
-                 "residuals", "coverage"})) {
+                {"calibrated_on", "method", "law", "K", "p", "fit_rows", "equally_good",
+                 "leave_one_out", "residuals", "coverage"})) {
     return std::nullopt;
   }
   const std::size_t before = problems.size();
@@ -240,6 +240,11 @@ std::optional<CalibrationRecord> read_calibration(Reader& r, const json& c,
   r.text(c, at, "method", method, true);
   if (!method.empty() && !parse_method(method, record.method)) {
     r.problem(at + "/method", "\"" + method + "\" is not one of: paper, exact");
+  }
+  std::string law;
+  r.text(c, at, "law", law, false);
+  if (!law.empty() && !parse_wrinkle_law(law, record.law)) {
+    r.problem(at + "/law", "\"" + detail::cut(law) + "\" is not a wrinkle law");
   }
   r.number(c, at, "K", record.fitted.K, true);
   r.number(c, at, "p", record.fitted.p, true);
@@ -420,6 +425,10 @@ json preset_to_json(const Preset& preset) {
     }
     if (!c->coverage.empty()) {
       j["calibration"]["coverage"] = c->coverage;
+    }
+    // Conci's law is the default, so files from before there were laws read the same.
+    if (c->law != WrinkleLawKind::conci) {
+      j["calibration"]["law"] = to_string(c->law);
     }
   }
   return j;

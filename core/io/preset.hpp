@@ -39,7 +39,8 @@ struct HeldOutResidual {
 struct CalibrationRecord {
   std::string calibrated_on;  // the data, for labels: "Conci's Tables 1–2"
   Method method = Method::exact;
-  Eq7Constants fitted;  // the constants the preset was given
+  WrinkleLawKind law = WrinkleLawKind::conci;  // the constants are this law's
+  Eq7Constants fitted;                         // the constants the preset was given
   int fit_rows = 0;
   // Constants at the ends of the set that scores as well as `fitted` on the same data.
   std::vector<Eq7Constants> equally_good;

@@ -18,8 +18,9 @@ namespace foldlab {
 
 enum class WrinkleLawKind { conci, cerda_mahadevan };
 
-// How consecutive folds are spaced: in a geometric progression (equal steps of ln a_i) or evenly
-// (equal steps of a_i).
+// How a law counts the folds between a_0 and a_n: in equal steps of ln a (a ratio between
+// neighbours) or of a itself (a wavelength). Only the count: the fold lines follow eq. 5 either
+// way.
 enum class FoldSpacing { geometric, even };
 
 // A law's count for one parameter set: n = Int[(f(a_0) - f(a_n)) / step], f = ln (geometric) or

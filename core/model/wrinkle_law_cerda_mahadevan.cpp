@@ -8,8 +8,9 @@
 // l, and the strain is the weight's stress over the modulus, gamma = w h / (E t), the stress eq. 7
 // of Conci balances too. Then lambda = l (K E t³ / (w h l²))^(1/4) with K = 4 pi² / (3 (1 - nu²)),
 // i.e. c = 4 pi² / 3 in FoldLab's K = c / (1 - nu²): the same strength s as Conci's law, so that
-// the calibration's s -> s^p serves both (lambda = l x^(1/4), x = s^p). The folds sit lambda apart
-// down the centre fibre, evenly: n = Int[(a_0 - a_n) / lambda].
+// the calibration's s -> s^p serves both (lambda = l x^(1/4), x = s^p). The count is as many
+// folds as fit lambda apart down the centre fibre, n = Int[(a_0 - a_n) / lambda]; the shared
+// geometry then lays them out in eq. 5's progression, as under every law.
 #include <algorithm>
 #include <cmath>
 #include <numbers>

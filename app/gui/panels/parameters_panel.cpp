@@ -117,9 +117,9 @@ void law_combo(Document& document, float width) {
     ImGui::EndCombo();
   }
   help_marker(
-      "Which law counts the folds: Conci's critical stress (eq. 7, folds in a geometric "
-      "progression) or Cerda and Mahadevan's wrinkle wavelength (evenly spaced folds). Choosing "
-      "one sets its published constants; K and p then tune it.");
+      "Which law counts the folds: Conci's critical stress (eq. 7, a ratio Q7 between "
+      "neighbouring folds) or Cerda and Mahadevan's wrinkle wavelength (as many folds as fit a "
+      "wavelength apart). Choosing one sets its published constants; K and p then tune it.");
 }
 
 }  // namespace
