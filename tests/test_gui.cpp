@@ -249,6 +249,38 @@ TEST_F(GuiTest, RenderRejectsBadInputWithExitTwo) {
   EXPECT_NE(no_display.err.find("t_mm = -1 must be"), std::string::npos) << no_display.err;
 }
 
+// `render --print swatch.png --out swatch.png` drew the window over the swatch it printed with;
+// the same for --view print_file, gui --screenshot and a played script's screenshot step.
+TEST_F(GuiTest, NoPictureIsWrittenOverAnInputOfTheRun) {
+  render("swatch", {"--size", "320x240"});
+  const fs::path swatch = dir_ / "swatch.png";
+  const std::string before = foldlab::testing::read_file(swatch);
+  ASSERT_FALSE(before.empty());
+  const fs::path script = dir_ / "shot.json";
+  std::ofstream(script) << R"({"steps": [{"frames": 1}, {"screenshot": ")" << swatch.string()
+                        << R"("}]})";
+  const std::string same = (dir_ / "." / "swatch.png").string();
+  const std::vector<std::pair<std::vector<std::string>, std::vector<std::string>>> runs = {
+      {{"render", "--print", swatch.string(), "--out", same}, {"--out", "--print"}},
+      {{"render", "--view", "print_file=" + swatch.string(), "--out", same},
+       {"--out", "--view print_file"}},
+      {{"gui", "--print", swatch.string(), "--frames", "1", "--screenshot", same},
+       {"--screenshot", "--print"}},
+      {{"render", "--print", swatch.string(), "--play", script.string()},
+       {"screenshot step", "--print"}},
+  };
+  for (const auto& [args, named] : runs) {
+    SCOPED_TRACE(args[0] + " " + args[1] + " ... " + args.back());
+    const RunResult r = foldlab::testing::run_process(kExecutable, args, dir_, environment());
+    EXPECT_EQ(r.exit_status, 2) << r.err;
+    EXPECT_NE(r.err.find("would destroy the input"), std::string::npos) << r.err;
+    for (const std::string& option : named) {
+      EXPECT_NE(r.err.find(option), std::string::npos) << option << "\n" << r.err;
+    }
+    EXPECT_EQ(foldlab::testing::read_file(swatch), before);
+  }
+}
+
 bool have_xvfb() {
   return std::system("command -v xvfb-run >/dev/null 2>&1") == 0;
 }

@@ -102,7 +102,7 @@ bool sleep_until_input(Surface& surface, double timeout_s) {
 // The frame loop, as plain as Dear ImGui's examples: poll, new frame, build, render, present;
 // with nothing to animate, it sleeps until an event instead of redrawing the same picture.
 void run_frames(Surface& surface, Renderer& renderer, Explorer& explorer, ScriptedRun& script,
-                FrameTimes& times, const std::string& screenshot_path) {
+                FrameTimes& times, const GuiRunOptions& options) {
   int frames_since_wake = 0;
   for (int frame = 0; !explorer.quit_confirmed() && script.wants_frame(frame, explorer); ++frame) {
     if (!surface.open() || close_requested != 0) {
@@ -133,9 +133,16 @@ void run_frames(Surface& surface, Renderer& renderer, Explorer& explorer, Script
     ImGui::Render();
     surface.bind_framebuffer();
     renderer.render_draw_data(surface.framebuffer_size());
-    take_screenshots(explorer, renderer, surface.framebuffer_size(), screenshot_path,
+    take_screenshots(explorer, renderer, surface.framebuffer_size(), options.screenshot_path,
                      script.is_last(frame));
     if (const std::optional<std::string> path = script.take_play_screenshot()) {
+      // The script's paths are known only as it plays, and a photo or swatch may have been
+      // loaded by an earlier step: checked against every file the run has read, before writing.
+      std::vector<app::NamedPath> inputs = options.input_files;
+      for (const app::NamedPath& open : explorer.files_in_use()) {
+        inputs.push_back(open);
+      }
+      app::check_distinct_files({{"the --play script's screenshot step", *path}}, inputs);
       write_png(path->c_str(), surface.framebuffer_size(),
                 renderer.read_pixels(surface.framebuffer_size()));
     }
@@ -210,7 +217,7 @@ int run(Surface& surface, const GuiRunOptions& options, const Preset& preset, bo
   }
   ScriptedRun script(options.frames, std::move(animation), std::move(player));
   FrameTimes times(options.report);
-  run_frames(surface, *renderer, explorer, script, times, options.screenshot_path);
+  run_frames(surface, *renderer, explorer, script, times, options);
   times.print_report(interactive ? "window" : "headless", options.animate_key, explorer);
   return script.exit_status();
 }
