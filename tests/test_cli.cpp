@@ -1,6 +1,9 @@
 // End-to-end tests of the foldlab executable: run it as a user or a script would and check the exit
 // status, stdout and stderr.
+#include <fcntl.h>
 #include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cerrno>
@@ -20,6 +23,7 @@
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
+#include "core/io/measurements.hpp"
 #include "json_output.hpp"
 #include "process.hpp"
 #include "temp_dir.hpp"
@@ -727,6 +731,62 @@ TEST_F(CliTest, MeasureAppendsToAnEmptyFileAsToANewOne) {
   ASSERT_EQ(lines.size(), 2u) << read_file(rows);
   EXPECT_TRUE(starts_with(lines[0], "name,")) << lines[0];
   EXPECT_TRUE(contains(lines[1], ",fit,")) << lines[1];
+}
+
+// Ten `measure --append` processes at once on one file: each reads the file, adds its row and
+// replaces the file, so without a lock all but the last writer's row were lost (all exiting 0).
+TEST_F(CliTest, ParallelAppendsKeepEveryRow) {
+  const fs::path rows = dir_ / "rows.csv";
+  constexpr int kProcesses = 10;
+  // The children wait on a pipe and start together when it closes, so that they overlap.
+  int start[2];
+  ASSERT_EQ(::pipe(start), 0);
+  std::vector<pid_t> children;
+  for (int i = 0; i < kProcesses; ++i) {
+    const std::string name = "parallel " + std::to_string(i);
+    const std::string err = (dir_ / ("err" + std::to_string(i))).string();
+    const pid_t pid = ::fork();
+    ASSERT_GE(pid, 0);
+    if (pid == 0) {
+      ::close(start[1]);
+      char byte = 0;
+      while (::read(start[0], &byte, 1) < 0 && errno == EINTR) {
+      }
+      const int err_fd = ::open(err.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+      const int null_fd = ::open("/dev/null", O_WRONLY);
+      if (err_fd < 0 || null_fd < 0 || ::dup2(null_fd, STDOUT_FILENO) < 0 ||
+          ::dup2(err_fd, STDERR_FILENO) < 0) {
+        ::_exit(126);
+      }
+      ::execl(kExecutable.c_str(), kExecutable.c_str(), "measure", "--depths-mm", "100,50,25",
+              "--name", name.c_str(), "--append", rows.c_str(), static_cast<char*>(nullptr));
+      ::_exit(127);
+    }
+    children.push_back(pid);
+  }
+  ::close(start[0]);
+  ::close(start[1]);
+  for (std::size_t i = 0; i < children.size(); ++i) {
+    int status = 0;
+    ASSERT_EQ(::waitpid(children[i], &status, 0), children[i]);
+    EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0)
+        << "process " << i << ": " << read_file(dir_ / ("err" + std::to_string(i)));
+  }
+  foldlab::MeasurementSet set;
+  ASSERT_NO_THROW(set = foldlab::load_measurements(rows)) << read_file(rows);
+  std::set<std::string> names;
+  for (const foldlab::Measurement& row : set.rows) {
+    names.insert(row.name);
+  }
+  EXPECT_EQ(set.rows.size(), static_cast<std::size_t>(kProcesses)) << read_file(rows);
+  for (int i = 0; i < kProcesses; ++i) {
+    EXPECT_EQ(names.count("parallel " + std::to_string(i)), 1u) << read_file(rows);
+  }
+  // Nothing but the file itself is left beside it (no temporaries, no lock files).
+  for (const fs::directory_entry& e : fs::directory_iterator(dir_)) {
+    const std::string name = e.path().filename().string();
+    EXPECT_TRUE(name == "rows.csv" || name.starts_with("err")) << name;
+  }
 }
 
 TEST_F(CliTest, PlayingAFolderIsInvalidInputNotAnInternalError) {

@@ -36,6 +36,7 @@
 #include "core/model/text_format.hpp"
 #include "fold_photo.hpp"
 #include "headless_imgui.hpp"
+#include "process.hpp"
 #include "temp_dir.hpp"
 
 namespace foldlab::gui {
@@ -826,6 +827,37 @@ TEST_F(ExplorerTest, UiScaleIsClampedAndRememberedWithTheTheme) {
   EXPECT_TRUE(explorer_->appearance().light_theme());
   EXPECT_TRUE(style_is_light());
   EXPECT_FLOAT_EQ(ImGui::GetIO().Fonts->Fonts[0]->FontSize, 20.0f);  // round(13 * 1.5)
+}
+
+// A session file the explorer could not read as its own (here a link to someone's notes) was
+// reported unreadable and then saved over, through the link, on the next change and at exit.
+TEST_F(ExplorerTest, ASessionFileThatCannotBeReadIsNeverSavedOver) {
+  const fs::path notes = dir_ / "notes.txt";
+  const fs::path session = dir_ / "session.json";
+  std::ofstream(notes) << "my notes\n";
+  fs::create_symlink(notes, session);
+  for (const bool restore : {true, false}) {
+    SCOPED_TRACE(restore ? "restored" : "a preset asked for");
+    open_explorer("equations", {}, session, restore);
+    std::size_t said = 0;
+    for (const std::string& notice : explorer_->notices()) {
+      said += notice.find("session will not be saved") != std::string::npos;
+    }
+    EXPECT_EQ(said, 1u);
+    ASSERT_EQ(explorer_->set_input("h", 1500.0), std::nullopt);
+    frame();
+    explorer_->save_session_now();
+    explorer_.reset();
+    EXPECT_EQ(foldlab::testing::read_file(notes), "my notes\n");
+    EXPECT_TRUE(fs::is_symlink(session));
+  }
+  // A session that reads back is still saved and restored.
+  fs::remove(session);
+  open_explorer("equations", {}, session);
+  ASSERT_EQ(explorer_->set_input("h", 1500.0), std::nullopt);
+  explorer_.reset();
+  open_explorer("equations", {}, session, true);
+  EXPECT_EQ(document().scene().parameters().hanging.height_mm, 1500.0);
 }
 
 TEST_F(ExplorerTest, ThePapersOverlayBelongsToItsCaseOnly) {

@@ -2,6 +2,9 @@
 
 #include <memory>
 #include <regex>
+#include <string>
+#include <string_view>
+#include <vector>
 
 #include "app/gui/gui_app.hpp"
 #include "core/analysis/sweep.hpp"
@@ -82,6 +85,21 @@ void check_play_options(const GuiRunOptions& options) {
   }
 }
 
+// The files a run reads besides its settings: the preset, the script and every swatch given as
+// --print or --view print_file (a picture written over one would destroy it).
+std::vector<app::NamedPath> run_inputs(const GuiCommandOptions& options) {
+  std::vector<app::NamedPath> inputs = {{"--preset", options.run.inputs.preset_path},
+                                        {"--play", options.run.play_path},
+                                        {"--print", options.print_path}};
+  constexpr std::string_view kPrintFile = "print_file=";
+  for (const std::string& setting : options.run.view_settings) {
+    if (setting.starts_with(kPrintFile) && setting != "print_file=" + options.print_path) {
+      inputs.push_back({"--view print_file", setting.substr(kPrintFile.size())});
+    }
+  }
+  return inputs;
+}
+
 }  // namespace
 
 app::Command add_gui_command(CLI::App& app) {
@@ -108,9 +126,8 @@ app::Command add_gui_command(CLI::App& app) {
       parse_size(options->size, options->run);
       apply_print_option(*options);
       check_play_options(options->run);
-      check_distinct_files(
-          {{"--screenshot", options->run.screenshot_path}},
-          {{"--preset", options->run.inputs.preset_path}, {"--play", options->run.play_path}});
+      check_distinct_files({{"--screenshot", options->run.screenshot_path}}, run_inputs(*options));
+      options->run.input_files = run_inputs(*options);
       if (!options->run.screenshot_path.empty() && options->run.frames == 0) {
         throw InputError("--screenshot needs --frames N");
       }
@@ -136,9 +153,8 @@ app::Command add_render_command(CLI::App& app) {
       parse_size(options->size, options->run);
       apply_print_option(*options);
       check_play_options(options->run);
-      check_distinct_files(
-          {{"--out", options->run.screenshot_path}},
-          {{"--preset", options->run.inputs.preset_path}, {"--play", options->run.play_path}});
+      check_distinct_files({{"--out", options->run.screenshot_path}}, run_inputs(*options));
+      options->run.input_files = run_inputs(*options);
       if (options->run.screenshot_path.empty() && options->run.play_path.empty()) {
         throw InputError("render needs --out FILE.png (or --play SCRIPT.json)");
       }

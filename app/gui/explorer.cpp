@@ -41,9 +41,17 @@ Explorer::Explorer(const Preset& initial, const std::string& initial_path, bool 
       ImGui::PopStyleColor();
     }
   });
-  if (restore_session && !options_.session_file.empty()) {
+  if (!options_.session_file.empty()) {
+    // Read even when not restored: saving over what is there is allowed only when it reads as a
+    // session (or nothing is there).
     std::string error;
-    if (std::optional<Session> s = load_session(options_.session_file, error)) {
+    bool may_save = true;
+    std::optional<Session> s = load_session(options_.session_file, error, may_save);
+    if (!restore_session) {
+      s.reset();
+      error.clear();
+    }
+    if (s) {
       document_.adopt(s->loaded, s->loaded_preset_path);
       document_.apply(Edit::replace(s->current.parameters));
       document_.scene().set_grid_resolution(s->grid_resolution, s->grid_resolution);
@@ -57,6 +65,12 @@ Explorer::Explorer(const Preset& initial, const std::string& initial_path, bool 
       }
     } else if (!error.empty()) {
       document_.add_notice(error);  // present but unusable: say why the defaults are shown
+    }
+    if (!may_save) {
+      document_.add_notice("The session will not be saved over " + options_.session_file.string() +
+                           ", which is not a session file the explorer can read; move it away to "
+                           "have the session kept.");
+      options_.session_file.clear();  // nothing is saved, and closing asks about unsaved edits
     }
   }
   for (const std::string& notice : presets_->notices()) {

@@ -13,6 +13,7 @@
 #include <utility>
 #include <vector>
 
+#include "app/common/inputs.hpp"
 #include "app/gui/appearance.hpp"
 #include "app/gui/document.hpp"
 #include "app/gui/panel.hpp"
@@ -116,6 +117,12 @@ class Explorer {
   // window needs no timeout.
   bool awaits_time() const;
   const ClothStyle& cloth_style() const { return cloth_view_->style(); }
+  // The files the explorer has open now (the 3D view's swatch, the fold plot's photo), each named
+  // as the user knows it; no picture may be written over them.
+  std::vector<app::NamedPath> files_in_use() const {
+    return {{"the 3D view's print file", cloth_view_->print_file()},
+            {"the fold plot's photo", photo_->photo_file()}};
+  }
   // The last finished regime map's wall time in ms (0 before one finishes).
   double regime_map_ms() const { return analysis_->regime_map().last_map_ms(); }
 

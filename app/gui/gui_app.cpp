@@ -7,6 +7,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <string_view>
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
@@ -18,19 +19,20 @@
 #include "app/gui/scripted_run.hpp"
 #include "app/gui/session.hpp"
 #include "app/gui/surface.hpp"
+#include "core/io/io.hpp"
 
 namespace foldlab::gui {
 namespace {
 
-// ImGui's context with the platform side of `surface`, for the lifetime of a run.
+// ImGui's context with the platform side of `surface`, for the lifetime of a run. ImGui never
+// touches imgui.ini itself (LayoutFile does): its fopen waits for ever on a FIFO and writes
+// through a link to any file.
 class ImGuiContextGuard {
  public:
-  ImGuiContextGuard(Surface& surface, const std::string& ini_path)
-      : surface_(surface), ini_path_(ini_path) {
+  explicit ImGuiContextGuard(Surface& surface) : surface_(surface) {
     IMGUI_CHECKVERSION();
     ImGui::CreateContext();
-    ImGuiIO& io = ImGui::GetIO();
-    io.IniFilename = ini_path_.empty() ? nullptr : ini_path_.c_str();
+    ImGui::GetIO().IniFilename = nullptr;
     surface_.init_imgui_platform();
   }
   ~ImGuiContextGuard() {
@@ -42,7 +44,79 @@ class ImGuiContextGuard {
 
  private:
   Surface& surface_;
-  std::string ini_path_;
+};
+
+// Whether `text` can be ImGui's settings: every line blank, a [Section][Name] header or a
+// KEY=VALUE line. Someone's notes behind a link named imgui.ini are not, and are left alone.
+bool looks_like_imgui_ini(std::string_view text) {
+  std::size_t start = 0;
+  while (start < text.size()) {
+    std::size_t end = text.find('\n', start);
+    end = end == std::string_view::npos ? text.size() : end;
+    std::string_view line = text.substr(start, end - start);
+    while (!line.empty() && (line.back() == '\r' || line.back() == ' ' || line.back() == '\t')) {
+      line.remove_suffix(1);
+    }
+    if (!line.empty() && line.front() != '[' && line.find('=') == std::string_view::npos) {
+      return false;
+    }
+    start = end + 1;
+  }
+  return true;
+}
+
+// The window layout, imgui.ini, under the session's rules: read only a regular file of the
+// user's that reads as a layout, never saved over anything else, and replaced atomically when
+// ImGui asks for a save and at exit.
+class LayoutFile {
+ public:
+  LayoutFile(std::filesystem::path path, Explorer& explorer) : path_(std::move(path)) {
+    ConfigFile file = read_config_file(path_, kMaxImguiIniBytes);
+    if (file.text && !looks_like_imgui_ini(*file.text)) {
+      file = ConfigFile{std::nullopt, path_.string() + " is not a window layout; not read", false};
+    }
+    if (!file.problem.empty()) {
+      explorer.add_notice("The window layout " + file.problem + "; using the default layout.");
+    }
+    if (!file.may_save) {
+      explorer.add_notice("The window layout will not be saved over " + path_.string() +
+                          "; move it away to have the layout kept.");
+    }
+    may_save_ = file.may_save;
+    if (file.text) {
+      ImGui::LoadIniSettingsFromMemory(file.text->data(), file.text->size());
+    }
+  }
+  // Before the ImGui context goes: the layout as the window is left.
+  ~LayoutFile() { save(); }
+  LayoutFile(const LayoutFile&) = delete;
+  LayoutFile& operator=(const LayoutFile&) = delete;
+
+  // After a frame: ImGui asks for a save a few seconds after a window moved or was resized.
+  void save_when_asked() {
+    ImGuiIO& io = ImGui::GetIO();
+    if (io.WantSaveIniSettings) {
+      io.WantSaveIniSettings = false;
+      save();
+    }
+  }
+
+ private:
+  void save() noexcept {
+    if (!may_save_) {
+      return;
+    }
+    try {
+      std::size_t size = 0;
+      const char* text = ImGui::SaveIniSettingsToMemory(&size);
+      write_file_atomically(path_, std::string_view(text, size));
+    } catch (const std::exception&) {
+      // The layout is a convenience: a read-only config folder must not stop the explorer.
+    }
+  }
+
+  std::filesystem::path path_;
+  bool may_save_ = true;
 };
 
 // --view KEY=VALUE settings, in order; every one refused is named, one a line.
@@ -102,7 +176,7 @@ bool sleep_until_input(Surface& surface, double timeout_s) {
 // The frame loop, as plain as Dear ImGui's examples: poll, new frame, build, render, present;
 // with nothing to animate, it sleeps until an event instead of redrawing the same picture.
 void run_frames(Surface& surface, Renderer& renderer, Explorer& explorer, ScriptedRun& script,
-                FrameTimes& times, const std::string& screenshot_path) {
+                FrameTimes& times, const GuiRunOptions& options, LayoutFile* layout) {
   int frames_since_wake = 0;
   for (int frame = 0; !explorer.quit_confirmed() && script.wants_frame(frame, explorer); ++frame) {
     if (!surface.open() || close_requested != 0) {
@@ -131,11 +205,21 @@ void run_frames(Surface& surface, Renderer& renderer, Explorer& explorer, Script
     ImGui::NewFrame();
     explorer.frame();
     ImGui::Render();
+    if (layout != nullptr) {
+      layout->save_when_asked();
+    }
     surface.bind_framebuffer();
     renderer.render_draw_data(surface.framebuffer_size());
-    take_screenshots(explorer, renderer, surface.framebuffer_size(), screenshot_path,
+    take_screenshots(explorer, renderer, surface.framebuffer_size(), options.screenshot_path,
                      script.is_last(frame));
     if (const std::optional<std::string> path = script.take_play_screenshot()) {
+      // The script's paths are known only as it plays, and a photo or swatch may have been
+      // loaded by an earlier step: checked against every file the run has read, before writing.
+      std::vector<app::NamedPath> inputs = options.input_files;
+      for (const app::NamedPath& open : explorer.files_in_use()) {
+        inputs.push_back(open);
+      }
+      app::check_distinct_files({{"the --play script's screenshot step", *path}}, inputs);
       write_png(path->c_str(), surface.framebuffer_size(),
                 renderer.read_pixels(surface.framebuffer_size()));
     }
@@ -178,8 +262,7 @@ int run(Surface& surface, const GuiRunOptions& options, const Preset& preset, bo
   ExplorerOptions explorer_options{
       app::find_presets_dir(), user_presets_dir(), persist ? config_dir() / "session.json" : "",
       options.analysis_tab,    kDejaVuSans,        measurements};
-  const std::filesystem::path ini_path = config_dir() / "imgui.ini";
-  ImGuiContextGuard imgui(surface, persist ? ini_path.string() : "");
+  ImGuiContextGuard imgui(surface);
   const std::unique_ptr<Renderer> renderer = make_gl_renderer();
   // A preset named on the command line wins over the restored session.
   const bool restore =
@@ -194,13 +277,9 @@ int run(Surface& surface, const GuiRunOptions& options, const Preset& preset, bo
   if (!config_problem.empty()) {
     explorer.add_notice(config_problem);
   }
+  std::optional<LayoutFile> layout;
   if (persist) {
-    if (const std::optional<std::string> too_large = oversized_file(ini_path, kMaxImguiIniBytes)) {
-      // Loading settings from memory marks them loaded, so the first frame reads no file; the
-      // default layout is saved over the oversized one on exit.
-      ImGui::LoadIniSettingsFromMemory("", 0);
-      explorer.add_notice("The window layout " + *too_large + "; using the default layout.");
-    }
+    layout.emplace(config_dir() / "imgui.ini", explorer);
   }
   apply_view_settings(explorer, options.view_settings);
 
@@ -210,7 +289,7 @@ int run(Surface& surface, const GuiRunOptions& options, const Preset& preset, bo
   }
   ScriptedRun script(options.frames, std::move(animation), std::move(player));
   FrameTimes times(options.report);
-  run_frames(surface, *renderer, explorer, script, times, options.screenshot_path);
+  run_frames(surface, *renderer, explorer, script, times, options, layout ? &*layout : nullptr);
   times.print_report(interactive ? "window" : "headless", options.animate_key, explorer);
   return script.exit_status();
 }

@@ -21,6 +21,8 @@ struct GuiRunOptions {
   std::string play_path;        // input playback script (see InputPlayer)
   std::string analysis_tab;     // equations, sweep or map: the tab shown at start
   std::vector<std::string> view_settings;  // KEY=VALUE, see Explorer::set_view
+  // The files the run reads (preset, script, swatches), which no picture may be written over.
+  std::vector<app::NamedPath> input_files;
 };
 
 // The window. Returns an exit status (kExitOk, or kExitInternal when no window can be opened).

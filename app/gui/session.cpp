@@ -1,7 +1,12 @@
 #include "app/gui/session.hpp"
 
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include <algorithm>
+#include <cerrno>
 #include <cstdlib>
+#include <cstring>
 #include <stdexcept>
 
 #include <nlohmann/json.hpp>
@@ -36,6 +41,63 @@ std::optional<std::string> oversized_file(const std::filesystem::path& path, std
                                path.string().c_str(), bytes, limit);
 }
 
+namespace {
+
+std::string kind_of(mode_t mode) {
+  if (S_ISDIR(mode)) {
+    return "a folder";
+  }
+  if (S_ISFIFO(mode)) {
+    return "a FIFO";
+  }
+  if (S_ISCHR(mode) || S_ISBLK(mode)) {
+    return "a device";
+  }
+  if (S_ISSOCK(mode)) {
+    return "a socket";
+  }
+  return "not a regular file";
+}
+
+}  // namespace
+
+ConfigFile read_config_file(const std::filesystem::path& path, std::uintmax_t limit) {
+  ConfigFile file;
+  const std::string name = path.string();
+  auto refuse = [&](std::string problem) {
+    file.problem = std::move(problem);
+    file.may_save = false;
+    return file;
+  };
+  struct stat info {};
+  if (::lstat(path.c_str(), &info) != 0) {
+    if (errno == ENOENT) {
+      return file;  // a first start: nothing to read, a new file to write
+    }
+    return refuse(name + " cannot be opened (" + std::strerror(errno) + ")");
+  }
+  // A link is read (and later saved) through when it leads to a file the explorer can read as
+  // its own; a dangling one or a loop would be created or replaced somewhere unasked.
+  if (S_ISLNK(info.st_mode) && ::stat(path.c_str(), &info) != 0) {
+    return refuse(name + " cannot be opened (a symbolic link: " + std::strerror(errno) + ")");
+  }
+  if (!S_ISREG(info.st_mode)) {
+    return refuse(name + " is " + kind_of(info.st_mode) + ", not a regular file; not read");
+  }
+  if (info.st_uid != ::geteuid()) {
+    return refuse(name + " belongs to another user; not read");
+  }
+  if (std::optional<std::string> too_large = oversized_file(path, limit)) {
+    return refuse(*too_large);
+  }
+  try {
+    file.text = read_text_file(path);
+  } catch (const ReadError& e) {
+    return refuse(name + " cannot be opened (" + e.what() + ")");
+  }
+  return file;
+}
+
 SessionSettings SessionSettings::from_json(const nlohmann::json& view) {
   SessionSettings out;
   if (!view.is_object()) {
@@ -51,26 +113,30 @@ SessionSettings SessionSettings::from_json(const nlohmann::json& view) {
   return out;
 }
 
-std::optional<Session> load_session(const std::filesystem::path& path, std::string& error) {
+std::optional<Session> load_session(const std::filesystem::path& path, std::string& error,
+                                    bool& may_save) {
   error.clear();
-  std::error_code absent;
-  if (std::filesystem::symlink_status(path, absent).type() ==
-      std::filesystem::file_type::not_found) {
+  ConfigFile file = read_config_file(path, kMaxSessionBytes);
+  may_save = file.may_save;
+  if (!file.problem.empty()) {
+    error = "the saved session " + file.problem + "; starting from the default preset";
+    return std::nullopt;
+  }
+  if (!file.text) {
     return std::nullopt;  // a first start: nothing to say
   }
-  if (const std::optional<std::string> too_large = oversized_file(path, kMaxSessionBytes)) {
-    error = "the saved session " + *too_large + "; starting from the default preset";
-    return std::nullopt;
+  std::optional<Session> session = session_from_text(*file.text, path.string(), error);
+  if (!session) {
+    // A session of ours with a value out of range is replaced by the next save; anything else
+    // (another program's JSON, text, a file this format cannot parse) is left alone.
+    try {
+      const nlohmann::json j = parse_json(*file.text, path.string());
+      may_save = j.is_object() && j.contains("foldlab_session");
+    } catch (const std::exception&) {
+      may_save = false;
+    }
   }
-  std::string text;
-  try {
-    text = read_text_file(path);
-  } catch (const ReadError& e) {
-    error = "the saved session " + path.string() + " cannot be opened (" + e.what() +
-            "); starting from the default preset";
-    return std::nullopt;
-  }
-  return session_from_text(text, path.string(), error);
+  return session;
 }
 
 std::optional<Session> session_from_text(const std::string& text, const std::string& origin,

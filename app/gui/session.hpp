@@ -77,13 +77,29 @@ struct Session {
 // it is too large and is not read.
 std::optional<std::string> oversized_file(const std::filesystem::path& path, std::uintmax_t limit);
 
+// One of the explorer's own files in the config folder (session.json, imgui.ini) as found at
+// start: its text when it could be read, and whether the explorer may write over it later.
+struct ConfigFile {
+  std::optional<std::string> text;  // nullopt: absent, or not read (see problem)
+  std::string problem;              // why it was not read, naming the file; empty otherwise
+  // False when something is there that the explorer could not read as its own (not a regular
+  // file, another user's, a broken link, too large, unreadable): saving would destroy it.
+  bool may_save = true;
+};
+
+// Reads `path` only if it is (or links to) a regular file of this user's of at most `limit`
+// bytes. A FIFO or device is never opened, so a start cannot wait on one.
+ConfigFile read_config_file(const std::filesystem::path& path, std::uintmax_t limit);
+
 // $XDG_CONFIG_HOME/foldlab, else $HOME/.config/foldlab (created on demand by the savers).
 std::filesystem::path config_dir();
 std::filesystem::path user_presets_dir();
 
 // Reads a session file; nullopt when it is absent (`error` empty) or unusable (`error` says why;
-// the caller starts from the default preset and shows it).
-std::optional<Session> load_session(const std::filesystem::path& path, std::string& error);
+// the caller starts from the default preset and shows it). `may_save` turns false when what is
+// there could not be read as a session: the caller must not save over it.
+std::optional<Session> load_session(const std::filesystem::path& path, std::string& error,
+                                    bool& may_save);
 // The same from the file's text; `origin` names it in `error`.
 std::optional<Session> session_from_text(const std::string& text, const std::string& origin,
                                          std::string& error);

@@ -1,10 +1,18 @@
 #include "core/io/measurements.hpp"
+
+#include <fcntl.h>
+#include <sys/file.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include "core/io/io.hpp"
 #include "core/io/json_input.hpp"
 
 #include <algorithm>
+#include <cerrno>
 #include <charconv>
 #include <cmath>
+#include <cstring>
 #include <fstream>
 #include <map>
 #include <optional>
@@ -536,8 +544,86 @@ MeasurementSet load_measurements(const std::filesystem::path& path) {
   return measurements_from_text(text, path.string(), path.extension().string());
 }
 
+namespace {
+
+// An exclusive flock on the measurements file itself, held from reading it to replacing it, so
+// that appends from several processes (the CLI, the explorer) never drop each other's rows. The
+// replacement is a new file renamed into place, so a lock taken on the old one protects nothing
+// once it is gone: the lock is only held once the locked file is still the one at `path`.
+class AppendLock {
+ public:
+  explicit AppendLock(const std::filesystem::path& path) {
+    for (;;) {
+      bool created = false;
+      bool creating = false;
+      // Read-only is enough for flock, and keeps a read-only file appendable as before (it is
+      // replaced, not written in place); O_NONBLOCK: a FIFO must not block the open.
+      fd_ = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK);
+      if (fd_ < 0 && errno == ENOENT) {
+        creating = true;
+        // Not O_EXCL: a dangling symbolic link gets its target created, as the write would.
+        fd_ = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK | O_CREAT, 0644);
+        created = fd_ >= 0;
+      }
+      if (fd_ < 0) {
+        const int error = errno;
+        struct stat there {};
+        if (!creating && ::lstat(path.c_str(), &there) == 0) {
+          throw MeasurementError(path.string() + ": cannot open for reading (" +
+                                 std::strerror(error) + ")");
+        }
+        throw WriteError(path.string() + ": cannot write (" + std::strerror(error) + ")");
+      }
+      struct stat locked {};
+      if (::fstat(fd_, &locked) != 0 || !S_ISREG(locked.st_mode)) {
+        return;  // not a regular file: the reader and the writer name the problem
+      }
+      while (::flock(fd_, LOCK_EX) != 0) {
+        if (errno != EINTR) {
+          const int error = errno;
+          ::close(fd_);
+          throw WriteError(path.string() + ": cannot lock (" + std::strerror(error) + ")");
+        }
+      }
+      struct stat current {};
+      if (::stat(path.c_str(), &current) == 0 && current.st_dev == locked.st_dev &&
+          current.st_ino == locked.st_ino) {
+        path_ = path;
+        created_ = created;
+        return;
+      }
+      ::close(fd_);  // replaced while waiting: lock the new file
+      fd_ = -1;
+    }
+  }
+  ~AppendLock() {
+    if (created_ && !written_) {
+      // Created only to lock it: a refused append leaves no empty file behind.
+      std::error_code ignored;
+      if (std::filesystem::file_size(path_, ignored) == 0 && !ignored) {
+        std::filesystem::remove(path_, ignored);
+      }
+    }
+    if (fd_ >= 0) {
+      ::close(fd_);  // releases the lock
+    }
+  }
+  AppendLock(const AppendLock&) = delete;
+  AppendLock& operator=(const AppendLock&) = delete;
+  void written() { written_ = true; }
+
+ private:
+  int fd_ = -1;
+  std::filesystem::path path_;
+  bool created_ = false;
+  bool written_ = false;
+};
+
+}  // namespace
+
 void append_measurement(const std::filesystem::path& path, const Measurement& row) {
   const std::string origin = path.string();
+  AppendLock lock(path);
   std::string text;
   std::error_code error;
   bool exists = std::filesystem::exists(path, error);
@@ -596,6 +682,7 @@ void append_measurement(const std::filesystem::path& path, const Measurement& ro
     out += detail::join(cells, ",") + "\n";
   }
   write_file_atomically(path, out);  // WriteError: an I/O failure, not bad input
+  lock.written();
 }
 
 std::string measurements_to_csv(const MeasurementSet& set) {

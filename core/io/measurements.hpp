@@ -73,7 +73,9 @@ nlohmann::json measurements_to_json(const MeasurementSet& set);
 
 // Adds one row to a measurements file, creating a CSV file with its header when there is none. An
 // existing file must read as it is (so the result is a file `calibrate` reads) and keeps its
-// format, comments and column order; a row value with no column there is refused. Throws
+// format, comments and column order; a row value with no column there is refused. Appends from
+// several processes at once each keep their row: the file is locked (flock) from reading to
+// replacing it, and replaced atomically. Throws
 // MeasurementError (the file's problems, or a write error).
 void append_measurement(const std::filesystem::path& path, const Measurement& row);
 

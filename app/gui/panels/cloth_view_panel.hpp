@@ -32,6 +32,8 @@ class ClothViewPanel : public Panel {
   // breeze=1, breeze_mm=80, time=1.5, z=8, wireframe=1, fold_lines=0, ground=0, full=1 for a
   // view that fills the window): for scripted pictures. Returns the problem, if any.
   std::optional<std::string> set_view(std::string_view key, std::string_view value);
+  // The swatch file last asked for as the print (empty: none).
+  const std::string& print_file() const { return photo_path_; }
   // True while the breeze plays: every frame shows a new instant.
   bool animating() const { return style_.breeze && breeze_playing_; }
 

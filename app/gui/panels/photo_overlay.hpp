@@ -68,6 +68,8 @@ class PhotoOverlay : public Panel {
   // From "Fit" until its result is collected.
   bool fitting() const { return fit_.pending(); }
 
+  // The photo file loaded (empty: none).
+  const std::string& photo_file() const { return photo_path_; }
   // Where photo pixel (x, y) is on screen in the last drawn plot (for tests and scripts).
   ImVec2 screen_of_pixel(double x_px, double y_px) const;
   // The photo, its supports and folds, the measurement and the files: for `gui --report`.
