@@ -167,6 +167,18 @@ TEST_F(CliTest, BadSettingsAreInvalidInput) {
   EXPECT_TRUE(contains(huge_K.err, "(K = c / (1 - nu²) = 1e+09)")) << huge_K.err;
 }
 
+TEST_F(CliTest, ControlCharactersInKeysAndValuesAreEscapedInMessages) {
+  const RunResult r =
+      run({"solve", "--set", "\x1b[2Jkey=1", "--set", "method=\x1b[31mred", "--set", "t=\x07\xff"});
+  EXPECT_EQ(r.exit_status, 2);
+  EXPECT_EQ(r.err.find('\x1b'), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find('\x07'), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find('\xff'), std::string::npos) << r.err;
+  EXPECT_TRUE(contains(r.err, "unknown key '\\x1b[2Jkey'")) << r.err;
+  EXPECT_TRUE(contains(r.err, "'\\x1b[31mred'")) << r.err;
+  EXPECT_TRUE(contains(r.err, "'\\x07\\xff'")) << r.err;
+}
+
 TEST_F(CliTest, UnknownMethodIsInvalidInput) {
   const RunResult r = run({"solve", "--preset", kH900, "--method", "fast"});
   EXPECT_EQ(r.exit_status, 2);

@@ -32,7 +32,7 @@ std::vector<double> number_list(const std::string& option, const std::string& te
     const std::string item = text.substr(start, comma - start);
     const std::optional<double> value = parse_number(item);
     if (!value) {
-      throw InputError(option + " " + text + ": \"" + item +
+      throw InputError(option + " " + detail::cut(text) + ": \"" + detail::cut(item) +
                        "\" is not a number (give numbers separated by commas)");
     }
     out.push_back(*value);
@@ -42,12 +42,12 @@ std::vector<double> number_list(const std::string& option, const std::string& te
     start = comma + 1;
   }
   if (exactly != 0 && out.size() != exactly) {
-    throw InputError(option + " " + text + ": expected " + std::to_string(exactly) +
+    throw InputError(option + " " + detail::cut(text) + ": expected " + std::to_string(exactly) +
                      " numbers, got " + std::to_string(out.size()));
   }
   if (out.size() < at_least) {
-    throw InputError(option + " " + text + ": expected at least " + std::to_string(at_least) +
-                     " numbers, got " + std::to_string(out.size()));
+    throw InputError(option + " " + detail::cut(text) + ": expected at least " +
+                     std::to_string(at_least) + " numbers, got " + std::to_string(out.size()));
   }
   return out;
 }
