@@ -238,6 +238,24 @@ TEST_F(CliTest, InvalidPresetFileIsInvalidInputNamingTheKey) {
   EXPECT_TRUE(contains(r.err, "/fabric/thickness_mm")) << r.err;
 }
 
+TEST_F(CliTest, AStoredCalibrationOfTwentyThousandEntriesIsRefusedNotSolved) {
+  // A solve evaluates each stored entry, about 40 ms each: some 13 minutes for these.
+  json preset = json::parse(read_file(kH900));
+  json list = json::array();
+  for (int i = 0; i < 20'000; ++i) {
+    list.push_back({30.0, 0.5});
+  }
+  preset["calibration"] = {{"calibrated_on", "x"}, {"method", "exact"},   {"K", 30.0}, {"p", 0.5},
+                           {"fit_rows", 1},        {"equally_good", list}};
+  const fs::path path = dir_ / "long.json";
+  std::ofstream(path) << preset.dump();
+  const RunResult r = run({"solve", "--preset", path.string()});
+  EXPECT_EQ(r.exit_status, 2);
+  EXPECT_TRUE(contains(r.err, path.string() + ": /calibration/equally_good/64: 20000 entries"))
+      << r.err.substr(0, 400);
+  EXPECT_TRUE(r.out.empty());
+}
+
 TEST_F(CliTest, SolvePrintsATableOfTheDefaultPreset) {
   const RunResult r = run({"solve"});
   EXPECT_EQ(r.exit_status, 0) << r.err;
