@@ -482,7 +482,7 @@ TEST_F(CliTest, ExportRefusesAGridAboveTheVertexBudget) {
 }
 
 TEST_F(CliTest, ExportRefusesFoldLinesAboveThePointBudget) {
-  // n is capped at 10^7 folds, of which about 1000 lines are drawn: 100000 samples a line make
+  // n is capped at 10^4 folds, of which about 1000 lines are drawn: 100000 samples a line make
   // about 10^8 points (10.8 GB and 195 s before), far above the limit of 4000000.
   const fs::path csv = dir_ / "lines.csv";
   const RunResult r = run({"export", "--set", "t=1e-3", "--set", "E=1e-3", "--set", "w=1e-2",
@@ -490,6 +490,42 @@ TEST_F(CliTest, ExportRefusesFoldLinesAboveThePointBudget) {
   EXPECT_EQ(r.exit_status, 2);
   EXPECT_TRUE(contains(r.err, "limit of 4000000")) << r.err;
   EXPECT_FALSE(fs::exists(csv));
+}
+
+TEST_F(CliTest, ACappedFoldCountIsSmallEnoughToUseAndFlaggedWhereverItIsShown) {
+  // Valid inputs whose eq. 10 asks for millions of folds: with the cap at 10^7 `solve --json` wrote
+  // 233 MB of a_i.
+  const std::vector<std::string> many = {"--set", "t=1e-3", "--set", "E=1e-3", "--set", "w=1e-2"};
+  const RunResult r =
+      run({"solve", "--set", "t=1e-3", "--set", "E=1e-3", "--set", "w=1e-2", "--json"});
+  ASSERT_EQ(r.exit_status, 0) << r.err;
+  EXPECT_LT(r.out.size(), 1'000'000u);
+  const json j = json::parse(r.out);
+  EXPECT_EQ(j.at("n"), 10000);
+  EXPECT_EQ(j.at("n_capped"), true);
+  EXPECT_EQ(j.at("a_mm").size(), 10001u);
+
+  std::vector<std::string> args = many;
+  args.insert(args.begin(), "solve");
+  const RunResult table = run(args);
+  ASSERT_EQ(table.exit_status, 0) << table.err;
+  EXPECT_TRUE(contains(table.out, "(capped: eq. 10 asks for more)")) << table.out;
+
+  args = many;
+  args.insert(args.begin(),
+              {"sweep", "--param", "h", "--from", "900", "--to", "1000", "--steps", "2"});
+  const RunResult sweep = run(args);
+  ASSERT_EQ(sweep.exit_status, 0) << sweep.err;
+  EXPECT_TRUE(contains(sweep.out, "10000+")) << sweep.out;
+  EXPECT_TRUE(contains(sweep.out, "wrinkled, n capped")) << sweep.out;
+  EXPECT_TRUE(contains(sweep.err, "n is capped there")) << sweep.err;
+  args.push_back("--csv");
+  const RunResult csv = run(args);
+  ASSERT_EQ(csv.exit_status, 0) << csv.err;
+  const std::vector<std::string> lines = split_lines(csv.out);
+  ASSERT_EQ(lines.size(), 3u) << csv.out;
+  EXPECT_EQ(lines[0], "h,n,Q,z_max_mm,regime,n_capped");
+  EXPECT_TRUE(lines[1].ends_with(",wrinkled,1")) << lines[1];
 }
 
 TEST_F(CliTest, SweepRefusesEndsThatCannotDescribeACloth) {
@@ -537,7 +573,7 @@ TEST_F(CliTest, SweepPrintsOneRowPerStepAsCsv) {
   ASSERT_EQ(r.exit_status, 0) << r.err;
   const std::vector<std::string> lines = split_lines(r.out);
   ASSERT_EQ(lines.size(), 5u);
-  EXPECT_EQ(lines[0], "h,n,Q,z_max_mm,regime");
+  EXPECT_EQ(lines[0], "h,n,Q,z_max_mm,regime,n_capped");
   EXPECT_TRUE(starts_with(lines[1], "900,"));
   EXPECT_TRUE(starts_with(lines[4], "2350,"));
   // The first row is the Table 1, h = 900 mm case: the same n as `solve`.
@@ -663,7 +699,7 @@ TEST_F(CliTest, SweepPastTheValidRangeSaysWhyOnceAndAllRefusedIsInvalidInput) {
   const RunResult partly =
       run({"sweep", "--param", "d", "--from", "600", "--to", "700", "--steps", "3", "--csv"});
   EXPECT_EQ(partly.exit_status, 0) << partly.err;
-  EXPECT_TRUE(contains(partly.out, "\n700,,,,invalid\n")) << partly.out;
+  EXPECT_TRUE(contains(partly.out, "\n700,,,,invalid,\n")) << partly.out;
   EXPECT_TRUE(contains(partly.err, "1 of 3 values are refused")) << partly.err;
   EXPECT_TRUE(contains(partly.err, "d = 700")) << partly.err;
   const RunResult all =
