@@ -653,6 +653,18 @@ TEST_F(CalibrationCli, KAloneOnTheShippedFileMatchesReadme) {
   EXPECT_EQ(twin.at("fitted").at("K"), j.at("fitted").at("K"));
 }
 
+TEST_F(CalibrationCli, ANameThatIsNotUtf8IsInvalidInputNamingRowAndColumn) {
+  // It went on into the JSON report and stopped there as "internal error" (exit 1).
+  const fs::path bad = dir_ / "latin1.csv";
+  std::ofstream(bad) << "name,t_mm,E_MPa,w_N_per_mm2,h_mm,L_mm,d_mm,n\n"
+                        "caf\xe9\x1b,0.25,165,1.5e-6,900,1400,100,5\n";
+  const testing::RunResult r = run({"calibrate", "--data", bad.string(), "--json"});
+  EXPECT_EQ(r.exit_status, 2) << r.err;
+  EXPECT_TRUE(contains(r.err, "line 2 (row 1), column name: 'caf\\xe9\\x1b' is not UTF-8 text"))
+      << r.err;
+  EXPECT_TRUE(r.out.empty()) << r.out.substr(0, 200);
+}
+
 TEST_F(CalibrationCli, KAndPAreSavedIntoAPresetThatSolves) {
   const fs::path out = dir_ / "calibrated.json";
   const json j =

@@ -227,6 +227,17 @@ TEST_F(CliTest, MissingPresetFileIsInvalidInputNamingTheFile) {
   EXPECT_TRUE(r.out.empty()) << r.out;
 }
 
+TEST_F(CliTest, AnEmptyPresetPathIsInvalidInputNotTheDefault) {
+  for (const std::string command : {"solve", "export", "sweep", "calibrate", "measure"}) {
+    SCOPED_TRACE(command);
+    const RunResult r = run({command, "--preset", ""});
+    EXPECT_EQ(r.exit_status, 2) << r.out;
+    EXPECT_TRUE(contains(r.err, "--preset")) << r.err;
+    EXPECT_TRUE(contains(r.err, "empty path")) << r.err;
+    EXPECT_TRUE(r.out.empty()) << r.out.substr(0, 200);
+  }
+}
+
 TEST_F(CliTest, InvalidPresetFileIsInvalidInputNamingTheKey) {
   const fs::path path = dir_ / "bad.json";
   json j = json::parse(read_file(kH900));

@@ -152,6 +152,11 @@ class RowReader {
       problem(column, "text must be one line");
       return "";
     }
+    // The text goes on into JSON reports and files, which hold UTF-8 only.
+    if (!detail::is_valid_utf8(c.text)) {
+      problem(column, "'" + detail::cut(c.text) + "' is not UTF-8 text (save the file as UTF-8)");
+      return "";
+    }
     return c.text;
   }
 
