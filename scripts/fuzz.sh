@@ -4,7 +4,8 @@
 # under WORK_DIR/artifacts/, if the fuzzer finds a crash, a sanitizer report or an exception other
 # than the loader's own error. The CTests fuzz_build and fuzz_TARGET run this.
 #
-#   scripts/fuzz.sh [--target preset_loader|measurements|session|settings] [--seconds 30]
+#   scripts/fuzz.sh [--target preset_loader|measurements|session|settings|calibration|play_script]
+#                   [--seconds 30]
 #                   [--clang clang++] [--build-dir build/tests/fuzz]
 #                   [--generated-dir build/core/generated] [--work-dir build/fuzz_TARGET_work]
 #                   [--build-only | --no-build]
@@ -36,7 +37,7 @@ while [ $# -gt 0 ]; do
 done
 
 case "$target" in
-  preset_loader|measurements|session|settings) ;;
+  preset_loader|measurements|session|settings|calibration|play_script) ;;
   *) echo "fuzz.sh: unknown target $target" >&2; exit 2 ;;
 esac
 [ -n "$work" ] || work="$root/build/fuzz_${target}_work"
@@ -91,6 +92,18 @@ case "$target" in
           {split($0,f,": *"); if (f[1] in k) print k[f[1]] "=" f[2]}' > "$work/corpus/seed$i.txt"
       i=$((i + 1))
     done ;;
+  calibration)
+    # The shipped presets' calibration blocks, each the whole input.
+    for preset in "$root"/presets/*.json; do
+      python3 -c 'import json,sys; c=json.load(open(sys.argv[1])).get("calibration")
+if c is not None: print(json.dumps(c))' "$preset" > "$work/corpus/$(basename "$preset")"
+    done
+    printf '"\\"%s\\""\n' calibrated_on method K p fit_rows equally_good leave_one_out \
+      > "$work/extra.dict" ;;
+  play_script)
+    cp "$root"/tests/play/*.json "$work/corpus/"
+    printf '"\\"%s\\""\n' steps drag dx click at ctrl click_photo key type resize frames \
+      screenshot expect ctrl+z escape 1280x800 > "$work/extra.dict" ;;
 esac
 touch "$work/extra.dict"
 cat "$work/extra.dict" - > "$work/loader.dict" <<'DICT'

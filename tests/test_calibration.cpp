@@ -65,7 +65,7 @@ CalibrationScore direct_score(const std::vector<Measurement>& rows, const Parame
                               double K, double p) {
   std::vector<RowPrediction> predictions;
   for (const Measurement& m : rows) {
-    const int cap = std::max(kCalibrationFoldCap, m.observed.n ? 4 * *m.observed.n : 0);
+    const int cap = calibration_fold_cap(m.observed.n);
     predictions.push_back(prediction_of(solve(with_constants(parameters_for(m, base), K, p)), cap));
   }
   return score_predictions(rows, predictions);
@@ -387,6 +387,31 @@ TEST(CalibrationSearch, NothingToFitIsAnError) {
   EXPECT_THROW(calibrate(set, Parameters{}, CalibrationOptions{}), CalibrationError);
 }
 
+TEST(CalibrationSearch, FoldCapFollowsTheObservedNWithoutOverflow) {
+  EXPECT_EQ(calibration_fold_cap(std::nullopt), kCalibrationFoldCap);
+  EXPECT_EQ(calibration_fold_cap(5), kCalibrationFoldCap);
+  EXPECT_EQ(calibration_fold_cap(kMaxObservedFolds), 4 * kMaxObservedFolds);
+  // 4 * 1e9 does not fit an int: the cap stops at the solver's own.
+  EXPECT_EQ(calibration_fold_cap(1'000'000'000), kMaxWrinkles);
+}
+
+TEST(CalibrationSearch, ARowBuiltInCodeWithAnImplausibleNIsRefused) {
+  // The file reader refuses such a row; a row built in code must not reach the fit either, where
+  // its 4n cap overflowed.
+  MeasurementSet set;
+  set.origin = "clicked";
+  Measurement m = row(0.25, 165, 1.5e-6, 900, 1400, 100);
+  m.observed.n = 1'000'000'000;
+  m.row = 1;
+  set.rows.push_back(m);
+  try {
+    (void)calibrate(set, paper_preset().parameters, CalibrationOptions{});
+    ADD_FAILURE() << "accepted";
+  } catch (const CalibrationError& e) {
+    EXPECT_TRUE(contains(e.what(), "clicked: row 1, column n: 1000000000 folds")) << e.what();
+  }
+}
+
 // ---- The measurements file ----------------------------------------------------------------------
 
 // The paper's Tables 1-2 and Fig. 4, with docs/calibration.md's choices (h = 1450, L = 900
@@ -537,6 +562,25 @@ TEST(CalibrationMeasurements, MalformedCsvNamesLineRowAndColumn) {
   EXPECT_TRUE(contains(csv_error(header), "no rows after the header"));
 }
 
+TEST(CalibrationMeasurements, ImplausibleObservationsAreRefusedNamingRowAndColumn) {
+  const std::string header = "name,t_mm,E_MPa,w_N_per_mm2,h_mm,L_mm,d_mm,n,z_max_mm,Q\n";
+  const std::string all = csv_error(header + "a,0.25,165,1.5e-6,900,1400,100,100000,,\n" +
+                                    "b,0.25,165,1.5e-6,900,1400,100,,,1e8\n" +
+                                    "c,0.25,165,1.5e-6,900,1400,100,,1e308,\n" +
+                                    "d,0.25,165,1.5e-6,900,1400,100,1000000000,,\n");
+  EXPECT_TRUE(contains(all, "line 2 (row 1), column n: 100000 folds: at most 1000")) << all;
+  EXPECT_TRUE(contains(all, "line 3 (row 2), column Q: 1e+08 must be at most 100")) << all;
+  EXPECT_TRUE(contains(all,
+                       "line 4 (row 3), column z_max_mm: 1e+308 is deeper than half the "
+                       "upper edge, L/2 = 700 mm"))
+      << all;
+  EXPECT_TRUE(contains(all, "line 5 (row 4), column n: 1000000000 folds")) << all;
+  // The ends themselves are plausible.
+  const MeasurementSet edge =
+      measurements_from_csv(header + "a,0.25,165,1.5e-6,900,1400,100,1000,700,100\n", "edge.csv");
+  EXPECT_EQ(edge.rows.at(0).observed.n, 1000);
+}
+
 TEST(CalibrationMeasurements, MalformedJsonNamesRowAndColumn) {
   const json j = json::parse(R"({"foldlab_measurements": 1, "rows": [
       {"t_mm": 0.25, "E_MPa": 165, "w_N_per_mm2": 1.5e-6, "h_mm": 900, "L_mm": 1400,
@@ -609,6 +653,18 @@ TEST_F(CalibrationCli, KAloneOnTheShippedFileMatchesReadme) {
   EXPECT_EQ(twin.at("fitted").at("K"), j.at("fitted").at("K"));
 }
 
+TEST_F(CalibrationCli, ANameThatIsNotUtf8IsInvalidInputNamingRowAndColumn) {
+  // It went on into the JSON report and stopped there as "internal error" (exit 1).
+  const fs::path bad = dir_ / "latin1.csv";
+  std::ofstream(bad) << "name,t_mm,E_MPa,w_N_per_mm2,h_mm,L_mm,d_mm,n\n"
+                        "caf\xe9\x1b,0.25,165,1.5e-6,900,1400,100,5\n";
+  const testing::RunResult r = run({"calibrate", "--data", bad.string(), "--json"});
+  EXPECT_EQ(r.exit_status, 2) << r.err;
+  EXPECT_TRUE(contains(r.err, "line 2 (row 1), column name: 'caf\\xe9\\x1b' is not UTF-8 text"))
+      << r.err;
+  EXPECT_TRUE(r.out.empty()) << r.out.substr(0, 200);
+}
+
 TEST_F(CalibrationCli, KAndPAreSavedIntoAPresetThatSolves) {
   const fs::path out = dir_ / "calibrated.json";
   const json j =
@@ -674,6 +730,17 @@ TEST_F(CalibrationCli, MoreRowsThanTheLimitAreRefusedUpFront) {
   const testing::RunResult r = run({"calibrate", "--data", many.string()});
   EXPECT_EQ(r.exit_status, 2);
   EXPECT_TRUE(contains(r.err, "501 rows, above the limit of 500")) << r.err;
+  EXPECT_TRUE(r.out.empty()) << r.out.substr(0, 200);
+}
+
+TEST_F(CalibrationCli, AnImplausibleNIsRefusedUpFront) {
+  // n = 100000 made the fit follow 400000 folds per row: minutes before any output.
+  const fs::path many = dir_ / "many_folds.csv";
+  std::ofstream(many) << "name,t_mm,E_MPa,w_N_per_mm2,h_mm,L_mm,d_mm,n\n"
+                         "a,0.25,165,1.5e-6,900,1400,100,100000\n";
+  const testing::RunResult r = run({"calibrate", "--data", many.string()});
+  EXPECT_EQ(r.exit_status, 2);
+  EXPECT_TRUE(contains(r.err, "line 2 (row 1), column n: 100000 folds")) << r.err;
   EXPECT_TRUE(r.out.empty()) << r.out.substr(0, 200);
 }
 

@@ -171,6 +171,18 @@ TEST_F(CliTest, BadSettingsAreInvalidInput) {
   EXPECT_TRUE(contains(huge_K.err, "(K = c / (1 - nu²) = 1e+09)")) << huge_K.err;
 }
 
+TEST_F(CliTest, ControlCharactersInKeysAndValuesAreEscapedInMessages) {
+  const RunResult r =
+      run({"solve", "--set", "\x1b[2Jkey=1", "--set", "method=\x1b[31mred", "--set", "t=\x07\xff"});
+  EXPECT_EQ(r.exit_status, 2);
+  EXPECT_EQ(r.err.find('\x1b'), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find('\x07'), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find('\xff'), std::string::npos) << r.err;
+  EXPECT_TRUE(contains(r.err, "unknown key '\\x1b[2Jkey'")) << r.err;
+  EXPECT_TRUE(contains(r.err, "'\\x1b[31mred'")) << r.err;
+  EXPECT_TRUE(contains(r.err, "'\\x07\\xff'")) << r.err;
+}
+
 TEST_F(CliTest, UnknownMethodIsInvalidInput) {
   const RunResult r = run({"solve", "--preset", kH900, "--method", "fast"});
   EXPECT_EQ(r.exit_status, 2);
@@ -219,6 +231,17 @@ TEST_F(CliTest, MissingPresetFileIsInvalidInputNamingTheFile) {
   EXPECT_TRUE(r.out.empty()) << r.out;
 }
 
+TEST_F(CliTest, AnEmptyPresetPathIsInvalidInputNotTheDefault) {
+  for (const std::string command : {"solve", "export", "sweep", "calibrate", "measure"}) {
+    SCOPED_TRACE(command);
+    const RunResult r = run({command, "--preset", ""});
+    EXPECT_EQ(r.exit_status, 2) << r.out;
+    EXPECT_TRUE(contains(r.err, "--preset")) << r.err;
+    EXPECT_TRUE(contains(r.err, "empty path")) << r.err;
+    EXPECT_TRUE(r.out.empty()) << r.out.substr(0, 200);
+  }
+}
+
 TEST_F(CliTest, InvalidPresetFileIsInvalidInputNamingTheKey) {
   const fs::path path = dir_ / "bad.json";
   json j = json::parse(read_file(kH900));
@@ -228,6 +251,24 @@ TEST_F(CliTest, InvalidPresetFileIsInvalidInputNamingTheKey) {
   EXPECT_EQ(r.exit_status, 2);
   EXPECT_TRUE(contains(r.err, path.string())) << r.err;
   EXPECT_TRUE(contains(r.err, "/fabric/thickness_mm")) << r.err;
+}
+
+TEST_F(CliTest, AStoredCalibrationOfTwentyThousandEntriesIsRefusedNotSolved) {
+  // A solve evaluates each stored entry, about 40 ms each: some 13 minutes for these.
+  json preset = json::parse(read_file(kH900));
+  json list = json::array();
+  for (int i = 0; i < 20'000; ++i) {
+    list.push_back({30.0, 0.5});
+  }
+  preset["calibration"] = {{"calibrated_on", "x"}, {"method", "exact"},   {"K", 30.0}, {"p", 0.5},
+                           {"fit_rows", 1},        {"equally_good", list}};
+  const fs::path path = dir_ / "long.json";
+  std::ofstream(path) << preset.dump();
+  const RunResult r = run({"solve", "--preset", path.string()});
+  EXPECT_EQ(r.exit_status, 2);
+  EXPECT_TRUE(contains(r.err, path.string() + ": /calibration/equally_good/64: 20000 entries"))
+      << r.err.substr(0, 400);
+  EXPECT_TRUE(r.out.empty());
 }
 
 TEST_F(CliTest, SolvePrintsATableOfTheDefaultPreset) {
@@ -456,7 +497,7 @@ TEST_F(CliTest, ExportRefusesAGridAboveTheVertexBudget) {
 }
 
 TEST_F(CliTest, ExportRefusesFoldLinesAboveThePointBudget) {
-  // n is capped at 10^7 folds, of which about 1000 lines are drawn: 100000 samples a line make
+  // n is capped at 10^4 folds, of which about 1000 lines are drawn: 100000 samples a line make
   // about 10^8 points (10.8 GB and 195 s before), far above the limit of 4000000.
   const fs::path csv = dir_ / "lines.csv";
   const RunResult r = run({"export", "--set", "t=1e-3", "--set", "E=1e-3", "--set", "w=1e-2",
@@ -464,6 +505,42 @@ TEST_F(CliTest, ExportRefusesFoldLinesAboveThePointBudget) {
   EXPECT_EQ(r.exit_status, 2);
   EXPECT_TRUE(contains(r.err, "limit of 4000000")) << r.err;
   EXPECT_FALSE(fs::exists(csv));
+}
+
+TEST_F(CliTest, ACappedFoldCountIsSmallEnoughToUseAndFlaggedWhereverItIsShown) {
+  // Valid inputs whose eq. 10 asks for millions of folds: with the cap at 10^7 `solve --json` wrote
+  // 233 MB of a_i.
+  const std::vector<std::string> many = {"--set", "t=1e-3", "--set", "E=1e-3", "--set", "w=1e-2"};
+  const RunResult r =
+      run({"solve", "--set", "t=1e-3", "--set", "E=1e-3", "--set", "w=1e-2", "--json"});
+  ASSERT_EQ(r.exit_status, 0) << r.err;
+  EXPECT_LT(r.out.size(), 1'000'000u);
+  const json j = json::parse(r.out);
+  EXPECT_EQ(j.at("n"), 10000);
+  EXPECT_EQ(j.at("n_capped"), true);
+  EXPECT_EQ(j.at("a_mm").size(), 10001u);
+
+  std::vector<std::string> args = many;
+  args.insert(args.begin(), "solve");
+  const RunResult table = run(args);
+  ASSERT_EQ(table.exit_status, 0) << table.err;
+  EXPECT_TRUE(contains(table.out, "(capped: eq. 10 asks for more)")) << table.out;
+
+  args = many;
+  args.insert(args.begin(),
+              {"sweep", "--param", "h", "--from", "900", "--to", "1000", "--steps", "2"});
+  const RunResult sweep = run(args);
+  ASSERT_EQ(sweep.exit_status, 0) << sweep.err;
+  EXPECT_TRUE(contains(sweep.out, "10000+")) << sweep.out;
+  EXPECT_TRUE(contains(sweep.out, "wrinkled, n capped")) << sweep.out;
+  EXPECT_TRUE(contains(sweep.err, "n is capped there")) << sweep.err;
+  args.push_back("--csv");
+  const RunResult csv = run(args);
+  ASSERT_EQ(csv.exit_status, 0) << csv.err;
+  const std::vector<std::string> lines = split_lines(csv.out);
+  ASSERT_EQ(lines.size(), 3u) << csv.out;
+  EXPECT_EQ(lines[0], "h,n,Q,z_max_mm,regime,n_capped");
+  EXPECT_TRUE(lines[1].ends_with(",wrinkled,1")) << lines[1];
 }
 
 TEST_F(CliTest, SweepRefusesEndsThatCannotDescribeACloth) {
@@ -511,7 +588,7 @@ TEST_F(CliTest, SweepPrintsOneRowPerStepAsCsv) {
   ASSERT_EQ(r.exit_status, 0) << r.err;
   const std::vector<std::string> lines = split_lines(r.out);
   ASSERT_EQ(lines.size(), 5u);
-  EXPECT_EQ(lines[0], "h,n,Q,z_max_mm,regime");
+  EXPECT_EQ(lines[0], "h,n,Q,z_max_mm,regime,n_capped");
   EXPECT_TRUE(starts_with(lines[1], "900,"));
   EXPECT_TRUE(starts_with(lines[4], "2350,"));
   // The first row is the Table 1, h = 900 mm case: the same n as `solve`.
@@ -637,7 +714,7 @@ TEST_F(CliTest, SweepPastTheValidRangeSaysWhyOnceAndAllRefusedIsInvalidInput) {
   const RunResult partly =
       run({"sweep", "--param", "d", "--from", "600", "--to", "700", "--steps", "3", "--csv"});
   EXPECT_EQ(partly.exit_status, 0) << partly.err;
-  EXPECT_TRUE(contains(partly.out, "\n700,,,,invalid\n")) << partly.out;
+  EXPECT_TRUE(contains(partly.out, "\n700,,,,invalid,\n")) << partly.out;
   EXPECT_TRUE(contains(partly.err, "1 of 3 values are refused")) << partly.err;
   EXPECT_TRUE(contains(partly.err, "d = 700")) << partly.err;
   const RunResult all =

@@ -534,7 +534,11 @@ TEST_F(DefaultModelCli, MeasuredRowsAreReadByCalibrate) {
 
 TEST_F(DefaultModelCli, MalformedMeasureInputIsExitTwoNamingTheArgument) {
   const fs::path photo = dir_ / "small.png";
-  const std::vector<unsigned char> grey(100 * 80, 200);
+  // A gradient: a blank photo is refused for itself.
+  std::vector<unsigned char> grey(100 * 80);
+  for (std::size_t i = 0; i < grey.size(); ++i) {
+    grey[i] = static_cast<unsigned char>(i % 100 + 50);
+  }
   ASSERT_NE(stbi_write_png(photo.string().c_str(), 100, 80, 1, grey.data(), 100), 0);
   const std::string png = photo.string();
   const std::vector<std::pair<std::vector<std::string>, std::string>> cases = {
@@ -571,6 +575,38 @@ TEST_F(DefaultModelCli, MalformedMeasureInputIsExitTwoNamingTheArgument) {
   const testing::RunResult r = run({"measure", "--depths-mm", many});
   EXPECT_EQ(r.exit_status, 2) << r.err;
   EXPECT_TRUE(contains(r.err, "at most 1000")) << r.err;
+}
+
+TEST_F(DefaultModelCli, ACorruptOrBlankPhotoIsRefused) {
+  std::vector<unsigned char> pixels(200 * 160);
+  for (std::size_t i = 0; i < pixels.size(); ++i) {
+    pixels[i] = static_cast<unsigned char>((i * 7919) % 251);  // noise: compresses poorly
+  }
+  const fs::path whole = dir_ / "whole.png";
+  ASSERT_NE(stbi_write_png(whole.string().c_str(), 200, 160, 1, pixels.data(), 200), 0);
+  const std::vector<std::string> points = {"--supports-px", "10,10,190,10", "--folds-px",
+                                           "150,100,60"};
+  auto measure = [&](const fs::path& photo) {
+    std::vector<std::string> args = {"measure", "--photo", photo.string()};
+    args.insert(args.end(), points.begin(), points.end());
+    return run(args);
+  };
+  ASSERT_EQ(measure(whole).exit_status, 0);
+  // Its header is sound, its pixel data cut off half way: it was measured (exit 0).
+  const std::string bytes = testing::read_file(whole);
+  const fs::path cut = dir_ / "cut.png";
+  std::ofstream(cut, std::ios::binary) << bytes.substr(0, bytes.size() / 2);
+  testing::RunResult r = measure(cut);
+  EXPECT_EQ(r.exit_status, 2) << r.out;
+  EXPECT_TRUE(contains(r.err, "--photo " + cut.string() + ": cannot decode")) << r.err;
+  EXPECT_TRUE(r.out.empty()) << r.out;
+  // One colour throughout: nothing to measure on.
+  const std::vector<unsigned char> blank(200 * 160, 255);
+  const fs::path white = dir_ / "white.png";
+  ASSERT_NE(stbi_write_png(white.string().c_str(), 200, 160, 1, blank.data(), 200), 0);
+  r = measure(white);
+  EXPECT_EQ(r.exit_status, 2) << r.out;
+  EXPECT_TRUE(contains(r.err, "every pixel has the same colour")) << r.err;
 }
 
 // A file that cannot be written is an I/O failure (exit 1), as for every other command.

@@ -143,6 +143,24 @@ TEST(Cut, KeepsShortTextAndCutsLongTextOnACharacterBoundary) {
   EXPECT_EQ(foldlab::detail::cut(std::string(100, 'x')), std::string(60, 'x') + "…");
 }
 
+TEST(Cut, EscapesControlCharactersAndBytesThatAreNotUtf8) {
+  // An escape sequence in a key or value must not reach the terminal: ESC [ 2 J clears it.
+  EXPECT_EQ(foldlab::detail::cut("a\x1b[2Jb"), "a\\x1b[2Jb");
+  EXPECT_EQ(foldlab::detail::cut("tab\there\nnew\x7f"), "tab\\x09here\\x0anew\\x7f");
+  EXPECT_EQ(foldlab::detail::cut("\xc2\x9b"
+                                 "31m"),
+            "\\xc2\\x9b31m");  // C1 CSI
+  EXPECT_EQ(foldlab::detail::cut("bad \xff\xfe utf8 \xe9"), "bad \\xff\\xfe utf8 \\xe9");
+  EXPECT_EQ(foldlab::detail::cut("\u00e9\u20ac\U0001F600"), "\u00e9\u20ac\U0001F600");
+  // An escape is never cut in half.
+  EXPECT_EQ(foldlab::detail::cut("ab\x01", 5), "ab…");
+  EXPECT_TRUE(foldlab::detail::is_valid_utf8("\u00e9\u20ac\U0001F600"));
+  EXPECT_FALSE(foldlab::detail::is_valid_utf8("\xc0\xaf"));          // overlong '/'
+  EXPECT_FALSE(foldlab::detail::is_valid_utf8("\xed\xa0\x80"));      // a surrogate
+  EXPECT_FALSE(foldlab::detail::is_valid_utf8("\xf4\x90\x80\x80"));  // above U+10FFFF
+  EXPECT_FALSE(foldlab::detail::is_valid_utf8("\xe2\x82"));          // cut short
+}
+
 // --- Loaders through parse_json -----------------------------------------------------------------
 
 TEST(PresetInput, DeepNestingIsAPresetErrorNotACrash) {

@@ -149,7 +149,7 @@ foldlab::Preset awkward_preset() {
                                              {1.0 / 3.0, 0.1 * 7.0},
                                              6,
                                              {{0.1 + 0.2, 0.466}, {5.4458657092013, 2.0 / 3.0}},
-                                             {{1e-12, 0.104}},
+                                             {{0.0123456789012345, 0.104}},
                                              {{-2.0, 0.1 + 0.2, std::nullopt}},
                                              "n 5/6 at a stated 67 %"};
   return p;
@@ -402,6 +402,83 @@ TEST_F(PresetTest, SeveralRangeProblemsAreAllReportedOneLineEach) {
     ++count;
   }
   EXPECT_EQ(count, 2) << message;
+}
+
+// A calibration block with its constants and a list of the given length.
+json with_calibration(json list, double K = 30.0, double p = 0.5) {
+  json j = valid_preset_json();
+  j["calibration"] = {{"calibrated_on", "tests"},
+                      {"method", "exact"},
+                      {"K", K},
+                      {"p", p},
+                      {"equally_good", list},
+                      {"fit_rows", 3},
+                      {"leave_one_out", json::array()}};
+  return j;
+}
+
+TEST_F(PresetTest, CalibrationListAboveTheEntryCapIsRefusedNamingTheIndex) {
+  json list = json::array();
+  for (int i = 0; i < 20'000; ++i) {
+    list.push_back({30.0, 0.5});
+  }
+  const std::string message = load_error(with_calibration(list));
+  EXPECT_TRUE(contains(message, "/calibration/equally_good/" +
+                                    std::to_string(foldlab::kMaxCalibrationEntries) +
+                                    ": 20000 "
+                                    "entries, at most 64"))
+      << message;
+  // One line for the whole list, not one per entry.
+  EXPECT_LT(message.size(), 400u) << message;
+
+  json at_cap = json::array();
+  for (std::size_t i = 0; i < foldlab::kMaxCalibrationEntries; ++i) {
+    at_cap.push_back({30.0, 0.5});
+  }
+  const fs::path path = dir_ / "at_cap.json";
+  write_bytes(path, with_calibration(at_cap).dump());
+  EXPECT_EQ(foldlab::load_preset(path).calibration->equally_good.size(),
+            foldlab::kMaxCalibrationEntries);
+}
+
+TEST_F(PresetTest, StoredCalibrationConstantsAreRangeCheckedThroughTheInputTable) {
+  // nu = 0.25 in the valid preset: K = 1e-12 is c ~ 1e-12, far below c's range; p = 50 is above
+  // p's range.
+  std::string message = load_error(with_calibration(json::array({{30.0, 0.5}, {1e-12, 0.5}})));
+  EXPECT_TRUE(contains(message, "/calibration/equally_good/1: K = 1e-12")) << message;
+  EXPECT_TRUE(contains(message, "c's range [0.001, 10000]")) << message;
+  message = load_error(with_calibration(json::array({{30.0, 50.0}})));
+  EXPECT_TRUE(contains(message, "/calibration/equally_good/0: p = 50 is outside [0.05, 5]"))
+      << message;
+  message = load_error(with_calibration(json::array(), 1e300, 0.5));
+  EXPECT_TRUE(contains(message, "/calibration/K: K = 1e+300")) << message;
+  message = load_error(with_calibration(json::array(), 30.0, 1e-9));
+  EXPECT_TRUE(contains(message, "/calibration/p: p = 1e-09")) << message;
+  // c's upper end at this nu: K = 1e4 / (1 - 0.25²) is in, a little more is out.
+  const double K_max = 1e4 / (1.0 - 0.25 * 0.25);
+  const fs::path path = dir_ / "edge.json";
+  write_bytes(path, with_calibration(json::array({{K_max * 0.999, 5.0}})).dump());
+  EXPECT_NO_THROW((void)foldlab::load_preset(path));
+  message = load_error(with_calibration(json::array({{K_max * 1.001, 5.0}})));
+  EXPECT_TRUE(contains(message, "/calibration/equally_good/0: K = ")) << message;
+}
+
+TEST_F(PresetTest, SaveRefusesACalibrationTheReaderWouldRefuse) {
+  foldlab::Preset p = foldlab::preset_from_json(valid_preset_json(), "test");
+  foldlab::CalibrationRecord record;
+  record.calibrated_on = "tests";
+  record.fitted = {30.0, 0.5};
+  record.fit_rows = 65;
+  record.leave_one_out.assign(65, {30.0, 0.5});
+  p.calibration = record;
+  const fs::path path = dir_ / "too_many.json";
+  try {
+    foldlab::save_preset(p, path);
+    ADD_FAILURE() << "saved";
+  } catch (const foldlab::PresetError& e) {
+    EXPECT_TRUE(contains(e.what(), "/calibration/leave_one_out/64")) << e.what();
+  }
+  EXPECT_FALSE(fs::exists(path));
 }
 
 TEST_F(PresetTest, WrongFormatVersionIsRejected) {

@@ -1,5 +1,6 @@
 // `foldlab calibrate`: fits eq. 7's constants to measured n, z_max and Q (core/calibration.hpp)
 // and prints the fit beside its held-out figures, so that a user sees how much of it is real.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -261,9 +262,11 @@ Command add_calibrate_command(CLI::App& app) {
   command->add_option("--method", options->inputs.method, "solution method (default: the base's)")
       ->check(CLI::IsMember({"paper", "exact"}));
   app::add_law_option(*command, options->inputs.law);
-  command->add_option("--preset", options->inputs.preset_path,
-                      "base preset: its model settings are used for every row, and --save-preset "
-                      "starts from it (default: the built-in preset)");
+  command
+      ->add_option("--preset", options->inputs.preset_path,
+                   "base preset: its model settings are used for every row, and --save-preset "
+                   "starts from it (default: the built-in preset)")
+      ->check(app::non_empty_path());
   command
       ->add_option("--set", options->inputs.assignments,
                    "override a base setting, KEY=VALUE (e.g. span_rule=L-2d)")
@@ -286,12 +289,30 @@ Command add_calibrate_command(CLI::App& app) {
       check_distinct_files(
           {{"--save-preset", options->save_preset_path}},
           {{"--data", options->data_path}, {"--preset", options->inputs.preset_path}});
+      // The label goes into the saved preset, whose JSON holds UTF-8 only.
+      if (!detail::is_valid_utf8(options->calibrated_on)) {
+        throw InputError("--calibrated-on '" + detail::cut(options->calibrated_on) +
+                         "' is not UTF-8 text");
+      }
       const Preset base = resolve_inputs(options->inputs);
       MeasurementSet data;
       try {
         data = load_measurements(options->data_path);
       } catch (const MeasurementError& e) {
         throw InputError(e.what());
+      }
+      // A preset stores one leave-one-out fit per fit row and holds at most
+      // kMaxCalibrationEntries: say so before the fit rather than after it.
+      const auto fit_row_count =
+          std::count_if(data.rows.begin(), data.rows.end(),
+                        [](const Measurement& m) { return m.role == MeasurementRole::fit; });
+      if (!options->save_preset_path.empty() && !options->no_held_out &&
+          static_cast<std::size_t>(fit_row_count) > kMaxCalibrationEntries) {
+        throw InputError("--save-preset: " + std::to_string(fit_row_count) +
+                         " fit rows would store as many leave-one-out fits, and a preset holds "
+                         "at most " +
+                         std::to_string(kMaxCalibrationEntries) +
+                         " (add --no-held-out, or fit fewer rows)");
       }
       CalibrationOptions calibration;
       parse_fit_constants(options->fit, calibration.fit);

@@ -1,6 +1,8 @@
 // `foldlab measure`: folds measured on a real cloth (depths, or points clicked on a photo) to n
 // and Q, and a row of the measurements file that `foldlab calibrate` fits.
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <filesystem>
 #include <iostream>
 #include <memory>
@@ -32,7 +34,7 @@ std::vector<double> number_list(const std::string& option, const std::string& te
     const std::string item = text.substr(start, comma - start);
     const std::optional<double> value = parse_number(item);
     if (!value) {
-      throw InputError(option + " " + text + ": \"" + item +
+      throw InputError(option + " " + detail::cut(text) + ": \"" + detail::cut(item) +
                        "\" is not a number (give numbers separated by commas)");
     }
     out.push_back(*value);
@@ -42,24 +44,33 @@ std::vector<double> number_list(const std::string& option, const std::string& te
     start = comma + 1;
   }
   if (exactly != 0 && out.size() != exactly) {
-    throw InputError(option + " " + text + ": expected " + std::to_string(exactly) +
+    throw InputError(option + " " + detail::cut(text) + ": expected " + std::to_string(exactly) +
                      " numbers, got " + std::to_string(out.size()));
   }
   if (out.size() < at_least) {
-    throw InputError(option + " " + text + ": expected at least " + std::to_string(at_least) +
-                     " numbers, got " + std::to_string(out.size()));
+    throw InputError(option + " " + detail::cut(text) + ": expected at least " +
+                     std::to_string(at_least) + " numbers, got " + std::to_string(out.size()));
   }
   return out;
 }
 
 // The photo's size in pixels; InputError when it is not an image FoldLab reads or is too large.
 std::pair<int, int> photo_size(const std::string& path) {
+  Image image;
   try {
-    const ImageSize size = image_size(path);
-    return {size.width_px, size.height_px};
+    // Decoded in full, not only its header read: a file cut short or corrupt after a sound header
+    // would otherwise give pixel positions on a picture that does not exist.
+    image = load_image(path);
   } catch (const ImageError& e) {
     throw InputError(std::string("--photo ") + e.what());
   }
+  if (std::all_of(image.rgba.begin(), image.rgba.end(),
+                  [&](std::uint32_t pixel) { return pixel == image.rgba.front(); })) {
+    throw InputError("--photo " + detail::cut(path, 200) +
+                     ": every pixel has the same colour, so no fold can be seen on it (a blank "
+                     "or corrupt file?)");
+  }
+  return {image.width_px, image.height_px};
 }
 
 void check_inside(const std::string& option, const std::vector<double>& values, bool x_and_y,
@@ -103,9 +114,11 @@ Command add_measure_command(CLI::App& app) {
       "measure",
       "n and Q of folds measured on a real cloth (a least-squares fit of ln a_i against i), and "
       "the measurements row that `foldlab calibrate --data` reads");
-  command->add_option("--preset", options->preset_path,
-                      "the cloth's preset: its fabric and hanging go into the row, its span l "
-                      "scales a photo (default: the built-in preset)");
+  command
+      ->add_option("--preset", options->preset_path,
+                   "the cloth's preset: its fabric and hanging go into the row, its span l "
+                   "scales a photo (default: the built-in preset)")
+      ->check(app::non_empty_path());
   command
       ->add_option("--set", options->assignments,
                    "override an input of the cloth, KEY=VALUE (see `foldlab solve --help`)")
@@ -146,6 +159,10 @@ Command add_measure_command(CLI::App& app) {
                              " is missing: a photo needs --photo, --supports-px and --folds-px");
           }
         }
+      }
+      // The name goes into the row and the JSON output, which hold UTF-8 only.
+      if (!detail::is_valid_utf8(o.name)) {
+        throw InputError("--name '" + detail::cut(o.name) + "' is not UTF-8 text");
       }
       if (o.z_max_mm && !(*o.z_max_mm >= 0.0 && std::isfinite(*o.z_max_mm))) {
         throw InputError("--z-max-mm " + detail::shortest_number(*o.z_max_mm) +

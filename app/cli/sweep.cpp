@@ -69,27 +69,37 @@ Command add_sweep_command(CLI::App& app) {
                          first_reason);
       }
       if (options->csv) {
-        std::printf("%s,n,Q,z_max_mm,regime\n", axis.key.c_str());
+        std::printf("%s,n,Q,z_max_mm,regime,n_capped\n", axis.key.c_str());
       } else {
         std::printf("%14s %6s %10s %12s  %s\n", axis.key.c_str(), "n", "Q", "z_max (mm)", "regime");
       }
+      int capped = 0;
       for (const SweepPoint& p : points) {
         // A refused value has no solution: empty fields, so that a spreadsheet plots no zeros.
         if (!p.valid) {
           if (options->csv) {
-            std::printf("%.9g,,,,invalid\n", p.value);
+            std::printf("%.9g,,,,invalid,\n", p.value);
           } else {
             std::printf("%14.6g %6s %10s %12s  invalid\n", p.value, "-", "-", "-");
           }
           continue;
         }
         const std::string regime(to_string(p.regime));
+        capped += p.n_capped ? 1 : 0;
         if (options->csv) {
-          std::printf("%.9g,%d,%.9g,%.9g,%s\n", p.value, p.n, p.Q, p.z_max_mm, regime.c_str());
+          std::printf("%.9g,%d,%.9g,%.9g,%s,%d\n", p.value, p.n, p.Q, p.z_max_mm, regime.c_str(),
+                      p.n_capped ? 1 : 0);
         } else {
-          std::printf("%14.6g %6d %10.4f %12.2f  %s\n", p.value, p.n, p.Q, p.z_max_mm,
-                      regime.c_str());
+          // A capped n is the cap, not a count: "10000+" and the regime says so.
+          const std::string n = std::to_string(p.n) + (p.n_capped ? "+" : "");
+          std::printf("%14.6g %6s %10.4f %12.2f  %s%s\n", p.value, n.c_str(), p.Q, p.z_max_mm,
+                      regime.c_str(), p.n_capped ? ", n capped" : "");
         }
+      }
+      if (capped > 0) {
+        std::cerr << "foldlab: at " << capped << " of " << points.size()
+                  << " values eq. 10 asks for more than " << kMaxWrinkles
+                  << " folds; n is capped there (n_capped)\n";
       }
       if (refused > 0) {
         std::cerr << "foldlab: " << refused << " of " << points.size()

@@ -46,11 +46,21 @@ Preset resolve_inputs(const InputOptions& options) {
   return preset;
 }
 
+CLI::Validator non_empty_path() {
+  return CLI::Validator(
+      [](std::string& path) {
+        return path.empty() ? std::string("empty path: name a file, or leave the option out")
+                            : std::string();
+      },
+      "FILE", "non-empty path");
+}
+
 void add_input_options(CLI::App& command, InputOptions& options) {
-  command.add_option(
-      "--preset", options.preset_path,
-      "preset JSON file (default: the built-in presets/default.json, eq. 7 calibrated on "
-      "Conci's Tables 1–2)");
+  command
+      .add_option("--preset", options.preset_path,
+                  "preset JSON file (default: the built-in presets/default.json, eq. 7 calibrated "
+                  "on Conci's Tables 1–2)")
+      ->check(non_empty_path());
   std::string keys;
   for (const InputSpec& spec : input_table()) {
     keys += "\n    " + input_label(spec) + ": " + std::string(spec.help);

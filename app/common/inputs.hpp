@@ -58,6 +58,10 @@ struct NamedPath {
 void check_distinct_files(const std::vector<NamedPath>& outputs,
                           const std::vector<NamedPath>& inputs);
 
+// For every option that names a file: an empty path (`--preset ''`, an unset shell variable) is
+// refused as invalid input rather than read as "not given", which would silently use a default.
+CLI::Validator non_empty_path();
+
 // --preset, --set, --method and --law, for every command that solves.
 void add_input_options(CLI::App& command, InputOptions& options);
 // --law alone, for a command that gathers its inputs otherwise (InputOptions::law).

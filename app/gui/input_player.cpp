@@ -12,6 +12,7 @@
 #include <unordered_map>
 
 #include "app/common/inputs.hpp"
+#include "app/gui/play_script.hpp"
 #include "core/analysis/sweep.hpp"
 #include "core/io/json_input.hpp"
 #include "core/io/report.hpp"
@@ -29,203 +30,6 @@ constexpr std::pair<const char*, const char*> kParameterFields[] = {
     {"t", "t_mm"}, {"E", "E_MPa"}, {"w", "w_N_per_mm2"}, {"h", "h_mm"}, {"L", "L_mm"},
     {"d", "d_mm"}, {"nu", "nu"},   {"K", "K"},           {"c", "c"},    {"p", "p"},
 };
-
-// Key names of chords, as GLFW numbers them (the window's backend indexes io.KeysDown so; the
-// headless surface is given the same map). `imgui` is the named key ImGui itself reads, if any.
-struct KeyName {
-  const char* name;
-  int glfw;
-  int imgui;
-};
-constexpr KeyName kNamedKeys[] = {
-    {"escape", 256, ImGuiKey_Escape},
-    {"enter", 257, ImGuiKey_Enter},
-    {"tab", 258, ImGuiKey_Tab},
-    {"backspace", 259, ImGuiKey_Backspace},
-    {"insert", 260, ImGuiKey_Insert},
-    {"delete", 261, ImGuiKey_Delete},
-    {"right", 262, ImGuiKey_RightArrow},
-    {"left", 263, ImGuiKey_LeftArrow},
-    {"down", 264, ImGuiKey_DownArrow},
-    {"up", 265, ImGuiKey_UpArrow},
-    {"pageup", 266, ImGuiKey_PageUp},
-    {"pagedown", 267, ImGuiKey_PageDown},
-    {"home", 268, ImGuiKey_Home},
-    {"end", 269, ImGuiKey_End},
-    {"space", 32, ImGuiKey_Space},
-    {"minus", 45, -1},
-    {"equal", 61, -1},
-    {"plus", 61, -1},
-    {"kp_add", 334, -1},
-    {"kp_subtract", 333, -1},
-};
-constexpr int kLeftShift = 340;
-constexpr int kLeftCtrl = 341;
-constexpr int kLeftAlt = 342;
-
-struct Chord {
-  bool ctrl = false;
-  bool shift = false;
-  bool alt = false;
-  int glfw = -1;
-  int imgui = -1;
-};
-
-std::optional<Chord> parse_chord(std::string text) {
-  std::transform(text.begin(), text.end(), text.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  Chord chord;
-  std::string_view rest = text;
-  for (;;) {
-    const std::size_t plus = rest.find('+', 1);
-    if (plus == std::string_view::npos) {
-      break;
-    }
-    const std::string_view mod = rest.substr(0, plus);
-    if (mod == "ctrl") {
-      chord.ctrl = true;
-    } else if (mod == "shift") {
-      chord.shift = true;
-    } else if (mod == "alt") {
-      chord.alt = true;
-    } else {
-      return std::nullopt;
-    }
-    rest.remove_prefix(plus + 1);
-  }
-  if (rest.size() == 1 && std::isalnum(static_cast<unsigned char>(rest[0]))) {
-    chord.glfw = std::toupper(static_cast<unsigned char>(rest[0]));
-    return chord;
-  }
-  if (rest == "+") {
-    rest = "plus";
-  } else if (rest == "-") {
-    rest = "minus";
-  } else if (rest == "=") {
-    rest = "equal";
-  }
-  for (const KeyName& key : kNamedKeys) {
-    if (rest == key.name) {
-      chord.glfw = key.glfw;
-      chord.imgui = key.imgui;
-      return chord;
-    }
-  }
-  return std::nullopt;
-}
-
-bool is_slider_key(const json& value) {
-  const std::vector<std::string>& keys = sweepable_keys();
-  return value.is_string() &&
-         std::find(keys.begin(), keys.end(), value.get<std::string>()) != keys.end();
-}
-
-std::optional<std::pair<int, int>> parse_size(const std::string& text) {
-  static const std::regex pattern(R"((\d{3,4})x(\d{3,4}))");
-  std::smatch match;
-  if (!std::regex_match(text, match, pattern)) {
-    return std::nullopt;
-  }
-  return std::pair<int, int>(std::stoi(match[1]), std::stoi(match[2]));
-}
-
-// The problems of one step; empty when it can run.
-std::vector<std::string> step_problems(const json& step) {
-  if (!step.is_object() || step.empty()) {
-    return {"is not an object with one action"};
-  }
-  static const char* const kActions[] = {"drag",   "click",  "click_photo", "key",   "type",
-                                         "resize", "frames", "screenshot",  "expect"};
-  std::vector<std::string> actions;
-  for (const char* action : kActions) {
-    if (step.contains(action)) {
-      actions.emplace_back(action);
-    }
-  }
-  if (actions.size() != 1) {
-    return {actions.empty() ? "has no action (drag, click, click_photo, key, type, resize, "
-                              "frames, screenshot or expect)"
-                            : "has more than one action: " + detail::join_comma(actions)};
-  }
-  const std::string& action = actions.front();
-  std::vector<std::string> problems;
-  for (const auto& [name, value] : step.items()) {
-    const bool allowed = name == action || (action == "drag" && name == "dx") ||
-                         (action == "click" && (name == "at" || name == "ctrl"));
-    if (!allowed) {
-      problems.push_back("\"" + name + "\" does not belong to a " + action + " step");
-    }
-  }
-  const json& arg = step.at(action);
-  const std::string keys = detail::join_comma(sweepable_keys());
-  if (action == "drag") {
-    if (!is_slider_key(arg)) {
-      problems.push_back("drag needs a slider key (" + keys + "), not " + arg.dump());
-    }
-    if (!step.contains("dx") || !step["dx"].is_number() ||
-        std::abs(step["dx"].get<double>()) > 10000.0) {
-      problems.push_back("drag needs \"dx\": a number of pixels");
-    }
-  } else if (action == "click") {
-    if (step.contains("at")) {
-      if (!is_slider_key(arg)) {
-        problems.push_back("click with \"at\" needs a slider key (" + keys + "), not " +
-                           arg.dump());
-      }
-      if (step.contains("ctrl") && !step["ctrl"].is_boolean()) {
-        problems.push_back("\"ctrl\" must be true or false, not " + step["ctrl"].dump());
-      }
-      if (!step["at"].is_number() || step["at"].get<double>() < 0.0 ||
-          step["at"].get<double>() > 1.0) {
-        problems.push_back("\"at\" must be a fraction from 0 to 1, not " + step["at"].dump());
-      }
-    } else if (!arg.is_string() || arg.get<std::string>().empty()) {
-      problems.push_back("click needs a label or a slider key with \"at\", not " + arg.dump());
-    }
-  } else if (action == "click_photo") {
-    if (!arg.is_array() || arg.size() != 2 || !arg[0].is_number() || !arg[1].is_number() ||
-        !(arg[0].get<double>() >= 0.0) || !(arg[1].get<double>() >= 0.0)) {
-      problems.push_back("click_photo needs [X, Y]: a pixel of the loaded photo, not " +
-                         arg.dump());
-    }
-  } else if (action == "key") {
-    if (!arg.is_string() || !parse_chord(arg.get<std::string>())) {
-      problems.push_back("key " + arg.dump() +
-                         " is not a chord such as \"ctrl+z\", \"ctrl+shift+z\", \"escape\"");
-    }
-  } else if (action == "type") {
-    if (!arg.is_string()) {
-      problems.push_back("type needs a string, not " + arg.dump());
-    }
-  } else if (action == "resize") {
-    if (!arg.is_string() || !parse_size(arg.get<std::string>())) {
-      problems.push_back("resize needs \"WxH\", not " + arg.dump());
-    }
-  } else if (action == "frames") {
-    if (!arg.is_number_integer() || arg.get<long long>() < 1 || arg.get<long long>() > 100000) {
-      problems.push_back("frames needs a whole number from 1 to 100000, not " + arg.dump());
-    }
-  } else if (action == "screenshot") {
-    if (!arg.is_string() || !arg.get<std::string>().ends_with(".png")) {
-      problems.push_back("screenshot needs a file name ending in .png, not " + arg.dump());
-    }
-  } else if (action == "expect") {
-    if (!arg.is_object() || arg.empty()) {
-      problems.push_back("expect needs an object of FIELD.PATH: VALUE or [LO, HI]");
-    } else {
-      for (const auto& [path, wanted] : arg.items()) {
-        const bool range = wanted.is_array() && wanted.size() == 2 && wanted[0].is_number() &&
-                           wanted[1].is_number() &&
-                           wanted[0].get<double>() <= wanted[1].get<double>();
-        if (wanted.is_array() ? !range : wanted.is_object()) {
-          problems.push_back("expect " + path + ": " + wanted.dump() +
-                             " is neither a value nor [LO, HI] with LO <= HI");
-        }
-      }
-    }
-  }
-  return problems;
-}
 
 // A field of the report by dotted path, or null when there is none.
 const json* find_field(const json& report, const std::string& path) {
@@ -482,30 +286,24 @@ InputPlayer::InputPlayer(const json& script, const std::string& name) {
 }
 
 void InputPlayer::parse(const json& script) {
-  if (!script.is_object() || !script.contains("steps") || !script["steps"].is_array()) {
-    throw app::InputError("  needs {\"steps\": [...]}");
-  }
-  std::vector<std::string> problems;
-  for (const auto& [name, value] : script.items()) {
-    if (name != "steps") {
-      problems.push_back("  \"" + name + "\" is not a field of a script (only \"steps\")");
-    }
-  }
-  for (std::size_t i = 0; i < script["steps"].size(); ++i) {
-    for (const std::string& problem : step_problems(script["steps"][i])) {
-      problems.push_back("  step " + std::to_string(i + 1) + ": " + problem);
-    }
-    steps_.push_back(script["steps"][i]);
-  }
+  const std::vector<std::string> problems = play_script_problems(script);
   if (!problems.empty()) {
-    throw app::InputError(detail::join_lines(problems));
+    std::vector<std::string> lines;
+    for (const std::string& problem : problems) {
+      lines.push_back("  " + problem);
+    }
+    throw app::InputError(detail::join_lines(lines));
+  }
+  for (const json& step : script["steps"]) {
+    steps_.push_back(step);
   }
   // ImGui sizes tables and child windows from what the previous frames held.
   queue_.assign(3, FrameInput{});
 }
 
 void InputPlayer::fail(std::size_t index, const std::string& why) {
-  failure_ = "step " + std::to_string(index + 1) + " (" + steps_[index].dump() + "): " + why;
+  failure_ = "step " + std::to_string(index + 1) + " (" + detail::cut(steps_[index].dump(), 200) +
+             "): " + why;
 }
 
 int InputPlayer::exit_status() const {
@@ -637,7 +435,7 @@ bool InputPlayer::start_step(std::size_t index, ImGuiIO& io, Explorer& explorer)
 
 bool InputPlayer::before_new_frame(ImGuiIO& io, Explorer& explorer) {
   // The headless surface has no key map: give it the window's, so that chords read the same.
-  for (const KeyName& key : kNamedKeys) {
+  for (const KeyName& key : named_keys()) {
     if (key.imgui >= 0 && io.KeyMap[key.imgui] < 0) {
       io.KeyMap[key.imgui] = key.glfw;
     }

@@ -21,10 +21,6 @@ constexpr double kEdgeTolerance = 1e-10;
 // Below s = 1e-12 (about 2e6 folds) nothing is followed: the prediction there is held constant.
 constexpr double kLowestLogS = -27.631021115928547;  // ln 1e-12
 
-int fold_cap_for(const Measurement& m) {
-  return std::max(kCalibrationFoldCap, m.observed.n ? 4 * *m.observed.n : 0);
-}
-
 bool close(double x, double y) {
   return std::abs(x - y) <= 1e-9 * std::max(std::abs(x), std::abs(y));
 }
@@ -95,7 +91,7 @@ std::optional<RowTable> tabulate(const Measurement& m, const Parameters& base, d
   p.model.stress_exponent_p = 1.0;
   const double g = stress_ratio(1.0, p.fabric.youngs_modulus_MPa, p.fabric.thickness_mm,
                                 p.fabric.weight_N_per_mm2, p.hanging.height_mm, span_mm(p));
-  const int cap = fold_cap_for(m);
+  const int cap = calibration_fold_cap(m.observed.n);
   auto predict = [&](double x) {
     set_stiffness_constant_K(p, std::exp(x) / g);
     return prediction_of(solve(p), cap);
@@ -463,6 +459,12 @@ bool parse_fit_constants(std::string_view s, FitConstants& out) {
   return false;
 }
 
+int calibration_fold_cap(std::optional<int> observed_n) {
+  // In 64 bits and clamped to the solver's own cap, so that no observed n can overflow it.
+  const std::int64_t wanted = observed_n ? 4 * static_cast<std::int64_t>(*observed_n) : 0;
+  return static_cast<int>(std::clamp<std::int64_t>(wanted, kCalibrationFoldCap, kMaxWrinkles));
+}
+
 RowPrediction prediction_of(const Solution& s, int fold_cap) {
   RowPrediction p;
   if (s.n > fold_cap || s.n_capped) {
@@ -563,6 +565,15 @@ CalibrationReport calibrate(const MeasurementSet& data, const Parameters& base,
   for (std::size_t i = 0; i < data.rows.size(); ++i) {
     if (data.rows[i].role == MeasurementRole::fit) {
       fit_rows.push_back(i);
+    }
+  }
+  // Rows built in code (the explorer's clicked folds) skip the file reader's bounds: the same
+  // bound here keeps one implausible n from making the fit follow millions of folds.
+  for (const Measurement& m : data.rows) {
+    if (m.observed.n && (*m.observed.n < 0 || *m.observed.n > kMaxObservedFolds)) {
+      throw CalibrationError(data.origin + ": row " + std::to_string(m.row) +
+                             ", column n: " + std::to_string(*m.observed.n) + " folds: at most " +
+                             std::to_string(kMaxObservedFolds) + " can be observed on one cloth");
     }
   }
   report.fit_row_count = static_cast<int>(fit_rows.size());

@@ -27,6 +27,9 @@ bool parse_fit_constants(std::string_view s, FitConstants& out);
 // the calibration follows n up to a cap (kCalibrationFoldCap, or 4 times the observed n if more)
 // and scores anything beyond it as a miss without solving it.
 inline constexpr int kCalibrationFoldCap = 100;
+// The cap for a row that observed `observed_n` folds: kCalibrationFoldCap, or 4 times the
+// observed n if more, never above the solver's kMaxWrinkles.
+int calibration_fold_cap(std::optional<int> observed_n);
 struct RowPrediction {
   int n = 0;
   double z_max_mm = 0.0;

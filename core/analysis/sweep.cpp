@@ -115,6 +115,7 @@ std::vector<SweepPoint> sweep(const Parameters& base, const SweepAxis& axis) {
     point.Q = s.Q;
     point.z_max_mm = s.z_max_mm;
     point.regime = s.regime;
+    point.n_capped = s.n_capped;
   }
   return points;
 }
@@ -220,6 +221,7 @@ void map_rows(const Parameters& base, const SweepAxis& x, const SweepAxis& y, in
       cell.n = s.n;
       cell.z_max_mm = static_cast<float>(s.z_max_mm);
       cell.regime = s.regime;
+      cell.n_capped = s.n_capped;
     }
   }
 }

@@ -41,6 +41,7 @@ struct SweepPoint {
   double Q = 1.0;
   double z_max_mm = 0.0;
   Regime regime = Regime::no_slack;
+  bool n_capped = false;  // eq. 10 asked for more than kMaxWrinkles folds: n is that cap
 };
 
 std::vector<SweepPoint> sweep(const Parameters& base, const SweepAxis& axis);
@@ -71,6 +72,7 @@ struct MapCell {
   int n = 0;
   float z_max_mm = 0.0f;
   Regime regime = Regime::no_slack;
+  bool n_capped = false;  // n is kMaxWrinkles, the cap, not eq. 10's count
 };
 
 // Rows [row_begin, row_end) of a map over two axes, row-major (x fastest): out has x.steps cells

@@ -160,6 +160,11 @@ class RowReader {
       problem(column, "text must be one line");
       return "";
     }
+    // The text goes on into JSON reports and files, which hold UTF-8 only.
+    if (!detail::is_valid_utf8(c.text)) {
+      problem(column, "'" + detail::cut(c.text) + "' is not UTF-8 text (save the file as UTF-8)");
+      return "";
+    }
     return c.text;
   }
 
@@ -192,6 +197,10 @@ class RowReader {
       m.observed.n = *n;
       if (*n < 0) {
         problem(kCount, "a number of wrinkles is >= 0");
+      } else if (*n > kMaxObservedFolds) {
+        problem(kCount, std::to_string(*n) + " folds: at most " +
+                            std::to_string(kMaxObservedFolds) +
+                            " can be observed on one cloth (a typing error?)");
       }
     }
     if (const std::optional<double> z = number(kDepth, false)) {
@@ -207,6 +216,10 @@ class RowReader {
         problem(kRatio, shortest_number(*Q) +
                             " must be > 1: a ratio of consecutive amplitudes (leave out a "
                             "misprint)");
+      } else if (*Q > kMaxObservedRatio) {
+        problem(kRatio, shortest_number(*Q) + " must be at most " +
+                            shortest_number(kMaxObservedRatio) +
+                            ": folds that far apart in depth are not a series of folds");
       }
     }
     if (problems_.size() == before_observed && !m.observed.n && !m.observed.z_max_mm &&
@@ -215,6 +228,13 @@ class RowReader {
     }
     if (all_given) {
       m.inputs = given;
+      const double half_length = 0.5 * given.hanging.length_mm;
+      if (m.observed.z_max_mm && *m.observed.z_max_mm > 0.0 && *m.observed.z_max_mm > half_length) {
+        problem(kDepth,
+                shortest_number(*m.observed.z_max_mm) +
+                    " is deeper than half the upper edge, L/2 = " + shortest_number(half_length) +
+                    " mm, which no fold of this cloth can reach");
+      }
       // The model's own ranges, with its reasons, for the inputs a row sets.
       for (const ValidationIssue& issue : validate(given)) {
         if (is_row_input(issue.field)) {

@@ -18,6 +18,14 @@ namespace foldlab {
 
 inline constexpr int kMeasurementsFormatVersion = 1;
 
+// The plausible observations a row may give; beyond them a value is a typing error (a unit or a
+// few digits off), not a measurement. n: `foldlab measure` takes at most 1000 depths, more folds
+// than any photo shows, and a calibration follows n to 4 times the observed n, which above this
+// would take minutes per row. Q: consecutive folds 100 times apart no longer look like a series
+// of folds. z_max: no point of the held upper edge lies further than L/2 from its supports.
+inline constexpr int kMaxObservedFolds = 1000;
+inline constexpr double kMaxObservedRatio = 100.0;
+
 // `fit` rows are what a calibration fits; `check` rows are never fitted and are always reported as
 // held out (the paper's Fig. 4, whose d is assumed, is one).
 enum class MeasurementRole { fit, check };
@@ -51,7 +59,8 @@ class MeasurementError : public std::runtime_error {
 
 // The columns of the CSV header and the keys of a JSON row, in the order the writers use.
 // Required: t_mm, E_MPa, w_N_per_mm2, h_mm, L_mm, d_mm. Optional: name, group, role (fit |
-// check), shape, and the observations n, z_max_mm, Q (at least one per row).
+// check), shape, and the observations n in [0, kMaxObservedFolds], z_max_mm in (0, L/2], Q in
+// (1, kMaxObservedRatio] (at least one per row).
 const std::vector<std::string_view>& measurement_columns();
 
 // CSV: one header line naming the columns (any order), then one row per line; fields may be

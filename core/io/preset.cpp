@@ -173,23 +173,56 @@ void read_section(Reader& r, const json& j, const std::string& section, Paramete
   }
 }
 
-// [[K, p], ...] with K > 0 and p > 0.
+// A stored K and p go through the same input table as typed ones: K as the c it stands for at the
+// preset's Poisson ratio, p through p's own row. Returns false after naming what is out of range.
+bool check_constants(Reader& r, const std::string& K_pointer, const std::string& p_pointer,
+                     const Eq7Constants& k, double nu) {
+  const InputSpec& c_row = *find_input("c");
+  const InputSpec& p_row = *find_input("p");
+  const double c = k.K * (1.0 - nu * nu);
+  bool ok = true;
+  if (!c_row.valid.contains(c)) {
+    r.problem(K_pointer, "K = " + detail::shortest_number(k.K) +
+                             " is c = " + detail::shortest_number(c) +
+                             " at nu = " + detail::shortest_number(nu) + ", outside c's range " +
+                             c_row.valid.text() + ": " + std::string(c_row.why));
+    ok = false;
+  }
+  if (!p_row.valid.contains(k.p)) {
+    r.problem(p_pointer, "p = " + detail::shortest_number(k.p) + " is outside " +
+                             p_row.valid.text() + ": " + std::string(p_row.why));
+    ok = false;
+  }
+  return ok;
+}
+
+// [[K, p], ...], each in the input table's ranges, at most kMaxCalibrationEntries of them.
 std::vector<Eq7Constants> read_constants_list(Reader& r, const json& list,
-                                              const std::string& pointer) {
+                                              const std::string& pointer, double nu) {
   std::vector<Eq7Constants> out;
   if (!list.is_array()) {
     r.problem(pointer, "expected an array of [K, p] pairs, got " + describe_json(list));
     return out;
   }
+  // Refused before any entry is read: every stored entry is evaluated at every solve.
+  if (list.size() > kMaxCalibrationEntries) {
+    r.problem(pointer + "/" + std::to_string(kMaxCalibrationEntries),
+              std::to_string(list.size()) + " entries, at most " +
+                  std::to_string(kMaxCalibrationEntries) + " are allowed");
+    return out;
+  }
   for (std::size_t i = 0; i < list.size(); ++i) {
     const json& pair = list[i];
+    const std::string at = pointer + "/" + std::to_string(i);
     if (!pair.is_array() || pair.size() != 2 || !pair[0].is_number() || !pair[1].is_number() ||
         !(pair[0].get<double>() > 0.0) || !(pair[1].get<double>() > 0.0)) {
-      r.problem(pointer + "/" + std::to_string(i),
-                "expected [K, p] with K > 0 and p > 0, got " + describe_json(pair));
+      r.problem(at, "expected [K, p] with K > 0 and p > 0, got " + describe_json(pair));
       continue;
     }
-    out.push_back({pair[0].get<double>(), pair[1].get<double>()});
+    const Eq7Constants k{pair[0].get<double>(), pair[1].get<double>()};
+    if (check_constants(r, at, at, k, nu)) {
+      out.push_back(k);
+    }
   }
   return out;
 }
@@ -201,6 +234,11 @@ std::vector<HeldOutResidual> read_residuals(Reader& r, const json& list,
   if (!list.is_array()) {
     r.problem(pointer,
               "expected an array of [n, ln z_max, ln Q] residuals, got " + describe_json(list));
+    return out;
+  }
+  if (list.size() > kMaxCalibrationEntries) {
+    r.problem(pointer, "holds " + std::to_string(list.size()) + " residuals, above the limit of " +
+                           std::to_string(kMaxCalibrationEntries));
     return out;
   }
   for (std::size_t i = 0; i < list.size(); ++i) {
@@ -225,7 +263,7 @@ std::vector<HeldOutResidual> read_residuals(Reader& r, const json& list,
   return out;
 }
 
-std::optional<CalibrationRecord> read_calibration(Reader& r, const json& c,
+std::optional<CalibrationRecord> read_calibration(Reader& r, const json& c, double nu,
                                                   std::vector<std::string>& problems) {
   const std::string at = "/calibration";
   if (!r.object(c, at,
@@ -239,7 +277,7 @@ std::optional<CalibrationRecord> read_calibration(Reader& r, const json& c,
   std::string method;
   r.text(c, at, "method", method, true);
   if (!method.empty() && !parse_method(method, record.method)) {
-    r.problem(at + "/method", "\"" + method + "\" is not one of: paper, exact");
+    r.problem(at + "/method", "\"" + detail::cut(method) + "\" is not one of: paper, exact");
   }
   std::string law;
   r.text(c, at, "law", law, false);
@@ -249,11 +287,14 @@ std::optional<CalibrationRecord> read_calibration(Reader& r, const json& c,
   r.number(c, at, "K", record.fitted.K, true);
   r.number(c, at, "p", record.fitted.p, true);
   r.integer(c, at, "fit_rows", record.fit_rows);
+  if (record.fit_rows < 0) {
+    r.problem(at + "/fit_rows", "a number of rows is >= 0");
+  }
   if (c.contains("equally_good")) {
-    record.equally_good = read_constants_list(r, c.at("equally_good"), at + "/equally_good");
+    record.equally_good = read_constants_list(r, c.at("equally_good"), at + "/equally_good", nu);
   }
   if (c.contains("leave_one_out")) {
-    record.leave_one_out = read_constants_list(r, c.at("leave_one_out"), at + "/leave_one_out");
+    record.leave_one_out = read_constants_list(r, c.at("leave_one_out"), at + "/leave_one_out", nu);
   }
   if (c.contains("residuals")) {
     record.residuals = read_residuals(r, c.at("residuals"), at + "/residuals");
@@ -266,6 +307,8 @@ std::optional<CalibrationRecord> read_calibration(Reader& r, const json& c,
   r.text(c, at, "coverage", record.coverage, false);
   if (problems.size() == before && !(record.fitted.K > 0.0 && record.fitted.p > 0.0)) {
     r.problem(at, "K and p must be > 0");
+  } else if (problems.size() == before) {
+    check_constants(r, at + "/K", at + "/p", record.fitted, nu);
   }
   return problems.size() == before ? std::optional(record) : std::nullopt;
 }
@@ -334,7 +377,7 @@ Preset preset_from_json(const json& j, const std::string& origin) {
     }
   }
   if (j.contains("calibration")) {
-    preset.calibration = read_calibration(r, j.at("calibration"), problems);
+    preset.calibration = read_calibration(r, j.at("calibration"), p.fabric.poisson_ratio, problems);
   }
   // Range problems too, except for a key that already has one: its value was not read, so the
   // range check would be about the default standing in for it.
@@ -448,8 +491,12 @@ void save_preset(const Preset& preset, const std::filesystem::path& path) {
   if (const auto issues = validate(preset.parameters); !issues.empty()) {
     throw PresetError(path.string() + ": not saved: " + format_issues(issues));
   }
+  const json j = preset_to_json(preset);
+  // A file that load_preset would refuse (a calibration list above its cap, constants out of
+  // range) is not written: what is saved must open again.
+  (void)preset_from_json(j, path.string() + " (not saved)");
   // A WriteError stays one: a file that cannot be written is not bad input.
-  write_file_atomically(path, preset_to_json(preset).dump(2) + "\n");
+  write_file_atomically(path, j.dump(2) + "\n");
 }
 
 const Preset& default_preset() {

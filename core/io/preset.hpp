@@ -22,6 +22,12 @@ struct PublishedResult {
   std::optional<double> Q;
 };
 
+// The most entries a stored calibration's equally_good or leave_one_out list may hold. Every entry
+// is solved again at each solve (about 40 ms each), and a fit writes two equally-good ends and one
+// leave-one-out fit per row of a small data set, so 64 leaves room for real records and keeps a
+// preset's solve under a few seconds.
+inline constexpr std::size_t kMaxCalibrationEntries = 64;
+
 // Where a preset's eq. 7 constants come from, with what else fitted the same data as well: the
 // prediction ranges (core/analysis/uncertainty.hpp) evaluate these stored constants rather than
 // calibrating again at every solve.

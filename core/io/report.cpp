@@ -140,7 +140,8 @@ std::string solution_table(const Solution& s, const Parameters& p, const std::st
     out += "  " + message + "\n";
   }
   out += line("number of wrinkles", "n", s.n, "", "%.0f",
-              in_range(&PredictionRange::n_min, &PredictionRange::n_max, "%.0f"));
+              in_range(&PredictionRange::n_min, &PredictionRange::n_max, "%.0f") +
+                  (s.n_capped ? " (capped: eq. 10 asks for more)" : ""));
   out += line("amplitude ratio (a_0/a_n)^(1/n)", "Q", s.Q, "", "%.6g",
               in_range(&PredictionRange::Q_min, &PredictionRange::Q_max, "%.4f"));
   if (s.Q7) {

@@ -25,17 +25,80 @@ inline std::string shortest_number(double value) {
   return std::string(buffer, result.ptr);
 }
 
-// Text echoed in a message, cut to about `max_bytes` with "…" so that a 5 MB value stays a line.
-// Never cuts inside a UTF-8 character.
+// The length of the well-formed UTF-8 character starting at text[i] (1 to 4 bytes), or 0 when the
+// bytes there are not one (a stray continuation byte, a sequence cut short, an overlong form, a
+// surrogate or a code point above U+10FFFF).
+inline std::size_t utf8_length_at(std::string_view text, std::size_t i) {
+  const auto byte = [&](std::size_t k) { return static_cast<unsigned char>(text[k]); };
+  const unsigned char lead = byte(i);
+  if (lead < 0x80) {
+    return 1;
+  }
+  std::size_t length = 0;
+  unsigned char lo = 0x80;  // the second byte's range, narrowed to exclude overlongs etc.
+  unsigned char hi = 0xBF;
+  if (lead >= 0xC2 && lead <= 0xDF) {
+    length = 2;
+  } else if (lead >= 0xE0 && lead <= 0xEF) {
+    length = 3;
+    lo = lead == 0xE0 ? 0xA0 : 0x80;
+    hi = lead == 0xED ? 0x9F : 0xBF;
+  } else if (lead >= 0xF0 && lead <= 0xF4) {
+    length = 4;
+    lo = lead == 0xF0 ? 0x90 : 0x80;
+    hi = lead == 0xF4 ? 0x8F : 0xBF;
+  } else {
+    return 0;
+  }
+  if (i + length > text.size() || byte(i + 1) < lo || byte(i + 1) > hi) {
+    return 0;
+  }
+  for (std::size_t k = 2; k < length; ++k) {
+    if ((byte(i + k) & 0xC0) != 0x80) {
+      return 0;
+    }
+  }
+  return length;
+}
+
+inline bool is_valid_utf8(std::string_view text) {
+  for (std::size_t i = 0; i < text.size();) {
+    const std::size_t length = utf8_length_at(text, i);
+    if (length == 0) {
+      return false;
+    }
+    i += length;
+  }
+  return true;
+}
+
+// Text echoed in a message, as every message that quotes input shows it: control characters
+// (C0, DEL, C1) and bytes that are not UTF-8 written as \xNN, so that a name or value cannot move
+// the cursor, recolour or clear the terminal or break the line; then cut to about `max_bytes`
+// with "…" so that a 5 MB value stays a line. Never cuts inside a UTF-8 character.
 inline std::string cut(std::string_view text, std::size_t max_bytes = 60) {
-  if (text.size() <= max_bytes) {
-    return std::string(text);
+  static constexpr char kHex[] = "0123456789abcdef";
+  std::string out;
+  for (std::size_t i = 0; i < text.size();) {
+    const std::size_t length = utf8_length_at(text, i);
+    const auto lead = static_cast<unsigned char>(text[i]);
+    const bool c1 = length == 2 && lead == 0xC2 && static_cast<unsigned char>(text[i + 1]) < 0xA0;
+    std::string piece;
+    if (length == 0 || lead < 0x20 || lead == 0x7F || c1) {
+      for (std::size_t k = 0; k < std::max<std::size_t>(length, 1); ++k) {
+        const auto b = static_cast<unsigned char>(text[i + k]);
+        piece += {'\\', 'x', kHex[b >> 4], kHex[b & 0xF]};
+      }
+    } else {
+      piece = std::string(text.substr(i, length));
+    }
+    if (out.size() + piece.size() > max_bytes) {
+      return out + "…";
+    }
+    out += piece;
+    i += std::max<std::size_t>(length, 1);
   }
-  std::size_t end = max_bytes;
-  while (end > 0 && (static_cast<unsigned char>(text[end]) & 0xC0) == 0x80) {
-    --end;
-  }
-  return std::string(text.substr(0, end)) + "…";
+  return out;
 }
 
 // `value` itself when finite. A writer calls this on every number it puts out: an infinity or NaN

@@ -340,7 +340,7 @@ std::string stress_table(const StressReport& r) {
   count_row("NaN or inf in any output", r.paper.non_finite, r.exact.non_finite);
   count_row("hangs (solve > 1 s)", r.paper.hangs, r.exact.hangs);
   count_row("iteration cap hits", r.paper.iteration_cap_hits, r.exact.iteration_cap_hits);
-  count_row("n capped at 1e7", r.paper.n_capped, r.exact.n_capped);
+  count_row("n capped at " + std::to_string(kMaxWrinkles), r.paper.n_capped, r.exact.n_capped);
   count_row("largest n", r.paper.max_n, r.exact.max_n);
   number_row("max |residual| eq. 8", r.paper.max_residual_length, r.exact.max_residual_length);
   number_row("max |residual| eq. 9", r.paper.max_residual_height, r.exact.max_residual_height);

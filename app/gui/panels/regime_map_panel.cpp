@@ -414,10 +414,11 @@ void RegimeMapPanel::hover_and_click(const Placement& at, Document& document, bo
   const double y_value = job.y.value(j);
   const MapCell& cell = job.cells[static_cast<std::size_t>(j) * resolution_ + i];
   if (job.row_done[static_cast<std::size_t>(j)].load()) {
-    ImGui::SetTooltip("%s = %.4g, %s = %.4g\n%s\nn = %d, z_max = %.1f mm", job.x.key.c_str(),
+    ImGui::SetTooltip("%s = %.4g, %s = %.4g\n%s\nn = %d%s, z_max = %.1f mm", job.x.key.c_str(),
                       x_value, job.y.key.c_str(), y_value,
                       cell.valid ? std::string(to_string(cell.regime)).c_str() : "invalid inputs",
-                      cell.n, cell.z_max_mm);
+                      cell.n, cell.n_capped ? " (capped: eq. 10 asks for more)" : "",
+                      cell.z_max_mm);
   }
   if (clicked) {
     // Both axes at once: one undo step brings back the point before the click.

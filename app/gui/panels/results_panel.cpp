@@ -79,7 +79,8 @@ void ResultsPanel::draw(PanelContext& context) {
       return range ? value + range_text(lo, hi, format) : value;
     };
     row("number of wrinkles", "n",
-        ranged(fmt("%.0f", s.n), range ? range->n_min : 0, range ? range->n_max : 0, "%.0f"));
+        ranged(fmt("%.0f", s.n), range ? range->n_min : 0, range ? range->n_max : 0, "%.0f") +
+            (s.n_capped ? " (capped: eq. 10 asks for more)" : ""));
     row("amplitude ratio", "Q",
         ranged(fmt("%.4f", s.Q), range ? range->Q_min : 0, range ? range->Q_max : 0, "%.4f"));
     if (s.count_rule && s.count_rule->spacing == FoldSpacing::even) {

@@ -1,0 +1,45 @@
+// The `--play` script format (docs/cli.md): its key chords and window sizes, and the check of a
+// whole script before any frame runs. Apart from the input player, so that the check runs (and is
+// fuzzed) with no window, no ImGui context and no explorer.
+#pragma once
+
+#include <optional>
+#include <span>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+namespace foldlab::gui {
+
+// Key names of chords, as GLFW numbers them (the window's backend indexes io.KeysDown so; the
+// headless surface is given the same map). `imgui` is the named key ImGui itself reads, if any.
+struct KeyName {
+  const char* name;
+  int glfw;
+  int imgui;
+};
+std::span<const KeyName> named_keys();
+inline constexpr int kLeftShift = 340;
+inline constexpr int kLeftCtrl = 341;
+inline constexpr int kLeftAlt = 342;
+
+struct Chord {
+  bool ctrl = false;
+  bool shift = false;
+  bool alt = false;
+  int glfw = -1;
+  int imgui = -1;
+};
+
+// "ctrl+shift+z", "escape", "plus": nullopt when it is not a chord.
+std::optional<Chord> parse_chord(std::string text);
+// "WxH" with 3 or 4 digits each.
+std::optional<std::pair<int, int>> parse_size(const std::string& text);
+
+// Every problem of a script, each "step N: ..." or about the whole; empty when it can run. Text
+// from the script is echoed through detail::cut.
+std::vector<std::string> play_script_problems(const nlohmann::json& script);
+
+}  // namespace foldlab::gui
