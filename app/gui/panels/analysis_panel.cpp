@@ -87,8 +87,8 @@ void EquationsTab::draw(Document& document) {
   }
   if (even) {
     ImGui::TextWrapped(
-        "lambda = l (%s)^(1/4) = %.5g × %.5g^(1/4) = %.2f mm: the folds sit lambda "
-        "apart down the centre fibre",
+        "lambda = l (%s)^(1/4) = %.5g × %.5g^(1/4) = %.2f mm: n counts the folds that fit "
+        "lambda apart down the centre fibre; eq. 5 then lays them out",
         exponent == 1.0 ? "s" : "s^p", s.span_mm, s_used, s.count_rule->step);
   } else if (s.Q7) {
     const double q = *s.Q7;
