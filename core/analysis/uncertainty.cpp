@@ -123,7 +123,7 @@ ModelStanding model_standing(const Parameters& p, const std::optional<Calibratio
   const bool applies = record && record_applies(p, *record);
   if (applies) {
     out.label = "calibrated on " + record->calibrated_on + " (" + constants + ", " +
-                std::to_string(record->fit_rows) + " rows, " +
+                std::to_string(record->fit_rows) + (record->fit_rows == 1 ? " row, " : " rows, ") +
                 std::string(to_string(record->method)) + " method)";
   } else if (p.model.law != WrinkleLawKind::conci) {
     const WrinkleLaw& law = wrinkle_law(p.model.law);
