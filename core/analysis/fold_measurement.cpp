@@ -10,11 +10,6 @@ namespace foldlab {
 
 using detail::shortest_number;
 
-namespace {
-// More than any photo shows, and below where calibrating on the row would take minutes.
-constexpr std::size_t kMaxMeasuredFolds = 1000;
-}  // namespace
-
 FoldMeasurement measure_folds(const std::vector<double>& depths_mm) {
   const double min_depth_mm = find_input("t")->valid.lo;
   const double max_depth_mm = find_input("h")->valid.hi;
@@ -23,9 +18,10 @@ FoldMeasurement measure_folds(const std::vector<double>& depths_mm) {
         "depths", "need at least two fold depths (the lower boundary and the upper edge), got " +
                       std::to_string(depths_mm.size()));
   }
-  if (depths_mm.size() > kMaxMeasuredFolds) {
+  // The limit a measurements file holds an observed n to, so that what is measured can be kept.
+  if (depths_mm.size() > static_cast<std::size_t>(kMaxObservedFolds)) {
     throw FoldMeasurementError("depths", std::to_string(depths_mm.size()) + " depths: at most " +
-                                             std::to_string(kMaxMeasuredFolds) +
+                                             std::to_string(kMaxObservedFolds) +
                                              " folds can be measured on one cloth");
   }
   for (std::size_t i = 0; i < depths_mm.size(); ++i) {
