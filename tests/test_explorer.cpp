@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <imgui.h>
+#include <imgui_internal.h>  // which windows scroll sideways
 
 #include <algorithm>
 #include <chrono>
@@ -196,6 +197,106 @@ class ExplorerTest : public foldlab::testing::TempDirTest {
 
   std::uint64_t evaluations(Stage stage) { return explorer_->scene().stats(stage).evaluations; }
 
+  // The tiled panel `key`'s rectangle in the last frame (a zero one when it is not shown).
+  PanelRect rect_of(const std::string& key) const {
+    for (const auto& [name, rect] : explorer_->panel_rects()) {
+      if (name == key) {
+        return rect;
+      }
+    }
+    return PanelRect{};
+  }
+
+  // Scrolls the tiled panel `key` down (up when negative) by `notches` of the wheel, turned over
+  // its scrollbar (not over a plot, which takes the wheel to zoom).
+  void scroll_panel(const std::string& key, int notches) {
+    const PanelRect r = rect_of(key);
+    ImGuiIO& io = ImGui::GetIO();
+    io.MousePos = ImVec2(r.pos.x + r.size.x - 0.5f * ImGui::GetStyle().ScrollbarSize,
+                         r.pos.y + 0.5f * r.size.y);
+    for (int i = 0; i < std::abs(notches); ++i) {
+      io.MouseWheel = notches > 0 ? -1.0f : 1.0f;
+      frame();
+      io.MouseWheel = 0.0f;
+      frame();
+    }
+  }
+
+  // Glyphs of the last frame inside [min, max) that stick out of the clip rectangle they are
+  // drawn with: text cut off by its table column or window. (ImGui leaves out a glyph wholly
+  // outside; one across the edge is drawn and cut by the scissor.)
+  static std::vector<std::string> cut_glyphs(ImVec2 min, ImVec2 max) {
+    const ImDrawData& data = *ImGui::GetDrawData();
+    const ImFont* font = ImGui::GetFont();
+    // A table or child that scrolls sideways cuts at its edges what the scrollbar reaches.
+    std::vector<float> scroll_edges;
+    for (const ImGuiWindow* window : ImGui::GetCurrentContext()->Windows) {
+      if (window->Active && window->ScrollMax.x > 0.0f) {
+        scroll_edges.push_back(window->InnerClipRect.Min.x);
+        scroll_edges.push_back(window->InnerClipRect.Max.x);
+      }
+    }
+    // A tab bar too narrow for its tabs scrolls them with its arrows.
+    std::vector<ImRect> scrolling_tabs;
+    ImGuiContext& context = *ImGui::GetCurrentContext();
+    for (int i = 0; i < context.TabBars.GetMapSize(); ++i) {
+      const ImGuiTabBar* bar = context.TabBars.TryGetMapData(i);
+      if (bar != nullptr && bar->WidthAllTabs > bar->BarRect.GetWidth()) {
+        scrolling_tabs.push_back(bar->BarRect);
+      }
+    }
+    const auto at_scroll_edge = [&](const ImVec4& clip) {
+      return std::any_of(scroll_edges.begin(), scroll_edges.end(),
+                         [&](float edge) {
+                           return std::abs(edge - clip.x) <= 1.0f ||
+                                  std::abs(edge - clip.z) <= 1.0f;
+                         }) ||
+             std::any_of(scrolling_tabs.begin(), scrolling_tabs.end(), [&](const ImRect& bar) {
+               return clip.y >= bar.Min.y - 1.0f && clip.w <= bar.Max.y + 1.0f;
+             });
+    };
+    std::vector<std::string> cut;
+    for (int l = 0; l < data.CmdListsCount; ++l) {
+      const ImDrawList& list = *data.CmdLists[l];
+      for (const ImDrawCmd& cmd : list.CmdBuffer) {
+        if (cmd.ElemCount == 0 || cmd.UserCallback != nullptr) {
+          continue;
+        }
+        unsigned first = ~0u;
+        unsigned last = 0;
+        for (unsigned k = 0; k < cmd.ElemCount; ++k) {
+          const unsigned v = cmd.VtxOffset + list.IdxBuffer[static_cast<int>(cmd.IdxOffset + k)];
+          first = std::min(first, v);
+          last = std::max(last, v);
+        }
+        for (unsigned i = first; i + 3 <= last; ++i) {
+          const ImDrawVert* v = &list.VtxBuffer[static_cast<int>(i)];
+          for (const ImFontGlyph& g : font->Glyphs) {
+            if (!g.Visible || v[0].uv.x != g.U0 || v[0].uv.y != g.V0 || v[2].uv.x != g.U1 ||
+                v[2].uv.y != g.V1) {
+              continue;
+            }
+            const bool inside = v[0].pos.x >= min.x && v[0].pos.y >= min.y && v[0].pos.x < max.x &&
+                                v[0].pos.y < max.y;
+            const bool sticks_out =
+                v[2].pos.x > cmd.ClipRect.z + 0.5f || v[0].pos.x < cmd.ClipRect.x - 0.5f;
+            // Lines cut at the panel's foot or head scroll into view: only sideways cuts count.
+            const bool shown = v[2].pos.y > cmd.ClipRect.y && v[0].pos.y < cmd.ClipRect.w;
+            if (inside && sticks_out && shown && !at_scroll_edge(cmd.ClipRect)) {
+              std::string glyph;
+              append_utf8(glyph, g.Codepoint);
+              cut.push_back(glyph + " at " + std::to_string(v[0].pos.x) + "," +
+                            std::to_string(v[0].pos.y));
+            }
+            i += 3;
+            break;
+          }
+        }
+      }
+    }
+    return cut;
+  }
+
   std::string last_text_;
   std::vector<ImVec2> last_positions_;  // where each byte of last_text_ was drawn
   ImGuiContext* context_ = nullptr;
@@ -346,7 +447,8 @@ TEST_F(ExplorerTest, AnalysisPanelsSweepThePapersInputsByKey) {
   EXPECT_EQ(explorer_->analysis().regime_map().y_key(), "w");
 
   ASSERT_EQ(explorer_->set_view("sweep", "table1"), std::nullopt);
-  frame();  // a tab selected now shows from the next frame on
+  frame();                       // a tab selected now shows from the next frame on
+  scroll_panel("analysis", 10);  // to the last plot, which has the x axis's title
   std::string text = frame();
   EXPECT_EQ(explorer_->analysis().sweep().key(), "h");
   EXPECT_NE(text.find("h (mm)"), std::string::npos) << "the sweep's x axis\n" << text;
@@ -364,6 +466,7 @@ TEST_F(ExplorerTest, AnalysisPanelsSweepThePapersInputsByKey) {
   ASSERT_EQ(xs.size(), 3u);
   EXPECT_DOUBLE_EQ(xs[0], 10e-7);
   EXPECT_DOUBLE_EQ(xs[2], 54e-7);
+  scroll_panel("analysis", 10);
   EXPECT_NE(frame().find("w (N/mm²)"), std::string::npos) << "the sweep's x axis";
 
   open_explorer("map");
@@ -1177,8 +1280,8 @@ TEST_F(ExplorerTest, PanelsRefitTheWindowAsItGrowsAndShrinks) {
   }
 }
 
-// Widths in font sizes: at 200 % the parameters column is twice as wide (it is 25 font sizes
-// at 1024 px), and the whole window is still tiled.
+// Widths in font sizes: the parameters column is 25 font sizes at 1024 px; at 200 % it would be
+// twice as wide but stops at 40 % of the window, and the whole window is still tiled.
 TEST_F(ExplorerTest, TheLayoutsWidthsFollowTheUiScale) {
   ImGuiIO& io = ImGui::GetIO();
   io.DisplaySize = ImVec2(1024, 640);
@@ -1197,8 +1300,10 @@ TEST_F(ExplorerTest, TheLayoutsWidthsFollowTheUiScale) {
   frame();
   frame();
   EXPECT_FLOAT_EQ(ImGui::GetFontSize(), 26.0f);
-  // 50 font sizes would be 1300 px: the column stops at 45 % of the window, 460 px.
-  EXPECT_FLOAT_EQ(width_of("parameters"), std::floor(0.45f * 1024.0f));
+  // 25 font sizes would be 650 px: the column stops at 40 % of the window, 409 px (short of the
+  // 20 font sizes that hold the longest label with a short slider), so that the views keep the
+  // rest.
+  EXPECT_FLOAT_EQ(width_of("parameters"), std::floor(0.40f * 1024.0f));
   expect_tiles_fill(explorer_->panel_rects(), io.DisplaySize, ImGui::GetFrameHeight());
   io.DisplaySize = ImVec2(2560, 1440);
   frame();
@@ -1219,6 +1324,227 @@ TEST_F(ExplorerTest, TheFoldPlotKeepsItsSizeAtALargeUiScale) {
   const PlotView& view = explorer_->fold_plot().plot_view();
   EXPECT_GT(view.max.y - view.min.y, 5.0f * ImGui::GetFontSize());
   EXPECT_GE(view.legend_min.y, view.max.y);  // the legend below the data, not over it
+}
+
+// At 200 % the views keep their share of the window: the fold plot's data and the 3D panel are
+// each a sizeable part of it, on a laptop and on a projector's 1920 x 1080.
+TEST_F(ExplorerTest, AtTwiceTheTextSizeThePlotsKeepTheirShareOfTheWindow) {
+  open_explorer("equations", kDejaVuSans);
+  ImGuiIO& io = ImGui::GetIO();
+  ASSERT_EQ(explorer_->set_view("scale", "200"), std::nullopt);
+  for (const ImVec2 size : {ImVec2(1280, 800), ImVec2(1920, 1080)}) {
+    SCOPED_TRACE(::testing::Message() << size.x << "x" << size.y);
+    io.DisplaySize = size;
+    for (int i = 0; i < 3; ++i) {
+      frame();
+    }
+    const double window = static_cast<double>(size.x) * size.y;
+    const PlotView& plot = explorer_->fold_plot().plot_view();
+    const double plot_share = (plot.max.x - plot.min.x) * (plot.max.y - plot.min.y) / window;
+    const PanelRect cloth = rect_of("cloth");
+    const double cloth_share = static_cast<double>(cloth.size.x) * cloth.size.y / window;
+    EXPECT_GT(plot_share, 0.03) << "the fold plot's data";
+    EXPECT_GT(cloth_share, 0.175) << "the 3D view's panel";
+    EXPECT_TRUE(explorer_->panels_fill_window());
+  }
+}
+
+// No number in Results or in the Method tab's table is cut off, from 100 % to 200 % and from
+// 1024 x 640 to 1920 x 1080: the columns are as wide as their text, the names wrap, and a range
+// goes under its value when the panel is narrow.
+TEST_F(ExplorerTest, ResultsAndTheMethodTableCutNoTextAtAnyScaleOrSize) {
+  open_explorer("method", kDejaVuSans);
+  explorer_->load_preset_file(kPresetsDir / "default.json");  // a preset with ranges
+  const Solution& s = explorer_->scene().solution();
+  const PredictionRange range =
+      *model_standing(explorer_->scene().parameters(), document().loaded().calibration).range;
+  const std::string z_max = detail::printf_string("%.2f", s.z_max_mm);
+  const std::string z_range =
+      detail::printf_string("(%.1f–%.1f)", range.z_max_min_mm, range.z_max_max_mm);
+  ImGuiIO& io = ImGui::GetIO();
+  for (const char* scale : {"100", "150", "200"}) {
+    for (const ImVec2 size : {ImVec2(1024, 640), ImVec2(1280, 800), ImVec2(1920, 1080)}) {
+      SCOPED_TRACE(::testing::Message() << scale << " % at " << size.x << "x" << size.y);
+      if (size.x == 1024.0f && std::string(scale) == "200") {
+        continue;  // Results is a few lines high there: present it instead
+      }
+      ASSERT_EQ(explorer_->set_view("scale", scale), std::nullopt);
+      io.DisplaySize = size;
+      for (int i = 0; i < 3; ++i) {
+        frame();
+      }
+      for (const char* panel : {"results", "analysis"}) {
+        const PanelRect r = rect_of(panel);
+        const ImVec2 max(r.pos.x + r.size.x, r.pos.y + r.size.y);
+        const std::vector<std::string> cut = cut_glyphs(r.pos, max);
+        EXPECT_TRUE(cut.empty()) << panel << ": " << cut.size() << " glyphs cut, first "
+                                 << (cut.empty() ? "" : cut.front());
+      }
+      // No header or tab shortened; the z_max row whole once Results scrolls to it.
+      EXPECT_EQ(last_text_.find("…"), std::string::npos) << "shortened\n" << last_text_;
+      bool z_shown = false;
+      for (int scroll = 0; scroll < 8 && !z_shown; ++scroll) {
+        std::string text = last_text_;
+        std::erase(text, ' ');
+        z_shown = text.find(z_max) != std::string::npos && text.find(z_range) != std::string::npos;
+        const PanelRect r = rect_of("results");
+        const std::vector<std::string> cut =
+            cut_glyphs(r.pos, ImVec2(r.pos.x + r.size.x, r.pos.y + r.size.y));
+        EXPECT_TRUE(cut.empty()) << "results: " << cut.size() << " glyphs cut, first "
+                                 << (cut.empty() ? "" : cut.front());
+        scroll_panel("results", 1);
+      }
+      EXPECT_TRUE(z_shown) << z_max << " " << z_range << "\n" << last_text_;
+      scroll_panel("results", -8);
+    }
+  }
+}
+
+// Each of the Sweep tab's three plots keeps a data area of a few lines at 150 % in a small
+// window: the panel scrolls instead of squeezing a plot to a few pixels.
+TEST_F(ExplorerTest, EachSweepPlotKeepsItsHeightAtALargeUiScale) {
+  open_explorer("sweep", kDejaVuSans);
+  ImGuiIO& io = ImGui::GetIO();
+  ASSERT_EQ(explorer_->set_view("scale", "150"), std::nullopt);
+  for (const ImVec2 size : {ImVec2(1280, 800), ImVec2(1024, 640)}) {
+    SCOPED_TRACE(::testing::Message() << size.x << "x" << size.y);
+    io.DisplaySize = size;
+    for (int i = 0; i < 3; ++i) {
+      frame();
+    }
+    // The panel scrolls (the wheel over its tabs, not over a plot, which it would zoom) to show
+    // each plot in turn.
+    const PanelRect analysis = rect_of("analysis");
+    bool seen[3] = {};
+    for (int scroll = 0; scroll < 12; ++scroll) {
+      for (int which = 0; which < 3; ++which) {
+        const PlotView& view = explorer_->analysis().sweep().plot_view(which);
+        if (view.max.y > analysis.pos.y && view.min.y < analysis.pos.y + analysis.size.y) {
+          seen[which] = true;
+          EXPECT_GE(view.max.y - view.min.y, 3.0f * ImGui::GetFontSize()) << "plot " << which;
+        }
+      }
+      scroll_panel("analysis", 1);
+    }
+    EXPECT_TRUE(seen[0] && seen[1] && seen[2]);
+  }
+}
+
+// The button at the right of a panel's title fills the window with that panel under a large
+// read-out of n, Q and z_max; Escape (or the menu bar's button) brings the tiles back. A
+// double-click on a title does the same as the button.
+TEST_F(ExplorerTest, APanelIsPresentedByItsTitleButtonAndEscapeReturnsToTheTiles) {
+  ImGuiIO& io = ImGui::GetIO();
+  const ImVec2 display = io.DisplaySize;
+  const float menu_height = ImGui::GetFrameHeight();
+  const float title_height = ImGui::GetFontSize() + 2.0f * ImGui::GetStyle().FramePadding.y;
+  const auto title_button = [&](const std::string& key) {
+    const PanelRect r = rect_of(key);
+    return ImVec2(r.pos.x + r.size.x - 0.5f * title_height, r.pos.y + 0.5f * title_height);
+  };
+  const auto expect_presented = [&](const std::string& key) {
+    const Rects rects = explorer_->panel_rects();
+    ASSERT_EQ(rects.size(), 1u) << "the other tiles are hidden";
+    EXPECT_EQ(rects[0].first, key);
+    const PanelRect& r = rects[0].second;
+    EXPECT_FLOAT_EQ(r.pos.x, 0.0f);
+    EXPECT_FLOAT_EQ(r.size.x, display.x);
+    EXPECT_FLOAT_EQ(r.pos.y + r.size.y, display.y);
+    // Under the menu bar and the read-out: most of the window.
+    EXPECT_GT(r.size.y, 0.85f * (display.y - menu_height));
+  };
+  click_at(title_button("fold_plot"));
+  expect_presented("fold_plot");
+  const Solution& s = explorer_->scene().solution();
+  // Drawn larger, its glyphs' offsets no longer read as one line of text: compare without
+  // spaces and line breaks.
+  std::string text = frame();
+  std::erase(text, ' ');
+  std::erase(text, '\n');
+  EXPECT_NE(text.find(detail::printf_string("n=%d", s.n)), std::string::npos) << text;
+  EXPECT_NE(text.find(detail::printf_string("z_max=%.2fmm", s.z_max_mm)), std::string::npos)
+      << text;
+  EXPECT_FALSE(explorer_->panels_fill_window());
+  press(kEscape);
+  frame();
+  expect_tiles_fill(explorer_->panel_rects(), display, menu_height);
+  EXPECT_TRUE(explorer_->automatic_layout());
+
+  // A double-click on the 3D view's title, then the menu bar's button back.
+  const PanelRect cloth = rect_of("cloth");
+  io.MousePos = ImVec2(cloth.pos.x + 0.3f * cloth.size.x, cloth.pos.y + 0.5f * title_height);
+  frame();
+  for (int i = 0; i < 2; ++i) {
+    io.MouseDown[0] = true;
+    frame();
+    io.MouseDown[0] = false;
+    frame();
+  }
+  frame();
+  expect_presented("cloth");
+  click("Back to the tiles (Esc)");
+  expect_tiles_fill(explorer_->panel_rects(), display, menu_height);
+  // A script names the panel.
+  ASSERT_EQ(explorer_->set_view("present", "analysis"), std::nullopt);
+  frame();
+  frame();
+  expect_presented("analysis");
+  EXPECT_TRUE(explorer_->set_view("present", "nothing").has_value());
+}
+
+// Dragging the corner shared by the fold plot, the 3D view and the lower panels moves those
+// edges: the neighbours follow, nothing overlaps and no hole opens. "Reset layout" puts the
+// edges back.
+TEST_F(ExplorerTest, DraggingAPanelsCornerMovesTheNeighboursEdgesWithIt) {
+  ImGuiIO& io = ImGui::GetIO();
+  io.BackendFlags |= ImGuiBackendFlags_HasMouseCursors;  // as the GLFW backend: edges resize
+  frame();
+  frame();
+  const PanelRect fold = rect_of("fold_plot");
+  const PanelRect cloth = rect_of("cloth");
+  const PanelRect results = rect_of("results");
+  // The resize grip in the fold plot's lower right corner, 80 px left and 40 px down.
+  const ImVec2 grip(fold.pos.x + fold.size.x - 3.0f, fold.pos.y + fold.size.y - 3.0f);
+  io.MousePos = grip;
+  frame();
+  io.MouseDown[0] = true;
+  frame();
+  for (float step = 1.0f; step <= 4.0f; step += 1.0f) {
+    io.MousePos = ImVec2(grip.x - 20.0f * step, grip.y + 10.0f * step);
+    frame();
+  }
+  io.MouseDown[0] = false;
+  frame();
+  frame();
+  EXPECT_TRUE(explorer_->panels_fill_window());
+  expect_tiles_fill(explorer_->panel_rects(), io.DisplaySize, ImGui::GetFrameHeight());
+  EXPECT_FLOAT_EQ(rect_of("fold_plot").size.x, fold.size.x - 80.0f);
+  EXPECT_FLOAT_EQ(rect_of("fold_plot").size.y, fold.size.y + 40.0f);
+  EXPECT_FLOAT_EQ(rect_of("cloth").pos.x, cloth.pos.x - 80.0f);
+  EXPECT_FLOAT_EQ(rect_of("cloth").size.y, cloth.size.y + 40.0f);
+  EXPECT_FLOAT_EQ(rect_of("results").pos.y, results.pos.y + 40.0f);
+  EXPECT_FLOAT_EQ(rect_of("results").size.x, results.size.x) << "the lower edge stays";
+  // A bigger window keeps the user's proportions and still tiles it.
+  io.DisplaySize = ImVec2(1600, 1000);
+  frame();
+  frame();
+  EXPECT_TRUE(explorer_->panels_fill_window());
+  click("Reset layout");
+  frame();
+  EXPECT_FLOAT_EQ(rect_of("fold_plot").size.x, rect_of("results").size.x);
+  EXPECT_TRUE(explorer_->panels_fill_window());
+}
+
+// Escape closes an open menu and an open combo, as elsewhere on the desktop.
+TEST_F(ExplorerTest, EscapeClosesAnOpenMenuOrCombo) {
+  click("View");
+  ASSERT_NE(frame().find("Larger text"), std::string::npos) << "the View menu is open";
+  press(kEscape);
+  EXPECT_EQ(frame().find("Larger text"), std::string::npos) << last_text_;
+  click("fabric");  // the 3D view's "colour by" combo
+  ASSERT_NE(frame().find("fold sign"), std::string::npos) << "the combo is open";
+  press(kEscape);
+  EXPECT_EQ(frame().find("fold sign"), std::string::npos) << last_text_;
 }
 
 TEST_F(ExplorerTest, APanelTheUserMovesStaysUntilResetLayout) {

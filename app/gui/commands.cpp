@@ -55,7 +55,9 @@ void add_common_gui_options(CLI::App& command, GuiCommandOptions& options) {
           "(exaggeration), wireframe, lod=0|1 (0: every grid vertex drawn), fold_lines, ground, "
           "grid (vertices per side, 8-512), "
           "full=1 (the 3D view fills the window) (3D view); sweep=table1|table2|fig4 (the "
-          "paper's case in the Sweep tab); theme=dark|light; scale (UI scale, percent)")
+          "paper's case in the Sweep tab); present=fold_plot|cloth|results|analysis|parameters|"
+          "presets|none (that panel fills the window); theme=dark|light; scale (UI scale, "
+          "percent)")
       ->type_name("KEY=VALUE");
   command
       .add_option("--print", options.print_path,

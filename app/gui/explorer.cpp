@@ -27,7 +27,7 @@ Explorer::Explorer(const Preset& initial, const std::string& initial_path, bool 
   presets_ = add<PresetsPanel>(options_.presets_dir, options_.user_presets_dir);
   fold_plot_ = add<FoldPlotPanel>();
   cloth_view_ = add<ClothViewPanel>();
-  add<ResultsPanel>();
+  results_ = add<ResultsPanel>();
   analysis_ = add<AnalysisPanel>(options_.presets_dir, options_.analysis_tab);
   calibration_ = add<CalibrationPanel>();
   photo_ = add<PhotoOverlay>(PhotoPaths{options_.measurements_file, options_.user_presets_dir,
@@ -104,6 +104,23 @@ std::optional<std::string> Explorer::set_view(std::string_view key, std::string_
     }
     return "sweep = '" + detail::cut(value) + "' is not one of: table1, table2, fig4";
   }
+  if (key == "present") {
+    if (value == "none") {
+      present(std::nullopt);
+      return std::nullopt;
+    }
+    std::string known = "none";
+    for (const std::unique_ptr<Panel>& panel : panels_) {
+      if (const std::optional<Tile> tile = panel->tile()) {
+        if (value == panel->key()) {
+          present(tile);
+          return std::nullopt;
+        }
+        known += std::string(", ") + panel->key();
+      }
+    }
+    return "present = '" + detail::cut(value) + "' is not one of: " + known;
+  }
   if (key == "theme") {
     if (value != "dark" && value != "light") {
       return "theme = '" + std::string(value) + "' is not one of: dark, light";
@@ -144,7 +161,25 @@ bool Explorer::busy() const {
                      [](const std::unique_ptr<Panel>& panel) { return panel->busy(); });
 }
 
+namespace {
+
+// The dragged edges as the session keeps them.
+struct SplitKey {
+  const char* key;
+  float LayoutSplits::*split;
+};
+constexpr SplitKey kSplitKeys[] = {{"layout_left_column", &LayoutSplits::left_column},
+                                   {"layout_parameters", &LayoutSplits::parameters},
+                                   {"layout_views", &LayoutSplits::views},
+                                   {"layout_fold_plot", &LayoutSplits::fold_plot},
+                                   {"layout_results", &LayoutSplits::results}};
+
+}  // namespace
+
 void Explorer::save_settings(SessionSettings& settings) const {
+  for (const SplitKey& k : kSplitKeys) {
+    settings.set(k.key, splits_.*k.split);
+  }
   settings.set("ui_scale_percent", appearance_.scale_percent());
   settings.set("light_theme", appearance_.light_theme());
   settings.set("automatic_layout", automatic_layout_);
@@ -155,6 +190,10 @@ void Explorer::load_settings(const SessionSettings& settings) {
   appearance_.request(settings.get("ui_scale_percent", appearance_.scale_percent()),
                       settings.get("light_theme", appearance_.light_theme()));
   automatic_layout_ = settings.get("automatic_layout", automatic_layout_);
+  for (const SplitKey& k : kSplitKeys) {
+    const float split = settings.get(k.key, splits_.*k.split);
+    splits_.*k.split = split >= 0.0f && split <= 1.0f ? split : -1.0f;
+  }
   document_.expert_mode = settings.get("expert", document_.expert_mode);
 }
 
@@ -272,9 +311,147 @@ void Explorer::view_menu() {
   appearance_.request(percent, light);
   ImGui::Separator();
   ImGui::MenuItem("Pipeline stats", nullptr, &show_stats_);
-  if (ImGui::MenuItem("Reset layout", nullptr, false, !automatic_layout_)) {
+  if (presented_) {
+    if (ImGui::MenuItem("Back to the tiles", "Esc")) {
+      present_request_ = std::optional<Tile>();
+    }
+  } else if (ImGui::BeginMenu("Present (fill the window)")) {
+    for (const std::unique_ptr<Panel>& panel : panels_) {
+      if (const std::optional<Tile> tile = panel->tile(); tile && ImGui::MenuItem(panel->name())) {
+        present_request_ = tile;
+      }
+    }
+    ImGui::EndMenu();
+  }
+  if (ImGui::MenuItem("Reset layout", nullptr, false, !automatic_layout_ || splits_.any())) {
     reset_layout();
   }
+}
+
+void Explorer::handle_escape() {
+  // A dialog answers Escape itself, and a field being typed in takes it back to its old text.
+  if (!ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape), false) ||
+      !document_.modal_title().empty() || ImGui::IsAnyItemActive()) {
+    return;
+  }
+  if (ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId)) {
+    ImGui::ClosePopupsExceptModals();
+  } else if (presented_) {
+    present(std::nullopt);
+  }
+}
+
+void Explorer::present(std::optional<Tile> tile) {
+  if (presented_ == tile) {
+    return;
+  }
+  const auto window_of = [this](Tile t) -> ImGuiWindow* {
+    for (const std::unique_ptr<Panel>& panel : panels_) {
+      if (panel->tile() == t) {
+        return ImGui::FindWindowByName(panel->window_label().c_str());
+      }
+    }
+    return nullptr;
+  };
+  if (!automatic_layout_ && tile) {
+    if (const ImGuiWindow* window = window_of(*tile)) {
+      restore_[static_cast<int>(*tile)] = PanelRect{window->Pos, window->SizeFull};
+    }
+  }
+  presented_ = tile;
+  for (bool& valid : placed_valid_) {
+    valid = false;
+  }
+}
+
+float Explorer::presentation_bar() {
+  const ImVec2 display = ImGui::GetIO().DisplaySize;
+  const ImGuiStyle& style = ImGui::GetStyle();
+  const std::string headline = results_->headline(document_);
+  // As large as the width allows, up to two and a half times the text: it is read from the
+  // back of a room (a hair short of the width, so that rounding never wraps it). Too long even at
+  // the text's size, it wraps.
+  constexpr float kLargestScale = 2.5f;
+  const float width = std::floor(display.x);
+  const float available = width - 2.0f * style.WindowPadding.x;
+  const float text_width = std::max(ImGui::CalcTextSize(headline.c_str()).x, 1.0f);
+  const float scale = std::clamp(0.98f * available / text_width, 1.0f, kLargestScale);
+  const float text_height =
+      scale * ImGui::CalcTextSize(headline.c_str(), nullptr, false, available).y;
+  const float height = std::floor(text_height + 2.0f * style.WindowPadding.y);
+  ImGui::SetNextWindowPos(ImVec2(0.0f, menu_height_), ImGuiCond_Always);
+  ImGui::SetNextWindowSize(ImVec2(width, height), ImGuiCond_Always);
+  const ImGuiWindowFlags flags = ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoResize |
+                                 ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoCollapse |
+                                 ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoScrollbar |
+                                 ImGuiWindowFlags_NoScrollWithMouse;
+  if (ImGui::Begin("##presentation read-out", nullptr, flags)) {
+    renderer_.fill_window_background();
+    ImGui::SetWindowFontScale(scale);
+    ImGui::PushTextWrapPos(0.0f);
+    ImGui::TextUnformatted(headline.c_str());
+    ImGui::PopTextWrapPos();
+    ImGui::SetWindowFontScale(1.0f);
+  }
+  ImGui::End();
+  return menu_height_ + height;
+}
+
+void Explorer::present_button(const Panel& panel, Tile tile) {
+  const std::string label = panel.window_label();
+  ImGuiWindow* window = ImGui::FindWindowByName(label.c_str());
+  if (window == nullptr || !window->Active) {
+    return;
+  }
+  ImGui::Begin(label.c_str());  // appends to the panel's window, whose title bar holds the button
+  const bool presented = presented_ == tile;
+  const ImRect title = window->TitleBarRect();
+  const float side = title.GetHeight();
+  // The button sits above the content: it must not widen what the window scrolls over.
+  const ImVec2 cursor = ImGui::GetCursorScreenPos();
+  const ImVec2 cursor_max = window->DC.CursorMaxPos;
+  ImGui::PushClipRect(title.Min, title.Max, false);
+  ImGui::SetCursorScreenPos(ImVec2(title.Max.x - side, title.Min.y));
+  const bool clicked = ImGui::InvisibleButton("##present", ImVec2(side, side));
+  const bool hovered = ImGui::IsItemHovered();
+  // A square outline (fill the window), or two overlapping ones (back to the tiles).
+  ImDrawList* draw = window->DrawList;
+  const ImU32 colour = ImGui::GetColorU32(hovered ? ImGuiCol_Text : ImGuiCol_TextDisabled);
+  const float thickness = std::max(1.0f, std::round(ImGui::GetFontSize() / 12.0f));
+  const float inset = std::round(0.28f * side);
+  const ImVec2 a(title.Max.x - side + inset, title.Min.y + inset);
+  const ImVec2 b(title.Max.x - inset, title.Max.y - inset);
+  if (presented) {
+    const float shift = std::round(0.15f * side);
+    draw->AddRect(ImVec2(a.x + shift, a.y), ImVec2(b.x, b.y - shift), colour, 0.0f, 0, thickness);
+    draw->AddRectFilled(ImVec2(a.x, a.y + shift), ImVec2(b.x - shift, b.y),
+                        ImGui::GetColorU32(ImGuiCol_TitleBgActive));
+    draw->AddRect(ImVec2(a.x, a.y + shift), ImVec2(b.x - shift, b.y), colour, 0.0f, 0, thickness);
+  } else {
+    draw->AddRect(a, b, colour, 0.0f, 0, thickness);
+    draw->AddLine(ImVec2(a.x, a.y + thickness), ImVec2(b.x, a.y + thickness), colour, thickness);
+  }
+  ImGui::PopClipRect();
+  ImGui::SetCursorScreenPos(cursor);
+  window->DC.CursorMaxPos = cursor_max;
+  if (hovered) {
+    ImGui::SetTooltip(presented ? "Back to the tiles (Esc)"
+                                : "Fill the window with this view (or double-click its title); "
+                                  "Esc returns");
+  }
+  // As ImGui tells a double-click on a title from one on an item in it.
+  const ImGuiContext& g = *ImGui::GetCurrentContext();
+  const bool title_double_clicked =
+      !hovered && g.HoveredWindow == window && g.HoveredIdPreviousFrame == 0 &&
+      ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left) && title.Contains(ImGui::GetIO().MousePos);
+  if (clicked || title_double_clicked) {
+    present_request_ = presented ? std::optional<Tile>() : std::optional<Tile>(tile);
+  }
+  if (presented) {
+    // Never written to imgui.ini: the user's arrangement keeps this panel's own place.
+    window->Flags |= ImGuiWindowFlags_NoSavedSettings;
+  }
+  ImGui::End();
 }
 
 float Explorer::main_menu() {
@@ -290,8 +467,11 @@ float Explorer::main_menu() {
       ImGui::EndMenu();
     }
     // One click from the menu bar while the user's own arrangement is shown.
-    if (!automatic_layout_ && ImGui::MenuItem("Reset layout")) {
+    if ((!automatic_layout_ || splits_.any()) && !presented_ && ImGui::MenuItem("Reset layout")) {
       reset_layout();
+    }
+    if (presented_ && ImGui::MenuItem("Back to the tiles (Esc)")) {
+      present_request_ = std::optional<Tile>();
     }
     ImGui::EndMainMenuBar();
   }
@@ -300,30 +480,68 @@ float Explorer::main_menu() {
 
 void Explorer::reset_layout() {
   automatic_layout_ = true;
+  splits_ = LayoutSplits{};
   document_.session_dirty = true;
   for (bool& valid : placed_valid_) {
     valid = false;
   }
 }
 
-void Explorer::place(const Panel& panel, Tile tile, const TiledLayout& layout) {
-  const int i = static_cast<int>(tile);
-  const PanelRect& rect = layout[tile];
-  if (automatic_layout_ && placed_valid_[i]) {
-    const ImGuiWindow* window = ImGui::FindWindowByName(panel.window_label().c_str());
-    const PanelRect& last = placed_[i];
-    if (window != nullptr &&
-        (window->Pos.x != last.pos.x || window->Pos.y != last.pos.y ||
-         window->SizeFull.x != last.size.x || window->SizeFull.y != last.size.y)) {
-      automatic_layout_ = false;  // the user's arrangement stays until "Reset layout"
+bool Explorer::follow_user_edits(const TiledLayout& layout) {
+  if (!automatic_layout_) {
+    return false;
+  }
+  bool moved = false;
+  for (const std::unique_ptr<Panel>& panel : panels_) {
+    const std::optional<Tile> tile = panel->tile();
+    if (!tile || !placed_valid_[static_cast<int>(*tile)]) {
+      continue;
+    }
+    const ImGuiWindow* window = ImGui::FindWindowByName(panel->window_label().c_str());
+    const PanelRect& last = placed_[static_cast<int>(*tile)];
+    if (window == nullptr ||
+        (window->Pos.x == last.pos.x && window->Pos.y == last.pos.y &&
+         window->SizeFull.x == last.size.x && window->SizeFull.y == last.size.y)) {
+      continue;
+    }
+    if (window->SizeFull.x == last.size.x && window->SizeFull.y == last.size.y) {
+      automatic_layout_ = false;  // moved by its title: the user's arrangement stays until reset
       document_.session_dirty = true;
+      return false;
+    }
+    const float before[] = {last.pos.x, last.pos.x + last.size.x, last.pos.y,
+                            last.pos.y + last.size.y};
+    const float now[] = {window->Pos.x, window->Pos.x + window->SizeFull.x, window->Pos.y,
+                         window->Pos.y + window->SizeFull.y};
+    for (int edge = 0; edge < 4; ++edge) {
+      if (now[edge] != before[edge]) {
+        moved |= drag_split(*tile, static_cast<Edge>(edge), now[edge], ImGui::GetIO().DisplaySize,
+                            menu_height_, layout, splits_);
+      }
     }
   }
-  const ImGuiCond when = automatic_layout_ ? ImGuiCond_Always : ImGuiCond_FirstUseEver;
+  if (moved) {
+    document_.session_dirty = true;
+  }
+  return moved;
+}
+
+void Explorer::place(Tile tile, const TiledLayout& layout) {
+  const int i = static_cast<int>(tile);
+  PanelRect rect = layout[tile];
+  ImGuiCond when = automatic_layout_ ? ImGuiCond_Always : ImGuiCond_FirstUseEver;
+  if (presented_ == tile) {
+    rect = presented_rect_;
+    when = ImGuiCond_Always;
+  } else if (restore_[i]) {
+    rect = *restore_[i];
+    when = ImGuiCond_Always;
+    restore_[i].reset();
+  }
   ImGui::SetNextWindowPos(rect.pos, when);
   ImGui::SetNextWindowSize(rect.size, when);
   placed_[i] = rect;
-  placed_valid_[i] = automatic_layout_;
+  placed_valid_[i] = automatic_layout_ && !presented_;
 }
 
 std::vector<std::pair<std::string, PanelRect>> Explorer::panel_rects() const {
@@ -333,7 +551,7 @@ std::vector<std::pair<std::string, PanelRect>> Explorer::panel_rects() const {
       continue;
     }
     const ImGuiWindow* window = ImGui::FindWindowByName(panel->window_label().c_str());
-    if (window != nullptr) {
+    if (window != nullptr && window->Active) {  // not one hidden behind a presented panel
       out.emplace_back(panel->key(), PanelRect{window->Pos, window->SizeFull});
     }
   }
@@ -375,15 +593,36 @@ void Explorer::frame() {
   const bool light_before = appearance_.light_theme();
   appearance_.handle_shortcuts();
   handle_shortcuts();
+  if (present_request_) {
+    present(*present_request_);
+    present_request_.reset();
+  }
+  handle_escape();
   menu_height_ = main_menu();
-  const TiledLayout layout =
-      tiled_layout(ImGui::GetIO().DisplaySize, menu_height_, ImGui::GetFontSize());
+  const ImVec2 display = ImGui::GetIO().DisplaySize;
+  TiledLayout layout = tiled_layout(display, menu_height_, ImGui::GetFontSize(), splits_);
+  if (follow_user_edits(layout)) {
+    layout = tiled_layout(display, menu_height_, ImGui::GetFontSize(), splits_);
+  }
+  if (presented_) {
+    const float top = presentation_bar();
+    presented_rect_ =
+        PanelRect{ImVec2(0.0f, top),
+                  ImVec2(std::floor(display.x), std::max(std::floor(display.y - top), 1.0f))};
+  }
   PanelContext context{document_, renderer_, *photo_, wake_};
   for (const std::unique_ptr<Panel>& panel : panels_) {
-    if (const std::optional<Tile> tile = panel->tile()) {
-      place(*panel, *tile, layout);
+    const std::optional<Tile> tile = panel->tile();
+    if (tile && presented_ && *tile != *presented_) {
+      continue;  // hidden behind the presented one, and not drawn
+    }
+    if (tile) {
+      place(*tile, layout);
     }
     panel->draw(context);
+    if (tile) {
+      present_button(*panel, *tile);
+    }
   }
   stats_overlay(show_stats_, document_.scene(), renderer_.counters());
   draw_unsaved_dialog();

@@ -91,6 +91,13 @@ class Explorer {
   bool panels_fill_window() const;
   // "View > Reset layout": the automatic layout again, from the next frame.
   void reset_layout();
+  // The edges of the tiles the user dragged (a resize of a tiled panel moves the edge it shares
+  // with its neighbours, which follow).
+  const LayoutSplits& layout_splits() const { return splits_; }
+  // Presentation: one tiled panel fills the window under a read-out of n, Q and z_max, the other
+  // tiles hidden; nullopt returns to the tiles. Not remembered: a start shows the tiles.
+  void present(std::optional<Tile> tile);
+  std::optional<Tile> presented() const { return presented_; }
 
   void save_session_now();
   // The window is asked to close: true when nothing would be lost (no unsaved edits, or a session
@@ -133,12 +140,23 @@ class Explorer {
   // "Save / Discard / Cancel" before a preset load replaces unsaved edits.
   void draw_unsaved_dialog();
 
+  // Escape closes an open menu or combo first, then leaves presentation.
+  void handle_escape();
+  // A resize of a tiled panel since the last frame moves the split it shares with its
+  // neighbours; a move of one leaves the tiles for the user's own arrangement. True when a split
+  // moved.
+  bool follow_user_edits(const TiledLayout& layout);
+  // The read-out over a presented panel; returns where the panel starts below it.
+  float presentation_bar();
+  // The button in a tiled panel's title bar (and a double-click on the title) that presents it,
+  // or returns to the tiles.
+  void present_button(const Panel& panel, Tile tile);
   // The menu bar (View, Export); returns its height, where the tiled panels start.
   float main_menu();
   void view_menu();
-  // Before a tiled panel's draw: its place in the automatic layout, set every frame until the
-  // user moves or resizes a panel (seen as a panel not where this put it last frame).
-  void place(const Panel& panel, Tile tile, const TiledLayout& layout);
+  // Before a tiled panel's draw: its place in the automatic layout (every frame until the user
+  // moves a panel), or the whole window below the read-out while it is presented.
+  void place(Tile tile, const TiledLayout& layout);
   // The settings the explorer itself remembers (UI scale and theme, automatic layout, expert
   // mode); each panel saves and loads its own.
   void save_settings(SessionSettings& settings) const;
@@ -164,6 +182,7 @@ class Explorer {
   PresetsPanel* presets_ = nullptr;
   FoldPlotPanel* fold_plot_ = nullptr;
   ClothViewPanel* cloth_view_ = nullptr;
+  ResultsPanel* results_ = nullptr;
   AnalysisPanel* analysis_ = nullptr;
   CalibrationPanel* calibration_ = nullptr;  // "Fit to measurements", opened from the Presets panel
   PhotoOverlay* photo_ = nullptr;            // the fold plot's photo and its measurement window
@@ -173,6 +192,13 @@ class Explorer {
   float menu_height_ = 0.0f;
   PanelRect placed_[kTileCount];  // what place() set last, to see the user's moves
   bool placed_valid_[kTileCount] = {};
+  LayoutSplits splits_;
+  std::optional<Tile> presented_;
+  PanelRect presented_rect_;  // where the presented panel goes this frame
+  // A click on a title bar's button asks, the next frame's start presents (or returns).
+  std::optional<std::optional<Tile>> present_request_;
+  // In the user's own arrangement, where a presented panel was, to put it back.
+  std::optional<PanelRect> restore_[kTileCount];
   bool quit_confirmed_ = false;
   double last_session_save_time_ = 0.0;
 };

@@ -215,6 +215,12 @@ json explorer_state_json(Explorer& explorer) {
   }
   const std::optional<std::string> refused = document.refusal();
   const std::string& modal = document.modal_title();
+  std::string presented;
+  for (const std::unique_ptr<Panel>& panel : explorer.panels()) {
+    if (panel->tile() && panel->tile() == explorer.presented()) {
+      presented = panel->key();
+    }
+  }
   json panels = json::object();
   for (const auto& [name, rect] : explorer.panel_rects()) {
     panels[name] = {{"x", rect.pos.x}, {"y", rect.pos.y}, {"w", rect.size.x}, {"h", rect.size.y}};
@@ -242,9 +248,11 @@ json explorer_state_json(Explorer& explorer) {
       {"method_step", method_step_json(explorer.analysis().method())},
       {"view", cloth_view_json(explorer.cloth_style())},
       {"message", document.message()},
+      {"popup_open", ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId)},
       {"layout",
        {{"automatic", explorer.automatic_layout()},
         {"fills_window", explorer.panels_fill_window()},
+        {"presented", presented.empty() ? json(nullptr) : json(presented)},
         {"panels", panels}}},
       {"appearance",
        {{"scale_percent", explorer.appearance().scale_percent()},

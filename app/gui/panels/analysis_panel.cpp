@@ -28,7 +28,8 @@ void AnalysisPanel::draw(PanelContext& context) {
     return;
   }
   stale_mark(document);
-  if (ImGui::BeginTabBar("analysis tabs")) {
+  // A narrow panel scrolls its tabs rather than shortening their names to "Met…".
+  if (ImGui::BeginTabBar("analysis tabs", ImGuiTabBarFlags_FittingPolicyScroll)) {
     // The tab named at start is selected once, at the first frame.
     auto flags_for = [this](const char* name) {
       return !tab_selected_ && initial_tab_ == name ? ImGuiTabItemFlags_SetSelected

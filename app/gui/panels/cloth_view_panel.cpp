@@ -107,7 +107,8 @@ std::optional<std::string> ClothViewPanel::set_view(std::string_view key, std::s
     return std::nullopt;
   }
   return "unknown view key '" + detail::cut(key) +
-         "' (known: sweep, theme, scale, grid, print, print_file, print_mm, colour_by, breeze, "
+         "' (known: sweep, present, theme, scale, grid, print, print_file, print_mm, colour_by, "
+         "breeze, "
          "breeze_mm, time, z, wireframe, lod, fold_lines, ground, full)";
 }
 

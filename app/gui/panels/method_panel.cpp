@@ -73,7 +73,7 @@ void MethodPanel::draw(Document& document) {
   }
   int choice = method_ == Method::paper ? 0 : 1;
   bool changed = ImGui::RadioButton("paper method", &choice, 0);
-  ImGui::SameLine();
+  same_line_if_fits(checkbox_width("exact method"));
   changed |= ImGui::RadioButton("exact method", &choice, 1);
   if (changed) {
     method_ = choice == 0 ? Method::paper : Method::exact;
@@ -90,9 +90,9 @@ void MethodPanel::draw(Document& document) {
                      "from the paper's start to the fixed point.")
                         .c_str());
   if (method_ != current.model.method) {
-    ImGui::SameLine();
-    ImGui::TextColored(kDimText, "(model: %s)",
-                       std::string(to_string(current.model.method)).c_str());
+    const std::string model = "(model: " + std::string(to_string(current.model.method)) + ")";
+    same_line_if_fits(ImGui::CalcTextSize(model.c_str()).x);
+    ImGui::TextColored(kDimText, "%s", model.c_str());
   }
   recompute(current);
   if (trace_.iterates.empty()) {
@@ -110,15 +110,15 @@ void MethodPanel::draw(Document& document) {
   const ImVec4 third = ImGui::ColorConvertU32ToFloat4(kStairColour);
   if (method_ == Method::paper) {
     ImGui::TextColored(first, "L′/L per iterate");
-    ImGui::SameLine();
-    ImGui::TextColored(
-        second, "the ±%s %% band",
-        detail::shortest_number(100.0 * computed_for_.model.length_tolerance).c_str());
+    const std::string band =
+        "the ±" + detail::shortest_number(100.0 * computed_for_.model.length_tolerance) + " % band";
+    same_line_if_fits(ImGui::CalcTextSize(band.c_str()).x);
+    ImGui::TextColored(second, "%s", band.c_str());
   } else {
     ImGui::TextColored(first, "next n = n");
-    ImGui::SameLine();
+    same_line_if_fits(ImGui::CalcTextSize("the map (squares: Int[·])").x);
     ImGui::TextColored(second, "the map (squares: Int[·])");
-    ImGui::SameLine();
+    same_line_if_fits(ImGui::CalcTextSize("the staircase").x);
     ImGui::TextColored(third, "the staircase");
   }
   const float height = std::max(ems(14.0f), ImGui::GetContentRegionAvail().y - 4.0f);
@@ -137,25 +137,37 @@ void MethodPanel::draw_controls() {
     step();
   }
   ImGui::EndDisabled();
-  ImGui::SameLine();
+  same_line_if_fits(button_width("Back"));
   ImGui::BeginDisabled(at_start);
   if (ImGui::Button("Back")) {
     back();
   }
-  ImGui::SameLine();
+  same_line_if_fits(button_width("Reset"));
   if (ImGui::Button("Reset")) {
     reset();
   }
   ImGui::EndDisabled();
-  ImGui::SameLine();
+  same_line_if_fits(button_width("Run to end"));
   ImGui::BeginDisabled(at_end);
   if (ImGui::Button("Run to end")) {
     run_to_end();
   }
   ImGui::EndDisabled();
-  ImGui::SameLine();
-  ImGui::Text("iterate %d of %d", shown_, iterates());
+  const std::string where = printf_string("iterate %d of %d", shown_, iterates());
+  same_line_if_fits(ImGui::CalcTextSize(where.c_str()).x);
+  ImGui::TextUnformatted(where.c_str());
 }
+
+namespace {
+
+// A coloured line that wraps in a narrow panel instead of running past its edge.
+void wrapped(const ImVec4& colour, const std::string& text) {
+  ImGui::PushStyleColor(ImGuiCol_Text, colour);
+  ImGui::TextWrapped("%s", text.c_str());
+  ImGui::PopStyleColor();
+}
+
+}  // namespace
 
 // Why the shown iterate has its numbers, and why the iteration goes on or stops there; the table
 // above shows what changed.
@@ -182,16 +194,15 @@ void MethodPanel::draw_change() const {
     const double miss_percent = 100.0 * std::abs(it.length_ratio - 1.0);
     const double tolerance_percent = 100.0 * computed_for_.model.length_tolerance;
     if (miss_percent <= tolerance_percent) {
-      ImGui::TextColored(kOkText, "|L′/L − 1| = %.3g %% ≤ %.3g %%: stop. This is the answer.",
-                         miss_percent, tolerance_percent);
+      wrapped(kOkText, printf_string("|L′/L − 1| = %.3g %% ≤ %.3g %%: stop. This is the answer.",
+                                     miss_percent, tolerance_percent));
     } else if (last) {
-      ImGui::TextColored(kNoteText,
-                         "|L′/L − 1| = %.3g %% > %.3g %%, and the iteration cap is "
-                         "reached.",
-                         miss_percent, tolerance_percent);
+      wrapped(kNoteText, printf_string("|L′/L − 1| = %.3g %% > %.3g %%, and the iteration cap is "
+                                       "reached.",
+                                       miss_percent, tolerance_percent));
     } else {
-      ImGui::TextColored(kNoteText, "|L′/L − 1| = %.3g %% > %.3g %%: iterate again.", miss_percent,
-                         tolerance_percent);
+      wrapped(kNoteText, printf_string("|L′/L − 1| = %.3g %% > %.3g %%: iterate again.",
+                                       miss_percent, tolerance_percent));
     }
     return;
   }
@@ -201,12 +212,12 @@ void MethodPanel::draw_change() const {
                      std::string(wrinkle_law(computed_for_.model.law).count_formula()).c_str(),
                      it.count_argument, it.next_n);
   if (!last) {
-    ImGui::TextColored(kNoteText, "n %d → %d: iterate again.", it.n, it.next_n);
+    wrapped(kNoteText, printf_string("n %d → %d: iterate again.", it.n, it.next_n));
   } else if (s.n_cycle.empty() && it.next_n == it.n) {
-    ImGui::TextColored(kOkText, "n = %d maps to itself: the fixed point. This is the answer.",
-                       it.n);
+    wrapped(kOkText,
+            printf_string("n = %d maps to itself: the fixed point. This is the answer.", it.n));
   } else {
-    ImGui::TextColored(kNoteText, "%s", describe(s, computed_for_).c_str());
+    wrapped(kNoteText, describe(s, computed_for_));
   }
 }
 
@@ -214,13 +225,17 @@ void MethodPanel::draw_change() const {
 // row against row, with the numbers that changed in colour.
 void MethodPanel::draw_table() {
   const float row_height = ImGui::GetTextLineHeightWithSpacing();
+  // Each column as wide as its widest text (the unit under the symbol in the header), so that no
+  // number is cut; a panel narrower than the table scrolls it sideways.
   const ImGuiTableFlags flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV |
-                                ImGuiTableFlags_ScrollY | ImGuiTableFlags_SizingStretchSame;
-  if (!ImGui::BeginTable("iterates", 7, flags, ImVec2(0.0f, row_height * 3.3f))) {
+                                ImGuiTableFlags_ScrollX | ImGuiTableFlags_ScrollY |
+                                ImGuiTableFlags_SizingFixedFit;
+  const float scrollbar = ImGui::GetStyle().ScrollbarSize;
+  if (!ImGui::BeginTable("iterates", 7, flags, ImVec2(0.0f, row_height * 4.3f + scrollbar))) {
     return;
   }
   ImGui::TableSetupScrollFreeze(0, 1);
-  for (const char* title : {"#", "n", "Q", "a_n mm", "z_max mm", "L′/L", "next n"}) {
+  for (const char* title : {"#", "n", "Q", "a_n\n(mm)", "z_max\n(mm)", "L′/L", "next\nn"}) {
     ImGui::TableSetupColumn(title);
   }
   ImGui::TableHeadersRow();

@@ -26,6 +26,121 @@ const ModelStanding& ResultsPanel::standing(Document& document) {
   return standing_;
 }
 
+// The unit follows the range ("48.96 (40.1–57.8) mm"), as `solve` prints it.
+std::string ResultsPanel::Row::one_line() const {
+  if (range.empty()) {
+    return value;
+  }
+  const std::size_t unit = value.find(' ');
+  return unit == std::string::npos ? value + " " + range
+                                   : value.substr(0, unit) + " " + range + value.substr(unit);
+}
+
+std::vector<ResultsPanel::Row> ResultsPanel::rows(Document& document) {
+  Scene& scene = document.scene();
+  const Solution& s = scene.solution();
+  const StageStats& timing = scene.stats(Stage::solution);
+  const std::optional<PredictionRange>& range = standing(document).range;
+  auto fmt = [](const char* format, double v) { return detail::printf_string(format, v); };
+  // range_text gives " (lo–hi)".
+  auto ranged = [&](double lo, double hi, const char* format) {
+    return range ? range_text(lo, hi, format).substr(1) : std::string();
+  };
+  std::vector<Row> out;
+  out.push_back({"number of wrinkles", "n", fmt("%.0f", s.n),
+                 ranged(range ? range->n_min : 0, range ? range->n_max : 0, "%.0f")});
+  out.push_back({"amplitude ratio", "Q", fmt("%.4f", s.Q),
+                 ranged(range ? range->Q_min : 0, range ? range->Q_max : 0, "%.4f")});
+  if (s.count_rule && s.count_rule->spacing == FoldSpacing::even) {
+    out.push_back({"fold spacing", "lambda", fmt("%.1f mm", s.count_rule->step), ""});
+  } else {
+    out.push_back({"root of eq. 7", "Q7", s.Q7 ? fmt("%.4f", *s.Q7) : "none (s >= 1)", ""});
+  }
+  out.push_back({"stress ratio", "s", fmt("%.4g", s.stress_ratio), ""});
+  out.push_back({"out-of-plane depth", "z_max", fmt("%.2f mm", s.z_max_mm),
+                 ranged(range ? range->z_max_min_mm : 0, range ? range->z_max_max_mm : 0, "%.1f")});
+  out.push_back({"span", "l", fmt("%.1f mm", s.span_mm), ""});
+  out.push_back({"sag of the upper edge", "A", fmt("%.2f mm", s.sag_amplitude_mm), ""});
+  out.push_back({"iterations", "", fmt("%.0f", s.iterations), ""});
+  out.push_back({"residual eq. 8", "L'/L-1", fmt("%.2e", s.residual_length), ""});
+  out.push_back({"residual eq. 9", "fibre/h-1", fmt("%.2e", s.residual_height), ""});
+  out.push_back({"solve time", "", fmt("%.1f µs", timing.last_ms * 1000.0), ""});
+  return out;
+}
+
+std::string ResultsPanel::headline(Document& document) {
+  const std::vector<Row> all = rows(document);
+  std::string out;
+  for (const Row& row : all) {
+    if (row.symbol == "n" || row.symbol == "Q" || row.symbol == "z_max") {
+      out += (out.empty() ? "" : "     ") + row.symbol + " = " + row.one_line();
+    }
+  }
+  return out;
+}
+
+// The symbols and values are never cut: their columns are as wide as their widest text, and the
+// names wrap into what is left. When that is too narrow, each range goes under its value, and
+// then each symbol follows its name.
+void ResultsPanel::draw_table(const std::vector<Row>& rows) const {
+  const ImGuiStyle& style = ImGui::GetStyle();
+  float symbol_width = 0.0f;
+  float one_line_width = 0.0f;
+  float two_line_width = 0.0f;
+  float word_width = 0.0f;  // the names' longest word: narrower, a name would be cut
+  for (const Row& row : rows) {
+    symbol_width = std::max(symbol_width, ImGui::CalcTextSize(row.symbol.c_str()).x);
+    one_line_width = std::max(one_line_width, ImGui::CalcTextSize(row.one_line().c_str()).x);
+    two_line_width = std::max({two_line_width, ImGui::CalcTextSize(row.value.c_str()).x,
+                               ImGui::CalcTextSize(row.range.c_str()).x});
+    std::size_t from = 0;
+    while (from < row.name.size()) {
+      const std::size_t to = std::min(row.name.find(' ', from), row.name.size());
+      word_width =
+          std::max(word_width, ImGui::CalcTextSize(row.name.data() + from, row.name.data() + to).x);
+      from = to + 1;
+    }
+  }
+  // Each column has its cell padding on both sides, and a word of slack for the rounding.
+  const float available = ImGui::GetContentRegionAvail().x - ImGui::GetFontSize();
+  const float padding = 2.0f * style.CellPadding.x;
+  const bool two_lines = symbol_width + one_line_width + word_width + 3.0f * padding > available;
+  const float value_width = two_lines ? two_line_width : one_line_width;
+  const bool symbol_column = symbol_width + value_width + word_width + 3.0f * padding <= available;
+  if (!ImGui::BeginTable("results", symbol_column ? 3 : 2,
+                         ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit)) {
+    return;
+  }
+  ImGui::TableSetupColumn("name", ImGuiTableColumnFlags_WidthStretch);
+  if (symbol_column) {
+    ImGui::TableSetupColumn("symbol", ImGuiTableColumnFlags_WidthFixed, symbol_width);
+  }
+  ImGui::TableSetupColumn("value", ImGuiTableColumnFlags_WidthFixed, value_width);
+  for (const Row& row : rows) {
+    ImGui::TableNextRow();
+    ImGui::TableNextColumn();
+    if (symbol_column || row.symbol.empty()) {
+      ImGui::TextWrapped("%s", row.name.c_str());
+    } else {
+      ImGui::TextWrapped("%s  %s", row.name.c_str(), row.symbol.c_str());
+    }
+    if (symbol_column) {
+      ImGui::TableNextColumn();
+      ImGui::TextUnformatted(row.symbol.c_str());
+    }
+    ImGui::TableNextColumn();
+    if (two_lines) {
+      ImGui::TextUnformatted(row.value.c_str());
+      if (!row.range.empty()) {
+        ImGui::TextUnformatted(row.range.c_str());
+      }
+    } else {
+      ImGui::TextUnformatted(row.one_line().c_str());
+    }
+  }
+  ImGui::EndTable();
+}
+
 void ResultsPanel::draw(PanelContext& context) {
   Document& document = context.document;
   if (!begin(context.renderer)) {
@@ -43,7 +158,6 @@ void ResultsPanel::draw(PanelContext& context) {
   }
   Scene& scene = document.scene();
   const Solution& s = scene.solution();
-  const StageStats& timing = scene.stats(Stage::solution);
   ImGui::Text("Regime: %s", std::string(to_string(s.regime)).c_str());
   if (const std::string message = describe(s, scene.parameters()); !message.empty()) {
     ImGui::PushStyleColor(ImGuiCol_Text, s.regime == Regime::wrinkled ? kDimText : kNoteText);
@@ -63,43 +177,11 @@ void ResultsPanel::draw(PanelContext& context) {
   if (ImGui::IsItemHovered()) {
     ImGui::SetTooltip("intervals of n, Q and z_max: %s", model.range_basis.c_str());
   }
-  if (ImGui::BeginTable("results", 3, ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit)) {
-    auto row = [](const char* name, const char* symbol, const std::string& value) {
-      ImGui::TableNextRow();
-      ImGui::TableSetColumnIndex(0);
-      ImGui::TextUnformatted(name);
-      ImGui::TableSetColumnIndex(1);
-      ImGui::TextUnformatted(symbol);
-      ImGui::TableSetColumnIndex(2);
-      ImGui::TextUnformatted(value.c_str());
-    };
-    auto fmt = [](const char* format, double v) { return detail::printf_string(format, v); };
-    const std::optional<PredictionRange>& range = model.range;
-    auto ranged = [&](std::string value, double lo, double hi, const char* format) {
-      return range ? value + range_text(lo, hi, format) : value;
-    };
-    row("number of wrinkles", "n",
-        ranged(fmt("%.0f", s.n), range ? range->n_min : 0, range ? range->n_max : 0, "%.0f") +
-            (s.n_capped ? " (capped: eq. 10 asks for more)" : ""));
-    row("amplitude ratio", "Q",
-        ranged(fmt("%.4f", s.Q), range ? range->Q_min : 0, range ? range->Q_max : 0, "%.4f"));
-    if (s.count_rule && s.count_rule->spacing == FoldSpacing::even) {
-      row("fold spacing", "lambda", fmt("%.1f mm", s.count_rule->step));
-    } else {
-      row("root of eq. 7", "Q7", s.Q7 ? fmt("%.4f", *s.Q7) : std::string("none (s >= 1)"));
-    }
-    row("stress ratio", "s", fmt("%.4g", s.stress_ratio));
-    row("out-of-plane depth", "z_max",
-        ranged(fmt("%.2f", s.z_max_mm), range ? range->z_max_min_mm : 0,
-               range ? range->z_max_max_mm : 0, "%.1f") +
-            " mm");
-    row("span", "l", fmt("%.1f mm", s.span_mm));
-    row("sag of the upper edge", "A", fmt("%.2f mm", s.sag_amplitude_mm));
-    row("iterations", "", fmt("%.0f", s.iterations));
-    row("residual eq. 8", "L'/L-1", fmt("%.2e", s.residual_length));
-    row("residual eq. 9", "fibre/h-1", fmt("%.2e", s.residual_height));
-    row("solve time", "", fmt("%.1f µs", timing.last_ms * 1000.0));
-    ImGui::EndTable();
+  draw_table(rows(document));
+  if (s.n_capped) {
+    ImGui::PushStyleColor(ImGuiCol_Text, kNoteText);
+    ImGui::TextWrapped("n is capped: eq. 10 asks for more.");
+    ImGui::PopStyleColor();
   }
   if (!s.a_mm.empty() &&
       ImGui::CollapsingHeader("fold amplitudes a_i", ImGuiTreeNodeFlags_DefaultOpen)) {

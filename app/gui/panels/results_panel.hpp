@@ -6,6 +6,8 @@
 
 #include <cstdint>
 #include <optional>
+#include <string>
+#include <vector>
 
 #include "app/gui/document.hpp"
 #include "app/gui/panel.hpp"
@@ -20,8 +22,22 @@ class ResultsPanel : public Panel {
   const char* key() const override { return "results"; }
   std::optional<Tile> tile() const override { return Tile::results; }
   void draw(PanelContext& context) override;
+  // n, Q and z_max with their ranges as the table shows them, on one line: the read-out over a
+  // presented view.
+  std::string headline(Document& document);
 
  private:
+  // One row of the table: the value with its unit, and the range the calibration allows (empty
+  // without one), which goes under the value when the panel is too narrow for both.
+  struct Row {
+    std::string name;
+    std::string symbol;
+    std::string value;
+    std::string range;
+    std::string one_line() const;
+  };
+  std::vector<Row> rows(Document& document);
+  void draw_table(const std::vector<Row>& rows) const;
   const ModelStanding& standing(Document& document);
 
   std::uint64_t standing_version_ = ~std::uint64_t{0};

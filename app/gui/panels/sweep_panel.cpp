@@ -17,6 +17,9 @@ namespace {
 
 constexpr ImU32 kBandFill = IM_COL32(150, 150, 160, 60);
 constexpr ImU32 kRefusedFill = IM_COL32(230, 90, 80, 60);
+// A sweep plot's least height, in font sizes: about four lines of data area besides its ticks
+// and labels.
+constexpr float kMinPlotHeightEms = 8.5f;
 
 }  // namespace
 
@@ -151,7 +154,10 @@ void SweepPanel::draw(Document& document) {
   if (overlay && ImGui::CollapsingHeader("Paper vs model (table)")) {
     draw_comparison(current);
   }
-  const float height = std::max(60.0f, (ImGui::GetContentRegionAvail().y - 8.0f) / 3.0f);
+  // Each plot keeps room for its ticks, its title and a few lines of data at any UI scale: a
+  // short panel scrolls rather than squeeze a plot under its own labels.
+  const float height =
+      std::max(ems(kMinPlotHeightEms), (ImGui::GetContentRegionAvail().y - 8.0f) / 3.0f);
   struct Quantity {
     Plot& plot;
     const char* id;

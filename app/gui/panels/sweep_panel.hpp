@@ -28,6 +28,10 @@ class SweepPanel {
   const std::vector<double>& overlay_x() const { return overlay_x_; }
   const std::vector<RegimeBand>& bands() const { return bands_; }
   const SweepCurves& curves() const { return curves_; }
+  // Where the last frame drew the n, Q and z_max plots' data (0, 1, 2).
+  const PlotView& plot_view(int which) const {
+    return which == 0 ? n_plot_.view() : which == 1 ? Q_plot_.view() : z_plot_.view();
+  }
 
  private:
   void recompute(const Parameters& current);

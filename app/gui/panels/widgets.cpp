@@ -42,34 +42,99 @@ float ems(float ems) {
   return std::round(ems * ImGui::GetFontSize());
 }
 
-TiledLayout tiled_layout(ImVec2 display, float top_px, float font_px) {
+TiledLayout tiled_layout(ImVec2 display, float top_px, float font_px, const LayoutSplits& splits) {
   const float width = std::max(std::floor(display.x), 1.0f);
   const float height = std::max(std::floor(display.y - top_px), 1.0f);
   const float top = std::floor(top_px);
-  // 25 font sizes hold a slider's label, the slider and its unit at any scale; 40 keep the
-  // sliders short enough that a pixel of drag stays a small step on a wide screen. Never more
-  // than 45 % of the width, so that the views keep the rest.
-  const float left = std::floor(
-      std::min(std::clamp(0.30f * width, 25.0f * font_px, 40.0f * font_px), 0.45f * width));
-  const float middle = std::floor((width - left) / 2.0f);
-  const float right = width - left - middle;
-  const float parameters_h = std::floor(0.62f * height);
-  const float views_h = std::floor(0.56f * height);
+  // Wherever an edge is dragged, a panel keeps its title and a few lines (a quarter of the window
+  // at most, so that the bounds below never cross).
+  const float min_width = std::min(8.0f * font_px, 0.25f * width);
+  const float min_height = std::min(4.0f * font_px, 0.25f * height);
+  const auto chosen = [](float split, float span, float automatic) {
+    return split >= 0.0f ? split * span : automatic;
+  };
+  // 25 font sizes hold a slider's label, the slider and its unit; 40 keep the sliders short
+  // enough that a pixel of drag stays a small step on a wide screen. At a large UI scale the
+  // sliders shorten (to 6 font sizes, 20 with the longest label) and the views keep the rest:
+  // the column takes at most 36 % of the width, or up to 40 % for those 20 font sizes.
+  const float column_bound = std::max(0.36f * width, std::min(20.0f * font_px, 0.40f * width));
+  const float left = std::floor(std::clamp(
+      chosen(splits.left_column, width,
+             std::min(std::clamp(0.30f * width, 25.0f * font_px, 40.0f * font_px), column_bound)),
+      min_width, width - 2.0f * min_width));
+  const float rest = width - left;
+  const float fold_w = std::floor(
+      std::clamp(chosen(splits.fold_plot, rest, rest / 2.0f), min_width, rest - min_width));
+  const float results_w = std::floor(
+      std::clamp(chosen(splits.results, rest, rest / 2.0f), min_width, rest - min_width));
+  const float parameters_h = std::floor(std::clamp(
+      chosen(splits.parameters, height, 0.62f * height), min_height, height - min_height));
+  // The views' toolbars are lines of text, so their row grows with the font: 56 % of the height
+  // at 100 % on a laptop, up to 70 % at a large UI scale, which keeps the plots' share.
+  const float views_auto =
+      std::min(std::max(0.56f * height, 0.42f * height + 6.0f * font_px), 0.70f * height);
+  const float views_h = std::floor(
+      std::clamp(chosen(splits.views, height, views_auto), min_height, height - min_height));
   TiledLayout l;
   const auto set = [&l](Tile tile, float x, float y, float w, float h) {
     l.rects[static_cast<int>(tile)] = PanelRect{ImVec2(x, y), ImVec2(w, h)};
   };
   set(Tile::parameters, 0, top, left, parameters_h);
   set(Tile::presets, 0, top + parameters_h, left, height - parameters_h);
-  set(Tile::fold_plot, left, top, middle, views_h);
-  set(Tile::results, left, top + views_h, middle, height - views_h);
-  set(Tile::cloth, left + middle, top, right, views_h);
-  set(Tile::analysis, left + middle, top + views_h, right, height - views_h);
+  set(Tile::fold_plot, left, top, fold_w, views_h);
+  set(Tile::results, left, top + views_h, results_w, height - views_h);
+  set(Tile::cloth, left + fold_w, top, rest - fold_w, views_h);
+  set(Tile::analysis, left + results_w, top + views_h, rest - results_w, height - views_h);
   return l;
 }
 
+bool drag_split(Tile tile, Edge edge, float to_px, ImVec2 display, float top_px,
+                const TiledLayout& layout, LayoutSplits& splits) {
+  const float width = std::max(std::floor(display.x), 1.0f);
+  const float height = std::max(std::floor(display.y - top_px), 1.0f);
+  const float top = std::floor(top_px);
+  const float left = layout[Tile::parameters].size.x;
+  // Each shared edge is one split: the column's right edge, the parameters' foot, the views'
+  // foot, and the right edges of the fold plot and of the results.
+  float* split = nullptr;
+  float origin = 0.0f;
+  float span = width;
+  const bool column = tile == Tile::parameters || tile == Tile::presets;
+  const bool views = tile == Tile::fold_plot || tile == Tile::cloth;
+  if ((column && edge == Edge::right) ||
+      ((tile == Tile::fold_plot || tile == Tile::results) && edge == Edge::left)) {
+    split = &splits.left_column;
+  } else if ((tile == Tile::parameters && edge == Edge::bottom) ||
+             (tile == Tile::presets && edge == Edge::top)) {
+    split = &splits.parameters;
+    origin = top;
+    span = height;
+  } else if ((views && edge == Edge::bottom) || (!column && !views && edge == Edge::top)) {
+    split = &splits.views;
+    origin = top;
+    span = height;
+  } else if ((tile == Tile::fold_plot && edge == Edge::right) ||
+             (tile == Tile::cloth && edge == Edge::left)) {
+    split = &splits.fold_plot;
+    origin = left;
+    span = width - left;
+  } else if ((tile == Tile::results && edge == Edge::right) ||
+             (tile == Tile::analysis && edge == Edge::left)) {
+    split = &splits.results;
+    origin = left;
+    span = width - left;
+  }
+  if (split == nullptr || span <= 0.0f) {
+    return false;
+  }
+  *split = std::clamp((to_px - origin) / span, 0.0f, 1.0f);
+  return true;
+}
+
 bool begin_panel(const char* title, Renderer& renderer) {
-  if (!ImGui::Begin(title)) {
+  // A double-click on the title presents the panel (see Explorer) rather than folding it away,
+  // which would leave a hole in the tiles.
+  if (!ImGui::Begin(title, nullptr, ImGuiWindowFlags_NoCollapse)) {
     return false;
   }
   renderer.fill_window_background();
@@ -100,10 +165,19 @@ float labelled_width(float item_width, const char* label) {
 }
 
 void hint_after(const char* text) {
-  same_line_if_fits(ImGui::CalcTextSize(text).x);
-  ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyle().Colors[ImGuiCol_TextDisabled]);
-  ImGui::TextWrapped("%s", text);
-  ImGui::PopStyleColor();
+  const float spacing = ImGui::GetStyle().ItemSpacing.x;
+  const float right_edge = ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x;
+  const float text_width = ImGui::CalcTextSize(text).x;
+  if (ImGui::GetItemRectMax().x + spacing + text_width <= right_edge) {
+    ImGui::SameLine();
+    ImGui::TextDisabled("%s", text);
+  } else if (ImGui::GetWindowPos().x + ImGui::GetCursorPosX() + text_width <= right_edge) {
+    ImGui::TextDisabled("%s", text);  // a line of its own
+  } else {
+    // Lines of a wrapped hint would take the height from the view under them: the hint waits
+    // behind a marker instead.
+    help_marker(text);
+  }
 }
 
 void section(const char* title) {
