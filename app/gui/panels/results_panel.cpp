@@ -84,7 +84,7 @@ void ResultsPanel::draw(PanelContext& context) {
     row("amplitude ratio", "Q",
         ranged(fmt("%.4f", s.Q), range ? range->Q_min : 0, range ? range->Q_max : 0, "%.4f"));
     if (s.count_rule && s.count_rule->spacing == FoldSpacing::even) {
-      row("fold spacing", "lambda", fmt("%.1f mm", s.count_rule->step));
+      row("fold spacing", readable("λ").c_str(), fmt("%.1f mm", s.count_rule->step));
     } else {
       row("root of eq. 7", "Q7", s.Q7 ? fmt("%.4f", *s.Q7) : std::string("none (s >= 1)"));
     }
