@@ -1502,9 +1502,8 @@ TEST_F(ExplorerTest, TheRegimeMapsAxesHaveRoundTicksInTheSlidersUnits) {
   const ImVec2 w_100 = position_of("\n100\n");
   const std::string x_tick = format_tick(x_ticks.back(), step);
   const ImVec2 x_at = position_of(x_tick);
-  ImGui::GetIO().MousePos =
-      ImVec2(x_at.x + 0.5f * ImGui::CalcTextSize(x_tick.c_str()).x - 2.0f,
-             w_100.y + 0.5f * ImGui::GetFontSize());
+  ImGui::GetIO().MousePos = ImVec2(x_at.x + 0.5f * ImGui::CalcTextSize(x_tick.c_str()).x - 2.0f,
+                                   w_100.y + 0.5f * ImGui::GetFontSize());
   frame();
   const std::string hovered = frame();
   // Within a cell (2700 mm / 256 = 11 mm; a w cell is 1/256 of 1.52 decades, 1.4 %) and the
@@ -1515,8 +1514,7 @@ TEST_F(ExplorerTest, TheRegimeMapsAxesHaveRoundTicksInTheSlidersUnits) {
   const float last_centre = x_at.x + 0.5f * ImGui::CalcTextSize(x_tick.c_str()).x;
   const double mm_per_px = (x_ticks.back() - x_ticks.front()) / (last_centre - first_centre);
   EXPECT_NEAR(number_after(hovered, ", w = "), 100.0, 3.0) << hovered;
-  EXPECT_NEAR(number_after(hovered, "\nh = "), x_ticks.back(), 11.0 + 3.0 * mm_per_px)
-      << hovered;
+  EXPECT_NEAR(number_after(hovered, "\nh = "), x_ticks.back(), 11.0 + 3.0 * mm_per_px) << hovered;
   EXPECT_NE(hovered.find(" g/m²\n"), std::string::npos) << hovered;
 }
 
