@@ -118,6 +118,10 @@ TEST(PlotTicks, FittedTicksAreRoundAndTheirLabelsNeverOverlap) {
   // Over 100 px, 1000 apart is 33.3 px, short of 34: two ticks, 2000 apart.
   EXPECT_EQ(fitted_ticks(0, 3000, false, 100, seven_px, 6, 12).values,
             (std::vector<double>{0, 2000}));
+  // Over 30 px not even 0 and 2000 fit (20 px apart): 2000 alone, nearer the middle (15 px).
+  t = fitted_ticks(0, 3000, false, 30, seven_px, 6, 12);
+  EXPECT_EQ(t.values, (std::vector<double>{2000}));
+  EXPECT_EQ(t.labels, (std::vector<std::string>{"2000"}));
   // A font twice as large over 300 px: 500 apart (50 px) is short of 62, 1000 apart fits.
   const auto fourteen_px = [](const std::string& label) {
     return 14.0f * static_cast<float>(label.size());

@@ -406,8 +406,19 @@ AxisTicks fitted_ticks(double lo, double hi, bool log, double length_px,
       const double room = std::abs(px(ticks.values[i]) - px(ticks.values[i - 1]));
       fits = room >= 0.5 * (extent(ticks.labels[i]) + extent(ticks.labels[i - 1])) + gap_px;
     }
-    if (fits || ticks.values.size() <= 2)
+    if (fits)
       return ticks;
+    if (ticks.values.size() <= 2)
+      break;
+  }
+  // Not even two labels fit: the one nearest the axis's middle alone.
+  if (ticks.values.size() == 2) {
+    const std::size_t keep = std::abs(px(ticks.values[0]) - 0.5 * length_px) <=
+                                     std::abs(px(ticks.values[1]) - 0.5 * length_px)
+                                 ? 0
+                                 : 1;
+    ticks.values = {ticks.values[keep]};
+    ticks.labels = {ticks.labels[keep]};
   }
   return ticks;
 }
@@ -774,7 +785,7 @@ void Plot::place_ticks(Frame& f) {
   const auto line_height = [&f](const std::string&) { return f.font; };
   y_ticks_ =
       fitted_ticks(from_t(f.yt0, f.y_log), from_t(f.yt1, f.y_log), f.y_log, plot_h, line_height,
-                   gap, std::clamp(static_cast<int>(plot_h / (f.font * 2.5f)), 2, 12))
+                   gap, std::clamp(static_cast<int>(plot_h / (f.font * 2.0f)), 2, 12))
           .values;
   float needed = 0;
   char buf[64];
@@ -792,7 +803,7 @@ void Plot::place_ticks(Frame& f) {
   };
   x_ticks_ =
       fitted_ticks(from_t(f.xt0, f.x_log), from_t(f.xt1, f.x_log), f.x_log, plot_w, text_width, gap,
-                   std::clamp(static_cast<int>(plot_w / (f.font * 4.0f)), 2, 12))
+                   std::clamp(static_cast<int>(plot_w / (f.font * 2.5f)), 2, 12))
           .values;
   f.xm = x_map(f.xt0, f.xt1, f.lay.min, f.lay.max, f.x_log, x_axis_.flipped);
   f.ym = y_map(f.yt0, f.yt1, f.lay.min, f.lay.max, f.y_log, y_axis_.flipped);
@@ -1046,13 +1057,14 @@ void Plot::draw_wheel_state(const Frame& f) const {
     f.draw_list->AddRect(f.lay.min, f.lay.max, f.col_text, 0.0f, 0, 1.5f);
   if (!wheel_hint_ || focused_)
     return;
-  const char* hint = kWheelHint;
-  const ImVec2 size = ImGui::CalcTextSize(hint);
+  // Wrapped to the data area: a small plot is the usual place for it.
+  const float wrap = std::max(f.lay.max.x - f.lay.min.x - 2 * f.pad, f.font);
+  const ImVec2 size = ImGui::CalcTextSize(kWheelHint, nullptr, false, wrap);
   const ImVec2 at{(f.lay.min.x + f.lay.max.x - size.x) / 2, f.lay.min.y + f.pad};
   f.draw_list->AddRectFilled({at.x - f.pad, at.y - f.pad / 2},
                              {at.x + size.x + f.pad, at.y + size.y + f.pad / 2},
                              ImGui::GetColorU32(ImGuiCol_PopupBg, 1.0f));
-  f.draw_list->AddText(at, f.col_text, hint);
+  f.draw_list->AddText(ImGui::GetFont(), f.font, at, f.col_text, kWheelHint, nullptr, wrap);
 }
 
 // The view and the label width, kept for the next frame.

@@ -36,7 +36,7 @@
 namespace foldlab::gui {
 
 // Shown over a plot in a scrolling window when the wheel scrolled the window rather than zoom.
-inline constexpr const char* kWheelHint = "click the plot, then the wheel zooms";
+inline constexpr const char* kWheelHint = "click the plot to zoom";
 
 struct PlotAxis {
   std::string label;     // title with its unit, e.g. "x (mm)"; tick labels are plain numbers
@@ -209,8 +209,8 @@ struct AxisTicks {
 // The most ticks (at most `max_ticks`: 1-2-5 × 10^k steps, or on a log axis decades with 2 and 5
 // where there is room) whose labels do not overlap on an axis `length_px` long over [lo, hi]:
 // `extent(label)` is a label's size along the axis (its width on an x axis, the line height on a
-// y axis) and `gap_px` the least space between two labels. Two ticks at the least, even if they
-// do not fit (the ends of a very short axis).
+// y axis) and `gap_px` the least space between two labels. Where not even two fit, the one
+// nearest the axis's middle.
 AxisTicks fitted_ticks(double lo, double hi, bool log, double length_px,
                        const std::function<float(const std::string&)>& extent, float gap_px,
                        int max_ticks);

@@ -279,7 +279,8 @@ RegimeMapPanel::Placement RegimeMapPanel::place_map() {
   }
   const float swatch_rows =
       (swatches_width <= available.x ? 1.0f : 2.0f) * ImGui::GetFrameHeightWithSpacing();
-  const float tallest = std::max(ems(5.0f), available.y - 3.0f * font - swatch_rows);
+  // Half a line under the y title, where the top label reaches up to.
+  const float tallest = std::max(ems(5.0f), available.y - 3.5f * font - swatch_rows);
   // The y labels' width at the tallest the map can be: as many labels or fewer fit a shorter one.
   at.left_margin = 0.0f;
   for (const std::string& label : map_ticks(cells_->y, tallest, false).labels) {
@@ -289,7 +290,8 @@ RegimeMapPanel::Placement RegimeMapPanel::place_map() {
   at.side = std::max(ems(5.0f), std::min(available.x - at.left_margin - bar_area, tallest));
   const std::string y_label = axis_label(cells_->y.key);
   ImGui::TextUnformatted(y_label.c_str());
-  at.origin = ImVec2(ImGui::GetCursorScreenPos().x + at.left_margin, ImGui::GetCursorScreenPos().y);
+  at.origin = ImVec2(ImGui::GetCursorScreenPos().x + at.left_margin,
+                     ImGui::GetCursorScreenPos().y + 0.5f * font);
   return at;
 }
 
