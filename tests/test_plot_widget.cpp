@@ -388,6 +388,24 @@ TEST_F(PlotWidget, WheelZoomsAroundTheCursor) {
   EXPECT_NEAR(plot_.view().x_hi - plot_.view().x_lo, before.x_hi - before.x_lo, 1e-9);
 }
 
+// Font 13 px (pad 5): the y title, the x labels and the x title take 18 px each and two lines of
+// data 26 px, 80 px in all. A 90 px plot with a 20 px legend row has 70 px left: no legend, so
+// that it cannot cover the x labels; 120 px keeps it.
+TEST_F(PlotWidget, APlotTooShortForItsLegendDropsIt) {
+  const auto legend_height = [&](float plot_height) {
+    frame([&] {
+      ASSERT_TRUE(plot_.begin("plot", ImVec2(600, plot_height), x_axis_, y_axis_));
+      plot_.line("A", ax_, ay_, kColA);
+      plot_.end();
+    });
+    return plot_.view().legend_max.y - plot_.view().legend_min.y;
+  };
+  EXPECT_EQ(legend_height(90.0f), 0.0f);
+  EXPECT_GT(legend_height(120.0f), 0.0f);
+  // The x labels stay inside the frame, above where the legend would be.
+  EXPECT_LE(plot_.view().max.y + 13.0f, plot_.view().legend_min.y);
+}
+
 // In a window that scrolls, the wheel over a plot scrolls the window until the plot is clicked;
 // after a click elsewhere it scrolls the window again.
 TEST_F(PlotWidget, InAScrollingWindowTheWheelScrollsUntilThePlotIsClicked) {

@@ -719,6 +719,14 @@ void Plot::lay_out_legend(Frame& f) {
     x += w + 2 * f.font;
   }
   legend_height_ = rows > 0 ? static_cast<float>(rows) * f.row + f.pad : 0.0f;
+  // A plot too short for its titles, tick labels, two lines of data and the legend drops the
+  // legend rather than draw it over the x labels (the tooltip still names each series).
+  const float axes_need = (f.y_title ? f.font + f.pad : f.font / 2) + (f.font + f.pad) +
+                          (f.x_title ? f.font + f.pad : 0.0f) + 2 * f.font;
+  if (frame_max_.y - frame_min_.y - legend_height_ < axes_need) {
+    legend_rows_.clear();
+    legend_height_ = 0.0f;
+  }
   f.axes_max = {frame_max_.x, std::max(frame_min_.y + 1, frame_max_.y - legend_height_)};
 }
 
@@ -1018,7 +1026,7 @@ void Plot::draw_y_tick_labels(const Frame& f) const {
 // Legend entries flow left to right below the axes, centred when they fit on one row.
 void Plot::draw_legend(const Frame& f) {
   view_.legend_min = view_.legend_max = ImVec2(frame_min_.x, f.axes_max.y);
-  if (legend_.empty())
+  if (legend_rows_.empty())
     return;
   float widest = 0;
   for (const LegendRow& r : legend_rows_) {

@@ -152,7 +152,9 @@ void SweepPanel::draw(Document& document) {
   if (overlay && ImGui::CollapsingHeader("Paper vs model (table)")) {
     draw_comparison(current);
   }
-  const float height = std::max(60.0f, (ImGui::GetContentRegionAvail().y - 8.0f) / 3.0f);
+  // At least room for a plot's titles, ticks and a few lines of data, in font sizes: a short
+  // panel scrolls rather than squeeze the plots to nothing.
+  const float height = std::max(ems(4.5f), (ImGui::GetContentRegionAvail().y - 8.0f) / 3.0f);
   struct Quantity {
     Plot& plot;
     const char* id;
