@@ -26,6 +26,8 @@
 #include "app/gui/explorer.hpp"
 #include "app/gui/input_player.hpp"
 #include "app/gui/panel.hpp"
+#include "app/gui/panels/widgets.hpp"
+#include "app/gui/plot_widget.hpp"
 #include "app/gui/renderer.hpp"
 #include "app/gui/scripted_run.hpp"
 #include "app/gui/surface.hpp"
@@ -195,6 +197,39 @@ class ExplorerTest : public foldlab::testing::TempDirTest {
     return std::strtod(text.c_str() + at + label.size(), nullptr);
   }
 
+  // Whether every `needle` in a frame's text is on the line under w's slider that gives w in
+  // oz/yd² and N/mm² (the one place the model's unit is shown on purpose).
+  static bool only_beside_w_slider(const std::string& text, const std::string& needle) {
+    for (std::size_t at = text.find(needle); at != std::string::npos;
+         at = text.find(needle, at + 1)) {
+      const std::size_t line_start = text.rfind('\n', at);
+      const std::size_t line_end = text.find('\n', at);
+      const std::string line =
+          text.substr(line_start == std::string::npos ? 0 : line_start,
+                      line_end == std::string::npos ? std::string::npos : line_end - line_start);
+      if (line.find("oz/yd²") == std::string::npos) {
+        return false;
+      }
+    }
+    return true;
+  }
+
+  // Text without its spaces and line breaks: a wrapped sentence reads as one.
+  static std::string squeezed(std::string text) {
+    std::erase_if(text, [](char c) { return c == ' ' || c == '\n'; });
+    return text;
+  }
+
+  // w's values in N/mm² are 1e-7..1e-5: written in e-notation, they end in e-0[5-8].
+  static bool w_in_e_notation_only_beside_its_slider(const std::string& text) {
+    for (const char* exponent : {"e-05", "e-06", "e-07", "e-08"}) {
+      if (!only_beside_w_slider(text, exponent)) {
+        return false;
+      }
+    }
+    return true;
+  }
+
   std::uint64_t evaluations(Stage stage) { return explorer_->scene().stats(stage).evaluations; }
 
   // The tiled panel `key`'s rectangle in the last frame (a zero one when it is not shown).
@@ -341,7 +376,7 @@ TEST_F(ExplorerTest, SwitchingPresetShowsTheNewPreset) {
   frame();
   explorer_->load_preset_file(kPresetsDir / "paper-table2-w54.json");
   const std::string text = frame();
-  EXPECT_NE(text.find("Loaded Table 2, w = 54e-7 N/mm²."), std::string::npos) << text;
+  EXPECT_NE(text.find("Loaded Table 2, w = 550 g/m²."), std::string::npos) << text;
   EXPECT_EQ(explorer_->scene().parameters().fabric.weight_N_per_mm2, 54e-7);
   // Table 2's w = 54e-7 row: the paper printed n = 7, as the model gives.
   EXPECT_EQ(number_after(text, "number of wrinkles n "), 7.0) << text;
@@ -466,15 +501,33 @@ TEST_F(ExplorerTest, AnalysisPanelsSweepThePapersInputsByKey) {
   ASSERT_EQ(xs.size(), 3u);
   EXPECT_DOUBLE_EQ(xs[0], 10e-7);
   EXPECT_DOUBLE_EQ(xs[2], 54e-7);
+  // The sweep shows w as its slider does, in g/m²: the range 5e-7..8e-6 N/mm² is
+  // 5e-7 / 9.81e-9 = 50.97 to 8e-6 / 9.81e-9 = 815.5 g/m², in its fields and on the axis.
+  text = frame();
+  EXPECT_TRUE(only_beside_w_slider(text, "N/mm²")) << text;
+  EXPECT_TRUE(w_in_e_notation_only_beside_its_slider(text)) << text;
+  EXPECT_NE(text.find("50.97"), std::string::npos) << "the range's first field
+" << text;
+  EXPECT_NE(text.find("815.5"), std::string::npos) << "the range's second field
+" << text;
+  const PlotView& sweep_view = explorer_->analysis().sweep().n_view();
+  EXPECT_LE(sweep_view.x_lo, 50.97);
+  EXPECT_GE(sweep_view.x_hi, 815.5);
+  EXPECT_GT(sweep_view.x_lo, 40.0) << "not in N/mm²";
   scroll_panel("analysis", 10);
-  EXPECT_NE(frame().find("w (N/mm²)"), std::string::npos) << "the sweep's x axis";
+  text = frame();
+  EXPECT_NE(text.find("w (g/m²)"), std::string::npos) << "the sweep's x axis
+" << text;
+  EXPECT_TRUE(only_beside_w_slider(text, "N/mm²")) << text;
 
   open_explorer("map");
   document().expert_mode = true;
   frame();
   text = frame();
   EXPECT_NE(text.find("h (mm)"), std::string::npos) << "the map's x axis\n" << text;
-  EXPECT_NE(text.find("w (N/mm²)"), std::string::npos) << "the map's y axis";
+  EXPECT_NE(text.find("w (g/m²)"), std::string::npos) << "the map's y axis";
+  EXPECT_TRUE(only_beside_w_slider(text, "N/mm²")) << text;
+  EXPECT_TRUE(w_in_e_notation_only_beside_its_slider(text)) << text;
   EXPECT_EQ(text.find("nu"), text.find("nu (Poisson's ratio)")) << "nu only on its slider";
 }
 
@@ -488,7 +541,9 @@ TEST_F(ExplorerTest, SlidersShowTheInputTablesFormatAndUnit) {
   EXPECT_NE(text.find("1400 mm"), std::string::npos) << text;
   for (const char* key : {"t", "E", "w", "nu", "h", "L", "d", "K"}) {
     const InputSpec* spec = find_input(key);
-    const std::string label = std::string(key) + " (" + std::string(spec->name) + ")";
+    // The symbol as the paper writes it, spelt out in the test's font (ν: "nu").
+    const std::string label =
+        readable(std::string(input_symbol(*spec)) + " (" + std::string(spec->name) + ")");
     EXPECT_NE(text.find(label), std::string::npos) << label;
   }
 }
@@ -677,7 +732,7 @@ TEST_F(ExplorerTest, ThePapersCaseButtonsAskBeforeReplacingUnsavedEdits) {
   EXPECT_EQ(document().modal_title(), "Unsaved changes");
   EXPECT_EQ(shown().hanging.height_mm, 900.0);
   click("Discard");
-  EXPECT_EQ(document().loaded().name, "Table 2, w = 33e-7 N/mm²");
+  EXPECT_EQ(document().loaded().name, "Table 2, w = 336 g/m²");
   EXPECT_EQ(explorer_->analysis().sweep().key(), "w");
 }
 
@@ -872,6 +927,94 @@ TEST(Contrast, TextAndMarkerColoursReadInBothThemes) {
   EXPECT_NEAR(window_background(true).x, 0.94f, 1e-6);
 }
 
+// Every themed colour a user must read, against what it is drawn on, in both themes; and
+// ImGui's own hint grey and slider handle, which the themes change.
+TEST(Contrast, EveryThemedColourReadsOnWhatItIsDrawnOn) {
+  ASSERT_GE(themed_colours().size(), 14u);
+  for (const bool light : {false, true}) {
+    SCOPED_TRACE(light ? "light theme" : "dark theme");
+    const ImVec4 window = window_background(light);
+    const ImVec4 plot = plot_background(light);
+    const ImGuiStyle style = theme_style(light);
+    const ImVec4 text = style.Colors[ImGuiCol_Text];
+    for (const ThemedColourUse& use : themed_colours()) {
+      const ImVec4 colour = use.colour->get(light);
+      switch (use.on) {
+        case Backdrop::window:
+          EXPECT_GE(contrast_ratio(colour, window), 4.5) << use.name;
+          break;
+        case Backdrop::plot:
+          EXPECT_GE(contrast_ratio(colour, plot), 4.5) << use.name;
+          break;
+        case Backdrop::window_and_plot:
+          EXPECT_GE(contrast_ratio(colour, window), 4.5) << use.name;
+          EXPECT_GE(contrast_ratio(colour, plot), 4.5) << use.name;
+          break;
+        case Backdrop::under_text:
+          EXPECT_GE(contrast_ratio(text, blend_over(colour, window)), 4.5) << use.name;
+          break;
+        case Backdrop::under_dim_text:
+          EXPECT_GE(contrast_ratio(kDimText.get(light), blend_over(colour, plot)), 4.5) << use.name;
+          break;
+      }
+    }
+    // Hints and help markers (ImGui's disabled text) on the window and on a plot.
+    EXPECT_GE(contrast_ratio(style.Colors[ImGuiCol_TextDisabled], window), 4.5);
+    EXPECT_GE(contrast_ratio(style.Colors[ImGuiCol_TextDisabled], plot), 4.5);
+    // A slider's value over its handle: the handle blended over the frame over the window.
+    const ImVec4 frame = blend_over(style.Colors[ImGuiCol_FrameBg], window);
+    EXPECT_GE(contrast_ratio(text, blend_over(style.Colors[ImGuiCol_SliderGrab], frame)), 4.5);
+    EXPECT_GE(contrast_ratio(text, blend_over(style.Colors[ImGuiCol_SliderGrabActive], frame)),
+              4.5);
+  }
+  // What the light theme showed before, by hand: the staircase's orange (255, 120, 60) on the
+  // 0.94 grey, L = 0.2126 × 1 + 0.7152 × 0.1878 + 0.0722 × 0.0452 = 0.3502, so
+  // (0.8689 + 0.05) / (0.3502 + 0.05) = 2.30; ImGui's hint grey 0.6 (L = 0.3185): 2.49.
+  const ImVec4 old_staircase(1.0f, 120 / 255.0f, 60 / 255.0f, 1.0f);
+  EXPECT_NEAR(contrast_ratio(old_staircase, window_background(true)), 2.30, 0.01);
+  EXPECT_NEAR(contrast_ratio(ImVec4(0.6f, 0.6f, 0.6f, 1.0f), window_background(true)), 2.49, 0.01);
+}
+
+// The handle is narrow, so that it covers at most a part of one character of the value.
+TEST(SliderHandle, IsNarrowerThanACharacter) {
+  for (const bool light : {false, true}) {
+    EXPECT_LE(theme_style(light).GrabMinSize, 4.0f);
+  }
+}
+
+// The paper's symbols where the font has them, their ASCII names where it has not (the built-in
+// font of the headless tests): ν on its slider and in K's name, λ in the results.
+TEST_F(ExplorerTest, GreekShowsWithDejaVuAndSpeltOutWithTheBuiltInFont) {
+  document().expert_mode = true;
+  frame();
+  std::string text = frame();
+  EXPECT_NE(text.find("nu (Poisson's ratio)"), std::string::npos) << text;
+  EXPECT_NE(text.find("K (eq. 7 constant c/(1-nu²))"), std::string::npos) << text;
+  EXPECT_EQ(readable("ν σ λ π Σ ∫ −"), "nu sigma lambda pi Sum Int -");
+
+  open_explorer("map", kDejaVuSans);
+  document().expert_mode = true;
+  frame();
+  text = frame();
+  // (Spaces in DejaVu's proportional text are not told from narrow gaps: compared without.)
+  EXPECT_NE(squeezed(text).find("ν(Poisson'sratio)"), std::string::npos) << text;
+  EXPECT_NE(squeezed(text).find("K(eq.7constantc/(1-ν²))"), std::string::npos) << text;
+  EXPECT_EQ(squeezed(text).find("nu("), std::string::npos) << text;
+  const ImFont* font = ImGui::GetIO().Fonts->Fonts[0];
+  for (const unsigned used : {0x03BDu, 0x03C3u, 0x03BBu, 0x03C0u, 0x03A3u, 0x222Bu, 0x2212u}) {
+    EXPECT_NE(font->FindGlyphNoFallback(static_cast<ImWchar>(used)), nullptr) << used;
+  }
+  EXPECT_EQ(readable("ν σ λ π Σ ∫ −"), "ν σ λ π Σ ∫ −");
+}
+
+// The breeze's slider is named with its unit.
+TEST_F(ExplorerTest, TheBreezeSliderHasALabelWithItsUnit) {
+  EXPECT_EQ(frame().find("sway (mm)"), std::string::npos) << "no breeze, no slider";
+  ASSERT_EQ(explorer_->set_view("breeze", "1"), std::nullopt);
+  frame();
+  EXPECT_NE(frame().find("sway (mm)"), std::string::npos) << last_text_;
+}
+
 TEST_F(ExplorerTest, TheFontHasGreekAndFallsBackWhenMissing) {
   constexpr ImWchar kNu = 0x03BD;
   constexpr ImWchar kCapitalSigma = 0x03A3;
@@ -999,11 +1142,13 @@ int play(Explorer& explorer, const nlohmann::json& script, const std::function<v
 }
 
 TEST_F(ExplorerTest, DraggingTheWSliderFromItsHandleMovesWOneThirdOfADecadePer40Pixels) {
-  // ImGui 1.86 floats: a 10 px handle inside 2 px of padding, so the handle's centre travels
-  // W - 14 px over the slider's three decades (1e-7 to 1e-4 N/mm², the table's typical range).
+  // ImGui 1.86 floats: the theme's 4 px handle inside 2 px of padding, so the handle's centre
+  // travels W - 8 px over the slider's three decades (1e-7 to 1e-4 N/mm², the table's typical
+  // range).
   const double w0 = explorer_->edited().fabric.weight_N_per_mm2;
   const SliderPlace place = explorer_->parameters_panel().slider_places().at("w");
-  const double travel_px = place.max.x - place.min.x - 14.0;
+  ASSERT_EQ(ImGui::GetStyle().GrabMinSize, 4.0f);
+  const double travel_px = place.max.x - place.min.x - 8.0;
   for (const double dx : {40.0, -40.0}) {
     explorer_->set_input("w", w0);
     frame();
@@ -1061,6 +1206,12 @@ TEST_F(ExplorerTest, TheMethodTabStepsThroughThePapersIteration) {
   // (The test's font draws ′, − and ≤ as "?": the checks read around them.)
   EXPECT_NE(text.find("= 7.12 % > 5 %: iterate again."), std::string::npos) << text;
   EXPECT_NE(text.find("0.9288"), std::string::npos) << "L′/L in the table";
+  // a_0 − a_n = 1.01 h − 0.01 h = h: the a-differences alone make h, so eq. 9's root on the first
+  // iterate is exactly 0, shown as such (not as a rounded 0.00) and said to come from eq. 9.
+  EXPECT_EQ(explorer_->analysis().method().trace().iterates.front().z_max_mm, 0.0);
+  EXPECT_NE(squeezed(text).find(squeezed("so eq. 9 gives z_max = 0 mm.")), std::string::npos)
+      << text;
+  EXPECT_EQ(text.find("0.00 "), std::string::npos) << text;
   click("Step");
   text = frame();
   EXPECT_EQ(explorer_->analysis().method().shown(), 2);
@@ -1626,13 +1777,96 @@ TEST_F(ExplorerTest, TheRegimeMapHasAColourBarAndNamesItsRegimes) {
   for (const char* name : {"no slack", "short cloth", "negligible slack", "invalid inputs"}) {
     EXPECT_NE(text.find(name), std::string::npos) << name << "\n" << text;
   }
-  // The bar's scale, 1 at the bottom to 200 at the top, right of the map's x range (3e+03).
+  // The bar's scale, 1 at the bottom to 200 at the top, right of the map's x range (3000).
   const ImVec2 top = position_of("\n200\n");
   const ImVec2 bottom = position_of("\n1\n");
-  const ImVec2 x_to = position_of("3e+03");
+  const ImVec2 x_to = position_of("3000");
   EXPECT_LT(top.y, bottom.y);
   EXPECT_GT(top.x, x_to.x);
   EXPECT_GT(bottom.x, x_to.x);
+}
+
+// The map's axes carry round ticks in the sliders' units: h over 300..3000 mm 1, 2 or 5 × 10^k
+// apart, w over 3e-7..1e-5 N/mm² = 30.6..1019 g/m² (log scale) at 1, 2 or 5 × 10^k g/m², written
+// out and no two labels overlapping.
+TEST_F(ExplorerTest, TheRegimeMapsAxesHaveRoundTicksInTheSlidersUnits) {
+  open_explorer("map");
+  while (explorer_->busy()) {
+    frame();
+  }
+  const std::string text = frame();
+  // The x labels: the line above the x title, evenly spaced by a round step.
+  const std::size_t title = text.find("\nh (mm)\n");
+  ASSERT_NE(title, std::string::npos) << text;
+  const std::size_t line = text.rfind('\n', title - 1) + 1;
+  const std::string x_labels = text.substr(line, title - line);
+  EXPECT_EQ(x_labels.find('e'), std::string::npos) << x_labels;
+  std::vector<double> x_ticks;
+  for (const char* at = x_labels.c_str(); *at != '\0';) {
+    char* end = nullptr;
+    x_ticks.push_back(std::strtod(at, &end));
+    ASSERT_NE(end, at) << x_labels;
+    at = end;
+  }
+  ASSERT_GE(x_ticks.size(), 2u) << x_labels;
+  const double step = x_ticks[1] - x_ticks[0];
+  const double mantissa = step / std::pow(10.0, std::floor(std::log10(step)));
+  EXPECT_TRUE(mantissa == 1.0 || mantissa == 2.0 || mantissa == 5.0) << x_labels;
+  for (std::size_t k = 1; k < x_ticks.size(); ++k) {
+    EXPECT_EQ(x_ticks[k] - x_ticks[k - 1], step) << x_labels;
+    EXPECT_GE(x_ticks[k - 1], 300.0);
+    EXPECT_LE(x_ticks[k], 3000.0);
+    // Drawn apart: the next label starts right of where this one ends.
+    const ImVec2 here = position_of(" " + format_tick(x_ticks[k], step));
+    EXPECT_GT(here.x, 0.0f);
+  }
+  // The y labels: one a line between the y title and the x labels, 1, 2 or 5 × 10^k g/m² inside
+  // 30.6..1019, ascending, each at least a line above the one before.
+  const std::size_t y_title = text.find("\nw (g/m²)\n");
+  ASSERT_NE(y_title, std::string::npos) << text;
+  const std::size_t first_y = y_title + std::string("\nw (g/m²)\n").size();
+  std::vector<double> y_ticks;
+  float last_y = -1e9f;
+  for (std::size_t at = first_y; at < line;) {
+    const std::size_t end = text.find('\n', at);
+    const std::string label = text.substr(at, end - at);
+    const double value = std::strtod(label.c_str(), nullptr);
+    EXPECT_EQ(label.find('e'), std::string::npos) << label;
+    const double leading = value / std::pow(10.0, std::floor(std::log10(value) + 1e-9));
+    EXPECT_TRUE(std::abs(leading - 1) < 1e-9 || std::abs(leading - 2) < 1e-9 ||
+                std::abs(leading - 5) < 1e-9)
+        << label;
+    EXPECT_GT(value, 30.58);
+    EXPECT_LT(value, 1019.4);
+    if (!y_ticks.empty()) {  // drawn from the bottom up
+      EXPECT_GT(value, y_ticks.back());
+      EXPECT_GE(last_y - last_positions_[at].y, ImGui::GetFontSize()) << label;
+    }
+    y_ticks.push_back(value);
+    last_y = last_positions_[at].y;
+    at = end + 1;
+  }
+  ASSERT_GE(y_ticks.size(), 2u) << text;
+  EXPECT_TRUE(w_in_e_notation_only_beside_its_slider(text)) << text;
+
+  // The hover reads in the same units, at the ticks it is over.
+  const ImVec2 w_100 = position_of("\n100\n");  // a decade on a log axis is always labelled
+  const std::string x_tick = format_tick(x_ticks.back(), step);
+  const ImVec2 x_at = position_of(x_tick);
+  ImGui::GetIO().MousePos = ImVec2(x_at.x + 0.5f * ImGui::CalcTextSize(x_tick.c_str()).x - 2.0f,
+                                   w_100.y + 0.5f * ImGui::GetFontSize());
+  frame();
+  const std::string hovered = frame();
+  // Within a cell (2700 mm / 256 = 11 mm; a w cell is 1/256 of 1.52 decades, 1.4 %) and the
+  // 2 px the mouse stays left of the map's edge.
+  const std::string first_tick = format_tick(x_ticks.front(), step);
+  const float first_centre =
+      position_of(first_tick).x + 0.5f * ImGui::CalcTextSize(first_tick.c_str()).x;
+  const float last_centre = x_at.x + 0.5f * ImGui::CalcTextSize(x_tick.c_str()).x;
+  const double mm_per_px = (x_ticks.back() - x_ticks.front()) / (last_centre - first_centre);
+  EXPECT_NEAR(number_after(hovered, ", w = "), 100.0, 3.0) << hovered;
+  EXPECT_NEAR(number_after(hovered, "\nh = "), x_ticks.back(), 11.0 + 3.0 * mm_per_px) << hovered;
+  EXPECT_NE(hovered.find(" g/m²\n"), std::string::npos) << hovered;
 }
 
 // At the smallest supported window the controls of each panel are drawn inside it, not cut off
@@ -1915,11 +2149,11 @@ TEST_F(ExplorerTest, ARegimeMapClickIsOneUndoStep) {
   frame();
   const Parameters before = shown();
   const std::size_t depth = document().undo_depth();
-  // The map lies between its x labels (300 at its left, 3e+03 under its right edge) and between
-  // its top y label (1e-05) and the x labels under it.
-  const ImVec2 x_from = position_of("300 3e+03");
-  const ImVec2 x_to = position_of("3e+03");
-  const ImVec2 y_to = position_of("1e-05");
+  // The map lies over its x labels (1000 to 3000 mm) and beside its y labels (50 to 1000 g/m²):
+  // a click between them is inside it.
+  const ImVec2 x_from = position_of("1000 2000");
+  const ImVec2 x_to = position_of("3000\nh (mm)");
+  const ImVec2 y_to = position_of("\n1000\n");
   const ImVec2 middle(0.5f * (x_from.x + x_to.x), 0.5f * (y_to.y + x_to.y));
   click_at(middle);
   EXPECT_NE(shown().hanging.height_mm, before.hanging.height_mm);

@@ -106,6 +106,38 @@ TEST(PlotTicks, Labels) {
   EXPECT_EQ(format_tick(1.00000000002, 2e-11), "1.00000000002");
 }
 
+// Hand-computed: labels 7 px a character with 6 px between them. 0..3000 over 300 px: steps of
+// 200 put "1000" and "1200" (28 px each) 20 px apart, short of 34; steps of 500 are 50 px apart.
+TEST(PlotTicks, FittedTicksAreRoundAndTheirLabelsNeverOverlap) {
+  const auto seven_px = [](const std::string& label) {
+    return 7.0f * static_cast<float>(label.size());
+  };
+  AxisTicks t = fitted_ticks(0, 3000, false, 300, seven_px, 6, 12);
+  EXPECT_EQ(t.values, (std::vector<double>{0, 500, 1000, 1500, 2000, 2500, 3000}));
+  EXPECT_EQ(t.labels.back(), "3000");  // written out, not 3e+03
+  // Over 100 px, 1000 apart is 33.3 px, short of 34: two ticks, 2000 apart.
+  EXPECT_EQ(fitted_ticks(0, 3000, false, 100, seven_px, 6, 12).values,
+            (std::vector<double>{0, 2000}));
+  // Over 30 px not even 0 and 2000 fit (20 px apart): 2000 alone, nearer the middle (15 px).
+  t = fitted_ticks(0, 3000, false, 30, seven_px, 6, 12);
+  EXPECT_EQ(t.values, (std::vector<double>{2000}));
+  EXPECT_EQ(t.labels, (std::vector<std::string>{"2000"}));
+  // A font twice as large over 300 px: 500 apart (50 px) is short of 62, 1000 apart fits.
+  const auto fourteen_px = [](const std::string& label) {
+    return 14.0f * static_cast<float>(label.size());
+  };
+  EXPECT_EQ(fitted_ticks(0, 3000, false, 300, fourteen_px, 12, 12).values,
+            (std::vector<double>{0, 1000, 2000, 3000}));
+  // A log axis over 100..10000 g/m², 150 px a decade: 1, 2 and 5 fit (100 to 200 is 45 px).
+  t = fitted_ticks(100, 10000, true, 300, seven_px, 6, 12);
+  EXPECT_EQ(t.values, (std::vector<double>{100, 200, 500, 1000, 2000, 5000, 10000}));
+  EXPECT_EQ(t.labels,
+            (std::vector<std::string>{"100", "200", "500", "1000", "2000", "5000", "10000"}));
+  // 40 px a decade: 100 to 200 is 12 px, so decades only ("1000" to "10000" needs 37.5 px).
+  EXPECT_EQ(fitted_ticks(100, 10000, true, 80, seven_px, 6, 12).values,
+            (std::vector<double>{100, 1000, 10000}));
+}
+
 // --- the widget, headless ---------------------------------------------------------------------
 
 constexpr ImU32 kColA = IM_COL32(201, 17, 33, 255);
@@ -354,6 +386,85 @@ TEST_F(PlotWidget, WheelZoomsAroundTheCursor) {
   ImGui::GetIO().MouseWheel = -1;
   frame_ab();
   EXPECT_NEAR(plot_.view().x_hi - plot_.view().x_lo, before.x_hi - before.x_lo, 1e-9);
+}
+
+// Font 13 px (pad 5): the y title, the x labels and the x title take 18 px each and two lines of
+// data 26 px, 80 px in all. A 90 px plot with a 20 px legend row has 70 px left: no legend, so
+// that it cannot cover the x labels; 120 px keeps it.
+TEST_F(PlotWidget, APlotTooShortForItsLegendDropsIt) {
+  const auto legend_height = [&](float plot_height) {
+    frame([&] {
+      ASSERT_TRUE(plot_.begin("plot", ImVec2(600, plot_height), x_axis_, y_axis_));
+      plot_.line("A", ax_, ay_, kColA);
+      plot_.end();
+    });
+    return plot_.view().legend_max.y - plot_.view().legend_min.y;
+  };
+  EXPECT_EQ(legend_height(90.0f), 0.0f);
+  EXPECT_GT(legend_height(120.0f), 0.0f);
+  // The x labels stay inside the frame, above where the legend would be.
+  EXPECT_LE(plot_.view().max.y + 13.0f, plot_.view().legend_min.y);
+}
+
+// In a window that scrolls, the wheel over a plot scrolls the window until the plot is clicked;
+// after a click elsewhere it scrolls the window again.
+TEST_F(PlotWidget, InAScrollingWindowTheWheelScrollsUntilThePlotIsClicked) {
+  float scroll_y = 0.0f;
+  const auto scrolling_frame = [&] {
+    frame([&] {
+      ASSERT_TRUE(plot_.begin("plot", ImVec2(600, 300), x_axis_, y_axis_));
+      plot_.line("A", ax_, ay_, kColA);
+      plot_.end();
+      ImGui::Dummy(ImVec2(600, 900));  // the window's content is taller than the window
+      scroll_y = ImGui::GetScrollY();
+    });
+  };
+  scrolling_frame();
+  scrolling_frame();
+  const PlotView before = plot_.view();
+  ImGuiIO& io = ImGui::GetIO();
+  move_mouse(ImVec2((before.min.x + before.max.x) / 2, (before.min.y + before.max.y) / 2));
+  scrolling_frame();
+  io.MouseWheel = -1;
+  scrolling_frame();
+  io.MouseWheel = 0;  // one notch: the headless context does not clear it
+  scrolling_frame();
+  EXPECT_GT(scroll_y, 0.0f) << "the window scrolled";
+  EXPECT_NEAR(plot_.view().x_hi - plot_.view().x_lo, before.x_hi - before.x_lo, 1e-9);
+  EXPECT_TRUE(plot_.view().x_auto) << "the plot did not zoom";
+
+  // Clicked, the plot takes the wheel and the window stays where it is.
+  const PlotView now = plot_.view();
+  move_mouse(ImVec2((now.min.x + now.max.x) / 2, (now.min.y + now.max.y) / 2));
+  scrolling_frame();  // there before the press, which a move in the same frame would make a drag
+  io.MouseDown[0] = true;
+  scrolling_frame();
+  io.MouseDown[0] = false;
+  scrolling_frame();
+  const float scrolled = scroll_y;
+  io.MouseWheel = 1;
+  scrolling_frame();
+  io.MouseWheel = 0;  // one notch: the headless context does not clear it
+  scrolling_frame();
+  EXPECT_EQ(scroll_y, scrolled);
+  EXPECT_NEAR(plot_.view().x_hi - plot_.view().x_lo, (now.x_hi - now.x_lo) / 1.25, 1e-9);
+
+  // A click beside the plot gives the wheel back to the window.
+  move_mouse(ImVec2(700, 500));
+  scrolling_frame();
+  io.MouseDown[0] = true;
+  scrolling_frame();
+  io.MouseDown[0] = false;
+  scrolling_frame();
+  const PlotView zoomed = plot_.view();
+  move_mouse(ImVec2((zoomed.min.x + zoomed.max.x) / 2, (zoomed.min.y + zoomed.max.y) / 2));
+  scrolling_frame();
+  io.MouseWheel = 1;
+  scrolling_frame();
+  io.MouseWheel = 0;  // one notch: the headless context does not clear it
+  scrolling_frame();
+  EXPECT_LT(scroll_y, scrolled);
+  EXPECT_NEAR(plot_.view().x_hi - plot_.view().x_lo, zoomed.x_hi - zoomed.x_lo, 1e-9);
 }
 
 TEST_F(PlotWidget, ShiftZoomsOnlyXAndCtrlOnlyY) {

@@ -229,6 +229,20 @@ TEST(Settings, WeightsAreReadInGramsPerSquareMetreAndOuncesPerSquareYard) {
               1e-4);
 }
 
+// The explorer shows every input in its slider's unit, from the one place that says what it is.
+TEST(Settings, ShownLabelsAndValuesUseTheSlidersUnit) {
+  const foldlab::InputSpec& w = *foldlab::find_input("w");
+  // 1.5e-6 N/mm² / 9.81e-9 = 152.905 g/m²; 100 g/m² = 9.81e-7 N/mm².
+  EXPECT_NEAR(foldlab::to_shown_unit(w, 1.5e-6), 152.905, 1e-3);
+  EXPECT_NEAR(foldlab::from_shown_unit(w, 100.0), 9.81e-7, 1e-18);
+  EXPECT_EQ(foldlab::shown_label(w), "w (g/m²)");
+  EXPECT_EQ(foldlab::shown_label(*foldlab::find_input("h")), "h (mm)");
+  EXPECT_EQ(foldlab::to_shown_unit(*foldlab::find_input("h"), 1400.0), 1400.0);
+  // As the paper writes it: ν, dimensionless.
+  EXPECT_EQ(foldlab::shown_label(*foldlab::find_input("nu")), "ν");
+  EXPECT_EQ(foldlab::input_symbol(*foldlab::find_input("E")), "E");
+}
+
 TEST(Settings, SetAcceptsAUnitAfterTheNumber) {
   Parameters p;
   EXPECT_FALSE(foldlab::apply_setting(p, "w", "80g/m2"));

@@ -11,20 +11,6 @@ double linear(double srgb) {
   return srgb <= 0.04045 ? srgb / 12.92 : std::pow((srgb + 0.055) / 1.055, 2.4);
 }
 
-// The style as a theme draws it, before scaling.
-ImGuiStyle theme_style(bool light_theme) {
-  ImGuiStyle style;
-  if (light_theme) {
-    ImGui::StyleColorsLight(&style);
-  } else {
-    ImGui::StyleColorsDark(&style);
-  }
-  // Square, opaque panels whose backgrounds the renderer fills: ImGui draws none of its own.
-  style.WindowRounding = 0.0f;
-  style.Colors[ImGuiCol_WindowBg].w = 0.0f;
-  return style;
-}
-
 // Latin-1 for text and units (², ³, ×, °), Greek for the paper's symbols, and the punctuation,
 // arrows and operators the equations use (′, −, …, ↦, ≥, √, Σ).
 const ImWchar kGlyphRanges[] = {
@@ -39,7 +25,51 @@ const ImWchar kGlyphRanges[] = {
 constexpr float kTtfSizePx = 15.0f;
 constexpr float kDefaultFontSizePx = 13.0f;  // ImGui's built-in ProggyClean
 
+// A slider's handle: narrow, and translucent enough that the value drawn over it stays readable.
+constexpr float kGrabWidthPx = 4.0f;
+constexpr float kGrabAlpha = 0.45f;
+
 }  // namespace
+
+ImGuiStyle theme_style(bool light_theme) {
+  ImGuiStyle style;
+  if (light_theme) {
+    ImGui::StyleColorsLight(&style);
+  } else {
+    ImGui::StyleColorsDark(&style);
+  }
+  // Square, opaque panels whose backgrounds the renderer fills: ImGui draws none of its own.
+  style.WindowRounding = 0.0f;
+  style.Colors[ImGuiCol_WindowBg].w = 0.0f;
+  // ImGui's greys for hints and disabled text read at 2.4:1 on the light theme's background.
+  style.Colors[ImGuiCol_TextDisabled] = kDimText.get(light_theme);
+  style.GrabMinSize = kGrabWidthPx;
+  style.Colors[ImGuiCol_SliderGrab].w = kGrabAlpha;
+  style.Colors[ImGuiCol_SliderGrabActive].w = kGrabAlpha + 0.15f;
+  return style;
+}
+
+std::span<const ThemedColourUse> themed_colours() {
+  static const ThemedColourUse uses[] = {
+      {"error text", &kErrorText, Backdrop::window},
+      {"success text", &kOkText, Backdrop::window},
+      {"note text", &kNoteText, Backdrop::window},
+      {"dim text and hints", &kDimText, Backdrop::window_and_plot},
+      {"section title", &kSectionText, Backdrop::window},
+      {"supports", &kSupportMarker, Backdrop::plot},
+      {"sweep curve", &kSweepCurve, Backdrop::plot},
+      {"paper's points", &kPaperPoint, Backdrop::window_and_plot},
+      {"current value", &kCurrentValue, Backdrop::plot},
+      {"L'/L per iterate, next n = n", &kIterateLine, Backdrop::window_and_plot},
+      {"tolerance band", &kToleranceBand, Backdrop::window_and_plot},
+      {"guide", &kGuideLine, Backdrop::window_and_plot},
+      {"staircase", &kStairLine, Backdrop::window_and_plot},
+      {"refused slider", &kRefusedFrame, Backdrop::under_text},
+      {"sweep band", &kRegimeBandFill, Backdrop::under_dim_text},
+      {"refused sweep band", &kRefusedBandFill, Backdrop::under_dim_text},
+  };
+  return uses;
+}
 
 double relative_luminance(double r, double g, double b) {
   return 0.2126 * linear(r) + 0.7152 * linear(g) + 0.0722 * linear(b);

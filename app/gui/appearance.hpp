@@ -4,6 +4,7 @@
 #pragma once
 
 #include <filesystem>
+#include <span>
 #include <string>
 
 #include <imgui.h>
@@ -42,6 +43,10 @@ ImVec4 plot_background(bool light_theme);
 // The window's background as the renderer fills it, opaque: what text is read against.
 ImVec4 window_background(bool light_theme);
 
+// The style of a theme before scaling: ImGui's dark or light colours with the explorer's changes
+// (hints and handles that keep their text readable, square opaque panels).
+ImGuiStyle theme_style(bool light_theme);
+
 // A colour with one value per theme, each with at least 4.5:1 contrast against what it is drawn
 // on in that theme. Converts to the current theme's value, so it reads like a plain ImVec4.
 struct ThemedColour {
@@ -64,6 +69,33 @@ inline const ThemedColour kSupportMarker{{0.94f, 0.78f, 0.24f, 1.0f}, {0.55f, 0.
 inline const ThemedColour kSweepCurve{{0.35f, 0.67f, 1.00f, 1.0f}, {0.05f, 0.35f, 0.75f, 1.0f}};
 inline const ThemedColour kPaperPoint{{1.00f, 0.47f, 0.24f, 1.0f}, {0.75f, 0.25f, 0.00f, 1.0f}};
 inline const ThemedColour kCurrentValue{{0.94f, 0.86f, 0.35f, 1.0f}, {0.45f, 0.40f, 0.00f, 1.0f}};
+// The Method tab's plots and their key in words beside them (so against both backgrounds): L′/L
+// per iterate, the tolerance band's edges, the diagonal guide, the staircase and the map.
+inline const ThemedColour kIterateLine{{0.35f, 0.67f, 1.00f, 1.0f}, {0.05f, 0.33f, 0.72f, 1.0f}};
+inline const ThemedColour kToleranceBand{{0.47f, 0.80f, 0.47f, 1.0f}, {0.05f, 0.42f, 0.10f, 1.0f}};
+inline const ThemedColour kGuideLine{{0.65f, 0.65f, 0.70f, 1.0f}, {0.35f, 0.35f, 0.38f, 1.0f}};
+inline const ThemedColour kStairLine{{1.00f, 0.55f, 0.30f, 1.0f}, {0.70f, 0.25f, 0.00f, 1.0f}};
+// A slider's frame while its value is refused; the theme's text is read on it.
+inline const ThemedColour kRefusedFrame{{0.55f, 0.12f, 0.10f, 1.0f}, {1.00f, 0.78f, 0.76f, 1.0f}};
+
+// The sweep's regime bands over the plot, named in dim text: one the model solves, one it refuses.
+inline const ThemedColour kRegimeBandFill{{0.59f, 0.59f, 0.63f, 0.12f},
+                                          {0.59f, 0.59f, 0.63f, 0.24f}};
+inline const ThemedColour kRefusedBandFill{{0.90f, 0.35f, 0.31f, 0.20f},
+                                           {0.90f, 0.35f, 0.31f, 0.24f}};
+
+// What a themed colour is drawn on: the window, the plot's data area, either (a plot's line with
+// its key in words beside the plot), under the theme's own text (a frame's fill), or over the
+// plot under dim text (a band).
+enum class Backdrop { window, plot, window_and_plot, under_text, under_dim_text };
+struct ThemedColourUse {
+  const char* name;
+  const ThemedColour* colour;
+  Backdrop on;
+};
+// Every themed colour a user must read, with what it is drawn on: the table the contrast test
+// goes through.
+std::span<const ThemedColourUse> themed_colours();
 
 // Builds the font atlas and the style for a scale and theme. Call outside a frame (between
 // ImGui::Render and ImGui::NewFrame); the renderer re-uploads the atlas.

@@ -384,6 +384,45 @@ std::string format_tick(double value, double step) {
   return buf;
 }
 
+AxisTicks fitted_ticks(double lo, double hi, bool log, double length_px,
+                       const std::function<float(const std::string&)>& extent, float gap_px,
+                       int max_ticks) {
+  AxisTicks ticks;
+  if (lo > hi)
+    std::swap(lo, hi);
+  const double t_lo = to_t(lo, log), t_hi = to_t(hi, log);
+  const auto px = [&](double v) { return (to_t(v, log) - t_lo) / (t_hi - t_lo) * length_px; };
+  char buf[64];
+  for (int target = std::max(max_ticks, 1); target >= 1; --target) {
+    ticks.values.clear();
+    ticks.labels.clear();
+    axis_ticks(t_lo, t_hi, log, target, ticks.values);
+    for (std::size_t i = 0; i < ticks.values.size(); ++i) {
+      format_tick_into(buf, sizeof buf, ticks.values[i], tick_step(ticks.values, i));
+      ticks.labels.emplace_back(buf);
+    }
+    bool fits = true;
+    for (std::size_t i = 1; i < ticks.values.size() && fits; ++i) {
+      const double room = std::abs(px(ticks.values[i]) - px(ticks.values[i - 1]));
+      fits = room >= 0.5 * (extent(ticks.labels[i]) + extent(ticks.labels[i - 1])) + gap_px;
+    }
+    if (fits)
+      return ticks;
+    if (ticks.values.size() <= 2)
+      break;
+  }
+  // Not even two labels fit: the one nearest the axis's middle alone.
+  if (ticks.values.size() == 2) {
+    const std::size_t keep = std::abs(px(ticks.values[0]) - 0.5 * length_px) <=
+                                     std::abs(px(ticks.values[1]) - 0.5 * length_px)
+                                 ? 0
+                                 : 1;
+    ticks.values = {ticks.values[keep]};
+    ticks.labels = {ticks.labels[keep]};
+  }
+  return ticks;
+}
+
 ImVec2 PlotView::to_screen(double x, double y) const {
   const AxisMap xm = x_map(to_t(x_lo, x_log), to_t(x_hi, x_log), min, max, x_log, x_flipped);
   const AxisMap ym = y_map(to_t(y_lo, y_log), to_t(y_hi, y_log), min, max, y_log, y_flipped);
@@ -427,8 +466,21 @@ bool Plot::begin(const char* id, ImVec2 size, const PlotAxis& x, const PlotAxis&
   double_clicked_ = hovered_ && ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left);
   frame_min_ = ImGui::GetItemRectMin();
   frame_max_ = ImGui::GetItemRectMax();
-  if (hovered_)
+  // In a panel that scrolls, the wheel scrolls the panel until the plot is clicked: a plot met
+  // on the way down a panel must not catch the wheel. A click elsewhere gives the wheel back.
+  if (hovered_ && (ImGui::IsMouseClicked(ImGuiMouseButton_Left) ||
+                   ImGui::IsMouseClicked(ImGuiMouseButton_Right)))
+    focused_ = true;
+  else if (!hovered_ && ImGui::IsMouseClicked(ImGuiMouseButton_Left))
+    focused_ = false;
+  in_scrolling_window_ = ImGui::GetScrollMaxY() > 0.0f;
+  wheel_zooms_ = hovered_ && (focused_ || !in_scrolling_window_);
+  if (wheel_zooms_)
     ImGui::SetItemUsingMouseWheel();
+  if (!hovered_)
+    wheel_hint_ = false;
+  else if (ImGui::GetIO().MouseWheel != 0.0f && !wheel_zooms_)
+    wheel_hint_ = true;
   // Keyed to the button's id (not a string) so that two plots in a window get two menus.
   if (ImGui::BeginPopupContextItem(nullptr)) {
     if (ImGui::MenuItem("Autoscale"))
@@ -598,6 +650,7 @@ std::optional<PlotHit> Plot::end() {
   f.draw_list->AddRect(f.lay.min, f.lay.max, f.col_border);
   draw_tick_labels_and_titles(f);
   draw_legend(f);
+  draw_wheel_state(f);
   store_view_state(f);
   return hit;
 }
@@ -666,6 +719,14 @@ void Plot::lay_out_legend(Frame& f) {
     x += w + 2 * f.font;
   }
   legend_height_ = rows > 0 ? static_cast<float>(rows) * f.row + f.pad : 0.0f;
+  // A plot too short for its titles, tick labels, two lines of data and the legend drops the
+  // legend rather than draw it over the x labels (the tooltip still names each series).
+  const float axes_need = (f.y_title ? f.font + f.pad : f.font / 2) + (f.font + f.pad) +
+                          (f.x_title ? f.font + f.pad : 0.0f) + 2 * f.font;
+  if (frame_max_.y - frame_min_.y - legend_height_ < axes_need) {
+    legend_rows_.clear();
+    legend_height_ = 0.0f;
+  }
   f.axes_max = {frame_max_.x, std::max(frame_min_.y + 1, frame_max_.y - legend_height_)};
 }
 
@@ -673,7 +734,7 @@ void Plot::lay_out_legend(Frame& f) {
 void Plot::zoom_and_pan(Frame& f) const {
   f.label_width = f.storage->GetFloat(keys_[kLabelWidth], 0.0f);
   f.lay = layout(frame_min_, f.axes_max, f.label_width, f.x_title, f.y_title, f.font);
-  if (hovered_ && f.io->MouseWheel != 0)
+  if (wheel_zooms_ && f.io->MouseWheel != 0)
     wheel_zoom(f);
   if (active_)
     drag_pan(f);
@@ -727,11 +788,15 @@ void Plot::drag_pan(Frame& f) const {
 
 // The ticks, the y tick labels' width and with it the final layout and the maps to the screen.
 void Plot::place_ticks(Frame& f) {
-  char buf[64];
   const float plot_h = f.lay.max.y - f.lay.min.y;
-  axis_ticks(f.yt0, f.yt1, f.y_log, std::clamp(static_cast<int>(plot_h / (f.font * 2.5f)), 2, 12),
-             y_ticks_);
+  const float gap = f.font * 0.5f;
+  const auto line_height = [&f](const std::string&) { return f.font; };
+  y_ticks_ =
+      fitted_ticks(from_t(f.yt0, f.y_log), from_t(f.yt1, f.y_log), f.y_log, plot_h, line_height,
+                   gap, std::clamp(static_cast<int>(plot_h / (f.font * 2.0f)), 2, 12))
+          .values;
   float needed = 0;
+  char buf[64];
   for (std::size_t i = 0; i < y_ticks_.size(); ++i) {
     format_tick_into(buf, sizeof buf, y_ticks_[i], tick_step(y_ticks_, i));
     needed = std::max(needed, ImGui::CalcTextSize(buf).x);
@@ -741,8 +806,13 @@ void Plot::place_ticks(Frame& f) {
     f.label_width = needed;
   f.lay = layout(frame_min_, f.axes_max, f.label_width, f.x_title, f.y_title, f.font);
   const float plot_w = f.lay.max.x - f.lay.min.x;
-  axis_ticks(f.xt0, f.xt1, f.x_log, std::clamp(static_cast<int>(plot_w / (f.font * 5.0f)), 2, 12),
-             x_ticks_);
+  const auto text_width = [](const std::string& label) {
+    return ImGui::CalcTextSize(label.c_str()).x;
+  };
+  x_ticks_ =
+      fitted_ticks(from_t(f.xt0, f.x_log), from_t(f.xt1, f.x_log), f.x_log, plot_w, text_width, gap,
+                   std::clamp(static_cast<int>(plot_w / (f.font * 2.5f)), 2, 12))
+          .values;
   f.xm = x_map(f.xt0, f.xt1, f.lay.min, f.lay.max, f.x_log, x_axis_.flipped);
   f.ym = y_map(f.yt0, f.yt1, f.lay.min, f.lay.max, f.y_log, y_axis_.flipped);
 }
@@ -956,7 +1026,7 @@ void Plot::draw_y_tick_labels(const Frame& f) const {
 // Legend entries flow left to right below the axes, centred when they fit on one row.
 void Plot::draw_legend(const Frame& f) {
   view_.legend_min = view_.legend_max = ImVec2(frame_min_.x, f.axes_max.y);
-  if (legend_.empty())
+  if (legend_rows_.empty())
     return;
   float widest = 0;
   for (const LegendRow& r : legend_rows_) {
@@ -984,6 +1054,25 @@ void Plot::draw_legend(const Frame& f) {
   view_.legend_min = ImVec2(left, top);
   view_.legend_max = ImVec2(std::min(left + widest, frame_max_.x),
                             std::min(top + legend_rows_.back().y + f.row, frame_max_.y));
+}
+
+// In a scrolling panel: a frame round the data area while the plot takes the wheel, and after
+// a wheel turned over it that scrolled the panel instead, how to zoom.
+void Plot::draw_wheel_state(const Frame& f) const {
+  if (!in_scrolling_window_)
+    return;
+  if (focused_)
+    f.draw_list->AddRect(f.lay.min, f.lay.max, f.col_text, 0.0f, 0, 1.5f);
+  if (!wheel_hint_ || focused_)
+    return;
+  // Wrapped to the data area: a small plot is the usual place for it.
+  const float wrap = std::max(f.lay.max.x - f.lay.min.x - 2 * f.pad, f.font);
+  const ImVec2 size = ImGui::CalcTextSize(kWheelHint, nullptr, false, wrap);
+  const ImVec2 at{(f.lay.min.x + f.lay.max.x - size.x) / 2, f.lay.min.y + f.pad};
+  f.draw_list->AddRectFilled({at.x - f.pad, at.y - f.pad / 2},
+                             {at.x + size.x + f.pad, at.y + size.y + f.pad / 2},
+                             ImGui::GetColorU32(ImGuiCol_PopupBg, 1.0f));
+  f.draw_list->AddText(ImGui::GetFont(), f.font, at, f.col_text, kWheelHint, nullptr, wrap);
 }
 
 // The view and the label width, kept for the next frame.

@@ -16,8 +16,11 @@
 //
 // Interaction: the view follows the data (autoscale, with a 5 % margin) until the user zooms or
 // pans that axis. Mouse wheel zooms around the cursor (Shift: x only, Ctrl: y only), left drag
-// pans, double-click or the right-click menu's "Autoscale" turns autoscale back on. The data
-// point nearest to the mouse (within 12 px) is highlighted, shown in a tooltip and returned.
+// pans, double-click or the right-click menu's "Autoscale" turns autoscale back on. In a window
+// that scrolls, the wheel scrolls the window until the plot is clicked (it is then framed) and
+// again after a click elsewhere; a wheel turned over a plot that is not clicked shows kWheelHint.
+// The data point nearest to the mouse (within 12 px) is highlighted, shown in a tooltip and
+// returned.
 #pragma once
 
 #include <imgui.h>
@@ -31,6 +34,9 @@
 #include <vector>
 
 namespace foldlab::gui {
+
+// Shown over a plot in a scrolling window when the wheel scrolled the window rather than zoom.
+inline constexpr const char* kWheelHint = "click the plot to zoom";
 
 struct PlotAxis {
   std::string label;     // title with its unit, e.g. "x (mm)"; tick labels are plain numbers
@@ -158,11 +164,16 @@ class Plot {
   void draw_x_tick_labels(const Frame& f) const;
   void draw_y_tick_labels(const Frame& f) const;
   void draw_legend(const Frame& f);
+  void draw_wheel_state(const Frame& f) const;
   void store_view_state(const Frame& f) const;
 
   bool open_ = false;
   bool hovered_ = false, active_ = false, double_clicked_ = false;
   bool autoscale_requested_ = false;
+  // The wheel: whether this plot takes it this frame, whether it was clicked since the last
+  // click elsewhere, whether its window scrolls, and whether a wheel turned over it scrolled the
+  // window instead (then it says how to zoom until the mouse leaves).
+  bool wheel_zooms_ = false, focused_ = false, in_scrolling_window_ = false, wheel_hint_ = false;
   ImGuiID keys_[10] = {};
   ImVec2 frame_min_{0, 0}, frame_max_{0, 0};
   PlotAxis x_axis_, y_axis_;
@@ -189,5 +200,19 @@ std::vector<double> log_ticks(double lo, double hi, int target);
 // Label for a tick `value` on an axis whose ticks are `step` apart: as many decimals as the step
 // needs, exponent notation for very large or small values, never "-0".
 std::string format_tick(double value, double step);
+
+// An axis's ticks with their labels (format_tick, each with the step to its nearer neighbour).
+struct AxisTicks {
+  std::vector<double> values;
+  std::vector<std::string> labels;
+};
+// The most ticks (at most `max_ticks`: 1-2-5 × 10^k steps, or on a log axis decades with 2 and 5
+// where there is room) whose labels do not overlap on an axis `length_px` long over [lo, hi]:
+// `extent(label)` is a label's size along the axis (its width on an x axis, the line height on a
+// y axis) and `gap_px` the least space between two labels. Where not even two fit, the one
+// nearest the axis's middle.
+AxisTicks fitted_ticks(double lo, double hi, bool log, double length_px,
+                       const std::function<float(const std::string&)>& extent, float gap_px,
+                       int max_ticks);
 
 }  // namespace foldlab::gui

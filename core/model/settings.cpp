@@ -80,6 +80,7 @@ const std::vector<InputSpec>& build_table() {
        .number = [](Parameters& p) -> double& { return p.fabric.weight_N_per_mm2; }},
       {.key = "nu",
        .name = "Poisson's ratio",
+       .symbol = "ν",
        .field = "nu",
        .preset = "/fabric/poisson_ratio",
        .help = "Poisson's ratio",
@@ -131,9 +132,9 @@ const std::vector<InputSpec>& build_table() {
        .required = true,
        .number = [](Parameters& p) -> double& { return p.hanging.support_displacement_mm; }},
       {.key = "K",
-       .name = "eq. 7 constant c/(1-nu²)",
+       .name = "eq. 7 constant c/(1-ν²)",
        .field = "K",
-       .help = "c/(1-nu²) of eq. 7 (sets c at the current nu)",
+       .help = "c/(1-ν²) of eq. 7 (sets c at the current ν)",
        .kind = InputKind::stiffness_K,
        .typical_lo = 0.5,
        .typical_hi = 300.0,
@@ -396,6 +397,24 @@ InputUnit shown_unit(const InputSpec& spec) {
     return {{}, 1.0, spec.format};
   }
   return spec.key == "w" ? units[1] : units[0];
+}
+
+double to_shown_unit(const InputSpec& spec, double stored) {
+  return stored / shown_unit(spec).per_unit;
+}
+
+double from_shown_unit(const InputSpec& spec, double shown) {
+  return shown * shown_unit(spec).per_unit;
+}
+
+std::string_view input_symbol(const InputSpec& spec) {
+  return spec.symbol.empty() ? spec.key : spec.symbol;
+}
+
+std::string shown_label(const InputSpec& spec) {
+  const std::string_view unit = shown_unit(spec).symbol;
+  const std::string symbol(input_symbol(spec));
+  return unit.empty() ? symbol : symbol + " (" + std::string(unit) + ")";
 }
 
 namespace {

@@ -37,6 +37,7 @@ struct InputInterval {
 struct InputSpec {
   std::string_view key{};     // as typed after --set, and the sweep axis: "t", "E", ...
   std::string_view name{};    // what it is, for labels and help: "thickness"
+  std::string_view symbol{};  // as the paper writes it where that is not the key: "ν" for nu
   std::string_view unit{};    // "mm", "MPa", ...; empty when dimensionless
   std::string_view field{};   // validation and report name, with the unit: "t_mm"
   std::string_view preset{};  // JSON pointer in a preset file: "/fabric/thickness_mm"; empty: none
@@ -112,6 +113,13 @@ struct InputUnit {
 std::vector<InputUnit> input_units(const InputSpec& spec);
 // The unit the explorer shows and takes `spec` in: g/m² for w, else the row's own unit.
 InputUnit shown_unit(const InputSpec& spec);
+// A stored value in shown_unit(spec) and back: 1.5e-6 N/mm² is 152.9 g/m².
+double to_shown_unit(const InputSpec& spec, double stored);
+double from_shown_unit(const InputSpec& spec, double shown);
+// The symbol as the paper writes it ("ν"), else the key.
+std::string_view input_symbol(const InputSpec& spec);
+// "w (g/m²)", "ν": the symbol with the shown unit, for the explorer's axes and tables.
+std::string shown_label(const InputSpec& spec);
 
 // "80 g/m2", "80 g/m²", "80gsm", "2.4 oz/yd2", "1.5e-6 N/mm2": a number, optionally followed by
 // one of input_units(spec) (spaces, case and ² vs 2 do not matter), as the value in the stored

@@ -9,6 +9,7 @@
 
 #include "app/gui/panels/widgets.hpp"
 #include "core/model/equations.hpp"
+#include "core/model/text_format.hpp"
 
 namespace foldlab::gui {
 
@@ -73,7 +74,7 @@ void EquationsTab::draw(Document& document) {
   ImGui::TextWrapped("The model with today's numbers (mm, MPa, N/mm²).");
   const WrinkleLaw& law = wrinkle_law(p.model.law);
   const bool even = s.count_rule && s.count_rule->spacing == FoldSpacing::even;
-  section(even ? "Cerda-Mahadevan: the wrinkle wavelength lambda"
+  section(even ? readable("Cerda-Mahadevan: the wrinkle wavelength λ").c_str()
                : "eq. 7: critical stress gives Q7");
   ImGui::TextWrapped("s = K E t³ / (w h l²) = %.4g × %.4g × %.4g³ / (%.3g × %.4g × %.5g²)", K,
                      p.fabric.youngs_modulus_MPa, t, p.fabric.weight_N_per_mm2, p.hanging.height_mm,
@@ -88,9 +89,12 @@ void EquationsTab::draw(Document& document) {
   }
   if (even) {
     ImGui::TextWrapped(
-        "lambda = l (%s)^(1/4) = %.5g × %.5g^(1/4) = %.2f mm: n counts the folds that fit "
-        "lambda apart down the centre fibre; eq. 5 then lays them out",
-        exponent == 1.0 ? "s" : "s^p", s.span_mm, s_used, s.count_rule->step);
+        "%s",
+        readable(detail::printf_string(
+                     "λ = l (%s)^(1/4) = %.5g × %.5g^(1/4) = %.2f mm: n counts the folds that fit "
+                     "λ apart down the centre fibre; eq. 5 then lays them out",
+                     exponent == 1.0 ? "s" : "s^p", s.span_mm, s_used, s.count_rule->step))
+            .c_str());
   } else if (s.Q7) {
     const double q = *s.Q7;
     ImGui::Text("(Q7 - 1)² = %s Q7 (Q7 + 1)  ->  Q7 = %.5f", exponent == 1.0 ? "s" : "s^p", q);

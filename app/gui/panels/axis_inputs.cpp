@@ -8,20 +8,54 @@
 
 #include "core/analysis/sweep.hpp"
 #include "core/model/settings.hpp"
+#include "core/model/text_format.hpp"
 
 namespace foldlab::gui {
 
 std::string axis_label(const std::string& key) {
   const InputSpec* spec = find_input(key);
-  return spec != nullptr ? input_label(*spec) : key;
+  return spec != nullptr ? readable(shown_label(*spec)) : key;
+}
+
+double to_shown(const std::string& key, double stored) {
+  const InputSpec* spec = find_input(key);
+  return spec != nullptr ? to_shown_unit(*spec, stored) : stored;
+}
+
+double from_shown(const std::string& key, double shown) {
+  const InputSpec* spec = find_input(key);
+  return spec != nullptr ? from_shown_unit(*spec, shown) : shown;
+}
+
+namespace {
+
+std::string key_symbol(const std::string& key) {
+  const InputSpec* spec = find_input(key);
+  return spec != nullptr ? readable(input_symbol(*spec)) : key;
+}
+
+}  // namespace
+
+std::string shown_value(const std::string& key, double stored) {
+  const InputSpec* spec = find_input(key);
+  if (spec == nullptr) {
+    return key + " = " + detail::printf_string("%.4g", stored);
+  }
+  const std::string_view unit = shown_unit(*spec).symbol;
+  return readable(std::string(input_symbol(*spec)) + " = " +
+                  detail::printf_string("%.4g", to_shown_unit(*spec, stored)) +
+                  (unit.empty() ? "" : " " + std::string(unit)));
 }
 
 bool key_combo(const char* label, std::string& key) {
   bool changed = false;
   ImGui::SetNextItemWidth(ems(5.0f));
-  if (ImGui::BeginCombo(label, key.c_str())) {
+  if (ImGui::BeginCombo(label, key_symbol(key).c_str())) {
     for (const std::string& option : sweepable_keys()) {
-      if (ImGui::Selectable(option.c_str(), option == key)) {
+      ImGui::PushID(option.c_str());
+      const bool chosen = ImGui::Selectable(key_symbol(option).c_str(), option == key);
+      ImGui::PopID();
+      if (chosen) {
         changed = option != key;
         key = option;
       }
@@ -44,18 +78,24 @@ void default_range(const std::string& key, double current, double& from, double&
   }
 }
 
-bool range_inputs(const char* id, double& from, double& to) {
+bool range_inputs(const char* id, const std::string& key, double& from, double& to) {
   ImGui::PushID(id);
   bool changed = false;
-  ImGui::SetNextItemWidth(ems(6.5f));
-  changed |=
-      ImGui::InputDouble("##from", &from, 0.0, 0.0, "%.4g", ImGuiInputTextFlags_EnterReturnsTrue);
+  // Only a value typed and entered goes back to the stored unit, so that showing the range
+  // never moves it by a rounding.
+  const auto field = [&](const char* label, double& stored) {
+    double shown = to_shown(key, stored);
+    ImGui::SetNextItemWidth(ems(6.5f));
+    if (ImGui::InputDouble(label, &shown, 0.0, 0.0, "%.4g", ImGuiInputTextFlags_EnterReturnsTrue)) {
+      stored = from_shown(key, shown);
+      changed = true;
+    }
+  };
+  field("##from", from);
   ImGui::SameLine();
   ImGui::TextUnformatted("to");
   ImGui::SameLine();
-  ImGui::SetNextItemWidth(ems(6.5f));
-  changed |=
-      ImGui::InputDouble("##to", &to, 0.0, 0.0, "%.4g", ImGuiInputTextFlags_EnterReturnsTrue);
+  field("##to", to);
   ImGui::PopID();
   return changed;
 }

@@ -261,10 +261,16 @@ void ClothViewPanel::draw(PanelContext& context) {
     if (ImGui::SmallButton(breeze_playing_ ? "pause" : "play")) {
       breeze_playing_ = !breeze_playing_;
     }
-    same_line_if_fits(ems(7.5f));
-    ImGui::SetNextItemWidth(ems(7.5f));
-    ImGui::SliderFloat("##breeze", &style_.breeze_mm, 5.0f, 300.0f, "%.0f mm",
+    // Named, with its unit, so that the slider reads without the checkbox beside it (a row may
+    // wrap between them).
+    constexpr const char* kBreezeLabel = "sway (mm)";
+    same_line_if_fits(labelled_width(ems(6.0f), kBreezeLabel));
+    ImGui::SetNextItemWidth(ems(6.0f));
+    ImGui::SliderFloat(kBreezeLabel, &style_.breeze_mm, 5.0f, 300.0f, "%.0f",
                        ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp);
+    if (ImGui::IsItemHovered()) {
+      ImGui::SetTooltip("How far the breeze sways the cloth at most, in mm");
+    }
     if (breeze_playing_) {
       style_.time_s += ImGui::GetIO().DeltaTime;  // the solver does not run: only the shader moves
     }
@@ -276,7 +282,7 @@ void ClothViewPanel::draw(PanelContext& context) {
     style_.colour_by = static_cast<ClothStyle::ColourBy>(colour_by);
   }
   if (!photo_problem_.empty() && style_.print == ClothStyle::Print::photo) {
-    ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(0.9f, 0.35f, 0.3f, 1.0f));
+    ImGui::PushStyleColor(ImGuiCol_Text, kErrorText);
     ImGui::TextWrapped("%s", photo_problem_.c_str());
     ImGui::PopStyleColor();
   }

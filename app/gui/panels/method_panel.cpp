@@ -12,12 +12,17 @@
 namespace foldlab::gui {
 namespace {
 
-constexpr ImU32 kIterateColour = IM_COL32(90, 170, 255, 255);
-constexpr ImU32 kBandColour = IM_COL32(120, 200, 120, 200);
 constexpr ImU32 kBandFill = IM_COL32(120, 200, 120, 40);
-constexpr ImU32 kGuideColour = IM_COL32(150, 150, 160, 160);
-constexpr ImU32 kStairColour = IM_COL32(255, 120, 60, 255);
-constexpr ImU32 kMapColour = IM_COL32(90, 170, 255, 255);
+
+// z_max as the iteration has it: "0" when eq. 9's root is exactly zero (the first paper iterate),
+// enough digits for a value below 0.01 mm, else two decimals.
+std::string z_max_text(double z_max_mm) {
+  if (z_max_mm == 0.0) {
+    return "0";
+  }
+  return std::abs(z_max_mm) < 0.01 ? detail::printf_string("%.2g", z_max_mm)
+                                   : detail::printf_string("%.2f", z_max_mm);
+}
 
 // Above this many n the map plot shows a window around the visits.
 constexpr int kMapPoints = 60;
@@ -81,7 +86,9 @@ void MethodPanel::draw(Document& document) {
   ImGui::SameLine();
   const std::string count_formula(wrinkle_law(current.model.law).count_formula());
   help_marker(method_ == Method::paper
-                  ? "a_0 = 1.01 h; a_n and z_max start at 0.01 h. Each iterate: n from eq. 10, "
+                  ? "a_0 = 1.01 h and a_n starts at 0.01 h, so on the first iterate the "
+                    "a-differences a_0 − a_n alone make h and eq. 9 gives z_max = 0 exactly. Each "
+                    "iterate: n from eq. 10, "
                     "Q = (a_0/a_n)^(1/n), z_max from eq. 9, L′ from eq. 8 (Simpson); stop when "
                     "|L′/L − 1| is within the tolerance, else a_n ← √(A² − z_max²), the a_n that "
                     "makes eq. 8 hold for this z_max."
@@ -103,11 +110,9 @@ void MethodPanel::draw(Document& document) {
   draw_table();
   draw_change();
   // A key in words instead of a legend: in this small plot a legend would cover the data.
-  const ImVec4 first =
-      ImGui::ColorConvertU32ToFloat4(method_ == Method::paper ? kIterateColour : kGuideColour);
-  const ImVec4 second =
-      ImGui::ColorConvertU32ToFloat4(method_ == Method::paper ? kBandColour : kMapColour);
-  const ImVec4 third = ImGui::ColorConvertU32ToFloat4(kStairColour);
+  const ImVec4 first = method_ == Method::paper ? ImVec4(kIterateLine) : ImVec4(kGuideLine);
+  const ImVec4 second = method_ == Method::paper ? ImVec4(kToleranceBand) : ImVec4(kIterateLine);
+  const ImVec4 third = kStairLine;
   if (method_ == Method::paper) {
     ImGui::TextColored(first, "L′/L per iterate");
     const std::string band =
@@ -179,12 +184,12 @@ void MethodPanel::draw_change() const {
   if (method_ == Method::paper) {
     std::string text;
     if (shown_ == 1) {
-      text = s.count_rule
-                 ? printf_string(
-                       "Start: a_0/a_n = 1.01 h / 0.01 h = 101, n = Int[%.3f] = %d; "
-                       "the a-differences alone make h, so z_max = %.2f mm.",
-                       it.count_argument, it.n, it.z_max_mm)
-                 : printf_string("Start: no Q7 (stiff), so n = 1; z_max = %.2f mm.", it.z_max_mm);
+      text = s.count_rule ? printf_string(
+                                "Start: a_0/a_n = 1.01 h / 0.01 h = 101, n = Int[%.3f] = %d; "
+                                "the a-differences alone make h, so eq. 9 gives z_max = %s mm.",
+                                it.count_argument, it.n, z_max_text(it.z_max_mm).c_str())
+                          : printf_string("Start: no Q7 (stiff), so n = 1; z_max = %s mm.",
+                                          z_max_text(it.z_max_mm).c_str());
     } else {
       text = printf_string("a_n ← √(A² − z_max²) = √(%.2f² − %.2f²) = %.2f mm, n = Int[%.3f] = %d.",
                            s.sag_amplitude_mm, all[static_cast<std::size_t>(shown_ - 2)].z_max_mm,
@@ -260,7 +265,8 @@ void MethodPanel::draw_table() {
     cell(std::to_string(it.n), before != nullptr && before->n != it.n);
     number("%.4f", it.Q, before ? before->Q : 0.0);
     number("%.2f", it.a_n_mm, before ? before->a_n_mm : 0.0);
-    number("%.2f", it.z_max_mm, before ? before->z_max_mm : 0.0);
+    cell(z_max_text(it.z_max_mm),
+         before != nullptr && z_max_text(it.z_max_mm) != z_max_text(before->z_max_mm));
     number("%.4f", it.length_ratio, before ? before->length_ratio : 0.0);
     cell(std::to_string(it.next_n), before != nullptr && before->next_n != it.next_n);
     if (newest) {
@@ -288,11 +294,11 @@ void MethodPanel::draw_ratio_plot(float height) {
                          PlotAxis{"L′/L"})) {
     return;
   }
-  ratio_plot_.line(nullptr, band_x_, band_lo_, kBandColour, 1.0f);
-  ratio_plot_.line(nullptr, band_x_, band_hi_, kBandColour, 1.0f);
-  ratio_plot_.line(nullptr, band_x_, one_y_, kGuideColour, 1.0f);
-  ratio_plot_.line(nullptr, step_x_, ratio_y_, kIterateColour, 2.0f);
-  ratio_plot_.markers(nullptr, step_x_, ratio_y_, kIterateColour, MarkerShape::Circle, 4.0f);
+  ratio_plot_.line(nullptr, band_x_, band_lo_, kToleranceBand.u32(), 1.0f);
+  ratio_plot_.line(nullptr, band_x_, band_hi_, kToleranceBand.u32(), 1.0f);
+  ratio_plot_.line(nullptr, band_x_, one_y_, kGuideLine.u32(), 1.0f);
+  ratio_plot_.line(nullptr, step_x_, ratio_y_, kIterateLine.u32(), 2.0f);
+  ratio_plot_.markers(nullptr, step_x_, ratio_y_, kIterateLine.u32(), MarkerShape::Circle, 4.0f);
   ratio_plot_.end();
   // The band's fill, under nothing that matters: translucent over the data area.
   const PlotView& view = ratio_plot_.view();
@@ -336,11 +342,11 @@ void MethodPanel::draw_map_plot(float height) {
   if (!map_plot_.begin("method map", ImVec2(0.0f, height), PlotAxis{"n"}, PlotAxis{next_n_axis})) {
     return;
   }
-  map_plot_.line(nullptr, map_n_, diagonal_, kGuideColour, 1.0f);
-  map_plot_.line(nullptr, map_n_, map_argument_, kMapColour, 1.0f);
-  map_plot_.markers(nullptr, map_n_, map_count_, kMapColour, MarkerShape::Square, 3.0f);
-  map_plot_.line(nullptr, stair_x_, stair_y_, kStairColour, 2.0f);
-  map_plot_.markers(nullptr, visit_x_, visit_y_, kStairColour, MarkerShape::Circle, 4.5f);
+  map_plot_.line(nullptr, map_n_, diagonal_, kGuideLine.u32(), 1.0f);
+  map_plot_.line(nullptr, map_n_, map_argument_, kIterateLine.u32(), 1.0f);
+  map_plot_.markers(nullptr, map_n_, map_count_, kIterateLine.u32(), MarkerShape::Square, 3.0f);
+  map_plot_.line(nullptr, stair_x_, stair_y_, kStairLine.u32(), 2.0f);
+  map_plot_.markers(nullptr, visit_x_, visit_y_, kStairLine.u32(), MarkerShape::Circle, 4.5f);
   map_plot_.end();
 }
 

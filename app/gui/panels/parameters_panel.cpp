@@ -21,8 +21,9 @@ namespace {
 // The model settings an expert may change here; the rest stay with presets and --set.
 constexpr const char* kChoiceKeys[] = {"method", "span_rule", "int_rounding"};
 
+// "ν (Poisson's ratio)": the paper's symbol, spelt out where the font has no Greek.
 std::string slider_label(const InputSpec& spec) {
-  return std::string(spec.key) + " (" + std::string(spec.name) + ")";
+  return readable(std::string(input_symbol(spec)) + " (" + std::string(spec.name) + ")");
 }
 
 // Whether validation refused this input. K is derived: validation names the constant c it sets.
@@ -160,7 +161,7 @@ void ParametersPanel::input_slider(Document& document, const InputSpec& spec, fl
   // line appears between the sliders and moves the one under the mouse.
   const bool is_refused = refused(document, spec);
   if (is_refused) {
-    ImGui::PushStyleColor(ImGuiCol_FrameBg, ImVec4(0.55f, 0.12f, 0.10f, 1.0f));
+    ImGui::PushStyleColor(ImGuiCol_FrameBg, kRefusedFrame);
   }
   ImGui::SetNextItemWidth(width);
   bool changed = false;
@@ -253,7 +254,7 @@ void ParametersPanel::draw(PanelContext& context) {
   }
   help_marker(
       "Beginners see the cloth (t, E, w, h, L, d) and its shape; experts also the model's "
-      "settings (method, wrinkle law, K, nu, p, Int[], span rule) and the 3D grid.");
+      "settings (method, wrinkle law, K, ν, p, Int[·], span rule) and the 3D grid.");
   // The paper's own model stays one click away whatever is shown.
   const bool printed = is_printed_eq7(document.edited());
   ImGui::BeginDisabled(printed);
@@ -264,8 +265,8 @@ void ParametersPanel::draw(PanelContext& context) {
   }
   ImGui::EndDisabled();
   help_marker(
-      "The paper's method and Conci's eq. 7 as printed: p = 1, K = c/(1 - nu²) = 29.56 (c = 26.9 "
-      "at nu = 0.3).");
+      "The paper's method and Conci's eq. 7 as printed: p = 1, K = c/(1 − ν²) = 29.56 (c = 26.9 "
+      "at ν = 0.3).");
   hint_after(printed ? "in use" : "Ctrl+click a slider to type");
   ImGui::Separator();
 

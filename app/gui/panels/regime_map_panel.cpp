@@ -11,6 +11,7 @@
 
 #include "app/gui/panels/axis_inputs.hpp"
 #include "app/gui/panels/widgets.hpp"
+#include "core/model/settings.hpp"
 
 namespace foldlab::gui {
 namespace {
@@ -191,7 +192,7 @@ bool RegimeMapPanel::controls(const Parameters& current) {
     restart_needed = true;
   }
   ImGui::SameLine();
-  restart_needed |= range_inputs("x range", x_from_, x_to_);
+  restart_needed |= range_inputs("x range", x_key_, x_from_, x_to_);
   ImGui::TextUnformatted("y");
   ImGui::SameLine();
   if (key_combo("##y key", y_key_)) {
@@ -199,7 +200,7 @@ bool RegimeMapPanel::controls(const Parameters& current) {
     restart_needed = true;
   }
   ImGui::SameLine();
-  restart_needed |= range_inputs("y range", y_from_, y_to_);
+  restart_needed |= range_inputs("y range", y_key_, y_from_, y_to_);
   ImGui::SetNextItemWidth(ems(6.5f));
   static const int sizes[] = {64, 128, 256, 512};
   if (ImGui::BeginCombo("cells", (std::to_string(resolution_) + "²").c_str())) {
@@ -267,14 +268,8 @@ void RegimeMapPanel::status_line() {
 RegimeMapPanel::Placement RegimeMapPanel::place_map() {
   const ImGuiStyle& style = ImGui::GetStyle();
   const float font = ImGui::GetFontSize();
-  char y_to[32];
-  char y_from[32];
-  std::snprintf(y_to, sizeof y_to, "%.3g", cells_->y.to);
-  std::snprintf(y_from, sizeof y_from, "%.3g", cells_->y.from);
   const ImVec2 available = ImGui::GetContentRegionAvail();
   Placement at;
-  at.left_margin = std::max(ImGui::CalcTextSize(y_to).x, ImGui::CalcTextSize(y_from).x) +
-                   style.ItemInnerSpacing.x;
   const float bar_area = style.ItemSpacing.x + ems(1.0f) + style.ItemInnerSpacing.x +
                          ImGui::CalcTextSize(show_z_ ? "1000 mm" : "200").x;
   float swatches_width = 0.0f;
@@ -284,35 +279,63 @@ RegimeMapPanel::Placement RegimeMapPanel::place_map() {
   }
   const float swatch_rows =
       (swatches_width <= available.x ? 1.0f : 2.0f) * ImGui::GetFrameHeightWithSpacing();
-  at.side = std::max(ems(5.0f), std::min(available.x - at.left_margin - bar_area,
-                                         available.y - 3.0f * font - swatch_rows));
+  // Half a line under the y title, where the top label reaches up to.
+  const float tallest = std::max(ems(5.0f), available.y - 3.5f * font - swatch_rows);
+  // The y labels' width at the tallest the map can be: as many labels or fewer fit a shorter one.
+  at.left_margin = 0.0f;
+  for (const std::string& label : map_ticks(cells_->y, tallest, false).labels) {
+    at.left_margin = std::max(at.left_margin, ImGui::CalcTextSize(label.c_str()).x);
+  }
+  at.left_margin += style.ItemInnerSpacing.x;
+  at.side = std::max(ems(5.0f), std::min(available.x - at.left_margin - bar_area, tallest));
   const std::string y_label = axis_label(cells_->y.key);
   ImGui::TextUnformatted(y_label.c_str());
-  at.origin = ImVec2(ImGui::GetCursorScreenPos().x + at.left_margin, ImGui::GetCursorScreenPos().y);
+  at.origin = ImVec2(ImGui::GetCursorScreenPos().x + at.left_margin,
+                     ImGui::GetCursorScreenPos().y + 0.5f * font);
   return at;
+}
+
+// An axis's round ticks in the unit its slider shows, as many as have room for their labels.
+AxisTicks RegimeMapPanel::map_ticks(const SweepAxis& axis, float length_px, bool horizontal) {
+  const float font = ImGui::GetFontSize();
+  const auto extent = [&](const std::string& label) {
+    return horizontal ? ImGui::CalcTextSize(label.c_str()).x : font;
+  };
+  return fitted_ticks(to_shown(axis.key, axis.from), to_shown(axis.key, axis.to), axis.logarithmic,
+                      length_px, extent, 0.5f * font, 10);
 }
 
 void RegimeMapPanel::axis_labels(const Placement& at) const {
   const ImGuiStyle& style = ImGui::GetStyle();
   const float font = ImGui::GetFontSize();
+  const float tick_px = std::round(0.3f * font);
   ImDrawList* draw = ImGui::GetWindowDrawList();
   const ImU32 text_colour = ImGui::GetColorU32(ImGuiCol_Text);
-  const auto right_aligned = [&](float right, float y, const char* label) {
-    draw->AddText(ImVec2(right - ImGui::CalcTextSize(label).x, y), text_colour, label);
-  };
-  char text[64];
-  const float label_right = at.origin.x - style.ItemInnerSpacing.x;
-  std::snprintf(text, sizeof text, "%.3g", cells_->y.to);
-  right_aligned(label_right, at.origin.y, text);
-  std::snprintf(text, sizeof text, "%.3g", cells_->y.from);
-  right_aligned(label_right, at.origin.y + at.side - font, text);
-  std::snprintf(text, sizeof text, "%.3g", cells_->x.from);
-  draw->AddText(ImVec2(at.origin.x, at.origin.y + at.side), text_colour, text);
-  std::snprintf(text, sizeof text, "%.3g", cells_->x.to);
-  right_aligned(at.origin.x + at.side, at.origin.y + at.side, text);
+  const AxisTicks y_ticks = map_ticks(cells_->y, at.side, false);
+  for (std::size_t k = 0; k < y_ticks.values.size(); ++k) {
+    const double f = axis_fraction(cells_->y, from_shown(cells_->y.key, y_ticks.values[k]));
+    const float y = at.origin.y + static_cast<float>(1.0 - f) * at.side;
+    draw->AddLine(ImVec2(at.origin.x - tick_px, y), ImVec2(at.origin.x, y), text_colour);
+    const char* label = y_ticks.labels[k].c_str();
+    const float label_y =
+        std::clamp(y - 0.5f * font, at.origin.y - 0.5f * font, at.origin.y + at.side - 0.5f * font);
+    draw->AddText(
+        ImVec2(at.origin.x - style.ItemInnerSpacing.x - ImGui::CalcTextSize(label).x, label_y),
+        text_colour, label);
+  }
+  const AxisTicks x_ticks = map_ticks(cells_->x, at.side, true);
+  for (std::size_t k = 0; k < x_ticks.values.size(); ++k) {
+    const double f = axis_fraction(cells_->x, from_shown(cells_->x.key, x_ticks.values[k]));
+    const float x = at.origin.x + static_cast<float>(f) * at.side;
+    const float bottom = at.origin.y + at.side;
+    draw->AddLine(ImVec2(x, bottom), ImVec2(x, bottom + tick_px), text_colour);
+    const char* label = x_ticks.labels[k].c_str();
+    draw->AddText(ImVec2(x - 0.5f * ImGui::CalcTextSize(label).x, bottom + tick_px), text_colour,
+                  label);
+  }
   const std::string x_label = axis_label(cells_->x.key);
   draw->AddText(ImVec2(at.origin.x + 0.5f * (at.side - ImGui::CalcTextSize(x_label.c_str()).x),
-                       at.origin.y + at.side + font),
+                       at.origin.y + at.side + tick_px + font),
                 text_colour, x_label.c_str());
 }
 
@@ -375,7 +398,8 @@ void RegimeMapPanel::regime_swatches(const Placement& at) const {
   const ImGuiStyle& style = ImGui::GetStyle();
   const float font = ImGui::GetFontSize();
   ImGui::SetCursorScreenPos(
-      ImVec2(at.origin.x - at.left_margin, at.origin.y + at.side + 2.0f * font + 2.0f));
+      ImVec2(at.origin.x - at.left_margin,
+             at.origin.y + at.side + 2.0f * font + std::round(0.3f * font) + 2.0f));
   bool first = true;
   for (const Swatch& swatch : kRegimeSwatches) {
     const float width =
@@ -384,8 +408,13 @@ void RegimeMapPanel::regime_swatches(const Placement& at) const {
       same_line_if_fits(width);
     }
     first = false;
+    // Outlined in the text's colour: the dark swatches alone hardly stand out from a dark theme.
+    ImGui::PushStyleVar(ImGuiStyleVar_FrameBorderSize, std::max(1.0f, std::round(0.07f * font)));
+    ImGui::PushStyleColor(ImGuiCol_Border, ImGui::GetStyle().Colors[ImGuiCol_Text]);
     ImGui::ColorButton(swatch.name, ImGui::ColorConvertU32ToFloat4(swatch.colour),
                        ImGuiColorEditFlags_NoTooltip | ImGuiColorEditFlags_NoDragDrop);
+    ImGui::PopStyleColor();
+    ImGui::PopStyleVar();
     ImGui::SameLine(0.0f, style.ItemInnerSpacing.x);
     ImGui::TextUnformatted(swatch.name);
   }
@@ -414,8 +443,9 @@ void RegimeMapPanel::hover_and_click(const Placement& at, Document& document, bo
   const double y_value = job.y.value(j);
   const MapCell& cell = job.cells[static_cast<std::size_t>(j) * resolution_ + i];
   if (job.row_done[static_cast<std::size_t>(j)].load()) {
-    ImGui::SetTooltip("%s = %.4g, %s = %.4g\n%s\nn = %d%s, z_max = %.1f mm", job.x.key.c_str(),
-                      x_value, job.y.key.c_str(), y_value,
+    const std::string x_text = shown_value(job.x.key, x_value);
+    const std::string y_text = shown_value(job.y.key, y_value);
+    ImGui::SetTooltip("%s, %s\n%s\nn = %d%s, z_max = %.1f mm", x_text.c_str(), y_text.c_str(),
                       cell.valid ? std::string(to_string(cell.regime)).c_str() : "invalid inputs",
                       cell.n, cell.n_capped ? " (capped: eq. 10 asks for more)" : "",
                       cell.z_max_mm);

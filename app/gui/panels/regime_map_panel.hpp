@@ -12,6 +12,7 @@
 #include "app/gui/background_job.hpp"
 #include "app/gui/document.hpp"
 #include "app/gui/panel.hpp"
+#include "app/gui/plot_widget.hpp"
 #include "app/gui/renderer.hpp"
 #include "core/analysis/sweep.hpp"
 
@@ -55,6 +56,7 @@ class RegimeMapPanel {
   void status_line();
   // The map's side and margins for the space left in the panel, and its y title.
   Placement place_map();
+  static AxisTicks map_ticks(const SweepAxis& axis, float length_px, bool horizontal);
   void axis_labels(const Placement& at) const;
   void colour_bar(const Placement& at) const;
   void regime_swatches(const Placement& at) const;

@@ -52,7 +52,7 @@ std::vector<ResultsPanel::Row> ResultsPanel::rows(Document& document) {
   out.push_back({"amplitude ratio", "Q", fmt("%.4f", s.Q),
                  ranged(range ? range->Q_min : 0, range ? range->Q_max : 0, "%.4f")});
   if (s.count_rule && s.count_rule->spacing == FoldSpacing::even) {
-    out.push_back({"fold spacing", "lambda", fmt("%.1f mm", s.count_rule->step), ""});
+    out.push_back({"fold spacing", readable("λ"), fmt("%.1f mm", s.count_rule->step), ""});
   } else {
     out.push_back({"root of eq. 7", "Q7", s.Q7 ? fmt("%.4f", *s.Q7) : "none (s >= 1)", ""});
   }

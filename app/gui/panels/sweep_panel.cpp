@@ -33,6 +33,8 @@ void SweepPanel::clear_overlay() {
   overlay_z_.clear();
   overlay_Q_x_.clear();
   overlay_row_Q_.clear();
+  overlay_shown_x_.clear();
+  overlay_Q_shown_x_.clear();
 }
 
 void SweepPanel::load_overlay(const std::string& prefix, const std::string& label) {
@@ -50,11 +52,13 @@ void SweepPanel::load_overlay(const std::string& prefix, const std::string& labe
       }
       const double x = get_number(p.parameters, overlay_key_);
       overlay_x_.push_back(x);
+      overlay_shown_x_.push_back(to_shown(overlay_key_, x));
       overlay_n_.push_back(*p.published.n);
       overlay_z_.push_back(*p.published.z_max_mm);
       overlay_row_Q_.push_back(p.published.Q.value_or(std::nan("")));
       if (p.published.Q) {
         overlay_Q_x_.push_back(x);
+        overlay_Q_shown_x_.push_back(to_shown(overlay_key_, x));
         overlay_Q_.push_back(*p.published.Q);
       }
     } catch (const PresetError&) {
@@ -75,6 +79,10 @@ void SweepPanel::recompute(const Parameters& current) {
   }
   const std::vector<SweepPoint> points = sweep(current, axis);
   curves_ = sweep_curves(points);
+  shown_x_.clear();
+  for (const double x : curves_.x) {
+    shown_x_.push_back(to_shown(axis.key, x));
+  }
   bands_ = regime_bands(points, axis.logarithmic);
   computed_for_ = current;
   computed_axis_ = axis;
@@ -124,7 +132,7 @@ void SweepPanel::draw(Document& document) {
     clear_overlay();
   }
   ImGui::SameLine();
-  range_inputs("range", from_, to_);
+  range_inputs("range", key_, from_, to_);
   ImGui::SameLine();
   ImGui::Checkbox("log", &logarithmic_);
   ImGui::SameLine();
@@ -148,7 +156,7 @@ void SweepPanel::draw(Document& document) {
   }
   recompute(current);
   const std::string& key = computed_axis_.key;
-  const double now = get_number(current, key);
+  const double now = to_shown(key, get_number(current, key));
   const bool overlay = !overlay_label_.empty() && overlay_key_ == key;
   // The paper's rows against the model's: folded by default, since the plots need the height.
   if (overlay && ImGui::CollapsingHeader("Paper vs model (table)")) {
@@ -168,9 +176,9 @@ void SweepPanel::draw(Document& document) {
     bool steps;
   };
   const Quantity quantities[] = {
-      {n_plot_, "sweep n", "n", curves_.n, overlay_x_, overlay_n_, true},
-      {Q_plot_, "sweep Q", "Q", curves_.Q, overlay_Q_x_, overlay_Q_, false},
-      {z_plot_, "sweep z", "z_max (mm)", curves_.z_max_mm, overlay_x_, overlay_z_, false},
+      {n_plot_, "sweep n", "n", curves_.n, overlay_shown_x_, overlay_n_, true},
+      {Q_plot_, "sweep Q", "Q", curves_.Q, overlay_Q_shown_x_, overlay_Q_, false},
+      {z_plot_, "sweep z", "z_max (mm)", curves_.z_max_mm, overlay_shown_x_, overlay_z_, false},
   };
   for (const Quantity& q : quantities) {
     // The x title only under the last plot; a legend only when the paper's points are shown.
@@ -182,9 +190,9 @@ void SweepPanel::draw(Document& document) {
     }
     const char* legend = overlay ? "model" : nullptr;
     if (q.steps) {
-      q.plot.steps(legend, curves_.x, q.ys, kSweepCurve.u32(), 2.0f);
+      q.plot.steps(legend, shown_x_, q.ys, kSweepCurve.u32(), 2.0f);
     } else {
-      q.plot.line(legend, curves_.x, q.ys, kSweepCurve.u32(), 2.0f);
+      q.plot.line(legend, shown_x_, q.ys, kSweepCurve.u32(), 2.0f);
     }
     if (overlay) {
       q.plot.markers(overlay_label_.c_str(), q.paper_x, q.paper_y, kPaperPoint.u32(),
@@ -192,17 +200,17 @@ void SweepPanel::draw(Document& document) {
     }
     q.plot.vertical_line(now, kCurrentValue.u32());
     q.plot.end();
-    draw_bands(q.plot, &q == &quantities[0]);
+    draw_bands(q.plot, key, &q == &quantities[0]);
   }
 }
 
-void SweepPanel::draw_bands(const Plot& plot, bool label) const {
+void SweepPanel::draw_bands(const Plot& plot, const std::string& key, bool label) const {
   const PlotView& view = plot.view();
   ImDrawList* draw = ImGui::GetWindowDrawList();
   draw->PushClipRect(view.min, view.max, true);
   for (const RegimeBand& band : bands_) {
-    float left = view.to_screen(band.from, view.y_lo).x;
-    float right = view.to_screen(band.to, view.y_lo).x;
+    float left = view.to_screen(to_shown(key, band.from), view.y_lo).x;
+    float right = view.to_screen(to_shown(key, band.to), view.y_lo).x;
     if (left > right) {
       std::swap(left, right);
     }
@@ -213,7 +221,7 @@ void SweepPanel::draw_bands(const Plot& plot, bool label) const {
       right = middle + 1.5f;
     }
     draw->AddRectFilled(ImVec2(left, view.min.y), ImVec2(right, view.max.y),
-                        band.valid ? kBandFill : kRefusedFill);
+                        band.valid ? kRegimeBandFill.u32() : kRefusedBandFill.u32());
     const ImVec2 text_size = ImGui::CalcTextSize(band.name.c_str());
     if (label && text_size.x + 4.0f <= right - left) {
       draw->AddText(ImVec2(0.5f * (left + right - text_size.x), view.min.y + 2.0f), kDimText.u32(),
@@ -244,7 +252,7 @@ void SweepPanel::draw_comparison(const Parameters& current) {
     const Solution s = solve(p);
     ImGui::TableNextRow();
     ImGui::TableNextColumn();
-    ImGui::Text("%.4g", overlay_x_[i]);
+    ImGui::Text("%.4g", to_shown(overlay_key_, overlay_x_[i]));
     ImGui::TableNextColumn();
     ImGui::Text("%.0f", overlay_n_[i]);
     ImGui::TableNextColumn();

@@ -32,6 +32,8 @@ class SweepPanel {
   const PlotView& plot_view(int which) const {
     return which == 0 ? n_plot_.view() : which == 1 ? Q_plot_.view() : z_plot_.view();
   }
+  // The n plot's view as last drawn: x in the unit the swept input's slider shows.
+  const PlotView& n_view() const { return n_plot_.view(); }
 
  private:
   void recompute(const Parameters& current);
@@ -49,10 +51,12 @@ class SweepPanel {
   SweepAxis computed_axis_;
   bool computed_ = false;
   SweepCurves curves_;
+  // The x values as plotted: in the unit the swept input's slider shows (w in g/m²).
+  std::vector<double> shown_x_;
   std::vector<RegimeBand> bands_;
   void clear_overlay();
   // Shades the bands over the data area of the plot just ended; names them when `label`.
-  void draw_bands(const Plot& plot, bool label) const;
+  void draw_bands(const Plot& plot, const std::string& key, bool label) const;
   // The paper's printed rows beside the model's at the same inputs.
   void draw_comparison(const Parameters& current);
 
@@ -62,6 +66,7 @@ class SweepPanel {
   std::vector<double> overlay_x_, overlay_n_, overlay_Q_, overlay_z_;
   std::vector<double> overlay_Q_x_;    // rows without a printed Q are left out of the Q plot
   std::vector<double> overlay_row_Q_;  // per row of overlay_x_, NaN where the paper prints no Q
+  std::vector<double> overlay_shown_x_, overlay_Q_shown_x_;  // as plotted, like shown_x_
   Plot n_plot_, Q_plot_, z_plot_;
 };
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 namespace foldlab::gui {
 
@@ -186,13 +187,65 @@ void section(const char* title) {
   ImGui::Separator();
 }
 
+namespace {
+
+struct AsciiSpelling {
+  ImWchar codepoint;
+  const char* ascii;
+};
+constexpr AsciiSpelling kAsciiSpellings[] = {
+    {0x03BD, "nu"},    {0x03C3, "sigma"}, {0x03BB, "lambda"}, {0x03C0, "pi"}, {0x03A3, "Sum"},
+    {0x03B8, "theta"}, {0x222B, "Int"},   {0x2212, "-"},      {0x2032, "'"},  {0x2264, "<="},
+    {0x2265, ">="},    {0x2026, "..."},   {0x2192, "->"},     {0x2190, "<-"}, {0x221A, "sqrt"},
+};
+
+// The code point at `at` in UTF-8 and its length in bytes; a malformed byte stands for itself.
+std::pair<unsigned, std::size_t> decode(std::string_view s, std::size_t at) {
+  const auto byte = [&](std::size_t k) { return static_cast<unsigned char>(s[at + k]); };
+  const unsigned first = byte(0);
+  if (first >= 0xE0 && at + 2 < s.size()) {
+    return {((first & 0x0Fu) << 12) | ((byte(1) & 0x3Fu) << 6) | (byte(2) & 0x3Fu), 3};
+  }
+  if (first >= 0xC0 && at + 1 < s.size()) {
+    return {((first & 0x1Fu) << 6) | (byte(1) & 0x3Fu), 2};
+  }
+  return {first, 1};
+}
+
+}  // namespace
+
+std::string readable(std::string_view utf8) {
+  const ImFont* font = ImGui::GetFont();
+  std::string out;
+  out.reserve(utf8.size());
+  for (std::size_t at = 0; at < utf8.size();) {
+    const auto [codepoint, length] = decode(utf8, at);
+    const char* ascii = nullptr;
+    if (codepoint >= 0x100 && font != nullptr &&
+        font->FindGlyphNoFallback(static_cast<ImWchar>(codepoint)) == nullptr) {
+      for (const AsciiSpelling& spelling : kAsciiSpellings) {
+        if (spelling.codepoint == codepoint) {
+          ascii = spelling.ascii;
+        }
+      }
+    }
+    if (ascii != nullptr) {
+      out += ascii;
+    } else {
+      out.append(utf8.substr(at, length));
+    }
+    at += length;
+  }
+  return out;
+}
+
 void help_marker(const char* text) {
   ImGui::SameLine();
   ImGui::TextDisabled("(?)");
   if (ImGui::IsItemHovered()) {
     ImGui::BeginTooltip();
     ImGui::PushTextWrapPos(ImGui::GetFontSize() * 30.0f);
-    ImGui::TextUnformatted(text);
+    ImGui::TextUnformatted(readable(text).c_str());
     ImGui::PopTextWrapPos();
     ImGui::EndTooltip();
   }

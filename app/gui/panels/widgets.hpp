@@ -2,6 +2,9 @@
 // with its opaque background, section titles and help markers.
 #pragma once
 
+#include <string>
+#include <string_view>
+
 #include <imgui.h>
 
 #include "app/gui/appearance.hpp"
@@ -83,6 +86,11 @@ void hint_after(const char* text);
 
 // ImGui 1.86 has no SeparatorText.
 void section(const char* title);
+
+// `utf8` as the current font can draw it: each of the paper's symbols the font lacks (ν, σ, λ, π,
+// Σ, ∫, −, θ, ≤, ≥, …) spelt in ASCII ("nu", "sigma", "-", "<="), so that ImGui's built-in font,
+// which has no Greek, shows "nu" rather than "?". Everything else is kept.
+std::string readable(std::string_view utf8);
 
 // A "(?)" after the last item that shows `text` when hovered.
 void help_marker(const char* text);
