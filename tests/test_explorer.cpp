@@ -510,7 +510,7 @@ TEST_F(ExplorerTest, AnalysisPanelsSweepThePapersInputsByKey) {
 " << text;
   EXPECT_NE(text.find("815.5"), std::string::npos) << "the range's second field
 " << text;
-  const PlotView& sweep_view = explorer_->analysis().sweep().n_view();
+  const PlotView& sweep_view = explorer_->analysis().sweep().plot_view(0);
   EXPECT_LE(sweep_view.x_lo, 50.97);
   EXPECT_GE(sweep_view.x_hi, 815.5);
   EXPECT_GT(sweep_view.x_lo, 40.0) << "not in N/mm²";

@@ -32,8 +32,6 @@ class SweepPanel {
   const PlotView& plot_view(int which) const {
     return which == 0 ? n_plot_.view() : which == 1 ? Q_plot_.view() : z_plot_.view();
   }
-  // The n plot's view as last drawn: x in the unit the swept input's slider shows.
-  const PlotView& n_view() const { return n_plot_.view(); }
 
  private:
   void recompute(const Parameters& current);
