@@ -64,6 +64,12 @@ inline const ThemedColour kSupportMarker{{0.94f, 0.78f, 0.24f, 1.0f}, {0.55f, 0.
 inline const ThemedColour kSweepCurve{{0.35f, 0.67f, 1.00f, 1.0f}, {0.05f, 0.35f, 0.75f, 1.0f}};
 inline const ThemedColour kPaperPoint{{1.00f, 0.47f, 0.24f, 1.0f}, {0.75f, 0.25f, 0.00f, 1.0f}};
 inline const ThemedColour kCurrentValue{{0.94f, 0.86f, 0.35f, 1.0f}, {0.45f, 0.40f, 0.00f, 1.0f}};
+// The fabric pinned as B in an A/B comparison, against the plot background and, for its label,
+// the window background: its sweep curve and its positive folds, and its negative folds. A keeps
+// kSweepCurve and the fold colours.
+inline const ThemedColour kCompareB{{0.45f, 0.88f, 0.55f, 1.0f}, {0.00f, 0.42f, 0.18f, 1.0f}};
+inline const ThemedColour kCompareBNegative{{0.96f, 0.62f, 0.96f, 1.0f},
+                                            {0.55f, 0.10f, 0.60f, 1.0f}};
 
 // Builds the font atlas and the style for a scale and theme. Call outside a frame (between
 // ImGui::Render and ImGui::NewFrame); the renderer re-uploads the atlas.

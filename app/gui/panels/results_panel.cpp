@@ -8,6 +8,7 @@
 
 #include "app/gui/appearance.hpp"
 
+#include "app/gui/panels/compare_table.hpp"
 #include "app/gui/panels/widgets.hpp"
 #include "core/analysis/uncertainty.hpp"
 #include "core/model/equations.hpp"
@@ -41,6 +42,8 @@ void ResultsPanel::draw(PanelContext& context) {
                        refusal->c_str());
     ImGui::PopStyleColor();
   }
+  const ModelStanding& model = standing(document);
+  draw_compare_section(document, model);
   Scene& scene = document.scene();
   const Solution& s = scene.solution();
   const StageStats& timing = scene.stats(Stage::solution);
@@ -50,7 +53,6 @@ void ResultsPanel::draw(PanelContext& context) {
     ImGui::TextWrapped("%s", message.c_str());
     ImGui::PopStyleColor();
   }
-  const ModelStanding& model = standing(document);
   ImGui::PushStyleColor(ImGuiCol_Text, kDimText);
   ImGui::TextWrapped("model: %s", model.label.c_str());
   ImGui::PopStyleColor();
@@ -74,25 +76,17 @@ void ResultsPanel::draw(PanelContext& context) {
       ImGui::TextUnformatted(value.c_str());
     };
     auto fmt = [](const char* format, double v) { return detail::printf_string(format, v); };
-    const std::optional<PredictionRange>& range = model.range;
-    auto ranged = [&](std::string value, double lo, double hi, const char* format) {
-      return range ? value + range_text(lo, hi, format) : value;
-    };
+    const QuantityTexts shown = quantity_texts(s, model);
     row("number of wrinkles", "n",
-        ranged(fmt("%.0f", s.n), range ? range->n_min : 0, range ? range->n_max : 0, "%.0f") +
-            (s.n_capped ? " (capped: eq. 10 asks for more)" : ""));
-    row("amplitude ratio", "Q",
-        ranged(fmt("%.4f", s.Q), range ? range->Q_min : 0, range ? range->Q_max : 0, "%.4f"));
+        shown.n.joined() + (s.n_capped ? " (capped: eq. 10 asks for more)" : ""));
+    row("amplitude ratio", "Q", shown.Q.joined());
     if (s.count_rule && s.count_rule->spacing == FoldSpacing::even) {
       row("fold spacing", "lambda", fmt("%.1f mm", s.count_rule->step));
     } else {
       row("root of eq. 7", "Q7", s.Q7 ? fmt("%.4f", *s.Q7) : std::string("none (s >= 1)"));
     }
     row("stress ratio", "s", fmt("%.4g", s.stress_ratio));
-    row("out-of-plane depth", "z_max",
-        ranged(fmt("%.2f", s.z_max_mm), range ? range->z_max_min_mm : 0,
-               range ? range->z_max_max_mm : 0, "%.1f") +
-            " mm");
+    row("out-of-plane depth", "z_max", shown.z_max.joined());
     row("span", "l", fmt("%.1f mm", s.span_mm));
     row("sag of the upper edge", "A", fmt("%.2f mm", s.sag_amplitude_mm));
     row("iterations", "", fmt("%.0f", s.iterations));

@@ -8,6 +8,8 @@
 #include <imgui.h>
 
 #include "app/common/presets_dir.hpp"
+#include "app/gui/appearance.hpp"
+#include "app/gui/compare.hpp"
 #include "app/gui/panels/axis_inputs.hpp"
 #include "app/gui/panels/widgets.hpp"
 #include "core/model/solver.hpp"
@@ -17,6 +19,11 @@ namespace {
 
 constexpr ImU32 kBandFill = IM_COL32(150, 150, 160, 60);
 constexpr ImU32 kRefusedFill = IM_COL32(230, 90, 80, 60);
+
+bool same_axis(const SweepAxis& a, const SweepAxis& b) {
+  return a.key == b.key && a.from == b.from && a.to == b.to && a.steps == b.steps &&
+         a.logarithmic == b.logarithmic;
+}
 
 }  // namespace
 
@@ -65,9 +72,7 @@ void SweepPanel::recompute(const Parameters& current) {
   if (check_axis(axis)) {
     return;
   }
-  if (computed_ && current == computed_for_ && axis.key == computed_axis_.key &&
-      axis.from == computed_axis_.from && axis.to == computed_axis_.to &&
-      axis.steps == computed_axis_.steps && axis.logarithmic == computed_axis_.logarithmic) {
+  if (computed_ && current == computed_for_ && same_axis(axis, computed_axis_)) {
     return;
   }
   const std::vector<SweepPoint> points = sweep(current, axis);
@@ -76,6 +81,21 @@ void SweepPanel::recompute(const Parameters& current) {
   computed_for_ = current;
   computed_axis_ = axis;
   computed_ = true;
+}
+
+void SweepPanel::recompute_compare(Document& document) {
+  if (!document.compare.pinned()) {
+    compare_computed_ = false;
+    return;
+  }
+  const Parameters& b = document.compare.b().parameters;
+  if (compare_computed_ && b == compare_computed_for_ && same_axis(computed_axis_, compare_axis_)) {
+    return;
+  }
+  compare_curves_ = sweep_curves(sweep(b, computed_axis_));
+  compare_computed_for_ = b;
+  compare_axis_ = computed_axis_;
+  compare_computed_ = true;
 }
 
 namespace {
@@ -144,6 +164,7 @@ void SweepPanel::draw(Document& document) {
     return;
   }
   recompute(current);
+  recompute_compare(document);
   const std::string& key = computed_axis_.key;
   const double now = get_number(current, key);
   const bool overlay = !overlay_label_.empty() && overlay_key_ == key;
@@ -160,12 +181,18 @@ void SweepPanel::draw(Document& document) {
     const std::vector<double>& paper_x;
     const std::vector<double>& paper_y;
     bool steps;
+    const std::vector<double>* compare_ys;  // B's, while pinned
   };
+  const SweepCurves* b = compare_computed_ ? &compare_curves_ : nullptr;
   const Quantity quantities[] = {
-      {n_plot_, "sweep n", "n", curves_.n, overlay_x_, overlay_n_, true},
-      {Q_plot_, "sweep Q", "Q", curves_.Q, overlay_Q_x_, overlay_Q_, false},
-      {z_plot_, "sweep z", "z_max (mm)", curves_.z_max_mm, overlay_x_, overlay_z_, false},
+      {n_plot_, "sweep n", "n", curves_.n, overlay_x_, overlay_n_, true, b ? &b->n : nullptr},
+      {Q_plot_, "sweep Q", "Q", curves_.Q, overlay_Q_x_, overlay_Q_, false, b ? &b->Q : nullptr},
+      {z_plot_, "sweep z", "z_max (mm)", curves_.z_max_mm, overlay_x_, overlay_z_, false,
+       b ? &b->z_max_mm : nullptr},
   };
+  // With B pinned both curves are named; otherwise a legend only beside the paper's points.
+  const std::string a_legend = b ? "A: " + fabric_label(document) : std::string("model");
+  const std::string b_legend = b ? "B: " + document.compare.b().name : std::string();
   for (const Quantity& q : quantities) {
     // The x title only under the last plot; a legend only when the paper's points are shown.
     const bool last = &q == &quantities[2];
@@ -174,17 +201,29 @@ void SweepPanel::draw(Document& document) {
                       PlotAxis{q.label, false, false})) {
       continue;
     }
-    const char* legend = overlay ? "model" : nullptr;
-    if (q.steps) {
-      q.plot.steps(legend, curves_.x, q.ys, kSweepCurve.u32(), 2.0f);
-    } else {
-      q.plot.line(legend, curves_.x, q.ys, kSweepCurve.u32(), 2.0f);
+    const char* legend = overlay || b ? a_legend.c_str() : nullptr;
+    const auto curve = [&](const char* name, const std::vector<double>& ys, ImU32 colour) {
+      if (q.steps) {
+        q.plot.steps(name, curves_.x, ys, colour, 2.0f);
+      } else {
+        q.plot.line(name, curves_.x, ys, colour, 2.0f);
+      }
+    };
+    curve(legend, q.ys, kSweepCurve.u32());
+    if (q.compare_ys != nullptr) {
+      curve(b_legend.c_str(), *q.compare_ys, kCompareB.u32());
+    }
+    if (&q == &quantities[0]) {
+      curves_drawn_ = q.compare_ys != nullptr ? 2 : 1;
     }
     if (overlay) {
       q.plot.markers(overlay_label_.c_str(), q.paper_x, q.paper_y, kPaperPoint.u32(),
                      MarkerShape::Diamond, 5.0f);
     }
     q.plot.vertical_line(now, kCurrentValue.u32());
+    if (b != nullptr) {
+      q.plot.vertical_line(get_number(document.compare.b().parameters, key), kCompareB.u32());
+    }
     q.plot.end();
     draw_bands(q.plot, &q == &quantities[0]);
   }

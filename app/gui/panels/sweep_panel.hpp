@@ -28,9 +28,17 @@ class SweepPanel {
   const std::vector<double>& overlay_x() const { return overlay_x_; }
   const std::vector<RegimeBand>& bands() const { return bands_; }
   const SweepCurves& curves() const { return curves_; }
+  // B's curves over the same axis while a fabric is pinned as B (null otherwise), and how many
+  // curves the n plot drew last frame (A's, then B's).
+  const SweepCurves* compare_curves() const {
+    return compare_computed_ ? &compare_curves_ : nullptr;
+  }
+  int curves_drawn() const { return curves_drawn_; }
 
  private:
   void recompute(const Parameters& current);
+  // B's curves over the axis A's were computed on, again only when B or the axis changes.
+  void recompute_compare(Document& document);
   // The paper's rows for `prefix` (e.g. "paper-table1-") as points over `key`.
   void load_overlay(const std::string& prefix, const std::string& label);
 
@@ -46,6 +54,11 @@ class SweepPanel {
   bool computed_ = false;
   SweepCurves curves_;
   std::vector<RegimeBand> bands_;
+  bool compare_computed_ = false;
+  Parameters compare_computed_for_;
+  SweepAxis compare_axis_;
+  SweepCurves compare_curves_;
+  int curves_drawn_ = 0;
   void clear_overlay();
   // Shades the bands over the data area of the plot just ended; names them when `label`.
   void draw_bands(const Plot& plot, bool label) const;
