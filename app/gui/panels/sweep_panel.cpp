@@ -194,14 +194,17 @@ void SweepPanel::draw(Document& document) {
   const std::string a_legend = b ? "A: " + fabric_label(document) : std::string("model");
   const std::string b_legend = b ? "B: " + document.compare.b().name : std::string();
   for (const Quantity& q : quantities) {
-    // The x title only under the last plot; a legend only when the paper's points are shown.
+    // The x title only under the last plot; a legend beside the paper's points, and for A and B.
     const bool last = &q == &quantities[2];
     if (!q.plot.begin(q.id, ImVec2(0.0f, height),
                       PlotAxis{last ? axis_label(key) : std::string(), false, logarithmic_},
                       PlotAxis{q.label, false, false})) {
       continue;
     }
-    const char* legend = overlay || b ? a_legend.c_str() : nullptr;
+    // A's and B's colours are the same in the three plots: with B alone, one legend under the
+    // last plot leaves the first two their height.
+    const bool named = overlay || (b != nullptr && last);
+    const char* legend = named ? a_legend.c_str() : nullptr;
     const auto curve = [&](const char* name, const std::vector<double>& ys, ImU32 colour) {
       if (q.steps) {
         q.plot.steps(name, curves_.x, ys, colour, 2.0f);
@@ -211,7 +214,7 @@ void SweepPanel::draw(Document& document) {
     };
     curve(legend, q.ys, kSweepCurve.u32());
     if (q.compare_ys != nullptr) {
-      curve(b_legend.c_str(), *q.compare_ys, kCompareB.u32());
+      curve(named ? b_legend.c_str() : nullptr, *q.compare_ys, kCompareB.u32());
     }
     if (&q == &quantities[0]) {
       curves_drawn_ = q.compare_ys != nullptr ? 2 : 1;
