@@ -1492,7 +1492,7 @@ TEST_F(ExplorerTest, ResultsShowTheRangeTheCalibrationAllows) {
     const ModelStanding standing = model_standing(p, default_preset().calibration);
     const PredictionRange& r = *standing.range;
     return std::pair{detail::printf_string("n %d (%d–%d)", solve(p).n, r.n_min, r.n_max),
-                     detail::printf_string("(%.1f–%.1f) mm", r.z_max_min_mm, r.z_max_max_mm)};
+                     detail::printf_string("%.1f–%.1f", r.z_max_min_mm, r.z_max_max_mm)};
   };
   ASSERT_EQ(explorer_->set_input("h", 2350.0), std::nullopt);
   frame();
@@ -1692,11 +1692,11 @@ TEST_F(ExplorerTest, PinnedBKeepsItsNumbersWhileADragChangesAAndTheTableShowsBMi
     const PredictionRange r = *model_standing(p, default_preset().calibration).range;
     return std::array<std::pair<std::string, std::string>, 3>{
         std::pair{detail::printf_string("%d", s.n),
-                  detail::printf_string("(%d–%d)", r.n_min, r.n_max)},
+                  detail::printf_string("%d–%d", r.n_min, r.n_max)},
         std::pair{detail::printf_string("%.4f", s.Q),
-                  detail::printf_string("(%.4f–%.4f)", r.Q_min, r.Q_max)},
+                  detail::printf_string("%.4f–%.4f", r.Q_min, r.Q_max)},
         std::pair{detail::printf_string("%.2f mm", s.z_max_mm),
-                  detail::printf_string("(%.1f–%.1f) mm", r.z_max_min_mm, r.z_max_max_mm)}};
+                  detail::printf_string("%.1f–%.1f", r.z_max_min_mm, r.z_max_max_mm)}};
   };
   const auto a_cells = rows_of(a);
   const auto b_cells = rows_of(b);

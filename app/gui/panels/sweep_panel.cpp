@@ -172,6 +172,16 @@ void SweepPanel::draw(Document& document) {
   if (overlay && ImGui::CollapsingHeader("Paper vs model (table)")) {
     draw_comparison(current);
   }
+  // With B pinned, one line names A's and B's colours for the three plots: a legend under each
+  // would take the short plots' height.
+  const SweepCurves* b = compare_computed_ ? &compare_curves_ : nullptr;
+  const std::string a_legend = b ? "A: " + fabric_label(document) : std::string("model");
+  const std::string b_legend = b ? "B: " + document.compare.b().name : std::string();
+  if (b != nullptr) {
+    ImGui::TextColored(kSweepCurve, "%s", a_legend.c_str());
+    same_line_if_fits(ImGui::CalcTextSize(b_legend.c_str()).x);
+    ImGui::TextColored(kCompareB, "%s", b_legend.c_str());
+  }
   const float height = std::max(60.0f, (ImGui::GetContentRegionAvail().y - 8.0f) / 3.0f);
   struct Quantity {
     Plot& plot;
@@ -183,28 +193,21 @@ void SweepPanel::draw(Document& document) {
     bool steps;
     const std::vector<double>* compare_ys;  // B's, while pinned
   };
-  const SweepCurves* b = compare_computed_ ? &compare_curves_ : nullptr;
   const Quantity quantities[] = {
       {n_plot_, "sweep n", "n", curves_.n, overlay_x_, overlay_n_, true, b ? &b->n : nullptr},
       {Q_plot_, "sweep Q", "Q", curves_.Q, overlay_Q_x_, overlay_Q_, false, b ? &b->Q : nullptr},
       {z_plot_, "sweep z", "z_max (mm)", curves_.z_max_mm, overlay_x_, overlay_z_, false,
        b ? &b->z_max_mm : nullptr},
   };
-  // With B pinned both curves are named; otherwise a legend only beside the paper's points.
-  const std::string a_legend = b ? "A: " + fabric_label(document) : std::string("model");
-  const std::string b_legend = b ? "B: " + document.compare.b().name : std::string();
   for (const Quantity& q : quantities) {
-    // The x title only under the last plot; a legend beside the paper's points, and for A and B.
+    // The x title only under the last plot; a legend only when the paper's points are shown.
     const bool last = &q == &quantities[2];
     if (!q.plot.begin(q.id, ImVec2(0.0f, height),
                       PlotAxis{last ? axis_label(key) : std::string(), false, logarithmic_},
                       PlotAxis{q.label, false, false})) {
       continue;
     }
-    // A's and B's colours are the same in the three plots: with B alone, one legend under the
-    // last plot leaves the first two their height.
-    const bool named = overlay || (b != nullptr && last);
-    const char* legend = named ? a_legend.c_str() : nullptr;
+    const char* legend = overlay ? a_legend.c_str() : nullptr;
     const auto curve = [&](const char* name, const std::vector<double>& ys, ImU32 colour) {
       if (q.steps) {
         q.plot.steps(name, curves_.x, ys, colour, 2.0f);
@@ -214,7 +217,7 @@ void SweepPanel::draw(Document& document) {
     };
     curve(legend, q.ys, kSweepCurve.u32());
     if (q.compare_ys != nullptr) {
-      curve(named ? b_legend.c_str() : nullptr, *q.compare_ys, kCompareB.u32());
+      curve(overlay ? b_legend.c_str() : nullptr, *q.compare_ys, kCompareB.u32());
     }
     if (&q == &quantities[0]) {
       curves_drawn_ = q.compare_ys != nullptr ? 2 : 1;
