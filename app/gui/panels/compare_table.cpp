@@ -82,9 +82,17 @@ void draw_compare_section(Document& document, const ModelStanding& standing_a) {
   const QuantityTexts a_texts = quantity_texts(a, standing_a);
   const QuantityTexts b_texts = quantity_texts(b, compare.standing());
   const QuantityTexts difference = difference_texts(a, b);
-  if (ImGui::BeginTable(
-          "A and B", 4,
-          ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_BordersInnerV)) {
+  // A narrow Results panel scrolls the table sideways rather than cut off B − A: a header, and
+  // for each quantity its values and, when there are any, its intervals.
+  const bool ranges = !a_texts.n.range.empty() || !b_texts.n.range.empty();
+  const ImGuiStyle& style = ImGui::GetStyle();
+  const float row_height = ImGui::GetTextLineHeight() + 2.0f * style.CellPadding.y;
+  const float table_height =
+      static_cast<float>(1 + (ranges ? 6 : 3)) * row_height + style.ScrollbarSize + 2.0f;
+  if (ImGui::BeginTable("A and B", 4,
+                        ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit |
+                            ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_ScrollX,
+                        ImVec2(0.0f, table_height))) {
     for (const char* title : {"", "A", "B", "B − A"}) {
       ImGui::TableSetupColumn(title);
     }
