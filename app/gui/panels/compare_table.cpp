@@ -57,18 +57,19 @@ void draw_compare_section(Document& document, const ModelStanding& standing_a) {
         "Keeps this fabric (its last valid inputs and model settings) as B, drawn beside A in "
         "the plots and the 3D view, while the sliders go on changing A.");
   }
-  if (compare.pinned()) {
-    same_line_if_fits(button_width("Swap A and B"));
-    if (ImGui::Button("Swap A and B")) {
-      swap_a_and_b(document);
-    }
-    same_line_if_fits(button_width("Clear B"));
-    if (ImGui::Button("Clear B")) {
-      clear_b(document);
-    }
-  }
   if (!compare.pinned()) {
     return;
+  }
+  same_line_if_fits(button_width("Swap A and B"));
+  if (ImGui::Button("Swap A and B")) {
+    swap_a_and_b(document);
+  }
+  same_line_if_fits(button_width("Clear B"));
+  if (ImGui::Button("Clear B")) {
+    clear_b(document);
+  }
+  if (!compare.pinned()) {
+    return;  // cleared just now
   }
   // A preset's name can be a sentence: wrapped, never cut off.
   for (const auto& [colour, label] : {std::pair{&kSweepCurve, "A: " + fabric_label(document)},
@@ -97,8 +98,7 @@ void draw_compare_section(Document& document, const ModelStanding& standing_a) {
       ImGui::TableSetupColumn(title);
     }
     ImGui::TableHeadersRow();
-    // The value on one row and, dimmed under it, its interval: a narrow Results panel then has
-    // room for the four columns.
+    // The value on one row and, dimmed under it, its interval: the columns stay narrow.
     const auto row = [](const char* symbol, const QuantityText& a_text, const QuantityText& b_text,
                         const QuantityText& difference_text) {
       ImGui::TableNextRow();
