@@ -126,7 +126,9 @@ TEST(ClothUploadRule, TheNullRendererCountsTheRulesUploads) {
   OrbitCamera camera;
   const FrameSize size{400, 300};
   ClothStyle style;
-  const auto draw = [&] { renderer.draw_cloth(nullptr, ImVec2(0, 0), scene, camera, size, style); };
+  const auto draw = [&] {
+    renderer.draw_cloth(nullptr, ImVec2(0, 0), scene, camera, size, style, ClothSlot::a);
+  };
   draw();
   EXPECT_EQ(renderer.counters().mesh_uploads, 1u);
   EXPECT_EQ(renderer.counters().fold_line_uploads, 1u);

@@ -8,6 +8,7 @@
 #include <imgui_internal.h>  // which windows scroll sideways
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdint>
@@ -31,6 +32,7 @@
 #include "app/gui/renderer.hpp"
 #include "app/gui/scripted_run.hpp"
 #include "app/gui/surface.hpp"
+#include "core/analysis/sweep.hpp"
 #include "core/analysis/uncertainty.hpp"
 #include "core/io/measurements.hpp"
 #include "core/io/preset.hpp"
@@ -2050,7 +2052,7 @@ TEST_F(ExplorerTest, ResultsShowTheRangeTheCalibrationAllows) {
     const ModelStanding standing = model_standing(p, default_preset().calibration);
     const PredictionRange& r = *standing.range;
     return std::pair{detail::printf_string("n %d (%d–%d)", solve(p).n, r.n_min, r.n_max),
-                     detail::printf_string("(%.1f–%.1f) mm", r.z_max_min_mm, r.z_max_max_mm)};
+                     detail::printf_string("%.1f–%.1f", r.z_max_min_mm, r.z_max_max_mm)};
   };
   ASSERT_EQ(explorer_->set_input("h", 2350.0), std::nullopt);
   frame();
@@ -2204,6 +2206,210 @@ TEST_F(ExplorerTest, EveryPanelHasADistinctNameAndTheReportNamesComeFromTheList)
     if (panel->tile()) {
       EXPECT_NE(text.find(panel->name()), std::string::npos) << panel->name();
     }
+  }
+}
+
+// A/B comparison. B is pinned with the Results panel's button and A is changed through a slider
+// drag, as a designer would; every number B shows is checked against a direct solve of B's
+// parameters, and B − A against two independent solves.
+TEST_F(ExplorerTest, PinnedBKeepsItsNumbersWhileADragChangesAAndTheTableShowsBMinusA) {
+  const auto shows = [](std::string text, std::string wanted) {
+    std::erase(text, ' ');
+    std::erase(wanted, ' ');
+    return text.find(wanted) != std::string::npos;
+  };
+  open_explorer("equations", kDejaVuSans);
+  explorer_->load_preset_file(kPresetsDir / "default.json");  // calibrated: intervals shown
+  frame();
+  frame();
+  EXPECT_EQ(last_text_.find("B − A"), std::string::npos) << "no table before a pin";
+  // The proportional font's spaces are found by the player's reading of the glyphs.
+  ASSERT_EQ(play(*explorer_, {{"steps", {{{"click", "Pin as B"}}}}}, [&] { frame(); }), 0);
+  ASSERT_TRUE(document().compare.pinned());
+  const Parameters b = shown();
+  EXPECT_EQ(document().compare.b().parameters, b);
+  const std::string default_name = load_preset(kPresetsDir / "default.json").name;
+  EXPECT_EQ(document().compare.b().name, default_name);
+
+  ASSERT_EQ(play(*explorer_, {{"steps", {{{"drag", "h"}, {"dx", 80}}}}}, [&] { frame(); }), 0);
+  const Parameters a = shown();
+  ASSERT_GT(a.hanging.height_mm, b.hanging.height_mm + 50.0) << "the drag moved h";
+  EXPECT_EQ(document().compare.b().parameters, b) << "B is not an edit of A";
+  const Solution solved_a = solve(a);
+  const Solution solved_b = solve(b);
+  const Solution& shown_b = document().compare.solution();
+  EXPECT_EQ(shown_b.n, solved_b.n);
+  EXPECT_DOUBLE_EQ(shown_b.Q, solved_b.Q);
+  EXPECT_DOUBLE_EQ(shown_b.z_max_mm, solved_b.z_max_mm);
+  ASSERT_NE(solved_a.z_max_mm, solved_b.z_max_mm);
+
+  // Each quantity's row of the table: the symbol, A, B and B − A, and under A and B their
+  // intervals, from the calibration the preset carries.
+  frame();
+  const std::string text = frame();
+  const auto rows_of = [](const Parameters& p) {
+    const Solution s = solve(p);
+    const PredictionRange r = *model_standing(p, default_preset().calibration).range;
+    return std::array<std::pair<std::string, std::string>, 3>{
+        std::pair{detail::printf_string("%d", s.n),
+                  detail::printf_string("%d–%d", r.n_min, r.n_max)},
+        std::pair{detail::printf_string("%.4f", s.Q),
+                  detail::printf_string("%.4f–%.4f", r.Q_min, r.Q_max)},
+        std::pair{detail::printf_string("%.2f mm", s.z_max_mm),
+                  detail::printf_string("%.1f–%.1f", r.z_max_min_mm, r.z_max_max_mm)}};
+  };
+  const auto a_cells = rows_of(a);
+  const auto b_cells = rows_of(b);
+  const std::array<std::string, 3> differences = {
+      detail::printf_string("%+d", solved_b.n - solved_a.n),
+      detail::printf_string("%+.4f", solved_b.Q - solved_a.Q),
+      detail::printf_string("%+.2f mm", solved_b.z_max_mm - solved_a.z_max_mm)};
+  const char* const symbols[] = {"n", "Q", "z_max"};
+  for (int i = 0; i < 3; ++i) {
+    const std::string rows = std::string("\n") + symbols[i] + a_cells[i].first + b_cells[i].first +
+                             differences[i] + "\n" + a_cells[i].second + b_cells[i].second + "\n";
+    EXPECT_TRUE(shows(text, rows)) << rows << "\n" << text;
+  }
+  EXPECT_TRUE(shows(text, "B − A")) << text;
+  // The labels wrap in the panel: read without the line breaks.
+  std::string unwrapped = text;
+  std::erase(unwrapped, '\n');
+  EXPECT_TRUE(shows(unwrapped, "A: " + default_name + " (edited)")) << text;
+  EXPECT_TRUE(shows(unwrapped, "B: " + default_name + "A")) << text;
+
+  // Undo moves A back to where B was pinned and leaves B alone.
+  press('Z', true);
+  EXPECT_EQ(shown(), b);
+  EXPECT_EQ(document().compare.b().parameters, b);
+}
+
+TEST_F(ExplorerTest, TheFoldPlotDrawsBsFoldLinesDashedBesideAs) {
+  EXPECT_EQ(explorer_->fold_plot().compare_lines_drawn(), 0);
+  const int legend_without_b = explorer_->fold_plot().plot_view().legend_entries;
+  click("Pin as B");
+  const Parameters b = shown();
+  ASSERT_EQ(explorer_->set_input("h", 2350.0), std::nullopt);
+  frame();
+  // B's lines as the core lays them out, each sample a point (the gaps of a dash are NaN points).
+  Scene direct(b);
+  const FoldLines& lines = direct.fold_lines();
+  std::size_t points = 0;
+  for (const FoldLine& line : lines.lines) {
+    points += line.points_mm.size();
+  }
+  ASSERT_GT(lines.lines.size(), 1u);
+  EXPECT_EQ(explorer_->fold_plot().compare_lines_drawn(), static_cast<int>(lines.lines.size()));
+  EXPECT_EQ(explorer_->fold_plot().compare_points_drawn(), points);
+  // "A: …, positive", "A: …, negative", "B: …, positive", "B: …, negative" in place of the two
+  // fold entries.
+  EXPECT_EQ(explorer_->fold_plot().plot_view().legend_entries, legend_without_b + 2);
+  const std::string text = frame();
+  EXPECT_NE(text.find("B: " + load_preset(kPresetsDir / "paper-table1-h1400.json").name),
+            std::string::npos)
+      << text;
+  click("Clear B");
+  EXPECT_FALSE(document().compare.pinned());
+  EXPECT_EQ(explorer_->fold_plot().compare_lines_drawn(), 0);
+  EXPECT_EQ(explorer_->fold_plot().plot_view().legend_entries, legend_without_b);
+}
+
+TEST_F(ExplorerTest, TheThreeDViewDrawsBBesideAOnlyWhilePinned) {
+  frame();
+  EXPECT_EQ(explorer_->compare_counters().frames, 0u) << "no B: nothing drawn for it";
+  EXPECT_EQ(explorer_->compare_counters().mesh_uploads, 0u);
+  click("Pin as B");
+  const RenderCounters pinned = explorer_->compare_counters();
+  EXPECT_GE(pinned.mesh_uploads, 1u);
+  EXPECT_GE(pinned.frames, 1u);
+  const std::uint64_t a_frames = explorer_->renderer_counters().frames;
+  for (int i = 0; i < 3; ++i) {
+    frame();
+  }
+  // Both cloths every frame, and B's picture kept while nothing it shows changes.
+  EXPECT_EQ(explorer_->renderer_counters().frames, a_frames + 3);
+  EXPECT_EQ(explorer_->compare_counters().frames, pinned.frames + 3);
+  EXPECT_EQ(explorer_->compare_counters().view_cache_hits, pinned.view_cache_hits + 3);
+  EXPECT_EQ(explorer_->compare_counters().mesh_uploads, pinned.mesh_uploads);
+  click("Clear B");
+  const std::uint64_t cleared = explorer_->compare_counters().frames;
+  frame();
+  frame();
+  EXPECT_EQ(explorer_->compare_counters().frames, cleared);
+}
+
+TEST_F(ExplorerTest, TheSweepDrawsBsCurveBesideAs) {
+  open_explorer("sweep");
+  EXPECT_EQ(explorer_->analysis().sweep().curves_drawn(), 1);
+  EXPECT_EQ(explorer_->analysis().sweep().compare_curves(), nullptr);
+  click("Pin as B");
+  const Parameters b = shown();
+  ASSERT_EQ(explorer_->set_input("w", 2.0 * b.fabric.weight_N_per_mm2), std::nullopt);
+  frame();
+  EXPECT_EQ(explorer_->analysis().sweep().curves_drawn(), 2);
+  const SweepCurves* drawn = explorer_->analysis().sweep().compare_curves();
+  ASSERT_NE(drawn, nullptr);
+  // The sweep's own axis (h from 500 to 3000 mm, 200 steps) over B's parameters, from the core.
+  const SweepCurves direct = sweep_curves(sweep(b, SweepAxis{"h", 500.0, 3000.0, 200, false}));
+  EXPECT_EQ(drawn->x, direct.x);
+  EXPECT_EQ(drawn->n, direct.n);
+  EXPECT_EQ(drawn->z_max_mm, direct.z_max_mm);
+  EXPECT_NE(explorer_->analysis().sweep().curves().z_max_mm, direct.z_max_mm) << "A moved";
+}
+
+TEST_F(ExplorerTest, APlayedScriptPinsSwapsAndClearsB) {
+  const nlohmann::json script = {
+      {"steps",
+       {{{"expect", {{"compare", nullptr}}}},
+        {{"click", "Pin as B"}},
+        {{"expect", {{"compare.parameters.h_mm", 1400}}}},
+        {{"drag", "h"}, {"dx", 80}},
+        {{"expect", {{"parameters.h_mm", {1500, 5000}}, {"compare.parameters.h_mm", 1400}}}},
+        {{"click", "Swap A and B"}},
+        {{"expect", {{"parameters.h_mm", 1400}, {"compare.parameters.h_mm", {1500, 5000}}}}},
+        {{"expect", {{"renderer.compare.frames", {1, 1e9}}}}},
+        {{"click", "Clear B"}},
+        {{"expect", {{"compare", nullptr}, {"parameters.h_mm", 1400}}}}}}};
+  InputPlayer player(script, "test script");
+  while (player.before_new_frame(ImGui::GetIO(), *explorer_)) {
+    frame();
+  }
+  EXPECT_EQ(player.exit_status(), 0) << player.failure() << "\n" << frame();
+  // The swap was one edit of A (clearing B is none): undo gives A the dragged height again.
+  EXPECT_FALSE(document().compare.pinned());
+  EXPECT_EQ(height_mm(), 1400.0);
+  press('Z', true);
+  EXPECT_GT(height_mm(), 1500.0);
+}
+
+TEST_F(ExplorerTest, BIsRestoredWithTheSession) {
+  const fs::path session = dir_ / "session.json";
+  open_explorer("equations", {}, session);
+  click("Pin as B");
+  const Parameters b = shown();
+  ASSERT_EQ(explorer_->set_input("h", 2000.0), std::nullopt);
+  frame();
+  explorer_->save_session_now();
+  open_explorer("equations", {}, session, true);
+  ASSERT_TRUE(document().compare.pinned());
+  EXPECT_EQ(document().compare.b().parameters, b);
+  EXPECT_EQ(shown().hanging.height_mm, 2000.0);
+  click("Clear B");
+  explorer_->save_session_now();
+  open_explorer("equations", {}, session, true);
+  EXPECT_FALSE(document().compare.pinned());
+}
+
+TEST(Contrast, TheComparedFabricsFoldsAreAnotherHueThanAs) {
+  // Their contrast is in the table of themed colours, read by EveryThemedColourReadsOnWhatItIsDrawnOn.
+  for (const bool light : {false, true}) {
+    SCOPED_TRACE(light ? "light theme" : "dark theme");
+    // B reads apart from A's folds of the same sign: another hue, not a shade of it.
+    const FoldColours a = fold_colours(light);
+    const auto apart = [](ImVec4 p, ImVec4 q) {
+      return std::abs(p.x - q.x) + std::abs(p.y - q.y) + std::abs(p.z - q.z);
+    };
+    EXPECT_GT(apart(kCompareB.get(light), a.positive), 0.5f);
+    EXPECT_GT(apart(kCompareBNegative.get(light), a.negative), 0.5f);
   }
 }
 

@@ -57,7 +57,7 @@ std::span<const ThemedColourUse> themed_colours() {
       {"dim text and hints", &kDimText, Backdrop::window_and_plot},
       {"section title", &kSectionText, Backdrop::window},
       {"supports", &kSupportMarker, Backdrop::plot},
-      {"sweep curve", &kSweepCurve, Backdrop::plot},
+      {"sweep curve, A's label", &kSweepCurve, Backdrop::window_and_plot},
       {"paper's points", &kPaperPoint, Backdrop::window_and_plot},
       {"current value", &kCurrentValue, Backdrop::plot},
       {"L'/L per iterate, next n = n", &kIterateLine, Backdrop::window_and_plot},
@@ -67,6 +67,8 @@ std::span<const ThemedColourUse> themed_colours() {
       {"refused slider", &kRefusedFrame, Backdrop::under_text},
       {"sweep band", &kRegimeBandFill, Backdrop::under_dim_text},
       {"refused sweep band", &kRefusedBandFill, Backdrop::under_dim_text},
+      {"B's curve, folds and label", &kCompareB, Backdrop::window_and_plot},
+      {"B's negative folds", &kCompareBNegative, Backdrop::plot},
   };
   return uses;
 }

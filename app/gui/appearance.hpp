@@ -96,6 +96,12 @@ struct ThemedColourUse {
 // Every themed colour a user must read, with what it is drawn on: the table the contrast test
 // goes through.
 std::span<const ThemedColourUse> themed_colours();
+// The fabric pinned as B in an A/B comparison, against the plot background and, for its label,
+// the window background: its sweep curve and its positive folds, and its negative folds. A keeps
+// kSweepCurve and the fold colours.
+inline const ThemedColour kCompareB{{0.45f, 0.88f, 0.55f, 1.0f}, {0.00f, 0.42f, 0.18f, 1.0f}};
+inline const ThemedColour kCompareBNegative{{0.96f, 0.62f, 0.96f, 1.0f},
+                                            {0.55f, 0.10f, 0.60f, 1.0f}};
 
 // Builds the font atlas and the style for a scale and theme. Call outside a frame (between
 // ImGui::Render and ImGui::NewFrame); the renderer re-uploads the atlas.

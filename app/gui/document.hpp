@@ -15,6 +15,7 @@
 #include <utility>
 #include <vector>
 
+#include "app/gui/compare.hpp"
 #include "core/geometry/scene.hpp"
 #include "core/io/preset.hpp"
 #include "core/model/parameters.hpp"
@@ -135,6 +136,8 @@ class Document {
   // Whether the panels show the model's settings as well as the cloth; remembered in the session.
   // A first start shows the cloth alone, for a designer who has not met eq. 7.
   bool expert_mode = false;
+  // The fabric pinned as B beside this one (A). Not part of the undo history: B is no edit of A.
+  Comparison compare;
 
  private:
   // What an undo step restores: the preset as loaded and the edits over it.

@@ -8,6 +8,7 @@
 #include <imgui.h>
 #include <imgui_internal.h>  // FindWindowByName: where the user moved a panel
 
+#include "app/gui/panels/compare_table.hpp"
 #include "app/gui/panels/stats_overlay.hpp"
 #include "app/gui/panels/widgets.hpp"
 #include "app/gui/session.hpp"
@@ -55,6 +56,9 @@ Explorer::Explorer(const Preset& initial, const std::string& initial_path, bool 
       document_.adopt(s->loaded, s->loaded_preset_path);
       document_.apply(Edit::replace(s->current.parameters));
       document_.scene().set_grid_resolution(s->grid_resolution, s->grid_resolution);
+      if (s->compare) {
+        document_.compare.pin(*s->compare);
+      }
       load_settings(s->view);
       for (const std::unique_ptr<Panel>& panel : panels_) {
         panel->load_settings(s->view);
@@ -207,6 +211,9 @@ void Explorer::save_session_now() {
   s.loaded = document_.loaded();
   s.loaded_preset_path = document_.loaded_path();
   s.grid_resolution = document_.scene().grid_nx();
+  if (document_.compare.pinned()) {
+    s.compare = document_.compare.b();
+  }
   save_settings(s.view);
   for (const std::unique_ptr<Panel>& panel : panels_) {
     panel->save_settings(s.view);
@@ -460,6 +467,10 @@ float Explorer::main_menu() {
     height = ImGui::GetWindowHeight();
     if (ImGui::BeginMenu("View")) {
       view_menu();
+      ImGui::EndMenu();
+    }
+    if (ImGui::BeginMenu("Compare")) {
+      compare_menu(document_);
       ImGui::EndMenu();
     }
     if (ImGui::BeginMenu("Export")) {

@@ -69,6 +69,7 @@ class Explorer {
   Scene& scene() { return document_.scene(); }
   const Parameters& edited() const { return document_.edited(); }
   const RenderCounters& renderer_counters() const { return renderer_.counters(); }
+  const RenderCounters& compare_counters() const { return renderer_.compare_counters(); }
   const AnalysisPanel& analysis() const { return *analysis_; }
   const PresetsPanel& presets() const { return *presets_; }
   const ParametersPanel& parameters_panel() const { return *parameters_; }

@@ -197,12 +197,34 @@ json explorer_state_json(Explorer& explorer) {
   Document& document = explorer.document();
   Scene& scene = document.scene();
   const RenderCounters& counters = explorer.renderer_counters();
-  json parameters = json::object();
-  for (const auto& [key, field] : kParameterFields) {
-    const InputSpec* spec = find_input(key);
-    const std::optional<double> value =
-        spec ? spec->value(document.edited()) : std::optional<double>();
-    parameters[field] = value ? json(*value) : json(nullptr);
+  const auto parameters_json = [](const Parameters& p) {
+    json out = json::object();
+    for (const auto& [key, field] : kParameterFields) {
+      const InputSpec* spec = find_input(key);
+      const std::optional<double> value = spec ? spec->value(p) : std::optional<double>();
+      out[field] = value ? json(*value) : json(nullptr);
+    }
+    return out;
+  };
+  const json parameters = parameters_json(document.edited());
+  const auto counters_json = [](const RenderCounters& c) {
+    return json{{"mesh_uploads", c.mesh_uploads},
+                {"fold_line_uploads", c.fold_line_uploads},
+                {"frames", c.frames},
+                {"view_renders", c.view_renders},
+                {"view_cache_hits", c.view_cache_hits},
+                {"drawn_columns", c.drawn_columns},
+                {"drawn_rows", c.drawn_rows}};
+  };
+  json renderer = counters_json(counters);
+  renderer["compare"] = counters_json(explorer.compare_counters());
+  // B, the fabric pinned beside A: null while none is.
+  json compare = nullptr;
+  if (document.compare.pinned()) {
+    const Preset& b = document.compare.b();
+    compare = {{"label", b.name},
+               {"parameters", parameters_json(b.parameters)},
+               {"solution", solution_to_json(document.compare.solution(), b.parameters)}};
   }
   // Where each slider's handle is, so that a test driving the real window (xdotool) can press on
   // it as a person would.
@@ -230,15 +252,9 @@ json explorer_state_json(Explorer& explorer) {
       {"regime_map_ms", explorer.regime_map_ms()},
       {"stats", scene_stats_to_json(scene)},
       {"solution", solution_to_json(scene.solution(), scene.parameters())},
-      {"renderer",
-       {{"mesh_uploads", counters.mesh_uploads},
-        {"fold_line_uploads", counters.fold_line_uploads},
-        {"frames", counters.frames},
-        {"view_renders", counters.view_renders},
-        {"view_cache_hits", counters.view_cache_hits},
-        {"drawn_columns", counters.drawn_columns},
-        {"drawn_rows", counters.drawn_rows}}},
+      {"renderer", renderer},
       {"parameters", parameters},
+      {"compare", compare},
       {"refused", refused ? json(*refused) : json(nullptr)},
       {"dirty", document.unsaved()},
       {"modal", modal.empty() ? json(nullptr) : json(modal)},

@@ -6,22 +6,25 @@
 namespace foldlab::gui {
 
 void NullRenderer::draw_cloth(ImDrawList* draw_list, ImVec2 min, Scene& scene,
-                              const OrbitCamera& camera, FrameSize size, const ClothStyle& style) {
+                              const OrbitCamera& camera, FrameSize size, const ClothStyle& style,
+                              ClothSlot slot) {
   (void)draw_list;
   (void)min;
-  ++counters_.frames;
-  if (view_cache_.reuse(scene, camera, size, style, counters_)) {
+  const auto i = static_cast<std::size_t>(slot);
+  RenderCounters& counters = counters_[i];
+  ++counters.frames;
+  if (view_cache_[i].reuse(scene, camera, size, style, counters)) {
     return;
   }
   const ClothBufferSources sources = cloth_buffer_sources(scene, camera, size, style);
-  const ClothUploads uploads = upload_rule_.next(sources);
+  const ClothUploads uploads = upload_rule_[i].next(sources);
   if (uploads.mesh) {
-    ++counters_.mesh_uploads;
-    counters_.drawn_columns = sources.lattice.columns.size();
-    counters_.drawn_rows = sources.lattice.rows.size();
+    ++counters.mesh_uploads;
+    counters.drawn_columns = sources.lattice.columns.size();
+    counters.drawn_rows = sources.lattice.rows.size();
   }
   if (uploads.fold_lines) {
-    ++counters_.fold_line_uploads;
+    ++counters.fold_line_uploads;
   }
 }
 

@@ -94,6 +94,12 @@ class ClothViewCache {
   std::optional<Key> drawn_;
 };
 
+// Which cloth a 3D view draws: A, the one being edited, or B, the one pinned beside it
+// (compare.hpp). Each has buffers and a kept picture of its own, so that showing both uploads
+// only what changed in each, and B costs nothing while it is not drawn.
+enum class ClothSlot { a, b };
+inline constexpr int kClothSlots = 2;
+
 class Renderer {
  public:
   virtual ~Renderer() = default;
@@ -109,8 +115,11 @@ class Renderer {
   // scene's stages it needs up to date (lazily) and uploading only what changed; while nothing
   // the picture shows has changed, shows the last one again instead of drawing it.
   virtual void draw_cloth(ImDrawList* draw_list, ImVec2 min, Scene& scene,
-                          const OrbitCamera& camera, FrameSize size, const ClothStyle& style) = 0;
+                          const OrbitCamera& camera, FrameSize size, const ClothStyle& style,
+                          ClothSlot slot) = 0;
+  // A's cloth (the one the report and the stats show), and B's.
   virtual const RenderCounters& counters() const = 0;
+  virtual const RenderCounters& compare_counters() const = 0;
 
   // An RGBA image for ImGui::Image, kept by the renderer until it is destroyed. The first row of
   // `rgba` is the image's first (GL: bottom) row.
@@ -137,8 +146,9 @@ class NullRenderer final : public Renderer {
   void fonts_changed() override;
   void fill_window_background() override {}
   void draw_cloth(ImDrawList* draw_list, ImVec2 min, Scene& scene, const OrbitCamera& camera,
-                  FrameSize size, const ClothStyle& style) override;
-  const RenderCounters& counters() const override { return counters_; }
+                  FrameSize size, const ClothStyle& style, ClothSlot slot) override;
+  const RenderCounters& counters() const override { return counters_[0]; }
+  const RenderCounters& compare_counters() const override { return counters_[1]; }
   int create_image() override { return image_count_++; }
   void update_image(int image, int width, int height, const std::uint32_t* rgba) override;
   ImTextureID texture(int image) const override;
@@ -152,9 +162,9 @@ class NullRenderer final : public Renderer {
   std::uint64_t image_updates() const { return image_updates_; }
 
  private:
-  RenderCounters counters_;
-  ClothViewCache view_cache_;
-  ClothUploadRule upload_rule_;
+  RenderCounters counters_[kClothSlots];  // by ClothSlot
+  ClothViewCache view_cache_[kClothSlots];
+  ClothUploadRule upload_rule_[kClothSlots];
   int image_count_ = 0;
   std::uint64_t image_updates_ = 0;
 };

@@ -161,6 +161,14 @@ std::optional<Session> session_from_text(const std::string& text, const std::str
           kMaxGridResolution, s.grid_resolution));
     }
     s.view = SessionSettings::from_json(view);
+    // B alone is dropped when it cannot be read: A and the view are still the user's.
+    if (j.contains("compare")) {
+      try {
+        s.compare = preset_from_json(j.at("compare"), origin + " (compare)");
+      } catch (const std::exception& e) {
+        s.notices.push_back(std::string("The fabric pinned as B was not restored: ") + e.what());
+      }
+    }
     return s;
   } catch (const std::exception& e) {
     error = "the saved session " + origin + " could not be read (" + e.what() +
@@ -178,13 +186,16 @@ void save_session(const std::filesystem::path& path, const Session& session) {
   }
   nlohmann::json view = session.view.json();
   view["grid_resolution"] = session.grid_resolution;
-  const nlohmann::json j = {
+  nlohmann::json j = {
       {"foldlab_session", 1},
       {"current", preset_to_json(session.current)},
       {"loaded", preset_to_json(session.loaded)},
       {"loaded_preset_path", session.loaded_preset_path},
       {"view", view},
   };
+  if (session.compare) {
+    j["compare"] = preset_to_json(*session.compare);
+  }
   write_file_atomically(path, j.dump(2) + "\n");
 }
 

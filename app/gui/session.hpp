@@ -66,6 +66,8 @@ struct Session {
   std::string loaded_preset_path;  // empty for the built-in default
   Preset loaded;                   // the preset as loaded, for "reset" and the unsaved marker
   int grid_resolution = 128;
+  // The fabric pinned as B (compare.hpp), if any: its label, parameters and calibration.
+  std::optional<Preset> compare;
   // Everything else the panels and the explorer remember (the 3D view's switches, the UI scale
   // and theme, whether the layout is automatic, expert mode), saved by each of them.
   SessionSettings view;

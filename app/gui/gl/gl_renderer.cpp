@@ -21,7 +21,9 @@ class GlRenderer final : public Renderer {
   GlRenderer() { ImGui_ImplOpenGL3_Init("#version 330 core"); }
   ~GlRenderer() override {
     textures_.clear();
-    cloth_.reset();
+    for (std::unique_ptr<ClothRenderer>& cloth : cloth_) {
+      cloth.reset();
+    }
     ImGui_ImplOpenGL3_Shutdown();
   }
   GlRenderer(const GlRenderer&) = delete;
@@ -43,26 +45,23 @@ class GlRenderer final : public Renderer {
   void fill_window_background() override { fill_current_window_background(); }
 
   void draw_cloth(ImDrawList* draw_list, ImVec2 min, Scene& scene, const OrbitCamera& camera,
-                  FrameSize size, const ClothStyle& style) override {
-    if (!cloth_) {
-      cloth_ = std::make_unique<ClothRenderer>();
+                  FrameSize size, const ClothStyle& style, ClothSlot slot) override {
+    const auto i = static_cast<std::size_t>(slot);
+    std::unique_ptr<ClothRenderer>& cloth = cloth_[i];
+    if (!cloth) {
+      cloth = std::make_unique<ClothRenderer>();  // B's buffers are made when B is first shown
     }
-    ++view_counters_.frames;
-    if (!view_cache_.reuse(scene, camera, size, style, view_counters_)) {
-      cloth_->render(scene, camera, size, style);
+    ++view_counters_[i].frames;
+    if (!view_cache_[i].reuse(scene, camera, size, style, view_counters_[i])) {
+      cloth->render(scene, camera, size, style);
     }
     add_framebuffer_blit(
-        draw_list, cloth_->framebuffer(), size, min,
+        draw_list, cloth->framebuffer(), size, min,
         ImVec2(min.x + static_cast<float>(size.width), min.y + static_cast<float>(size.height)));
   }
 
-  const RenderCounters& counters() const override {
-    counters_ = cloth_ ? cloth_->counters() : RenderCounters{};
-    counters_.frames = view_counters_.frames;
-    counters_.view_renders = view_counters_.view_renders;
-    counters_.view_cache_hits = view_counters_.view_cache_hits;
-    return counters_;
-  }
+  const RenderCounters& counters() const override { return joined(ClothSlot::a); }
+  const RenderCounters& compare_counters() const override { return joined(ClothSlot::b); }
 
   int create_image() override {
     textures_.push_back(GlTexture::make());
@@ -122,11 +121,22 @@ class GlRenderer final : public Renderer {
   }
 
  private:
-  std::unique_ptr<ClothRenderer> cloth_;
+  // The uploads' counts of a slot's cloth joined to its view counters.
+  const RenderCounters& joined(ClothSlot slot) const {
+    const auto i = static_cast<std::size_t>(slot);
+    RenderCounters& out = counters_[i];
+    out = cloth_[i] ? cloth_[i]->counters() : RenderCounters{};
+    out.frames = view_counters_[i].frames;
+    out.view_renders = view_counters_[i].view_renders;
+    out.view_cache_hits = view_counters_[i].view_cache_hits;
+    return out;
+  }
+
+  std::unique_ptr<ClothRenderer> cloth_[kClothSlots];  // by ClothSlot
   bool fonts_changed_ = false;
-  ClothViewCache view_cache_;
-  RenderCounters view_counters_;     // frames, view_renders, view_cache_hits
-  mutable RenderCounters counters_;  // the uploads' counts from cloth_ joined to view_counters_
+  ClothViewCache view_cache_[kClothSlots];
+  RenderCounters view_counters_[kClothSlots];  // frames, view_renders, view_cache_hits
+  mutable RenderCounters counters_[kClothSlots];
   std::vector<GlTexture> textures_;
   std::vector<FrameSize> sizes_;
 };

@@ -9,6 +9,7 @@
 
 #include "app/gui/appearance.hpp"
 #include "app/gui/colour_map.hpp"
+#include "app/gui/compare.hpp"
 #include "app/gui/panels/widgets.hpp"
 #include "core/model/settings.hpp"
 #include "core/model/text_format.hpp"
@@ -169,19 +170,34 @@ void ClothViewPanel::settings_row() {
 }
 
 // Reframes for a new cloth (or on request), keeping the user's direction when only the cloth's
-// size changed.
-void ClothViewPanel::follow_the_cloth(Scene& scene, bool reset) {
+// size changed. With B pinned the camera frames both cloths, so that the two halves of the view
+// show them at one scale.
+void ClothViewPanel::follow_the_cloth(Document& document, bool reset) {
   if (reset) {
     camera_user_moved_ = false;
   }
   // The view is about to draw the grid anyway: bringing it up to date first frames the cloth
   // of this frame, not the last one, so that one change of the cloth is one picture drawn.
+  Scene& scene = document.scene();
   scene.grid();
+  Comparison& compare = document.compare;
+  const std::uint64_t b_grid_version =
+      compare.pinned() ? compare.scene(scene.grid_nx()).version(Stage::grid) : 0;
+  const bool b_changed =
+      camera_compare_changes_ != compare.changes() || camera_b_grid_version_ != b_grid_version;
   if (reset || !camera_framed_ ||
-      (!camera_user_moved_ && camera_grid_version_ != scene.version(Stage::grid))) {
+      (!camera_user_moved_ && (camera_grid_version_ != scene.version(Stage::grid) || b_changed))) {
     Eigen::Vector3f centre;
     float radius = 1.0f;
     cloth_bounds(scene, centre, radius);
+    if (compare.pinned()) {
+      Eigen::Vector3f b_centre;
+      float b_radius = 1.0f;
+      cloth_bounds(compare.scene(scene.grid_nx()), b_centre, b_radius);
+      const Eigen::Vector3f both = 0.5f * (centre + b_centre);
+      radius = std::max((centre - both).norm() + radius, (b_centre - both).norm() + b_radius);
+      centre = both;
+    }
     const OrbitCamera previous = camera_;
     camera_.frame(centre, radius);
     if (camera_framed_ && !reset) {
@@ -191,6 +207,8 @@ void ClothViewPanel::follow_the_cloth(Scene& scene, bool reset) {
     camera_framed_ = true;
     camera_grid_version_ = scene.version(Stage::grid);
   }
+  camera_compare_changes_ = compare.changes();
+  camera_b_grid_version_ = b_grid_version;
 }
 
 void ClothViewPanel::save_settings(SessionSettings& settings) const {
@@ -294,16 +312,20 @@ void ClothViewPanel::draw(PanelContext& context) {
   const float bar_width =
       style_.colour_by == ClothStyle::ColourBy::none ? 0.0f : colour_bar_width();
   available.x -= bar_width;
-  const FrameSize size{std::max(16, static_cast<int>(available.x)),
+  const FrameSize area{std::max(16, static_cast<int>(available.x)),
                        std::max(16, static_cast<int>(available.y))};
   Scene& scene = document.scene();
-  follow_the_cloth(scene, reset);
+  follow_the_cloth(document, reset);
   const ImVec2 origin = ImGui::GetCursorScreenPos();
   ImGui::InvisibleButton("view",
-                         ImVec2(static_cast<float>(size.width), static_cast<float>(size.height)),
+                         ImVec2(static_cast<float>(area.width), static_cast<float>(area.height)),
                          ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonRight |
                              ImGuiButtonFlags_MouseButtonMiddle);
   const ImGuiIO& io = ImGui::GetIO();
+  // With B pinned the view is split in two halves, A on the left and B on the right, under one
+  // camera: a drag in either half turns both.
+  const bool compare = document.compare.pinned();
+  const FrameSize size{compare ? std::max(16, area.width / 2) : area.width, area.height};
   if (ImGui::IsItemActive() && (io.MouseDelta.x != 0.0f || io.MouseDelta.y != 0.0f)) {
     camera_user_moved_ = true;
     if (ImGui::IsMouseDown(ImGuiMouseButton_Left)) {
@@ -316,15 +338,37 @@ void ClothViewPanel::draw(PanelContext& context) {
     camera_user_moved_ = true;
     camera_.zoom(io.MouseWheel);
   }
-  renderer.draw_cloth(ImGui::GetWindowDrawList(), origin, scene, camera_, size, style_);
+  ImDrawList* draw = ImGui::GetWindowDrawList();
+  renderer.draw_cloth(draw, origin, scene, camera_, size, style_, ClothSlot::a);
+  const ImVec2 b_origin(origin.x + static_cast<float>(size.width), origin.y);
+  if (compare) {
+    renderer.draw_cloth(draw, b_origin, document.compare.scene(scene.grid_nx()), camera_,
+                        FrameSize{area.width - size.width, area.height}, style_, ClothSlot::b);
+  }
   // Wrapped inside the view, so that a narrow view keeps it off the colour bar beside it.
-  ImGui::GetWindowDrawList()->AddText(
-      ImGui::GetFont(), ImGui::GetFontSize(), ImVec2(origin.x + 6, origin.y + 4),
-      light ? IM_COL32(60, 60, 60, 220) : IM_COL32(200, 200, 200, 200),
-      "drag: orbit, right-drag: pan, wheel: zoom", nullptr, static_cast<float>(size.width) - 12.0f);
+  draw->AddText(ImGui::GetFont(), ImGui::GetFontSize(), ImVec2(origin.x + 6, origin.y + 4),
+                light ? IM_COL32(60, 60, 60, 220) : IM_COL32(200, 200, 200, 200),
+                "drag: orbit, right-drag: pan, wheel: zoom", nullptr,
+                static_cast<float>(area.width) - 12.0f);
+  if (compare) {
+    // Each half named under the hint, in the colours the plots give A and B; a long name wraps
+    // downwards, over the sky rather than off the view's foot.
+    const float foot = origin.y + 8.0f + ImGui::GetTextLineHeightWithSpacing();
+    const std::string a_name = "A: " + fabric_label(document);
+    const std::string b_name = "B: " + document.compare.b().name;
+    draw->AddText(ImGui::GetFont(), ImGui::GetFontSize(), ImVec2(origin.x + 6, foot),
+                  kSweepCurve.u32(), a_name.c_str(), nullptr,
+                  static_cast<float>(size.width) - 12.0f);
+    draw->AddText(ImGui::GetFont(), ImGui::GetFontSize(), ImVec2(b_origin.x + 6, foot),
+                  kCompareB.u32(), b_name.c_str(), nullptr,
+                  static_cast<float>(area.width - size.width) - 12.0f);
+    draw->AddLine(ImVec2(b_origin.x, origin.y),
+                  ImVec2(b_origin.x, origin.y + static_cast<float>(area.height)),
+                  ImGui::GetColorU32(ImGuiCol_Separator));
+  }
   if (bar_width > 0.0f) {
-    draw_colour_bar(ImVec2(origin.x + static_cast<float>(size.width), origin.y),
-                    static_cast<float>(size.height), scene.solution().z_max_mm);
+    draw_colour_bar(ImVec2(origin.x + static_cast<float>(area.width), origin.y),
+                    static_cast<float>(area.height), scene.solution().z_max_mm);
   }
   ImGui::End();
 }

@@ -43,14 +43,17 @@ class ClothViewPanel : public Panel {
   std::optional<std::string> load_photo(const std::string& path);
   static float colour_bar_width();
   void draw_colour_bar(ImVec2 min, float height, double z_max_mm) const;
-  void follow_the_cloth(Scene& scene, bool reset);
+  void follow_the_cloth(Document& document, bool reset);
 
   ClothStyle style_;
   OrbitCamera camera_;
   bool camera_framed_ = false;
   bool camera_user_moved_ = false;
   std::uint64_t camera_grid_version_ = 0;
-  std::uint64_t camera_loads_ = 0;  // the document's preset loads the camera was framed for
+  std::uint64_t camera_loads_ = 0;
+  std::uint64_t camera_compare_changes_ = 0;  // B as the camera was last framed for it
+  std::uint64_t camera_b_grid_version_ =
+      0;  // the document's preset loads the camera was framed for
   bool breeze_playing_ = true;
   bool fill_display_ = false;
   std::string photo_path_;

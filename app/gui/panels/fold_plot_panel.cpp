@@ -3,14 +3,50 @@
 #include <cmath>
 #include <numbers>
 #include <optional>
+#include <string>
 
 #include <imgui.h>
 
 #include "app/gui/appearance.hpp"
+#include "app/gui/compare.hpp"
 #include "app/gui/panels/widgets.hpp"
 #include "core/geometry/geometry.hpp"
 
 namespace foldlab::gui {
+namespace {
+
+// B's lines are dashed so that they read apart from A's where the two fabrics fold alike: of every
+// kDashPeriod samples (about 15 dashes across the span at 201 samples) the last kDashGap are left
+// out.
+constexpr std::size_t kDashPeriod = 12;
+constexpr std::size_t kDashGap = 4;
+
+}  // namespace
+
+void FoldPlotPanel::dash_compare_lines(Document& document) {
+  Comparison& compare = document.compare;
+  Scene& scene = compare.scene(document.scene().grid_nx());
+  const FoldLines& lines = scene.fold_lines();
+  if (compare_changes_ == compare.changes() &&
+      compare_lines_version_ == scene.version(Stage::fold_lines)) {
+    return;
+  }
+  compare_changes_ = compare.changes();
+  compare_lines_version_ = scene.version(Stage::fold_lines);
+  compare_xs_.assign(lines.lines.size(), {});
+  compare_ys_.assign(lines.lines.size(), {});
+  compare_signs_.clear();
+  const double gap = std::nan("");
+  for (std::size_t k = 0; k < lines.lines.size(); ++k) {
+    compare_signs_.push_back(lines.lines[k].sign);
+    const std::vector<Eigen::Vector3d>& points = lines.lines[k].points_mm;
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      const bool shown = i % kDashPeriod < kDashPeriod - kDashGap || i + 1 == points.size();
+      compare_xs_[k].push_back(shown ? points[i].x() : gap);
+      compare_ys_[k].push_back(shown ? points[i].y() : gap);
+    }
+  }
+}
 
 void FoldPlotPanel::draw(PanelContext& context) {
   Document& document = context.document;
@@ -56,12 +92,33 @@ void FoldPlotPanel::draw(PanelContext& context) {
     const FoldColours colours = fold_colours(style_is_light());
     const ImU32 positive_colour = ImGui::ColorConvertFloat4ToU32(colours.positive);
     const ImU32 negative_colour = ImGui::ColorConvertFloat4ToU32(colours.negative);
+    // With B pinned the legend names both fabrics; A's lines come first, so that a hovered
+    // series below lines.lines.size() is one of A's.
+    const bool compare = document.compare.pinned();
+    const std::string a_label = compare ? "A: " + fabric_label(document) + ", " : std::string();
+    const std::string a_positive = a_label + (compare ? "positive" : "positive fold");
+    const std::string a_negative = a_label + (compare ? "negative" : "negative fold");
     // A whole-pixel width lets ImGui draw each line from its baked anti-aliased line texture: two
     // vertices a point instead of four, which is a third of a dragged frame's plot on llvmpipe.
     for (std::size_t k = 0; k < lines.lines.size(); ++k) {
       const bool negative = lines.lines[k].sign < 0;
-      plot_.line(negative ? "negative fold" : "positive fold", xs_[k], ys_[k],
+      plot_.line(negative ? a_negative.c_str() : a_positive.c_str(), xs_[k], ys_[k],
                  negative ? negative_colour : positive_colour, 2.0f);
+    }
+    compare_lines_drawn_ = 0;
+    compare_points_drawn_ = 0;
+    if (compare) {
+      dash_compare_lines(document);
+      const std::string b_label = "B: " + document.compare.b().name + ", ";
+      const std::string b_positive = b_label + "positive";
+      const std::string b_negative = b_label + "negative";
+      for (std::size_t k = 0; k < compare_xs_.size(); ++k) {
+        const bool negative = compare_signs_[k] < 0;
+        plot_.line(negative ? b_negative.c_str() : b_positive.c_str(), compare_xs_[k],
+                   compare_ys_[k], negative ? kCompareBNegative.u32() : kCompareB.u32(), 2.0f);
+        ++compare_lines_drawn_;
+        compare_points_drawn_ += compare_xs_[k].size();
+      }
     }
     if (lines.lines.empty()) {
       // No folds (no slack, short cloth): show the cloth itself, y = (A + h) cos(pi x / l).

@@ -23,6 +23,9 @@ class FoldPlotPanel : public Panel {
   void draw(PanelContext& context) override;
   // Where the plot was drawn last (its data area and legend, screen pixels).
   const PlotView& plot_view() const { return plot_.view(); }
+  // The fold lines of B drawn in the last frame, and their points (0 while no B is pinned).
+  int compare_lines_drawn() const { return compare_lines_drawn_; }
+  std::size_t compare_points_drawn() const { return compare_points_drawn_; }
 
  private:
   Plot plot_;
@@ -34,6 +37,15 @@ class FoldPlotPanel : public Panel {
   std::uint64_t outline_version_ = ~std::uint64_t{0};
   std::vector<double> outline_xs_;
   std::vector<double> outline_ys_;
+  // B's fold lines, dashed (a gap is a run of NaN points): rebuilt when B or its lines change.
+  void dash_compare_lines(Document& document);
+  std::uint64_t compare_changes_ = ~std::uint64_t{0};
+  std::uint64_t compare_lines_version_ = ~std::uint64_t{0};
+  std::vector<std::vector<double>> compare_xs_;
+  std::vector<std::vector<double>> compare_ys_;
+  std::vector<int> compare_signs_;
+  int compare_lines_drawn_ = 0;
+  std::size_t compare_points_drawn_ = 0;
 };
 
 }  // namespace foldlab::gui

@@ -8,6 +8,7 @@
 
 #include "app/gui/appearance.hpp"
 
+#include "app/gui/panels/compare_table.hpp"
 #include "app/gui/panels/widgets.hpp"
 #include "core/analysis/uncertainty.hpp"
 #include "core/model/equations.hpp"
@@ -156,6 +157,8 @@ void ResultsPanel::draw(PanelContext& context) {
                        refusal->c_str());
     ImGui::PopStyleColor();
   }
+  const ModelStanding& model = standing(document);
+  draw_compare_section(document, model);
   Scene& scene = document.scene();
   const Solution& s = scene.solution();
   ImGui::Text("Regime: %s", std::string(to_string(s.regime)).c_str());
@@ -164,7 +167,6 @@ void ResultsPanel::draw(PanelContext& context) {
     ImGui::TextWrapped("%s", message.c_str());
     ImGui::PopStyleColor();
   }
-  const ModelStanding& model = standing(document);
   ImGui::PushStyleColor(ImGuiCol_Text, kDimText);
   ImGui::TextWrapped("model: %s", model.label.c_str());
   ImGui::PopStyleColor();

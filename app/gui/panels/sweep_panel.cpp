@@ -8,6 +8,8 @@
 #include <imgui.h>
 
 #include "app/common/presets_dir.hpp"
+#include "app/gui/appearance.hpp"
+#include "app/gui/compare.hpp"
 #include "app/gui/panels/axis_inputs.hpp"
 #include "app/gui/panels/widgets.hpp"
 #include "core/model/solver.hpp"
@@ -20,6 +22,11 @@ constexpr ImU32 kRefusedFill = IM_COL32(230, 90, 80, 60);
 // A sweep plot's least height, in font sizes: about four lines of data area besides its ticks
 // and labels.
 constexpr float kMinPlotHeightEms = 8.5f;
+
+bool same_axis(const SweepAxis& a, const SweepAxis& b) {
+  return a.key == b.key && a.from == b.from && a.to == b.to && a.steps == b.steps &&
+         a.logarithmic == b.logarithmic;
+}
 
 }  // namespace
 
@@ -72,9 +79,7 @@ void SweepPanel::recompute(const Parameters& current) {
   if (check_axis(axis)) {
     return;
   }
-  if (computed_ && current == computed_for_ && axis.key == computed_axis_.key &&
-      axis.from == computed_axis_.from && axis.to == computed_axis_.to &&
-      axis.steps == computed_axis_.steps && axis.logarithmic == computed_axis_.logarithmic) {
+  if (computed_ && current == computed_for_ && same_axis(axis, computed_axis_)) {
     return;
   }
   const std::vector<SweepPoint> points = sweep(current, axis);
@@ -87,6 +92,21 @@ void SweepPanel::recompute(const Parameters& current) {
   computed_for_ = current;
   computed_axis_ = axis;
   computed_ = true;
+}
+
+void SweepPanel::recompute_compare(Document& document) {
+  if (!document.compare.pinned()) {
+    compare_computed_ = false;
+    return;
+  }
+  const Parameters& b = document.compare.b().parameters;
+  if (compare_computed_ && b == compare_computed_for_ && same_axis(computed_axis_, compare_axis_)) {
+    return;
+  }
+  compare_curves_ = sweep_curves(sweep(b, computed_axis_));
+  compare_computed_for_ = b;
+  compare_axis_ = computed_axis_;
+  compare_computed_ = true;
 }
 
 namespace {
@@ -155,6 +175,7 @@ void SweepPanel::draw(Document& document) {
     return;
   }
   recompute(current);
+  recompute_compare(document);
   const std::string& key = computed_axis_.key;
   const double now = to_shown(key, get_number(current, key));
   const bool overlay = !overlay_label_.empty() && overlay_key_ == key;
@@ -162,7 +183,17 @@ void SweepPanel::draw(Document& document) {
   if (overlay && ImGui::CollapsingHeader("Paper vs model (table)")) {
     draw_comparison(current);
   }
-  // Each plot keeps room for its ticks, its title and a few lines of data at any UI scale: a
+  // With B pinned, one line names A's and B's colours for the three plots: a legend under each
+  // would take the short plots' height.
+  const SweepCurves* b = compare_computed_ ? &compare_curves_ : nullptr;
+  const std::string a_legend = b ? "A: " + fabric_label(document) : std::string("model");
+  const std::string b_legend = b ? "B: " + document.compare.b().name : std::string();
+  if (b != nullptr) {
+    ImGui::TextColored(kSweepCurve, "%s", a_legend.c_str());
+    same_line_if_fits(ImGui::CalcTextSize(b_legend.c_str()).x);
+    ImGui::TextColored(kCompareB, "%s", b_legend.c_str());
+  }
+    // Each plot keeps room for its ticks, its title and a few lines of data at any UI scale: a
   // short panel scrolls rather than squeeze a plot under its own labels.
   const float height =
       std::max(ems(kMinPlotHeightEms), (ImGui::GetContentRegionAvail().y - 8.0f) / 3.0f);
@@ -174,11 +205,15 @@ void SweepPanel::draw(Document& document) {
     const std::vector<double>& paper_x;
     const std::vector<double>& paper_y;
     bool steps;
+    const std::vector<double>* compare_ys;  // B's, while pinned
   };
   const Quantity quantities[] = {
-      {n_plot_, "sweep n", "n", curves_.n, overlay_shown_x_, overlay_n_, true},
-      {Q_plot_, "sweep Q", "Q", curves_.Q, overlay_Q_shown_x_, overlay_Q_, false},
-      {z_plot_, "sweep z", "z_max (mm)", curves_.z_max_mm, overlay_shown_x_, overlay_z_, false},
+      {n_plot_, "sweep n", "n", curves_.n, overlay_shown_x_, overlay_n_, true,
+       b ? &b->n : nullptr},
+      {Q_plot_, "sweep Q", "Q", curves_.Q, overlay_Q_shown_x_, overlay_Q_, false,
+       b ? &b->Q : nullptr},
+      {z_plot_, "sweep z", "z_max (mm)", curves_.z_max_mm, overlay_shown_x_, overlay_z_, false,
+       b ? &b->z_max_mm : nullptr},
   };
   for (const Quantity& q : quantities) {
     // The x title only under the last plot; a legend only when the paper's points are shown.
@@ -188,17 +223,30 @@ void SweepPanel::draw(Document& document) {
                       PlotAxis{q.label, false, false})) {
       continue;
     }
-    const char* legend = overlay ? "model" : nullptr;
-    if (q.steps) {
-      q.plot.steps(legend, shown_x_, q.ys, kSweepCurve.u32(), 2.0f);
-    } else {
-      q.plot.line(legend, shown_x_, q.ys, kSweepCurve.u32(), 2.0f);
+    const char* legend = overlay ? a_legend.c_str() : nullptr;
+    const auto curve = [&](const char* name, const std::vector<double>& ys, ImU32 colour) {
+      if (q.steps) {
+        q.plot.steps(name, shown_x_, ys, colour, 2.0f);
+      } else {
+        q.plot.line(name, shown_x_, ys, colour, 2.0f);
+      }
+    };
+    curve(legend, q.ys, kSweepCurve.u32());
+    if (q.compare_ys != nullptr) {
+      curve(overlay ? b_legend.c_str() : nullptr, *q.compare_ys, kCompareB.u32());
+    }
+    if (&q == &quantities[0]) {
+      curves_drawn_ = q.compare_ys != nullptr ? 2 : 1;
     }
     if (overlay) {
       q.plot.markers(overlay_label_.c_str(), q.paper_x, q.paper_y, kPaperPoint.u32(),
                      MarkerShape::Diamond, 5.0f);
     }
     q.plot.vertical_line(now, kCurrentValue.u32());
+    if (b != nullptr) {
+      q.plot.vertical_line(to_shown(key, get_number(document.compare.b().parameters, key)),
+                           kCompareB.u32());
+    }
     q.plot.end();
     draw_bands(q.plot, key, &q == &quantities[0]);
   }

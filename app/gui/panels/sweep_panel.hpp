@@ -32,9 +32,17 @@ class SweepPanel {
   const PlotView& plot_view(int which) const {
     return which == 0 ? n_plot_.view() : which == 1 ? Q_plot_.view() : z_plot_.view();
   }
+  // B's curves over the same axis while a fabric is pinned as B (null otherwise), and how many
+  // curves the n plot drew last frame (A's, then B's).
+  const SweepCurves* compare_curves() const {
+    return compare_computed_ ? &compare_curves_ : nullptr;
+  }
+  int curves_drawn() const { return curves_drawn_; }
 
  private:
   void recompute(const Parameters& current);
+  // B's curves over the axis A's were computed on, again only when B or the axis changes.
+  void recompute_compare(Document& document);
   // The paper's rows for `prefix` (e.g. "paper-table1-") as points over `key`.
   void load_overlay(const std::string& prefix, const std::string& label);
 
@@ -52,6 +60,11 @@ class SweepPanel {
   // The x values as plotted: in the unit the swept input's slider shows (w in g/m²).
   std::vector<double> shown_x_;
   std::vector<RegimeBand> bands_;
+  bool compare_computed_ = false;
+  Parameters compare_computed_for_;
+  SweepAxis compare_axis_;
+  SweepCurves compare_curves_;
+  int curves_drawn_ = 0;
   void clear_overlay();
   // Shades the bands over the data area of the plot just ended; names them when `label`.
   void draw_bands(const Plot& plot, const std::string& key, bool label) const;

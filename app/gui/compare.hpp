@@ -1,0 +1,68 @@
+// A/B comparison: a fabric pinned as "B" beside the one being edited ("A"). B is a value of its
+// own, not an edit of A: it holds the parameters A had when it was pinned (the last valid ones,
+// with the law and method settings), the calibration record its intervals come from, and a label.
+// Undo and redo move A only. B has a lazy Scene of its own, so a view that does not show B
+// computes nothing for it.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+
+#include "core/geometry/scene.hpp"
+#include "core/io/preset.hpp"
+#include "core/io/report.hpp"
+
+namespace foldlab::gui {
+
+class Document;
+
+class Comparison {
+ public:
+  bool pinned() const { return b_.has_value(); }
+  // B as a preset: its name is the label shown, its parameters are valid, its calibration is the
+  // one its intervals come from. Precondition: pinned().
+  const Preset& b() const { return *b_; }
+  // B's scene, at `grid_nx` vertices a side (A's, so that the two cloths are drawn alike).
+  // Precondition: pinned().
+  Scene& scene(int grid_nx);
+  // B's solution, a shortcut for the views that show numbers only.
+  const Solution& solution() { return scene_.solution(); }
+  // The form of eq. 7 and the prediction intervals for B, as Results shows them for A.
+  const ModelStanding& standing();
+  // Counts pins and clears, so that views know when B is another fabric.
+  std::uint64_t changes() const { return changes_; }
+
+  // Precondition: validate(b.parameters) is empty.
+  void pin(Preset b);
+  void clear();
+
+  // A's label after a swap, while A still has the parameters it got from B: the swap moved a
+  // fabric, so its name goes with it.
+  void name_a(std::string label, const Parameters& parameters);
+  std::optional<std::string> a_name_for(const Parameters& parameters) const;
+
+ private:
+  std::optional<Preset> b_;
+  Scene scene_;
+  std::optional<ModelStanding> standing_;
+  std::uint64_t changes_ = 0;
+  std::string a_label_;
+  std::optional<Parameters> a_label_parameters_;
+};
+
+// The label of the fabric being edited: the loaded preset's name, "(edited)" after it once its
+// parameters differ from it (or the name a swap brought).
+std::string fabric_label(const Document& document);
+// A's last valid state as a preset to pin: the loaded preset with the scene's parameters, named
+// by fabric_label.
+Preset current_fabric(const Document& document);
+
+// What the buttons and the Compare menu do. Pinning replaces an earlier B. Swapping gives A the
+// parameters of B through Document::apply (one undo step of A; undo does not bring B back) and
+// pins A's former state as B. Each says what it did in the status line.
+void pin_as_b(Document& document);
+void swap_a_and_b(Document& document);
+void clear_b(Document& document);
+
+}  // namespace foldlab::gui

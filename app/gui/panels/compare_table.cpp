@@ -1,0 +1,138 @@
+#include "app/gui/panels/compare_table.hpp"
+
+#include <optional>
+#include <string>
+
+#include <imgui.h>
+
+#include "app/gui/appearance.hpp"
+#include "app/gui/compare.hpp"
+#include "app/gui/panels/widgets.hpp"
+#include "core/model/text_format.hpp"
+
+namespace foldlab::gui {
+
+QuantityTexts quantity_texts(const Solution& s, const ModelStanding& standing) {
+  QuantityTexts texts{{detail::printf_string("%d", s.n), "", ""},
+                      {detail::printf_string("%.4f", s.Q), "", ""},
+                      {detail::printf_string("%.2f", s.z_max_mm), "", " mm"}};
+  if (const std::optional<PredictionRange>& range = standing.range) {
+    texts.n.range = range_text(range->n_min, range->n_max, "%.0f");
+    texts.Q.range = range_text(range->Q_min, range->Q_max, "%.4f");
+    texts.z_max.range = range_text(range->z_max_min_mm, range->z_max_max_mm, "%.1f");
+  }
+  return texts;
+}
+
+QuantityTexts difference_texts(const Solution& a, const Solution& b) {
+  return {{detail::printf_string("%+d", b.n - a.n), "", ""},
+          {detail::printf_string("%+.4f", b.Q - a.Q), "", ""},
+          {detail::printf_string("%+.2f", b.z_max_mm - a.z_max_mm), "", " mm"}};
+}
+
+void compare_menu(Document& document) {
+  const bool pinned = document.compare.pinned();
+  if (ImGui::MenuItem("Pin as B")) {
+    pin_as_b(document);
+  }
+  if (ImGui::MenuItem("Swap A and B", nullptr, false, pinned)) {
+    swap_a_and_b(document);
+  }
+  if (ImGui::MenuItem("Clear B", nullptr, false, pinned)) {
+    clear_b(document);
+  }
+  if (pinned) {
+    ImGui::Separator();
+    ImGui::TextDisabled("B: %s", document.compare.b().name.c_str());
+  }
+}
+
+void draw_compare_section(Document& document, const ModelStanding& standing_a) {
+  Comparison& compare = document.compare;
+  if (ImGui::Button("Pin as B")) {
+    pin_as_b(document);
+  }
+  if (ImGui::IsItemHovered()) {
+    ImGui::SetTooltip(
+        "Keeps this fabric (its last valid inputs and model settings) as B, drawn beside A in "
+        "the plots and the 3D view, while the sliders go on changing A.");
+  }
+  if (!compare.pinned()) {
+    return;
+  }
+  same_line_if_fits(button_width("Swap A and B"));
+  if (ImGui::Button("Swap A and B")) {
+    swap_a_and_b(document);
+  }
+  same_line_if_fits(button_width("Clear B"));
+  if (ImGui::Button("Clear B")) {
+    clear_b(document);
+  }
+  if (!compare.pinned()) {
+    return;  // cleared just now
+  }
+  // A preset's name can be a sentence: wrapped, never cut off.
+  for (const auto& [colour, label] : {std::pair{&kSweepCurve, "A: " + fabric_label(document)},
+                                      std::pair{&kCompareB, "B: " + compare.b().name}}) {
+    ImGui::PushStyleColor(ImGuiCol_Text, static_cast<ImVec4>(*colour));
+    ImGui::TextWrapped("%s", label.c_str());
+    ImGui::PopStyleColor();
+  }
+  const Solution& a = document.scene().solution();
+  const Solution& b = compare.solution();
+  const QuantityTexts a_texts = quantity_texts(a, standing_a);
+  const QuantityTexts b_texts = quantity_texts(b, compare.standing());
+  const QuantityTexts difference = difference_texts(a, b);
+  // A narrow Results panel scrolls the table sideways rather than cut off B − A: a header, and
+  // for each quantity its values and, when there are any, its intervals.
+  const bool ranges = !a_texts.n.range.empty() || !b_texts.n.range.empty();
+  const ImGuiStyle& style = ImGui::GetStyle();
+  const float row_height = ImGui::GetTextLineHeight() + 2.0f * style.CellPadding.y;
+  const float table_height =
+      static_cast<float>(1 + (ranges ? 6 : 3)) * row_height + style.ScrollbarSize + 2.0f;
+  if (ImGui::BeginTable("A and B", 4,
+                        ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit |
+                            ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_ScrollX,
+                        ImVec2(0.0f, table_height))) {
+    for (const char* title : {"", "A", "B", "B − A"}) {
+      ImGui::TableSetupColumn(title);
+    }
+    ImGui::TableHeadersRow();
+    // The value on one row and, dimmed under it, its interval: the columns stay narrow.
+    const auto row = [](const char* symbol, const QuantityText& a_text, const QuantityText& b_text,
+                        const QuantityText& difference_text) {
+      ImGui::TableNextRow();
+      ImGui::TableNextColumn();
+      ImGui::TextUnformatted(symbol);
+      for (const QuantityText* cell : {&a_text, &b_text, &difference_text}) {
+        ImGui::TableNextColumn();
+        ImGui::TextUnformatted((cell->value + cell->unit).c_str());
+      }
+      if (a_text.range.empty() && b_text.range.empty()) {
+        return;
+      }
+      ImGui::TableNextRow();
+      ImGui::TableNextColumn();
+      for (const QuantityText* cell : {&a_text, &b_text}) {
+        ImGui::TableNextColumn();
+        if (!cell->range.empty()) {
+          // " (lo–hi)" after a value; alone on its row, under the value with the unit, lo–hi.
+          ImGui::TextColored(kDimText, "%s", cell->range.substr(2, cell->range.size() - 3).c_str());
+        }
+      }
+    };
+    row("n", a_texts.n, b_texts.n, difference.n);
+    row("Q", a_texts.Q, b_texts.Q, difference.Q);
+    row("z_max", a_texts.z_max, b_texts.z_max, difference.z_max);
+    ImGui::EndTable();
+  }
+  if (a.regime != Regime::wrinkled || b.regime != Regime::wrinkled) {
+    ImGui::PushStyleColor(ImGuiCol_Text, kNoteText);
+    ImGui::TextWrapped("regimes: A %s, B %s", std::string(to_string(a.regime)).c_str(),
+                       std::string(to_string(b.regime)).c_str());
+    ImGui::PopStyleColor();
+  }
+  ImGui::Separator();
+}
+
+}  // namespace foldlab::gui
