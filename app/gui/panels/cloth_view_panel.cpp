@@ -245,7 +245,7 @@ void ClothViewPanel::draw(PanelContext& context) {
       photo_path_ = expand_home(photo_input_).string();
       load_photo(photo_path_);
     }
-    same_line_if_fits(button_width(kBrowseLabel));
+    same_line_if_fits(button_width(kBrowseLabel) + ImGui::CalcTextSize(" (?)").x);
     if (ImGui::SmallButton(kBrowseLabel)) {
       context.files.open({FileDialog::Mode::open, "Load swatch photo", "", kImageExtensions,
                           [this](const std::filesystem::path& path) {

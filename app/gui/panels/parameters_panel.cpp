@@ -258,6 +258,7 @@ void ParametersPanel::play_frame(Document& document) {
 
 void ParametersPanel::animation_row(Document& document,
                                     const std::vector<const InputSpec*>& sliders, float width) {
+  ImGui::AlignTextToFramePadding();
   ImGui::TextUnformatted("animate");
   ImGui::SameLine();
   ImGui::SetNextItemWidth(ems(3.5f));
