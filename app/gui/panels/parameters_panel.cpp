@@ -282,17 +282,23 @@ void ParametersPanel::animation_row(Document& document,
       playing_ = false;
       document.end_step();  // the value reached stays, as one undo step
     } else {
-      if (!animation_ || animation_->key() != animate_key_) {
-        try {
-          animation_.emplace(animate_key_, document.edited());
-          range_lo_ = animation_->lo();
-          range_hi_ = animation_->hi();
+      // The valid range afresh, since the other inputs may have changed while paused; the same
+      // input carries on where it paused, over the range typed for it.
+      const bool resuming = animation_ && animation_->key() == animate_key_;
+      try {
+        AnimatedInput fresh(animate_key_, document.edited());
+        if (resuming) {
+          fresh.set_range(range_lo_, range_hi_);
+        } else {
           animation_ways_ = 0.0;
-          animation_problem_.clear();
-        } catch (const std::exception& e) {
-          animation_.reset();
-          animation_problem_ = e.what();
         }
+        animation_ = fresh;
+        range_lo_ = animation_->lo();
+        range_hi_ = animation_->hi();
+        animation_problem_.clear();
+      } catch (const std::exception& e) {
+        animation_.reset();
+        animation_problem_ = e.what();
       }
       playing_ = animation_.has_value();
     }
