@@ -22,7 +22,9 @@ Explorer::Explorer(const Preset& initial, const std::string& initial_path, bool 
     : options_(std::move(options)),
       renderer_(renderer),
       appearance_(options_.font_file),
-      document_(initial, initial_path) {
+      document_(initial, initial_path),
+      files_(options_.start_folder.empty() ? std::filesystem::current_path()
+                                           : options_.start_folder) {
   // The panels, in drawing order: the tiled ones in the layout's order, then the floating windows.
   parameters_ = add<ParametersPanel>();
   presets_ = add<PresetsPanel>(options_.presets_dir, options_.user_presets_dir);
@@ -33,6 +35,7 @@ Explorer::Explorer(const Preset& initial, const std::string& initial_path, bool 
   calibration_ = add<CalibrationPanel>();
   photo_ = add<PhotoOverlay>(PhotoPaths{options_.measurements_file, options_.user_presets_dir,
                                         shipped_measurements_file(options_.presets_dir)});
+  intro_ = add<IntroWindow>();
 
   presets_->set_footer([this] {
     calibration_->open_button(document_.scene().parameters());
@@ -158,6 +161,36 @@ std::optional<std::string> Explorer::set_view(std::string_view key, std::string_
     return std::nullopt;
   }
   return cloth_view_->set_view(key, value);
+}
+
+std::optional<PictureRequest> Explorer::take_screenshot_request() {
+  std::optional<ExportPanel::PictureRequest> asked = export_.take_picture_request();
+  if (!asked) {
+    return std::nullopt;
+  }
+  PictureRequest request{asked->path, std::nullopt};
+  const auto rect_of = [this](std::string_view key) -> std::optional<PanelRect> {
+    for (const auto& [name, rect] : panel_rects()) {
+      if (name == key) {
+        return rect;
+      }
+    }
+    return std::nullopt;
+  };
+  switch (asked->picture) {
+    case ExportPanel::Picture::window:
+      break;
+    case ExportPanel::Picture::cloth_view:
+      request.crop = cloth_view_->view_rect();
+      break;
+    case ExportPanel::Picture::fold_plot:
+      request.crop = rect_of(fold_plot_->key());
+      break;
+    case ExportPanel::Picture::sweep:
+      request.crop = rect_of(analysis_->key());
+      break;
+  }
+  return request;
 }
 
 bool Explorer::busy() const {
@@ -330,6 +363,9 @@ void Explorer::view_menu() {
     }
     ImGui::EndMenu();
   }
+  if (ImGui::MenuItem(IntroWindow::kTitle)) {
+    intro_->open();
+  }
   if (ImGui::MenuItem("Reset layout", nullptr, false, !automatic_layout_ || splits_.any())) {
     reset_layout();
   }
@@ -474,8 +510,11 @@ float Explorer::main_menu() {
       ImGui::EndMenu();
     }
     if (ImGui::BeginMenu("Export")) {
-      export_.menu(document_, cloth_view_->style());
+      export_.menu(document_, cloth_view_->style(), files_, analysis_->sweep_shown());
       ImGui::EndMenu();
+    }
+    if (ImGui::MenuItem(IntroWindow::kTitle)) {
+      intro_->open();
     }
     // One click from the menu bar while the user's own arrangement is shown.
     if ((!automatic_layout_ || splits_.any()) && !presented_ && ImGui::MenuItem("Reset layout")) {
@@ -599,6 +638,7 @@ bool Explorer::awaits_time() const {
 }
 
 void Explorer::frame() {
+  export_.new_frame();
   document_.tick(ImGui::GetTime());
   const int scale_before = appearance_.scale_percent();
   const bool light_before = appearance_.light_theme();
@@ -621,7 +661,7 @@ void Explorer::frame() {
         PanelRect{ImVec2(0.0f, top),
                   ImVec2(std::floor(display.x), std::max(std::floor(display.y - top), 1.0f))};
   }
-  PanelContext context{document_, renderer_, *photo_, wake_};
+  PanelContext context{document_, renderer_, *photo_, files_, wake_};
   for (const std::unique_ptr<Panel>& panel : panels_) {
     const std::optional<Tile> tile = panel->tile();
     if (tile && presented_ && *tile != *presented_) {
@@ -638,11 +678,13 @@ void Explorer::frame() {
   stats_overlay(show_stats_, document_.scene(), renderer_.counters());
   draw_unsaved_dialog();
   presets_->draw_dialogs(document_);
+  files_.draw(document_);
   if (photo_->take_saved_preset()) {
     presets_->refresh();  // the fitted preset joins the list
   }
-  if (!ImGui::IsAnyItemActive()) {
-    document_.end_step();  // a drag or a typed value ends when its widget lets go
+  // A drag ends when its widget lets go; an animation when it is paused.
+  if (!ImGui::IsAnyItemActive() && !parameters_->animating()) {
+    document_.end_step();
   }
   if (appearance_.scale_percent() != scale_before || appearance_.light_theme() != light_before) {
     document_.session_dirty = true;

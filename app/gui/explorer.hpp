@@ -21,7 +21,9 @@
 #include "app/gui/panels/calibration_panel.hpp"
 #include "app/gui/panels/cloth_view_panel.hpp"
 #include "app/gui/panels/export_panel.hpp"
+#include "app/gui/panels/file_dialog.hpp"
 #include "app/gui/panels/fold_plot_panel.hpp"
+#include "app/gui/panels/intro_window.hpp"
 #include "app/gui/panels/parameters_panel.hpp"
 #include "app/gui/panels/photo_overlay.hpp"
 #include "app/gui/panels/presets_panel.hpp"
@@ -39,6 +41,15 @@ struct ExplorerOptions {
   std::string analysis_tab;         // "equations", "method", "sweep" or "map": selected at start
   std::filesystem::path font_file;  // empty: ImGui's built-in font (no Greek)
   std::filesystem::path measurements_file;  // the photo's "Add to measurements" appends here
+  std::filesystem::path start_folder;       // where the first file dialog opens; empty: the
+                                            // working folder
+};
+
+// A picture the user asked for, taken by the frame loop after drawing: the whole window, or the
+// part `crop` covers (display pixels).
+struct PictureRequest {
+  std::string path;
+  std::optional<PanelRect> crop;
 };
 
 class Explorer {
@@ -106,8 +117,11 @@ class Explorer {
   // quit_confirmed() turns true once the answer lets the window close.
   bool may_quit();
   bool quit_confirmed() const { return quit_confirmed_; }
-  // A PNG the user asked for with the Export buttons, taken by the frame loop after drawing.
-  std::optional<std::string> take_screenshot_request() { return export_.take_screenshot_request(); }
+  // A PNG the user asked for in the Export menu, taken by the frame loop after drawing this
+  // frame, which shows neither the menu nor the dialog it was asked with.
+  std::optional<PictureRequest> take_screenshot_request();
+  FileDialog& file_dialog() { return files_; }
+  IntroWindow& intro() { return *intro_; }
   // Shows a line in the Presets panel (the outcome of an export done by the frame loop).
   void notify(const std::string& message, bool is_error) { document_.notify(message, is_error); }
   // A line kept in the Presets panel and listed by `gui --report` (see Document::add_notice).
@@ -116,9 +130,10 @@ class Explorer {
   // True while background work of any panel (the regime map, a calibration, the photo's fit) is
   // still to show up in what the window shows.
   bool busy() const;
-  // True while a frame would differ from the last without any input: background work or the
-  // breeze. Otherwise the window may sleep until an event (or a finished job's wake) comes.
-  bool animating() const { return busy() || cloth_view_->animating(); }
+  // True while a frame would differ from the last without any input: background work, the
+  // breeze or an input the play button sweeps. Otherwise the window may sleep until an event (or a
+  // finished job's wake) comes.
+  bool animating() const { return busy() || cloth_view_->animating() || parameters_->animating(); }
   // True while a frame would differ from the last after a while, with no input: a message that
   // will fade, a session or window layout to save, a text cursor blinking. (Tooltips show at
   // once, in the frames that follow the mouse's move.) Call after a frame; otherwise a sleeping
@@ -176,6 +191,7 @@ class Explorer {
   Appearance appearance_;
   Document document_;
   ExportPanel export_;  // the Export menu, in the menu bar
+  FileDialog files_;    // every panel's open and save dialog
   // The panels, in drawing order; the pointers below point into it, for what the explorer's
   // own interface offers of them.
   std::vector<std::unique_ptr<Panel>> panels_;
@@ -187,6 +203,7 @@ class Explorer {
   AnalysisPanel* analysis_ = nullptr;
   CalibrationPanel* calibration_ = nullptr;  // "Fit to measurements", opened from the Presets panel
   PhotoOverlay* photo_ = nullptr;            // the fold plot's photo and its measurement window
+  IntroWindow* intro_ = nullptr;             // "What am I looking at?"
   std::function<void()> wake_;
   bool show_stats_ = false;
   bool automatic_layout_ = true;

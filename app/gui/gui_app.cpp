@@ -259,9 +259,13 @@ int run(Surface& surface, const GuiRunOptions& options, const Preset& preset, bo
     }
   }
   const std::filesystem::path measurements = config_dir() / "measurements.csv";
-  ExplorerOptions explorer_options{
-      app::find_presets_dir(), user_presets_dir(), persist ? config_dir() / "session.json" : "",
-      options.analysis_tab,    kDejaVuSans,        measurements};
+  ExplorerOptions explorer_options{app::find_presets_dir(),
+                                   user_presets_dir(),
+                                   persist ? config_dir() / "session.json" : "",
+                                   options.analysis_tab,
+                                   kDejaVuSans,
+                                   measurements,
+                                   std::filesystem::current_path()};
   ImGuiContextGuard imgui(surface);
   const std::unique_ptr<Renderer> renderer = make_gl_renderer();
   // A preset named on the command line wins over the restored session.

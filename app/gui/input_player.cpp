@@ -418,10 +418,19 @@ bool InputPlayer::start_step(std::size_t index, ImGuiIO& io, Explorer& explorer)
     released.mouse = mouse_;
     queue_.push_back(released);
   } else if (step.contains("type")) {
+    // One character a frame, as hands type: a widget sees every text on the way.
+    const std::string text = step["type"].get<std::string>();
     FrameInput typed;
     typed.mouse = mouse_;
-    typed.text = step["type"].get<std::string>();
-    queue_.push_back(typed);
+    for (std::size_t at = 0; at < text.size();) {
+      std::size_t next = at + 1;
+      while (next < text.size() && (static_cast<unsigned char>(text[next]) & 0xC0) == 0x80) {
+        ++next;  // the continuation bytes of a UTF-8 character
+      }
+      typed.text = text.substr(at, next - at);
+      queue_.push_back(typed);
+      at = next;
+    }
     typed.text.clear();
     queue_.push_back(typed);
   } else if (step.contains("resize")) {

@@ -17,6 +17,7 @@
 namespace foldlab::gui {
 
 class PhotoOverlay;
+class FileDialog;
 
 // What a panel's draw is given: the one copy of the state, the way to the GPU and the pieces one
 // panel lends another.
@@ -24,6 +25,7 @@ struct PanelContext {
   Document& document;
   Renderer& renderer;
   PhotoOverlay& photo;  // the fold plot's backdrop, its clicks and its measurement window
+  FileDialog& files;    // the one open/save dialog, which remembers the folder last used
   // Wakes the frame loop when it sleeps; callable from any thread (a background job's end).
   std::function<void()> wake;
 };

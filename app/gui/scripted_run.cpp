@@ -17,48 +17,6 @@
 #include "core/model/text_format.hpp"
 
 namespace foldlab::gui {
-namespace {
-
-// A point of [lo, hi] at fraction f, evenly on the input's scale.
-double along(double lo, double hi, bool logarithmic, double f) {
-  return logarithmic ? lo * std::pow(hi / lo, f) : lo + (hi - lo) * f;
-}
-
-}  // namespace
-
-AnimatedInput::AnimatedInput(const std::string& key, const Parameters& base) : key_(key) {
-  const std::vector<std::string>& keys = sweepable_keys();
-  if (std::find(keys.begin(), keys.end(), key) == keys.end()) {
-    throw app::InputError("--animate " + key + ": not one of " + detail::join_comma(keys));
-  }
-  const InputSpec& spec = *find_input(key);
-  logarithmic_ = spec.scale == InputScale::logarithmic;
-  // d must stay below L/2, for one: keep to the values the model accepts with the rest as is.
-  constexpr int kProbes = 200;
-  std::optional<double> first;
-  double last = 0.0;
-  for (int i = 0; i <= kProbes; ++i) {
-    const double v =
-        along(spec.typical_lo, spec.typical_hi, logarithmic_, static_cast<double>(i) / kProbes);
-    Parameters p = base;
-    if (!set_input(p, key, v) && validate(p).empty()) {
-      first = first.value_or(v);
-      last = v;
-    }
-  }
-  if (!first) {
-    throw app::InputError("--animate " + key +
-                          ": no value of its slider is valid with the other inputs");
-  }
-  lo_ = *first;
-  hi_ = last;
-}
-
-double AnimatedInput::value(int frame) const {
-  const double phase = std::abs(std::fmod(frame / 60.0, 2.0) - 1.0);  // 1 -> 0 -> 1
-  return along(lo_, hi_, logarithmic_, 1.0 - phase);
-}
-
 ScriptedRun::ScriptedRun(int frames, std::optional<AnimatedInput> animation,
                          std::optional<InputPlayer> player)
     : frames_(frames),
@@ -152,10 +110,23 @@ void FrameTimes::print_report(const char* backend, const std::string& animate_ke
 
 void take_screenshots(Explorer& explorer, Renderer& renderer, FrameSize size,
                       const std::string& final_path, bool last_frame) {
-  if (const std::optional<std::string> path = explorer.take_screenshot_request()) {
+  if (const std::optional<PictureRequest> request = explorer.take_screenshot_request()) {
     try {
-      write_png(path->c_str(), size, renderer.read_pixels(size));
-      explorer.notify("Wrote " + std::filesystem::absolute(*path).string(), false);
+      std::vector<std::uint8_t> pixels = renderer.read_pixels(size);
+      FrameSize shown = size;
+      if (request->crop) {
+        // Display pixels to the framebuffer's, which a high-DPI screen makes larger.
+        const ImVec2 display = ImGui::GetIO().DisplaySize;
+        const float sx = display.x > 0.0f ? static_cast<float>(size.width) / display.x : 1.0f;
+        const float sy = display.y > 0.0f ? static_cast<float>(size.height) / display.y : 1.0f;
+        const PanelRect& r = *request->crop;
+        shown = crop_pixels(pixels, size, static_cast<int>(std::lround(r.pos.x * sx)),
+                            static_cast<int>(std::lround(r.pos.y * sy)),
+                            static_cast<int>(std::lround(r.size.x * sx)),
+                            static_cast<int>(std::lround(r.size.y * sy)));
+      }
+      write_png(request->path.c_str(), shown, pixels);
+      explorer.notify("Wrote " + std::filesystem::absolute(request->path).string(), false);
     } catch (const SurfaceError& e) {
       explorer.notify(std::string("Not exported: ") + e.what(), true);
     }

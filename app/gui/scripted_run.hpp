@@ -8,31 +8,13 @@
 #include <string>
 #include <vector>
 
+#include "app/gui/animated_input.hpp"
 #include "app/gui/explorer.hpp"
 #include "app/gui/input_player.hpp"
 #include "app/gui/renderer.hpp"
 #include "app/gui/surface.hpp"
 
 namespace foldlab::gui {
-
-// `--animate KEY`: the input goes back and forth across its slider's range (the input table's
-// typical range and scale), 60 frames a way, within the part of that range where the other inputs
-// as they are accept it.
-class AnimatedInput {
- public:
-  // Throws app::InputError for a key that has no slider.
-  AnimatedInput(const std::string& key, const Parameters& base);
-  double value(int frame) const;
-  const std::string& key() const { return key_; }
-  double lo() const { return lo_; }
-  double hi() const { return hi_; }
-
- private:
-  std::string key_;
-  double lo_ = 0.0;
-  double hi_ = 0.0;
-  bool logarithmic_ = false;
-};
 
 // How many frames to run, and what a scripted frame does before ImGui::NewFrame.
 class ScriptedRun {

@@ -55,5 +55,9 @@ std::unique_ptr<Surface> make_headless_surface(const SurfaceOptions& options);
 
 // Writes RGBA pixels (top row first) as PNG. Throws SurfaceError naming the path on failure.
 void write_png(const char* path, FrameSize size, const std::vector<std::uint8_t>& rgba);
+// Keeps the part of RGBA pixels (top row first) `width` x `height` from (x, y), cut to the frame,
+// in place; returns its size (a nothing rectangle keeps one pixel, so that a PNG can be written).
+FrameSize crop_pixels(std::vector<std::uint8_t>& rgba, FrameSize size, int x, int y, int width,
+                      int height);
 
 }  // namespace foldlab::gui

@@ -1,8 +1,9 @@
 #!/usr/bin/env python3
 """Writes ui_WxH.json: every button, tab, menu item and dialog of the explorer clicked at one
 window size, each followed by a check of what it should have done (a tab's content is there to
-be clicked, a dialog opens and Escape closes it, the layout fills the window). The exports write
-into the working folder, which the CTest command makes a fresh temporary one and then checks.
+be clicked, a dialog opens and Escape closes it, the layout fills the window). The exports are
+saved with the save dialog, which opens in the working folder: the CTest command makes that a
+fresh temporary one and then checks the files.
 
 Run from this folder after changing a label; the CTest command line gives the base state:
 Table 1's h = 1400 mm preset with L = 4000 mm.
@@ -15,8 +16,12 @@ SIZES = ["1024x640", "1280x800", "1920x1080"]
 NEXT = {"1024x640": "1920x1080", "1280x800": "1024x640", "1920x1080": "1280x800"}
 UNSAVED = "Unsaved changes"
 SAVE_AS = "Save as"
-EXPORTS = ["OBJ mesh (.obj)", "glTF mesh (.glb)", "Fold lines (.svg)", "Fold lines (.csv)",
-           "Window picture (.png)"]
+# Each Export item opens the save dialog with "foldlab-export" and its extension as the name;
+# None keeps that name (Enter), a text is typed over it (the extension is added).
+EXPORTS = [("OBJ mesh (.obj)...", None), ("glTF mesh (.glb)...", None),
+           ("Fold lines (.svg)...", None), ("Fold lines (.csv)...", None),
+           ("Window picture (.png)...", None), ("3D view picture (.png)...", "view"),
+           ("Fold plot picture (.png)...", "fold-plot")]
 
 
 def click(label, frames=2):
@@ -60,8 +65,10 @@ def script(size):
     steps += menu("View", "Pipeline stats") + menu("View", "Pipeline stats")
     steps += menu("View", "Light theme") + [{"expect": {"appearance.light_theme": False}}]
     # The Export menu: the files are checked by the CTest command.
-    for item in EXPORTS:
+    for item, name in EXPORTS:
         steps += menu("Export", item)
+        steps += [{"type": name}] if name else []
+        steps += [{"key": "enter"}, {"frames": 2}, {"expect": {"modal": None}}]
     steps += [{"frames": 2}, {"expect": dict(tiled, modal=None)}]
     # Another window size: the panels refit it.
     steps += [{"resize": NEXT[size]}, {"frames": 3}, {"expect": tiled}]

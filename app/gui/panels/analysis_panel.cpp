@@ -24,6 +24,7 @@ void AnalysisPanel::show_paper_case(int which, Document& document) {
 
 void AnalysisPanel::draw(PanelContext& context) {
   Document& document = context.document;
+  sweep_shown_ = false;
   if (!begin(context.renderer)) {
     ImGui::End();
     return;
@@ -55,6 +56,7 @@ void AnalysisPanel::draw(PanelContext& context) {
     }
     if (ImGui::BeginTabItem("Sweep", nullptr, sweep_flags)) {
       sweep_.draw(document);
+      sweep_shown_ = true;
       ImGui::EndTabItem();
     }
     if (ImGui::BeginTabItem("Regime map", nullptr, map_flags)) {

@@ -42,9 +42,12 @@ class AnalysisPanel : public Panel {
   const MethodPanel& method() const { return method_; }
   MethodPanel& method() { return method_; }
   const RegimeMapPanel& regime_map() const { return regime_map_; }
+  // True when the last frame drew the Sweep tab's plots.
+  bool sweep_shown() const { return sweep_shown_; }
 
  private:
   std::string initial_tab_;
+  bool sweep_shown_ = false;
   bool tab_selected_ = false;
   EquationsTab equations_;
   MethodPanel method_;

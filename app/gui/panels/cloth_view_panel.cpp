@@ -1,6 +1,7 @@
 #include "app/gui/panels/cloth_view_panel.hpp"
 
 #include <algorithm>
+#include <cstdio>
 #include <string_view>
 
 #include <imgui.h>
@@ -10,6 +11,7 @@
 #include "app/gui/appearance.hpp"
 #include "app/gui/colour_map.hpp"
 #include "app/gui/compare.hpp"
+#include "app/gui/panels/file_dialog.hpp"
 #include "app/gui/panels/widgets.hpp"
 #include "core/model/settings.hpp"
 #include "core/model/text_format.hpp"
@@ -259,12 +261,23 @@ void ClothViewPanel::draw(PanelContext& context) {
     ImGui::SetNextItemWidth(ems(13.0f));
     if (ImGui::InputTextWithHint("##photo", "swatch PNG or JPEG path", photo_input_,
                                  sizeof photo_input_, ImGuiInputTextFlags_EnterReturnsTrue)) {
-      photo_path_ = photo_input_;
+      photo_path_ = expand_home(photo_input_).string();
       load_photo(photo_path_);
+    }
+    same_line_if_fits(button_width(kBrowseLabel) + ImGui::CalcTextSize(" (?)").x);
+    if (ImGui::SmallButton(kBrowseLabel)) {
+      context.files.open({FileDialog::Mode::open, "Load swatch photo", "", kImageExtensions,
+                          [this](const std::filesystem::path& path) {
+                            std::snprintf(photo_input_, sizeof photo_input_, "%s",
+                                          path.string().c_str());
+                            photo_path_ = path.string();
+                            return load_photo(photo_path_);
+                          }},
+                         document);
     }
     help_marker(
         "A photo of the fabric (PNG or JPEG), tiled over the cloth every print size; "
-        "type its path and press Enter.");
+        "type its path (~/ is your home folder) and press Enter, or browse for it.");
   }
   if (style_.print != ClothStyle::Print::plain) {
     same_line_if_fits(ems(8.5f));
@@ -317,6 +330,8 @@ void ClothViewPanel::draw(PanelContext& context) {
   Scene& scene = document.scene();
   follow_the_cloth(document, reset);
   const ImVec2 origin = ImGui::GetCursorScreenPos();
+  view_rect_ = PanelRect{
+      origin, ImVec2(static_cast<float>(area.width) + bar_width, static_cast<float>(area.height))};
   ImGui::InvisibleButton("view",
                          ImVec2(static_cast<float>(area.width), static_cast<float>(area.height)),
                          ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonRight |

@@ -26,6 +26,7 @@ class ClothViewPanel : public Panel {
   void save_settings(SessionSettings& settings) const override;
   void load_settings(const SessionSettings& settings) override;
 
+  static constexpr const char* kBrowseLabel = "browse...";
   ClothStyle& style() { return style_; }
   const ClothStyle& style() const { return style_; }
   // A view setting by name (print=checks, print_file=swatch.jpg, print_mm=40, colour_by=z,
@@ -36,6 +37,8 @@ class ClothViewPanel : public Panel {
   const std::string& print_file() const { return photo_path_; }
   // True while the breeze plays: every frame shows a new instant.
   bool animating() const { return style_.breeze && breeze_playing_; }
+  // Where the view's picture was drawn last (display pixels), for a picture of the view alone.
+  const PanelRect& view_rect() const { return view_rect_; }
 
  private:
   void settings_row();
@@ -59,6 +62,7 @@ class ClothViewPanel : public Panel {
   std::string photo_path_;
   char photo_input_[512] = {};
   std::string photo_problem_;
+  PanelRect view_rect_;
 };
 
 }  // namespace foldlab::gui

@@ -1,6 +1,7 @@
 #include "app/gui/panels/export_panel.hpp"
 
 #include <filesystem>
+#include <utility>
 
 #include <imgui.h>
 
@@ -10,6 +11,12 @@
 #include "core/io/io.hpp"
 
 namespace foldlab::gui {
+namespace {
+
+// The name the save dialog offers, before the user types another.
+constexpr const char* kStem = "foldlab-export";
+
+}  // namespace
 
 DeformedGrid mesh_as_shown(Scene& scene, const ClothStyle& style) {
   scene.normals();
@@ -25,43 +32,79 @@ DeformedGrid mesh_as_shown(Scene& scene, const ClothStyle& style) {
   return grid;
 }
 
-std::optional<std::string> ExportPanel::take_screenshot_request() {
-  std::optional<std::string> request;
-  request.swap(screenshot_request_);
-  return request;
+std::optional<ExportPanel::PictureRequest> ExportPanel::take_picture_request() {
+  if (!picture_ready_) {
+    return std::nullopt;
+  }
+  picture_ready_ = false;
+  return std::exchange(picture_, std::nullopt);
 }
 
-void ExportPanel::menu(Document& document, const ClothStyle& style) {
-  ImGui::TextUnformatted("file name (without extension)");
-  ImGui::SetNextItemWidth(ems(20.0f));
-  ImGui::InputText("##export stem", stem_, sizeof stem_);
-  const std::string stem = stem_;
+void ExportPanel::menu(Document& document, const ClothStyle& style, FileDialog& files,
+                       bool sweep_shown) {
   Scene& scene = document.scene();
   const std::string& name = document.loaded().name;
-  auto write = [&document](const std::string& path, auto&& make) {
-    try {
-      write_file_atomically(path, make());
-      document.notify("Wrote " + std::filesystem::absolute(path).string(), false);
-    } catch (const std::exception& e) {
-      document.notify(std::string("Not exported: ") + e.what(), true);
-    }
+  // The files are written when the dialog's answer comes, from the scene as it is then.
+  const auto save_as = [&](const char* title, const char* extension, auto make) {
+    files.open({FileDialog::Mode::save,
+                title,
+                std::string(kStem) + extension,
+                {extension},
+                [&document, make](const std::filesystem::path& path) -> std::optional<std::string> {
+                  try {
+                    write_file_atomically(path, make());
+                  } catch (const std::exception& e) {
+                    return std::string("Not exported: ") + e.what();
+                  }
+                  document.notify("Wrote " + path.string(), false);
+                  return std::nullopt;
+                }},
+               document);
   };
+  const auto picture = [&](const char* title, Picture what) {
+    files.open({FileDialog::Mode::save,
+                title,
+                std::string(kStem) + ".png",
+                {".png"},
+                [this, what](const std::filesystem::path& path) -> std::optional<std::string> {
+                  picture_ = PictureRequest{path.string(), what};
+                  picture_ready_ = false;
+                  return std::nullopt;
+                }},
+               document);
+  };
+  if (ImGui::MenuItem("OBJ mesh (.obj)...")) {
+    save_as("Export OBJ mesh", ".obj",
+            [&scene, style, name] { return mesh_to_obj(mesh_as_shown(scene, style), name); });
+  }
+  if (ImGui::MenuItem("glTF mesh (.glb)...")) {
+    save_as("Export glTF mesh", ".glb",
+            [&scene, style, name] { return mesh_to_glb(mesh_as_shown(scene, style), name); });
+  }
+  if (ImGui::MenuItem("Fold lines (.svg)...")) {
+    save_as("Export fold lines (SVG)", ".svg", [&scene, name] {
+      return fold_lines_to_svg(scene.fold_lines(), scene.solution(), name);
+    });
+  }
+  if (ImGui::MenuItem("Fold lines (.csv)...")) {
+    save_as("Export fold lines (CSV)", ".csv",
+            [&scene] { return fold_lines_to_csv(scene.fold_lines()); });
+  }
   ImGui::Separator();
-  if (ImGui::MenuItem("OBJ mesh (.obj)")) {
-    write(stem + ".obj", [&] { return mesh_to_obj(mesh_as_shown(scene, style), name); });
+  if (ImGui::MenuItem("Window picture (.png)...")) {
+    picture("Export window picture", Picture::window);
   }
-  if (ImGui::MenuItem("glTF mesh (.glb)")) {
-    write(stem + ".glb", [&] { return mesh_to_glb(mesh_as_shown(scene, style), name); });
+  if (ImGui::MenuItem("3D view picture (.png)...")) {
+    picture("Export 3D view picture", Picture::cloth_view);
   }
-  if (ImGui::MenuItem("Fold lines (.svg)")) {
-    write(stem + ".svg",
-          [&] { return fold_lines_to_svg(scene.fold_lines(), scene.solution(), name); });
+  if (ImGui::MenuItem("Fold plot picture (.png)...")) {
+    picture("Export fold plot picture", Picture::fold_plot);
   }
-  if (ImGui::MenuItem("Fold lines (.csv)")) {
-    write(stem + ".csv", [&] { return fold_lines_to_csv(scene.fold_lines()); });
+  if (ImGui::MenuItem("Sweep picture (.png)...", nullptr, false, sweep_shown)) {
+    picture("Export sweep picture", Picture::sweep);
   }
-  if (ImGui::MenuItem("Window picture (.png)")) {
-    screenshot_request_ = stem + ".png";
+  if (!sweep_shown && ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) {
+    ImGui::SetTooltip("Open Analysis > Sweep to take its plots.");
   }
 }
 

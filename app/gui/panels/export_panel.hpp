@@ -1,12 +1,14 @@
 // The Export menu (in the menu bar, so that it is one click away at any window size): the mesh as
-// the 3D view shows it now (OBJ, glTF), the fold lines (SVG, CSV), and a PNG of the window, which
-// the frame loop takes after drawing.
+// the 3D view shows it now (OBJ, glTF), the fold lines (SVG, CSV), and PNG pictures of the
+// window, the 3D view alone or the fold plot or sweep alone, which the frame loop takes after
+// drawing. Every item asks where with the save dialog.
 #pragma once
 
 #include <optional>
 #include <string>
 
 #include "app/gui/document.hpp"
+#include "app/gui/panels/file_dialog.hpp"
 #include "app/gui/renderer.hpp"
 #include "core/geometry/geometry.hpp"
 
@@ -14,15 +16,25 @@ namespace foldlab::gui {
 
 class ExportPanel {
  public:
-  // The menu's contents, between ImGui::BeginMenu and EndMenu: the file stem, then one item per
-  // format. Files are written relative to the working folder unless the stem is a path.
-  void menu(Document& document, const ClothStyle& style);
-  // The PNG path the user asked for, once.
-  std::optional<std::string> take_screenshot_request();
+  // Which part of the window a picture shows.
+  enum class Picture { window, cloth_view, fold_plot, sweep };
+  struct PictureRequest {
+    std::string path;
+    Picture picture = Picture::window;
+  };
+
+  // The menu's contents, between ImGui::BeginMenu and EndMenu: one item per format, each opening
+  // the save dialog. `sweep_shown`: the Sweep tab is on screen, so that its plots can be taken.
+  void menu(Document& document, const ClothStyle& style, FileDialog& files, bool sweep_shown);
+  // At the start of a frame: a picture asked for in an earlier frame may be taken after this one,
+  // which draws neither the menu nor the dialog it was asked for in.
+  void new_frame() { picture_ready_ = picture_.has_value(); }
+  // The picture the user asked for, once, when it may be taken after this frame.
+  std::optional<PictureRequest> take_picture_request();
 
  private:
-  char stem_[256] = "foldlab-export";
-  std::optional<std::string> screenshot_request_;
+  std::optional<PictureRequest> picture_;
+  bool picture_ready_ = false;
 };
 
 // The mesh as the 3D view shows it: with the breeze's offset at this instant when it blows

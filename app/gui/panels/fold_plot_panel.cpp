@@ -60,7 +60,7 @@ void FoldPlotPanel::draw(PanelContext& context) {
   Scene& scene = document.scene();
   const FoldLines& lines = scene.fold_lines();
   const Solution& s = scene.solution();
-  photo.toolbar(document);
+  photo.toolbar(context);
   if (ImGui::SmallButton("autoscale")) {
     autoscale_ = true;
   }

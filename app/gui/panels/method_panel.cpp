@@ -2,11 +2,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <string>
 
 #include <imgui.h>
+#include <imgui_internal.h>  // GetActiveID: the field keeps what is being typed
 
 #include "app/gui/panels/widgets.hpp"
+#include "core/model/settings.hpp"
 #include "core/model/text_format.hpp"
 
 namespace foldlab::gui {
@@ -101,6 +104,9 @@ void MethodPanel::draw(Document& document) {
     same_line_if_fits(ImGui::CalcTextSize(model.c_str()).x);
     ImGui::TextColored(kDimText, "%s", model.c_str());
   }
+  if (method_ == Method::paper) {
+    tolerance_field(document);
+  }
   recompute(current);
   if (trace_.iterates.empty()) {
     ImGui::TextWrapped("No iteration: %s", describe(trace_.solution, computed_for_).c_str());
@@ -131,6 +137,48 @@ void MethodPanel::draw(Document& document) {
     draw_ratio_plot(height);
   } else {
     draw_map_plot(height);
+  }
+}
+
+// The paper method's stopping rule, for a class to see the iteration settle over more steps: a
+// typed tolerance goes through Document::apply as any input does (one undo step, validated, a
+// refused value kept with its reason).
+void MethodPanel::tolerance_field(Document& document) {
+  const InputSpec& spec = *find_input(kToleranceKey);
+  const double tolerance = document.edited().model.length_tolerance;
+  ImGui::TextUnformatted("stop when |L′/L − 1| ≤");
+  ImGui::SameLine();
+  ImGui::SetNextItemWidth(ems(6.0f));
+  const ImGuiID id = ImGui::GetID("##length tolerance");
+  if (ImGui::GetActiveID() != id) {
+    std::snprintf(tolerance_text_, sizeof tolerance_text_, "%s",
+                  detail::shortest_number(tolerance).c_str());
+  }
+  const bool enter =
+      ImGui::InputText("##length tolerance", tolerance_text_, sizeof tolerance_text_,
+                       ImGuiInputTextFlags_AutoSelectAll | ImGuiInputTextFlags_EnterReturnsTrue);
+  const int escape_key = ImGui::GetKeyIndex(ImGuiKey_Escape);
+  const bool escape = escape_key >= 0 && ImGui::IsKeyPressed(escape_key, false);
+  if ((enter || (ImGui::IsItemDeactivated() && !escape)) &&
+      std::string(tolerance_text_) != detail::shortest_number(tolerance)) {
+    tolerance_problem_ =
+        document.apply(Edit::choose(std::string(kToleranceKey), tolerance_text_)).value_or("");
+  }
+  help_marker(std::string(spec.help).c_str());
+  ImGui::SameLine();
+  ImGui::BeginDisabled(tolerance == kPaperTolerance);
+  if (ImGui::SmallButton("the paper's 5 %")) {
+    document.apply(Edit::input(std::string(kToleranceKey), kPaperTolerance));
+    tolerance_problem_.clear();
+  }
+  ImGui::EndDisabled();
+  for (const ValidationIssue& issue : document.issues()) {
+    if (issue.field == spec.field) {
+      ImGui::TextColored(kErrorText, "%s", issue.message.c_str());
+    }
+  }
+  if (!tolerance_problem_.empty()) {
+    ImGui::TextColored(kErrorText, "%s", tolerance_problem_.c_str());
   }
 }
 

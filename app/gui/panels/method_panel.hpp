@@ -4,6 +4,7 @@
 // the model uses, without editing the inputs.
 #pragma once
 
+#include <string>
 #include <vector>
 
 #include "app/gui/document.hpp"
@@ -30,6 +31,7 @@ class MethodPanel {
 
  private:
   void recompute(const Parameters& current);
+  void tolerance_field(Document& document);
   void draw_controls();
   void draw_table();
   void draw_change() const;
@@ -44,6 +46,10 @@ class MethodPanel {
   IterationTrace trace_;
   std::vector<CountMapPoint> map_;
   int shown_ = 1;
+  static constexpr const char* kToleranceKey = "length_tolerance";
+  static constexpr double kPaperTolerance = ModelSettings{}.length_tolerance;  // the paper's 5 %
+  char tolerance_text_[32] = {};
+  std::string tolerance_problem_;  // a tolerance that is not a number
 
   // Plot buffers, refilled per frame from the shown iterates.
   std::vector<double> step_x_, ratio_y_, band_x_, band_lo_, band_hi_, one_y_;

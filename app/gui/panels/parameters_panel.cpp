@@ -166,6 +166,21 @@ void ParametersPanel::input_slider(Document& document, const InputSpec& spec, fl
   ImGui::SetNextItemWidth(width);
   bool changed = false;
   const ImGuiID id = ImGui::GetID(label.c_str());
+  const int escape_key = ImGui::GetKeyIndex(ImGuiKey_Escape);
+  const bool escape = escape_key >= 0 && ImGui::IsKeyPressed(escape_key, false);
+  // What is typed is read when it is done (Enter, or the field losing the text cursor), never
+  // keystroke by keystroke: typing 750 must not solve d = 7 and d = 75 on the way. Escape cancels.
+  const auto read_typed = [&] {
+    typing_id_ = 0;
+    const std::string text = trimmed(typed_);
+    if (escape || text == typing_initial_) {
+      return;
+    }
+    if (const std::optional<double> typed = parse_quantity(spec, text, shown_unit(spec).symbol)) {
+      value = *typed;
+      changed = true;
+    }
+  };
   if (ImGui::TempInputIsActive(id)) {
     // ImGui opened its text field over the slider on the Ctrl+click, with the shown text; this
     // field, under the same id, carries on editing it without the digits-only filter, so that a
@@ -173,23 +188,17 @@ void ParametersPanel::input_slider(Document& document, const InputSpec& spec, fl
     if (typing_id_ != id) {
       typing_id_ = id;
       typing_initial_ = shown_text(spec, value);
-      typing_value_ = value;
       std::snprintf(typed_, sizeof typed_, "%s", typing_initial_.c_str());
     }
-    if (ImGui::InputText(label.c_str(), typed_, sizeof typed_, ImGuiInputTextFlags_AutoSelectAll)) {
-      const std::string text = trimmed(typed_);
-      if (text == typing_initial_) {
-        value = typing_value_;
-        changed = true;
-      } else if (const std::optional<double> typed =
-                     parse_quantity(spec, text, shown_unit(spec).symbol)) {
-        value = *typed;
-        changed = true;
-      }
+    const bool enter =
+        ImGui::InputText(label.c_str(), typed_, sizeof typed_,
+                         ImGuiInputTextFlags_AutoSelectAll | ImGuiInputTextFlags_EnterReturnsTrue);
+    if (enter || ImGui::IsItemDeactivated()) {
+      read_typed();
     }
   } else {
     if (typing_id_ == id) {
-      typing_id_ = 0;
+      read_typed();  // a click elsewhere took the text cursor before this frame drew the field
     }
     const InputInterval range = interval(spec, document.edited());
     // The shown text doubles as the text field's first contents on Ctrl+click, which parses
@@ -227,8 +236,10 @@ void ParametersPanel::input_slider(Document& document, const InputSpec& spec, fl
         SliderPlace{min, ImVec2(min.x + width, min.y + ImGui::GetFrameHeight()), fraction};
   }
   if (changed) {
-    // Open: the frame closes the step when the slider or its text field lets go.
-    document.apply(Edit::input(std::string(spec.key), value).open());
+    // A drag stays open until the slider lets go (the frame closes the step); a typed value or
+    // an arrow key's nudge is a step of its own.
+    Edit edit = Edit::input(std::string(spec.key), value);
+    document.apply(ImGui::IsItemActive() ? std::move(edit).open() : edit);
   }
   if (is_refused) {
     ImGui::PopStyleColor();
@@ -236,8 +247,96 @@ void ParametersPanel::input_slider(Document& document, const InputSpec& spec, fl
   help_marker(std::string(spec.help).c_str());
 }
 
+void ParametersPanel::play_frame(Document& document) {
+  if (!playing_) {
+    return;
+  }
+  animation_ways_ += static_cast<double>(ImGui::GetIO().DeltaTime) / kSecondsPerWay;
+  // Open, and left open by the frame while playing: the whole animation up to its pause is one
+  // undo step, which takes the input back to where it was before play.
+  document.apply(Edit::input(animate_key_, animation_->at(animation_ways_)).open());
+}
+
+void ParametersPanel::animation_row(Document& document,
+                                    const std::vector<const InputSpec*>& sliders, float width) {
+  ImGui::AlignTextToFramePadding();
+  ImGui::TextUnformatted("animate");
+  ImGui::SameLine();
+  ImGui::SetNextItemWidth(ems(3.5f));
+  if (ImGui::BeginCombo("##animated input", animate_key_.c_str())) {
+    for (const InputSpec* spec : sliders) {
+      if (ImGui::Selectable(slider_label(*spec).c_str(), spec->key == animate_key_) &&
+          spec->key != animate_key_) {
+        if (playing_) {
+          document.end_step();
+        }
+        animate_key_ = std::string(spec->key);
+        animation_.reset();
+        playing_ = false;
+      }
+    }
+    ImGui::EndCombo();
+  }
+  ImGui::SameLine();
+  if (ImGui::Button(playing_ ? kPauseLabel : kPlayLabel)) {
+    if (playing_) {
+      playing_ = false;
+      document.end_step();  // the value reached stays, as one undo step
+    } else {
+      // The valid range afresh, since the other inputs may have changed while paused; the same
+      // input carries on where it paused, over the range typed for it.
+      const bool resuming = animation_ && animation_->key() == animate_key_;
+      try {
+        AnimatedInput fresh(animate_key_, document.edited());
+        if (resuming) {
+          fresh.set_range(range_lo_, range_hi_);
+        } else {
+          animation_ways_ = 0.0;
+        }
+        animation_ = fresh;
+        range_lo_ = animation_->lo();
+        range_hi_ = animation_->hi();
+        animation_problem_.clear();
+      } catch (const std::exception& e) {
+        animation_.reset();
+        animation_problem_ = e.what();
+      }
+      playing_ = animation_.has_value();
+    }
+  }
+  help_marker(
+      "Sweeps the chosen input from the low end of its slider (or of the range typed beside) to "
+      "the high end and back while everything re-solves; pause leaves the value where it is. The "
+      "animation is one undo step.");
+  if (animation_) {
+    const InputSpec& spec = *find_input(animate_key_);
+    const double per_unit = shown_unit(spec).per_unit;
+    const std::string format = std::string(shown_unit(spec).format);
+    double lo = range_lo_ / per_unit;
+    double hi = range_hi_ / per_unit;
+    const float field = std::max(ems(4.5f), 0.25f * width);
+    same_line_if_fits(labelled_width(field, "from"));
+    ImGui::SetNextItemWidth(field);
+    bool changed = ImGui::InputDouble("from", &lo, 0.0, 0.0, format.c_str(),
+                                      ImGuiInputTextFlags_EnterReturnsTrue);
+    same_line_if_fits(labelled_width(field, "to"));
+    ImGui::SetNextItemWidth(field);
+    changed |= ImGui::InputDouble("to", &hi, 0.0, 0.0, format.c_str(),
+                                  ImGuiInputTextFlags_EnterReturnsTrue);
+    if (changed) {
+      animation_->set_range(lo * per_unit, hi * per_unit);
+      range_lo_ = animation_->lo();
+      range_hi_ = animation_->hi();
+    }
+  }
+  if (!animation_problem_.empty()) {
+    ImGui::TextColored(kErrorText, "%s", animation_problem_.c_str());
+  }
+}
+
 void ParametersPanel::draw(PanelContext& context) {
   Document& document = context.document;
+  play_frame(document);  // before the sliders, so that they show this frame's value
   const bool unsaved = document.unsaved();
   if (!begin(context.renderer, unsaved ? " *" : "")) {
     ImGui::End();
@@ -301,6 +400,7 @@ void ParametersPanel::draw(PanelContext& context) {
   } else {
     places_.erase("p");
   }
+  animation_row(document, sliders, width);
 
   ImGui::Separator();
   const InputSpec& shape = *find_input("shape");

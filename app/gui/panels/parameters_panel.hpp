@@ -6,10 +6,13 @@
 
 #include <functional>
 #include <map>
+#include <optional>
 #include <string>
+#include <vector>
 
 #include <imgui.h>
 
+#include "app/gui/animated_input.hpp"
 #include "app/gui/document.hpp"
 #include "app/gui/panel.hpp"
 #include "core/model/settings.hpp"
@@ -33,16 +36,29 @@ class ParametersPanel : public Panel {
   // By input key; a slider hidden last frame keeps its older place.
   const std::map<std::string, SliderPlace, std::less<>>& slider_places() const { return places_; }
 
+  // True while the play button sweeps an input: every frame shows new inputs.
+  bool animating() const { return playing_; }
+  // The input the play button sweeps, and the sweep while it plays or is paused.
+  const std::string& animated_key() const { return animate_key_; }
+  const std::optional<AnimatedInput>& animation() const { return animation_; }
+  static constexpr double kSecondsPerWay = 4.0;  // the play button: min to max in 4 s
+
   static constexpr const char* kExpertLabel = "Expert settings";
+  static constexpr const char* kPlayLabel = "play";
+  static constexpr const char* kPauseLabel = "pause";
   static constexpr const char* kPrintedEq7Label = "Conci's eq. 7 as printed";
 
  private:
   void input_slider(Document& document, const InputSpec& spec, float width);
+  // The play row: which input, play/pause, and the range it sweeps.
+  void animation_row(Document& document, const std::vector<const InputSpec*>& sliders, float width);
+  // While playing: the next frame's value, one open edit for the whole animation.
+  void play_frame(Document& document);
 
   std::map<std::string, SliderPlace, std::less<>> places_;
-  // What is typed into a slider's text field (Ctrl+click), read with its unit on every change;
-  // the field's first text and the value it stood for, so that leaving that text (or Escape)
-  // keeps the exact value rather than its rounded display.
+  // What is typed into a slider's text field (Ctrl+click), read with its unit on Enter or when
+  // the field lets go; the field's first text, so that leaving it as it was keeps the exact value
+  // rather than its rounded display.
   char typed_[64] = {};
   ImGuiID typing_id_ = 0;
   // Each slider's range for the inputs it was found at: the search runs validation many times, so
@@ -54,7 +70,14 @@ class ParametersPanel : public Panel {
   std::map<std::string, CachedInterval, std::less<>> intervals_;
   const InputInterval& interval(const InputSpec& spec, const Parameters& p);
   std::string typing_initial_;
-  double typing_value_ = 0.0;
+
+  std::string animate_key_ = "h";
+  std::optional<AnimatedInput> animation_;
+  double animation_ways_ = 0.0;  // one-way sweeps done: the animation's clock
+  bool playing_ = false;
+  double range_lo_ = 0.0;  // the from/to fields, in the input's unit
+  double range_hi_ = 0.0;
+  std::string animation_problem_;
 };
 
 // Sets the paper's form of eq. 7: the paper method, p = 1 and K = 29.56 (c = 26.9 at nu = 0.3)

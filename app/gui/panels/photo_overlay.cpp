@@ -11,6 +11,7 @@
 #include <imgui.h>
 #include <nlohmann/json.hpp>
 
+#include "app/gui/panels/file_dialog.hpp"
 #include "app/gui/panels/presets_panel.hpp"
 #include "app/gui/panels/widgets.hpp"
 #include "core/analysis/uncertainty.hpp"
@@ -125,11 +126,20 @@ bool PhotoOverlay::load(const std::filesystem::path& path, Document& document, R
   return true;
 }
 
-void PhotoOverlay::toolbar(Document& document) {
+void PhotoOverlay::toolbar(PanelContext& context) {
   if (ImGui::SmallButton("Load photo...")) {
-    document.set_modal(kLoadModal);
-    focus_path_ = true;
     load_error_.clear();
+    Document* document = &context.document;
+    Renderer* renderer = &context.renderer;
+    context.files.open({FileDialog::Mode::open, kLoadModal, "", kImageExtensions,
+                        [this, document, renderer](
+                            const std::filesystem::path& path) -> std::optional<std::string> {
+                          if (load(path, *document, *renderer)) {
+                            return std::nullopt;
+                          }
+                          return load_error_;
+                        }},
+                       context.document);
   }
   if (!photo_) {
     ImGui::SameLine();
@@ -381,42 +391,6 @@ std::optional<std::filesystem::path> PhotoOverlay::take_saved_preset() {
 
 void PhotoOverlay::draw_windows(Document& document, Renderer& renderer) {
   collect_fit(document);
-  if (document.modal_title() == kLoadModal) {
-    if (!ImGui::IsPopupOpen(kLoadModal)) {
-      ImGui::OpenPopup(kLoadModal);
-    }
-    const bool escape = ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape), false);
-    if (ImGui::BeginPopupModal(kLoadModal, nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
-      ImGui::TextUnformatted("A front photo of the hanging cloth, PNG or JPEG:");
-      if (focus_path_) {
-        ImGui::SetKeyboardFocusHere();
-        focus_path_ = false;
-      }
-      ImGui::SetNextItemWidth(ImGui::GetFontSize() * 28.0f);
-      const bool enter =
-          ImGui::InputTextWithHint("##photo path", "path of the photo", path_field_,
-                                   sizeof path_field_, ImGuiInputTextFlags_EnterReturnsTrue);
-      if (ImGui::Button("Load") || enter) {
-        if (load(path_field_, document, renderer)) {
-          ImGui::CloseCurrentPopup();
-          document.set_modal("");
-        }
-      }
-      ImGui::SameLine();
-      if (ImGui::Button("Cancel") || escape) {
-        ImGui::CloseCurrentPopup();
-        document.set_modal("");
-      }
-      if (!load_error_.empty()) {
-        ImGui::PushStyleColor(ImGuiCol_Text, kErrorText);
-        ImGui::PushTextWrapPos(ImGui::GetFontSize() * 30.0f);
-        ImGui::TextUnformatted(load_error_.c_str());
-        ImGui::PopTextWrapPos();
-        ImGui::PopStyleColor();
-      }
-      ImGui::EndPopup();
-    }
-  }
   if (photo_) {
     remeasure(document);
     measurement_window(document, renderer);

@@ -44,21 +44,22 @@ class PhotoOverlay : public Panel {
   static constexpr const char* kLoadModal = "Load photo";
   const char* name() const override { return "Photo measurement"; }
   const char* key() const override { return "photo"; }
-  // The load dialog and the measurement window (the fold plot draws the rest).
+  // The measurement window (the fold plot draws the rest).
   void draw(PanelContext& context) override {
     wake_ = context.wake;  // for the fit started from the window
     draw_windows(context.document, context.renderer);
   }
   bool busy() const override { return fitting(); }
 
-  // The buttons above the fold plot: "Load photo...", "Place supports", "Click folds".
-  void toolbar(Document& document);
+  // The buttons above the fold plot: "Load photo..." (the open dialog), "Place supports",
+  // "Click folds".
+  void toolbar(PanelContext& context);
   // Between the plot's begin() and end(): the photo as its backdrop, the clicked points and the
   // centre line.
   void plot_items(Plot& plot, const Document& document);
   // After the plot's end(): a click in its data area places a support or a fold.
   void handle_click(const Plot& plot, const Document& document);
-  // The load dialog and the measurement window, outside the tiled panels.
+  // The measurement window, outside the tiled panels.
   void draw_windows(Document& document, Renderer& renderer);
 
   // Loads a photo as the backdrop; on failure keeps the previous one and says why.
@@ -92,9 +93,7 @@ class PhotoOverlay : public Panel {
   std::string photo_path_;
   int texture_ = -1;
   ImTextureID texture_id_ = nullptr;
-  char path_field_[1024] = {};
   std::string load_error_;
-  bool focus_path_ = false;
 
   Mode mode_ = Mode::none;
   std::vector<PixelPoint> supports_;  // 0, 1 or 2 clicks; two fix the frame

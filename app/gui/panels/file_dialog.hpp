@@ -1,0 +1,75 @@
+// The explorer's one file dialog, for saving (exports) and opening (a swatch, a photo): the
+// current folder's folders and files (filtered by extension), a typed file name or path ("~/"
+// is the home folder), and a question before a file is replaced. One instance serves every
+// panel, so that the folder last used is where the next dialog opens, for the whole session.
+#pragma once
+
+#include <filesystem>
+#include <functional>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "app/gui/document.hpp"
+
+namespace foldlab::gui {
+
+// The pictures the explorer reads (a swatch, a photo), as the open dialog lists them.
+inline const std::vector<std::string> kImageExtensions = {".png", ".jpg", ".jpeg"};
+
+// A typed path with "~" or "~/..." read as the home folder ($HOME); any other path as typed.
+std::filesystem::path expand_home(std::string_view typed);
+
+class FileDialog {
+ public:
+  enum class Mode { open, save };
+  // Called with the path chosen; a returned sentence (the file cannot be read or written) keeps
+  // the dialog open with it, so that another file can be chosen.
+  using Chosen = std::function<std::optional<std::string>(const std::filesystem::path&)>;
+  struct Request {
+    Mode mode = Mode::open;
+    std::string title;                    // the dialog's title, which says what it is for
+    std::string file_name;                // save: the name offered
+    std::vector<std::string> extensions;  // ".png", lower case: the files listed (all if empty);
+                                          // save: the first is added to a name without one
+    Chosen chosen;
+  };
+  struct Entry {
+    std::string name;
+    bool folder = false;
+  };
+
+  explicit FileDialog(std::filesystem::path folder) : folder_(std::move(folder)) {}
+
+  // Opens the dialog (as the document's modal) in the folder last used.
+  void open(Request request, Document& document);
+  // Once per frame, after the panels: the dialog while it is open.
+  void draw(Document& document);
+  bool is_open() const { return request_.has_value(); }
+  const std::string& title() const;
+  const std::filesystem::path& folder() const { return folder_; }
+  // What the folder holds as listed: "..", then folders, then the files the request lists.
+  const std::vector<Entry>& entries() const { return entries_; }
+
+  // What the buttons and the name field do, for the draw and for tests: a typed name or path
+  // (relative to the folder; a folder is entered), an entry clicked, the answer to "replace?".
+  void submit(std::string_view typed, Document& document);
+  void enter(const std::filesystem::path& folder);
+
+ private:
+  void list();
+  void choose(const std::filesystem::path& path, Document& document);
+  void close(Document& document);
+  bool listed(const std::filesystem::path& file) const;
+
+  std::filesystem::path folder_;
+  std::optional<Request> request_;
+  std::vector<Entry> entries_;
+  char name_[1024] = {};
+  std::optional<std::filesystem::path> replace_;  // asked whether to replace this file
+  std::string problem_;
+  bool focus_name_ = false;
+};
+
+}  // namespace foldlab::gui

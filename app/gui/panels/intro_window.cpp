@@ -1,0 +1,102 @@
+#include "app/gui/panels/intro_window.hpp"
+
+#include <algorithm>
+
+#include <imgui.h>
+
+#include "app/gui/panels/widgets.hpp"
+
+namespace foldlab::gui {
+namespace {
+
+// The facts are those of docs/model.md, said for a class rather than for a reader of the paper.
+constexpr const char* kParagraphs[] = {
+    "A cloth hangs from two supports on its upper edge and carries its own weight. Move the "
+    "supports towards each other by d and the upper edge, still of length L, has more cloth than "
+    "span: it sags, and the cloth below it has nowhere to go but out of its plane.",
+    "A thin fabric cannot carry compression: it buckles at once. Tension field theory takes that "
+    "as its starting point. Wherever the cloth would be squeezed, it wrinkles instead, and the "
+    "compressive stress is released; what is left carrying the load are tension rays, taut lines "
+    "running from support to support. The folds lie along those lines.",
+    "So the slack region folds into n wrinkles, deepest at the top and dying out towards the "
+    "bottom, each fold line a cosine arch between the supports and each one smaller than the one "
+    "above by the same ratio Q. The model predicts how many folds there are (n), that ratio, and "
+    "how far they stand out of the plane (z_max) from six numbers: the thickness t, the stiffness "
+    "E and the weight w of the fabric, its height h and width L, and the support displacement d. "
+    "A thicker, stiffer fabric makes fewer, larger folds; a heavier or taller one makes more.",
+    "Two conditions close the model: the upper edge and the vertical fibre down the middle keep "
+    "their lengths. A critical stress (eq. 7) says where the weight of the cloth below a fold is "
+    "enough to buckle it, which fixes Q.",
+};
+
+struct PanelNote {
+  const char* name;
+  const char* what;
+};
+constexpr PanelNote kPanels[] = {
+    {"Parameters",
+     "the six numbers above as sliders (Ctrl+click to type one); a red slider is "
+     "a value the model refuses, with the reason below."},
+    {"Fold lines (2D)",
+     "the fold lines seen from the front, y down from the supports: "
+     "blue folds bulge one way out of the plane (z > 0), red ones the other."},
+    {"Cloth (3D)",
+     "the same folds on the cloth itself; drag to turn it, the z exaggeration "
+     "deepens the folds to see them."},
+    {"Results", "the regime (wrinkled, no slack, stiff, ...), n, Q, z_max and each fold's depth."},
+    {"Analysis",
+     "the equations with today's numbers, the solver step by step (Method), how the "
+     "answer changes with one input (Sweep) or two (Regime map)."},
+    {"Presets", "the paper's own cases and a few fabrics to start from."},
+};
+
+}  // namespace
+
+void IntroWindow::draw(PanelContext& context) {
+  if (!open_) {
+    return;
+  }
+  const ImVec2 display = ImGui::GetIO().DisplaySize;
+  const ImVec2 size(std::min(ems(40.0f), 0.9f * display.x),
+                    std::min(ems(34.0f), 0.85f * display.y));
+  ImGui::SetNextWindowSize(size, ImGuiCond_Appearing);
+  ImGui::SetNextWindowPos(ImVec2(0.5f * display.x, 0.5f * display.y), ImGuiCond_Appearing,
+                          ImVec2(0.5f, 0.5f));
+  if (focus_) {
+    ImGui::SetNextWindowFocus();
+    focus_ = false;
+  }
+  const bool shown = ImGui::Begin(window_label().c_str(), &open_, ImGuiWindowFlags_NoCollapse);
+  if (shown) {
+    context.renderer.fill_window_background();  // the style's window background is transparent
+    // The text scrolls; "Close" stays in view under it.
+    ImGui::BeginChild("##intro text", ImVec2(0.0f, -ImGui::GetFrameHeightWithSpacing()));
+    ImGui::PushTextWrapPos(0.0f);
+    for (const char* paragraph : kParagraphs) {
+      ImGui::TextUnformatted(paragraph);
+      ImGui::Spacing();
+    }
+    section("What each panel shows");
+    for (const PanelNote& note : kPanels) {
+      ImGui::TextColored(kSectionText, "%s", note.name);
+      ImGui::SameLine();
+      ImGui::TextUnformatted(note.what);
+    }
+    ImGui::Spacing();
+    ImGui::TextUnformatted(
+        "docs/model.md in the FoldLab folder states the model with its equations and units.");
+    ImGui::PopTextWrapPos();
+    ImGui::EndChild();
+    if (ImGui::Button("Close")) {
+      open_ = false;
+    }
+    const int escape = ImGui::GetKeyIndex(ImGuiKey_Escape);
+    if (escape >= 0 && ImGui::IsKeyPressed(escape, false) &&
+        ImGui::IsWindowFocused(ImGuiFocusedFlags_RootAndChildWindows)) {
+      open_ = false;
+    }
+  }
+  ImGui::End();
+}
+
+}  // namespace foldlab::gui

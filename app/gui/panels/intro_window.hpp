@@ -1,0 +1,28 @@
+// "What am I looking at?": a short introduction to tension field theory and to the panels, for a
+// class seeing the explorer for the first time. A floating window, opened from the menu bar (and
+// the View menu); its close button, "Close" or Escape close it.
+#pragma once
+
+#include "app/gui/panel.hpp"
+
+namespace foldlab::gui {
+
+class IntroWindow : public Panel {
+ public:
+  static constexpr const char* kTitle = "What am I looking at?";
+  const char* name() const override { return kTitle; }
+  const char* key() const override { return "intro"; }
+  void draw(PanelContext& context) override;
+
+  void open() {
+    open_ = true;
+    focus_ = true;
+  }
+  bool is_open() const { return open_; }
+
+ private:
+  bool open_ = false;
+  bool focus_ = false;
+};
+
+}  // namespace foldlab::gui
