@@ -377,6 +377,14 @@ void Explorer::handle_escape() {
       !document_.modal_title().empty() || ImGui::IsAnyItemActive()) {
     return;
   }
+  // A floating window (the introduction) closes itself on Escape while it has the focus.
+  if (const ImGuiWindow* focused = ImGui::GetCurrentContext()->NavWindow; focused != nullptr) {
+    for (const std::unique_ptr<Panel>& panel : panels_) {
+      if (!panel->tile() && panel->window_label() == focused->RootWindow->Name) {
+        return;
+      }
+    }
+  }
   if (ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId)) {
     ImGui::ClosePopupsExceptModals();
   } else if (presented_) {

@@ -84,7 +84,8 @@ std::optional<ImVec2> find_label(const std::string& label) {
   // A space draws nothing: a gap after a glyph's advance wider than half a space is one.
   const float space = font->FindGlyph(' ')->AdvanceX;
   std::optional<ImVec2> inside;
-  for (int l = 0; l < data->CmdListsCount; ++l) {
+  // Top window first, as a person sees it: an open menu's item over a panel's button alike.
+  for (int l = data->CmdListsCount - 1; l >= 0; --l) {
     const ImVector<ImDrawVert>& v = data->CmdLists[l]->VtxBuffer;
     // One run of text at a time: its characters and each one's box.
     std::string text;
@@ -265,6 +266,7 @@ json explorer_state_json(Explorer& explorer) {
       {"view", cloth_view_json(explorer.cloth_style())},
       {"message", document.message()},
       {"popup_open", ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId)},
+      {"intro_open", explorer.intro().is_open()},
       {"layout",
        {{"automatic", explorer.automatic_layout()},
         {"fills_window", explorer.panels_fill_window()},

@@ -64,6 +64,18 @@ def script(size):
     steps += menu("View", "Default size") + [{"expect": {"appearance.scale_percent": 100}}]
     steps += menu("View", "Pipeline stats") + menu("View", "Pipeline stats")
     steps += menu("View", "Light theme") + [{"expect": {"appearance.light_theme": False}}]
+    # The Compare menu: B pinned, swapped (A and B the same fabric: A is unchanged), cleared.
+    steps += menu("Compare", "Pin as B") + [{"expect": {"compare.parameters.h_mm": 1400}}]
+    steps += menu("Compare", "Swap A and B") + [{"expect": {"parameters.h_mm": 1400,
+                                                           "compare.parameters.h_mm": 1400}}]
+    steps += menu("Compare", "Clear B") + [{"expect": {"compare": None}}]
+    # Presenting one panel from the View menu, Escape back to the tiles.
+    steps += click("View", 1) + click("Present (fill the window)", 1) + click("Cloth (3D)")
+    steps += [{"expect": {"layout.presented": "cloth"}}]
+    steps += [{"key": "escape"}, {"frames": 2}, {"expect": dict(tiled, **{"layout.presented": None})}]
+    # The introduction: from the menu bar, closed by Escape.
+    steps += click("What am I looking at?") + [{"expect": {"intro_open": True}}]
+    steps += [{"key": "escape"}, {"frames": 2}, {"expect": {"intro_open": False}}]
     # The Export menu: the files are checked by the CTest command.
     for item, name in EXPORTS:
         steps += menu("Export", item)

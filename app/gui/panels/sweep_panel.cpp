@@ -193,7 +193,7 @@ void SweepPanel::draw(Document& document) {
     same_line_if_fits(ImGui::CalcTextSize(b_legend.c_str()).x);
     ImGui::TextColored(kCompareB, "%s", b_legend.c_str());
   }
-    // Each plot keeps room for its ticks, its title and a few lines of data at any UI scale: a
+  // Each plot keeps room for its ticks, its title and a few lines of data at any UI scale: a
   // short panel scrolls rather than squeeze a plot under its own labels.
   const float height =
       std::max(ems(kMinPlotHeightEms), (ImGui::GetContentRegionAvail().y - 8.0f) / 3.0f);
@@ -208,8 +208,7 @@ void SweepPanel::draw(Document& document) {
     const std::vector<double>* compare_ys;  // B's, while pinned
   };
   const Quantity quantities[] = {
-      {n_plot_, "sweep n", "n", curves_.n, overlay_shown_x_, overlay_n_, true,
-       b ? &b->n : nullptr},
+      {n_plot_, "sweep n", "n", curves_.n, overlay_shown_x_, overlay_n_, true, b ? &b->n : nullptr},
       {Q_plot_, "sweep Q", "Q", curves_.Q, overlay_Q_shown_x_, overlay_Q_, false,
        b ? &b->Q : nullptr},
       {z_plot_, "sweep z", "z_max (mm)", curves_.z_max_mm, overlay_shown_x_, overlay_z_, false,
