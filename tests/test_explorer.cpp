@@ -2665,13 +2665,17 @@ TEST_F(ExplorerTest, TheFoldPlotDrawsBsFoldLinesDashedBesideAs) {
   ASSERT_GT(lines.lines.size(), 1u);
   EXPECT_EQ(explorer_->fold_plot().compare_lines_drawn(), static_cast<int>(lines.lines.size()));
   EXPECT_EQ(explorer_->fold_plot().compare_points_drawn(), points);
-  // "A: …, positive", "A: …, negative", "B: …, positive", "B: …, negative" in place of the two
-  // fold entries.
+  // "A positive fold", "A negative fold", "B positive fold (dashed)", "B negative fold (dashed)"
+  // in place of the two fold entries, none cut at the plot's edge.
   EXPECT_EQ(explorer_->fold_plot().plot_view().legend_entries, legend_without_b + 2);
   const std::string text = frame();
-  EXPECT_NE(text.find("B: " + load_preset(kPresetsDir / "paper-table1-h1400.json").name),
-            std::string::npos)
-      << text;
+  for (const char* entry : {"A positive fold", "A negative fold", "B positive fold (dashed)",
+                            "B negative fold (dashed)"}) {
+    EXPECT_NE(text.find(entry), std::string::npos) << entry << "\n" << text;
+  }
+  const PanelRect plot = rect_of("fold_plot");
+  EXPECT_EQ(cut_glyphs(plot.pos, ImVec2(plot.pos.x + plot.size.x, plot.pos.y + plot.size.y)),
+            std::vector<std::string>{});
   click("Clear B");
   EXPECT_FALSE(document().compare.pinned());
   EXPECT_EQ(explorer_->fold_plot().compare_lines_drawn(), 0);
@@ -2695,6 +2699,37 @@ TEST_F(ExplorerTest, TheThreeDViewDrawsBBesideAOnlyWhilePinned) {
   EXPECT_EQ(explorer_->compare_counters().frames, pinned.frames + 3);
   EXPECT_EQ(explorer_->compare_counters().view_cache_hits, pinned.view_cache_hits + 3);
   EXPECT_EQ(explorer_->compare_counters().mesh_uploads, pinned.mesh_uploads);
+  // Each half is named. In the tiled half view a preset's long name would wrap over the cloth
+  // and its supports: the letter alone; presented, the view is wide enough for the name.
+  const auto drawn_in_cloth_view = [&](const std::string& words) {
+    const PanelRect view = rect_of("cloth");
+    const auto boundary = [&](std::size_t at) {
+      return at >= last_text_.size() || last_text_[at] == ' ' || last_text_[at] == '\n';
+    };
+    for (std::size_t at = last_text_.find(words); at != std::string::npos;
+         at = last_text_.find(words, at + 1)) {
+      const ImVec2 p = last_positions_[at];
+      if ((at == 0 || boundary(at - 1)) && boundary(at + words.size()) && p.x >= view.pos.x &&
+          p.x < view.pos.x + view.size.x && p.y >= view.pos.y && p.y < view.pos.y + view.size.y) {
+        return true;
+      }
+    }
+    return false;
+  };
+  click("Clear B");
+  click("Default: the Table 1 cloth");
+  click("Pin as B");
+  ASSERT_EQ(explorer_->set_input("h", 2000.0), std::nullopt);
+  frame();
+  EXPECT_TRUE(drawn_in_cloth_view("A")) << last_text_;
+  EXPECT_TRUE(drawn_in_cloth_view("B")) << last_text_;
+  EXPECT_FALSE(drawn_in_cloth_view("B: Default:")) << last_text_;
+  ASSERT_EQ(explorer_->set_view("present", "cloth"), std::nullopt);
+  frame();
+  frame();
+  EXPECT_TRUE(drawn_in_cloth_view("B: Default: the Table 1 cloth,")) << last_text_;
+  ASSERT_EQ(explorer_->set_view("present", "none"), std::nullopt);
+  frame();
   click("Clear B");
   const std::uint64_t cleared = explorer_->compare_counters().frames;
   frame();

@@ -366,17 +366,22 @@ void ClothViewPanel::draw(PanelContext& context) {
                 "drag: orbit, right-drag: pan, wheel: zoom", nullptr,
                 static_cast<float>(area.width) - 12.0f);
   if (compare) {
-    // Each half named under the hint, in the colours the plots give A and B; a long name wraps
-    // downwards, over the sky rather than off the view's foot.
+    // Each half named under the hint, in the colours the plots give A and B. A name that would
+    // wrap past two lines would cover the cloth and its supports: then the letter alone (the
+    // names are in Results).
     const float foot = origin.y + 8.0f + ImGui::GetTextLineHeightWithSpacing();
-    const std::string a_name = "A: " + fabric_label(document);
-    const std::string b_name = "B: " + document.compare.b().name;
-    draw->AddText(ImGui::GetFont(), ImGui::GetFontSize(), ImVec2(origin.x + 6, foot),
-                  kSweepCurve.u32(), a_name.c_str(), nullptr,
-                  static_cast<float>(size.width) - 12.0f);
-    draw->AddText(ImGui::GetFont(), ImGui::GetFontSize(), ImVec2(b_origin.x + 6, foot),
-                  kCompareB.u32(), b_name.c_str(), nullptr,
-                  static_cast<float>(area.width - size.width) - 12.0f);
+    const auto label = [&](ImVec2 at, float width, ImU32 colour, const char* letter,
+                           const std::string& name) {
+      const std::string full = std::string(letter) + ": " + name;
+      const float wrap = width - 12.0f;
+      const bool fits = ImGui::CalcTextSize(full.c_str(), nullptr, false, wrap).y <=
+                        2.0f * ImGui::GetTextLineHeightWithSpacing();
+      draw->AddText(ImGui::GetFont(), ImGui::GetFontSize(), ImVec2(at.x + 6, foot), colour,
+                    fits ? full.c_str() : letter, nullptr, wrap);
+    };
+    label(origin, static_cast<float>(size.width), kSweepCurve.u32(), "A", fabric_label(document));
+    label(b_origin, static_cast<float>(area.width - size.width), kCompareB.u32(), "B",
+          document.compare.b().name);
     draw->AddLine(ImVec2(b_origin.x, origin.y),
                   ImVec2(b_origin.x, origin.y + static_cast<float>(area.height)),
                   ImGui::GetColorU32(ImGuiCol_Separator));

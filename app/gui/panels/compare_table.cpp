@@ -30,6 +30,16 @@ QuantityTexts difference_texts(const Solution& a, const Solution& b) {
           {detail::printf_string("%+.2f", b.z_max_mm - a.z_max_mm), "", " mm"}};
 }
 
+void draw_compare_names(Document& document) {
+  // A preset's name can be a sentence: wrapped, never cut off.
+  for (const auto& [colour, label] : {std::pair{&kSweepCurve, "A: " + fabric_label(document)},
+                                      std::pair{&kCompareB, "B: " + document.compare.b().name}}) {
+    ImGui::PushStyleColor(ImGuiCol_Text, static_cast<ImVec4>(*colour));
+    ImGui::TextWrapped("%s", label.c_str());
+    ImGui::PopStyleColor();
+  }
+}
+
 void compare_menu(Document& document) {
   const bool pinned = document.compare.pinned();
   if (ImGui::MenuItem("Pin as B")) {
@@ -71,13 +81,7 @@ void draw_compare_section(Document& document, const ModelStanding& standing_a) {
   if (!compare.pinned()) {
     return;  // cleared just now
   }
-  // A preset's name can be a sentence: wrapped, never cut off.
-  for (const auto& [colour, label] : {std::pair{&kSweepCurve, "A: " + fabric_label(document)},
-                                      std::pair{&kCompareB, "B: " + compare.b().name}}) {
-    ImGui::PushStyleColor(ImGuiCol_Text, static_cast<ImVec4>(*colour));
-    ImGui::TextWrapped("%s", label.c_str());
-    ImGui::PopStyleColor();
-  }
+  draw_compare_names(document);
   const Solution& a = document.scene().solution();
   const Solution& b = compare.solution();
   const QuantityTexts a_texts = quantity_texts(a, standing_a);

@@ -92,30 +92,28 @@ void FoldPlotPanel::draw(PanelContext& context) {
     const FoldColours colours = fold_colours(style_is_light());
     const ImU32 positive_colour = ImGui::ColorConvertFloat4ToU32(colours.positive);
     const ImU32 negative_colour = ImGui::ColorConvertFloat4ToU32(colours.negative);
-    // With B pinned the legend names both fabrics; A's lines come first, so that a hovered
-    // series below lines.lines.size() is one of A's.
+    // With B pinned the legend tells A's lines from B's in a few words (the fabrics' names are
+    // over the 3D view and in Results, too long for a legend); A's lines come first, so that a
+    // hovered series below lines.lines.size() is one of A's.
     const bool compare = document.compare.pinned();
-    const std::string a_label = compare ? "A: " + fabric_label(document) + ", " : std::string();
-    const std::string a_positive = a_label + (compare ? "positive" : "positive fold");
-    const std::string a_negative = a_label + (compare ? "negative" : "negative fold");
+    const char* a_positive = compare ? "A positive fold" : "positive fold";
+    const char* a_negative = compare ? "A negative fold" : "negative fold";
     // A whole-pixel width lets ImGui draw each line from its baked anti-aliased line texture: two
     // vertices a point instead of four, which is a third of a dragged frame's plot on llvmpipe.
     for (std::size_t k = 0; k < lines.lines.size(); ++k) {
       const bool negative = lines.lines[k].sign < 0;
-      plot_.line(negative ? a_negative.c_str() : a_positive.c_str(), xs_[k], ys_[k],
+      plot_.line(negative ? a_negative : a_positive, xs_[k], ys_[k],
                  negative ? negative_colour : positive_colour, 2.0f);
     }
     compare_lines_drawn_ = 0;
     compare_points_drawn_ = 0;
     if (compare) {
       dash_compare_lines(document);
-      const std::string b_label = "B: " + document.compare.b().name + ", ";
-      const std::string b_positive = b_label + "positive";
-      const std::string b_negative = b_label + "negative";
       for (std::size_t k = 0; k < compare_xs_.size(); ++k) {
         const bool negative = compare_signs_[k] < 0;
-        plot_.line(negative ? b_negative.c_str() : b_positive.c_str(), compare_xs_[k],
-                   compare_ys_[k], negative ? kCompareBNegative.u32() : kCompareB.u32(), 2.0f);
+        plot_.line(negative ? "B negative fold (dashed)" : "B positive fold (dashed)",
+                   compare_xs_[k], compare_ys_[k],
+                   negative ? kCompareBNegative.u32() : kCompareB.u32(), 2.0f);
         ++compare_lines_drawn_;
         compare_points_drawn_ += compare_xs_[k].size();
       }

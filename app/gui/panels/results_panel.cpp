@@ -41,25 +41,23 @@ std::vector<ResultsPanel::Row> ResultsPanel::rows(Document& document) {
   Scene& scene = document.scene();
   const Solution& s = scene.solution();
   const StageStats& timing = scene.stats(Stage::solution);
-  const std::optional<PredictionRange>& range = standing(document).range;
   auto fmt = [](const char* format, double v) { return detail::printf_string(format, v); };
-  // range_text gives " (lo–hi)".
-  auto ranged = [&](double lo, double hi, const char* format) {
-    return range ? range_text(lo, hi, format).substr(1) : std::string();
+  const QuantityTexts shown = quantity_texts(s, standing(document));
+  // The range in its own column, without the space quantity_texts puts before it.
+  auto row = [](const char* name, const char* symbol, const QuantityText& text) {
+    return Row{name, symbol, text.value + text.unit,
+               text.range.empty() ? std::string() : text.range.substr(1)};
   };
   std::vector<Row> out;
-  out.push_back({"number of wrinkles", "n", fmt("%.0f", s.n),
-                 ranged(range ? range->n_min : 0, range ? range->n_max : 0, "%.0f")});
-  out.push_back({"amplitude ratio", "Q", fmt("%.4f", s.Q),
-                 ranged(range ? range->Q_min : 0, range ? range->Q_max : 0, "%.4f")});
+  out.push_back(row("number of wrinkles", "n", shown.n));
+  out.push_back(row("amplitude ratio", "Q", shown.Q));
   if (s.count_rule && s.count_rule->spacing == FoldSpacing::even) {
     out.push_back({"fold spacing", readable("λ"), fmt("%.1f mm", s.count_rule->step), ""});
   } else {
     out.push_back({"root of eq. 7", "Q7", s.Q7 ? fmt("%.4f", *s.Q7) : "none (s >= 1)", ""});
   }
   out.push_back({"stress ratio", "s", fmt("%.4g", s.stress_ratio), ""});
-  out.push_back({"out-of-plane depth", "z_max", fmt("%.2f mm", s.z_max_mm),
-                 ranged(range ? range->z_max_min_mm : 0, range ? range->z_max_max_mm : 0, "%.1f")});
+  out.push_back(row("out-of-plane depth", "z_max", shown.z_max));
   out.push_back({"span", "l", fmt("%.1f mm", s.span_mm), ""});
   out.push_back({"sag of the upper edge", "A", fmt("%.2f mm", s.sag_amplitude_mm), ""});
   out.push_back({"iterations", "", fmt("%.0f", s.iterations), ""});

@@ -11,6 +11,7 @@
 #include "app/gui/appearance.hpp"
 #include "app/gui/compare.hpp"
 #include "app/gui/panels/axis_inputs.hpp"
+#include "app/gui/panels/compare_table.hpp"
 #include "app/gui/panels/widgets.hpp"
 #include "core/model/solver.hpp"
 
@@ -183,15 +184,14 @@ void SweepPanel::draw(Document& document) {
   if (overlay && ImGui::CollapsingHeader("Paper vs model (table)")) {
     draw_comparison(current);
   }
-  // With B pinned, one line names A's and B's colours for the three plots: a legend under each
-  // would take the short plots' height.
+  // With B pinned, a line each names A's and B's colours for the three plots (a legend under
+  // each would take the plots' height), wrapped rather than cut in a narrow panel; where the
+  // paper's points need a legend, "A" and "B" stand for those names.
   const SweepCurves* b = compare_computed_ ? &compare_curves_ : nullptr;
-  const std::string a_legend = b ? "A: " + fabric_label(document) : std::string("model");
-  const std::string b_legend = b ? "B: " + document.compare.b().name : std::string();
+  const std::string a_legend = b ? "A" : "model";
+  const std::string b_legend = "B";
   if (b != nullptr) {
-    ImGui::TextColored(kSweepCurve, "%s", a_legend.c_str());
-    same_line_if_fits(ImGui::CalcTextSize(b_legend.c_str()).x);
-    ImGui::TextColored(kCompareB, "%s", b_legend.c_str());
+    draw_compare_names(document);
   }
   // Each plot keeps room for its ticks, its title and a few lines of data at any UI scale: a
   // short panel scrolls rather than squeeze a plot under its own labels.
