@@ -219,6 +219,13 @@ class ExplorerTest : public foldlab::testing::TempDirTest {
     return true;
   }
 
+  // Whether `text` holds `wanted`, spaces aside (a glyph run's gaps read as spaces or not).
+  static bool shows(std::string text, std::string wanted) {
+    std::erase(text, ' ');
+    std::erase(wanted, ' ');
+    return text.find(wanted) != std::string::npos;
+  }
+
   // Text without its spaces and line breaks: a wrapped sentence reads as one.
   static std::string squeezed(std::string text) {
     std::erase_if(text, [](char c) { return c == ' ' || c == '\n'; });
@@ -512,8 +519,15 @@ TEST_F(ExplorerTest, AnalysisPanelsSweepThePapersInputsByKey) {
   text = frame();
   EXPECT_TRUE(only_beside_w_slider(text, "N/mm²")) << text;
   EXPECT_TRUE(w_in_e_notation_only_beside_its_slider(text)) << text;
-  EXPECT_NE(text.find("50.97"), std::string::npos) << "the range's first field\n" << text;
-  EXPECT_NE(text.find("815.5"), std::string::npos) << "the range's second field\n" << text;
+  EXPECT_NE(text.find("50.97 g/m²"), std::string::npos) << "the range's first field\n" << text;
+  EXPECT_NE(text.find("815.5 g/m²"), std::string::npos) << "the range's second field\n" << text;
+  // The row wraps in the panel rather than push "log" and "steps" past its edge.
+  const PanelRect analysis = rect_of("analysis");
+  for (const char* label : {"log", "steps"}) {
+    EXPECT_LE(position_of(label).x + ImGui::CalcTextSize(label).x,
+              analysis.pos.x + analysis.size.x - ImGui::GetStyle().ScrollbarSize)
+        << label;
+  }
   const PlotView& sweep_view = explorer_->analysis().sweep().plot_view(0);
   EXPECT_LE(sweep_view.x_lo, 50.97);
   EXPECT_GE(sweep_view.x_hi, 815.5);
@@ -958,6 +972,27 @@ TEST_F(ExplorerTest, ThePlayButtonSweepsOneInputAndPauseLeavesItAsOneUndoStep) {
   EXPECT_EQ(document().undo_depth(), 1u);
   press('Z', true);
   EXPECT_EQ(height_mm(), 1400.0);
+
+  // The range fields show their unit; a typed "to" narrows the next play to 100..1500 mm.
+  EXPECT_TRUE(shows(frame(), "100 mm to 5000 mm")) << last_text_;
+  ASSERT_EQ(play(*explorer_,
+                 {{"steps",
+                   {{{"click", "5000 mm"}},
+                    {{"key", "ctrl+a"}},
+                    {{"type", "1500"}},
+                    {{"key", "enter"}},
+                    {{"frames", 2}},
+                    {{"click", "play"}}}}},
+                 [&] { frame(); }),
+            0);
+  EXPECT_TRUE(shows(frame(), "100 mm to 1500 mm")) << last_text_;
+  double highest = 0.0;
+  for (int i = 0; i < 300; ++i) {  // 1400 to 1500 mm and down to 100 mm again
+    frame();
+    highest = std::max(highest, height_mm());
+  }
+  EXPECT_NEAR(highest, 1500.0, 1400.0 / 240.0 + 1e-6);
+  EXPECT_LE(highest, 1500.0);
 }
 
 // The introduction for a class: from the menu bar or the View menu, closed by Escape or Close.
@@ -966,6 +1001,16 @@ TEST_F(ExplorerTest, TheIntroductionOpensFromTheMenuAndClosesWithEscapeOrClose) 
   click(IntroWindow::kTitle);
   EXPECT_TRUE(explorer_->intro().is_open());
   EXPECT_NE(last_text_.find("A cloth hangs"), std::string::npos) << last_text_;
+  // What it says of the folds is what the model draws: going up (i = 0 is the lowest fold line,
+  // eq. 6), each arch's depth a_i is the one below's over Q.
+  EXPECT_NE(squeezed(last_text_).find("eacharchisshallowerthantheonebelowitbythesameratioQ"),
+            std::string::npos)
+      << last_text_;
+  const Solution& s = explorer_->scene().solution();
+  ASSERT_GE(s.a_mm.size(), 3u);
+  for (std::size_t i = 0; i + 1 < s.a_mm.size(); ++i) {
+    EXPECT_NEAR(s.a_mm[i] / s.a_mm[i + 1], s.Q, 1e-9 * s.Q) << i;
+  }
   press(kEscape);
   EXPECT_FALSE(explorer_->intro().is_open());
   EXPECT_EQ(frame().find("A cloth hangs"), std::string::npos);
@@ -1299,6 +1344,42 @@ TEST(SliderHandle, IsNarrowerThanACharacter) {
 
 // The paper's symbols where the font has them, their ASCII names where it has not (the built-in
 // font of the headless tests): ν on its slider and in K's name, λ in the results.
+// The Results panel's model line once read "p = 0." / "5216" at 150 %: ImGui wraps after a '.'.
+TEST_F(ExplorerTest, WrappedTextBreaksOnlyAtSpacesSoNoNumberIsCutInTwo) {
+  frame();
+  const std::string text =
+      "model: calibrated on Conci's Tables 1–2 (K = 1.686, p = 0.5216, 6 rows, exact method)";
+  int wraps = 0;
+  for (float width = 40.0f; width <= 700.0f; width += 1.0f) {
+    const std::string wrapped = wrap_at_spaces(text, width);
+    std::string joined = wrapped;
+    std::replace(joined.begin(), joined.end(), '\n', ' ');
+    ASSERT_EQ(joined, text) << "a break other than at a space, at " << width << " px";
+    std::size_t start = 0;
+    for (std::size_t end = wrapped.find('\n'); start <= wrapped.size();
+         end = wrapped.find('\n', start)) {
+      const std::string line = wrapped.substr(start, end == std::string::npos ? end : end - start);
+      if (line.find(' ') != std::string::npos) {  // a lone word may be wider than the line
+        EXPECT_LE(ImGui::CalcTextSize(line.c_str()).x, width) << line;
+      }
+      // Greedy: the next line's first word did not fit after this one.
+      if (end != std::string::npos) {
+        const std::size_t next_space = wrapped.find_first_of(" \n", end + 1);
+        const std::string next_word = wrapped.substr(end + 1, next_space - end - 1);
+        EXPECT_GT(ImGui::CalcTextSize((line + " " + next_word).c_str()).x, width) << line;
+        ++wraps;
+      }
+      if (end == std::string::npos) {
+        break;
+      }
+      start = end + 1;
+    }
+  }
+  EXPECT_GT(wraps, 100);
+  // Lines begin with their own spaces (the Equations tab indents its "= value" lines).
+  EXPECT_EQ(wrap_at_spaces("  = 0.0012247\n  = 1.5", 1000.0f), "  = 0.0012247\n  = 1.5");
+}
+
 TEST_F(ExplorerTest, GreekShowsWithDejaVuAndSpeltOutWithTheBuiltInFont) {
   document().expert_mode = true;
   frame();
@@ -2402,11 +2483,6 @@ namespace {
 // z_max carry the range of the stored calibration, and the printed form carries none.
 TEST_F(ExplorerTest, ResultsShowTheRangeTheCalibrationAllows) {
   // The proportional font's gaps do not tell spaces apart: compare without them.
-  auto shows = [](std::string text, std::string wanted) {
-    std::erase(text, ' ');
-    std::erase(wanted, ' ');
-    return text.find(wanted) != std::string::npos;
-  };
   open_explorer("equations", kDejaVuSans);
   EXPECT_FALSE(shows(frame(), "(7–7)")) << "the paper's preset has no range";
   explorer_->load_preset_file(kPresetsDir / "default.json");
@@ -2578,11 +2654,6 @@ TEST_F(ExplorerTest, EveryPanelHasADistinctNameAndTheReportNamesComeFromTheList)
 // drag, as a designer would; every number B shows is checked against a direct solve of B's
 // parameters, and B − A against two independent solves.
 TEST_F(ExplorerTest, PinnedBKeepsItsNumbersWhileADragChangesAAndTheTableShowsBMinusA) {
-  const auto shows = [](std::string text, std::string wanted) {
-    std::erase(text, ' ');
-    std::erase(wanted, ' ');
-    return text.find(wanted) != std::string::npos;
-  };
   open_explorer("equations", kDejaVuSans);
   explorer_->load_preset_file(kPresetsDir / "default.json");  // calibrated: intervals shown
   frame();

@@ -8,6 +8,7 @@
 #include <cfloat>
 #include <cmath>
 #include <cstdint>
+#include <cstdlib>
 #include <functional>
 #include <limits>
 #include <optional>
@@ -136,6 +137,23 @@ TEST(PlotTicks, FittedTicksAreRoundAndTheirLabelsNeverOverlap) {
   // 40 px a decade: 100 to 200 is 12 px, so decades only ("1000" to "10000" needs 37.5 px).
   EXPECT_EQ(fitted_ticks(100, 10000, true, 80, seven_px, 6, 12).values,
             (std::vector<double>{100, 1000, 10000}));
+  // Every label reads back as its tick, a lone one too: a Q axis over 1.23..1.6 a few lines high
+  // once labelled its only tick, 1.4, "1" (read as Q = 1 by a class).
+  const auto line_px = [](const std::string&) { return 14.0f; };
+  int lone = 0;
+  for (const auto& [lo, hi] : {std::pair{1.23, 1.6}, std::pair{0.011, 0.0165},
+                               std::pair{1210.0, 1480.0}, std::pair{-2.6, -1.3}}) {
+    for (double length_px = 8; length_px <= 200; length_px += 1) {
+      t = fitted_ticks(lo, hi, false, length_px, line_px, 4, 12);
+      lone += t.values.size() == 1 ? 1 : 0;
+      for (std::size_t i = 0; i < t.values.size(); ++i) {
+        EXPECT_NEAR(std::strtod(t.labels[i].c_str(), nullptr), t.values[i],
+                    1e-9 * std::abs(t.values[i]))
+            << t.labels[i] << " over " << lo << ".." << hi << " in " << length_px << " px";
+      }
+    }
+  }
+  EXPECT_GT(lone, 10) << "short axes show one tick";
 }
 
 // --- the widget, headless ---------------------------------------------------------------------

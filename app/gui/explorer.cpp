@@ -41,7 +41,7 @@ Explorer::Explorer(const Preset& initial, const std::string& initial_path, bool 
     calibration_->open_button(document_.scene().parameters());
     if (!appearance_.notice().empty()) {
       ImGui::PushStyleColor(ImGuiCol_Text, kNoteText);
-      ImGui::TextWrapped("%s", appearance_.notice().c_str());
+      wrapped_text("%s", appearance_.notice().c_str());
       ImGui::PopStyleColor();
     }
   });

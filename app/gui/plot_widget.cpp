@@ -261,7 +261,20 @@ double tick_step(const std::vector<double>& ticks, std::size_t i) {
     step = std::min(step, ticks[i] - ticks[i - 1]);
   if (i + 1 < ticks.size())
     step = std::min(step, ticks[i + 1] - ticks[i]);
-  return std::isfinite(step) ? step : std::abs(ticks[i]);
+  if (std::isfinite(step))
+    return step;
+  // A lone tick has no neighbour to give its precision: the largest power of ten it is a whole
+  // multiple of, so that 1.4 reads "1.4" and not "1".
+  const double value = std::abs(ticks[i]);
+  if (!(value > 0) || !std::isfinite(value))
+    return 1.0;
+  for (double power = std::pow(10.0, std::floor(std::log10(value))); power > value * 1e-12;
+       power /= 10.0) {
+    const double multiple = value / power;
+    if (std::abs(multiple - std::round(multiple)) < 1e-9 * multiple)
+      return power;
+  }
+  return value;
 }
 
 void axis_ticks(double t0, double t1, bool log, int target, std::vector<double>& out) {

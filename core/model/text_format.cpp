@@ -4,16 +4,21 @@
 
 namespace foldlab::detail {
 
-std::string printf_string(const char* format, ...) {
-  std::va_list args;
-  va_start(args, format);
+std::string vprintf_string(const char* format, std::va_list args) {
   std::va_list again;
   va_copy(again, args);
   const int size = std::vsnprintf(nullptr, 0, format, args);
-  va_end(args);
   std::string out(static_cast<std::size_t>(std::max(0, size)), '\0');
   std::vsnprintf(out.data(), out.size() + 1, format, again);
   va_end(again);
+  return out;
+}
+
+std::string printf_string(const char* format, ...) {
+  std::va_list args;
+  va_start(args, format);
+  std::string out = vprintf_string(format, args);
+  va_end(args);
   return out;
 }
 

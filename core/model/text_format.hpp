@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cstdarg>
 #include <cstdio>
 #include <stdexcept>
 #include <string>
@@ -17,6 +18,8 @@ namespace foldlab::detail {
 // template so that the format attribute lets -Wformat check every call's arguments against its
 // format, as it checks printf's.
 [[gnu::format(printf, 1, 2)]] std::string printf_string(const char* format, ...);
+// The same from a va_list, for other checked printf-style helpers; `args` is used up.
+[[gnu::format(printf, 1, 0)]] std::string vprintf_string(const char* format, std::va_list args);
 
 // The shortest text that reads back as exactly this double (5.0000001 stays 5.0000001).
 inline std::string shortest_number(double value) {

@@ -73,14 +73,14 @@ void EquationsTab::draw(Document& document) {
   const Parameters& p = document.scene().parameters();
   const double K = stiffness_constant_K(p);
   const double t = p.fabric.thickness_mm;
-  ImGui::TextWrapped("The model with today's numbers (mm, MPa, N/mm²).");
+  wrapped_text("The model with today's numbers (mm, MPa, N/mm²).");
   const WrinkleLaw& law = wrinkle_law(p.model.law);
   const bool even = s.count_rule && s.count_rule->spacing == FoldSpacing::even;
   section(even ? readable("Cerda-Mahadevan: the wrinkle wavelength λ").c_str()
                : "eq. 7: critical stress gives Q7");
-  ImGui::TextWrapped("s = K E t³ / (w h l²) = %.4g × %.4g × %.4g³ / (%.3g × %.4g × %.5g²)", K,
-                     p.fabric.youngs_modulus_MPa, t, p.fabric.weight_N_per_mm2, p.hanging.height_mm,
-                     s.span_mm);
+  wrapped_text("s = K E t³ / (w h l²) = %.4g × %.4g × %.4g³ / (%.3g × %.4g × %.5g²)", K,
+               p.fabric.youngs_modulus_MPa, t, p.fabric.weight_N_per_mm2, p.hanging.height_mm,
+               s.span_mm);
   ImGui::Text("  = %.5g", s.stress_ratio);
   // A calibrated eq. 7 uses s^p (p = 1 is the paper's form).
   const double exponent = p.model.stress_exponent_p;
@@ -90,7 +90,7 @@ void EquationsTab::draw(Document& document) {
                        exponent, s_used);
   }
   if (even) {
-    ImGui::TextWrapped(
+    wrapped_text(
         "%s",
         readable(detail::printf_string(
                      "λ = l (%s)^(1/4) = %.5g × %.5g^(1/4) = %.2f mm: n counts the folds that fit "
@@ -106,7 +106,7 @@ void EquationsTab::draw(Document& document) {
   }
   if (s.a_mm.empty()) {
     ImGui::Separator();
-    ImGui::TextWrapped("%s", describe(s, p).c_str());
+    wrapped_text("%s", describe(s, p).c_str());
     return;
   }
   const double a0 = s.a_mm.front();
@@ -126,11 +126,11 @@ void EquationsTab::draw(Document& document) {
   if (s.count_rule) {
     const double argument = s.count_rule->argument(a0, an);
     if (even) {
-      ImGui::TextWrapped("n = %s = Int[(%.1f - %.2f) / %.2f]",
-                         std::string(law.count_formula()).c_str(), a0, an, s.count_rule->step);
+      wrapped_text("n = %s = Int[(%.1f - %.2f) / %.2f]", std::string(law.count_formula()).c_str(),
+                   a0, an, s.count_rule->step);
     } else {
-      ImGui::TextWrapped("n = %s = Int[log(%.1f/%.2f) / log %.4f]",
-                         std::string(law.count_formula()).c_str(), a0, an, *s.Q7);
+      wrapped_text("n = %s = Int[log(%.1f/%.2f) / log %.4f]",
+                   std::string(law.count_formula()).c_str(), a0, an, *s.Q7);
     }
     ImGui::Text("  = Int[%.3f] = %d   (Int = %s)", argument, s.n,
                 std::string(to_string(p.model.int_rounding)).c_str());

@@ -78,15 +78,31 @@ void default_range(const std::string& key, double current, double& from, double&
   }
 }
 
+namespace {
+
+constexpr float kRangeFieldEms = 6.5f;
+
+}  // namespace
+
+float range_inputs_width() {
+  return 2.0f * ems(kRangeFieldEms) + ImGui::CalcTextSize("to").x +
+         2.0f * ImGui::GetStyle().ItemSpacing.x;
+}
+
 bool range_inputs(const char* id, const std::string& key, double& from, double& to) {
   ImGui::PushID(id);
   bool changed = false;
+  // Each value with its unit ("500 mm"); a number typed alone is read in that unit.
+  const InputSpec* spec = find_input(key);
+  const std::string unit = spec != nullptr ? std::string(shown_unit(*spec).symbol) : "";
+  const std::string format = "%.4g" + (unit.empty() ? "" : " " + readable(unit));
   // Only a value typed and entered goes back to the stored unit, so that showing the range
   // never moves it by a rounding.
   const auto field = [&](const char* label, double& stored) {
     double shown = to_shown(key, stored);
-    ImGui::SetNextItemWidth(ems(6.5f));
-    if (ImGui::InputDouble(label, &shown, 0.0, 0.0, "%.4g", ImGuiInputTextFlags_EnterReturnsTrue)) {
+    ImGui::SetNextItemWidth(ems(kRangeFieldEms));
+    if (ImGui::InputDouble(label, &shown, 0.0, 0.0, format.c_str(),
+                           ImGuiInputTextFlags_EnterReturnsTrue)) {
       stored = from_shown(key, shown);
       changed = true;
     }

@@ -19,8 +19,10 @@ std::string shown_value(const std::string& key, double stored);
 bool key_combo(const char* label, std::string& key);
 // A range for a key around the current value: a decade each way on log scales, x0.3..x3 else.
 void default_range(const std::string& key, double current, double& from, double& to);
-// "from ... to ..." inputs for `key`'s stored range, shown and typed in its slider's unit and
-// applied on Enter; true when one was applied.
+// "from ... to ..." inputs for `key`'s stored range, shown with and typed in its slider's unit
+// and applied on Enter; true when one was applied.
 bool range_inputs(const char* id, const std::string& key, double& from, double& to);
+// The width range_inputs takes on one line.
+float range_inputs_width();
 
 }  // namespace foldlab::gui

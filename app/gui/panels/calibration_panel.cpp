@@ -202,10 +202,10 @@ void CalibrationPanel::draw(PanelContext& context) {
     section("The model's constants");
     ImGui::TextColored(kDimText, "now:");
     ImGui::SameLine();
-    ImGui::TextWrapped("%s", describe_model_form(edited).c_str());
+    wrapped_text("%s", describe_model_form(edited).c_str());
     ImGui::TextColored(kDimText, "preset \"%s\" carries:", loaded.name.c_str());
     ImGui::SameLine();
-    ImGui::TextWrapped("%s", describe_model_form(loaded.parameters).c_str());
+    wrapped_text("%s", describe_model_form(loaded.parameters).c_str());
 
     section("Measurements");
     if (!data_ && !data_message_is_error_ && data_message_.empty() && data_path_[0] != '\0') {
@@ -221,7 +221,7 @@ void CalibrationPanel::draw(PanelContext& context) {
     }
     if (!data_message_.empty()) {
       ImGui::PushStyleColor(ImGuiCol_Text, data_message_is_error_ ? kErrorText : kDimText);
-      ImGui::TextWrapped("%s", data_message_.c_str());
+      wrapped_text("%s", data_message_.c_str());
       ImGui::PopStyleColor();
     }
 
@@ -255,7 +255,7 @@ void CalibrationPanel::draw(PanelContext& context) {
     }
     if (!run_message_.empty()) {
       ImGui::PushStyleColor(ImGuiCol_Text, run_message_is_error_ ? kErrorText : kNoteText);
-      ImGui::TextWrapped("%s", run_message_.c_str());
+      wrapped_text("%s", run_message_.c_str());
       ImGui::PopStyleColor();
     }
     if (report_) {
@@ -289,7 +289,7 @@ void CalibrationPanel::results_section() {
               std::string(to_string(r.base.model.method)).c_str(), f.K, f.p,
               with_constants(r.base, f.K, f.p).model.load_constant_c, r.base.fabric.poisson_ratio);
   const std::string K_high = std::isinf(f.K_high) ? "inf" : printf_string("%.4g", f.K_high);
-  ImGui::TextWrapped(
+  wrapped_text(
       "The score stays the same for K in [%.4g, %s) at this p, and for p in [%.4g, %.4g] at this "
       "K: n misses %d (by more than one %d), mean capped error %.1f %%.",
       f.K_low, K_high.c_str(), f.p_low, f.p_high, f.score.n_missed,

@@ -314,7 +314,7 @@ void ClothViewPanel::draw(PanelContext& context) {
   }
   if (!photo_problem_.empty() && style_.print == ClothStyle::Print::photo) {
     ImGui::PushStyleColor(ImGuiCol_Text, kErrorText);
-    ImGui::TextWrapped("%s", photo_problem_.c_str());
+    wrapped_text("%s", photo_problem_.c_str());
     ImGui::PopStyleColor();
   }
   // The view follows the theme: a light page gets a light backdrop.

@@ -35,7 +35,7 @@ void draw_compare_names(Document& document) {
   for (const auto& [colour, label] : {std::pair{&kSweepCurve, "A: " + fabric_label(document)},
                                       std::pair{&kCompareB, "B: " + document.compare.b().name}}) {
     ImGui::PushStyleColor(ImGuiCol_Text, static_cast<ImVec4>(*colour));
-    ImGui::TextWrapped("%s", label.c_str());
+    wrapped_text("%s", label.c_str());
     ImGui::PopStyleColor();
   }
 }
@@ -132,8 +132,8 @@ void draw_compare_section(Document& document, const ModelStanding& standing_a) {
   }
   if (a.regime != Regime::wrinkled || b.regime != Regime::wrinkled) {
     ImGui::PushStyleColor(ImGuiCol_Text, kNoteText);
-    ImGui::TextWrapped("regimes: A %s, B %s", std::string(to_string(a.regime)).c_str(),
-                       std::string(to_string(b.regime)).c_str());
+    wrapped_text("regimes: A %s, B %s", std::string(to_string(a.regime)).c_str(),
+                 std::string(to_string(b.regime)).c_str());
     ImGui::PopStyleColor();
   }
   ImGui::Separator();

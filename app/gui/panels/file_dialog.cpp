@@ -246,7 +246,7 @@ void FileDialog::draw(Document& document) {
   const bool cancel = ImGui::Button("Cancel") || escape;
   if (!problem_.empty()) {
     ImGui::PushStyleColor(ImGuiCol_Text, kErrorText);
-    ImGui::TextWrapped("%s", problem_.c_str());
+    wrapped_text("%s", problem_.c_str());
     ImGui::PopStyleColor();
   }
   if (cancel) {

@@ -18,10 +18,12 @@ constexpr const char* kParagraphs[] = {
     "as its starting point. Wherever the cloth would be squeezed, it wrinkles instead, and the "
     "compressive stress is released; what is left carrying the load are tension rays, taut lines "
     "running from support to support. The folds lie along those lines.",
-    "So the slack region folds into n wrinkles, deepest at the top and dying out towards the "
-    "bottom, each fold line a cosine arch between the supports and each one smaller than the one "
-    "above by the same ratio Q. The model predicts how many folds there are (n), that ratio, and "
-    "how far they stand out of the plane (z_max) from six numbers: the thickness t, the stiffness "
+    "So the slack region folds into n wrinkles. Each fold line is a cosine arch hanging between "
+    "the supports, and going up each arch is shallower than the one below it by the same ratio Q, "
+    "so the folds crowd together towards the upper edge. Neighbouring folds stand out of the "
+    "plane to either side, each by up to z_max at its middle. The model predicts how many folds "
+    "there are (n), that ratio, and how far they stand out of the plane (z_max) from six "
+    "numbers: the thickness t, the stiffness "
     "E and the weight w of the fabric, its height h and width L, and the support displacement d. "
     "A thicker, stiffer fabric makes fewer, larger folds; a heavier or taller one makes more.",
     "Two conditions close the model: the upper edge and the vertical fibre down the middle keep "

@@ -109,7 +109,7 @@ void MethodPanel::draw(Document& document) {
   }
   recompute(current);
   if (trace_.iterates.empty()) {
-    ImGui::TextWrapped("No iteration: %s", describe(trace_.solution, computed_for_).c_str());
+    wrapped_text("No iteration: %s", describe(trace_.solution, computed_for_).c_str());
     return;
   }
   draw_controls();
@@ -216,7 +216,7 @@ namespace {
 // A coloured line that wraps in a narrow panel instead of running past its edge.
 void wrapped(const ImVec4& colour, const std::string& text) {
   ImGui::PushStyleColor(ImGuiCol_Text, colour);
-  ImGui::TextWrapped("%s", text.c_str());
+  wrapped_text("%s", text.c_str());
   ImGui::PopStyleColor();
 }
 
@@ -243,7 +243,7 @@ void MethodPanel::draw_change() const {
                            s.sag_amplitude_mm, all[static_cast<std::size_t>(shown_ - 2)].z_max_mm,
                            it.a_n_mm, it.count_argument, it.n);
     }
-    ImGui::TextWrapped("%s", text.c_str());
+    wrapped_text("%s", text.c_str());
     const double miss_percent = 100.0 * std::abs(it.length_ratio - 1.0);
     const double tolerance_percent = 100.0 * computed_for_.model.length_tolerance;
     if (miss_percent <= tolerance_percent) {
@@ -259,11 +259,10 @@ void MethodPanel::draw_change() const {
     }
     return;
   }
-  ImGui::TextWrapped("%sn = %d: %s = Int[%.3f] = %d is the next n.",
-                     shown_ == 1 && s.count_rule ? "Start at the paper's a_0/a_n = 101. " : "",
-                     it.n,
-                     std::string(wrinkle_law(computed_for_.model.law).count_formula()).c_str(),
-                     it.count_argument, it.next_n);
+  wrapped_text("%sn = %d: %s = Int[%.3f] = %d is the next n.",
+               shown_ == 1 && s.count_rule ? "Start at the paper's a_0/a_n = 101. " : "", it.n,
+               std::string(wrinkle_law(computed_for_.model.law).count_formula()).c_str(),
+               it.count_argument, it.next_n);
   if (!last) {
     wrapped(kNoteText, printf_string("n %d → %d: iterate again.", it.n, it.next_n));
   } else if (s.n_cycle.empty() && it.next_n == it.n) {

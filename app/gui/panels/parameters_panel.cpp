@@ -10,6 +10,7 @@
 #include <imgui.h>
 #include <imgui_internal.h>
 
+#include "app/gui/panels/axis_inputs.hpp"
 #include "app/gui/panels/widgets.hpp"
 #include "core/analysis/sweep.hpp"
 #include "core/model/settings.hpp"
@@ -258,7 +259,7 @@ void ParametersPanel::play_frame(Document& document) {
 }
 
 void ParametersPanel::animation_row(Document& document,
-                                    const std::vector<const InputSpec*>& sliders, float width) {
+                                    const std::vector<const InputSpec*>& sliders) {
   ImGui::AlignTextToFramePadding();
   ImGui::TextUnformatted("animate");
   ImGui::SameLine();
@@ -309,22 +310,9 @@ void ParametersPanel::animation_row(Document& document,
       "the high end and back while everything re-solves; pause leaves the value where it is. The "
       "animation is one undo step.");
   if (animation_) {
-    const InputSpec& spec = *find_input(animate_key_);
-    const double per_unit = shown_unit(spec).per_unit;
-    const std::string format = std::string(shown_unit(spec).format);
-    double lo = range_lo_ / per_unit;
-    double hi = range_hi_ / per_unit;
-    const float field = std::max(ems(4.5f), 0.25f * width);
-    same_line_if_fits(labelled_width(field, "from"));
-    ImGui::SetNextItemWidth(field);
-    bool changed = ImGui::InputDouble("from", &lo, 0.0, 0.0, format.c_str(),
-                                      ImGuiInputTextFlags_EnterReturnsTrue);
-    same_line_if_fits(labelled_width(field, "to"));
-    ImGui::SetNextItemWidth(field);
-    changed |= ImGui::InputDouble("to", &hi, 0.0, 0.0, format.c_str(),
-                                  ImGuiInputTextFlags_EnterReturnsTrue);
-    if (changed) {
-      animation_->set_range(lo * per_unit, hi * per_unit);
+    same_line_if_fits(range_inputs_width());
+    if (range_inputs("animate range", animate_key_, range_lo_, range_hi_)) {
+      animation_->set_range(range_lo_, range_hi_);
       range_lo_ = animation_->lo();
       range_hi_ = animation_->hi();
     }
@@ -400,7 +388,7 @@ void ParametersPanel::draw(PanelContext& context) {
   } else {
     places_.erase("p");
   }
-  animation_row(document, sliders, width);
+  animation_row(document, sliders);
 
   ImGui::Separator();
   const InputSpec& shape = *find_input("shape");
@@ -436,10 +424,10 @@ void ParametersPanel::draw(PanelContext& context) {
   if (!document.issues().empty()) {
     ImGui::Separator();
     ImGui::PushStyleColor(ImGuiCol_Text, kErrorText);
-    ImGui::TextWrapped("%zu input(s) refused: the views show the last valid state.",
-                       document.issues().size());
+    wrapped_text("%zu input(s) refused: the views show the last valid state.",
+                 document.issues().size());
     for (const ValidationIssue& issue : document.issues()) {
-      ImGui::TextWrapped("%s", issue.message.c_str());
+      wrapped_text("%s", issue.message.c_str());
     }
     ImGui::PopStyleColor();
   }

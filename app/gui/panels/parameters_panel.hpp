@@ -51,7 +51,7 @@ class ParametersPanel : public Panel {
  private:
   void input_slider(Document& document, const InputSpec& spec, float width);
   // The play row: which input, play/pause, and the range it sweeps.
-  void animation_row(Document& document, const std::vector<const InputSpec*>& sliders, float width);
+  void animation_row(Document& document, const std::vector<const InputSpec*>& sliders);
   // While playing: the next frame's value, one open edit for the whole animation.
   void play_frame(Document& document);
 

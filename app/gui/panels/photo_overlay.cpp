@@ -406,8 +406,7 @@ void PhotoOverlay::measurement_window(Document& document, Renderer& renderer) {
     return;
   }
   renderer.fill_window_background();
-  ImGui::TextWrapped("Photo: %s (%d x %d px)", photo_path_.c_str(), photo_->width_px,
-                     photo_->height_px);
+  wrapped_text("Photo: %s (%d x %d px)", photo_path_.c_str(), photo_->width_px, photo_->height_px);
   const Solution& s = document.scene().solution();
   if (supports_.size() == 2) {
     const double distance_px =
@@ -428,11 +427,11 @@ void PhotoOverlay::measurement_window(Document& document, Renderer& renderer) {
     for (double a : measured_->a_mm) {
       depths.push_back(printf_string("%.0f", a));
     }
-    ImGui::TextWrapped("a_i = %s mm", detail::join_comma(depths).c_str());
+    wrapped_text("a_i = %s mm", detail::join_comma(depths).c_str());
     ImGui::TextColored(kDimText, "predicted: n = %d   Q = %.4g", s.n, s.Q);
   } else if (!measure_error_.empty()) {
     ImGui::PushStyleColor(ImGuiCol_Text, kErrorText);
-    ImGui::TextWrapped("%s", measure_error_.c_str());
+    wrapped_text("%s", measure_error_.c_str());
     ImGui::PopStyleColor();
   } else {
     ImGui::TextColored(kDimText, "Click at least two folds (%zu so far).", folds_.size());
@@ -453,12 +452,12 @@ void PhotoOverlay::measurement_window(Document& document, Renderer& renderer) {
   }
   ImGui::EndDisabled();
   ImGui::PushStyleColor(ImGuiCol_Text, kDimText);
-  ImGui::TextWrapped("%d %s in %s", rows_in_file_, rows_in_file_ == 1 ? "row" : "rows",
-                     paths_.measurements_file.string().c_str());
+  wrapped_text("%d %s in %s", rows_in_file_, rows_in_file_ == 1 ? "row" : "rows",
+               paths_.measurements_file.string().c_str());
   ImGui::PopStyleColor();
   if (!rows_message_.empty()) {
     ImGui::PushStyleColor(ImGuiCol_Text, rows_message_is_error_ ? kErrorText : kOkText);
-    ImGui::TextWrapped("%s", rows_message_.c_str());
+    wrapped_text("%s", rows_message_.c_str());
     ImGui::PopStyleColor();
   }
   section("Fit");
@@ -472,7 +471,7 @@ void PhotoOverlay::measurement_window(Document& document, Renderer& renderer) {
   ImGui::EndDisabled();
   if (!fit_message_.empty()) {
     ImGui::PushStyleColor(ImGuiCol_Text, fit_message_is_error_ ? kErrorText : kDimText);
-    ImGui::TextWrapped("%s", fit_message_.c_str());
+    wrapped_text("%s", fit_message_.c_str());
     ImGui::PopStyleColor();
   }
   ImGui::End();

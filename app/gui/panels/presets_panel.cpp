@@ -230,7 +230,7 @@ void PresetsPanel::draw(PanelContext& context) {
   }
   if (!document.message().empty()) {
     ImGui::PushStyleColor(ImGuiCol_Text, message_colour(document.message_kind()));
-    ImGui::TextWrapped("%s", document.message().c_str());
+    wrapped_text("%s", document.message().c_str());
     ImGui::PopStyleColor();
   }
   for (const std::string& notice : notices_) {
@@ -238,7 +238,7 @@ void PresetsPanel::draw(PanelContext& context) {
   }
   for (const std::string& notice : document.notices()) {
     ImGui::PushStyleColor(ImGuiCol_Text, kErrorText);
-    ImGui::TextWrapped("%s", notice.c_str());
+    wrapped_text("%s", notice.c_str());
     ImGui::PopStyleColor();
   }
   if (footer_) {

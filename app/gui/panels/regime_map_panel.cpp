@@ -256,8 +256,8 @@ void RegimeMapPanel::status_line() {
                        ImVec2(-1.0f, 0.0f));
   } else {
     ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyle().Colors[ImGuiCol_TextDisabled]);
-    ImGui::TextWrapped("%d x %d solves in %.0f ms on %u threads; click to move the sliders there",
-                       resolution_, resolution_, last_map_ms_, threads_);
+    wrapped_text("%d x %d solves in %.0f ms on %u threads; click to move the sliders there",
+                 resolution_, resolution_, last_map_ms_, threads_);
     ImGui::PopStyleColor();
   }
 }

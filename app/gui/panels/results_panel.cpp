@@ -119,9 +119,9 @@ void ResultsPanel::draw_table(const std::vector<Row>& rows) const {
     ImGui::TableNextRow();
     ImGui::TableNextColumn();
     if (symbol_column || row.symbol.empty()) {
-      ImGui::TextWrapped("%s", row.name.c_str());
+      wrapped_text("%s", row.name.c_str());
     } else {
-      ImGui::TextWrapped("%s  %s", row.name.c_str(), row.symbol.c_str());
+      wrapped_text("%s  %s", row.name.c_str(), row.symbol.c_str());
     }
     if (symbol_column) {
       ImGui::TableNextColumn();
@@ -151,8 +151,7 @@ void ResultsPanel::draw(PanelContext& context) {
   // window or the expert settings may scroll out of view; here it is always at the top.
   if (const std::optional<std::string> refusal = document.refusal()) {
     ImGui::PushStyleColor(ImGuiCol_Text, kErrorText);
-    ImGui::TextWrapped("Refused, these results are for the last valid inputs: %s",
-                       refusal->c_str());
+    wrapped_text("Refused, these results are for the last valid inputs: %s", refusal->c_str());
     ImGui::PopStyleColor();
   }
   const ModelStanding& model = standing(document);
@@ -162,16 +161,16 @@ void ResultsPanel::draw(PanelContext& context) {
   ImGui::Text("Regime: %s", std::string(to_string(s.regime)).c_str());
   if (const std::string message = describe(s, scene.parameters()); !message.empty()) {
     ImGui::PushStyleColor(ImGuiCol_Text, s.regime == Regime::wrinkled ? kDimText : kNoteText);
-    ImGui::TextWrapped("%s", message.c_str());
+    wrapped_text("%s", message.c_str());
     ImGui::PopStyleColor();
   }
   ImGui::PushStyleColor(ImGuiCol_Text, kDimText);
-  ImGui::TextWrapped("model: %s", model.label.c_str());
+  wrapped_text("model: %s", model.label.c_str());
   ImGui::PopStyleColor();
   if (model.range) {
     ImGui::PushStyleColor(ImGuiCol_Text, kDimText);
-    ImGui::TextWrapped("(brackets: %.0f %% prediction intervals, hover for how often they held)",
-                       100.0 * model.range->level);
+    wrapped_text("(brackets: %.0f %% prediction intervals, hover for how often they held)",
+                 100.0 * model.range->level);
     ImGui::PopStyleColor();
   }
   if (ImGui::IsItemHovered()) {
@@ -180,7 +179,7 @@ void ResultsPanel::draw(PanelContext& context) {
   draw_table(rows(document));
   if (s.n_capped) {
     ImGui::PushStyleColor(ImGuiCol_Text, kNoteText);
-    ImGui::TextWrapped("n is capped: eq. 10 asks for more.");
+    wrapped_text("n is capped: eq. 10 asks for more.");
     ImGui::PopStyleColor();
   }
   if (!s.a_mm.empty() &&

@@ -152,11 +152,12 @@ void SweepPanel::draw(Document& document) {
     default_range(key_, get_number(current, key_), from_, to_);
     clear_overlay();
   }
-  ImGui::SameLine();
+  // A narrow panel wraps the row rather than push "log" and "steps" out of sight.
+  same_line_if_fits(range_inputs_width());
   range_inputs("range", key_, from_, to_);
-  ImGui::SameLine();
+  same_line_if_fits(checkbox_width("log"));
   ImGui::Checkbox("log", &logarithmic_);
-  ImGui::SameLine();
+  same_line_if_fits(labelled_width(ems(6.0f), "steps"));
   ImGui::SetNextItemWidth(ems(6.0f));
   ImGui::SliderInt("steps", &steps_, 10, 1000, "%d", ImGuiSliderFlags_AlwaysClamp);
 

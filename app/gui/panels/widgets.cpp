@@ -2,7 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdarg>
 #include <utility>
+
+#include "core/model/text_format.hpp"
 
 namespace foldlab::gui {
 
@@ -237,6 +240,42 @@ std::string readable(std::string_view utf8) {
     at += length;
   }
   return out;
+}
+
+std::string wrap_at_spaces(std::string_view text, float width_px) {
+  std::string out;
+  std::string line;
+  bool started = false;  // a line may begin with spaces: its empty first words are kept
+  std::size_t at = 0;
+  while (at <= text.size()) {
+    const std::size_t end = std::min(text.find_first_of(" \n", at), text.size());
+    const std::string_view word = text.substr(at, end - at);
+    if (!started) {
+      line = word;
+      started = true;
+    } else if (const std::string longer = line + " " + std::string(word);
+               !word.empty() && ImGui::CalcTextSize(longer.c_str()).x > width_px) {
+      out += line + "\n";
+      line = word;
+    } else {
+      line = longer;
+    }
+    if (end < text.size() && text[end] == '\n') {
+      out += line + "\n";
+      line.clear();
+      started = false;
+    }
+    at = end + 1;
+  }
+  return out + line;
+}
+
+void wrapped_text(const char* format, ...) {
+  std::va_list args;
+  va_start(args, format);
+  const std::string text = detail::vprintf_string(format, args);
+  va_end(args);
+  ImGui::TextUnformatted(wrap_at_spaces(text, ImGui::GetContentRegionAvail().x).c_str());
 }
 
 void help_marker(const char* text) {

@@ -92,6 +92,13 @@ void section(const char* title);
 // which has no Greek, shows "nu" rather than "?". Everything else is kept.
 std::string readable(std::string_view utf8);
 
+// `text` with line breaks put in at spaces only, each line at most `width_px` wide (a word
+// wider than that stays whole on its own line). ImGui's own wrapping also breaks after a '.'
+// or ',', which cuts a number in two ("p = 0." / "5216").
+std::string wrap_at_spaces(std::string_view text, float width_px);
+// ImGui::TextWrapped that wraps at spaces only (see wrap_at_spaces), with a checked format.
+[[gnu::format(printf, 1, 2)]] void wrapped_text(const char* format, ...);
+
 // A "(?)" after the last item that shows `text` when hovered.
 void help_marker(const char* text);
 
