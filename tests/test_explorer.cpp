@@ -1349,8 +1349,15 @@ TEST_F(ExplorerTest, WrappedTextBreaksOnlyAtSpacesSoNoNumberIsCutInTwo) {
   frame();
   const std::string text =
       "model: calibrated on Conci's Tables 1–2 (K = 1.686, p = 0.5216, 6 rows, exact method)";
+  // From the widest word's width on: below it a word is cut, as ImGui cuts it.
+  float widest_word = 0.0f;
+  for (std::size_t at = 0; at < text.size();) {
+    const std::size_t end = std::min(text.find(' ', at), text.size());
+    widest_word = std::max(widest_word, ImGui::CalcTextSize(text.substr(at, end - at).c_str()).x);
+    at = end + 1;
+  }
   int wraps = 0;
-  for (float width = 40.0f; width <= 700.0f; width += 1.0f) {
+  for (float width = std::ceil(widest_word); width <= 700.0f; width += 1.0f) {
     const std::string wrapped = wrap_at_spaces(text, width);
     std::string joined = wrapped;
     std::replace(joined.begin(), joined.end(), '\n', ' ');
@@ -1378,6 +1385,9 @@ TEST_F(ExplorerTest, WrappedTextBreaksOnlyAtSpacesSoNoNumberIsCutInTwo) {
   EXPECT_GT(wraps, 100);
   // Lines begin with their own spaces (the Equations tab indents its "= value" lines).
   EXPECT_EQ(wrap_at_spaces("  = 0.0012247\n  = 1.5", 1000.0f), "  = 0.0012247\n  = 1.5");
+  // A word wider than the line is cut between characters, so that nothing sticks out.
+  const float two_digits = ImGui::CalcTextSize("00").x;
+  EXPECT_EQ(wrap_at_spaces("0123456789", two_digits), "01\n23\n45\n67\n89");
 }
 
 TEST_F(ExplorerTest, GreekShowsWithDejaVuAndSpeltOutWithTheBuiltInFont) {
@@ -2692,7 +2702,7 @@ TEST_F(ExplorerTest, PinnedBKeepsItsNumbersWhileADragChangesAAndTheTableShowsBMi
         std::pair{detail::printf_string("%.4f", s.Q),
                   detail::printf_string("%.4f–%.4f", r.Q_min, r.Q_max)},
         std::pair{detail::printf_string("%.2f mm", s.z_max_mm),
-                  detail::printf_string("%.1f–%.1f", r.z_max_min_mm, r.z_max_max_mm)}};
+                  detail::printf_string("%.1f–%.1f mm", r.z_max_min_mm, r.z_max_max_mm)}};
   };
   const auto a_cells = rows_of(a);
   const auto b_cells = rows_of(b);
@@ -2711,7 +2721,8 @@ TEST_F(ExplorerTest, PinnedBKeepsItsNumbersWhileADragChangesAAndTheTableShowsBMi
   std::string unwrapped = text;
   std::erase(unwrapped, '\n');
   EXPECT_TRUE(shows(unwrapped, "A: " + default_name + " (edited)")) << text;
-  EXPECT_TRUE(shows(unwrapped, "B: " + default_name + "A")) << text;
+  EXPECT_TRUE(shows(unwrapped, "B: " + default_name)) << text;
+  EXPECT_FALSE(shows(unwrapped, "B: " + default_name + " (edited)")) << text;
 
   // Undo moves A back to where B was pinned and leaves B alone.
   press('Z', true);
@@ -2799,6 +2810,10 @@ TEST_F(ExplorerTest, TheThreeDViewDrawsBBesideAOnlyWhilePinned) {
   frame();
   frame();
   EXPECT_TRUE(drawn_in_cloth_view("B: Default: the Table 1 cloth,")) << last_text_;
+  // At the view's foot, below the cloth and its supports.
+  const PanelRect presented = rect_of("cloth");
+  EXPECT_GT(position_of("B: Default: the Table 1 cloth,").y,
+            presented.pos.y + 0.8f * presented.size.y);
   ASSERT_EQ(explorer_->set_view("present", "none"), std::nullopt);
   frame();
   click("Clear B");
@@ -2845,11 +2860,27 @@ TEST_F(ExplorerTest, APlayedScriptPinsSwapsAndClearsB) {
     frame();
   }
   EXPECT_EQ(player.exit_status(), 0) << player.failure() << "\n" << frame();
-  // The swap was one edit of A (clearing B is none): undo gives A the dragged height again.
+  // Each of pin, swap and clear is one undo step that restores A and B together: the first undo
+  // brings B back, the second the fabrics as they were before the swap, the third A before the
+  // drag, the fourth no B.
   EXPECT_FALSE(document().compare.pinned());
   EXPECT_EQ(height_mm(), 1400.0);
   press('Z', true);
-  EXPECT_GT(height_mm(), 1500.0);
+  ASSERT_TRUE(document().compare.pinned());
+  const double dragged = document().compare.b().parameters.hanging.height_mm;
+  EXPECT_GT(dragged, 1500.0);
+  EXPECT_EQ(height_mm(), 1400.0);
+  press('Z', true);
+  EXPECT_EQ(height_mm(), dragged);
+  ASSERT_TRUE(document().compare.pinned());
+  EXPECT_EQ(document().compare.b().parameters.hanging.height_mm, 1400.0) << "B as pinned";
+  press('Z', true);
+  EXPECT_EQ(height_mm(), 1400.0);
+  EXPECT_TRUE(document().compare.pinned());
+  press('Z', true);
+  EXPECT_FALSE(document().compare.pinned());
+  press('Y', true);  // redo
+  EXPECT_TRUE(document().compare.pinned());
 }
 
 TEST_F(ExplorerTest, BIsRestoredWithTheSession) {
@@ -2868,6 +2899,12 @@ TEST_F(ExplorerTest, BIsRestoredWithTheSession) {
   explorer_->save_session_now();
   open_explorer("equations", {}, session, true);
   EXPECT_FALSE(document().compare.pinned());
+}
+
+TEST(Contrast, MenusAndListsAreOpaque) {
+  for (const bool light : {false, true}) {
+    EXPECT_EQ(theme_style(light).Colors[ImGuiCol_PopupBg].w, 1.0f) << (light ? "light" : "dark");
+  }
 }
 
 TEST(Contrast, TheComparedFabricsFoldsAreAnotherHueThanAs) {

@@ -41,6 +41,9 @@ ImGuiStyle theme_style(bool light_theme) {
   // Square, opaque panels whose backgrounds the renderer fills: ImGui draws none of its own.
   style.WindowRounding = 0.0f;
   style.Colors[ImGuiCol_WindowBg].w = 0.0f;
+  // Menus, lists and tooltips hide what is under them: panel text showing through a menu reads
+  // as one of its items.
+  style.Colors[ImGuiCol_PopupBg].w = 1.0f;
   // ImGui's greys for hints and disabled text read at 2.4:1 on the light theme's background.
   style.Colors[ImGuiCol_TextDisabled] = kDimText.get(light_theme);
   style.GrabMinSize = kGrabWidthPx;

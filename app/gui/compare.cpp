@@ -66,7 +66,9 @@ Preset current_fabric(const Document& document) {
 void pin_as_b(Document& document) {
   Preset b = current_fabric(document);
   const std::string label = b.name;
+  document.end_step();  // a drag still open is a step of its own
   document.compare.pin(std::move(b));
+  document.end_step();
   document.session_dirty = true;
   document.notify("Pinned \"" + label + "\" as B; A keeps changing with the sliders.",
                   MessageKind::info);
@@ -78,13 +80,16 @@ void swap_a_and_b(Document& document) {
   }
   const Preset former_b = document.compare.b();
   const Preset former_a = current_fabric(document);
+  document.end_step();
+  // B first, so that the edit of A closes one undo step holding both changes.
+  document.compare.pin(former_a);
   if (const std::optional<std::string> problem =
           document.apply(Edit::replace(former_b.parameters))) {
+    document.compare.pin(former_b);
     document.notify("Not swapped: " + *problem, MessageKind::error);
     return;
   }
   document.compare.name_a(former_b.name, former_b.parameters);
-  document.compare.pin(former_a);
   document.session_dirty = true;
   document.notify("Swapped: A is \"" + former_b.name + "\", B is \"" + former_a.name + "\".",
                   MessageKind::info);
@@ -94,9 +99,11 @@ void clear_b(Document& document) {
   if (!document.compare.pinned()) {
     return;
   }
+  document.end_step();
   document.compare.clear();
+  document.end_step();
   document.session_dirty = true;
-  document.notify("Cleared B.", MessageKind::info);
+  document.notify("Cleared B (Ctrl+Z brings it back).", MessageKind::info);
 }
 
 }  // namespace foldlab::gui

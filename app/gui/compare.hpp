@@ -1,7 +1,7 @@
 // A/B comparison: a fabric pinned as "B" beside the one being edited ("A"). B is a value of its
 // own, not an edit of A: it holds the parameters A had when it was pinned (the last valid ones,
 // with the law and method settings), the calibration record its intervals come from, and a label.
-// Undo and redo move A only. B has a lazy Scene of its own, so a view that does not show B
+// Undo and redo restore B with A. B has a lazy Scene of its own, so a view that does not show B
 // computes nothing for it.
 #pragma once
 
@@ -58,8 +58,8 @@ std::string fabric_label(const Document& document);
 // by fabric_label.
 Preset current_fabric(const Document& document);
 
-// What the buttons and the Compare menu do. Pinning replaces an earlier B. Swapping gives A the
-// parameters of B through Document::apply (one undo step of A; undo does not bring B back) and
+// What the buttons and the Compare menu do, each one undo step (B is part of what undo restores).
+// Pinning replaces an earlier B. Swapping gives A the parameters of B through Document::apply and
 // pins A's former state as B. Each says what it did in the status line.
 void pin_as_b(Document& document);
 void swap_a_and_b(Document& document);

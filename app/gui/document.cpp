@@ -139,12 +139,22 @@ std::optional<std::string> Document::refusal() const {
 }
 
 Document::Snapshot Document::snapshot() const {
-  return Snapshot{loaded_, loaded_path_, edited_};
+  return Snapshot{loaded_, loaded_path_, edited_,
+                  compare.pinned() ? std::optional<Preset>(compare.b()) : std::nullopt};
 }
+
+namespace {
+
+bool same_b(const std::optional<Preset>& a, const std::optional<Preset>& b) {
+  return a.has_value() == b.has_value() &&
+         (!a || (a->name == b->name && a->parameters == b->parameters));
+}
+
+}  // namespace
 
 bool Document::same(const Snapshot& a, const Snapshot& b) {
   return a.edited == b.edited && a.loaded_path == b.loaded_path && a.loaded.name == b.loaded.name &&
-         a.loaded.parameters == b.loaded.parameters;
+         a.loaded.parameters == b.loaded.parameters && same_b(a.compare_b, b.compare_b);
 }
 
 void Document::restore(const Snapshot& s) {
@@ -153,6 +163,13 @@ void Document::restore(const Snapshot& s) {
   loaded_path_ = s.loaded_path;
   edited_ = s.edited;
   commit();
+  if (!same_b(s.compare_b, snapshot().compare_b)) {
+    if (s.compare_b) {
+      compare.pin(*s.compare_b);
+    } else {
+      compare.clear();
+    }
+  }
   if (other_preset) {
     ++loads_;
   }

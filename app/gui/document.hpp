@@ -136,15 +136,18 @@ class Document {
   // Whether the panels show the model's settings as well as the cloth; remembered in the session.
   // A first start shows the cloth alone, for a designer who has not met eq. 7.
   bool expert_mode = false;
-  // The fabric pinned as B beside this one (A). Not part of the undo history: B is no edit of A.
+  // The fabric pinned as B beside this one (A). Pinning, swapping and clearing are undo steps
+  // like an edit of A, so that an undone swap brings back both fabrics.
   Comparison compare;
 
  private:
-  // What an undo step restores: the preset as loaded and the edits over it.
+  // What an undo step restores: the preset as loaded, the edits over it and the fabric pinned
+  // as B.
   struct Snapshot {
     Preset loaded;
     std::string loaded_path;
     Parameters edited;
+    std::optional<Preset> compare_b;
   };
   // Validates edited_ and hands it to the scene when valid.
   void commit();

@@ -366,16 +366,17 @@ void ClothViewPanel::draw(PanelContext& context) {
                 "drag: orbit, right-drag: pan, wheel: zoom", nullptr,
                 static_cast<float>(area.width) - 12.0f);
   if (compare) {
-    // Each half named under the hint, in the colours the plots give A and B. A name that would
-    // wrap past two lines would cover the cloth and its supports: then the letter alone (the
-    // names are in Results).
-    const float foot = origin.y + 8.0f + ImGui::GetTextLineHeightWithSpacing();
+    // Each half named at its foot, in the colours the plots give A and B, below the cloth and its
+    // supports and clear of the hint at the top. A name that would wrap past two lines would
+    // climb over the cloth: then the letter alone (the names are in Results).
     const auto label = [&](ImVec2 at, float width, ImU32 colour, const char* letter,
                            const std::string& name) {
       const std::string full = std::string(letter) + ": " + name;
       const float wrap = width - 12.0f;
-      const bool fits = ImGui::CalcTextSize(full.c_str(), nullptr, false, wrap).y <=
-                        2.0f * ImGui::GetTextLineHeightWithSpacing();
+      const ImVec2 full_size = ImGui::CalcTextSize(full.c_str(), nullptr, false, wrap);
+      const bool fits = full_size.y <= 2.0f * ImGui::GetTextLineHeightWithSpacing();
+      const float text_height = fits ? full_size.y : ImGui::GetTextLineHeight();
+      const float foot = at.y + static_cast<float>(area.height) - text_height - 6.0f;
       draw->AddText(ImGui::GetFont(), ImGui::GetFontSize(), ImVec2(at.x + 6, foot), colour,
                     fits ? full.c_str() : letter, nullptr, wrap);
     };

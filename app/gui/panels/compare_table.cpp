@@ -120,8 +120,9 @@ void draw_compare_section(Document& document, const ModelStanding& standing_a) {
       for (const QuantityText* cell : {&a_text, &b_text}) {
         ImGui::TableNextColumn();
         if (!cell->range.empty()) {
-          // " (lo–hi)" after a value; alone on its row, under the value with the unit, lo–hi.
-          ImGui::TextColored(kDimText, "%s", cell->range.substr(2, cell->range.size() - 3).c_str());
+          // " (lo–hi)" after a value; alone on its row, under the value: "lo–hi mm".
+          ImGui::TextColored(kDimText, "%s",
+                             (cell->range.substr(2, cell->range.size() - 3) + cell->unit).c_str());
         }
       }
     };

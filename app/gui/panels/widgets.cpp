@@ -243,20 +243,42 @@ std::string readable(std::string_view utf8) {
 }
 
 std::string wrap_at_spaces(std::string_view text, float width_px) {
+  const auto width_of = [](std::string_view s) {
+    return ImGui::CalcTextSize(s.data(), s.data() + s.size()).x;
+  };
   std::string out;
   std::string line;
+  // Starts a line with `word`; a word wider than a whole line is cut where it must be, as ImGui
+  // does, between UTF-8 characters.
+  const auto start_line = [&](std::string_view word) {
+    while (width_of(word) > width_px) {
+      std::size_t cut = 0;
+      std::size_t next = 0;
+      do {
+        cut = next;
+        next = cut + 1;
+        while (next < word.size() && (static_cast<unsigned char>(word[next]) & 0xC0) == 0x80) {
+          ++next;
+        }
+      } while (next <= word.size() && width_of(word.substr(0, next)) <= width_px);
+      cut = std::max<std::size_t>(cut, 1);
+      out += std::string(word.substr(0, cut)) + "\n";
+      word.remove_prefix(cut);
+    }
+    line = word;
+  };
   bool started = false;  // a line may begin with spaces: its empty first words are kept
   std::size_t at = 0;
   while (at <= text.size()) {
     const std::size_t end = std::min(text.find_first_of(" \n", at), text.size());
     const std::string_view word = text.substr(at, end - at);
     if (!started) {
-      line = word;
+      start_line(word);
       started = true;
     } else if (const std::string longer = line + " " + std::string(word);
-               !word.empty() && ImGui::CalcTextSize(longer.c_str()).x > width_px) {
+               !word.empty() && width_of(longer) > width_px) {
       out += line + "\n";
-      line = word;
+      start_line(word);
     } else {
       line = longer;
     }
