@@ -1721,6 +1721,15 @@ TEST_F(ExplorerTest, TheSweepShowsAStiffStretchAsABandNotASpike) {
   for (double Q : sweep_panel.curves().Q) {
     EXPECT_TRUE(std::isnan(Q) || Q <= wrinkled_max_Q) << Q;
   }
+  // The three plots share the sweep's x range, so that the current value lines up in all three:
+  // the Q plot, with no Q over the stiff band, once fitted its own. (The z_max plot is below
+  // the panel's fold, not drawn.)
+  for (int which = 0; which < 2; ++which) {
+    EXPECT_LE(sweep_panel.plot_view(which).x_lo, 500.0) << which;
+    EXPECT_GE(sweep_panel.plot_view(which).x_hi, 3000.0) << which;
+    EXPECT_EQ(sweep_panel.plot_view(which).x_lo, sweep_panel.plot_view(0).x_lo) << which;
+    EXPECT_EQ(sweep_panel.plot_view(which).x_hi, sweep_panel.plot_view(0).x_hi) << which;
+  }
 }
 
 // The paper's Table 1 beside the model: the printed n, Q, z_max of each row and the model's at

@@ -454,6 +454,7 @@ bool Plot::begin(const char* id, ImVec2 size, const PlotAxis& x, const PlotAxis&
   series_.clear();
   legend_.clear();
   vlines_.clear();
+  fit_x_.reset();
   legend_text_.clear();
   backdrop_ = nullptr;
 
@@ -709,6 +710,12 @@ void Plot::fit_view_range(Frame& f) const {
     const double tx = to_t(v.x, f.x_log);
     if (std::isfinite(tx))
       bx.add(tx);
+  }
+  if (fit_x_) {
+    for (const double x : {fit_x_->first, fit_x_->second}) {
+      if (const double tx = to_t(x, f.x_log); std::isfinite(tx))
+        bx.add(tx);
+    }
   }
   if (!f.manual_x)
     fit(bx.valid() ? bx : all_x, f.x_log, f.xt0, f.xt1);

@@ -92,6 +92,10 @@ class Plot {
   // A full-height line, e.g. the current value of a sweep; it is included in x autoscale.
   void vertical_line(double x, ImU32 colour, const char* label = nullptr);
 
+  // x autoscale spans at least lo..hi, drawn or not: plots stacked over one axis (a sweep's n, Q
+  // and z_max, Q undefined where n = 1) line up.
+  void fit_x_to(double lo, double hi) { fit_x_ = {lo, hi}; }
+
   // Drawn by end() over the data area's background and under the grid and the series, clipped to
   // the data area, with this frame's view: e.g. a photo that the series are compared with.
   void backdrop(std::function<void(ImDrawList*, const PlotView&)> draw) {
@@ -180,6 +184,7 @@ class Plot {
   std::vector<Series> series_;
   std::vector<LegendEntry> legend_;
   std::vector<VLine> vlines_;
+  std::optional<std::pair<double, double>> fit_x_;
   std::vector<LegendRow> legend_rows_;  // per legend entry, laid out in end()
   float legend_height_ = 0;
   std::function<void(ImDrawList*, const PlotView&)> backdrop_;

@@ -223,6 +223,9 @@ void SweepPanel::draw(Document& document) {
                       PlotAxis{q.label, false, false})) {
       continue;
     }
+    if (!shown_x_.empty()) {
+      q.plot.fit_x_to(shown_x_.front(), shown_x_.back());
+    }
     const char* legend = overlay ? a_legend.c_str() : nullptr;
     const auto curve = [&](const char* name, const std::vector<double>& ys, ImU32 colour) {
       if (q.steps) {
