@@ -2819,6 +2819,15 @@ TEST_F(ExplorerTest, TheThreeDViewDrawsBBesideAOnlyWhilePinned) {
   frame();
   frame();
   EXPECT_TRUE(drawn_in_cloth_view("B: Default: the Table 1 cloth,")) << last_text_;
+  // The read-out over the presented view gives both fabrics' numbers.
+  // (Drawn larger, its glyphs' offsets no longer read as one line: compared squeezed.)
+  const std::string read_out = squeezed(last_text_);
+  EXPECT_NE(read_out.find(detail::printf_string("A:n=%d", explorer_->scene().solution().n)),
+            std::string::npos)
+      << last_text_;
+  EXPECT_NE(read_out.find(detail::printf_string("B:n=%d", document().compare.solution().n)),
+            std::string::npos)
+      << last_text_;
   // At the view's foot, below the cloth and its supports.
   const PanelRect presented = rect_of("cloth");
   EXPECT_GT(position_of("B: Default: the Table 1 cloth,").y,

@@ -418,17 +418,23 @@ void Explorer::present(std::optional<Tile> tile) {
 float Explorer::presentation_bar() {
   const ImVec2 display = ImGui::GetIO().DisplaySize;
   const ImGuiStyle& style = ImGui::GetStyle();
-  const std::string headline = results_->headline(document_);
+  const std::vector<std::pair<std::string, ImVec4>> lines = results_->headlines(document_);
   // As large as the width allows, up to two and a half times the text: it is read from the
   // back of a room (a hair short of the width, so that rounding never wraps it). Too long even at
   // the text's size, it wraps.
   constexpr float kLargestScale = 2.5f;
   const float width = std::floor(display.x);
   const float available = width - 2.0f * style.WindowPadding.x;
-  const float text_width = std::max(ImGui::CalcTextSize(headline.c_str()).x, 1.0f);
+  float text_width = 1.0f;
+  for (const auto& [line, colour] : lines) {
+    text_width = std::max(text_width, ImGui::CalcTextSize(line.c_str()).x);
+  }
   const float scale = std::clamp(0.98f * available / text_width, 1.0f, kLargestScale);
-  const float text_height =
-      scale * ImGui::CalcTextSize(headline.c_str(), nullptr, false, available).y;
+  float text_height = 0.0f;
+  for (const auto& [line, colour] : lines) {
+    text_height += scale * ImGui::CalcTextSize(line.c_str(), nullptr, false, available).y;
+  }
+  text_height += static_cast<float>(lines.size() - 1) * style.ItemSpacing.y;
   const float height = std::floor(text_height + 2.0f * style.WindowPadding.y);
   ImGui::SetNextWindowPos(ImVec2(0.0f, menu_height_), ImGuiCond_Always);
   ImGui::SetNextWindowSize(ImVec2(width, height), ImGuiCond_Always);
@@ -440,7 +446,11 @@ float Explorer::presentation_bar() {
     renderer_.fill_window_background();
     ImGui::SetWindowFontScale(scale);
     ImGui::PushTextWrapPos(0.0f);
-    ImGui::TextUnformatted(headline.c_str());
+    for (const auto& [line, colour] : lines) {
+      ImGui::PushStyleColor(ImGuiCol_Text, colour);
+      ImGui::TextUnformatted(line.c_str());
+      ImGui::PopStyleColor();
+    }
     ImGui::PopTextWrapPos();
     ImGui::SetWindowFontScale(1.0f);
   }

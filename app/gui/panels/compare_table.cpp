@@ -24,6 +24,11 @@ QuantityTexts quantity_texts(const Solution& s, const ModelStanding& standing) {
   return texts;
 }
 
+std::string headline(const QuantityTexts& texts) {
+  return "n = " + texts.n.joined() + "     Q = " + texts.Q.joined() +
+         "     z_max = " + texts.z_max.joined();
+}
+
 QuantityTexts difference_texts(const Solution& a, const Solution& b) {
   return {{detail::printf_string("%+d", b.n - a.n), "", ""},
           {detail::printf_string("%+.4f", b.Q - a.Q), "", ""},

@@ -25,6 +25,10 @@ struct QuantityTexts {
 };
 QuantityTexts quantity_texts(const Solution& s, const ModelStanding& standing);
 
+// "n = 7 (4–10)     Q = 1.2955 (…)     z_max = 48.96 (30.5–78.6) mm": the large read-out over a
+// presented panel.
+std::string headline(const QuantityTexts& texts);
+
 // B − A with units: "+2", "-0.0123", "+1.23 mm" (no range).
 QuantityTexts difference_texts(const Solution& a, const Solution& b);
 

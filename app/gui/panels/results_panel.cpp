@@ -67,15 +67,14 @@ std::vector<ResultsPanel::Row> ResultsPanel::rows(Document& document) {
   return out;
 }
 
-std::string ResultsPanel::headline(Document& document) {
-  const std::vector<Row> all = rows(document);
-  std::string out;
-  for (const Row& row : all) {
-    if (row.symbol == "n" || row.symbol == "Q" || row.symbol == "z_max") {
-      out += (out.empty() ? "" : "     ") + row.symbol + " = " + row.one_line();
-    }
+std::vector<std::pair<std::string, ImVec4>> ResultsPanel::headlines(Document& document) {
+  const std::string a = headline(quantity_texts(document.scene().solution(), standing(document)));
+  if (!document.compare.pinned()) {
+    return {{a, ImGui::GetStyleColorVec4(ImGuiCol_Text)}};
   }
-  return out;
+  Comparison& compare = document.compare;
+  return {{"A: " + a, kSweepCurve},
+          {"B: " + headline(quantity_texts(compare.solution(), compare.standing())), kCompareB}};
 }
 
 // The symbols and values are never cut: their columns are as wide as their widest text, and the

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "app/gui/document.hpp"
@@ -22,9 +23,9 @@ class ResultsPanel : public Panel {
   const char* key() const override { return "results"; }
   std::optional<Tile> tile() const override { return Tile::results; }
   void draw(PanelContext& context) override;
-  // n, Q and z_max with their ranges as the table shows them, on one line: the read-out over a
-  // presented view.
-  std::string headline(Document& document);
+  // n, Q and z_max with their ranges as the table shows them, one line for A and, while B is
+  // pinned, one for B, each with the colour it is drawn in: the read-out over a presented view.
+  std::vector<std::pair<std::string, ImVec4>> headlines(Document& document);
 
  private:
   // One row of the table: the value with its unit, and the range the calibration allows (empty
