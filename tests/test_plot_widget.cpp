@@ -409,6 +409,29 @@ TEST_F(PlotWidget, WheelZoomsAroundTheCursor) {
 // Font 13 px (pad 5): the y title, the x labels and the x title take 18 px each and two lines of
 // data 26 px, 80 px in all. A 90 px plot with a 20 px legend row has 70 px left: no legend, so
 // that it cannot cover the x labels; 120 px keeps it.
+// The Method tab's iterate axis once had ticks at 0.4, 0.6, ... 2.6 iterates.
+TEST_F(PlotWidget, ACountsAxisHasTicksOnWholeNumbersOnly) {
+  const std::vector<double> iterates = {1.0, 2.0};
+  const std::vector<double> ratios = {1.02, 0.999};
+  const auto ticks = [&](bool whole) {
+    frame([&] {
+      ASSERT_TRUE(
+          plot_.begin("plot", ImVec2(600, 300), PlotAxis{"iterate", false, false, whole}, y_axis_));
+      plot_.line("L'/L", iterates, ratios, kColA);
+      plot_.end();
+    });
+    return plot_.x_ticks();
+  };
+  const auto fractional = [](const std::vector<double>& t) {
+    return std::count_if(t.begin(), t.end(),
+                         [](double v) { return std::abs(v - std::round(v)) > 1e-9; });
+  };
+  EXPECT_GT(fractional(ticks(false)), 0) << "a plain axis ticks between 1 and 2";
+  const std::vector<double> whole = ticks(true);
+  EXPECT_EQ(fractional(whole), 0);
+  EXPECT_EQ(whole, (std::vector<double>{1.0, 2.0}));
+}
+
 TEST_F(PlotWidget, APlotTooShortForItsLegendDropsIt) {
   const auto legend_height = [&](float plot_height) {
     frame([&] {

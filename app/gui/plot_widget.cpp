@@ -811,10 +811,19 @@ void Plot::place_ticks(Frame& f) {
   const float plot_h = f.lay.max.y - f.lay.min.y;
   const float gap = f.font * 0.5f;
   const auto line_height = [&f](const std::string&) { return f.font; };
-  y_ticks_ =
+  // A count's ticks between whole numbers (2.5 iterates) mean nothing: the 1-2-5 steps below 1
+  // all divide 1, so dropping them leaves the whole ones.
+  const auto whole_only = [](std::vector<double> ticks, bool whole) {
+    if (whole) {
+      std::erase_if(ticks, [](double t) { return std::abs(t - std::round(t)) > 1e-9; });
+    }
+    return ticks;
+  };
+  y_ticks_ = whole_only(
       fitted_ticks(from_t(f.yt0, f.y_log), from_t(f.yt1, f.y_log), f.y_log, plot_h, line_height,
                    gap, std::clamp(static_cast<int>(plot_h / (f.font * 2.0f)), 2, 12))
-          .values;
+          .values,
+      y_axis_.whole);
   float needed = 0;
   char buf[64];
   for (std::size_t i = 0; i < y_ticks_.size(); ++i) {
@@ -829,10 +838,11 @@ void Plot::place_ticks(Frame& f) {
   const auto text_width = [](const std::string& label) {
     return ImGui::CalcTextSize(label.c_str()).x;
   };
-  x_ticks_ =
+  x_ticks_ = whole_only(
       fitted_ticks(from_t(f.xt0, f.x_log), from_t(f.xt1, f.x_log), f.x_log, plot_w, text_width, gap,
                    std::clamp(static_cast<int>(plot_w / (f.font * 2.5f)), 2, 12))
-          .values;
+          .values,
+      x_axis_.whole);
   f.xm = x_map(f.xt0, f.xt1, f.lay.min, f.lay.max, f.x_log, x_axis_.flipped);
   f.ym = y_map(f.yt0, f.yt1, f.lay.min, f.lay.max, f.y_log, y_axis_.flipped);
 }

@@ -42,6 +42,7 @@ struct PlotAxis {
   std::string label;     // title with its unit, e.g. "x (mm)"; tick labels are plain numbers
   bool flipped = false;  // larger values to the left (x) or downward (y: the paper's figures)
   bool log = false;      // log10 scale; values <= 0 are skipped as if they were NaN
+  bool whole = false;    // a count (iterates, folds): ticks on whole numbers only
 };
 
 enum class MarkerShape { Circle, Square, Diamond, Triangle, Cross, Plus };
@@ -111,6 +112,7 @@ class Plot {
 
   // Valid after end(); the same until the next end().
   const PlotView& view() const { return view_; }
+  const std::vector<double>& x_ticks() const { return x_ticks_; }
 
  private:
   enum class Kind { Line, Steps, Markers };

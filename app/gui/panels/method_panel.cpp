@@ -337,8 +337,8 @@ void MethodPanel::draw_ratio_plot(float height) {
   band_lo_ = {1.0 - tolerance, 1.0 - tolerance};
   band_hi_ = {1.0 + tolerance, 1.0 + tolerance};
   one_y_ = {1.0, 1.0};
-  if (!ratio_plot_.begin("method L ratio", ImVec2(0.0f, height), PlotAxis{"iterate"},
-                         PlotAxis{"L′/L"})) {
+  if (!ratio_plot_.begin("method L ratio", ImVec2(0.0f, height),
+                         PlotAxis{"iterate", false, false, true}, PlotAxis{"L′/L"})) {
     return;
   }
   ratio_plot_.line(nullptr, band_x_, band_lo_, kToleranceBand.u32(), 1.0f);
@@ -386,7 +386,8 @@ void MethodPanel::draw_map_plot(float height) {
   stair_y_.push_back(current.next_n);
   const std::string next_n_axis =
       "next n = " + std::string(wrinkle_law(computed_for_.model.law).count_formula());
-  if (!map_plot_.begin("method map", ImVec2(0.0f, height), PlotAxis{"n"}, PlotAxis{next_n_axis})) {
+  if (!map_plot_.begin("method map", ImVec2(0.0f, height), PlotAxis{"n", false, false, true},
+                       PlotAxis{next_n_axis})) {
     return;
   }
   map_plot_.line(nullptr, map_n_, diagonal_, kGuideLine.u32(), 1.0f);
