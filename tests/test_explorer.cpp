@@ -684,42 +684,33 @@ TEST_F(ExplorerTest, AWeightIsTypedInGramsPerSquareMetreOrOuncesPerSquareYard) {
 // Typing 650 into d solved d = 6 and d = 65 on the way, each an undo step of its own: a typed
 // value is read on Enter or when the field lets go, and Escape drops it.
 TEST_F(ExplorerTest, ATypedValueIsAppliedOnEnterOnlyAsOneStep) {
-  const auto type_into_d = [&](const std::string& typed, const std::string& key) {
-    return play(*explorer_,
-                {{"steps",
-                  {{{"click", "d"}, {"at", 0.5}, {"ctrl", true}},
-                   {{"type", typed}},
-                   {{"expect", {{"parameters.d_mm", 100}}}},
-                   {{"key", key}}}}},
-                [&] { frame(); });
+  // Types into d's field, then ends with `last` (a key or a click); d is unchanged until then.
+  const auto type_into_d = [&](const std::string& typed, const nlohmann::json& last) {
+    return play(
+        *explorer_,
+        {{"steps",
+          {{{"click", "d"}, {"at", 0.5}, {"ctrl", true}},
+           {{"type", typed}},
+           {{"expect", {{"parameters.d_mm", document().edited().hanging.support_displacement_mm}}}},
+           last,
+           {{"frames", 2}}}}},
+        [&] { frame(); });
   };
   const std::uint64_t solves = evaluations(Stage::solution);
-  ASSERT_EQ(type_into_d("650", "enter"), 0);
+  ASSERT_EQ(type_into_d("650", {{"key", "enter"}}), 0);
   EXPECT_EQ(document().edited().hanging.support_displacement_mm, 650.0);
   EXPECT_EQ(evaluations(Stage::solution), solves + 1) << "d = 6 or 65 was solved on the way";
   EXPECT_EQ(document().undo_depth(), 1u);
 
-  ASSERT_EQ(play(*explorer_,
-                 {{"steps",
-                   {{{"click", "d"}, {"at", 0.5}, {"ctrl", true}},
-                    {{"type", "300"}},
-                    {{"key", "escape"}},
-                    {{"frames", 2}},
-                    {{"expect", {{"parameters.d_mm", 650}, {"undo_depth", 1}}}}}}},
-                 [&] { frame(); }),
-            0);
+  ASSERT_EQ(type_into_d("300", {{"key", "escape"}}), 0);
+  EXPECT_EQ(document().edited().hanging.support_displacement_mm, 650.0);
+  EXPECT_EQ(document().undo_depth(), 1u);
   EXPECT_EQ(evaluations(Stage::solution), solves + 1);
 
   // A click elsewhere takes the text cursor: the value typed so far is applied.
-  ASSERT_EQ(play(*explorer_,
-                 {{"steps",
-                   {{{"click", "d"}, {"at", 0.5}, {"ctrl", true}},
-                    {{"type", "250"}},
-                    {{"click", "Results"}},
-                    {{"frames", 2}},
-                    {{"expect", {{"parameters.d_mm", 250}, {"undo_depth", 2}}}}}}},
-                 [&] { frame(); }),
-            0);
+  ASSERT_EQ(type_into_d("250", {{"click", "Results"}}), 0);
+  EXPECT_EQ(document().edited().hanging.support_displacement_mm, 250.0);
+  EXPECT_EQ(document().undo_depth(), 2u);
   EXPECT_EQ(evaluations(Stage::solution), solves + 2);
   press('Z', true);
   EXPECT_EQ(document().edited().hanging.support_displacement_mm, 650.0);
