@@ -2098,6 +2098,31 @@ TEST_F(ExplorerTest, APanelIsPresentedByItsTitleButtonAndEscapeReturnsToTheTiles
   expect_tiles_fill(explorer_->panel_rects(), display, menu_height);
 }
 
+// A drag that missed w's handle and started on the line of text under it carried the whole
+// Parameters panel away from its tile.
+TEST_F(ExplorerTest, APanelMovesByItsTitleOnlyNotByADragInsideIt) {
+  frame();
+  const PanelRect before = rect_of("parameters");
+  const ImVec2 start = position_of("oz/yd²");
+  ImGuiIO& io = ImGui::GetIO();
+  io.MousePos = start;
+  frame();
+  io.MouseDown[0] = true;
+  frame();
+  for (int i = 1; i <= 10; ++i) {
+    io.MousePos =
+        ImVec2(start.x + 10.0f * static_cast<float>(i), start.y + 5.0f * static_cast<float>(i));
+    frame();
+  }
+  io.MouseDown[0] = false;
+  frame();
+  frame();
+  EXPECT_EQ(rect_of("parameters").pos.x, before.pos.x);
+  EXPECT_EQ(rect_of("parameters").pos.y, before.pos.y);
+  EXPECT_TRUE(explorer_->automatic_layout());
+  EXPECT_EQ(document().undo_depth(), 0u) << "nothing changed";
+}
+
 // Dragging the corner shared by the fold plot, the 3D view and the lower panels moves those
 // edges: the neighbours follow, nothing overlaps and no hole opens. "Reset layout" puts the
 // edges back.

@@ -656,6 +656,9 @@ bool Explorer::awaits_time() const {
 }
 
 void Explorer::frame() {
+  // A panel moves by its title bar only: a drag that misses a slider's handle by a few pixels
+  // would otherwise carry the whole panel out of the tiles.
+  ImGui::GetIO().ConfigWindowsMoveFromTitleBarOnly = true;
   export_.new_frame();
   document_.tick(ImGui::GetTime());
   const int scale_before = appearance_.scale_percent();
