@@ -978,10 +978,21 @@ TEST_F(ExplorerTest, ThePlayButtonSweepsOneInputAndPauseLeavesItAsOneUndoStep) {
             0);
   EXPECT_TRUE(shows(frame(), "100 mm to 1500 mm")) << last_text_;
   double highest = 0.0;
-  for (int i = 0; i < 300; ++i) {  // 1400 to 1500 mm and down to 100 mm again
+  // While it plays the views hold their frame: the fold plot's range and the camera's distance
+  // only grow, so the class sees the cloth shrink as h goes down.
+  double y_span = 0.0;
+  float distance = 0.0f;
+  // 1400 to 1500 mm and down towards 100 mm again.
+  for (int i = 0; i < 3000 && !(highest > 1450.0 && height_mm() < 300.0); ++i) {
     frame();
     highest = std::max(highest, height_mm());
+    const PlotView& fold = explorer_->fold_plot().plot_view();
+    EXPECT_GE(fold.y_hi - fold.y_lo, y_span) << "at h = " << height_mm() << " mm";
+    EXPECT_GE(explorer_->cloth_view().camera().distance_mm, distance) << height_mm();
+    y_span = fold.y_hi - fold.y_lo;
+    distance = explorer_->cloth_view().camera().distance_mm;
   }
+  EXPECT_LT(height_mm(), 300.0) << "it came back down";
   EXPECT_NEAR(highest, 1500.0, 1400.0 / 240.0 + 1e-6);
   EXPECT_LE(highest, 1500.0);
 }

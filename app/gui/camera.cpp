@@ -68,6 +68,22 @@ void OrbitCamera::frame(const Eigen::Vector3f& centre, float radius_mm) {
   distance_mm = std::max(radius_mm, 1.0f) / std::sin(0.5f * fov_y_rad) * 1.15f;
 }
 
+void enclose(Eigen::Vector3f& centre, float& radius_mm, const Eigen::Vector3f& other_centre,
+             float other_radius_mm) {
+  const float apart = (other_centre - centre).norm();
+  if (apart + other_radius_mm <= radius_mm) {
+    return;
+  }
+  if (apart + radius_mm <= other_radius_mm) {
+    centre = other_centre;
+    radius_mm = other_radius_mm;
+    return;
+  }
+  const float radius = 0.5f * (apart + radius_mm + other_radius_mm);
+  centre += (other_centre - centre) * ((radius - radius_mm) / apart);
+  radius_mm = radius;
+}
+
 // The grid's bounding box in world coordinates (y up), whatever the shape.
 void cloth_bounds(Scene& scene, Eigen::Vector3f& centre, float& radius_mm) {
   Eigen::Vector3f lo = Eigen::Vector3f::Constant(std::numeric_limits<float>::max());

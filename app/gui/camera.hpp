@@ -27,6 +27,10 @@ struct OrbitCamera {
   void frame(const Eigen::Vector3f& centre, float radius_mm);
 };
 
+// The smallest sphere around both spheres, into `centre` and `radius_mm`.
+void enclose(Eigen::Vector3f& centre, float& radius_mm, const Eigen::Vector3f& other_centre,
+             float other_radius_mm);
+
 // A sphere around the cloth's grid (world coordinates) for framing the camera.
 void cloth_bounds(Scene& scene, Eigen::Vector3f& centre, float& radius_mm);
 

@@ -682,7 +682,7 @@ void Explorer::frame() {
         PanelRect{ImVec2(0.0f, top),
                   ImVec2(std::floor(display.x), std::max(std::floor(display.y - top), 1.0f))};
   }
-  PanelContext context{document_, renderer_, *photo_, files_, wake_};
+  PanelContext context{document_, renderer_, *photo_, files_, wake_, parameters_->animating()};
   for (const std::unique_ptr<Panel>& panel : panels_) {
     const std::optional<Tile> tile = panel->tile();
     if (tile && presented_ && *tile != *presented_) {

@@ -85,6 +85,7 @@ class Explorer {
   const PresetsPanel& presets() const { return *presets_; }
   const ParametersPanel& parameters_panel() const { return *parameters_; }
   const FoldPlotPanel& fold_plot() const { return *fold_plot_; }
+  const ClothViewPanel& cloth_view() const { return *cloth_view_; }
   PhotoOverlay& photo() { return *photo_; }
   const PhotoOverlay& photo() const { return *photo_; }
   // Every panel, in the order they are drawn (the tiled ones first, in the layout's order).

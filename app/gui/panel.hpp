@@ -28,6 +28,9 @@ struct PanelContext {
   FileDialog& files;    // the one open/save dialog, which remembers the folder last used
   // Wakes the frame loop when it sleeps; callable from any thread (a background job's end).
   std::function<void()> wake;
+  // An input is being played: the views keep their frame, growing it but never shrinking it, so
+  // that the cloth is seen to change size.
+  bool holding_frame = false;
 };
 
 class Panel {

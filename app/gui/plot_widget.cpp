@@ -455,6 +455,7 @@ bool Plot::begin(const char* id, ImVec2 size, const PlotAxis& x, const PlotAxis&
   legend_.clear();
   vlines_.clear();
   fit_x_.reset();
+  grow_only_ = false;
   legend_text_.clear();
   backdrop_ = nullptr;
 
@@ -721,6 +722,19 @@ void Plot::fit_view_range(Frame& f) const {
     fit(bx.valid() ? bx : all_x, f.x_log, f.xt0, f.xt1);
   if (!f.manual_y)
     fit(by.valid() ? by : all_y, f.y_log, f.yt0, f.yt1);
+  if (grow_only_ && (flags & kHasRange)) {
+    const auto widen = [](double& t0, double& t1, double lo, double hi, bool log) {
+      const double last0 = to_t(lo, log), last1 = to_t(hi, log);
+      if (std::isfinite(last0) && std::isfinite(last1)) {
+        t0 = std::min(t0, last0);
+        t1 = std::max(t1, last1);
+      }
+    };
+    if (!f.manual_x)
+      widen(f.xt0, f.xt1, view_.x_lo, view_.x_hi, f.x_log);
+    if (!f.manual_y)
+      widen(f.yt0, f.yt1, view_.y_lo, view_.y_hi, f.y_log);
+  }
 }
 
 // The legend: rows under the x title, outside the data area, so that it never hides data.

@@ -96,6 +96,9 @@ class Plot {
   // x autoscale spans at least lo..hi, drawn or not: plots stacked over one axis (a sweep's n, Q
   // and z_max, Q undefined where n = 1) line up.
   void fit_x_to(double lo, double hi) { fit_x_ = {lo, hi}; }
+  // This frame, autoscale only widens the axes it fits (while an input plays: the data's change of
+  // size shows).
+  void grow_only() { grow_only_ = true; }
 
   // Drawn by end() over the data area's background and under the grid and the series, clipped to
   // the data area, with this frame's view: e.g. a photo that the series are compared with.
@@ -187,6 +190,7 @@ class Plot {
   std::vector<LegendEntry> legend_;
   std::vector<VLine> vlines_;
   std::optional<std::pair<double, double>> fit_x_;
+  bool grow_only_ = false;
   std::vector<LegendRow> legend_rows_;  // per legend entry, laid out in end()
   float legend_height_ = 0;
   std::function<void(ImDrawList*, const PlotView&)> backdrop_;

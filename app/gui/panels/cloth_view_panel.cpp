@@ -174,7 +174,7 @@ void ClothViewPanel::settings_row() {
 // Reframes for a new cloth (or on request), keeping the user's direction when only the cloth's
 // size changed. With B pinned the camera frames both cloths, so that the two halves of the view
 // show them at one scale.
-void ClothViewPanel::follow_the_cloth(Document& document, bool reset) {
+void ClothViewPanel::follow_the_cloth(Document& document, bool reset, bool hold) {
   if (reset) {
     camera_user_moved_ = false;
   }
@@ -196,10 +196,14 @@ void ClothViewPanel::follow_the_cloth(Document& document, bool reset) {
       Eigen::Vector3f b_centre;
       float b_radius = 1.0f;
       cloth_bounds(compare.scene(scene.grid_nx()), b_centre, b_radius);
-      const Eigen::Vector3f both = 0.5f * (centre + b_centre);
-      radius = std::max((centre - both).norm() + radius, (b_centre - both).norm() + b_radius);
-      centre = both;
+      enclose(centre, radius, b_centre, b_radius);
     }
+    // While an input plays, the frame only grows: a cloth getting smaller is seen to shrink.
+    if (hold && camera_framed_ && !reset) {
+      enclose(centre, radius, framed_centre_, framed_radius_mm_);
+    }
+    framed_centre_ = centre;
+    framed_radius_mm_ = radius;
     const OrbitCamera previous = camera_;
     camera_.frame(centre, radius);
     if (camera_framed_ && !reset) {
@@ -328,7 +332,7 @@ void ClothViewPanel::draw(PanelContext& context) {
   const FrameSize area{std::max(16, static_cast<int>(available.x)),
                        std::max(16, static_cast<int>(available.y))};
   Scene& scene = document.scene();
-  follow_the_cloth(document, reset);
+  follow_the_cloth(document, reset, context.holding_frame);
   const ImVec2 origin = ImGui::GetCursorScreenPos();
   view_rect_ = PanelRect{
       origin, ImVec2(static_cast<float>(area.width) + bar_width, static_cast<float>(area.height))};

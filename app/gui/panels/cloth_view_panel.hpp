@@ -28,6 +28,7 @@ class ClothViewPanel : public Panel {
 
   static constexpr const char* kBrowseLabel = "browse...";
   ClothStyle& style() { return style_; }
+  const OrbitCamera& camera() const { return camera_; }
   const ClothStyle& style() const { return style_; }
   // A view setting by name (print=checks, print_file=swatch.jpg, print_mm=40, colour_by=z,
   // breeze=1, breeze_mm=80, time=1.5, z=8, wireframe=1, fold_lines=0, ground=0, full=1 for a
@@ -46,11 +47,13 @@ class ClothViewPanel : public Panel {
   std::optional<std::string> load_photo(const std::string& path);
   static float colour_bar_width();
   void draw_colour_bar(ImVec2 min, float height, double z_max_mm) const;
-  void follow_the_cloth(Document& document, bool reset);
+  void follow_the_cloth(Document& document, bool reset, bool hold);
 
   ClothStyle style_;
   OrbitCamera camera_;
   bool camera_framed_ = false;
+  Eigen::Vector3f framed_centre_ = Eigen::Vector3f::Zero();  // the sphere last framed
+  float framed_radius_mm_ = 1.0f;
   bool camera_user_moved_ = false;
   std::uint64_t camera_grid_version_ = 0;
   std::uint64_t camera_loads_ = 0;

@@ -89,6 +89,9 @@ void FoldPlotPanel::draw(PanelContext& context) {
       plot_.request_autoscale();
       autoscale_ = false;
     }
+    if (context.holding_frame) {
+      plot_.grow_only();
+    }
     const FoldColours colours = fold_colours(style_is_light());
     const ImU32 positive_colour = ImGui::ColorConvertFloat4ToU32(colours.positive);
     const ImU32 negative_colour = ImGui::ColorConvertFloat4ToU32(colours.negative);
