@@ -56,7 +56,7 @@ void compare_menu(Document& document) {
   if (ImGui::MenuItem("Clear B", nullptr, false, pinned)) {
     clear_b(document);
   }
-  if (pinned) {
+  if (document.compare.pinned()) {  // not `pinned`: Clear B may have just cleared it
     ImGui::Separator();
     ImGui::TextDisabled("B: %s", document.compare.b().name.c_str());
   }
