@@ -53,6 +53,9 @@ namespace {
 namespace fs = std::filesystem;
 const fs::path kPresetsDir = FOLDLAB_PRESETS_DIR;
 
+// Input playback with the null renderer: the script's frames run in this process.
+int play(Explorer& explorer, const nlohmann::json& script, const std::function<void()>& frame);
+
 class ExplorerTest : public foldlab::testing::TempDirTest {
  protected:
   ExplorerTest() : TempDirTest("foldlab_explorer_") {}
@@ -226,6 +229,21 @@ class ExplorerTest : public foldlab::testing::TempDirTest {
     return text.find(wanted) != std::string::npos;
   }
 
+  // Types `text` into the field that has the keyboard and presses Enter, as a played script; the
+  // script's exit status.
+  int type_and_enter(const std::string& text) {
+    return play(*explorer_, {{"steps", {{{"type", text}}, {{"key", "enter"}}, {{"frames", 2}}}}},
+                [&] { frame(); });
+  }
+
+  // The window resized to `size`, and the frames that refit the panels to it.
+  void show_at(ImVec2 size) {
+    ImGui::GetIO().DisplaySize = size;
+    for (int i = 0; i < 3; ++i) {
+      frame();
+    }
+  }
+
   // Text without its spaces and line breaks: a wrapped sentence reads as one.
   static std::string squeezed(std::string text) {
     std::erase_if(text, [](char c) { return c == ' ' || c == '\n'; });
@@ -350,9 +368,6 @@ class ExplorerTest : public foldlab::testing::TempDirTest {
   NullRenderer renderer_;
   std::unique_ptr<Explorer> explorer_;
 };
-
-// Input playback with the null renderer: the script's frames run in this process.
-int play(Explorer& explorer, const nlohmann::json& script, const std::function<void()>& frame);
 
 TEST_F(ExplorerTest, AFrameShowsTheResultsOfTheLoadedPreset) {
   const std::string text = frame();
@@ -879,11 +894,7 @@ TEST_F(ExplorerTest, APhotoIsChosenInTheOpenDialogOrTypedWithTilde) {
   click("plain");
   click("photo");
   click("swatch PNG");
-  ASSERT_EQ(
-      play(*explorer_,
-           {{"steps", {{{"type", "~/photos/swatch.png"}}, {{"key", "enter"}}, {{"frames", 2}}}}},
-           [&] { frame(); }),
-      0);
+  ASSERT_EQ(type_and_enter("~/photos/swatch.png"), 0);
   ASSERT_NE(explorer_->cloth_style().photo, nullptr);
   EXPECT_EQ(explorer_->cloth_style().photo->width, 2);
 
@@ -914,21 +925,14 @@ TEST_F(ExplorerTest, APhotoIsChosenInTheOpenDialogOrTypedWithTilde) {
   // only "Load" before the dialog opens: the test's font clips the p of its small button.)
   click("Load");
   EXPECT_EQ(document().modal_title(), PhotoOverlay::kLoadModal);
-  ASSERT_EQ(
-      play(*explorer_, {{"steps", {{{"type", "swatch.png"}}, {{"key", "enter"}}, {{"frames", 2}}}}},
-           [&] { frame(); }),
-      0);
+  ASSERT_EQ(type_and_enter("swatch.png"), 0);
   EXPECT_EQ(document().modal_title(), "");
   EXPECT_EQ(fs::path(explorer_->photo().photo_file()),
             fs::weakly_canonical(dir_ / "photos") / "swatch.png");
 
   // Typed with "~/" in the same dialog, from anywhere.
   click("Load");
-  ASSERT_EQ(
-      play(*explorer_,
-           {{"steps", {{{"type", "~/photos/swatch.png"}}, {{"key", "enter"}}, {{"frames", 2}}}}},
-           [&] { frame(); }),
-      0);
+  ASSERT_EQ(type_and_enter("~/photos/swatch.png"), 0);
   EXPECT_EQ(document().modal_title(), "");
   EXPECT_EQ(fs::path(explorer_->photo().photo_file()), dir_ / "photos" / "swatch.png");
 }
@@ -1654,18 +1658,14 @@ TEST_F(ExplorerTest, TheMethodTabSetsThePaperMethodsToleranceAsOneValidatedStep)
   const std::string text = frame();
   const ImVec2 field = last_positions_[text.find("0.05", text.find("stop when"))];
   click_at(ImVec2(field.x + 3.0f, field.y + 4.0f));
-  ASSERT_EQ(play(*explorer_, {{"steps", {{{"type", "1e-5"}}, {{"key", "enter"}}, {{"frames", 2}}}}},
-                 [&] { frame(); }),
-            0);
+  ASSERT_EQ(type_and_enter("1e-5"), 0);
   EXPECT_EQ(explorer_->edited().model.length_tolerance, 1e-5);
   EXPECT_EQ(explorer_->analysis().method().iterates(), 8);
   EXPECT_EQ(document().undo_depth(), depth + 1);
 
   // Beyond 0.5 the tolerance is refused with its reason, the scene keeps the last valid one.
   click_at(ImVec2(field.x + 3.0f, field.y + 4.0f));
-  ASSERT_EQ(play(*explorer_, {{"steps", {{{"type", "0.9"}}, {{"key", "enter"}}, {{"frames", 2}}}}},
-                 [&] { frame(); }),
-            0);
+  ASSERT_EQ(type_and_enter("0.9"), 0);
   EXPECT_EQ(explorer_->edited().model.length_tolerance, 0.9);
   EXPECT_EQ(shown().model.length_tolerance, 1e-5);
   EXPECT_NE(last_text_.find("length_tolerance"), std::string::npos) << last_text_;
@@ -1936,14 +1936,10 @@ TEST_F(ExplorerTest, TheFoldPlotKeepsItsSizeAtALargeUiScale) {
 // each a sizeable part of it, on a laptop and on a projector's 1920 x 1080.
 TEST_F(ExplorerTest, AtTwiceTheTextSizeThePlotsKeepTheirShareOfTheWindow) {
   open_explorer("equations", kDejaVuSans);
-  ImGuiIO& io = ImGui::GetIO();
   ASSERT_EQ(explorer_->set_view("scale", "200"), std::nullopt);
   for (const ImVec2 size : {ImVec2(1280, 800), ImVec2(1920, 1080)}) {
     SCOPED_TRACE(::testing::Message() << size.x << "x" << size.y);
-    io.DisplaySize = size;
-    for (int i = 0; i < 3; ++i) {
-      frame();
-    }
+    show_at(size);
     const double window = static_cast<double>(size.x) * size.y;
     const PlotView& plot = explorer_->fold_plot().plot_view();
     const double plot_share = (plot.max.x - plot.min.x) * (plot.max.y - plot.min.y) / window;
@@ -2010,14 +2006,10 @@ TEST_F(ExplorerTest, ResultsAndTheMethodTableCutNoTextAtAnyScaleOrSize) {
 // window: the panel scrolls instead of squeezing a plot to a few pixels.
 TEST_F(ExplorerTest, EachSweepPlotKeepsItsHeightAtALargeUiScale) {
   open_explorer("sweep", kDejaVuSans);
-  ImGuiIO& io = ImGui::GetIO();
   ASSERT_EQ(explorer_->set_view("scale", "150"), std::nullopt);
   for (const ImVec2 size : {ImVec2(1280, 800), ImVec2(1024, 640)}) {
     SCOPED_TRACE(::testing::Message() << size.x << "x" << size.y);
-    io.DisplaySize = size;
-    for (int i = 0; i < 3; ++i) {
-      frame();
-    }
+    show_at(size);
     // The panel scrolls (the wheel over its tabs, not over a plot, which it would zoom) to show
     // each plot in turn.
     const PanelRect analysis = rect_of("analysis");

@@ -77,8 +77,8 @@ std::vector<ValidationIssue> validate(const Parameters& p) {
   if (find_input("L")->valid.contains(L) && find_input("d")->valid.contains(d)) {
     const double half = 0.5 * L;
     check_range(issues, "d_mm", d, {0.0, half, false, true},
-                "d must stay below L/2 = " +
-                    shortest_number(half) + ", where the supports would meet if each moved d");
+                "d must stay below L/2 = " + shortest_number(half) +
+                    ", where the supports would meet if each moved d");
   }
   const ModelSettings& m = p.model;
   if (m.simpson_intervals % 2 != 0 && m.length_quadrature == LengthQuadrature::simpson) {
