@@ -25,6 +25,10 @@ Explorer::Explorer(const Preset& initial, const std::string& initial_path, bool 
       document_(initial, initial_path),
       files_(options_.start_folder.empty() ? std::filesystem::current_path()
                                            : options_.start_folder) {
+  // A panel moves by its title bar only: a drag that misses a slider's handle by a few pixels
+  // would otherwise carry the whole panel out of the tiles. (ImGui's context exists before the
+  // explorer, in the app and in the tests.)
+  ImGui::GetIO().ConfigWindowsMoveFromTitleBarOnly = true;
   // The panels, in drawing order: the tiled ones in the layout's order, then the floating windows.
   parameters_ = add<ParametersPanel>();
   presets_ = add<PresetsPanel>(options_.presets_dir, options_.user_presets_dir);
@@ -656,9 +660,6 @@ bool Explorer::awaits_time() const {
 }
 
 void Explorer::frame() {
-  // A panel moves by its title bar only: a drag that misses a slider's handle by a few pixels
-  // would otherwise carry the whole panel out of the tiles.
-  ImGui::GetIO().ConfigWindowsMoveFromTitleBarOnly = true;
   export_.new_frame();
   document_.tick(ImGui::GetTime());
   const int scale_before = appearance_.scale_percent();

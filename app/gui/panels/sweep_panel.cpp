@@ -18,8 +18,6 @@
 namespace foldlab::gui {
 namespace {
 
-constexpr ImU32 kBandFill = IM_COL32(150, 150, 160, 60);
-constexpr ImU32 kRefusedFill = IM_COL32(230, 90, 80, 60);
 // A sweep plot's least height, in font sizes: about four lines of data area besides its ticks
 // and labels.
 constexpr float kMinPlotHeightEms = 8.5f;
