@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/gui/play_script.hpp"
+#include "app/gui/surface.hpp"
 #include "core/io/json_input.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
@@ -42,7 +43,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       std::abort();
     }
     if (step.contains("resize") &&
-        !foldlab::gui::parse_size(step.at("resize").get<std::string>())) {
+        !foldlab::gui::parse_frame_size(step.at("resize").get<std::string>())) {
       std::abort();
     }
   }

@@ -869,7 +869,39 @@ TEST_F(CliTest, ParallelAppendsKeepEveryRow) {
 TEST_F(CliTest, PlayingAFolderIsInvalidInputNotAnInternalError) {
   const RunResult r = run({"render", "--play", dir_.string()});
   EXPECT_EQ(r.exit_status, 2) << r.err;
-  EXPECT_TRUE(contains(r.err, "is a folder")) << r.err;
+  EXPECT_TRUE(contains(r.err, "a directory, not a regular file")) << r.err;
+}
+
+// Every file a command reads goes through one reader: a FIFO is refused without waiting for a
+// writer, a device without reading forever, a file over its kind's cap from its size alone. Each
+// is bad input (exit 2) that names the file, for every loader. `timeout` turns a hang into a
+// failure instead of a stuck suite.
+TEST_F(CliTest, EveryLoaderRefusesFifosDevicesAndHugeFilesAsInvalidInput) {
+  const fs::path fifo = dir_ / "input.fifo";
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  const fs::path huge = dir_ / "huge.csv";
+  std::ofstream(huge).put('x');
+  fs::resize_file(huge, std::uintmax_t{2} << 30);  // sparse: no disk, no memory
+  const std::vector<std::pair<std::string, std::string>> inputs = {
+      {fifo.string(), "a FIFO, not a regular file"},
+      {"/dev/zero", "a character device, not a regular file"},
+      {huge.string(), "2.0 GB, more than the"}};
+  const std::vector<std::vector<std::string>> commands = {
+      {"solve", "--preset"},
+      {"calibrate", "--data"},
+      {"render", "--play"},
+      {"export", "--svg", "o.svg", "--preset"},
+      {"measure", "--supports-px", "10,10,90,10", "--folds-px", "60,50", "--photo"}};
+  for (const auto& [path, reason] : inputs) {
+    for (std::vector<std::string> args : commands) {
+      args.push_back(path);
+      args.insert(args.begin(), {"20", kExecutable});
+      const RunResult r = foldlab::testing::run_process("timeout", args, dir_);
+      EXPECT_EQ(r.exit_status, 2) << args[2] << " " << path << ": " << r.err;
+      EXPECT_TRUE(contains(r.err, reason)) << args[2] << " " << path << ": " << r.err;
+      EXPECT_TRUE(contains(r.err, path)) << args[2] << ": " << r.err;
+    }
+  }
 }
 
 TEST_F(CliTest, ExportSaysWhenItDrawsOnlyEveryKthFoldLine) {

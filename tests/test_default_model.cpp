@@ -598,8 +598,22 @@ TEST_F(DefaultModelCli, ACorruptOrBlankPhotoIsRefused) {
   std::ofstream(cut, std::ios::binary) << bytes.substr(0, bytes.size() / 2);
   testing::RunResult r = measure(cut);
   EXPECT_EQ(r.exit_status, 2) << r.out;
-  EXPECT_TRUE(contains(r.err, "--photo " + cut.string() + ": cannot decode")) << r.err;
+  EXPECT_TRUE(contains(r.err, "--photo " + cut.string() + ": a damaged PNG file")) << r.err;
   EXPECT_TRUE(r.out.empty()) << r.out;
+  // One bit flipped in its pixel data: stb_image skips PNG's checksums and would measure it.
+  std::string flipped = bytes;
+  flipped[bytes.size() / 2] = static_cast<char>(flipped[bytes.size() / 2] ^ 0x10);
+  const fs::path bad_crc = dir_ / "bad-crc.png";
+  std::ofstream(bad_crc, std::ios::binary) << flipped;
+  r = measure(bad_crc);
+  EXPECT_EQ(r.exit_status, 2) << r.out;
+  EXPECT_TRUE(contains(r.err, "the checksum of its IDAT chunk is wrong")) << r.err;
+  // Formats stb_image decodes but FoldLab does not promise (BMP here) are refused by name.
+  const fs::path bmp = dir_ / "whole.bmp";
+  ASSERT_NE(stbi_write_bmp(bmp.string().c_str(), 200, 160, 1, pixels.data()), 0);
+  r = measure(bmp);
+  EXPECT_EQ(r.exit_status, 2) << r.out;
+  EXPECT_TRUE(contains(r.err, "not a PNG or JPEG file")) << r.err;
   // One colour throughout: nothing to measure on.
   const std::vector<unsigned char> blank(200 * 160, 255);
   const fs::path white = dir_ / "white.png";

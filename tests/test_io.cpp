@@ -256,14 +256,14 @@ TEST(MeasurementInput, AHugeBadCellIsEchoedCut) {
 TEST_F(IoTest, ReadErrorsGiveTheSystemsReason) {
   write_bytes(dir_ / "plain", "x");
   try {
-    (void)foldlab::read_text_file(dir_ / "plain" / "p.json");
+    (void)foldlab::read_text_file(dir_ / "plain" / "p.json", foldlab::kMaxPresetFileBytes);
     ADD_FAILURE() << "read through a plain file";
   } catch (const foldlab::ReadError& e) {
     EXPECT_TRUE(contains(e.what(), "(Not a directory)")) << e.what();
   }
   fs::create_symlink("loop.json", dir_ / "loop.json");
   try {
-    (void)foldlab::read_text_file(dir_ / "loop.json");
+    (void)foldlab::read_text_file(dir_ / "loop.json", foldlab::kMaxPresetFileBytes);
     ADD_FAILURE() << "read a symlink loop";
   } catch (const foldlab::ReadError& e) {
     EXPECT_TRUE(contains(e.what(), "(Too many levels of symbolic links)")) << e.what();
@@ -274,11 +274,35 @@ TEST_F(IoTest, ReadingAFifoIsRefusedWithoutWaitingForAWriter) {
   const fs::path fifo = dir_ / "fifo.json";
   ASSERT_EQ(::mkfifo(fifo.c_str(), 0644), 0);
   try {
-    (void)foldlab::read_text_file(fifo);
+    (void)foldlab::read_text_file(fifo, foldlab::kMaxPresetFileBytes);
     ADD_FAILURE() << "read a FIFO";
   } catch (const foldlab::ReadError& e) {
     EXPECT_TRUE(contains(e.what(), "a FIFO, not a regular file")) << e.what();
   }
+  try {
+    (void)foldlab::read_text_file("/dev/zero", foldlab::kMaxPresetFileBytes);
+    ADD_FAILURE() << "read a device";
+  } catch (const foldlab::ReadError& e) {
+    EXPECT_TRUE(contains(e.what(), "a character device, not a regular file")) << e.what();
+  }
+}
+
+// A file over its kind's cap is refused from its size alone, before a byte is read: a 2 GiB
+// sparse file costs no memory and no time.
+TEST_F(IoTest, AFileOverItsCapIsRefusedBeforeItIsRead) {
+  const fs::path big = dir_ / "big.csv";
+  write_bytes(big, "");
+  fs::resize_file(big, std::uintmax_t{2} << 30);
+  try {
+    (void)foldlab::read_text_file(big, foldlab::kMaxMeasurementsFileBytes);
+    ADD_FAILURE() << "read 2 GiB";
+  } catch (const foldlab::ReadError& e) {
+    EXPECT_TRUE(contains(e.what(), "2.0 GB, more than the 4.0 MB such a file may have"))
+        << e.what();
+  }
+  write_bytes(big, std::string(1000, 'x'));
+  EXPECT_EQ(foldlab::read_text_file(big, 1000).size(), 1000u);  // the cap itself is allowed
+  EXPECT_THROW((void)foldlab::read_text_file(big, 999), foldlab::ReadError);
 }
 
 // --- Writing files ------------------------------------------------------------------------------

@@ -151,4 +151,15 @@ TEST_F(RealWindowTest, TeacherScalesTheTextAndResizesTheWindow) {
   EXPECT_EQ(session.at("view").at("ui_scale_percent"), 120) << session.dump();
 }
 
+// A window dragged down to nothing by hand (no window manager here keeps GLFW's minimum size)
+// and back: the explorer goes on and lays out the full window again.
+TEST_F(RealWindowTest, AWindowSqueezedToOnePixelAndBackKeepsRunning) {
+  const json after = run_window("1280x800",
+                                "xdotool windowsize $WID 140 140\nsleep 1\n"
+                                "xdotool windowsize $WID 1 1\nsleep 1\n"
+                                "xdotool windowsize --sync $WID 1280 800\nsleep 1\n");
+  EXPECT_EQ(after.at("display"), json::array({1280.0, 800.0}));
+  EXPECT_TRUE(after.at("layout").at("fills_window").get<bool>()) << after.dump();
+}
+
 }  // namespace

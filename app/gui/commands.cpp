@@ -1,12 +1,12 @@
 #include "app/gui/commands.hpp"
 
 #include <memory>
-#include <regex>
 #include <string>
 #include <string_view>
 #include <vector>
 
 #include "app/gui/gui_app.hpp"
+#include "app/gui/surface.hpp"
 #include "core/analysis/sweep.hpp"
 #include "core/model/text_format.hpp"
 
@@ -19,15 +19,12 @@ using app::kExitInternal;
 namespace {
 
 void parse_size(const std::string& text, GuiRunOptions& options) {
-  static const std::regex pattern(R"((\d{2,5})x(\d{2,5}))");
-  std::smatch match;
-  if (!std::regex_match(text, match, pattern) || std::stoi(match[1]) < 320 ||
-      std::stoi(match[2]) < 240 || std::stoi(match[1]) > 8192 || std::stoi(match[2]) > 8192) {
-    throw InputError("--size " + detail::cut(text) +
-                     " must be WxH with 320 <= W <= 8192, 240 <= H <= 8192");
+  const std::optional<FrameSize> size = parse_frame_size(text);
+  if (!size) {
+    throw InputError("--size " + detail::cut(text) + " must be " + frame_size_rule());
   }
-  options.width = std::stoi(match[1]);
-  options.height = std::stoi(match[2]);
+  options.width = size->width;
+  options.height = size->height;
 }
 
 struct GuiCommandOptions {

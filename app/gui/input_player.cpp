@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <cctype>
 #include <cfloat>
+#include <charconv>
 #include <cmath>
-#include <fstream>
 #include <iterator>
 #include <regex>
 #include <sstream>
@@ -13,7 +13,9 @@
 
 #include "app/common/inputs.hpp"
 #include "app/gui/play_script.hpp"
+#include "app/gui/surface.hpp"
 #include "core/analysis/sweep.hpp"
+#include "core/io/io.hpp"
 #include "core/io/json_input.hpp"
 #include "core/io/report.hpp"
 #include "core/io/scene_report.hpp"
@@ -38,10 +40,18 @@ const json* find_field(const json& report, const std::string& path) {
   while (true) {
     const std::size_t dot = rest.find('.');
     const std::string name(rest.substr(0, dot));
-    if (!at->is_object() || !at->contains(name)) {
+    if (at->is_array()) {  // "display.0": an element by its index
+      std::size_t index = 0;
+      const auto [end, error] = std::from_chars(name.data(), name.data() + name.size(), index);
+      if (error != std::errc() || end != name.data() + name.size() || index >= at->size()) {
+        return nullptr;
+      }
+      at = &(*at)[index];
+    } else if (at->is_object() && at->contains(name)) {
+      at = &(*at)[name];
+    } else {
       return nullptr;
     }
-    at = &(*at)[name];
     if (dot == std::string_view::npos) {
       return at;
     }
@@ -281,15 +291,12 @@ json explorer_state_json(Explorer& explorer) {
 }
 
 InputPlayer::InputPlayer(const std::filesystem::path& script_path) {
-  std::error_code error;
-  if (std::filesystem::is_directory(script_path, error)) {
-    throw app::InputError("--play " + script_path.string() + ": is a folder, not a script");
+  std::string text;
+  try {
+    text = read_text_file(script_path, kMaxScriptFileBytes);
+  } catch (const ReadError& e) {
+    throw app::InputError(std::string("--play ") + e.what());
   }
-  std::ifstream in(script_path);
-  if (!in) {
-    throw app::InputError("--play " + script_path.string() + ": cannot be read");
-  }
-  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   json script;
   try {
     script = parse_json(text, "--play " + script_path.string());
@@ -438,7 +445,7 @@ bool InputPlayer::start_step(std::size_t index, ImGuiIO& io, Explorer& explorer)
   } else if (step.contains("resize")) {
     FrameInput resized;
     resized.mouse = mouse_;
-    resized.resize = parse_size(step["resize"].get<std::string>());
+    resized.resize = parse_frame_size(step["resize"].get<std::string>());
     queue_.push_back(resized);
     resized.resize.reset();
     queue_.insert(queue_.end(), 3, resized);
@@ -522,7 +529,7 @@ std::optional<std::string> InputPlayer::take_screenshot_request() {
   return std::exchange(screenshot_, std::nullopt);
 }
 
-std::optional<std::pair<int, int>> InputPlayer::take_resize_request() {
+std::optional<FrameSize> InputPlayer::take_resize_request() {
   return std::exchange(resize_, std::nullopt);
 }
 

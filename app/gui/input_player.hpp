@@ -32,7 +32,7 @@ class InputPlayer {
   // A PNG to write from the frame just drawn, if a `screenshot` step asked for one.
   std::optional<std::string> take_screenshot_request();
   // A size to switch to before the next frame, if a `resize` step asked for one.
-  std::optional<std::pair<int, int>> take_resize_request();
+  std::optional<FrameSize> take_resize_request();
   // Empty while every step held; else which step failed and how.
   const std::string& failure() const { return failure_; }
   // The exit status: kExitOk, or 1 when a step failed.
@@ -48,7 +48,7 @@ class InputPlayer {
     int key = -1;  // index into io.KeysDown
     std::string text;
     std::string screenshot;
-    std::optional<std::pair<int, int>> resize;
+    std::optional<FrameSize> resize;
   };
 
  private:
@@ -63,7 +63,7 @@ class InputPlayer {
   std::size_t queue_at_ = 0;
   ImVec2 mouse_{-1.0f, -1.0f};
   std::optional<std::string> screenshot_;
-  std::optional<std::pair<int, int>> resize_;
+  std::optional<FrameSize> resize_;
   std::string failure_;
 };
 

@@ -3,11 +3,11 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
-#include <regex>
 #include <string_view>
 
 #include <imgui.h>
 
+#include "app/gui/surface.hpp"
 #include "core/analysis/sweep.hpp"
 #include "core/model/text_format.hpp"
 
@@ -95,19 +95,6 @@ bool is_slider_key(const json& value) {
          std::find(keys.begin(), keys.end(), value.get<std::string>()) != keys.end();
 }
 
-}  // namespace
-
-std::optional<std::pair<int, int>> parse_size(const std::string& text) {
-  static const std::regex pattern(R"((\d{3,4})x(\d{3,4}))");
-  std::smatch match;
-  if (!std::regex_match(text, match, pattern)) {
-    return std::nullopt;
-  }
-  return std::pair<int, int>(std::stoi(match[1]), std::stoi(match[2]));
-}
-
-namespace {
-
 // The problems of one step; empty when it can run.
 std::vector<std::string> step_problems(const json& step) {
   if (!step.is_object() || step.empty()) {
@@ -180,8 +167,8 @@ std::vector<std::string> step_problems(const json& step) {
       problems.push_back("type needs a string, not " + detail::cut(arg.dump()));
     }
   } else if (action == "resize") {
-    if (!arg.is_string() || !parse_size(arg.get<std::string>())) {
-      problems.push_back("resize needs \"WxH\", not " + detail::cut(arg.dump()));
+    if (!arg.is_string() || !parse_frame_size(arg.get<std::string>())) {
+      problems.push_back("resize needs " + frame_size_rule() + ", not " + detail::cut(arg.dump()));
     }
   } else if (action == "frames") {
     if (!arg.is_number_integer() || arg.get<long long>() < 1 || arg.get<long long>() > 100000) {

@@ -35,8 +35,6 @@ struct Chord {
 
 // "ctrl+shift+z", "escape", "plus": nullopt when it is not a chord.
 std::optional<Chord> parse_chord(std::string text);
-// "WxH" with 3 or 4 digits each.
-std::optional<std::pair<int, int>> parse_size(const std::string& text);
 
 // Every problem of a script, each "step N: ..." or about the whole; empty when it can run. Text
 // from the script is echoed through detail::cut.

@@ -1,5 +1,5 @@
-// A swatch photo (PNG, JPEG, ... as stb_image reads them) to print on the 3D view's cloth, tiled
-// over the flat cloth's material coordinates. Loaded here, with no GL, so that a bad file is
+// A swatch photo (PNG or JPEG, read as the photos measured are) to print on the 3D view's cloth,
+// tiled over the flat cloth's material coordinates. Loaded here, with no GL, so that a bad file is
 // refused with a sentence before anything reaches the GPU.
 #pragma once
 
@@ -11,8 +11,7 @@
 
 namespace foldlab::gui {
 
-// Larger files and pictures are refused: a swatch needs no more, and a GPU texture has limits.
-inline constexpr std::uintmax_t kMaxPrintFileBytes = 64u << 20;
+// Larger pictures are refused: a swatch needs no more, and a GPU texture has limits.
 inline constexpr int kMaxPrintSidePx = 4096;
 
 struct PrintImage {

@@ -53,8 +53,8 @@ bool ScriptedRun::play(Explorer& explorer, Surface& surface) {
   if (!player_->before_new_frame(ImGui::GetIO(), explorer)) {
     return false;
   }
-  if (const std::optional<std::pair<int, int>> size = player_->take_resize_request()) {
-    surface.resize(FrameSize{size->first, size->second});
+  if (const std::optional<FrameSize> size = player_->take_resize_request()) {
+    surface.resize(*size);
   }
   return true;
 }

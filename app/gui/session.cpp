@@ -87,11 +87,8 @@ ConfigFile read_config_file(const std::filesystem::path& path, std::uintmax_t li
   if (info.st_uid != ::geteuid()) {
     return refuse(name + " belongs to another user; not read");
   }
-  if (std::optional<std::string> too_large = oversized_file(path, limit)) {
-    return refuse(*too_large);
-  }
   try {
-    file.text = read_text_file(path);
+    file.text = read_text_file(path, limit);
   } catch (const ReadError& e) {
     return refuse(name + " cannot be opened (" + e.what() + ")");
   }

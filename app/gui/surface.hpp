@@ -6,7 +6,10 @@
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <stdexcept>
+#include <string>
+#include <string_view>
 #include <vector>
 
 #include "app/common/inputs.hpp"
@@ -43,6 +46,15 @@ class Surface {
   // Blocks until the frame is on the screen or in the buffer: for timing and screenshots.
   virtual void finish() = 0;
 };
+
+// The sizes a window or picture may be given (--size, a played resize; the window's own lower
+// limit): below 200 x 150 nothing of a panel can be read, above 8192 GL's textures may not follow.
+inline constexpr FrameSize kMinFrameSize{200, 150};
+inline constexpr FrameSize kMaxFrameSize{8192, 8192};
+// "WxH" within those limits; nullopt otherwise.
+std::optional<FrameSize> parse_frame_size(std::string_view text);
+// What parse_frame_size() takes, for messages: "WxH with 200 <= W <= 8192, 150 <= H <= 8192".
+std::string frame_size_rule();
 
 struct SurfaceOptions {
   int width = 1280;

@@ -1,4 +1,5 @@
-// Photos read for measuring folds (PNG, JPEG and what else stb_image reads), with a size budget
+// Photos read for measuring folds or printed on the cloth (PNG or JPEG, checked: a PNG's
+// checksums must hold), with a size budget
 // checked from the header before any pixel is decoded: a hostile or mistaken file (a panorama, a
 // decompression bomb) is refused instead of taking memory and seconds.
 #pragma once
@@ -37,7 +38,7 @@ struct Image {
 
 // The image's size from its header, within the budget; throws ImageError.
 ImageSize image_size(const std::filesystem::path& path);
-// The decoded image, within the budget; throws ImageError.
-Image load_image(const std::filesystem::path& path);
+// The decoded image, within the budget and `max_side_px` a side; throws ImageError.
+Image load_image(const std::filesystem::path& path, int max_side_px = kMaxImageSidePx);
 
 }  // namespace foldlab

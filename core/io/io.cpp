@@ -8,6 +8,7 @@
 #include <atomic>
 #include <cerrno>
 #include <charconv>
+#include <cstdio>
 #include <cstring>
 #include <string>
 #include <system_error>
@@ -110,9 +111,25 @@ void remove_stale_temporaries(const fs::path& target) {
   }
 }
 
+// "2.0 GB", "640 kB", "12 bytes": a size as a person reads it.
+std::string describe_bytes(std::uintmax_t bytes) {
+  constexpr std::uintmax_t kB = 1024;
+  char text[32];
+  if (bytes >= kB * kB * kB) {
+    std::snprintf(text, sizeof text, "%.1f GB", static_cast<double>(bytes) / (kB * kB * kB));
+  } else if (bytes >= kB * kB) {
+    std::snprintf(text, sizeof text, "%.1f MB", static_cast<double>(bytes) / (kB * kB));
+  } else if (bytes >= kB) {
+    std::snprintf(text, sizeof text, "%.0f kB", static_cast<double>(bytes) / kB);
+  } else {
+    std::snprintf(text, sizeof text, "%ju bytes", bytes);
+  }
+  return text;
+}
+
 }  // namespace
 
-std::string read_text_file(const std::filesystem::path& path) {
+std::string read_text_file(const std::filesystem::path& path, std::uintmax_t max_bytes) {
   // O_NONBLOCK: opening a FIFO for reading would otherwise wait for a writer forever.
   FileDescriptor file{::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK)};
   if (file.fd < 0) {
@@ -125,6 +142,13 @@ std::string read_text_file(const std::filesystem::path& path) {
   if (!S_ISREG(info.st_mode)) {
     throw ReadError(path.string() + ": cannot open for reading: " + file_kind(info.st_mode) +
                     ", not a regular file");
+  }
+  const auto too_large = [&](std::uintmax_t bytes) {
+    return ReadError(path.string() + ": " + describe_bytes(bytes) + ", more than the " +
+                     describe_bytes(max_bytes) + " such a file may have; not read");
+  };
+  if (static_cast<std::uintmax_t>(info.st_size) > max_bytes) {
+    throw too_large(static_cast<std::uintmax_t>(info.st_size));
   }
   std::string text;
   char buffer[65536];
@@ -140,6 +164,9 @@ std::string read_text_file(const std::filesystem::path& path) {
       break;
     }
     text.append(buffer, static_cast<std::size_t>(n));
+    if (text.size() > max_bytes) {
+      throw too_large(text.size());
+    }
   }
   return text;
 }

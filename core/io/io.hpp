@@ -1,6 +1,7 @@
 // Writing files so that a crash or a full disk never leaves half of one behind.
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
 #include <stdexcept>
 #include <string>
@@ -18,9 +19,18 @@ class ReadError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-// The whole file as text. Throws ReadError naming the path and the system's reason: absent,
-// not a regular file (a FIFO is refused without waiting for a writer), unreadable.
-std::string read_text_file(const std::filesystem::path& path);
+// What each kind of input file may weigh: far above any real one, far below what would take the
+// machine's memory or minutes (a 64-row measurements file is a few kB, a preset with its
+// calibration record some 10 kB, the longest play script 7 kB).
+inline constexpr std::uintmax_t kMaxPresetFileBytes = 1u << 20;
+inline constexpr std::uintmax_t kMaxMeasurementsFileBytes = 4u << 20;
+inline constexpr std::uintmax_t kMaxScriptFileBytes = 4u << 20;
+
+// The whole file as text, the one way every loader reads a file. Throws ReadError naming the
+// path and the reason: absent, not a regular file (a FIFO or a device is refused without waiting
+// for a writer or reading forever), unreadable, or larger than `max_bytes` (checked before
+// reading, and again while reading a file that grows).
+std::string read_text_file(const std::filesystem::path& path, std::uintmax_t max_bytes);
 
 // Writes `contents` to a temporary file beside `path`, flushes it to disk and renames it over
 // `path`: readers see the old file or the new one, never a mix. A symbolic link is followed to

@@ -557,7 +557,7 @@ MeasurementSet measurements_from_text(const std::string& text, const std::string
 MeasurementSet load_measurements(const std::filesystem::path& path) {
   std::string text;
   try {
-    text = read_text_file(path);
+    text = read_text_file(path, kMaxMeasurementsFileBytes);
   } catch (const ReadError& e) {
     throw MeasurementError(e.what());
   }
@@ -650,7 +650,7 @@ void append_measurement(const std::filesystem::path& path, const Measurement& ro
   MeasurementSet set;
   if (exists) {
     try {
-      text = read_text_file(path);
+      text = read_text_file(path, kMaxMeasurementsFileBytes);
     } catch (const ReadError& e) {
       throw MeasurementError(e.what());
     }

@@ -480,7 +480,7 @@ json preset_to_json(const Preset& preset) {
 Preset load_preset(const std::filesystem::path& path) {
   std::string text;
   try {
-    text = read_text_file(path);
+    text = read_text_file(path, kMaxPresetFileBytes);
   } catch (const ReadError& e) {
     throw PresetError(e.what());
   }

@@ -38,6 +38,10 @@ class WindowSurface final : public Surface {
       glfwTerminate();
       throw SurfaceError("cannot create an OpenGL 3.3 core window (" + last_glfw_error() + ")");
     }
+    // A window manager keeps the window at least this big; without one (Xvfb, xdotool) it may
+    // still become smaller, down to one pixel, and every panel copes with that too.
+    glfwSetWindowSizeLimits(window_, kMinFrameSize.width, kMinFrameSize.height, GLFW_DONT_CARE,
+                            GLFW_DONT_CARE);
     glfwMakeContextCurrent(window_);
     glfwSwapInterval(options.vsync ? 1 : 0);
   }

@@ -248,20 +248,29 @@ std::string wrap_at_spaces(std::string_view text, float width_px) {
   };
   std::string out;
   std::string line;
+  // A panel squeezed to nothing still gets a width: every character then stands on a line of its
+  // own instead of the cut below finding no character that fits.
+  width_px = std::max(width_px, 1.0f);
+  const auto char_end = [](std::string_view s, std::size_t at) {
+    std::size_t next = at + 1;
+    while (next < s.size() && (static_cast<unsigned char>(s[next]) & 0xC0) == 0x80) {
+      ++next;
+    }
+    return next;
+  };
   // Starts a line with `word`; a word wider than a whole line is cut where it must be, as ImGui
-  // does, between UTF-8 characters.
+  // does, between UTF-8 characters, with at least one character on each line.
   const auto start_line = [&](std::string_view word) {
     while (width_of(word) > width_px) {
-      std::size_t cut = 0;
-      std::size_t next = 0;
-      do {
+      std::size_t cut = char_end(word, 0);
+      if (cut >= word.size()) {
+        break;  // one character wider than the line: it stands alone
+      }
+      for (std::size_t next = char_end(word, cut);
+           next <= word.size() && width_of(word.substr(0, next)) <= width_px;
+           next = char_end(word, cut)) {
         cut = next;
-        next = cut + 1;
-        while (next < word.size() && (static_cast<unsigned char>(word[next]) & 0xC0) == 0x80) {
-          ++next;
-        }
-      } while (next <= word.size() && width_of(word.substr(0, next)) <= width_px);
-      cut = std::max<std::size_t>(cut, 1);
+      }
       out += std::string(word.substr(0, cut)) + "\n";
       word.remove_prefix(cut);
     }
