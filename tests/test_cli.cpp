@@ -759,6 +759,61 @@ TEST_F(CliTest, MeasuredDepthBeyondHalfTheUpperEdgeIsRefused) {
   EXPECT_EQ(fine.exit_status, 0) << fine.err;
 }
 
+// `measure` refuses a row that its own readers would refuse (Q above 100, z_max of 0), with or
+// without --append, and leaves the file as it was: every later append and calibration on it goes
+// on working.
+TEST_F(CliTest, MeasureNeverWritesARowItsReadersRefuse) {
+  const fs::path rows = dir_ / "rows.csv";
+  ASSERT_EQ(run({"measure", "--depths-mm", "80,40,20,10", "--append", rows.string()}).exit_status,
+            0);
+  const std::string before = read_file(rows);
+  for (const std::vector<std::string>& bad :
+       {std::vector<std::string>{"--depths-mm", "100000,0.001"},
+        std::vector<std::string>{"--depths-mm", "80,40,20,10", "--z-max-mm", "0"}}) {
+    for (const bool append : {false, true}) {
+      std::vector<std::string> args = {"measure"};
+      args.insert(args.end(), bad.begin(), bad.end());
+      if (append) {
+        args.insert(args.end(), {"--append", rows.string()});
+      }
+      const RunResult r = run(args);
+      EXPECT_EQ(r.exit_status, 2) << bad[1] << ": " << r.out;
+      EXPECT_TRUE(contains(r.err, "the measured row")) << r.err;
+    }
+  }
+  EXPECT_EQ(read_file(rows), before);
+  EXPECT_EQ(run({"measure", "--depths-mm", "60,30,15", "--append", rows.string()}).exit_status, 0);
+}
+
+// A name is the user's text: a terminal escape in it (clear the screen, ring the bell) is spelt out
+// as \xNN wherever a command prints it, never sent to the terminal.
+TEST_F(CliTest, NamesReachTheTerminalSpeltOutNeverAsEscapes) {
+  const std::string evil = "Evil\x1b[2J\x07";
+  const std::string spelt = "Evil\\x1b[2J\\x07";
+  const auto clean = [](const RunResult& r) {
+    return r.out.find('\x1b') == std::string::npos && r.err.find('\x1b') == std::string::npos;
+  };
+  const fs::path rows = dir_ / "rows.csv";
+  const RunResult measured =
+      run({"measure", "--depths-mm", "80,40,20,10", "--name", evil, "--append", rows.string()});
+  ASSERT_EQ(measured.exit_status, 0) << measured.err;
+  EXPECT_TRUE(clean(measured));
+  EXPECT_TRUE(contains(measured.out, spelt)) << measured.out;
+  ASSERT_EQ(run({"measure", "--depths-mm", "60,30,15", "--append", rows.string()}).exit_status, 0);
+  const RunResult calibrated = run({"calibrate", "--data", rows.string(), "--fit", "K"});
+  EXPECT_TRUE(clean(calibrated)) << calibrated.out;
+  EXPECT_TRUE(contains(calibrated.out, spelt)) << calibrated.out;
+
+  json preset = json::parse(read_file(kH900));
+  preset["name"] = evil;
+  const fs::path preset_path = dir_ / "evil.json";
+  std::ofstream(preset_path) << preset.dump();
+  const RunResult solved = run({"solve", "--preset", preset_path.string()});
+  ASSERT_EQ(solved.exit_status, 0) << solved.err;
+  EXPECT_TRUE(clean(solved));
+  EXPECT_TRUE(contains(solved.out, spelt)) << solved.out;
+}
+
 TEST_F(CliTest, NoOutputOverwritesAnInputOrAnotherOutputThroughLinks) {
   const fs::path preset = dir_ / "fabric.json";
   fs::copy_file(kH900, preset);

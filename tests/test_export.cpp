@@ -21,6 +21,7 @@
 #include "core/io/export.hpp"
 #include "core/io/gltf_export.hpp"
 #include "core/model/solver.hpp"
+#include "core/model/text_format.hpp"
 
 namespace foldlab {
 namespace {
@@ -248,6 +249,64 @@ TEST(ExportGlb, ReadsBackAsOneMeshInMetresWithYUp) {
   EXPECT_EQ(primitive.material, 0);
   EXPECT_TRUE(model.materials[0].doubleSided);
   EXPECT_EQ(model.materials[0].pbrMetallicRoughness.baseColorFactor.size(), 4u);
+}
+
+// A preset's name is the user's text: a line break, a terminal escape, markup or a byte that is
+// not UTF-8 in it stays a name in every format. Each file is read back as its own readers would:
+// the OBJ's vertex count, the SVG as XML (every control character is invalid there), the glTF by
+// TinyGLTF's loader, a measurements CSV's columns.
+TEST(ExportNames, AHostileNameStaysANameInEveryFormat) {
+  const std::string name = "Evil\nv 1e9 1e9 1e9\r\x1b[2J\x07<b>&\"\xff ν";
+  const Fixture f = make_fixture();
+  const auto is_control = [](char c) {
+    const auto b = static_cast<unsigned char>(c);
+    return (b < 0x20 && c != '\n') || b == 0x7F;
+  };
+
+  const std::string obj = mesh_to_obj(f.grid, name);
+  int vertices = 0;
+  for (const std::string& line : lines_of(obj)) {
+    vertices += line.starts_with("v ") ? 1 : 0;
+    EXPECT_TRUE(line.empty() || line[0] == '#' || line.find("Evil") == std::string::npos) << line;
+  }
+  EXPECT_EQ(vertices, kNx * kNy);
+  EXPECT_TRUE(std::none_of(obj.begin(), obj.end(), is_control));
+  EXPECT_EQ(lines_of(obj)[0], "# FoldLab deformed cloth: " + detail::escaped(name));
+
+  const Solution s = solve(f.p);
+  const std::string svg = fold_lines_to_svg(fold_lines(s, f.p, 11), s, name);
+  EXPECT_TRUE(std::none_of(svg.begin(), svg.end(), is_control));
+  EXPECT_TRUE(detail::is_valid_utf8(svg));
+  EXPECT_EQ(svg.find("<b>"), std::string::npos);
+  EXPECT_NE(svg.find(">Evil\\x0av 1e9 1e9 1e9\\x0d\\x1b[2J\\x07&lt;b&gt;&amp;&quot;\\xff ν</text>"),
+            std::string::npos)
+      << svg.substr(0, 600);
+  // Well formed: every '<' opens a tag that a '>' closes, every '&' starts an entity.
+  for (std::size_t at = svg.find('&'); at != std::string::npos; at = svg.find('&', at + 1)) {
+    const std::string entity = svg.substr(at, svg.find(';', at) - at + 1);
+    EXPECT_TRUE(entity == "&amp;" || entity == "&lt;" || entity == "&gt;" || entity == "&quot;")
+        << entity;
+  }
+  int depth = 0;
+  for (const char c : svg) {
+    depth += c == '<' ? 1 : c == '>' ? -1 : 0;
+    ASSERT_GE(depth, 0);
+    ASSERT_LE(depth, 1);
+  }
+
+  const std::string glb = mesh_to_glb(f.grid, name);
+  tinygltf::Model model;
+  tinygltf::TinyGLTF loader;
+  std::string err;
+  std::string warn;
+  ASSERT_TRUE(loader.LoadBinaryFromMemory(&model, &err, &warn,
+                                          reinterpret_cast<const unsigned char*>(glb.data()),
+                                          static_cast<unsigned int>(glb.size())))
+      << err;
+  EXPECT_TRUE(warn.empty()) << warn;
+  ASSERT_EQ(model.meshes.size(), 1u);
+  EXPECT_EQ(model.meshes[0].name, detail::escaped(name));
+  EXPECT_EQ(model.nodes.at(0).name, detail::escaped(name));
 }
 
 TEST(ExportUv, TextureCoordinatesSpanTheUnitSquare) {

@@ -226,7 +226,7 @@ Command add_bench_command(CLI::App& app) {
             "\nPipeline, exact solution of \"%s\" (n = %d), median of 5 runs, ms:\n\n"
             "| grid | fold lines (201 points) | grid + normals, 1 thread | of which normals | "
             "grid + normals, %d threads |\n|---|---|---|---|---|\n",
-            preset.name.c_str(), pipeline_solution.n, threads);
+            detail::escaped(preset.name).c_str(), pipeline_solution.n, threads);
         for (const PipelineTiming& t : pipeline) {
           std::printf("| %d² | %.3f | %.3f | %.3f | %.3f |\n", t.grid_size, t.fold_lines_ms,
                       t.grid_serial_ms, t.normals_serial_ms, t.grid_parallel_ms);

@@ -162,7 +162,8 @@ void print_report(const CalibrationReport& r, const std::string& data_path,
             << (r.fit_row_count == 1 ? "" : "s") << ", " << r.check_row_count << " check row"
             << (r.check_row_count == 1 ? "" : "s") << "), " << to_string(r.base.model.method)
             << " method, fitting " << to_string(r.fit) << "\n";
-  std::cout << "Base: \"" << base_name << "\", " << describe_model_form(r.base) << "\n";
+  std::cout << "Base: \"" << detail::escaped(base_name) << "\", " << describe_model_form(r.base)
+            << "\n";
   std::cout << "Loss (lexicographic): rows whose n is missed, then rows missed by more than one, "
                "then the mean of min(|model/observed - 1|, 1) over every observed z_max and Q.\n\n";
   const Parameters fitted = with_constants(r.base, f.K, f.p);
@@ -194,7 +195,7 @@ void print_report(const CalibrationReport& r, const std::string& data_path,
                "|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   for (const CalibrationRow& row : r.rows) {
     const Measurement& m = row.measurement;
-    std::cout << "| " << (m.name.empty() ? "row " + std::to_string(m.row) : m.name)
+    std::cout << "| " << (m.name.empty() ? "row " + std::to_string(m.row) : detail::escaped(m.name))
               << (m.role == MeasurementRole::check ? " (check)" : "") << " | "
               << optional_cell(m.observed.n, "%.0f") << " | "
               << optional_cell(m.observed.z_max_mm, "%g") << " | "

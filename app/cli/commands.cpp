@@ -255,8 +255,9 @@ Command add_compare_command(CLI::App& app) {
              "|---|---|---|---|---|---|---|---|---|---|\n";
       for (std::size_t i = 0; i < presets.size(); ++i) {
         const PublishedResult& pub = presets[i].published;
-        std::cout << "| " << presets[i].name << " | " << optional_number(pub.n, "%.0f") << " | "
-                  << optional_number(pub.z_max_mm, "%g") << " | " << optional_number(pub.Q, "%.2f");
+        std::cout << "| " << detail::escaped(presets[i].name) << " | "
+                  << optional_number(pub.n, "%.0f") << " | " << optional_number(pub.z_max_mm, "%g")
+                  << " | " << optional_number(pub.Q, "%.2f");
         for (int m = 0; m < 2; ++m) {
           const PublishedComparison& c = rows[static_cast<std::size_t>(m)][i];
           std::cout << " | " << c.solution.n << " | "

@@ -7,6 +7,7 @@
 #include <iostream>
 #include <memory>
 #include <optional>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -204,6 +205,15 @@ Command add_measure_command(CLI::App& app) {
       check_distinct_files({{"--append", o.append_path}},
                            {{"--preset", o.preset_path}, {"--photo", o.photo}});
       const Measurement row = measurement_row(p, folds, o.z_max_mm, o.name);
+      MeasurementSet one;
+      one.rows.push_back(row);
+      const std::string row_csv = measurements_to_csv(one);
+      try {
+        // The rules `calibrate` reads a row by: a row it would refuse is no measurement.
+        (void)measurements_from_csv(row_csv, "the measured row");
+      } catch (const MeasurementError& e) {
+        throw InputError(e.what());
+      }
       if (!o.append_path.empty()) {
         try {
           append_measurement(o.append_path, row);
@@ -211,9 +221,6 @@ Command add_measure_command(CLI::App& app) {
           throw InputError(std::string("--append: ") + e.what());
         }
       }
-      MeasurementSet one;
-      one.rows.push_back(row);
-      const std::string row_csv = measurements_to_csv(one);
       if (o.json) {
         nlohmann::json out = {
             {"n", folds.n},
@@ -231,8 +238,12 @@ Command add_measure_command(CLI::App& app) {
                   << "\nfit_residual = " << printf_string("%.3g", folds.fit_residual)
                   << " (rms of ln a_i about the fitted line)\n";
         std::cout << (o.append_path.empty() ? "row (not appended: no --append):\n"
-                                            : "row appended to " + o.append_path + ":\n")
-                  << row_csv;
+                                            : "row appended to " + o.append_path + ":\n");
+        // The row holds the name as given: echoed, its control characters are spelt out.
+        std::istringstream lines(row_csv);
+        for (std::string line; std::getline(lines, line);) {
+          std::cout << detail::escaped(line) << "\n";
+        }
       }
       return kExitOk;
     });

@@ -62,7 +62,8 @@ std::vector<Eigen::Vector2f> texture_coordinates(const DeformedGrid& grid) {
 }
 
 std::string mesh_to_obj(const DeformedGrid& grid, const std::string& title) {
-  std::string out = "# FoldLab deformed cloth: " + title + "\n";
+  // One comment line, whatever the name holds: a line break in it would start an OBJ statement.
+  std::string out = "# FoldLab deformed cloth: " + detail::escaped(title) + "\n";
   out += "# units mm; x across, y down (gravity), z out of the initial plane\n";
   out += printf_string("# grid %d x %d, worst fibre-length error %.3e of h\n", grid.nx, grid.ny,
                        grid.worst_fibre_error);
@@ -134,7 +135,7 @@ std::string fold_lines_to_svg(const FoldLines& lines, const Solution& s, const s
       width_px, height_px, width_px, height_px);
   out += "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
   out += "<text x=\"" + printf_string("%.0f", margin_left) + "\" y=\"22\" font-size=\"15\">" +
-         xml_escape(title) + "</text>\n";
+         xml_escape(detail::escaped(title)) + "</text>\n";
   out += printf_string(
       "<text x=\"%.0f\" y=\"42\">n = %d, Q = %.3f, z_max = %.1f mm, l = %.0f mm "
       "(y downward from the line through the supports)</text>\n",

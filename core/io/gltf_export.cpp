@@ -130,7 +130,7 @@ std::string mesh_to_glb(const DeformedGrid& grid, const std::string& title) {
   primitive.material = 0;
 
   tinygltf::Mesh mesh;
-  mesh.name = title;
+  mesh.name = detail::escaped(title);
   // Diagnostics a viewer ignores and a script can read.
   mesh.extras = tinygltf::Value(
       tinygltf::Value::Object{{"worst_fibre_error", tinygltf::Value(grid.worst_fibre_error)},
@@ -138,11 +138,11 @@ std::string mesh_to_glb(const DeformedGrid& grid, const std::string& title) {
   mesh.primitives.push_back(primitive);
   model.meshes.push_back(mesh);
   tinygltf::Node node;
-  node.name = title;
+  node.name = mesh.name;
   node.mesh = 0;
   model.nodes.push_back(node);
   tinygltf::Scene scene;
-  scene.name = title;
+  scene.name = mesh.name;
   scene.nodes.push_back(0);
   model.scenes.push_back(scene);
   model.defaultScene = 0;

@@ -701,6 +701,10 @@ void append_measurement(const std::filesystem::path& path, const Measurement& ro
     }
     out += detail::join(cells, ",") + "\n";
   }
+  // The row is checked by the rules that will read it: a file this wrote must open again, or
+  // every later append and calibration on it would be refused until edited by hand.
+  (void)measurements_from_text(out, origin + " (the row was not added)",
+                               is_json ? std::string_view(".json") : std::string_view(".csv"));
   write_file_atomically(path, out);  // WriteError: an I/O failure, not bad input
   lock.written();
 }

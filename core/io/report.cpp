@@ -110,7 +110,7 @@ std::string solution_table(const Solution& s, const Parameters& p, const std::st
   std::string out = "FoldLab: " + std::string(to_string(s.method)) + " method, " +
                     std::string(wrinkle_law(p.model.law).title());
   if (!preset_name.empty()) {
-    out += ", preset \"" + preset_name + "\"";
+    out += ", preset \"" + detail::escaped(preset_name) + "\"";
   }
   out += "\n\nInputs\n";
   for (const InputSpec& spec : input_table()) {

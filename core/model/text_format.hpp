@@ -104,6 +104,12 @@ inline std::string cut(std::string_view text, std::size_t max_bytes = 60) {
   return out;
 }
 
+// User text (a preset's or a row's name) wherever it reaches a terminal, a report or a one-line
+// comment in a file: the same \xNN spelling as cut(), nothing cut.
+inline std::string escaped(std::string_view text) {
+  return cut(text, std::string_view::npos);
+}
+
 // `value` itself when finite. A writer calls this on every number it puts out: an infinity or NaN
 // there is a bug upstream (the input ranges exclude them), so it stops as an internal error naming
 // the field rather than writing "inf", "nan" or JSON null.
