@@ -1,11 +1,15 @@
 // foldlab: parses the command line and hands over to the CLI's or the explorer's command.
 #include <cstdlib>
+#include <filesystem>
 #include <iostream>
 #include <map>
+#include <string>
 
 #include <CLI/CLI.hpp>
 
 #include "app/cli/commands.hpp"
+#include "app/common/presets_dir.hpp"
+#include "app/common/version.hpp"
 #ifdef FOLDLAB_WITH_GUI
 #include "app/gui/commands.hpp"
 #endif
@@ -27,6 +31,14 @@ int main(int argc, char** argv) {
       "A. Conci). Units: mm, MPa, N/mm².\nWith no command: opens the explorer where a display "
       "exists, else solves the default preset and prints it."};
   app.set_help_all_flag("--help-all", "help for every command");
+  app.set_version_flag(
+      "--version",
+      [] {
+        const std::filesystem::path presets = app::find_presets_dir();
+        return app::version_line() +
+               "\npresets: " + (presets.empty() ? "none found" : presets.string());
+      },
+      "print the version, the git commit it was built from and the presets folder, and exit");
   std::map<std::string, app::Command> commands;
   commands["solve"] = cli::add_solve_command(app);
   commands["export"] = cli::add_export_command(app);
@@ -46,6 +58,8 @@ int main(int argc, char** argv) {
   } catch (const CLI::CallForHelp& e) {
     return app.exit(e);
   } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
     app.exit(e);  // prints the message

@@ -11,6 +11,7 @@ packages=(
   googletest libgtest-dev libbenchmark-dev
   clang libclang-rt-14-dev libfuzzer-14-dev
   xvfb xauth xdotool
+  dpkg-dev file lintian desktop-file-utils appstream man-db librsvg2-bin
 )
 
 missing=()

@@ -970,3 +970,31 @@ TEST_F(CliTest, ExportSaysWhenItDrawsOnlyEveryKthFoldLine) {
   const RunResult few = run({"export", "--csv", csv.string()});
   EXPECT_FALSE(contains(few.err, "too many to draw")) << few.err;
 }
+
+// `foldlab --version`: the version of project(VERSION ...), the commit when built from git, and
+// the presets folder it found (here, run from its build folder: the source tree's).
+TEST_F(CliTest, VersionPrintsTheProjectVersionAndThePresetsFolder) {
+  const RunResult r = run({"--version"});
+  ASSERT_EQ(r.exit_status, 0) << r.err;
+  const std::vector<std::string> lines = split_lines(r.out);
+  ASSERT_EQ(lines.size(), 2u) << r.out;
+  EXPECT_TRUE(lines[0] == "FoldLab " FOLDLAB_VERSION ||
+              starts_with(lines[0], "FoldLab " FOLDLAB_VERSION " ("))
+      << lines[0];
+  EXPECT_EQ(fs::weakly_canonical(lines[1].substr(lines[1].find(": ") + 2)),
+            fs::weakly_canonical(kPresetsDir))
+      << lines[1];
+}
+
+// A preset the program saves says which FoldLab wrote it.
+TEST_F(CliTest, SavedPresetRecordsTheVersionThatWroteIt) {
+  const fs::path out = dir_ / "fitted.json";
+  const RunResult r = run({"calibrate", "--data",
+                           (kPresetsDir.parent_path() / "data" / "paper-measurements.csv").string(),
+                           "--fit", "K", "--no-held-out", "--save-preset", out.string()});
+  ASSERT_EQ(r.exit_status, 0) << r.err;
+  const json j = json::parse(read_file(out));
+  EXPECT_TRUE(starts_with(j.at("written_by").get<std::string>(), "FoldLab " FOLDLAB_VERSION))
+      << j.dump(2);
+  EXPECT_EQ(run({"solve", "--preset", out.string()}).exit_status, 0);
+}

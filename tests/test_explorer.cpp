@@ -27,6 +27,7 @@
 #include <thread>
 #include <vector>
 
+#include "app/common/version.hpp"
 #include "app/gui/appearance.hpp"
 #include "app/gui/explorer.hpp"
 #include "app/gui/input_player.hpp"
@@ -2298,6 +2299,20 @@ TEST_F(ExplorerTest, TheUsersArrangementIsRememberedWithTheSession) {
   explorer_->save_session_now();
   open_explorer("equations", {}, session, true);
   EXPECT_TRUE(explorer_->automatic_layout());
+}
+
+// The session file says which FoldLab wrote it; a session from before it did still loads.
+TEST_F(ExplorerTest, TheSessionFileRecordsTheVersionThatWroteIt) {
+  const fs::path session = dir_ / "session.json";
+  open_explorer("equations", {}, session, true);
+  explorer_->save_session_now();
+  std::ifstream in(session);
+  nlohmann::json j = nlohmann::json::parse(in);
+  EXPECT_EQ(j.at("written_by"), app::version_line());
+  EXPECT_TRUE(j.at("written_by").get<std::string>().starts_with("FoldLab "));
+  j.erase("written_by");
+  std::string error;
+  EXPECT_TRUE(session_from_text(j.dump(), "older session", error).has_value()) << error;
 }
 
 // The regime map's colours explained beside it: a colour bar with n's scale on the map's right

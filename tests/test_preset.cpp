@@ -112,6 +112,7 @@ void expect_same_preset(const foldlab::Preset& a, const foldlab::Preset& b) {
   EXPECT_EQ(a.description, b.description);
   EXPECT_EQ(a.source, b.source);
   EXPECT_EQ(a.derived_from, b.derived_from);
+  EXPECT_EQ(a.written_by, b.written_by);
   expect_same_parameters(a.parameters, b.parameters);
   EXPECT_EQ(a.published.n, b.published.n);
   EXPECT_EQ(a.published.z_max_mm, b.published.z_max_mm);
@@ -254,6 +255,28 @@ TEST_F(PresetTest, JsonRoundTripKeepsAbsentPublishedValuesAbsent) {
   EXPECT_FALSE(none.published.n.has_value());
   EXPECT_FALSE(none.published.z_max_mm.has_value());
   EXPECT_FALSE(none.published.Q.has_value());
+}
+
+// The program that saved a preset is kept as read and written back; a preset without it (every
+// shipped one) writes no such key, so the files in presets/ stay as they are.
+TEST_F(PresetTest, WrittenByIsKeptWhenPresentAndAbsentOtherwise) {
+  foldlab::Preset original = awkward_preset();
+  EXPECT_FALSE(foldlab::preset_to_json(original).contains("written_by"));
+  original.written_by = "FoldLab 9.8.7 (abc1234)";
+  const nlohmann::json j = foldlab::preset_to_json(original);
+  EXPECT_EQ(j.at("written_by"), "FoldLab 9.8.7 (abc1234)");
+  const foldlab::Preset back = foldlab::preset_from_json(j, "<round trip>");
+  EXPECT_EQ(back.written_by, "FoldLab 9.8.7 (abc1234)");
+  expect_same_preset(original, back);
+
+  nlohmann::json wrong = j;
+  wrong["written_by"] = 3;
+  try {
+    (void)foldlab::preset_from_json(wrong, "w.json");
+    ADD_FAILURE() << "a written_by that is not text was accepted";
+  } catch (const foldlab::PresetError& e) {
+    EXPECT_NE(std::string(e.what()).find("/written_by"), std::string::npos) << e.what();
+  }
 }
 
 TEST_F(PresetTest, SaveThenLoadGivesTheSamePreset) {

@@ -367,6 +367,7 @@ Command add_calibrate_command(CLI::App& app) {
                 ? std::filesystem::path(options->data_path).filename().string()
                 : options->calibrated_on;
         out.calibration = calibration_record(report, data_label, coverage);
+        out.written_by = app::version_line();
         save_preset(out, options->save_preset_path);
         std::cerr << "foldlab: wrote " << options->save_preset_path << "\n";
       }

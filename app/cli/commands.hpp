@@ -5,6 +5,7 @@
 
 #include "app/common/inputs.hpp"
 #include "app/common/presets_dir.hpp"
+#include "app/common/version.hpp"
 
 namespace foldlab::cli {
 

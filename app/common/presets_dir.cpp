@@ -46,6 +46,22 @@ bool natural_less(const std::string& a, const std::string& b) {
   return a.size() - i < b.size() - j;
 }
 
+// Whether the executable lies inside the build folder it was built in: only then does the source
+// tree, compiled in, stand in for an installed presets folder. A copied or installed program never
+// reads the source tree.
+bool built_here(const std::filesystem::path& exe) {
+  std::error_code error;
+  const std::filesystem::path build = std::filesystem::canonical(FOLDLAB_BUILD_DIR, error);
+  if (error) {
+    return false;
+  }
+  const std::filesystem::path dir = std::filesystem::weakly_canonical(exe.parent_path(), error);
+  if (error) {
+    return false;
+  }
+  return std::mismatch(build.begin(), build.end(), dir.begin(), dir.end()).first == build.end();
+}
+
 }  // namespace
 
 std::filesystem::path find_presets_dir() {
@@ -53,15 +69,17 @@ std::filesystem::path find_presets_dir() {
   if (const char* env = std::getenv("FOLDLAB_PRESETS_DIR"); env && *env) {
     return env;
   }
-  if (std::filesystem::is_directory(FOLDLAB_SOURCE_PRESETS_DIR, error)) {
-    return FOLDLAB_SOURCE_PRESETS_DIR;
-  }
   const std::filesystem::path exe = std::filesystem::read_symlink("/proc/self/exe", error);
-  if (!error) {
-    const auto installed = exe.parent_path().parent_path() / "share" / "foldlab" / "presets";
-    if (std::filesystem::is_directory(installed, error)) {
-      return installed;
-    }
+  if (error) {
+    return {};
+  }
+  const std::filesystem::path installed =
+      exe.parent_path().parent_path() / "share" / "foldlab" / "presets";
+  if (std::filesystem::is_directory(installed, error)) {
+    return installed;
+  }
+  if (built_here(exe) && std::filesystem::is_directory(FOLDLAB_SOURCE_PRESETS_DIR, error)) {
+    return FOLDLAB_SOURCE_PRESETS_DIR;
   }
   return {};
 }

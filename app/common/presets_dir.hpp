@@ -6,8 +6,10 @@
 
 namespace foldlab::app {
 
-// The first that exists of: $FOLDLAB_PRESETS_DIR, the source tree's presets/ (a build run in
-// place), and ../share/foldlab/presets beside the executable. Empty when none does.
+// The first that exists of: $FOLDLAB_PRESETS_DIR, ../share/foldlab/presets beside the executable
+// (an installed or unpacked program: bin/foldlab and share/foldlab/presets), and the source
+// tree's presets/ only while the executable runs from the build folder it was built in. Empty
+// when none does.
 std::filesystem::path find_presets_dir();
 
 // The *.json files of a folder, sorted by name.

@@ -8,6 +8,7 @@
 #include <imgui.h>
 #include <imgui_internal.h>  // FindWindowByName: where the user moved a panel
 
+#include "app/common/version.hpp"
 #include "app/gui/panels/compare_table.hpp"
 #include "app/gui/panels/stats_overlay.hpp"
 #include "app/gui/panels/widgets.hpp"
@@ -373,6 +374,8 @@ void Explorer::view_menu() {
   if (ImGui::MenuItem("Reset layout", nullptr, false, !automatic_layout_ || splits_.any())) {
     reset_layout();
   }
+  ImGui::Separator();
+  ImGui::TextDisabled("About FoldLab: %s", app::version_line().c_str());
 }
 
 void Explorer::handle_escape() {

@@ -11,6 +11,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "app/common/version.hpp"
 #include "core/io/io.hpp"
 #include "core/io/json_input.hpp"
 #include "core/model/text_format.hpp"
@@ -185,6 +186,7 @@ void save_session(const std::filesystem::path& path, const Session& session) {
   view["grid_resolution"] = session.grid_resolution;
   nlohmann::json j = {
       {"foldlab_session", 1},
+      {"written_by", app::version_line()},
       {"current", preset_to_json(session.current)},
       {"loaded", preset_to_json(session.loaded)},
       {"loaded_preset_path", session.loaded_preset_path},

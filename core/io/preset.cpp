@@ -320,8 +320,8 @@ Preset preset_from_json(const json& j, const std::string& origin) {
   Reader r(origin, problems);
   Preset preset;
   if (!r.object(j, "",
-                {"foldlab_preset", "name", "description", "source", "derived_from", "fabric",
-                 "hanging", "model", "shape", "published", "calibration"})) {
+                {"foldlab_preset", "name", "description", "source", "derived_from", "written_by",
+                 "fabric", "hanging", "model", "shape", "published", "calibration"})) {
     throw PresetError(join_lines(problems));
   }
   if (!j.contains("foldlab_preset")) {
@@ -337,6 +337,7 @@ Preset preset_from_json(const json& j, const std::string& origin) {
   r.text(j, "", "description", preset.description, false);
   r.text(j, "", "source", preset.source, false);
   r.text(j, "", "derived_from", preset.derived_from, false);
+  r.text(j, "", "written_by", preset.written_by, false);
 
   Parameters& p = preset.parameters;
   for (const char* section : {"fabric", "hanging", "model", "shape"}) {
@@ -418,6 +419,9 @@ json preset_to_json(const Preset& preset) {
   };
   if (!preset.derived_from.empty()) {
     j["derived_from"] = preset.derived_from;
+  }
+  if (!preset.written_by.empty()) {
+    j["written_by"] = preset.written_by;
   }
   for (const InputSpec& spec : input_table()) {
     if (spec.preset.empty()) {

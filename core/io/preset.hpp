@@ -67,6 +67,9 @@ struct Preset {
   std::string source;  // where the numbers come from
   // The name of the preset this one was saved from in the explorer; empty for an original.
   std::string derived_from;
+  // The program that saved it, "FoldLab 0.1.0 (66ffc2b)"; empty for the shipped presets, which
+  // are written by hand. Kept as read, written when not empty.
+  std::string written_by;
   Parameters parameters;
   PublishedResult published;
   std::optional<CalibrationRecord> calibration;

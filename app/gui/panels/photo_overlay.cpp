@@ -11,6 +11,7 @@
 #include <imgui.h>
 #include <nlohmann/json.hpp>
 
+#include "app/common/version.hpp"
 #include "app/gui/panels/file_dialog.hpp"
 #include "app/gui/panels/presets_panel.hpp"
 #include "app/gui/panels/widgets.hpp"
@@ -366,6 +367,7 @@ void PhotoOverlay::collect_fit(Document& document) {
                       summary_text(report.leave_one_out) + ".";
     out.published = {};
     out.calibration = calibration_record(report, data_label, outcome.coverage);
+    out.written_by = app::version_line();
     const std::filesystem::path path =
         paths_.user_presets_dir / (preset_slug("fitted to my measurements") + ".json");
     std::filesystem::create_directories(path.parent_path());

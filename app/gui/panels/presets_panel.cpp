@@ -9,6 +9,7 @@
 #include <imgui.h>
 
 #include "app/common/presets_dir.hpp"
+#include "app/common/version.hpp"
 #include "app/gui/panels/widgets.hpp"
 #include "app/gui/session.hpp"
 #include "core/model/text_format.hpp"
@@ -124,6 +125,7 @@ void PresetsPanel::write(Document& document, const std::string& name,
     preset.source = {};
     preset.published = {};  // published results belong to the paper's case, not to an edit
   }
+  preset.written_by = app::version_line();
   try {
     std::filesystem::create_directories(path.parent_path());
     save_preset(preset, path);
