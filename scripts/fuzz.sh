@@ -4,7 +4,7 @@
 # under WORK_DIR/artifacts/, if the fuzzer finds a crash, a sanitizer report or an exception other
 # than the loader's own error. The CTests fuzz_build and fuzz_TARGET run this.
 #
-#   scripts/fuzz.sh [--target preset_loader|measurements|session|settings|calibration|play_script]
+#   scripts/fuzz.sh [--target preset_loader|measurements|session|settings|calibration|play_script|export_names]
 #                   [--seconds 30]
 #                   [--clang clang++] [--build-dir build/tests/fuzz]
 #                   [--generated-dir build/core/generated] [--work-dir build/fuzz_TARGET_work]
@@ -37,7 +37,7 @@ while [ $# -gt 0 ]; do
 done
 
 case "$target" in
-  preset_loader|measurements|session|settings|calibration|play_script) ;;
+  preset_loader|measurements|session|settings|calibration|play_script|export_names) ;;
   *) echo "fuzz.sh: unknown target $target" >&2; exit 2 ;;
 esac
 [ -n "$work" ] || work="$root/build/fuzz_${target}_work"
@@ -100,6 +100,19 @@ if c is not None: print(json.dumps(c))' "$preset" > "$work/corpus/$(basename "$p
     done
     printf '"\\"%s\\""\n' calibrated_on method K p fit_rows equally_good leave_one_out \
       > "$work/extra.dict" ;;
+  export_names)
+    # Names as the presets give them, and the bytes that broke the writers: a line break that
+    # starts an OBJ statement, markup, an escape.
+    grep -ho '"name": *"[^"]*"' "$root"/presets/*.json | sed 's/"name": *"\(.*\)"/\1/' |
+      awk -v dir="$work/corpus" '{print > (dir "/name" NR ".txt")}'
+    printf 'Evil\nv 1e9 1e9 1e9\n<b>&\033[2J' > "$work/corpus/hostile.txt"
+    cat > "$work/extra.dict" <<'NAMES'
+"\x0av "
+"<"
+"&"
+"\x1b["
+NAMES
+    ;;
   play_script)
     cp "$root"/tests/play/*.json "$work/corpus/"
     printf '"\\"%s\\""\n' steps drag dx click at ctrl click_photo key type resize frames \

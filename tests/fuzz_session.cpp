@@ -22,8 +22,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     }
     return 0;
   }
-  if (!foldlab::validate(session->current.parameters).empty() ||
-      !foldlab::validate(session->loaded.parameters).empty() ||
+  if ((session->fabric_restored && (!foldlab::validate(session->current.parameters).empty() ||
+                                    !foldlab::validate(session->loaded.parameters).empty())) ||
       session->grid_resolution < foldlab::gui::kMinGridResolution ||
       session->grid_resolution > foldlab::gui::kMaxGridResolution) {
     std::abort();  // accepted a session the explorer cannot use as is

@@ -541,6 +541,16 @@ TEST_F(CliTest, ACappedFoldCountIsSmallEnoughToUseAndFlaggedWhereverItIsShown) {
   ASSERT_EQ(lines.size(), 3u) << csv.out;
   EXPECT_EQ(lines[0], "h,n,Q,z_max_mm,regime,n_capped");
   EXPECT_TRUE(lines[1].ends_with(",wrinkled,1")) << lines[1];
+
+  // compare, on a paper row with those inputs set: the table and the JSON say so too.
+  args = many;
+  args.insert(args.begin(), {"compare", "--preset", kH900});
+  const RunResult compared = run(args);
+  ASSERT_EQ(compared.exit_status, 0) << compared.err;
+  EXPECT_TRUE(contains(compared.out, "| 10000+ (capped) |")) << compared.out;
+  args.push_back("--json");
+  const json rows = foldlab::testing::json_output(run(args));
+  EXPECT_EQ(rows.at(0).at("exact").at("n_capped"), true) << rows.dump();
 }
 
 TEST_F(CliTest, SweepRefusesEndsThatCannotDescribeACloth) {
@@ -577,9 +587,13 @@ TEST_F(CliTest, StressSeedMustBeAnUnsigned64BitNumber) {
 }
 
 TEST_F(CliTest, BenchRefusesMoreSolvesThanItsBudget) {
-  const RunResult r = run({"bench", "--cases", "1000000", "--repeats", "1000"});
+  // 1,000,000 cases x 10 would take about an hour and 10 GB.
+  RunResult r = run({"bench", "--cases", "1000000", "--repeats", "10"});
   EXPECT_EQ(r.exit_status, 2);
-  EXPECT_TRUE(contains(r.err, "[1, 10000000]")) << r.err;
+  EXPECT_TRUE(contains(r.err, "1000000 must be a whole number from 1 to 100000")) << r.err;
+  r = run({"bench", "--cases", "100000", "--repeats", "11"});
+  EXPECT_EQ(r.exit_status, 2);
+  EXPECT_TRUE(contains(r.err, "--cases x --repeats = 1100000 must be in [1, 1000000]")) << r.err;
 }
 
 TEST_F(CliTest, SweepPrintsOneRowPerStepAsCsv) {
@@ -730,6 +744,19 @@ TEST_F(CliTest, OverflowingNumberIsNamedAsSuch) {
   EXPECT_TRUE(contains(r.err, "beyond the range of a double")) << r.err;
 }
 
+// Counts are read as numbers, so that 1e3 is 1000 and 2.5 is refused as not whole.
+TEST_F(CliTest, StressAndBenchCountsAcceptWholeNumbersInAnyNotation) {
+  RunResult r = run({"stress", "--samples", "1e3", "--json"});
+  EXPECT_EQ(r.exit_status, 0) << r.err;
+  EXPECT_EQ(json::parse(r.out).at("samples"), 1000) << r.out;
+  r = run({"stress", "--samples", "2.5"});
+  EXPECT_EQ(r.exit_status, 2);
+  EXPECT_TRUE(contains(r.err, "2.5 must be a whole number from 1 to 10000000")) << r.err;
+  r = run({"bench", "--cases", "1e0", "--repeats", "1.5"});
+  EXPECT_EQ(r.exit_status, 2);
+  EXPECT_TRUE(contains(r.err, "1.5 must be a whole number from 1 to 1000")) << r.err;
+}
+
 TEST_F(CliTest, ExportSamplesAcceptWholeNumbersInAnyNotation) {
   const fs::path svg = dir_ / "lines.svg";
   const fs::path csv = dir_ / "lines.csv";
@@ -812,6 +839,50 @@ TEST_F(CliTest, NamesReachTheTerminalSpeltOutNeverAsEscapes) {
   ASSERT_EQ(solved.exit_status, 0) << solved.err;
   EXPECT_TRUE(clean(solved));
   EXPECT_TRUE(contains(solved.out, spelt)) << solved.out;
+}
+
+// An output that exists and that the user could not open for writing is refused (exit 1), not
+// replaced by a rename that only needs the folder's permission: a read-only file of the user's, and
+// another user's file in a world-writable folder. Run as an unprivileged user (nobody) when the
+// suite runs as root, for whom every file is writable.
+TEST_F(CliTest, AnOutputTheUserCouldNotOpenForWritingIsRefusedNotReplaced) {
+  const bool root = ::geteuid() == 0;
+  constexpr uid_t kNobody = 65534;
+  const auto run_as_user = [&](std::vector<std::string> args) {
+    if (!root) {
+      return run(args);
+    }
+    args.insert(args.begin(), {"--reuid=65534", "--regid=65534", "--clear-groups", kExecutable});
+    return foldlab::testing::run_process("setpriv", args, dir_);
+  };
+  fs::permissions(dir_, fs::perms::all);  // rwxrwxrwx, not sticky
+  const fs::path read_only = dir_ / "read-only.obj";
+  std::ofstream(read_only) << "keep\n";
+  fs::permissions(read_only,
+                  fs::perms::owner_read | fs::perms::group_read | fs::perms::others_read);
+  if (root) {
+    ASSERT_EQ(::chown(read_only.c_str(), kNobody, kNobody), 0);
+  }
+  RunResult r = run_as_user({"export", "--grid", "8x8", "--obj", read_only.string()});
+  EXPECT_EQ(r.exit_status, 1) << r.err;
+  EXPECT_TRUE(contains(r.err, "cannot write " + read_only.string() + ": read-only")) << r.err;
+  EXPECT_EQ(read_file(read_only), "keep\n");
+  if (!root) {
+    GTEST_SKIP() << "another user's file needs a second user: run as root to test it";
+  }
+  const fs::path theirs = dir_ / "theirs.svg";
+  std::ofstream(theirs) << "keep\n";  // root's, 0644
+  r = run_as_user({"export", "--svg", theirs.string()});
+  EXPECT_EQ(r.exit_status, 1) << r.err;
+  EXPECT_TRUE(contains(r.err, "cannot write " + theirs.string() + ": owned by another user"))
+      << r.err;
+  EXPECT_EQ(read_file(theirs), "keep\n");
+  struct stat info {};
+  ASSERT_EQ(::stat(theirs.c_str(), &info), 0);
+  EXPECT_EQ(info.st_uid, 0u);
+  // What the user may write is still written.
+  r = run_as_user({"export", "--svg", (dir_ / "mine.svg").string()});
+  EXPECT_EQ(r.exit_status, 0) << r.err;
 }
 
 TEST_F(CliTest, NoOutputOverwritesAnInputOrAnotherOutputThroughLinks) {

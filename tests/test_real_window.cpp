@@ -75,9 +75,10 @@ class RealWindowTest : public foldlab::testing::TempDirTest {
   }
 
   // Opens the explorer in a window on a fresh X server, runs the xdotool commands of `actions`
-  // (a shell fragment; $WID is the window), then asks it to close as a desktop would (SIGTERM)
-  // and returns its --report.
-  json run_window(const std::string& size, const std::string& actions) {
+  // (a shell fragment; $WID is the window), then asks it to close as a desktop would (SIGTERM,
+  // or `signal`) and returns its --report.
+  json run_window(const std::string& size, const std::string& actions,
+                  const std::string& signal = "TERM") {
     const fs::path report = dir_ / "report.json";
     const fs::path errors = dir_ / "window-stderr.txt";
     const std::string script =
@@ -90,7 +91,9 @@ class RealWindowTest : public foldlab::testing::TempDirTest {
         "sleep 2\n" +
         actions +
         "\nsleep 1.5\n"  // the session is kept a second after the last change
-        "kill -TERM $pid\n"
+        "kill -" +
+        signal +
+        " $pid\n"
         "wait $pid\n";
     const RunResult r = foldlab::testing::run_process(
         "xvfb-run",
@@ -160,6 +163,15 @@ TEST_F(RealWindowTest, AWindowSqueezedToOnePixelAndBackKeepsRunning) {
                                 "xdotool windowsize --sync $WID 1280 800\nsleep 1\n");
   EXPECT_EQ(after.at("display"), json::array({1280.0, 800.0}));
   EXPECT_TRUE(after.at("layout").at("fills_window").get<bool>()) << after.dump();
+}
+
+// Closing the terminal the explorer was started from hangs it up (SIGHUP): the session is kept as
+// when the desktop asks the window to close.
+TEST_F(RealWindowTest, ClosingTheTerminalKeepsTheSession) {
+  const json after = run_window("1280x800", "xdotool key ctrl+plus\nsleep 0.5\n", "HUP");
+  const json session = read_json(config() / "foldlab" / "session.json");
+  EXPECT_EQ(session.at("view").at("ui_scale_percent"), 110) << session.dump();
+  EXPECT_EQ(after.at("appearance").at("scale_percent"), 110);
 }
 
 }  // namespace

@@ -69,6 +69,38 @@ TEST(Sweep, LogarithmicEndsFarApartStayFinite) {
   EXPECT_NEAR(axis.value(1000), 1e10, 1e-3);
 }
 
+// The ends are the numbers given: recomputed through exp(log(x)) they came out a few ulps past
+// them (50.000000000000014), and the input's own range refused the last row.
+TEST(Sweep, TheEndsAreExactlyTheValuesGiven) {
+  for (const auto& [from, to] :
+       {std::pair{1e-3, 50.0}, std::pair{1e-2, 1e-9}, std::pair{0.1, 0.3}, std::pair{3.0, 7.0}}) {
+    for (const bool logarithmic : {true, false}) {
+      for (const int steps : {2, 3, 10000}) {
+        SweepAxis axis;
+        axis.from = from;
+        axis.to = to;
+        axis.steps = steps;
+        axis.logarithmic = logarithmic;
+        EXPECT_EQ(axis.value(0), from);
+        EXPECT_EQ(axis.value(steps - 1), to) << from << " " << to << " " << steps;
+        for (int i = 0; i < steps; i += 997) {
+          EXPECT_GE(axis.value(i), std::min(from, to));
+          EXPECT_LE(axis.value(i), std::max(from, to));
+        }
+      }
+    }
+  }
+  SweepAxis t;
+  t.key = "t";
+  t.from = 1e-3;
+  t.to = 50.0;
+  t.steps = 10000;
+  t.logarithmic = true;
+  const std::vector<SweepPoint> points = sweep(Parameters{}, t);
+  EXPECT_TRUE(points.back().valid) << points.back().value;
+  EXPECT_EQ(points.back().value, 50.0);
+}
+
 TEST(Sweep, EndsOutsideTheInputTableAreRefusedWithTheRange) {
   // Subnormal, below the table's range, and K far beyond c's range divided by 1 - nu^2.
   const std::optional<std::string> subnormal = check_axis({"w", 1e-320, 0.01, 2000, true});

@@ -65,9 +65,9 @@ Command add_bench_command(CLI::App& app) {
   command
       ->add_option("--cases", options->cases,
                    "random realistic fabrics in the set (default 1000; Tables 1-2 are added)")
-      ->check(CLI::Range(1, 1000000));
+      ->transform(app::whole_number_in(1, kMaxBenchCases));
   command->add_option("--repeats", options->repeats, "timed solves per case (default 5)")
-      ->check(CLI::Range(1, 1000));
+      ->transform(app::whole_number_in(1, 1000));
   command
       ->add_option("--threads", options->threads,
                    "threads for the parallel grid (default: hardware threads)")

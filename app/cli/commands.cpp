@@ -218,8 +218,10 @@ Command add_compare_command(CLI::App& app) {
           nlohmann::json row = {{"name", presets[i].name}};
           for (int m = 0; m < 2; ++m) {
             const PublishedComparison& c = rows[static_cast<std::size_t>(m)][i];
-            row[m == 0 ? "paper" : "exact"] = {
-                {"n", c.solution.n}, {"z_max_mm", c.solution.z_max_mm}, {"Q", c.solution.Q}};
+            row[m == 0 ? "paper" : "exact"] = {{"n", c.solution.n},
+                                               {"n_capped", c.solution.n_capped},
+                                               {"z_max_mm", c.solution.z_max_mm},
+                                               {"Q", c.solution.Q}};
           }
           const PublishedResult& pub = presets[i].published;
           row["published"] = {
@@ -260,7 +262,8 @@ Command add_compare_command(CLI::App& app) {
                   << " | " << optional_number(pub.Q, "%.2f");
         for (int m = 0; m < 2; ++m) {
           const PublishedComparison& c = rows[static_cast<std::size_t>(m)][i];
-          std::cout << " | " << c.solution.n << " | "
+          // "+" as in `sweep`: eq. 10 asked for more folds than the cap, which is shown.
+          std::cout << " | " << c.solution.n << (c.solution.n_capped ? "+ (capped)" : "") << " | "
                     << with_error(c.solution.z_max_mm, c.z_error, "%.1f") << " | "
                     << with_error(c.solution.Q, c.Q_error, "%.3f");
         }

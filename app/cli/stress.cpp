@@ -26,7 +26,7 @@ Command add_stress_command(CLI::App& app) {
       "numerical stress test: both methods over t 0.01-2 mm, E 1-5000 MPa, w 1e-7-1e-4 N/mm², "
       "h and L 100-5000 mm, d 0-L/2, nu 0-0.49; exit 1 on any NaN, inf or solve > 1 s");
   command->add_option("--samples", options->samples, "input samples (default 100000)")
-      ->check(CLI::Range(std::int64_t{1}, kMaxStressSamples));
+      ->transform(app::whole_number_in(1, kMaxStressSamples));
   // Read as text: CLI11 turns "-1" and 2^64 into 2^64 - 1 when reading an unsigned number.
   command->add_option("--seed", options->seed, "seed of the samples, 0 to 2^64 - 1 (default 1)");
   command->add_option("--threads", options->threads, "worker threads (default: hardware threads)")

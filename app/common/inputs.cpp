@@ -1,5 +1,7 @@
 #include "app/common/inputs.hpp"
 
+#include <cmath>
+#include <cstdint>
 #include <filesystem>
 #include <iostream>
 
@@ -53,6 +55,23 @@ CLI::Validator non_empty_path() {
                             : std::string();
       },
       "FILE", "non-empty path");
+}
+
+CLI::Validator whole_number_in(std::int64_t lo, std::int64_t hi) {
+  const std::string range =
+      "a whole number from " + std::to_string(lo) + " to " + std::to_string(hi);
+  return CLI::Validator(
+      [lo, hi, range](std::string& text) {
+        // Read as a number, so that 1e3 is 1000, then handed on as digits to the option's type.
+        const std::optional<double> value = parse_number(text);
+        if (!value || *value != std::floor(*value) || *value < static_cast<double>(lo) ||
+            *value > static_cast<double>(hi)) {
+          return detail::cut(text) + " must be " + range;
+        }
+        text = std::to_string(static_cast<std::int64_t>(*value));
+        return std::string();
+      },
+      "N", range);
 }
 
 void add_input_options(CLI::App& command, InputOptions& options) {

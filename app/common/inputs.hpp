@@ -2,6 +2,7 @@
 // reads first (a preset, --set overrides and --method).
 #pragma once
 
+#include <cstdint>
 #include <functional>
 #include <optional>
 #include <stdexcept>
@@ -61,6 +62,9 @@ void check_distinct_files(const std::vector<NamedPath>& outputs,
 // For every option that names a file: an empty path (`--preset ''`, an unset shell variable) is
 // refused as invalid input rather than read as "not given", which would silently use a default.
 CLI::Validator non_empty_path();
+// A count given in any notation ("1e3" is 1000), refused unless whole and within [lo, hi]; use it
+// with ->transform() on an integer option.
+CLI::Validator whole_number_in(std::int64_t lo, std::int64_t hi);
 
 // --preset, --set, --method and --law, for every command that solves.
 void add_input_options(CLI::App& command, InputOptions& options);

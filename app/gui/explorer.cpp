@@ -61,8 +61,10 @@ Explorer::Explorer(const Preset& initial, const std::string& initial_path, bool 
       error.clear();
     }
     if (s) {
-      document_.adopt(s->loaded, s->loaded_preset_path);
-      document_.apply(Edit::replace(s->current.parameters));
+      if (s->fabric_restored) {
+        document_.adopt(s->loaded, s->loaded_preset_path);
+        document_.apply(Edit::replace(s->current.parameters));
+      }
       document_.scene().set_grid_resolution(s->grid_resolution, s->grid_resolution);
       if (s->compare) {
         document_.compare.pin(*s->compare);

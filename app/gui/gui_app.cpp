@@ -137,8 +137,9 @@ void apply_view_settings(Explorer& explorer, const std::vector<std::string>& set
   }
 }
 
-// SIGTERM and SIGINT (a desktop's log-out, Ctrl+C in the terminal) close the window as its close
-// button does, so that the session is kept and --report still prints.
+// SIGTERM, SIGINT and SIGHUP (a desktop's log-out, Ctrl+C in the terminal, the terminal the
+// explorer was started from closed) close the window as its close button does, so that the
+// session is kept and --report still prints.
 volatile std::sig_atomic_t close_requested = 0;
 void request_close(int) {
   close_requested = 1;
@@ -290,6 +291,7 @@ int run(Surface& surface, const GuiRunOptions& options, const Preset& preset, bo
   if (interactive) {
     std::signal(SIGTERM, request_close);
     std::signal(SIGINT, request_close);
+    std::signal(SIGHUP, request_close);
   }
   ScriptedRun script(options.frames, std::move(animation), std::move(player));
   FrameTimes times(options.report);

@@ -88,6 +88,9 @@ ConfigFile read_config_file(const std::filesystem::path& path, std::uintmax_t li
   if (info.st_uid != ::geteuid()) {
     return refuse(name + " belongs to another user; not read");
   }
+  if (std::optional<std::string> too_large = oversized_file(path, limit)) {
+    return refuse(*too_large);  // said in the words of the listing, before the reader's check
+  }
   try {
     file.text = read_text_file(path, limit);
   } catch (const ReadError& e) {
@@ -125,13 +128,18 @@ std::optional<Session> load_session(const std::filesystem::path& path, std::stri
   }
   std::optional<Session> session = session_from_text(*file.text, path.string(), error);
   if (!session) {
-    // A session of ours with a value out of range is replaced by the next save; anything else
-    // (another program's JSON, text, a file this format cannot parse) is left alone.
+    may_save = false;  // another program's JSON, text, a file this format cannot parse
+  } else if (!session->complete) {
+    // What could not be read is kept beside it before the next save replaces the file.
+    std::filesystem::path kept = path;
+    kept += ".unread";
     try {
-      const nlohmann::json j = parse_json(*file.text, path.string());
-      may_save = j.is_object() && j.contains("foldlab_session");
-    } catch (const std::exception&) {
+      write_file_atomically(kept, *file.text);
+      session->notices.push_back("The session file as it was is kept as " + kept.string() + ".");
+    } catch (const WriteError& e) {
       may_save = false;
+      session->notices.push_back(std::string("The session file could not be kept aside (") +
+                                 e.what() + "), so it is not saved over.");
     }
   }
   return session;
@@ -139,12 +147,44 @@ std::optional<Session> load_session(const std::filesystem::path& path, std::stri
 
 std::optional<Session> session_from_text(const std::string& text, const std::string& origin,
                                          std::string& error) {
+  nlohmann::json j;
   try {
-    const nlohmann::json j = parse_json(text, origin);
-    Session s;
-    s.current = preset_from_json(j.at("current"), origin + " (current)");
-    s.loaded = preset_from_json(j.at("loaded"), origin + " (loaded)");
+    j = parse_json(text, origin);
+    if (!j.is_object() || !j.contains("foldlab_session")) {
+      throw std::runtime_error("not a FoldLab session");
+    }
+  } catch (const std::exception& e) {
+    error = "the saved session " + origin + " could not be read (" + e.what() +
+            "); starting from the default preset";
+    return std::nullopt;
+  }
+  // Each part is read on its own, so that one bad value (a d of 1e308) drops its part alone and
+  // the rest (the other fabric, B, the view's switches) is still the user's.
+  Session s;
+  const auto dropped = [&](const std::string& what, const std::exception& e) {
+    s.notices.push_back("The saved session's " + what + " was not restored: " + e.what());
+    s.complete = false;
+  };
+  std::optional<Preset> current;
+  std::optional<Preset> loaded;
+  try {
+    current = preset_from_json(j.at("current"), origin + " (current)");
+  } catch (const std::exception& e) {
+    dropped("fabric being edited", e);
+  }
+  try {
+    loaded = preset_from_json(j.at("loaded"), origin + " (loaded)");
     s.loaded_preset_path = j.value("loaded_preset_path", "");
+  } catch (const std::exception& e) {
+    dropped("preset it came from", e);
+  }
+  if (current || loaded) {
+    s.current = current ? *current : *loaded;
+    s.loaded = loaded ? *loaded : *current;
+  } else {
+    s.fabric_restored = false;
+  }
+  try {
     const nlohmann::json& view = j.at("view");
     // Read as a double: a huge stored number must be clamped, not converted to int first.
     const double stored_resolution =
@@ -159,20 +199,17 @@ std::optional<Session> session_from_text(const std::string& text, const std::str
           kMaxGridResolution, s.grid_resolution));
     }
     s.view = SessionSettings::from_json(view);
-    // B alone is dropped when it cannot be read: A and the view are still the user's.
-    if (j.contains("compare")) {
-      try {
-        s.compare = preset_from_json(j.at("compare"), origin + " (compare)");
-      } catch (const std::exception& e) {
-        s.notices.push_back(std::string("The fabric pinned as B was not restored: ") + e.what());
-      }
-    }
-    return s;
   } catch (const std::exception& e) {
-    error = "the saved session " + origin + " could not be read (" + e.what() +
-            "); starting from the default preset";
-    return std::nullopt;
+    dropped("view settings", e);
   }
+  if (j.contains("compare")) {
+    try {
+      s.compare = preset_from_json(j.at("compare"), origin + " (compare)");
+    } catch (const std::exception& e) {
+      dropped("fabric pinned as B", e);
+    }
+  }
+  return s;
 }
 
 void save_session(const std::filesystem::path& path, const Session& session) {

@@ -71,8 +71,13 @@ struct Session {
   // Everything else the panels and the explorer remember (the 3D view's switches, the UI scale
   // and theme, whether the layout is automatic, expert mode), saved by each of them.
   SessionSettings view;
-  // What was changed while loading (a grid resolution brought into the slider's range), to show.
+  // What was changed or dropped while loading (a grid resolution brought into the slider's range,
+  // a part that did not read), to show.
   std::vector<std::string> notices;
+  // False when a part was dropped: the file is kept aside before it is saved over.
+  bool complete = true;
+  // False when neither fabric could be read: the explorer keeps the preset it opened with.
+  bool fabric_restored = true;
 };
 
 // nullopt when the file at `path` is absent or at most `limit` bytes; else a sentence saying that
@@ -98,8 +103,10 @@ std::filesystem::path config_dir();
 std::filesystem::path user_presets_dir();
 
 // Reads a session file; nullopt when it is absent (`error` empty) or unusable (`error` says why;
-// the caller starts from the default preset and shows it). `may_save` turns false when what is
-// there could not be read as a session: the caller must not save over it.
+// the caller starts from the default preset and shows it). A session with a part that does not
+// read keeps the rest, says what was dropped, and keeps the file as it was beside it
+// (PATH.unread). `may_save` turns false when what is there could not be read as a session, or
+// could not be kept aside: the caller must not save over it.
 std::optional<Session> load_session(const std::filesystem::path& path, std::string& error,
                                     bool& may_save);
 // The same from the file's text; `origin` names it in `error`.

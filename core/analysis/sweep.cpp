@@ -11,13 +11,19 @@
 namespace foldlab {
 
 double SweepAxis::value(int i) const {
-  const double f = steps > 1 ? static_cast<double>(i) / (steps - 1) : 0.0;
-  if (logarithmic) {
-    // In log space: to / from overflows for ends far apart (1e-320 to 0.01).
-    const double log_from = std::log(from);
-    return std::exp(log_from + (std::log(to) - log_from) * f);
+  // The ends are the values given, not recomputed: exp(log(50)) is 50.000000000000014, which the
+  // input's range would refuse.
+  if (i <= 0 || steps <= 1) {
+    return from;
   }
-  return from + (to - from) * f;
+  if (i >= steps - 1) {
+    return to;
+  }
+  const double f = static_cast<double>(i) / (steps - 1);
+  // A log axis steps in log space: to / from overflows for ends far apart (1e-320 to 0.01).
+  const double value = logarithmic ? std::exp(std::log(from) + (std::log(to) - std::log(from)) * f)
+                                   : from + (to - from) * f;
+  return std::clamp(value, std::min(from, to), std::max(from, to));
 }
 
 // The cloth, its hanging and eq. 7's K: the inputs a sweep or the regime map can vary.

@@ -182,6 +182,13 @@ void write_file_atomically(const std::filesystem::path& path, std::string_view c
     throw WriteError(path.string() + through + ": cannot write: " + file_kind(target_stat.st_mode) +
                      ", not a regular file (FoldLab writes only regular files)");
   }
+  // Renaming over a file needs only the folder's write permission: without this check a save
+  // would replace a read-only file, or another user's file in a shared folder, and take it over.
+  if (exists && ::faccessat(AT_FDCWD, target.c_str(), W_OK, AT_EACCESS) != 0) {
+    const bool theirs = target_stat.st_uid != ::geteuid();
+    throw WriteError("cannot write " + path.string() + through + ": " +
+                     (theirs ? "owned by another user" : "read-only") + " (" + reason(errno) + ")");
+  }
   remove_stale_temporaries(target);
   // Unique per process and per call, so concurrent saves of one path never share a temporary.
   static std::atomic<unsigned> counter{0};

@@ -35,7 +35,8 @@ std::string read_text_file(const std::filesystem::path& path, std::uintmax_t max
 // Writes `contents` to a temporary file beside `path`, flushes it to disk and renames it over
 // `path`: readers see the old file or the new one, never a mix. A symbolic link is followed to
 // its target, which is replaced (the link stays); a target that exists but is not a regular file
-// (directory, FIFO, device) is refused. Temporaries of this path left by a killed process are
+// (directory, FIFO, device), or that the user could not open for writing (read-only, another
+// user's), is refused. Temporaries of this path left by a killed process are
 // removed. Throws WriteError naming the path and the system's reason.
 void write_file_atomically(const std::filesystem::path& path, std::string_view contents);
 
