@@ -2793,13 +2793,13 @@ TEST_F(ExplorerTest, EveryPanelHasADistinctNameAndTheReportNamesComeFromTheList)
 
 // A/B comparison. B is pinned with the Results panel's button and A is changed through a slider
 // drag, as a designer would; every number B shows is checked against a direct solve of B's
-// parameters, and B − A against two independent solves.
-TEST_F(ExplorerTest, PinnedBKeepsItsNumbersWhileADragChangesAAndTheTableShowsBMinusA) {
+// parameters, and A − B (the change since the pin) against two independent solves.
+TEST_F(ExplorerTest, PinnedBKeepsItsNumbersWhileADragChangesAAndTheTableShowsTheChangeAMinusB) {
   open_explorer("equations", kDejaVuSans);
   explorer_->load_preset_file(kPresetsDir / "default.json");  // calibrated: intervals shown
   frame();
   frame();
-  EXPECT_EQ(last_text_.find("B − A"), std::string::npos) << "no table before a pin";
+  EXPECT_EQ(last_text_.find("A − B"), std::string::npos) << "no table before a pin";
   // The proportional font's spaces are found by the player's reading of the glyphs.
   ASSERT_EQ(play(*explorer_, {{"steps", {{{"click", "Pin as B"}}}}}, [&] { frame(); }), 0);
   ASSERT_TRUE(document().compare.pinned());
@@ -2820,7 +2820,7 @@ TEST_F(ExplorerTest, PinnedBKeepsItsNumbersWhileADragChangesAAndTheTableShowsBMi
   EXPECT_DOUBLE_EQ(shown_b.z_max_mm, solved_b.z_max_mm);
   ASSERT_NE(solved_a.z_max_mm, solved_b.z_max_mm);
 
-  // Each quantity's row of the table: the symbol, A, B and B − A, and under A and B their
+  // Each quantity's row of the table: the symbol, A, B and A − B, and under A and B their
   // intervals, from the calibration the preset carries.
   frame();
   const std::string text = frame();
@@ -2837,17 +2837,18 @@ TEST_F(ExplorerTest, PinnedBKeepsItsNumbersWhileADragChangesAAndTheTableShowsBMi
   };
   const auto a_cells = rows_of(a);
   const auto b_cells = rows_of(b);
+  // The change since B was pinned: A − B.
   const std::array<std::string, 3> differences = {
-      detail::printf_string("%+d", solved_b.n - solved_a.n),
-      detail::printf_string("%+.4f", solved_b.Q - solved_a.Q),
-      detail::printf_string("%+.2f mm", solved_b.z_max_mm - solved_a.z_max_mm)};
+      detail::printf_string("%+d", solved_a.n - solved_b.n),
+      detail::printf_string("%+.4f", solved_a.Q - solved_b.Q),
+      detail::printf_string("%+.2f mm", solved_a.z_max_mm - solved_b.z_max_mm)};
   const char* const symbols[] = {"n", "Q", "z_max"};
   for (int i = 0; i < 3; ++i) {
     const std::string rows = std::string("\n") + symbols[i] + a_cells[i].first + b_cells[i].first +
                              differences[i] + "\n" + a_cells[i].second + b_cells[i].second + "\n";
     EXPECT_TRUE(shows(text, rows)) << rows << "\n" << text;
   }
-  EXPECT_TRUE(shows(text, "B − A")) << text;
+  EXPECT_TRUE(shows(text, "A − B\nsince pinned")) << text;
   // The labels wrap in the panel: read without the line breaks.
   std::string unwrapped = text;
   std::erase(unwrapped, '\n');
@@ -3021,6 +3022,59 @@ TEST_F(ExplorerTest, APlayedScriptPinsSwapsAndClearsB) {
   EXPECT_FALSE(document().compare.pinned());
   press('Y', true);  // redo
   EXPECT_TRUE(document().compare.pinned());
+}
+
+// Each fabric carries the preset it came from through pin, swap, reset, undo and the session: a
+// swap once left A tied to B's preset (the header said "Silk chiffon" over linen's values, and
+// "Reset to preset" then made A chiffon too).
+TEST_F(ExplorerTest, EachFabricKeepsItsOwnPresetThroughPinSwapResetUndoAndTheSession) {
+  const fs::path session = dir_ / "session.json";
+  open_explorer("equations", {}, session);
+  const Preset linen = load_preset(kPresetsDir / "fabric-linen-medium.json");
+  const Preset chiffon = load_preset(kPresetsDir / "fabric-silk-chiffon.json");
+  explorer_->load_preset_file(kPresetsDir / "fabric-linen-medium.json");
+  frame();
+  ASSERT_EQ(play(*explorer_, {{"steps", {{{"click", "Pin as B"}}}}}, [&] { frame(); }), 0);
+  explorer_->load_preset_file(kPresetsDir / "fabric-silk-chiffon.json");
+  frame();
+  ASSERT_EQ(play(*explorer_, {{"steps", {{{"click", "Swap A and B"}}}}}, [&] { frame(); }), 0);
+  const auto expect_a_is = [&](const Preset& a, const Preset& b, const char* when) {
+    SCOPED_TRACE(when);
+    EXPECT_EQ(document().loaded().name, a.name);
+    EXPECT_EQ(fabric_label(document()), a.name);
+    EXPECT_EQ(shown(), a.parameters);
+    EXPECT_FALSE(document().unsaved());
+    ASSERT_TRUE(document().compare.pinned());
+    EXPECT_EQ(document().compare.b().name, b.name);
+    EXPECT_EQ(document().compare.b_origin().name, b.name);
+    EXPECT_EQ(document().compare.b().parameters, b.parameters);
+  };
+  expect_a_is(linen, chiffon, "after the swap");
+  const std::string header = squeezed(frame());
+  EXPECT_NE(header.find(squeezed(linen.name)), std::string::npos) << header;
+  EXPECT_EQ(header.find(squeezed(chiffon.name + " (unsaved changes)")), std::string::npos);
+
+  // Reset to preset, after a change, gives linen back, not chiffon.
+  ASSERT_EQ(explorer_->set_input("h", 2400.0), std::nullopt);
+  frame();
+  EXPECT_EQ(fabric_label(document()), linen.name + " (edited)");
+  click("Reset to preset");
+  expect_a_is(linen, chiffon, "after reset");
+
+  // Undo the reset, the change and the swap: chiffon is A again, with linen as B.
+  press('Z', true);
+  press('Z', true);
+  press('Z', true);
+  expect_a_is(chiffon, linen, "before the swap");
+  press('Y', true);  // redo the swap
+  expect_a_is(linen, chiffon, "redone");
+
+  // The session keeps B's preset with it.
+  explorer_->save_session_now();
+  open_explorer("equations", {}, session, true);
+  expect_a_is(linen, chiffon, "restored");
+  ASSERT_EQ(play(*explorer_, {{"steps", {{{"click", "Swap A and B"}}}}}, [&] { frame(); }), 0);
+  expect_a_is(chiffon, linen, "swapped back after a restart");
 }
 
 TEST_F(ExplorerTest, BIsRestoredWithTheSession) {

@@ -17,13 +17,13 @@ Scene& Comparison::scene(int grid_nx) {
 
 const ModelStanding& Comparison::standing() {
   if (!standing_) {
-    standing_ = model_standing(b_->parameters, b_->calibration);
+    standing_ = model_standing(b_->fabric.parameters, b_->fabric.calibration);
   }
   return *standing_;
 }
 
-void Comparison::pin(Preset b) {
-  scene_.set_parameters(b.parameters);
+void Comparison::pin(PinnedFabric b) {
+  scene_.set_parameters(b.fabric.parameters);
   b_ = std::move(b);
   standing_.reset();
   ++changes_;
@@ -35,23 +35,8 @@ void Comparison::clear() {
   ++changes_;
 }
 
-void Comparison::name_a(std::string label, const Parameters& parameters) {
-  a_label_ = std::move(label);
-  a_label_parameters_ = parameters;
-}
-
-std::optional<std::string> Comparison::a_name_for(const Parameters& parameters) const {
-  if (a_label_parameters_ && *a_label_parameters_ == parameters) {
-    return a_label_;
-  }
-  return std::nullopt;
-}
-
 std::string fabric_label(const Document& document) {
   const Parameters& parameters = document.scene().parameters();
-  if (std::optional<std::string> swapped = document.compare.a_name_for(parameters)) {
-    return *swapped;
-  }
   const std::string& name = document.loaded().name;
   return parameters == document.loaded().parameters ? name : name + " (edited)";
 }
@@ -63,9 +48,17 @@ Preset current_fabric(const Document& document) {
   return fabric;
 }
 
+namespace {
+
+PinnedFabric fabric_a(const Document& document) {
+  return {current_fabric(document), document.loaded(), document.loaded_path()};
+}
+
+}  // namespace
+
 void pin_as_b(Document& document) {
-  Preset b = current_fabric(document);
-  const std::string label = b.name;
+  PinnedFabric b = fabric_a(document);
+  const std::string label = b.fabric.name;
   document.end_step();  // a drag still open is a step of its own
   document.compare.pin(std::move(b));
   document.end_step();
@@ -78,21 +71,21 @@ void swap_a_and_b(Document& document) {
   if (!document.compare.pinned()) {
     return;
   }
-  const Preset former_b = document.compare.b();
-  const Preset former_a = current_fabric(document);
+  const PinnedFabric former_b = document.compare.pinned_fabric();
+  const PinnedFabric former_a = fabric_a(document);
   document.end_step();
   // B first, so that the edit of A closes one undo step holding both changes.
   document.compare.pin(former_a);
   if (const std::optional<std::string> problem =
-          document.apply(Edit::replace(former_b.parameters))) {
+          document.take_fabric(former_b.origin, former_b.origin_path, former_b.fabric.parameters)) {
     document.compare.pin(former_b);
     document.notify("Not swapped: " + *problem, MessageKind::error);
     return;
   }
-  document.compare.name_a(former_b.name, former_b.parameters);
   document.session_dirty = true;
-  document.notify("Swapped: A is \"" + former_b.name + "\", B is \"" + former_a.name + "\".",
-                  MessageKind::info);
+  document.notify(
+      "Swapped: A is \"" + fabric_label(document) + "\", B is \"" + former_a.fabric.name + "\".",
+      MessageKind::info);
 }
 
 void clear_b(Document& document) {

@@ -17,12 +17,21 @@ namespace foldlab::gui {
 
 class Document;
 
+// A fabric pinned as B: its label and last valid parameters (`fabric`), and the preset it came
+// from with that preset's file (`origin`, `origin_path`, empty for the built-in default) — what
+// "Reset to preset", "Save as" and the "(edited)" marker compare against once a swap makes it A.
+struct PinnedFabric {
+  Preset fabric;
+  Preset origin;
+  std::string origin_path;
+};
+
 class Comparison {
  public:
   bool pinned() const { return b_.has_value(); }
   // B as a preset: its name is the label shown, its parameters are valid, its calibration is the
   // one its intervals come from. Precondition: pinned().
-  const Preset& b() const { return *b_; }
+  const Preset& b() const { return b_->fabric; }
   // B's scene, at `grid_nx` vertices a side (A's, so that the two cloths are drawn alike).
   // Precondition: pinned().
   Scene& scene(int grid_nx);
@@ -33,34 +42,34 @@ class Comparison {
   // Counts pins and clears, so that views know when B is another fabric.
   std::uint64_t changes() const { return changes_; }
 
-  // Precondition: validate(b.parameters) is empty.
-  void pin(Preset b);
+  // The preset B came from and its file. Precondition: pinned().
+  const Preset& b_origin() const { return b_->origin; }
+  const std::string& b_origin_path() const { return b_->origin_path; }
+  // B with its identity, as undo and the session keep it. Precondition: pinned().
+  const PinnedFabric& pinned_fabric() const { return *b_; }
+
+  // Precondition: validate(b.fabric.parameters) is empty.
+  void pin(PinnedFabric b);
   void clear();
 
-  // A's label after a swap, while A still has the parameters it got from B: the swap moved a
-  // fabric, so its name goes with it.
-  void name_a(std::string label, const Parameters& parameters);
-  std::optional<std::string> a_name_for(const Parameters& parameters) const;
-
  private:
-  std::optional<Preset> b_;
+  std::optional<PinnedFabric> b_;
   Scene scene_;
   std::optional<ModelStanding> standing_;
   std::uint64_t changes_ = 0;
-  std::string a_label_;
-  std::optional<Parameters> a_label_parameters_;
 };
 
 // The label of the fabric being edited: the loaded preset's name, "(edited)" after it once its
-// parameters differ from it (or the name a swap brought).
+// parameters differ from it.
 std::string fabric_label(const Document& document);
 // A's last valid state as a preset to pin: the loaded preset with the scene's parameters, named
 // by fabric_label.
 Preset current_fabric(const Document& document);
 
 // What the buttons and the Compare menu do, each one undo step (B is part of what undo restores).
-// Pinning replaces an earlier B. Swapping gives A the parameters of B through Document::apply and
-// pins A's former state as B. Each says what it did in the status line.
+// Pinning replaces an earlier B. Swapping gives A the parameters and the preset of B, and pins A's
+// former state with its preset as B: each fabric keeps its own identity. Each says what it did in
+// the status line.
 void pin_as_b(Document& document);
 void swap_a_and_b(Document& document);
 void clear_b(Document& document);

@@ -123,6 +123,20 @@ void Document::adopt(const Preset& loaded, std::string path) {
   step_base_.loaded_path = loaded_path_;
 }
 
+std::optional<std::string> Document::take_fabric(const Preset& origin, std::string path,
+                                                 const Parameters& parameters) {
+  if (const std::vector<ValidationIssue> issues = validate(parameters); !issues.empty()) {
+    return issues.front().message;
+  }
+  const bool other_preset = path != loaded_path_ || origin.name != loaded_.name;
+  loaded_ = origin;
+  loaded_path_ = std::move(path);
+  if (other_preset) {
+    ++loads_;
+  }
+  return apply(Edit::replace(parameters));
+}
+
 bool Document::unsaved() const {
   return !(scene_.parameters() == loaded_.parameters);
 }
@@ -139,15 +153,18 @@ std::optional<std::string> Document::refusal() const {
 }
 
 Document::Snapshot Document::snapshot() const {
-  return Snapshot{loaded_, loaded_path_, edited_,
-                  compare.pinned() ? std::optional<Preset>(compare.b()) : std::nullopt};
+  return Snapshot{
+      loaded_, loaded_path_, edited_,
+      compare.pinned() ? std::optional<PinnedFabric>(compare.pinned_fabric()) : std::nullopt};
 }
 
 namespace {
 
-bool same_b(const std::optional<Preset>& a, const std::optional<Preset>& b) {
+bool same_b(const std::optional<PinnedFabric>& a, const std::optional<PinnedFabric>& b) {
   return a.has_value() == b.has_value() &&
-         (!a || (a->name == b->name && a->parameters == b->parameters));
+         (!a || (a->fabric.name == b->fabric.name && a->fabric.parameters == b->fabric.parameters &&
+                 a->origin_path == b->origin_path && a->origin.name == b->origin.name &&
+                 a->origin.parameters == b->origin.parameters));
 }
 
 }  // namespace

@@ -77,6 +77,11 @@ class Document {
   void load_preset_file(const std::filesystem::path& path);
   // Replaces the preset as loaded (a restored session, or the file just saved).
   void adopt(const Preset& loaded, std::string path);
+  // Another fabric becomes the one edited, as one undo step: `origin` (from `path`) as loaded,
+  // `parameters` over it (a swap with B). Nothing changes, and the reason is returned, when the
+  // parameters cannot be applied.
+  std::optional<std::string> take_fabric(const Preset& origin, std::string path,
+                                         const Parameters& parameters);
   // True when the valid parameters differ from the preset as loaded.
   bool unsaved() const;
   // Counts preset loads, so that views can reframe for a new cloth.
@@ -147,7 +152,7 @@ class Document {
     Preset loaded;
     std::string loaded_path;
     Parameters edited;
-    std::optional<Preset> compare_b;
+    std::optional<PinnedFabric> compare_b;
   };
   // Validates edited_ and hands it to the scene when valid.
   void commit();

@@ -67,7 +67,8 @@ Explorer::Explorer(const Preset& initial, const std::string& initial_path, bool 
       }
       document_.scene().set_grid_resolution(s->grid_resolution, s->grid_resolution);
       if (s->compare) {
-        document_.compare.pin(*s->compare);
+        document_.compare.pin(
+            {*s->compare, s->compare_origin.value_or(*s->compare), s->compare_origin_path});
       }
       load_settings(s->view);
       for (const std::unique_ptr<Panel>& panel : panels_) {
@@ -253,6 +254,8 @@ void Explorer::save_session_now() {
   s.grid_resolution = document_.scene().grid_nx();
   if (document_.compare.pinned()) {
     s.compare = document_.compare.b();
+    s.compare_origin = document_.compare.b_origin();
+    s.compare_origin_path = document_.compare.b_origin_path();
   }
   save_settings(s.view);
   for (const std::unique_ptr<Panel>& panel : panels_) {

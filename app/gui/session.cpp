@@ -205,7 +205,13 @@ std::optional<Session> session_from_text(const std::string& text, const std::str
   if (j.contains("compare")) {
     try {
       s.compare = preset_from_json(j.at("compare"), origin + " (compare)");
+      if (j.contains("compare_origin")) {
+        s.compare_origin = preset_from_json(j.at("compare_origin"), origin + " (compare_origin)");
+        s.compare_origin_path = j.value("compare_origin_path", "");
+      }
     } catch (const std::exception& e) {
+      s.compare.reset();
+      s.compare_origin.reset();
       dropped("fabric pinned as B", e);
     }
   }
@@ -231,6 +237,10 @@ void save_session(const std::filesystem::path& path, const Session& session) {
   };
   if (session.compare) {
     j["compare"] = preset_to_json(*session.compare);
+    if (session.compare_origin) {
+      j["compare_origin"] = preset_to_json(*session.compare_origin);
+      j["compare_origin_path"] = session.compare_origin_path;
+    }
   }
   write_file_atomically(path, j.dump(2) + "\n");
 }

@@ -68,6 +68,10 @@ struct Session {
   int grid_resolution = 128;
   // The fabric pinned as B (compare.hpp), if any: its label, parameters and calibration.
   std::optional<Preset> compare;
+  // The preset B came from and its file (absent in sessions from before B kept them: then B is
+  // its own preset).
+  std::optional<Preset> compare_origin;
+  std::string compare_origin_path;
   // Everything else the panels and the explorer remember (the 3D view's switches, the UI scale
   // and theme, whether the layout is automatic, expert mode), saved by each of them.
   SessionSettings view;

@@ -30,9 +30,9 @@ std::string headline(const QuantityTexts& texts) {
 }
 
 QuantityTexts difference_texts(const Solution& a, const Solution& b) {
-  return {{detail::printf_string("%+d", b.n - a.n), "", ""},
-          {detail::printf_string("%+.4f", b.Q - a.Q), "", ""},
-          {detail::printf_string("%+.2f", b.z_max_mm - a.z_max_mm), "", " mm"}};
+  return {{detail::printf_string("%+d", a.n - b.n), "", ""},
+          {detail::printf_string("%+.4f", a.Q - b.Q), "", ""},
+          {detail::printf_string("%+.2f", a.z_max_mm - b.z_max_mm), "", " mm"}};
 }
 
 void draw_compare_names(Document& document) {
@@ -92,7 +92,7 @@ void draw_compare_section(Document& document, const ModelStanding& standing_a) {
   const QuantityTexts a_texts = quantity_texts(a, standing_a);
   const QuantityTexts b_texts = quantity_texts(b, compare.standing());
   const QuantityTexts difference = difference_texts(a, b);
-  // A narrow Results panel scrolls the table sideways rather than cut off B − A: a header, and
+  // A narrow Results panel scrolls the table sideways rather than cut off A − B: a header, and
   // for each quantity its values and, when there are any, its intervals.
   const bool ranges = !a_texts.n.range.empty() || !b_texts.n.range.empty();
   const ImGuiStyle& style = ImGui::GetStyle();
@@ -103,10 +103,15 @@ void draw_compare_section(Document& document, const ModelStanding& standing_a) {
                         ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit |
                             ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_ScrollX,
                         ImVec2(0.0f, table_height))) {
-    for (const char* title : {"", "A", "B", "B − A"}) {
+    // B is the fabric as it was when pinned, A is being changed: the last column is what the
+    // change did (a heavier A with one more fold reads +1).
+    for (const char* title : {"", "A", "B", "A − B\nsince pinned"}) {
       ImGui::TableSetupColumn(title);
     }
     ImGui::TableHeadersRow();
+    if (ImGui::IsItemHovered()) {  // the last header drawn
+      ImGui::SetTooltip("A − B: what the change made since B was pinned");
+    }
     // The value on one row and, dimmed under it, its interval: the columns stay narrow.
     const auto row = [](const char* symbol, const QuantityText& a_text, const QuantityText& b_text,
                         const QuantityText& difference_text) {

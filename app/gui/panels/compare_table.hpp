@@ -1,5 +1,6 @@
 // The A/B part of the Results panel: "Pin as B", "Swap A and B" and "Clear B", and while B is
-// pinned a table of n, Q and z_max for A and B with their prediction intervals and B − A.
+// pinned a table of n, Q and z_max for A and B with their prediction intervals and A − B, the
+// change since B was pinned.
 #pragma once
 
 #include <string>
@@ -29,7 +30,7 @@ QuantityTexts quantity_texts(const Solution& s, const ModelStanding& standing);
 // presented panel.
 std::string headline(const QuantityTexts& texts);
 
-// B − A with units: "+2", "-0.0123", "+1.23 mm" (no range).
+// A − B, the change since B was pinned, with units: "+2", "-0.0123", "+1.23 mm" (no range).
 QuantityTexts difference_texts(const Solution& a, const Solution& b);
 
 // The buttons, and the table while B is pinned. `standing_a` is A's form of eq. 7 and range.
