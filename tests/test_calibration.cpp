@@ -914,7 +914,7 @@ TEST(CalibrationTablesTest, ThreadCountDoesNotChangeTheCalibrationOrItsCoverage)
 // once, the command says so and exits 130, and no preset is written.
 TEST_F(CalibrationCli, CtrlCStopsTheCoverageExits130AndWritesNothing) {
   const fs::path data = dir_ / "rows.csv";
-  write_csv(data, neighbourhood_rows(36));
+  write_csv(data, neighbourhood_rows(kMaxCoverageRowsKandP));
   const fs::path preset = dir_ / "out.json";
   const fs::path err_path = dir_ / "stderr.txt";
   const pid_t pid = ::fork();
@@ -930,8 +930,8 @@ TEST_F(CalibrationCli, CtrlCStopsTheCoverageExits130AndWritesNothing) {
             "K,p", "--save-preset", preset.c_str(), static_cast<char*>(nullptr));
     ::_exit(127);
   }
-  // Loading and the first fits take well under this; the whole run takes minutes on one core.
-  std::this_thread::sleep_for(std::chrono::seconds(2));
+  // The fits take a second or two, the coverage check after them half a minute on two cores.
+  std::this_thread::sleep_for(std::chrono::seconds(4));
   ASSERT_EQ(::kill(pid, SIGINT), 0);
   const auto sent = std::chrono::steady_clock::now();
   int status = 0;
@@ -946,6 +946,31 @@ TEST_F(CalibrationCli, CtrlCStopsTheCoverageExits130AndWritesNothing) {
   EXPECT_TRUE(contains(err, "interrupted")) << err;
   EXPECT_FALSE(fs::exists(preset));
   EXPECT_LT(waited_s, 10.0) << "the work should stop within a fit or two";
+}
+
+// A coverage check refits about m² times on m rows each: --save-preset on 64 rows of K and p ran
+// over ten minutes without a word. Beyond the limit --coverage is refused before any work, and
+// --save-preset saves without coverage, saying so (the preset's ranges then say it too).
+TEST_F(CalibrationCli, CoverageAboveItsRowLimitIsRefusedUpFrontAndASaveGoesWithout) {
+  const fs::path data = dir_ / "rows.csv";
+  write_csv(data, neighbourhood_rows(kMaxCoverageRowsKandP + 1));
+  const auto start = std::chrono::steady_clock::now();
+  const testing::RunResult refused =
+      run({"calibrate", "--data", data.string(), "--fit", "K,p", "--coverage"});
+  EXPECT_EQ(refused.exit_status, 2);
+  EXPECT_TRUE(contains(refused.err, "--coverage: 33 fit rows")) << refused.err;
+  EXPECT_TRUE(contains(refused.err, "takes at most 32")) << refused.err;
+  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 5.0)
+      << "refused before fitting";
+  const fs::path out = dir_ / "saved.json";
+  const testing::RunResult saved =
+      run({"calibrate", "--data", data.string(), "--fit", "K,p", "--save-preset", out.string()});
+  ASSERT_EQ(saved.exit_status, 0) << saved.err;
+  EXPECT_TRUE(contains(saved.err, "coverage not measured")) << saved.err;
+  const Preset preset = load_preset(out);
+  ASSERT_TRUE(preset.calibration);
+  EXPECT_TRUE(preset.calibration->coverage.empty());
+  EXPECT_EQ(preset.calibration->leave_one_out.size(), 33u);
 }
 
 // Table 1 alone, K and p, saved: the preset the fit writes loads and solves (it was refused with

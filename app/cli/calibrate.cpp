@@ -362,9 +362,12 @@ Command add_calibrate_command(CLI::App& app) {
   command->add_flag("--no-held-out", options->no_held_out,
                     "skip leave-one-out and group splits (the in-sample fit only)");
   command->add_flag("--coverage", options->coverage,
-                    "measure how often the prediction intervals cover rows they were not fitted "
-                    "to (nested leave-one-out and group splits: about m² fits); always done with "
-                    "--save-preset, which stores it with the intervals");
+                    printf_string("measure how often the prediction intervals cover rows they "
+                                  "were not fitted to (nested leave-one-out and group splits: "
+                                  "about m² fits; at most %d fit rows for K, %d for K,p); done "
+                                  "with --save-preset too, which stores it with the intervals "
+                                  "(above those rows it saves without)",
+                                  kMaxCoverageRowsK, kMaxCoverageRowsKandP));
   return [options] {
     return guarded([&] {
       check_distinct_files(
@@ -398,6 +401,16 @@ Command add_calibrate_command(CLI::App& app) {
       CalibrationOptions calibration;
       parse_fit_constants(options->fit, calibration.fit);
       calibration.held_out = !options->no_held_out;
+      // A coverage check refits about m² times: beyond its row limit --coverage is refused before
+      // any work, and --save-preset saves without it (the preset then says it was not measured).
+      const bool coverage_in_reach = fit_row_count <= max_coverage_rows(calibration.fit);
+      if (options->coverage && calibration.held_out && !coverage_in_reach) {
+        throw InputError(printf_string(
+            "--coverage: %d fit rows, and a coverage check fitting %s takes at most %d (it refits "
+            "about m² times); fit K alone or use fewer rows",
+            static_cast<int>(fit_row_count), options->fit.c_str(),
+            max_coverage_rows(calibration.fit)));
+      }
       const InterruptGuard interrupt_guard;
       CalibrationReport report;
       try {
@@ -410,7 +423,15 @@ Command add_calibrate_command(CLI::App& app) {
         return interrupted_exit();
       }
       std::string coverage;
-      if (calibration.held_out && (options->coverage || !options->save_preset_path.empty())) {
+      const bool saving = !options->save_preset_path.empty();
+      if (calibration.held_out && saving && !options->coverage && !coverage_in_reach) {
+        std::cerr << printf_string(
+            "foldlab: coverage not measured: %d fit rows are more than the %d a coverage check "
+            "fitting %s takes; the preset says so\n",
+            static_cast<int>(fit_row_count), max_coverage_rows(calibration.fit),
+            options->fit.c_str());
+      }
+      if (calibration.held_out && (options->coverage || (saving && coverage_in_reach))) {
         std::optional<std::vector<CoverageCheck>> checks;
         try {
           ProgressLine progress(printf_string("coverage of %d rows", report.fit_row_count));

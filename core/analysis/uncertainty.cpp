@@ -212,6 +212,10 @@ void count(QuantityCoverage& into, std::optional<double> observed, double lo, do
 
 }  // namespace
 
+int max_coverage_rows(FitConstants fit) {
+  return fit == FitConstants::K ? kMaxCoverageRowsK : kMaxCoverageRowsKandP;
+}
+
 std::optional<std::vector<CoverageCheck>> cross_validated_coverage(
     const MeasurementSet& data, const Parameters& base, const CalibrationOptions& options,
     const CalibrationProgress& progress) {
@@ -222,6 +226,13 @@ std::optional<std::vector<CoverageCheck>> cross_validated_coverage(
     }
   }
   check_fit_row_count(static_cast<int>(fit_rows.size()), options.fit);
+  if (static_cast<int>(fit_rows.size()) > max_coverage_rows(options.fit)) {
+    throw CalibrationError(printf_string(
+        "%zu fit rows: a coverage check fitting %s takes at most %d (it refits about m² times, "
+        "each on m rows; docs/performance.md); fit K alone or use fewer rows",
+        fit_rows.size(), std::string(to_string(options.fit)).c_str(),
+        max_coverage_rows(options.fit)));
+  }
   std::vector<std::pair<std::string, std::vector<Split>>> checks(1);
   checks[0].first = "leave-one-out";
   std::set<std::string> groups;
