@@ -29,6 +29,7 @@
 #include "core/model/settings.hpp"
 #include "core/model/solver.hpp"
 #include "core/model/text_format.hpp"
+#include "core/tools/benchmark_cases.hpp"
 #include "json_output.hpp"
 #include "process.hpp"
 #include "temp_dir.hpp"
@@ -781,25 +782,9 @@ TEST_F(CalibrationCli, MalformedDataIsInvalidInputNamingRowAndColumn) {
 
 // ---- Search ranges, shared tables, threads, Ctrl+C ------------------------------------------
 
-// Measurements in the paper's rows' neighbourhood: row i is paper row i % 6 with h, w and the
-// observations moved by fixed, small steps, so that every row differs (a stand-in for a user's
-// larger data set; no random numbers, so a run is the same everywhere).
+// Rows in the paper's rows' neighbourhood (the bench's calibration cases).
 std::vector<Measurement> neighbourhood_rows(int count) {
-  const std::vector<Measurement> paper = fit_rows_of(load_measurements(kPaperCsv));
-  std::vector<Measurement> rows;
-  for (int i = 0; i < count; ++i) {
-    Measurement m = paper[static_cast<std::size_t>(i % 6)];
-    const int k = i / 6;
-    const double step = (k % 2 == 0 ? 1.0 : -1.0) * 0.03 * ((k + 1) / 2);
-    m.inputs.hanging.height_mm = std::round(m.inputs.hanging.height_mm * (1.0 + step));
-    m.inputs.fabric.weight_N_per_mm2 *= 1.0 - 0.5 * step;
-    m.observed.z_max_mm = *m.observed.z_max_mm * (1.0 + 0.7 * step);
-    m.observed.Q = 1.0 + (*m.observed.Q - 1.0) * (1.0 - 0.4 * step);
-    m.name = "row " + std::to_string(i + 1);
-    m.row = i + 1;
-    rows.push_back(m);
-  }
-  return rows;
+  return calibration_rows(fit_rows_of(load_measurements(kPaperCsv)), count);
 }
 
 void write_csv(const fs::path& path, const std::vector<Measurement>& rows) {
