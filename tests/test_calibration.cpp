@@ -1005,6 +1005,7 @@ TEST_F(CalibrationCli, StoredResidualsBeyondTheirBoundsAreRefusedNamingTheEntry)
   EXPECT_TRUE(contains(r.err, "/calibration/residuals/0/1: ln z_max residual 710")) << r.err;
   EXPECT_TRUE(contains(r.err, "/calibration/residuals/0/2: ln Q residual 710")) << r.err;
   EXPECT_TRUE(contains(r.err, "/calibration/residuals/1/0: n residual 999999")) << r.err;
+  EXPECT_FALSE(contains(r.err, "expected one residual per")) << "only the entries are named";
   EXPECT_TRUE(r.out.empty()) << r.out.substr(0, 200);
 }
 
