@@ -444,6 +444,10 @@ Command add_calibrate_command(CLI::App& app) {
         }
         coverage = describe_coverage(*checks);
       }
+      // Ctrl+C after the last progress call still means: print and write nothing.
+      if (interrupted != 0) {
+        return interrupted_exit();
+      }
       if (options->json) {
         nlohmann::json j = report_json(report, options->data_path);
         const CalibrationRecord record = calibration_record(report, "");

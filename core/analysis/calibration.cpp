@@ -733,7 +733,7 @@ CalibrationReport calibrate(const MeasurementSet& data, const Parameters& base,
   if (static_cast<std::int64_t>(data.rows.size()) > kMaxCalibrationRows) {
     throw CalibrationError(data.origin + ": " + std::to_string(data.rows.size()) +
                            " rows, above the limit of " + std::to_string(kMaxCalibrationRows) +
-                           " rows a calibration fits (each costs about 0.5 s); split the file");
+                           " rows a calibration fits; split the file");
   }
   CalibrationReport report;
   report.fit = options.fit;
