@@ -1,10 +1,13 @@
 // Google Benchmark timings of the solver and the pipeline (target foldlab_bench, not a test):
 // a second, independent harness beside `foldlab bench`. Run: build/tests/foldlab_bench
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include <benchmark/benchmark.h>
 
+#include "core/analysis/calibration.hpp"
+#include "core/analysis/uncertainty.hpp"
 #include "core/geometry/geometry.hpp"
 #include "core/geometry/parallel_grid.hpp"
 #include "core/geometry/scene.hpp"
@@ -127,6 +130,34 @@ void BM_SceneDraggedFrame(benchmark::State& state) {
   }
 }
 BENCHMARK(BM_SceneDraggedFrame)->Arg(128)->Arg(512)->Unit(benchmark::kMillisecond);
+
+// `foldlab calibrate --fit K,p --coverage` on 6, 12 and 24 rows near the paper's (the rows of
+// calibration_rows): the in-sample fit with leave-one-out and group splits, then the coverage
+// check's nested fits, on every core. Its time grows about as m³.
+void BM_CalibrateWithCoverage(benchmark::State& state) {
+  MeasurementSet data;
+  data.origin = "bench";
+  std::vector<Measurement> paper;
+  for (const Measurement& m : load_measurements(FOLDLAB_DATA_DIR "/paper-measurements.csv").rows) {
+    if (m.role == MeasurementRole::fit) {
+      paper.push_back(m);
+    }
+  }
+  data.rows = calibration_rows(paper, static_cast<int>(state.range(0)));
+  Parameters base = default_parameters();
+  CalibrationOptions options;
+  options.fit = FitConstants::K_and_p;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(calibrate(data, base, options));
+    benchmark::DoNotOptimize(cross_validated_coverage(data, base, options));
+  }
+}
+BENCHMARK(BM_CalibrateWithCoverage)
+    ->Arg(6)
+    ->Arg(12)
+    ->Arg(24)
+    ->Unit(benchmark::kSecond)
+    ->UseRealTime();
 
 }  // namespace
 }  // namespace foldlab

@@ -2,10 +2,18 @@
 // data made by the model itself with planted K and p, the plateau it reports checked against the
 // real solver, the measurements file format, the eq. 7 exponent p, and `foldlab calibrate` end to
 // end on the shipped paper data and on malformed files.
+#include <fcntl.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <thread>
 #include <tuple>
 #include <vector>
 
@@ -14,11 +22,14 @@
 #include <nlohmann/json.hpp>
 
 #include "core/analysis/calibration.hpp"
+#include "core/analysis/uncertainty.hpp"
 #include "core/io/measurements.hpp"
 #include "core/io/preset.hpp"
 #include "core/model/equations.hpp"
 #include "core/model/settings.hpp"
 #include "core/model/solver.hpp"
+#include "core/model/text_format.hpp"
+#include "core/tools/benchmark_cases.hpp"
 #include "json_output.hpp"
 #include "process.hpp"
 #include "temp_dir.hpp"
@@ -767,6 +778,235 @@ TEST_F(CalibrationCli, MalformedDataIsInvalidInputNamingRowAndColumn) {
 
   const testing::RunResult fit = run({"calibrate", "--data", kPaperCsv.string(), "--fit", "p"});
   EXPECT_EQ(fit.exit_status, 2);
+}
+
+// ---- Search ranges, shared tables, threads, Ctrl+C ------------------------------------------
+
+// Rows in the paper's rows' neighbourhood (the bench's calibration cases).
+std::vector<Measurement> neighbourhood_rows(int count) {
+  return calibration_rows(fit_rows_of(load_measurements(kPaperCsv)), count);
+}
+
+void write_csv(const fs::path& path, const std::vector<Measurement>& rows) {
+  std::ofstream out(path);
+  out << "name,group,role,t_mm,E_MPa,w_N_per_mm2,h_mm,L_mm,d_mm,n,z_max_mm,Q\n";
+  out.precision(17);
+  for (const Measurement& m : rows) {
+    out << m.name << "," << m.group << ",fit," << m.inputs.fabric.thickness_mm << ","
+        << m.inputs.fabric.youngs_modulus_MPa << "," << m.inputs.fabric.weight_N_per_mm2 << ","
+        << m.inputs.hanging.height_mm << "," << m.inputs.hanging.length_mm << ","
+        << m.inputs.hanging.support_displacement_mm << "," << *m.observed.n << ","
+        << *m.observed.z_max_mm << "," << *m.observed.Q << "\n";
+  }
+}
+
+// Table 1 alone fitted for K and p: the best score runs along a valley down to ever smaller K,
+// and the search followed it to K = 3.6e-12 (c = 3.3e-12), far below the input table's c >= 1e-3,
+// so the fit's own preset could not be saved and --set K= refused its value. It stays within the
+// table's ranges now, and says that the best score reaches K's lower end.
+TEST(CalibrationSearch, StaysInsideTheInputTablesRangesAndSaysWhenItReachesAnEnd) {
+  MeasurementSet table1 = load_measurements(kPaperCsv);
+  std::erase_if(table1.rows, [](const Measurement& m) { return m.group != "table1"; });
+  ASSERT_EQ(table1.rows.size(), 3u);
+  const Parameters base = load_preset(kPresetsDir / "default.json").parameters;
+  CalibrationOptions options;
+  options.fit = FitConstants::K_and_p;
+  const CalibrationReport r = calibrate(table1, base, options);
+  const InputInterval& c_range = find_input("c")->valid;
+  const InputInterval& p_range = find_input("p")->valid;
+  auto c_of = [&](double K) { return with_constants(base, K, 1.0).model.load_constant_c; };
+  std::vector<Eq7Constants> every = {{r.fitted.K, r.fitted.p}};
+  for (const CalibrationRow& row : r.rows) {
+    every.push_back({row.held_out_K, row.held_out_p});
+  }
+  every.insert(every.end(), r.fitted.equally_good_ends.begin(), r.fitted.equally_good_ends.end());
+  for (const Eq7Constants& k : every) {
+    EXPECT_TRUE(c_range.contains(c_of(k.K))) << "K = " << k.K << ", c = " << c_of(k.K);
+    EXPECT_TRUE(p_range.contains(k.p)) << k.p;
+  }
+  EXPECT_EQ(r.fitted.K_end, RangeEnd::lower);
+  EXPECT_NEAR(c_of(r.fitted.K_min), c_range.lo, 1e-6 * c_range.lo);
+  const std::vector<std::string> notes = range_end_notes(r.fitted, base.fabric.poisson_ratio);
+  ASSERT_EQ(notes.size(), 1u);
+  EXPECT_TRUE(contains(notes[0], "K at its lower bound")) << notes[0];
+  // The paper's six rows reach no end: no note.
+  const CalibrationReport both = calibrate(load_measurements(kPaperCsv), base, options);
+  EXPECT_EQ(both.fitted.K_end, RangeEnd::none);
+  EXPECT_EQ(both.fitted.p_end, RangeEnd::none);
+  EXPECT_TRUE(range_end_notes(both.fitted, base.fabric.poisson_ratio).empty());
+}
+
+// A fit from shared tables is the fit on those rows alone (fit_constants tabulates them afresh).
+TEST(CalibrationTablesTest, AFitOnASubsetIsTheFitOnThoseRowsAlone) {
+  const std::vector<Measurement> rows = neighbourhood_rows(9);
+  const Parameters base = load_preset(kPresetsDir / "default.json").parameters;
+  CalibrationOptions options;
+  options.fit = FitConstants::K_and_p;
+  const std::optional<CalibrationTables> tables = CalibrationTables::tabulate(rows, base, options);
+  ASSERT_TRUE(tables);
+  ASSERT_EQ(tables->size(), 9u);
+  const std::vector<std::size_t> subset = {0, 2, 3, 7};
+  const std::optional<FittedConstants> shared = tables->fit(subset);
+  std::vector<Measurement> alone;
+  for (std::size_t i : subset) {
+    alone.push_back(rows[i]);
+  }
+  const std::optional<FittedConstants> own = fit_constants(alone, base, options);
+  ASSERT_TRUE(shared && own);
+  EXPECT_EQ(shared->K, own->K);
+  EXPECT_EQ(shared->p, own->p);
+  EXPECT_EQ(shared->K_low, own->K_low);
+  EXPECT_EQ(shared->p_high, own->p_high);
+  EXPECT_TRUE(same_score(shared->score, own->score));
+}
+
+// The fits run on several threads; which thread runs which fit must not show in the result.
+TEST(CalibrationTablesTest, ThreadCountDoesNotChangeTheCalibrationOrItsCoverage) {
+  MeasurementSet set;
+  set.origin = "neighbourhood";
+  set.rows = neighbourhood_rows(9);
+  for (std::size_t i = 0; i < set.rows.size(); ++i) {
+    set.rows[i].group = i % 2 == 0 ? "even" : "odd";
+  }
+  const Parameters base = load_preset(kPresetsDir / "default.json").parameters;
+  CalibrationOptions one;
+  one.fit = FitConstants::K_and_p;
+  one.threads = 1;
+  CalibrationOptions three = one;
+  three.threads = 3;
+  const CalibrationReport a = calibrate(set, base, one);
+  const CalibrationReport b = calibrate(set, base, three);
+  EXPECT_EQ(a.fitted.K, b.fitted.K);
+  EXPECT_EQ(a.fitted.p, b.fitted.p);
+  ASSERT_EQ(a.rows.size(), b.rows.size());
+  for (std::size_t i = 0; i < a.rows.size(); ++i) {
+    EXPECT_EQ(a.rows[i].held_out_K, b.rows[i].held_out_K) << i;
+    EXPECT_EQ(a.rows[i].held_out_p, b.rows[i].held_out_p) << i;
+  }
+  ASSERT_EQ(a.group_splits.size(), 2u);
+  for (std::size_t i = 0; i < a.group_splits.size(); ++i) {
+    EXPECT_EQ(a.group_splits[i].fit.K, b.group_splits[i].fit.K) << i;
+  }
+  const auto coverage_one = cross_validated_coverage(set, base, one);
+  const auto coverage_three = cross_validated_coverage(set, base, three);
+  ASSERT_TRUE(coverage_one && coverage_three);
+  EXPECT_EQ(describe_coverage(*coverage_one), describe_coverage(*coverage_three));
+  EXPECT_FALSE(describe_coverage(*coverage_one).empty());
+}
+
+// Ctrl+C while --save-preset measures the coverage used to kill the process with nothing said
+// (and, had it been caught, a half-done coverage could have been saved). Now the work stops at
+// once, the command says so and exits 130, and no preset is written.
+TEST_F(CalibrationCli, CtrlCStopsTheCoverageExits130AndWritesNothing) {
+  const fs::path data = dir_ / "rows.csv";
+  write_csv(data, neighbourhood_rows(kMaxCoverageRowsKandP));
+  const fs::path preset = dir_ / "out.json";
+  const fs::path err_path = dir_ / "stderr.txt";
+  const pid_t pid = ::fork();
+  ASSERT_GE(pid, 0);
+  if (pid == 0) {
+    const int null_fd = ::open("/dev/null", O_WRONLY);
+    const int err_fd = ::open(err_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    if (null_fd < 0 || err_fd < 0 || ::dup2(null_fd, STDOUT_FILENO) < 0 ||
+        ::dup2(err_fd, STDERR_FILENO) < 0) {
+      ::_exit(126);
+    }
+    ::execl(FOLDLAB_EXECUTABLE, FOLDLAB_EXECUTABLE, "calibrate", "--data", data.c_str(), "--fit",
+            "K,p", "--save-preset", preset.c_str(), static_cast<char*>(nullptr));
+    ::_exit(127);
+  }
+  // The fits take a second or two, the coverage check after them half a minute on two cores.
+  std::this_thread::sleep_for(std::chrono::seconds(4));
+  ASSERT_EQ(::kill(pid, SIGINT), 0);
+  const auto sent = std::chrono::steady_clock::now();
+  int status = 0;
+  while (::waitpid(pid, &status, 0) < 0) {
+    ASSERT_EQ(errno, EINTR);
+  }
+  const double waited_s =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - sent).count();
+  ASSERT_TRUE(WIFEXITED(status)) << "ended by signal " << WTERMSIG(status);
+  EXPECT_EQ(WEXITSTATUS(status), 130);
+  const std::string err = testing::read_file(err_path);
+  EXPECT_TRUE(contains(err, "interrupted")) << err;
+  EXPECT_FALSE(fs::exists(preset));
+  EXPECT_LT(waited_s, 10.0) << "the work should stop within a fit or two";
+}
+
+// A coverage check refits about m² times on m rows each: --save-preset on 64 rows of K and p ran
+// over ten minutes without a word. Beyond the limit --coverage is refused before any work, and
+// --save-preset saves without coverage, saying so (the preset's ranges then say it too).
+TEST_F(CalibrationCli, CoverageAboveItsRowLimitIsRefusedUpFrontAndASaveGoesWithout) {
+  const fs::path data = dir_ / "rows.csv";
+  write_csv(data, neighbourhood_rows(kMaxCoverageRowsKandP + 1));
+  const auto start = std::chrono::steady_clock::now();
+  const testing::RunResult refused =
+      run({"calibrate", "--data", data.string(), "--fit", "K,p", "--coverage"});
+  EXPECT_EQ(refused.exit_status, 2);
+  EXPECT_TRUE(contains(refused.err, "--coverage: 33 fit rows")) << refused.err;
+  EXPECT_TRUE(contains(refused.err, "takes at most 32")) << refused.err;
+  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 5.0)
+      << "refused before fitting";
+  const fs::path out = dir_ / "saved.json";
+  const testing::RunResult saved =
+      run({"calibrate", "--data", data.string(), "--fit", "K,p", "--save-preset", out.string()});
+  ASSERT_EQ(saved.exit_status, 0) << saved.err;
+  EXPECT_TRUE(contains(saved.err, "coverage not measured")) << saved.err;
+  const Preset preset = load_preset(out);
+  ASSERT_TRUE(preset.calibration);
+  EXPECT_TRUE(preset.calibration->coverage.empty());
+  EXPECT_EQ(preset.calibration->leave_one_out.size(), 33u);
+}
+
+// Table 1 alone, K and p, saved: the preset the fit writes loads and solves (it was refused with
+// exit 2), and the JSON names the end of the range the best score reaches.
+TEST_F(CalibrationCli, TableOneAloneSavesAPresetWithinTheRanges) {
+  const fs::path table1 = dir_ / "table1.csv";
+  {
+    std::ifstream in(kPaperCsv);
+    std::ofstream out(table1);
+    for (std::string line; std::getline(in, line);) {
+      if (line.starts_with("name,") || contains(line, ",table1,")) {
+        out << line << "\n";
+      }
+    }
+  }
+  const fs::path out = dir_ / "table1-fit.json";
+  const json j =
+      run_json({"--data", table1.string(), "--fit", "K,p", "--save-preset", out.string()});
+  ASSERT_TRUE(j.is_object());
+  EXPECT_EQ(j.at("fit_rows"), 3);
+  EXPECT_EQ(j.at("fitted").at("at_range_end").at("K"), "lower");
+  ASSERT_EQ(j.at("fitted_notes").size(), 1u);
+  const double c = j.at("fitted_load_constant_c").get<double>();
+  EXPECT_TRUE(find_input("c")->valid.contains(c)) << c;
+  const Preset saved = load_preset(out);
+  ASSERT_TRUE(saved.calibration);
+  const testing::RunResult solved = run({"solve", "--preset", out.string(), "--json"});
+  EXPECT_EQ(solved.exit_status, 0) << solved.err;
+  const testing::RunResult set =
+      run({"solve", "--set", "K=" + detail::shortest_number(j.at("fitted").at("K").get<double>())});
+  EXPECT_EQ(set.exit_status, 0) << set.err;
+  const testing::RunResult text = run({"calibrate", "--data", table1.string(), "--fit", "K,p"});
+  EXPECT_TRUE(contains(text.out, "the best score reaches K at its lower bound")) << text.out;
+}
+
+// A preset whose stored residuals make an interval overflow: ln z_max = 710 is exp() = inf, and an
+// n residual of 999,999 ran n's range past the solver's 10,000 folds. Refused, naming the entry.
+TEST_F(CalibrationCli, StoredResidualsBeyondTheirBoundsAreRefusedNamingTheEntry) {
+  json preset = json::parse(std::ifstream(kPresetsDir / "default.json"));
+  json& residuals = preset.at("calibration").at("residuals");
+  residuals[0] = {0, 710, 710};
+  residuals[1] = {999999, nullptr, nullptr};
+  const fs::path path = dir_ / "huge-residuals.json";
+  std::ofstream(path) << preset.dump(2);
+  const testing::RunResult r = run({"solve", "--preset", path.string()});
+  EXPECT_EQ(r.exit_status, 2);
+  EXPECT_TRUE(contains(r.err, "/calibration/residuals/0/1: ln z_max residual 710")) << r.err;
+  EXPECT_TRUE(contains(r.err, "/calibration/residuals/0/2: ln Q residual 710")) << r.err;
+  EXPECT_TRUE(contains(r.err, "/calibration/residuals/1/0: n residual 999999")) << r.err;
+  EXPECT_FALSE(contains(r.err, "expected one residual per")) << "only the entries are named";
+  EXPECT_TRUE(r.out.empty()) << r.out.substr(0, 200);
 }
 
 }  // namespace

@@ -486,6 +486,26 @@ TEST_F(PresetTest, StoredCalibrationConstantsAreRangeCheckedThroughTheInputTable
   EXPECT_TRUE(contains(message, "/calibration/equally_good/0: K = ")) << message;
 }
 
+// Residuals are bounded so that every interval from them is finite: |n| <= 10,000 (the solver's
+// fold cap) and |ln z_max|, |ln Q| <= ln 1e6. They were accepted up to 1e6 each, and ln 710 gave
+// an infinite z_max range.
+TEST_F(PresetTest, StoredResidualsAreBoundedSoThatIntervalsStayFinite) {
+  json j = with_calibration(json::array(), 30.0, 0.5);
+  j["calibration"]["leave_one_out"] = json::array({{30.0, 0.5}, {30.0, 0.5}, {30.0, 0.5}});
+  j["calibration"]["residuals"] =
+      json::array({{0, 710, 710}, {999999, nullptr, nullptr}, {-3, -13.8, 13.8}});
+  const std::string message = load_error(j);
+  EXPECT_TRUE(contains(message, "/calibration/residuals/0/1: ln z_max residual 710")) << message;
+  EXPECT_TRUE(contains(message, "/calibration/residuals/0/2: ln Q residual 710")) << message;
+  EXPECT_TRUE(contains(message, "/calibration/residuals/1/0: n residual 999999")) << message;
+  EXPECT_FALSE(contains(message, "/calibration/residuals/2")) << message;
+  j["calibration"]["residuals"] =
+      json::array({{10000, 13.8, -13.8}, {-10000, nullptr, 0.1}, {-3, -13.8, 13.8}});
+  const fs::path path = dir_ / "bounded.json";
+  write_bytes(path, j.dump());
+  EXPECT_EQ(foldlab::load_preset(path).calibration->residuals.size(), 3u);
+}
+
 TEST_F(PresetTest, SaveRefusesACalibrationTheReaderWouldRefuse) {
   foldlab::Preset p = foldlab::preset_from_json(valid_preset_json(), "test");
   foldlab::CalibrationRecord record;

@@ -2,11 +2,15 @@
 // and prints the fit beside its held-out figures, so that a user sees how much of it is real.
 #include <algorithm>
 #include <cmath>
+#include <csignal>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
 #include <memory>
 #include <string>
+#include <utility>
+
+#include <unistd.h>
 
 #include <nlohmann/json.hpp>
 
@@ -26,15 +30,70 @@ using nlohmann::json;
 
 using detail::printf_string;
 
-// When the best score reaches the end of the p search range, the data do not bound p there.
-std::string edge_note(const FittedConstants& f, FitConstants fit) {
-  const CalibrationOptions defaults;
-  if (fit == FitConstants::K_and_p && (f.best_p_min <= defaults.p_min * (1 + 1e-9) ||
-                                       f.best_p_max >= defaults.p_max * (1 - 1e-9))) {
-    return " [the best score reaches the end of the p search range]";
+// " [the best score reaches K at its lower bound ...; ...]" when the best-scoring constants reach
+// an end of a range.
+std::string bound_note(const FittedConstants& f, double poisson_ratio) {
+  std::string out;
+  for (const std::string& note : range_end_notes(f, poisson_ratio)) {
+    out += (out.empty() ? " [" : "; ") + note;
   }
-  return "";
+  return out.empty() ? out : out + "]";
 }
+
+// Ctrl+C during the fits: the work polls this flag through its progress callback and stops, and
+// the command exits kExitInterrupted having written nothing (no half-made preset).
+volatile std::sig_atomic_t interrupted = 0;
+extern "C" void on_interrupt(int) {
+  interrupted = 1;
+}
+// 128 + SIGINT, as a shell reports a command Ctrl+C ended.
+constexpr int kExitInterrupted = 130;
+
+int interrupted_exit() {
+  std::cerr << "foldlab: calibrate: interrupted (Ctrl+C); nothing was written\n";
+  return kExitInterrupted;
+}
+
+// Catches SIGINT while it lives, then restores what was there.
+class InterruptGuard {
+ public:
+  InterruptGuard() : previous_(std::signal(SIGINT, on_interrupt)) { interrupted = 0; }
+  ~InterruptGuard() { std::signal(SIGINT, previous_); }
+  InterruptGuard(const InterruptGuard&) = delete;
+  InterruptGuard& operator=(const InterruptGuard&) = delete;
+
+ private:
+  void (*previous_)(int);
+};
+
+// Progress on stderr, only when a person watches it (stderr a terminal): stdout stays the report
+// (or JSON) alone, and scripts capturing stderr get no carriage-return noise. Returns false once
+// Ctrl+C was pressed.
+class ProgressLine {
+ public:
+  explicit ProgressLine(std::string what) : what_(std::move(what)), shown_(::isatty(2) == 1) {}
+  ~ProgressLine() {
+    if (shown_ && last_ >= 0) {
+      std::cerr << "\r\033[K" << std::flush;
+    }
+  }
+  ProgressLine(const ProgressLine&) = delete;
+  ProgressLine& operator=(const ProgressLine&) = delete;
+
+  bool operator()(double fraction) {
+    const int percent = static_cast<int>(std::floor(100.0 * fraction));
+    if (shown_ && percent != last_) {
+      last_ = percent;
+      std::cerr << "\r" << what_ << ": " << percent << " % (Ctrl+C stops)" << std::flush;
+    }
+    return interrupted == 0;
+  }
+
+ private:
+  std::string what_;
+  bool shown_;
+  int last_ = -1;
+};
 
 std::string score_line(const CalibrationScore& s, int rows_with_n) {
   return "n missed in " + std::to_string(s.n_missed) + " of " + std::to_string(rows_with_n) +
@@ -77,6 +136,21 @@ json number_or_null(double v) {
   return std::isfinite(v) ? json(v) : json(nullptr);
 }
 
+// null, "lower", "upper" or "both".
+json range_end_name(RangeEnd end) {
+  switch (end) {
+    case RangeEnd::none:
+      return nullptr;
+    case RangeEnd::lower:
+      return "lower";
+    case RangeEnd::upper:
+      return "upper";
+    case RangeEnd::both:
+      return "both";
+  }
+  return nullptr;
+}
+
 json fit_json(const FittedConstants& f) {
   return {
       {"K", f.K},
@@ -89,6 +163,8 @@ json fit_json(const FittedConstants& f) {
       {"K_range_at_p", {f.K_low, number_or_null(f.K_high)}},
       {"p_range_at_K", {f.p_low, f.p_high}},
       {"equally_good_elsewhere", f.equally_good_elsewhere},
+      {"search_range", {{"K", {f.K_min, f.K_max}}, {"p", {f.p_min, f.p_max}}}},
+      {"at_range_end", {{"K", range_end_name(f.K_end)}, {"p", range_end_name(f.p_end)}}},
       {"best_score_envelope",
        {{"K", {f.best_K_min, number_or_null(f.best_K_max)}}, {"p", {f.best_p_min, f.best_p_max}}}}};
 }
@@ -140,6 +216,7 @@ json report_json(const CalibrationReport& r, const std::string& data_path) {
             {"poisson_ratio", r.base.fabric.poisson_ratio},
             {"form", describe_model_form(r.base)}}},
           {"fitted", fit_json(r.fitted)},
+          {"fitted_notes", range_end_notes(r.fitted, r.base.fabric.poisson_ratio)},
           {"fitted_load_constant_c",
            with_constants(r.base, r.fitted.K, r.fitted.p).model.load_constant_c},
           {"fit_rows", r.fit_row_count},
@@ -181,7 +258,7 @@ void print_report(const CalibrationReport& r, const std::string& data_path,
     std::cout << "  every point with this score lies in K "
               << range(f.best_K_min, f.best_K_max, "%.4g") << ", p ["
               << printf_string("%.3g", f.best_p_min) << ", " << printf_string("%.3g", f.best_p_max)
-              << "] (K and p trade off along a valley)" << edge_note(f, r.fit) << "\n";
+              << "] (K and p trade off along a valley)\n";
   } else {
     std::cout << "\n";
     if (f.equally_good_elsewhere > 0) {
@@ -189,6 +266,9 @@ void print_report(const CalibrationReport& r, const std::string& data_path,
                 << " other band(s) of K reach the same score, within K "
                 << range(f.best_K_min, f.best_K_max, "%.4g") << "; the widest is taken\n";
     }
+  }
+  for (const std::string& note : range_end_notes(f, r.base.fabric.poisson_ratio)) {
+    std::cout << "  " << note << "\n";
   }
   std::cout << "\n| row | observed n | z_max (mm) | Q | fitted n | z_max (mm) | Q | held-out n "
                "| z_max (mm) | Q | held-out K | p |\n"
@@ -222,8 +302,9 @@ void print_report(const CalibrationReport& r, const std::string& data_path,
     for (const GroupSplit& s : r.group_splits) {
       std::cout << "    test " << (s.test_group.empty() ? "(no group)" : s.test_group)
                 << " (fit on the rest: K = " << printf_string("%.4g", s.fit.K)
-                << ", p = " << printf_string("%.3g", s.fit.p) << edge_note(s.fit, r.fit)
-                << "): " << summary_text(s.test) << "\n";
+                << ", p = " << printf_string("%.3g", s.fit.p)
+                << bound_note(s.fit, r.base.fabric.poisson_ratio) << "): " << summary_text(s.test)
+                << "\n";
     }
   }
   if (r.check_row_count > 0) {
@@ -282,9 +363,12 @@ Command add_calibrate_command(CLI::App& app) {
   command->add_flag("--no-held-out", options->no_held_out,
                     "skip leave-one-out and group splits (the in-sample fit only)");
   command->add_flag("--coverage", options->coverage,
-                    "measure how often the prediction intervals cover rows they were not fitted "
-                    "to (nested leave-one-out and group splits: about m² fits); always done with "
-                    "--save-preset, which stores it with the intervals");
+                    printf_string("measure how often the prediction intervals cover rows they "
+                                  "were not fitted to (nested leave-one-out and group splits: "
+                                  "about m² fits; at most %d fit rows for K, %d for K,p); done "
+                                  "with --save-preset too, which stores it with the intervals "
+                                  "(above those rows it saves without)",
+                                  kMaxCoverageRowsK, kMaxCoverageRowsKandP));
   return [options] {
     return guarded([&] {
       check_distinct_files(
@@ -318,20 +402,52 @@ Command add_calibrate_command(CLI::App& app) {
       CalibrationOptions calibration;
       parse_fit_constants(options->fit, calibration.fit);
       calibration.held_out = !options->no_held_out;
+      // A coverage check refits about m² times: beyond its row limit --coverage is refused before
+      // any work, and --save-preset saves without it (the preset then says it was not measured).
+      const bool coverage_in_reach = fit_row_count <= max_coverage_rows(calibration.fit);
+      if (options->coverage && calibration.held_out && !coverage_in_reach) {
+        throw InputError(printf_string(
+            "--coverage: %d fit rows, and a coverage check fitting %s takes at most %d (it refits "
+            "about m² times); fit K alone or use fewer rows",
+            static_cast<int>(fit_row_count), options->fit.c_str(),
+            max_coverage_rows(calibration.fit)));
+      }
+      const InterruptGuard interrupt_guard;
       CalibrationReport report;
       try {
-        report = calibrate(data, base.parameters, calibration);
+        ProgressLine progress("calibrate");
+        report = calibrate(data, base.parameters, calibration, std::ref(progress));
       } catch (const CalibrationError& e) {
         throw InputError(e.what());
       }
+      if (report.cancelled) {
+        return interrupted_exit();
+      }
       std::string coverage;
-      if (calibration.held_out && (options->coverage || !options->save_preset_path.empty())) {
+      const bool saving = !options->save_preset_path.empty();
+      if (calibration.held_out && saving && !options->coverage && !coverage_in_reach) {
+        std::cerr << printf_string(
+            "foldlab: coverage not measured: %d fit rows are more than the %d a coverage check "
+            "fitting %s takes; the preset says so\n",
+            static_cast<int>(fit_row_count), max_coverage_rows(calibration.fit),
+            options->fit.c_str());
+      }
+      if (calibration.held_out && (options->coverage || (saving && coverage_in_reach))) {
+        std::optional<std::vector<CoverageCheck>> checks;
         try {
-          coverage =
-              describe_coverage(*cross_validated_coverage(data, base.parameters, calibration));
+          ProgressLine progress(printf_string("coverage of %d rows", report.fit_row_count));
+          checks = cross_validated_coverage(data, base.parameters, calibration, std::ref(progress));
         } catch (const CalibrationError& e) {
           throw InputError(e.what());
         }
+        if (!checks) {
+          return interrupted_exit();
+        }
+        coverage = describe_coverage(*checks);
+      }
+      // Ctrl+C after the last progress call still means: print and write nothing.
+      if (interrupted != 0) {
+        return interrupted_exit();
       }
       if (options->json) {
         nlohmann::json j = report_json(report, options->data_path);

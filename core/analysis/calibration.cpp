@@ -5,11 +5,14 @@
 #include <cstdio>
 #include <limits>
 #include <numbers>
+#include <numeric>
 #include <set>
 #include <utility>
 
+#include "core/analysis/parallel_tasks.hpp"
 #include "core/io/export_budget.hpp"
 #include "core/model/equations.hpp"
+#include "core/model/settings.hpp"
 #include "core/model/text_format.hpp"
 
 namespace foldlab {
@@ -34,34 +37,59 @@ bool same_prediction(const RowPrediction& a, const RowPrediction& b) {
   return a.n == b.n && close(a.z_max_mm, b.z_max_mm) && close(a.Q, b.Q);
 }
 
-// The loss of score_predictions, summed one row at a time.
+// One row's share of the loss in one state. The errors are summed in fixed point, in units of
+// 2^-50 (about 1e-15, far below the 1e-9 at which scores tie): such a sum is exact and the same in
+// any order, so a sweep that adds and removes rows as it crosses their edges gives what summing
+// afresh gives, and fits on any number of threads agree to the bit. Each term is at most 1, so
+// 2^13 terms fit in 63 bits: the row limit keeps well below.
+constexpr double kErrorUnit = 0x1p-50;
+static_assert(2 * kMaxCalibrationRows < (std::int64_t{1} << 13));
+struct Contribution {
+  int n_missed = 0;
+  int n_missed_by_more_than_one = 0;
+  std::int64_t error_units = 0;
+  int terms = 0;
+};
+
+Contribution contribution(const PublishedResult& observed, const RowPrediction& p) {
+  Contribution c;
+  if (observed.n) {
+    const int difference = p.beyond_cap ? kCalibrationFoldCap : std::abs(p.n - *observed.n);
+    c.n_missed = difference != 0;
+    c.n_missed_by_more_than_one = difference > 1;
+  }
+  auto units = [&p](double model, double seen) {
+    const double error = p.beyond_cap ? 1.0 : std::min(std::abs(model / seen - 1.0), 1.0);
+    return std::llround(error / kErrorUnit);
+  };
+  if (observed.z_max_mm) {
+    c.error_units += units(p.z_max_mm, *observed.z_max_mm);
+    ++c.terms;
+  }
+  if (observed.Q) {
+    c.error_units += units(p.Q, *observed.Q);
+    ++c.terms;
+  }
+  return c;
+}
+
+// The loss of score_predictions, summed one row at a time (sign -1 takes a row out again).
 struct ScoreSum {
   int n_missed = 0;
   int n_missed_by_more_than_one = 0;
-  double error_sum = 0.0;
+  std::int64_t error_units = 0;
   int terms = 0;
 
-  void add(const PublishedResult& observed, const RowPrediction& p) {
-    if (observed.n) {
-      const int difference = p.beyond_cap ? kCalibrationFoldCap : std::abs(p.n - *observed.n);
-      n_missed += difference != 0;
-      n_missed_by_more_than_one += difference > 1;
-    }
-    auto error = [&p](double model, double seen) {
-      return p.beyond_cap ? 1.0 : std::min(std::abs(model / seen - 1.0), 1.0);
-    };
-    if (observed.z_max_mm) {
-      error_sum += error(p.z_max_mm, *observed.z_max_mm);
-      ++terms;
-    }
-    if (observed.Q) {
-      error_sum += error(p.Q, *observed.Q);
-      ++terms;
-    }
+  void add(const Contribution& c, int sign = 1) {
+    n_missed += sign * c.n_missed;
+    n_missed_by_more_than_one += sign * c.n_missed_by_more_than_one;
+    error_units += sign * c.error_units;
+    terms += sign * c.terms;
   }
 
   CalibrationScore score() const {
-    return {n_missed, n_missed_by_more_than_one, terms ? error_sum / terms : 0.0, terms};
+    return {n_missed, n_missed_by_more_than_one,
+            terms ? static_cast<double>(error_units) * kErrorUnit / terms : 0.0, terms};
   }
 };
 
@@ -73,6 +101,7 @@ struct RowTable {
   double log_g = 0.0;                 // ln s at K = 1
   std::vector<double> edges;          // ascending x where the prediction changes
   std::vector<RowPrediction> states;  // states[j] on [edges[j-1], edges[j]); one more than edges
+  std::vector<Contribution> shares;   // each state's share of the loss, against the observed row
 
   std::size_t index_at(double x) const {
     return static_cast<std::size_t>(std::upper_bound(edges.begin(), edges.end(), x) -
@@ -142,6 +171,9 @@ std::optional<RowTable> tabulate(const Measurement& m, const Parameters& base, d
       table.states.push_back(samples[i].second);
     }
   }
+  for (const RowPrediction& state : table.states) {
+    table.shares.push_back(contribution(m.observed, state));
+  }
   return table;
 }
 
@@ -168,16 +200,16 @@ struct Segment {
   bool contains(double v) const { return lo <= v && (v < hi || (v == hi && std::isinf(hi))); }
 };
 
-// Scores the tabulated rows of one fit at any (ln K, p).
+// Scores the tabulated rows of one fit at any (ln K, p), ln K within [log_K_lo, log_K_hi].
 class Fitter {
  public:
-  Fitter(std::vector<const RowTable*> tables, std::vector<const Measurement*> rows)
-      : tables_(std::move(tables)), rows_(std::move(rows)) {}
+  Fitter(std::vector<const RowTable*> tables, double log_K_lo, double log_K_hi)
+      : tables_(std::move(tables)), log_K_lo_(log_K_lo), log_K_hi_(log_K_hi) {}
 
   CalibrationScore score_at(double log_K, double p) const {
     ScoreSum sum;
-    for (std::size_t i = 0; i < tables_.size(); ++i) {
-      sum.add(rows_[i]->observed, tables_[i]->at(p * (log_K + tables_[i]->log_g)));
+    for (const RowTable* t : tables_) {
+      sum.add(t->shares[t->index_at(p * (log_K + t->log_g))]);
     }
     return sum.score();
   }
@@ -185,32 +217,18 @@ class Fitter {
   // Every plateau along ln K at fixed p: a row's prediction changes where p (ln K + log_g) crosses
   // one of its edges, so the breakpoints are known and nothing between them is missed.
   std::vector<Segment> sweep_K(double p) const {
-    std::vector<double> breaks;
-    for (const RowTable* t : tables_) {
-      for (double e : t->edges) {
-        breaks.push_back(e / p - t->log_g);
-      }
-    }
-    return sweep(std::move(breaks), -kInfinity, kInfinity,
-                 [&](double log_K) { return score_at(log_K, p); });
+    return sweep(log_K_lo_, log_K_hi_, [p](const RowTable& t, std::size_t j) {
+      return Break{t.edges[j] / p - t.log_g, 1};
+    });
   }
 
-  // Every plateau along p in [p_min, p_max] at fixed ln K.
+  // Every plateau along p in [p_min, p_max] at fixed ln K. Where ln s at p = 1 is negative, a
+  // larger p lowers x = p ln s, so the row's prediction steps back through its states.
   std::vector<Segment> sweep_p(double log_K, double p_min, double p_max) const {
-    std::vector<double> breaks;
-    for (const RowTable* t : tables_) {
-      const double c = log_K + t->log_g;  // ln s at p = 1
-      if (c == 0.0) {
-        continue;
-      }
-      for (double e : t->edges) {
-        const double p = e / c;
-        if (p > p_min && p < p_max) {
-          breaks.push_back(p);
-        }
-      }
-    }
-    return sweep(std::move(breaks), p_min, p_max, [&](double p) { return score_at(log_K, p); });
+    return sweep(p_min, p_max, [log_K](const RowTable& t, std::size_t j) {
+      const double c = log_K + t.log_g;  // ln s at p = 1
+      return c == 0.0 ? Break{0.0, 0} : Break{t.edges[j] / c, c > 0.0 ? 1 : -1};
+    });
   }
 
   // The mean over the rows of |ln s| at p = 1: how far a unit change of p moves ln s^p.
@@ -222,32 +240,86 @@ class Fitter {
     return tables_.empty() ? 0.0 : sum / static_cast<double>(tables_.size());
   }
 
+  double log_K_lo() const { return log_K_lo_; }
+  double log_K_hi() const { return log_K_hi_; }
+
  private:
-  template <class Score>
-  static std::vector<Segment> sweep(std::vector<double> breaks, double lo, double hi,
-                                    const Score& score) {
-    std::sort(breaks.begin(), breaks.end());
-    breaks.erase(std::unique(breaks.begin(), breaks.end()), breaks.end());
-    breaks.insert(breaks.begin(), lo);
-    breaks.push_back(hi);
-    std::vector<Segment> segments;
-    for (std::size_t i = 0; i + 1 < breaks.size(); ++i) {
-      Segment s{breaks[i], breaks[i + 1], {}};
-      if (!(s.hi > s.lo)) {
-        continue;
+  // Where along the swept coordinate a row's edge lies, and which way its state index steps when
+  // the sweep passes it (+1 up, -1 down, 0: the row does not move along this coordinate).
+  struct Break {
+    double at;
+    int step;
+  };
+  struct Event {
+    double at;
+    std::uint32_t row;
+    int step;
+  };
+
+  // One pass along [lo, hi]: each row's state is followed through its breaks in order, and the
+  // score is kept as a running sum, so a sweep costs a sort of its breaks rather than a lookup of
+  // every row in every segment (the fits of a coverage check run this hundreds of thousands of
+  // times). A row's state in a segment is set by how many of its breaks, as computed here, lie
+  // at or below the segment's start: the segments and their scores are those of evaluating each
+  // segment's middle.
+  template <class BreakOf>
+  std::vector<Segment> sweep(double lo, double hi, const BreakOf& break_of) const {
+    std::vector<Event> events;
+    std::vector<std::size_t> index(tables_.size());
+    ScoreSum sum;
+    for (std::size_t r = 0; r < tables_.size(); ++r) {
+      const RowTable& t = *tables_[r];
+      const std::size_t edges = t.edges.size();
+      const int step = edges == 0 ? 0 : break_of(t, 0).step;
+      if (step == 0) {
+        index[r] = t.index_at(0.0);  // x = p ln s with ln s = 0: the same state for every p
+      } else {
+        // The breaks run up with the edges (step +1) or down (step -1); the state at lo counts
+        // the edges already passed.
+        std::size_t passed = 0;
+        for (std::size_t j = 0; j < edges; ++j) {
+          const Break b = break_of(t, j);
+          if (b.at > lo && b.at < hi) {
+            events.push_back({b.at, static_cast<std::uint32_t>(r), b.step});
+          }
+          passed += step > 0 ? b.at <= lo : b.at > lo;
+        }
+        index[r] = passed;
       }
-      s.score = score(s.middle());
+      sum.add(t.shares[index[r]]);
+    }
+    std::sort(events.begin(), events.end(),
+              [](const Event& a, const Event& b) { return a.at < b.at; });
+    std::vector<Segment> segments;
+    auto close_segment = [&](double end) {
+      Segment s{segments.empty() ? lo : segments.back().hi, end, sum.score()};
       if (!segments.empty() && same_score(segments.back().score, s.score)) {
-        segments.back().hi = s.hi;  // the score stays the same across this break
+        segments.back().hi = end;  // the score stays the same across this break
       } else {
         segments.push_back(s);
       }
+    };
+    std::size_t e = 0;
+    while (e < events.size()) {
+      const double at = events[e].at;
+      close_segment(at);
+      for (; e < events.size() && events[e].at == at; ++e) {
+        const RowTable& t = *tables_[events[e].row];
+        std::size_t& i = index[events[e].row];
+        sum.add(t.shares[i], -1);
+        i = events[e].step > 0 ? i + 1 : i - 1;
+        sum.add(t.shares[i]);
+      }
+    }
+    if (hi > lo) {
+      close_segment(hi);
     }
     return segments;
   }
 
   std::vector<const RowTable*> tables_;
-  std::vector<const Measurement*> rows_;
+  double log_K_lo_;
+  double log_K_hi_;
 };
 
 // The best segment: lowest score, then the widest (the fit least sensitive to its constants).
@@ -275,6 +347,17 @@ const Segment* segment_containing(const std::vector<Segment>& segments, double v
 // in) would free before the pointer is read: name the sweep's result first.
 const Segment* best_segment(std::vector<Segment>&& segments) = delete;
 const Segment* segment_containing(std::vector<Segment>&& segments, double v) = delete;
+
+// Which ends of [lo, hi] the values [low, high] reach, to a relative 1e-12 (the envelope's ends
+// come from the same bounds through exp and back).
+RangeEnd range_end(double low, double high, double lo, double hi) {
+  const bool at_lo = low <= lo * (1.0 + 1e-12);
+  const bool at_hi = high >= hi * (1.0 - 1e-12);
+  return at_lo && at_hi ? RangeEnd::both
+         : at_lo        ? RangeEnd::lower
+         : at_hi        ? RangeEnd::upper
+                        : RangeEnd::none;
+}
 
 // K alone: every plateau along ln K is visited; the widest of the best is taken, at its
 // geometric middle (as docs/calibration.md fixed the default c).
@@ -424,18 +507,33 @@ std::optional<FittedConstants> fit_K_and_p(const Fitter& fitter, const Calibrati
 std::optional<FittedConstants> fit_with(const Fitter& fitter, double base_p,
                                         const CalibrationOptions& o,
                                         const std::function<bool(double)>& keep_going) {
-  if (o.fit == FitConstants::K) {
-    return fit_K(fitter, base_p);
+  std::optional<FittedConstants> fit = o.fit == FitConstants::K
+                                           ? std::optional(fit_K(fitter, base_p))
+                                           : fit_K_and_p(fitter, o, keep_going);
+  if (fit) {
+    fit->K_min = std::exp(fitter.log_K_lo());
+    fit->K_max = std::exp(fitter.log_K_hi());
+    fit->p_min = o.fit == FitConstants::K ? base_p : o.p_min;
+    fit->p_max = o.fit == FitConstants::K ? base_p : o.p_max;
+    fit->K_end = range_end(fit->best_K_min, fit->best_K_max, fit->K_min, fit->K_max);
+    if (o.fit == FitConstants::K_and_p) {
+      fit->p_end = range_end(fit->best_p_min, fit->best_p_max, fit->p_min, fit->p_max);
+    }
   }
-  return fit_K_and_p(fitter, o, keep_going);
+  return fit;
+}
+
+const InputSpec& input_row(std::string_view key) {
+  return *find_input(key);
 }
 
 void check_options(const CalibrationOptions& o) {
-  if (!(o.p_min > 0.0 && o.p_max <= 5.0 && o.p_min < o.p_max && o.p_step > 0.0 &&
-        o.tabulation_step_decades > 0.0 && o.tabulation_step_decades <= 0.1)) {
-    throw CalibrationError(
-        "calibration options: need 0 < p_min < p_max <= 5, p_step > 0 and a tabulation step in "
-        "(0, 0.1] decades");
+  const InputInterval& p_range = input_row("p").valid;
+  if (!(p_range.contains(o.p_min) && p_range.contains(o.p_max) && o.p_min < o.p_max &&
+        o.p_step > 0.0 && o.tabulation_step_decades > 0.0 && o.tabulation_step_decades <= 0.1)) {
+    throw CalibrationError("calibration options: need p_min < p_max, both in p's range " +
+                           p_range.text() +
+                           ", p_step > 0 and a tabulation step in (0, 0.1] decades");
   }
 }
 
@@ -445,7 +543,96 @@ void check_base(const Parameters& base) {
   }
 }
 
+// ln K over c's range in the input table at the base's Poisson ratio, a hair inside its ends so
+// that any K the search returns reads back as a c the table (and a preset) accepts.
+std::pair<double, double> log_K_range(const Parameters& base) {
+  const InputInterval& c = input_row("c").valid;
+  Parameters at = base;
+  at.model.load_constant_c = c.lo;
+  const double lo = std::log(stiffness_constant_K(at));
+  at.model.load_constant_c = c.hi;
+  const double hi = std::log(stiffness_constant_K(at));
+  constexpr double kInside = 1e-9;
+  return {lo + kInside, hi - kInside};
+}
+
 }  // namespace
+
+struct CalibrationTables::Data {
+  std::vector<RowTable> tables;
+  CalibrationOptions options;
+  double base_p = 1.0;
+  std::pair<double, double> log_K;
+};
+
+std::optional<CalibrationTables> CalibrationTables::tabulate(const std::vector<Measurement>& rows,
+                                                             const Parameters& base,
+                                                             const CalibrationOptions& options,
+                                                             const CalibrationProgress& progress) {
+  check_options(options);
+  check_base(base);
+  if (static_cast<std::int64_t>(rows.size()) > kMaxCalibrationRows) {
+    throw CalibrationError(std::to_string(rows.size()) + " rows, above the limit of " +
+                           std::to_string(kMaxCalibrationRows) + " rows a calibration fits");
+  }
+  auto data = std::make_shared<Data>();
+  data->tables.resize(rows.size());
+  data->options = options;
+  data->base_p = base.model.stress_exponent_p;
+  data->log_K = log_K_range(base);
+  std::vector<char> complete(rows.size(), 0);
+  const bool finished = run_tasks(
+      rows.size(), options.threads,
+      [&](std::size_t i, const std::atomic<bool>& stop) {
+        std::optional<RowTable> t = foldlab::tabulate(
+            rows[i], base, options.tabulation_step_decades, [&stop] { return !stop.load(); });
+        if (t) {
+          data->tables[i] = std::move(*t);
+          complete[i] = 1;
+        }
+      },
+      progress);
+  if (!finished || std::count(complete.begin(), complete.end(), 0) > 0) {
+    return std::nullopt;
+  }
+  return CalibrationTables(std::move(data));
+}
+
+std::optional<FittedConstants> CalibrationTables::fit(
+    const std::vector<std::size_t>& subset, const std::function<bool(double)>& keep_going) const {
+  std::vector<const RowTable*> tables;
+  for (std::size_t i : subset) {
+    tables.push_back(&data_->tables.at(i));
+  }
+  return fit_with(Fitter(std::move(tables), data_->log_K.first, data_->log_K.second), data_->base_p,
+                  data_->options, [&](double f) { return !keep_going || keep_going(f); });
+}
+
+std::size_t CalibrationTables::size() const {
+  return data_->tables.size();
+}
+
+std::vector<std::string> range_end_notes(const FittedConstants& f, double poisson_ratio) {
+  std::vector<std::string> notes;
+  auto note = [&](const char* name, RangeEnd end, double lo, double hi, const std::string& why) {
+    if (end == RangeEnd::none) {
+      return;
+    }
+    const std::string ends =
+        end == RangeEnd::both
+            ? detail::printf_string("both its bounds, %.4g and %.4g", lo, hi)
+            : detail::printf_string("its %s bound %.4g", end == RangeEnd::lower ? "lower" : "upper",
+                                    end == RangeEnd::lower ? lo : hi);
+    notes.push_back("the best score reaches " + std::string(name) + " at " + ends + " (" + why +
+                    "): the data would take " + name + " further than the search allows");
+  };
+  const double c_per_K = 1.0 - poisson_ratio * poisson_ratio;
+  note("K", f.K_end, f.K_min, f.K_max,
+       detail::printf_string("c from %.4g to %.4g at nu = %.3g, the input table's range of c",
+                             f.K_min * c_per_K, f.K_max * c_per_K, poisson_ratio));
+  note("p", f.p_end, f.p_min, f.p_max, "the search range of p");
+  return notes;
+}
 
 std::string_view to_string(FitConstants f) {
   return f == FitConstants::K ? "K" : "K,p";
@@ -495,7 +682,7 @@ CalibrationScore score_predictions(const std::vector<Measurement>& rows,
                                    const std::vector<RowPrediction>& predictions) {
   ScoreSum sum;
   for (std::size_t i = 0; i < rows.size() && i < predictions.size(); ++i) {
-    sum.add(rows[i].observed, predictions[i]);
+    sum.add(contribution(rows[i].observed, predictions[i]));
   }
   return sum.score();
 }
@@ -528,24 +715,14 @@ std::optional<FittedConstants> fit_constants(const std::vector<Measurement>& row
     throw CalibrationError("nothing to fit: no rows");
   }
   auto keep_going = [&](double fraction) { return !progress || progress(fraction); };
-  std::vector<RowTable> tables;
-  for (std::size_t i = 0; i < rows.size(); ++i) {
-    const double done = 0.5 * static_cast<double>(i) / static_cast<double>(rows.size());
-    std::optional<RowTable> t =
-        tabulate(rows[i], base, options.tabulation_step_decades, [&] { return keep_going(done); });
-    if (!t) {
-      return std::nullopt;
-    }
-    tables.push_back(std::move(*t));
+  const std::optional<CalibrationTables> tables = CalibrationTables::tabulate(
+      rows, base, options, [&](double f) { return keep_going(0.5 * f); });
+  if (!tables) {
+    return std::nullopt;
   }
-  std::vector<const RowTable*> table_pointers;
-  std::vector<const Measurement*> row_pointers;
-  for (std::size_t i = 0; i < rows.size(); ++i) {
-    table_pointers.push_back(&tables[i]);
-    row_pointers.push_back(&rows[i]);
-  }
-  return fit_with(Fitter(table_pointers, row_pointers), base.model.stress_exponent_p, options,
-                  [&](double f) { return keep_going(0.5 + 0.5 * f); });
+  std::vector<std::size_t> all(rows.size());
+  std::iota(all.begin(), all.end(), std::size_t{0});
+  return tables->fit(all, [&](double f) { return keep_going(0.5 + 0.5 * f); });
 }
 
 CalibrationReport calibrate(const MeasurementSet& data, const Parameters& base,
@@ -556,7 +733,7 @@ CalibrationReport calibrate(const MeasurementSet& data, const Parameters& base,
   if (static_cast<std::int64_t>(data.rows.size()) > kMaxCalibrationRows) {
     throw CalibrationError(data.origin + ": " + std::to_string(data.rows.size()) +
                            " rows, above the limit of " + std::to_string(kMaxCalibrationRows) +
-                           " rows a calibration fits (each costs about 0.5 s); split the file");
+                           " rows a calibration fits; split the file");
   }
   CalibrationReport report;
   report.fit = options.fit;
@@ -597,99 +774,95 @@ CalibrationReport calibrate(const MeasurementSet& data, const Parameters& base,
                                            return data.rows[i].group != g;
                                          })) >= constants;
                             });
-  const double fits = 1.0 + (leave_one_out ? static_cast<double>(fit_rows.size()) : 0.0) +
-                      (split_groups ? static_cast<double>(groups.size()) : 0.0);
-  double fits_done = 0.0;
-  // Tabulating is about as much work as the fits together (K,p) and far more than K alone.
+  // Every fit row tabulated once (0 to 40 % of the progress: about as much work as the fits
+  // together for K and p, far more for K alone), then every fit at once: the in-sample one, one
+  // per left-out row and one per left-out group, each written to its own slot.
   auto keep_going = [&](double fraction) { return !progress || progress(fraction); };
-  auto fit_progress = [&](double f) { return keep_going(0.4 + 0.6 * (fits_done + f) / fits); };
-
-  std::vector<RowTable> tables(data.rows.size());
-  for (std::size_t k = 0; k < fit_rows.size(); ++k) {
-    const double done = 0.4 * static_cast<double>(k) / static_cast<double>(fit_rows.size());
-    std::optional<RowTable> t =
-        tabulate(data.rows[fit_rows[k]], base, options.tabulation_step_decades,
-                 [&] { return keep_going(done); });
-    if (!t) {
-      report.cancelled = true;
-      return report;
-    }
-    tables[fit_rows[k]] = std::move(*t);
+  std::vector<Measurement> fit_measurements;
+  for (std::size_t i : fit_rows) {
+    fit_measurements.push_back(data.rows[i]);
   }
-  auto fitter_for = [&](const auto& include) {
-    std::vector<const RowTable*> t;
-    std::vector<const Measurement*> r;
-    for (std::size_t i : fit_rows) {
-      if (include(i)) {
-        t.push_back(&tables[i]);
-        r.push_back(&data.rows[i]);
+  const std::optional<CalibrationTables> tables = CalibrationTables::tabulate(
+      fit_measurements, base, options, [&](double f) { return keep_going(0.4 * f); });
+  if (!tables) {
+    report.cancelled = true;
+    return report;
+  }
+  // Subsets as positions in fit_rows; subsets[0] is the in-sample fit.
+  std::vector<std::vector<std::size_t>> subsets(1);
+  for (std::size_t k = 0; k < fit_rows.size(); ++k) {
+    subsets[0].push_back(k);
+  }
+  if (leave_one_out) {
+    for (std::size_t left_out = 0; left_out < fit_rows.size(); ++left_out) {
+      std::vector<std::size_t>& subset = subsets.emplace_back();
+      for (std::size_t k = 0; k < fit_rows.size(); ++k) {
+        if (k != left_out) {
+          subset.push_back(k);
+        }
       }
     }
-    return Fitter(std::move(t), std::move(r));
-  };
-  const double base_p = base.model.stress_exponent_p;
-  auto run_fit = [&](const Fitter& fitter) {
-    std::optional<FittedConstants> fit = fit_with(fitter, base_p, options, fit_progress);
-    fits_done += 1.0;
-    if (fit && !keep_going(0.4 + 0.6 * fits_done / fits)) {
-      fit.reset();
+  }
+  if (split_groups) {
+    for (const std::string& group : groups) {
+      std::vector<std::size_t>& subset = subsets.emplace_back();
+      for (std::size_t k = 0; k < fit_rows.size(); ++k) {
+        if (data.rows[fit_rows[k]].group != group) {
+          subset.push_back(k);
+        }
+      }
     }
-    return fit;
-  };
+  }
+  std::vector<std::optional<FittedConstants>> fits(subsets.size());
+  const bool finished = run_tasks(
+      subsets.size(), options.threads,
+      [&](std::size_t i, const std::atomic<bool>& stop) {
+        fits[i] = tables->fit(subsets[i], [&stop](double) { return !stop.load(); });
+      },
+      [&](double f) { return keep_going(0.4 + 0.6 * f); });
+  if (!finished || std::any_of(fits.begin(), fits.end(), [](const auto& f) { return !f; })) {
+    report.cancelled = true;
+    return report;
+  }
   auto predict = [&](const Measurement& m, double K, double p) {
     return compare_with_published(m.observed, with_constants(parameters_for(m, base), K, p));
   };
 
-  const std::optional<FittedConstants> in_sample =
-      run_fit(fitter_for([](std::size_t) { return true; }));
-  if (!in_sample) {
-    report.cancelled = true;
-    return report;
-  }
-  report.fitted = *in_sample;
+  const FittedConstants& in_sample = *fits[0];
+  report.fitted = in_sample;
   for (const Measurement& m : data.rows) {
     CalibrationRow row;
     row.measurement = m;
     row.baseline = compare_with_published(m.observed, parameters_for(m, base));
-    row.fitted = predict(m, in_sample->K, in_sample->p);
+    row.fitted = predict(m, in_sample.K, in_sample.p);
     if (m.role == MeasurementRole::check) {
       row.held_out = row.fitted;
-      row.held_out_K = in_sample->K;
-      row.held_out_p = in_sample->p;
+      row.held_out_K = in_sample.K;
+      row.held_out_p = in_sample.p;
     }
     report.rows.push_back(std::move(row));
   }
+  std::size_t next_fit = 1;
   if (leave_one_out) {
     for (std::size_t left_out : fit_rows) {
-      const std::optional<FittedConstants> fit =
-          run_fit(fitter_for([left_out](std::size_t i) { return i != left_out; }));
-      if (!fit) {
-        report.cancelled = true;
-        return report;
-      }
+      const FittedConstants& fit = *fits[next_fit++];
       CalibrationRow& row = report.rows[left_out];
-      row.held_out = predict(row.measurement, fit->K, fit->p);
-      row.held_out_K = fit->K;
-      row.held_out_p = fit->p;
+      row.held_out = predict(row.measurement, fit.K, fit.p);
+      row.held_out_K = fit.K;
+      row.held_out_p = fit.p;
     }
   }
   std::vector<PublishedComparison> pooled_test;
   if (split_groups) {
     for (const std::string& group : groups) {
-      const std::optional<FittedConstants> fit =
-          run_fit(fitter_for([&](std::size_t i) { return data.rows[i].group != group; }));
-      if (!fit) {
-        report.cancelled = true;
-        return report;
-      }
+      const FittedConstants& fit = *fits[next_fit++];
       GroupSplit split;
       split.test_group = group;
-      split.fit = *fit;
+      split.fit = fit;
       std::vector<PublishedComparison> train;
       std::vector<PublishedComparison> test;
       for (std::size_t i : fit_rows) {
-        (data.rows[i].group == group ? test : train)
-            .push_back(predict(data.rows[i], fit->K, fit->p));
+        (data.rows[i].group == group ? test : train).push_back(predict(data.rows[i], fit.K, fit.p));
       }
       split.train = summarize(train);
       split.test = summarize(test);

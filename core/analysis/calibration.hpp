@@ -4,6 +4,7 @@
 #pragma once
 
 #include <functional>
+#include <memory>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -68,7 +69,13 @@ struct CalibrationOptions {
   // every change located by bisection to 1e-10.
   double tabulation_step_decades = 0.001;
   bool held_out = true;  // leave-one-out and group splits (off: the in-sample fit only)
+  // Rows are tabulated and independent fits run on this many threads (<= 0: every core). The
+  // results do not depend on it.
+  int threads = 0;
 };
+
+// Which end of its search range a fitted constant's plateau reaches, if any.
+enum class RangeEnd { none, lower, upper, both };
 
 // Fitted constants and the plateau around them: every K in [K_low, K_high) at this p, and every p
 // in [p_low, p_high] at this K, gives the same score (the loss is piecewise constant: it changes
@@ -93,7 +100,20 @@ struct FittedConstants {
   // reached (K and p), or each equally good band of K (K alone). Predictions there are what the
   // data cannot tell apart from the fit's.
   std::vector<Eq7Constants> equally_good_ends;
+  // The search stays inside the input table's ranges: K within c's range at the base's Poisson
+  // ratio, p within p's range (and the options' p_min, p_max). Where the constants with the best
+  // score reach one of these ends (K_end, p_end), the data would take that constant further.
+  double K_min = 0.0;
+  double K_max = 0.0;
+  double p_min = 0.0;
+  double p_max = 0.0;
+  RangeEnd K_end = RangeEnd::none;
+  RangeEnd p_end = RangeEnd::none;  // always none when p is not fitted
 };
+
+// "the best score reaches K at its lower bound 0.001099 (c from 0.001 to 1e+04 at nu = 0.3, ...)",
+// one note per constant whose best-scoring values reach an end of its range; empty when none do.
+std::vector<std::string> range_end_notes(const FittedConstants& f, double poisson_ratio);
 
 // Returns false to cancel. `fraction_done` is in [0, 1].
 using CalibrationProgress = std::function<bool(double fraction_done)>;
@@ -114,6 +134,31 @@ std::optional<FittedConstants> fit_constants(const std::vector<Measurement>& row
                                              const Parameters& base,
                                              const CalibrationOptions& options,
                                              const CalibrationProgress& progress = {});
+
+// Each row's prediction tabulated against ln s^p (docs/calibration.md, "The search"): the costly
+// part of a fit, thousands of solves per row, while a fit on tabulated rows is lookups alone. A
+// leave-one-out or coverage check fits many subsets of the same rows; tabulating each row once
+// and fitting every subset from these tables gives each fit exactly what fit_constants() on that
+// subset gives.
+class CalibrationTables {
+ public:
+  // Tabulates `rows` with `base`'s model settings on options.threads threads. nullopt when
+  // `progress` cancels; throws CalibrationError as fit_constants() does.
+  static std::optional<CalibrationTables> tabulate(const std::vector<Measurement>& rows,
+                                                   const Parameters& base,
+                                                   const CalibrationOptions& options,
+                                                   const CalibrationProgress& progress = {});
+  // The fit on the rows at `subset` (indices into the rows tabulated, at least one). nullopt when
+  // `keep_going` (polled now and then) returns false.
+  std::optional<FittedConstants> fit(const std::vector<std::size_t>& subset,
+                                     const std::function<bool(double)>& keep_going = {}) const;
+  std::size_t size() const;
+
+ private:
+  struct Data;
+  explicit CalibrationTables(std::shared_ptr<const Data> data) : data_(std::move(data)) {}
+  std::shared_ptr<const Data> data_;
+};
 
 // `base` with K (c set at base's Poisson ratio) and p.
 Parameters with_constants(const Parameters& base, double K, double p);

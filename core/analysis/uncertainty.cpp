@@ -7,6 +7,7 @@
 #include <set>
 #include <utility>
 
+#include "core/analysis/parallel_tasks.hpp"
 #include "core/model/solver.hpp"
 #include "core/model/text_format.hpp"
 
@@ -35,15 +36,20 @@ double interval_level(int residuals) {
 }
 
 HeldOutResidual held_out_residual(const PublishedResult& observed, const Solution& predicted) {
+  // Clamped to what a preset stores (kMaxResidualFolds, kMaxLogResidual): only an absurd row gets
+  // there, and its interval is clamped to the physical range anyway.
   HeldOutResidual r;
   if (observed.n) {
-    r.n = *observed.n - predicted.n;
+    r.n = std::clamp(static_cast<double>(*observed.n) - predicted.n, -kMaxResidualFolds,
+                     kMaxResidualFolds);
   }
   if (observed.z_max_mm && predicted.z_max_mm > 0.0) {
-    r.log_z_max = std::log(*observed.z_max_mm) - std::log(predicted.z_max_mm);
+    r.log_z_max = std::clamp(std::log(*observed.z_max_mm) - std::log(predicted.z_max_mm),
+                             -kMaxLogResidual, kMaxLogResidual);
   }
   if (observed.Q && predicted.n >= 1) {
-    r.log_Q = std::log(*observed.Q) - std::log(predicted.Q);
+    r.log_Q = std::clamp(std::log(*observed.Q) - std::log(predicted.Q), -kMaxLogResidual,
+                         kMaxLogResidual);
   }
   return r;
 }
@@ -95,16 +101,24 @@ std::optional<PredictionRange> prediction_interval(const Parameters& p,
   }
   PredictionRange out;
   out.level = interval_level(n.count);
-  out.n_min = std::max(0, static_cast<int>(std::lround(n.lo)));
-  out.n_max = std::max(out.n_min, static_cast<int>(std::lround(n.hi)));
-  // A quantity the data never observed often enough is bounded by the geometry alone: z_max
-  // from 0 to h, Q from 1 to a_0 / (0.01 h) = 101.
+  // Every end within what the geometry allows, whatever the residuals say: n from 0 to the
+  // solver's cap, z_max from 0 to h, Q from 1 to a_0 / (0.01 h) = 101. A quantity the data never
+  // observed often enough gets that whole range. Clamped before rounding: a residual of any size
+  // stays a finite int.
+  const double z_ceiling = p.hanging.height_mm;
+  constexpr double kQCeiling = kLowerBoundaryFactor / 0.01;
+  auto folds = [](double v) {
+    return static_cast<int>(std::lround(std::clamp(v, 0.0, static_cast<double>(kMaxWrinkles))));
+  };
+  out.n_min = folds(n.lo);
+  out.n_max = std::max(out.n_min, folds(n.hi));
   const bool z_known = log_z.count >= 2;
-  out.z_max_min_mm = z_known ? std::exp(log_z.lo) : 0.0;
-  out.z_max_max_mm = z_known ? std::exp(log_z.hi) : p.hanging.height_mm;
+  out.z_max_min_mm = z_known ? std::min(std::exp(log_z.lo), z_ceiling) : 0.0;
+  out.z_max_max_mm =
+      z_known ? std::clamp(std::exp(log_z.hi), out.z_max_min_mm, z_ceiling) : z_ceiling;
   const bool Q_known = log_Q.count >= 2;
-  out.Q_min = Q_known ? std::max(1.0, std::exp(log_Q.lo)) : 1.0;
-  out.Q_max = Q_known ? std::max(out.Q_min, std::exp(log_Q.hi)) : 101.0;
+  out.Q_min = Q_known ? std::clamp(std::exp(log_Q.lo), 1.0, kQCeiling) : 1.0;
+  out.Q_max = Q_known ? std::clamp(std::exp(log_Q.hi), out.Q_min, kQCeiling) : kQCeiling;
   return out;
 }
 
@@ -198,6 +212,10 @@ void count(QuantityCoverage& into, std::optional<double> observed, double lo, do
 
 }  // namespace
 
+int max_coverage_rows(FitConstants fit) {
+  return fit == FitConstants::K ? kMaxCoverageRowsK : kMaxCoverageRowsKandP;
+}
+
 std::optional<std::vector<CoverageCheck>> cross_validated_coverage(
     const MeasurementSet& data, const Parameters& base, const CalibrationOptions& options,
     const CalibrationProgress& progress) {
@@ -208,6 +226,13 @@ std::optional<std::vector<CoverageCheck>> cross_validated_coverage(
     }
   }
   check_fit_row_count(static_cast<int>(fit_rows.size()), options.fit);
+  if (static_cast<int>(fit_rows.size()) > max_coverage_rows(options.fit)) {
+    throw CalibrationError(printf_string(
+        "%zu fit rows: a coverage check fitting %s takes at most %d (it refits about m² times, "
+        "each on m rows; docs/performance.md); fit K alone or use fewer rows",
+        fit_rows.size(), std::string(to_string(options.fit)).c_str(),
+        max_coverage_rows(options.fit)));
+  }
   std::vector<std::pair<std::string, std::vector<Split>>> checks(1);
   checks[0].first = "leave-one-out";
   std::set<std::string> groups;
@@ -232,45 +257,88 @@ std::optional<std::vector<CoverageCheck>> cross_validated_coverage(
   CalibrationOptions inner = options;
   inner.held_out = false;
   const int needed = options.fit == FitConstants::K ? 1 : 2;
-  int done = 0;
-  int total = 0;
-  for (const auto& [name, splits] : checks) {
-    for (const Split& split : splits) {
-      total += static_cast<int>(split.train.size());
-    }
+  // Each fit row tabulated once (the first 30 % of the progress); every nested fit then looks up
+  // those tables, and all of them run at once, each into its own slot, so the counts below do not
+  // depend on the number of threads.
+  std::vector<Measurement> fit_measurements;
+  std::vector<std::size_t> position(data.rows.size());
+  for (std::size_t k = 0; k < fit_rows.size(); ++k) {
+    fit_measurements.push_back(data.rows[fit_rows[k]]);
+    position[fit_rows[k]] = k;
   }
-  std::vector<CoverageCheck> out;
-  for (const auto& [name, splits] : checks) {
-    CoverageCheck check;
-    check.name = name;
-    for (const Split& split : splits) {
+  auto keep_going = [&](double fraction) { return !progress || progress(fraction); };
+  const std::optional<CalibrationTables> tables = CalibrationTables::tabulate(
+      fit_measurements, base, inner, [&](double f) { return keep_going(0.3 * f); });
+  if (!tables) {
+    return std::nullopt;
+  }
+  // One job per training row of every split large enough: the fit without that row, and that
+  // row's residual under it.
+  struct Job {
+    std::size_t check;
+    std::size_t split;
+    std::size_t left_out;
+    std::vector<std::size_t> rows;  // positions in the tables
+  };
+  std::vector<Job> jobs;
+  for (std::size_t c = 0; c < checks.size(); ++c) {
+    for (std::size_t s = 0; s < checks[c].second.size(); ++s) {
+      const Split& split = checks[c].second[s];
       // Each training row's residual under the fit without it: that fit needs `needed` rows.
       if (static_cast<int>(split.train.size()) < needed + 1) {
-        done += static_cast<int>(split.train.size());
         continue;
       }
-      std::vector<Eq7Constants> fits;
-      std::vector<HeldOutResidual> residuals;
       for (std::size_t left_out : split.train) {
-        std::vector<Measurement> rows;
+        Job job{c, s, left_out, {}};
         for (std::size_t k : split.train) {
           if (k != left_out) {
-            rows.push_back(data.rows[k]);
+            job.rows.push_back(position[k]);
           }
         }
-        const std::optional<FittedConstants> fit = fit_constants(rows, base, inner);
-        if (!fit || (progress && !progress(static_cast<double>(++done) / total))) {
-          return std::nullopt;
+        jobs.push_back(std::move(job));
+      }
+    }
+  }
+  std::vector<std::optional<Eq7Constants>> fits(jobs.size());
+  std::vector<HeldOutResidual> residuals(jobs.size());
+  const bool finished = run_tasks(
+      jobs.size(), options.threads,
+      [&](std::size_t i, const std::atomic<bool>& stop) {
+        const std::optional<FittedConstants> fit =
+            tables->fit(jobs[i].rows, [&stop](double) { return !stop.load(); });
+        if (!fit) {
+          return;
         }
-        const Measurement& m = data.rows[left_out];
-        fits.push_back({fit->K, fit->p});
-        residuals.push_back(held_out_residual(
-            m.observed, solve(with_constants(parameters_for(m, base), fit->K, fit->p))));
+        const Measurement& m = data.rows[jobs[i].left_out];
+        fits[i] = Eq7Constants{fit->K, fit->p};
+        residuals[i] = held_out_residual(
+            m.observed, solve(with_constants(parameters_for(m, base), fit->K, fit->p)));
+      },
+      [&](double f) { return keep_going(0.3 + 0.7 * f); });
+  if (!finished || std::any_of(fits.begin(), fits.end(), [](const auto& f) { return !f; })) {
+    return std::nullopt;
+  }
+  std::vector<CoverageCheck> out;
+  std::size_t next_job = 0;
+  for (std::size_t c = 0; c < checks.size(); ++c) {
+    CoverageCheck check;
+    check.name = checks[c].first;
+    for (std::size_t s = 0; s < checks[c].second.size(); ++s) {
+      const Split& split = checks[c].second[s];
+      std::vector<Eq7Constants> split_fits;
+      std::vector<HeldOutResidual> split_residuals;
+      for (; next_job < jobs.size() && jobs[next_job].check == c && jobs[next_job].split == s;
+           ++next_job) {
+        split_fits.push_back(*fits[next_job]);
+        split_residuals.push_back(residuals[next_job]);
+      }
+      if (split_fits.empty()) {
+        continue;
       }
       for (std::size_t j : split.test) {
         const Measurement& m = data.rows[j];
         const std::optional<PredictionRange> r =
-            prediction_interval(parameters_for(m, base), fits, residuals);
+            prediction_interval(parameters_for(m, base), split_fits, split_residuals);
         if (!r) {
           continue;
         }

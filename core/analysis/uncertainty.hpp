@@ -48,10 +48,18 @@ struct CoverageCheck {
   std::string name;  // "leave-one-out", "fit on one group, test on another"
   QuantityCoverage n, z_max, Q;
 };
+// The most fit rows a coverage check takes. It refits about m² times, each fit on m rows, so its
+// time grows about as m³ (K and p) : measured on a shared 2-core VM (docs/performance.md), 24 rows
+// of K and p take 13-20 s and 32 rows 38 s, while K alone takes 1.2 s for 64 rows, the most a
+// preset stores.
+inline constexpr int kMaxCoverageRowsK = 64;
+inline constexpr int kMaxCoverageRowsKandP = 32;
+int max_coverage_rows(FitConstants fit);
+
 // Leave-one-out over the fit rows (each row's interval from fits and residuals on the others
 // alone, nested) and, when the rows come in groups, each group's rows from the others. Refits
-// about m² times: seconds for the paper's six rows. nullopt when cancelled. Throws
-// CalibrationError as calibrate() does.
+// about m² times: a fraction of a second for the paper's six rows. nullopt when cancelled. Throws
+// CalibrationError as calibrate() does, and for more fit rows than max_coverage_rows().
 std::optional<std::vector<CoverageCheck>> cross_validated_coverage(
     const MeasurementSet& data, const Parameters& base, const CalibrationOptions& options,
     const CalibrationProgress& progress = {});

@@ -243,16 +243,41 @@ std::vector<HeldOutResidual> read_residuals(Reader& r, const json& list,
   }
   for (std::size_t i = 0; i < list.size(); ++i) {
     const json& triple = list[i];
+    const std::string at = pointer + "/" + std::to_string(i);
     auto usable = [](const json& v) {
-      return v.is_null() ||
-             (v.is_number() && std::isfinite(v.get<double>()) && std::abs(v.get<double>()) < 1e6);
+      return v.is_null() || (v.is_number() && std::isfinite(v.get<double>()));
     };
     if (!triple.is_array() || triple.size() != 3 || !usable(triple[0]) || !usable(triple[1]) ||
         !usable(triple[2]) ||
         (triple[0].is_number() && triple[0].get<double>() != std::floor(triple[0].get<double>()))) {
-      r.problem(pointer + "/" + std::to_string(i),
-                "expected [n, ln z_max, ln Q] (finite numbers or null, n whole), got " +
-                    describe_json(triple));
+      r.problem(at, "expected [n, ln z_max, ln Q] (finite numbers or null, n whole), got " +
+                        describe_json(triple));
+      continue;
+    }
+    // Each bound with its reason, so that a hand-edited record says which number is wrong.
+    auto beyond = [&](const json& v, double bound) {
+      return v.is_number() && std::abs(v.get<double>()) > bound;
+    };
+    bool bounded = true;
+    if (beyond(triple[0], kMaxResidualFolds)) {
+      r.problem(at + "/0", "n residual " + detail::shortest_number(triple[0].get<double>()) +
+                               " is outside [-" + detail::shortest_number(kMaxResidualFolds) +
+                               ", " + detail::shortest_number(kMaxResidualFolds) +
+                               "]: a prediction never counts more folds than the solver's cap");
+      bounded = false;
+    }
+    for (int k : {1, 2}) {
+      if (beyond(triple[k], kMaxLogResidual)) {
+        r.problem(at + "/" + std::to_string(k),
+                  std::string(k == 1 ? "ln z_max" : "ln Q") + " residual " +
+                      detail::shortest_number(triple[k].get<double>()) + " is outside ±" +
+                      detail::printf_string("%.4g", kMaxLogResidual) +
+                      " (ln 1e6: a factor of a million either way): no fit worth storing misses "
+                      "by more, and its interval would not be finite");
+        bounded = false;
+      }
+    }
+    if (!bounded) {
       continue;
     }
     auto value = [](const json& v) {
@@ -297,8 +322,11 @@ std::optional<CalibrationRecord> read_calibration(Reader& r, const json& c, doub
     record.leave_one_out = read_constants_list(r, c.at("leave_one_out"), at + "/leave_one_out", nu);
   }
   if (c.contains("residuals")) {
+    const std::size_t before_residuals = problems.size();
     record.residuals = read_residuals(r, c.at("residuals"), at + "/residuals");
-    if (record.residuals.size() != record.leave_one_out.size()) {
+    // A refused entry is named already; the count is compared only when each entry was read.
+    if (problems.size() == before_residuals &&
+        record.residuals.size() != record.leave_one_out.size()) {
       r.problem(at + "/residuals", "expected one residual per leave_one_out fit (" +
                                        std::to_string(record.leave_one_out.size()) + "), got " +
                                        std::to_string(record.residuals.size()));

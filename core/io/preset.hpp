@@ -10,6 +10,7 @@
 #include <nlohmann/json_fwd.hpp>
 
 #include "core/model/parameters.hpp"
+#include "core/model/solver.hpp"
 
 namespace foldlab {
 
@@ -34,6 +35,13 @@ inline constexpr std::size_t kMaxCalibrationEntries = 64;
 // One fit row's leave-one-out residual: what was observed minus what the fit without the row
 // predicts for it; n as a difference, z_max and Q as natural-log ratios (they scale). Absent where
 // the row observed nothing, or the prediction has no folds to compare.
+// The bounds a stored residual keeps, so that every interval built from it is finite: n misses
+// by at most the solver's fold cap (a prediction cannot count more), and z_max and Q by at most a
+// factor of 1e6 either way (ln 1e6), far beyond any fit worth storing and far from exp's overflow
+// at 709. held_out_residual() clamps to them, so a calibration never writes what the reader
+// refuses.
+inline constexpr double kMaxResidualFolds = kMaxWrinkles;
+inline constexpr double kMaxLogResidual = 13.815510557964274;  // ln 1e6
 struct HeldOutResidual {
   std::optional<double> n;
   std::optional<double> log_z_max;

@@ -189,6 +189,25 @@ std::vector<BenchmarkCase> realistic_cases(int count, std::uint64_t seed) {
   return cases;
 }
 
+std::vector<Measurement> calibration_rows(const std::vector<Measurement>& base, int count) {
+  std::vector<Measurement> rows;
+  for (int i = 0; i < count && !base.empty(); ++i) {
+    const auto size = static_cast<int>(base.size());
+    Measurement m = base[static_cast<std::size_t>(i % size)];
+    // Rounds 0, 1, 2, 3, 4, ... move by 0, -3 %, +3 %, -6 %, +6 %, ...
+    const int round = i / size;
+    const double step = (round % 2 == 0 ? 1.0 : -1.0) * 0.03 * ((round + 1) / 2);
+    m.inputs.hanging.height_mm = std::round(m.inputs.hanging.height_mm * (1.0 + step));
+    m.inputs.fabric.weight_N_per_mm2 *= 1.0 - 0.5 * step;
+    m.observed.z_max_mm = *m.observed.z_max_mm * (1.0 + 0.7 * step);
+    m.observed.Q = 1.0 + (*m.observed.Q - 1.0) * (1.0 - 0.4 * step);
+    m.name = "row " + std::to_string(i + 1);
+    m.row = i + 1;
+    rows.push_back(std::move(m));
+  }
+  return rows;
+}
+
 ReferenceSolution reference_solution(const Parameters& p) {
   Parameters exact_parameters = p;
   exact_parameters.model.method = Method::exact;

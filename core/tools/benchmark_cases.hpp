@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "core/io/measurements.hpp"
 #include "core/model/parameters.hpp"
 #include "core/model/solver.hpp"
 
@@ -24,6 +25,12 @@ struct BenchmarkCase {
 // t 0.05-1.5 mm, E 5-2000 MPa, w 3e-7-1e-5 N/mm², h 300-3000 mm, L 300-3000 mm, d 1 mm-0.3 L,
 // with the default model settings (calibrated K, l = L - d, Int[] to nearest).
 std::vector<BenchmarkCase> realistic_cases(int count, std::uint64_t seed = kBenchmarkSeed);
+
+// `count` measured rows for timing a calibration and its coverage check: row i is `base[i %
+// base.size()]` (e.g. the paper's fit rows) with h, w and the observed z_max and Q moved by fixed
+// steps of 3 % per round through `base`, so that every row differs and a run is the same
+// everywhere. Precondition: every base row observes n, z_max and Q.
+std::vector<Measurement> calibration_rows(const std::vector<Measurement>& base, int count);
 
 // The reference of one case: n as the exact method finds it, and a_n, z_max and Q re-solved
 // for that n in long double with code of its own: eq. 8 by a 2048-point periodic trapezoid
