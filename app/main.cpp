@@ -3,6 +3,7 @@
 #include <filesystem>
 #include <iostream>
 #include <map>
+#include <sstream>
 #include <string>
 
 #include <CLI/CLI.hpp>
@@ -10,6 +11,7 @@
 #include "app/cli/commands.hpp"
 #include "app/common/presets_dir.hpp"
 #include "app/common/version.hpp"
+#include "core/model/text_format.hpp"
 #ifdef FOLDLAB_WITH_GUI
 #include "app/gui/commands.hpp"
 #endif
@@ -62,7 +64,9 @@ int main(int argc, char** argv) {
   } catch (const CLI::CallForVersion& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
-    app.exit(e);  // prints the message
+    std::ostringstream message;  // CLI11 quotes the arguments as given: escaped before printing
+    app.exit(e, std::cout, message);
+    std::cerr << detail::escaped_lines(message.str());
     return app::kExitInvalidInput;
   }
   for (CLI::App* sub : app.get_subcommands()) {

@@ -821,12 +821,22 @@ TEST_F(CliTest, NamesReachTheTerminalSpeltOutNeverAsEscapes) {
     return r.out.find('\x1b') == std::string::npos && r.err.find('\x1b') == std::string::npos;
   };
   const fs::path rows = dir_ / "rows.csv";
+  // measure refuses such a name (it would go into the file), spelt out in the refusal.
   const RunResult measured =
       run({"measure", "--depths-mm", "80,40,20,10", "--name", evil, "--append", rows.string()});
-  ASSERT_EQ(measured.exit_status, 0) << measured.err;
+  EXPECT_EQ(measured.exit_status, 2) << measured.err;
   EXPECT_TRUE(clean(measured));
-  EXPECT_TRUE(contains(measured.out, spelt)) << measured.out;
+  EXPECT_TRUE(contains(measured.err, spelt)) << measured.err;
+  EXPECT_FALSE(fs::exists(rows));
+  // A file written by another tool may hold one: calibrate prints it spelt out. The name is
+  // the first column.
+  ASSERT_EQ(run({"measure", "--depths-mm", "80,40,20,10", "--append", rows.string()}).exit_status,
+            0);
   ASSERT_EQ(run({"measure", "--depths-mm", "60,30,15", "--append", rows.string()}).exit_status, 0);
+  std::string text = read_file(rows);
+  const std::size_t first_row = text.find('\n', text.find("name,")) + 1;
+  text.insert(first_row, evil);
+  std::ofstream(rows) << text;
   const RunResult calibrated = run({"calibrate", "--data", rows.string(), "--fit", "K"});
   EXPECT_TRUE(clean(calibrated)) << calibrated.out;
   EXPECT_TRUE(contains(calibrated.out, spelt)) << calibrated.out;
@@ -839,6 +849,28 @@ TEST_F(CliTest, NamesReachTheTerminalSpeltOutNeverAsEscapes) {
   ASSERT_EQ(solved.exit_status, 0) << solved.err;
   EXPECT_TRUE(clean(solved));
   EXPECT_TRUE(contains(solved.out, spelt)) << solved.out;
+
+  // Text of the command line quoted in any message: a missing file, an unknown option, a value.
+  for (const std::vector<std::string>& args :
+       {std::vector<std::string>{"solve", "--preset", evil},
+        std::vector<std::string>{"export", "--obj", evil + "/x.obj"},
+        std::vector<std::string>{"solve", "--method", evil},
+        std::vector<std::string>{"sweep", "--param", evil},
+        std::vector<std::string>{"solve", evil}}) {
+    const RunResult r = run(args);
+    EXPECT_NE(r.exit_status, 0) << args[1];
+    EXPECT_TRUE(clean(r)) << args[1] << ": " << r.err;
+  }
+  // In a Markdown table a '|' in a name stays inside its cell.
+  preset["name"] = "X|Y";
+  std::ofstream(preset_path) << preset.dump();
+  const RunResult compared = run({"compare", "--preset", preset_path.string()});
+  ASSERT_EQ(compared.exit_status, 0) << compared.err;
+  EXPECT_TRUE(contains(compared.out, "| X\\|Y |")) << compared.out;
+  // A line break in a name is one line too.
+  const RunResult two_lines = run({"measure", "--depths-mm", "80,40", "--name", "A\nB"});
+  EXPECT_EQ(two_lines.exit_status, 2) << two_lines.err;
+  EXPECT_TRUE(contains(two_lines.err, "A\\x0aB")) << two_lines.err;
 }
 
 // An output that exists and that the user could not open for writing is refused (exit 1), not

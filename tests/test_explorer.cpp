@@ -33,6 +33,7 @@
 #include "app/gui/input_player.hpp"
 #include "app/gui/panel.hpp"
 #include "app/gui/panels/widgets.hpp"
+#include "app/gui/play_script.hpp"
 #include "app/gui/plot_widget.hpp"
 #include "app/gui/renderer.hpp"
 #include "app/gui/scripted_run.hpp"
@@ -1584,6 +1585,7 @@ TEST_F(ExplorerTest, ASessionWithOneBadValueKeepsTheRestAndTheFileAsItWas) {
   nlohmann::json j = nlohmann::json::parse(foldlab::testing::read_file(session));
   const double loaded_h = j.at("loaded").at("hanging").at("height_mm").get<double>();
   j["current"]["hanging"]["d_mm"] = 1e308;
+  j["view"]["grid_resolution"] = "big";  // one view setting of the wrong type drops it alone
   const std::string broken = j.dump(2);
   std::ofstream(session) << broken;
 
@@ -1595,6 +1597,9 @@ TEST_F(ExplorerTest, ASessionWithOneBadValueKeepsTheRestAndTheFileAsItWas) {
   EXPECT_NE(notices.find("fabric being edited was not restored"), std::string::npos) << notices;
   EXPECT_NE(notices.find("d_mm"), std::string::npos) << notices;
   EXPECT_NE(notices.find("session.json.unread"), std::string::npos) << notices;
+  EXPECT_NE(notices.find("view.grid_resolution must be true, false or a number, not string"),
+            std::string::npos)
+      << notices;
   EXPECT_TRUE(explorer_->cloth_style().wireframe) << "the view's switches are the user's";
   EXPECT_TRUE(document().compare.pinned()) << "B is the user's";
   EXPECT_EQ(shown().hanging.height_mm, loaded_h) << "the preset it came from";
@@ -1615,6 +1620,21 @@ TEST_F(ExplorerTest, ThePapersOverlayBelongsToItsCaseOnly) {
   const std::string text = frame();
   EXPECT_TRUE(explorer_->analysis().sweep().overlay_x().empty());
   EXPECT_EQ(text.find("paper, Table 2"), std::string::npos) << text;
+}
+
+// Each frames step is bounded, and so is their sum: 5000 steps of 1000 frames each once ran for
+// hours.
+TEST(PlayScript, ItsFramesAddUpToAtMostTheCap) {
+  nlohmann::json steps = nlohmann::json::array();
+  for (int i = 0; i < 100; ++i) {
+    steps.push_back({{"frames", 1000}});
+  }
+  EXPECT_TRUE(play_script_problems({{"steps", steps}}).empty());
+  steps.push_back({{"frames", 1}});
+  const std::vector<std::string> problems = play_script_problems({{"steps", steps}});
+  ASSERT_EQ(problems.size(), 1u);
+  EXPECT_NE(problems[0].find("add up to 100001, more than the 100000"), std::string::npos)
+      << problems[0];
 }
 
 TEST(AnimatedInput, MovesOverTheSlidersRangeWhereTheModelAcceptsIt) {

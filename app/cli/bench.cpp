@@ -72,8 +72,10 @@ Command add_bench_command(CLI::App& app) {
       ->add_option("--threads", options->threads,
                    "threads for the parallel grid (default: hardware threads)")
       ->check(CLI::Range(0, 256));
-  command->add_option("--csv", options->csv_path, "also write the method table as CSV");
-  command->add_option("--svg", options->svg_path, "also write the run-time-against-error plot");
+  command->add_option("--csv", options->csv_path, "also write the method table as CSV")
+      ->check(app::non_empty_path());
+  command->add_option("--svg", options->svg_path, "also write the run-time-against-error plot")
+      ->check(app::non_empty_path());
   command->add_flag("--no-pipeline", options->no_pipeline, "skip the fold line and grid timings");
   return [options] {
     return guarded([&] {

@@ -275,7 +275,8 @@ void print_report(const CalibrationReport& r, const std::string& data_path,
                "|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   for (const CalibrationRow& row : r.rows) {
     const Measurement& m = row.measurement;
-    std::cout << "| " << (m.name.empty() ? "row " + std::to_string(m.row) : detail::escaped(m.name))
+    std::cout << "| "
+              << (m.name.empty() ? "row " + std::to_string(m.row) : detail::markdown_cell(m.name))
               << (m.role == MeasurementRole::check ? " (check)" : "") << " | "
               << optional_cell(m.observed.n, "%.0f") << " | "
               << optional_cell(m.observed.z_max_mm, "%g") << " | "
@@ -335,7 +336,8 @@ Command add_calibrate_command(CLI::App& app) {
   command
       ->add_option("--data", options->data_path,
                    "measurements, CSV or JSON (e.g. data/paper-measurements.csv)")
-      ->required();
+      ->required()
+      ->check(app::non_empty_path());
   command
       ->add_option("--fit", options->fit,
                    "K: fit K = c/(1-nu²) alone (p as the base has it); K,p: K and the exponent p "
@@ -353,9 +355,11 @@ Command add_calibrate_command(CLI::App& app) {
       ->add_option("--set", options->inputs.assignments,
                    "override a base setting, KEY=VALUE (e.g. span_rule=L-2d)")
       ->type_name("KEY=VALUE");
-  command->add_option("--save-preset", options->save_preset_path,
-                      "write the base preset with the fitted constants (model.load_constant_c, "
-                      "model.stress_exponent_p)");
+  command
+      ->add_option("--save-preset", options->save_preset_path,
+                   "write the base preset with the fitted constants (model.load_constant_c, "
+                   "model.stress_exponent_p)")
+      ->check(app::non_empty_path());
   command->add_option("--calibrated-on", options->calibrated_on,
                       "how --save-preset names the data in its calibration record and labels "
                       "(default: the --data file's name)");

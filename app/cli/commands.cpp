@@ -76,10 +76,14 @@ Command add_export_command(CLI::App& app) {
   CLI::App* command = app.add_subcommand(
       "export", "write the deformed mesh (OBJ, glTF) and the fold lines (CSV, SVG)");
   add_input_options(*command, options->inputs);
-  command->add_option("--obj", options->obj_path, "deformed mesh, Wavefront OBJ");
-  command->add_option("--glb", options->glb_path, "deformed mesh, binary glTF (metres, +Y up)");
-  command->add_option("--csv", options->csv_path, "fold lines as CSV");
-  command->add_option("--svg", options->svg_path, "fold lines as an SVG drawing");
+  command->add_option("--obj", options->obj_path, "deformed mesh, Wavefront OBJ")
+      ->check(app::non_empty_path());
+  command->add_option("--glb", options->glb_path, "deformed mesh, binary glTF (metres, +Y up)")
+      ->check(app::non_empty_path());
+  command->add_option("--csv", options->csv_path, "fold lines as CSV")
+      ->check(app::non_empty_path());
+  command->add_option("--svg", options->svg_path, "fold lines as an SVG drawing")
+      ->check(app::non_empty_path());
   command->add_option("--grid", options->grid, "mesh resolution NXxNY (default 128x128)");
   command->add_option("--samples", options->samples,
                       "points per fold line, a whole number in [2, 100000] (default 201)");
@@ -257,7 +261,7 @@ Command add_compare_command(CLI::App& app) {
              "|---|---|---|---|---|---|---|---|---|---|\n";
       for (std::size_t i = 0; i < presets.size(); ++i) {
         const PublishedResult& pub = presets[i].published;
-        std::cout << "| " << detail::escaped(presets[i].name) << " | "
+        std::cout << "| " << detail::markdown_cell(presets[i].name) << " | "
                   << optional_number(pub.n, "%.0f") << " | " << optional_number(pub.z_max_mm, "%g")
                   << " | " << optional_number(pub.Q, "%.2f");
         for (int m = 0; m < 2; ++m) {

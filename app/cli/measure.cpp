@@ -127,8 +127,10 @@ Command add_measure_command(CLI::App& app) {
   command->add_option("--depths-mm", options->depths_mm,
                       "the folds' depths below the supports' line at the centre, lowest first "
                       "(a_0, a_1, ..., a_n in mm)");
-  command->add_option("--photo", options->photo,
-                      "a front photo of the hanging cloth (PNG or JPEG) that the pixels refer to");
+  command
+      ->add_option("--photo", options->photo,
+                   "a front photo of the hanging cloth (PNG or JPEG) that the pixels refer to")
+      ->check(app::non_empty_path());
   command->add_option("--supports-px", options->supports_px,
                       "the two supports in the photo, X1,Y1,X2,Y2 (pixels, y downward): their "
                       "distance is the span l");
@@ -138,8 +140,10 @@ Command add_measure_command(CLI::App& app) {
                       "the largest out-of-plane depth, if measured (a front photo does not show "
                       "it)");
   command->add_option("--name", options->name, "a label for the row");
-  command->add_option("--append", options->append_path,
-                      "add the row to this measurements file (created with its header if absent)");
+  command
+      ->add_option("--append", options->append_path,
+                   "add the row to this measurements file (created with its header if absent)")
+      ->check(app::non_empty_path());
   command->add_flag("--json", options->json, "print JSON instead of text");
   return [options] {
     return guarded([&] {
@@ -164,6 +168,13 @@ Command add_measure_command(CLI::App& app) {
       // The name goes into the row and the JSON output, which hold UTF-8 only.
       if (!detail::is_valid_utf8(o.name)) {
         throw InputError("--name '" + detail::cut(o.name) + "' is not UTF-8 text");
+      }
+      // One line of text: a CSV cell holds no line break, and a terminal escape in a file's
+      // names would reach every screen that prints them.
+      if (detail::escaped(o.name) != o.name) {
+        throw InputError("--name '" + detail::cut(o.name) +
+                         "' holds a control character (a line break, an escape): give one line "
+                         "of text");
       }
       if (o.z_max_mm && !(*o.z_max_mm >= 0.0 && std::isfinite(*o.z_max_mm))) {
         throw InputError("--z-max-mm " + detail::shortest_number(*o.z_max_mm) +

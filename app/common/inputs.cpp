@@ -104,22 +104,26 @@ void add_law_option(CLI::App& command, std::string& law) {
 }
 
 int guarded(const std::function<int()>& body) {
+  // Messages quote paths, values and names as given: printed through escaped_lines().
+  const auto say = [](const char* prefix, const char* what) {
+    std::cerr << prefix << detail::escaped_lines(what) << "\n";
+  };
   try {
     return body();
   } catch (const InputError& e) {
-    std::cerr << "foldlab: invalid input:\n" << e.what() << "\n";
+    say("foldlab: invalid input:\n", e.what());
     return kExitInvalidInput;
   } catch (const PresetError& e) {
-    std::cerr << "foldlab: invalid input:\n" << e.what() << "\n";
+    say("foldlab: invalid input:\n", e.what());
     return kExitInvalidInput;
   } catch (const EnvironmentError& e) {
-    std::cerr << "foldlab: " << e.what() << "\n";
+    say("foldlab: ", e.what());
     return kExitInternal;
   } catch (const WriteError& e) {
-    std::cerr << "foldlab: " << e.what() << "\n";
+    say("foldlab: ", e.what());
     return kExitInternal;
   } catch (const std::exception& e) {
-    std::cerr << "foldlab: internal error: " << e.what() << "\n";
+    say("foldlab: internal error: ", e.what());
     return kExitInternal;
   }
 }

@@ -60,7 +60,8 @@ void add_common_gui_options(CLI::App& command, GuiCommandOptions& options) {
       .add_option("--print", options.print_path,
                   "a swatch photo (PNG or JPEG) printed on the 3D view's cloth, tiled every "
                   "print_mm (--view print_mm=..., default 60)")
-      ->type_name("FILE");
+      ->type_name("FILE")
+      ->check(app::non_empty_path());
   command.add_option("--tab", options.run.analysis_tab, "analysis tab shown at start")
       ->check(CLI::IsMember({"equations", "method", "sweep", "map"}));
 }
@@ -71,7 +72,8 @@ void add_play_option(CLI::App& command, GuiRunOptions& options) {
                   "feed the steps of SCRIPT.json to the explorer as mouse, keys and text; exit "
                   "0 when every expect holds, 1 naming the step that failed, 2 for a malformed "
                   "script (see docs/cli.md)")
-      ->type_name("SCRIPT.json");
+      ->type_name("SCRIPT.json")
+      ->check(app::non_empty_path());
 }
 
 // A played script sets its own frames, input and screenshots.
@@ -109,8 +111,10 @@ app::Command add_gui_command(CLI::App& app) {
       ->add_option("--frames", options->run.frames,
                    "run this many frames, then exit (scripted runs take no mouse input)")
       ->check(CLI::Range(1, 1000000));
-  command->add_option("--screenshot", options->run.screenshot_path,
-                      "with --frames: write the last frame as PNG");
+  command
+      ->add_option("--screenshot", options->run.screenshot_path,
+                   "with --frames: write the last frame as PNG")
+      ->check(app::non_empty_path());
   command->add_option("--animate", options->run.animate_key,
                       "move this input every frame as a dragged slider would, over the slider's "
                       "range: " +
@@ -140,7 +144,8 @@ app::Command add_render_command(CLI::App& app) {
   CLI::App* command = app.add_subcommand(
       "render", "draw the full explorer window with no display (EGL surfaceless) into a PNG");
   add_common_gui_options(*command, *options);
-  command->add_option("--out", options->run.screenshot_path, "PNG file to write");
+  command->add_option("--out", options->run.screenshot_path, "PNG file to write")
+      ->check(app::non_empty_path());
   command
       ->add_option("--frames", options->run.frames, "frames to run before the picture (default 3)")
       ->check(CLI::Range(1, 100000));

@@ -212,10 +212,21 @@ std::vector<std::string> play_script_problems(const json& script) {
     }
   }
   const json& steps = script.at("steps");
+  long long frames = 0;
   for (std::size_t i = 0; i < steps.size(); ++i) {
-    for (const std::string& problem : step_problems(steps[i])) {
+    const std::vector<std::string> step = step_problems(steps[i]);
+    for (const std::string& problem : step) {
       problems.push_back("step " + std::to_string(i + 1) + ": " + problem);
     }
+    if (step.empty() && steps[i].contains("frames")) {
+      frames += steps[i].at("frames").get<long long>();
+    }
+  }
+  // Each step is bounded, and so is their sum: 1000 frames of the software renderer take about
+  // 20 s, so a script runs for at most about half an hour.
+  if (frames > kMaxScriptFrames) {
+    problems.push_back("its frames steps add up to " + std::to_string(frames) + ", more than the " +
+                       std::to_string(kMaxScriptFrames) + " a script may run");
   }
   return problems;
 }

@@ -36,6 +36,9 @@ struct Chord {
 // "ctrl+shift+z", "escape", "plus": nullopt when it is not a chord.
 std::optional<Chord> parse_chord(std::string text);
 
+// The frames all of a script's `frames` steps may add up to.
+inline constexpr long long kMaxScriptFrames = 100000;
+
 // Every problem of a script, each "step N: ..." or about the whole; empty when it can run. Text
 // from the script is echoed through detail::cut.
 std::vector<std::string> play_script_problems(const nlohmann::json& script);

@@ -67,7 +67,8 @@ int ScriptedRun::exit_status() const {
   if (!player_ || player_->exit_status() == app::kExitOk) {
     return app::kExitOk;
   }
-  std::cerr << "foldlab: --play: " << player_->failure() << "\n";  // gui and render alike
+  std::cerr << "foldlab: --play: " << detail::escaped_lines(player_->failure())
+            << "\n";  // gui and render alike
   return player_->exit_status();
 }
 

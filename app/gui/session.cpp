@@ -99,17 +99,19 @@ ConfigFile read_config_file(const std::filesystem::path& path, std::uintmax_t li
   return file;
 }
 
-SessionSettings SessionSettings::from_json(const nlohmann::json& view) {
+SessionSettings SessionSettings::from_json(const nlohmann::json& view,
+                                           std::vector<std::string>& dropped) {
   SessionSettings out;
   if (!view.is_object()) {
     throw std::runtime_error("view must be an object");
   }
   for (const auto& [key, value] : view.items()) {
-    if (!value.is_boolean() && !value.is_number()) {
-      throw std::runtime_error("view." + key + " must be true, false or a number, not " +
-                               std::string(value.type_name()));
+    if (value.is_boolean() || value.is_number()) {
+      out.values_[key] = value;
+    } else {
+      dropped.push_back("view." + detail::cut(key) + " must be true, false or a number, not " +
+                        std::string(value.type_name()));
     }
-    out.values_[key] = value;
   }
   return out;
 }
@@ -186,9 +188,17 @@ std::optional<Session> session_from_text(const std::string& text, const std::str
   }
   try {
     const nlohmann::json& view = j.at("view");
+    // Each setting on its own: one that is not a number or a switch is left at its default.
+    std::vector<std::string> bad;
+    s.view = SessionSettings::from_json(view, bad);
+    for (const std::string& problem : bad) {
+      s.notices.push_back("The saved session's " + problem + "; that setting is at its default.");
+      s.complete = false;
+    }
     // Read as a double: a huge stored number must be clamped, not converted to int first.
+    const nlohmann::json& resolution = s.view.json().value("grid_resolution", nlohmann::json());
     const double stored_resolution =
-        view.value("grid_resolution", static_cast<double>(s.grid_resolution));
+        resolution.is_number() ? resolution.get<double>() : static_cast<double>(s.grid_resolution);
     const double clamped = std::clamp(stored_resolution, static_cast<double>(kMinGridResolution),
                                       static_cast<double>(kMaxGridResolution));
     s.grid_resolution = static_cast<int>(clamped);  // NaN cannot come from JSON
@@ -198,7 +208,6 @@ std::optional<Session> session_from_text(const std::string& text, const std::str
           detail::shortest_number(stored_resolution).c_str(), kMinGridResolution,
           kMaxGridResolution, s.grid_resolution));
     }
-    s.view = SessionSettings::from_json(view);
   } catch (const std::exception& e) {
     dropped("view settings", e);
   }

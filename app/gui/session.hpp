@@ -54,8 +54,9 @@ class SessionSettings {
   bool has(const char* key) const { return values_.contains(key); }
   // As stored in the file.
   const nlohmann::json& json() const { return values_; }
-  // Throws nlohmann::json's exceptions unless `view` is an object of true/false and numbers.
-  static SessionSettings from_json(const nlohmann::json& view);
+  // The entries of `view` that are true, false or a number; each other one is left out and named
+  // in `dropped`. Throws when `view` is not an object.
+  static SessionSettings from_json(const nlohmann::json& view, std::vector<std::string>& dropped);
 
  private:
   nlohmann::json values_ = nlohmann::json::object();

@@ -312,7 +312,7 @@ std::optional<std::string> split_csv_line(std::string_view line, std::vector<std
 
 std::string csv_text(const std::string& text) {
   if (text.find_first_of("\r\n") != std::string::npos) {
-    throw MeasurementError("'" + text + "': CSV text fields must be one line");
+    throw MeasurementError("'" + detail::cut(text) + "': CSV text fields must be one line");
   }
   const bool quote =
       text.find_first_of(",\"") != std::string::npos ||

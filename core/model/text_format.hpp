@@ -110,6 +110,32 @@ inline std::string escaped(std::string_view text) {
   return cut(text, std::string_view::npos);
 }
 
+// User text in a cell of a Markdown table: escaped(), and a '|' written "\|" so that it cannot
+// start a cell of its own.
+inline std::string markdown_cell(std::string_view text) {
+  std::string out;
+  for (const char c : escaped(text)) {
+    out += c == '|' ? std::string("\\|") : std::string(1, c);
+  }
+  return out;
+}
+
+// A message of several lines that quotes the user's text (a path, a value, a name): each line
+// escaped(), the line breaks kept. Every message the program prints goes through it, so that no
+// quoted text reaches a terminal as control characters.
+inline std::string escaped_lines(std::string_view text) {
+  std::string out;
+  for (std::size_t start = 0; start <= text.size();) {
+    const std::size_t end = std::min(text.find('\n', start), text.size());
+    out += escaped(text.substr(start, end - start));
+    if (end < text.size()) {
+      out += '\n';
+    }
+    start = end + 1;
+  }
+  return out;
+}
+
 // `value` itself when finite. A writer calls this on every number it puts out: an infinity or NaN
 // there is a bug upstream (the input ranges exclude them), so it stops as an internal error naming
 // the field rather than writing "inf", "nan" or JSON null.
