@@ -3097,6 +3097,25 @@ TEST_F(ExplorerTest, EachFabricKeepsItsOwnPresetThroughPinSwapResetUndoAndTheSes
   expect_a_is(chiffon, linen, "swapped back after a restart");
 }
 
+// The 3D view's look is the user's, as its switches are: the print, its size, the colouring and
+// the z exaggeration come back with the session (a woven print once came back plain).
+TEST_F(ExplorerTest, TheThreeDViewsLookIsRestoredWithTheSession) {
+  const fs::path session = dir_ / "session.json";
+  open_explorer("equations", {}, session);
+  for (const auto& [key, value] : {std::pair{"print", "checks"}, std::pair{"print_mm", "25"},
+                                   std::pair{"colour_by", "fold_sign"}, std::pair{"z", "4"}}) {
+    ASSERT_EQ(explorer_->set_view(key, value), std::nullopt) << key;
+  }
+  frame();
+  explorer_->save_session_now();
+  open_explorer("equations", {}, session, true);
+  const ClothStyle& style = explorer_->cloth_style();
+  EXPECT_EQ(style.print, ClothStyle::Print::checks);
+  EXPECT_EQ(style.print_mm, 25.0f);
+  EXPECT_EQ(style.colour_by, ClothStyle::ColourBy::fold_sign);
+  EXPECT_EQ(style.z_exaggeration, 4.0f);
+}
+
 TEST_F(ExplorerTest, BIsRestoredWithTheSession) {
   const fs::path session = dir_ / "session.json";
   open_explorer("equations", {}, session);

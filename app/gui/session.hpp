@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <limits>
 #include <optional>
 #include <string>
 #include <type_traits>
@@ -44,7 +45,15 @@ class SessionSettings {
     if constexpr (std::is_same_v<T, bool>) {
       return found->is_boolean() ? found->template get<bool>() : fallback;
     } else {
-      return found->is_number() ? found->template get<T>() : fallback;
+      if (!found->is_number()) {
+        return fallback;
+      }
+      // Through double: a stored 1e308 read straight into an int or a float is undefined.
+      const double value = found->template get<double>();
+      return value >= static_cast<double>(std::numeric_limits<T>::lowest()) &&
+                     value <= static_cast<double>(std::numeric_limits<T>::max())
+                 ? static_cast<T>(value)
+                 : fallback;
     }
   }
   template <class T>

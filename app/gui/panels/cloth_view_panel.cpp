@@ -221,12 +221,34 @@ void ClothViewPanel::save_settings(SessionSettings& settings) const {
   settings.set("wireframe", style_.wireframe);
   settings.set("fold_lines", style_.fold_lines);
   settings.set("ground", style_.ground);
+  // A swatch photo needs its file, which is not kept: the print it replaced is.
+  if (style_.print != ClothStyle::Print::photo) {
+    settings.set("print", static_cast<int>(style_.print));
+  }
+  settings.set("print_mm", style_.print_mm);
+  settings.set("colour_by", static_cast<int>(style_.colour_by));
+  settings.set("z_exaggeration", style_.z_exaggeration);
 }
 
 void ClothViewPanel::load_settings(const SessionSettings& settings) {
   style_.wireframe = settings.get("wireframe", style_.wireframe);
   style_.fold_lines = settings.get("fold_lines", style_.fold_lines);
   style_.ground = settings.get("ground", style_.ground);
+  // Each within what the panel's own controls reach; anything else keeps the default.
+  const auto within = [](auto value, auto lo, auto hi, auto fallback) {
+    return value >= lo && value <= hi ? value : fallback;
+  };
+  // Read as doubles: a stored 1e308 must be refused, not converted to int or float first.
+  style_.print = static_cast<ClothStyle::Print>(within(
+      settings.get("print", 0.0), 0.0, static_cast<double>(ClothStyle::Print::stripes), 0.0));
+  style_.print_mm = static_cast<float>(within(settings.get("print_mm", double{style_.print_mm}),
+                                              10.0, 300.0, double{style_.print_mm}));
+  style_.colour_by = static_cast<ClothStyle::ColourBy>(
+      within(settings.get("colour_by", 0.0), 0.0,
+             static_cast<double>(ClothStyle::ColourBy::fold_sign), 0.0));
+  style_.z_exaggeration =
+      static_cast<float>(within(settings.get("z_exaggeration", double{style_.z_exaggeration}), 1.0,
+                                20.0, double{style_.z_exaggeration}));
 }
 
 void ClothViewPanel::draw(PanelContext& context) {
