@@ -710,6 +710,37 @@ TEST_F(ExplorerTest, AWeightIsTypedInGramsPerSquareMetreOrOuncesPerSquareYard) {
 
 // Typing 650 into d solved d = 6 and d = 65 on the way, each an undo step of its own: a typed
 // value is read on Enter or when the field lets go, and Escape drops it.
+// Typed text that is no number is said to be so, and the slider keeps its value; simple
+// arithmetic is a number, with or without a unit.
+TEST_F(ExplorerTest, TypedArithmeticIsAValueAndTypedWordsAreRefusedWithAReason) {
+  const auto type_into = [&](const char* key, const std::string& typed) {
+    return play(*explorer_,
+                {{"steps",
+                  {{{"click", key}, {"at", 0.5}, {"ctrl", true}},
+                   {{"type", typed}},
+                   {{"key", "enter"}},
+                   {{"frames", 2}}}}},
+                [&] { frame(); });
+  };
+  ASSERT_EQ(type_into("h", "2*700"), 0);
+  EXPECT_EQ(document().edited().hanging.height_mm, 1400.0);
+  ASSERT_EQ(type_into("h", "(1000 + 200)/2 cm"), 0);
+  EXPECT_DOUBLE_EQ(document().edited().hanging.height_mm, 6000.0);
+  ASSERT_EQ(type_into("w", "2*76.5 g/m2"), 0);
+  EXPECT_DOUBLE_EQ(document().edited().fabric.weight_N_per_mm2, 153.0 * 9.81e-9);
+  const std::size_t steps = document().undo_depth();
+  for (const std::string typed : {"heavy", "2*", "153 furlongs"}) {
+    ASSERT_EQ(type_into("w", typed), 0);
+    EXPECT_DOUBLE_EQ(document().edited().fabric.weight_N_per_mm2, 153.0 * 9.81e-9) << typed;
+    EXPECT_EQ(document().undo_depth(), steps) << typed;
+    const std::string message = document().message();
+    EXPECT_NE(message.find("\"" + typed + "\" is not a number with a unit (N/mm², g/m², oz/yd²)"),
+              std::string::npos)
+        << message;
+    EXPECT_NE(message.find("the value stays 153 g/m²"), std::string::npos) << message;
+  }
+}
+
 TEST_F(ExplorerTest, ATypedValueIsAppliedOnEnterOnlyAsOneStep) {
   // Types into d's field, then ends with `last` (a key or a click); d is unchanged until then.
   const auto type_into_d = [&](const std::string& typed, const nlohmann::json& last) {

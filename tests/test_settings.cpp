@@ -229,6 +229,21 @@ TEST(Settings, WeightsAreReadInGramsPerSquareMetreAndOuncesPerSquareYard) {
               1e-4);
 }
 
+// Simple arithmetic before the unit, with the usual precedence; what is not arithmetic is refused
+// rather than read in part.
+TEST(Settings, TypedValuesMayBeSimpleArithmetic) {
+  const foldlab::InputSpec& h = *foldlab::find_input("h");
+  EXPECT_EQ(foldlab::parse_quantity(h, "2*700"), 1400.0);
+  EXPECT_EQ(foldlab::parse_quantity(h, "1000 + 200 * 2"), 1400.0);
+  EXPECT_EQ(foldlab::parse_quantity(h, "(1000 + 400) / 2 cm"), 7000.0);
+  EXPECT_EQ(foldlab::parse_quantity(h, "-(-1.4) m"), 1400.0);
+  EXPECT_EQ(foldlab::parse_quantity(h, "1.4e3 - 0.5e2"), 1350.0);
+  for (const char* text : {"2*", "1/0", "()", "(1", "1)", "2 * * 3", "inf", "nan", "1 +", "x1",
+                           "((((((((((((((((((1))))))))))))))))))"}) {
+    EXPECT_FALSE(foldlab::parse_quantity(h, text).has_value()) << text;
+  }
+}
+
 // The explorer shows every input in its slider's unit, from the one place that says what it is.
 TEST(Settings, ShownLabelsAndValuesUseTheSlidersUnit) {
   const foldlab::InputSpec& w = *foldlab::find_input("w");

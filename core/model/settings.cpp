@@ -435,16 +435,127 @@ std::string unit_key(std::string_view text) {
   return out;
 }
 
+// Simple arithmetic at the front of a typed value ("2*153", "153 + 20", "(80+120)/2"): + - * /
+// with the usual precedence, unary signs and parentheses, read by recursive descent. It stops at
+// the first character that cannot continue the expression (the unit), and reads nothing when
+// no number starts the text.
+class Arithmetic {
+ public:
+  explicit Arithmetic(std::string_view text) : text_(text) {}
+
+  std::optional<double> expression() {
+    std::optional<double> value = term();
+    while (value) {
+      const std::size_t before = at_;
+      skip_spaces();
+      const char op = at_ < text_.size() ? text_[at_] : '\0';
+      if (op != '+' && op != '-') {
+        at_ = before;
+        break;
+      }
+      ++at_;
+      const std::optional<double> right = term();
+      if (!right) {
+        at_ = before;  // "5 -": the expression ends before the sign
+        break;
+      }
+      value = op == '+' ? *value + *right : *value - *right;
+    }
+    return value;
+  }
+  // Where the expression ended.
+  std::size_t end() const { return at_; }
+
+ private:
+  std::optional<double> term() {
+    std::optional<double> value = factor();
+    while (value) {
+      const std::size_t before = at_;
+      skip_spaces();
+      const char op = at_ < text_.size() ? text_[at_] : '\0';
+      if (op != '*' && op != '/') {
+        at_ = before;
+        break;
+      }
+      ++at_;
+      const std::optional<double> right = factor();
+      if (!right) {
+        at_ = before;
+        break;
+      }
+      value = op == '*' ? *value * *right : *value / *right;
+    }
+    return value;
+  }
+
+  std::optional<double> factor() {
+    skip_spaces();
+    if (at_ >= text_.size()) {
+      return std::nullopt;
+    }
+    const char c = text_[at_];
+    if (c == '+' || c == '-') {
+      ++at_;
+      if (at_ < text_.size() && (text_[at_] == '+' || text_[at_] == '-')) {
+        return std::nullopt;  // "--1" is a typo, not arithmetic
+      }
+      const std::optional<double> value = factor();
+      return value && c == '-' ? std::optional<double>(-*value) : value;
+    }
+    if (c == '(') {
+      // Deep nesting is no arithmetic a person types: refused before it costs the stack.
+      constexpr int kMaxDepth = 16;
+      if (depth_ == kMaxDepth) {
+        return std::nullopt;
+      }
+      ++at_;
+      ++depth_;
+      const std::optional<double> value = expression();
+      --depth_;
+      skip_spaces();
+      if (!value || at_ >= text_.size() || text_[at_] != ')') {
+        return std::nullopt;
+      }
+      ++at_;
+      return value;
+    }
+    if ((c < '0' || c > '9') && c != '.') {
+      return std::nullopt;  // from_chars would also read "inf" and "nan"
+    }
+    double number = 0.0;
+    const char* start = text_.data() + at_;
+    const auto [ptr, ec] = std::from_chars(start, text_.data() + text_.size(), number);
+    if (ec != std::errc()) {
+      return std::nullopt;
+    }
+    at_ += static_cast<std::size_t>(ptr - start);
+    return number;
+  }
+
+  void skip_spaces() {
+    while (at_ < text_.size() && (text_[at_] == ' ' || text_[at_] == '\t')) {
+      ++at_;
+    }
+  }
+
+  std::string_view text_;
+  std::size_t at_ = 0;
+  int depth_ = 0;
+};
+
 }  // namespace
 
 std::optional<double> parse_quantity(const InputSpec& spec, std::string_view text,
                                      std::string_view bare_unit) {
-  double number = 0.0;
-  const char* end = text.data() + text.size();
-  const auto [rest, ec] = std::from_chars(text.data(), end, number);
-  if (text.empty() || ec != std::errc() || !std::isfinite(number)) {
+  Arithmetic arithmetic(text);
+  const std::optional<double> value = arithmetic.expression();
+  // A number alone must be the whole text, as for parse_number: no space before it either.
+  if (!value || !std::isfinite(*value) || text.starts_with(' ') || text.starts_with('\t')) {
     return std::nullopt;
   }
+  const double number = *value;
+  const char* end = text.data() + text.size();
+  const char* rest = text.data() + arithmetic.end();
   // A number alone must be the whole text, as for parse_number; before a unit, spaces may stand.
   const std::string typed = unit_key(std::string_view(rest, static_cast<std::size_t>(end - rest)));
   if (typed.empty() && rest != end) {

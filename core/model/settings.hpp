@@ -121,7 +121,8 @@ std::string_view input_symbol(const InputSpec& spec);
 // "w (g/m²)", "ν": the symbol with the shown unit, for the explorer's axes and tables.
 std::string shown_label(const InputSpec& spec);
 
-// "80 g/m2", "80 g/m²", "80gsm", "2.4 oz/yd2", "1.5e-6 N/mm2": a number, optionally followed by
+// "80 g/m2", "80 g/m²", "80gsm", "2.4 oz/yd2", "1.5e-6 N/mm2", "2*153 g/m2", "(80 + 120)/2": a
+// number or simple arithmetic of numbers (+ - * / and parentheses), optionally followed by
 // one of input_units(spec) (spaces, case and ² vs 2 do not matter), as the value in the stored
 // unit. A bare number is in `bare_unit` (a symbol from input_units, or empty for the stored
 // unit). nullopt when the number or the unit cannot be read.

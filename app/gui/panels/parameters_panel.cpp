@@ -180,7 +180,18 @@ void ParametersPanel::input_slider(Document& document, const InputSpec& spec, fl
     if (const std::optional<double> typed = parse_quantity(spec, text, shown_unit(spec).symbol)) {
       value = *typed;
       changed = true;
+      return;
     }
+    // Said, not dropped: the slider going back to its value with no word looks like a fault.
+    std::string units;
+    for (const InputUnit& unit : input_units(spec)) {
+      units += (units.empty() ? "" : ", ") + std::string(unit.symbol);
+    }
+    document.notify(
+        std::string(input_symbol(spec)) + ": \"" + detail::cut(text) + "\" is not a number" +
+            (units.empty() ? "" : " with a unit (" + units + ")") +
+            ", nor arithmetic such as 2*153; the value stays " + shown_text(spec, value) + ".",
+        MessageKind::error);
   };
   if (ImGui::TempInputIsActive(id)) {
     // ImGui opened its text field over the slider on the Ctrl+click, with the shown text; this
