@@ -110,7 +110,7 @@ app::Command add_gui_command(CLI::App& app) {
   command
       ->add_option("--frames", options->run.frames,
                    "run this many frames, then exit (scripted runs take no mouse input)")
-      ->check(CLI::Range(1, 1000000));
+      ->transform(app::whole_number_in(1, 1000000));
   command
       ->add_option("--screenshot", options->run.screenshot_path,
                    "with --frames: write the last frame as PNG")
@@ -148,7 +148,7 @@ app::Command add_render_command(CLI::App& app) {
       ->check(app::non_empty_path());
   command
       ->add_option("--frames", options->run.frames, "frames to run before the picture (default 3)")
-      ->check(CLI::Range(1, 100000));
+      ->transform(app::whole_number_in(1, 100000));
   command->add_option("--animate", options->run.animate_key, "as for gui");
   command->add_flag("--report", options->run.report, "as for gui");
   add_play_option(*command, options->run);
