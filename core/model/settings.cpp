@@ -443,47 +443,35 @@ class Arithmetic {
  public:
   explicit Arithmetic(std::string_view text) : text_(text) {}
 
-  std::optional<double> expression() {
-    std::optional<double> value = term();
-    while (value) {
-      const std::size_t before = at_;
-      skip_spaces();
-      const char op = at_ < text_.size() ? text_[at_] : '\0';
-      if (op != '+' && op != '-') {
-        at_ = before;
-        break;
-      }
-      ++at_;
-      const std::optional<double> right = term();
-      if (!right) {
-        at_ = before;  // "5 -": the expression ends before the sign
-        break;
-      }
-      value = op == '+' ? *value + *right : *value - *right;
-    }
-    return value;
-  }
+  std::optional<double> expression() { return chain(&Arithmetic::term, '+', '-'); }
   // Where the expression ended.
   std::size_t end() const { return at_; }
 
  private:
-  std::optional<double> term() {
-    std::optional<double> value = factor();
+  std::optional<double> term() { return chain(&Arithmetic::factor, '*', '/'); }
+
+  // `operand (op operand)*` for the two operators of one precedence level, left to right.
+  std::optional<double> chain(std::optional<double> (Arithmetic::*operand)(), char first,
+                              char second) {
+    std::optional<double> value = (this->*operand)();
     while (value) {
       const std::size_t before = at_;
       skip_spaces();
       const char op = at_ < text_.size() ? text_[at_] : '\0';
-      if (op != '*' && op != '/') {
+      if (op != first && op != second) {
         at_ = before;
         break;
       }
       ++at_;
-      const std::optional<double> right = factor();
+      const std::optional<double> right = (this->*operand)();
       if (!right) {
-        at_ = before;
+        at_ = before;  // "5 -": the expression ends before the sign
         break;
       }
-      value = op == '*' ? *value * *right : *value / *right;
+      value = op == '+'   ? *value + *right
+              : op == '-' ? *value - *right
+              : op == '*' ? *value * *right
+                          : *value / *right;
     }
     return value;
   }
