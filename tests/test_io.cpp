@@ -152,6 +152,10 @@ TEST(Cut, EscapesControlCharactersAndBytesThatAreNotUtf8) {
             "\\xc2\\x9b31m");  // C1 CSI
   EXPECT_EQ(foldlab::detail::cut("bad \xff\xfe utf8 \xe9"), "bad \\xff\\xfe utf8 \\xe9");
   EXPECT_EQ(foldlab::detail::cut("\u00e9\u20ac\U0001F600"), "\u00e9\u20ac\U0001F600");
+  // A right-to-left override and a line separator reorder or break what a terminal shows.
+  EXPECT_EQ(foldlab::detail::escaped("a\u202eb\u2028c\u2066d"),
+            "a\\xe2\\x80\\xaeb\\xe2\\x80\\xa8c\\xe2\\x81\\xa6d");
+  EXPECT_EQ(foldlab::detail::escaped("\u2027\u202f\u2030"), "\u2027\u202f\u2030");  // neighbours
   // An escape is never cut in half.
   EXPECT_EQ(foldlab::detail::cut("ab\x01", 5), "ab…");
   EXPECT_TRUE(foldlab::detail::is_valid_utf8("\u00e9\u20ac\U0001F600"));

@@ -76,7 +76,8 @@ inline bool is_valid_utf8(std::string_view text) {
 }
 
 // Text echoed in a message, as every message that quotes input shows it: control characters
-// (C0, DEL, C1) and bytes that are not UTF-8 written as \xNN, so that a name or value cannot move
+// (C0, DEL, C1, the line separators and bidirectional controls) and bytes that are not UTF-8
+// written as \xNN, so that a name or value cannot move
 // the cursor, recolour or clear the terminal or break the line; then cut to about `max_bytes`
 // with "…" so that a 5 MB value stays a line. Never cuts inside a UTF-8 character.
 inline std::string cut(std::string_view text, std::size_t max_bytes = 60) {
@@ -86,8 +87,15 @@ inline std::string cut(std::string_view text, std::size_t max_bytes = 60) {
     const std::size_t length = utf8_length_at(text, i);
     const auto lead = static_cast<unsigned char>(text[i]);
     const bool c1 = length == 2 && lead == 0xC2 && static_cast<unsigned char>(text[i + 1]) < 0xA0;
+    // Line and paragraph separators and the bidirectional controls (U+200E-F, U+2028-202E,
+    // U+2066-2069): printed, they break a line or reverse the text that follows.
+    const auto at = [&](std::size_t k) { return static_cast<unsigned char>(text[i + k]); };
+    const bool layout =
+        length == 3 && lead == 0xE2 &&
+        ((at(1) == 0x80 && (at(2) == 0x8E || at(2) == 0x8F || (at(2) >= 0xA8 && at(2) <= 0xAE))) ||
+         (at(1) == 0x81 && at(2) >= 0xA6 && at(2) <= 0xA9));
     std::string piece;
-    if (length == 0 || lead < 0x20 || lead == 0x7F || c1) {
+    if (length == 0 || lead < 0x20 || lead == 0x7F || c1 || layout) {
       for (std::size_t k = 0; k < std::max<std::size_t>(length, 1); ++k) {
         const auto b = static_cast<unsigned char>(text[i + k]);
         piece += {'\\', 'x', kHex[b >> 4], kHex[b & 0xF]};
