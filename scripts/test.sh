@@ -12,7 +12,7 @@ ctest --test-dir build --output-on-failure --parallel "$(nproc)" "$@"
 # so, when the checkout is not reachable by that user.
 if [ "$(id -u)" = 0 ] && [ $# -eq 0 ]; then
   as_nobody=(setpriv --reuid=nobody --regid=nogroup --clear-groups env HOME=/nonexistent)
-  if "${as_nobody[@]}" test -x build/tests/foldlab_cli_tests -a -x build/foldlab; then
+  if "${as_nobody[@]}" test -x build/tests/foldlab_cli_tests -a -x build/app/foldlab; then
     "${as_nobody[@]}" build/tests/foldlab_cli_tests --gtest_brief=1
   else
     echo "test.sh: the CLI suite as nobody is skipped: $(pwd) is not readable by nobody" >&2
