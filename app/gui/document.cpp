@@ -128,13 +128,16 @@ std::optional<std::string> Document::take_fabric(const Preset& origin, std::stri
   if (const std::vector<ValidationIssue> issues = validate(parameters); !issues.empty()) {
     return issues.front().message;
   }
-  const bool other_preset = path != loaded_path_ || origin.name != loaded_.name;
-  loaded_ = origin;
-  loaded_path_ = std::move(path);
-  if (other_preset) {
+  set_loaded(origin, std::move(path));
+  return apply(Edit::replace(parameters));
+}
+
+void Document::set_loaded(const Preset& origin, std::string path) {
+  if (path != loaded_path_ || origin.name != loaded_.name) {
     ++loads_;
   }
-  return apply(Edit::replace(parameters));
+  loaded_ = origin;
+  loaded_path_ = std::move(path);
 }
 
 bool Document::unsaved() const {
@@ -175,9 +178,7 @@ bool Document::same(const Snapshot& a, const Snapshot& b) {
 }
 
 void Document::restore(const Snapshot& s) {
-  const bool other_preset = s.loaded_path != loaded_path_ || s.loaded.name != loaded_.name;
-  loaded_ = s.loaded;
-  loaded_path_ = s.loaded_path;
+  set_loaded(s.loaded, s.loaded_path);
   edited_ = s.edited;
   commit();
   if (!same_b(s.compare_b, snapshot().compare_b)) {
@@ -186,9 +187,6 @@ void Document::restore(const Snapshot& s) {
     } else {
       compare.clear();
     }
-  }
-  if (other_preset) {
-    ++loads_;
   }
   step_base_ = s;
   session_dirty = true;

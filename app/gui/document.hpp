@@ -159,6 +159,8 @@ class Document {
   Snapshot snapshot() const;
   static bool same(const Snapshot& a, const Snapshot& b);
   void restore(const Snapshot& s);
+  // `origin` from `path` becomes the preset as loaded; another preset counts as a load.
+  void set_loaded(const Preset& origin, std::string path);
   bool step_through_history(std::vector<Snapshot>& from, std::vector<Snapshot>& to,
                             const char* message);
 
