@@ -175,8 +175,7 @@ TEST(CalibrationExponent, KAndPEnterOnlyAsSToThePowerP) {
       Parameters a = with_constants(base, K, p);
       a.hanging.height_mm = h;
       a.model.method = method;
-      const double g = stress_ratio(1.0, a.fabric.youngs_modulus_MPa, a.fabric.thickness_mm,
-                                    a.fabric.weight_N_per_mm2, h, span_mm(a));
+      const double g = stress_ratio(a, 1.0);
       const Parameters b = with_constants(a, std::pow(K * g, p) / g, 1.0);
       const Solution sa = solve(a);
       const Solution sb = solve(b);

@@ -157,7 +157,10 @@ TEST(Eq7, NoRootAtOrAboveOne) {
 TEST(Eq7, StressRatioByHand) {
   // s = K E t³ / (w h l²) for Table 1, h = 1400: 29.56 * 165 * 0.25³ / (1.5e-6 * 1400 * 1300²).
   const double by_hand = 29.56 * 165.0 * 0.015625 / (1.5e-6 * 1400.0 * 1.69e6);
-  EXPECT_NEAR(stress_ratio(29.56, 165.0, 0.25, 1.5e-6, 1400.0, 1300.0), by_hand, 1e-15);
+  Parameters p;
+  p.fabric = {.thickness_mm = 0.25, .youngs_modulus_MPa = 165.0, .weight_N_per_mm2 = 1.5e-6};
+  p.hanging = {.height_mm = 1400.0, .length_mm = 1400.0, .support_displacement_mm = 100.0};
+  EXPECT_NEAR(stress_ratio(p, 29.56), by_hand, 1e-15);
 }
 
 TEST(Eq9, FibreLengthOfOneFoldIsTheHypotenuse) {

@@ -11,6 +11,7 @@
 #include "core/io/preset.hpp"
 #include "core/model/equations.hpp"
 #include "core/model/solver.hpp"
+#include "core/tools/benchmark_cases.hpp"
 
 namespace foldlab {
 namespace {
@@ -98,20 +99,10 @@ TEST(PaperMethod, MeetsItsToleranceOnTheTables) {
 
 TEST(ExactMethod, ResidualsBelow1e10OverRealisticFabrics) {
   std::mt19937_64 random(20261122);
-  auto log_uniform = [&random](double lo, double hi) {
-    std::uniform_real_distribution<double> u(std::log(lo), std::log(hi));
-    return std::exp(u(random));
-  };
   int wrinkled = 0;
   for (int i = 0; i < 2000; ++i) {
-    Parameters p;
+    Parameters p = realistic_fabric(random);
     p.model.method = Method::exact;
-    p.fabric.thickness_mm = log_uniform(0.05, 1.5);
-    p.fabric.youngs_modulus_MPa = log_uniform(5.0, 2000.0);
-    p.fabric.weight_N_per_mm2 = log_uniform(3e-7, 1e-5);
-    p.hanging.height_mm = log_uniform(300.0, 3000.0);
-    p.hanging.length_mm = log_uniform(300.0, 3000.0);
-    p.hanging.support_displacement_mm = log_uniform(1.0, 0.3 * p.hanging.length_mm);
     const Solution s = solve(p);
     if (s.regime != Regime::wrinkled && s.regime != Regime::n_cycle && s.regime != Regime::stiff) {
       continue;

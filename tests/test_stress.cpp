@@ -14,6 +14,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/model/solver.hpp"
+#include "core/tools/benchmark_cases.hpp"
 #include "core/tools/stress.hpp"
 #include "process.hpp"
 #include "temp_dir.hpp"
@@ -45,22 +46,6 @@ long double edge_length(long double amplitude_mm, long double span_mm) {
     sum += std::sqrt(1.0L + k * k * s * s);
   }
   return span_mm * sum / kPoints;
-}
-
-double log_uniform(std::mt19937_64& random, double lo, double hi) {
-  std::uniform_real_distribution<double> u(std::log(lo), std::log(hi));
-  return std::exp(u(random));
-}
-
-Parameters realistic(std::mt19937_64& random) {
-  Parameters p;
-  p.fabric.thickness_mm = log_uniform(random, 0.05, 1.5);
-  p.fabric.youngs_modulus_MPa = log_uniform(random, 5.0, 2000.0);
-  p.fabric.weight_N_per_mm2 = log_uniform(random, 3e-7, 1e-5);
-  p.hanging.height_mm = log_uniform(random, 300.0, 3000.0);
-  p.hanging.length_mm = log_uniform(random, 300.0, 3000.0);
-  p.hanging.support_displacement_mm = log_uniform(random, 1.0, 0.3 * p.hanging.length_mm);
-  return p;
 }
 
 bool equations_hold(Regime r) {
@@ -147,7 +132,7 @@ TEST(Invariants, HoldForBothMethodsOverRandomInputs) {
   int checked_exact = 0;
   for (int i = 0; i < 4000; ++i) {
     // Half realistic fabrics, half the stress test's wider ranges.
-    const Parameters base = i % 2 == 0 ? realistic(random) : stress_sample(99, i);
+    const Parameters base = i % 2 == 0 ? realistic_fabric(random) : stress_sample(99, i);
     for (Method m : {Method::paper, Method::exact}) {
       Parameters p = base;
       p.model.method = m;
@@ -203,7 +188,7 @@ TEST(Continuity, ExactMethodZMaxMovesLittleUnderATinyStep) {
   int n_changed = 0;
   double worst = 0.0;
   for (int i = 0; i < 1500; ++i) {
-    Parameters p = realistic(random);
+    Parameters p = realistic_fabric(random);
     p.model.method = Method::exact;
     const Solution s = solve(p);
     if (!(s.z_max_mm > 0.0)) {
@@ -236,7 +221,7 @@ TEST(Continuity, PaperMethodIsContinuousWhileItsIterationPathIsUnchanged) {
   std::mt19937_64 random(4711);
   int compared = 0;
   for (int i = 0; i < 1500; ++i) {
-    Parameters p = realistic(random);
+    Parameters p = realistic_fabric(random);
     const Solution s = solve(p);
     if (s.iterations < 2 || !(s.z_max_mm > 1e-6 * p.hanging.height_mm)) {
       continue;
@@ -270,7 +255,7 @@ std::pair<TrendCount, TrendCount> sweep_trends(Method method) {
   TrendCount in_h;
   TrendCount in_w;
   for (int i = 0; i < 300; ++i) {
-    Parameters p = realistic(random);
+    Parameters p = realistic_fabric(random);
     p.model.method = method;
     int previous = -1;
     for (int k = 0; k <= 40; ++k) {

@@ -30,17 +30,21 @@ Edit Edit::input(std::string key, double value) {
 }
 
 Edit Edit::inputs(std::vector<std::pair<std::string, double>> values) {
-  Edit e;
-  e.kind = Kind::inputs;
-  e.values = std::move(values);
-  return e;
+  std::vector<Assignment> assignments;
+  for (auto& [key, value] : values) {
+    assignments.push_back({std::move(key), value});
+  }
+  return assign(std::move(assignments));
 }
 
 Edit Edit::choose(std::string key, std::string text) {
+  return assign({{std::move(key), std::move(text)}});
+}
+
+Edit Edit::assign(std::vector<Assignment> assignments) {
   Edit e;
-  e.kind = Kind::text;
-  e.key = std::move(key);
-  e.text = std::move(text);
+  e.kind = Kind::assign;
+  e.assignments = std::move(assignments);
   return e;
 }
 
@@ -71,16 +75,11 @@ void Document::commit() {
 std::optional<std::string> Document::apply(const Edit& edit) {
   Parameters next = edited_;
   switch (edit.kind) {
-    case Edit::Kind::inputs:
-      for (const auto& [key, value] : edit.values) {
-        if (auto error = set_input(next, key, value)) {
+    case Edit::Kind::assign:
+      for (const Assignment& a : edit.assignments) {
+        if (auto error = apply_assignment(next, a)) {
           return error;
         }
-      }
-      break;
-    case Edit::Kind::text:
-      if (auto error = apply_setting(next, edit.key, edit.text)) {
-        return error;
       }
       break;
     case Edit::Kind::replace:

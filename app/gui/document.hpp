@@ -19,6 +19,7 @@
 #include "core/geometry/scene.hpp"
 #include "core/io/preset.hpp"
 #include "core/model/parameters.hpp"
+#include "core/model/settings.hpp"
 
 namespace foldlab::gui {
 
@@ -28,15 +29,12 @@ enum class MessageKind { info, success, warning, error };
 // One change to the parameters, as a value: what Document::apply takes.
 struct Edit {
   enum class Kind {
-    inputs,   // one or several inputs by --set key, to numbers (core set_input), in order
-    text,     // one input by key, to text: a choice's name or a number with a unit (apply_setting)
-    replace,  // the whole Parameters (a calibration's constants applied, a restored session)
+    assign,   // inputs through the input table, in order
+    replace,  // the whole Parameters (a preset loaded, a restored session or undo step)
   };
-  Kind kind = Kind::inputs;
-  std::vector<std::pair<std::string, double>> values;  // for inputs
-  std::string key;                                     // for text
-  std::string text;                                    // for text
-  Parameters parameters;                               // for replace
+  Kind kind = Kind::assign;
+  std::vector<Assignment> assignments;  // for assign
+  Parameters parameters;                // for replace
   // True: the edit is an undo step of its own (a script, a map click, a button). False: it stays
   // open and later edits join it until Document::end_step (a slider being dragged).
   bool closes_step = true;
@@ -45,6 +43,9 @@ struct Edit {
   // Several inputs at once, one undo step (a regime-map click sets x and y).
   static Edit inputs(std::vector<std::pair<std::string, double>> values);
   static Edit choose(std::string key, std::string text);
+  // Numbers and choices at once, one undo step (a law with its constants), in the order given: K
+  // after nu, as --set applies them.
+  static Edit assign(std::vector<Assignment> assignments);
   static Edit replace(Parameters parameters);
   // The same edit, left open for the widget that is still being dragged or typed into.
   Edit open() && {

@@ -27,12 +27,6 @@ namespace {
 
 using nlohmann::json;
 
-// The report's name for each slider's value, with its unit.
-constexpr std::pair<const char*, const char*> kParameterFields[] = {
-    {"t", "t_mm"}, {"E", "E_MPa"}, {"w", "w_N_per_mm2"}, {"h", "h_mm"}, {"L", "L_mm"},
-    {"d", "d_mm"}, {"nu", "nu"},   {"K", "K"},           {"c", "c"},    {"p", "p"},
-};
-
 // A field of the report by dotted path, or null when there is none.
 const json* find_field(const json& report, const std::string& path) {
   const json* at = &report;
@@ -209,11 +203,15 @@ json explorer_state_json(Explorer& explorer) {
   Scene& scene = document.scene();
   const RenderCounters& counters = explorer.renderer_counters();
   const auto parameters_json = [](const Parameters& p) {
+    // Every row of the input table: a number by its field name with the unit ("t_mm"), a choice
+    // by its key ("method").
     json out = json::object();
-    for (const auto& [key, field] : kParameterFields) {
-      const InputSpec* spec = find_input(key);
-      const std::optional<double> value = spec ? spec->value(p) : std::optional<double>();
-      out[field] = value ? json(*value) : json(nullptr);
+    for (const InputSpec& spec : input_table()) {
+      if (const std::optional<double> value = spec.value(p)) {
+        out[std::string(spec.field)] = *value;
+      } else {
+        out[std::string(spec.key)] = std::string(spec.choice(p));
+      }
     }
     return out;
   };

@@ -118,8 +118,7 @@ std::optional<RowTable> tabulate(const Measurement& m, const Parameters& base, d
                                  const std::function<bool()>& keep_going) {
   Parameters p = parameters_for(m, base);
   p.model.stress_exponent_p = 1.0;
-  const double g = stress_ratio(1.0, p.fabric.youngs_modulus_MPa, p.fabric.thickness_mm,
-                                p.fabric.weight_N_per_mm2, p.hanging.height_mm, span_mm(p));
+  const double g = stress_ratio(p, 1.0);
   const int cap = calibration_fold_cap(m.observed.n);
   auto predict = [&](double x) {
     set_stiffness_constant_K(p, std::exp(x) / g);

@@ -183,7 +183,7 @@ class RowReader {
       const std::optional<double> value = number(spec->field, true);
       all_given = all_given && value.has_value();
       if (value) {
-        spec->number(given) = *value;
+        spec->access.set(given, *value);
       }
     }
     m.shape = text(kShape);
@@ -766,9 +766,8 @@ json measurements_to_json(const MeasurementSet& set) {
 
 Parameters parameters_for(const Measurement& row, const Parameters& base) {
   Parameters p = base;
-  Parameters& inputs = const_cast<Parameters&>(row.inputs);  // the table's accessors are mutable
   for (const InputSpec* spec : row_inputs()) {
-    spec->number(p) = spec->number(inputs);
+    spec->access.set(p, spec->access.get(row.inputs));
   }
   return p;
 }

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <optional>
 #include <sstream>
 #include <utility>
 #include <vector>
@@ -58,40 +59,41 @@ class Reader {
     return true;
   }
 
-  void number(const json& object, const std::string& pointer, const char* key, double& out,
-              bool required) {
+  std::optional<double> number(const json& object, const std::string& pointer,
+                               const std::string& key, bool required) {
     const std::string at = pointer + "/" + key;
     if (!object.contains(key)) {
       if (required) {
         problem(at, "missing (a number is required)");
       }
-      return;
+      return std::nullopt;
     }
     const json& v = object.at(key);
     if (!v.is_number()) {
       problem(at, "expected a number, got " + describe_json(v));
-      return;
+      return std::nullopt;
     }
-    out = v.get<double>();
+    return v.get<double>();
   }
 
-  void integer(const json& object, const std::string& pointer, const char* key, int& out) {
+  std::optional<int> integer(const json& object, const std::string& pointer,
+                             const std::string& key) {
     if (!object.contains(key)) {
-      return;
+      return std::nullopt;
     }
     const json& v = object.at(key);
     if (!v.is_number_integer()) {
       problem(pointer + "/" + key, "expected a whole number, got " + describe_json(v));
-      return;
+      return std::nullopt;
     }
     // Unsigned values above 2^63 - 1 would wrap in get<long long>(): range-check them first.
     const bool too_large = v.is_number_unsigned() && v.get<unsigned long long>() > 1'000'000'000ULL;
     const auto value = too_large ? 0LL : v.get<long long>();
     if (too_large || value < -1'000'000'000LL || value > 1'000'000'000LL) {
       problem(pointer + "/" + key, "whole number " + v.dump() + " is out of range");
-      return;
+      return std::nullopt;
     }
-    out = static_cast<int>(value);
+    return static_cast<int>(value);
   }
 
   void text(const json& object, const std::string& pointer, const char* key, std::string& out,
@@ -159,10 +161,14 @@ void read_section(Reader& r, const json& j, const std::string& section, Paramete
     const InputSpec& spec = *rows[i];
     switch (spec.kind) {
       case InputKind::number:
-        r.number(object, pointer, keys[i].c_str(), spec.number(p), spec.required);
+        if (const std::optional<double> v = r.number(object, pointer, keys[i], spec.required)) {
+          spec.access.set(p, *v);
+        }
         break;
       case InputKind::whole_number:
-        r.integer(object, pointer, keys[i].c_str(), spec.whole_number(p));
+        if (const std::optional<int> v = r.integer(object, pointer, keys[i])) {
+          spec.access.set(p, *v);
+        }
         break;
       case InputKind::choice:
         r.choice(object, pointer, spec, keys[i], p);
@@ -309,9 +315,9 @@ std::optional<CalibrationRecord> read_calibration(Reader& r, const json& c, doub
   if (!law.empty() && !parse_wrinkle_law(law, record.law)) {
     r.problem(at + "/law", "\"" + detail::cut(law) + "\" is not a wrinkle law");
   }
-  r.number(c, at, "K", record.fitted.K, true);
-  r.number(c, at, "p", record.fitted.p, true);
-  r.integer(c, at, "fit_rows", record.fit_rows);
+  record.fitted.K = r.number(c, at, "K", true).value_or(record.fitted.K);
+  record.fitted.p = r.number(c, at, "p", true).value_or(record.fitted.p);
+  record.fit_rows = r.integer(c, at, "fit_rows").value_or(record.fit_rows);
   if (record.fit_rows < 0) {
     r.problem(at + "/fit_rows", "a number of rows is >= 0");
   }
@@ -374,21 +380,15 @@ Preset preset_from_json(const json& j, const std::string& origin) {
   if (j.contains("published")) {
     const json& pub = j.at("published");
     if (r.object(pub, "/published", {"n", "z_max_mm", "Q"})) {
-      int n = 0;
-      double z = 0.0;
-      double Q = 0.0;
       const std::size_t before = problems.size();
       if (pub.contains("n")) {
-        r.integer(pub, "/published", "n", n);
-        preset.published.n = n;
+        preset.published.n = r.integer(pub, "/published", "n").value_or(0);
       }
       if (pub.contains("z_max_mm")) {
-        r.number(pub, "/published", "z_max_mm", z, false);
-        preset.published.z_max_mm = z;
+        preset.published.z_max_mm = r.number(pub, "/published", "z_max_mm", false).value_or(0.0);
       }
       if (pub.contains("Q")) {
-        r.number(pub, "/published", "Q", Q, false);
-        preset.published.Q = Q;
+        preset.published.Q = r.number(pub, "/published", "Q", false).value_or(0.0);
       }
       if (preset.published.n && *preset.published.n < 0) {
         r.problem("/published/n", "a number of wrinkles is >= 0");
@@ -459,7 +459,7 @@ json preset_to_json(const Preset& preset) {
     if (spec.kind == InputKind::choice) {
       j[at] = spec.choice(p);
     } else if (spec.kind == InputKind::whole_number) {
-      j[at] = spec.whole_number(const_cast<Parameters&>(p));
+      j[at] = static_cast<int>(spec.access.get(p));
     } else {
       j[at] = detail::finite_or_throw(*spec.value(p), spec.preset);
     }

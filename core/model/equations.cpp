@@ -82,10 +82,11 @@ double elliptic_E(double m) {
   return elliptic_KE(m).E;
 }
 
-double stress_ratio(double K, double youngs_modulus_MPa, double thickness_mm,
-                    double weight_N_per_mm2, double height_mm, double span_mm) {
-  const double t = thickness_mm;
-  return K * youngs_modulus_MPa * t * t * t / (weight_N_per_mm2 * height_mm * span_mm * span_mm);
+double stress_ratio(const Parameters& p, double K) {
+  const double t = p.fabric.thickness_mm;
+  const double l = span_mm(p);
+  return K * p.fabric.youngs_modulus_MPa * t * t * t /
+         (p.fabric.weight_N_per_mm2 * p.hanging.height_mm * l * l);
 }
 
 std::optional<double> wrinkle_ratio_from_stress_ratio(double s) {

@@ -4,6 +4,8 @@
 #include <optional>
 #include <span>
 
+#include "core/model/parameters.hpp"
+
 namespace foldlab {
 
 // Complete elliptic integrals of the first and second kind, K(m) and E(m), parameter m = k² in
@@ -16,9 +18,9 @@ struct EllipticKE {
 EllipticKE elliptic_KE(double m);
 double elliptic_E(double m);
 
-// Eq. 7: s = sigma_cr t / (w h) with sigma_cr = K E t² / l², so s = K E t³ / (w h l²).
-double stress_ratio(double K, double youngs_modulus_MPa, double thickness_mm,
-                    double weight_N_per_mm2, double height_mm, double span_mm);
+// Eq. 7: s = sigma_cr t / (w h) with sigma_cr = K E t² / l², so s = K E t³ / (w h l²), for the
+// fabric, height and span (span_mm) of `p` at the constant K (stiffness_constant_K(p) as solved).
+double stress_ratio(const Parameters& p, double K);
 // The root Q > 1 of (Q-1)² = s Q (Q+1); none when s >= 1 (the stiff regime).
 std::optional<double> wrinkle_ratio_from_stress_ratio(double s);
 

@@ -64,21 +64,21 @@ std::vector<ValidationIssue> validate(const Parameters& p) {
   std::vector<ValidationIssue> issues;
   for (const InputSpec& spec : input_table()) {
     if (spec.kind == InputKind::number || spec.kind == InputKind::whole_number) {
-      check_range(issues, spec.field, *spec.value(p), spec.valid, spec.why);
+      const double value = *spec.value(p);
+      check_range(issues, spec.field, value, spec.valid, spec.why);
+      const std::optional<double> upper = spec.upper_bound ? spec.upper_bound(p) : std::nullopt;
+      if (upper && spec.valid.contains(value)) {
+        check_range(issues, spec.field, value, {spec.valid.lo, *upper, spec.valid.lo_open, true},
+                    std::string(spec.key) + " must stay below " +
+                        std::string(spec.upper_bound_name) + " = " + shortest_number(*upper) +
+                        ", " + std::string(spec.upper_bound_why));
+      }
     }
   }
   // c is what K is stored as: whoever set K reads it by that name too.
   if (!issues.empty() && issues.back().field == "c") {
     issues.back().message +=
         " (K = c / (1 - nu²) = " + shortest_number(stiffness_constant_K(p)) + ")";
-  }
-  const double L = p.hanging.length_mm;
-  const double d = p.hanging.support_displacement_mm;
-  if (find_input("L")->valid.contains(L) && find_input("d")->valid.contains(d)) {
-    const double half = 0.5 * L;
-    check_range(issues, "d_mm", d, {0.0, half, false, true},
-                "d must stay below L/2 = " + shortest_number(half) +
-                    ", where the supports would meet if each moved d");
   }
   const ModelSettings& m = p.model;
   if (m.simpson_intervals % 2 != 0 && m.length_quadrature == LengthQuadrature::simpson) {

@@ -32,6 +32,12 @@ std::string_view law_choices() {
   return text;
 }
 
+constexpr InputUnit kWeightUnits[] = {
+    {"g/m²", kNPerMm2PerGramPerM2, "%.3g"},
+    {"oz/yd²", kGramPerM2PerOuncePerYd2* kNPerMm2PerGramPerM2, "%.3g"}};
+constexpr InputUnit kLengthUnits[] = {{"cm", 10.0, "%.4g"}, {"m", 1000.0, "%.4g"}};
+constexpr InputUnit kModulusUnits[] = {{"GPa", 1000.0, "%.4g"}};
+
 // One row per input. `valid` is where a value can still describe a cloth (or a sane numerical
 // setting); `typical` is where the fabrics one meets lie, used by sliders and the stress test.
 const std::vector<InputSpec>& build_table() {
@@ -49,7 +55,9 @@ const std::vector<InputSpec>& build_table() {
        .scale = InputScale::logarithmic,
        .format = "%.3g",
        .required = true,
-       .number = [](Parameters& p) -> double& { return p.fabric.thickness_mm; }},
+       .other_units = kLengthUnits,
+       .sampled = true,
+       .access = input_field<&Parameters::fabric, &Fabric::thickness_mm>()},
       {.key = "E",
        .name = "Young's modulus",
        .unit = "MPa",
@@ -63,7 +71,9 @@ const std::vector<InputSpec>& build_table() {
        .scale = InputScale::logarithmic,
        .format = "%.4g",
        .required = true,
-       .number = [](Parameters& p) -> double& { return p.fabric.youngs_modulus_MPa; }},
+       .other_units = kModulusUnits,
+       .sampled = true,
+       .access = input_field<&Parameters::fabric, &Fabric::youngs_modulus_MPa>()},
       {.key = "w",
        .name = "weight per area",
        .unit = "N/mm²",
@@ -77,7 +87,10 @@ const std::vector<InputSpec>& build_table() {
        .scale = InputScale::logarithmic,
        .format = "%.3e",
        .required = true,
-       .number = [](Parameters& p) -> double& { return p.fabric.weight_N_per_mm2; }},
+       .other_units = kWeightUnits,
+       .shown_unit = 1,
+       .sampled = true,
+       .access = input_field<&Parameters::fabric, &Fabric::weight_N_per_mm2>()},
       {.key = "nu",
        .name = "Poisson's ratio",
        .symbol = "ν",
@@ -90,7 +103,8 @@ const std::vector<InputSpec>& build_table() {
        .typical_hi = 0.49,
        .format = "%.3f",
        .expert = true,
-       .number = [](Parameters& p) -> double& { return p.fabric.poisson_ratio; }},
+       .sampled = true,
+       .access = input_field<&Parameters::fabric, &Fabric::poisson_ratio>()},
       {.key = "h",
        .name = "height",
        .unit = "mm",
@@ -103,7 +117,9 @@ const std::vector<InputSpec>& build_table() {
        .typical_hi = 5000.0,
        .format = "%.0f",
        .required = true,
-       .number = [](Parameters& p) -> double& { return p.hanging.height_mm; }},
+       .other_units = kLengthUnits,
+       .sampled = true,
+       .access = input_field<&Parameters::hanging, &Hanging::height_mm>()},
       {.key = "L",
        .name = "width",
        .unit = "mm",
@@ -116,8 +132,9 @@ const std::vector<InputSpec>& build_table() {
        .typical_hi = 5000.0,
        .format = "%.0f",
        .required = true,
-       .number = [](Parameters& p) -> double& { return p.hanging.length_mm; }},
-      // d < L/2 as well: validate() adds that check, which needs L.
+       .other_units = kLengthUnits,
+       .sampled = true,
+       .access = input_field<&Parameters::hanging, &Hanging::length_mm>()},
       {.key = "d",
        .name = "support displacement",
        .unit = "mm",
@@ -126,11 +143,19 @@ const std::vector<InputSpec>& build_table() {
        .help = "support displacement: the span is l = L - d (span_rule L-2d: each support moves d)",
        .valid = closed(0.0, 5e4),
        .why = "below half of L, where the supports would meet if each moved d",
+       .upper_bound = [](const Parameters& p) -> std::optional<double> {
+         const double L = p.hanging.length_mm;
+         return find_input("L")->valid.contains(L) ? std::optional(0.5 * L) : std::nullopt;
+       },
+       .upper_bound_name = "L/2",
+       .upper_bound_why = "where the supports would meet if each moved d",
        .typical_lo = 0.0,
        .typical_hi = 2500.0,
        .format = "%.0f",
        .required = true,
-       .number = [](Parameters& p) -> double& { return p.hanging.support_displacement_mm; }},
+       .other_units = kLengthUnits,
+       .sampled = true,
+       .access = input_field<&Parameters::hanging, &Hanging::support_displacement_mm>()},
       {.key = "K",
        .name = "eq. 7 constant c/(1-ν²)",
        .field = "K",
@@ -140,7 +165,8 @@ const std::vector<InputSpec>& build_table() {
        .typical_hi = 300.0,
        .scale = InputScale::logarithmic,
        .format = "%.3g",
-       .expert = true},
+       .expert = true,
+       .access = {stiffness_constant_K, set_stiffness_constant_K}},
       {.key = "c",
        .name = "load-condition constant",
        .field = "c",
@@ -153,7 +179,7 @@ const std::vector<InputSpec>& build_table() {
        .scale = InputScale::logarithmic,
        .format = "%.3g",
        .expert = true,
-       .number = [](Parameters& p) -> double& { return p.model.load_constant_c; }},
+       .access = input_field<&Parameters::model, &ModelSettings::load_constant_c>()},
       {.key = "p",
        .name = "eq. 7 exponent, s -> s^p",
        .field = "p",
@@ -166,7 +192,7 @@ const std::vector<InputSpec>& build_table() {
        .typical_hi = 2.0,
        .format = "%.3f",
        .expert = true,
-       .number = [](Parameters& p) -> double& { return p.model.stress_exponent_p; }},
+       .access = input_field<&Parameters::model, &ModelSettings::stress_exponent_p>()},
       {.key = "method",
        .name = "method",
        .preset = "/model/method",
@@ -226,7 +252,7 @@ const std::vector<InputSpec>& build_table() {
        .typical_hi = 200.0,
        .format = "%.0f",
        .expert = true,
-       .whole_number = [](Parameters& p) -> int& { return p.model.simpson_intervals; }},
+       .access = input_field<&Parameters::model, &ModelSettings::simpson_intervals>()},
       {.key = "length_tolerance",
        .name = "length tolerance",
        .field = "length_tolerance",
@@ -240,7 +266,7 @@ const std::vector<InputSpec>& build_table() {
        .scale = InputScale::logarithmic,
        .format = "%.3g",
        .expert = true,
-       .number = [](Parameters& p) -> double& { return p.model.length_tolerance; }},
+       .access = input_field<&Parameters::model, &ModelSettings::length_tolerance>()},
       {.key = "max_iterations",
        .name = "iteration cap",
        .field = "max_iterations",
@@ -254,7 +280,7 @@ const std::vector<InputSpec>& build_table() {
        .typical_hi = 1000.0,
        .format = "%.0f",
        .expert = true,
-       .whole_number = [](Parameters& p) -> int& { return p.model.max_iterations; }},
+       .access = input_field<&Parameters::model, &ModelSettings::max_iterations>()},
       {.key = "length_quadrature",
        .name = "quadrature rule",
        .preset = "/model/length_quadrature",
@@ -289,7 +315,7 @@ const std::vector<InputSpec>& build_table() {
        .typical_lo = 2.0,
        .typical_hi = 8.0,
        .format = "%.0f",
-       .whole_number = [](Parameters& p) -> int& { return p.shape.supports; }},
+       .access = input_field<&Parameters::shape, &Shape::supports>()},
       {.key = "incline_deg",
        .name = "incline",
        .unit = "deg",
@@ -301,7 +327,7 @@ const std::vector<InputSpec>& build_table() {
        .typical_lo = -45.0,
        .typical_hi = 45.0,
        .format = "%.1f",
-       .number = [](Parameters& p) -> double& { return p.shape.incline_deg; }},
+       .access = input_field<&Parameters::shape, &Shape::incline_deg>()},
   };
   return table;
 }
@@ -320,19 +346,10 @@ std::string InputInterval::text() const {
 }
 
 std::optional<double> InputSpec::value(const Parameters& p) const {
-  // The accessors take a mutable Parameters so that one function serves reading and writing.
-  Parameters& mutable_p = const_cast<Parameters&>(p);
-  switch (kind) {
-    case InputKind::number:
-      return number(mutable_p);
-    case InputKind::whole_number:
-      return static_cast<double>(whole_number(mutable_p));
-    case InputKind::stiffness_K:
-      return stiffness_constant_K(p);
-    case InputKind::choice:
-      break;
+  if (kind == InputKind::choice) {
+    return std::nullopt;
   }
-  return std::nullopt;
+  return access.get(p);
 }
 
 const std::vector<InputSpec>& input_table() {
@@ -373,22 +390,12 @@ std::optional<double> parse_number(std::string_view text) {
 }
 
 std::vector<InputUnit> input_units(const InputSpec& spec) {
-  const InputUnit own{spec.unit, 1.0, spec.format};
-  if (spec.unit == "N/mm²") {
-    return {own,
-            {"g/m²", kNPerMm2PerGramPerM2, "%.3g"},
-            {"oz/yd²", kGramPerM2PerOuncePerYd2 * kNPerMm2PerGramPerM2, "%.3g"}};
-  }
-  if (spec.unit == "mm") {
-    return {own, {"cm", 10.0, "%.4g"}, {"m", 1000.0, "%.4g"}};
-  }
-  if (spec.unit == "MPa") {
-    return {own, {"GPa", 1000.0, "%.4g"}};
-  }
   if (spec.unit.empty()) {
     return {};
   }
-  return {own};
+  std::vector<InputUnit> units{{spec.unit, 1.0, spec.format}};
+  units.insert(units.end(), spec.other_units.begin(), spec.other_units.end());
+  return units;
 }
 
 InputUnit shown_unit(const InputSpec& spec) {
@@ -396,7 +403,7 @@ InputUnit shown_unit(const InputSpec& spec) {
   if (units.empty()) {
     return {{}, 1.0, spec.format};
   }
-  return spec.key == "w" ? units[1] : units[0];
+  return units.at(spec.shown_unit);
 }
 
 double to_shown_unit(const InputSpec& spec, double stored) {
@@ -613,21 +620,17 @@ std::optional<std::string> set_input(Parameters& p, std::string_view key, double
   switch (spec->kind) {
     case InputKind::choice:
       return std::string(key) + " takes one of: " + std::string(spec->choices) + ", not a number";
-    case InputKind::stiffness_K:
-      // Stored as c; a K that puts c out of range is then named by validate(), as every range is.
-      set_stiffness_constant_K(p, value);
-      return std::nullopt;
     case InputKind::whole_number:
       if (value != std::floor(value) || std::abs(value) > 1e9) {
         return std::string(key) + " = " + detail::shortest_number(value) +
                " must be a whole number";
       }
-      spec->whole_number(p) = static_cast<int>(value);
-      return std::nullopt;
+      break;
+    case InputKind::stiffness_K:  // stored as c: a c out of range is named by validate()
     case InputKind::number:
       break;
   }
-  spec->number(p) = value;
+  spec->access.set(p, value);
   return std::nullopt;
 }
 
@@ -669,6 +672,13 @@ std::optional<std::string> apply_setting(Parameters& p, std::string_view key,
            (units.size() > 1 ? " (with an optional unit: " + detail::join(units, ", ") + ")" : "");
   }
   return set_input(p, key, *number);
+}
+
+std::optional<std::string> apply_assignment(Parameters& p, const Assignment& assignment) {
+  if (const double* number = std::get_if<double>(&assignment.value)) {
+    return set_input(p, assignment.key, *number);
+  }
+  return apply_setting(p, assignment.key, std::get<std::string>(assignment.value));
 }
 
 std::vector<std::string> apply_assignments(Parameters& p,

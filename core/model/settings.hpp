@@ -5,8 +5,11 @@
 #pragma once
 
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
+#include <type_traits>
+#include <variant>
 #include <vector>
 
 #include "core/model/parameters.hpp"
@@ -21,6 +24,31 @@ enum class InputKind {
 };
 
 enum class InputScale { linear, logarithmic };
+
+// A unit a value may be typed in: `symbol` as shown, `per_unit` the stored value of one of it
+// (1 g/m² is 9.81e-9 N/mm²), `format` how a value in it is shown.
+struct InputUnit {
+  std::string_view symbol{};
+  double per_unit = 1.0;
+  std::string_view format{};
+};
+
+// How a row reads and writes its value in Parameters: a number, a whole number (stored as int)
+// or K (derived: c at the Poisson ratio in force). `set` stores without range checks.
+struct InputAccess {
+  double (*get)(const Parameters&) = nullptr;
+  void (*set)(Parameters&, double) = nullptr;
+};
+
+// The access of a field of Parameters: input_field<&Parameters::fabric, &Fabric::thickness_mm>().
+template <auto Group, auto Member>
+constexpr InputAccess input_field() {
+  return {[](const Parameters& p) { return static_cast<double>((p.*Group).*Member); },
+          [](Parameters& p, double v) {
+            auto& field = (p.*Group).*Member;
+            field = static_cast<std::remove_cvref_t<decltype(field)>>(v);
+          }};
+}
 
 // An interval with open or closed ends.
 struct InputInterval {
@@ -46,16 +74,26 @@ struct InputSpec {
   // Values that can describe a cloth; outside them validate() refuses, saying `why`.
   InputInterval valid{};
   std::string_view why{};
+  // An open upper end that follows from other inputs (d below L/2), checked by validate() after
+  // `valid`, named `upper_bound_name` with the reason `upper_bound_why`; nullopt while the inputs
+  // it follows from are refused themselves.
+  std::optional<double> (*upper_bound)(const Parameters&) = nullptr;
+  std::string_view upper_bound_name{};
+  std::string_view upper_bound_why{};
   // Where values of real fabrics lie: the slider's ends and the stress test's sampling range.
   double typical_lo = 0.0;
   double typical_hi = 0.0;
   InputScale scale = InputScale::linear;
-  std::string_view format{};                 // printf format of the value alone, e.g. "%.3g"
-  bool required = false;                     // must appear in a preset
-  bool expert = false;                       // a model setting rather than a property of the cloth
-  std::string_view choices{};                // for InputKind::choice: "paper, exact"
-  double& (*number)(Parameters&) = nullptr;  // for number
-  int& (*whole_number)(Parameters&) = nullptr;                  // for whole_number
+  std::string_view format{};  // printf format of the value alone, e.g. "%.3g"
+  bool required = false;      // must appear in a preset
+  bool expert = false;        // a model setting rather than a property of the cloth
+  // Units besides `unit` a value may be typed in, and which of all (0: `unit`) the explorer shows.
+  std::span<const InputUnit> other_units{};
+  std::size_t shown_unit = 0;
+  std::string_view choices{};  // for InputKind::choice: "paper, exact"
+  // The stress test draws this input over its typical range (below upper_bound).
+  bool sampled = false;
+  InputAccess access{};  // for number, whole_number and stiffness_K
   bool (*set_choice)(Parameters&, std::string_view) = nullptr;  // for choice
   std::string_view (*choice)(const Parameters&) = nullptr;      // for choice
 
@@ -86,6 +124,14 @@ std::optional<std::string> apply_setting(Parameters& p, std::string_view key,
 std::optional<std::string> set_input(Parameters& p, std::string_view key, double value);
 std::optional<double> numeric_setting(const Parameters& p, std::string_view key);
 
+// One input set by its key: to a number (set_input) or to text, a choice's name or a number with
+// a unit (apply_setting).
+struct Assignment {
+  std::string key;
+  std::variant<double, std::string> value;
+};
+std::optional<std::string> apply_assignment(Parameters& p, const Assignment& assignment);
+
 // Applies "KEY=VALUE" assignments in order, except that every K comes after all the others
 // (so `--set K=30 --set nu=0.2` means K = 30 at nu = 0.2). Returns every error at once.
 std::vector<std::string> apply_assignments(Parameters& p,
@@ -100,18 +146,10 @@ inline constexpr double kNPerMm2PerGramPerM2 = 9.81e-9;
 // 1 oz/yd² in g/m²: 28.349523125 g (avoirdupois ounce) over 0.83612736 m² (square yard).
 inline constexpr double kGramPerM2PerOuncePerYd2 = 28.349523125 / 0.83612736;
 
-// A unit a value may be typed in: `symbol` as shown, `per_unit` the stored value of one of it
-// (1 g/m² is 9.81e-9 N/mm²), `format` how a value in it is shown.
-struct InputUnit {
-  std::string_view symbol{};
-  double per_unit = 1.0;
-  std::string_view format{};
-};
-
 // The units a value of `spec` may be typed in, its own unit first (w: N/mm², g/m², oz/yd²;
 // lengths: mm, cm, m); empty when it has none.
 std::vector<InputUnit> input_units(const InputSpec& spec);
-// The unit the explorer shows and takes `spec` in: g/m² for w, else the row's own unit.
+// The unit the explorer shows and takes `spec` in: the row's `shown_unit` (g/m² for w).
 InputUnit shown_unit(const InputSpec& spec);
 // A stored value in shown_unit(spec) and back: 1.5e-6 N/mm² is 152.9 g/m².
 double to_shown_unit(const InputSpec& spec, double stored);

@@ -39,8 +39,7 @@ Setup make_setup(const Parameters& p) {
   u.l = span_mm(p);
   u.a0 = kLowerBoundaryFactor * u.h;
   u.sag = amplitude_for_upper_edge_length(u.L, u.l);
-  u.s = stress_ratio(stiffness_constant_K(p), p.fabric.youngs_modulus_MPa, p.fabric.thickness_mm,
-                     p.fabric.weight_N_per_mm2, u.h, u.l);
+  u.s = stress_ratio(p, stiffness_constant_K(p));
   // The calibrated variant solves the law with s^p. p = 1, the printed form, skips pow so that
   // the paper's numbers stay bit for bit; Solution::stress_ratio reports s itself either way.
   const double exponent = p.model.stress_exponent_p;

@@ -219,24 +219,27 @@ Parameters stress_sample(std::uint64_t seed, int index) {
                          static_cast<std::uint32_t>(index)};
   std::mt19937_64 random(sequence);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
-  auto log_uniform = [&](double lo, double hi) {
-    return std::exp(std::log(lo) + unit(random) * (std::log(hi) - std::log(lo)));
-  };
-  // Over the input table's typical ranges: where the fabrics one meets lie.
-  auto typical = [&](std::string_view key) {
-    const InputSpec& spec = *find_input(key);
-    return log_uniform(spec.typical_lo, spec.typical_hi);
-  };
+  // Every sampled row of the input table over its typical range (where the fabrics one meets
+  // lie), in table order, uniformly on the row's scale; a row with an upper bound that follows
+  // from others (d < L/2) is drawn below it, and unit() < 1 keeps it open. Every 100th sample puts
+  // rows whose typical range starts at their closed valid end on that end (d = 0, nu = 0), an
+  // edge a uniform draw never hits.
   Parameters p;
-  p.fabric.thickness_mm = typical("t");
-  p.fabric.youngs_modulus_MPa = typical("E");
-  p.fabric.weight_N_per_mm2 = typical("w");
-  p.hanging.height_mm = typical("h");
-  p.hanging.length_mm = typical("L");
-  p.fabric.poisson_ratio = find_input("nu")->typical_hi * unit(random);
-  // unit() < 1, so d < L/2 (validate() wants d in [0, L/2)).
-  const double d = 0.5 * p.hanging.length_mm * unit(random);
-  p.hanging.support_displacement_mm = index % 100 == 0 ? 0.0 : d;
+  for (const InputSpec& spec : input_table()) {
+    if (!spec.sampled) {
+      continue;
+    }
+    const double lo = spec.typical_lo;
+    const std::optional<double> bound = spec.upper_bound ? spec.upper_bound(p) : std::nullopt;
+    const double hi = bound ? std::min(spec.typical_hi, *bound) : spec.typical_hi;
+    const double u = unit(random);
+    const bool at_edge = index % 100 == 0 && lo == spec.valid.lo && !spec.valid.lo_open;
+    const double value = at_edge ? lo
+                         : spec.scale == InputScale::logarithmic
+                             ? std::exp(std::log(lo) + u * (std::log(hi) - std::log(lo)))
+                             : lo + u * (hi - lo);
+    spec.access.set(p, value);
+  }
   // Every law by turns, each with its published constant.
   const std::span<const WrinkleLaw* const> laws = wrinkle_laws();
   const WrinkleLaw& law = *laws[static_cast<std::size_t>(index) % laws.size()];

@@ -271,7 +271,7 @@ void CalibrationPanel::apply_section(Document& document) {
   const std::string label = "Apply K = " + printf_string("%.4g", f.K) +
                             ", p = " + printf_string("%.4g", f.p) + " to the current parameters";
   if (ImGui::Button(label.c_str())) {
-    document.apply(Edit::replace(with_constants(document.edited(), f.K, f.p)));
+    document.apply(Edit::assign({{"p", f.p}, {"K", f.K}}));
   }
   if (ImGui::IsItemHovered()) {
     ImGui::SetTooltip(

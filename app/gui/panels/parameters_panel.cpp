@@ -109,11 +109,9 @@ void law_combo(Document& document, float width) {
     for (const WrinkleLaw* law : wrinkle_laws()) {
       if (ImGui::Selectable(std::string(law->title()).c_str(), law == &current) &&
           law != &current) {
-        Parameters p = document.edited();
-        p.model.law = law->kind();
-        p.model.load_constant_c = law->published_load_constant_c();
-        p.model.stress_exponent_p = 1.0;
-        document.apply(Edit::replace(p));
+        document.apply(Edit::assign({{"law", std::string(law->key())},
+                                     {"c", law->published_load_constant_c()},
+                                     {"p", 1.0}}));
       }
     }
     ImGui::EndCombo();
@@ -126,17 +124,18 @@ void law_combo(Document& document, float width) {
 
 }  // namespace
 
-void set_printed_eq7(Parameters& p) {
-  p.model.method = Method::paper;
-  p.model.law = WrinkleLawKind::conci;
-  p.model.stress_exponent_p = 1.0;
-  set_stiffness_constant_K(
-      p, kCalibratedLoadConstantC / (1.0 - kDefaultPoissonRatio * kDefaultPoissonRatio));
+std::vector<Assignment> printed_eq7() {
+  return {{"method", std::string(to_string(Method::paper))},
+          {"law", std::string(to_string(WrinkleLawKind::conci))},
+          {"p", 1.0},
+          {"K", kCalibratedLoadConstantC / (1.0 - kDefaultPoissonRatio * kDefaultPoissonRatio)}};
 }
 
 bool is_printed_eq7(const Parameters& p) {
   Parameters printed = p;
-  set_printed_eq7(printed);
+  for (const Assignment& a : printed_eq7()) {
+    apply_assignment(printed, a);
+  }
   return printed.model == p.model;
 }
 
@@ -357,9 +356,7 @@ void ParametersPanel::draw(PanelContext& context) {
   const bool printed = is_printed_eq7(document.edited());
   ImGui::BeginDisabled(printed);
   if (ImGui::Button(kPrintedEq7Label)) {
-    Parameters p = document.edited();
-    set_printed_eq7(p);
-    document.apply(Edit::replace(p));
+    document.apply(Edit::assign(printed_eq7()));
   }
   ImGui::EndDisabled();
   help_marker(
