@@ -1,4 +1,5 @@
 #include "core/model/settings.hpp"
+#include "core/model/settings_testing.hpp"
 
 #include "core/model/text_format.hpp"
 
@@ -40,8 +41,8 @@ constexpr InputUnit kModulusUnits[] = {{"GPa", 1000.0, "%.4g"}};
 
 // One row per input. `valid` is where a value can still describe a cloth (or a sane numerical
 // setting); `typical` is where the fabrics one meets lie, used by sliders and the stress test.
-const std::vector<InputSpec>& build_table() {
-  static const std::vector<InputSpec> table = {
+std::vector<InputSpec> build_table() {
+  std::vector<InputSpec> table = {
       {.key = "t",
        .name = "thickness",
        .unit = "mm",
@@ -352,8 +353,31 @@ std::optional<double> InputSpec::value(const Parameters& p) const {
   return access.get(p);
 }
 
+namespace {
+
+// Callers keep pointers to rows: room is reserved so that a row added by a test never moves them.
+constexpr std::size_t kMaxInputRows = 64;
+
+std::vector<InputSpec>& rows() {
+  static std::vector<InputSpec> table = [] {
+    std::vector<InputSpec> out = build_table();
+    out.reserve(kMaxInputRows);
+    return out;
+  }();
+  return table;
+}
+
+}  // namespace
+
 const std::vector<InputSpec>& input_table() {
-  return build_table();
+  return rows();
+}
+
+void add_input_row_for_testing(const InputSpec& spec) {
+  if (rows().size() == kMaxInputRows || find_input(spec.key) != nullptr) {
+    throw std::logic_error("cannot add input row " + std::string(spec.key));
+  }
+  rows().push_back(spec);
 }
 
 const InputSpec* find_input(std::string_view key) {
