@@ -565,7 +565,7 @@ TEST_F(ExplorerTest, AnalysisPanelsSweepThePapersInputsByKey) {
   EXPECT_TRUE(only_beside_w_slider(text, "N/mm²")) << text;
 
   open_explorer("map");
-  document().expert_mode = true;
+  document().set_expert_mode(true);
   frame();
   text = frame();
   EXPECT_NE(text.find("h (mm)"), std::string::npos) << "the map's x axis\n" << text;
@@ -596,7 +596,7 @@ TEST_F(ExplorerTest, SlidersShowTheInputTablesFormatAndUnit) {
 TEST_F(ExplorerTest, BeginnersSeeTheClothAndExpertsTheModelTooRemembered) {
   const fs::path session = dir_ / "session.json";
   open_explorer("equations", {}, session, true);
-  EXPECT_FALSE(document().expert_mode) << "a first start is a beginner's";
+  EXPECT_FALSE(document().expert_mode()) << "a first start is a beginner's";
   std::string text = frame();
   for (const char* shown :
        {"t (thickness)", "E (Young's modulus)", "w (weight per area)", "h (height)", "L (width)",
@@ -615,7 +615,7 @@ TEST_F(ExplorerTest, BeginnersSeeTheClothAndExpertsTheModelTooRemembered) {
     EXPECT_NE(text.find(shown), std::string::npos) << shown << "\n" << text;
   }
   open_explorer("equations", {}, session, true);
-  EXPECT_TRUE(document().expert_mode) << "remembered in the session";
+  EXPECT_TRUE(document().expert_mode()) << "remembered in the session";
 }
 
 // The paper's form of eq. 7 is one click away for a beginner too: p = 1 and K = 26.9 / 0.91.
@@ -1268,7 +1268,7 @@ TEST_F(ExplorerTest, StatusMessagesExpire) {
 
 // A refused value's reason once appeared under its slider and pushed every slider below it down.
 TEST_F(ExplorerTest, ARefusedValueMovesNoSliderAndMarksTheViewsStale) {
-  document().expert_mode = true;  // K, the last slider
+  document().set_expert_mode(true);  // K, the last slider
   frame();
   const ImVec2 before = position_of("K (");
   EXPECT_EQ(last_text_.find("stale"), std::string::npos);
@@ -1456,7 +1456,7 @@ TEST_F(ExplorerTest, WrappingIntoNoWidthPutsEachCharacterOnALine) {
 TEST_F(ExplorerTest, EveryPanelDrawsAtAnySizeDownToOnePixelAndComesBack) {
   for (const std::string tab : {"equations", "method", "sweep", "map"}) {
     open_explorer(tab);
-    document().expert_mode = true;
+    document().set_expert_mode(true);
     pin_as_b(document());
     std::vector<std::string> presented = {"none"};
     for (const std::unique_ptr<Panel>& panel : explorer_->panels()) {
@@ -1481,7 +1481,7 @@ TEST_F(ExplorerTest, EveryPanelDrawsAtAnySizeDownToOnePixelAndComesBack) {
 }
 
 TEST_F(ExplorerTest, GreekShowsWithDejaVuAndSpeltOutWithTheBuiltInFont) {
-  document().expert_mode = true;
+  document().set_expert_mode(true);
   frame();
   std::string text = frame();
   EXPECT_NE(text.find("nu (Poisson's ratio)"), std::string::npos) << text;
@@ -1489,7 +1489,7 @@ TEST_F(ExplorerTest, GreekShowsWithDejaVuAndSpeltOutWithTheBuiltInFont) {
   EXPECT_EQ(readable("ν σ λ π Σ ∫ −"), "nu sigma lambda pi Sum Int -");
 
   open_explorer("map", kDejaVuSans);
-  document().expert_mode = true;
+  document().set_expert_mode(true);
   frame();
   text = frame();
   // (Spaces in DejaVu's proportional text are not told from narrow gaps: compared without.)
@@ -1632,7 +1632,7 @@ TEST_F(ExplorerTest, ASessionWithOneBadValueKeepsTheRestAndTheFileAsItWas) {
             std::string::npos)
       << notices;
   EXPECT_TRUE(explorer_->cloth_style().wireframe) << "the view's switches are the user's";
-  EXPECT_TRUE(document().compare.pinned()) << "B is the user's";
+  EXPECT_TRUE(document().compare().pinned()) << "B is the user's";
   EXPECT_EQ(shown().hanging.height_mm, loaded_h) << "the preset it came from";
   EXPECT_EQ(foldlab::testing::read_file(dir_ / "session.json.unread"), broken);
   explorer_->save_session_now();
@@ -2853,19 +2853,19 @@ TEST_F(ExplorerTest, PinnedBKeepsItsNumbersWhileADragChangesAAndTheTableShowsThe
   EXPECT_EQ(last_text_.find("A − B"), std::string::npos) << "no table before a pin";
   // The proportional font's spaces are found by the player's reading of the glyphs.
   ASSERT_EQ(play(*explorer_, {{"steps", {{{"click", "Pin as B"}}}}}, [&] { frame(); }), 0);
-  ASSERT_TRUE(document().compare.pinned());
+  ASSERT_TRUE(document().compare().pinned());
   const Parameters b = shown();
-  EXPECT_EQ(document().compare.b().parameters, b);
+  EXPECT_EQ(document().compare().b().parameters, b);
   const std::string default_name = load_preset(kPresetsDir / "default.json").name;
-  EXPECT_EQ(document().compare.b().name, default_name);
+  EXPECT_EQ(document().compare().b().name, default_name);
 
   ASSERT_EQ(play(*explorer_, {{"steps", {{{"drag", "h"}, {"dx", 80}}}}}, [&] { frame(); }), 0);
   const Parameters a = shown();
   ASSERT_GT(a.hanging.height_mm, b.hanging.height_mm + 50.0) << "the drag moved h";
-  EXPECT_EQ(document().compare.b().parameters, b) << "B is not an edit of A";
+  EXPECT_EQ(document().compare().b().parameters, b) << "B is not an edit of A";
   const Solution solved_a = solve(a);
   const Solution solved_b = solve(b);
-  const Solution& shown_b = document().compare.solution();
+  const Solution& shown_b = document().compare().solution();
   EXPECT_EQ(shown_b.n, solved_b.n);
   EXPECT_DOUBLE_EQ(shown_b.Q, solved_b.Q);
   EXPECT_DOUBLE_EQ(shown_b.z_max_mm, solved_b.z_max_mm);
@@ -2910,7 +2910,7 @@ TEST_F(ExplorerTest, PinnedBKeepsItsNumbersWhileADragChangesAAndTheTableShowsThe
   // Undo moves A back to where B was pinned and leaves B alone.
   press('Z', true);
   EXPECT_EQ(shown(), b);
-  EXPECT_EQ(document().compare.b().parameters, b);
+  EXPECT_EQ(document().compare().b().parameters, b);
 }
 
 TEST_F(ExplorerTest, TheFoldPlotDrawsBsFoldLinesDashedBesideAs) {
@@ -2942,7 +2942,7 @@ TEST_F(ExplorerTest, TheFoldPlotDrawsBsFoldLinesDashedBesideAs) {
   EXPECT_EQ(cut_glyphs(plot.pos, ImVec2(plot.pos.x + plot.size.x, plot.pos.y + plot.size.y)),
             std::vector<std::string>{});
   click("Clear B");
-  EXPECT_FALSE(document().compare.pinned());
+  EXPECT_FALSE(document().compare().pinned());
   EXPECT_EQ(explorer_->fold_plot().compare_lines_drawn(), 0);
   EXPECT_EQ(explorer_->fold_plot().plot_view().legend_entries, legend_without_b);
 }
@@ -2999,7 +2999,7 @@ TEST_F(ExplorerTest, TheThreeDViewDrawsBBesideAOnlyWhilePinned) {
   EXPECT_NE(read_out.find(detail::printf_string("A:n=%d", explorer_->scene().solution().n)),
             std::string::npos)
       << last_text_;
-  EXPECT_NE(read_out.find(detail::printf_string("B:n=%d", document().compare.solution().n)),
+  EXPECT_NE(read_out.find(detail::printf_string("B:n=%d", document().compare().solution().n)),
             std::string::npos)
       << last_text_;
   // At the view's foot, below the cloth and its supports.
@@ -3055,24 +3055,24 @@ TEST_F(ExplorerTest, APlayedScriptPinsSwapsAndClearsB) {
   // Each of pin, swap and clear is one undo step that restores A and B together: the first undo
   // brings B back, the second the fabrics as they were before the swap, the third A before the
   // drag, the fourth no B.
-  EXPECT_FALSE(document().compare.pinned());
+  EXPECT_FALSE(document().compare().pinned());
   EXPECT_EQ(height_mm(), 1400.0);
   press('Z', true);
-  ASSERT_TRUE(document().compare.pinned());
-  const double dragged = document().compare.b().parameters.hanging.height_mm;
+  ASSERT_TRUE(document().compare().pinned());
+  const double dragged = document().compare().b().parameters.hanging.height_mm;
   EXPECT_GT(dragged, 1500.0);
   EXPECT_EQ(height_mm(), 1400.0);
   press('Z', true);
   EXPECT_EQ(height_mm(), dragged);
-  ASSERT_TRUE(document().compare.pinned());
-  EXPECT_EQ(document().compare.b().parameters.hanging.height_mm, 1400.0) << "B as pinned";
+  ASSERT_TRUE(document().compare().pinned());
+  EXPECT_EQ(document().compare().b().parameters.hanging.height_mm, 1400.0) << "B as pinned";
   press('Z', true);
   EXPECT_EQ(height_mm(), 1400.0);
-  EXPECT_TRUE(document().compare.pinned());
+  EXPECT_TRUE(document().compare().pinned());
   press('Z', true);
-  EXPECT_FALSE(document().compare.pinned());
+  EXPECT_FALSE(document().compare().pinned());
   press('Y', true);  // redo
-  EXPECT_TRUE(document().compare.pinned());
+  EXPECT_TRUE(document().compare().pinned());
 }
 
 // Each fabric carries the preset it came from through pin, swap, reset, undo and the session: a
@@ -3095,10 +3095,10 @@ TEST_F(ExplorerTest, EachFabricKeepsItsOwnPresetThroughPinSwapResetUndoAndTheSes
     EXPECT_EQ(fabric_label(document()), a.name);
     EXPECT_EQ(shown(), a.parameters);
     EXPECT_FALSE(document().unsaved());
-    ASSERT_TRUE(document().compare.pinned());
-    EXPECT_EQ(document().compare.b().name, b.name);
-    EXPECT_EQ(document().compare.b_origin().name, b.name);
-    EXPECT_EQ(document().compare.b().parameters, b.parameters);
+    ASSERT_TRUE(document().compare().pinned());
+    EXPECT_EQ(document().compare().b().name, b.name);
+    EXPECT_EQ(document().compare().b_origin().name, b.name);
+    EXPECT_EQ(document().compare().b().parameters, b.parameters);
   };
   expect_a_is(linen, chiffon, "after the swap");
   const std::string header = squeezed(frame());
@@ -3156,13 +3156,13 @@ TEST_F(ExplorerTest, BIsRestoredWithTheSession) {
   frame();
   explorer_->save_session_now();
   open_explorer("equations", {}, session, true);
-  ASSERT_TRUE(document().compare.pinned());
-  EXPECT_EQ(document().compare.b().parameters, b);
+  ASSERT_TRUE(document().compare().pinned());
+  EXPECT_EQ(document().compare().b().parameters, b);
   EXPECT_EQ(shown().hanging.height_mm, 2000.0);
   click("Clear B");
   explorer_->save_session_now();
   open_explorer("equations", {}, session, true);
-  EXPECT_FALSE(document().compare.pinned());
+  EXPECT_FALSE(document().compare().pinned());
 }
 
 TEST(Contrast, MenusAndListsAreOpaque) {

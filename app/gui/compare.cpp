@@ -60,42 +60,42 @@ void pin_as_b(Document& document) {
   PinnedFabric b = fabric_a(document);
   const std::string label = b.fabric.name;
   document.end_step();  // a drag still open is a step of its own
-  document.compare.pin(std::move(b));
+  document.compare().pin(std::move(b));
   document.end_step();
-  document.session_dirty = true;
+  document.mark_session_dirty();
   document.notify("Pinned \"" + label + "\" as B; A keeps changing with the sliders.",
                   MessageKind::info);
 }
 
 void swap_a_and_b(Document& document) {
-  if (!document.compare.pinned()) {
+  if (!document.compare().pinned()) {
     return;
   }
-  const PinnedFabric former_b = document.compare.pinned_fabric();
+  const PinnedFabric former_b = document.compare().pinned_fabric();
   const PinnedFabric former_a = fabric_a(document);
   document.end_step();
   // B first, so that the edit of A closes one undo step holding both changes.
-  document.compare.pin(former_a);
+  document.compare().pin(former_a);
   if (const std::optional<std::string> problem =
           document.take_fabric(former_b.origin, former_b.origin_path, former_b.fabric.parameters)) {
-    document.compare.pin(former_b);
+    document.compare().pin(former_b);
     document.notify("Not swapped: " + *problem, MessageKind::error);
     return;
   }
-  document.session_dirty = true;
+  document.mark_session_dirty();
   document.notify(
       "Swapped: A is \"" + fabric_label(document) + "\", B is \"" + former_a.fabric.name + "\".",
       MessageKind::info);
 }
 
 void clear_b(Document& document) {
-  if (!document.compare.pinned()) {
+  if (!document.compare().pinned()) {
     return;
   }
   document.end_step();
-  document.compare.clear();
+  document.compare().clear();
   document.end_step();
-  document.session_dirty = true;
+  document.mark_session_dirty();
   document.notify("Cleared B (Ctrl+Z brings it back).", MessageKind::info);
 }
 

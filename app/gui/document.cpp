@@ -68,7 +68,7 @@ void Document::commit() {
   issues_ = validate(edited_);
   if (issues_.empty() && !(edited_ == scene_.parameters())) {
     scene_.set_parameters(edited_);
-    session_dirty = true;
+    session_dirty_ = true;
   }
 }
 
@@ -107,7 +107,7 @@ void Document::load_preset_file(const std::filesystem::path& path) {
     ++loads_;
     apply(Edit::replace(preset.parameters));
     notify("Loaded " + preset.name + ".", MessageKind::success);
-    session_dirty = true;
+    session_dirty_ = true;
   } catch (const PresetError& e) {
     notify(std::string("Not loaded; the current state is kept.\n") + e.what(), MessageKind::error);
   }
@@ -116,7 +116,7 @@ void Document::load_preset_file(const std::filesystem::path& path) {
 void Document::adopt(const Preset& loaded, std::string path) {
   loaded_ = loaded;
   loaded_path_ = std::move(path);
-  session_dirty = true;
+  session_dirty_ = true;
   // Saving is no edit to undo: the history goes on from the state as saved.
   step_base_.loaded = loaded_;
   step_base_.loaded_path = loaded_path_;
@@ -157,7 +157,7 @@ std::optional<std::string> Document::refusal() const {
 Document::Snapshot Document::snapshot() const {
   return Snapshot{
       loaded_, loaded_path_, edited_,
-      compare.pinned() ? std::optional<PinnedFabric>(compare.pinned_fabric()) : std::nullopt};
+      compare_.pinned() ? std::optional<PinnedFabric>(compare_.pinned_fabric()) : std::nullopt};
 }
 
 namespace {
@@ -182,13 +182,13 @@ void Document::restore(const Snapshot& s) {
   commit();
   if (!same_b(s.compare_b, snapshot().compare_b)) {
     if (s.compare_b) {
-      compare.pin(*s.compare_b);
+      compare_.pin(*s.compare_b);
     } else {
-      compare.clear();
+      compare_.clear();
     }
   }
   step_base_ = s;
-  session_dirty = true;
+  session_dirty_ = true;
 }
 
 void Document::end_step() {

@@ -63,8 +63,15 @@ class Document {
   // What the widgets show: the last edit, possibly refused. Changed only by apply().
   const Parameters& edited() const { return edited_; }
   const std::vector<ValidationIssue>& issues() const { return issues_; }
+  // The model of the last valid edit. Mutable because it computes its grid and lines lazily; its
+  // parameters change only through apply(), its grid resolution only through set_grid_resolution.
   Scene& scene() { return scene_; }
   const Scene& scene() const { return scene_; }
+  // Vertices per side of the 3D cloth mesh, a view setting remembered in the session (no re-solve).
+  void set_grid_resolution(int per_side) {
+    session_dirty_ = session_dirty_ || per_side != scene_.grid_nx();
+    scene_.set_grid_resolution(per_side, per_side);
+  }
 
   // The one write path for the parameters. The edit replaces edited() and is validated once; the
   // model (the scene) sees it only when it validates, otherwise the scene keeps the last valid
@@ -137,14 +144,22 @@ class Document {
   void add_notice(const std::string& notice);
   const std::vector<std::string>& notices() const { return notices_; }
 
-  // Set by every accepted change; the explorer saves the session and clears it.
-  bool session_dirty = false;
+  // Set by every accepted change and every remembered choice; the explorer saves the session
+  // and then calls session_saved().
+  bool session_dirty() const { return session_dirty_; }
+  void mark_session_dirty() { session_dirty_ = true; }
+  void session_saved() { session_dirty_ = false; }
   // Whether the panels show the model's settings as well as the cloth; remembered in the session.
   // A first start shows the cloth alone, for a designer who has not met eq. 7.
-  bool expert_mode = false;
+  bool expert_mode() const { return expert_mode_; }
+  void set_expert_mode(bool on) {
+    session_dirty_ = session_dirty_ || on != expert_mode_;
+    expert_mode_ = on;
+  }
   // The fabric pinned as B beside this one (A). Pinning, swapping and clearing are undo steps
-  // like an edit of A, so that an undone swap brings back both fabrics.
-  Comparison compare;
+  // like an edit of A (app/gui/compare.hpp), so that an undone swap brings back both fabrics.
+  Comparison& compare() { return compare_; }
+  const Comparison& compare() const { return compare_; }
 
  private:
   // What an undo step restores: the preset as loaded, the edits over it and the fabric pinned
@@ -171,6 +186,9 @@ class Document {
   std::vector<ValidationIssue> issues_;
   Scene scene_;
   std::uint64_t loads_ = 0;
+  bool session_dirty_ = false;
+  bool expert_mode_ = false;
+  Comparison compare_;
 
   Snapshot step_base_;  // the state when the open step began
   std::vector<Snapshot> undo_;

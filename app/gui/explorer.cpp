@@ -65,9 +65,9 @@ Explorer::Explorer(const Preset& initial, const std::string& initial_path, bool 
         document_.adopt(s->loaded, s->loaded_preset_path);
         document_.apply(Edit::replace(s->current.parameters));
       }
-      document_.scene().set_grid_resolution(s->grid_resolution, s->grid_resolution);
+      document_.set_grid_resolution(s->grid_resolution);
       if (s->compare) {
-        document_.compare.pin(
+        document_.compare().pin(
             {*s->compare, s->compare_origin.value_or(*s->compare), s->compare_origin_path});
       }
       load_settings(s->view);
@@ -92,7 +92,7 @@ Explorer::Explorer(const Preset& initial, const std::string& initial_path, bool 
     document_.add_notice(notice);
   }
   document_.forget_history();  // undo goes back no further than what the window opened with
-  document_.session_dirty = false;
+  document_.session_saved();
   appearance_.apply(renderer_);
 }
 
@@ -165,7 +165,7 @@ std::optional<std::string> Explorer::set_view(std::string_view key, std::string_
           detail::cut(value).c_str(), kMinGridResolution, kMaxGridResolution);
     }
     const int n = static_cast<int>(*per_side);
-    document_.scene().set_grid_resolution(n, n);
+    document_.set_grid_resolution(n);
     return std::nullopt;
   }
   return cloth_view_->set_view(key, value);
@@ -228,7 +228,7 @@ void Explorer::save_settings(SessionSettings& settings) const {
   settings.set("ui_scale_percent", appearance_.scale_percent());
   settings.set("light_theme", appearance_.light_theme());
   settings.set("automatic_layout", automatic_layout_);
-  settings.set("expert", document_.expert_mode);
+  settings.set("expert", document_.expert_mode());
 }
 
 void Explorer::load_settings(const SessionSettings& settings) {
@@ -239,7 +239,7 @@ void Explorer::load_settings(const SessionSettings& settings) {
     const float split = settings.get(k.key, splits_.*k.split);
     splits_.*k.split = split >= 0.0f && split <= 1.0f ? split : -1.0f;
   }
-  document_.expert_mode = settings.get("expert", document_.expert_mode);
+  document_.set_expert_mode(settings.get("expert", document_.expert_mode()));
 }
 
 void Explorer::save_session_now() {
@@ -252,17 +252,17 @@ void Explorer::save_session_now() {
   s.loaded = document_.loaded();
   s.loaded_preset_path = document_.loaded_path();
   s.grid_resolution = document_.scene().grid_nx();
-  if (document_.compare.pinned()) {
-    s.compare = document_.compare.b();
-    s.compare_origin = document_.compare.b_origin();
-    s.compare_origin_path = document_.compare.b_origin_path();
+  if (document_.compare().pinned()) {
+    s.compare = document_.compare().b();
+    s.compare_origin = document_.compare().b_origin();
+    s.compare_origin_path = document_.compare().b_origin_path();
   }
   save_settings(s.view);
   for (const std::unique_ptr<Panel>& panel : panels_) {
     panel->save_settings(s.view);
   }
   save_session(options_.session_file, s);
-  document_.session_dirty = false;
+  document_.session_saved();
 }
 
 bool Explorer::may_quit() {
@@ -279,13 +279,13 @@ bool Explorer::may_quit() {
 // Keeps the session on disk a second after the last change, so that a crash loses little.
 void Explorer::save_session_when_idle() {
   const double now = ImGui::GetTime();
-  if (document_.session_dirty && now - last_session_save_time_ > 1.0) {
+  if (document_.session_dirty() && now - last_session_save_time_ > 1.0) {
     last_session_save_time_ = now;
     try {
       save_session_now();
     } catch (const std::exception& e) {
       document_.notify(std::string("Could not save the session: ") + e.what(), MessageKind::error);
-      document_.session_dirty = false;
+      document_.session_saved();
     }
   }
 }
@@ -570,7 +570,7 @@ float Explorer::main_menu() {
 void Explorer::reset_layout() {
   automatic_layout_ = true;
   splits_ = LayoutSplits{};
-  document_.session_dirty = true;
+  document_.mark_session_dirty();
   for (bool& valid : placed_valid_) {
     valid = false;
   }
@@ -595,7 +595,7 @@ bool Explorer::follow_user_edits(const TiledLayout& layout) {
     }
     if (window->SizeFull.x == last.size.x && window->SizeFull.y == last.size.y) {
       automatic_layout_ = false;  // moved by its title: the user's arrangement stays until reset
-      document_.session_dirty = true;
+      document_.mark_session_dirty();
       return false;
     }
     const float before[] = {last.pos.x, last.pos.x + last.size.x, last.pos.y,
@@ -610,7 +610,7 @@ bool Explorer::follow_user_edits(const TiledLayout& layout) {
     }
   }
   if (moved) {
-    document_.session_dirty = true;
+    document_.mark_session_dirty();
   }
   return moved;
 }
@@ -672,7 +672,7 @@ bool Explorer::panels_fill_window() const {
 
 bool Explorer::awaits_time() const {
   const ImGuiIO& io = ImGui::GetIO();
-  return !document_.message().empty() || document_.session_dirty || io.WantTextInput ||
+  return !document_.message().empty() || document_.session_dirty() || io.WantTextInput ||
          io.WantSaveIniSettings || ImGui::GetCurrentContext()->SettingsDirtyTimer > 0.0f;
 }
 
@@ -726,7 +726,7 @@ void Explorer::frame() {
     document_.end_step();
   }
   if (appearance_.scale_percent() != scale_before || appearance_.light_theme() != light_before) {
-    document_.session_dirty = true;
+    document_.mark_session_dirty();
   }
   save_session_when_idle();
 }

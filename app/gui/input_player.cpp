@@ -229,11 +229,11 @@ json explorer_state_json(Explorer& explorer) {
   renderer["compare"] = counters_json(explorer.compare_counters());
   // B, the fabric pinned beside A: null while none is.
   json compare = nullptr;
-  if (document.compare.pinned()) {
-    const Preset& b = document.compare.b();
+  if (document.compare().pinned()) {
+    const Preset& b = document.compare().b();
     compare = {{"label", b.name},
                {"parameters", parameters_json(b.parameters)},
-               {"solution", solution_to_json(document.compare.solution(), b.parameters)}};
+               {"solution", solution_to_json(document.compare().solution(), b.parameters)}};
   }
   // Where each slider's handle is, so that a test driving the real window (xdotool) can press on
   // it as a person would.

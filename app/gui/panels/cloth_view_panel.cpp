@@ -182,7 +182,7 @@ void ClothViewPanel::follow_the_cloth(Document& document, bool reset, bool hold)
   // of this frame, not the last one, so that one change of the cloth is one picture drawn.
   Scene& scene = document.scene();
   scene.grid();
-  Comparison& compare = document.compare;
+  Comparison& compare = document.compare();
   const std::uint64_t b_grid_version =
       compare.pinned() ? compare.scene(scene.grid_nx()).version(Stage::grid) : 0;
   const bool b_changed =
@@ -365,7 +365,7 @@ void ClothViewPanel::draw(PanelContext& context) {
   const ImGuiIO& io = ImGui::GetIO();
   // With B pinned the view is split in two halves, A on the left and B on the right, under one
   // camera: a drag in either half turns both.
-  const bool compare = document.compare.pinned();
+  const bool compare = document.compare().pinned();
   const FrameSize size{compare ? std::max(16, area.width / 2) : area.width, area.height};
   if (ImGui::IsItemActive() && (io.MouseDelta.x != 0.0f || io.MouseDelta.y != 0.0f)) {
     camera_user_moved_ = true;
@@ -383,7 +383,7 @@ void ClothViewPanel::draw(PanelContext& context) {
   renderer.draw_cloth(draw, origin, scene, camera_, size, style_, ClothSlot::a);
   const ImVec2 b_origin(origin.x + static_cast<float>(size.width), origin.y);
   if (compare) {
-    renderer.draw_cloth(draw, b_origin, document.compare.scene(scene.grid_nx()), camera_,
+    renderer.draw_cloth(draw, b_origin, document.compare().scene(scene.grid_nx()), camera_,
                         FrameSize{area.width - size.width, area.height}, style_, ClothSlot::b);
   }
   // Wrapped inside the view, so that a narrow view keeps it off the colour bar beside it.
@@ -408,7 +408,7 @@ void ClothViewPanel::draw(PanelContext& context) {
     };
     label(origin, static_cast<float>(size.width), kSweepCurve.u32(), "A", fabric_label(document));
     label(b_origin, static_cast<float>(area.width - size.width), kCompareB.u32(), "B",
-          document.compare.b().name);
+          document.compare().b().name);
     draw->AddLine(ImVec2(b_origin.x, origin.y),
                   ImVec2(b_origin.x, origin.y + static_cast<float>(area.height)),
                   ImGui::GetColorU32(ImGuiCol_Separator));

@@ -38,7 +38,7 @@ QuantityTexts difference_texts(const Solution& a, const Solution& b) {
 void draw_compare_names(Document& document) {
   // A preset's name can be a sentence: wrapped, never cut off.
   for (const auto& [colour, label] : {std::pair{&kSweepCurve, "A: " + fabric_label(document)},
-                                      std::pair{&kCompareB, "B: " + document.compare.b().name}}) {
+                                      std::pair{&kCompareB, "B: " + document.compare().b().name}}) {
     ImGui::PushStyleColor(ImGuiCol_Text, static_cast<ImVec4>(*colour));
     wrapped_text("%s", label.c_str());
     ImGui::PopStyleColor();
@@ -46,7 +46,7 @@ void draw_compare_names(Document& document) {
 }
 
 void compare_menu(Document& document) {
-  const bool pinned = document.compare.pinned();
+  const bool pinned = document.compare().pinned();
   if (ImGui::MenuItem("Pin as B")) {
     pin_as_b(document);
   }
@@ -56,14 +56,14 @@ void compare_menu(Document& document) {
   if (ImGui::MenuItem("Clear B", nullptr, false, pinned)) {
     clear_b(document);
   }
-  if (document.compare.pinned()) {  // not `pinned`: Clear B may have just cleared it
+  if (document.compare().pinned()) {  // not `pinned`: Clear B may have just cleared it
     ImGui::Separator();
-    ImGui::TextDisabled("B: %s", document.compare.b().name.c_str());
+    ImGui::TextDisabled("B: %s", document.compare().b().name.c_str());
   }
 }
 
 void draw_compare_section(Document& document, const ModelStanding& standing_a) {
-  Comparison& compare = document.compare;
+  Comparison& compare = document.compare();
   if (ImGui::Button("Pin as B")) {
     pin_as_b(document);
   }

@@ -24,7 +24,7 @@ constexpr std::size_t kDashGap = 4;
 }  // namespace
 
 void FoldPlotPanel::dash_compare_lines(Document& document) {
-  Comparison& compare = document.compare;
+  Comparison& compare = document.compare();
   Scene& scene = compare.scene(document.scene().grid_nx());
   const FoldLines& lines = scene.fold_lines();
   if (compare_changes_ == compare.changes() &&
@@ -98,7 +98,7 @@ void FoldPlotPanel::draw(PanelContext& context) {
     // With B pinned the legend tells A's lines from B's in a few words (the fabrics' names are
     // over the 3D view and in Results, too long for a legend); A's lines come first, so that a
     // hovered series below lines.lines.size() is one of A's.
-    const bool compare = document.compare.pinned();
+    const bool compare = document.compare().pinned();
     const char* a_positive = compare ? "A positive fold" : "positive fold";
     const char* a_negative = compare ? "A negative fold" : "negative fold";
     // A whole-pixel width lets ImGui draw each line from its baked anti-aliased line texture: two

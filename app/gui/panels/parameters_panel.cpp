@@ -346,8 +346,8 @@ void ParametersPanel::draw(PanelContext& context) {
     document.reset_to_loaded();
   }
   ImGui::SameLine();
-  if (ImGui::Checkbox(kExpertLabel, &document.expert_mode)) {
-    document.session_dirty = true;
+  if (bool expert = document.expert_mode(); ImGui::Checkbox(kExpertLabel, &expert)) {
+    document.set_expert_mode(expert);
   }
   help_marker(
       "Beginners see the cloth (t, E, w, h, L, d) and its shape; experts also the model's "
@@ -370,7 +370,7 @@ void ParametersPanel::draw(PanelContext& context) {
   float label_width = ImGui::CalcTextSize("span rule").x;
   for (const std::string& key : sweepable_keys()) {
     const InputSpec* spec = find_input(key);
-    if (spec->expert && !document.expert_mode) {
+    if (spec->expert && !document.expert_mode()) {
       places_.erase(key);  // playback must not press what is no longer there
       continue;
     }
@@ -389,7 +389,7 @@ void ParametersPanel::draw(PanelContext& context) {
                          w / input_units(*spec)[2].per_unit, w);
     }
   }
-  if (document.expert_mode) {
+  if (document.expert_mode()) {
     ImGui::TextColored(kDimText, "    c = %.4g (load-condition constant)",
                        document.edited().model.load_constant_c);
     input_slider(document, *find_input("p"), width);
@@ -414,17 +414,15 @@ void ParametersPanel::draw(PanelContext& context) {
   } else if (document.edited().shape.kind == ShapeKind::inclined) {
     input_slider(document, *find_input("incline_deg"), width);
   }
-  if (document.expert_mode) {
+  if (document.expert_mode()) {
     law_combo(document, width);
     for (const char* key : kChoiceKeys) {
       choice_combo(document, *find_input(key), width);
     }
-    Scene& scene = document.scene();
-    int grid = scene.grid_nx();
+    int grid = document.scene().grid_nx();
     ImGui::SetNextItemWidth(width);
     if (ImGui::SliderInt("grid", &grid, 8, 512, "%d per side", ImGuiSliderFlags_AlwaysClamp)) {
-      scene.set_grid_resolution(grid, grid);
-      document.session_dirty = true;
+      document.set_grid_resolution(grid);
     }
     help_marker(
         "Resolution of the 3D cloth mesh (vertices per side). Changing it does not re-solve.");

@@ -69,10 +69,10 @@ std::vector<ResultsPanel::Row> ResultsPanel::rows(Document& document) {
 
 std::vector<std::pair<std::string, ImVec4>> ResultsPanel::headlines(Document& document) {
   const std::string a = headline(quantity_texts(document.scene().solution(), standing(document)));
-  if (!document.compare.pinned()) {
+  if (!document.compare().pinned()) {
     return {{a, ImGui::GetStyleColorVec4(ImGuiCol_Text)}};
   }
-  Comparison& compare = document.compare;
+  Comparison& compare = document.compare();
   return {{"A: " + a, kSweepCurve},
           {"B: " + headline(quantity_texts(compare.solution(), compare.standing())), kCompareB}};
 }

@@ -94,11 +94,11 @@ void SweepPanel::recompute(const Parameters& current) {
 }
 
 void SweepPanel::recompute_compare(Document& document) {
-  if (!document.compare.pinned()) {
+  if (!document.compare().pinned()) {
     compare_computed_ = false;
     return;
   }
-  const Parameters& b = document.compare.b().parameters;
+  const Parameters& b = document.compare().b().parameters;
   if (compare_computed_ && b == compare_computed_for_ && same_axis(computed_axis_, compare_axis_)) {
     return;
   }
@@ -245,7 +245,7 @@ void SweepPanel::draw(Document& document) {
     }
     q.plot.vertical_line(now, kCurrentValue.u32());
     if (b != nullptr) {
-      q.plot.vertical_line(to_shown(key, get_number(document.compare.b().parameters, key)),
+      q.plot.vertical_line(to_shown(key, get_number(document.compare().b().parameters, key)),
                            kCompareB.u32());
     }
     q.plot.end();
