@@ -145,21 +145,10 @@ const char* band_name(const SweepPoint& p) {
   if (!p.valid) {
     return "refused";
   }
-  switch (p.regime) {
-    case Regime::wrinkled:
-      return p.n < 2 ? "one fold" : "";
-    case Regime::no_slack:
-      return "no slack";
-    case Regime::stiff:
-      return "stiff";
-    case Regime::short_cloth:
-      return "short cloth";
-    case Regime::negligible_slack:
-      return "negligible slack";
-    case Regime::n_cycle:
-      return "n cycles";
+  if (p.regime == Regime::wrinkled) {
+    return p.n < 2 ? "one fold" : "";
   }
-  return "";
+  return regime_info(p.regime).label.data();
 }
 
 double between(double a, double b, bool logarithmic) {

@@ -8,6 +8,7 @@
 #include <limits>
 #include <numbers>
 #include <optional>
+#include <stdexcept>
 
 #include "core/model/equations.hpp"
 #include "core/model/root_finding.hpp"
@@ -468,22 +469,17 @@ std::vector<CountMapPoint> count_map(const Parameters& p, int n_from, int n_to) 
   return out;
 }
 
-std::string_view to_string(Regime r) {
-  switch (r) {
-    case Regime::wrinkled:
-      return "wrinkled";
-    case Regime::no_slack:
-      return "no_slack";
-    case Regime::stiff:
-      return "stiff";
-    case Regime::short_cloth:
-      return "short_cloth";
-    case Regime::negligible_slack:
-      return "negligible_slack";
-    case Regime::n_cycle:
-      return "n_cycle";
+const RegimeInfo& regime_info(Regime r) {
+  for (const RegimeInfo& info : kRegimes) {
+    if (info.regime == r) {
+      return info;
+    }
   }
-  return "unknown";
+  throw std::logic_error("a regime missing from kRegimes");
+}
+
+std::string_view to_string(Regime r) {
+  return regime_info(r).key;
 }
 
 std::string describe(const Solution& s, const Parameters& p) {

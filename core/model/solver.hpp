@@ -2,8 +2,10 @@
 // it) and `exact` (eqs. 8 and 9 to machine precision, n as the fixed point of eq. 10).
 #pragma once
 
+#include <cstdint>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "core/model/parameters.hpp"
@@ -20,6 +22,25 @@ enum class Regime {
   negligible_slack,  // A(L, l) <= 0.01 h: eq. 9 has no root; flat folds (z_max = 0) shown
   n_cycle,           // exact method: eq. 10 cycles between values of n; the smallest is used
 };
+
+// What each front end says of a regime: its key in reports and JSON, its words in plot bands and
+// legends, and the colour a regime map gives a cell that has no n to show (0xRRGGBB; absent for
+// the regimes coloured by n).
+struct RegimeInfo {
+  Regime regime;
+  std::string_view key;
+  std::string_view label;
+  std::optional<std::uint32_t> map_rgb;
+};
+inline constexpr RegimeInfo kRegimes[] = {
+    {Regime::wrinkled, "wrinkled", "wrinkled", std::nullopt},
+    {Regime::no_slack, "no_slack", "no slack", 0x3c3c3c},
+    {Regime::stiff, "stiff", "stiff", std::nullopt},
+    {Regime::short_cloth, "short_cloth", "short cloth", 0x781e1e},
+    {Regime::negligible_slack, "negligible_slack", "negligible slack", 0x5a5a78},
+    {Regime::n_cycle, "n_cycle", "n cycles", std::nullopt},
+};
+const RegimeInfo& regime_info(Regime r);
 
 // The paper's lower boundary a_0 = 1.01 h, which both methods keep.
 inline constexpr double kLowerBoundaryFactor = 1.01;

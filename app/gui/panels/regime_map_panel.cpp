@@ -3,9 +3,11 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <span>
 #include <thread>
+#include <vector>
 
 #include <imgui.h>
 
@@ -36,17 +38,27 @@ ImU32 ramp(double t) {
 
 // The colours of the cells that have no n to show, with the names the colour bar gives them.
 constexpr ImU32 kInvalidColour = IM_COL32(0, 0, 0, 255);
-constexpr ImU32 kNoSlackColour = IM_COL32(60, 60, 60, 255);
-constexpr ImU32 kShortClothColour = IM_COL32(120, 30, 30, 255);
-constexpr ImU32 kNegligibleSlackColour = IM_COL32(90, 90, 120, 255);
+constexpr ImU32 opaque(std::uint32_t rgb) {
+  return IM_COL32((rgb >> 16) & 0xff, (rgb >> 8) & 0xff, rgb & 0xff, 255);
+}
 struct Swatch {
   const char* name;
   ImU32 colour;
 };
-constexpr Swatch kRegimeSwatches[] = {{"no slack", kNoSlackColour},
-                                      {"short cloth", kShortClothColour},
-                                      {"negligible slack", kNegligibleSlackColour},
-                                      {"invalid inputs", kInvalidColour}};
+// The regime table's coloured regimes, then the refused inputs.
+const std::vector<Swatch>& map_swatches() {
+  static const std::vector<Swatch> swatches = [] {
+    std::vector<Swatch> out;
+    for (const RegimeInfo& info : kRegimes) {
+      if (info.map_rgb) {
+        out.push_back({info.label.data(), opaque(*info.map_rgb)});
+      }
+    }
+    out.push_back({"invalid inputs", kInvalidColour});
+    return out;
+  }();
+  return swatches;
+}
 
 // z_max from 0.1 mm to 1 m on a log scale.
 double z_fraction(double z_max_mm) {
@@ -61,15 +73,8 @@ ImU32 cell_colour(const MapCell& cell, bool show_z) {
   if (!cell.valid) {
     return kInvalidColour;
   }
-  switch (cell.regime) {
-    case Regime::no_slack:
-      return kNoSlackColour;
-    case Regime::short_cloth:
-      return kShortClothColour;
-    case Regime::negligible_slack:
-      return kNegligibleSlackColour;
-    default:
-      break;
+  if (const std::optional<std::uint32_t> rgb = regime_info(cell.regime).map_rgb) {
+    return opaque(*rgb);
   }
   if (show_z) {
     return ramp(z_fraction(cell.z_max_mm));
@@ -273,7 +278,7 @@ RegimeMapPanel::Placement RegimeMapPanel::place_map() {
   const float bar_area = style.ItemSpacing.x + ems(1.0f) + style.ItemInnerSpacing.x +
                          ImGui::CalcTextSize(show_z_ ? "1000 mm" : "200").x;
   float swatches_width = 0.0f;
-  for (const Swatch& swatch : kRegimeSwatches) {
+  for (const Swatch& swatch : map_swatches()) {
     swatches_width += ImGui::GetFrameHeight() + style.ItemInnerSpacing.x +
                       ImGui::CalcTextSize(swatch.name).x + style.ItemSpacing.x;
   }
@@ -401,7 +406,7 @@ void RegimeMapPanel::regime_swatches(const Placement& at) const {
       ImVec2(at.origin.x - at.left_margin,
              at.origin.y + at.side + 2.0f * font + std::round(0.3f * font) + 2.0f));
   bool first = true;
-  for (const Swatch& swatch : kRegimeSwatches) {
+  for (const Swatch& swatch : map_swatches()) {
     const float width =
         ImGui::GetFrameHeight() + style.ItemInnerSpacing.x + ImGui::CalcTextSize(swatch.name).x;
     if (!first) {
