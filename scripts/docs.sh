@@ -92,6 +92,9 @@ compare_block "$work/compare"
 replace_block docs/calibration.md compare "$work/compare"
 compare_block "$work/compare-L-2d" --set span_rule=L-2d --set c=15.4
 replace_block docs/calibration.md compare-L-2d "$work/compare-L-2d"
+# The default model's eq. 7 (presets/default.json's c and p, rounded as calibration.md writes them).
+compare_block "$work/compare-calibrated" --set p=0.5216 --set c=1.534
+replace_block docs/calibration.md compare-calibrated "$work/compare-calibrated"
 
 echo "docs.sh: calibration" >&2
 fenced "$work/calibrate-K" calibrate --data data/paper-measurements.csv

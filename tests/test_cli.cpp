@@ -549,7 +549,7 @@ TEST_F(CliTest, ACappedFoldCountIsSmallEnoughToUseAndFlaggedWhereverItIsShown) {
   ASSERT_EQ(compared.exit_status, 0) << compared.err;
   EXPECT_TRUE(contains(compared.out, "| 10000+ (capped) |")) << compared.out;
   args.push_back("--json");
-  const json rows = foldlab::testing::json_output(run(args));
+  const json rows = foldlab::testing::json_output(run(args)).at("rows");
   EXPECT_EQ(rows.at(0).at("exact").at("n_capped"), true) << rows.dump();
 }
 
@@ -1101,3 +1101,155 @@ TEST_F(CliTest, SavedPresetRecordsTheVersionThatWroteIt) {
       << j.dump(2);
   EXPECT_EQ(run({"solve", "--preset", out.string()}).exit_status, 0);
 }
+
+// --- The paper accuracy report: how close the model gets to the paper, table by table. ---
+
+namespace {
+
+// The paper's printed results, typed here from the paper (Tables 1-2 and Fig. 4), not read from
+// the presets or data/: the report is checked against them, and the presets and data/ too.
+struct PrintedRow {
+  const char* preset;  // the preset that carries the row's inputs
+  const char* table;
+  int n;
+  double z_max_mm;
+  double Q;  // 0: the paper prints no usable Q (Fig. 4's 0.6 is impossible)
+};
+constexpr PrintedRow kPrinted[] = {
+    {"paper-table1-h900", "Table 1", 5, 54.0, 1.31},
+    {"paper-table1-h1400", "Table 1", 7, 48.0, 1.29},
+    {"paper-table1-h2350", "Table 1", 8, 60.0, 1.34},
+    {"paper-table2-w10", "Table 2", 4, 56.0, 1.78},
+    {"paper-table2-w33", "Table 2", 6, 46.0, 1.46},
+    {"paper-table2-w54", "Table 2", 7, 44.0, 1.39},
+    {"paper-fig4", "Fig. 4", 4, 70.0, 0.0},
+};
+
+class PaperAccuracy : public CliTest {};
+
+// The published values in the presets and in data/paper-measurements.csv are the paper's.
+TEST_F(PaperAccuracy, ThePresetsAndTheMeasurementsCarryThePapersPrintedNumbers) {
+  const foldlab::MeasurementSet data =
+      foldlab::load_measurements(kPresetsDir.parent_path() / "data" / "paper-measurements.csv");
+  ASSERT_EQ(data.rows.size(), std::size(kPrinted));
+  for (std::size_t i = 0; i < std::size(kPrinted); ++i) {
+    const PrintedRow& printed = kPrinted[i];
+    SCOPED_TRACE(printed.preset);
+    const json published =
+        json::parse(read_file(kPresetsDir / (std::string(printed.preset) + ".json")))
+            .at("published");
+    EXPECT_EQ(published.at("n"), printed.n);
+    EXPECT_EQ(published.at("z_max_mm"), printed.z_max_mm);
+    EXPECT_EQ(published.value("Q", 0.0), printed.Q);
+    // data/ lists the rows in the same order, Fig. 4 last.
+    const foldlab::PublishedResult& observed = data.rows[i].observed;
+    EXPECT_EQ(observed.n, printed.n);
+    EXPECT_EQ(observed.z_max_mm, printed.z_max_mm);
+    EXPECT_EQ(observed.Q.value_or(0.0), printed.Q);
+  }
+}
+
+// `foldlab compare`'s "Paper accuracy by table" and its JSON twin: per table and method, the rows
+// whose n is the paper's, those within one of it, and the median |z_max / printed z_max - 1|,
+// counted here again from the model's values and the paper's printed ones.
+TEST_F(PaperAccuracy, CompareReportsEachTableAgainstThePapersPrintedNumbers) {
+  std::vector<std::string> args = {"compare"};
+  for (const PrintedRow& printed : kPrinted) {
+    args.insert(args.end(),
+                {"--preset", (kPresetsDir / (std::string(printed.preset) + ".json")).string()});
+  }
+  const RunResult text = run(args);
+  ASSERT_EQ(text.exit_status, 0) << text.err;
+  args.push_back("--json");
+  const json out = foldlab::testing::json_output(run(args));
+  const json& rows = out.at("rows");
+  ASSERT_EQ(rows.size(), std::size(kPrinted)) << out.dump(2);
+
+  struct Expected {
+    std::string table;
+    int rows = 0;
+    int n_exact[2] = {0, 0};
+    int n_within_one[2] = {0, 0};
+    std::vector<double> z_errors[2];
+  };
+  std::vector<Expected> expected;  // in the order the rows first name a table
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    const PrintedRow& printed = kPrinted[i];
+    auto table = std::find_if(expected.begin(), expected.end(),
+                              [&](const Expected& e) { return e.table == printed.table; });
+    if (table == expected.end()) {
+      expected.emplace_back();
+      expected.back().table = printed.table;
+      table = expected.end() - 1;
+    }
+    ++table->rows;
+    for (int m = 0; m < 2; ++m) {
+      const json& model = rows[i].at(m == 0 ? "paper" : "exact");
+      const int n = model.at("n").get<int>();
+      table->n_exact[m] += n == printed.n;
+      table->n_within_one[m] += std::abs(n - printed.n) <= 1;
+      table->z_errors[m].push_back(
+          std::abs(model.at("z_max_mm").get<double>() / printed.z_max_mm - 1.0));
+    }
+  }
+  const auto median = [](std::vector<double> v) {
+    std::sort(v.begin(), v.end());
+    const std::size_t mid = v.size() / 2;
+    return v.size() % 2 == 1 ? v[mid] : 0.5 * (v[mid - 1] + v[mid]);
+  };
+
+  const json& report = out.at("accuracy_by_table");
+  ASSERT_EQ(expected.size(), 3u);  // Table 1, Table 2 and Fig. 4
+  ASSERT_EQ(report.size(), expected.size()) << report.dump(2);
+  const std::size_t section = text.out.find("\nPaper accuracy by table:\n");
+  ASSERT_NE(section, std::string::npos) << text.out;
+  const std::string printed_section = text.out.substr(section);
+  std::printf("%s", printed_section.c_str());  // the report, in the test's log
+  for (std::size_t t = 0; t < expected.size(); ++t) {
+    const Expected& e = expected[t];
+    SCOPED_TRACE(e.table);
+    EXPECT_EQ(report[t].at("table"), e.table);
+    EXPECT_EQ(report[t].at("rows"), e.rows);
+    std::string line = "| " + e.table + " | " + std::to_string(e.rows);
+    for (int m = 0; m < 2; ++m) {
+      const json& got = report[t].at(m == 0 ? "paper" : "exact");
+      EXPECT_EQ(got.at("rows_with_n"), e.rows);
+      EXPECT_EQ(got.at("n_exact"), e.n_exact[m]);
+      EXPECT_EQ(got.at("n_within_one"), e.n_within_one[m]);
+      const double z = median(e.z_errors[m]);
+      EXPECT_NEAR(got.at("median_abs_z_error").get<double>(), z, 1e-12);
+      char cells[96];
+      std::snprintf(cells, sizeof cells, " | %d/%d | %d/%d | %.1f %%", e.n_exact[m], e.rows,
+                    e.n_within_one[m], e.rows, 100.0 * z);
+      line += cells;
+    }
+    line += " |\n";
+    EXPECT_TRUE(contains(printed_section, line)) << line << printed_section;
+  }
+  // The report shows what the model misses: Table 1's h = 2350 mm row gets n = 14 for the
+  // printed 8, so Table 1 cannot be within one everywhere.
+  ASSERT_EQ(report[0].at("table"), "Table 1");
+  EXPECT_LT(report[0].at("paper").at("n_within_one").get<int>(), 3) << report.dump(2);
+}
+
+// A preset of the user's own with published results is a table of its own in the report.
+TEST_F(PaperAccuracy, APresetNamedWithoutACommaIsAGroupOfItsOwn) {
+  json preset = json::parse(read_file(kH900));
+  preset["name"] = "My cloth";
+  preset["published"] = {{"n", 4}, {"z_max_mm", 50.0}};
+  const fs::path path = dir_ / "mine.json";
+  std::ofstream(path) << preset.dump(2);
+  const json out = foldlab::testing::json_output(
+      run({"compare", "--json", "--preset", kH900, "--preset", path.string()}));
+  const json& report = out.at("accuracy_by_table");
+  ASSERT_EQ(report.size(), 2u) << out.dump(2);
+  EXPECT_EQ(report[0].at("table"), "Table 1");
+  EXPECT_EQ(report[1].at("table"), "My cloth");
+  // Its model n is 5 (Table 1's h = 900 mm row): one more than the 4 published here.
+  EXPECT_EQ(report[1].at("exact").at("n_exact"), 0);
+  EXPECT_EQ(report[1].at("exact").at("n_within_one"), 1);
+  EXPECT_EQ(report[1].at("exact").at("rows_with_Q"), 0);
+  EXPECT_TRUE(report[1].at("exact").at("median_abs_Q_error").is_null());
+}
+
+}  // namespace

@@ -1,10 +1,14 @@
 // Equations 7-10 against closed forms, published constants and an independent quadrature.
 #include <cmath>
+#include <filesystem>
 #include <numbers>
+#include <string>
 
 #include <gtest/gtest.h>
 
+#include "core/io/preset.hpp"
 #include "core/model/equations.hpp"
+#include "core/model/solver.hpp"
 
 namespace foldlab {
 namespace {
@@ -154,13 +158,34 @@ TEST(Eq7, NoRootAtOrAboveOne) {
   EXPECT_DOUBLE_EQ(*wrinkle_ratio_from_stress_ratio(0.0), 1.0);
 }
 
-TEST(Eq7, StressRatioByHand) {
-  // s = K E t³ / (w h l²) for Table 1, h = 1400: 29.56 * 165 * 0.25³ / (1.5e-6 * 1400 * 1300²).
-  const double by_hand = 29.56 * 165.0 * 0.015625 / (1.5e-6 * 1400.0 * 1.69e6);
-  Parameters p;
-  p.fabric = {.thickness_mm = 0.25, .youngs_modulus_MPa = 165.0, .weight_N_per_mm2 = 1.5e-6};
-  p.hanging = {.height_mm = 1400.0, .length_mm = 1400.0, .support_displacement_mm = 100.0};
-  EXPECT_NEAR(stress_ratio(p, 29.56), by_hand, 1e-15);
+// Eq. 7 as the paper writes it, sigma_cr = c E t² / (l² (1 - nu²)) and s = sigma_cr t / (w h),
+// evaluated here in SI units (Pa, m, N/m²) from c and nu, against the library's one formula in mm
+// and MPa from K = c / (1 - nu²): a slipped unit or power on either side shows. Table 1's
+// h = 1400 mm row (c = 26.9, nu = 0.3, l = L - d = 1300 mm), worked on paper: s = 0.02147.
+TEST(Eq7, StressRatioAgreesWithThePapersCriticalStressInSIUnits) {
+  const double c = 26.9;
+  const double nu = 0.3;
+  const double E_Pa = 165e6;
+  const double t_m = 0.25e-3;
+  const double l_m = 1.3;
+  const double w_N_per_m2 = 1.5;  // 1.5e-6 N/mm²
+  const double h_m = 1.4;
+  const double sigma_cr_Pa = c * E_Pa * t_m * t_m / (l_m * l_m * (1.0 - nu * nu));
+  const double s_si = sigma_cr_Pa * t_m / (w_N_per_m2 * h_m);
+  EXPECT_NEAR(s_si, 0.02147, 5e-6);
+  const Parameters p =
+      load_preset(std::filesystem::path(FOLDLAB_PRESETS_DIR) / "paper-table1-h1400.json")
+          .parameters;
+  EXPECT_NEAR(stress_ratio(p, c / (1.0 - nu * nu)), s_si, 1e-12 * s_si);
+
+  // The preset of that row solves with this s, and its Q7 makes eq. 7's left-hand side,
+  // w h (Q - 1)² / (t Q (Q + 1)), the critical stress in Pa.
+  const Solution solution = solve(p);
+  EXPECT_NEAR(solution.stress_ratio, s_si, 1e-12 * s_si);
+  ASSERT_TRUE(solution.Q7.has_value());
+  const double Q = *solution.Q7;
+  EXPECT_NEAR(w_N_per_m2 * h_m * (Q - 1.0) * (Q - 1.0) / (t_m * Q * (Q + 1.0)), sigma_cr_Pa,
+              1e-10 * sigma_cr_Pa);
 }
 
 TEST(Eq9, FibreLengthOfOneFoldIsTheHypotenuse) {
@@ -202,7 +227,11 @@ long double direct_fibre_length(long double a0, long double Q, int n, long doubl
 }
 
 TEST(Eq9, FastSumsMatchTermByTermSummation) {
-  int cases = 0;
+  // The grid reaches both ends of eq. 9: fibres that are almost all drop (a_0 - a_n, z small
+  // against the steps) and fibres that are almost all zig-zag (2 n z, the steps small against
+  // z), where the fast paths take over; each end is counted by what the reference sum gives.
+  int drop_dominated = 0;
+  int zigzag_dominated = 0;
   for (int n : {1, 7, 64, 65, 100, 700, 5000, 100000, 1000000}) {
     for (double ratio : {1.5, 6.0, 101.0, 1e4}) {  // a_0 / a_n
       for (double z : {0.0, 1e-3, 1.0, 50.0, 1000.0}) {
@@ -212,11 +241,16 @@ TEST(Eq9, FastSumsMatchTermByTermSummation) {
         EXPECT_NEAR(fibre_length(a0, Q, n, z), static_cast<double>(reference),
                     2e-14 * static_cast<double>(reference))
             << "n = " << n << ", a0/an = " << ratio << ", z = " << z;
-        ++cases;
+        const double drop = a0 - a0 / ratio;
+        const double zigzag = 2.0 * n * z;
+        drop_dominated += std::abs(static_cast<double>(reference) / drop - 1.0) < 1e-3;
+        zigzag_dominated +=
+            zigzag > 0.0 && std::abs(static_cast<double>(reference) / zigzag - 1.0) < 1e-3;
       }
     }
   }
-  EXPECT_EQ(cases, 9 * 4 * 5);
+  EXPECT_GE(drop_dominated, 10);
+  EXPECT_GE(zigzag_dominated, 10);
 }
 
 TEST(Eq10, FloorAndNearest) {
@@ -228,22 +262,73 @@ TEST(Eq10, FloorAndNearest) {
 }
 
 TEST(Eq10, IntegerBoundaryIsNotLostToRounding) {
-  // log(Q^n)/log Q lands an ulp below n for some Q, n; floor must still give n.
-  int exact_hits = 0;
+  // log(Q^n)/log Q lands below n for some Q, n; floor must still give n.
+  int below_n = 0;  // cases where a plain floor would lose a fold
   for (int n = 1; n <= 60; ++n) {
     for (double Q : {1.1, 1.29, 1.31, 1.7, 3.0}) {
       const double ratio = std::pow(Q, n);
-      exact_hits += wrinkle_count(ratio, Q, false) == n;
+      EXPECT_EQ(wrinkle_count(ratio, Q, false), n) << "Q = " << Q;
+      below_n += std::log(ratio) / std::log(Q) < n;
     }
   }
-  EXPECT_EQ(exact_hits, 60 * 5);
+  EXPECT_GT(below_n, 0) << "no case where the guard is needed: the test would not see it go";
 }
 
-TEST(FoldAmplitudes, GeometricProgression) {
-  std::vector<double> a(8);
-  fold_amplitudes(1414.0, 1.25, 7, a);
-  for (int i = 0; i <= 7; ++i) {
-    EXPECT_NEAR(a[i], 1414.0 / std::pow(1.25, i), 1e-10);
+// Eq. 8 over one span by the trapezoid rule on its whole period in long double: the length of the
+// upper edge y = a_n cos(pi x/l), z = z_max cos(pi x/l), written here and not in the library.
+long double upper_edge_length(long double a_n, long double z_max, long double span) {
+  constexpr int kPoints = 2048;
+  const long double k2 = kPiL * kPiL * (a_n * a_n + z_max * z_max) / (span * span);  // (pi A/l)²
+  long double sum = 0.0L;
+  for (int j = 0; j < kPoints; ++j) {
+    const long double s = std::sin(kPiL * j / kPoints);
+    sum += std::sqrt(1.0L + k2 * s * s);
+  }
+  return span * sum / kPoints;
+}
+
+// What the user reads off a solution: the fold amplitudes start at a_0 = 1.01 h and fall by the
+// reported Q from one line to the next; with the alternating +-z_max they make a vertical fibre
+// of length h (eq. 9) and an upper edge of length L (eq. 8); and n is eq. 10's count for them
+// with Q7, the root of eq. 7 (the exact method's fixed point). Summed and integrated here, in
+// long double, from the solution's numbers only.
+TEST(FoldAmplitudes, FallByTheReportedRatioAndMakeTheFibreAndTheEdge) {
+  for (const char* name : {"paper-table1-h900", "paper-table1-h1400", "paper-table2-w33",
+                           "paper-table2-w54", "default"}) {
+    for (const Method method : {Method::exact, Method::paper}) {
+      Parameters p =
+          load_preset(std::filesystem::path(FOLDLAB_PRESETS_DIR) / (std::string(name) + ".json"))
+              .parameters;
+      p.model.method = method;
+      const Solution s = solve(p);
+      SCOPED_TRACE(std::string(name) + " " + std::string(to_string(method)));
+      ASSERT_EQ(s.regime, Regime::wrinkled);
+      ASSERT_EQ(s.a_mm.size(), static_cast<std::size_t>(s.n) + 1);
+      const double h = p.hanging.height_mm;
+      EXPECT_NEAR(s.a_mm.front(), 1.01 * h, 1e-9 * h);
+      long double fibre = 0.0L;
+      for (std::size_t i = 1; i < s.a_mm.size(); ++i) {
+        EXPECT_NEAR(s.a_mm[i - 1] / s.a_mm[i], s.Q, 1e-12 * s.Q) << "line " << i;
+        const long double drop = static_cast<long double>(s.a_mm[i - 1]) - s.a_mm[i];
+        fibre += std::sqrt(drop * drop + 4.0L * s.z_max_mm * s.z_max_mm);
+      }
+      EXPECT_NEAR(static_cast<double>(fibre), h, 1e-10 * h);
+      const double L = p.hanging.length_mm;
+      const double span = L - p.hanging.support_displacement_mm;  // the presets' l = L - d
+      ASSERT_EQ(p.model.span_rule, SpanRule::L_minus_d);
+      const double edge = static_cast<double>(upper_edge_length(s.a_mm.back(), s.z_max_mm, span));
+      if (method == Method::exact) {
+        EXPECT_NEAR(edge, L, 1e-10 * L);
+        ASSERT_TRUE(s.Q7.has_value());
+        const double count = std::log(s.a_mm.front() / s.a_mm.back()) / std::log(*s.Q7);
+        EXPECT_EQ(s.n, p.model.int_rounding == IntRounding::nearest
+                           ? std::lround(count)
+                           : static_cast<long>(std::floor(count)));
+      } else {
+        // The paper's iteration stops once L' is within its tolerance (5 %) by Simpson's rule.
+        EXPECT_NEAR(edge, L, (p.model.length_tolerance + 1e-3) * L);
+      }
+    }
   }
 }
 

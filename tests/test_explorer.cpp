@@ -1384,10 +1384,45 @@ TEST(Contrast, EveryThemedColourReadsOnWhatItIsDrawnOn) {
   EXPECT_NEAR(contrast_ratio(ImVec4(0.6f, 0.6f, 0.6f, 1.0f), window_background(true)), 2.49, 0.01);
 }
 
-// The handle is narrow, so that it covers at most a part of one character of the value.
-TEST(SliderHandle, IsNarrowerThanACharacter) {
-  for (const bool light : {false, true}) {
-    EXPECT_LE(theme_style(light).GrabMinSize, 4.0f);
+// The handle is narrow, so that it covers at most a part of one character of the value: as drawn,
+// w's handle (the fill in the handle's colour inside the slider) is narrower than the narrowest
+// digit of the value drawn over it, in both themes and at 150 %.
+TEST_F(ExplorerTest, ASlidersHandleIsNarrowerThanADigitOfItsValue) {
+  for (const char* scale : {"100", "150"}) {
+    for (const char* theme : {"dark", "light"}) {
+      SCOPED_TRACE(std::string(theme) + " theme at " + scale + " %");
+      ASSERT_EQ(explorer_->set_view("scale", scale), std::nullopt);
+      ASSERT_EQ(explorer_->set_view("theme", theme), std::nullopt);
+      frame();
+      frame();
+      const SliderPlace place = explorer_->parameters_panel().slider_places().at("w");
+      const auto inside = [&](ImVec2 at) {
+        return at.x >= place.min.x && at.x <= place.max.x && at.y >= place.min.y &&
+               at.y <= place.max.y;
+      };
+      const ImU32 handle_rgb = ImGui::GetColorU32(ImGuiCol_SliderGrab) & ~IM_COL32_A_MASK;
+      float left = 1e9f;
+      float right = -1e9f;
+      const ImDrawData& data = *ImGui::GetDrawData();
+      for (int l = 0; l < data.CmdListsCount; ++l) {
+        for (const ImDrawVert& v : data.CmdLists[l]->VtxBuffer) {
+          if (inside(v.pos) && (v.col & ~IM_COL32_A_MASK) == handle_rgb) {
+            left = std::min(left, v.pos.x);
+            right = std::max(right, v.pos.x);
+          }
+        }
+      }
+      float narrowest_digit = 1e9f;
+      for (std::size_t i = 0; i < last_text_.size(); ++i) {
+        if (std::isdigit(static_cast<unsigned char>(last_text_[i])) && inside(last_positions_[i])) {
+          narrowest_digit =
+              std::min(narrowest_digit, ImGui::GetFont()->FindGlyph(last_text_[i])->AdvanceX);
+        }
+      }
+      ASSERT_LT(left, right) << "no handle drawn in w's slider";
+      ASSERT_LT(narrowest_digit, 1e9f) << "no value drawn in w's slider";
+      EXPECT_LT(right - left, narrowest_digit);
+    }
   }
 }
 
@@ -3165,9 +3200,84 @@ TEST_F(ExplorerTest, BIsRestoredWithTheSession) {
   EXPECT_FALSE(document().compare().pinned());
 }
 
-TEST(Contrast, MenusAndListsAreOpaque) {
-  for (const bool light : {false, true}) {
-    EXPECT_EQ(theme_style(light).Colors[ImGuiCol_PopupBg].w, 1.0f) << (light ? "light" : "dark");
+// The colour that the last frame's untextured fills give the point `at`, blended in drawing
+// order over `under` (what the renderer shows beneath ImGui). Text and other textured triangles
+// are left out: the question is what the fills let through.
+ImVec4 composited_fill(ImVec2 at, ImVec4 under) {
+  const ImDrawData& data = *ImGui::GetDrawData();
+  const ImVec2 white = ImGui::GetIO().Fonts->TexUvWhitePixel;
+  ImVec4 out = under;
+  for (int l = 0; l < data.CmdListsCount; ++l) {
+    const ImDrawList& list = *data.CmdLists[l];
+    for (const ImDrawCmd& cmd : list.CmdBuffer) {
+      if (cmd.UserCallback != nullptr || at.x < cmd.ClipRect.x || at.y < cmd.ClipRect.y ||
+          at.x >= cmd.ClipRect.z || at.y >= cmd.ClipRect.w) {
+        continue;
+      }
+      for (unsigned k = 0; k + 2 < cmd.ElemCount; k += 3) {
+        const ImDrawVert* v[3];
+        bool textured = false;
+        for (unsigned j = 0; j < 3; ++j) {
+          v[j] = &list.VtxBuffer[static_cast<int>(
+              cmd.VtxOffset + list.IdxBuffer[static_cast<int>(cmd.IdxOffset + k + j)])];
+          textured = textured || v[j]->uv.x != white.x || v[j]->uv.y != white.y;
+        }
+        // Barycentric coordinates of `at`; outside the triangle when any is negative.
+        const auto cross = [](ImVec2 a, ImVec2 b, ImVec2 c) {
+          return (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
+        };
+        const float area = cross(v[0]->pos, v[1]->pos, v[2]->pos);
+        if (textured || area == 0.0f) {
+          continue;
+        }
+        const float b0 = cross(v[1]->pos, v[2]->pos, at) / area;
+        const float b1 = cross(v[2]->pos, v[0]->pos, at) / area;
+        const float b2 = 1.0f - b0 - b1;
+        if (b0 < 0.0f || b1 < 0.0f || b2 < 0.0f) {
+          continue;
+        }
+        ImVec4 colour(0, 0, 0, 0);
+        for (unsigned j = 0; j < 3; ++j) {
+          const ImVec4 c = ImGui::ColorConvertU32ToFloat4(v[j]->col);
+          const float b = j == 0 ? b0 : j == 1 ? b1 : b2;
+          colour = ImVec4(colour.x + b * c.x, colour.y + b * c.y, colour.z + b * c.z,
+                          colour.w + b * c.w);
+        }
+        out = ImVec4(colour.x * colour.w + out.x * (1.0f - colour.w),
+                     colour.y * colour.w + out.y * (1.0f - colour.w),
+                     colour.z * colour.w + out.z * (1.0f - colour.w), 1.0f);
+      }
+    }
+  }
+  return out;
+}
+
+// Menus hide what is under them: panel text showing through a menu reads as one of its items.
+// The View menu, opened by a click, is drawn over the panels; a point of its background comes out
+// the same colour whether black or white is under the whole frame, in both themes.
+TEST_F(ExplorerTest, AnOpenMenuLetsNothingUnderItShowThrough) {
+  for (const char* theme : {"dark", "light"}) {
+    SCOPED_TRACE(std::string(theme) + " theme");
+    ASSERT_EQ(explorer_->set_view("theme", theme), std::nullopt);
+    frame();
+    click("View");
+    const ImGuiWindow* menu = nullptr;
+    for (const ImGuiWindow* window : ImGui::GetCurrentContext()->Windows) {
+      if (window->Active && (window->Flags & ImGuiWindowFlags_Popup) != 0) {
+        menu = window;
+      }
+    }
+    ASSERT_NE(menu, nullptr) << "the View menu did not open";
+    // Beside its items' text, halfway down, and inside the panels' area below the menu bar.
+    const ImVec2 at(menu->Pos.x + menu->Size.x - 3.0f, menu->Pos.y + 0.5f * menu->Size.y);
+    const ImVec4 over_black = composited_fill(at, ImVec4(0, 0, 0, 1));
+    const ImVec4 over_white = composited_fill(at, ImVec4(1, 1, 1, 1));
+    for (const auto& [black, white] :
+         {std::pair{over_black.x, over_white.x}, std::pair{over_black.y, over_white.y},
+          std::pair{over_black.z, over_white.z}}) {
+      EXPECT_NEAR(black, white, 1.0f / 255.0f);
+    }
+    press(kEscape);
   }
 }
 

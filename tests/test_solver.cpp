@@ -1,5 +1,6 @@
-// Both methods against the paper's Tables 1-2 and Fig. 4, the exact method's residuals, and every
-// regime the solver reports instead of an error.
+// Both methods on the paper's Tables 1-2 and Fig. 4 (a regression pin; the accuracy against the
+// paper is checked in test_cli.cpp), the exact method's residuals, and every regime the solver
+// reports instead of an error.
 #include <cmath>
 #include <filesystem>
 #include <ostream>
@@ -23,57 +24,51 @@ Parameters preset_parameters(const std::string& name, Method method) {
   return p;
 }
 
-// One row of docs/calibration.md's comparison table: the paper's printed values (from the preset
-// file) and how far each method lands from them with the calibrated defaults, as measured;
-// tolerances are the measured errors rounded up to the next 0.5 %.
-struct PublishedRow {
+// A regression pin, not a claim of accuracy: the model's own n, z_max and Q on the paper's
+// presets as they solve today (`foldlab compare --json`), held to 1e-4 so that any change to what
+// these presets solve to shows up here and is looked at. Some of these values are far from the
+// paper (Table 1, h = 2350 mm: n = 14 for the printed 8); how far, table by table, is the paper
+// accuracy report that `foldlab compare` prints and test_cli.cpp checks against the paper's own
+// numbers (PaperAccuracy).
+struct PinnedRow {
   const char* preset;
   Method method;
-  int n_minus_paper;   // model n - printed n
-  double z_tolerance;  // bound on |z_max / printed z_max - 1|
-  double q_tolerance;  // bound on |Q / printed Q - 1|; < 0 when the paper prints no usable Q
+  int n;
+  double z_max_mm;
+  double Q;
 };
 
-void PrintTo(const PublishedRow& row, std::ostream* out) {
+void PrintTo(const PinnedRow& row, std::ostream* out) {
   *out << row.preset << " (" << to_string(row.method) << ")";
 }
 
-class AgainstThePaper : public ::testing::TestWithParam<PublishedRow> {};
+class RegressionPinOfThePaperPresets : public ::testing::TestWithParam<PinnedRow> {};
 
-TEST_P(AgainstThePaper, WithinTheMeasuredDistance) {
-  const PublishedRow row = GetParam();
-  const Preset preset =
-      load_preset(std::filesystem::path(FOLDLAB_PRESETS_DIR) / (std::string(row.preset) + ".json"));
-  Parameters p = preset.parameters;
-  p.model.method = row.method;
-  const Solution s = solve(p);
+TEST_P(RegressionPinOfThePaperPresets, SolveAsTheyDidWhenPinned) {
+  const PinnedRow row = GetParam();
+  const Solution s = solve(preset_parameters(row.preset, row.method));
   ASSERT_EQ(s.regime, Regime::wrinkled);
-  ASSERT_TRUE(preset.published.n && preset.published.z_max_mm);
-  EXPECT_EQ(s.n - *preset.published.n, row.n_minus_paper);
-  EXPECT_LE(std::abs(s.z_max_mm / *preset.published.z_max_mm - 1.0), row.z_tolerance)
-      << "z_max = " << s.z_max_mm;
-  if (row.q_tolerance >= 0.0) {
-    ASSERT_TRUE(preset.published.Q);
-    EXPECT_LE(std::abs(s.Q / *preset.published.Q - 1.0), row.q_tolerance) << "Q = " << s.Q;
-  }
+  EXPECT_EQ(s.n, row.n);
+  EXPECT_NEAR(s.z_max_mm, row.z_max_mm, 1e-4 * row.z_max_mm);
+  EXPECT_NEAR(s.Q, row.Q, 1e-4 * row.Q);
 }
 
 INSTANTIATE_TEST_SUITE_P(
-    TablesAndFig4, AgainstThePaper,
-    ::testing::Values(PublishedRow{"paper-table1-h900", Method::paper, 0, 0.070, 0.005},
-                      PublishedRow{"paper-table1-h900", Method::exact, 0, 0.050, 0.010},
-                      PublishedRow{"paper-table1-h1400", Method::paper, 1, 0.100, 0.035},
-                      PublishedRow{"paper-table1-h1400", Method::exact, 1, 0.110, 0.030},
-                      PublishedRow{"paper-table1-h2350", Method::paper, 6, 0.510, 0.125},
-                      PublishedRow{"paper-table1-h2350", Method::exact, 6, 0.510, 0.120},
-                      PublishedRow{"paper-table2-w10", Method::paper, -1, 0.745, 0.145},
-                      PublishedRow{"paper-table2-w10", Method::exact, -1, 0.580, 0.205},
-                      PublishedRow{"paper-table2-w33", Method::paper, 0, 0.050, 0.025},
-                      PublishedRow{"paper-table2-w33", Method::exact, 0, 0.025, 0.020},
-                      PublishedRow{"paper-table2-w54", Method::paper, 0, 0.065, 0.030},
-                      PublishedRow{"paper-table2-w54", Method::exact, 0, 0.080, 0.025},
-                      PublishedRow{"paper-fig4", Method::paper, 5, 0.450, -1.0},
-                      PublishedRow{"paper-fig4", Method::exact, 5, 0.455, -1.0}),
+    TablesAndFig4, RegressionPinOfThePaperPresets,
+    ::testing::Values(PinnedRow{"paper-table1-h900", Method::paper, 5, 57.4981, 1.30959},
+                      PinnedRow{"paper-table1-h900", Method::exact, 5, 56.6035, 1.31737},
+                      PinnedRow{"paper-table1-h1400", Method::paper, 8, 43.4083, 1.25082},
+                      PinnedRow{"paper-table1-h1400", Method::exact, 8, 42.9630, 1.25346},
+                      PinnedRow{"paper-table1-h2350", Method::paper, 14, 29.6246, 1.17925},
+                      PinnedRow{"paper-table1-h2350", Method::exact, 14, 29.4622, 1.17991},
+                      PinnedRow{"paper-table2-w10", Method::paper, 3, 97.5589, 2.03456},
+                      PinnedRow{"paper-table2-w10", Method::exact, 3, 88.3185, 2.13828},
+                      PinnedRow{"paper-table2-w33", Method::paper, 6, 48.2900, 1.42638},
+                      PinnedRow{"paper-table2-w33", Method::exact, 6, 47.0752, 1.43545},
+                      PinnedRow{"paper-table2-w54", Method::paper, 7, 41.3548, 1.35582},
+                      PinnedRow{"paper-table2-w54", Method::exact, 7, 40.5864, 1.36125},
+                      PinnedRow{"paper-fig4", Method::paper, 9, 38.5751, 1.22010},
+                      PinnedRow{"paper-fig4", Method::exact, 9, 38.2620, 1.22191}),
     // Not `info`: INSTANTIATE_TEST_SUITE_P wraps this lambda in one whose parameter has that name.
     [](const auto& row_info) {
       std::string name =

@@ -1,5 +1,6 @@
 #include "app/cli/commands.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -23,6 +24,7 @@
 #include "core/io/scene_report.hpp"
 #include "core/model/settings.hpp"
 #include "core/model/solver.hpp"
+#include "core/model/text_format.hpp"
 
 namespace foldlab::cli {
 
@@ -168,6 +170,66 @@ Command add_export_command(CLI::App& app) {
   };
 }
 
+namespace {
+
+// How close the model gets to the published results, one group of rows at a time: the paper's
+// tables (and Fig. 4) are told apart by the part of a preset's name before its first comma
+// ("Table 1, h = 900 mm" is in "Table 1"); a name without a comma is a group of its own.
+struct PublishedGroupAccuracy {
+  std::string group;
+  int rows = 0;
+  ComparisonSummary method[2];  // [paper, exact]
+};
+
+std::string published_group(const std::string& preset_name) {
+  return preset_name.substr(0, preset_name.find(','));
+}
+
+std::vector<PublishedGroupAccuracy> accuracy_by_group(
+    const std::vector<Preset>& presets, const std::vector<std::vector<PublishedComparison>>& rows) {
+  std::vector<std::string> groups;  // in the order the presets first name them
+  for (const Preset& preset : presets) {
+    const std::string group = published_group(preset.name);
+    if (std::find(groups.begin(), groups.end(), group) == groups.end()) {
+      groups.push_back(group);
+    }
+  }
+  std::vector<PublishedGroupAccuracy> out;
+  for (const std::string& group : groups) {
+    PublishedGroupAccuracy accuracy;
+    accuracy.group = group;
+    std::vector<PublishedComparison> in_group[2];
+    for (std::size_t i = 0; i < presets.size(); ++i) {
+      if (published_group(presets[i].name) == group) {
+        ++accuracy.rows;
+        for (std::size_t m = 0; m < 2; ++m) {
+          in_group[m].push_back(rows[m][i]);
+        }
+      }
+    }
+    for (std::size_t m = 0; m < 2; ++m) {
+      accuracy.method[m] = summarize(in_group[m]);
+    }
+    out.push_back(std::move(accuracy));
+  }
+  return out;
+}
+
+nlohmann::json accuracy_to_json(const ComparisonSummary& s) {
+  const auto error = [](int count, double median) {
+    return count == 0 ? nlohmann::json() : nlohmann::json(median);
+  };
+  return {{"rows_with_n", s.rows_with_n},
+          {"n_exact", s.n_exact},
+          {"n_within_one", s.n_within_one},
+          {"rows_with_z", s.rows_with_z},
+          {"median_abs_z_error", error(s.rows_with_z, s.median_abs_z_error)},
+          {"rows_with_Q", s.rows_with_Q},
+          {"median_abs_Q_error", error(s.rows_with_Q, s.median_abs_Q_error)}};
+}
+
+}  // namespace
+
 Command add_compare_command(CLI::App& app) {
   struct Options {
     std::vector<std::string> presets;
@@ -216,8 +278,10 @@ Command add_compare_command(CLI::App& app) {
       if (presets.empty()) {
         throw InputError("none of the presets carries published results");
       }
+      const std::vector<PublishedGroupAccuracy> accuracy = accuracy_by_group(presets, rows);
       if (options->json) {
-        nlohmann::json out = nlohmann::json::array();
+        nlohmann::json out = {{"rows", nlohmann::json::array()},
+                              {"accuracy_by_table", nlohmann::json::array()}};
         for (std::size_t i = 0; i < presets.size(); ++i) {
           nlohmann::json row = {{"name", presets[i].name}};
           for (int m = 0; m < 2; ++m) {
@@ -232,7 +296,13 @@ Command add_compare_command(CLI::App& app) {
               {"n", pub.n ? nlohmann::json(*pub.n) : nlohmann::json()},
               {"z_max_mm", pub.z_max_mm ? nlohmann::json(*pub.z_max_mm) : nlohmann::json()},
               {"Q", pub.Q ? nlohmann::json(*pub.Q) : nlohmann::json()}};
-          out.push_back(row);
+          out["rows"].push_back(row);
+        }
+        for (const PublishedGroupAccuracy& group : accuracy) {
+          out["accuracy_by_table"].push_back({{"table", group.group},
+                                              {"rows", group.rows},
+                                              {"paper", accuracy_to_json(group.method[0])},
+                                              {"exact", accuracy_to_json(group.method[1])}});
         }
         std::cout << out.dump(2) << "\n";
         return kExitOk;
@@ -277,6 +347,23 @@ Command add_compare_command(CLI::App& app) {
       for (int m = 0; m < 2; ++m) {
         const ComparisonSummary sum = summarize(rows[static_cast<std::size_t>(m)]);
         std::cout << (m == 0 ? "paper" : "exact") << " method: " << summary_text(sum) << "\n";
+      }
+      // How close the model gets to each of the paper's tables, as counted above: what the
+      // model is worth against the paper, not a tolerance that any test was fitted to.
+      std::cout << "\nPaper accuracy by table:\n\n"
+                   "| table | rows | paper method n exact | n within ±1 | median \\|z_max error\\| "
+                   "| exact method n exact | n within ±1 | median \\|z_max error\\| |\n"
+                   "|---|---|---|---|---|---|---|---|\n";
+      for (const PublishedGroupAccuracy& group : accuracy) {
+        std::cout << "| " << detail::markdown_cell(group.group) << " | " << group.rows;
+        for (const ComparisonSummary& s : group.method) {
+          std::cout << " | " << s.n_exact << "/" << s.rows_with_n << " | " << s.n_within_one << "/"
+                    << s.rows_with_n << " | "
+                    << (s.rows_with_z == 0
+                            ? std::string("–")
+                            : detail::printf_string("%.1f %%", 100.0 * s.median_abs_z_error));
+        }
+        std::cout << " |\n";
       }
       return kExitOk;
     });
