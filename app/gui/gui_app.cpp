@@ -431,6 +431,11 @@ int run_window(const GuiRunOptions& options) {
   auto* web = new WebRun{make_window_surface(surface_options), nullptr};
   web->run = std::make_unique<ExplorerRun>(*web->surface, options, preset, true, std::move(player));
   emscripten_set_main_loop_arg(web_frame, web, 0, false);
+  if (options.frames > 0 || !options.play_path.empty()) {
+    // A scripted run on timers rather than animation frames: as fast as it can, and driven by
+    // `chromium --headless --virtual-time-budget`, whose clock does not send animation frames.
+    emscripten_set_main_loop_timing(EM_TIMING_SETTIMEOUT, 0);
+  }
   return app::kExitOk;
 #else
   SurfaceOptions surface_options{options.width, options.height,

@@ -78,8 +78,10 @@ def main():
     text = html.unescape(match.group(1)) if match else ""
     if not text.strip():
         status = re.search(r'<div id="foldlab-status"[^>]*>(.*?)</div>', dom, re.S)
+        log = re.search(r'<pre id="foldlab-log">(.*?)</pre>', dom, re.S)
         print(f"{url}: no report after {seconds:.1f} s; the page says: "
-              f"{html.unescape(status.group(1)) if status else '(nothing)'}", file=sys.stderr)
+              f"{html.unescape(status.group(1)) if status else '(nothing)'}\n"
+              f"{html.unescape(log.group(1)) if log else ''}", file=sys.stderr)
         return 1
     result = json.loads(text)
     problems = []

@@ -5,8 +5,9 @@
 #pragma once
 
 #ifdef __EMSCRIPTEN__
-#include <GLES2/gl2ext.h>
 #include <GLES3/gl3.h>
+// The extensions' names after the core ones, whose types they use.
+#include <GLES2/gl2ext.h>
 #include <emscripten/html5_webgl.h>
 #else
 #include <epoxy/gl.h>
