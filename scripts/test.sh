@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # README command 2: install, build and run every test (CTest: unit tests, CLI end-to-end tests),
-# then the whole suite again built with AddressSanitizer + UndefinedBehaviorSanitizer in
-# build-asan (CMakePresets.json, preset asan-ubsan). Arguments go to both ctest runs.
+# then the browser build's tests (build-web), then the whole suite again built with
+# AddressSanitizer + UndefinedBehaviorSanitizer in build-asan (CMakePresets.json, preset
+# asan-ubsan). Arguments go to every ctest run.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/build.sh
@@ -18,6 +19,11 @@ if [ "$(id -u)" = 0 ] && [ $# -eq 0 ]; then
     echo "test.sh: the CLI suite as nobody is skipped: $(pwd) is not readable by nobody" >&2
   fi
 fi
+
+# The browser build (build-web, scripts/web.sh) and its tests: the core suite in WebAssembly under
+# node, the paper rows against the desktop program just built, and the page in headless Chromium.
+bash scripts/web.sh --native build/app/foldlab
+ctest --test-dir build-web --output-on-failure "$@"
 
 # The sanitizer pass builds what the tests run (the benchmark is left out of its default target)
 # at -O1, and leaves out the fuzz tests, which build their own sanitized fuzzer. The test preset

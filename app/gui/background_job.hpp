@@ -3,6 +3,11 @@
 // thread once the work has returned. The regime map, the calibration window and the photo's fit
 // all run through it, so that "busy", progress bars, cancel buttons and waking the sleeping frame
 // loop when work finishes mean the same everywhere.
+//
+// In a build without threads (the browser build: WebAssembly threads need a page served with
+// cross-origin isolation headers, which a plain static server or file host does not send) the
+// work runs to its end inside start(), on the UI thread: the job is finished when start()
+// returns, and everything else behaves as with a thread.
 #pragma once
 
 #include <atomic>
@@ -13,6 +18,12 @@
 #include <utility>
 
 namespace foldlab::gui {
+
+#if defined(__EMSCRIPTEN__) && !defined(__EMSCRIPTEN_PTHREADS__)
+inline constexpr bool kJobsHaveThreads = false;
+#else
+inline constexpr bool kJobsHaveThreads = true;
+#endif
 
 // What a job's work is given: where it reports how far it is, and whether it should stop.
 class JobToken {
@@ -52,7 +63,7 @@ class BackgroundJob {
     finished_ = false;
     result_.reset();
     error_ = nullptr;
-    thread_ = std::thread([this, work = std::move(work), on_done = std::move(on_done)]() mutable {
+    auto run = [this, work = std::move(work), on_done = std::move(on_done)]() mutable {
       try {
         result_.emplace(work(token_));
       } catch (...) {
@@ -62,15 +73,21 @@ class BackgroundJob {
       if (on_done) {
         on_done();
       }
-    });
+    };
+    started_ = true;
+    if constexpr (kJobsHaveThreads) {
+      thread_ = std::thread(std::move(run));
+    } else {
+      run();
+    }
   }
 
   // From start() until the work has returned.
-  bool running() const { return thread_.joinable() && !finished(); }
+  bool running() const { return started_ && !finished(); }
   // The work has returned and its result waits for take_result().
-  bool finished() const { return thread_.joinable() && finished_.load(std::memory_order_acquire); }
+  bool finished() const { return started_ && finished_.load(std::memory_order_acquire); }
   // running() or finished(): there is work whose outcome the owner has not seen yet.
-  bool pending() const { return thread_.joinable(); }
+  bool pending() const { return started_; }
   // The last fraction the work reported (0 at the start).
   double progress() const { return token_.progress_.load(std::memory_order_relaxed); }
   // Asks the work to stop; it still finishes (with what it has) and its result is taken as usual.
@@ -83,7 +100,7 @@ class BackgroundJob {
     if (!finished()) {
       return std::nullopt;
     }
-    thread_.join();
+    join();
     if (std::exception_ptr error = std::exchange(error_, nullptr)) {
       result_.reset();
       std::rethrow_exception(error);
@@ -93,9 +110,9 @@ class BackgroundJob {
 
   // Cancels the work, waits for it and drops its result.
   void stop() {
-    if (thread_.joinable()) {
+    if (started_) {
       cancel();
-      thread_.join();
+      join();
     }
     result_.reset();
     error_ = nullptr;
@@ -103,7 +120,15 @@ class BackgroundJob {
   }
 
  private:
-  std::thread thread_;
+  void join() {
+    if (thread_.joinable()) {
+      thread_.join();
+    }
+    started_ = false;
+  }
+
+  std::thread thread_;    // never started without threads
+  bool started_ = false;  // from start() until the result is taken or dropped
   JobToken token_;
   std::atomic<bool> finished_{false};
   std::optional<Result> result_;  // written by the job's thread before finished_

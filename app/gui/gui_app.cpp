@@ -11,6 +11,9 @@
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
+#ifdef __EMSCRIPTEN__
+#include <emscripten/emscripten.h>
+#endif
 #include <imgui.h>
 
 #include "app/common/presets_dir.hpp"
@@ -174,59 +177,42 @@ bool sleep_until_input(Surface& surface, double timeout_s) {
   }
 }
 
-// The frame loop, as plain as Dear ImGui's examples: poll, new frame, build, render, present;
-// with nothing to animate, it sleeps until an event instead of redrawing the same picture.
-void run_frames(Surface& surface, Renderer& renderer, Explorer& explorer, ScriptedRun& script,
-                FrameTimes& times, const GuiRunOptions& options, LayoutFile* layout) {
-  int frames_since_wake = 0;
-  for (int frame = 0; !explorer.quit_confirmed() && script.wants_frame(frame, explorer); ++frame) {
-    if (!surface.open() || close_requested != 0) {
-      close_requested = 0;
-      if (explorer.may_quit()) {
-        break;
-      }
-      surface.keep_open();  // the explorer asks first; its answer ends the loop or not
-    }
-    if (script.may_wait_for_input() && !explorer.animating() &&
-        frames_since_wake >= kFramesAfterInput) {
-      const bool timed_out =
-          sleep_until_input(surface, explorer.awaits_time() ? kTimedWakeup_s : kRestTimeout_s);
-      // A timeout brought no input: one frame for what is due, then sleep again.
-      frames_since_wake = timed_out ? kFramesAfterInput - 1 : 0;
-    }
-    ++frames_since_wake;
-    times.start();
-    surface.new_frame();
-    if (!script.play(explorer, surface)) {
-      break;
-    }
-    script.before_new_frame(explorer, frame);
-    explorer.prepare_frame();
-    renderer.new_frame();
-    ImGui::NewFrame();
-    explorer.frame();
-    ImGui::Render();
-    if (layout != nullptr) {
-      layout->save_when_asked();
-    }
-    surface.bind_framebuffer();
-    renderer.render_draw_data(surface.framebuffer_size());
-    take_screenshots(explorer, renderer, surface.framebuffer_size(), options.screenshot_path,
-                     script.is_last(frame));
-    if (const std::optional<std::string> path = script.take_play_screenshot()) {
-      // The script's paths are known only as it plays, and a photo or swatch may have been
-      // loaded by an earlier step: checked against every file the run has read, before writing.
-      std::vector<app::NamedPath> inputs = options.input_files;
-      for (const app::NamedPath& open : explorer.files_in_use()) {
-        inputs.push_back(open);
-      }
-      app::check_distinct_files({{"the --play script's screenshot step", *path}}, inputs);
-      write_png(path->c_str(), surface.framebuffer_size(),
-                renderer.read_pixels(surface.framebuffer_size()));
-    }
-    surface.present();
-    times.stop(surface);
+// One frame of the loop, as plain as Dear ImGui's examples: poll, new frame, build, render,
+// present. False when the script ended the run.
+bool draw_frame(Surface& surface, Renderer& renderer, Explorer& explorer, ScriptedRun& script,
+                FrameTimes& times, const GuiRunOptions& options, LayoutFile* layout, int frame) {
+  times.start();
+  surface.new_frame();
+  if (!script.play(explorer, surface)) {
+    return false;
   }
+  script.before_new_frame(explorer, frame);
+  explorer.prepare_frame();
+  renderer.new_frame();
+  ImGui::NewFrame();
+  explorer.frame();
+  ImGui::Render();
+  if (layout != nullptr) {
+    layout->save_when_asked();
+  }
+  surface.bind_framebuffer();
+  renderer.render_draw_data(surface.framebuffer_size());
+  take_screenshots(explorer, renderer, surface.framebuffer_size(), options.screenshot_path,
+                   script.is_last(frame));
+  if (const std::optional<std::string> path = script.take_play_screenshot()) {
+    // The script's paths are known only as it plays, and a photo or swatch may have been
+    // loaded by an earlier step: checked against every file the run has read, before writing.
+    std::vector<app::NamedPath> inputs = options.input_files;
+    for (const app::NamedPath& open : explorer.files_in_use()) {
+      inputs.push_back(open);
+    }
+    app::check_distinct_files({{"the --play script's screenshot step", *path}}, inputs);
+    write_png(path->c_str(), surface.framebuffer_size(),
+              renderer.read_pixels(surface.framebuffer_size()));
+  }
+  surface.present();
+  times.stop(surface);
+  return true;
 }
 
 // A script is checked before any window or context exists, so that a malformed one is reported
@@ -239,66 +225,197 @@ std::optional<InputPlayer> read_script(const GuiRunOptions& options) {
   return player;
 }
 
+// Everything a run of the explorer holds, from the first frame to the report: made once, then
+// driven one frame at a time, by a loop that may sleep (the desktop) or by the browser's
+// animation frames (the web build), which cannot block.
+class ExplorerRun {
+ public:
+  ExplorerRun(Surface& surface, const GuiRunOptions& options, const Preset& preset,
+              bool interactive, std::optional<InputPlayer> player)
+      : surface_(surface),
+        options_(options),
+        interactive_(interactive),
+        persist_(interactive && !options.fresh),
+        imgui_(surface),
+        renderer_(make_gl_renderer()) {
+    std::optional<AnimatedInput> animation;
+    if (!options.animate_key.empty()) {
+      animation.emplace(options.animate_key, preset.parameters);
+    }
+    std::string config_problem;
+    if (persist_) {
+      // A config folder that is a plain file or cannot be created costs the session, not the
+      // start.
+      std::error_code error;
+      std::filesystem::create_directories(config_dir(), error);
+      if (error) {
+        persist_ = false;
+        config_problem = "The config folder " + config_dir().string() + " cannot be used (" +
+                         error.message() +
+                         "); the session and window layout are not kept until what is there is "
+                         "moved away.";
+      }
+    }
+    const std::filesystem::path measurements = config_dir() / "measurements.csv";
+    ExplorerOptions explorer_options{app::find_presets_dir(),
+                                     user_presets_dir(),
+                                     persist_ ? config_dir() / "session.json" : "",
+                                     options.analysis_tab,
+                                     kDejaVuSans,
+                                     measurements,
+                                     std::filesystem::current_path()};
+    // A preset named on the command line wins over the restored session.
+    const bool restore =
+        persist_ && options.inputs.preset_path.empty() && options.inputs.assignments.empty();
+    explorer_.emplace(preset, options.inputs.preset_path, restore, explorer_options, *renderer_);
+    if (interactive) {
+      // A background job that finishes while the window sleeps wakes it to show its result (the
+      // regime map's last rows, a calibration's table). Thread-safe; the window outlives the
+      // explorer, whose jobs end with it.
+      explorer_->set_wake([] { glfwPostEmptyEvent(); });
+    }
+    if (!config_problem.empty()) {
+      explorer_->add_notice(config_problem);
+    }
+    if (persist_) {
+      layout_.emplace(config_dir() / "imgui.ini", *explorer_);
+    }
+    apply_view_settings(*explorer_, options.view_settings);
+
+    if (interactive) {
+      std::signal(SIGTERM, request_close);
+      std::signal(SIGINT, request_close);
+      std::signal(SIGHUP, request_close);
+    }
+    script_.emplace(options.frames, std::move(animation), std::move(player));
+  }
+
+  // A frame is due unless the user's window rests: nothing animating, no panel busy, and the
+  // frames after the last input drawn.
+  bool may_rest() const {
+    return script_->may_wait_for_input() && !explorer_->animating() &&
+           frames_since_wake_ >= kFramesAfterInput;
+  }
+  // Woken by input (true) or by a timeout (false), after a rest.
+  void woken(bool by_input) { frames_since_wake_ = by_input ? 0 : kFramesAfterInput - 1; }
+  // How long a rest may last before one frame for what is due.
+  double rest_timeout_s() const {
+    return explorer_->awaits_time() ? kTimedWakeup_s : kRestTimeout_s;
+  }
+
+  // One frame; false once the run is over (the script ended, the user closed the window).
+  bool frame() {
+    if (explorer_->quit_confirmed() || !script_->wants_frame(frame_, *explorer_)) {
+      return false;
+    }
+    if (!surface_.open() || close_requested != 0) {
+      close_requested = 0;
+      if (explorer_->may_quit()) {
+        return false;
+      }
+      surface_.keep_open();  // the explorer asks first; its answer ends the loop or not
+    }
+    ++frames_since_wake_;
+    if (!draw_frame(surface_, *renderer_, *explorer_, *script_, times_, options_,
+                    layout_ ? &*layout_ : nullptr, frame_)) {
+      return false;
+    }
+    ++frame_;
+    return true;
+  }
+
+  // After the last frame: the report when asked for, and the exit status.
+  int finish() {
+    times_.print_report(interactive_ ? "window" : "headless", options_.animate_key, *explorer_);
+    return script_->exit_status();
+  }
+
+ private:
+  Surface& surface_;
+  GuiRunOptions options_;
+  bool interactive_;
+  bool persist_;
+  ImGuiContextGuard imgui_;
+  std::unique_ptr<Renderer> renderer_;
+  std::optional<Explorer> explorer_;
+  std::optional<LayoutFile> layout_;  // goes before the explorer and ImGui: it saves as it goes
+  std::optional<ScriptedRun> script_;
+  FrameTimes times_{options_.report};
+  int frame_ = 0;
+  int frames_since_wake_ = 0;
+};
+
 int run(Surface& surface, const GuiRunOptions& options, const Preset& preset, bool interactive,
         std::optional<InputPlayer> player) {
-  std::optional<AnimatedInput> animation;
-  if (!options.animate_key.empty()) {
-    animation.emplace(options.animate_key, preset.parameters);
-  }
-  bool persist = interactive && !options.fresh;
-  std::string config_problem;
-  if (persist) {
-    // A config folder that is a plain file or cannot be created costs the session, not the start.
-    std::error_code error;
-    std::filesystem::create_directories(config_dir(), error);
-    if (error) {
-      persist = false;
-      config_problem = "The config folder " + config_dir().string() + " cannot be used (" +
-                       error.message() +
-                       "); the session and window layout are not kept until what is there is "
-                       "moved away.";
+  ExplorerRun run(surface, options, preset, interactive, std::move(player));
+  for (;;) {
+    if (run.may_rest()) {
+      // A timeout brought no input: one frame for what is due, then sleep again.
+      run.woken(!sleep_until_input(surface, run.rest_timeout_s()));
+    }
+    if (!run.frame()) {
+      break;
     }
   }
-  const std::filesystem::path measurements = config_dir() / "measurements.csv";
-  ExplorerOptions explorer_options{app::find_presets_dir(),
-                                   user_presets_dir(),
-                                   persist ? config_dir() / "session.json" : "",
-                                   options.analysis_tab,
-                                   kDejaVuSans,
-                                   measurements,
-                                   std::filesystem::current_path()};
-  ImGuiContextGuard imgui(surface);
-  const std::unique_ptr<Renderer> renderer = make_gl_renderer();
-  // A preset named on the command line wins over the restored session.
-  const bool restore =
-      persist && options.inputs.preset_path.empty() && options.inputs.assignments.empty();
-  Explorer explorer(preset, options.inputs.preset_path, restore, explorer_options, *renderer);
-  if (interactive) {
-    // A background job that finishes while the window sleeps wakes it to show its result (the
-    // regime map's last rows, a calibration's table). Thread-safe; the window outlives the
-    // explorer, whose jobs end with it.
-    explorer.set_wake([] { glfwPostEmptyEvent(); });
-  }
-  if (!config_problem.empty()) {
-    explorer.add_notice(config_problem);
-  }
-  std::optional<LayoutFile> layout;
-  if (persist) {
-    layout.emplace(config_dir() / "imgui.ini", explorer);
-  }
-  apply_view_settings(explorer, options.view_settings);
-
-  if (interactive) {
-    std::signal(SIGTERM, request_close);
-    std::signal(SIGINT, request_close);
-    std::signal(SIGHUP, request_close);
-  }
-  ScriptedRun script(options.frames, std::move(animation), std::move(player));
-  FrameTimes times(options.report);
-  run_frames(surface, *renderer, explorer, script, times, options, layout ? &*layout : nullptr);
-  times.print_report(interactive ? "window" : "headless", options.animate_key, explorer);
-  return script.exit_status();
+  return run.finish();
 }
+
+#ifdef __EMSCRIPTEN__
+// The browser build's loop: the page cannot block, so the browser calls web_frame at each
+// animation frame, and a resting explorer draws nothing until an input event (seen by listeners
+// on the page, which also see input meant for ImGui) or the rest's timeout.
+EM_JS(int, take_input_seen, (), {
+  if (!Module.foldlabInputListeners) {
+    Module.foldlabInputListeners = true;
+    [
+      'pointerdown', 'pointermove', 'pointerup', 'wheel', 'keydown', 'keyup', 'touchstart',
+      'touchmove', 'touchend', 'resize', 'focus', 'blur'
+    ]
+        .forEach(function(name) {
+          window.addEventListener(
+              name, function() { Module.foldlabInputSeen = true; }, true);
+        });
+  }
+  const seen = Module.foldlabInputSeen ? 1 : 0;
+  Module.foldlabInputSeen = false;
+  return seen;
+});
+
+// The page is told when the run ends (a played script, --frames), with the exit status.
+void tell_page_finished(int status) {
+  EM_ASM(
+      {
+        if (Module.foldlabFinished)
+          Module.foldlabFinished($0);
+      },
+      status);
+}
+
+struct WebRun {
+  std::unique_ptr<Surface> surface;
+  std::unique_ptr<ExplorerRun> run;
+  double rest_start_s = 0.0;
+};
+
+void web_frame(void* argument) {
+  auto& web = *static_cast<WebRun*>(argument);
+  const double now_s = emscripten_get_now() / 1000.0;
+  if (web.run->may_rest()) {
+    const bool input = take_input_seen() != 0;
+    if (!input && now_s - web.rest_start_s < web.run->rest_timeout_s()) {
+      return;
+    }
+    web.run->woken(input);
+  }
+  web.rest_start_s = now_s;
+  const int status = app::guarded([&] { return web.run->frame() ? -1 : web.run->finish(); });
+  if (status >= 0) {
+    emscripten_cancel_main_loop();
+    web.run.reset();
+    tell_page_finished(status);
+  }
+}
+#endif
 
 }  // namespace
 
@@ -307,10 +424,25 @@ int run(Surface& surface, const GuiRunOptions& options, const Preset& preset, bo
 int run_window(const GuiRunOptions& options) {
   std::optional<InputPlayer> player = read_script(options);
   const Preset preset = app::resolve_inputs(options.inputs);
+#ifdef __EMSCRIPTEN__
+  // The page's canvas is the window; the browser paces the frames, so no swap interval.
+  SurfaceOptions surface_options{options.width, options.height, false};
+  // Lives as long as the page: the browser's loop calls into it after this returns.
+  auto* web = new WebRun{make_window_surface(surface_options), nullptr};
+  web->run = std::make_unique<ExplorerRun>(*web->surface, options, preset, true, std::move(player));
+  emscripten_set_main_loop_arg(web_frame, web, 0, false);
+  if (options.frames > 0 || !options.play_path.empty()) {
+    // A scripted run on timers rather than animation frames: as fast as it can, and driven by
+    // `chromium --headless --virtual-time-budget`, whose clock does not send animation frames.
+    emscripten_set_main_loop_timing(EM_TIMING_SETTIMEOUT, 0);
+  }
+  return app::kExitOk;
+#else
   SurfaceOptions surface_options{options.width, options.height,
                                  options.frames == 0 && options.play_path.empty()};
   std::unique_ptr<Surface> surface = make_window_surface(surface_options);
   return run(*surface, options, preset, true, std::move(player));
+#endif
 }
 
 int run_headless(const GuiRunOptions& options) {

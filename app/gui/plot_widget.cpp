@@ -3,7 +3,6 @@
 #include <imgui_internal.h>  // SetItemUsingMouseWheel: without it the window scrolls as we zoom
 
 #include <algorithm>
-#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -29,16 +28,25 @@ constexpr float kMinWidth = 64.0f, kMinHeight = 48.0f;
 enum Slot { kXLo = 0, kXHi = 2, kYLo = 4, kYHi = 6, kFlags = 8, kLabelWidth = 9, kSlotCount = 10 };
 enum StateFlags { kHasRange = 1, kManualX = 2, kManualY = 4 };
 
+// std::bit_cast, which the browser build's standard library (libc++ 14) does not have yet.
+template <class To, class From>
+To bits_as(const From& from) {
+  static_assert(sizeof(To) == sizeof(From));
+  To to;
+  std::memcpy(&to, &from, sizeof to);
+  return to;
+}
+
 double load_double(const ImGuiStorage* st, const ImGuiID* keys, int slot) {
-  const auto lo = std::bit_cast<std::uint32_t>(st->GetInt(keys[slot]));
-  const auto hi = std::bit_cast<std::uint32_t>(st->GetInt(keys[slot + 1]));
-  return std::bit_cast<double>((std::uint64_t{hi} << 32) | lo);
+  const auto lo = bits_as<std::uint32_t>(st->GetInt(keys[slot]));
+  const auto hi = bits_as<std::uint32_t>(st->GetInt(keys[slot + 1]));
+  return bits_as<double>((std::uint64_t{hi} << 32) | lo);
 }
 
 void store_double(ImGuiStorage* st, const ImGuiID* keys, int slot, double v) {
-  const auto bits = std::bit_cast<std::uint64_t>(v);
-  st->SetInt(keys[slot], std::bit_cast<int>(static_cast<std::uint32_t>(bits)));
-  st->SetInt(keys[slot + 1], std::bit_cast<int>(static_cast<std::uint32_t>(bits >> 32)));
+  const auto bits = bits_as<std::uint64_t>(v);
+  st->SetInt(keys[slot], bits_as<int>(static_cast<std::uint32_t>(bits)));
+  st->SetInt(keys[slot + 1], bits_as<int>(static_cast<std::uint32_t>(bits >> 32)));
 }
 
 // Axis coordinate ("t"): the value itself, or its log10. Zoom, pan, margins and ticks work in t.

@@ -423,7 +423,7 @@ std::optional<FittedConstants> fit_K_and_p(const Fitter& fitter, const Calibrati
     }
     // One refinement per neighbourhood: the finer grid around p covers its neighbours' gaps.
     if (std::none_of(refined.begin(), refined.end(),
-                     [&](double q) { return std::abs(q - p) < 1.5 * o.p_step; })) {
+                     [&, centre = p](double q) { return std::abs(q - centre) < 1.5 * o.p_step; })) {
       refined.push_back(p);
     }
   }

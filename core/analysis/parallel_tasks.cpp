@@ -7,11 +7,12 @@
 #include <thread>
 #include <vector>
 
+#include "core/model/hardware_threads.hpp"
+
 namespace foldlab {
 
 int resolve_thread_count(int requested) {
-  return requested > 0 ? requested
-                       : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  return requested > 0 ? requested : hardware_threads();
 }
 
 bool run_tasks(std::size_t count, int threads,
@@ -19,6 +20,17 @@ bool run_tasks(std::size_t count, int threads,
                const std::function<bool(double)>& progress) {
   if (count == 0) {
     return !progress || progress(1.0);
+  }
+  if (resolve_thread_count(threads) <= 1 || count == 1) {
+    // On the calling thread: the only way in a build without threads, and no pool for one task.
+    const std::atomic<bool> stop{false};
+    for (std::size_t i = 0; i < count; ++i) {
+      task(i, stop);
+      if (progress && !progress(static_cast<double>(i + 1) / static_cast<double>(count))) {
+        return false;
+      }
+    }
+    return true;
   }
   std::atomic<std::size_t> next{0};
   std::atomic<bool> stop{false};
@@ -51,9 +63,18 @@ bool run_tasks(std::size_t count, int threads,
   const auto pool_size = std::min(static_cast<std::size_t>(resolve_thread_count(threads)), count);
   bool cancelled = false;
   {
-    std::vector<std::jthread> pool;
+    // Joined when the block ends, however it ends (std::jthread, which not every standard
+    // library has yet).
+    struct Pool {
+      std::vector<std::thread> threads;
+      ~Pool() {
+        for (std::thread& thread : threads) {
+          thread.join();
+        }
+      }
+    } pool;
     for (std::size_t k = 0; k < pool_size; ++k) {
-      pool.emplace_back(work);
+      pool.threads.emplace_back(work);
     }
     std::unique_lock lock(mutex);
     std::size_t reported = 0;

@@ -6,6 +6,8 @@
 
 #include <Eigen/Geometry>
 
+#include "core/model/hardware_threads.hpp"
+
 namespace foldlab {
 namespace {
 
@@ -35,7 +37,7 @@ DeformedGrid deformed_grid_parallel(const Solution& s, const Parameters& p, int 
   // roots are most of the time (measured by `foldlab bench`), so they are what is split.
   DeformedGrid grid = deformed_grid_positions(s, p, nx, ny);
   if (threads <= 0) {
-    threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+    threads = hardware_threads();
   }
   if (static_cast<long long>(grid.nx) * grid.ny < 128 * 128) {
     threads = 1;

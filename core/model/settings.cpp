@@ -406,7 +406,7 @@ std::string input_label(const InputSpec& spec) {
 std::optional<double> parse_number(std::string_view text) {
   double value = 0.0;
   const char* end = text.data() + text.size();
-  const auto [ptr, ec] = std::from_chars(text.data(), end, value);
+  const auto [ptr, ec] = detail::read_double(text.data(), end, value);
   if (text.empty() || ec != std::errc() || ptr != end || !std::isfinite(value)) {
     return std::nullopt;
   }
@@ -543,7 +543,7 @@ class Arithmetic {
     }
     double number = 0.0;
     const char* start = text_.data() + at_;
-    const auto [ptr, ec] = std::from_chars(start, text_.data() + text_.size(), number);
+    const auto [ptr, ec] = detail::read_double(start, text_.data() + text_.size(), number);
     if (ec != std::errc()) {
       return std::nullopt;
     }
@@ -683,7 +683,7 @@ std::optional<std::string> apply_setting(Parameters& p, std::string_view key,
       spec->kind == InputKind::whole_number ? parse_number(value) : parse_quantity(*spec, value);
   if (!number) {
     double ignored = 0.0;
-    const auto [ptr, ec] = std::from_chars(value.data(), value.data() + value.size(), ignored);
+    const auto [ptr, ec] = detail::read_double(value.data(), value.data() + value.size(), ignored);
     if (ec == std::errc::result_out_of_range && ptr == value.data() + value.size()) {
       return std::string(key) + " = '" + detail::cut(value) +
              "' is beyond the range of a double (magnitudes 2.2e-308 to 1.8e308)";

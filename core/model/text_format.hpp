@@ -21,11 +21,33 @@ namespace foldlab::detail {
 // The same from a va_list, for other checked printf-style helpers; `args` is used up.
 [[gnu::format(printf, 1, 0)]] std::string vprintf_string(const char* format, std::va_list args);
 
+// The same text and the same reading as std::to_chars and std::from_chars on a double, without
+// them: some standard libraries (libc++ as emscripten ships it for the browser build) have only
+// the integer overloads. Always compiled, so that the native tests check them against the real
+// ones.
+namespace portable {
+std::string shortest_number(double value);
+std::from_chars_result read_double(const char* first, const char* last, double& value);
+}  // namespace portable
+
 // The shortest text that reads back as exactly this double (5.0000001 stays 5.0000001).
 inline std::string shortest_number(double value) {
+#if __cpp_lib_to_chars >= 201611L
   char buffer[64];
   const auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
   return std::string(buffer, result.ptr);
+#else
+  return portable::shortest_number(value);
+#endif
+}
+
+// std::from_chars on a double (general format: no leading space or '+', "inf" and "nan" read).
+inline std::from_chars_result read_double(const char* first, const char* last, double& value) {
+#if __cpp_lib_to_chars >= 201611L
+  return std::from_chars(first, last, value);
+#else
+  return portable::read_double(first, last, value);
+#endif
 }
 
 // The length of the well-formed UTF-8 character starting at text[i] (1 to 4 bytes), or 0 when the

@@ -1,6 +1,6 @@
 #include "app/gui/gl/cloth_renderer.hpp"
 
-#include <epoxy/gl.h>
+#include "app/gui/gl/gl_api.hpp"
 
 #include <algorithm>
 #include <array>
@@ -32,7 +32,7 @@ Eigen::Vector3f normal_to_world(const Eigen::Vector3f& normal, float z_scale) {
 
 // foldlab::breeze_offset (core/src/geometry.cpp) on the GPU, in world coordinates (y up): both
 // vertex shaders prepend it so that the fold lines move with the cloth.
-constexpr const char* kBreezeGlsl = R"(#version 330 core
+constexpr const char* kBreezeGlsl = R"(
 uniform float breeze_amplitude_mm;
 uniform float breeze_depth_mm;
 uniform float time_s;
@@ -133,7 +133,7 @@ void main() {
 // The ground's shadow: a soft elliptical blob under the cloth's footprint (its extent seen from
 // above, narrowed across where a hanging cloth comes near the ground only at its middle), darkest
 // at the centre and gone `soft_mm` beyond the footprint.
-constexpr const char* kShadowVertex = R"(#version 330 core
+constexpr const char* kShadowVertex = R"(
 layout(location = 0) in vec3 position;
 uniform mat4 view_projection;
 out vec2 ground_mm;
@@ -143,7 +143,7 @@ void main() {
 }
 )";
 
-constexpr const char* kShadowFragment = R"(#version 330 core
+constexpr const char* kShadowFragment = R"(
 in vec2 ground_mm;
 uniform vec2 footprint_centre_mm;
 uniform vec2 footprint_half_mm;
@@ -171,7 +171,7 @@ void main() {
 }
 )";
 
-constexpr const char* kLineFragment = R"(#version 330 core
+constexpr const char* kLineFragment = R"(
 in vec3 line_colour;
 uniform vec4 override_colour;
 out vec4 colour;
@@ -180,15 +180,12 @@ void main() {
 }
 )";
 
-// `prefix` (may be null) is prepended to `source`: the shared breeze function.
+// The dialect's prologue (gl_api.hpp), then `prefix` (may be null: the shared breeze function or
+// a variant's defines), then `source`.
 GlShader compile(GLenum type, const char* prefix, const char* source) {
   GlShader shader(glCreateShader(type));
-  const char* parts[] = {prefix, source};
-  if (prefix != nullptr) {
-    glShaderSource(shader.get(), 2, parts, nullptr);
-  } else {
-    glShaderSource(shader.get(), 1, &source, nullptr);
-  }
+  const char* parts[] = {gl::kGlslPrologue, prefix != nullptr ? prefix : "", source};
+  glShaderSource(shader.get(), 3, parts, nullptr);
   glCompileShader(shader.get());
   GLint ok = 0;
   glGetShaderiv(shader.get(), GL_COMPILE_STATUS, &ok);
@@ -592,10 +589,10 @@ void ClothRenderer::update_print(const ClothStyle& style) {
 
 void ClothRenderer::select_mesh_program(const ClothStyle& style) {
   static constexpr const char* kVariants[] = {
-      "#version 330 core\n#define COLOUR_BY 0\n#define PRINTED 0\n",
-      "#version 330 core\n#define COLOUR_BY 0\n#define PRINTED 1\n",
-      "#version 330 core\n#define COLOUR_BY 1\n#define PRINTED 0\n",
-      "#version 330 core\n#define COLOUR_BY 2\n#define PRINTED 0\n",
+      "#define COLOUR_BY 0\n#define PRINTED 0\n",
+      "#define COLOUR_BY 0\n#define PRINTED 1\n",
+      "#define COLOUR_BY 1\n#define PRINTED 0\n",
+      "#define COLOUR_BY 2\n#define PRINTED 0\n",
   };
   const std::size_t variant = style.colour_by == ClothStyle::ColourBy::z           ? 2
                               : style.colour_by == ClothStyle::ColourBy::fold_sign ? 3
@@ -717,11 +714,10 @@ unsigned ClothRenderer::render(Scene& scene, const OrbitCamera& camera, FrameSiz
   const GLint override_colour = line.override_colour;
   glUniform1f(line.point_size, 1.0f);
   set_breeze_uniforms(line.breeze, scene, style);
-  if (style.wireframe) {
+  if (style.wireframe && gl::set_polygon_lines(true)) {
     glUniform4f(override_colour, 0.1f, 0.1f, 0.1f, 1.0f);
-    glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
     glDrawElements(GL_TRIANGLES, gl_->mesh_index_count, GL_UNSIGNED_INT, nullptr);
-    glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+    gl::set_polygon_lines(false);
   }
   glUniform4f(override_colour, 0.0f, 0.0f, 0.0f, 0.0f);
   if (style.ground) {
@@ -730,18 +726,18 @@ unsigned ClothRenderer::render(Scene& scene, const OrbitCamera& camera, FrameSiz
   }
   if (style.fold_lines && !gl_->line_counts.empty()) {
     glBindVertexArray(gl_->lines_vao.get());
-    glMultiDrawArrays(GL_LINE_STRIP, gl_->line_firsts.data(), gl_->line_counts.data(),
-                      static_cast<GLsizei>(gl_->line_counts.size()));
+    gl::multi_draw_arrays(GL_LINE_STRIP, gl_->line_firsts.data(), gl_->line_counts.data(),
+                          static_cast<GLsizei>(gl_->line_counts.size()));
   }
   glBindVertexArray(gl_->decor_vao.get());
   if (style.ground) {
     glDrawArrays(GL_LINES, 0, gl_->ground_vertex_count);
   }
-  glEnable(GL_PROGRAM_POINT_SIZE);
+  gl::set_program_point_size(true);
   glUniform1f(line.point_size, 12.0f);
   glDisable(GL_DEPTH_TEST);  // the supports are always visible
   glDrawArrays(GL_POINTS, gl_->support_first, gl_->support_count);
-  glDisable(GL_PROGRAM_POINT_SIZE);
+  gl::set_program_point_size(false);
 
   glBindVertexArray(0);
   glUseProgram(0);

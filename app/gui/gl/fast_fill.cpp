@@ -1,6 +1,6 @@
 #include "app/gui/gl/fast_fill.hpp"
 
-#include <epoxy/gl.h>
+#include "app/gui/gl/gl_api.hpp"
 
 #include <cmath>
 #include <deque>

@@ -3,7 +3,7 @@
 // only; a handle holding 0 owns nothing. Destroy them while their context is current.
 #pragma once
 
-#include <epoxy/gl.h>
+#include "app/gui/gl/gl_api.hpp"
 
 #include <utility>
 

@@ -1,6 +1,6 @@
 // The OpenGL 3.3 renderer: ImGui's OpenGL3 backend for the draw data, ClothRenderer for the 3D
 // view, fast_fill.hpp for opaque backgrounds and the view's copy, textures for images.
-#include <epoxy/gl.h>
+#include "app/gui/gl/gl_api.hpp"
 
 #include <algorithm>
 #include <memory>
@@ -18,7 +18,7 @@ namespace {
 
 class GlRenderer final : public Renderer {
  public:
-  GlRenderer() { ImGui_ImplOpenGL3_Init("#version 330 core"); }
+  GlRenderer() { ImGui_ImplOpenGL3_Init(gl::kImGuiGlslVersion); }
   ~GlRenderer() override {
     textures_.clear();
     for (std::unique_ptr<ClothRenderer>& cloth : cloth_) {

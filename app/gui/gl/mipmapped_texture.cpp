@@ -1,6 +1,6 @@
 #include "app/gui/gl/mipmapped_texture.hpp"
 
-#include <epoxy/gl.h>
+#include "app/gui/gl/gl_api.hpp"
 
 #include <algorithm>
 
@@ -16,8 +16,7 @@ void upload_mipmapped(unsigned texture, int width, int height, const void* rgba,
   const GLint wrap = repeat ? GL_REPEAT : GL_CLAMP_TO_EDGE;
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, wrap);
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, wrap);
-  if (epoxy_has_gl_extension("GL_EXT_texture_filter_anisotropic") ||
-      epoxy_has_gl_extension("GL_ARB_texture_filter_anisotropic")) {
+  if (gl::has_anisotropic_filtering()) {
     GLfloat most = 1.0f;
     glGetFloatv(GL_MAX_TEXTURE_MAX_ANISOTROPY_EXT, &most);
     glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_MAX_ANISOTROPY_EXT, std::min(most, 16.0f));

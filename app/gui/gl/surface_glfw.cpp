@@ -1,5 +1,5 @@
-#include <epoxy/gl.h>
-// epoxy first: GLFW must not pull in a GL header of its own.
+#include "app/gui/gl/gl_api.hpp"
+// The GL header first: GLFW must not pull in one of its own.
 #include <GLFW/glfw3.h>
 
 #include <string>

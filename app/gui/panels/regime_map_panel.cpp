@@ -13,6 +13,7 @@
 
 #include "app/gui/panels/axis_inputs.hpp"
 #include "app/gui/panels/widgets.hpp"
+#include "core/model/hardware_threads.hpp"
 #include "core/model/settings.hpp"
 
 namespace foldlab::gui {
@@ -123,7 +124,7 @@ void RegimeMapPanel::restart(const Parameters& base, const std::function<void()>
   job_started_ = true;
   rows_shown_ = -1;
   pixels_.assign(cells->cells.size(), IM_COL32(25, 25, 30, 255));
-  threads_ = std::max(1u, std::thread::hardware_concurrency());
+  threads_ = static_cast<unsigned>(hardware_threads());
   // Rows are handed out one at a time to every core, so the map fills evenly and a cancel is
   // honoured within one row.
   job_.start(
