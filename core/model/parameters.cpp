@@ -67,8 +67,10 @@ std::vector<ValidationIssue> validate(const Parameters& p) {
       const double value = *spec.value(p);
       check_range(issues, spec.field, value, spec.valid, spec.why);
       const std::optional<double> upper = spec.upper_bound ? spec.upper_bound(p) : std::nullopt;
-      if (upper && spec.valid.contains(value)) {
-        check_range(issues, spec.field, value, {spec.valid.lo, *upper, spec.valid.lo_open, true},
+      const InputInterval below{spec.valid.lo, upper.value_or(0.0), spec.valid.lo_open, true};
+      // The reason is spelt out only for a value it refuses: validate() runs on every edit.
+      if (upper && spec.valid.contains(value) && !below.contains(value)) {
+        check_range(issues, spec.field, value, below,
                     std::string(spec.key) + " must stay below " +
                         std::string(spec.upper_bound_name) + " = " + shortest_number(*upper) +
                         ", " + std::string(spec.upper_bound_why));
