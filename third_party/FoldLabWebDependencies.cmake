@@ -54,6 +54,6 @@ target_link_libraries(foldlab_imgui PUBLIC glfw)
 add_library(foldlab::imgui ALIAS foldlab_imgui)
 
 add_library(glfw INTERFACE IMPORTED)
+# A link setting only: emcc finds GLFW's header without it, and warns when a compile is given it.
 set_target_properties(glfw PROPERTIES
-  INTERFACE_COMPILE_OPTIONS "-sUSE_GLFW=3"
   INTERFACE_LINK_OPTIONS "-sUSE_GLFW=3;-sMIN_WEBGL_VERSION=2;-sMAX_WEBGL_VERSION=2;-sFULL_ES3=1")

@@ -15,7 +15,7 @@ def main():
     args = parser.parse_args()
     native = json.loads(subprocess.run(
         [args.native, "compare", "--json"], check=True, capture_output=True, text=True,
-        env={"FOLDLAB_PRESETS_DIR": args.presets, "PATH": "/usr/bin:/bin"}).stdout)
+        env={"FOLDLAB_PRESETS_DIR": args.presets, "PATH": "/usr/bin:/bin"}).stdout)["rows"]
     wasm = json.loads(subprocess.run(
         args.wasm + [args.presets], check=True, capture_output=True, text=True).stdout)
     wasm_rows = {row["name"]: row for row in wasm}
