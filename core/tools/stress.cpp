@@ -220,10 +220,11 @@ Parameters stress_sample(std::uint64_t seed, int index) {
   std::mt19937_64 random(sequence);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   // Every sampled row of the input table over its typical range (where the fabrics one meets
-  // lie), in table order, uniformly on the row's scale; a row with an upper bound that follows
-  // from others (d < L/2) is drawn below it, and unit() < 1 keeps it open. Every 100th sample puts
-  // rows whose typical range starts at their closed valid end on that end (d = 0, nu = 0), an
-  // edge a uniform draw never hits.
+  // lie), in table order: log-uniformly when the range is positive (it spans decades of fabrics,
+  // whatever the slider's scale), else uniformly. A row with an upper bound that follows from
+  // others (d < L/2) is drawn below it, and unit() < 1 keeps it open. Every 100th sample puts rows
+  // whose typical range starts at their closed valid end on that end (d = 0, nu = 0), an edge a
+  // uniform draw never hits.
   Parameters p;
   for (const InputSpec& spec : input_table()) {
     if (!spec.sampled) {
@@ -234,10 +235,9 @@ Parameters stress_sample(std::uint64_t seed, int index) {
     const double hi = bound ? std::min(spec.typical_hi, *bound) : spec.typical_hi;
     const double u = unit(random);
     const bool at_edge = index % 100 == 0 && lo == spec.valid.lo && !spec.valid.lo_open;
-    const double value = at_edge ? lo
-                         : spec.scale == InputScale::logarithmic
-                             ? std::exp(std::log(lo) + u * (std::log(hi) - std::log(lo)))
-                             : lo + u * (hi - lo);
+    const double value = at_edge    ? lo
+                         : lo > 0.0 ? std::exp(std::log(lo) + u * (std::log(hi) - std::log(lo)))
+                                    : lo + u * (hi - lo);
     spec.access.set(p, value);
   }
   // Every law by turns, each with its published constant.
