@@ -146,7 +146,9 @@ std::vector<InputSpec> build_table() {
        .why = "below half of L, where the supports would meet if each moved d",
        .upper_bound = [](const Parameters& p) -> std::optional<double> {
          const double L = p.hanging.length_mm;
-         return find_input("L")->valid.contains(L) ? std::optional(0.5 * L) : std::nullopt;
+         // Found once: validate() asks on every edit and every point of a sweep.
+         static const InputInterval L_valid = find_input("L")->valid;
+         return L_valid.contains(L) ? std::optional(0.5 * L) : std::nullopt;
        },
        .upper_bound_name = "L/2",
        .upper_bound_why = "where the supports would meet if each moved d",

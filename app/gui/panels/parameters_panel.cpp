@@ -124,11 +124,14 @@ void law_combo(Document& document, float width) {
 
 }  // namespace
 
-std::vector<Assignment> printed_eq7() {
-  return {{"method", std::string(to_string(Method::paper))},
-          {"law", std::string(to_string(WrinkleLawKind::conci))},
-          {"p", 1.0},
-          {"K", kCalibratedLoadConstantC / (1.0 - kDefaultPoissonRatio * kDefaultPoissonRatio)}};
+const std::vector<Assignment>& printed_eq7() {
+  // Built once: every frame asks whether it is in use.
+  static const std::vector<Assignment> assignments = {
+      {"method", std::string(to_string(Method::paper))},
+      {"law", std::string(to_string(WrinkleLawKind::conci))},
+      {"p", 1.0},
+      {"K", kCalibratedLoadConstantC / (1.0 - kDefaultPoissonRatio * kDefaultPoissonRatio)}};
+  return assignments;
 }
 
 bool is_printed_eq7(const Parameters& p) {

@@ -82,7 +82,7 @@ class ParametersPanel : public Panel {
 
 // The paper's form of eq. 7 as inputs of the table: the paper method, Conci's law, p = 1 and
 // K = 29.56 (c = 26.9 at nu = 0.3) at the Poisson ratio in force.
-std::vector<Assignment> printed_eq7();
+const std::vector<Assignment>& printed_eq7();
 bool is_printed_eq7(const Parameters& p);
 
 }  // namespace foldlab::gui
