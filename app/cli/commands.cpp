@@ -1,6 +1,7 @@
 #include "app/cli/commands.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -18,7 +19,7 @@
 #include "core/geometry/scene.hpp"
 #include "core/io/export.hpp"
 #include "core/io/export_budget.hpp"
-#include "core/io/gltf_export.hpp"
+#include "core/io/export_formats.hpp"
 #include "core/io/io.hpp"
 #include "core/io/report.hpp"
 #include "core/io/scene_report.hpp"
@@ -66,10 +67,8 @@ Command add_solve_command(CLI::App& app) {
 Command add_export_command(CLI::App& app) {
   struct Options {
     InputOptions inputs;
-    std::string obj_path;
-    std::string glb_path;
-    std::string csv_path;
-    std::string svg_path;
+    std::array<std::string, kExportFormats.size()> flags;  // by kExportFormats' row: "--obj"
+    std::array<std::string, kExportFormats.size()> paths;
     std::string grid = "128x128";
     double samples = 201;
     bool stats = false;
@@ -78,14 +77,11 @@ Command add_export_command(CLI::App& app) {
   CLI::App* command = app.add_subcommand(
       "export", "write the deformed mesh (OBJ, glTF) and the fold lines (CSV, SVG)");
   add_input_options(*command, options->inputs);
-  command->add_option("--obj", options->obj_path, "deformed mesh, Wavefront OBJ")
-      ->check(app::non_empty_path());
-  command->add_option("--glb", options->glb_path, "deformed mesh, binary glTF (metres, +Y up)")
-      ->check(app::non_empty_path());
-  command->add_option("--csv", options->csv_path, "fold lines as CSV")
-      ->check(app::non_empty_path());
-  command->add_option("--svg", options->svg_path, "fold lines as an SVG drawing")
-      ->check(app::non_empty_path());
+  for (std::size_t i = 0; i < kExportFormats.size(); ++i) {
+    options->flags[i] = "--" + std::string(kExportFormats[i].key);
+    command->add_option(options->flags[i], options->paths[i], std::string(kExportFormats[i].what))
+        ->check(app::non_empty_path());
+  }
   command->add_option("--grid", options->grid, "mesh resolution NXxNY (default 128x128)");
   command->add_option("--samples", options->samples,
                       "points per fold line, a whole number in [2, 100000] (default 201)");
@@ -93,10 +89,20 @@ Command add_export_command(CLI::App& app) {
                     "print the pipeline's per-stage counters as JSON on stdout");
   return [options] {
     return guarded([&] {
-      if (options->obj_path.empty() && options->glb_path.empty() && options->csv_path.empty() &&
-          options->svg_path.empty()) {
-        throw InputError(
-            "export needs at least one of --obj FILE, --glb FILE, --csv FILE, --svg FILE");
+      std::vector<app::NamedPath> outputs;
+      std::string every_flag;
+      bool mesh = false;
+      bool lines = false;
+      for (std::size_t i = 0; i < kExportFormats.size(); ++i) {
+        const std::string& flag = options->flags[i];
+        every_flag += (every_flag.empty() ? "" : ", ") + flag + " FILE";
+        if (!options->paths[i].empty()) {
+          outputs.push_back({flag, options->paths[i]});
+          (kExportFormats[i].content == ExportFormat::Content::mesh ? mesh : lines) = true;
+        }
+      }
+      if (outputs.empty()) {
+        throw InputError("export needs at least one of " + every_flag);
       }
       std::smatch match;
       static const std::regex grid_pattern(R"((\d{1,5})x(\d{1,5}))");
@@ -113,15 +119,9 @@ Command add_export_command(CLI::App& app) {
                          " must be a whole number in [2, 100000]");
       }
       const int samples = static_cast<int>(options->samples);
-      check_distinct_files({{"--obj", options->obj_path},
-                            {"--glb", options->glb_path},
-                            {"--csv", options->csv_path},
-                            {"--svg", options->svg_path}},
-                           {{"--preset", options->inputs.preset_path}});
+      check_distinct_files(outputs, {{"--preset", options->inputs.preset_path}});
       const int nx = std::stoi(match[1]);
       const int ny = std::stoi(match[2]);
-      const bool mesh = !options->obj_path.empty() || !options->glb_path.empty();
-      const bool lines = !options->csv_path.empty() || !options->svg_path.empty();
       if (auto problem = check_grid_budget(nx, ny); problem && mesh) {
         throw InputError("--grid " + options->grid + ": " + *problem);
       }
@@ -141,26 +141,25 @@ Command add_export_command(CLI::App& app) {
       if (const std::string message = describe(solution, preset.parameters); !message.empty()) {
         std::cerr << "foldlab: " << message << "\n";
       }
-      if (!options->obj_path.empty()) {
-        scene.normals();
-        write_file_atomically(options->obj_path, mesh_to_obj(scene.grid(), preset.name));
-      }
-      if (!options->glb_path.empty()) {
-        scene.normals();
-        write_file_atomically(options->glb_path, mesh_to_glb(scene.grid(), preset.name));
-      }
       if (lines && scene.fold_lines().stride > 1) {
         // The drawing says so in its corner; the CSV's line numbers show the gaps; say it here too.
         std::cerr << "foldlab: " << solution.n + 1 << " fold lines are too many to draw: the CSV "
                   << "and SVG hold one line in " << scene.fold_lines().stride << " (at most "
                   << kMaxDrawnFoldLines << " lines)\n";
       }
-      if (!options->csv_path.empty()) {
-        write_file_atomically(options->csv_path, fold_lines_to_csv(scene.fold_lines()));
+      ExportSource source{.title = preset.name};
+      if (mesh) {
+        scene.normals();
+        source.mesh = &scene.grid();
       }
-      if (!options->svg_path.empty()) {
-        write_file_atomically(options->svg_path,
-                              fold_lines_to_svg(scene.fold_lines(), solution, preset.name));
+      if (lines) {
+        source.lines = &scene.fold_lines();
+        source.solution = &solution;
+      }
+      for (std::size_t i = 0; i < kExportFormats.size(); ++i) {
+        if (!options->paths[i].empty()) {
+          write_file_atomically(options->paths[i], kExportFormats[i].write(source));
+        }
       }
       if (options->stats) {
         std::cout << nlohmann::json{{"stats", scene_stats_to_json(scene)}}.dump(2) << "\n";

@@ -341,134 +341,172 @@ int InputPlayer::exit_status() const {
   return failure_.empty() ? app::kExitOk : 1;
 }
 
+void InputPlayer::queue_press(ImVec2 from, ImVec2 to, int moves) {
+  FrameInput hover;
+  hover.mouse = from;
+  queue_.push_back(hover);
+  FrameInput down = hover;
+  down.mouse_down = true;
+  queue_.push_back(down);
+  for (int i = 1; i <= moves; ++i) {
+    const float f = static_cast<float>(i) / static_cast<float>(moves);
+    down.mouse = ImVec2(from.x + f * (to.x - from.x), from.y + f * (to.y - from.y));
+    queue_.push_back(down);
+  }
+  FrameInput up = down;
+  up.mouse_down = false;
+  queue_.push_back(up);
+  queue_.push_back(up);
+}
+
+const SliderPlace* InputPlayer::find_slider(std::size_t index, const std::string& key,
+                                            Explorer& explorer) {
+  const auto& places = explorer.parameters_panel().slider_places();
+  const auto found = places.find(key);
+  if (found == places.end()) {
+    fail(index, "the slider " + key + " is not shown");
+    return nullptr;
+  }
+  return &found->second;
+}
+
+bool InputPlayer::click_slider(std::size_t index, const json& step, Explorer& explorer) {
+  const SliderPlace* place = find_slider(index, step["click"].get<std::string>(), explorer);
+  if (place == nullptr) {
+    return false;
+  }
+  // The frame's right edge itself is outside the item.
+  const float x = place->min.x + step["at"].get<float>() * (place->max.x - place->min.x - 1.0f);
+  const ImVec2 at(x, 0.5f * (place->min.y + place->max.y));
+  queue_press(at, at, 0);
+  // Ctrl+click opens the slider's text field, where a value is typed with its unit.
+  const bool ctrl = step.value("ctrl", false);
+  for (FrameInput& input : queue_) {
+    input.ctrl = ctrl;
+  }
+  return true;
+}
+
+bool InputPlayer::click_label(std::size_t index, const std::string& label) {
+  const std::optional<ImVec2> at = find_label(label);
+  if (!at) {
+    fail(index, "no visible \"" + label + "\"");
+    return false;
+  }
+  queue_press(*at, *at, 0);
+  return true;
+}
+
+void InputPlayer::queue_key(const Chord& chord, const ImGuiIO& io) {
+  FrameInput mods;
+  mods.mouse = mouse_;
+  mods.ctrl = chord.ctrl;
+  mods.shift = chord.shift;
+  mods.alt = chord.alt;
+  queue_.push_back(mods);
+  FrameInput pressed = mods;
+  pressed.key =
+      chord.imgui >= 0 && io.KeyMap[chord.imgui] >= 0 ? io.KeyMap[chord.imgui] : chord.glfw;
+  queue_.push_back(pressed);
+  queue_.push_back(mods);
+  FrameInput released;
+  released.mouse = mouse_;
+  queue_.push_back(released);
+}
+
+void InputPlayer::queue_text(const std::string& text) {
+  // One character a frame, as hands type: a widget sees every text on the way.
+  FrameInput typed;
+  typed.mouse = mouse_;
+  for (std::size_t at = 0; at < text.size();) {
+    std::size_t next = at + 1;
+    while (next < text.size() && (static_cast<unsigned char>(text[next]) & 0xC0) == 0x80) {
+      ++next;  // the continuation bytes of a UTF-8 character
+    }
+    typed.text = text.substr(at, next - at);
+    queue_.push_back(typed);
+    at = next;
+  }
+  typed.text.clear();
+  queue_.push_back(typed);
+}
+
+bool InputPlayer::check_expect(std::size_t index, const json& expect, Explorer& explorer) {
+  const json report = explorer_state_json(explorer);
+  for (const auto& [path, wanted] : expect.items()) {
+    const json* got = find_field(report, path);
+    if (got == nullptr) {
+      fail(index, "the report has no field " + path);
+      return false;
+    }
+    if (!holds(*got, wanted)) {
+      fail(index, path + " is " + got->dump() + ", expected " + wanted.dump());
+      return false;
+    }
+  }
+  return true;
+}
+
 bool InputPlayer::start_step(std::size_t index, ImGuiIO& io, Explorer& explorer) {
   const json& step = steps_[index];
   queue_.clear();
   queue_at_ = 0;
-  const auto press = [&](ImVec2 from, ImVec2 to, int moves) {
-    FrameInput hover;
-    hover.mouse = from;
-    queue_.push_back(hover);
-    FrameInput down = hover;
-    down.mouse_down = true;
-    queue_.push_back(down);
-    for (int i = 1; i <= moves; ++i) {
-      const float f = static_cast<float>(i) / static_cast<float>(moves);
-      down.mouse = ImVec2(from.x + f * (to.x - from.x), from.y + f * (to.y - from.y));
-      queue_.push_back(down);
-    }
-    FrameInput up = down;
-    up.mouse_down = false;
-    queue_.push_back(up);
-    queue_.push_back(up);
-  };
-  const auto slider = [&](const std::string& key) -> const SliderPlace* {
-    const auto& places = explorer.parameters_panel().slider_places();
-    const auto found = places.find(key);
-    if (found == places.end()) {
-      fail(index, "the slider " + key + " is not shown");
-      return nullptr;
-    }
-    return &found->second;
-  };
-  if (step.contains("drag")) {
-    const SliderPlace* place = slider(step["drag"].get<std::string>());
-    if (place == nullptr) {
-      return false;
-    }
-    const ImVec2 from(handle_x(*place, place->fraction), 0.5f * (place->min.y + place->max.y));
-    press(from, ImVec2(from.x + step["dx"].get<float>(), from.y), 6);
-  } else if (step.contains("click") && step.contains("at")) {
-    const SliderPlace* place = slider(step["click"].get<std::string>());
-    if (place == nullptr) {
-      return false;
-    }
-    // The frame's right edge itself is outside the item.
-    const float x = place->min.x + step["at"].get<float>() * (place->max.x - place->min.x - 1.0f);
-    const ImVec2 at(x, 0.5f * (place->min.y + place->max.y));
-    press(at, at, 0);
-    // Ctrl+click opens the slider's text field, where a value is typed with its unit.
-    const bool ctrl = step.value("ctrl", false);
-    for (FrameInput& input : queue_) {
-      input.ctrl = ctrl;
-    }
-  } else if (step.contains("click")) {
-    const std::string label = step["click"].get<std::string>();
-    const std::optional<ImVec2> at = find_label(label);
-    if (!at) {
-      fail(index, "no visible \"" + label + "\"");
-      return false;
-    }
-    press(*at, *at, 0);
-  } else if (step.contains("click_photo")) {
-    if (explorer.photo().report().at("photo").is_null()) {
-      fail(index, "no photo is loaded");
-      return false;
-    }
-    const ImVec2 at = explorer.photo().screen_of_pixel(step["click_photo"][0].get<double>(),
-                                                       step["click_photo"][1].get<double>());
-    press(at, at, 0);
-  } else if (step.contains("key")) {
-    const Chord chord = *parse_chord(step["key"].get<std::string>());
-    FrameInput mods;
-    mods.mouse = mouse_;
-    mods.ctrl = chord.ctrl;
-    mods.shift = chord.shift;
-    mods.alt = chord.alt;
-    queue_.push_back(mods);
-    FrameInput pressed = mods;
-    pressed.key =
-        chord.imgui >= 0 && io.KeyMap[chord.imgui] >= 0 ? io.KeyMap[chord.imgui] : chord.glfw;
-    queue_.push_back(pressed);
-    queue_.push_back(mods);
-    FrameInput released;
-    released.mouse = mouse_;
-    queue_.push_back(released);
-  } else if (step.contains("type")) {
-    // One character a frame, as hands type: a widget sees every text on the way.
-    const std::string text = step["type"].get<std::string>();
-    FrameInput typed;
-    typed.mouse = mouse_;
-    for (std::size_t at = 0; at < text.size();) {
-      std::size_t next = at + 1;
-      while (next < text.size() && (static_cast<unsigned char>(text[next]) & 0xC0) == 0x80) {
-        ++next;  // the continuation bytes of a UTF-8 character
-      }
-      typed.text = text.substr(at, next - at);
-      queue_.push_back(typed);
-      at = next;
-    }
-    typed.text.clear();
-    queue_.push_back(typed);
-  } else if (step.contains("resize")) {
-    FrameInput resized;
-    resized.mouse = mouse_;
-    resized.resize = parse_frame_size(step["resize"].get<std::string>());
-    queue_.push_back(resized);
-    resized.resize.reset();
-    queue_.insert(queue_.end(), 3, resized);
-  } else if (step.contains("frames")) {
-    FrameInput idle;
-    idle.mouse = mouse_;
-    queue_.assign(step["frames"].get<std::size_t>(), idle);
-  } else if (step.contains("screenshot")) {
-    FrameInput shot;
-    shot.mouse = mouse_;
-    shot.screenshot = step["screenshot"].get<std::string>();
-    queue_.push_back(shot);
-  } else if (step.contains("expect")) {
-    const json report = explorer_state_json(explorer);
-    for (const auto& [path, wanted] : step["expect"].items()) {
-      const json* got = find_field(report, path);
-      if (got == nullptr) {
-        fail(index, "the report has no field " + path);
+  switch (step_kind(step).id) {
+    case StepKind::Id::drag: {
+      const SliderPlace* place = find_slider(index, step["drag"].get<std::string>(), explorer);
+      if (place == nullptr) {
         return false;
       }
-      if (!holds(*got, wanted)) {
-        fail(index, path + " is " + got->dump() + ", expected " + wanted.dump());
+      const ImVec2 from(handle_x(*place, place->fraction), 0.5f * (place->min.y + place->max.y));
+      queue_press(from, ImVec2(from.x + step["dx"].get<float>(), from.y), 6);
+      break;
+    }
+    case StepKind::Id::click:
+      if (!(step.contains("at") ? click_slider(index, step, explorer)
+                                : click_label(index, step["click"].get<std::string>()))) {
         return false;
       }
+      break;
+    case StepKind::Id::click_photo: {
+      if (explorer.photo().report().at("photo").is_null()) {
+        fail(index, "no photo is loaded");
+        return false;
+      }
+      const ImVec2 at = explorer.photo().screen_of_pixel(step["click_photo"][0].get<double>(),
+                                                         step["click_photo"][1].get<double>());
+      queue_press(at, at, 0);
+      break;
     }
+    case StepKind::Id::key:
+      queue_key(*parse_chord(step["key"].get<std::string>()), io);
+      break;
+    case StepKind::Id::type:
+      queue_text(step["type"].get<std::string>());
+      break;
+    case StepKind::Id::resize: {
+      FrameInput resized;
+      resized.mouse = mouse_;
+      resized.resize = parse_frame_size(step["resize"].get<std::string>());
+      queue_.push_back(resized);
+      resized.resize.reset();
+      queue_.insert(queue_.end(), 3, resized);
+      break;
+    }
+    case StepKind::Id::frames: {
+      FrameInput idle;
+      idle.mouse = mouse_;
+      queue_.assign(step["frames"].get<std::size_t>(), idle);
+      break;
+    }
+    case StepKind::Id::screenshot: {
+      FrameInput shot;
+      shot.mouse = mouse_;
+      shot.screenshot = step["screenshot"].get<std::string>();
+      queue_.push_back(shot);
+      break;
+    }
+    case StepKind::Id::expect:
+      return check_expect(index, step["expect"], explorer);
   }
   return true;
 }

@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/gui/explorer.hpp"
+#include "app/gui/play_script.hpp"
 
 namespace foldlab::gui {
 
@@ -56,6 +57,15 @@ class InputPlayer {
   // Turns step `index` into frames of input, or fails it; false when it failed.
   bool start_step(std::size_t index, ImGuiIO& io, Explorer& explorer);
   void fail(std::size_t index, const std::string& why);
+  // The frames of a press at `from`, moved to `to` in `moves` frames, and released.
+  void queue_press(ImVec2 from, ImVec2 to, int moves);
+  void queue_key(const Chord& chord, const ImGuiIO& io);
+  void queue_text(const std::string& text);
+  // Each fails the step (and returns null or false) when what it needs is not on screen.
+  const SliderPlace* find_slider(std::size_t index, const std::string& key, Explorer& explorer);
+  bool click_slider(std::size_t index, const nlohmann::json& step, Explorer& explorer);
+  bool click_label(std::size_t index, const std::string& label);
+  bool check_expect(std::size_t index, const nlohmann::json& expect, Explorer& explorer);
 
   std::vector<nlohmann::json> steps_;
   std::size_t next_step_ = 0;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <stdexcept>
 #include <string_view>
 
 #include <imgui.h>
@@ -95,110 +96,168 @@ bool is_slider_key(const json& value) {
          std::find(keys.begin(), keys.end(), value.get<std::string>()) != keys.end();
 }
 
-// The problems of one step; empty when it can run.
-std::vector<std::string> step_problems(const json& step) {
-  if (!step.is_object() || step.empty()) {
-    return {"is not an object with one action"};
+using Problems = std::vector<std::string>;
+
+void check_drag(const json& step, Problems& problems) {
+  if (!is_slider_key(step["drag"])) {
+    problems.push_back("drag needs a slider key (" + detail::join_comma(sweepable_keys()) +
+                       "), not " + detail::cut(step["drag"].dump()));
   }
-  static const char* const kActions[] = {"drag",   "click",  "click_photo", "key",   "type",
-                                         "resize", "frames", "screenshot",  "expect"};
-  std::vector<std::string> actions;
-  for (const char* action : kActions) {
-    if (step.contains(action)) {
-      actions.emplace_back(action);
-    }
+  if (!step.contains("dx") || !step["dx"].is_number() ||
+      std::abs(step["dx"].get<double>()) > 10000.0) {
+    problems.push_back("drag needs \"dx\": a number of pixels");
   }
-  if (actions.size() != 1) {
-    return {actions.empty() ? "has no action (drag, click, click_photo, key, type, resize, "
-                              "frames, screenshot or expect)"
-                            : "has more than one action: " + detail::join_comma(actions)};
-  }
-  const std::string& action = actions.front();
-  std::vector<std::string> problems;
-  for (const auto& [name, value] : step.items()) {
-    const bool allowed = name == action || (action == "drag" && name == "dx") ||
-                         (action == "click" && (name == "at" || name == "ctrl"));
-    if (!allowed) {
-      problems.push_back("\"" + detail::cut(name) + "\" does not belong to a " + action + " step");
-    }
-  }
-  const json& arg = step.at(action);
-  const std::string keys = detail::join_comma(sweepable_keys());
-  if (action == "drag") {
-    if (!is_slider_key(arg)) {
-      problems.push_back("drag needs a slider key (" + keys + "), not " + detail::cut(arg.dump()));
-    }
-    if (!step.contains("dx") || !step["dx"].is_number() ||
-        std::abs(step["dx"].get<double>()) > 10000.0) {
-      problems.push_back("drag needs \"dx\": a number of pixels");
-    }
-  } else if (action == "click") {
-    if (step.contains("at")) {
-      if (!is_slider_key(arg)) {
-        problems.push_back("click with \"at\" needs a slider key (" + keys + "), not " +
-                           detail::cut(arg.dump()));
-      }
-      if (step.contains("ctrl") && !step["ctrl"].is_boolean()) {
-        problems.push_back("\"ctrl\" must be true or false, not " +
-                           detail::cut(step["ctrl"].dump()));
-      }
-      if (!step["at"].is_number() || step["at"].get<double>() < 0.0 ||
-          step["at"].get<double>() > 1.0) {
-        problems.push_back("\"at\" must be a fraction from 0 to 1, not " +
-                           detail::cut(step["at"].dump()));
-      }
-    } else if (!arg.is_string() || arg.get<std::string>().empty()) {
+}
+
+void check_click(const json& step, Problems& problems) {
+  const json& arg = step["click"];
+  if (!step.contains("at")) {
+    if (!arg.is_string() || arg.get<std::string>().empty()) {
       problems.push_back("click needs a label or a slider key with \"at\", not " +
                          detail::cut(arg.dump()));
     }
-  } else if (action == "click_photo") {
-    if (!arg.is_array() || arg.size() != 2 || !arg[0].is_number() || !arg[1].is_number() ||
-        !(arg[0].get<double>() >= 0.0) || !(arg[1].get<double>() >= 0.0)) {
-      problems.push_back("click_photo needs [X, Y]: a pixel of the loaded photo, not " +
-                         detail::cut(arg.dump()));
+    if (step.contains("ctrl")) {
+      problems.push_back("\"ctrl\" belongs to a click on a slider (with \"at\")");
     }
-  } else if (action == "key") {
-    if (!arg.is_string() || !parse_chord(arg.get<std::string>())) {
-      problems.push_back("key " + detail::cut(arg.dump()) +
-                         " is not a chord such as \"ctrl+z\", \"ctrl+shift+z\", \"escape\"");
-    }
-  } else if (action == "type") {
-    if (!arg.is_string()) {
-      problems.push_back("type needs a string, not " + detail::cut(arg.dump()));
-    }
-  } else if (action == "resize") {
-    if (!arg.is_string() || !parse_frame_size(arg.get<std::string>())) {
-      problems.push_back("resize needs " + frame_size_rule() + ", not " + detail::cut(arg.dump()));
-    }
-  } else if (action == "frames") {
-    if (!arg.is_number_integer() || arg.get<long long>() < 1 || arg.get<long long>() > 100000) {
-      problems.push_back("frames needs a whole number from 1 to 100000, not " +
-                         detail::cut(arg.dump()));
-    }
-  } else if (action == "screenshot") {
-    if (!arg.is_string() || !arg.get<std::string>().ends_with(".png")) {
-      problems.push_back("screenshot needs a file name ending in .png, not " +
-                         detail::cut(arg.dump()));
-    }
-  } else if (action == "expect") {
-    if (!arg.is_object() || arg.empty()) {
-      problems.push_back("expect needs an object of FIELD.PATH: VALUE or [LO, HI]");
-    } else {
-      for (const auto& [path, wanted] : arg.items()) {
-        const bool range = wanted.is_array() && wanted.size() == 2 && wanted[0].is_number() &&
-                           wanted[1].is_number() &&
-                           wanted[0].get<double>() <= wanted[1].get<double>();
-        if (wanted.is_array() ? !range : wanted.is_object()) {
-          problems.push_back("expect " + detail::cut(path) + ": " + detail::cut(wanted.dump()) +
-                             " is neither a value nor [LO, HI] with LO <= HI");
-        }
-      }
+    return;
+  }
+  if (!is_slider_key(arg)) {
+    problems.push_back("click with \"at\" needs a slider key (" +
+                       detail::join_comma(sweepable_keys()) + "), not " + detail::cut(arg.dump()));
+  }
+  if (step.contains("ctrl") && !step["ctrl"].is_boolean()) {
+    problems.push_back("\"ctrl\" must be true or false, not " + detail::cut(step["ctrl"].dump()));
+  }
+  if (!step["at"].is_number() || step["at"].get<double>() < 0.0 || step["at"].get<double>() > 1.0) {
+    problems.push_back("\"at\" must be a fraction from 0 to 1, not " +
+                       detail::cut(step["at"].dump()));
+  }
+}
+
+void check_click_photo(const json& step, Problems& problems) {
+  const json& arg = step["click_photo"];
+  if (!arg.is_array() || arg.size() != 2 || !arg[0].is_number() || !arg[1].is_number() ||
+      !(arg[0].get<double>() >= 0.0) || !(arg[1].get<double>() >= 0.0)) {
+    problems.push_back("click_photo needs [X, Y]: a pixel of the loaded photo, not " +
+                       detail::cut(arg.dump()));
+  }
+}
+
+void check_key(const json& step, Problems& problems) {
+  const json& arg = step["key"];
+  if (!arg.is_string() || !parse_chord(arg.get<std::string>())) {
+    problems.push_back("key " + detail::cut(arg.dump()) +
+                       " is not a chord such as \"ctrl+z\", \"ctrl+shift+z\", \"escape\"");
+  }
+}
+
+void check_type(const json& step, Problems& problems) {
+  if (!step["type"].is_string()) {
+    problems.push_back("type needs a string, not " + detail::cut(step["type"].dump()));
+  }
+}
+
+void check_resize(const json& step, Problems& problems) {
+  const json& arg = step["resize"];
+  if (!arg.is_string() || !parse_frame_size(arg.get<std::string>())) {
+    problems.push_back("resize needs " + frame_size_rule() + ", not " + detail::cut(arg.dump()));
+  }
+}
+
+void check_frames(const json& step, Problems& problems) {
+  const json& arg = step["frames"];
+  if (!arg.is_number_integer() || arg.get<long long>() < 1 || arg.get<long long>() > 100000) {
+    problems.push_back("frames needs a whole number from 1 to 100000, not " +
+                       detail::cut(arg.dump()));
+  }
+}
+
+void check_screenshot(const json& step, Problems& problems) {
+  const json& arg = step["screenshot"];
+  if (!arg.is_string() || !arg.get<std::string>().ends_with(".png")) {
+    problems.push_back("screenshot needs a file name ending in .png, not " +
+                       detail::cut(arg.dump()));
+  }
+}
+
+void check_expect(const json& step, Problems& problems) {
+  const json& arg = step["expect"];
+  if (!arg.is_object() || arg.empty()) {
+    problems.push_back("expect needs an object of FIELD.PATH: VALUE or [LO, HI]");
+    return;
+  }
+  for (const auto& [path, wanted] : arg.items()) {
+    const bool range = wanted.is_array() && wanted.size() == 2 && wanted[0].is_number() &&
+                       wanted[1].is_number() && wanted[0].get<double>() <= wanted[1].get<double>();
+    if (wanted.is_array() ? !range : wanted.is_object()) {
+      problems.push_back("expect " + detail::cut(path) + ": " + detail::cut(wanted.dump()) +
+                         " is neither a value nor [LO, HI] with LO <= HI");
     }
   }
+}
+
+constexpr std::string_view kDragOptions[] = {"dx"};
+constexpr std::string_view kClickOptions[] = {"at", "ctrl"};
+
+// Every kind of step: its action (the field that names it), the other fields it may have, and the
+// check of its values. The player turns each kind into input (InputPlayer::start_step).
+const StepKind kStepKinds[] = {
+    {StepKind::Id::drag, "drag", kDragOptions, check_drag},
+    {StepKind::Id::click, "click", kClickOptions, check_click},
+    {StepKind::Id::click_photo, "click_photo", {}, check_click_photo},
+    {StepKind::Id::key, "key", {}, check_key},
+    {StepKind::Id::type, "type", {}, check_type},
+    {StepKind::Id::resize, "resize", {}, check_resize},
+    {StepKind::Id::frames, "frames", {}, check_frames},
+    {StepKind::Id::screenshot, "screenshot", {}, check_screenshot},
+    {StepKind::Id::expect, "expect", {}, check_expect},
+};
+
+// The problems of one step; empty when it can run.
+Problems step_problems(const json& step) {
+  if (!step.is_object() || step.empty()) {
+    return {"is not an object with one action"};
+  }
+  std::vector<std::string> actions;
+  const StepKind* kind = nullptr;
+  for (const StepKind& candidate : kStepKinds) {
+    if (step.contains(candidate.name)) {
+      actions.emplace_back(candidate.name);
+      kind = &candidate;
+    }
+  }
+  if (actions.size() != 1) {
+    if (!actions.empty()) {
+      return {"has more than one action: " + detail::join_comma(actions)};
+    }
+    std::vector<std::string> names;
+    for (const StepKind& candidate : kStepKinds) {
+      names.emplace_back(candidate.name);
+    }
+    return {"has no action (" + detail::join_comma(names) + ")"};
+  }
+  Problems problems;
+  for (const auto& [name, value] : step.items()) {
+    if (name != kind->name &&
+        std::find(kind->options.begin(), kind->options.end(), name) == kind->options.end()) {
+      problems.push_back("\"" + detail::cut(name) + "\" does not belong to a " +
+                         std::string(kind->name) + " step");
+    }
+  }
+  kind->check(step, problems);
   return problems;
 }
 
 }  // namespace
+
+const StepKind& step_kind(const json& step) {
+  for (const StepKind& kind : kStepKinds) {
+    if (step.contains(kind.name)) {
+      return kind;
+    }
+  }
+  throw std::invalid_argument("not a checked step: " + detail::cut(step.dump()));
+}
 
 std::vector<std::string> play_script_problems(const json& script) {
   if (!script.is_object() || !script.contains("steps") || !script.at("steps").is_array()) {

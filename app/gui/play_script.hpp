@@ -6,6 +6,7 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -35,6 +36,18 @@ struct Chord {
 
 // "ctrl+shift+z", "escape", "plus": nullopt when it is not a chord.
 std::optional<Chord> parse_chord(std::string text);
+
+// A kind of step: named by its action field ({"drag": "w", "dx": 40}), with the other fields it may
+// have and the check of its values.
+struct StepKind {
+  enum class Id { drag, click, click_photo, key, type, resize, frames, screenshot, expect };
+  Id id;
+  std::string_view name;
+  std::span<const std::string_view> options;
+  void (*check)(const nlohmann::json& step, std::vector<std::string>& problems);
+};
+// The kind of a step that play_script_problems found runnable.
+const StepKind& step_kind(const nlohmann::json& step);
 
 // The frames all of a script's `frames` steps may add up to.
 inline constexpr long long kMaxScriptFrames = 100000;

@@ -17,6 +17,31 @@
 #include "core/model/text_format.hpp"
 
 namespace foldlab::gui {
+namespace {
+
+// The 3D view's numbers and the range each may take: the panel's sliders, a scripted `--view` and
+// the remembered settings all read these rows, so that a value one accepts the others accept.
+struct ViewNumber {
+  std::string_view key;
+  float ClothStyle::*field;
+  float lo;
+  float hi;
+  const char* unit;
+};
+// A breeze below 5 mm is not seen: switching the breeze off says "none".
+constexpr ViewNumber kBreezeMm{"breeze_mm", &ClothStyle::breeze_mm, 5.0f, 300.0f, " mm"};
+constexpr ViewNumber kTimeS{"time", &ClothStyle::time_s, 0.0f, 1e6f, " s"};
+constexpr ViewNumber kZExaggeration{"z", &ClothStyle::z_exaggeration, 1.0f, 20.0f, " (times)"};
+constexpr ViewNumber kPrintMm{"print_mm", &ClothStyle::print_mm, 10.0f, 300.0f, " mm"};
+constexpr ViewNumber kViewNumbers[] = {kBreezeMm, kTimeS, kZExaggeration, kPrintMm};
+
+// A logarithmic slider over the row's range, kept within it.
+bool view_slider(const char* label, ClothStyle& style, const ViewNumber& row, const char* format) {
+  return ImGui::SliderFloat(label, &(style.*row.field), row.lo, row.hi, format,
+                            ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp);
+}
+
+}  // namespace
 
 std::optional<std::string> ClothViewPanel::load_photo(const std::string& path) {
   auto loaded = load_print_image(path);
@@ -70,17 +95,6 @@ std::optional<std::string> ClothViewPanel::set_view(std::string_view key, std::s
       {"breeze", &style_.breeze},       {"wireframe", &style_.wireframe},
       {"lod", &style_.level_of_detail}, {"fold_lines", &style_.fold_lines},
       {"ground", &style_.ground},       {"full", &fill_display_}};
-  struct NumberRow {
-    std::string_view key;
-    float* field;
-    double lo;
-    double hi;
-    const char* unit;
-  };
-  const NumberRow numbers[] = {{"breeze_mm", &style_.breeze_mm, 0.0, 300.0, " mm"},
-                               {"time", &style_.time_s, 0.0, 1e6, " s"},
-                               {"z", &style_.z_exaggeration, 1.0, 20.0, " (times)"},
-                               {"print_mm", &style_.print_mm, 10.0, 300.0, " mm"}};
   const std::optional<double> number = parse_number(value);
   for (const auto& [name, field] : switches) {
     if (key == name) {
@@ -91,7 +105,7 @@ std::optional<std::string> ClothViewPanel::set_view(std::string_view key, std::s
       return std::nullopt;
     }
   }
-  for (const NumberRow& row : numbers) {
+  for (const ViewNumber& row : kViewNumbers) {
     if (key != row.key) {
       continue;
     }
@@ -103,8 +117,8 @@ std::optional<std::string> ClothViewPanel::set_view(std::string_view key, std::s
              detail::shortest_number(row.lo) + ", " + detail::shortest_number(row.hi) + "]" +
              row.unit;
     }
-    *row.field = static_cast<float>(*number);
-    if (row.field == &style_.time_s) {
+    style_.*row.field = static_cast<float>(*number);
+    if (row.field == kTimeS.field) {
       breeze_playing_ = false;  // a scripted picture shows that instant
     }
     return std::nullopt;
@@ -241,14 +255,16 @@ void ClothViewPanel::load_settings(const SessionSettings& settings) {
   // Read as doubles: a stored 1e308 must be refused, not converted to int or float first.
   style_.print = static_cast<ClothStyle::Print>(within(
       settings.get("print", 0.0), 0.0, static_cast<double>(ClothStyle::Print::stripes), 0.0));
-  style_.print_mm = static_cast<float>(within(settings.get("print_mm", double{style_.print_mm}),
-                                              10.0, 300.0, double{style_.print_mm}));
+  const auto remembered = [&](const char* name, const ViewNumber& row) {
+    const double fallback = style_.*row.field;
+    style_.*row.field = static_cast<float>(
+        within(settings.get(name, fallback), double{row.lo}, double{row.hi}, fallback));
+  };
+  remembered("print_mm", kPrintMm);
   style_.colour_by = static_cast<ClothStyle::ColourBy>(
       within(settings.get("colour_by", 0.0), 0.0,
              static_cast<double>(ClothStyle::ColourBy::fold_sign), 0.0));
-  style_.z_exaggeration =
-      static_cast<float>(within(settings.get("z_exaggeration", double{style_.z_exaggeration}), 1.0,
-                                20.0, double{style_.z_exaggeration}));
+  remembered("z_exaggeration", kZExaggeration);
 }
 
 void ClothViewPanel::draw(PanelContext& context) {
@@ -272,8 +288,7 @@ void ClothViewPanel::draw(PanelContext& context) {
   settings_row();
   const bool reset = ImGui::SmallButton("reset camera");
   ImGui::SetNextItemWidth(ems(12.0f));
-  ImGui::SliderFloat("z exaggeration", &style_.z_exaggeration, 1.0f, 20.0f, "x %.1f",
-                     ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp);
+  view_slider("z exaggeration", style_, kZExaggeration, "x %.1f");
   help_marker(
       "Draws the out-of-plane depth z this many times deeper, to see the folds; the "
       "numbers are not changed.");
@@ -308,8 +323,7 @@ void ClothViewPanel::draw(PanelContext& context) {
   if (style_.print != ClothStyle::Print::plain) {
     same_line_if_fits(ems(8.5f));
     ImGui::SetNextItemWidth(ems(8.5f));
-    ImGui::SliderFloat("##print size", &style_.print_mm, 10.0f, 300.0f, "%.0f mm",
-                       ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp);
+    view_slider("##print size", style_, kPrintMm, "%.0f mm");
   }
   same_line_if_fits(checkbox_width("breeze"));
   ImGui::Checkbox("breeze", &style_.breeze);
@@ -323,8 +337,7 @@ void ClothViewPanel::draw(PanelContext& context) {
     constexpr const char* kBreezeLabel = "sway (mm)";
     same_line_if_fits(labelled_width(ems(6.0f), kBreezeLabel));
     ImGui::SetNextItemWidth(ems(6.0f));
-    ImGui::SliderFloat(kBreezeLabel, &style_.breeze_mm, 5.0f, 300.0f, "%.0f",
-                       ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp);
+    view_slider(kBreezeLabel, style_, kBreezeMm, "%.0f");
     if (ImGui::IsItemHovered()) {
       ImGui::SetTooltip("How far the breeze sways the cloth at most, in mm");
     }

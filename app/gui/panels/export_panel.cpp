@@ -7,7 +7,7 @@
 
 #include "app/gui/panels/widgets.hpp"
 #include "core/io/export.hpp"
-#include "core/io/gltf_export.hpp"
+#include "core/io/export_formats.hpp"
 #include "core/io/io.hpp"
 
 namespace foldlab::gui {
@@ -73,22 +73,26 @@ void ExportPanel::menu(Document& document, const ClothStyle& style, FileDialog& 
                 }},
                document);
   };
-  if (ImGui::MenuItem("OBJ mesh (.obj)...")) {
-    save_as("Export OBJ mesh", ".obj",
-            [&scene, style, name] { return mesh_to_obj(mesh_as_shown(scene, style), name); });
-  }
-  if (ImGui::MenuItem("glTF mesh (.glb)...")) {
-    save_as("Export glTF mesh", ".glb",
-            [&scene, style, name] { return mesh_to_glb(mesh_as_shown(scene, style), name); });
-  }
-  if (ImGui::MenuItem("Fold lines (.svg)...")) {
-    save_as("Export fold lines (SVG)", ".svg", [&scene, name] {
-      return fold_lines_to_svg(scene.fold_lines(), scene.solution(), name);
+  for (const ExportFormat& format : kExportFormats) {
+    const std::string label = std::string(format.menu_label) + "...";
+    if (!ImGui::MenuItem(label.c_str())) {
+      continue;
+    }
+    const std::string title = "Export " + std::string(format.menu_label);
+    const std::string extension(format.extension);
+    save_as(title.c_str(), extension.c_str(), [&scene, style, name, &format] {
+      // The mesh as the 3D view shows it (with the breeze), built only for a mesh format.
+      DeformedGrid mesh;
+      ExportSource source{.title = name};
+      if (format.content == ExportFormat::Content::mesh) {
+        mesh = mesh_as_shown(scene, style);
+        source.mesh = &mesh;
+      } else {
+        source.lines = &scene.fold_lines();
+        source.solution = &scene.solution();
+      }
+      return format.write(source);
     });
-  }
-  if (ImGui::MenuItem("Fold lines (.csv)...")) {
-    save_as("Export fold lines (CSV)", ".csv",
-            [&scene] { return fold_lines_to_csv(scene.fold_lines()); });
   }
   ImGui::Separator();
   if (ImGui::MenuItem("Window picture (.png)...")) {
