@@ -123,38 +123,41 @@ TEST(ClothUploadRule, ADifferentLatticeReUploadsTheMeshAndItsTrianglesOnlyWhenIt
 TEST(ClothUploadRule, TheNullRendererCountsTheRulesUploads) {
   Scene scene(load_preset(kPresetsDir / "paper-table1-h1400.json").parameters);
   NullRenderer renderer;
+  const ClothView view = renderer.create_cloth_view();
   OrbitCamera camera;
   const FrameSize size{400, 300};
   ClothStyle style;
   const auto draw = [&] {
-    renderer.draw_cloth(nullptr, ImVec2(0, 0), scene, camera, size, style, ClothSlot::a);
+    renderer.draw_cloth(view, nullptr, ImVec2(0, 0), cloth_buffers(scene, style), camera, size,
+                        style);
   };
   draw();
-  EXPECT_EQ(renderer.counters().mesh_uploads, 1u);
-  EXPECT_EQ(renderer.counters().fold_line_uploads, 1u);
-  EXPECT_GT(renderer.counters().drawn_rows, 0u);
-  EXPECT_GT(renderer.counters().drawn_columns, 0u);
+  EXPECT_EQ(renderer.cloth_counters(view).mesh_uploads, 1u);
+  EXPECT_EQ(renderer.cloth_counters(view).fold_line_uploads, 1u);
+  EXPECT_GT(renderer.cloth_counters(view).drawn_rows, 0u);
+  EXPECT_GT(renderer.cloth_counters(view).drawn_columns, 0u);
   draw();
-  EXPECT_EQ(renderer.counters().mesh_uploads, 1u);
+  EXPECT_EQ(renderer.cloth_counters(view).mesh_uploads, 1u);
   style.z_exaggeration = 4.0f;
   draw();
-  EXPECT_EQ(renderer.counters().mesh_uploads, 2u);
-  EXPECT_EQ(renderer.counters().fold_line_uploads, 2u);
+  EXPECT_EQ(renderer.cloth_counters(view).mesh_uploads, 2u);
+  EXPECT_EQ(renderer.cloth_counters(view).fold_line_uploads, 2u);
   style.positive_fold_colour.x() = 0.5f;
   draw();
-  EXPECT_EQ(renderer.counters().mesh_uploads, 2u);
-  EXPECT_EQ(renderer.counters().fold_line_uploads, 3u);
+  EXPECT_EQ(renderer.cloth_counters(view).mesh_uploads, 2u);
+  EXPECT_EQ(renderer.cloth_counters(view).fold_line_uploads, 3u);
   style.wireframe = true;  // every vertex
   draw();
-  EXPECT_EQ(renderer.counters().mesh_uploads, 3u);
-  EXPECT_EQ(renderer.counters().drawn_rows, static_cast<std::uint64_t>(scene.grid().ny));
-  EXPECT_EQ(renderer.counters().drawn_columns, static_cast<std::uint64_t>(scene.grid().nx));
+  EXPECT_EQ(renderer.cloth_counters(view).mesh_uploads, 3u);
+  EXPECT_EQ(renderer.cloth_counters(view).drawn_rows, static_cast<std::uint64_t>(scene.grid().ny));
+  EXPECT_EQ(renderer.cloth_counters(view).drawn_columns,
+            static_cast<std::uint64_t>(scene.grid().nx));
   Parameters p = scene.parameters();
   p.hanging.height_mm = 1500.0;
   scene.set_parameters(p);
   draw();
-  EXPECT_EQ(renderer.counters().mesh_uploads, 4u);
-  EXPECT_EQ(renderer.counters().fold_line_uploads, 4u);
+  EXPECT_EQ(renderer.cloth_counters(view).mesh_uploads, 4u);
+  EXPECT_EQ(renderer.cloth_counters(view).fold_line_uploads, 4u);
 }
 
 }  // namespace

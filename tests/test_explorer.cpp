@@ -887,7 +887,7 @@ TEST_F(ExplorerTest, SavingAsksWhereAndAPictureIsTakenAfterTheMenuAndDialogClose
   // the user says so.
   { std::ofstream(dir_ / "folds.svg") << "old"; }
   ASSERT_EQ(export_as("Fold lines (.svg)...", "folds"), 0);
-  EXPECT_EQ(document().modal_title(), "Export fold lines (SVG)");
+  EXPECT_EQ(document().modal_title(), "Export fold lines as an SVG drawing");
   EXPECT_EQ(explorer_->file_dialog().folder(), fs::weakly_canonical(dir_));
   EXPECT_NE(last_text_.find("folds.svg is there already: write over it?"), std::string::npos)
       << last_text_;
@@ -1933,7 +1933,9 @@ TEST(ClothViewCacheTest, DrawsAgainExactlyWhenSceneCameraSizeOrStyleChange) {
   ClothStyle style;
   ClothViewCache cache;
   RenderCounters counters;
-  const auto draws = [&] { return !cache.reuse(scene, camera, size, style, counters); };
+  const auto draws = [&] {
+    return !cache.reuse(cloth_buffers(scene, style), camera, size, style, counters);
+  };
   EXPECT_TRUE(draws()) << "nothing drawn yet";
   EXPECT_FALSE(draws());
   EXPECT_FALSE(draws());

@@ -1,8 +1,11 @@
 #include "app/gui/cloth_uploads.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include "app/gui/renderer.hpp"
+#include "core/geometry/geometry.hpp"
+#include "core/geometry/scene.hpp"
 
 namespace foldlab::gui {
 
@@ -39,11 +42,45 @@ ClothUploads ClothUploadRule::next(const ClothBufferSources& wanted) {
   return uploads;
 }
 
-ClothBufferSources cloth_buffer_sources(Scene& scene, const OrbitCamera& camera, FrameSize size,
-                                        const ClothStyle& style) {
+ClothBuffers cloth_buffers(Scene& scene, const ClothStyle& style) {
+  ClothBuffers b;
+  b.normals = &scene.normals();
+  b.grid = &scene.grid();
+  if (style.fold_lines) {
+    b.fold_lines = &scene.fold_lines();
+    b.fold_lines_version = scene.version(Stage::fold_lines);
+  }
+  b.normals_version = scene.version(Stage::normals);
+  b.grid_version = scene.version(Stage::grid);
+  const Solution& s = scene.solution();
+  const Parameters& p = scene.parameters();
+  b.fold_count = s.n;
+  b.height_mm = static_cast<float>(p.hanging.height_mm);
+  b.occlusion_reach_mm = static_cast<float>(p.hanging.height_mm / std::max(1, s.n + 1));
+  b.lowest_point_mm = static_cast<float>(lowest_point_mm(s, p.hanging.height_mm));
+  b.z_max_mm = static_cast<float>(s.z_max_mm);
+  b.ground_depth_mm =
+      static_cast<float>(lowest_point_mm(s, p.hanging.height_mm) + 0.05 * p.hanging.height_mm);
+  // Wide enough for every span of a strip, with a span's margin beyond the outer supports.
+  double widest_mm = 0.0;
+  for (const Eigen::Vector3d& support : support_points(s.span_mm, p.shape)) {
+    widest_mm = std::max(widest_mm, std::abs(support.x()));
+    b.supports_mm.push_back(support.cast<float>());
+  }
+  const float one_span =
+      static_cast<float>(0.75 * std::max(p.hanging.length_mm, p.hanging.height_mm));
+  b.ground_extent_mm = std::max(one_span, static_cast<float>(widest_mm + 0.5 * s.span_mm));
+  b.ground_spacing_mm = std::pow(10.0f, std::floor(std::log10(one_span / 2.0f)));
+  while (b.ground_extent_mm / b.ground_spacing_mm > 50.0f) {
+    b.ground_spacing_mm *= 10.0f;  // a long strip: no more than a hundred lines each way
+  }
+  return b;
+}
+
+ClothBufferSources cloth_buffer_sources(const ClothBuffers& buffers, const OrbitCamera& camera,
+                                        FrameSize size, const ClothStyle& style) {
   ClothBufferSources sources;
-  scene.normals();
-  const DeformedGrid& grid = scene.grid();
+  const DeformedGrid& grid = *buffers.grid;
   if (style.wireframe || !style.level_of_detail) {
     sources.lattice = full_lattice(grid);
   } else {
@@ -59,14 +96,11 @@ ClothBufferSources cloth_buffer_sources(Scene& scene, const OrbitCamera& camera,
                                                    Eigen::Vector2f(static_cast<float>(size.width),
                                                                    static_cast<float>(size.height)),
                                                    scale),
-                                    scene.solution().n);
+                                    buffers.fold_count);
   }
-  if (style.fold_lines) {
-    scene.fold_lines();
-  }
-  sources.normals_version = scene.version(Stage::normals);
-  sources.fold_lines_version = scene.version(Stage::fold_lines);
-  sources.grid_version = scene.version(Stage::grid);
+  sources.normals_version = buffers.normals_version;
+  sources.fold_lines_version = buffers.fold_lines_version;
+  sources.grid_version = buffers.grid_version;
   sources.fold_lines_shown = style.fold_lines;
   sources.z_scale = style.z_exaggeration;
   sources.positive_fold_colour = style.positive_fold_colour;

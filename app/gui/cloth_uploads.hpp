@@ -4,17 +4,52 @@
 #pragma once
 
 #include <cstdint>
+#include <vector>
 
 #include <Eigen/Core>
 
 #include "app/gui/camera.hpp"
+#include "core/geometry/geometry.hpp"
 #include "core/geometry/level_of_detail.hpp"
-#include "core/geometry/scene.hpp"
+
+namespace foldlab {
+class Scene;
+}
 
 namespace foldlab::gui {
 
 struct FrameSize;  // renderer.hpp, which includes this header
 struct ClothStyle;
+
+// What the 3D view draws, made from a scene by the panel that shows it (cloth_buffers): the
+// renderer draws these and never sees the model. The pointers are into the scene's stages and stay
+// valid until the scene changes; each part carries the version it was made from, so that a
+// renderer uploads only what changed.
+struct ClothBuffers {
+  const DeformedGrid* grid = nullptr;
+  const std::vector<Eigen::Vector3f>* normals = nullptr;  // per vertex of the grid
+  const FoldLines* fold_lines = nullptr;                  // null while the style hides them
+  std::uint64_t normals_version = 0;
+  std::uint64_t fold_lines_version = 0;  // 0 while hidden
+  std::uint64_t grid_version = 0;
+  int fold_count = 0;  // n: the level of detail keeps a row in every fold
+  // The occlusion looks as far as a fold's spacing: the walls of the fold a point sits in, not
+  // the far side of the cloth.
+  float occlusion_reach_mm = 0.0f;
+  float height_mm = 0.0f;        // the shadow's softness follows the cloth's height
+  float lowest_point_mm = 0.0f;  // where the breeze sways most
+  float z_max_mm = 0.0f;         // the colour map's range when colouring by z
+  // The ground grid below the cloth (its depth, half-width and line spacing) and the supports, in
+  // model coordinates; they follow the grid's version.
+  float ground_depth_mm = 0.0f;
+  float ground_extent_mm = 0.0f;
+  float ground_spacing_mm = 0.0f;
+  std::vector<Eigen::Vector3f> supports_mm;
+};
+
+// Brings the stages the view shows up to date (lazily: the fold lines only when the style shows
+// them) and points at them.
+ClothBuffers cloth_buffers(Scene& scene, const ClothStyle& style);
 
 // Model coordinates have y pointing down (gravity); the view's world has +Y up. z may be drawn
 // exaggerated: a position scales by this, a normal by its inverse.
@@ -64,10 +99,9 @@ class ClothUploadRule {
   std::uint64_t decoration_version_ = ~std::uint64_t{0};
 };
 
-// The sources of a frame's buffers: brings the stages the view shows up to date (lazily) and picks
-// the lattice for the view's size and camera (level_of_detail.hpp), or every vertex for the
-// wireframe or with the level of detail off.
-ClothBufferSources cloth_buffer_sources(Scene& scene, const OrbitCamera& camera, FrameSize size,
-                                        const ClothStyle& style);
+// The sources of a frame's buffers: picks the lattice for the view's size and camera
+// (level_of_detail.hpp), or every vertex for the wireframe or with the level of detail off.
+ClothBufferSources cloth_buffer_sources(const ClothBuffers& buffers, const OrbitCamera& camera,
+                                        FrameSize size, const ClothStyle& style);
 
 }  // namespace foldlab::gui

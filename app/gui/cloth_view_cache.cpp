@@ -2,15 +2,11 @@
 
 namespace foldlab::gui {
 
-bool ClothViewCache::reuse(Scene& scene, const OrbitCamera& camera, FrameSize size,
+bool ClothViewCache::reuse(const ClothBuffers& buffers, const OrbitCamera& camera, FrameSize size,
                            const ClothStyle& style, RenderCounters& counters) {
-  scene.normals();
-  if (style.fold_lines) {
-    scene.fold_lines();
-  }
-  Key key{scene.version(Stage::normals),
-          style.fold_lines ? scene.version(Stage::fold_lines) : 0,
-          scene.version(Stage::grid),
+  Key key{buffers.normals_version,
+          buffers.fold_lines_version,
+          buffers.grid_version,
           camera,
           size,
           style};

@@ -714,7 +714,7 @@ void Explorer::frame() {
       present_button(*panel, *tile);
     }
   }
-  stats_overlay(show_stats_, document_.scene(), renderer_.counters());
+  stats_overlay(show_stats_, document_.scene(), renderer_counters());
   draw_unsaved_dialog();
   presets_->draw_dialogs(document_);
   files_.draw(document_);

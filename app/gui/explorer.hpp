@@ -79,8 +79,12 @@ class Explorer {
   Document& document() { return document_; }
   Scene& scene() { return document_.scene(); }
   const Parameters& edited() const { return document_.edited(); }
-  const RenderCounters& renderer_counters() const { return renderer_.counters(); }
-  const RenderCounters& compare_counters() const { return renderer_.compare_counters(); }
+  const RenderCounters& renderer_counters() const {
+    return renderer_.cloth_counters(cloth_view_->a_view());
+  }
+  const RenderCounters& compare_counters() const {
+    return renderer_.cloth_counters(cloth_view_->b_view());
+  }
   const AnalysisPanel& analysis() const { return *analysis_; }
   const PresetsPanel& presets() const { return *presets_; }
   const ParametersPanel& parameters_panel() const { return *parameters_; }

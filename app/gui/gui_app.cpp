@@ -178,15 +178,15 @@ bool sleep_until_input(Surface& surface, double timeout_s) {
 }
 
 // One frame of the loop, as plain as Dear ImGui's examples: poll, new frame, build, render,
-// present. False when the script ended the run.
+// present; a scripted run plugs in before the frame and after it is drawn. False when the script
+// ended the run.
 bool draw_frame(Surface& surface, Renderer& renderer, Explorer& explorer, ScriptedRun& script,
-                FrameTimes& times, const GuiRunOptions& options, LayoutFile* layout, int frame) {
+                FrameTimes& times, LayoutFile* layout, int frame) {
   times.start();
   surface.new_frame();
-  if (!script.play(explorer, surface)) {
+  if (!script.before_frame(explorer, surface, frame)) {
     return false;
   }
-  script.before_new_frame(explorer, frame);
   explorer.prepare_frame();
   renderer.new_frame();
   ImGui::NewFrame();
@@ -195,21 +195,11 @@ bool draw_frame(Surface& surface, Renderer& renderer, Explorer& explorer, Script
   if (layout != nullptr) {
     layout->save_when_asked();
   }
+  const FrameSize size = surface.framebuffer_size();
   surface.bind_framebuffer();
-  renderer.render_draw_data(surface.framebuffer_size());
-  take_screenshots(explorer, renderer, surface.framebuffer_size(), options.screenshot_path,
-                   script.is_last(frame));
-  if (const std::optional<std::string> path = script.take_play_screenshot()) {
-    // The script's paths are known only as it plays, and a photo or swatch may have been
-    // loaded by an earlier step: checked against every file the run has read, before writing.
-    std::vector<app::NamedPath> inputs = options.input_files;
-    for (const app::NamedPath& open : explorer.files_in_use()) {
-      inputs.push_back(open);
-    }
-    app::check_distinct_files({{"the --play script's screenshot step", *path}}, inputs);
-    write_png(path->c_str(), surface.framebuffer_size(),
-              renderer.read_pixels(surface.framebuffer_size()));
-  }
+  renderer.render_draw_data(size);
+  write_requested_picture(explorer, renderer, size);
+  script.after_render(explorer, renderer, size, frame);
   surface.present();
   times.stop(surface);
   return true;
@@ -287,7 +277,8 @@ class ExplorerRun {
       std::signal(SIGINT, request_close);
       std::signal(SIGHUP, request_close);
     }
-    script_.emplace(options.frames, std::move(animation), std::move(player));
+    script_.emplace(options.frames, std::move(animation), std::move(player),
+                    options.screenshot_path, options.input_files);
   }
 
   // A frame is due unless the user's window rests: nothing animating, no panel busy, and the
@@ -316,7 +307,7 @@ class ExplorerRun {
       surface_.keep_open();  // the explorer asks first; its answer ends the loop or not
     }
     ++frames_since_wake_;
-    if (!draw_frame(surface_, *renderer_, *explorer_, *script_, times_, options_,
+    if (!draw_frame(surface_, *renderer_, *explorer_, *script_, times_,
                     layout_ ? &*layout_ : nullptr, frame_)) {
       return false;
     }

@@ -5,27 +5,36 @@
 
 namespace foldlab::gui {
 
-void NullRenderer::draw_cloth(ImDrawList* draw_list, ImVec2 min, Scene& scene,
-                              const OrbitCamera& camera, FrameSize size, const ClothStyle& style,
-                              ClothSlot slot) {
+ClothView NullRenderer::create_cloth_view() {
+  views_.emplace_back();
+  return static_cast<ClothView>(views_.size()) - 1;
+}
+
+void NullRenderer::draw_cloth(ClothView view, ImDrawList* draw_list, ImVec2 min,
+                              const ClothBuffers& buffers, const OrbitCamera& camera,
+                              FrameSize size, const ClothStyle& style) {
   (void)draw_list;
   (void)min;
-  const auto i = static_cast<std::size_t>(slot);
-  RenderCounters& counters = counters_[i];
-  ++counters.frames;
-  if (view_cache_[i].reuse(scene, camera, size, style, counters)) {
+  View& v = views_.at(static_cast<std::size_t>(view));
+  ++v.counters.frames;
+  if (v.cache.reuse(buffers, camera, size, style, v.counters)) {
     return;
   }
-  const ClothBufferSources sources = cloth_buffer_sources(scene, camera, size, style);
-  const ClothUploads uploads = upload_rule_[i].next(sources);
+  const ClothBufferSources sources = cloth_buffer_sources(buffers, camera, size, style);
+  const ClothUploads uploads = v.upload_rule.next(sources);
   if (uploads.mesh) {
-    ++counters.mesh_uploads;
-    counters.drawn_columns = sources.lattice.columns.size();
-    counters.drawn_rows = sources.lattice.rows.size();
+    ++v.counters.mesh_uploads;
+    v.counters.drawn_columns = sources.lattice.columns.size();
+    v.counters.drawn_rows = sources.lattice.rows.size();
   }
   if (uploads.fold_lines) {
-    ++counters.fold_line_uploads;
+    ++v.counters.fold_line_uploads;
   }
+}
+
+const RenderCounters& NullRenderer::cloth_counters(ClothView view) const {
+  static const RenderCounters kNone;
+  return view == kNoClothView ? kNone : views_.at(static_cast<std::size_t>(view)).counters;
 }
 
 void NullRenderer::update_image(int image, int width, int height, const std::uint32_t* rgba) {

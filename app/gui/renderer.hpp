@@ -15,7 +15,6 @@
 #include "app/gui/camera.hpp"
 #include "app/gui/cloth_uploads.hpp"
 #include "app/gui/print_image.hpp"
-#include "core/geometry/scene.hpp"
 
 namespace foldlab::gui {
 
@@ -68,16 +67,15 @@ struct RenderCounters {
 
 // Whether the 3D view's picture must be drawn again. On a software GL (llvmpipe) drawing the
 // cloth is most of a frame, yet most frames show the same picture: a hover, a tooltip, a plot
-// zoomed, a frame woken by the idle timeout. The picture depends on the scene's stages it shows,
-// the camera, the view's size and the style, and on nothing else; while all of them are unchanged
-// the renderer keeps the last picture and only copies it to the screen.
+// zoomed, a frame woken by the idle timeout. The picture depends on the versions of the buffers it
+// shows, the camera, the view's size and the style, and on nothing else; while all of them are
+// unchanged the renderer keeps the last picture and only copies it to the screen.
 class ClothViewCache {
  public:
-  // Brings the stages the view shows up to date (lazily) and returns true when the picture drawn
-  // last shows exactly this; otherwise remembers this as the picture about to be drawn. Counts
-  // either outcome in `counters`.
-  bool reuse(Scene& scene, const OrbitCamera& camera, FrameSize size, const ClothStyle& style,
-             RenderCounters& counters);
+  // True when the picture drawn last shows exactly this; otherwise remembers this as the picture
+  // about to be drawn. Counts either outcome in `counters`.
+  bool reuse(const ClothBuffers& buffers, const OrbitCamera& camera, FrameSize size,
+             const ClothStyle& style, RenderCounters& counters);
   // The kept picture is gone (its framebuffer was lost or re-made): the next call draws.
   void forget() { drawn_.reset(); }
 
@@ -94,11 +92,11 @@ class ClothViewCache {
   std::optional<Key> drawn_;
 };
 
-// Which cloth a 3D view draws: A, the one being edited, or B, the one pinned beside it
-// (compare.hpp). Each has buffers and a kept picture of its own, so that showing both uploads
-// only what changed in each, and B costs nothing while it is not drawn.
-enum class ClothSlot { a, b };
-inline constexpr int kClothSlots = 2;
+// A cloth the renderer keeps buffers and a picture for (create_cloth_view). A panel showing two
+// cloths side by side asks for two, so that each uploads only what changed in it, and the second
+// costs nothing until it is first drawn.
+using ClothView = int;
+inline constexpr ClothView kNoClothView = -1;
 
 class Renderer {
  public:
@@ -111,15 +109,15 @@ class Renderer {
   // Fills the current window's content area with the style's (opaque) window background, behind
   // everything the window draws. The style's own WindowBg is transparent.
   virtual void fill_window_background() = 0;
-  // Draws the cloth as a `size` picture into [min, min + size) of `draw_list`, bringing the
-  // scene's stages it needs up to date (lazily) and uploading only what changed; while nothing
-  // the picture shows has changed, shows the last one again instead of drawing it.
-  virtual void draw_cloth(ImDrawList* draw_list, ImVec2 min, Scene& scene,
-                          const OrbitCamera& camera, FrameSize size, const ClothStyle& style,
-                          ClothSlot slot) = 0;
-  // A's cloth (the one the report and the stats show), and B's.
-  virtual const RenderCounters& counters() const = 0;
-  virtual const RenderCounters& compare_counters() const = 0;
+  virtual ClothView create_cloth_view() = 0;
+  // Draws `view`'s cloth as a `size` picture into [min, min + size) of `draw_list`, uploading only
+  // the buffers that changed; while nothing the picture shows has changed, shows the last one
+  // again instead of drawing it.
+  virtual void draw_cloth(ClothView view, ImDrawList* draw_list, ImVec2 min,
+                          const ClothBuffers& buffers, const OrbitCamera& camera, FrameSize size,
+                          const ClothStyle& style) = 0;
+  // All zero for kNoClothView.
+  virtual const RenderCounters& cloth_counters(ClothView view) const = 0;
 
   // An RGBA image for ImGui::Image, kept by the renderer until it is destroyed. The first row of
   // `rgba` is the image's first (GL: bottom) row.
@@ -145,10 +143,10 @@ class NullRenderer final : public Renderer {
   // Builds the atlas's pixels, as a backend would before uploading them.
   void fonts_changed() override;
   void fill_window_background() override {}
-  void draw_cloth(ImDrawList* draw_list, ImVec2 min, Scene& scene, const OrbitCamera& camera,
-                  FrameSize size, const ClothStyle& style, ClothSlot slot) override;
-  const RenderCounters& counters() const override { return counters_[0]; }
-  const RenderCounters& compare_counters() const override { return counters_[1]; }
+  ClothView create_cloth_view() override;
+  void draw_cloth(ClothView view, ImDrawList* draw_list, ImVec2 min, const ClothBuffers& buffers,
+                  const OrbitCamera& camera, FrameSize size, const ClothStyle& style) override;
+  const RenderCounters& cloth_counters(ClothView view) const override;
   int create_image() override { return image_count_++; }
   void update_image(int image, int width, int height, const std::uint32_t* rgba) override;
   ImTextureID texture(int image) const override;
@@ -162,9 +160,12 @@ class NullRenderer final : public Renderer {
   std::uint64_t image_updates() const { return image_updates_; }
 
  private:
-  RenderCounters counters_[kClothSlots];  // by ClothSlot
-  ClothViewCache view_cache_[kClothSlots];
-  ClothUploadRule upload_rule_[kClothSlots];
+  struct View {
+    RenderCounters counters;
+    ClothViewCache cache;
+    ClothUploadRule upload_rule;
+  };
+  std::vector<View> views_;  // by ClothView
   int image_count_ = 0;
   std::uint64_t image_updates_ = 0;
 };

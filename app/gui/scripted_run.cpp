@@ -18,10 +18,13 @@
 
 namespace foldlab::gui {
 ScriptedRun::ScriptedRun(int frames, std::optional<AnimatedInput> animation,
-                         std::optional<InputPlayer> player)
+                         std::optional<InputPlayer> player, std::string final_screenshot,
+                         std::vector<app::NamedPath> input_files)
     : frames_(frames),
       animation_(std::move(animation)),
       player_(std::move(player)),
+      final_screenshot_(std::move(final_screenshot)),
+      input_files_(std::move(input_files)),
       deadline_(std::chrono::steady_clock::now() + std::chrono::seconds(30)) {}
 
 bool ScriptedRun::wants_frame(int frame, const Explorer& explorer) {
@@ -35,7 +38,15 @@ bool ScriptedRun::wants_frame(int frame, const Explorer& explorer) {
   return frame < frames_ + extra_frames_;
 }
 
-void ScriptedRun::before_new_frame(Explorer& explorer, int frame) const {
+bool ScriptedRun::before_frame(Explorer& explorer, Surface& surface, int frame) {
+  if (player_) {
+    if (!player_->before_new_frame(ImGui::GetIO(), explorer)) {
+      return false;
+    }
+    if (const std::optional<FrameSize> size = player_->take_resize_request()) {
+      surface.resize(*size);
+    }
+  }
   if (frames_ > 0) {
     ImGuiIO& io = ImGui::GetIO();
     io.MousePos = ImVec2(-FLT_MAX, -FLT_MAX);
@@ -44,23 +55,26 @@ void ScriptedRun::before_new_frame(Explorer& explorer, int frame) const {
   if (animation_) {
     explorer.set_input(animation_->key(), animation_->value(frame));
   }
-}
-
-bool ScriptedRun::play(Explorer& explorer, Surface& surface) {
-  if (!player_) {
-    return true;
-  }
-  if (!player_->before_new_frame(ImGui::GetIO(), explorer)) {
-    return false;
-  }
-  if (const std::optional<FrameSize> size = player_->take_resize_request()) {
-    surface.resize(*size);
-  }
   return true;
 }
 
-std::optional<std::string> ScriptedRun::take_play_screenshot() {
-  return player_ ? player_->take_screenshot_request() : std::nullopt;
+void ScriptedRun::after_render(Explorer& explorer, Renderer& renderer, FrameSize size, int frame) {
+  if (is_last(frame) && !final_screenshot_.empty()) {
+    write_png(final_screenshot_.c_str(), size, renderer.read_pixels(size));
+  }
+  const std::optional<std::string> path =
+      player_ ? player_->take_screenshot_request() : std::nullopt;
+  if (!path) {
+    return;
+  }
+  // The script's paths are known only as it plays, and a photo or swatch may have been loaded by
+  // an earlier step: checked against every file the run has read, before writing.
+  std::vector<app::NamedPath> inputs = input_files_;
+  for (const app::NamedPath& open : explorer.files_in_use()) {
+    inputs.push_back(open);
+  }
+  app::check_distinct_files({{"the --play script's screenshot step", *path}}, inputs);
+  write_png(path->c_str(), size, renderer.read_pixels(size));
 }
 
 int ScriptedRun::exit_status() const {
@@ -109,8 +123,7 @@ void FrameTimes::print_report(const char* backend, const std::string& animate_ke
   std::cout << report.dump(2) << "\n";
 }
 
-void take_screenshots(Explorer& explorer, Renderer& renderer, FrameSize size,
-                      const std::string& final_path, bool last_frame) {
+void write_requested_picture(Explorer& explorer, Renderer& renderer, FrameSize size) {
   if (const std::optional<PictureRequest> request = explorer.take_screenshot_request()) {
     try {
       std::vector<std::uint8_t> pixels = renderer.read_pixels(size);
@@ -131,9 +144,6 @@ void take_screenshots(Explorer& explorer, Renderer& renderer, FrameSize size,
     } catch (const SurfaceError& e) {
       explorer.notify(std::string("Not exported: ") + e.what(), true);
     }
-  }
-  if (last_frame && !final_path.empty()) {
-    write_png(final_path.c_str(), size, renderer.read_pixels(size));
   }
 }
 

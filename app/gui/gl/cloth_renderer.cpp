@@ -280,11 +280,10 @@ struct ShadowProgram {
         darkness(uniform(program, "darkness")) {}
 };
 
-void set_breeze_uniforms(const BreezeUniforms& u, Scene& scene, const ClothStyle& style) {
-  const float depth =
-      static_cast<float>(lowest_point_mm(scene.solution(), scene.parameters().hanging.height_mm));
+void set_breeze_uniforms(const BreezeUniforms& u, const ClothBuffers& buffers,
+                         const ClothStyle& style) {
   glUniform1f(u.amplitude_mm, style.breeze ? style.breeze_mm : 0.0f);
-  glUniform1f(u.depth_mm, depth);
+  glUniform1f(u.depth_mm, buffers.lowest_point_mm);
   glUniform1f(u.time_s, style.time_s);
   glUniform1f(u.z_scale, style.z_exaggeration);
 }
@@ -450,10 +449,10 @@ void ClothRenderer::resize(FrameSize size) {
                             gl_->depth_buffer.get());
 }
 
-void ClothRenderer::upload_mesh(Scene& scene, float z_scale, const DrawnLattice& lattice,
-                                bool indices_too) {
-  const std::vector<Eigen::Vector3f>& normals = scene.normals();
-  const DeformedGrid& grid = scene.grid();
+void ClothRenderer::upload_mesh(const ClothBuffers& buffers, float z_scale,
+                                const DrawnLattice& lattice, bool indices_too) {
+  const std::vector<Eigen::Vector3f>& normals = *buffers.normals;
+  const DeformedGrid& grid = *buffers.grid;
   const int columns = static_cast<int>(lattice.columns.size());
   const int rows = static_cast<int>(lattice.rows.size());
   std::vector<Eigen::Vector3f> positions;
@@ -477,12 +476,8 @@ void ClothRenderer::upload_mesh(Scene& scene, float z_scale, const DrawnLattice&
   }
   gl_->footprint_min_mm = positions.empty() ? Eigen::Vector2f::Zero() : low;
   gl_->footprint_max_mm = positions.empty() ? Eigen::Vector2f::Zero() : high;
-  // The occlusion looks as far as a fold's spacing: the walls of the fold a point sits in, not
-  // the far side of the cloth.
-  const Solution& s = scene.solution();
-  const float reach_mm =
-      static_cast<float>(scene.parameters().hanging.height_mm / std::max(1, s.n + 1));
-  const FoldOcclusion hidden = fold_occlusion(positions, world_normals, columns, rows, reach_mm);
+  const FoldOcclusion hidden =
+      fold_occlusion(positions, world_normals, columns, rows, buffers.occlusion_reach_mm);
   std::vector<MeshVertex> vertices(positions.size());
   for (std::size_t i = 0; i < vertices.size(); ++i) {
     vertices[i] = {positions[i], world_normals[i], material[i], {hidden.front[i], hidden.back[i]}};
@@ -504,8 +499,7 @@ void ClothRenderer::upload_mesh(Scene& scene, float z_scale, const DrawnLattice&
   ++counters_.mesh_uploads;
 }
 
-void ClothRenderer::upload_fold_lines(Scene& scene, const ClothStyle& style) {
-  const FoldLines& lines = scene.fold_lines();
+void ClothRenderer::upload_fold_lines(const FoldLines& lines, const ClothStyle& style) {
   std::vector<Vertex> vertices;
   gl_->line_firsts.clear();
   gl_->line_counts.clear();
@@ -524,26 +518,12 @@ void ClothRenderer::upload_fold_lines(Scene& scene, const ClothStyle& style) {
   ++counters_.fold_line_uploads;
 }
 
-// The ground grid below the cloth and the two supports; they follow the solution (span, depth).
-void ClothRenderer::upload_decorations(Scene& scene) {
-  const Solution& s = scene.solution();
-  const Parameters& p = scene.parameters();
-  const float depth =
-      static_cast<float>(lowest_point_mm(s, p.hanging.height_mm) + 0.05 * p.hanging.height_mm);
+// The ground grid below the cloth and the supports; they follow the solution (span, depth).
+void ClothRenderer::upload_decorations(const ClothBuffers& buffers) {
+  const float depth = buffers.ground_depth_mm;
+  const float extent = buffers.ground_extent_mm;
+  const float spacing = buffers.ground_spacing_mm;
   gl_->ground_y_mm = -depth;
-  // Wide enough for every span of a strip, with a span's margin beyond the outer supports.
-  const std::vector<Eigen::Vector3d> supports = support_points(s.span_mm, p.shape);
-  double widest_mm = 0.0;
-  for (const Eigen::Vector3d& support : supports) {
-    widest_mm = std::max(widest_mm, std::abs(support.x()));
-  }
-  const float one_span =
-      static_cast<float>(0.75 * std::max(p.hanging.length_mm, p.hanging.height_mm));
-  const float extent = std::max(one_span, static_cast<float>(widest_mm + 0.5 * s.span_mm));
-  float spacing = std::pow(10.0f, std::floor(std::log10(one_span / 2.0f)));
-  while (extent / spacing > 50.0f) {
-    spacing *= 10.0f;  // a long strip: no more than a hundred lines each way
-  }
   const Eigen::Vector3f grey(0.36f, 0.38f, 0.42f);
   std::vector<Vertex> vertices;
   for (float v = -std::floor(extent / spacing) * spacing; v <= extent; v += spacing) {
@@ -555,8 +535,8 @@ void ClothRenderer::upload_decorations(Scene& scene) {
   gl_->ground_vertex_count = static_cast<GLsizei>(vertices.size());
   gl_->support_first = static_cast<GLsizei>(vertices.size());
   const Eigen::Vector3f support_colour(0.95f, 0.85f, 0.25f);
-  for (const Eigen::Vector3d& support : supports) {
-    vertices.push_back({to_world(support.cast<float>()), support_colour});
+  for (const Eigen::Vector3f& support : buffers.supports_mm) {
+    vertices.push_back({to_world(support), support_colour});
   }
   gl_->support_count = static_cast<GLsizei>(vertices.size()) - gl_->support_first;
   glBindBuffer(GL_ARRAY_BUFFER, gl_->decor_vbo.get());
@@ -605,7 +585,7 @@ void ClothRenderer::select_mesh_program(const ClothStyle& style) {
   gl_->mesh_program = &*program;
 }
 
-void ClothRenderer::set_mesh_colour_uniforms(Scene& scene, const ClothStyle& style) {
+void ClothRenderer::set_mesh_colour_uniforms(const ClothBuffers& buffers, const ClothStyle& style) {
   const MeshProgram& program = *gl_->mesh_program;
   glUniform3fv(program.front_colour, 1, style.front_colour.data());
   glUniform3fv(program.back_colour, 1, style.back_colour.data());
@@ -615,7 +595,7 @@ void ClothRenderer::set_mesh_colour_uniforms(Scene& scene, const ClothStyle& sty
   glActiveTexture(GL_TEXTURE0);
   glBindTexture(GL_TEXTURE_2D, gl_->print_texture.get());
   glUniform1i(program.print_texture, 0);
-  glUniform1f(program.z_range_mm, static_cast<float>(std::max(scene.solution().z_max_mm, 1e-3)));
+  glUniform1f(program.z_range_mm, std::max(buffers.z_max_mm, 1e-3f));
   glUniform3fv(program.colour_map, static_cast<GLsizei>(kDivergingMap.size()),
                kDivergingMap.front().data());
   glUniform3fv(program.positive_colour, 1, style.positive_fold_colour.data());
@@ -629,9 +609,9 @@ void ClothRenderer::set_mesh_colour_uniforms(Scene& scene, const ClothStyle& sty
 
 // Blended over the ground, under the cloth (which is drawn first and hides it), before the ground
 // lines so that they stay crisp on top.
-void ClothRenderer::draw_shadow(Scene& scene, const Eigen::Matrix4f& view_projection) {
-  const float height_mm = static_cast<float>(scene.parameters().hanging.height_mm);
-  const float soft_mm = 0.12f * height_mm;
+void ClothRenderer::draw_shadow(const ClothBuffers& buffers,
+                                const Eigen::Matrix4f& view_projection) {
+  const float soft_mm = 0.12f * buffers.height_mm;
   const Eigen::Vector2f low = gl_->footprint_min_mm - Eigen::Vector2f::Constant(soft_mm);
   const Eigen::Vector2f high = gl_->footprint_max_mm + Eigen::Vector2f::Constant(soft_mm);
   const float y = gl_->ground_y_mm;
@@ -659,8 +639,8 @@ void ClothRenderer::draw_shadow(Scene& scene, const Eigen::Matrix4f& view_projec
   glDisable(GL_BLEND);
 }
 
-unsigned ClothRenderer::render(Scene& scene, const OrbitCamera& camera, FrameSize size,
-                               const ClothStyle& style) {
+unsigned ClothRenderer::render(const ClothBuffers& buffers, const OrbitCamera& camera,
+                               FrameSize size, const ClothStyle& style) {
   GLint previous_viewport[4];
   glGetIntegerv(GL_VIEWPORT, previous_viewport);
   resize(size);
@@ -668,19 +648,18 @@ unsigned ClothRenderer::render(Scene& scene, const OrbitCamera& camera, FrameSiz
   const float aspect =
       static_cast<float>(size.width) / static_cast<float>(std::max(size.height, 1));
   const Eigen::Matrix4f view_projection = camera.projection(aspect) * camera.view();
-  // Bring the stages this view needs up to date (lazily), then upload only what changed
-  // (cloth_uploads.hpp). The wireframe shows the grid as it is; otherwise the cells are a few
-  // pixels (level_of_detail.hpp).
-  const ClothBufferSources sources = cloth_buffer_sources(scene, camera, size, style);
+  // Upload only what changed (cloth_uploads.hpp). The wireframe shows the grid as it is;
+  // otherwise the cells are a few pixels (level_of_detail.hpp).
+  const ClothBufferSources sources = cloth_buffer_sources(buffers, camera, size, style);
   const ClothUploads uploads = upload_rule_.next(sources);
   if (uploads.mesh) {
-    upload_mesh(scene, style.z_exaggeration, sources.lattice, uploads.mesh_indices);
+    upload_mesh(buffers, style.z_exaggeration, sources.lattice, uploads.mesh_indices);
   }
   if (uploads.fold_lines) {
-    upload_fold_lines(scene, style);
+    upload_fold_lines(*buffers.fold_lines, style);
   }
   if (uploads.decorations) {
-    upload_decorations(scene);
+    upload_decorations(buffers);
   }
 
   glBindFramebuffer(GL_FRAMEBUFFER, gl_->framebuffer.get());
@@ -702,8 +681,8 @@ unsigned ClothRenderer::render(Scene& scene, const OrbitCamera& camera, FrameSiz
   glUseProgram(mesh.program.get());
   glUniformMatrix4fv(mesh.view_projection, 1, GL_FALSE, view_projection.data());
   glUniform3fv(mesh.eye, 1, eye.data());
-  set_mesh_colour_uniforms(scene, style);
-  set_breeze_uniforms(mesh.breeze, scene, style);
+  set_mesh_colour_uniforms(buffers, style);
+  set_breeze_uniforms(mesh.breeze, buffers, style);
   glBindVertexArray(gl_->mesh_vao.get());
   glDrawElements(GL_TRIANGLES, gl_->mesh_index_count, GL_UNSIGNED_INT, nullptr);
   glDisable(GL_POLYGON_OFFSET_FILL);
@@ -713,7 +692,7 @@ unsigned ClothRenderer::render(Scene& scene, const OrbitCamera& camera, FrameSiz
   glUniformMatrix4fv(line.view_projection, 1, GL_FALSE, view_projection.data());
   const GLint override_colour = line.override_colour;
   glUniform1f(line.point_size, 1.0f);
-  set_breeze_uniforms(line.breeze, scene, style);
+  set_breeze_uniforms(line.breeze, buffers, style);
   if (style.wireframe && gl::set_polygon_lines(true)) {
     glUniform4f(override_colour, 0.1f, 0.1f, 0.1f, 1.0f);
     glDrawElements(GL_TRIANGLES, gl_->mesh_index_count, GL_UNSIGNED_INT, nullptr);
@@ -721,7 +700,7 @@ unsigned ClothRenderer::render(Scene& scene, const OrbitCamera& camera, FrameSiz
   }
   glUniform4f(override_colour, 0.0f, 0.0f, 0.0f, 0.0f);
   if (style.ground) {
-    draw_shadow(scene, view_projection);
+    draw_shadow(buffers, view_projection);
     glUseProgram(line.program.get());
   }
   if (style.fold_lines && !gl_->line_counts.empty()) {

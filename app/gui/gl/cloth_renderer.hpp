@@ -13,7 +13,6 @@
 #include "app/gui/cloth_uploads.hpp"
 #include "app/gui/renderer.hpp"
 #include "core/geometry/level_of_detail.hpp"
-#include "core/geometry/scene.hpp"
 
 namespace foldlab::gui {
 
@@ -24,9 +23,10 @@ class ClothRenderer {
   ClothRenderer(const ClothRenderer&) = delete;
   ClothRenderer& operator=(const ClothRenderer&) = delete;
 
-  // Draws the scene into the renderer's own framebuffer and returns its colour texture (GL name).
+  // Draws the cloth into the renderer's own framebuffer and returns its colour texture (GL name).
   // Leaves the framebuffer binding at 0 and the viewport as it found it.
-  unsigned render(Scene& scene, const OrbitCamera& camera, FrameSize size, const ClothStyle& style);
+  unsigned render(const ClothBuffers& buffers, const OrbitCamera& camera, FrameSize size,
+                  const ClothStyle& style);
 
   const RenderCounters& counters() const { return counters_; }
   // The framebuffer render() drew into (GL name), for copying it to the screen.
@@ -36,13 +36,14 @@ class ClothRenderer {
   struct Gl;
   void resize(FrameSize size);
   // `indices_too`: the lattice's size changed, so its triangles are uploaded as well.
-  void upload_mesh(Scene& scene, float z_scale, const DrawnLattice& lattice, bool indices_too);
-  void upload_fold_lines(Scene& scene, const ClothStyle& style);
-  void upload_decorations(Scene& scene);
+  void upload_mesh(const ClothBuffers& buffers, float z_scale, const DrawnLattice& lattice,
+                   bool indices_too);
+  void upload_fold_lines(const FoldLines& lines, const ClothStyle& style);
+  void upload_decorations(const ClothBuffers& buffers);
   void update_print(const ClothStyle& style);
   void select_mesh_program(const ClothStyle& style);
-  void set_mesh_colour_uniforms(Scene& scene, const ClothStyle& style);
-  void draw_shadow(Scene& scene, const Eigen::Matrix4f& view_projection);
+  void set_mesh_colour_uniforms(const ClothBuffers& buffers, const ClothStyle& style);
+  void draw_shadow(const ClothBuffers& buffers, const Eigen::Matrix4f& view_projection);
 
   // The GL objects, each owned by a handle; kept out of the header so that it needs no GL include.
   std::unique_ptr<Gl> gl_;

@@ -21,9 +21,7 @@ class GlRenderer final : public Renderer {
   GlRenderer() { ImGui_ImplOpenGL3_Init(gl::kImGuiGlslVersion); }
   ~GlRenderer() override {
     textures_.clear();
-    for (std::unique_ptr<ClothRenderer>& cloth : cloth_) {
-      cloth.reset();
-    }
+    views_.clear();
     ImGui_ImplOpenGL3_Shutdown();
   }
   GlRenderer(const GlRenderer&) = delete;
@@ -44,24 +42,40 @@ class GlRenderer final : public Renderer {
 
   void fill_window_background() override { fill_current_window_background(); }
 
-  void draw_cloth(ImDrawList* draw_list, ImVec2 min, Scene& scene, const OrbitCamera& camera,
-                  FrameSize size, const ClothStyle& style, ClothSlot slot) override {
-    const auto i = static_cast<std::size_t>(slot);
-    std::unique_ptr<ClothRenderer>& cloth = cloth_[i];
-    if (!cloth) {
-      cloth = std::make_unique<ClothRenderer>();  // B's buffers are made when B is first shown
+  ClothView create_cloth_view() override {
+    views_.emplace_back();
+    return static_cast<ClothView>(views_.size()) - 1;
+  }
+
+  void draw_cloth(ClothView id, ImDrawList* draw_list, ImVec2 min, const ClothBuffers& buffers,
+                  const OrbitCamera& camera, FrameSize size, const ClothStyle& style) override {
+    View& view = views_.at(static_cast<std::size_t>(id));
+    if (!view.cloth) {
+      view.cloth = std::make_unique<ClothRenderer>();  // GL objects only once a view is drawn
     }
-    ++view_counters_[i].frames;
-    if (!view_cache_[i].reuse(scene, camera, size, style, view_counters_[i])) {
-      cloth->render(scene, camera, size, style);
+    ++view.counters.frames;
+    if (!view.cache.reuse(buffers, camera, size, style, view.counters)) {
+      view.cloth->render(buffers, camera, size, style);
     }
     add_framebuffer_blit(
-        draw_list, cloth->framebuffer(), size, min,
+        draw_list, view.cloth->framebuffer(), size, min,
         ImVec2(min.x + static_cast<float>(size.width), min.y + static_cast<float>(size.height)));
   }
 
-  const RenderCounters& counters() const override { return joined(ClothSlot::a); }
-  const RenderCounters& compare_counters() const override { return joined(ClothSlot::b); }
+  // The uploads' counts of a view's cloth joined to its view counters.
+  const RenderCounters& cloth_counters(ClothView id) const override {
+    static const RenderCounters kNone;
+    if (id == kNoClothView) {
+      return kNone;
+    }
+    const View& view = views_.at(static_cast<std::size_t>(id));
+    RenderCounters& out = view.joined;
+    out = view.cloth ? view.cloth->counters() : RenderCounters{};
+    out.frames = view.counters.frames;
+    out.view_renders = view.counters.view_renders;
+    out.view_cache_hits = view.counters.view_cache_hits;
+    return out;
+  }
 
   int create_image() override {
     textures_.push_back(GlTexture::make());
@@ -121,22 +135,14 @@ class GlRenderer final : public Renderer {
   }
 
  private:
-  // The uploads' counts of a slot's cloth joined to its view counters.
-  const RenderCounters& joined(ClothSlot slot) const {
-    const auto i = static_cast<std::size_t>(slot);
-    RenderCounters& out = counters_[i];
-    out = cloth_[i] ? cloth_[i]->counters() : RenderCounters{};
-    out.frames = view_counters_[i].frames;
-    out.view_renders = view_counters_[i].view_renders;
-    out.view_cache_hits = view_counters_[i].view_cache_hits;
-    return out;
-  }
-
-  std::unique_ptr<ClothRenderer> cloth_[kClothSlots];  // by ClothSlot
+  struct View {
+    std::unique_ptr<ClothRenderer> cloth;
+    ClothViewCache cache;
+    RenderCounters counters;  // frames, view_renders, view_cache_hits
+    mutable RenderCounters joined;
+  };
+  std::vector<View> views_;  // by ClothView
   bool fonts_changed_ = false;
-  ClothViewCache view_cache_[kClothSlots];
-  RenderCounters view_counters_[kClothSlots];  // frames, view_renders, view_cache_hits
-  mutable RenderCounters counters_[kClothSlots];
   std::vector<GlTexture> textures_;
   std::vector<FrameSize> sizes_;
 };

@@ -393,11 +393,18 @@ void ClothViewPanel::draw(PanelContext& context) {
     camera_.zoom(io.MouseWheel);
   }
   ImDrawList* draw = ImGui::GetWindowDrawList();
-  renderer.draw_cloth(draw, origin, scene, camera_, size, style_, ClothSlot::a);
+  const auto draw_view = [&](int which, ImVec2 at, Scene& cloth, FrameSize view_size) {
+    if (views_[which] == kNoClothView) {
+      views_[which] = renderer.create_cloth_view();
+    }
+    renderer.draw_cloth(views_[which], draw, at, cloth_buffers(cloth, style_), camera_, view_size,
+                        style_);
+  };
+  draw_view(0, origin, scene, size);
   const ImVec2 b_origin(origin.x + static_cast<float>(size.width), origin.y);
   if (compare) {
-    renderer.draw_cloth(draw, b_origin, document.compare().scene(scene.grid_nx()), camera_,
-                        FrameSize{area.width - size.width, area.height}, style_, ClothSlot::b);
+    draw_view(1, b_origin, document.compare().scene(scene.grid_nx()),
+              FrameSize{area.width - size.width, area.height});
   }
   // Wrapped inside the view, so that a narrow view keeps it off the colour bar beside it.
   draw->AddText(ImGui::GetFont(), ImGui::GetFontSize(), ImVec2(origin.x + 6, origin.y + 4),

@@ -29,6 +29,10 @@ class ClothViewPanel : public Panel {
   static constexpr const char* kBrowseLabel = "browse...";
   ClothStyle& style() { return style_; }
   const OrbitCamera& camera() const { return camera_; }
+  // The renderer's views of A's cloth (the one being edited) and of B's (pinned beside it);
+  // kNoClothView until first drawn.
+  ClothView a_view() const { return views_[0]; }
+  ClothView b_view() const { return views_[1]; }
   const ClothStyle& style() const { return style_; }
   // A view setting by name (print=checks, print_file=swatch.jpg, print_mm=40, colour_by=z,
   // breeze=1, breeze_mm=80, time=1.5, z=8, wireframe=1, fold_lines=0, ground=0, full=1 for a
@@ -51,6 +55,7 @@ class ClothViewPanel : public Panel {
 
   ClothStyle style_;
   OrbitCamera camera_;
+  ClothView views_[2] = {kNoClothView, kNoClothView};  // A, B
   bool camera_framed_ = false;
   Eigen::Vector3f framed_centre_ = Eigen::Vector3f::Zero();  // the sphere last framed
   float framed_radius_mm_ = 1.0f;

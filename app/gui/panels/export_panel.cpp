@@ -78,7 +78,7 @@ void ExportPanel::menu(Document& document, const ClothStyle& style, FileDialog& 
     if (!ImGui::MenuItem(label.c_str())) {
       continue;
     }
-    const std::string title = "Export " + std::string(format.menu_label);
+    const std::string title = "Export " + std::string(format.what);
     const std::string extension(format.extension);
     save_as(title.c_str(), extension.c_str(), [&scene, style, name, &format] {
       // The mesh as the 3D view shows it (with the breeze), built only for a mesh format.
