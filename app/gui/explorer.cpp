@@ -206,39 +206,17 @@ bool Explorer::busy() const {
                      [](const std::unique_ptr<Panel>& panel) { return panel->busy(); });
 }
 
-namespace {
-
-// The dragged edges as the session keeps them.
-struct SplitKey {
-  const char* key;
-  float LayoutSplits::*split;
-};
-constexpr SplitKey kSplitKeys[] = {{"layout_left_column", &LayoutSplits::left_column},
-                                   {"layout_parameters", &LayoutSplits::parameters},
-                                   {"layout_views", &LayoutSplits::views},
-                                   {"layout_fold_plot", &LayoutSplits::fold_plot},
-                                   {"layout_results", &LayoutSplits::results}};
-
-}  // namespace
-
 void Explorer::save_settings(SessionSettings& settings) const {
-  for (const SplitKey& k : kSplitKeys) {
-    settings.set(k.key, splits_.*k.split);
-  }
+  layout_.save_settings(settings);
   settings.set("ui_scale_percent", appearance_.scale_percent());
   settings.set("light_theme", appearance_.light_theme());
-  settings.set("automatic_layout", automatic_layout_);
   settings.set("expert", document_.expert_mode());
 }
 
 void Explorer::load_settings(const SessionSettings& settings) {
   appearance_.request(settings.get("ui_scale_percent", appearance_.scale_percent()),
                       settings.get("light_theme", appearance_.light_theme()));
-  automatic_layout_ = settings.get("automatic_layout", automatic_layout_);
-  for (const SplitKey& k : kSplitKeys) {
-    const float split = settings.get(k.key, splits_.*k.split);
-    splits_.*k.split = split >= 0.0f && split <= 1.0f ? split : -1.0f;
-  }
+  layout_.load_settings(settings);
   document_.set_expert_mode(settings.get("expert", document_.expert_mode()));
 }
 
@@ -370,14 +348,14 @@ void Explorer::view_menu() {
   appearance_.request(percent, light);
   ImGui::Separator();
   ImGui::MenuItem("Pipeline stats", nullptr, &show_stats_);
-  if (presented_) {
+  if (layout_.presented()) {
     if (ImGui::MenuItem("Back to the tiles", "Esc")) {
-      present_request_ = std::optional<Tile>();
+      layout_.request_present(std::nullopt);
     }
   } else if (ImGui::BeginMenu("Present (fill the window)")) {
     for (const std::unique_ptr<Panel>& panel : panels_) {
       if (const std::optional<Tile> tile = panel->tile(); tile && ImGui::MenuItem(panel->name())) {
-        present_request_ = tile;
+        layout_.request_present(tile);
       }
     }
     ImGui::EndMenu();
@@ -385,8 +363,9 @@ void Explorer::view_menu() {
   if (ImGui::MenuItem(IntroWindow::kTitle)) {
     intro_->open();
   }
-  if (ImGui::MenuItem("Reset layout", nullptr, false, !automatic_layout_ || splits_.any())) {
-    reset_layout();
+  if (ImGui::MenuItem("Reset layout", nullptr, false,
+                      !layout_.automatic() || layout_.splits().any())) {
+    layout_.reset();
   }
   ImGui::Separator();
   ImGui::TextDisabled("About FoldLab: %s", app::version_line().c_str());
@@ -408,31 +387,8 @@ void Explorer::handle_escape() {
   }
   if (ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId)) {
     ImGui::ClosePopupsExceptModals();
-  } else if (presented_) {
-    present(std::nullopt);
-  }
-}
-
-void Explorer::present(std::optional<Tile> tile) {
-  if (presented_ == tile) {
-    return;
-  }
-  const auto window_of = [this](Tile t) -> ImGuiWindow* {
-    for (const std::unique_ptr<Panel>& panel : panels_) {
-      if (panel->tile() == t) {
-        return ImGui::FindWindowByName(panel->window_label().c_str());
-      }
-    }
-    return nullptr;
-  };
-  if (!automatic_layout_ && tile) {
-    if (const ImGuiWindow* window = window_of(*tile)) {
-      restore_[static_cast<int>(*tile)] = PanelRect{window->Pos, window->SizeFull};
-    }
-  }
-  presented_ = tile;
-  for (bool& valid : placed_valid_) {
-    valid = false;
+  } else if (layout_.presented()) {
+    layout_.present(std::nullopt);
   }
 }
 
@@ -479,63 +435,6 @@ float Explorer::presentation_bar() {
   return menu_height_ + height;
 }
 
-void Explorer::present_button(const Panel& panel, Tile tile) {
-  const std::string label = panel.window_label();
-  ImGuiWindow* window = ImGui::FindWindowByName(label.c_str());
-  if (window == nullptr || !window->Active) {
-    return;
-  }
-  ImGui::Begin(label.c_str());  // appends to the panel's window, whose title bar holds the button
-  const bool presented = presented_ == tile;
-  const ImRect title = window->TitleBarRect();
-  const float side = title.GetHeight();
-  // The button sits above the content: it must not widen what the window scrolls over.
-  const ImVec2 cursor = ImGui::GetCursorScreenPos();
-  const ImVec2 cursor_max = window->DC.CursorMaxPos;
-  ImGui::PushClipRect(title.Min, title.Max, false);
-  ImGui::SetCursorScreenPos(ImVec2(title.Max.x - side, title.Min.y));
-  const bool clicked = ImGui::InvisibleButton("##present", ImVec2(side, side));
-  const bool hovered = ImGui::IsItemHovered();
-  // A square outline (fill the window), or two overlapping ones (back to the tiles).
-  ImDrawList* draw = window->DrawList;
-  const ImU32 colour = ImGui::GetColorU32(hovered ? ImGuiCol_Text : ImGuiCol_TextDisabled);
-  const float thickness = std::max(1.0f, std::round(ImGui::GetFontSize() / 12.0f));
-  const float inset = std::round(0.28f * side);
-  const ImVec2 a(title.Max.x - side + inset, title.Min.y + inset);
-  const ImVec2 b(title.Max.x - inset, title.Max.y - inset);
-  if (presented) {
-    const float shift = std::round(0.15f * side);
-    draw->AddRect(ImVec2(a.x + shift, a.y), ImVec2(b.x, b.y - shift), colour, 0.0f, 0, thickness);
-    draw->AddRectFilled(ImVec2(a.x, a.y + shift), ImVec2(b.x - shift, b.y),
-                        ImGui::GetColorU32(ImGuiCol_TitleBgActive));
-    draw->AddRect(ImVec2(a.x, a.y + shift), ImVec2(b.x - shift, b.y), colour, 0.0f, 0, thickness);
-  } else {
-    draw->AddRect(a, b, colour, 0.0f, 0, thickness);
-    draw->AddLine(ImVec2(a.x, a.y + thickness), ImVec2(b.x, a.y + thickness), colour, thickness);
-  }
-  ImGui::PopClipRect();
-  ImGui::SetCursorScreenPos(cursor);
-  window->DC.CursorMaxPos = cursor_max;
-  if (hovered) {
-    ImGui::SetTooltip(presented ? "Back to the tiles (Esc)"
-                                : "Fill the window with this view (or double-click its title); "
-                                  "Esc returns");
-  }
-  // As ImGui tells a double-click on a title from one on an item in it.
-  const ImGuiContext& g = *ImGui::GetCurrentContext();
-  const bool title_double_clicked =
-      !hovered && g.HoveredWindow == window && g.HoveredIdPreviousFrame == 0 &&
-      ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left) && title.Contains(ImGui::GetIO().MousePos);
-  if (clicked || title_double_clicked) {
-    present_request_ = presented ? std::optional<Tile>() : std::optional<Tile>(tile);
-  }
-  if (presented) {
-    // Never written to imgui.ini: the user's arrangement keeps this panel's own place.
-    window->Flags |= ImGuiWindowFlags_NoSavedSettings;
-  }
-  ImGui::End();
-}
-
 float Explorer::main_menu() {
   float height = 0.0f;
   if (ImGui::BeginMainMenuBar()) {
@@ -556,118 +455,17 @@ float Explorer::main_menu() {
       intro_->open();
     }
     // One click from the menu bar while the user's own arrangement is shown.
-    if ((!automatic_layout_ || splits_.any()) && !presented_ && ImGui::MenuItem("Reset layout")) {
-      reset_layout();
+    const bool presenting = layout_.presented().has_value();
+    if ((!layout_.automatic() || layout_.splits().any()) && !presenting &&
+        ImGui::MenuItem("Reset layout")) {
+      layout_.reset();
     }
-    if (presented_ && ImGui::MenuItem("Back to the tiles (Esc)")) {
-      present_request_ = std::optional<Tile>();
+    if (presenting && ImGui::MenuItem("Back to the tiles (Esc)")) {
+      layout_.request_present(std::nullopt);
     }
     ImGui::EndMainMenuBar();
   }
   return height;
-}
-
-void Explorer::reset_layout() {
-  automatic_layout_ = true;
-  splits_ = LayoutSplits{};
-  document_.mark_session_dirty();
-  for (bool& valid : placed_valid_) {
-    valid = false;
-  }
-}
-
-bool Explorer::follow_user_edits(const TiledLayout& layout) {
-  if (!automatic_layout_) {
-    return false;
-  }
-  bool moved = false;
-  for (const std::unique_ptr<Panel>& panel : panels_) {
-    const std::optional<Tile> tile = panel->tile();
-    if (!tile || !placed_valid_[static_cast<int>(*tile)]) {
-      continue;
-    }
-    const ImGuiWindow* window = ImGui::FindWindowByName(panel->window_label().c_str());
-    const PanelRect& last = placed_[static_cast<int>(*tile)];
-    if (window == nullptr ||
-        (window->Pos.x == last.pos.x && window->Pos.y == last.pos.y &&
-         window->SizeFull.x == last.size.x && window->SizeFull.y == last.size.y)) {
-      continue;
-    }
-    if (window->SizeFull.x == last.size.x && window->SizeFull.y == last.size.y) {
-      automatic_layout_ = false;  // moved by its title: the user's arrangement stays until reset
-      document_.mark_session_dirty();
-      return false;
-    }
-    const float before[] = {last.pos.x, last.pos.x + last.size.x, last.pos.y,
-                            last.pos.y + last.size.y};
-    const float now[] = {window->Pos.x, window->Pos.x + window->SizeFull.x, window->Pos.y,
-                         window->Pos.y + window->SizeFull.y};
-    for (int edge = 0; edge < 4; ++edge) {
-      if (now[edge] != before[edge]) {
-        moved |= drag_split(*tile, static_cast<Edge>(edge), now[edge], ImGui::GetIO().DisplaySize,
-                            menu_height_, layout, splits_);
-      }
-    }
-  }
-  if (moved) {
-    document_.mark_session_dirty();
-  }
-  return moved;
-}
-
-void Explorer::place(Tile tile, const TiledLayout& layout) {
-  const int i = static_cast<int>(tile);
-  PanelRect rect = layout[tile];
-  ImGuiCond when = automatic_layout_ ? ImGuiCond_Always : ImGuiCond_FirstUseEver;
-  if (presented_ == tile) {
-    rect = presented_rect_;
-    when = ImGuiCond_Always;
-  } else if (restore_[i]) {
-    rect = *restore_[i];
-    when = ImGuiCond_Always;
-    restore_[i].reset();
-  }
-  ImGui::SetNextWindowPos(rect.pos, when);
-  ImGui::SetNextWindowSize(rect.size, when);
-  placed_[i] = rect;
-  placed_valid_[i] = automatic_layout_ && !presented_;
-}
-
-std::vector<std::pair<std::string, PanelRect>> Explorer::panel_rects() const {
-  std::vector<std::pair<std::string, PanelRect>> out;
-  for (const std::unique_ptr<Panel>& panel : panels_) {
-    if (!panel->tile()) {
-      continue;
-    }
-    const ImGuiWindow* window = ImGui::FindWindowByName(panel->window_label().c_str());
-    if (window != nullptr && window->Active) {  // not one hidden behind a presented panel
-      out.emplace_back(panel->key(), PanelRect{window->Pos, window->SizeFull});
-    }
-  }
-  return out;
-}
-
-bool Explorer::panels_fill_window() const {
-  const auto rects = panel_rects();
-  const ImVec2 display = ImGui::GetIO().DisplaySize;
-  double area = 0.0;
-  for (std::size_t i = 0; i < rects.size(); ++i) {
-    const PanelRect& a = rects[i].second;
-    if (a.pos.x < 0.0f || a.pos.y < menu_height_ || a.pos.x + a.size.x > display.x ||
-        a.pos.y + a.size.y > display.y) {
-      return false;
-    }
-    area += static_cast<double>(a.size.x) * a.size.y;
-    for (std::size_t j = i + 1; j < rects.size(); ++j) {
-      const PanelRect& b = rects[j].second;
-      if (a.pos.x < b.pos.x + b.size.x && b.pos.x < a.pos.x + a.size.x &&
-          a.pos.y < b.pos.y + b.size.y && b.pos.y < a.pos.y + a.size.y) {
-        return false;
-      }
-    }
-  }
-  return rects.size() == kTileCount &&
-         area == static_cast<double>(display.x) * (static_cast<double>(display.y) - menu_height_);
 }
 
 bool Explorer::awaits_time() const {
@@ -683,36 +481,27 @@ void Explorer::frame() {
   const bool light_before = appearance_.light_theme();
   appearance_.handle_shortcuts();
   handle_shortcuts();
-  if (present_request_) {
-    present(*present_request_);
-    present_request_.reset();
-  }
   handle_escape();
   menu_height_ = main_menu();
-  const ImVec2 display = ImGui::GetIO().DisplaySize;
-  TiledLayout layout = tiled_layout(display, menu_height_, ImGui::GetFontSize(), splits_);
-  if (follow_user_edits(layout)) {
-    layout = tiled_layout(display, menu_height_, ImGui::GetFontSize(), splits_);
-  }
-  if (presented_) {
-    const float top = presentation_bar();
-    presented_rect_ =
-        PanelRect{ImVec2(0.0f, top),
-                  ImVec2(std::floor(display.x), std::max(std::floor(display.y - top), 1.0f))};
+  layout_.begin_frame(menu_height_);
+  if (layout_.presented()) {
+    layout_.set_presented_top(presentation_bar());
   }
   PanelContext context{document_, renderer_, *photo_, files_, wake_, parameters_->animating()};
   for (const std::unique_ptr<Panel>& panel : panels_) {
-    const std::optional<Tile> tile = panel->tile();
-    if (tile && presented_ && *tile != *presented_) {
+    if (!layout_.shows(*panel)) {
       continue;  // hidden behind the presented one, and not drawn
     }
-    if (tile) {
-      place(*tile, layout);
+    if (panel->tile()) {
+      layout_.place(*panel);
     }
     panel->draw(context);
-    if (tile) {
-      present_button(*panel, *tile);
+    if (panel->tile()) {
+      layout_.present_button(*panel);
     }
+  }
+  if (layout_.take_changed()) {
+    document_.mark_session_dirty();
   }
   stats_overlay(show_stats_, document_.scene(), renderer_counters());
   draw_unsaved_dialog();

@@ -16,6 +16,7 @@
 #include "app/common/inputs.hpp"
 #include "app/gui/appearance.hpp"
 #include "app/gui/document.hpp"
+#include "app/gui/layout.hpp"
 #include "app/gui/panel.hpp"
 #include "app/gui/panels/analysis_panel.hpp"
 #include "app/gui/panels/calibration_panel.hpp"
@@ -98,23 +99,19 @@ class Explorer {
   // empty event); callable from any thread. None by default: a test's loop never sleeps.
   void set_wake(std::function<void()> wake) { wake_ = std::move(wake); }
   Appearance& appearance() { return appearance_; }
-  // True while the panels follow the window (until the user moves or resizes one).
-  bool automatic_layout() const { return automatic_layout_; }
-  // Where each tiled panel was drawn in the last frame (ImGui's windows, after the user's moves),
-  // by Panel::key().
-  std::vector<std::pair<std::string, PanelRect>> panel_rects() const;
-  // True when the tiled panels cover the display below the menu bar exactly: no gap, no overlap,
-  // nothing outside it.
-  bool panels_fill_window() const;
-  // "View > Reset layout": the automatic layout again, from the next frame.
-  void reset_layout();
-  // The edges of the tiles the user dragged (a resize of a tiled panel moves the edge it shares
-  // with its neighbours, which follow).
-  const LayoutSplits& layout_splits() const { return splits_; }
-  // Presentation: one tiled panel fills the window under a read-out of n, Q and z_max, the other
-  // tiles hidden; nullopt returns to the tiles. Not remembered: a start shows the tiles.
-  void present(std::optional<Tile> tile);
-  std::optional<Tile> presented() const { return presented_; }
+  // Where the panels go (layout.hpp); presentation shows a read-out of n, Q and z_max above the
+  // presented panel.
+  Layout& layout() { return layout_; }
+  const Layout& layout() const { return layout_; }
+  bool automatic_layout() const { return layout_.automatic(); }
+  std::vector<std::pair<std::string, PanelRect>> panel_rects() const {
+    return layout_.panel_rects();
+  }
+  bool panels_fill_window() const { return layout_.fills_window(); }
+  void reset_layout() { layout_.reset(); }
+  const LayoutSplits& layout_splits() const { return layout_.splits(); }
+  void present(std::optional<Tile> tile) { layout_.present(tile); }
+  std::optional<Tile> presented() const { return layout_.presented(); }
 
   void save_session_now();
   // The window is asked to close: true when nothing would be lost (no unsaved edits, or a session
@@ -163,21 +160,11 @@ class Explorer {
 
   // Escape closes an open menu or combo first, then leaves presentation.
   void handle_escape();
-  // A resize of a tiled panel since the last frame moves the split it shares with its
-  // neighbours; a move of one leaves the tiles for the user's own arrangement. True when a split
-  // moved.
-  bool follow_user_edits(const TiledLayout& layout);
   // The read-out over a presented panel; returns where the panel starts below it.
   float presentation_bar();
-  // The button in a tiled panel's title bar (and a double-click on the title) that presents it,
-  // or returns to the tiles.
-  void present_button(const Panel& panel, Tile tile);
   // The menu bar (View, Export); returns its height, where the tiled panels start.
   float main_menu();
   void view_menu();
-  // Before a tiled panel's draw: its place in the automatic layout (every frame until the user
-  // moves a panel), or the whole window below the read-out while it is presented.
-  void place(Tile tile, const TiledLayout& layout);
   // The settings the explorer itself remembers (UI scale and theme, automatic layout, expert
   // mode); each panel saves and loads its own.
   void save_settings(SessionSettings& settings) const;
@@ -211,17 +198,8 @@ class Explorer {
   IntroWindow* intro_ = nullptr;             // "What am I looking at?"
   std::function<void()> wake_;
   bool show_stats_ = false;
-  bool automatic_layout_ = true;
   float menu_height_ = 0.0f;
-  PanelRect placed_[kTileCount];  // what place() set last, to see the user's moves
-  bool placed_valid_[kTileCount] = {};
-  LayoutSplits splits_;
-  std::optional<Tile> presented_;
-  PanelRect presented_rect_;  // where the presented panel goes this frame
-  // A click on a title bar's button asks, the next frame's start presents (or returns).
-  std::optional<std::optional<Tile>> present_request_;
-  // In the user's own arrangement, where a presented panel was, to put it back.
-  std::optional<PanelRect> restore_[kTileCount];
+  Layout layout_{panels_};
   bool quit_confirmed_ = false;
   double last_session_save_time_ = 0.0;
 };

@@ -1,0 +1,253 @@
+#include "app/gui/layout.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <imgui.h>
+#include <imgui_internal.h>  // FindWindowByName: where the user moved a panel
+
+namespace foldlab::gui {
+namespace {
+
+// The dragged edges as the session keeps them.
+struct SplitKey {
+  const char* key;
+  float LayoutSplits::*split;
+};
+constexpr SplitKey kSplitKeys[] = {{"layout_left_column", &LayoutSplits::left_column},
+                                   {"layout_parameters", &LayoutSplits::parameters},
+                                   {"layout_views", &LayoutSplits::views},
+                                   {"layout_fold_plot", &LayoutSplits::fold_plot},
+                                   {"layout_results", &LayoutSplits::results}};
+
+}  // namespace
+
+void Layout::begin_frame(float menu_height_px) {
+  if (present_request_) {
+    present(*present_request_);
+    present_request_.reset();
+  }
+  menu_height_px_ = menu_height_px;
+  const ImVec2 display = ImGui::GetIO().DisplaySize;
+  tiles_ = tiled_layout(display, menu_height_px_, ImGui::GetFontSize(), splits_);
+  if (follow_user_edits()) {
+    tiles_ = tiled_layout(display, menu_height_px_, ImGui::GetFontSize(), splits_);
+  }
+}
+
+void Layout::set_presented_top(float top_px) {
+  const ImVec2 display = ImGui::GetIO().DisplaySize;
+  presented_rect_ =
+      PanelRect{ImVec2(0.0f, top_px),
+                ImVec2(std::floor(display.x), std::max(std::floor(display.y - top_px), 1.0f))};
+}
+
+bool Layout::shows(const Panel& panel) const {
+  const std::optional<Tile> tile = panel.tile();
+  return !tile || !presented_ || *tile == *presented_;
+}
+
+void Layout::forget_places() {
+  for (bool& valid : placed_valid_) {
+    valid = false;
+  }
+}
+
+void Layout::reset() {
+  automatic_ = true;
+  splits_ = LayoutSplits{};
+  changed_ = true;
+  forget_places();
+}
+
+void Layout::save_settings(SessionSettings& settings) const {
+  for (const SplitKey& k : kSplitKeys) {
+    settings.set(k.key, splits_.*k.split);
+  }
+  settings.set("automatic_layout", automatic_);
+}
+
+void Layout::load_settings(const SessionSettings& settings) {
+  automatic_ = settings.get("automatic_layout", automatic_);
+  for (const SplitKey& k : kSplitKeys) {
+    const float split = settings.get(k.key, splits_.*k.split);
+    splits_.*k.split = split >= 0.0f && split <= 1.0f ? split : -1.0f;
+  }
+}
+
+void Layout::present(std::optional<Tile> tile) {
+  if (presented_ == tile) {
+    return;
+  }
+  const auto window_of = [this](Tile t) -> ImGuiWindow* {
+    for (const std::unique_ptr<Panel>& panel : panels_) {
+      if (panel->tile() == t) {
+        return ImGui::FindWindowByName(panel->window_label().c_str());
+      }
+    }
+    return nullptr;
+  };
+  if (!automatic_ && tile) {
+    if (const ImGuiWindow* window = window_of(*tile)) {
+      restore_[static_cast<int>(*tile)] = PanelRect{window->Pos, window->SizeFull};
+    }
+  }
+  presented_ = tile;
+  forget_places();
+}
+
+void Layout::present_button(const Panel& panel) {
+  const Tile tile = *panel.tile();
+  const std::string label = panel.window_label();
+  ImGuiWindow* window = ImGui::FindWindowByName(label.c_str());
+  if (window == nullptr || !window->Active) {
+    return;
+  }
+  ImGui::Begin(label.c_str());  // appends to the panel's window, whose title bar holds the button
+  const bool presented = presented_ == tile;
+  const ImRect title = window->TitleBarRect();
+  const float side = title.GetHeight();
+  // The button sits above the content: it must not widen what the window scrolls over.
+  const ImVec2 cursor = ImGui::GetCursorScreenPos();
+  const ImVec2 cursor_max = window->DC.CursorMaxPos;
+  ImGui::PushClipRect(title.Min, title.Max, false);
+  ImGui::SetCursorScreenPos(ImVec2(title.Max.x - side, title.Min.y));
+  const bool clicked = ImGui::InvisibleButton("##present", ImVec2(side, side));
+  const bool hovered = ImGui::IsItemHovered();
+  // A square outline (fill the window), or two overlapping ones (back to the tiles).
+  ImDrawList* draw = window->DrawList;
+  const ImU32 colour = ImGui::GetColorU32(hovered ? ImGuiCol_Text : ImGuiCol_TextDisabled);
+  const float thickness = std::max(1.0f, std::round(ImGui::GetFontSize() / 12.0f));
+  const float inset = std::round(0.28f * side);
+  const ImVec2 a(title.Max.x - side + inset, title.Min.y + inset);
+  const ImVec2 b(title.Max.x - inset, title.Max.y - inset);
+  if (presented) {
+    const float shift = std::round(0.15f * side);
+    draw->AddRect(ImVec2(a.x + shift, a.y), ImVec2(b.x, b.y - shift), colour, 0.0f, 0, thickness);
+    draw->AddRectFilled(ImVec2(a.x, a.y + shift), ImVec2(b.x - shift, b.y),
+                        ImGui::GetColorU32(ImGuiCol_TitleBgActive));
+    draw->AddRect(ImVec2(a.x, a.y + shift), ImVec2(b.x - shift, b.y), colour, 0.0f, 0, thickness);
+  } else {
+    draw->AddRect(a, b, colour, 0.0f, 0, thickness);
+    draw->AddLine(ImVec2(a.x, a.y + thickness), ImVec2(b.x, a.y + thickness), colour, thickness);
+  }
+  ImGui::PopClipRect();
+  ImGui::SetCursorScreenPos(cursor);
+  window->DC.CursorMaxPos = cursor_max;
+  if (hovered) {
+    ImGui::SetTooltip(presented ? "Back to the tiles (Esc)"
+                                : "Fill the window with this view (or double-click its title); "
+                                  "Esc returns");
+  }
+  // As ImGui tells a double-click on a title from one on an item in it.
+  const ImGuiContext& g = *ImGui::GetCurrentContext();
+  const bool title_double_clicked =
+      !hovered && g.HoveredWindow == window && g.HoveredIdPreviousFrame == 0 &&
+      ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left) && title.Contains(ImGui::GetIO().MousePos);
+  if (clicked || title_double_clicked) {
+    present_request_ = presented ? std::optional<Tile>() : std::optional<Tile>(tile);
+  }
+  if (presented) {
+    // Never written to imgui.ini: the user's arrangement keeps this panel's own place.
+    window->Flags |= ImGuiWindowFlags_NoSavedSettings;
+  }
+  ImGui::End();
+}
+
+bool Layout::follow_user_edits() {
+  if (!automatic_) {
+    return false;
+  }
+  bool moved = false;
+  for (const std::unique_ptr<Panel>& panel : panels_) {
+    const std::optional<Tile> tile = panel->tile();
+    if (!tile || !placed_valid_[static_cast<int>(*tile)]) {
+      continue;
+    }
+    const ImGuiWindow* window = ImGui::FindWindowByName(panel->window_label().c_str());
+    const PanelRect& last = placed_[static_cast<int>(*tile)];
+    if (window == nullptr ||
+        (window->Pos.x == last.pos.x && window->Pos.y == last.pos.y &&
+         window->SizeFull.x == last.size.x && window->SizeFull.y == last.size.y)) {
+      continue;
+    }
+    if (window->SizeFull.x == last.size.x && window->SizeFull.y == last.size.y) {
+      automatic_ = false;  // moved by its title: the user's arrangement stays until reset
+      changed_ = true;
+      return false;
+    }
+    const float before[] = {last.pos.x, last.pos.x + last.size.x, last.pos.y,
+                            last.pos.y + last.size.y};
+    const float now[] = {window->Pos.x, window->Pos.x + window->SizeFull.x, window->Pos.y,
+                         window->Pos.y + window->SizeFull.y};
+    for (int edge = 0; edge < 4; ++edge) {
+      if (now[edge] != before[edge]) {
+        moved |= drag_split(*tile, static_cast<Edge>(edge), now[edge], ImGui::GetIO().DisplaySize,
+                            menu_height_px_, tiles_, splits_);
+      }
+    }
+  }
+  if (moved) {
+    changed_ = true;
+  }
+  return moved;
+}
+
+void Layout::place(const Panel& panel) {
+  const Tile tile = *panel.tile();
+  const int i = static_cast<int>(tile);
+  PanelRect rect = tiles_[tile];
+  ImGuiCond when = automatic_ ? ImGuiCond_Always : ImGuiCond_FirstUseEver;
+  if (presented_ == tile) {
+    rect = presented_rect_;
+    when = ImGuiCond_Always;
+  } else if (restore_[i]) {
+    rect = *restore_[i];
+    when = ImGuiCond_Always;
+    restore_[i].reset();
+  }
+  ImGui::SetNextWindowPos(rect.pos, when);
+  ImGui::SetNextWindowSize(rect.size, when);
+  placed_[i] = rect;
+  placed_valid_[i] = automatic_ && !presented_;
+}
+
+std::vector<std::pair<std::string, PanelRect>> Layout::panel_rects() const {
+  std::vector<std::pair<std::string, PanelRect>> out;
+  for (const std::unique_ptr<Panel>& panel : panels_) {
+    if (!panel->tile()) {
+      continue;
+    }
+    const ImGuiWindow* window = ImGui::FindWindowByName(panel->window_label().c_str());
+    if (window != nullptr && window->Active) {  // not one hidden behind a presented panel
+      out.emplace_back(panel->key(), PanelRect{window->Pos, window->SizeFull});
+    }
+  }
+  return out;
+}
+
+bool Layout::fills_window() const {
+  const auto rects = panel_rects();
+  const ImVec2 display = ImGui::GetIO().DisplaySize;
+  double area = 0.0;
+  for (std::size_t i = 0; i < rects.size(); ++i) {
+    const PanelRect& a = rects[i].second;
+    if (a.pos.x < 0.0f || a.pos.y < menu_height_px_ || a.pos.x + a.size.x > display.x ||
+        a.pos.y + a.size.y > display.y) {
+      return false;
+    }
+    area += static_cast<double>(a.size.x) * a.size.y;
+    for (std::size_t j = i + 1; j < rects.size(); ++j) {
+      const PanelRect& b = rects[j].second;
+      if (a.pos.x < b.pos.x + b.size.x && b.pos.x < a.pos.x + a.size.x &&
+          a.pos.y < b.pos.y + b.size.y && b.pos.y < a.pos.y + a.size.y) {
+        return false;
+      }
+    }
+  }
+  return rects.size() == kTileCount &&
+         area ==
+             static_cast<double>(display.x) * (static_cast<double>(display.y) - menu_height_px_);
+}
+
+}  // namespace foldlab::gui

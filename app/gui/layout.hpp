@@ -1,0 +1,83 @@
+// Where the explorer's panels go: the automatic tiles (tiled_layout), the edges the user dragged,
+// the user's own arrangement once a panel is moved by its title, and presentation (one tiled
+// panel filling the window below a read-out). The Explorer draws the panels; the Layout places
+// the tiled ones before each draw and watches what the user did to them after it.
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "app/gui/panel.hpp"
+#include "app/gui/session.hpp"
+
+namespace foldlab::gui {
+
+class Layout {
+ public:
+  // `panels`: the explorer's list, which outlives the layout; each tiled panel names its tile.
+  explicit Layout(const std::vector<std::unique_ptr<Panel>>& panels) : panels_(panels) {}
+
+  // At the frame's start, after the menu bar (`menu_height_px` high): a requested presentation
+  // takes effect, and the tiles are laid out, following an edge the user dragged in the last
+  // frame.
+  void begin_frame(float menu_height_px);
+  // While a panel is presented: the read-out above it ends at `top_px`.
+  void set_presented_top(float top_px);
+  // Whether the panel is drawn this frame (a tiled one behind the presented one is not).
+  bool shows(const Panel& panel) const;
+  // Before a tiled panel's draw: its place in the automatic layout (every frame until the user
+  // moves a panel), or the whole window below the read-out while it is presented.
+  void place(const Panel& panel);
+  // After a tiled panel's draw: the button in its title bar (and a double-click on the title) that
+  // presents it, or returns to the tiles.
+  void present_button(const Panel& panel);
+
+  // Presentation: one tiled panel fills the window, the other tiles hidden; nullopt returns to
+  // the tiles. Not remembered: a start shows the tiles.
+  void present(std::optional<Tile> tile);
+  // From a menu or a button, taking effect at the next frame's start.
+  void request_present(std::optional<Tile> tile) { present_request_ = tile; }
+  std::optional<Tile> presented() const { return presented_; }
+  // "View > Reset layout": the automatic layout again, from the next frame.
+  void reset();
+  // True while the panels follow the window (until the user moves or resizes one).
+  bool automatic() const { return automatic_; }
+  const LayoutSplits& splits() const { return splits_; }
+  // Where each tiled panel was drawn in the last frame (ImGui's windows, after the user's moves),
+  // by Panel::key().
+  std::vector<std::pair<std::string, PanelRect>> panel_rects() const;
+  // True when the tiled panels cover the display below the menu bar exactly: no gap, no overlap,
+  // nothing outside it.
+  bool fills_window() const;
+  // True once after the user changed what the session remembers of the layout.
+  bool take_changed() { return std::exchange(changed_, false); }
+
+  void save_settings(SessionSettings& settings) const;
+  void load_settings(const SessionSettings& settings);
+
+ private:
+  // A resize of a tiled panel since the last frame moves the split it shares with its
+  // neighbours; a move of one leaves the tiles for the user's own arrangement. True when a split
+  // moved.
+  bool follow_user_edits();
+  void forget_places();
+
+  const std::vector<std::unique_ptr<Panel>>& panels_;
+  bool automatic_ = true;
+  bool changed_ = false;
+  float menu_height_px_ = 0.0f;
+  TiledLayout tiles_;
+  PanelRect placed_[kTileCount];  // what place() set last, to see the user's moves
+  bool placed_valid_[kTileCount] = {};
+  LayoutSplits splits_;
+  std::optional<Tile> presented_;
+  PanelRect presented_rect_;  // where the presented panel goes this frame
+  std::optional<std::optional<Tile>> present_request_;
+  // In the user's own arrangement, where a presented panel was, to put it back.
+  std::optional<PanelRect> restore_[kTileCount];
+};
+
+}  // namespace foldlab::gui
