@@ -1564,6 +1564,29 @@ TEST_F(ExplorerTest, TheFontHasGreekAndFallsBackWhenMissing) {
   EXPECT_NE(ImGui::GetIO().Fonts->Fonts[0]->FindGlyphNoFallback('a'), nullptr);
 }
 
+// A print chosen in the 3D view was kept only if the window closed normally: choosing it did not
+// mark the session, so the save a second after a change never came and a killed window lost it.
+TEST_F(ExplorerTest, AViewSettingChosenByHandIsOnDiskWithinSecondsAndComesBack) {
+  const fs::path session = dir_ / "session.json";
+  open_explorer("equations", {}, session);
+  frame();
+  explorer_->save_session_now();
+  ASSERT_EQ(nlohmann::json::parse(foldlab::testing::read_file(session))["view"].value("print", -1.0),
+            0.0);
+  click("plain");
+  click("woven checks");
+  frame();
+  ASSERT_EQ(explorer_->cloth_style().print, ClothStyle::Print::checks);
+  // Two seconds of frames (ImGui's clock), with no save asked for.
+  for (int i = 0; i < 120; ++i) {
+    frame();
+  }
+  const nlohmann::json saved = nlohmann::json::parse(foldlab::testing::read_file(session));
+  EXPECT_EQ(saved["view"].value("print", -1.0), 1.0) << saved.dump();
+  open_explorer("equations", {}, session, true);
+  EXPECT_EQ(explorer_->cloth_style().print, ClothStyle::Print::checks);
+}
+
 TEST_F(ExplorerTest, UiScaleIsClampedAndRememberedWithTheTheme) {
   const fs::path session = dir_ / "session.json";
   open_explorer("equations", {}, session);

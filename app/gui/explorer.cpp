@@ -42,6 +42,10 @@ Explorer::Explorer(const Preset& initial, const std::string& initial_path, bool 
                                         shipped_measurements_file(options_.presets_dir)});
   intro_ = add<IntroWindow>();
 
+  layout_.remember(remembered_);
+  for (const std::unique_ptr<Panel>& panel : panels_) {
+    panel->remember(remembered_);
+  }
   presets_->set_footer([this] {
     calibration_->open_button(document_.scene().parameters());
     if (!appearance_.notice().empty()) {
@@ -71,9 +75,6 @@ Explorer::Explorer(const Preset& initial, const std::string& initial_path, bool 
             {*s->compare, s->compare_origin.value_or(*s->compare), s->compare_origin_path});
       }
       load_settings(s->view);
-      for (const std::unique_ptr<Panel>& panel : panels_) {
-        panel->load_settings(s->view);
-      }
       document_.notify("Restored the last session.", MessageKind::info);
       for (const std::string& notice : s->notices) {
         document_.add_notice(notice);
@@ -92,6 +93,7 @@ Explorer::Explorer(const Preset& initial, const std::string& initial_path, bool 
     document_.add_notice(notice);
   }
   document_.forget_history();  // undo goes back no further than what the window opened with
+  remembered_.take_changed();  // what the window opened with is what the session has
   document_.session_saved();
   appearance_.apply(renderer_);
 }
@@ -207,7 +209,7 @@ bool Explorer::busy() const {
 }
 
 void Explorer::save_settings(SessionSettings& settings) const {
-  layout_.save_settings(settings);
+  remembered_.save(settings);
   settings.set("ui_scale_percent", appearance_.scale_percent());
   settings.set("light_theme", appearance_.light_theme());
   settings.set("expert", document_.expert_mode());
@@ -216,7 +218,7 @@ void Explorer::save_settings(SessionSettings& settings) const {
 void Explorer::load_settings(const SessionSettings& settings) {
   appearance_.request(settings.get("ui_scale_percent", appearance_.scale_percent()),
                       settings.get("light_theme", appearance_.light_theme()));
-  layout_.load_settings(settings);
+  remembered_.load(settings);
   document_.set_expert_mode(settings.get("expert", document_.expert_mode()));
 }
 
@@ -236,9 +238,6 @@ void Explorer::save_session_now() {
     s.compare_origin_path = document_.compare().b_origin_path();
   }
   save_settings(s.view);
-  for (const std::unique_ptr<Panel>& panel : panels_) {
-    panel->save_settings(s.view);
-  }
   save_session(options_.session_file, s);
   document_.session_saved();
 }
@@ -500,9 +499,7 @@ void Explorer::frame() {
       layout_.present_button(*panel);
     }
   }
-  if (layout_.take_changed()) {
-    document_.mark_session_dirty();
-  }
+
   stats_overlay(show_stats_, document_.scene(), renderer_counters());
   draw_unsaved_dialog();
   presets_->draw_dialogs(document_);
@@ -514,7 +511,8 @@ void Explorer::frame() {
   if (!ImGui::IsAnyItemActive() && !parameters_->animating()) {
     document_.end_step();
   }
-  if (appearance_.scale_percent() != scale_before || appearance_.light_theme() != light_before) {
+  if (appearance_.scale_percent() != scale_before || appearance_.light_theme() != light_before ||
+      remembered_.take_changed()) {
     document_.mark_session_dirty();
   }
   save_session_when_idle();

@@ -165,8 +165,8 @@ class Explorer {
   // The menu bar (View, Export); returns its height, where the tiled panels start.
   float main_menu();
   void view_menu();
-  // The settings the explorer itself remembers (UI scale and theme, automatic layout, expert
-  // mode); each panel saves and loads its own.
+  // What the session keeps of the view: the UI scale and theme, expert mode, and every
+  // remembered setting.
   void save_settings(SessionSettings& settings) const;
   void load_settings(const SessionSettings& settings);
   // Appends a panel to the list and returns it.
@@ -200,6 +200,8 @@ class Explorer {
   bool show_stats_ = false;
   float menu_height_ = 0.0f;
   Layout layout_{panels_};
+  // What the session keeps of the panels' and the layout's settings (each declares its own).
+  RememberedSettings remembered_;
   bool quit_confirmed_ = false;
   double last_session_save_time_ = 0.0;
 };

@@ -56,23 +56,14 @@ void Layout::forget_places() {
 void Layout::reset() {
   automatic_ = true;
   splits_ = LayoutSplits{};
-  changed_ = true;
   forget_places();
 }
 
-void Layout::save_settings(SessionSettings& settings) const {
+void Layout::remember(RememberedSettings& settings) {
   for (const SplitKey& k : kSplitKeys) {
-    settings.set(k.key, splits_.*k.split);
+    settings.add(k.key, &(splits_.*k.split), -1.0f, 1.0f);  // negative: where the tiles put it
   }
-  settings.set("automatic_layout", automatic_);
-}
-
-void Layout::load_settings(const SessionSettings& settings) {
-  automatic_ = settings.get("automatic_layout", automatic_);
-  for (const SplitKey& k : kSplitKeys) {
-    const float split = settings.get(k.key, splits_.*k.split);
-    splits_.*k.split = split >= 0.0f && split <= 1.0f ? split : -1.0f;
-  }
+  settings.add("automatic_layout", &automatic_);
 }
 
 void Layout::present(std::optional<Tile> tile) {
@@ -173,7 +164,6 @@ bool Layout::follow_user_edits() {
     }
     if (window->SizeFull.x == last.size.x && window->SizeFull.y == last.size.y) {
       automatic_ = false;  // moved by its title: the user's arrangement stays until reset
-      changed_ = true;
       return false;
     }
     const float before[] = {last.pos.x, last.pos.x + last.size.x, last.pos.y,
@@ -186,9 +176,6 @@ bool Layout::follow_user_edits() {
                             menu_height_px_, tiles_, splits_);
       }
     }
-  }
-  if (moved) {
-    changed_ = true;
   }
   return moved;
 }

@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "app/gui/panel.hpp"
-#include "app/gui/session.hpp"
+#include "app/gui/remembered.hpp"
 
 namespace foldlab::gui {
 
@@ -52,11 +52,9 @@ class Layout {
   // True when the tiled panels cover the display below the menu bar exactly: no gap, no overlap,
   // nothing outside it.
   bool fills_window() const;
-  // True once after the user changed what the session remembers of the layout.
-  bool take_changed() { return std::exchange(changed_, false); }
 
-  void save_settings(SessionSettings& settings) const;
-  void load_settings(const SessionSettings& settings);
+  // The user's arrangement: automatic or not, and the dragged edges.
+  void remember(RememberedSettings& settings);
 
  private:
   // A resize of a tiled panel since the last frame moves the split it shares with its
@@ -67,7 +65,6 @@ class Layout {
 
   const std::vector<std::unique_ptr<Panel>>& panels_;
   bool automatic_ = true;
-  bool changed_ = false;
   float menu_height_px_ = 0.0f;
   TiledLayout tiles_;
   PanelRect placed_[kTileCount];  // what place() set last, to see the user's moves

@@ -1,7 +1,7 @@
 // What every panel of the explorer is to the Explorer: a name (its window's title, said once,
 // here), a draw with what panels share, whether it has background work in progress, and the
 // settings it remembers in the session. The Explorer keeps its panels in one list, draws them in a
-// loop, asks them all whether it is busy and lets each save and restore its own settings, so that
+// loop, asks them all whether it is busy and keeps the settings each declares, so that
 // adding a panel is its two files and one line in that list.
 #pragma once
 
@@ -11,6 +11,7 @@
 
 #include "app/gui/document.hpp"
 #include "app/gui/panels/widgets.hpp"
+#include "app/gui/remembered.hpp"
 #include "app/gui/renderer.hpp"
 #include "app/gui/session.hpp"
 
@@ -49,9 +50,8 @@ class Panel {
   // True while background work of the panel is still to show up in what it draws: the frame loop
   // keeps drawing, and scripted runs wait for it before their last frame.
   virtual bool busy() const { return false; }
-  // The settings the panel remembers between runs, under keys of its own in the session.
-  virtual void save_settings(SessionSettings& /*settings*/) const {}
-  virtual void load_settings(const SessionSettings& /*settings*/) {}
+  // The settings the panel remembers between runs, each added once with a key of its own.
+  virtual void remember(RememberedSettings& /*settings*/) {}
 
   // What ImGui::Begin is given: the title, then after "###" the key, so that a title with a
   // changing mark ("Parameters *") is the same window. `mark` is appended to the title.

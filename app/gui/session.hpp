@@ -30,9 +30,9 @@ inline constexpr std::uintmax_t kMaxListedPresetBytes = 1024 * 1024;
 // Presets listed from one folder: each is read to show its name.
 inline constexpr std::size_t kMaxListedPresets = 500;
 
-// The session's "view" object: settings by name, true/false or numbers. Each panel saves and
-// restores its own under keys of its own (Panel::save_settings, load_settings), and gives the
-// default itself, so that remembering one more setting is written in one place.
+// The session's "view" object: settings by name, true/false or numbers. Each panel declares its
+// own once, with its key and range (Panel::remember, remembered.hpp); the member's initial value
+// is the default.
 class SessionSettings {
  public:
   // The stored value, or `fallback` when it is absent or of another type.

@@ -231,40 +231,17 @@ void ClothViewPanel::follow_the_cloth(Document& document, bool reset, bool hold)
   camera_b_grid_version_ = b_grid_version;
 }
 
-void ClothViewPanel::save_settings(SessionSettings& settings) const {
-  settings.set("wireframe", style_.wireframe);
-  settings.set("fold_lines", style_.fold_lines);
-  settings.set("ground", style_.ground);
+void ClothViewPanel::remember(RememberedSettings& settings) {
+  settings.add("wireframe", &style_.wireframe);
+  settings.add("fold_lines", &style_.fold_lines);
+  settings.add("ground", &style_.ground);
   // A swatch photo needs its file, which is not kept: the print it replaced is.
-  if (style_.print != ClothStyle::Print::photo) {
-    settings.set("print", static_cast<int>(style_.print));
-  }
-  settings.set("print_mm", style_.print_mm);
-  settings.set("colour_by", static_cast<int>(style_.colour_by));
-  settings.set("z_exaggeration", style_.z_exaggeration);
-}
-
-void ClothViewPanel::load_settings(const SessionSettings& settings) {
-  style_.wireframe = settings.get("wireframe", style_.wireframe);
-  style_.fold_lines = settings.get("fold_lines", style_.fold_lines);
-  style_.ground = settings.get("ground", style_.ground);
-  // Each within what the panel's own controls reach; anything else keeps the default.
-  const auto within = [](auto value, auto lo, auto hi, auto fallback) {
-    return value >= lo && value <= hi ? value : fallback;
-  };
-  // Read as doubles: a stored 1e308 must be refused, not converted to int or float first.
-  style_.print = static_cast<ClothStyle::Print>(within(
-      settings.get("print", 0.0), 0.0, static_cast<double>(ClothStyle::Print::stripes), 0.0));
-  const auto remembered = [&](const char* name, const ViewNumber& row) {
-    const double fallback = style_.*row.field;
-    style_.*row.field = static_cast<float>(
-        within(settings.get(name, fallback), double{row.lo}, double{row.hi}, fallback));
-  };
-  remembered("print_mm", kPrintMm);
-  style_.colour_by = static_cast<ClothStyle::ColourBy>(
-      within(settings.get("colour_by", 0.0), 0.0,
-             static_cast<double>(ClothStyle::ColourBy::fold_sign), 0.0));
-  remembered("z_exaggeration", kZExaggeration);
+  settings.add("print", &style_.print, ClothStyle::Print::plain, ClothStyle::Print::stripes,
+               [this] { return style_.print != ClothStyle::Print::photo; });
+  settings.add("print_mm", &style_.print_mm, kPrintMm.lo, kPrintMm.hi);
+  settings.add("colour_by", &style_.colour_by, ClothStyle::ColourBy::none,
+               ClothStyle::ColourBy::fold_sign);
+  settings.add("z_exaggeration", &style_.z_exaggeration, kZExaggeration.lo, kZExaggeration.hi);
 }
 
 void ClothViewPanel::draw(PanelContext& context) {

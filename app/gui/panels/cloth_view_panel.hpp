@@ -23,8 +23,7 @@ class ClothViewPanel : public Panel {
   std::optional<Tile> tile() const override { return Tile::cloth; }
   void draw(PanelContext& context) override;
   // Wireframe, fold lines and ground.
-  void save_settings(SessionSettings& settings) const override;
-  void load_settings(const SessionSettings& settings) override;
+  void remember(RememberedSettings& settings) override;
 
   static constexpr const char* kBrowseLabel = "browse...";
   ClothStyle& style() { return style_; }
