@@ -486,7 +486,8 @@ void Explorer::frame() {
   if (layout_.presented()) {
     layout_.set_presented_top(presentation_bar());
   }
-  PanelContext context{document_, renderer_, *photo_, files_, wake_, parameters_->animating()};
+  PanelContext context{
+      document_, renderer_, *photo_, files_, wake_, panels_, parameters_->animating()};
   for (const std::unique_ptr<Panel>& panel : panels_) {
     if (!layout_.shows(*panel)) {
       continue;  // hidden behind the presented one, and not drawn

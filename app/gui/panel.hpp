@@ -6,7 +6,9 @@
 #pragma once
 
 #include <functional>
+#include <memory>
 #include <optional>
+#include <span>
 #include <string>
 
 #include "app/gui/document.hpp"
@@ -19,6 +21,7 @@ namespace foldlab::gui {
 
 class PhotoOverlay;
 class FileDialog;
+class Panel;
 
 // What a panel's draw is given: the one copy of the state, the way to the GPU and the pieces one
 // panel lends another.
@@ -29,6 +32,8 @@ struct PanelContext {
   FileDialog& files;    // the one open/save dialog, which remembers the folder last used
   // Wakes the frame loop when it sleeps; callable from any thread (a background job's end).
   std::function<void()> wake;
+  // Every panel of the explorer, in drawing order, for one that lists the others.
+  std::span<const std::unique_ptr<Panel>> panels;
   // An input is being played: the views keep their frame, growing it but never shrinking it, so
   // that the cloth is seen to change size.
   bool holding_frame = false;
@@ -43,6 +48,9 @@ class Panel {
   // The panel's key in reports, scripts and ImGui's window id ("fold_plot"): lower case, stable
   // when the title changes.
   virtual const char* key() const = 0;
+  // What the introduction says the panel shows, after its name; null for a panel it does not
+  // list.
+  virtual const char* introduction() const { return nullptr; }
   // Where the automatic layout puts it; nullopt for a window that floats over the tiles.
   virtual std::optional<Tile> tile() const { return std::nullopt; }
   // Once per frame, between ImGui::NewFrame and ImGui::Render.

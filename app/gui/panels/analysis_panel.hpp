@@ -30,6 +30,10 @@ class AnalysisPanel : public Panel {
   // `initial_tab`: "equations", "method", "sweep" or "map", selected at the first frame.
   AnalysisPanel(std::filesystem::path presets_dir, std::string initial_tab);
   const char* name() const override { return "Analysis"; }
+  const char* introduction() const override {
+    return "the equations with today's numbers, the solver step by step (Method), how "
+           "the answer changes with one input (Sweep) or two (Regime map).";
+  }
   const char* key() const override { return "analysis"; }
   std::optional<Tile> tile() const override { return Tile::analysis; }
   void draw(PanelContext& context) override;

@@ -19,6 +19,10 @@ namespace foldlab::gui {
 class ClothViewPanel : public Panel {
  public:
   const char* name() const override { return "Cloth (3D)"; }
+  const char* introduction() const override {
+    return "the same folds on the cloth itself; drag to turn it, the z exaggeration "
+           "deepens the folds to see them.";
+  }
   const char* key() const override { return "cloth"; }
   std::optional<Tile> tile() const override { return Tile::cloth; }
   void draw(PanelContext& context) override;

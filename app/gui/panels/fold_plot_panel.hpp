@@ -17,6 +17,10 @@ namespace foldlab::gui {
 class FoldPlotPanel : public Panel {
  public:
   const char* name() const override { return "Fold lines (2D)"; }
+  const char* introduction() const override {
+    return "the fold lines seen from the front, y down from the supports: "
+           "blue folds bulge one way out of the plane (z > 0), red ones the other.";
+  }
   const char* key() const override { return "fold_plot"; }
   std::optional<Tile> tile() const override { return Tile::fold_plot; }
   // The context's photo adds its buttons, its backdrop and its clicks to the plot.

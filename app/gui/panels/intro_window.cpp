@@ -31,27 +31,6 @@ constexpr const char* kParagraphs[] = {
     "enough to buckle it, which fixes Q.",
 };
 
-struct PanelNote {
-  const char* name;
-  const char* what;
-};
-constexpr PanelNote kPanels[] = {
-    {"Parameters",
-     "the six numbers above as sliders (Ctrl+click to type one); a red slider is "
-     "a value the model refuses, with the reason below."},
-    {"Fold lines (2D)",
-     "the fold lines seen from the front, y down from the supports: "
-     "blue folds bulge one way out of the plane (z > 0), red ones the other."},
-    {"Cloth (3D)",
-     "the same folds on the cloth itself; drag to turn it, the z exaggeration "
-     "deepens the folds to see them."},
-    {"Results", "the regime (wrinkled, no slack, stiff, ...), n, Q, z_max and each fold's depth."},
-    {"Analysis",
-     "the equations with today's numbers, the solver step by step (Method), how the "
-     "answer changes with one input (Sweep) or two (Regime map)."},
-    {"Presets", "the paper's own cases and a few fabrics to start from."},
-};
-
 }  // namespace
 
 void IntroWindow::draw(PanelContext& context) {
@@ -79,10 +58,12 @@ void IntroWindow::draw(PanelContext& context) {
       ImGui::Spacing();
     }
     section("What each panel shows");
-    for (const PanelNote& note : kPanels) {
-      ImGui::TextColored(kSectionText, "%s", note.name);
-      ImGui::SameLine();
-      ImGui::TextUnformatted(note.what);
+    for (const std::unique_ptr<Panel>& panel : context.panels) {
+      if (const char* what = panel->introduction()) {
+        ImGui::TextColored(kSectionText, "%s", panel->name());
+        ImGui::SameLine();
+        ImGui::TextUnformatted(what);
+      }
     }
     ImGui::Spacing();
     ImGui::TextUnformatted(

@@ -30,6 +30,10 @@ struct SliderPlace {
 class ParametersPanel : public Panel {
  public:
   const char* name() const override { return "Parameters"; }
+  const char* introduction() const override {
+    return "the six numbers above as sliders (Ctrl+click to type one); a red slider is "
+           "a value the model refuses, with the reason below.";
+  }
   const char* key() const override { return "parameters"; }
   std::optional<Tile> tile() const override { return Tile::parameters; }
   void draw(PanelContext& context) override;

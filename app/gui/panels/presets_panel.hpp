@@ -18,6 +18,9 @@ class PresetsPanel : public Panel {
  public:
   PresetsPanel(std::filesystem::path presets_dir, std::filesystem::path user_presets_dir);
   const char* name() const override { return "Presets"; }
+  const char* introduction() const override {
+    return "the paper's own cases and a few fabrics to start from.";
+  }
   const char* key() const override { return "presets"; }
   std::optional<Tile> tile() const override { return Tile::presets; }
   void draw(PanelContext& context) override;

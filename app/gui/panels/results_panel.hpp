@@ -20,6 +20,10 @@ namespace foldlab::gui {
 class ResultsPanel : public Panel {
  public:
   const char* name() const override { return "Results"; }
+  const char* introduction() const override {
+    return "the regime (wrinkled, no slack, stiff, ...), n, Q, z_max and each fold's "
+           "depth.";
+  }
   const char* key() const override { return "results"; }
   std::optional<Tile> tile() const override { return Tile::results; }
   void draw(PanelContext& context) override;
