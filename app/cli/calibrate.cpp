@@ -305,6 +305,23 @@ void print_totals(const CalibrationReport& r, std::ostream& out) {
   }
 }
 
+void check_output_and_label(const Options& options) {
+  check_distinct_files({{"--save-preset", options.save_preset_path}},
+                       {{"--data", options.data_path}, {"--preset", options.inputs.preset_path}});
+  // The label goes into the saved preset, whose JSON holds UTF-8 only.
+  if (!detail::is_valid_utf8(options.calibrated_on)) {
+    throw InputError("--calibrated-on '" + detail::cut(options.calibrated_on) +
+                     "' is not UTF-8 text");
+  }
+}
+
+CalibrationOptions calibration_options(const Options& options) {
+  CalibrationOptions calibration;
+  parse_fit_constants(options.fit, calibration.fit);
+  calibration.held_out = !options.no_held_out;
+  return calibration;
+}
+
 // The data, and the checks that need it before any fit: a preset stores one leave-one-out fit
 // per fit row (at most kMaxCalibrationEntries), and a coverage check takes a limited number of
 // rows; say so before the fit rather than after it.
@@ -370,6 +387,27 @@ std::optional<std::string> measured_coverage(const MeasurementSet& data, const P
   return describe_coverage(*checks);
 }
 
+// The coverage of the intervals where it was asked for or is to be saved (result.coverage), or
+// a note that the rows are too many for it; result.interrupted when Ctrl+C stopped it.
+void add_coverage(const Options& options, const CalibrationOptions& calibration,
+                  const MeasurementSet& data, Result& result) {
+  const int fit_row_count = result.report.fit_row_count;
+  const bool saving = !options.save_preset_path.empty();
+  const bool in_reach = fit_row_count <= max_coverage_rows(calibration.fit);
+  if (calibration.held_out && saving && !options.coverage && !in_reach) {
+    result.notes.push_back(printf_string(
+        "coverage not measured: %d fit rows are more than the %d a coverage check fitting %s "
+        "takes; the preset says so",
+        fit_row_count, max_coverage_rows(calibration.fit), options.fit.c_str()));
+  }
+  if (calibration.held_out && (options.coverage || (saving && in_reach))) {
+    const std::optional<std::string> coverage =
+        measured_coverage(data, result.base.parameters, calibration, fit_row_count);
+    result.coverage = coverage.value_or("");
+    result.interrupted = !coverage;
+  }
+}
+
 // The interval level of the fitted constants' prediction intervals, as the saved preset states it.
 std::optional<double> fitted_interval_level(const Result& result) {
   const CalibrationRecord record = calibration_record(result.report, "");
@@ -429,41 +467,20 @@ void declare(CLI::App& app, Options& options) {
 }
 
 Result run(const Options& options) {
-  check_distinct_files({{"--save-preset", options.save_preset_path}},
-                       {{"--data", options.data_path}, {"--preset", options.inputs.preset_path}});
-  // The label goes into the saved preset, whose JSON holds UTF-8 only.
-  if (!detail::is_valid_utf8(options.calibrated_on)) {
-    throw InputError("--calibrated-on '" + detail::cut(options.calibrated_on) +
-                     "' is not UTF-8 text");
-  }
+  check_output_and_label(options);
   Result result;
   result.base = resolve_inputs(options.inputs);
   result.data_path = options.data_path;
   const MeasurementSet data = load_data(options);
   const int fit_row_count = fit_rows(data);
-  CalibrationOptions calibration;
-  parse_fit_constants(options.fit, calibration.fit);
-  calibration.held_out = !options.no_held_out;
+  const CalibrationOptions calibration = calibration_options(options);
   check_row_limits(options, calibration, fit_row_count);
   result.report = fit(data, result.base.parameters, calibration);
   if (result.report.cancelled) {
     result.interrupted = true;
     return result;
   }
-  const bool saving = !options.save_preset_path.empty();
-  const bool coverage_in_reach = fit_row_count <= max_coverage_rows(calibration.fit);
-  if (calibration.held_out && saving && !options.coverage && !coverage_in_reach) {
-    result.notes.push_back(printf_string(
-        "coverage not measured: %d fit rows are more than the %d a coverage check fitting %s "
-        "takes; the preset says so",
-        fit_row_count, max_coverage_rows(calibration.fit), options.fit.c_str()));
-  }
-  if (calibration.held_out && (options.coverage || (saving && coverage_in_reach))) {
-    const std::optional<std::string> coverage =
-        measured_coverage(data, result.base.parameters, calibration, result.report.fit_row_count);
-    result.coverage = coverage.value_or("");
-    result.interrupted = !coverage;
-  }
+  add_coverage(options, calibration, data, result);
   // Ctrl+C after the last progress call still means: print and write nothing.
   result.interrupted = result.interrupted || interrupted != 0;
   if (options.json && !result.interrupted) {
