@@ -3,7 +3,6 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
-#include <memory>
 #include <thread>
 
 #include "app/cli/commands.hpp"
@@ -265,23 +264,21 @@ json print_json(const Result& result) {
       {"pipeline", {{"case", result.pipeline_case}, {"n", result.pipeline_n}, {"stages", stages}}}};
 }
 
+int execute(const Options& options) {
+  const Result result = run(options);
+  write_files(options, result);
+  if (options.json) {
+    write_json(print_json(result), std::cout);
+  } else {
+    print_markdown(result, std::cout);
+  }
+  return kExitOk;
+}
+
 }  // namespace bench_command
 
 Command add_bench_command(CLI::App& app) {
-  auto options = std::make_shared<bench_command::Options>();
-  bench_command::declare(app, *options);
-  return [options] {
-    return guarded([&] {
-      const bench_command::Result result = bench_command::run(*options);
-      bench_command::write_files(*options, result);
-      if (options->json) {
-        write_json(bench_command::print_json(result), std::cout);
-      } else {
-        bench_command::print_markdown(result, std::cout);
-      }
-      return kExitOk;
-    });
-  };
+  return make_command(app, bench_command::declare, bench_command::execute);
 }
 
 }  // namespace foldlab::cli

@@ -46,4 +46,7 @@ void write_files(const Options& options, const Result& result);
 void print_markdown(const Result& result, std::ostream& out);
 nlohmann::json print_json(const Result& result);
 
+// The command after parsing: run, write what the command writes, print; the exit status.
+int execute(const Options& options);
+
 }  // namespace foldlab::cli::bench_command

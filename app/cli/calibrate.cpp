@@ -5,7 +5,6 @@
 #include <csignal>
 #include <filesystem>
 #include <iostream>
-#include <memory>
 #include <string>
 #include <utility>
 
@@ -528,32 +527,30 @@ void save_calibrated_preset(const Options& options, const Result& result) {
   save_preset(out, options.save_preset_path);
 }
 
+int execute(const Options& options) {
+  // Up until the preset is written: a Ctrl+C stops the fits, never a half-written file.
+  const InterruptGuard interrupt_guard;
+  const Result result = run(options);
+  write_notes(result.notes, std::cerr);
+  if (result.interrupted) {
+    return interrupted_exit();
+  }
+  if (options.json) {
+    write_json(print_json(result), std::cout);
+  } else {
+    print_text(result, std::cout);
+  }
+  if (!options.save_preset_path.empty()) {
+    save_calibrated_preset(options, result);
+    write_notes({"wrote " + options.save_preset_path}, std::cerr);
+  }
+  return kExitOk;
+}
+
 }  // namespace calibrate_command
 
 Command add_calibrate_command(CLI::App& app) {
-  auto options = std::make_shared<calibrate_command::Options>();
-  calibrate_command::declare(app, *options);
-  return [options] {
-    return guarded([&] {
-      // Up until the preset is written: a Ctrl+C stops the fits, never a half-written file.
-      const calibrate_command::InterruptGuard interrupt_guard;
-      const calibrate_command::Result result = calibrate_command::run(*options);
-      write_notes(result.notes, std::cerr);
-      if (result.interrupted) {
-        return calibrate_command::interrupted_exit();
-      }
-      if (options->json) {
-        write_json(calibrate_command::print_json(result), std::cout);
-      } else {
-        calibrate_command::print_text(result, std::cout);
-      }
-      if (!options->save_preset_path.empty()) {
-        calibrate_command::save_calibrated_preset(*options, result);
-        write_notes({"wrote " + options->save_preset_path}, std::cerr);
-      }
-      return kExitOk;
-    });
-  };
+  return make_command(app, calibrate_command::declare, calibrate_command::execute);
 }
 
 }  // namespace foldlab::cli

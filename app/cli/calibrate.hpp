@@ -50,4 +50,7 @@ nlohmann::json print_json(const Result& result);
 // options.save_preset_path.
 void save_calibrated_preset(const Options& options, const Result& result);
 
+// The command after parsing: run, write what the command writes, print; the exit status.
+int execute(const Options& options);
+
 }  // namespace foldlab::cli::calibrate_command

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <filesystem>
 #include <iostream>
-#include <memory>
 
 #include "app/cli/commands.hpp"
 #include "app/cli/output.hpp"
@@ -193,22 +192,20 @@ json print_json(const Result& result) {
   return out;
 }
 
+int execute(const Options& options) {
+  const Result result = run(options);
+  if (options.json) {
+    write_json(print_json(result), std::cout);
+  } else {
+    print_markdown(result, std::cout);
+  }
+  return kExitOk;
+}
+
 }  // namespace compare_command
 
 Command add_compare_command(CLI::App& app) {
-  auto options = std::make_shared<compare_command::Options>();
-  compare_command::declare(app, *options);
-  return [options] {
-    return guarded([&] {
-      const compare_command::Result result = compare_command::run(*options);
-      if (options->json) {
-        write_json(compare_command::print_json(result), std::cout);
-      } else {
-        compare_command::print_markdown(result, std::cout);
-      }
-      return kExitOk;
-    });
-  };
+  return make_command(app, compare_command::declare, compare_command::execute);
 }
 
 }  // namespace foldlab::cli

@@ -48,4 +48,7 @@ Result run(const Options& options);
 void print_markdown(const Result& result, std::ostream& out);
 nlohmann::json print_json(const Result& result);
 
+// The command after parsing: run, write what the command writes, print; the exit status.
+int execute(const Options& options);
+
 }  // namespace foldlab::cli::compare_command

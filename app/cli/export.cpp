@@ -2,7 +2,6 @@
 
 #include <cmath>
 #include <iostream>
-#include <memory>
 #include <regex>
 
 #include "app/cli/commands.hpp"
@@ -157,22 +156,20 @@ nlohmann::json print_json(const Result& result) {
   return {{"stats", scene_stats_to_json(result.scene)}};
 }
 
+int execute(const Options& options) {
+  Result result = run(options);
+  write_notes(result.notes, std::cerr);
+  write_files(options, result);
+  if (options.stats) {
+    write_json(print_json(result), std::cout);
+  }
+  return kExitOk;
+}
+
 }  // namespace export_command
 
 Command add_export_command(CLI::App& app) {
-  auto options = std::make_shared<export_command::Options>();
-  export_command::declare(app, *options);
-  return [options] {
-    return guarded([&] {
-      export_command::Result result = export_command::run(*options);
-      write_notes(result.notes, std::cerr);
-      export_command::write_files(*options, result);
-      if (options->stats) {
-        write_json(export_command::print_json(result), std::cout);
-      }
-      return kExitOk;
-    });
-  };
+  return make_command(app, export_command::declare, export_command::execute);
 }
 
 }  // namespace foldlab::cli

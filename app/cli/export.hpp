@@ -42,4 +42,7 @@ void write_files(const Options& options, Result& result);
 // The pipeline's counters (--stats).
 nlohmann::json print_json(const Result& result);
 
+// The command after parsing: run, write what the command writes, print; the exit status.
+int execute(const Options& options);
+
 }  // namespace foldlab::cli::export_command

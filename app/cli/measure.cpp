@@ -5,7 +5,6 @@
 #include <cstdint>
 #include <filesystem>
 #include <iostream>
-#include <memory>
 #include <optional>
 #include <sstream>
 #include <string>
@@ -282,23 +281,21 @@ nlohmann::json print_json(const Result& result) {
                                                      : nlohmann::json(result.append_path)}};
 }
 
+int execute(const Options& options) {
+  const Result result = run(options);
+  append_row(result);
+  if (options.json) {
+    write_json(print_json(result), std::cout);
+  } else {
+    print_text(result, std::cout);
+  }
+  return kExitOk;
+}
+
 }  // namespace measure_command
 
 Command add_measure_command(CLI::App& app) {
-  auto options = std::make_shared<measure_command::Options>();
-  measure_command::declare(app, *options);
-  return [options] {
-    return guarded([&] {
-      const measure_command::Result result = measure_command::run(*options);
-      measure_command::append_row(result);
-      if (options->json) {
-        write_json(measure_command::print_json(result), std::cout);
-      } else {
-        measure_command::print_text(result, std::cout);
-      }
-      return kExitOk;
-    });
-  };
+  return make_command(app, measure_command::declare, measure_command::execute);
 }
 
 }  // namespace foldlab::cli

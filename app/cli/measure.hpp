@@ -46,4 +46,7 @@ void append_row(const Result& result);
 void print_text(const Result& result, std::ostream& out);
 nlohmann::json print_json(const Result& result);
 
+// The command after parsing: run, write what the command writes, print; the exit status.
+int execute(const Options& options);
+
 }  // namespace foldlab::cli::measure_command

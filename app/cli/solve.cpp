@@ -1,7 +1,6 @@
 #include "app/cli/solve.hpp"
 
 #include <iostream>
-#include <memory>
 
 #include "app/cli/commands.hpp"
 #include "app/cli/output.hpp"
@@ -45,22 +44,20 @@ nlohmann::json print_json(const Result& result) {
   return out;
 }
 
+int execute(const Options& options) {
+  const Result result = run(options);
+  if (options.json) {
+    write_json(print_json(result), std::cout);
+  } else {
+    print_text(result, std::cout);
+  }
+  return kExitOk;
+}
+
 }  // namespace solve_command
 
 Command add_solve_command(CLI::App& app) {
-  auto options = std::make_shared<solve_command::Options>();
-  solve_command::declare(app, *options);
-  return [options] {
-    return guarded([&] {
-      const solve_command::Result result = solve_command::run(*options);
-      if (options->json) {
-        write_json(solve_command::print_json(result), std::cout);
-      } else {
-        solve_command::print_text(result, std::cout);
-      }
-      return kExitOk;
-    });
-  };
+  return make_command(app, solve_command::declare, solve_command::execute);
 }
 
 int run_default_headless() {

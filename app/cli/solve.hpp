@@ -32,4 +32,7 @@ Result run(const Options& options);
 void print_text(const Result& result, std::ostream& out);
 nlohmann::json print_json(const Result& result);
 
+// The command after parsing: run, write what the command writes, print; the exit status.
+int execute(const Options& options);
+
 }  // namespace foldlab::cli::solve_command

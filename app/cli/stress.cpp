@@ -2,7 +2,6 @@
 
 #include <charconv>
 #include <iostream>
-#include <memory>
 
 #include "app/cli/commands.hpp"
 #include "app/cli/output.hpp"
@@ -50,22 +49,20 @@ nlohmann::json print_json(const StressReport& report) {
   return stress_to_json(report);
 }
 
+int execute(const Options& options) {
+  const StressReport report = run(options);
+  if (options.json) {
+    write_json(print_json(report), std::cout);
+  } else {
+    print_text(report, std::cout);
+  }
+  return report.passed() ? kExitOk : kExitInternal;
+}
+
 }  // namespace stress_command
 
 Command add_stress_command(CLI::App& app) {
-  auto options = std::make_shared<stress_command::Options>();
-  stress_command::declare(app, *options);
-  return [options] {
-    return guarded([&] {
-      const StressReport report = stress_command::run(*options);
-      if (options->json) {
-        write_json(stress_command::print_json(report), std::cout);
-      } else {
-        stress_command::print_text(report, std::cout);
-      }
-      return report.passed() ? kExitOk : kExitInternal;
-    });
-  };
+  return make_command(app, stress_command::declare, stress_command::execute);
 }
 
 }  // namespace foldlab::cli

@@ -25,4 +25,7 @@ StressReport run(const Options& options);
 void print_text(const StressReport& report, std::ostream& out);
 nlohmann::json print_json(const StressReport& report);
 
+// The command after parsing: run, write what the command writes, print; the exit status.
+int execute(const Options& options);
+
 }  // namespace foldlab::cli::stress_command

@@ -1,7 +1,6 @@
 #include "app/cli/sweep.hpp"
 
 #include <iostream>
-#include <memory>
 
 #include "app/cli/commands.hpp"
 #include "app/cli/output.hpp"
@@ -122,23 +121,21 @@ void print_csv(const Result& result, std::ostream& out) {
   }
 }
 
+int execute(const Options& options) {
+  const Result result = run(options);
+  if (options.csv) {
+    print_csv(result, std::cout);
+  } else {
+    print_text(result, std::cout);
+  }
+  write_notes(result.notes, std::cerr);
+  return kExitOk;
+}
+
 }  // namespace sweep_command
 
 Command add_sweep_command(CLI::App& app) {
-  auto options = std::make_shared<sweep_command::Options>();
-  sweep_command::declare(app, *options);
-  return [options] {
-    return guarded([&] {
-      const sweep_command::Result result = sweep_command::run(*options);
-      if (options->csv) {
-        sweep_command::print_csv(result, std::cout);
-      } else {
-        sweep_command::print_text(result, std::cout);
-      }
-      write_notes(result.notes, std::cerr);
-      return kExitOk;
-    });
-  };
+  return make_command(app, sweep_command::declare, sweep_command::execute);
 }
 
 }  // namespace foldlab::cli

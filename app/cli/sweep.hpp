@@ -37,4 +37,7 @@ Result run(const Options& options);
 void print_text(const Result& result, std::ostream& out);
 void print_csv(const Result& result, std::ostream& out);
 
+// The command after parsing: run, write what the command writes, print; the exit status.
+int execute(const Options& options);
+
 }  // namespace foldlab::cli::sweep_command
