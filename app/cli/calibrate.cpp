@@ -1,34 +1,28 @@
-// `foldlab calibrate`: fits eq. 7's constants to measured n, z_max and Q (core/calibration.hpp)
-// and prints the fit beside its held-out figures, so that a user sees how much of it is real.
+#include "app/cli/calibrate.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <csignal>
-#include <cstdio>
 #include <filesystem>
 #include <iostream>
-#include <memory>
 #include <string>
 #include <utility>
 
 #include <unistd.h>
 
-#include <nlohmann/json.hpp>
-
 #include "app/cli/commands.hpp"
-#include "app/common/inputs.hpp"
-#include "core/analysis/calibration.hpp"
+#include "app/cli/output.hpp"
 #include "core/analysis/uncertainty.hpp"
 #include "core/io/io.hpp"
 #include "core/io/measurements.hpp"
-#include "core/io/preset.hpp"
 #include "core/model/text_format.hpp"
 
 namespace foldlab::cli {
+namespace calibrate_command {
 namespace {
 
-using nlohmann::json;
-
 using detail::printf_string;
+using nlohmann::json;
 
 // " [the best score reaches K at its lower bound ...; ...]" when the best-scoring constants reach
 // an end of a range.
@@ -107,22 +101,11 @@ std::string range(double lo, double hi, const char* pattern) {
          (std::isinf(hi) ? "inf" : printf_string(pattern, hi)) + ")";
 }
 
-template <class T>
-std::string optional_cell(const std::optional<T>& v, const char* pattern) {
-  return v ? printf_string(pattern, static_cast<double>(*v)) : "–";
-}
-
 // "7 | 43.4 (-9.6%) | 1.251 (-3.0%)"
 std::string model_cells(const PublishedComparison& c) {
-  auto with_error = [](double value, const std::optional<double>& error, const char* pattern) {
-    std::string out = printf_string(pattern, value);
-    if (error) {
-      out += " (" + printf_string("%+.1f", 100.0 * *error) + "%)";
-    }
-    return out;
-  };
-  return std::to_string(c.solution.n) + " | " + with_error(c.solution.z_max_mm, c.z_error, "%.1f") +
-         " | " + with_error(c.solution.Q, c.Q_error, "%.3f");
+  return std::to_string(c.solution.n) + " | " +
+         value_with_error(c.solution.z_max_mm, c.z_error, "%.1f") + " | " +
+         value_with_error(c.solution.Q, c.Q_error, "%.3f");
 }
 
 json summary_json(const ComparisonSummary& s) {
@@ -170,34 +153,37 @@ json fit_json(const FittedConstants& f) {
 }
 
 json comparison_json(const PublishedComparison& c) {
-  auto optional = [](const std::optional<double>& v) { return v ? json(*v) : json(nullptr); };
   return {{"n", c.solution.n},
           {"z_max_mm", c.solution.z_max_mm},
           {"Q", c.solution.Q},
           {"regime", to_string(c.solution.regime)},
-          {"z_error", optional(c.z_error)},
-          {"Q_error", optional(c.Q_error)}};
+          {"z_error", optional_json(c.z_error)},
+          {"Q_error", optional_json(c.Q_error)}};
+}
+
+json row_json(const CalibrationRow& row) {
+  const Measurement& m = row.measurement;
+  json j = {{"name", m.name},
+            {"group", m.group},
+            {"role", to_string(m.role)},
+            {"observed",
+             {{"n", optional_json(m.observed.n)},
+              {"z_max_mm", optional_json(m.observed.z_max_mm)},
+              {"Q", optional_json(m.observed.Q)}}},
+            {"baseline", comparison_json(row.baseline)},
+            {"fitted", comparison_json(row.fitted)}};
+  if (row.held_out) {
+    j["held_out"] = comparison_json(*row.held_out);
+    j["held_out"]["K"] = row.held_out_K;
+    j["held_out"]["p"] = row.held_out_p;
+  }
+  return j;
 }
 
 json report_json(const CalibrationReport& r, const std::string& data_path) {
   json rows = json::array();
   for (const CalibrationRow& row : r.rows) {
-    const Measurement& m = row.measurement;
-    json j = {{"name", m.name},
-              {"group", m.group},
-              {"role", to_string(m.role)},
-              {"observed",
-               {{"n", m.observed.n ? json(*m.observed.n) : json(nullptr)},
-                {"z_max_mm", m.observed.z_max_mm ? json(*m.observed.z_max_mm) : json(nullptr)},
-                {"Q", m.observed.Q ? json(*m.observed.Q) : json(nullptr)}}},
-              {"baseline", comparison_json(row.baseline)},
-              {"fitted", comparison_json(row.fitted)}};
-    if (row.held_out) {
-      j["held_out"] = comparison_json(*row.held_out);
-      j["held_out"]["K"] = row.held_out_K;
-      j["held_out"]["p"] = row.held_out_p;
-    }
-    rows.push_back(std::move(j));
+    rows.push_back(row_json(row));
   }
   json splits = json::array();
   for (const GroupSplit& s : r.group_splits) {
@@ -232,268 +218,339 @@ json report_json(const CalibrationReport& r, const std::string& data_path) {
           {"group_splits", splits}};
 }
 
-void print_report(const CalibrationReport& r, const std::string& data_path,
-                  const std::string& base_name) {
+void print_header(const Result& result, std::ostream& out) {
+  const CalibrationReport& r = result.report;
+  out << "FoldLab calibrate: " << result.data_path << " (" << r.fit_row_count << " fit row"
+      << (r.fit_row_count == 1 ? "" : "s") << ", " << r.check_row_count << " check row"
+      << (r.check_row_count == 1 ? "" : "s") << "), " << to_string(r.base.model.method)
+      << " method, fitting " << to_string(r.fit) << "\n";
+  out << "Base: \"" << detail::escaped(result.base.name) << "\", " << describe_model_form(r.base)
+      << "\n";
+  out << "Loss (lexicographic): rows whose n is missed, then rows missed by more than one, "
+         "then the mean of min(|model/observed - 1|, 1) over every observed z_max and Q.\n\n";
+}
+
+// The fitted constants, their score, and how far the same score reaches.
+void print_fit(const CalibrationReport& r, std::ostream& out) {
   const FittedConstants& f = r.fitted;
-  std::cout << "FoldLab calibrate: " << data_path << " (" << r.fit_row_count << " fit row"
-            << (r.fit_row_count == 1 ? "" : "s") << ", " << r.check_row_count << " check row"
-            << (r.check_row_count == 1 ? "" : "s") << "), " << to_string(r.base.model.method)
-            << " method, fitting " << to_string(r.fit) << "\n";
-  std::cout << "Base: \"" << detail::escaped(base_name) << "\", " << describe_model_form(r.base)
-            << "\n";
-  std::cout << "Loss (lexicographic): rows whose n is missed, then rows missed by more than one, "
-               "then the mean of min(|model/observed - 1|, 1) over every observed z_max and Q.\n\n";
   const Parameters fitted = with_constants(r.base, f.K, f.p);
-  std::cout << "Fitted: K = " << printf_string("%.4g", f.K)
-            << ", p = " << printf_string("%.4g", f.p)
-            << "  (c = " << printf_string("%.4g", fitted.model.load_constant_c)
-            << " at nu = " << printf_string("%.3g", r.base.fabric.poisson_ratio) << ")\n";
-  std::cout << "  score: " << score_line(f.score, r.in_sample.rows_with_n) << "\n";
-  std::cout << "  the score stays the same for K in " << range(f.K_low, f.K_high, "%.4g")
-            << " at p = " << printf_string("%.4g", f.p);
+  out << "Fitted: K = " << printf_string("%.4g", f.K) << ", p = " << printf_string("%.4g", f.p)
+      << "  (c = " << printf_string("%.4g", fitted.model.load_constant_c)
+      << " at nu = " << printf_string("%.3g", r.base.fabric.poisson_ratio) << ")\n";
+  out << "  score: " << score_line(f.score, r.in_sample.rows_with_n) << "\n";
+  out << "  the score stays the same for K in " << range(f.K_low, f.K_high, "%.4g")
+      << " at p = " << printf_string("%.4g", f.p);
   if (r.fit == FitConstants::K_and_p) {
-    std::cout << ", and for p in [" << printf_string("%.4g", f.p_low) << ", "
-              << printf_string("%.4g", f.p_high) << "] at K = " << printf_string("%.4g", f.K)
-              << "\n";
-    std::cout << "  every point with this score lies in K "
-              << range(f.best_K_min, f.best_K_max, "%.4g") << ", p ["
-              << printf_string("%.3g", f.best_p_min) << ", " << printf_string("%.3g", f.best_p_max)
-              << "] (K and p trade off along a valley)\n";
+    out << ", and for p in [" << printf_string("%.4g", f.p_low) << ", "
+        << printf_string("%.4g", f.p_high) << "] at K = " << printf_string("%.4g", f.K) << "\n";
+    out << "  every point with this score lies in K " << range(f.best_K_min, f.best_K_max, "%.4g")
+        << ", p [" << printf_string("%.3g", f.best_p_min) << ", "
+        << printf_string("%.3g", f.best_p_max) << "] (K and p trade off along a valley)\n";
   } else {
-    std::cout << "\n";
+    out << "\n";
     if (f.equally_good_elsewhere > 0) {
-      std::cout << "  " << f.equally_good_elsewhere
-                << " other band(s) of K reach the same score, within K "
-                << range(f.best_K_min, f.best_K_max, "%.4g") << "; the widest is taken\n";
+      out << "  " << f.equally_good_elsewhere
+          << " other band(s) of K reach the same score, within K "
+          << range(f.best_K_min, f.best_K_max, "%.4g") << "; the widest is taken\n";
     }
   }
   for (const std::string& note : range_end_notes(f, r.base.fabric.poisson_ratio)) {
-    std::cout << "  " << note << "\n";
+    out << "  " << note << "\n";
   }
-  std::cout << "\n| row | observed n | z_max (mm) | Q | fitted n | z_max (mm) | Q | held-out n "
-               "| z_max (mm) | Q | held-out K | p |\n"
-               "|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+}
+
+void print_rows(const CalibrationReport& r, std::ostream& out) {
+  out << "\n| row | observed n | z_max (mm) | Q | fitted n | z_max (mm) | Q | held-out n "
+         "| z_max (mm) | Q | held-out K | p |\n"
+         "|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   for (const CalibrationRow& row : r.rows) {
     const Measurement& m = row.measurement;
-    std::cout << "| "
-              << (m.name.empty() ? "row " + std::to_string(m.row) : detail::markdown_cell(m.name))
-              << (m.role == MeasurementRole::check ? " (check)" : "") << " | "
-              << optional_cell(m.observed.n, "%.0f") << " | "
-              << optional_cell(m.observed.z_max_mm, "%g") << " | "
-              << optional_cell(m.observed.Q, "%.2f") << " | " << model_cells(row.fitted) << " | ";
+    out << "| " << (m.name.empty() ? "row " + std::to_string(m.row) : detail::markdown_cell(m.name))
+        << (m.role == MeasurementRole::check ? " (check)" : "") << " | "
+        << optional_cell(m.observed.n, "%.0f") << " | " << optional_cell(m.observed.z_max_mm, "%g")
+        << " | " << optional_cell(m.observed.Q, "%.2f") << " | " << model_cells(row.fitted)
+        << " | ";
     if (row.held_out) {
-      std::cout << model_cells(*row.held_out) << " | " << printf_string("%.4g", row.held_out_K)
-                << " | " << printf_string("%.3g", row.held_out_p) << " |\n";
+      out << model_cells(*row.held_out) << " | " << printf_string("%.4g", row.held_out_K) << " | "
+          << printf_string("%.3g", row.held_out_p) << " |\n";
     } else {
-      std::cout << "– | – | – | – | – |\n";
+      out << "– | – | – | – | – |\n";
     }
   }
-  std::cout << "\nHeld out: fit rows by leave-one-out (each predicted by a fit on the others); "
-               "check rows by the in-sample fit, which never sees them.\n\n";
-  std::cout << "Totals\n";
-  std::cout << "  base constants, fit rows:           " << summary_text(r.baseline_fit_rows)
-            << "\n";
-  std::cout << "  in-sample fit, fit rows:            " << summary_text(r.in_sample) << "\n";
+  out << "\nHeld out: fit rows by leave-one-out (each predicted by a fit on the others); "
+         "check rows by the in-sample fit, which never sees them.\n\n";
+}
+
+void print_totals(const CalibrationReport& r, std::ostream& out) {
+  out << "Totals\n";
+  out << "  base constants, fit rows:           " << summary_text(r.baseline_fit_rows) << "\n";
+  out << "  in-sample fit, fit rows:            " << summary_text(r.in_sample) << "\n";
   if (r.fit_row_count >= 2) {
-    std::cout << "  leave-one-out, fit rows:            " << summary_text(r.leave_one_out) << "\n";
+    out << "  leave-one-out, fit rows:            " << summary_text(r.leave_one_out) << "\n";
   }
   if (!r.group_splits.empty()) {
-    std::cout << "  fit on other groups, test rows:     " << summary_text(r.group_split_test)
-              << "\n";
+    out << "  fit on other groups, test rows:     " << summary_text(r.group_split_test) << "\n";
     for (const GroupSplit& s : r.group_splits) {
-      std::cout << "    test " << (s.test_group.empty() ? "(no group)" : s.test_group)
-                << " (fit on the rest: K = " << printf_string("%.4g", s.fit.K)
-                << ", p = " << printf_string("%.3g", s.fit.p)
-                << bound_note(s.fit, r.base.fabric.poisson_ratio) << "): " << summary_text(s.test)
-                << "\n";
+      out << "    test " << (s.test_group.empty() ? "(no group)" : s.test_group)
+          << " (fit on the rest: K = " << printf_string("%.4g", s.fit.K)
+          << ", p = " << printf_string("%.3g", s.fit.p)
+          << bound_note(s.fit, r.base.fabric.poisson_ratio) << "): " << summary_text(s.test)
+          << "\n";
     }
   }
   if (r.check_row_count > 0) {
-    std::cout << "  base constants, check rows:         " << summary_text(r.baseline_check_rows)
-              << "\n";
-    std::cout << "  fitted constants, check rows:       " << summary_text(r.check_rows) << "\n";
+    out << "  base constants, check rows:         " << summary_text(r.baseline_check_rows) << "\n";
+    out << "  fitted constants, check rows:       " << summary_text(r.check_rows) << "\n";
   }
+}
+
+void check_output_and_label(const Options& options) {
+  check_distinct_files({{"--save-preset", options.save_preset_path}},
+                       {{"--data", options.data_path}, {"--preset", options.inputs.preset_path}});
+  // The label goes into the saved preset, whose JSON holds UTF-8 only.
+  if (!detail::is_valid_utf8(options.calibrated_on)) {
+    throw InputError("--calibrated-on '" + detail::cut(options.calibrated_on) +
+                     "' is not UTF-8 text");
+  }
+}
+
+CalibrationOptions calibration_options(const Options& options) {
+  CalibrationOptions calibration;
+  parse_fit_constants(options.fit, calibration.fit);
+  calibration.held_out = !options.no_held_out;
+  return calibration;
+}
+
+// The data, and the checks that need it before any fit: a preset stores one leave-one-out fit
+// per fit row (at most kMaxCalibrationEntries), and a coverage check takes a limited number of
+// rows; say so before the fit rather than after it.
+MeasurementSet load_data(const Options& options) {
+  try {
+    return load_measurements(options.data_path);
+  } catch (const MeasurementError& e) {
+    throw InputError(e.what());
+  }
+}
+
+int fit_rows(const MeasurementSet& data) {
+  return static_cast<int>(
+      std::count_if(data.rows.begin(), data.rows.end(),
+                    [](const Measurement& m) { return m.role == MeasurementRole::fit; }));
+}
+
+void check_row_limits(const Options& options, const CalibrationOptions& calibration,
+                      int fit_row_count) {
+  if (!options.save_preset_path.empty() && !options.no_held_out &&
+      static_cast<std::size_t>(fit_row_count) > kMaxCalibrationEntries) {
+    throw InputError("--save-preset: " + std::to_string(fit_row_count) +
+                     " fit rows would store as many leave-one-out fits, and a preset holds "
+                     "at most " +
+                     std::to_string(kMaxCalibrationEntries) +
+                     " (add --no-held-out, or fit fewer rows)");
+  }
+  // A coverage check refits about m² times: beyond its row limit --coverage is refused before
+  // any work, and --save-preset saves without it (the preset then says it was not measured).
+  if (options.coverage && calibration.held_out &&
+      fit_row_count > max_coverage_rows(calibration.fit)) {
+    throw InputError(printf_string(
+        "--coverage: %d fit rows, and a coverage check fitting %s takes at most %d (it refits "
+        "about m² times); fit K alone or use fewer rows",
+        fit_row_count, options.fit.c_str(), max_coverage_rows(calibration.fit)));
+  }
+}
+
+CalibrationReport fit(const MeasurementSet& data, const Parameters& base,
+                      const CalibrationOptions& calibration) {
+  try {
+    ProgressLine progress("calibrate");
+    return calibrate(data, base, calibration, std::ref(progress));
+  } catch (const CalibrationError& e) {
+    throw InputError(e.what());
+  }
+}
+
+// describe_coverage() of the cross-validated intervals; nullopt when Ctrl+C stopped it.
+std::optional<std::string> measured_coverage(const MeasurementSet& data, const Parameters& base,
+                                             const CalibrationOptions& calibration,
+                                             int fit_row_count) {
+  std::optional<std::vector<CoverageCheck>> checks;
+  try {
+    ProgressLine progress(printf_string("coverage of %d rows", fit_row_count));
+    checks = cross_validated_coverage(data, base, calibration, std::ref(progress));
+  } catch (const CalibrationError& e) {
+    throw InputError(e.what());
+  }
+  if (!checks) {
+    return std::nullopt;
+  }
+  return describe_coverage(*checks);
+}
+
+// The coverage of the intervals where it was asked for or is to be saved (result.coverage), or
+// a note that the rows are too many for it; result.interrupted when Ctrl+C stopped it.
+void add_coverage(const Options& options, const CalibrationOptions& calibration,
+                  const MeasurementSet& data, Result& result) {
+  const int fit_row_count = result.report.fit_row_count;
+  const bool saving = !options.save_preset_path.empty();
+  const bool in_reach = fit_row_count <= max_coverage_rows(calibration.fit);
+  if (calibration.held_out && saving && !options.coverage && !in_reach) {
+    result.notes.push_back(printf_string(
+        "coverage not measured: %d fit rows are more than the %d a coverage check fitting %s "
+        "takes; the preset says so",
+        fit_row_count, max_coverage_rows(calibration.fit), options.fit.c_str()));
+  }
+  if (calibration.held_out && (options.coverage || (saving && in_reach))) {
+    const std::optional<std::string> coverage =
+        measured_coverage(data, result.base.parameters, calibration, fit_row_count);
+    result.coverage = coverage.value_or("");
+    result.interrupted = !coverage;
+  }
+}
+
+// The interval level of the fitted constants' prediction intervals, as the saved preset states it.
+std::optional<double> fitted_interval_level(const Result& result) {
+  const CalibrationRecord record = calibration_record(result.report, "");
+  const std::optional<PredictionRange> range = prediction_interval(
+      with_constants(result.base.parameters, result.report.fitted.K, result.report.fitted.p),
+      record.leave_one_out, record.residuals);
+  return range ? std::optional<double>(range->level) : std::nullopt;
 }
 
 }  // namespace
 
-Command add_calibrate_command(CLI::App& app) {
-  struct Options {
-    std::string data_path;
-    std::string fit = "K";
-    InputOptions inputs;
-    std::string save_preset_path;
-    std::string calibrated_on;
-    bool json = false;
-    bool no_held_out = false;
-    bool coverage = false;
-  };
-  auto options = std::make_shared<Options>();
+void declare(CLI::App& app, Options& options) {
   CLI::App* command = app.add_subcommand(
       "calibrate",
       "fit eq. 7's constants (K, or K and the exponent p) to measured n, z_max and Q, with "
       "leave-one-out and group-split figures beside the in-sample ones");
   command
-      ->add_option("--data", options->data_path,
+      ->add_option("--data", options.data_path,
                    "measurements, CSV or JSON (e.g. data/paper-measurements.csv)")
       ->required()
       ->check(app::non_empty_path());
   command
-      ->add_option("--fit", options->fit,
+      ->add_option("--fit", options.fit,
                    "K: fit K = c/(1-nu²) alone (p as the base has it); K,p: K and the exponent p "
                    "of s -> s^p in eq. 7")
       ->check(CLI::IsMember({"K", "K,p"}));
-  command->add_option("--method", options->inputs.method, "solution method (default: the base's)")
+  command->add_option("--method", options.inputs.method, "solution method (default: the base's)")
       ->check(CLI::IsMember({"paper", "exact"}));
-  app::add_law_option(*command, options->inputs.law);
+  app::add_law_option(*command, options.inputs.law);
   command
-      ->add_option("--preset", options->inputs.preset_path,
+      ->add_option("--preset", options.inputs.preset_path,
                    "base preset: its model settings are used for every row, and --save-preset "
                    "starts from it (default: the built-in preset)")
       ->check(app::non_empty_path());
   command
-      ->add_option("--set", options->inputs.assignments,
+      ->add_option("--set", options.inputs.assignments,
                    "override a base setting, KEY=VALUE (e.g. span_rule=L-2d)")
       ->type_name("KEY=VALUE");
   command
-      ->add_option("--save-preset", options->save_preset_path,
+      ->add_option("--save-preset", options.save_preset_path,
                    "write the base preset with the fitted constants (model.load_constant_c, "
                    "model.stress_exponent_p)")
       ->check(app::non_empty_path());
-  command->add_option("--calibrated-on", options->calibrated_on,
+  command->add_option("--calibrated-on", options.calibrated_on,
                       "how --save-preset names the data in its calibration record and labels "
                       "(default: the --data file's name)");
-  command->add_flag("--json", options->json, "print JSON instead of tables");
-  command->add_flag("--no-held-out", options->no_held_out,
+  command->add_flag("--json", options.json, "print JSON instead of tables");
+  command->add_flag("--no-held-out", options.no_held_out,
                     "skip leave-one-out and group splits (the in-sample fit only)");
-  command->add_flag("--coverage", options->coverage,
+  command->add_flag("--coverage", options.coverage,
                     printf_string("measure how often the prediction intervals cover rows they "
                                   "were not fitted to (nested leave-one-out and group splits: "
                                   "about m² fits; at most %d fit rows for K, %d for K,p); done "
                                   "with --save-preset too, which stores it with the intervals "
                                   "(above those rows it saves without)",
                                   kMaxCoverageRowsK, kMaxCoverageRowsKandP));
-  return [options] {
-    return guarded([&] {
-      check_distinct_files(
-          {{"--save-preset", options->save_preset_path}},
-          {{"--data", options->data_path}, {"--preset", options->inputs.preset_path}});
-      // The label goes into the saved preset, whose JSON holds UTF-8 only.
-      if (!detail::is_valid_utf8(options->calibrated_on)) {
-        throw InputError("--calibrated-on '" + detail::cut(options->calibrated_on) +
-                         "' is not UTF-8 text");
-      }
-      const Preset base = resolve_inputs(options->inputs);
-      MeasurementSet data;
-      try {
-        data = load_measurements(options->data_path);
-      } catch (const MeasurementError& e) {
-        throw InputError(e.what());
-      }
-      // A preset stores one leave-one-out fit per fit row and holds at most
-      // kMaxCalibrationEntries: say so before the fit rather than after it.
-      const auto fit_row_count =
-          std::count_if(data.rows.begin(), data.rows.end(),
-                        [](const Measurement& m) { return m.role == MeasurementRole::fit; });
-      if (!options->save_preset_path.empty() && !options->no_held_out &&
-          static_cast<std::size_t>(fit_row_count) > kMaxCalibrationEntries) {
-        throw InputError("--save-preset: " + std::to_string(fit_row_count) +
-                         " fit rows would store as many leave-one-out fits, and a preset holds "
-                         "at most " +
-                         std::to_string(kMaxCalibrationEntries) +
-                         " (add --no-held-out, or fit fewer rows)");
-      }
-      CalibrationOptions calibration;
-      parse_fit_constants(options->fit, calibration.fit);
-      calibration.held_out = !options->no_held_out;
-      // A coverage check refits about m² times: beyond its row limit --coverage is refused before
-      // any work, and --save-preset saves without it (the preset then says it was not measured).
-      const bool coverage_in_reach = fit_row_count <= max_coverage_rows(calibration.fit);
-      if (options->coverage && calibration.held_out && !coverage_in_reach) {
-        throw InputError(printf_string(
-            "--coverage: %d fit rows, and a coverage check fitting %s takes at most %d (it refits "
-            "about m² times); fit K alone or use fewer rows",
-            static_cast<int>(fit_row_count), options->fit.c_str(),
-            max_coverage_rows(calibration.fit)));
-      }
-      const InterruptGuard interrupt_guard;
-      CalibrationReport report;
-      try {
-        ProgressLine progress("calibrate");
-        report = calibrate(data, base.parameters, calibration, std::ref(progress));
-      } catch (const CalibrationError& e) {
-        throw InputError(e.what());
-      }
-      if (report.cancelled) {
-        return interrupted_exit();
-      }
-      std::string coverage;
-      const bool saving = !options->save_preset_path.empty();
-      if (calibration.held_out && saving && !options->coverage && !coverage_in_reach) {
-        std::cerr << printf_string(
-            "foldlab: coverage not measured: %d fit rows are more than the %d a coverage check "
-            "fitting %s takes; the preset says so\n",
-            static_cast<int>(fit_row_count), max_coverage_rows(calibration.fit),
-            options->fit.c_str());
-      }
-      if (calibration.held_out && (options->coverage || (saving && coverage_in_reach))) {
-        std::optional<std::vector<CoverageCheck>> checks;
-        try {
-          ProgressLine progress(printf_string("coverage of %d rows", report.fit_row_count));
-          checks = cross_validated_coverage(data, base.parameters, calibration, std::ref(progress));
-        } catch (const CalibrationError& e) {
-          throw InputError(e.what());
-        }
-        if (!checks) {
-          return interrupted_exit();
-        }
-        coverage = describe_coverage(*checks);
-      }
-      // Ctrl+C after the last progress call still means: print and write nothing.
-      if (interrupted != 0) {
-        return interrupted_exit();
-      }
-      if (options->json) {
-        nlohmann::json j = report_json(report, options->data_path);
-        const CalibrationRecord record = calibration_record(report, "");
-        const std::optional<PredictionRange> level =
-            prediction_interval(with_constants(base.parameters, report.fitted.K, report.fitted.p),
-                                record.leave_one_out, record.residuals);
-        j["interval_level"] = level ? nlohmann::json(level->level) : nlohmann::json(nullptr);
-        j["interval_coverage"] =
-            coverage.empty() ? nlohmann::json(nullptr) : nlohmann::json(coverage);
-        std::cout << j.dump(2) << "\n";
-      } else {
-        print_report(report, options->data_path, base.name);
-        if (!coverage.empty()) {
-          std::cout << "\nPrediction intervals (jackknife+ over the leave-one-out fits), how often "
-                       "they covered rows they were not fitted to:\n  "
-                    << coverage << "\n";
-        }
-      }
-      if (!options->save_preset_path.empty()) {
-        Preset out = base;
-        const FittedConstants& f = report.fitted;
-        out.parameters = with_constants(base.parameters, f.K, f.p);
-        out.name = base.name + " (calibrated: K = " + printf_string("%.4g", f.K) +
-                   ", p = " + printf_string("%.4g", f.p) + ")";
-        out.description = "Eq. 7's constants fitted by foldlab calibrate --fit " +
-                          std::string(to_string(report.fit)) + " on " + options->data_path + " (" +
-                          std::string(to_string(base.parameters.model.method)) +
-                          " method): in-sample " + summary_text(report.in_sample) +
-                          "; leave-one-out " + summary_text(report.leave_one_out) + ".";
-        const std::string data_label =
-            options->calibrated_on.empty()
-                ? std::filesystem::path(options->data_path).filename().string()
-                : options->calibrated_on;
-        out.calibration = calibration_record(report, data_label, coverage);
-        out.written_by = app::version_line();
-        save_preset(out, options->save_preset_path);
-        std::cerr << "foldlab: wrote " << options->save_preset_path << "\n";
-      }
-      return kExitOk;
-    });
-  };
+}
+
+Result run(const Options& options) {
+  check_output_and_label(options);
+  Result result;
+  result.base = resolve_inputs(options.inputs);
+  result.data_path = options.data_path;
+  const MeasurementSet data = load_data(options);
+  const int fit_row_count = fit_rows(data);
+  const CalibrationOptions calibration = calibration_options(options);
+  check_row_limits(options, calibration, fit_row_count);
+  result.report = fit(data, result.base.parameters, calibration);
+  if (result.report.cancelled) {
+    result.interrupted = true;
+    return result;
+  }
+  add_coverage(options, calibration, data, result);
+  // Ctrl+C after the last progress call still means: print and write nothing.
+  result.interrupted = result.interrupted || interrupted != 0;
+  if (options.json && !result.interrupted) {
+    result.interval_level = fitted_interval_level(result);
+  }
+  return result;
+}
+
+void print_text(const Result& result, std::ostream& out) {
+  print_header(result, out);
+  print_fit(result.report, out);
+  print_rows(result.report, out);
+  print_totals(result.report, out);
+  if (!result.coverage.empty()) {
+    out << "\nPrediction intervals (jackknife+ over the leave-one-out fits), how often they "
+           "covered rows they were not fitted to:\n  "
+        << result.coverage << "\n";
+  }
+}
+
+json print_json(const Result& result) {
+  json out = report_json(result.report, result.data_path);
+  out["interval_level"] = optional_json(result.interval_level);
+  out["interval_coverage"] = result.coverage.empty() ? json(nullptr) : json(result.coverage);
+  return out;
+}
+
+void save_calibrated_preset(const Options& options, const Result& result) {
+  const CalibrationReport& report = result.report;
+  const FittedConstants& f = report.fitted;
+  Preset out = result.base;
+  out.parameters = with_constants(result.base.parameters, f.K, f.p);
+  out.name = result.base.name + " (calibrated: K = " + printf_string("%.4g", f.K) +
+             ", p = " + printf_string("%.4g", f.p) + ")";
+  out.description = "Eq. 7's constants fitted by foldlab calibrate --fit " +
+                    std::string(to_string(report.fit)) + " on " + options.data_path + " (" +
+                    std::string(to_string(result.base.parameters.model.method)) +
+                    " method): in-sample " + summary_text(report.in_sample) + "; leave-one-out " +
+                    summary_text(report.leave_one_out) + ".";
+  const std::string data_label = options.calibrated_on.empty()
+                                     ? std::filesystem::path(options.data_path).filename().string()
+                                     : options.calibrated_on;
+  out.calibration = calibration_record(report, data_label, result.coverage);
+  out.written_by = app::version_line();
+  save_preset(out, options.save_preset_path);
+}
+
+int execute(const Options& options) {
+  // Up until the preset is written: a Ctrl+C stops the fits, never a half-written file.
+  const InterruptGuard interrupt_guard;
+  const Result result = run(options);
+  write_notes(result.notes, std::cerr);
+  if (result.interrupted) {
+    return interrupted_exit();
+  }
+  if (options.json) {
+    write_json(print_json(result), std::cout);
+  } else {
+    print_text(result, std::cout);
+  }
+  if (!options.save_preset_path.empty()) {
+    save_calibrated_preset(options, result);
+    write_notes({"wrote " + options.save_preset_path}, std::cerr);
+  }
+  return kExitOk;
+}
+
+}  // namespace calibrate_command
+
+Command add_calibrate_command(CLI::App& app) {
+  return make_command(app, calibrate_command::declare, calibrate_command::execute);
 }
 
 }  // namespace foldlab::cli

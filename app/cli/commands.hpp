@@ -1,6 +1,8 @@
 // The headless commands of the foldlab executable, registered on a CLI11 app.
 #pragma once
 
+#include <memory>
+
 #include <CLI/CLI.hpp>
 
 #include "app/common/inputs.hpp"
@@ -22,6 +24,17 @@ using app::kExitInvalidInput;
 using app::kExitOk;
 using app::preset_files;
 using app::resolve_inputs;
+
+// A command from its parts: `declare` registers its flags on an Options after which, once
+// parsed, `execute` (run, write what the command writes, print) gives the exit status, with the
+// statuses of guarded() for what it throws.
+template <class Options>
+Command make_command(CLI::App& app, void (*declare)(CLI::App&, Options&),
+                     int (*execute)(const Options&)) {
+  auto options = std::make_shared<Options>();
+  declare(app, *options);
+  return [options, execute] { return guarded([&] { return execute(*options); }); };
+}
 
 Command add_solve_command(CLI::App& app);
 Command add_export_command(CLI::App& app);

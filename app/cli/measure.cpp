@@ -1,19 +1,17 @@
-// `foldlab measure`: folds measured on a real cloth (depths, or points clicked on a photo) to n
-// and Q, and a row of the measurements file that `foldlab calibrate` fits.
+#include "app/cli/measure.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
 #include <iostream>
-#include <memory>
 #include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
 
-#include <nlohmann/json.hpp>
-
 #include "app/cli/commands.hpp"
+#include "app/cli/output.hpp"
 #include "core/analysis/fold_measurement.hpp"
 #include "core/io/image.hpp"
 #include "core/io/measurements.hpp"
@@ -21,6 +19,7 @@
 #include "core/model/text_format.hpp"
 
 namespace foldlab::cli {
+namespace measure_command {
 namespace {
 
 using detail::printf_string;
@@ -95,170 +94,208 @@ std::string number_text(const std::vector<double>& values) {
   return detail::join_comma(items);
 }
 
+// Either depths or a photo with its supports and folds, never both: true for depths.
+bool by_depth(const Options& o) {
+  const bool depths = !o.depths_mm.empty();
+  const bool photo = !o.photo.empty() || !o.supports_px.empty() || !o.folds_px.empty();
+  if (depths == photo) {
+    throw InputError(
+        "measure needs either --depths-mm A0,A1,... or --photo FILE --supports-px "
+        "X1,Y1,X2,Y2 --folds-px Y0,Y1,..., not both");
+  }
+  if (photo) {
+    for (const auto& [option, value] :
+         {std::pair{"--photo", &o.photo}, std::pair{"--supports-px", &o.supports_px},
+          std::pair{"--folds-px", &o.folds_px}}) {
+      if (value->empty()) {
+        throw InputError(std::string(option) +
+                         " is missing: a photo needs --photo, --supports-px and --folds-px");
+      }
+    }
+  }
+  return depths;
+}
+
+void check_name(const std::string& name) {
+  // The name goes into the row and the JSON output, which hold UTF-8 only.
+  if (!detail::is_valid_utf8(name)) {
+    throw InputError("--name '" + detail::cut(name) + "' is not UTF-8 text");
+  }
+  // One line of text: a CSV cell holds no line break, and a terminal escape in a file's
+  // names would reach every screen that prints them.
+  if (detail::escaped(name) != name) {
+    throw InputError("--name '" + detail::cut(name) +
+                     "' holds a control character (a line break, an escape): give one line "
+                     "of text");
+  }
+}
+
+void check_z_max(const std::optional<double>& z_max_mm) {
+  if (z_max_mm && !(*z_max_mm >= 0.0 && std::isfinite(*z_max_mm))) {
+    throw InputError("--z-max-mm " + detail::shortest_number(*z_max_mm) +
+                     ": an out-of-plane depth is a finite number >= 0");
+  }
+}
+
+// The upper edge is held at its supports, so no point of it lies further than half its length L
+// from them: a deeper fold is a typing error (a unit off, say), not a measurement.
+void check_z_max_reach(const std::optional<double>& z_max_mm, const Parameters& p) {
+  if (z_max_mm && *z_max_mm > 0.5 * p.hanging.length_mm) {
+    throw InputError("--z-max-mm " + detail::shortest_number(*z_max_mm) +
+                     " is deeper than half the upper edge, L/2 = " +
+                     detail::shortest_number(0.5 * p.hanging.length_mm) +
+                     " mm, which no fold of this cloth can reach");
+  }
+}
+
+// The folds' depths in mm, typed or from the photo's pixels (scaled by the span l).
+std::vector<double> measured_depths(const Options& o, bool depths, const Parameters& p) {
+  try {
+    if (depths) {
+      return number_list("--depths-mm", o.depths_mm, 1);
+    }
+    const std::vector<double> supports = number_list("--supports-px", o.supports_px, 4, 4);
+    const std::vector<double> folds = number_list("--folds-px", o.folds_px, 1);
+    const std::pair<int, int> size = photo_size(o.photo);
+    check_inside("--supports-px", supports, true, size);
+    check_inside("--folds-px", folds, false, size);
+    return depths_from_pixels({supports[0], supports[1]}, {supports[2], supports[3]}, folds,
+                              span_mm(p));
+  } catch (const FoldMeasurementError& e) {
+    throw InputError("--" + e.input() + (e.input() == "depths" ? "-mm" : "-px") + ": " + e.what());
+  }
+}
+
+MeasurementSet one_row(const Measurement& row) {
+  MeasurementSet set;
+  set.rows.push_back(row);
+  return set;
+}
+
+// The rules `calibrate` reads a row by: a row it would refuse is no measurement.
+void check_row(const Measurement& row) {
+  try {
+    (void)measurements_from_csv(measurements_to_csv(one_row(row)), "the measured row");
+  } catch (const MeasurementError& e) {
+    throw InputError(e.what());
+  }
+}
+
 }  // namespace
 
-Command add_measure_command(CLI::App& app) {
-  struct Options {
-    std::string preset_path;
-    std::vector<std::string> assignments;
-    std::string depths_mm;
-    std::string photo;
-    std::string supports_px;
-    std::string folds_px;
-    std::optional<double> z_max_mm;
-    std::string name;
-    std::string append_path;
-    bool json = false;
-  };
-  auto options = std::make_shared<Options>();
+void declare(CLI::App& app, Options& options) {
   CLI::App* command = app.add_subcommand(
       "measure",
       "n and Q of folds measured on a real cloth (a least-squares fit of ln a_i against i), and "
       "the measurements row that `foldlab calibrate --data` reads");
   command
-      ->add_option("--preset", options->preset_path,
+      ->add_option("--preset", options.preset_path,
                    "the cloth's preset: its fabric and hanging go into the row, its span l "
                    "scales a photo (default: the built-in preset)")
       ->check(app::non_empty_path());
   command
-      ->add_option("--set", options->assignments,
+      ->add_option("--set", options.assignments,
                    "override an input of the cloth, KEY=VALUE (see `foldlab solve --help`)")
       ->type_name("KEY=VALUE");
-  command->add_option("--depths-mm", options->depths_mm,
+  command->add_option("--depths-mm", options.depths_mm,
                       "the folds' depths below the supports' line at the centre, lowest first "
                       "(a_0, a_1, ..., a_n in mm)");
   command
-      ->add_option("--photo", options->photo,
+      ->add_option("--photo", options.photo,
                    "a front photo of the hanging cloth (PNG or JPEG) that the pixels refer to")
       ->check(app::non_empty_path());
-  command->add_option("--supports-px", options->supports_px,
+  command->add_option("--supports-px", options.supports_px,
                       "the two supports in the photo, X1,Y1,X2,Y2 (pixels, y downward): their "
                       "distance is the span l");
-  command->add_option("--folds-px", options->folds_px,
+  command->add_option("--folds-px", options.folds_px,
                       "the pixel rows where the folds cross the centre line, lowest first");
-  command->add_option("--z-max-mm", options->z_max_mm,
+  command->add_option("--z-max-mm", options.z_max_mm,
                       "the largest out-of-plane depth, if measured (a front photo does not show "
                       "it)");
-  command->add_option("--name", options->name, "a label for the row");
+  command->add_option("--name", options.name, "a label for the row");
   command
-      ->add_option("--append", options->append_path,
+      ->add_option("--append", options.append_path,
                    "add the row to this measurements file (created with its header if absent)")
       ->check(app::non_empty_path());
-  command->add_flag("--json", options->json, "print JSON instead of text");
-  return [options] {
-    return guarded([&] {
-      const Options& o = *options;
-      const bool by_depth = !o.depths_mm.empty();
-      const bool by_photo = !o.photo.empty() || !o.supports_px.empty() || !o.folds_px.empty();
-      if (by_depth == by_photo) {
-        throw InputError(
-            "measure needs either --depths-mm A0,A1,... or --photo FILE --supports-px "
-            "X1,Y1,X2,Y2 --folds-px Y0,Y1,..., not both");
-      }
-      if (by_photo) {
-        for (const auto& [option, value] :
-             {std::pair{"--photo", &o.photo}, std::pair{"--supports-px", &o.supports_px},
-              std::pair{"--folds-px", &o.folds_px}}) {
-          if (value->empty()) {
-            throw InputError(std::string(option) +
-                             " is missing: a photo needs --photo, --supports-px and --folds-px");
-          }
-        }
-      }
-      // The name goes into the row and the JSON output, which hold UTF-8 only.
-      if (!detail::is_valid_utf8(o.name)) {
-        throw InputError("--name '" + detail::cut(o.name) + "' is not UTF-8 text");
-      }
-      // One line of text: a CSV cell holds no line break, and a terminal escape in a file's
-      // names would reach every screen that prints them.
-      if (detail::escaped(o.name) != o.name) {
-        throw InputError("--name '" + detail::cut(o.name) +
-                         "' holds a control character (a line break, an escape): give one line "
-                         "of text");
-      }
-      if (o.z_max_mm && !(*o.z_max_mm >= 0.0 && std::isfinite(*o.z_max_mm))) {
-        throw InputError("--z-max-mm " + detail::shortest_number(*o.z_max_mm) +
-                         ": an out-of-plane depth is a finite number >= 0");
-      }
-      const Preset preset = resolve_inputs({o.preset_path, o.assignments, "", ""});
-      const Parameters& p = preset.parameters;
-      // The upper edge is held at its supports, so no point of it lies further than half its
-      // length L from them: a deeper fold is a typing error (a unit off, say), not a measurement.
-      if (o.z_max_mm && *o.z_max_mm > 0.5 * p.hanging.length_mm) {
-        throw InputError("--z-max-mm " + detail::shortest_number(*o.z_max_mm) +
-                         " is deeper than half the upper edge, L/2 = " +
-                         detail::shortest_number(0.5 * p.hanging.length_mm) +
-                         " mm, which no fold of this cloth can reach");
-      }
-      std::vector<double> depths;
-      try {
-        if (by_depth) {
-          depths = number_list("--depths-mm", o.depths_mm, 1);
-        } else {
-          const std::vector<double> supports = number_list("--supports-px", o.supports_px, 4, 4);
-          const std::vector<double> folds = number_list("--folds-px", o.folds_px, 1);
-          const std::pair<int, int> size = photo_size(o.photo);
-          check_inside("--supports-px", supports, true, size);
-          check_inside("--folds-px", folds, false, size);
-          depths = depths_from_pixels({supports[0], supports[1]}, {supports[2], supports[3]}, folds,
-                                      span_mm(p));
-        }
-      } catch (const FoldMeasurementError& e) {
-        throw InputError("--" + e.input() + (e.input() == "depths" ? "-mm" : "-px") + ": " +
-                         e.what());
-      }
-      FoldMeasurement folds;
-      try {
-        folds = measure_folds(depths);
-      } catch (const FoldMeasurementError& e) {
-        throw InputError(std::string(by_depth ? "--depths-mm" : "--folds-px") + ": " + e.what());
-      }
-      check_distinct_files({{"--append", o.append_path}},
-                           {{"--preset", o.preset_path}, {"--photo", o.photo}});
-      const Measurement row = measurement_row(p, folds, o.z_max_mm, o.name);
-      MeasurementSet one;
-      one.rows.push_back(row);
-      const std::string row_csv = measurements_to_csv(one);
-      try {
-        // The rules `calibrate` reads a row by: a row it would refuse is no measurement.
-        (void)measurements_from_csv(row_csv, "the measured row");
-      } catch (const MeasurementError& e) {
-        throw InputError(e.what());
-      }
-      if (!o.append_path.empty()) {
-        try {
-          append_measurement(o.append_path, row);
-        } catch (const MeasurementError& e) {
-          throw InputError(std::string("--append: ") + e.what());
-        }
-      }
-      if (o.json) {
-        nlohmann::json out = {
-            {"n", folds.n},
-            {"Q", folds.Q},
-            {"a_mm", folds.a_mm},
-            {"fit_residual", folds.fit_residual},
-            {"z_max_mm", o.z_max_mm ? nlohmann::json(*o.z_max_mm) : nullptr},
-            {"row", measurements_to_json(one)["rows"][0]},
-            {"appended_to",
-             o.append_path.empty() ? nlohmann::json(nullptr) : nlohmann::json(o.append_path)}};
-        std::cout << out.dump(2) << "\n";
-      } else {
-        std::cout << "n = " << folds.n << "\nQ = " << printf_string("%.4g", folds.Q)
-                  << "\na_mm = " << number_text(folds.a_mm)
-                  << "\nfit_residual = " << printf_string("%.3g", folds.fit_residual)
-                  << " (rms of ln a_i about the fitted line)\n";
-        std::cout << (o.append_path.empty() ? "row (not appended: no --append):\n"
-                                            : "row appended to " + o.append_path + ":\n");
-        // The row holds the name as given: echoed, its control characters are spelt out.
-        std::istringstream lines(row_csv);
-        for (std::string line; std::getline(lines, line);) {
-          std::cout << detail::escaped(line) << "\n";
-        }
-      }
-      return kExitOk;
-    });
-  };
+  command->add_flag("--json", options.json, "print JSON instead of text");
+}
+
+Result run(const Options& options) {
+  const bool depths = by_depth(options);
+  check_name(options.name);
+  check_z_max(options.z_max_mm);
+  const Preset preset = resolve_inputs({options.preset_path, options.assignments, "", ""});
+  const Parameters& p = preset.parameters;
+  check_z_max_reach(options.z_max_mm, p);
+  const std::vector<double> depths_mm = measured_depths(options, depths, p);
+  Result result;
+  result.z_max_mm = options.z_max_mm;
+  result.append_path = options.append_path;
+  try {
+    result.folds = measure_folds(depths_mm);
+  } catch (const FoldMeasurementError& e) {
+    throw InputError(std::string(depths ? "--depths-mm" : "--folds-px") + ": " + e.what());
+  }
+  check_distinct_files({{"--append", options.append_path}},
+                       {{"--preset", options.preset_path}, {"--photo", options.photo}});
+  result.row = measurement_row(p, result.folds, options.z_max_mm, options.name);
+  check_row(result.row);
+  return result;
+}
+
+void append_row(const Result& result) {
+  if (result.append_path.empty()) {
+    return;
+  }
+  try {
+    append_measurement(result.append_path, result.row);
+  } catch (const MeasurementError& e) {
+    throw InputError(std::string("--append: ") + e.what());
+  }
+}
+
+void print_text(const Result& result, std::ostream& out) {
+  const FoldMeasurement& folds = result.folds;
+  out << "n = " << folds.n << "\nQ = " << printf_string("%.4g", folds.Q)
+      << "\na_mm = " << number_text(folds.a_mm)
+      << "\nfit_residual = " << printf_string("%.3g", folds.fit_residual)
+      << " (rms of ln a_i about the fitted line)\n";
+  out << (result.append_path.empty() ? "row (not appended: no --append):\n"
+                                     : "row appended to " + result.append_path + ":\n");
+  // The row holds the name as given: echoed, its control characters are spelt out.
+  std::istringstream lines(measurements_to_csv(one_row(result.row)));
+  for (std::string line; std::getline(lines, line);) {
+    out << detail::escaped(line) << "\n";
+  }
+}
+
+nlohmann::json print_json(const Result& result) {
+  const FoldMeasurement& folds = result.folds;
+  return {{"n", folds.n},
+          {"Q", folds.Q},
+          {"a_mm", folds.a_mm},
+          {"fit_residual", folds.fit_residual},
+          {"z_max_mm", optional_json(result.z_max_mm)},
+          {"row", measurements_to_json(one_row(result.row))["rows"][0]},
+          {"appended_to", result.append_path.empty() ? nlohmann::json(nullptr)
+                                                     : nlohmann::json(result.append_path)}};
+}
+
+int execute(const Options& options) {
+  const Result result = run(options);
+  append_row(result);
+  if (options.json) {
+    write_json(print_json(result), std::cout);
+  } else {
+    print_text(result, std::cout);
+  }
+  return kExitOk;
+}
+
+}  // namespace measure_command
+
+Command add_measure_command(CLI::App& app) {
+  return make_command(app, measure_command::declare, measure_command::execute);
 }
 
 }  // namespace foldlab::cli

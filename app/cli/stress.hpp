@@ -1,0 +1,31 @@
+// `foldlab stress`: both methods over inputs far wider than real fabrics; exit 1 on any NaN, inf
+// or hang. The result is core's StressReport.
+#pragma once
+
+#include <ostream>
+#include <string>
+
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+
+#include "core/tools/stress.hpp"
+
+namespace foldlab::cli::stress_command {
+
+struct Options {
+  int samples = 100000;
+  std::string seed = "1";  // text: CLI11 turns "-1" and 2^64 into 2^64 - 1 as an unsigned number
+  bool json = false;
+  int threads = 0;  // 0: hardware threads
+};
+
+void declare(CLI::App& app, Options& options);
+// Throws app::InputError for a seed that is not a whole number from 0 to 2^64 - 1.
+StressReport run(const Options& options);
+void print_text(const StressReport& report, std::ostream& out);
+nlohmann::json print_json(const StressReport& report);
+
+// The command after parsing: run, write what the command writes, print; the exit status.
+int execute(const Options& options);
+
+}  // namespace foldlab::cli::stress_command

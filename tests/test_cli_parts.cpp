@@ -1,0 +1,191 @@
+// The commands' parts called directly: run() computes and neither prints nor writes a file (the
+// command's glue does both), and its result holds what the user's input implies.
+#include <filesystem>
+#include <functional>
+#include <iostream>
+#include <sstream>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "app/cli/bench.hpp"
+#include "app/cli/calibrate.hpp"
+#include "app/cli/compare.hpp"
+#include "app/cli/export.hpp"
+#include "app/cli/measure.hpp"
+#include "app/cli/solve.hpp"
+#include "app/cli/stress.hpp"
+#include "app/cli/sweep.hpp"
+#include "core/io/io.hpp"
+#include "temp_dir.hpp"
+
+namespace fs = std::filesystem;
+using namespace foldlab::cli;
+
+namespace {
+
+const fs::path kPresetsDir = FOLDLAB_PRESETS_DIR;
+const fs::path kMeasurements = kPresetsDir.parent_path() / "data" / "paper-measurements.csv";
+
+// What `work` printed on stdout and stderr together.
+std::string printed_by(const std::function<void()>& work) {
+  std::ostringstream captured;
+  std::streambuf* out = std::cout.rdbuf(captured.rdbuf());
+  std::streambuf* err = std::cerr.rdbuf(captured.rdbuf());
+  try {
+    work();
+  } catch (...) {
+    std::cout.rdbuf(out);
+    std::cerr.rdbuf(err);
+    throw;
+  }
+  std::cout.rdbuf(out);
+  std::cerr.rdbuf(err);
+  return captured.str();
+}
+
+class CliPartsTest : public foldlab::testing::TempDirTest {
+ protected:
+  CliPartsTest() : TempDirTest("foldlab_cli_parts_") {}
+};
+
+TEST_F(CliPartsTest, SolveRunPrintsNothingAndItsPrintersShowTheSolution) {
+  solve_command::Options options;
+  options.inputs.assignments = {"h=900"};
+  solve_command::Result result;
+  EXPECT_EQ(printed_by([&] { result = solve_command::run(options); }), "");
+  EXPECT_EQ(result.preset.parameters.hanging.height_mm, 900.0);  // as typed
+  const nlohmann::json j = solve_command::print_json(result);
+  EXPECT_EQ(j.at("n"), result.solution.n);
+  EXPECT_FALSE(j.contains("stats"));  // not asked for
+  std::ostringstream text;
+  solve_command::print_text(result, text);
+  EXPECT_NE(text.str().find(std::to_string(result.solution.n)), std::string::npos);
+}
+
+TEST_F(CliPartsTest, ExportRunWritesNoFileTheGlueWritesThem) {
+  export_command::Options options;
+  const fs::path obj = dir_ / "cloth.obj";
+  const fs::path svg = dir_ / "folds.svg";
+  options.paths = {obj.string(), "", "", svg.string()};  // kExportFormats: obj, glb, csv, svg
+  options.grid = "8x6";
+  export_command::Result result;
+  EXPECT_EQ(printed_by([&] { result = export_command::run(options); }), "");
+  EXPECT_FALSE(fs::exists(obj));
+  EXPECT_FALSE(fs::exists(svg));
+  EXPECT_TRUE(result.mesh);
+  EXPECT_TRUE(result.lines);
+  export_command::write_files(options, result);
+  // 8 x 6 vertices, as typed: one "v" line each in the OBJ.
+  const std::string text = foldlab::read_text_file(obj, 1 << 20);
+  std::istringstream lines(text);
+  int vertices = 0;
+  for (std::string line; std::getline(lines, line);) {
+    vertices += line.rfind("v ", 0) == 0 ? 1 : 0;
+  }
+  EXPECT_EQ(vertices, 48);
+  EXPECT_TRUE(fs::exists(svg));
+}
+
+TEST_F(CliPartsTest, CompareGroupsRowsByTheTableInEachPresetsName) {
+  compare_command::Options options;
+  for (const char* file : {"paper-table1-h900.json", "paper-table2-w10.json",
+                           "paper-table1-h1400.json", "fabric-denim-13oz.json"}) {
+    options.presets.push_back((kPresetsDir / file).string());
+  }
+  compare_command::Result result;
+  EXPECT_EQ(printed_by([&] { result = compare_command::run(options); }), "");
+  // The denim carries no published results and is left out; the others keep their order.
+  ASSERT_EQ(result.names.size(), 3u);
+  EXPECT_EQ(result.names[0], "Table 1, h = 900 mm");
+  EXPECT_EQ(result.names[2], "Table 1, h = 1400 mm");
+  ASSERT_EQ(result.accuracy_by_table.size(), 2u);
+  EXPECT_EQ(result.accuracy_by_table[0].group, "Table 1");
+  EXPECT_EQ(result.accuracy_by_table[0].rows, 2);
+  EXPECT_EQ(result.accuracy_by_table[1].group, "Table 2");
+  EXPECT_EQ(result.accuracy_by_table[1].rows, 1);
+  for (const auto& method_rows : result.rows) {
+    EXPECT_EQ(method_rows.size(), 3u);
+  }
+}
+
+TEST_F(CliPartsTest, SweepRunCountsTheValuesTheOtherInputsRefuse) {
+  sweep_command::Options options;
+  options.inputs.assignments = {"L=1400"};
+  options.axis.key = "d";
+  options.axis.from = 300;
+  options.axis.to = 800;
+  options.axis.steps = 6;  // d = 300, 400, ..., 800; d must stay below L/2 = 700
+  sweep_command::Result result;
+  EXPECT_EQ(printed_by([&] { result = sweep_command::run(options); }), "");
+  EXPECT_EQ(result.refused, 2);
+  EXPECT_EQ(result.first_reason.rfind("d = 700: ", 0), 0u) << result.first_reason;
+  ASSERT_EQ(result.notes.size(), 1u);
+  std::ostringstream csv;
+  sweep_command::print_csv(result, csv);
+  EXPECT_NE(csv.str().find("\n700,,,,invalid,\n800,,,,invalid,\n"), std::string::npos) << csv.str();
+}
+
+TEST_F(CliPartsTest, MeasureRunFitsAGeometricProgressionAndAppendsOnlyInTheGlue) {
+  measure_command::Options options;
+  options.depths_mm = "80,40,20,10";  // each half the one below: Q = 2, n = 3
+  const fs::path rows = dir_ / "rows.csv";
+  options.append_path = rows.string();
+  measure_command::Result result;
+  EXPECT_EQ(printed_by([&] { result = measure_command::run(options); }), "");
+  EXPECT_FALSE(fs::exists(rows));
+  EXPECT_EQ(result.folds.n, 3);
+  EXPECT_NEAR(result.folds.Q, 2.0, 1e-12);
+  std::ostringstream text;
+  measure_command::print_text(result, text);
+  EXPECT_EQ(text.str().rfind("n = 3\nQ = 2\na_mm = 80, 40, 20, 10\n", 0), 0u) << text.str();
+  measure_command::append_row(result);
+  EXPECT_TRUE(fs::exists(rows));
+}
+
+TEST_F(CliPartsTest, CalibrateRunPrintsNothingAndSavesOnlyInTheGlue) {
+  calibrate_command::Options options;
+  options.data_path = kMeasurements.string();
+  options.no_held_out = true;
+  const fs::path saved = dir_ / "fitted.json";
+  options.save_preset_path = saved.string();
+  calibrate_command::Result result;
+  EXPECT_EQ(printed_by([&] { result = calibrate_command::run(options); }), "");
+  EXPECT_FALSE(fs::exists(saved));
+  EXPECT_FALSE(result.interrupted);
+  // The paper's six rows of Tables 1-2 (data/paper-measurements.csv), every one a fit row.
+  EXPECT_EQ(result.report.fit_row_count, 6);
+  EXPECT_FALSE(result.interval_level);  // JSON only
+  calibrate_command::save_calibrated_preset(options, result);
+  EXPECT_TRUE(fs::exists(saved));
+}
+
+TEST_F(CliPartsTest, BenchRunWritesNoFileTheGlueWritesThem) {
+  bench_command::Options options;
+  options.cases = 2;
+  options.repeats = 1;
+  options.no_pipeline = true;
+  options.csv_path = (dir_ / "bench.csv").string();
+  bench_command::Result result;
+  EXPECT_EQ(printed_by([&] { result = bench_command::run(options); }), "");
+  EXPECT_FALSE(fs::exists(options.csv_path));
+  EXPECT_EQ(result.random_cases, 2);
+  EXPECT_TRUE(result.pipeline.empty());
+  bench_command::write_files(options, result);
+  EXPECT_TRUE(fs::exists(options.csv_path));
+}
+
+TEST_F(CliPartsTest, StressRunReadsTheSeedAsTyped) {
+  stress_command::Options options;
+  options.samples = 10;
+  options.threads = 1;
+  options.seed = "18446744073709551615";  // 2^64 - 1, the largest seed
+  foldlab::StressReport report;
+  EXPECT_EQ(printed_by([&] { report = stress_command::run(options); }), "");
+  EXPECT_EQ(report.seed, 18446744073709551615ull);
+  EXPECT_EQ(report.samples, 10);
+  options.seed = "-1";
+  EXPECT_THROW(stress_command::run(options), foldlab::app::InputError);
+}
+
+}  // namespace
