@@ -100,8 +100,9 @@ std::vector<std::string> step_problems(const json& step) {
   if (!step.is_object() || step.empty()) {
     return {"is not an object with one action"};
   }
-  static const char* const kActions[] = {"drag",   "click",  "click_photo", "key",   "type",
-                                         "resize", "frames", "screenshot",  "expect"};
+  static const char* const kActions[] = {"drag",   "click",   "click_photo", "key",
+                                         "type",   "resize",  "frames",      "screenshot",
+                                         "expect", "visible", "absent"};
   std::vector<std::string> actions;
   for (const char* action : kActions) {
     if (step.contains(action)) {
@@ -110,14 +111,16 @@ std::vector<std::string> step_problems(const json& step) {
   }
   if (actions.size() != 1) {
     return {actions.empty() ? "has no action (drag, click, click_photo, key, type, resize, "
-                              "frames, screenshot or expect)"
+                              "frames, screenshot, expect, visible or absent)"
                             : "has more than one action: " + detail::join_comma(actions)};
   }
   const std::string& action = actions.front();
   std::vector<std::string> problems;
   for (const auto& [name, value] : step.items()) {
-    const bool allowed = name == action || (action == "drag" && name == "dx") ||
-                         (action == "click" && (name == "at" || name == "ctrl"));
+    const bool allowed = name == action ||
+                         (action == "drag" && (name == "dx" || name == "shift")) ||
+                         (action == "click" && (name == "at" || name == "ctrl")) ||
+                         ((action == "visible" || action == "absent") && name == "in");
     if (!allowed) {
       problems.push_back("\"" + detail::cut(name) + "\" does not belong to a " + action + " step");
     }
@@ -131,6 +134,10 @@ std::vector<std::string> step_problems(const json& step) {
     if (!step.contains("dx") || !step["dx"].is_number() ||
         std::abs(step["dx"].get<double>()) > 10000.0) {
       problems.push_back("drag needs \"dx\": a number of pixels");
+    }
+    if (step.contains("shift") && !step["shift"].is_boolean()) {
+      problems.push_back("\"shift\" must be true or false, not " +
+                         detail::cut(step["shift"].dump()));
     }
   } else if (action == "click") {
     if (step.contains("at")) {
@@ -161,6 +168,14 @@ std::vector<std::string> step_problems(const json& step) {
     if (!arg.is_string() || !parse_chord(arg.get<std::string>())) {
       problems.push_back("key " + detail::cut(arg.dump()) +
                          " is not a chord such as \"ctrl+z\", \"ctrl+shift+z\", \"escape\"");
+    }
+  } else if (action == "visible" || action == "absent") {
+    if (!arg.is_string() || arg.get<std::string>().empty()) {
+      problems.push_back(action + " needs the text to look for, not " + detail::cut(arg.dump()));
+    }
+    if (step.contains("in") && (!step["in"].is_string() || step["in"].get<std::string>().empty())) {
+      problems.push_back("\"in\" needs a panel's key (results, parameters, ...), not " +
+                         detail::cut(step["in"].dump()));
     }
   } else if (action == "type") {
     if (!arg.is_string()) {
