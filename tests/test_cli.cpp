@@ -142,7 +142,8 @@ TEST_F(CliTest, ZeroDisplacementHasNoSlack) {
 TEST_F(CliTest, DisplacementOfHalfTheLengthIsInvalidInput) {
   const RunResult r = run({"solve", "--preset", kH900, "--set", "d=700", "--json"});
   EXPECT_EQ(r.exit_status, 2);
-  EXPECT_TRUE(contains(r.err, "d_mm = 700 must be")) << r.err;
+  EXPECT_TRUE(contains(r.err, "support displacement d = 700 mm must be below L/2 = 700 mm"))
+      << r.err;
   EXPECT_TRUE(r.out.empty()) << r.out;
 }
 
@@ -167,8 +168,10 @@ TEST_F(CliTest, BadSettingsAreInvalidInput) {
   // naming the K that was typed beside the c it gives.
   const RunResult huge_K = run({"solve", "--set", "K=1e9"});
   EXPECT_EQ(huge_K.exit_status, 2);
-  EXPECT_TRUE(contains(huge_K.err, "c = 9.1e+08 must be in [0.001, 10000]")) << huge_K.err;
-  EXPECT_TRUE(contains(huge_K.err, "(K = c / (1 - nu²) = 1e+09)")) << huge_K.err;
+  EXPECT_TRUE(
+      contains(huge_K.err, "load-condition constant c = 9.1e8 must be between 0.001 and 10,000"))
+      << huge_K.err;
+  EXPECT_TRUE(contains(huge_K.err, "(K = c / (1 − ν²) = 1e9)")) << huge_K.err;
 }
 
 TEST_F(CliTest, ControlCharactersInKeysAndValuesAreEscapedInMessages) {
@@ -471,9 +474,10 @@ TEST_F(CliTest, QuadratureSettingsThatWouldRunForHoursAreRefusedWithTheirRanges)
   const RunResult r = run({"solve", "--set", "simpson_intervals=1000000", "--set",
                            "max_iterations=1000000", "--set", "length_tolerance=1e-300"});
   EXPECT_EQ(r.exit_status, 2);
-  for (const char* range : {"simpson_intervals = 1e+06 must be in [2, 10000]",
-                            "max_iterations = 1e+06 must be in [1, 1000]",
-                            "length_tolerance = 1e-300 must be in [1e-12, 0.5]"}) {
+  for (const char* range :
+       {"quadrature intervals simpson_intervals = 1,000,000 must be between 2 and 10,000",
+        "iteration cap max_iterations = 1,000,000 must be between 1 and 1000",
+        "length tolerance length_tolerance = 1e-300 must be between 1e-12 and 0.5"}) {
     EXPECT_TRUE(contains(r.err, range)) << range << "\n" << r.err;
   }
   EXPECT_TRUE(r.out.empty()) << r.out;
@@ -500,8 +504,8 @@ TEST_F(CliTest, ExportRefusesFoldLinesAboveThePointBudget) {
   // n is capped at 10^4 folds, of which about 1000 lines are drawn: 100000 samples a line make
   // about 10^8 points (10.8 GB and 195 s before), far above the limit of 4000000.
   const fs::path csv = dir_ / "lines.csv";
-  const RunResult r = run({"export", "--set", "t=1e-3", "--set", "E=1e-3", "--set", "w=1e-2",
-                           "--samples", "100000", "--csv", csv.string()});
+  const RunResult r = run({"export", "--set", "t=1e-3", "--set", "E=1e-3", "--set",
+                           "w=1000000 g/m2", "--samples", "100000", "--csv", csv.string()});
   EXPECT_EQ(r.exit_status, 2);
   EXPECT_TRUE(contains(r.err, "limit of 4000000")) << r.err;
   EXPECT_FALSE(fs::exists(csv));
@@ -510,9 +514,10 @@ TEST_F(CliTest, ExportRefusesFoldLinesAboveThePointBudget) {
 TEST_F(CliTest, ACappedFoldCountIsSmallEnoughToUseAndFlaggedWhereverItIsShown) {
   // Valid inputs whose eq. 10 asks for millions of folds: with the cap at 10^7 `solve --json` wrote
   // 233 MB of a_i.
-  const std::vector<std::string> many = {"--set", "t=1e-3", "--set", "E=1e-3", "--set", "w=1e-2"};
+  const std::vector<std::string> many = {"--set",  "t=1e-3", "--set",
+                                         "E=1e-3", "--set",  "w=1000000 g/m2"};
   const RunResult r =
-      run({"solve", "--set", "t=1e-3", "--set", "E=1e-3", "--set", "w=1e-2", "--json"});
+      run({"solve", "--set", "t=1e-3", "--set", "E=1e-3", "--set", "w=1000000 g/m2", "--json"});
   ASSERT_EQ(r.exit_status, 0) << r.err;
   EXPECT_LT(r.out.size(), 1'000'000u);
   const json j = json::parse(r.out);
@@ -568,7 +573,7 @@ TEST_F(CliTest, SweepRefusesEndsThatCannotDescribeACloth) {
     const RunResult r = run(args);
     EXPECT_EQ(r.exit_status, 2);
     EXPECT_TRUE(r.out.empty()) << r.out.substr(0, 200);
-    EXPECT_TRUE(contains(r.err, "must be in") || contains(r.err, "subnormal")) << r.err;
+    EXPECT_TRUE(contains(r.err, " must be ") || contains(r.err, "subnormal")) << r.err;
   }
 }
 
@@ -654,7 +659,7 @@ TEST_F(CliTest, SetReportsParseAndRangeProblemsTogether) {
   const RunResult r = run({"solve", "--set", "t=abc", "--set", "h=-5"});
   EXPECT_EQ(r.exit_status, 2);
   EXPECT_TRUE(contains(r.err, "t = 'abc' is not a number")) << r.err;
-  EXPECT_TRUE(contains(r.err, "h_mm = -5 must be in")) << r.err;
+  EXPECT_TRUE(contains(r.err, "height h = −5 mm must be between 1 and 100,000 mm")) << r.err;
 }
 
 TEST_F(CliTest, AHugeBadValueIsEchoedCut) {
@@ -720,7 +725,7 @@ TEST_F(CliTest, StiffMessageWithAnExponentShowsSToTheP) {
 TEST_F(CliTest, ExponentJustAboveItsLimitIsEchoedUnrounded) {
   const RunResult r = run({"solve", "--set", "p=5.0000001"});
   EXPECT_EQ(r.exit_status, 2);
-  EXPECT_TRUE(contains(r.err, "p = 5.0000001 must be in [0.05, 5]")) << r.err;
+  EXPECT_TRUE(contains(r.err, "eq. 7 exponent p = 5.0000001 must be between 0.05 and 5")) << r.err;
 }
 
 TEST_F(CliTest, SweepPastTheValidRangeSaysWhyOnceAndAllRefusedIsInvalidInput) {

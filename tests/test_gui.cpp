@@ -226,7 +226,8 @@ TEST_F(GuiTest, RenderRejectsBadInputWithExitTwo) {
   const RunResult bad_set = foldlab::testing::run_process(
       kExecutable, {"render", "--out", out.string(), "--set", "d=700"}, dir_, environment());
   EXPECT_EQ(bad_set.exit_status, 2);
-  EXPECT_NE(bad_set.err.find("d_mm = 700 must be"), std::string::npos) << bad_set.err;
+  EXPECT_NE(bad_set.err.find("support displacement d = 700 mm must be below"), std::string::npos)
+      << bad_set.err;
   const RunResult bad_size = foldlab::testing::run_process(
       kExecutable, {"render", "--out", out.string(), "--size", "12x7"}, dir_, environment());
   EXPECT_EQ(bad_size.exit_status, 2);
@@ -249,7 +250,8 @@ TEST_F(GuiTest, RenderRejectsBadInputWithExitTwo) {
   const RunResult no_display =
       foldlab::testing::run_process(kExecutable, {"gui", "--set", "t=-1"}, dir_, environment());
   EXPECT_EQ(no_display.exit_status, 2) << no_display.err;
-  EXPECT_NE(no_display.err.find("t_mm = -1 must be"), std::string::npos) << no_display.err;
+  EXPECT_NE(no_display.err.find("thickness t = −1 mm must be between"), std::string::npos)
+      << no_display.err;
 }
 
 // `render --print swatch.png --out swatch.png` drew the window over the swatch it printed with;
@@ -406,7 +408,8 @@ TEST_F(GuiConfigTest, SessionSettingsOutsideTheInputTableAreNotRestored) {
   session["current"]["hanging"]["height_mm"] = 1777.0;
   write(config() / "session.json", session.dump());
   const nlohmann::json report = second_run();
-  EXPECT_NE(notices_text(report).find("simpson_intervals = 1e+06 must be in [2, 10000]"),
+  EXPECT_NE(notices_text(report).find(
+                "quadrature intervals simpson_intervals = 1,000,000 must be between 2 and 10,000"),
             std::string::npos)
       << notices_text(report);
   // The default preset's height, not the session's.

@@ -65,7 +65,9 @@ TEST_F(NewInputRow, IsSetByKeyWithItsUnitAndRefusedOutsideItsRange) {
   const std::vector<ValidationIssue> issues = validate(p);
   EXPECT_TRUE(std::any_of(issues.begin(), issues.end(), [](const ValidationIssue& issue) {
     return issue.field == "t_um" &&
-           issue.message.starts_with("t_um = 0.5 must be in [1, 50000]: from 1 micrometre");
+           issue.message.starts_with(
+               "thickness in micrometres t_um = 0.5 µm must be between 1 and 50,000 µm: from 1 "
+               "micrometre");
   })) << format_issues(issues);
 }
 

@@ -441,8 +441,9 @@ TEST(SettingsValidate, HalfTheLengthIsTooFarForD) {
   const auto issues = foldlab::validate(p);
   ASSERT_EQ(issues.size(), 1u) << foldlab::format_issues(issues);
   EXPECT_EQ(issues[0].field, "d_mm");
-  EXPECT_TRUE(contains(issues[0].message, "d_mm = 700 must be")) << issues[0].message;
-  EXPECT_TRUE(contains(issues[0].message, "L/2 = 700")) << issues[0].message;
+  EXPECT_TRUE(
+      contains(issues[0].message, "support displacement d = 700 mm must be below L/2 = 700 mm"))
+      << issues[0].message;
 
   // Just below L/2 and d = 0 are fine; a negative d is not.
   p.hanging.support_displacement_mm = 699.9;
@@ -541,7 +542,10 @@ TEST(SettingsValidate, PhysicalRangesRefuseWhatNoClothCanBe) {
     const foldlab::InputSpec* spec = foldlab::find_input(key);
     ASSERT_NE(spec, nullptr);
     EXPECT_EQ(issues[0].field, spec->field);
-    EXPECT_TRUE(contains(issues[0].message, "must be in")) << issues[0].message;
+    // In the slider's words and unit: "weight per area w = 1.02e-312 g/m² must be between".
+    EXPECT_TRUE(contains(issues[0].message, foldlab::input_title(*spec) + " = "))
+        << issues[0].message;
+    EXPECT_TRUE(contains(issues[0].message, " must be between ")) << issues[0].message;
   }
 }
 
@@ -578,7 +582,93 @@ TEST(InputTable, RowsAreConsistent) {
     if (spec.scale == foldlab::InputScale::logarithmic) {
       EXPECT_GT(spec.typical_lo, 0.0);
     }
+    // A beginner's slider is a part of the expert's, around the defaults.
+    if (spec.beginner_hi > spec.beginner_lo) {
+      EXPECT_GE(spec.beginner_lo, spec.typical_lo);
+      EXPECT_LE(spec.beginner_hi, spec.typical_hi);
+      EXPECT_GE(*spec.value(defaults), spec.beginner_lo);
+      EXPECT_LE(*spec.value(defaults), spec.beginner_hi);
+    }
   }
+}
+
+// The beginner's sliders cover the cloths one buys: w from 10.2 (the typical range's low end,
+// 1e-7 N/mm²) to 1000 g/m², chiffon's 35 and denim's 441 inside; t and E likewise. An expert's
+// run over the whole typical range.
+TEST(InputTable, BeginnerSlidersFitRealFabrics) {
+  const foldlab::InputSpec& w = *foldlab::find_input("w");
+  const foldlab::InputInterval beginner = foldlab::slider_ends(w, foldlab::SliderReach::beginner);
+  EXPECT_EQ(beginner.lo, 1e-7);
+  EXPECT_NEAR(foldlab::to_shown_unit(w, beginner.hi), 1000.0, 1e-9);
+  const foldlab::InputInterval expert = foldlab::slider_ends(w, foldlab::SliderReach::expert);
+  EXPECT_EQ(expert.lo, 1e-7);
+  EXPECT_EQ(expert.hi, 1e-4);
+  // The fabric presets' values (presets/FABRICS.md) on the beginner's sliders.
+  const auto on_slider = [](const char* key, double value) {
+    const foldlab::InputInterval ends =
+        foldlab::slider_ends(*foldlab::find_input(key), foldlab::SliderReach::beginner);
+    return ends.lo <= value && value <= ends.hi;
+  };
+  for (const double t_mm : {0.076, 0.09, 0.2, 0.8}) {
+    EXPECT_TRUE(on_slider("t", t_mm)) << t_mm;
+  }
+  for (const double E_MPa : {9.0, 78.0, 165.0, 430.0}) {
+    EXPECT_TRUE(on_slider("E", E_MPa)) << E_MPa;
+  }
+  // A row without a beginner's range gives both the typical one.
+  const foldlab::InputSpec& h = *foldlab::find_input("h");
+  EXPECT_EQ(foldlab::slider_ends(h, foldlab::SliderReach::beginner).hi, 5000.0);
+  // The slider stops where validation refuses for a beginner too: d below L/2.
+  Parameters p;
+  p.hanging.length_mm = 1400.0;
+  EXPECT_LT(
+      foldlab::slider_interval(*foldlab::find_input("d"), p, foldlab::SliderReach::beginner).hi,
+      700.0);
+}
+
+// A refusal speaks the slider's name and unit, with round limits in that unit.
+TEST(SettingsValidate, RefusalsUseTheSlidersLabelAndUnit) {
+  Parameters p;
+  p.fabric.weight_N_per_mm2 = -4.905e-08;  // -5 g/m²
+  std::vector<foldlab::ValidationIssue> issues = foldlab::validate(p);
+  ASSERT_EQ(issues.size(), 1u);
+  EXPECT_EQ(issues[0].field, "w_N_per_mm2");
+  EXPECT_TRUE(issues[0].message.starts_with(
+      "weight per area w = \u22125 g/m² must be between 0.1 and 1,000,000 g/m²: "))
+      << issues[0].message;
+  p = Parameters{};
+  p.fabric.poisson_ratio = 0.5;
+  issues = foldlab::validate(p);
+  ASSERT_EQ(issues.size(), 1u);
+  EXPECT_TRUE(
+      issues[0].message.starts_with("Poisson's ratio ν = 0.5 must be at least 0 and below 0.5: "))
+      << issues[0].message;
+  // Twelve digits would round this onto the limit it is refused by: it is written in full.
+  p.fabric.poisson_ratio = 0.50000000000001;
+  issues = foldlab::validate(p);
+  ASSERT_EQ(issues.size(), 1u);
+  EXPECT_TRUE(contains(issues[0].message, "ν = 0.50000000000001")) << issues[0].message;
+  p = Parameters{};
+  p.hanging.height_mm = 2e5;
+  issues = foldlab::validate(p);
+  ASSERT_EQ(issues.size(), 1u);
+  EXPECT_TRUE(
+      issues[0].message.starts_with("height h = 200,000 mm must be between 1 and 100,000 mm: "))
+      << issues[0].message;
+  // The upper end that follows from L: d = 800 mm against L/2 = 700 mm.
+  p = Parameters{};
+  p.hanging.length_mm = 1400.0;
+  p.hanging.support_displacement_mm = 800.0;
+  issues = foldlab::validate(p);
+  ASSERT_EQ(issues.size(), 1u);
+  EXPECT_EQ(issues[0].message,
+            "support displacement d = 800 mm must be below L/2 = 700 mm, where the supports "
+            "would meet if each moved d");
+  // The incline's interval is open at both ends.
+  const foldlab::InputSpec& incline = *foldlab::find_input("incline_deg");
+  EXPECT_TRUE(
+      foldlab::refusal_sentence(incline, 90.0, incline.valid, "why")
+          .starts_with("incline incline_deg = 90 deg must be above \u221280 and below 80 deg"));
 }
 
 }  // namespace

@@ -11,6 +11,7 @@
 
 #include "core/io/preset.hpp"
 #include "core/model/equations.hpp"
+#include "core/model/settings.hpp"
 #include "core/model/solver.hpp"
 #include "core/tools/benchmark_cases.hpp"
 
@@ -227,7 +228,9 @@ TEST(Regimes, IterationCapMessageCountsTheIterations) {
 TEST(Robustness, ExtremeInputsNeverGiveNaN) {
   const double thicknesses[] = {0.001, 0.01, 1.0, 50.0};
   const double moduli[] = {0.01, 1.0, 1e3, 1e6};
-  const double weights[] = {1e-9, 1e-6, 1e-2};
+  // The ends of w's valid range, 0.1 and 1,000,000 g/m², and the paper's weight between.
+  const foldlab::InputInterval w_valid = foldlab::find_input("w")->valid;
+  const double weights[] = {w_valid.lo, 1e-6, w_valid.hi};
   const double heights[] = {1.0, 100.0, 1e4};
   const double displacement_fractions[] = {0.0, 1e-6, 0.1, 0.499999};
   int cases = 0;

@@ -97,5 +97,23 @@ TEST(PortableNumberText, RefusesAndStopsWhereFromCharsDoes) {
   }
 }
 
+// Numbers in sentences for people: rounded past conversion noise, grouped, a real minus.
+TEST(MessageNumber, ReadsAsAPersonWritesIt) {
+  EXPECT_EQ(detail::message_number(0.0), "0");
+  EXPECT_EQ(detail::message_number(-5.000000000000001), "\u22125");
+  EXPECT_EQ(detail::message_number(0.1), "0.1");
+  EXPECT_EQ(detail::message_number(1400.0), "1400");
+  EXPECT_EQ(detail::message_number(10000.0), "10,000");
+  EXPECT_EQ(detail::message_number(1e6), "1,000,000");
+  EXPECT_EQ(detail::message_number(1234567.25), "1,234,567.25");
+  EXPECT_EQ(detail::message_number(9.1e8), "9.1e8");
+  EXPECT_EQ(detail::message_number(1e-5), "1e-5");
+  EXPECT_EQ(detail::message_number(-1.5e-300), "\u22121.5e-300");
+  EXPECT_EQ(detail::message_number(5.0000001), "5.0000001");
+  EXPECT_EQ(detail::message_number(0.50000000000001), "0.5");
+  EXPECT_EQ(detail::message_number(0.50000000000001, true), "0.50000000000001");
+  EXPECT_EQ(detail::message_number(2e20, true), "2e20");
+}
+
 }  // namespace
 }  // namespace foldlab

@@ -20,20 +20,22 @@ double along(double lo, double hi, bool logarithmic, double f) {
 
 }  // namespace
 
-AnimatedInput::AnimatedInput(const std::string& key, const Parameters& base) : key_(key) {
+AnimatedInput::AnimatedInput(const std::string& key, const Parameters& base, SliderReach reach)
+    : key_(key) {
   const std::vector<std::string>& keys = sweepable_keys();
   if (std::find(keys.begin(), keys.end(), key) == keys.end()) {
     throw app::InputError("--animate " + key + ": not one of " + detail::join_comma(keys));
   }
   const InputSpec& spec = *find_input(key);
+  // The slider's own ends: a beginner's animation stays among the fabrics one buys.
+  const InputInterval ends = slider_ends(spec, reach);
   logarithmic_ = spec.scale == InputScale::logarithmic;
   // d must stay below L/2, for one: keep to the values the model accepts with the rest as is.
   constexpr int kProbes = 200;
   std::optional<double> first;
   double last = 0.0;
   for (int i = 0; i <= kProbes; ++i) {
-    const double v =
-        along(spec.typical_lo, spec.typical_hi, logarithmic_, static_cast<double>(i) / kProbes);
+    const double v = along(ends.lo, ends.hi, logarithmic_, static_cast<double>(i) / kProbes);
     Parameters p = base;
     if (!set_input(p, key, v) && validate(p).empty()) {
       first = first.value_or(v);

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "core/model/parameters.hpp"
+#include "core/model/settings.hpp"
 
 namespace foldlab::gui {
 
@@ -16,7 +17,8 @@ class AnimatedInput {
   static constexpr int kFramesPerWay = 60;  // --animate: one way in 60 frames
 
   // Throws app::InputError for a key that has no slider or no valid value on it.
-  AnimatedInput(const std::string& key, const Parameters& base);
+  AnimatedInput(const std::string& key, const Parameters& base,
+                SliderReach reach = SliderReach::expert);
   // The value at a frame of --animate.
   double value(int frame) const { return at(static_cast<double>(frame) / kFramesPerWay); }
   // The value after `ways` one-way sweeps: lo at 0, hi at 1, lo again at 2, ...

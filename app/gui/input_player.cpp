@@ -68,8 +68,9 @@ bool holds(const json& got, const json& wanted) {
 
 // Where a text is drawn in the last frame, read from the glyph quads of its draw data (the
 // words a user sees, whichever widget drew them). Prefers a whole line (a button, tab, list
-// entry or menu item has its label alone) over a match inside longer text.
-std::optional<ImVec2> find_label(const std::string& label) {
+// entry or menu item has its label alone) over a match inside longer text. With a panel's key,
+// only in that panel's window and the windows inside it (a scrolled table is a child window).
+std::optional<ImVec2> find_label(const std::string& label, const std::string& panel_key = {}) {
   const ImDrawData* data = ImGui::GetDrawData();
   if (data == nullptr || !data->Valid) {
     return std::nullopt;
@@ -90,6 +91,14 @@ std::optional<ImVec2> find_label(const std::string& label) {
   std::optional<ImVec2> inside;
   // Top window first, as a person sees it: an open menu's item over a panel's button alike.
   for (int l = data->CmdListsCount - 1; l >= 0; --l) {
+    if (!panel_key.empty()) {
+      const char* owner = data->CmdLists[l]->_OwnerName;
+      const std::string_view name = owner == nullptr ? std::string_view() : owner;
+      const std::string id = "###" + panel_key;
+      if (!name.ends_with(id) && name.find(id + "/") == std::string_view::npos) {
+        continue;
+      }
+    }
     const ImVector<ImDrawVert>& v = data->CmdLists[l]->VtxBuffer;
     // One run of text at a time: its characters and each one's box.
     std::string text;
@@ -242,7 +251,13 @@ json explorer_state_json(Explorer& explorer) {
     const float y = 0.5f * (place.min.y + place.max.y);
     sliders[key] = {{"handle", {handle_x(place, place.fraction), y}},
                     {"left", place.min.x},
-                    {"right", place.max.x}};
+                    {"right", place.max.x},
+                    {"shown", explorer.parameters_panel().shown(document, *find_input(key))}};
+  }
+  // Text typed into a slider that is no value, with the reason the panel gives, by input key.
+  json unread = json::object();
+  for (const auto& [key, reason] : explorer.parameters_panel().unread_reasons()) {
+    unread[key] = reason;
   }
   const std::optional<std::string> refused = document.refusal();
   const std::string& modal = document.modal_title();
@@ -269,6 +284,7 @@ json explorer_state_json(Explorer& explorer) {
       {"modal", modal.empty() ? json(nullptr) : json(modal)},
       {"undo_depth", document.undo_depth()},
       {"sliders", sliders},
+      {"unread", unread},
       {"display", {ImGui::GetIO().DisplaySize.x, ImGui::GetIO().DisplaySize.y}},
       {"method_step", method_step_json(explorer.analysis().method())},
       {"view", cloth_view_json(explorer.cloth_style())},
@@ -459,6 +475,10 @@ bool InputPlayer::start_step(std::size_t index, ImGuiIO& io, Explorer& explorer)
       }
       const ImVec2 from(handle_x(*place, place->fraction), 0.5f * (place->min.y + place->max.y));
       queue_press(from, ImVec2(from.x + step["dx"].get<float>(), from.y), 6);
+      // Shift held from the press to the release: the fine drag.
+      for (FrameInput& input : queue_) {
+        input.shift = step.value("shift", false);
+      }
       break;
     }
     case StepKind::Id::click:
@@ -507,6 +527,19 @@ bool InputPlayer::start_step(std::size_t index, ImGuiIO& io, Explorer& explorer)
     }
     case StepKind::Id::expect:
       return check_expect(index, step["expect"], explorer);
+    case StepKind::Id::visible:
+    case StepKind::Id::absent: {
+      // What a person reads, not what the report says: drawn glyphs, in one panel or anywhere.
+      const bool wanted = step.contains("visible");
+      const std::string text = step[wanted ? "visible" : "absent"].get<std::string>();
+      const std::string panel = step.value("in", std::string());
+      if (find_label(text, panel).has_value() != wanted) {
+        fail(index, "\"" + text + "\" is " + (wanted ? "not shown" : "shown") +
+                        (panel.empty() ? "" : " in " + panel));
+        return false;
+      }
+      break;
+    }
   }
   return true;
 }

@@ -107,6 +107,9 @@ void check_drag(const json& step, Problems& problems) {
       std::abs(step["dx"].get<double>()) > 10000.0) {
     problems.push_back("drag needs \"dx\": a number of pixels");
   }
+  if (step.contains("shift") && !step["shift"].is_boolean()) {
+    problems.push_back("\"shift\" must be true or false, not " + detail::cut(step["shift"].dump()));
+  }
 }
 
 void check_click(const json& step, Problems& problems) {
@@ -148,6 +151,19 @@ void check_key(const json& step, Problems& problems) {
   if (!arg.is_string() || !parse_chord(arg.get<std::string>())) {
     problems.push_back("key " + detail::cut(arg.dump()) +
                        " is not a chord such as \"ctrl+z\", \"ctrl+shift+z\", \"escape\"");
+  }
+}
+
+// "visible" or "absent": the text a person reads, anywhere or in one panel ("in").
+void check_seen(const json& step, Problems& problems) {
+  const std::string action = step.contains("visible") ? "visible" : "absent";
+  const json& arg = step[action];
+  if (!arg.is_string() || arg.get<std::string>().empty()) {
+    problems.push_back(action + " needs the text to look for, not " + detail::cut(arg.dump()));
+  }
+  if (step.contains("in") && (!step["in"].is_string() || step["in"].get<std::string>().empty())) {
+    problems.push_back("\"in\" needs a panel's key (results, parameters, ...), not " +
+                       detail::cut(step["in"].dump()));
   }
 }
 
@@ -196,7 +212,8 @@ void check_expect(const json& step, Problems& problems) {
   }
 }
 
-constexpr std::string_view kDragOptions[] = {"dx"};
+constexpr std::string_view kDragOptions[] = {"dx", "shift"};
+constexpr std::string_view kSeenOptions[] = {"in"};
 constexpr std::string_view kClickOptions[] = {"at", "ctrl"};
 
 // Every kind of step: its action (the field that names it), the other fields it may have, and the
@@ -211,6 +228,8 @@ const StepKind kStepKinds[] = {
     {StepKind::Id::frames, "frames", {}, check_frames},
     {StepKind::Id::screenshot, "screenshot", {}, check_screenshot},
     {StepKind::Id::expect, "expect", {}, check_expect},
+    {StepKind::Id::visible, "visible", kSeenOptions, check_seen},
+    {StepKind::Id::absent, "absent", kSeenOptions, check_seen},
 };
 
 // The problems of one step; empty when it can run.

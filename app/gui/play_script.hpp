@@ -40,7 +40,19 @@ std::optional<Chord> parse_chord(std::string text);
 // A kind of step: named by its action field ({"drag": "w", "dx": 40}), with the other fields it may
 // have and the check of its values.
 struct StepKind {
-  enum class Id { drag, click, click_photo, key, type, resize, frames, screenshot, expect };
+  enum class Id {
+    drag,
+    click,
+    click_photo,
+    key,
+    type,
+    resize,
+    frames,
+    screenshot,
+    expect,
+    visible,
+    absent
+  };
   Id id;
   std::string_view name;
   std::span<const std::string_view> options;

@@ -96,10 +96,9 @@ std::optional<std::string> check_axis(const SweepAxis& axis) {
              " is subnormal: no cloth is described by it";
     }
     if (!range.contains(end)) {
-      std::string why =
-          spec.why.empty() ? "c / (1 - nu²) with c and nu in their ranges" : std::string(spec.why);
-      return "the sweep's end " + axis.key + " = " + detail::shortest_number(end) + " must be in " +
-             range.text() + ": " + why;
+      const std::string why =
+          spec.why.empty() ? "c / (1 − ν²) with c and ν in their ranges" : std::string(spec.why);
+      return "the sweep's end: " + refusal_sentence(spec, end, range, why);
     }
   }
   return std::nullopt;

@@ -9,16 +9,11 @@
 namespace foldlab {
 namespace {
 
-using detail::shortest_number;
-
-void check_range(std::vector<ValidationIssue>& issues, std::string_view field, double value,
-                 const InputInterval& range, std::string_view why) {
-  if (range.contains(value)) {
-    return;
+void check_range(std::vector<ValidationIssue>& issues, const InputSpec& spec, double value) {
+  if (!spec.valid.contains(value)) {
+    issues.push_back(
+        {std::string(spec.field), value, refusal_sentence(spec, value, spec.valid, spec.why)});
   }
-  std::string message = std::string(field) + " = " + shortest_number(value) + " must be in " +
-                        range.text() + ": " + std::string(why);
-  issues.push_back({std::string(field), value, std::move(message)});
 }
 
 template <class Enum>
@@ -65,27 +60,28 @@ std::vector<ValidationIssue> validate(const Parameters& p) {
   for (const InputSpec& spec : input_table()) {
     if (spec.kind == InputKind::number || spec.kind == InputKind::whole_number) {
       const double value = *spec.value(p);
-      check_range(issues, spec.field, value, spec.valid, spec.why);
+      check_range(issues, spec, value);
       const std::optional<double> upper = spec.upper_bound ? spec.upper_bound(p) : std::nullopt;
-      const InputInterval below{spec.valid.lo, upper.value_or(0.0), spec.valid.lo_open, true};
       // The reason is spelt out only for a value it refuses: validate() runs on every edit.
-      if (upper && spec.valid.contains(value) && !below.contains(value)) {
-        check_range(issues, spec.field, value, below,
-                    std::string(spec.key) + " must stay below " +
-                        std::string(spec.upper_bound_name) + " = " + shortest_number(*upper) +
-                        ", " + std::string(spec.upper_bound_why));
+      if (upper && spec.valid.contains(value) && !(value < *upper)) {
+        issues.push_back({std::string(spec.field), value,
+                          input_title(spec) + " = " + shown_quantity(spec, value) +
+                              " must be below " + std::string(spec.upper_bound_name) + " = " +
+                              shown_quantity(spec, *upper) + ", " +
+                              std::string(spec.upper_bound_why)});
       }
     }
   }
   // c is what K is stored as: whoever set K reads it by that name too.
   if (!issues.empty() && issues.back().field == "c") {
     issues.back().message +=
-        " (K = c / (1 - nu²) = " + shortest_number(stiffness_constant_K(p)) + ")";
+        " (K = c / (1 − ν²) = " + detail::message_number(stiffness_constant_K(p)) + ")";
   }
   const ModelSettings& m = p.model;
   if (m.simpson_intervals % 2 != 0 && m.length_quadrature == LengthQuadrature::simpson) {
     issues.push_back({"simpson_intervals", static_cast<double>(m.simpson_intervals),
-                      "simpson_intervals = " + std::to_string(m.simpson_intervals) +
+                      input_title(*find_input("simpson_intervals")) + " = " +
+                          std::to_string(m.simpson_intervals) +
                           " must be even: composite Simpson pairs its intervals"});
   }
   return issues;

@@ -83,6 +83,10 @@ struct InputSpec {
   // Where values of real fabrics lie: the slider's ends and the stress test's sampling range.
   double typical_lo = 0.0;
   double typical_hi = 0.0;
+  // Where the cloths one buys lie, narrower than `typical`: the beginner's slider, so that a
+  // pixel of it is a step a person can see. Both zero: the beginner's slider is the typical one.
+  double beginner_lo = 0.0;
+  double beginner_hi = 0.0;
   InputScale scale = InputScale::linear;
   std::string_view format{};  // printf format of the value alone, e.g. "%.3g"
   bool required = false;      // must appear in a preset
@@ -159,6 +163,16 @@ std::string_view input_symbol(const InputSpec& spec);
 // "w (g/m²)", "ν": the symbol with the shown unit, for the explorer's axes and tables.
 std::string shown_label(const InputSpec& spec);
 
+// How a sentence names an input, as its slider reads: "weight per area w", "Poisson's ratio ν".
+std::string input_title(const InputSpec& spec);
+// A stored value as a sentence for people shows it, in the shown unit: "−5 g/m²", "0.25 mm",
+// "1,000,000 g/m²" (detail::message_number).
+std::string shown_quantity(const InputSpec& spec, double stored);
+// Why `value` (stored unit) is refused, in the slider's words and unit: "weight per area w =
+// −5 g/m² must be between 0.1 and 1,000,000 g/m²: WHY". `range` is in the stored unit.
+std::string refusal_sentence(const InputSpec& spec, double value, const InputInterval& range,
+                             std::string_view why);
+
 // "80 g/m2", "80 g/m²", "80gsm", "2.4 oz/yd2", "1.5e-6 N/mm2", "2*153 g/m2", "(80 + 120)/2": a
 // number or simple arithmetic of numbers (+ - * / and parentheses), optionally followed by
 // one of input_units(spec) (spaces, case and ² vs 2 do not matter), as the value in the stored
@@ -167,10 +181,15 @@ std::string shown_label(const InputSpec& spec);
 std::optional<double> parse_quantity(const InputSpec& spec, std::string_view text,
                                      std::string_view bare_unit = {});
 
-// The part of the slider's range (the typical range) that validate() accepts with the other
+// The part of the slider's range (slider_ends) that validate() accepts with the other
 // inputs of `p` as they are: d stops below L/2, L above 2d. Found by bisection against
 // validate(), so that it follows whatever validation checks. The typical range itself when the
 // value in `p` is refused (then nothing is known about where validity lies).
-InputInterval slider_interval(const InputSpec& spec, const Parameters& p);
+// A beginner's slider runs over the row's beginner range, where it has one; an expert's over
+// the whole typical range. A value typed outside the slider is still taken when validate() does.
+enum class SliderReach { beginner, expert };
+InputInterval slider_ends(const InputSpec& spec, SliderReach reach);
+InputInterval slider_interval(const InputSpec& spec, const Parameters& p,
+                              SliderReach reach = SliderReach::expert);
 
 }  // namespace foldlab

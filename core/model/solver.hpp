@@ -24,21 +24,29 @@ enum class Regime {
 };
 
 // What each front end says of a regime: its key in reports and JSON, its words in plot bands and
-// legends, and the colour a regime map gives a cell that has no n to show (0xRRGGBB; absent for
-// the regimes coloured by n).
+// legends, the colour a regime map gives a cell that has no n to show (0xRRGGBB; absent for
+// the regimes coloured by n), and what it means for the cloth in words without the model's
+// symbols, for a beginner's one line.
 struct RegimeInfo {
   Regime regime;
   std::string_view key;
   std::string_view label;
   std::optional<std::uint32_t> map_rgb;
+  std::string_view plain;
 };
 inline constexpr RegimeInfo kRegimes[] = {
-    {Regime::wrinkled, "wrinkled", "wrinkled", std::nullopt},
-    {Regime::no_slack, "no_slack", "no slack", 0x3c3c3c},
-    {Regime::stiff, "stiff", "stiff", std::nullopt},
-    {Regime::short_cloth, "short_cloth", "short cloth", 0x781e1e},
-    {Regime::negligible_slack, "negligible_slack", "negligible slack", 0x5a5a78},
-    {Regime::n_cycle, "n_cycle", "n cycles", std::nullopt},
+    {Regime::wrinkled, "wrinkled", "wrinkled", std::nullopt,
+     "the cloth hangs in folds under its own weight"},
+    {Regime::no_slack, "no_slack", "no slack", 0x3c3c3c,
+     "the supports span the whole edge, so the cloth hangs flat"},
+    {Regime::stiff, "stiff", "stiff", std::nullopt,
+     "too stiff for its weight to buckle it: one fold at most"},
+    {Regime::short_cloth, "short_cloth", "short cloth", 0x781e1e,
+     "too short for the sag of its upper edge: no folds fit"},
+    {Regime::negligible_slack, "negligible_slack", "negligible slack", 0x5a5a78,
+     "so little slack that the folds stay flat"},
+    {Regime::n_cycle, "n_cycle", "n cycles", std::nullopt,
+     "the fold count has no single answer; the smallest is shown"},
 };
 const RegimeInfo& regime_info(Regime r);
 

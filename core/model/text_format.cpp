@@ -168,4 +168,42 @@ std::from_chars_result read_double(const char* first, const char* last, double& 
 
 }  // namespace portable
 
+std::string message_number(double value, bool exact) {
+  if (!std::isfinite(value)) {
+    return shortest_number(value);
+  }
+  const double magnitude = std::abs(value);
+  int digits = 12;
+  while (exact && digits < 17 &&
+         std::strtod(printf_string("%.*e", digits - 1, magnitude).c_str(), nullptr) != magnitude) {
+    ++digits;
+  }
+  std::string text;
+  if (magnitude != 0.0 && (magnitude >= 1e7 || magnitude < 1e-4)) {
+    // "9.10000000000e+08" as "9.1e8", "1.00000000000e-05" as "1e-5".
+    text = printf_string("%.*e", digits - 1, magnitude);
+    const std::size_t e = text.find('e');
+    std::string mantissa = text.substr(0, e);
+    if (mantissa.find('.') != std::string::npos) {
+      mantissa.erase(mantissa.find_last_not_of('0') + 1);
+      if (mantissa.back() == '.') {
+        mantissa.pop_back();
+      }
+    }
+    std::string exponent = text.substr(e + 1);
+    const bool negative = exponent.front() == '-';
+    exponent.erase(0, exponent.find_first_not_of("+-0"));
+    text = mantissa + "e" + (negative ? "-" : "") + exponent;
+  } else {
+    text = printf_string("%.*g", digits, magnitude);
+    const std::size_t point = std::min(text.find('.'), text.size());
+    if (point > 4) {
+      for (std::size_t at = point; at > 3; at -= 3) {
+        text.insert(at - 3, 1, ',');
+      }
+    }
+  }
+  return (value < 0.0 ? "\u2212" : "") + text;
+}
+
 }  // namespace foldlab::detail

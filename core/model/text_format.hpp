@@ -50,6 +50,13 @@ inline std::from_chars_result read_double(const char* first, const char* last, d
 #endif
 }
 
+// A number as a sentence for people shows it: at most 12 significant digits (so that a value
+// converted between units reads 5, not 5.000000000000001), a real minus sign, thousands grouped
+// from five digits on ("1,000,000", "1400"), and an exponent only beyond that ("9.1e8",
+// "1e-5"). `exact`: as many digits as it takes to read back as this double, for a value that 12
+// digits would round onto a limit it is refused by.
+std::string message_number(double value, bool exact = false);
+
 // The length of the well-formed UTF-8 character starting at text[i] (1 to 4 bytes), or 0 when the
 // bytes there are not one (a stray continuation byte, a sequence cut short, an overlong form, a
 // surrogate or a code point above U+10FFFF).

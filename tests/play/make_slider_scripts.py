@@ -2,8 +2,9 @@
 """Writes slider_KEY.json: drags of +-40 px from the handle and clicks at 0, 0.5 and 1 of each
 parameter slider, with the ranges a correct slider must land in.
 
-The ranges come from the input table's typical range and scale (copied here by hand, so that a
-change of the table shows up as a failing test) and from ImGui 1.86's slider geometry: a float
+The ranges come from the input table's slider range and scale (copied here by hand, so that a
+change of the table shows up as a failing test): a fresh start is a beginner's, whose t, E and w
+sliders run over the rows' beginner range (the fabrics one buys), the others over the typical one and from ImGui 1.86's slider geometry: a float
 slider's handle is GrabMinSize = 10 px wide inside 2 px of padding, so 40 px move the handle by
 40 / (W - 14) of the range for a slider W px wide. The layout may give the slider anything from
 100 to 600 px, so a drag must move between 40/586 and 40/86 of the range (clamped at the ends).
@@ -22,10 +23,11 @@ import math
 
 BASE = {"t": 0.25, "E": 165.0, "w": 1.5e-6, "nu": 0.3, "h": 1400.0, "L": 4000.0, "d": 100.0}
 # K is eq. 7's constant from c and nu: K = c / (1 - nu^2) with the preset's c = 26.9.
-TABLE = {  # key: (report field, typical lo, typical hi, logarithmic)
-    "t": ("t_mm", 0.01, 5.0, True),
-    "E": ("E_MPa", 1.0, 1e4, True),
-    "w": ("w_N_per_mm2", 1e-7, 1e-4, True),
+G_PER_M2 = 9.81e-9  # N/mm² of 1 g/m²
+TABLE = {  # key: (report field, slider lo, slider hi, logarithmic)
+    "t": ("t_mm", 0.05, 3.0, True),
+    "E": ("E_MPa", 3.0, 1000.0, True),
+    "w": ("w_N_per_mm2", 1e-7, 1000 * G_PER_M2, True),
     "nu": ("nu", 0.0, 0.49, False),
     "h": ("h_mm", 100.0, 5000.0, False),
     "L": ("L_mm", 100.0, 5000.0, False),
@@ -40,7 +42,7 @@ EXPERT = {"nu", "K"}
 
 
 def ends(key):
-    """The slider's ends with the other inputs at BASE: the typical range, cut where d < L/2 stops."""
+    """The slider's ends with the other inputs at BASE: the table's range, cut where d < L/2 stops."""
     _, lo, hi, _ = TABLE[key]
     if key == "L":
         lo = max(lo, 2 * BASE["d"])

@@ -147,22 +147,42 @@ bool is_printed_eq7(const Parameters& p) {
 // unit (w in g/m²): ImGui's own logarithmic slider treats values below the format's precision as
 // zero, which put all of w's range in its dead zone. Typed values (Ctrl+click) are read with a
 // unit, neither mapped nor clamped, so that validation rather than the widget decides.
-const InputInterval& ParametersPanel::interval(const InputSpec& spec, const Parameters& p) {
-  const auto found = intervals_.find(spec.key);
+const InputInterval& ParametersPanel::interval(const InputSpec& spec, const Parameters& p,
+                                               SliderReach reach) {
+  const std::string key = std::string(spec.key) + (reach == SliderReach::beginner ? "/b" : "/e");
+  const auto found = intervals_.find(key);
   if (found != intervals_.end() && found->second.at == p) {
     return found->second.range;
   }
-  CachedInterval& entry = intervals_[std::string(spec.key)];
-  entry = {p, slider_interval(spec, p)};
+  CachedInterval& entry = intervals_[key];
+  entry = {p, slider_interval(spec, p, reach)};
   return entry.range;
+}
+
+std::string ParametersPanel::shown(const Document& document, const InputSpec& spec) const {
+  const double value = spec.value(document.edited()).value_or(0.0);
+  const auto unread = unread_.find(spec.key);
+  if (unread != unread_.end() && unread->second.value == value) {
+    return unread->second.text;
+  }
+  return shown_text(spec, value);
+}
+
+std::map<std::string, std::string> ParametersPanel::unread_reasons() const {
+  std::map<std::string, std::string> out;
+  for (const auto& [key, unread] : unread_) {
+    out[key] = unread.reason;
+  }
+  return out;
 }
 
 void ParametersPanel::input_slider(Document& document, const InputSpec& spec, float width) {
   double value = spec.value(document.edited()).value_or(0.0);
+  const std::string key(spec.key);
   const std::string label = slider_label(spec);
   // A refused value reddens its slider; the reason goes to the foot of the panel, so that no
   // line appears between the sliders and moves the one under the mouse.
-  const bool is_refused = refused(document, spec);
+  const bool is_refused = refused(document, spec) || unread_.contains(key);
   if (is_refused) {
     ImGui::PushStyleColor(ImGuiCol_FrameBg, kRefusedFrame);
   }
@@ -180,20 +200,23 @@ void ParametersPanel::input_slider(Document& document, const InputSpec& spec, fl
       return;
     }
     if (const std::optional<double> typed = parse_quantity(spec, text, shown_unit(spec).symbol)) {
+      unread_.erase(key);
       value = *typed;
       changed = true;
       return;
     }
     // Said, not dropped: the slider going back to its value with no word looks like a fault.
+    // Kept as typed, as a refused number is, so that the person sees what was not understood.
     std::string units;
     for (const InputUnit& unit : input_units(spec)) {
       units += (units.empty() ? "" : ", ") + std::string(unit.symbol);
     }
-    document.notify(
-        std::string(input_symbol(spec)) + ": \"" + detail::cut(text) + "\" is not a number" +
-            (units.empty() ? "" : " with a unit (" + units + ")") +
-            ", nor arithmetic such as 2*153; the value stays " + shown_text(spec, value) + ".",
-        MessageKind::error);
+    const std::string reason =
+        input_title(spec) + ": \"" + detail::cut(text) + "\" is not a number" +
+        (units.empty() ? "" : " with a unit (" + units + ")") +
+        ", nor arithmetic such as 2*153; the value stays " + shown_text(spec, value) + ".";
+    unread_[key] = {detail::cut(text), reason, value};
+    document.notify(reason, MessageKind::error);
   };
   if (ImGui::TempInputIsActive(id)) {
     // ImGui opened its text field over the slider on the Ctrl+click, with the shown text; this
@@ -201,7 +224,7 @@ void ParametersPanel::input_slider(Document& document, const InputSpec& spec, fl
     // unit can be typed.
     if (typing_id_ != id) {
       typing_id_ = id;
-      typing_initial_ = shown_text(spec, value);
+      typing_initial_ = shown(document, spec);
       std::snprintf(typed_, sizeof typed_, "%s", typing_initial_.c_str());
     }
     const bool enter =
@@ -214,12 +237,13 @@ void ParametersPanel::input_slider(Document& document, const InputSpec& spec, fl
     if (typing_id_ == id) {
       read_typed();  // a click elsewhere took the text cursor before this frame drew the field
     }
-    const InputInterval range = interval(spec, document.edited());
+    const SliderReach reach = document.expert_mode() ? SliderReach::expert : SliderReach::beginner;
+    const InputInterval range = interval(spec, document.edited(), reach);
     // The shown text doubles as the text field's first contents on Ctrl+click, which parses
     // back to the value with its unit.
-    std::string shown = shown_text(spec, value);
-    for (std::size_t at = shown.find('%'); at != std::string::npos; at = shown.find('%', at + 2)) {
-      shown.insert(at, 1, '%');
+    std::string text = shown(document, spec);
+    for (std::size_t at = text.find('%'); at != std::string::npos; at = text.find('%', at + 2)) {
+      text.insert(at, 1, '%');
     }
     // A typed value off the slider's scale (w <= 0) pins the handle to the left end.
     const double on_scale = slider_fraction(spec, range, value);
@@ -227,13 +251,28 @@ void ParametersPanel::input_slider(Document& document, const InputSpec& spec, fl
     double position = fraction;
     constexpr double kZero = 0.0;
     constexpr double kOne = 1.0;
-    if (ImGui::SliderScalar(label.c_str(), ImGuiDataType_Double, &position, &kZero, &kOne,
-                            shown.c_str(), ImGuiSliderFlags_AlwaysClamp)) {
+    const bool moved = ImGui::SliderScalar(label.c_str(), ImGuiDataType_Double, &position, &kZero,
+                                           &kOne, text.c_str(), ImGuiSliderFlags_AlwaysClamp);
+    const ImGuiIO& io = ImGui::GetIO();
+    if (ImGui::IsItemActive() && (io.KeyShift || relative_drag_id_ == id)) {
+      // ImGui's slider puts the handle under the mouse; a relative drag moves it by the mouse's
+      // movement instead, over the pixels ImGui's handle travels: the frame less 2 px of padding
+      // each side and the handle's own width.
+      relative_drag_id_ = id;
+      const float travel_px = width - 4.0f - ImGui::GetStyle().GrabMinSize;
+      const double speed = io.KeyShift ? kFineDragSpeed : 1.0;
+      position =
+          std::clamp(fraction + speed * io.MouseDelta.x / std::max(1.0f, travel_px), 0.0, 1.0);
+      if (position != fraction) {
+        value = slider_value(spec, range, position);
+        changed = true;
+      }
+    } else if (moved) {
       value = slider_value(spec, range, position);
       changed = true;
     } else if (ImGui::IsItemFocused() && !ImGui::IsItemActive()) {
       // Arrow keys nudge a focused slider by 1 % of its width (Shift: 10 %).
-      const double step = ImGui::GetIO().KeyShift ? 0.1 : 0.01;
+      const double step = io.KeyShift ? 0.1 : 0.01;
       const int left = ImGui::GetKeyIndex(ImGuiKey_LeftArrow);
       const int right = ImGui::GetKeyIndex(ImGuiKey_RightArrow);
       const double nudge = (left >= 0 && ImGui::IsKeyPressed(left))     ? -step
@@ -244,15 +283,19 @@ void ParametersPanel::input_slider(Document& document, const InputSpec& spec, fl
         changed = true;
       }
     }
+    if (relative_drag_id_ == id && !ImGui::IsItemActive()) {
+      relative_drag_id_ = 0;
+    }
     // The item's rectangle includes its label; the slider's own frame is `width` wide.
     const ImVec2 min = ImGui::GetItemRectMin();
-    places_[std::string(spec.key)] =
+    places_[key] =
         SliderPlace{min, ImVec2(min.x + width, min.y + ImGui::GetFrameHeight()), fraction};
   }
   if (changed) {
+    unread_.erase(key);
     // A drag stays open until the slider lets go (the frame closes the step); a typed value or
     // an arrow key's nudge is a step of its own.
-    Edit edit = Edit::input(std::string(spec.key), value);
+    Edit edit = Edit::input(key, value);
     document.apply(ImGui::IsItemActive() ? std::move(edit).open() : edit);
   }
   if (is_refused) {
@@ -301,7 +344,8 @@ void ParametersPanel::animation_row(Document& document,
       // input carries on where it paused, over the range typed for it.
       const bool resuming = animation_ && animation_->key() == animate_key_;
       try {
-        AnimatedInput fresh(animate_key_, document.edited());
+        AnimatedInput fresh(animate_key_, document.edited(),
+                            document.expert_mode() ? SliderReach::expert : SliderReach::beginner);
         if (resuming) {
           fresh.set_range(range_lo_, range_hi_);
         } else {
@@ -338,6 +382,10 @@ void ParametersPanel::animation_row(Document& document,
 void ParametersPanel::draw(PanelContext& context) {
   Document& document = context.document;
   play_frame(document);  // before the sliders, so that they show this frame's value
+  // Typed text that was no value stays on its slider until the value changes by other means.
+  std::erase_if(unread_, [&](const auto& entry) {
+    return find_input(entry.first)->value(document.edited()) != entry.second.value;
+  });
   const bool unsaved = document.unsaved();
   if (!begin(context.renderer, unsaved ? " *" : "")) {
     ImGui::End();
@@ -430,13 +478,18 @@ void ParametersPanel::draw(PanelContext& context) {
     help_marker(
         "Resolution of the 3D cloth mesh (vertices per side). Changing it does not re-solve.");
   }
-  if (!document.issues().empty()) {
+  if (!document.issues().empty() || !unread_.empty()) {
     ImGui::Separator();
     ImGui::PushStyleColor(ImGuiCol_Text, kErrorText);
-    wrapped_text("%zu input(s) refused: the views show the last valid state.",
-                 document.issues().size());
+    if (!document.issues().empty()) {
+      wrapped_text("%zu input(s) refused: the views show the last valid state.",
+                   document.issues().size());
+    }
     for (const ValidationIssue& issue : document.issues()) {
-      wrapped_text("%s", issue.message.c_str());
+      wrapped_text("%s", readable(issue.message).c_str());
+    }
+    for (const auto& [key, unread] : unread_) {
+      wrapped_text("%s", readable(unread.reason).c_str());
     }
     ImGui::PopStyleColor();
   }

@@ -51,6 +51,12 @@ class ParametersPanel : public Panel {
   static constexpr const char* kPlayLabel = "play";
   static constexpr const char* kPauseLabel = "pause";
   static constexpr const char* kPrintedEq7Label = "Conci's eq. 7 as printed";
+  static constexpr double kFineDragSpeed = 0.1;
+
+  // What a slider shows: its value in the shown unit, or text typed into it that is no value.
+  std::string shown(const Document& document, const InputSpec& spec) const;
+  // The reasons typed text was refused, by input key.
+  std::map<std::string, std::string> unread_reasons() const;
 
  private:
   void input_slider(Document& document, const InputSpec& spec, float width);
@@ -72,7 +78,19 @@ class ParametersPanel : public Panel {
     InputInterval range;
   };
   std::map<std::string, CachedInterval, std::less<>> intervals_;
-  const InputInterval& interval(const InputSpec& spec, const Parameters& p);
+  const InputInterval& interval(const InputSpec& spec, const Parameters& p, SliderReach reach);
+  // Text typed into a slider that is no value: kept as typed on the slider, with the reason
+  // under the sliders, until the input's value changes (`value` is the one it had).
+  struct UnreadText {
+    std::string text;
+    std::string reason;
+    double value = 0.0;
+  };
+  std::map<std::string, UnreadText, std::less<>> unread_;
+  // Shift held during a drag moves the handle at kFineDragSpeed of the mouse. From the first
+  // frame with Shift until the button is let go, the drag follows the mouse's movement rather
+  // than its position, so that letting go of Shift does not make the handle jump.
+  ImGuiID relative_drag_id_ = 0;
   std::string typing_initial_;
 
   std::string animate_key_ = "h";

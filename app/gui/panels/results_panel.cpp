@@ -51,6 +51,11 @@ std::vector<ResultsPanel::Row> ResultsPanel::rows(Document& document) {
   std::vector<Row> out;
   out.push_back(row("number of wrinkles", "n", shown.n));
   out.push_back(row("amplitude ratio", "Q", shown.Q));
+  if (!document.expert_mode()) {
+    // A beginner sees what the cloth does; how the solver got there is for experts.
+    out.push_back(row("out-of-plane depth", "z_max", shown.z_max));
+    return out;
+  }
   if (s.count_rule && s.count_rule->spacing == FoldSpacing::even) {
     out.push_back({"fold spacing", readable("λ"), fmt("%.1f mm", s.count_rule->step), ""});
   } else {
@@ -154,22 +159,29 @@ void ResultsPanel::draw(PanelContext& context) {
   // window or the expert settings may scroll out of view; here it is always at the top.
   if (const std::optional<std::string> refusal = document.refusal()) {
     ImGui::PushStyleColor(ImGuiCol_Text, kErrorText);
-    wrapped_text("Refused, these results are for the last valid inputs: %s", refusal->c_str());
+    wrapped_text("Refused, these results are for the last valid inputs: %s",
+                 readable(*refusal).c_str());
     ImGui::PopStyleColor();
   }
   const ModelStanding& model = standing(document);
   draw_compare_section(document, model);
   Scene& scene = document.scene();
   const Solution& s = scene.solution();
-  ImGui::Text("Regime: %s", std::string(to_string(s.regime)).c_str());
-  if (const std::string message = describe(s, scene.parameters()); !message.empty()) {
-    ImGui::PushStyleColor(ImGuiCol_Text, s.regime == Regime::wrinkled ? kDimText : kNoteText);
-    wrapped_text("%s", message.c_str());
+  const bool expert = document.expert_mode();
+  if (!expert) {
+    const RegimeInfo& regime = regime_info(s.regime);
+    wrapped_text("%s: %s", std::string(regime.label).c_str(), std::string(regime.plain).c_str());
+  } else {
+    ImGui::Text("Regime: %s", std::string(to_string(s.regime)).c_str());
+    if (const std::string message = describe(s, scene.parameters()); !message.empty()) {
+      ImGui::PushStyleColor(ImGuiCol_Text, s.regime == Regime::wrinkled ? kDimText : kNoteText);
+      wrapped_text("%s", message.c_str());
+      ImGui::PopStyleColor();
+    }
+    ImGui::PushStyleColor(ImGuiCol_Text, kDimText);
+    wrapped_text("model: %s", model.label.c_str());
     ImGui::PopStyleColor();
   }
-  ImGui::PushStyleColor(ImGuiCol_Text, kDimText);
-  wrapped_text("model: %s", model.label.c_str());
-  ImGui::PopStyleColor();
   if (model.range) {
     ImGui::PushStyleColor(ImGuiCol_Text, kDimText);
     wrapped_text("(brackets: %.0f %% prediction intervals, hover for how often they held)",
@@ -185,8 +197,10 @@ void ResultsPanel::draw(PanelContext& context) {
     wrapped_text("n is capped: eq. 10 asks for more.");
     ImGui::PopStyleColor();
   }
-  if (!s.a_mm.empty() &&
-      ImGui::CollapsingHeader("fold amplitudes a_i", ImGuiTreeNodeFlags_DefaultOpen)) {
+  // The a_i are how far down each fold line reaches at the centre: a beginner's fold depths.
+  if (!s.a_mm.empty() && ImGui::CollapsingHeader(expert ? "fold amplitudes a_i###amplitudes"
+                                                        : "fold depths a_i###amplitudes",
+                                                 ImGuiTreeNodeFlags_DefaultOpen)) {
     if (ImGui::BeginTable(
             "amplitudes", 3,
             ImGuiTableFlags_RowBg | ImGuiTableFlags_ScrollY | ImGuiTableFlags_BordersInnerV,
