@@ -16,6 +16,7 @@
 #include "app/common/inputs.hpp"
 #include "app/gui/appearance.hpp"
 #include "app/gui/document.hpp"
+#include "app/gui/page_link.hpp"
 #include "app/gui/panel.hpp"
 #include "app/gui/panels/analysis_panel.hpp"
 #include "app/gui/panels/calibration_panel.hpp"
@@ -94,6 +95,13 @@ class Explorer {
   // empty event); callable from any thread. None by default: a test's loop never sleeps.
   void set_wake(std::function<void()> wake) { wake_ = std::move(wake); }
   Appearance& appearance() { return appearance_; }
+  // Where the link goes: the platform's (make_page_link()); the desktop's until set.
+  void set_page_link(std::unique_ptr<PageLink> link) { page_link_ = std::move(link); }
+  // The fabric A as a link's fragment (core/io/link.hpp: every input, as edited, refused or not),
+  // with the view keys (kLinkViewKeys) that differ from a fresh start.
+  std::string link() const;
+  // "Export > Copy link": the link, as the platform hands it out, on the clipboard, with a notice.
+  void copy_link();
   // True while the panels follow the window (until the user moves or resizes one).
   bool automatic_layout() const { return automatic_layout_; }
   // Where each tiled panel was drawn in the last frame (ImGui's windows, after the user's moves),
@@ -206,6 +214,8 @@ class Explorer {
   PhotoOverlay* photo_ = nullptr;            // the fold plot's photo and its measurement window
   IntroWindow* intro_ = nullptr;             // "What am I looking at?"
   std::function<void()> wake_;
+  std::unique_ptr<PageLink> page_link_ = std::make_unique<PageLink>();
+  LinkThrottle address_;  // when the page's address follows the link
   bool show_stats_ = false;
   bool automatic_layout_ = true;
   float menu_height_ = 0.0f;
