@@ -2,10 +2,10 @@
 // percent-encoding between.
 #include "core/io/link.hpp"
 
-#include <bit>
 #include <cctype>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <filesystem>
 #include <random>
 #include <string>
@@ -22,8 +22,11 @@ namespace fs = std::filesystem;
 using foldlab::LinkAssignment;
 using foldlab::Parameters;
 
+// (memcpy rather than std::bit_cast, which the browser build's libc++ lacks)
 std::uint64_t bits(double v) {
-  return std::bit_cast<std::uint64_t>(v);
+  std::uint64_t out = 0;
+  std::memcpy(&out, &v, sizeof out);
+  return out;
 }
 
 // Every field of Parameters, listed here rather than read from the input table: a field the link

@@ -1,8 +1,8 @@
 #include "core/io/link.hpp"
 
-#include <bit>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <optional>
 
 #include "core/model/settings.hpp"
@@ -11,8 +11,9 @@
 namespace foldlab {
 namespace {
 
+// (memcmp rather than std::bit_cast, which the browser build's libc++ lacks)
 bool same_bits(double a, double b) {
-  return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b);
+  return std::memcmp(&a, &b, sizeof a) == 0;
 }
 
 // Whether `text` is read back as exactly `stored`, by the reader `--set` uses.
