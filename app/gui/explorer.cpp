@@ -179,14 +179,14 @@ std::string Explorer::link() const {
   };
   for (const std::unique_ptr<Panel>& panel : panels_) {
     if (presented_ && panel->tile() == presented_) {
-      add(kLinkViewKeys[0], panel->key());
+      add(kLinkPresentKey, panel->key());
     }
   }
   if (appearance_.light_theme()) {
-    add(kLinkViewKeys[1], "light");
+    add(kLinkThemeKey, "light");
   }
   if (appearance_.scale_percent() != kMinUiScalePercent) {
-    add(kLinkViewKeys[2], std::to_string(appearance_.scale_percent()));
+    add(kLinkScaleKey, std::to_string(appearance_.scale_percent()));
   }
   return out;
 }

@@ -13,7 +13,10 @@ namespace foldlab::gui {
 
 // The --view keys a link carries besides the inputs, when they differ from a fresh start: how a
 // presenter set the room up (the presented panel, the theme, the text size).
-inline constexpr std::string_view kLinkViewKeys[] = {"present", "theme", "scale"};
+inline constexpr std::string_view kLinkPresentKey = "present";
+inline constexpr std::string_view kLinkThemeKey = "theme";
+inline constexpr std::string_view kLinkScaleKey = "scale";
+inline constexpr std::string_view kLinkViewKeys[] = {kLinkPresentKey, kLinkThemeKey, kLinkScaleKey};
 bool is_link_view_key(std::string_view key);
 
 class PageLink {
