@@ -403,6 +403,77 @@ TEST_F(ExplorerTest, ARefusedValueKeepsTheLastValidStateAndSaysWhy) {
   EXPECT_EQ(number_after(text, "number of wrinkles n "), 8.0);
 }
 
+// A page that records what its address was set to.
+class RecordingLink final : public PageLink {
+ public:
+  explicit RecordingLink(std::vector<std::string>& shown) : shown_(shown) {}
+  bool follows() const override { return true; }
+  void show(std::string_view fragment) override { shown_.emplace_back(fragment); }
+
+ private:
+  std::vector<std::string>& shown_;
+};
+
+TEST(LinkThrottle, WritesAChangeAtOnceThenAtMostFourTimesASecondAndTheLastAlways) {
+  LinkThrottle throttle(0.25);
+  EXPECT_EQ(throttle.due("h=1400", 0.0), std::nullopt) << "the address the page opened with";
+  EXPECT_EQ(throttle.due("h=1400", 1.0), std::nullopt);
+  EXPECT_EQ(throttle.due("h=1500", 1.0), "h=1500");
+  EXPECT_FALSE(throttle.pending());
+  EXPECT_EQ(throttle.due("h=1600", 1.1), std::nullopt);
+  EXPECT_TRUE(throttle.pending());
+  EXPECT_EQ(throttle.due("h=1700", 1.2), std::nullopt);
+  EXPECT_EQ(throttle.due("h=1700", 1.25), "h=1700");
+  EXPECT_FALSE(throttle.pending());
+  // Back to what was written before its turn came: nothing to write, nothing pending.
+  EXPECT_EQ(throttle.due("h=1800", 1.3), std::nullopt);
+  EXPECT_EQ(throttle.due("h=1700", 1.4), std::nullopt);
+  EXPECT_FALSE(throttle.pending());
+  EXPECT_EQ(throttle.due("h=1700", 9.0), std::nullopt);
+}
+
+TEST_F(ExplorerTest, ThePagesAddressFollowsTheInputsWithoutADragRewritingItEveryFrame) {
+  std::vector<std::string> shown;
+  explorer_->set_page_link(std::make_unique<RecordingLink>(shown));
+  frame();
+  EXPECT_TRUE(shown.empty()) << shown.front();
+  // A slider dragged over 60 frames (one second at 60 frames a second, the test's clock).
+  for (int i = 1; i <= 60; ++i) {
+    explorer_->document().apply(Edit::input("h", 1400.0 + 10.0 * i).open());
+    frame();
+  }
+  // At once, then every 0.25 s: 1 + 4 writes (the frames' clock rounds), never one a frame.
+  EXPECT_GE(shown.size(), 4u);
+  EXPECT_LE(shown.size(), 5u);
+  EXPECT_NE(shown.front().find("&h=1410&"), std::string::npos) << shown.front();
+  // The last value reaches the address once its turn comes, though nothing moves any more.
+  for (int i = 0; i < 20; ++i) {
+    frame();
+  }
+  EXPECT_NE(shown.back().find("&h=2000&"), std::string::npos) << shown.back();
+  EXPECT_EQ(shown.back(), explorer_->link());
+  const std::size_t writes = shown.size();
+  for (int i = 0; i < 30; ++i) {
+    frame();
+  }
+  EXPECT_EQ(shown.size(), writes) << "an unchanged link is not written again";
+}
+
+TEST_F(ExplorerTest, TheLinkCarriesTheViewSetUpForARoom) {
+  frame();
+  const std::string fabric = explorer_->link();
+  EXPECT_EQ(fabric.find("present="), std::string::npos) << fabric;
+  ASSERT_EQ(explorer_->set_view("present", "cloth"), std::nullopt);
+  ASSERT_EQ(explorer_->set_view("theme", "light"), std::nullopt);
+  ASSERT_EQ(explorer_->set_view("scale", "125"), std::nullopt);
+  frame();
+  EXPECT_EQ(explorer_->link(), fabric + "&present=cloth&theme=light&scale=125");
+  // Copied with the desktop's link: the fragment behind '#', with a notice.
+  explorer_->copy_link();
+  EXPECT_EQ(std::string(ImGui::GetClipboardText()), "#" + explorer_->link());
+  EXPECT_EQ(explorer_->document().message(), "Link copied.");
+}
+
 TEST_F(ExplorerTest, SwitchingPresetShowsTheNewPreset) {
   frame();
   explorer_->load_preset_file(kPresetsDir / "paper-table2-w54.json");

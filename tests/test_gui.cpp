@@ -344,6 +344,71 @@ TEST_F(GuiTest, TheLastSessionIsRestored) {
   EXPECT_EQ(report.at("solution").at("inputs").at("height_mm").get<double>(), 1777.0);
   EXPECT_TRUE(fs::exists(dir_ / "config" / "foldlab" / "imgui.ini"));
 }
+TEST_F(GuiTest, ALinkOpensTheFabricAndTheViewItCarries) {
+  if (!have_xvfb()) {
+    GTEST_SKIP() << "xvfb-run is not installed (scripts/install-deps.sh installs it)";
+  }
+  // A full address as the page writes it, with a query the explorer leaves to the page.
+  const RunResult r = run_in_xvfb(
+      dir_, environment(),
+      {"--frames", "2", "--report", "--link",
+       "https://example.org/foldlab/index.html?preset=paper-fig4#h=2000&w=200%20g%2Fm%C2%B2"
+       "&method=paper&theme=light&present=cloth&scale=150"});
+  ASSERT_EQ(r.exit_status, 0) << r.err;
+  const nlohmann::json report = nlohmann::json::parse(r.out);
+  const nlohmann::json& inputs = report.at("parameters");
+  EXPECT_EQ(inputs.at("h_mm").get<double>(), 2000.0);
+  EXPECT_EQ(inputs.at("w_N_per_mm2").get<double>(), 200 * 9.81e-9);  // 200 g/m², g = 9.81
+  EXPECT_EQ(inputs.at("method"), "paper");
+  EXPECT_EQ(inputs.at("L_mm").get<double>(), 1400.0);  // the default preset's, not in the link
+  EXPECT_EQ(report.at("solution").at("inputs").at("height_mm").get<double>(), 2000.0);
+  EXPECT_TRUE(report.at("refused").is_null());
+  EXPECT_EQ(report.at("appearance").at("light_theme"), true);
+  EXPECT_EQ(report.at("appearance").at("scale_percent"), 150);
+  EXPECT_EQ(report.at("layout").at("presented"), "cloth");
+  // The link the explorer gives back carries the same, in the shown units.
+  const std::string link = report.at("link").get<std::string>();
+  EXPECT_NE(link.find("&w=200gsm&"), std::string::npos) << link;
+  EXPECT_NE(link.find("&h=2000&"), std::string::npos) << link;
+  EXPECT_TRUE(link.ends_with("&present=cloth&theme=light&scale=150")) << link;
+  // --set after the link wins, as it is applied after it.
+  const RunResult both =
+      run_in_xvfb(dir_, environment(),
+                  {"--frames", "1", "--report", "--link", "#h=2000&E=300", "--set", "h=1500"});
+  ASSERT_EQ(both.exit_status, 0) << both.err;
+  const nlohmann::json both_report = nlohmann::json::parse(both.out);
+  EXPECT_EQ(both_report.at("parameters").at("h_mm").get<double>(), 1500.0);
+  EXPECT_EQ(both_report.at("parameters").at("E_MPa").get<double>(), 300.0);
+}
+
+TEST_F(GuiTest, ALinksRefusedValueIsKeptWithItsReasonAndAWrongOneNamed) {
+  if (!have_xvfb()) {
+    GTEST_SKIP() << "xvfb-run is not installed (scripts/install-deps.sh installs it)";
+  }
+  // d beyond L/2 = 700 mm: --set refuses to start, a link opens with the value kept as typed and
+  // the same reason under the sliders, the cloth as it was before (d = 100 mm).
+  const std::string reason = "d_mm = 900 must be in [0, 700): d must stay below L/2 = 700";
+  const RunResult set = run_in_xvfb(dir_, environment(), {"--frames", "1", "--set", "d=900"});
+  EXPECT_EQ(set.exit_status, 2);
+  EXPECT_NE(set.err.find(reason), std::string::npos) << set.err;
+  const RunResult linked =
+      run_in_xvfb(dir_, environment(), {"--frames", "2", "--report", "--link", "#d=900"});
+  ASSERT_EQ(linked.exit_status, 0) << linked.err;
+  const nlohmann::json report = nlohmann::json::parse(linked.out);
+  EXPECT_EQ(report.at("parameters").at("d_mm").get<double>(), 900.0);
+  EXPECT_NE(report.at("refused").get<std::string>().find(reason), std::string::npos)
+      << report.at("refused");
+  EXPECT_EQ(report.at("solution").at("inputs").at("support_displacement_mm").get<double>(), 100.0);
+  EXPECT_EQ(report.at("undo_depth"), 0);
+  EXPECT_EQ(report.at("dirty"), false);
+  // What cannot be stored at all stops the start, named by the option it came with.
+  const RunResult wrong =
+      run_in_xvfb(dir_, environment(), {"--frames", "1", "--link", "#t=abc&zz=1"});
+  EXPECT_EQ(wrong.exit_status, 2);
+  for (const char* named : {"--link t = 'abc' is not a number", "--link unknown key 'zz'"}) {
+    EXPECT_NE(wrong.err.find(named), std::string::npos) << named << "\n" << wrong.err;
+  }
+}
 
 // A session saved by a first run, edited by `edit`, then read back by a second run's report.
 class GuiConfigTest : public GuiTest {

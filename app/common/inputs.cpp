@@ -12,15 +12,12 @@
 
 namespace foldlab::app {
 
-Preset resolve_inputs(const InputOptions& options) {
-  Preset preset;
-  try {
-    preset = options.preset_path.empty() ? default_preset() : load_preset(options.preset_path);
-  } catch (const PresetError& e) {
-    throw InputError(e.what());
-  }
+namespace {
+
+// The overrides in the order every command applies them: a law with its published constants
+// (which --set c, K or p then override), the link's inputs, --set, --method.
+std::vector<std::string> overrides(const InputOptions& options, bool with_link) {
   std::vector<std::string> assignments;
-  // A law comes with its published constants, which --set c, K or p then override.
   if (!options.law.empty()) {
     assignments.push_back("law=" + options.law);
     WrinkleLawKind kind{};
@@ -30,22 +27,65 @@ Preset resolve_inputs(const InputOptions& options) {
       assignments.emplace_back("p=1");
     }
   }
+  if (with_link) {
+    assignments.insert(assignments.end(), options.link.begin(), options.link.end());
+  }
   assignments.insert(assignments.end(), options.assignments.begin(), options.assignments.end());
   if (!options.method.empty()) {
     assignments.push_back("method=" + options.method);
   }
+  return assignments;
+}
+
+StartInputs resolve(const InputOptions& options, bool keep_refused) {
+  StartInputs start;
+  try {
+    start.preset =
+        options.preset_path.empty() ? default_preset() : load_preset(options.preset_path);
+  } catch (const PresetError& e) {
+    throw InputError(e.what());
+  }
+  // What cannot be applied, named by the option it came with (it does not depend on the values
+  // applied before it).
   std::string problems;
-  for (const std::string& error : apply_assignments(preset.parameters, assignments)) {
+  Parameters scratch = start.preset.parameters;
+  for (const std::string& error : apply_assignments(scratch, options.link)) {
+    problems += "--link " + error + "\n";
+  }
+  for (const std::string& error : apply_assignments(scratch, overrides(options, false))) {
     problems += "--set " + error + "\n";
   }
+  Parameters all = start.preset.parameters;
+  apply_assignments(all, overrides(options, true));
   // Range problems as well: a value that did not parse left the preset's (valid) value in place,
   // so every range problem reported is a real one.
-  problems += format_issues(validate(preset.parameters));
-  if (!problems.empty()) {
-    problems.pop_back();  // the final newline
-    throw InputError(problems);
+  const std::vector<ValidationIssue> issues = validate(all);
+  if (problems.empty() && issues.empty()) {
+    start.preset.parameters = all;
+    return start;
   }
-  return preset;
+  if (problems.empty() && keep_refused && !options.link.empty()) {
+    Parameters without_link = start.preset.parameters;
+    apply_assignments(without_link, overrides(options, false));
+    if (validate(without_link).empty()) {
+      start.preset.parameters = without_link;
+      start.refused = all;
+      return start;
+    }
+  }
+  problems += format_issues(issues);
+  problems.pop_back();  // the final newline
+  throw InputError(problems);
+}
+
+}  // namespace
+
+Preset resolve_inputs(const InputOptions& options) {
+  return resolve(options, false).preset;
+}
+
+StartInputs resolve_start_inputs(const InputOptions& options) {
+  return resolve(options, true);
 }
 
 CLI::Validator non_empty_path() {

@@ -43,10 +43,24 @@ struct InputOptions {
   std::vector<std::string> assignments;
   std::string method;  // empty: the preset's
   std::string law;     // empty: the preset's law and constants
+  // A link's inputs as KEY=VALUE (`gui --link`, core/io/link.hpp), applied after the law's
+  // constants and before `assignments`.
+  std::vector<std::string> link{};
 };
 
 // The preset with the overrides applied and validated. Throws InputError listing every problem.
 Preset resolve_inputs(const InputOptions& options);
+
+// What the explorer starts from. A link may carry a value the model refuses (the page's address
+// follows what the user typed, refused or not): it opens as a typed one shows, kept with its
+// reason, rather than not at all.
+struct StartInputs {
+  Preset preset;  // with every override, or, when the link's values are refused, without them
+  std::optional<Parameters> refused;  // then: every override, as the explorer's edits
+};
+// resolve_inputs, except that values the model refuses only with the link's are kept in
+// `refused`. A key or value that cannot be applied at all is an InputError as for --set.
+StartInputs resolve_start_inputs(const InputOptions& options);
 
 // A file named on the command line by the option that names it.
 struct NamedPath {

@@ -6,8 +6,10 @@
 #include <vector>
 
 #include "app/gui/gui_app.hpp"
+#include "app/gui/page_link.hpp"
 #include "app/gui/surface.hpp"
 #include "core/analysis/sweep.hpp"
+#include "core/io/link.hpp"
 #include "core/model/text_format.hpp"
 
 namespace foldlab::gui {
@@ -31,7 +33,18 @@ struct GuiCommandOptions {
   GuiRunOptions run;
   std::string size = "1280x800";
   std::string print_path;
+  std::string link;
 };
+
+// --link: the inputs go the way of --set (before it), the view keys the way of --view (before
+// it), so that the options given beside a link override it.
+void apply_link_option(GuiCommandOptions& options) {
+  std::vector<std::string> view;
+  for (const LinkAssignment& piece : parse_fabric_link(options.link)) {
+    (is_link_view_key(piece.key) ? view : options.run.inputs.link).push_back(piece.set_text());
+  }
+  options.run.view_settings.insert(options.run.view_settings.begin(), view.begin(), view.end());
+}
 
 // --print FILE is --view print_file=FILE, first so that a later --view print=... still applies.
 void apply_print_option(GuiCommandOptions& options) {
@@ -43,6 +56,12 @@ void apply_print_option(GuiCommandOptions& options) {
 
 void add_common_gui_options(CLI::App& command, GuiCommandOptions& options) {
   app::add_input_options(command, options.run.inputs);
+  command
+      .add_option("--link", options.link,
+                  "a fabric as the page's address carries it, '#t=0.25&E=165&w=150gsm&...' (a "
+                  "full address, the fragment or its pieces): the inputs as --set takes them, "
+                  "applied before --set, and the view keys present, theme and scale as --view")
+      ->type_name("LINK");
   command.add_option("--size", options.size, "window or picture size WxH (default 1280x800)");
   command
       .add_option(
@@ -127,6 +146,7 @@ app::Command add_gui_command(CLI::App& app) {
   return [options] {
     return guarded([&] {
       parse_size(options->size, options->run);
+      apply_link_option(*options);
       apply_print_option(*options);
       check_play_options(options->run);
       check_distinct_files({{"--screenshot", options->run.screenshot_path}}, run_inputs(*options));
@@ -155,6 +175,7 @@ app::Command add_render_command(CLI::App& app) {
   return [options] {
     return guarded([&] {
       parse_size(options->size, options->run);
+      apply_link_option(*options);
       apply_print_option(*options);
       check_play_options(options->run);
       check_distinct_files({{"--out", options->run.screenshot_path}}, run_inputs(*options));

@@ -13,6 +13,7 @@
 #include "app/gui/panels/stats_overlay.hpp"
 #include "app/gui/panels/widgets.hpp"
 #include "app/gui/session.hpp"
+#include "core/io/link.hpp"
 #include "core/model/settings.hpp"
 #include "core/model/text_format.hpp"
 
@@ -171,6 +172,30 @@ std::optional<std::string> Explorer::set_view(std::string_view key, std::string_
     return std::nullopt;
   }
   return cloth_view_->set_view(key, value);
+}
+
+std::string Explorer::link() const {
+  std::string out = fabric_link(document_.edited());
+  const auto add = [&out](std::string_view key, const std::string& value) {
+    out += "&" + std::string(key) + "=" + percent_encode(value);
+  };
+  for (const std::unique_ptr<Panel>& panel : panels_) {
+    if (layout_.presented() && panel->tile() == layout_.presented()) {
+      add(kLinkPresentKey, panel->key());
+    }
+  }
+  if (appearance_.light_theme()) {
+    add(kLinkThemeKey, "light");
+  }
+  if (appearance_.scale_percent() != kMinUiScalePercent) {
+    add(kLinkScaleKey, std::to_string(appearance_.scale_percent()));
+  }
+  return out;
+}
+
+void Explorer::copy_link() {
+  page_link_->copy(page_link_->address(link()));
+  document_.notify("Link copied.", MessageKind::success);
 }
 
 std::optional<PictureRequest> Explorer::take_screenshot_request() {
@@ -448,6 +473,14 @@ float Explorer::main_menu() {
     }
     if (ImGui::BeginMenu("Export")) {
       export_.menu(document_, cloth_view_->style(), files_, analysis_->sweep_shown());
+      ImGui::Separator();
+      if (ImGui::MenuItem("Copy link")) {
+        copy_link();
+      }
+      if (ImGui::IsItemHovered()) {
+        ImGui::SetTooltip(
+            "The fabric as an address: open it in the page, or with foldlab gui --link");
+      }
       ImGui::EndMenu();
     }
     if (ImGui::MenuItem(IntroWindow::kTitle)) {
@@ -469,8 +502,9 @@ float Explorer::main_menu() {
 
 bool Explorer::awaits_time() const {
   const ImGuiIO& io = ImGui::GetIO();
-  return !document_.message().empty() || document_.session_dirty() || io.WantTextInput ||
-         io.WantSaveIniSettings || ImGui::GetCurrentContext()->SettingsDirtyTimer > 0.0f;
+  return !document_.message().empty() || document_.session_dirty() || address_.pending() ||
+         io.WantTextInput || io.WantSaveIniSettings ||
+         ImGui::GetCurrentContext()->SettingsDirtyTimer > 0.0f;
 }
 
 void Explorer::frame() {
@@ -517,6 +551,11 @@ void Explorer::frame() {
     document_.mark_session_dirty();
   }
   save_session_when_idle();
+  if (page_link_->follows()) {
+    if (const std::optional<std::string> due = address_.due(link(), ImGui::GetTime())) {
+      page_link_->show(*due);
+    }
+  }
 }
 
 }  // namespace foldlab::gui

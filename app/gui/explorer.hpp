@@ -17,6 +17,7 @@
 #include "app/gui/appearance.hpp"
 #include "app/gui/document.hpp"
 #include "app/gui/layout.hpp"
+#include "app/gui/page_link.hpp"
 #include "app/gui/panel.hpp"
 #include "app/gui/panels/analysis_panel.hpp"
 #include "app/gui/panels/calibration_panel.hpp"
@@ -112,6 +113,13 @@ class Explorer {
   const LayoutSplits& layout_splits() const { return layout_.splits(); }
   void present(std::optional<Tile> tile) { layout_.present(tile); }
   std::optional<Tile> presented() const { return layout_.presented(); }
+  // Where the link goes: the platform's (make_page_link()); the desktop's until set.
+  void set_page_link(std::unique_ptr<PageLink> link) { page_link_ = std::move(link); }
+  // The fabric A as a link's fragment (core/io/link.hpp: every input, as edited, refused or not),
+  // with the view keys (kLinkViewKeys) that differ from a fresh start.
+  std::string link() const;
+  // "Export > Copy link": the link, as the platform hands it out, on the clipboard, with a notice.
+  void copy_link();
 
   void save_session_now();
   // The window is asked to close: true when nothing would be lost (no unsaved edits, or a session
@@ -197,6 +205,8 @@ class Explorer {
   PhotoOverlay* photo_ = nullptr;            // the fold plot's photo and its measurement window
   IntroWindow* intro_ = nullptr;             // "What am I looking at?"
   std::function<void()> wake_;
+  std::unique_ptr<PageLink> page_link_ = std::make_unique<PageLink>();
+  LinkThrottle address_;  // when the page's address follows the link
   bool show_stats_ = false;
   float menu_height_ = 0.0f;
   Layout layout_{panels_};

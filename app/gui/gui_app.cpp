@@ -220,7 +220,7 @@ std::optional<InputPlayer> read_script(const GuiRunOptions& options) {
 // animation frames (the web build), which cannot block.
 class ExplorerRun {
  public:
-  ExplorerRun(Surface& surface, const GuiRunOptions& options, const Preset& preset,
+  ExplorerRun(Surface& surface, const GuiRunOptions& options, const app::StartInputs& start,
               bool interactive, std::optional<InputPlayer> player)
       : surface_(surface),
         options_(options),
@@ -228,6 +228,7 @@ class ExplorerRun {
         persist_(interactive && !options.fresh),
         imgui_(surface),
         renderer_(make_gl_renderer()) {
+    const Preset& preset = start.preset;
     std::optional<AnimatedInput> animation;
     if (!options.animate_key.empty()) {
       animation.emplace(options.animate_key, preset.parameters);
@@ -255,9 +256,15 @@ class ExplorerRun {
                                      measurements,
                                      std::filesystem::current_path()};
     // A preset named on the command line wins over the restored session.
-    const bool restore =
-        persist_ && options.inputs.preset_path.empty() && options.inputs.assignments.empty();
+    const bool restore = persist_ && options.inputs.preset_path.empty() &&
+                         options.inputs.assignments.empty() && options.inputs.link.empty();
     explorer_.emplace(preset, options.inputs.preset_path, restore, explorer_options, *renderer_);
+    explorer_->set_page_link(make_page_link());
+    if (start.refused) {
+      // A link's refused value, kept with its reason as a typed one is; not an edit to undo.
+      explorer_->document().apply(Edit::replace(*start.refused));
+      explorer_->document().forget_history();
+    }
     if (interactive) {
       // A background job that finishes while the window sleeps wakes it to show its result (the
       // regime map's last rows, a calibration's table). Thread-safe; the window outlives the
@@ -336,9 +343,9 @@ class ExplorerRun {
   int frames_since_wake_ = 0;
 };
 
-int run(Surface& surface, const GuiRunOptions& options, const Preset& preset, bool interactive,
-        std::optional<InputPlayer> player) {
-  ExplorerRun run(surface, options, preset, interactive, std::move(player));
+int run(Surface& surface, const GuiRunOptions& options, const app::StartInputs& start,
+        bool interactive, std::optional<InputPlayer> player) {
+  ExplorerRun run(surface, options, start, interactive, std::move(player));
   for (;;) {
     if (run.may_rest()) {
       // A timeout brought no input: one frame for what is due, then sleep again.
@@ -414,13 +421,13 @@ void web_frame(void* argument) {
 // wherever the explorer runs, with or without a display.
 int run_window(const GuiRunOptions& options) {
   std::optional<InputPlayer> player = read_script(options);
-  const Preset preset = app::resolve_inputs(options.inputs);
+  const app::StartInputs start = app::resolve_start_inputs(options.inputs);
 #ifdef __EMSCRIPTEN__
   // The page's canvas is the window; the browser paces the frames, so no swap interval.
   SurfaceOptions surface_options{options.width, options.height, false};
   // Lives as long as the page: the browser's loop calls into it after this returns.
   auto* web = new WebRun{make_window_surface(surface_options), nullptr};
-  web->run = std::make_unique<ExplorerRun>(*web->surface, options, preset, true, std::move(player));
+  web->run = std::make_unique<ExplorerRun>(*web->surface, options, start, true, std::move(player));
   emscripten_set_main_loop_arg(web_frame, web, 0, false);
   if (options.frames > 0 || !options.play_path.empty()) {
     // A scripted run on timers rather than animation frames: as fast as it can, and driven by
@@ -432,16 +439,16 @@ int run_window(const GuiRunOptions& options) {
   SurfaceOptions surface_options{options.width, options.height,
                                  options.frames == 0 && options.play_path.empty()};
   std::unique_ptr<Surface> surface = make_window_surface(surface_options);
-  return run(*surface, options, preset, true, std::move(player));
+  return run(*surface, options, start, true, std::move(player));
 #endif
 }
 
 int run_headless(const GuiRunOptions& options) {
   std::optional<InputPlayer> player = read_script(options);
-  const Preset preset = app::resolve_inputs(options.inputs);
+  const app::StartInputs start = app::resolve_start_inputs(options.inputs);
   SurfaceOptions surface_options{options.width, options.height, false};
   std::unique_ptr<Surface> surface = make_headless_surface(surface_options);
-  return run(*surface, options, preset, false, std::move(player));
+  return run(*surface, options, start, false, std::move(player));
 }
 
 }  // namespace foldlab::gui

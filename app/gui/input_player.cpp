@@ -271,6 +271,9 @@ json explorer_state_json(Explorer& explorer) {
   for (const auto& [name, rect] : explorer.panel_rects()) {
     panels[name] = {{"x", rect.pos.x}, {"y", rect.pos.y}, {"w", rect.size.x}, {"h", rect.size.y}};
   }
+  // The browser's GLFW keeps no clipboard (nothing there reads as empty), and the system's may
+  // hold any bytes.
+  const char* clipboard = ImGui::GetClipboardText();
   json state = {
       {"grid", std::to_string(scene.grid_nx()) + "x" + std::to_string(scene.grid_ny())},
       {"regime_map_ms", explorer.regime_map_ms()},
@@ -289,6 +292,8 @@ json explorer_state_json(Explorer& explorer) {
       {"method_step", method_step_json(explorer.analysis().method())},
       {"view", cloth_view_json(explorer.cloth_style())},
       {"message", document.message()},
+      {"link", explorer.link()},
+      {"clipboard", detail::escaped(clipboard != nullptr ? clipboard : "")},
       {"popup_open", ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId)},
       {"intro_open", explorer.intro().is_open()},
       {"layout",

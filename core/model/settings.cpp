@@ -36,7 +36,7 @@ std::string_view law_choices() {
 }
 
 constexpr InputUnit kWeightUnits[] = {
-    {"g/m²", kNPerMm2PerGramPerM2, "%.3g"},
+    {"g/m²", kNPerMm2PerGramPerM2, "%.3g", "gsm"},
     {"oz/yd²", kGramPerM2PerOuncePerYd2* kNPerMm2PerGramPerM2, "%.3g"}};
 constexpr InputUnit kLengthUnits[] = {{"cm", 10.0, "%.4g"}, {"m", 1000.0, "%.4g"}};
 constexpr InputUnit kModulusUnits[] = {{"GPa", 1000.0, "%.4g"}};
@@ -541,7 +541,7 @@ std::optional<double> parse_quantity(const InputSpec& spec, std::string_view tex
   const std::string bare = unit_key(bare_unit);
   for (const InputUnit& unit : units) {
     const std::string key = unit_key(unit.symbol);
-    const bool named = typed == key || (unit.symbol == "g/m²" && typed == "gsm");
+    const bool named = typed == key || (!unit.plain.empty() && typed == unit_key(unit.plain));
     if (named || (typed.empty() && (bare.empty() ? &unit == &units.front() : bare == key))) {
       return number * unit.per_unit;
     }

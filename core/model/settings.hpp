@@ -26,11 +26,14 @@ enum class InputKind {
 enum class InputScale { linear, logarithmic };
 
 // A unit a value may be typed in: `symbol` as shown, `per_unit` the stored value of one of it
-// (1 g/m² is 9.81e-9 N/mm²), `format` how a value in it is shown.
+// (1 g/m² is 9.81e-9 N/mm²), `format` how a value in it is shown, and `plain`, when the symbol
+// needs more than letters, a name of it in letters alone, read as the symbol is and written in
+// links ("gsm" for g/m²).
 struct InputUnit {
   std::string_view symbol{};
   double per_unit = 1.0;
   std::string_view format{};
+  std::string_view plain{};
 };
 
 // How a row reads and writes its value in Parameters: a number, a whole number (stored as int)

@@ -82,6 +82,9 @@ def script(size):
         steps += [{"type": name}] if name else []
         steps += [{"key": "enter"}, {"frames": 2}, {"expect": {"modal": None}}]
     steps += [{"frames": 2}, {"expect": dict(tiled, modal=None)}]
+    # The fabric as a link, on the clipboard (play_copy_link checks its text).
+    steps += menu("Export", "Copy link") + [{"expect": {"message": "Link copied.",
+                                                       "popup_open": False}}]
     # Another window size: the panels refit it.
     steps += [{"resize": NEXT[size]}, {"frames": 3}, {"expect": tiled}]
     # The calibration window (last: it floats over the panels).

@@ -4,8 +4,11 @@
 <pre id="foldlab-report"> from the DOM and checks it. Exit 0 when every check holds.
 
   page_test.py --site DIR --play-dir DIR --query '?play=play/slider_h.json&report=1...'
-               [--expect KEY=JSON ...] [--chromium PATH]
-KEY is a dotted path into the report (`gui --report`'s JSON)."""
+               [--expect KEY=JSON ...] [--expect-address TEXT] [--expect-address-is-link]
+               [--chromium PATH]
+KEY is a dotted path into the report (`gui --report`'s JSON). The address is the page's fragment
+when the run ended (location.hash): --expect-address compares it with TEXT, and
+--expect-address-is-link with the explorer's link then ('#' and the report's `link`)."""
 import argparse
 import html
 import json
@@ -39,6 +42,8 @@ def main():
     parser.add_argument("--play-dir", required=True)
     parser.add_argument("--query", required=True)
     parser.add_argument("--expect", action="append", default=[])
+    parser.add_argument("--expect-address")
+    parser.add_argument("--expect-address-is-link", action="store_true")
     parser.add_argument("--chromium", default="chromium")
     parser.add_argument("--budget-ms", type=int, default=120000)
     args = parser.parse_args()
@@ -98,6 +103,11 @@ def main():
             continue
         if value != json.loads(wanted):
             problems.append(f"{key} is {json.dumps(value)}, expected {wanted}")
+    address = result.get("address")
+    if args.expect_address is not None and address != args.expect_address:
+        problems.append(f"the address is {address!r}, expected {args.expect_address!r}")
+    if args.expect_address_is_link and address != "#" + str(report.get("link")):
+        problems.append(f"the address is {address!r}, the explorer's link #{report.get('link')}")
     for problem in problems:
         print(f"{url}: {problem}", file=sys.stderr)
     print(f"{url}: {'ok' if not problems else 'FAILED'} in {seconds:.1f} s")
