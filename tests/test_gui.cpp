@@ -387,7 +387,7 @@ TEST_F(GuiTest, ALinksRefusedValueIsKeptWithItsReasonAndAWrongOneNamed) {
   }
   // d beyond L/2 = 700 mm: --set refuses to start, a link opens with the value kept as typed and
   // the same reason under the sliders, the cloth as it was before (d = 100 mm).
-  const std::string reason = "d_mm = 900 must be in [0, 700): d must stay below L/2 = 700";
+  const std::string reason = "support displacement d = 900 mm must be below L/2 = 700 mm";
   const RunResult set = run_in_xvfb(dir_, environment(), {"--frames", "1", "--set", "d=900"});
   EXPECT_EQ(set.exit_status, 2);
   EXPECT_NE(set.err.find(reason), std::string::npos) << set.err;
