@@ -244,24 +244,7 @@ void ClothViewPanel::remember(RememberedSettings& settings) {
   settings.add("z_exaggeration", &style_.z_exaggeration, kZExaggeration.lo, kZExaggeration.hi);
 }
 
-void ClothViewPanel::draw(PanelContext& context) {
-  Document& document = context.document;
-  Renderer& renderer = context.renderer;
-  if (fill_display_) {
-    ImGui::SetNextWindowPos(ImVec2(0.0f, 0.0f), ImGuiCond_Always);
-    ImGui::SetNextWindowSize(ImGui::GetIO().DisplaySize, ImGuiCond_Always);
-    ImGui::SetNextWindowFocus();
-  }
-  if (!begin(renderer)) {
-    ImGui::End();
-    return;  // hidden: no grid, no normals, no upload, no draw
-  }
-  stale_mark(document);
-  if (camera_loads_ != document.loads()) {
-    camera_loads_ = document.loads();  // another preset: frame it afresh
-    camera_framed_ = false;
-    camera_user_moved_ = false;
-  }
+bool ClothViewPanel::toolbar(PanelContext& context) {
   settings_row();
   const bool reset = ImGui::SmallButton("reset camera");
   ImGui::SetNextItemWidth(ems(12.0f));
@@ -291,7 +274,7 @@ void ClothViewPanel::draw(PanelContext& context) {
                             photo_path_ = path.string();
                             return load_photo(photo_path_);
                           }},
-                         document);
+                         context.document);
     }
     help_marker(
         "A photo of the fabric (PNG or JPEG), tiled over the cloth every print size; "
@@ -333,6 +316,70 @@ void ClothViewPanel::draw(PanelContext& context) {
     wrapped_text("%s", photo_problem_.c_str());
     ImGui::PopStyleColor();
   }
+  return reset;
+}
+
+// A drag on the view orbits (left) or pans (other buttons), the wheel zooms.
+void ClothViewPanel::steer_camera(FrameSize size) {
+  const ImGuiIO& io = ImGui::GetIO();
+  if (ImGui::IsItemActive() && (io.MouseDelta.x != 0.0f || io.MouseDelta.y != 0.0f)) {
+    camera_user_moved_ = true;
+    if (ImGui::IsMouseDown(ImGuiMouseButton_Left)) {
+      camera_.orbit(io.MouseDelta.x, io.MouseDelta.y);
+    } else {
+      camera_.pan(io.MouseDelta.x, io.MouseDelta.y, static_cast<float>(size.height));
+    }
+  }
+  if (ImGui::IsItemHovered() && io.MouseWheel != 0.0f) {
+    camera_user_moved_ = true;
+    camera_.zoom(io.MouseWheel);
+  }
+}
+
+// With B pinned: each half named at its foot, in the colours the plots give A and B, below the
+// cloth and its supports and clear of the hint at the top. A name that would wrap past two lines
+// would climb over the cloth: then the letter alone (the names are in Results).
+void ClothViewPanel::name_halves(const Document& document, ImDrawList* draw, ImVec2 origin,
+                                 FrameSize size, FrameSize area) const {
+  const auto label = [&](ImVec2 at, float width, ImU32 colour, const char* letter,
+                         const std::string& name) {
+    const std::string full = std::string(letter) + ": " + name;
+    const float wrap = width - 12.0f;
+    const ImVec2 full_size = ImGui::CalcTextSize(full.c_str(), nullptr, false, wrap);
+    const bool fits = full_size.y <= 2.0f * ImGui::GetTextLineHeightWithSpacing();
+    const float text_height = fits ? full_size.y : ImGui::GetTextLineHeight();
+    const float foot = at.y + static_cast<float>(area.height) - text_height - 6.0f;
+    draw->AddText(ImGui::GetFont(), ImGui::GetFontSize(), ImVec2(at.x + 6, foot), colour,
+                  fits ? full.c_str() : letter, nullptr, wrap);
+  };
+  const ImVec2 b_origin(origin.x + static_cast<float>(size.width), origin.y);
+  label(origin, static_cast<float>(size.width), kSweepCurve.u32(), "A", fabric_label(document));
+  label(b_origin, static_cast<float>(area.width - size.width), kCompareB.u32(), "B",
+        document.compare().b().name);
+  draw->AddLine(ImVec2(b_origin.x, origin.y),
+                ImVec2(b_origin.x, origin.y + static_cast<float>(area.height)),
+                ImGui::GetColorU32(ImGuiCol_Separator));
+}
+
+void ClothViewPanel::draw(PanelContext& context) {
+  Document& document = context.document;
+  Renderer& renderer = context.renderer;
+  if (fill_display_) {
+    ImGui::SetNextWindowPos(ImVec2(0.0f, 0.0f), ImGuiCond_Always);
+    ImGui::SetNextWindowSize(ImGui::GetIO().DisplaySize, ImGuiCond_Always);
+    ImGui::SetNextWindowFocus();
+  }
+  if (!begin(renderer)) {
+    ImGui::End();
+    return;  // hidden: no grid, no normals, no upload, no draw
+  }
+  stale_mark(document);
+  if (camera_loads_ != document.loads()) {
+    camera_loads_ = document.loads();  // another preset: frame it afresh
+    camera_framed_ = false;
+    camera_user_moved_ = false;
+  }
+  const bool reset = toolbar(context);
   // The view follows the theme: a light page gets a light backdrop.
   const bool light = style_is_light();
   style_.background =
@@ -352,23 +399,11 @@ void ClothViewPanel::draw(PanelContext& context) {
                          ImVec2(static_cast<float>(area.width), static_cast<float>(area.height)),
                          ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonRight |
                              ImGuiButtonFlags_MouseButtonMiddle);
-  const ImGuiIO& io = ImGui::GetIO();
   // With B pinned the view is split in two halves, A on the left and B on the right, under one
   // camera: a drag in either half turns both.
   const bool compare = document.compare().pinned();
   const FrameSize size{compare ? std::max(16, area.width / 2) : area.width, area.height};
-  if (ImGui::IsItemActive() && (io.MouseDelta.x != 0.0f || io.MouseDelta.y != 0.0f)) {
-    camera_user_moved_ = true;
-    if (ImGui::IsMouseDown(ImGuiMouseButton_Left)) {
-      camera_.orbit(io.MouseDelta.x, io.MouseDelta.y);
-    } else {
-      camera_.pan(io.MouseDelta.x, io.MouseDelta.y, static_cast<float>(size.height));
-    }
-  }
-  if (ImGui::IsItemHovered() && io.MouseWheel != 0.0f) {
-    camera_user_moved_ = true;
-    camera_.zoom(io.MouseWheel);
-  }
+  steer_camera(size);
   ImDrawList* draw = ImGui::GetWindowDrawList();
   const auto draw_view = [&](int which, ImVec2 at, Scene& cloth, FrameSize view_size) {
     if (views_[which] == kNoClothView) {
@@ -389,26 +424,7 @@ void ClothViewPanel::draw(PanelContext& context) {
                 "drag: orbit, right-drag: pan, wheel: zoom", nullptr,
                 static_cast<float>(area.width) - 12.0f);
   if (compare) {
-    // Each half named at its foot, in the colours the plots give A and B, below the cloth and its
-    // supports and clear of the hint at the top. A name that would wrap past two lines would
-    // climb over the cloth: then the letter alone (the names are in Results).
-    const auto label = [&](ImVec2 at, float width, ImU32 colour, const char* letter,
-                           const std::string& name) {
-      const std::string full = std::string(letter) + ": " + name;
-      const float wrap = width - 12.0f;
-      const ImVec2 full_size = ImGui::CalcTextSize(full.c_str(), nullptr, false, wrap);
-      const bool fits = full_size.y <= 2.0f * ImGui::GetTextLineHeightWithSpacing();
-      const float text_height = fits ? full_size.y : ImGui::GetTextLineHeight();
-      const float foot = at.y + static_cast<float>(area.height) - text_height - 6.0f;
-      draw->AddText(ImGui::GetFont(), ImGui::GetFontSize(), ImVec2(at.x + 6, foot), colour,
-                    fits ? full.c_str() : letter, nullptr, wrap);
-    };
-    label(origin, static_cast<float>(size.width), kSweepCurve.u32(), "A", fabric_label(document));
-    label(b_origin, static_cast<float>(area.width - size.width), kCompareB.u32(), "B",
-          document.compare().b().name);
-    draw->AddLine(ImVec2(b_origin.x, origin.y),
-                  ImVec2(b_origin.x, origin.y + static_cast<float>(area.height)),
-                  ImGui::GetColorU32(ImGuiCol_Separator));
+    name_halves(document, draw, origin, size, area);
   }
   if (bar_width > 0.0f) {
     draw_colour_bar(ImVec2(origin.x + static_cast<float>(area.width), origin.y),

@@ -49,6 +49,11 @@ class ClothViewPanel : public Panel {
   const PanelRect& view_rect() const { return view_rect_; }
 
  private:
+  // The row of controls above the view; true when "reset camera" was clicked.
+  bool toolbar(PanelContext& context);
+  void steer_camera(FrameSize size);
+  void name_halves(const Document& document, ImDrawList* draw, ImVec2 origin, FrameSize size,
+                   FrameSize area) const;
   void settings_row();
   // Loads a swatch photo as the print; the problem (also shown in the panel), if any.
   std::optional<std::string> load_photo(const std::string& path);
