@@ -1527,6 +1527,29 @@ TEST(Contrast, TextAndMarkerColoursReadInBothThemes) {
   EXPECT_NEAR(window_background(true).x, 0.94f, 1e-6);
 }
 
+// Marks that are not text need 3:1 (WCAG 1.4.11). On the light theme the 3D view's yellow supports
+// on its light grey backdrop were about 1.3:1, and an unchecked checkbox (near-white on the panel's
+// grey) had no edge to see.
+TEST(Contrast, NonTextMarksReadAtThreeToOneInBothThemes) {
+  for (const bool light : {false, true}) {
+    SCOPED_TRACE(light ? "light theme" : "dark theme");
+    const ImGuiStyle style = theme_style(light);
+    const ImVec4 window = window_background(light);
+    // A checkbox's edge: its outline against the panel, and against the box's own fill.
+    const ImVec4 frame = blend_over(style.Colors[ImGuiCol_FrameBg], window);
+    const ImVec4 edge =
+        style.FrameBorderSize > 0.0f ? blend_over(style.Colors[ImGuiCol_Border], frame) : frame;
+    EXPECT_GE(std::max(contrast_ratio(edge, window), contrast_ratio(frame, window)), 3.0);
+  }
+  // The 3D view's backdrops (ClothViewPanel) and the supports' colour drawn on them.
+  const ImVec4 light_backdrop(0.90f, 0.91f, 0.93f, 1.0f);
+  const ImVec4 dark_backdrop(0.16f, 0.17f, 0.20f, 1.0f);
+  EXPECT_GE(contrast_ratio(kSupportMarker.get(true), light_backdrop), 3.0);
+  EXPECT_GE(contrast_ratio(kSupportMarker.get(false), dark_backdrop), 3.0);
+  // What it was: the dark theme's yellow on the light backdrop.
+  EXPECT_LT(contrast_ratio(ImVec4(0.95f, 0.85f, 0.25f, 1.0f), light_backdrop), 1.5);
+}
+
 // Every themed colour a user must read, against what it is drawn on, in both themes; and
 // ImGui's own hint grey and slider handle, which the themes change.
 TEST(Contrast, EveryThemedColourReadsOnWhatItIsDrawnOn) {
@@ -1762,8 +1785,9 @@ TEST_F(ExplorerTest, AViewSettingChosenByHandIsOnDiskWithinSecondsAndComesBack) 
   open_explorer("equations", {}, session);
   frame();
   explorer_->save_session_now();
-  ASSERT_EQ(nlohmann::json::parse(foldlab::testing::read_file(session))["view"].value("print", -1.0),
-            0.0);
+  ASSERT_EQ(
+      nlohmann::json::parse(foldlab::testing::read_file(session))["view"].value("print", -1.0),
+      0.0);
   click("plain");
   click("woven checks");
   frame();

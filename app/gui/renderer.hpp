@@ -48,6 +48,7 @@ struct ClothStyle {
   Eigen::Vector3f positive_fold_colour{0.12f, 0.23f, 0.58f};
   Eigen::Vector3f negative_fold_colour{0.84f, 0.15f, 0.16f};
   Eigen::Vector3f background{0.16f, 0.17f, 0.20f};
+  Eigen::Vector3f support_colour{0.95f, 0.85f, 0.25f};  // the supports' markers
   // Every field takes part: the 3D view's picture is kept only while its style is unchanged.
   bool operator==(const ClothStyle&) const = default;
 };

@@ -534,9 +534,9 @@ void ClothRenderer::upload_decorations(const ClothBuffers& buffers) {
   }
   gl_->ground_vertex_count = static_cast<GLsizei>(vertices.size());
   gl_->support_first = static_cast<GLsizei>(vertices.size());
-  const Eigen::Vector3f support_colour(0.95f, 0.85f, 0.25f);
   for (const Eigen::Vector3f& support : buffers.supports_mm) {
-    vertices.push_back({to_world(support), support_colour});
+    vertices.push_back(
+        {to_world(support), Eigen::Vector3f::Zero()});  // drawn in the style's colour
   }
   gl_->support_count = static_cast<GLsizei>(vertices.size()) - gl_->support_first;
   glBindBuffer(GL_ARRAY_BUFFER, gl_->decor_vbo.get());
@@ -714,6 +714,9 @@ unsigned ClothRenderer::render(const ClothBuffers& buffers, const OrbitCamera& c
   }
   gl::set_program_point_size(true);
   glUniform1f(line.point_size, 12.0f);
+  // The supports' colour follows the theme (the backdrop does), so it is a uniform, not baked in.
+  glUniform4f(override_colour, style.support_colour.x(), style.support_colour.y(),
+              style.support_colour.z(), 1.0f);
   glDisable(GL_DEPTH_TEST);  // the supports are always visible
   glDrawArrays(GL_POINTS, gl_->support_first, gl_->support_count);
   gl::set_program_point_size(false);

@@ -384,6 +384,8 @@ void ClothViewPanel::draw(PanelContext& context) {
   const bool light = style_is_light();
   style_.background =
       light ? Eigen::Vector3f(0.90f, 0.91f, 0.93f) : Eigen::Vector3f(0.16f, 0.17f, 0.20f);
+  const ImVec4 support = kSupportMarker.get(light);
+  style_.support_colour = Eigen::Vector3f(support.x, support.y, support.z);
   ImVec2 available = ImGui::GetContentRegionAvail();
   const float bar_width =
       style_.colour_by == ClothStyle::ColourBy::none ? 0.0f : colour_bar_width();
