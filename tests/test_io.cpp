@@ -454,3 +454,24 @@ TEST(StiffMessage, NamesSToThePWhenPIsNotOne) {
 }
 
 }  // namespace
+
+// The table's columns line up as a terminal shows them: "c/(1-ν²)" and "Et³/12(1-ν²)" are more
+// bytes than characters, and their rows' symbols stood two columns left of the others.
+TEST(SolutionTable, ColumnsLineUpByCharactersNotBytes) {
+  const foldlab::Parameters p;
+  const std::string table = foldlab::solution_table(foldlab::solve(p), p, "x");
+  const auto column_of = [&](const std::string& row_start, const std::string& symbol) {
+    const std::size_t start = table.find(row_start);
+    EXPECT_NE(start, std::string::npos) << row_start;
+    const std::size_t at = table.find(" " + symbol + " ", start + row_start.size());
+    std::size_t shown = 0;
+    for (std::size_t i = table.rfind('\n', start) + 1; i <= at; ++i) {
+      shown += (static_cast<unsigned char>(table[i]) & 0xC0) != 0x80 ? 1 : 0;
+    }
+    return shown;
+  };
+  const std::size_t thickness = column_of("  thickness", "t");
+  EXPECT_EQ(column_of("  eq. 7 constant c/(1-ν²)", "K"), thickness);
+  EXPECT_EQ(column_of("  bending stiffness Et³/12(1-ν²)", "B"), thickness);
+  EXPECT_EQ(thickness, 2u + 34u + 1u);  // two spaces, the label's 34 columns, one space
+}

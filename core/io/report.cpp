@@ -20,10 +20,19 @@ std::string line(const char* label, const char* symbol, double value, const char
   finite_or_throw(value, *symbol != '\0' ? symbol : label);
   char number[64];
   std::snprintf(number, sizeof number, format, value);
-  char out[160];
-  std::snprintf(out, sizeof out, "  %-34s %-6s %14s%s%s", label, symbol, number, *unit ? " " : "",
-                unit);
-  return out + after + "\n";
+  // Padded by characters as a terminal shows them, not by bytes: "ν²" is four bytes, two columns.
+  const auto padded = [](const char* text, std::size_t width) {
+    std::string out(text);
+    std::size_t shown = 0;
+    for (const unsigned char c : out) {
+      shown += (c & 0xC0) != 0x80 ? 1 : 0;
+    }
+    out.append(shown < width ? width - shown : 0, ' ');
+    return out;
+  };
+  char shown[96];
+  std::snprintf(shown, sizeof shown, "%14s%s%s", number, *unit ? " " : "", unit);
+  return "  " + padded(label, 34) + " " + padded(symbol, 6) + " " + shown + after + "\n";
 }
 
 // " (6–8)"; " (7–7)" says that the range was computed and is a single value.
@@ -162,7 +171,7 @@ std::string solution_table(const Solution& s, const Parameters& p, const std::st
   }
   out += line("span between supports", "l", s.span_mm, "mm", "%.2f");
   out += line("sag of the upper edge", "A", s.sag_amplitude_mm, "mm", "%.2f");
-  out += line("bending stiffness Et^3/12(1-nu^2)", "B", bending_stiffness_Nmm(p.fabric), "N mm");
+  out += line("bending stiffness Et³/12(1-ν²)", "B", bending_stiffness_Nmm(p.fabric), "N mm");
   out += line("bending length (B/w)^(1/3)", "c_b", bending_length_mm(p.fabric), "mm", "%.2f");
   if (const FoldRounding rounding = fold_rounding(s, p); rounding.rounded) {
     const auto [smallest, largest] =

@@ -467,7 +467,10 @@ std::string shown_label(const InputSpec& spec) {
 }
 
 std::string input_title(const InputSpec& spec) {
-  return std::string(spec.name) + " " + std::string(input_symbol(spec));
+  const std::string_view symbol = input_symbol(spec);
+  // "supports", not "supports supports": a row named by its symbol says it once.
+  return symbol == spec.name ? std::string(spec.name)
+                             : std::string(spec.name) + " " + std::string(symbol);
 }
 
 namespace {
@@ -609,9 +612,12 @@ std::optional<std::string> set_input(Parameters& p, std::string_view key, double
     case InputKind::choice:
       return std::string(key) + " takes one of: " + std::string(spec->choices) + ", not a number";
     case InputKind::whole_number:
-      if (value != std::floor(value) || std::abs(value) > 1e9) {
+      if (value != std::floor(value)) {
         return std::string(key) + " = " + detail::shortest_number(value) +
                " must be a whole number";
+      }
+      if (std::abs(value) > 1e9) {  // beyond what the field holds: the row's range says why
+        return refusal_sentence(*spec, value, spec->valid, spec->why);
       }
       break;
     case InputKind::stiffness_K:  // stored as c: a c out of range is named by validate()
