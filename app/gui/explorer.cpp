@@ -13,6 +13,7 @@
 #include "app/gui/panels/stats_overlay.hpp"
 #include "app/gui/panels/widgets.hpp"
 #include "app/gui/session.hpp"
+#include "app/gui/surface.hpp"
 #include "core/model/settings.hpp"
 #include "core/model/text_format.hpp"
 
@@ -178,7 +179,7 @@ std::optional<PictureRequest> Explorer::take_screenshot_request() {
   if (!asked) {
     return std::nullopt;
   }
-  PictureRequest request{asked->path, std::nullopt};
+  PictureRequest request{asked->path, std::nullopt, std::nullopt};
   const auto rect_of = [this](std::string_view key) -> std::optional<PanelRect> {
     for (const auto& [name, rect] : panel_rects()) {
       if (name == key) {
@@ -201,6 +202,19 @@ std::optional<PictureRequest> Explorer::take_screenshot_request() {
       break;
   }
   return request;
+}
+
+void Explorer::write_picture(const std::filesystem::path& path, const PictureSpec& spec) {
+  if (picture_view_ == kNoClothView) {
+    picture_view_ = renderer_.create_cloth_view();
+  }
+  // The 3D view's camera once it has framed the cloth; until then, framed as it would be.
+  const PictureSource source{document_, cloth_view_->style(),
+                             cloth_view_->camera_framed()
+                                 ? std::optional<OrbitCamera>(cloth_view_->camera())
+                                 : std::nullopt,
+                             picture_view_, appearance_.font_file()};
+  write_png(path.c_str(), spec.size, draw_picture(renderer_, source, spec));
 }
 
 bool Explorer::busy() const {
