@@ -179,7 +179,10 @@ std::optional<PictureRequest> Explorer::take_screenshot_request() {
   if (!asked) {
     return std::nullopt;
   }
-  PictureRequest request{asked->path, std::nullopt, std::nullopt};
+  PictureRequest request{asked->path, std::nullopt, asked->spec};
+  if (asked->spec) {
+    return request;
+  }
   const auto rect_of = [this](std::string_view key) -> std::optional<PanelRect> {
     for (const auto& [name, rect] : panel_rects()) {
       if (name == key) {
@@ -518,6 +521,7 @@ void Explorer::frame() {
   stats_overlay(show_stats_, document_.scene(), renderer_counters());
   draw_unsaved_dialog();
   presets_->draw_dialogs(document_);
+  export_.draw_picture_dialog(document_, files_);
   files_.draw(document_);
   if (photo_->take_saved_preset()) {
     presets_->refresh();  // the fitted preset joins the list
