@@ -233,12 +233,13 @@ app::Command add_picture_command(CLI::App& app) {
       std::string problem;
       const std::optional<FrameSize> size = parse_picture_size(options->size, problem);
       if (!size) {
-        throw InputError("--size " + detail::cut(problem));
+        throw InputError("--size " + problem);
       }
       spec.size = *size;
       std::error_code error;
       if (std::filesystem::is_directory(options->out, error)) {
-        throw InputError("--out " + options->out + " is a folder; name the PNG file to write");
+        throw InputError("--out " + detail::cut(options->out) +
+                         " is a folder; name the PNG file to write");
       }
       prepare_run(options->scene, {{"--out", options->out}});
       return run_picture(options->scene.run, options->out, spec);

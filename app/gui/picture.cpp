@@ -15,6 +15,7 @@
 #include "app/gui/surface.hpp"
 #include "core/analysis/uncertainty.hpp"
 #include "core/model/settings.hpp"
+#include "core/model/text_format.hpp"
 
 namespace foldlab::gui {
 namespace {
@@ -174,8 +175,7 @@ std::optional<std::string> picture_size_problem(FrameSize size) {
   }
   if (std::int64_t{size.width} * size.height > kMaxPicturePixels) {
     return std::to_string(size.width) + "x" + std::to_string(size.height) +
-           " is more than a picture's " + std::to_string(kMaxPicturePixels / 1000000) +
-           " megapixels (8192x4096)";
+           " is more pixels than a picture may have: 8192x4096 (33.5 megapixels)";
   }
   return std::nullopt;
 }
@@ -183,7 +183,7 @@ std::optional<std::string> picture_size_problem(FrameSize size) {
 std::optional<FrameSize> parse_picture_size(std::string_view text, std::string& problem) {
   const std::optional<FrameSize> size = parse_frame_size(text);
   if (!size) {
-    problem = std::string(text) + " must be " + frame_size_rule();
+    problem = detail::cut(std::string(text)) + " must be " + frame_size_rule();
     return std::nullopt;
   }
   if (std::optional<std::string> why = picture_size_problem(*size)) {

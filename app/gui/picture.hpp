@@ -36,7 +36,8 @@ inline constexpr const char* kPictureViewNames = "cloth, fold_plot";
 inline constexpr const char* kPictureBackgroundNames = "white, transparent, dark";
 
 // A picture's sides are those of a window (kMinFrameSize..kMaxFrameSize) and its pixels at most
-// this many: 8192 x 4096, 128 MB of RGBA, drawn twice over (the cloth's and the picture's).
+// this many: 8192 x 4096 (33.5 megapixels), 128 MB of RGBA, drawn twice over (the cloth's
+// framebuffer and the picture's).
 inline constexpr std::int64_t kMaxPicturePixels = std::int64_t{8192} * 4096;
 // Why `size` cannot be a picture's (nullopt when it can).
 std::optional<std::string> picture_size_problem(FrameSize size);
