@@ -53,6 +53,7 @@ int main(int argc, char** argv) {
 #ifdef FOLDLAB_WITH_GUI
   commands["gui"] = gui::add_gui_command(app);
   commands["render"] = gui::add_render_command(app);
+  commands["picture"] = gui::add_picture_command(app);
 #endif
   app.require_subcommand(0, 1);
   try {

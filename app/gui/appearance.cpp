@@ -22,7 +22,6 @@ const ImWchar kGlyphRanges[] = {
     0,
 };
 
-constexpr float kTtfSizePx = 15.0f;
 constexpr float kDefaultFontSizePx = 13.0f;  // ImGui's built-in ProggyClean
 
 // A slider's handle: narrow, and translucent enough that the value drawn over it stays readable.
@@ -31,6 +30,23 @@ constexpr float kGrabAlpha = 0.45f;
 constexpr float kFrameBorderAlpha = 0.55f;
 
 }  // namespace
+
+bool add_ui_font(ImFontAtlas& atlas, const std::filesystem::path& font_file, float scale) {
+  if (!font_file.empty()) {
+    std::error_code ec;
+    if (std::filesystem::is_regular_file(font_file, ec) &&
+        atlas.AddFontFromFileTTF(font_file.string().c_str(), std::round(kUiFontPx * scale), nullptr,
+                                 kGlyphRanges) != nullptr) {
+      return true;
+    }
+  }
+  // ProggyClean is a bitmap font: whole multiples stay sharp, others are still better than
+  // FontGlobalScale's stretched texture.
+  ImFontConfig config;
+  config.SizePixels = std::round(kDefaultFontSizePx * scale);
+  atlas.AddFontDefault(&config);
+  return false;
+}
 
 ImGuiStyle theme_style(bool light_theme) {
   ImGuiStyle style;
@@ -139,25 +155,10 @@ void Appearance::apply(Renderer& renderer) {
   const float scale = static_cast<float>(scale_percent_) / 100.0f;
   ImGuiIO& io = ImGui::GetIO();
   io.Fonts->Clear();
-  ImFont* font = nullptr;
   notice_.clear();
-  if (!font_file_.empty()) {
-    std::error_code ec;
-    if (std::filesystem::is_regular_file(font_file_, ec)) {
-      font = io.Fonts->AddFontFromFileTTF(font_file_.string().c_str(),
-                                          std::round(kTtfSizePx * scale), nullptr, kGlyphRanges);
-    }
-    if (font == nullptr) {
-      notice_ = "The font " + font_file_.string() +
-                " is missing (Debian package fonts-dejavu-core): Greek letters show as '?'.";
-    }
-  }
-  if (font == nullptr) {
-    // ProggyClean is a bitmap font: whole multiples stay sharp, others are still better than
-    // FontGlobalScale's stretched texture.
-    ImFontConfig config;
-    config.SizePixels = std::round(kDefaultFontSizePx * scale);
-    io.Fonts->AddFontDefault(&config);
+  if (!add_ui_font(*io.Fonts, font_file_, scale) && !font_file_.empty()) {
+    notice_ = "The font " + font_file_.string() +
+              " is missing (Debian package fonts-dejavu-core): Greek letters show as '?'.";
   }
   io.Fonts->Build();
   io.FontGlobalScale = 1.0f;

@@ -23,6 +23,12 @@ ImVec4 blend_over(ImVec4 over, ImVec4 under);
 // The debian fonts-dejavu-core font the window uses.
 inline const std::filesystem::path kDejaVuSans = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
 
+// The UI font's size at 100 %, in pixels.
+inline constexpr float kUiFontPx = 15.0f;
+// Adds the UI font to `atlas` at `scale` times its size at 100 %: `font_file` (a TTF), or ImGui's
+// built-in font when that is empty or cannot be read (then false).
+bool add_ui_font(ImFontAtlas& atlas, const std::filesystem::path& font_file, float scale);
+
 inline constexpr int kMinUiScalePercent = 100;
 inline constexpr int kMaxUiScalePercent = 250;
 inline constexpr int kUiScaleStepPercent = 10;
@@ -118,6 +124,7 @@ class Appearance {
   void apply(Renderer& renderer);
   // Ctrl + / Ctrl - / Ctrl 0 within a frame: requests the new scale.
   void handle_shortcuts();
+  const std::filesystem::path& font_file() const { return font_file_; }
   // Why the TTF was not used (empty when it was, or when none was asked for).
   const std::string& notice() const { return notice_; }
 

@@ -1,5 +1,6 @@
 #include "app/gui/commands.hpp"
 
+#include <filesystem>
 #include <memory>
 #include <string>
 #include <string_view>
@@ -7,6 +8,7 @@
 
 #include "app/gui/gui_app.hpp"
 #include "app/gui/page_link.hpp"
+#include "app/gui/picture.hpp"
 #include "app/gui/surface.hpp"
 #include "core/analysis/sweep.hpp"
 #include "core/io/link.hpp"
@@ -54,7 +56,8 @@ void apply_print_option(GuiCommandOptions& options) {
   }
 }
 
-void add_common_gui_options(CLI::App& command, GuiCommandOptions& options) {
+// The cloth a run shows and how its 3D view looks: the inputs, --view and --print.
+void add_scene_options(CLI::App& command, GuiCommandOptions& options) {
   app::add_input_options(command, options.run.inputs);
   command
       .add_option("--link", options.link,
@@ -62,7 +65,6 @@ void add_common_gui_options(CLI::App& command, GuiCommandOptions& options) {
                   "full address, the fragment or its pieces): the inputs as --set takes them, "
                   "applied before --set, and the view keys present, theme and scale as --view")
       ->type_name("LINK");
-  command.add_option("--size", options.size, "window or picture size WxH (default 1280x800)");
   command
       .add_option(
           "--view", options.run.view_settings,
@@ -81,6 +83,11 @@ void add_common_gui_options(CLI::App& command, GuiCommandOptions& options) {
                   "print_mm (--view print_mm=..., default 60)")
       ->type_name("FILE")
       ->check(app::non_empty_path());
+}
+
+void add_common_gui_options(CLI::App& command, GuiCommandOptions& options) {
+  add_scene_options(command, options);
+  command.add_option("--size", options.size, "window or picture size WxH (default 1280x800)");
   command.add_option("--tab", options.run.analysis_tab, "analysis tab shown at start")
       ->check(CLI::IsMember({"equations", "method", "sweep", "map"}));
 }
@@ -120,6 +127,15 @@ std::vector<app::NamedPath> run_inputs(const GuiCommandOptions& options) {
   return inputs;
 }
 
+// --print and the checks every command that writes files makes: the options in the order given,
+// no output over an input.
+void prepare_run(GuiCommandOptions& options, const std::vector<app::NamedPath>& outputs) {
+  apply_link_option(options);
+  apply_print_option(options);
+  check_distinct_files(outputs, run_inputs(options));
+  options.run.input_files = run_inputs(options);
+}
+
 }  // namespace
 
 app::Command add_gui_command(CLI::App& app) {
@@ -146,11 +162,8 @@ app::Command add_gui_command(CLI::App& app) {
   return [options] {
     return guarded([&] {
       parse_size(options->size, options->run);
-      apply_link_option(*options);
-      apply_print_option(*options);
       check_play_options(options->run);
-      check_distinct_files({{"--screenshot", options->run.screenshot_path}}, run_inputs(*options));
-      options->run.input_files = run_inputs(*options);
+      prepare_run(*options, {{"--screenshot", options->run.screenshot_path}});
       if (!options->run.screenshot_path.empty() && options->run.frames == 0) {
         throw InputError("--screenshot needs --frames N");
       }
@@ -175,11 +188,8 @@ app::Command add_render_command(CLI::App& app) {
   return [options] {
     return guarded([&] {
       parse_size(options->size, options->run);
-      apply_link_option(*options);
-      apply_print_option(*options);
       check_play_options(options->run);
-      check_distinct_files({{"--out", options->run.screenshot_path}}, run_inputs(*options));
-      options->run.input_files = run_inputs(*options);
+      prepare_run(*options, {{"--out", options->run.screenshot_path}});
       if (options->run.screenshot_path.empty() && options->run.play_path.empty()) {
         throw InputError("render needs --out FILE.png (or --play SCRIPT.json)");
       }
@@ -188,6 +198,71 @@ app::Command add_render_command(CLI::App& app) {
         options->run.frames = 3;  // ImGui settles table and child sizes over the first frames
       }
       return run_headless(options->run);
+    });
+  };
+}
+
+app::Command add_picture_command(CLI::App& app) {
+  struct PictureOptions {
+    GuiCommandOptions scene;
+    std::string view;
+    std::string size;
+    std::string out;
+    std::string background = "white";
+    PictureSpec spec;
+  };
+  auto options = std::make_shared<PictureOptions>();
+  CLI::App* command = app.add_subcommand(
+      "picture",
+      "draw the 3D cloth or the fold plot alone, with no interface, at any size, into a PNG "
+      "(no display needed: EGL surfaceless)");
+  command
+      ->add_option("VIEW", options->view,
+                   std::string("what the picture shows: ") + kPictureViewNames)
+      ->required();
+  add_scene_options(*command, options->scene);
+  command
+      ->add_option("--size", options->size,
+                   "the picture's size WxH, " + frame_size_rule() + ", at most 8192x4096 pixels")
+      ->required();
+  command->add_option("--out", options->out, "PNG file to write")
+      ->required()
+      ->check(app::non_empty_path());
+  command->add_option("--background", options->background,
+                      std::string("white (default), transparent (alpha 0 around what is drawn) "
+                                  "or dark"));
+  command->add_flag("--caption", options->spec.caption,
+                    "a strip at the bottom: the fabric, n, Q, z_max and the inputs");
+  command->add_flag("--legend", options->spec.legend, "the fold plot's legend");
+  return [options] {
+    return guarded([&] {
+      PictureSpec& spec = options->spec;
+      const std::optional<PictureView> view = parse_picture_view(options->view);
+      if (!view) {
+        throw InputError("VIEW '" + detail::cut(options->view) + "' must be one of " +
+                         kPictureViewNames);
+      }
+      spec.view = *view;
+      const std::optional<PictureBackground> background =
+          parse_picture_background(options->background);
+      if (!background) {
+        throw InputError("--background " + detail::cut(options->background) + " must be one of " +
+                         kPictureBackgroundNames);
+      }
+      spec.background = *background;
+      std::string problem;
+      const std::optional<FrameSize> size = parse_picture_size(options->size, problem);
+      if (!size) {
+        throw InputError("--size " + problem);
+      }
+      spec.size = *size;
+      std::error_code error;
+      if (std::filesystem::is_directory(options->out, error)) {
+        throw InputError("--out " + detail::cut(options->out) +
+                         " is a folder; name the PNG file to write");
+      }
+      prepare_run(options->scene, {{"--out", options->out}});
+      return run_picture(options->scene.run, options->out, spec);
     });
   };
 }

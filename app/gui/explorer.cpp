@@ -13,6 +13,7 @@
 #include "app/gui/panels/stats_overlay.hpp"
 #include "app/gui/panels/widgets.hpp"
 #include "app/gui/session.hpp"
+#include "app/gui/surface.hpp"
 #include "core/io/link.hpp"
 #include "core/model/settings.hpp"
 #include "core/model/text_format.hpp"
@@ -203,7 +204,10 @@ std::optional<PictureRequest> Explorer::take_screenshot_request() {
   if (!asked) {
     return std::nullopt;
   }
-  PictureRequest request{asked->path, std::nullopt};
+  PictureRequest request{asked->path, std::nullopt, asked->spec};
+  if (asked->spec) {
+    return request;
+  }
   const auto rect_of = [this](std::string_view key) -> std::optional<PanelRect> {
     for (const auto& [name, rect] : panel_rects()) {
       if (name == key) {
@@ -226,6 +230,19 @@ std::optional<PictureRequest> Explorer::take_screenshot_request() {
       break;
   }
   return request;
+}
+
+void Explorer::write_picture(const std::filesystem::path& path, const PictureSpec& spec) {
+  if (picture_view_ == kNoClothView) {
+    picture_view_ = renderer_.create_cloth_view();
+  }
+  // The 3D view's camera once it has framed the cloth; until then, framed as it would be.
+  const PictureSource source{document_, cloth_view_->style(),
+                             cloth_view_->camera_framed()
+                                 ? std::optional<OrbitCamera>(cloth_view_->camera())
+                                 : std::nullopt,
+                             picture_view_, appearance_.font_file()};
+  write_png(path.c_str(), spec.size, draw_picture(renderer_, source, spec));
 }
 
 bool Explorer::busy() const {
@@ -538,6 +555,7 @@ void Explorer::frame() {
   stats_overlay(show_stats_, document_.scene(), renderer_counters());
   draw_unsaved_dialog();
   presets_->draw_dialogs(document_);
+  export_.draw_picture_dialog(document_, files_);
   files_.draw(document_);
   if (photo_->take_saved_preset()) {
     presets_->refresh();  // the fitted preset joins the list

@@ -31,6 +31,7 @@
 #include "app/gui/panels/presets_panel.hpp"
 #include "app/gui/panels/results_panel.hpp"
 #include "app/gui/panels/widgets.hpp"
+#include "app/gui/picture.hpp"
 #include "app/gui/renderer.hpp"
 #include "core/io/preset.hpp"
 
@@ -52,6 +53,8 @@ struct ExplorerOptions {
 struct PictureRequest {
   std::string path;
   std::optional<PanelRect> crop;
+  // A picture drawn apart from the window (picture.hpp) rather than taken from it.
+  std::optional<PictureSpec> spec;
 };
 
 class Explorer {
@@ -130,6 +133,9 @@ class Explorer {
   // A PNG the user asked for in the Export menu, taken by the frame loop after drawing this
   // frame, which shows neither the menu nor the dialog it was asked with.
   std::optional<PictureRequest> take_screenshot_request();
+  // The 3D cloth or the fold plot alone at spec.size, as `foldlab picture` draws it, written as
+  // PNG to `path`. Throws SurfaceError when it cannot be drawn or written.
+  void write_picture(const std::filesystem::path& path, const PictureSpec& spec);
   FileDialog& file_dialog() { return files_; }
   IntroWindow& intro() { return *intro_; }
   // Shows a line in the Presets panel (the outcome of an export done by the frame loop).
@@ -190,8 +196,9 @@ class Explorer {
   Renderer& renderer_;
   Appearance appearance_;
   Document document_;
-  ExportPanel export_;  // the Export menu, in the menu bar
-  FileDialog files_;    // every panel's open and save dialog
+  ExportPanel export_;                     // the Export menu, in the menu bar
+  ClothView picture_view_ = kNoClothView;  // the cloth of pictures (write_picture)
+  FileDialog files_;                       // every panel's open and save dialog
   // The panels, in drawing order; the pointers below point into it, for what the explorer's
   // own interface offers of them.
   std::vector<std::unique_ptr<Panel>> panels_;

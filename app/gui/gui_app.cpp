@@ -322,6 +322,8 @@ class ExplorerRun {
     return true;
   }
 
+  Explorer& explorer() { return *explorer_; }
+
   // After the last frame: the report when asked for, and the exit status.
   int finish() {
     times_.print_report(interactive_ ? "window" : "headless", options_.animate_key, *explorer_);
@@ -449,6 +451,17 @@ int run_headless(const GuiRunOptions& options) {
   SurfaceOptions surface_options{options.width, options.height, false};
   std::unique_ptr<Surface> surface = make_headless_surface(surface_options);
   return run(*surface, options, start, false, std::move(player));
+}
+
+int run_picture(const GuiRunOptions& options, const std::filesystem::path& out,
+                const PictureSpec& spec) {
+  const Preset preset = app::resolve_inputs(options.inputs);
+  // The window is never drawn (the picture has a framebuffer of its own): the smallest one.
+  SurfaceOptions surface_options{kMinFrameSize.width, kMinFrameSize.height, false};
+  std::unique_ptr<Surface> surface = make_headless_surface(surface_options);
+  ExplorerRun run(*surface, options, preset, false, std::nullopt);
+  run.explorer().write_picture(out, spec);
+  return app::kExitOk;
 }
 
 }  // namespace foldlab::gui

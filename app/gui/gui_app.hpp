@@ -2,10 +2,12 @@
 // frame-time measurements), or headless into a PNG.
 #pragma once
 
+#include <filesystem>
 #include <string>
 #include <vector>
 
 #include "app/common/inputs.hpp"
+#include "app/gui/picture.hpp"
 
 namespace foldlab::gui {
 
@@ -29,5 +31,9 @@ struct GuiRunOptions {
 int run_window(const GuiRunOptions& options);
 // No display, no X server: EGL surfaceless into an off-screen framebuffer, then a PNG.
 int run_headless(const GuiRunOptions& options);
+// The same with no window drawn at all: the explorer's picture `spec` (picture.hpp) into `out`,
+// as the Export menu's picture dialog writes it.
+int run_picture(const GuiRunOptions& options, const std::filesystem::path& out,
+                const PictureSpec& spec);
 
 }  // namespace foldlab::gui

@@ -59,6 +59,14 @@ ImTextureID NullRenderer::texture(int image) const {
   return reinterpret_cast<ImTextureID>(static_cast<std::intptr_t>(image + 1));
 }
 
+std::vector<std::uint8_t> NullRenderer::render_picture(FrameSize size, ImVec4,
+                                                       const std::function<void()>& build) {
+  ImGui::NewFrame();
+  build();
+  ImGui::Render();
+  return read_pixels(size);
+}
+
 std::vector<std::uint8_t> NullRenderer::read_pixels(FrameSize size) {
   return std::vector<std::uint8_t>(
       static_cast<std::size_t>(size.width) * static_cast<std::size_t>(size.height) * 4, 0);

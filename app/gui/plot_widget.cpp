@@ -464,6 +464,7 @@ bool Plot::begin(const char* id, ImVec2 size, const PlotAxis& x, const PlotAxis&
   vlines_.clear();
   fit_x_.reset();
   grow_only_ = false;
+  equal_scales_ = false;
   legend_text_.clear();
   backdrop_ = nullptr;
 
@@ -828,8 +829,31 @@ void Plot::drag_pan(Frame& f) const {
   }
 }
 
+void Plot::equalise_scales(Frame& f) const {
+  if (!equal_scales_ || f.x_log || f.y_log) {
+    return;
+  }
+  const double width_px = f.lay.max.x - f.lay.min.x;
+  const double height_px = f.lay.max.y - f.lay.min.y;
+  const double x_scale = width_px / (f.xt1 - f.xt0);
+  const double y_scale = height_px / (f.yt1 - f.yt0);
+  const auto widen = [](double& t0, double& t1, double half) {
+    const double centre = 0.5 * (t0 + t1);
+    t0 = centre - half;
+    t1 = centre + half;
+  };
+  if (x_scale > y_scale) {
+    widen(f.xt0, f.xt1, 0.5 * width_px / y_scale);
+  } else {
+    widen(f.yt0, f.yt1, 0.5 * height_px / x_scale);
+  }
+}
+
 // The ticks, the y tick labels' width and with it the final layout and the maps to the screen.
+// Equal scales are set in the layout before the ticks and again in the final one, whose y labels
+// may be wider.
 void Plot::place_ticks(Frame& f) {
+  equalise_scales(f);
   const float plot_h = f.lay.max.y - f.lay.min.y;
   const float gap = f.font * 0.5f;
   const auto line_height = [&f](const std::string&) { return f.font; };
@@ -856,6 +880,7 @@ void Plot::place_ticks(Frame& f) {
   if (needed > f.label_width || needed < f.label_width - f.font)
     f.label_width = needed;
   f.lay = layout(frame_min_, f.axes_max, f.label_width, f.x_title, f.y_title, f.font);
+  equalise_scales(f);
   const float plot_w = f.lay.max.x - f.lay.min.x;
   const auto text_width = [](const std::string& label) {
     return ImGui::CalcTextSize(label.c_str()).x;

@@ -106,6 +106,10 @@ class Plot {
     backdrop_ = std::move(draw);
   }
 
+  // This frame, one unit of x is as many pixels as one of y (a drawing in mm: mm are mm): the
+  // axis with pixels to spare shows more about its centre. Linear axes only.
+  void equal_scales() { equal_scales_ = true; }
+
   // Fit both axes to the data again, from this frame on (between begin() and end()).
   void request_autoscale() { autoscale_requested_ = true; }
 
@@ -159,6 +163,7 @@ class Plot {
   void wheel_zoom(Frame& f) const;
   void drag_pan(Frame& f) const;
   void place_ticks(Frame& f);
+  void equalise_scales(Frame& f) const;
   void publish_view(const Frame& f);
   void draw_background_and_grid(const Frame& f) const;
   void draw_series(const Frame& f);
@@ -191,6 +196,7 @@ class Plot {
   std::vector<VLine> vlines_;
   std::optional<std::pair<double, double>> fit_x_;
   bool grow_only_ = false;
+  bool equal_scales_ = false;
   std::vector<LegendRow> legend_rows_;  // per legend entry, laid out in end()
   float legend_height_ = 0;
   std::function<void(ImDrawList*, const PlotView&)> backdrop_;

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -49,6 +50,8 @@ struct ClothStyle {
   Eigen::Vector3f negative_fold_colour{0.84f, 0.15f, 0.16f};
   Eigen::Vector3f background{0.16f, 0.17f, 0.20f};
   Eigen::Vector3f support_colour{0.95f, 0.85f, 0.25f};  // the supports' markers
+  // 0 leaves the picture transparent around the cloth (a picture with a transparent background).
+  float background_alpha = 1.0f;
   // Every field takes part: the 3D view's picture is kept only while its style is unchanged.
   bool operator==(const ClothStyle&) const = default;
 };
@@ -133,6 +136,13 @@ class Renderer {
   virtual void render_draw_data(FrameSize size) = 0;
   // The frame's pixels, top row first, opaque: for screenshots.
   virtual std::vector<std::uint8_t> read_pixels(FrameSize size) = 0;
+
+  // A picture of exactly `size` drawn off-screen, apart from the window and of any size the GL
+  // takes: `build` runs in frames of the current ImGui context, which the caller made for the
+  // picture (display size `size`, no input), and the last is drawn over `clear`. Returns its
+  // pixels, top row first, with their alpha. The window's framebuffer is bound again afterwards.
+  virtual std::vector<std::uint8_t> render_picture(FrameSize size, ImVec4 clear,
+                                                   const std::function<void()>& build) = 0;
 };
 
 // Draws nothing and reads nothing, but pulls the scene's stages and counts uploads by the GL
@@ -156,6 +166,9 @@ class NullRenderer final : public Renderer {
   }
   void render_draw_data(FrameSize) override {}
   std::vector<std::uint8_t> read_pixels(FrameSize size) override;
+  // Builds the picture's frames (what they compute is computed) and returns transparent pixels.
+  std::vector<std::uint8_t> render_picture(FrameSize size, ImVec4 clear,
+                                           const std::function<void()>& build) override;
 
   // How many times update_image sent pixels (the GL renderer would upload each).
   std::uint64_t image_updates() const { return image_updates_; }

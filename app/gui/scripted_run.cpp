@@ -126,6 +126,11 @@ void FrameTimes::print_report(const char* backend, const std::string& animate_ke
 void write_requested_picture(Explorer& explorer, Renderer& renderer, FrameSize size) {
   if (const std::optional<PictureRequest> request = explorer.take_screenshot_request()) {
     try {
+      if (request->spec) {
+        explorer.write_picture(request->path, *request->spec);
+        explorer.notify("Wrote " + std::filesystem::absolute(request->path).string(), false);
+        return;
+      }
       std::vector<std::uint8_t> pixels = renderer.read_pixels(size);
       FrameSize shown = size;
       if (request->crop) {

@@ -22,6 +22,10 @@ EXPORTS = [("OBJ mesh (.obj)...", None), ("glTF mesh (.glb)...", None),
            ("Fold lines (.svg)...", None), ("Fold lines (.csv)...", None),
            ("Window picture (.png)...", None), ("3D view picture (.png)...", "view"),
            ("Fold plot picture (.png)...", "fold-plot")]
+# The "any size" pictures first ask for a size, background and caption in a small dialog, then
+# where (the dialog's defaults: 1920 x 1080, white, no caption).
+ANY_SIZE = [("3D view picture, any size (.png)...", "any-view"),
+            ("Fold plot picture, any size (.png)...", "any-plot")]
 
 
 def click(label, frames=2):
@@ -80,6 +84,10 @@ def script(size):
     for item, name in EXPORTS:
         steps += menu("Export", item)
         steps += [{"type": name}] if name else []
+        steps += [{"key": "enter"}, {"frames": 2}, {"expect": {"modal": None}}]
+    for item, name in ANY_SIZE:
+        steps += menu("Export", item) + [{"expect": {"popup_open": True}}]
+        steps += click("Save as...") + [{"type": name}]
         steps += [{"key": "enter"}, {"frames": 2}, {"expect": {"modal": None}}]
     steps += [{"frames": 2}, {"expect": dict(tiled, modal=None)}]
     # The fabric as a link, on the clipboard (play_copy_link checks its text).

@@ -1,7 +1,8 @@
 # Runs `foldlab render --play SCRIPT` (ARGS: the rest of the command line, ;-separated) and checks
 # its exit status against EXPECTED_EXIT and, when given, that stderr holds each of EXPECTED_TEXT.
 # The run happens in a fresh temporary folder, which is also its config folder (user presets),
-# so that nothing is written into the repository or $HOME; EXPECTED_FILES must appear in it.
+# so that nothing is written into the repository or $HOME; EXPECTED_FILES must appear in it, and
+# each NAME:WxH of EXPECTED_PNG_SIZES must be a PNG of that size (read from its IHDR header).
 string(RANDOM LENGTH 12 suffix)
 if(DEFINED ENV{TMPDIR})
   set(temp_root $ENV{TMPDIR})
@@ -20,6 +21,25 @@ foreach(name IN LISTS EXPECTED_FILES)
     list(APPEND missing ${name})
   endif()
 endforeach()
+set(wrong_sizes "")
+foreach(entry IN LISTS EXPECTED_PNG_SIZES)
+  string(REPLACE ":" ";" parts ${entry})
+  list(GET parts 0 name)
+  list(GET parts 1 wanted)
+  if(NOT EXISTS ${work_dir}/${name})
+    list(APPEND missing ${name})
+    continue()
+  endif()
+  # IHDR: width and height as big-endian 32-bit numbers at bytes 16 and 20.
+  file(READ ${work_dir}/${name} header OFFSET 16 LIMIT 8 HEX)
+  string(SUBSTRING ${header} 0 8 width_hex)
+  string(SUBSTRING ${header} 8 8 height_hex)
+  math(EXPR width "0x${width_hex}")
+  math(EXPR height "0x${height_hex}")
+  if(NOT "${width}x${height}" STREQUAL wanted)
+    list(APPEND wrong_sizes "${name} is ${width}x${height}, not ${wanted}")
+  endif()
+endforeach()
 file(REMOVE_RECURSE ${work_dir})
 if(NOT status EQUAL EXPECTED_EXIT)
   message(FATAL_ERROR "exit status ${status}, expected ${EXPECTED_EXIT}:\n${errors}")
@@ -32,4 +52,7 @@ foreach(text IN LISTS EXPECTED_TEXT)
 endforeach()
 if(missing)
   message(FATAL_ERROR "not written: ${missing}")
+endif()
+if(wrong_sizes)
+  message(FATAL_ERROR "${wrong_sizes}")
 endif()

@@ -664,7 +664,8 @@ unsigned ClothRenderer::render(const ClothBuffers& buffers, const OrbitCamera& c
 
   glBindFramebuffer(GL_FRAMEBUFFER, gl_->framebuffer.get());
   glViewport(0, 0, size.width, size.height);
-  glClearColor(style.background.x(), style.background.y(), style.background.z(), 1.0f);
+  glClearColor(style.background.x(), style.background.y(), style.background.z(),
+               style.background_alpha);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
   glEnable(GL_DEPTH_TEST);
   glDisable(GL_CULL_FACE);

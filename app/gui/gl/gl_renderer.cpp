@@ -3,7 +3,9 @@
 #include "app/gui/gl/gl_api.hpp"
 
 #include <algorithm>
+#include <functional>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "app/gui/gl/cloth_renderer.hpp"
@@ -11,6 +13,7 @@
 #include "app/gui/gl/gl_handles.hpp"
 #include "app/gui/gl/mipmapped_texture.hpp"
 #include "app/gui/renderer.hpp"
+#include "app/gui/surface.hpp"
 #include "backends/imgui_impl_opengl3.h"
 
 namespace foldlab::gui {
@@ -116,6 +119,64 @@ class GlRenderer final : public Renderer {
   }
 
   std::vector<std::uint8_t> read_pixels(FrameSize size) override {
+    std::vector<std::uint8_t> pixels = read_framebuffer(size);
+    // The picture is opaque whatever ImGui's blending left in the alpha channel.
+    for (std::size_t i = 3; i < pixels.size(); i += 4) {
+      pixels[i] = 255;
+    }
+    return pixels;
+  }
+
+  std::vector<std::uint8_t> render_picture(FrameSize size, ImVec4 clear,
+                                           const std::function<void()>& build) override {
+    GLint window_framebuffer = 0;
+    glGetIntegerv(GL_FRAMEBUFFER_BINDING, &window_framebuffer);
+    // The backend's objects belong to the picture's context; made and released with it.
+    struct Backend {
+      Backend() { ImGui_ImplOpenGL3_Init(gl::kImGuiGlslVersion); }
+      ~Backend() { ImGui_ImplOpenGL3_Shutdown(); }
+      Backend(const Backend&) = delete;
+      Backend& operator=(const Backend&) = delete;
+    } backend;
+    // Two frames: ImGui sizes some items from the frame before.
+    for (int frame = 0; frame < 2; ++frame) {
+      ImGui_ImplOpenGL3_NewFrame();
+      begin_fast_fill_frame();
+      ImGui::NewFrame();
+      build();
+      ImGui::Render();
+    }
+    const GlFramebuffer framebuffer = GlFramebuffer::make();
+    const GlRenderbuffer colour = GlRenderbuffer::make();
+    const GlRenderbuffer depth = GlRenderbuffer::make();
+    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer.get());
+    glBindRenderbuffer(GL_RENDERBUFFER, colour.get());
+    glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, size.width, size.height);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, colour.get());
+    glBindRenderbuffer(GL_RENDERBUFFER, depth.get());
+    glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH24_STENCIL8, size.width, size.height);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER,
+                              depth.get());
+    std::vector<std::uint8_t> pixels;
+    if (glCheckFramebufferStatus(GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE) {
+      glViewport(0, 0, size.width, size.height);
+      glDisable(GL_SCISSOR_TEST);
+      glClearColor(clear.x, clear.y, clear.z, clear.w);
+      glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+      ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+      pixels = read_framebuffer(size);
+    }
+    glBindFramebuffer(GL_FRAMEBUFFER, static_cast<GLuint>(window_framebuffer));
+    if (pixels.empty()) {
+      throw SurfaceError("the GL cannot draw a " + std::to_string(size.width) + "x" +
+                         std::to_string(size.height) + " picture");
+    }
+    return pixels;
+  }
+
+ private:
+  // The bound framebuffer's pixels, top row first, as drawn (alpha included).
+  static std::vector<std::uint8_t> read_framebuffer(FrameSize size) {
     const auto row_bytes = static_cast<std::size_t>(size.width) * 4;
     std::vector<std::uint8_t> pixels(row_bytes * static_cast<std::size_t>(size.height));
     glFinish();
@@ -127,14 +188,9 @@ class GlRenderer final : public Renderer {
       std::copy_n(pixels.begin() + static_cast<std::ptrdiff_t>(row_bytes * (size.height - 1 - y)),
                   row_bytes, top_down.begin() + static_cast<std::ptrdiff_t>(row_bytes * y));
     }
-    // The picture is opaque whatever ImGui's blending left in the alpha channel.
-    for (std::size_t i = 3; i < top_down.size(); i += 4) {
-      top_down[i] = 255;
-    }
     return top_down;
   }
 
- private:
   struct View {
     std::unique_ptr<ClothRenderer> cloth;
     ClothViewCache cache;

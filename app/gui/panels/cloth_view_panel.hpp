@@ -32,6 +32,8 @@ class ClothViewPanel : public Panel {
   static constexpr const char* kBrowseLabel = "browse...";
   ClothStyle& style() { return style_; }
   const OrbitCamera& camera() const { return camera_; }
+  // False until the view first framed the cloth (it has not been drawn yet).
+  bool camera_framed() const { return camera_framed_; }
   // The renderer's views of A's cloth (the one being edited) and of B's (pinned beside it);
   // kNoClothView until first drawn.
   ClothView a_view() const { return views_[0]; }

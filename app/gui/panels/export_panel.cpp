@@ -1,10 +1,13 @@
 #include "app/gui/panels/export_panel.hpp"
 
 #include <filesystem>
+#include <iterator>
+#include <string>
 #include <utility>
 
 #include <imgui.h>
 
+#include "app/gui/appearance.hpp"
 #include "app/gui/panels/widgets.hpp"
 #include "core/io/export.hpp"
 #include "core/io/export_formats.hpp"
@@ -15,6 +18,18 @@ namespace {
 
 // The name the save dialog offers, before the user types another.
 constexpr const char* kStem = "foldlab-export";
+
+constexpr const char* kPictureDialog = "Picture";
+
+// The sizes the picture dialog offers before "custom": a screen, a slide, a print.
+struct PictureSize {
+  const char* label;
+  FrameSize size;
+};
+constexpr PictureSize kPictureSizes[] = {{"1920 x 1080 (full HD)", {1920, 1080}},
+                                         {"3000 x 2000", {3000, 2000}},
+                                         {"A4 at 300 dpi (3508 x 2480)", {3508, 2480}}};
+constexpr int kCustomSize = static_cast<int>(std::size(kPictureSizes));
 
 }  // namespace
 
@@ -67,7 +82,7 @@ void ExportPanel::menu(Document& document, const ClothStyle& style, FileDialog& 
                 std::string(kStem) + ".png",
                 {".png"},
                 [this, what](const std::filesystem::path& path) -> std::optional<std::string> {
-                  picture_ = PictureRequest{path.string(), what};
+                  picture_ = PictureRequest{path.string(), what, std::nullopt};
                   picture_ready_ = false;
                   return std::nullopt;
                 }},
@@ -104,12 +119,89 @@ void ExportPanel::menu(Document& document, const ClothStyle& style, FileDialog& 
   if (ImGui::MenuItem("Fold plot picture (.png)...")) {
     picture("Export fold plot picture", Picture::fold_plot);
   }
+  const auto any_size = [&](const char* label, PictureView view) {
+    if (ImGui::MenuItem(label)) {
+      dialog_spec_.view = view;
+      open_dialog_ = true;
+    }
+  };
+  any_size("3D view picture, any size (.png)...", PictureView::cloth);
+  any_size("Fold plot picture, any size (.png)...", PictureView::fold_plot);
   if (ImGui::MenuItem("Sweep picture (.png)...", nullptr, false, sweep_shown)) {
     picture("Export sweep picture", Picture::sweep);
   }
   if (!sweep_shown && ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) {
     ImGui::SetTooltip("Open Analysis > Sweep to take its plots.");
   }
+}
+
+void ExportPanel::draw_picture_dialog(Document& document, FileDialog& files) {
+  if (open_dialog_) {
+    ImGui::OpenPopup(kPictureDialog);
+    open_dialog_ = false;
+  }
+  ImGui::SetNextWindowPos(ImGui::GetMainViewport()->GetCenter(), ImGuiCond_Appearing,
+                          ImVec2(0.5f, 0.5f));
+  if (!ImGui::BeginPopupModal(kPictureDialog, nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
+    return;
+  }
+  const bool cloth = dialog_spec_.view == PictureView::cloth;
+  ImGui::TextUnformatted(cloth ? "The 3D view's cloth alone, as the view shows it now."
+                               : "The fold plot alone, millimetres alike across and down.");
+  ImGui::TextUnformatted("Size (pixels)");
+  for (int i = 0; i < kCustomSize; ++i) {
+    ImGui::RadioButton(kPictureSizes[i].label, &size_choice_, i);
+  }
+  ImGui::RadioButton("custom", &size_choice_, kCustomSize);
+  if (size_choice_ == kCustomSize) {
+    ImGui::SetNextItemWidth(ems(6.0f));
+    ImGui::InputInt("width", &custom_width_, 0);
+    ImGui::SameLine();
+    ImGui::SetNextItemWidth(ems(6.0f));
+    ImGui::InputInt("height", &custom_height_, 0);
+  }
+  dialog_spec_.size = size_choice_ == kCustomSize ? FrameSize{custom_width_, custom_height_}
+                                                  : kPictureSizes[size_choice_].size;
+  ImGui::TextUnformatted("Background");
+  int background = static_cast<int>(dialog_spec_.background);
+  ImGui::RadioButton("white", &background, static_cast<int>(PictureBackground::white));
+  ImGui::SameLine();
+  ImGui::RadioButton("transparent", &background, static_cast<int>(PictureBackground::transparent));
+  ImGui::SameLine();
+  ImGui::RadioButton("dark", &background, static_cast<int>(PictureBackground::dark));
+  dialog_spec_.background = static_cast<PictureBackground>(background);
+  ImGui::Checkbox("caption (fabric, n, Q, z_max, inputs)", &dialog_spec_.caption);
+  if (!cloth) {
+    ImGui::Checkbox("legend", &dialog_spec_.legend);
+  }
+  const std::optional<std::string> problem = picture_size_problem(dialog_spec_.size);
+  if (problem) {
+    ImGui::PushTextWrapPos(ems(24.0f));
+    ImGui::TextColored(kErrorText, "%s", problem->c_str());
+    ImGui::PopTextWrapPos();
+  }
+  ImGui::BeginDisabled(problem.has_value());
+  const bool save = ImGui::Button("Save as...");
+  ImGui::EndDisabled();
+  ImGui::SameLine();
+  if (ImGui::Button("Cancel")) {
+    ImGui::CloseCurrentPopup();
+  }
+  if (save) {
+    ImGui::CloseCurrentPopup();
+    const PictureSpec spec = dialog_spec_;
+    files.open({FileDialog::Mode::save,
+                cloth ? "Export 3D view picture" : "Export fold plot picture",
+                std::string(kStem) + ".png",
+                {".png"},
+                [this, spec](const std::filesystem::path& path) -> std::optional<std::string> {
+                  picture_ = PictureRequest{path.string(), Picture::window, spec};
+                  picture_ready_ = false;
+                  return std::nullopt;
+                }},
+               document);
+  }
+  ImGui::EndPopup();
 }
 
 }  // namespace foldlab::gui

@@ -1,7 +1,8 @@
 // The Export menu (in the menu bar, so that it is one click away at any window size): the mesh as
 // the 3D view shows it now (OBJ, glTF), the fold lines (SVG, CSV), and PNG pictures of the
 // window, the 3D view alone or the fold plot or sweep alone, which the frame loop takes after
-// drawing. Every item asks where with the save dialog.
+// drawing; and the 3D view or the fold plot alone at a size asked for in a small dialog, drawn as
+// `foldlab picture` draws them (picture.hpp). Every item asks where with the save dialog.
 #pragma once
 
 #include <optional>
@@ -9,6 +10,7 @@
 
 #include "app/gui/document.hpp"
 #include "app/gui/panels/file_dialog.hpp"
+#include "app/gui/picture.hpp"
 #include "app/gui/renderer.hpp"
 #include "core/geometry/geometry.hpp"
 
@@ -21,11 +23,17 @@ class ExportPanel {
   struct PictureRequest {
     std::string path;
     Picture picture = Picture::window;
+    // A picture drawn apart from the window at its own size (the picture dialog); none: a part
+    // of the window as drawn.
+    std::optional<PictureSpec> spec;
   };
 
   // The menu's contents, between ImGui::BeginMenu and EndMenu: one item per format, each opening
   // the save dialog. `sweep_shown`: the Sweep tab is on screen, so that its plots can be taken.
   void menu(Document& document, const ClothStyle& style, FileDialog& files, bool sweep_shown);
+  // The picture dialog (size, background, caption) the menu's "... any size" items open; every
+  // frame, outside the menu.
+  void draw_picture_dialog(Document& document, FileDialog& files);
   // At the start of a frame: a picture asked for in an earlier frame may be taken after this one,
   // which draws neither the menu nor the dialog it was asked for in.
   void new_frame() { picture_ready_ = picture_.has_value(); }
@@ -35,6 +43,12 @@ class ExportPanel {
  private:
   std::optional<PictureRequest> picture_;
   bool picture_ready_ = false;
+  // The picture dialog: asked to open, and what it holds (kept for the next picture).
+  bool open_dialog_ = false;
+  PictureSpec dialog_spec_;
+  int size_choice_ = 0;  // kPictureSizes, then custom
+  int custom_width_ = 1920;
+  int custom_height_ = 1080;
 };
 
 // The mesh as the 3D view shows it: with the breeze's offset at this instant when it blows

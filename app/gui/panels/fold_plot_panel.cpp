@@ -23,6 +23,63 @@ constexpr std::size_t kDashGap = 4;
 
 }  // namespace
 
+void FoldLineSeries::lines(Plot& plot, Scene& scene, bool compare, bool legend) {
+  const FoldLines& lines = scene.fold_lines();
+  if (lines_version_ != scene.version(Stage::fold_lines)) {
+    lines_version_ = scene.version(Stage::fold_lines);
+    xs_.assign(lines.lines.size(), {});
+    ys_.assign(lines.lines.size(), {});
+    for (std::size_t k = 0; k < lines.lines.size(); ++k) {
+      for (const Eigen::Vector3d& p : lines.lines[k].points_mm) {
+        xs_[k].push_back(p.x());
+        ys_[k].push_back(p.y());
+      }
+    }
+  }
+  const FoldColours colours = fold_colours(style_is_light());
+  const ImU32 positive_colour = ImGui::ColorConvertFloat4ToU32(colours.positive);
+  const ImU32 negative_colour = ImGui::ColorConvertFloat4ToU32(colours.negative);
+  // With B pinned the legend tells A's lines from B's in a few words (the fabrics' names are
+  // over the 3D view and in Results, too long for a legend).
+  const char* positive = !legend ? nullptr : compare ? "A positive fold" : "positive fold";
+  const char* negative = !legend ? nullptr : compare ? "A negative fold" : "negative fold";
+  // A whole-pixel width lets ImGui draw each line from its baked anti-aliased line texture: two
+  // vertices a point instead of four, which is a third of a dragged frame's plot on llvmpipe.
+  for (std::size_t k = 0; k < lines.lines.size(); ++k) {
+    const bool is_negative = lines.lines[k].sign < 0;
+    plot.line(is_negative ? negative : positive, xs_[k], ys_[k],
+              is_negative ? negative_colour : positive_colour, 2.0f);
+  }
+}
+
+void FoldLineSeries::outline_and_supports(Plot& plot, Scene& scene, bool legend) {
+  const Solution& s = scene.solution();
+  if (scene.fold_lines().lines.empty()) {
+    // No folds (no slack, short cloth): show the cloth itself, y = (A + h) cos(pi x / l).
+    if (outline_version_ != scene.version(Stage::solution)) {
+      outline_version_ = scene.version(Stage::solution);
+      outline_xs_.clear();
+      outline_ys_.clear();
+      const double depth = lowest_point_mm(s, scene.parameters().hanging.height_mm);
+      for (int k = 0; k <= 100; ++k) {
+        const double x = s.span_mm * (k / 100.0 - 0.5);
+        outline_xs_.push_back(x);
+        outline_ys_.push_back(depth * std::cos(std::numbers::pi * x / s.span_mm));
+      }
+    }
+    plot.line(legend ? "lower edge of the flat cloth" : nullptr, outline_xs_, outline_ys_,
+              ImGui::GetColorU32(ImGuiCol_TextDisabled), 1.2f);
+  }
+  supports_x_.clear();
+  supports_y_.clear();
+  for (const Eigen::Vector3d& support : support_points(s.span_mm, scene.parameters().shape)) {
+    supports_x_.push_back(support.x());
+    supports_y_.push_back(support.y());
+  }
+  plot.markers(legend ? "supports" : nullptr, supports_x_, supports_y_, kSupportMarker.u32(),
+               MarkerShape::Triangle, 6.0f);
+}
+
 void FoldPlotPanel::dash_compare_lines(Document& document) {
   Comparison& compare = document.compare();
   Scene& scene = compare.scene(document.scene().grid_nx());
@@ -68,23 +125,10 @@ void FoldPlotPanel::draw(PanelContext& context) {
   if (lines.stride > 1) {
     ImGui::TextColored(kDimText, "every %d-th of %d lines drawn", lines.stride, s.n + 1);
   }
-  // The plot keeps pointers into these until end(): rebuild them only when the lines change.
-  if (lines_version_ != scene.version(Stage::fold_lines)) {
-    lines_version_ = scene.version(Stage::fold_lines);
-    xs_.assign(lines.lines.size(), {});
-    ys_.assign(lines.lines.size(), {});
-    for (std::size_t k = 0; k < lines.lines.size(); ++k) {
-      for (const Eigen::Vector3d& p : lines.lines[k].points_mm) {
-        xs_[k].push_back(p.x());
-        ys_[k].push_back(p.y());
-      }
-    }
-  }
   // At a large UI scale in a small window the panel scrolls rather than squash the plot under its
   // own axis labels and legend.
   const float height = std::max(ems(14.0f), ImGui::GetContentRegionAvail().y);
-  if (plot_.begin("fold lines", ImVec2(0.0f, height), PlotAxis{"x (mm)", false, false},
-                  PlotAxis{"y (mm, down)", true, false})) {
+  if (plot_.begin("fold lines", ImVec2(0.0f, height), kFoldPlotX, kFoldPlotY)) {
     if (autoscale_) {
       plot_.request_autoscale();
       autoscale_ = false;
@@ -92,22 +136,8 @@ void FoldPlotPanel::draw(PanelContext& context) {
     if (context.holding_frame) {
       plot_.grow_only();
     }
-    const FoldColours colours = fold_colours(style_is_light());
-    const ImU32 positive_colour = ImGui::ColorConvertFloat4ToU32(colours.positive);
-    const ImU32 negative_colour = ImGui::ColorConvertFloat4ToU32(colours.negative);
-    // With B pinned the legend tells A's lines from B's in a few words (the fabrics' names are
-    // over the 3D view and in Results, too long for a legend); A's lines come first, so that a
-    // hovered series below lines.lines.size() is one of A's.
     const bool compare = document.compare().pinned();
-    const char* a_positive = compare ? "A positive fold" : "positive fold";
-    const char* a_negative = compare ? "A negative fold" : "negative fold";
-    // A whole-pixel width lets ImGui draw each line from its baked anti-aliased line texture: two
-    // vertices a point instead of four, which is a third of a dragged frame's plot on llvmpipe.
-    for (std::size_t k = 0; k < lines.lines.size(); ++k) {
-      const bool negative = lines.lines[k].sign < 0;
-      plot_.line(negative ? a_negative : a_positive, xs_[k], ys_[k],
-                 negative ? negative_colour : positive_colour, 2.0f);
-    }
+    series_.lines(plot_, scene, compare, true);
     compare_lines_drawn_ = 0;
     compare_points_drawn_ = 0;
     if (compare) {
@@ -121,30 +151,7 @@ void FoldPlotPanel::draw(PanelContext& context) {
         compare_points_drawn_ += compare_xs_[k].size();
       }
     }
-    if (lines.lines.empty()) {
-      // No folds (no slack, short cloth): show the cloth itself, y = (A + h) cos(pi x / l).
-      if (outline_version_ != scene.version(Stage::solution)) {
-        outline_version_ = scene.version(Stage::solution);
-        outline_xs_.clear();
-        outline_ys_.clear();
-        const double depth = lowest_point_mm(s, scene.parameters().hanging.height_mm);
-        for (int k = 0; k <= 100; ++k) {
-          const double x = s.span_mm * (k / 100.0 - 0.5);
-          outline_xs_.push_back(x);
-          outline_ys_.push_back(depth * std::cos(std::numbers::pi * x / s.span_mm));
-        }
-      }
-      plot_.line("lower edge of the flat cloth", outline_xs_, outline_ys_,
-                 ImGui::GetColorU32(ImGuiCol_TextDisabled), 1.2f);
-    }
-    std::vector<double> supports_x;
-    std::vector<double> supports_y;
-    for (const Eigen::Vector3d& support : support_points(s.span_mm, scene.parameters().shape)) {
-      supports_x.push_back(support.x());
-      supports_y.push_back(support.y());
-    }
-    plot_.markers("supports", supports_x, supports_y, kSupportMarker.u32(), MarkerShape::Triangle,
-                  6.0f);
+    series_.outline_and_supports(plot_, scene, true);
     photo.plot_items(plot_, document);
     const std::optional<PlotHit> hit = plot_.end();
     photo.handle_click(plot_, document);

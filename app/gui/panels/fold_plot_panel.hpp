@@ -14,6 +14,32 @@
 
 namespace foldlab::gui {
 
+// The fold plot's axes: the paper's figures, y down from the supports.
+inline const PlotAxis kFoldPlotX{"x (mm)", false, false};
+inline const PlotAxis kFoldPlotY{"y (mm, down)", true, false};
+
+// A's fold lines as the plot's series, for the panel and for its picture (picture.hpp). Kept
+// between frames, since the plot keeps pointers into them until end(), and rebuilt only when
+// the lines change.
+class FoldLineSeries {
+ public:
+  // A's fold lines, coloured by sign; with `legend` named "positive fold" and "negative fold"
+  // ("A ..." while B is pinned, `compare`). The series' indices are the lines' indices.
+  void lines(Plot& plot, Scene& scene, bool compare, bool legend);
+  // With no folds (no slack, short cloth) the flat cloth's lower edge, and the supports.
+  void outline_and_supports(Plot& plot, Scene& scene, bool legend);
+
+ private:
+  std::uint64_t lines_version_ = ~std::uint64_t{0};
+  std::vector<std::vector<double>> xs_;
+  std::vector<std::vector<double>> ys_;
+  std::uint64_t outline_version_ = ~std::uint64_t{0};
+  std::vector<double> outline_xs_;
+  std::vector<double> outline_ys_;
+  std::vector<double> supports_x_;
+  std::vector<double> supports_y_;
+};
+
 class FoldPlotPanel : public Panel {
  public:
   const char* name() const override { return "Fold lines (2D)"; }
@@ -34,13 +60,7 @@ class FoldPlotPanel : public Panel {
  private:
   Plot plot_;
   bool autoscale_ = false;
-  // The plot keeps pointers into these until end(): rebuilt only when the lines change.
-  std::uint64_t lines_version_ = ~std::uint64_t{0};
-  std::vector<std::vector<double>> xs_;
-  std::vector<std::vector<double>> ys_;
-  std::uint64_t outline_version_ = ~std::uint64_t{0};
-  std::vector<double> outline_xs_;
-  std::vector<double> outline_ys_;
+  FoldLineSeries series_;
   // B's fold lines, dashed (a gap is a run of NaN points): rebuilt when B or its lines change.
   void dash_compare_lines(Document& document);
   std::uint64_t compare_changes_ = ~std::uint64_t{0};

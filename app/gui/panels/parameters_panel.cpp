@@ -60,18 +60,6 @@ double slider_value(const InputSpec& spec, const InputInterval& range, double fr
   return std::clamp(value, range.lo, range.hi);  // pow and rounding may step past an end
 }
 
-// A value in the unit the slider shows, with the unit: "153 g/m²", "0.25 mm". Large numbers are
-// written out rather than as 1.23e+03.
-std::string shown_text(const InputSpec& spec, double value) {
-  const InputUnit unit = shown_unit(spec);
-  const double in_unit = value / unit.per_unit;
-  std::string text = detail::printf_string(std::string(unit.format).c_str(), in_unit);
-  if (text.find("e+") != std::string::npos) {
-    text = detail::printf_string("%.0f", in_unit);
-  }
-  return unit.symbol.empty() ? text : text + " " + std::string(unit.symbol);
-}
-
 std::string trimmed(const char* text) {
   std::string out(text);
   out.erase(0, out.find_first_not_of(" \t"));
@@ -123,6 +111,16 @@ void law_combo(Document& document, float width) {
 }
 
 }  // namespace
+
+std::string shown_text(const InputSpec& spec, double value) {
+  const InputUnit unit = shown_unit(spec);
+  const double in_unit = value / unit.per_unit;
+  std::string text = detail::printf_string(std::string(unit.format).c_str(), in_unit);
+  if (text.find("e+") != std::string::npos) {
+    text = detail::printf_string("%.0f", in_unit);
+  }
+  return unit.symbol.empty() ? text : text + " " + std::string(unit.symbol);
+}
 
 const std::vector<Assignment>& printed_eq7() {
   // Built once: every frame asks whether it is in use.

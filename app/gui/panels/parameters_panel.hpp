@@ -19,6 +19,10 @@
 
 namespace foldlab::gui {
 
+// A value in the unit the slider shows, with the unit: "153 g/m²", "0.25 mm". Large numbers are
+// written out rather than as 1.23e+03.
+std::string shown_text(const InputSpec& spec, double value);
+
 // Where a parameter slider was drawn in the last frame, for input playback: its frame and where
 // its handle sits (0 at the left end, 1 at the right).
 struct SliderPlace {

@@ -1,0 +1,246 @@
+#include "app/gui/picture.hpp"
+
+#include <algorithm>
+#include <cfloat>
+#include <cmath>
+#include <string>
+
+#include <imgui.h>
+
+#include "app/gui/appearance.hpp"
+#include "app/gui/panels/compare_table.hpp"
+#include "app/gui/panels/fold_plot_panel.hpp"
+#include "app/gui/panels/parameters_panel.hpp"
+#include "app/gui/plot_widget.hpp"
+#include "app/gui/surface.hpp"
+#include "core/analysis/uncertainty.hpp"
+#include "core/model/settings.hpp"
+#include "core/model/text_format.hpp"
+
+namespace foldlab::gui {
+namespace {
+
+// The inputs a caption lists, in the Parameters panel's order.
+constexpr const char* kCaptionInputs[] = {"t", "E", "w", "h", "L", "d"};
+
+// An ImGui context for one picture, current while it lives: display size `size`, no input, its
+// own fonts at the picture's text size and the theme the background asks for. The window's
+// context is current again afterwards.
+class PictureContext {
+ public:
+  PictureContext(FrameSize size, const std::filesystem::path& font_file, bool light_theme)
+      : outer_(ImGui::GetCurrentContext()) {
+    const float scale = picture_text_px(size) / kUiFontPx;
+    add_ui_font(atlas_, font_file, scale);
+    atlas_.Build();
+    context_ = ImGui::CreateContext(&atlas_);
+    ImGui::SetCurrentContext(context_);
+    ImGuiIO& io = ImGui::GetIO();
+    io.IniFilename = nullptr;
+    io.LogFilename = nullptr;
+    io.BackendPlatformName = "foldlab_picture";
+    io.DisplaySize = ImVec2(static_cast<float>(size.width), static_cast<float>(size.height));
+    io.DeltaTime = 1.0f / 60.0f;
+    ImGuiStyle style = theme_style(light_theme);
+    style.ScaleAllSizes(scale);
+    // The plot's data area shows the picture's background.
+    style.Colors[ImGuiCol_FrameBg] = ImVec4(0, 0, 0, 0);
+    ImGui::GetStyle() = style;
+  }
+  ~PictureContext() {
+    ImGui::DestroyContext(context_);
+    ImGui::SetCurrentContext(outer_);
+  }
+  PictureContext(const PictureContext&) = delete;
+  PictureContext& operator=(const PictureContext&) = delete;
+
+ private:
+  ImGuiContext* outer_;
+  ImFontAtlas atlas_;  // outlives the context, which borrows it
+  ImGuiContext* context_ = nullptr;
+};
+
+ImVec4 background_colour(PictureBackground background) {
+  switch (background) {
+    case PictureBackground::white:
+      return ImVec4(1, 1, 1, 1);
+    case PictureBackground::transparent:
+      return ImVec4(0, 0, 0, 0);
+    case PictureBackground::dark:
+      break;
+  }
+  const Eigen::Vector3f& dark = ClothStyle{}.background;
+  return ImVec4(dark.x(), dark.y(), dark.z(), 1.0f);
+}
+
+// The camera as the 3D view first frames the cloth; further back in a picture taller than wide,
+// whose narrower width would cut the cloth.
+OrbitCamera framed_camera(Scene& scene, FrameSize size) {
+  Eigen::Vector3f centre;
+  float radius_mm = 1.0f;
+  cloth_bounds(scene, centre, radius_mm);
+  OrbitCamera camera;
+  camera.frame(centre, radius_mm);
+  const float aspect = static_cast<float>(size.width) / static_cast<float>(size.height);
+  camera.distance_mm /= std::min(aspect, 1.0f);
+  return camera;
+}
+
+// Builds the picture's one window, every frame of it.
+void build_picture(Renderer& renderer, const PictureSource& source, const PictureSpec& spec,
+                   const std::vector<std::string>& caption, Plot& plot, FoldLineSeries& series) {
+  const ImVec2 display = ImGui::GetIO().DisplaySize;
+  const float pad = std::round(0.6f * ImGui::GetFontSize());
+  ImGui::SetNextWindowPos(ImVec2(0, 0));
+  ImGui::SetNextWindowSize(display);
+  ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(0, 0));
+  ImGui::PushStyleVar(ImGuiStyleVar_WindowBorderSize, 0.0f);
+  ImGui::Begin("picture", nullptr,
+               ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoBackground |
+                   ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoInputs);
+  ImGui::PopStyleVar(2);
+  const float wrap = display.x - 2.0f * pad;
+  float caption_height = 0.0f;
+  for (const std::string& line : caption) {
+    caption_height += ImGui::CalcTextSize(line.c_str(), nullptr, false, wrap).y;
+  }
+  if (!caption.empty()) {
+    caption_height +=
+        2.0f * pad + static_cast<float>(caption.size() - 1) * ImGui::GetStyle().ItemSpacing.y;
+  }
+  const FrameSize area{spec.size.width,
+                       std::max(16, spec.size.height - static_cast<int>(caption_height))};
+  Scene& scene = source.document.scene();
+  if (spec.view == PictureView::cloth) {
+    ClothStyle style = source.style;
+    const ImVec4 background = background_colour(spec.background);
+    style.background = Eigen::Vector3f(background.x, background.y, background.z);
+    style.background_alpha = background.w;
+    const OrbitCamera camera = source.camera ? *source.camera : framed_camera(scene, area);
+    renderer.draw_cloth(source.cloth_view, ImGui::GetWindowDrawList(), ImVec2(0, 0),
+                        cloth_buffers(scene, style), camera, area, style);
+  } else {
+    ImGui::SetCursorPos(ImVec2(pad, pad));
+    const ImVec2 size(static_cast<float>(area.width) - 2.0f * pad,
+                      static_cast<float>(area.height) - (caption.empty() ? 2.0f : 1.0f) * pad);
+    if (plot.begin("fold lines", size, kFoldPlotX, kFoldPlotY)) {
+      plot.equal_scales();
+      series.lines(plot, scene, false, spec.legend);
+      series.outline_and_supports(plot, scene, spec.legend);
+      plot.end();
+    }
+  }
+  if (!caption.empty()) {
+    ImGui::SetCursorPosY(static_cast<float>(area.height) + pad);
+    ImGui::PushTextWrapPos(display.x - pad);
+    for (const std::string& line : caption) {
+      ImGui::SetCursorPosX(pad);
+      ImGui::TextUnformatted(line.c_str());
+    }
+    ImGui::PopTextWrapPos();
+  }
+  ImGui::End();
+}
+
+}  // namespace
+
+std::optional<PictureView> parse_picture_view(std::string_view name) {
+  if (name == "cloth") {
+    return PictureView::cloth;
+  }
+  if (name == "fold_plot") {
+    return PictureView::fold_plot;
+  }
+  return std::nullopt;
+}
+
+std::optional<PictureBackground> parse_picture_background(std::string_view name) {
+  if (name == "white") {
+    return PictureBackground::white;
+  }
+  if (name == "transparent") {
+    return PictureBackground::transparent;
+  }
+  if (name == "dark") {
+    return PictureBackground::dark;
+  }
+  return std::nullopt;
+}
+
+std::optional<std::string> picture_size_problem(FrameSize size) {
+  if (size.width < kMinFrameSize.width || size.width > kMaxFrameSize.width ||
+      size.height < kMinFrameSize.height || size.height > kMaxFrameSize.height) {
+    return std::to_string(size.width) + "x" + std::to_string(size.height) + " must be " +
+           frame_size_rule();
+  }
+  if (std::int64_t{size.width} * size.height > kMaxPicturePixels) {
+    return std::to_string(size.width) + "x" + std::to_string(size.height) +
+           " is more pixels than a picture may have: 8192x4096 (33.5 megapixels)";
+  }
+  return std::nullopt;
+}
+
+std::optional<FrameSize> parse_picture_size(std::string_view text, std::string& problem) {
+  const std::optional<FrameSize> size = parse_frame_size(text);
+  if (!size) {
+    problem = detail::cut(std::string(text)) + " must be " + frame_size_rule();
+    return std::nullopt;
+  }
+  if (std::optional<std::string> why = picture_size_problem(*size)) {
+    problem = *why;
+    return std::nullopt;
+  }
+  return size;
+}
+
+float picture_text_px(FrameSize size) {
+  // 47 px at 3000x2000, 25 px at 1920x1080; a wide strip of a picture goes by its height.
+  const float side =
+      std::min(static_cast<float>(size.width), 1.5f * static_cast<float>(size.height));
+  return std::clamp(std::round(side / 64.0f), 15.0f, 200.0f);
+}
+
+std::vector<std::string> picture_caption(Document& document) {
+  Scene& scene = document.scene();
+  const Preset& loaded = document.loaded();
+  const ModelStanding standing = model_standing(scene.parameters(), loaded.calibration);
+  std::vector<std::string> lines;
+  if (!loaded.name.empty()) {
+    lines.push_back(loaded.name);
+  }
+  lines.push_back(headline(quantity_texts(scene.solution(), standing)));
+  std::string inputs;
+  for (const char* key : kCaptionInputs) {
+    const InputSpec* spec = find_input(key);
+    const std::optional<double> value = spec ? spec->value(scene.parameters()) : std::nullopt;
+    if (!value) {
+      continue;
+    }
+    // No-break spaces within an input: a line too long wraps between inputs.
+    std::string item;
+    for (const char c : std::string(input_symbol(*spec)) + " = " + shown_text(*spec, *value)) {
+      item += c == ' ' ? std::string("\u00A0") : std::string(1, c);
+    }
+    inputs += (inputs.empty() ? "" : "     ") + item;
+  }
+  lines.push_back(inputs);
+  return lines;
+}
+
+std::vector<std::uint8_t> draw_picture(Renderer& renderer, const PictureSource& source,
+                                       const PictureSpec& spec) {
+  if (std::optional<std::string> problem = picture_size_problem(spec.size)) {
+    throw SurfaceError("the picture's size " + *problem);
+  }
+  const std::vector<std::string> caption =
+      spec.caption ? picture_caption(source.document) : std::vector<std::string>{};
+  const PictureContext context(spec.size, source.font_file,
+                               spec.background != PictureBackground::dark);
+  Plot plot;
+  FoldLineSeries series;
+  return renderer.render_picture(spec.size, background_colour(spec.background), [&] {
+    build_picture(renderer, source, spec, caption, plot, series);
+  });
+}
+
+}  // namespace foldlab::gui

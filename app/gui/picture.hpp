@@ -1,0 +1,69 @@
+// Pictures for a mood board or a slide: the 3D cloth or the fold plot alone, with no interface,
+// at any size, over white, dark or nothing (alpha 0), optionally with a caption of the fabric,
+// its results and its inputs. `foldlab picture` and the Export menu's picture dialog draw them
+// through this one path, in an ImGui context of the picture's own size (Renderer::render_picture).
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "app/gui/camera.hpp"
+#include "app/gui/document.hpp"
+#include "app/gui/renderer.hpp"
+
+namespace foldlab::gui {
+
+enum class PictureView { cloth, fold_plot };
+enum class PictureBackground { white, transparent, dark };
+
+struct PictureSpec {
+  PictureView view = PictureView::cloth;
+  FrameSize size{1920, 1080};
+  PictureBackground background = PictureBackground::white;
+  bool caption = false;  // a strip at the bottom: the fabric, n, Q, z_max and the inputs
+  bool legend = false;   // the fold plot's legend
+};
+
+// The views and backgrounds by the names the command line takes: "cloth", "fold_plot"; "white",
+// "transparent", "dark". nullopt for any other.
+std::optional<PictureView> parse_picture_view(std::string_view name);
+std::optional<PictureBackground> parse_picture_background(std::string_view name);
+inline constexpr const char* kPictureViewNames = "cloth, fold_plot";
+inline constexpr const char* kPictureBackgroundNames = "white, transparent, dark";
+
+// A picture's sides are those of a window (kMinFrameSize..kMaxFrameSize) and its pixels at most
+// this many: 8192 x 4096 (33.5 megapixels), 128 MB of RGBA, drawn twice over (the cloth's
+// framebuffer and the picture's).
+inline constexpr std::int64_t kMaxPicturePixels = std::int64_t{8192} * 4096;
+// Why `size` cannot be a picture's (nullopt when it can).
+std::optional<std::string> picture_size_problem(FrameSize size);
+// "WxH" as a picture's size; the problem otherwise.
+std::optional<FrameSize> parse_picture_size(std::string_view text, std::string& problem);
+
+// The text of a picture, in pixels: proportional to the picture, so that a caption is read
+// alike at 1920x1080 and 3000x2000, never below the window's own size.
+float picture_text_px(FrameSize size);
+
+// The caption's lines: the fabric's name with n, Q and z_max (with the ranges Results shows),
+// then the inputs in the units the explorer shows them (t mm, E MPa, w g/m², h, L, d mm).
+std::vector<std::string> picture_caption(Document& document);
+
+// What a picture is drawn from: the explorer's document and its 3D view.
+struct PictureSource {
+  Document& document;
+  ClothStyle style;  // the 3D view's; the background is the picture's
+  // The 3D view's camera; nullopt frames the cloth as the 3D view does at first.
+  std::optional<OrbitCamera> camera;
+  ClothView cloth_view = kNoClothView;  // the renderer's view kept for pictures
+  std::filesystem::path font_file;      // empty: ImGui's built-in font
+};
+
+// The picture's pixels, spec.size, top row first, with alpha.
+std::vector<std::uint8_t> draw_picture(Renderer& renderer, const PictureSource& source,
+                                       const PictureSpec& spec);
+
+}  // namespace foldlab::gui
