@@ -455,11 +455,12 @@ int run_headless(const GuiRunOptions& options) {
 
 int run_picture(const GuiRunOptions& options, const std::filesystem::path& out,
                 const PictureSpec& spec) {
-  const Preset preset = app::resolve_inputs(options.inputs);
+  // A picture shows a fabric the model accepts: a refused value, a link's too, is an error.
+  const app::StartInputs start{app::resolve_inputs(options.inputs), std::nullopt};
   // The window is never drawn (the picture has a framebuffer of its own): the smallest one.
   SurfaceOptions surface_options{kMinFrameSize.width, kMinFrameSize.height, false};
   std::unique_ptr<Surface> surface = make_headless_surface(surface_options);
-  ExplorerRun run(*surface, options, preset, false, std::nullopt);
+  ExplorerRun run(*surface, options, start, false, std::nullopt);
   run.explorer().write_picture(out, spec);
   return app::kExitOk;
 }
