@@ -2147,6 +2147,13 @@ TEST_F(ExplorerTest, TheSweepShowsAStiffStretchAsABandNotASpike) {
     EXPECT_EQ(sweep_panel.plot_view(which).x_lo, sweep_panel.plot_view(0).x_lo) << which;
     EXPECT_EQ(sweep_panel.plot_view(which).x_hi, sweep_panel.plot_view(0).x_hi) << which;
   }
+  // And their data areas start at one x: n's short tick labels ("2") left n's area 4 px left of
+  // Q's ("1.25"), so the same value sat 4 px apart, as seen in the window.
+  frame();
+  const PlotView& n_view = sweep_panel.plot_view(0);
+  const PlotView& Q_view = sweep_panel.plot_view(1);
+  EXPECT_EQ(n_view.min.x, Q_view.min.x);
+  EXPECT_EQ(n_view.max.x, Q_view.max.x);
 }
 
 // The paper's Table 1 beside the model: the printed n, Q, z_max of each row and the model's at

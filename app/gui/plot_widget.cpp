@@ -876,9 +876,13 @@ void Plot::place_ticks(Frame& f) {
     format_tick_into(buf, sizeof buf, y_ticks_[i], tick_step(y_ticks_, i));
     needed = std::max(needed, ImGui::CalcTextSize(buf).x);
   }
-  // Hysteresis: a label width that flickers by a digit would make the whole plot jitter.
-  if (needed > f.label_width || needed < f.label_width - f.font)
+  label_width_needed_ = needed;
+  if (min_label_width_ > 0.0f) {
+    f.label_width = std::max(needed, min_label_width_);  // shared with the plots beside it
+  } else if (needed > f.label_width || needed < f.label_width - f.font) {
+    // Hysteresis: a label width that flickers by a digit would make the whole plot jitter.
     f.label_width = needed;
+  }
   f.lay = layout(frame_min_, f.axes_max, f.label_width, f.x_title, f.y_title, f.font);
   equalise_scales(f);
   const float plot_w = f.lay.max.x - f.lay.min.x;

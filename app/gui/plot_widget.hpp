@@ -109,6 +109,10 @@ class Plot {
   // This frame, one unit of x is as many pixels as one of y (a drawing in mm: mm are mm): the
   // axis with pixels to spare shows more about its centre. Linear axes only.
   void equal_scales() { equal_scales_ = true; }
+  // The y tick labels' column at least this wide (px), for plots stacked above one another whose
+  // data areas must start at one x. label_width_needed() is what this plot's labels took last.
+  void min_label_width(float px) { min_label_width_ = px; }
+  float label_width_needed() const { return label_width_needed_; }
 
   // Fit both axes to the data again, from this frame on (between begin() and end()).
   void request_autoscale() { autoscale_requested_ = true; }
@@ -197,6 +201,8 @@ class Plot {
   std::optional<std::pair<double, double>> fit_x_;
   bool grow_only_ = false;
   bool equal_scales_ = false;
+  float min_label_width_ = 0.0f;
+  float label_width_needed_ = 0.0f;
   std::vector<LegendRow> legend_rows_;  // per legend entry, laid out in end()
   float legend_height_ = 0;
   std::function<void(ImDrawList*, const PlotView&)> backdrop_;

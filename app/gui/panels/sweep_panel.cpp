@@ -213,9 +213,13 @@ void SweepPanel::draw(Document& document) {
       {z_plot_, "sweep z", "z_max (mm)", curves_.z_max_mm, overlay_shown_x_, overlay_z_, false,
        b ? &b->z_max_mm : nullptr},
   };
+  // The three data areas start at one x, so that the current value's line is one line down all
+  // three: each plot's tick labels take the widest's room (last frame's).
+  float widest_labels = 0.0f;
   for (const Quantity& q : quantities) {
     // The x title only under the last plot; a legend only when the paper's points are shown.
     const bool last = &q == &quantities[2];
+    q.plot.min_label_width(shared_label_width_);
     if (!q.plot.begin(q.id, ImVec2(0.0f, height),
                       PlotAxis{last ? axis_label(key) : std::string(), false, logarithmic_},
                       PlotAxis{q.label, false, false})) {
@@ -249,8 +253,10 @@ void SweepPanel::draw(Document& document) {
                            kCompareB.u32());
     }
     q.plot.end();
+    widest_labels = std::max(widest_labels, q.plot.label_width_needed());
     draw_bands(q.plot, key, &q == &quantities[0]);
   }
+  shared_label_width_ = widest_labels;
 }
 
 void SweepPanel::draw_bands(const Plot& plot, const std::string& key, bool label) const {

@@ -79,6 +79,7 @@ class SweepPanel {
   std::vector<double> overlay_row_Q_;  // per row of overlay_x_, NaN where the paper prints no Q
   std::vector<double> overlay_shown_x_, overlay_Q_shown_x_;  // as plotted, like shown_x_
   Plot n_plot_, Q_plot_, z_plot_;
+  float shared_label_width_ = 0.0f;  // the widest y tick labels of the three, last frame
 };
 
 }  // namespace foldlab::gui
