@@ -46,13 +46,13 @@ class GlRenderer final : public Renderer {
   void fill_window_background() override { fill_current_window_background(); }
 
   ClothView create_cloth_view() override {
-    views_.emplace_back();
+    views_.push_back(std::make_unique<View>());
     return static_cast<ClothView>(views_.size()) - 1;
   }
 
   void draw_cloth(ClothView id, ImDrawList* draw_list, ImVec2 min, const ClothBuffers& buffers,
                   const OrbitCamera& camera, FrameSize size, const ClothStyle& style) override {
-    View& view = views_.at(static_cast<std::size_t>(id));
+    View& view = *views_.at(static_cast<std::size_t>(id));
     if (!view.cloth) {
       view.cloth = std::make_unique<ClothRenderer>();  // GL objects only once a view is drawn
     }
@@ -71,7 +71,7 @@ class GlRenderer final : public Renderer {
     if (id == kNoClothView) {
       return kNone;
     }
-    const View& view = views_.at(static_cast<std::size_t>(id));
+    const View& view = *views_.at(static_cast<std::size_t>(id));
     RenderCounters& out = view.joined;
     out = view.cloth ? view.cloth->counters() : RenderCounters{};
     out.frames = view.counters.frames;
@@ -197,7 +197,9 @@ class GlRenderer final : public Renderer {
     RenderCounters counters;  // frames, view_renders, view_cache_hits
     mutable RenderCounters joined;
   };
-  std::vector<View> views_;  // by ClothView
+  // By ClothView; each view stays where it was made while more are added: the web build showed
+  // a null function call in draw_cloth right after a second view moved the first one.
+  std::vector<std::unique_ptr<View>> views_;
   bool fonts_changed_ = false;
   std::vector<GlTexture> textures_;
   std::vector<FrameSize> sizes_;
