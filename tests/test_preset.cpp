@@ -298,6 +298,21 @@ TEST_F(PresetTest, TruncatedJsonIsNotValidJson) {
   EXPECT_TRUE(contains(message, "not valid JSON")) << message;
 }
 
+// An empty file and a junk one are named in words, not in the JSON library's own
+// ("[json.exception.parse_error.101] parse error at line 1, column 1: syntax error ...").
+TEST_F(PresetTest, EmptyAndJunkFilesAreNamedInWords) {
+  const fs::path empty = dir_ / "empty.json";
+  write_bytes(empty, " \n");
+  const std::string empty_message = load_error_from(empty);
+  EXPECT_TRUE(contains(empty_message, "is empty")) << empty_message;
+  const fs::path junk = dir_ / "junk.json";
+  write_bytes(junk, "{\"fabric\": ]");
+  const std::string junk_message = load_error_from(junk);
+  EXPECT_TRUE(contains(junk_message, "not valid JSON at line 1, column 12")) << junk_message;
+  EXPECT_FALSE(contains(junk_message, "json.exception")) << junk_message;
+  EXPECT_FALSE(contains(junk_message, "syntax error while parsing")) << junk_message;
+}
+
 // A number literal too large for a double is a malformed file like any other: it must come out as
 // a PresetError naming the file (the CLI turns only PresetError into "invalid input", exit 2).
 TEST_F(PresetTest, NumberTooLargeForADoubleIsAPresetError) {

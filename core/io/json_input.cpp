@@ -82,13 +82,37 @@ json parse_json(std::string_view text, const std::string& origin) {
     }
     return true;
   };
+  if (text.find_first_not_of(" \t\r\n") == std::string::npos) {
+    throw JsonInputError(origin + ": is empty (a JSON object was expected)");
+  }
   try {
     return json::parse(text.begin(), text.end(), check);
   } catch (const JsonInputError&) {
     throw JsonInputError(origin + ": " + *problem);
   } catch (const json::exception& e) {
-    // parse_error, and out_of_range for a number no double holds (e.g. 1e400).
-    throw JsonInputError(origin + ": not valid JSON: " + detail::cut(e.what(), 200));
+    // parse_error, and out_of_range for a number no double holds (e.g. 1e400). The library's
+    // "[json.exception.parse_error.101] parse error at line 1, column 3: syntax error while
+    // parsing value - " says where in the words a person reads; the rest says what.
+    std::string what = e.what();
+    for (const std::string_view noise :
+         {std::string_view("syntax error while parsing value - "),
+          std::string_view("syntax error while parsing object key - "),
+          std::string_view("syntax error while parsing object separator - "),
+          std::string_view("syntax error while parsing object - "),
+          std::string_view("syntax error while parsing array - ")}) {
+      if (const std::size_t at = what.find(noise); at != std::string::npos) {
+        what.erase(at, noise.size());
+      }
+    }
+    if (const std::size_t close = what.find("] ");
+        what.starts_with("[json.") && close != std::string::npos) {
+      what.erase(0, close + 2);
+    }
+    if (what.starts_with("parse error ")) {
+      what.erase(0, std::string_view("parse error ").size());
+    }
+    throw JsonInputError(origin + ": not valid JSON" + (what.starts_with("at ") ? " " : ": ") +
+                         detail::cut(what, 200));
   }
 }
 
