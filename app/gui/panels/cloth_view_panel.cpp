@@ -349,6 +349,12 @@ void ClothViewPanel::name_halves(const Document& document, ImDrawList* draw, ImV
     const bool fits = full_size.y <= 2.0f * ImGui::GetTextLineHeightWithSpacing();
     const float text_height = fits ? full_size.y : ImGui::GetTextLineHeight();
     const float foot = at.y + static_cast<float>(area.height) - text_height - 6.0f;
+    // On a plate of the view's own backdrop: the ground's grid lines run under the names.
+    const ImVec2 text_size = fits ? full_size : ImGui::CalcTextSize(letter);
+    const Eigen::Vector3f& plate = style_.background;
+    draw->AddRectFilled(ImVec2(at.x + 3, foot - 2),
+                        ImVec2(at.x + 9 + text_size.x, foot + text_size.y + 2),
+                        ImGui::GetColorU32(ImVec4(plate.x(), plate.y(), plate.z(), 0.85f)), 3.0f);
     draw->AddText(ImGui::GetFont(), ImGui::GetFontSize(), ImVec2(at.x + 6, foot), colour,
                   fits ? full.c_str() : letter, nullptr, wrap);
   };
