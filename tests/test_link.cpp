@@ -157,7 +157,8 @@ TEST(Link, ARefusedValueIsKeptAndNamedAsSetNamesIt) {
   const std::vector<std::string> problems = messages(linked);
   ASSERT_EQ(problems.size(), 2u);
   EXPECT_EQ(problems, messages(set));
-  EXPECT_NE(problems[0].find("weight per area w = −5.09683995923e8 g/m²"), std::string::npos) << problems[0];
+  EXPECT_NE(problems[0].find("weight per area w = −5.09683995923e8 g/m²"), std::string::npos)
+      << problems[0];
   EXPECT_NE(problems[1].find("support displacement d = 900 mm"), std::string::npos) << problems[1];
   // What cannot be stored at all is named as --set names it.
   Parameters a;
