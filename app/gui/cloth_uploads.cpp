@@ -42,16 +42,17 @@ ClothUploads ClothUploadRule::next(const ClothBufferSources& wanted) {
   return uploads;
 }
 
-ClothBuffers cloth_buffers(Scene& scene, const ClothStyle& style) {
-  ClothBuffers b;
+void update_cloth_buffers(Scene& scene, const ClothStyle& style, ClothBuffers& b) {
   b.normals = &scene.normals();
   b.grid = &scene.grid();
-  if (style.fold_lines) {
-    b.fold_lines = &scene.fold_lines();
-    b.fold_lines_version = scene.version(Stage::fold_lines);
-  }
+  b.fold_lines = style.fold_lines ? &scene.fold_lines() : nullptr;
+  b.fold_lines_version = style.fold_lines ? scene.version(Stage::fold_lines) : 0;
   b.normals_version = scene.version(Stage::normals);
-  b.grid_version = scene.version(Stage::grid);
+  const std::uint64_t grid_version = scene.version(Stage::grid);
+  if (grid_version == b.grid_version && grid_version != 0) {
+    return;  // the numbers below follow the solution and the shape, which re-make the grid
+  }
+  b.grid_version = grid_version;
   const Solution& s = scene.solution();
   const Parameters& p = scene.parameters();
   b.fold_count = s.n;
@@ -63,6 +64,7 @@ ClothBuffers cloth_buffers(Scene& scene, const ClothStyle& style) {
       static_cast<float>(lowest_point_mm(s, p.hanging.height_mm) + 0.05 * p.hanging.height_mm);
   // Wide enough for every span of a strip, with a span's margin beyond the outer supports.
   double widest_mm = 0.0;
+  b.supports_mm.clear();
   for (const Eigen::Vector3d& support : support_points(s.span_mm, p.shape)) {
     widest_mm = std::max(widest_mm, std::abs(support.x()));
     b.supports_mm.push_back(support.cast<float>());
@@ -74,6 +76,11 @@ ClothBuffers cloth_buffers(Scene& scene, const ClothStyle& style) {
   while (b.ground_extent_mm / b.ground_spacing_mm > 50.0f) {
     b.ground_spacing_mm *= 10.0f;  // a long strip: no more than a hundred lines each way
   }
+}
+
+ClothBuffers cloth_buffers(Scene& scene, const ClothStyle& style) {
+  ClothBuffers b;
+  update_cloth_buffers(scene, style, b);
   return b;
 }
 

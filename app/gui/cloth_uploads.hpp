@@ -48,7 +48,9 @@ struct ClothBuffers {
 };
 
 // Brings the stages the view shows up to date (lazily: the fold lines only when the style shows
-// them) and points at them.
+// them) and points at them. `kept`, the buffers made last frame for the same view, keeps the
+// numbers that follow the solution (the ground, the supports, ...) until the grid is made again.
+void update_cloth_buffers(Scene& scene, const ClothStyle& style, ClothBuffers& kept);
 ClothBuffers cloth_buffers(Scene& scene, const ClothStyle& style);
 
 // Model coordinates have y pointing down (gravity); the view's world has +Y up. z may be drawn

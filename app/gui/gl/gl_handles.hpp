@@ -102,4 +102,26 @@ using GlTexture = GlHandle<gl_kind::Texture>;
 using GlFramebuffer = GlHandle<gl_kind::Framebuffer>;
 using GlRenderbuffer = GlHandle<gl_kind::Renderbuffer>;
 
+// A framebuffer drawn into with no window: RGBA8 colour and a depth-stencil buffer, each a
+// renderbuffer. Made bound; `complete` says whether the GL can draw into it at this size.
+struct OffscreenTarget {
+  GlFramebuffer framebuffer;
+  GlRenderbuffer colour;
+  GlRenderbuffer depth;
+  bool complete = false;
+};
+inline OffscreenTarget make_offscreen_target(int width, int height) {
+  OffscreenTarget t{GlFramebuffer::make(), GlRenderbuffer::make(), GlRenderbuffer::make()};
+  glBindFramebuffer(GL_FRAMEBUFFER, t.framebuffer.get());
+  glBindRenderbuffer(GL_RENDERBUFFER, t.colour.get());
+  glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, width, height);
+  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, t.colour.get());
+  glBindRenderbuffer(GL_RENDERBUFFER, t.depth.get());
+  glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH24_STENCIL8, width, height);
+  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER,
+                            t.depth.get());
+  t.complete = glCheckFramebufferStatus(GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE;
+  return t;
+}
+
 }  // namespace foldlab::gui

@@ -146,19 +146,9 @@ class GlRenderer final : public Renderer {
       build();
       ImGui::Render();
     }
-    const GlFramebuffer framebuffer = GlFramebuffer::make();
-    const GlRenderbuffer colour = GlRenderbuffer::make();
-    const GlRenderbuffer depth = GlRenderbuffer::make();
-    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer.get());
-    glBindRenderbuffer(GL_RENDERBUFFER, colour.get());
-    glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, size.width, size.height);
-    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, colour.get());
-    glBindRenderbuffer(GL_RENDERBUFFER, depth.get());
-    glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH24_STENCIL8, size.width, size.height);
-    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER,
-                              depth.get());
+    const OffscreenTarget target = make_offscreen_target(size.width, size.height);
     std::vector<std::uint8_t> pixels;
-    if (glCheckFramebufferStatus(GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE) {
+    if (target.complete) {
       glViewport(0, 0, size.width, size.height);
       glDisable(GL_SCISSOR_TEST);
       glClearColor(clear.x, clear.y, clear.z, clear.w);

@@ -84,18 +84,8 @@ class EglContext {
 class HeadlessSurface final : public Surface {
  public:
   explicit HeadlessSurface(const SurfaceOptions& options) : size_{options.width, options.height} {
-    framebuffer_ = GlFramebuffer::make();
-    colour_ = GlRenderbuffer::make();
-    depth_ = GlRenderbuffer::make();
-    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_.get());
-    glBindRenderbuffer(GL_RENDERBUFFER, colour_.get());
-    glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, size_.width, size_.height);
-    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, colour_.get());
-    glBindRenderbuffer(GL_RENDERBUFFER, depth_.get());
-    glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH24_STENCIL8, size_.width, size_.height);
-    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER,
-                              depth_.get());
-    if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
+    target_ = make_offscreen_target(size_.width, size_.height);
+    if (!target_.complete) {
       throw SurfaceError("the off-screen framebuffer is incomplete");
     }
   }
@@ -115,14 +105,11 @@ class HeadlessSurface final : public Surface {
   FrameSize framebuffer_size() const override { return size_; }
   void resize(FrameSize size) override {
     size_ = size;
-    glBindRenderbuffer(GL_RENDERBUFFER, colour_.get());
-    glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, size_.width, size_.height);
-    glBindRenderbuffer(GL_RENDERBUFFER, depth_.get());
-    glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH24_STENCIL8, size_.width, size_.height);
+    target_ = make_offscreen_target(size_.width, size_.height);
     ImGui::GetIO().DisplaySize =
         ImVec2(static_cast<float>(size_.width), static_cast<float>(size_.height));
   }
-  void bind_framebuffer() override { glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_.get()); }
+  void bind_framebuffer() override { glBindFramebuffer(GL_FRAMEBUFFER, target_.framebuffer.get()); }
   void wait_events(double) override {}
   void present() override {}
   void finish() override { glFinish(); }
@@ -131,8 +118,7 @@ class HeadlessSurface final : public Surface {
   FrameSize size_;
   // The context first: members go in reverse, so the GL objects are deleted while it is current.
   EglContext egl_;
-  GlFramebuffer framebuffer_;
-  GlRenderbuffer colour_, depth_;
+  OffscreenTarget target_;
 };
 
 }  // namespace

@@ -417,8 +417,8 @@ void ClothViewPanel::draw(PanelContext& context) {
     if (views_[which] == kNoClothView) {
       views_[which] = renderer.create_cloth_view();
     }
-    renderer.draw_cloth(views_[which], draw, at, cloth_buffers(cloth, style_), camera_, view_size,
-                        style_);
+    update_cloth_buffers(cloth, style_, buffers_[which]);
+    renderer.draw_cloth(views_[which], draw, at, buffers_[which], camera_, view_size, style_);
   };
   draw_view(0, origin, scene, size);
   const ImVec2 b_origin(origin.x + static_cast<float>(size.width), origin.y);

@@ -66,6 +66,7 @@ class ClothViewPanel : public Panel {
   ClothStyle style_;
   OrbitCamera camera_;
   ClothView views_[2] = {kNoClothView, kNoClothView};  // A, B
+  ClothBuffers buffers_[2];                            // what each view drew last
   bool camera_framed_ = false;
   Eigen::Vector3f framed_centre_ = Eigen::Vector3f::Zero();  // the sphere last framed
   float framed_radius_mm_ = 1.0f;
