@@ -144,6 +144,7 @@ class ExplorerTest : public foldlab::testing::TempDirTest {
   static Preset cotton() { return load_preset(kPresetsDir / "fabric-cotton-jersey.json"); }
   double height_mm() { return explorer_->edited().hanging.height_mm; }
   Document& document() { return explorer_->document(); }
+  UiStatus& status() { return explorer_->status(); }
 
   static void append_utf8(std::string& text, unsigned codepoint) {
     if (codepoint < 0x80) {
@@ -471,7 +472,7 @@ TEST_F(ExplorerTest, TheLinkCarriesTheViewSetUpForARoom) {
   // Copied with the desktop's link: the fragment behind '#', with a notice.
   explorer_->copy_link();
   EXPECT_EQ(std::string(ImGui::GetClipboardText()), "#" + explorer_->link());
-  EXPECT_EQ(explorer_->document().message(), "Link copied.");
+  EXPECT_EQ(explorer_->status().message(), "Link copied.");
 }
 
 TEST_F(ExplorerTest, SwitchingPresetShowsTheNewPreset) {
@@ -637,7 +638,7 @@ TEST_F(ExplorerTest, AnalysisPanelsSweepThePapersInputsByKey) {
   EXPECT_TRUE(only_beside_w_slider(text, "N/mm²")) << text;
 
   open_explorer("map");
-  document().set_expert_mode(true);
+  status().set_expert_mode(true);
   frame();
   text = frame();
   EXPECT_NE(text.find("h (mm)"), std::string::npos) << "the map's x axis\n" << text;
@@ -668,7 +669,7 @@ TEST_F(ExplorerTest, SlidersShowTheInputTablesFormatAndUnit) {
 TEST_F(ExplorerTest, BeginnersSeeTheClothAndExpertsTheModelTooRemembered) {
   const fs::path session = dir_ / "session.json";
   open_explorer("equations", {}, session, true);
-  EXPECT_FALSE(document().expert_mode()) << "a first start is a beginner's";
+  EXPECT_FALSE(status().expert_mode()) << "a first start is a beginner's";
   std::string text = frame();
   for (const char* shown :
        {"t (thickness)", "E (Young's modulus)", "w (weight per area)", "h (height)", "L (width)",
@@ -687,7 +688,7 @@ TEST_F(ExplorerTest, BeginnersSeeTheClothAndExpertsTheModelTooRemembered) {
     EXPECT_NE(text.find(shown), std::string::npos) << shown << "\n" << text;
   }
   open_explorer("equations", {}, session, true);
-  EXPECT_TRUE(document().expert_mode()) << "remembered in the session";
+  EXPECT_TRUE(status().expert_mode()) << "remembered in the session";
 }
 
 // The paper's form of eq. 7 is one click away for a beginner too: p = 1 and K = 26.9 / 0.91.
@@ -734,7 +735,7 @@ TEST_F(ExplorerTest, SaveAsRecordsWhatThePresetWasDerivedFrom) {
   ASSERT_EQ(explorer_->set_input("w", 120 * kNPerMm2PerGramPerM2), std::nullopt);
   frame();
   press('S', true);
-  ASSERT_EQ(document().modal_title(), "Save as");
+  ASSERT_EQ(status().modal_title(), "Save as");
   click("Save");
   const fs::path written = dir_ / "user-presets" / "cotton-jersey-knit-edited.json";
   ASSERT_TRUE(fs::exists(written)) << last_text_;
@@ -805,7 +806,7 @@ TEST_F(ExplorerTest, TypedArithmeticIsAValueAndTypedWordsAreRefusedWithAReason) 
     ASSERT_EQ(type_into("w", typed), 0);
     EXPECT_DOUBLE_EQ(document().edited().fabric.weight_N_per_mm2, 153.0 * 9.81e-9) << typed;
     EXPECT_EQ(document().undo_depth(), steps) << typed;
-    const std::string message = document().message();
+    const std::string message = status().message();
     EXPECT_NE(message.find("\"" + typed + "\" is not a number with a unit (N/mm², g/m², oz/yd²)"),
               std::string::npos)
         << message;
@@ -904,7 +905,7 @@ TEST_F(ExplorerTest, BeginnerSlidersSpanRealFabricsAndTypedValuesGoBeyond) {
   EXPECT_DOUBLE_EQ(document().edited().fabric.weight_N_per_mm2, 5000.0 * g_per_m2);
   EXPECT_TRUE(document().issues().empty());
   EXPECT_EQ(explorer_->parameters_panel().slider_places().at("w").fraction, 1.0);
-  document().set_expert_mode(true);
+  status().set_expert_mode(true);
   frame();
   frame();
   ASSERT_EQ(click_w(1.0), 0);
@@ -923,7 +924,7 @@ TEST_F(ExplorerTest, BeginnerResultsLeaveOutTheSolversDetail) {
        {"residual eq. 8", "iterations", "solve time", "root of eq. 7", "model: "}) {
     EXPECT_EQ(text.find(hidden), std::string::npos) << hidden << "\n" << text;
   }
-  document().set_expert_mode(true);
+  status().set_expert_mode(true);
   frame();
   text = frame();
   for (const char* shown : {"residual eq. 8", "iterations", "root of eq. 7", "model: "}) {
@@ -1055,7 +1056,7 @@ TEST_F(ExplorerTest, SavingAsksWhereAndAPictureIsTakenAfterTheMenuAndDialogClose
   EXPECT_EQ(taken[0].frame_text.find("Window picture"), std::string::npos) << "the menu is shown";
   EXPECT_EQ(taken[0].frame_text.find("Export window picture"), std::string::npos)
       << "the dialog is shown";
-  EXPECT_EQ(document().modal_title(), "");
+  EXPECT_EQ(status().modal_title(), "");
 
   // "~/" is the home folder, and the extension is added: the 3D view alone, cut from the window.
   ASSERT_EQ(export_as("3D view picture (.png)...", "~/view"), 0);
@@ -1077,7 +1078,7 @@ TEST_F(ExplorerTest, SavingAsksWhereAndAPictureIsTakenAfterTheMenuAndDialogClose
   // the user says so.
   { std::ofstream(dir_ / "folds.svg") << "old"; }
   ASSERT_EQ(export_as("Fold lines (.svg)...", "folds"), 0);
-  EXPECT_EQ(document().modal_title(), "Export fold lines as an SVG drawing");
+  EXPECT_EQ(status().modal_title(), "Export fold lines as an SVG drawing");
   EXPECT_EQ(explorer_->file_dialog().folder(), fs::weakly_canonical(dir_));
   EXPECT_NE(last_text_.find("folds.svg is there already: write over it?"), std::string::npos)
       << last_text_;
@@ -1094,7 +1095,7 @@ TEST_F(ExplorerTest, SavingAsksWhereAndAPictureIsTakenAfterTheMenuAndDialogClose
   })) << "an SVG's dialog lists SVG files";
   ASSERT_EQ(
       play(*explorer_, {{"steps", {{{"click", "Replace"}}, {{"frames", 2}}}}}, frame_and_take), 0);
-  EXPECT_EQ(document().modal_title(), "");
+  EXPECT_EQ(status().modal_title(), "");
   EXPECT_NE(read(dir_ / "folds.svg").find("<svg"), std::string::npos);
 
   // Escape cancels: nothing is written.
@@ -1108,7 +1109,7 @@ TEST_F(ExplorerTest, SavingAsksWhereAndAPictureIsTakenAfterTheMenuAndDialogClose
                     {{"frames", 2}}}}},
                  frame_and_take),
             0);
-  EXPECT_EQ(document().modal_title(), "");
+  EXPECT_EQ(status().modal_title(), "");
   EXPECT_FALSE(fs::exists(dir_ / "foldlab-export.csv"));
   EXPECT_EQ(taken.size(), 2u);
 }
@@ -1152,21 +1153,21 @@ TEST_F(ExplorerTest, APhotoIsChosenInTheOpenDialogOrTypedWithTilde) {
       play(*explorer_, {{"steps", {{{"click", "swatch.png"}}, {{"frames", 1}}}}}, [&] { frame(); }),
       0);
   click("Load");  // the dialog's button, drawn after "Load photo..." in the fold plot
-  EXPECT_EQ(document().modal_title(), "");
+  EXPECT_EQ(status().modal_title(), "");
 
   // The fold plot's photo: the dialog opens in the folder last used. ("Load photo...", the
   // only "Load" before the dialog opens: the test's font clips the p of its small button.)
   click("Load");
-  EXPECT_EQ(document().modal_title(), PhotoOverlay::kLoadModal);
+  EXPECT_EQ(status().modal_title(), PhotoOverlay::kLoadModal);
   ASSERT_EQ(type_and_enter("swatch.png"), 0);
-  EXPECT_EQ(document().modal_title(), "");
+  EXPECT_EQ(status().modal_title(), "");
   EXPECT_EQ(fs::path(explorer_->photo().photo_file()),
             fs::weakly_canonical(dir_ / "photos") / "swatch.png");
 
   // Typed with "~/" in the same dialog, from anywhere.
   click("Load");
   ASSERT_EQ(type_and_enter("~/photos/swatch.png"), 0);
-  EXPECT_EQ(document().modal_title(), "");
+  EXPECT_EQ(status().modal_title(), "");
   EXPECT_EQ(fs::path(explorer_->photo().photo_file()), dir_ / "photos" / "swatch.png");
 }
 
@@ -1268,13 +1269,13 @@ TEST_F(ExplorerTest, APresetClickAsksBeforeReplacingUnsavedEditsAndCancelKeepsTh
   ASSERT_EQ(explorer_->set_input("d", 123.0), std::nullopt);
   frame();
   click("Cotton jersey knit");
-  EXPECT_EQ(document().modal_title(), "Unsaved changes");
+  EXPECT_EQ(status().modal_title(), "Unsaved changes");
   EXPECT_NE(last_text_.find("Discard"), std::string::npos) << last_text_;
   EXPECT_EQ(shown().hanging.support_displacement_mm, 123.0) << "nothing replaced yet";
   EXPECT_EQ(shown().hanging.height_mm, 1400.0);
 
   click("Cancel");
-  EXPECT_EQ(document().modal_title(), "");
+  EXPECT_EQ(status().modal_title(), "");
   EXPECT_EQ(shown().hanging.support_displacement_mm, 123.0);
   EXPECT_EQ(document().loaded().name, "Table 1, h = 1400 mm");
   EXPECT_TRUE(document().unsaved());
@@ -1285,9 +1286,9 @@ TEST_F(ExplorerTest, EscapeClosesTheUnsavedEditsDialogAndKeepsTheEdits) {
   ASSERT_EQ(explorer_->set_input("d", 123.0), std::nullopt);
   frame();
   click("Cotton jersey knit");
-  ASSERT_EQ(document().modal_title(), "Unsaved changes");
+  ASSERT_EQ(status().modal_title(), "Unsaved changes");
   press(kEscape);
-  EXPECT_EQ(document().modal_title(), "");
+  EXPECT_EQ(status().modal_title(), "");
   EXPECT_EQ(frame().find("Discard"), std::string::npos) << "the dialog is closed";
   EXPECT_EQ(shown().hanging.support_displacement_mm, 123.0);
   EXPECT_EQ(document().loaded().name, "Table 1, h = 1400 mm");
@@ -1298,13 +1299,13 @@ TEST_F(ExplorerTest, DiscardLoadsThePresetClickedAndWithoutEditsNothingIsAsked) 
   frame();
   click("Cotton jersey knit");
   click("Discard");
-  EXPECT_EQ(document().modal_title(), "");
+  EXPECT_EQ(status().modal_title(), "");
   EXPECT_EQ(document().loaded().name, "Cotton jersey knit");
   EXPECT_TRUE(shown() == cotton().parameters);
   EXPECT_FALSE(document().unsaved());
 
   click("Fig. 4, h = L = 1400 mm");
-  EXPECT_EQ(document().modal_title(), "");
+  EXPECT_EQ(status().modal_title(), "");
   EXPECT_EQ(document().loaded().name, "Fig. 4, h = L = 1400 mm");
 }
 
@@ -1314,12 +1315,12 @@ TEST_F(ExplorerTest, SaveInTheDialogWritesTheEditsThenLoads) {
   frame();
   click("Cotton jersey knit");
   click("Save");
-  EXPECT_EQ(document().modal_title(), "Save as");
+  EXPECT_EQ(status().modal_title(), "Save as");
   click("Save");
   const fs::path written = dir_ / "user-presets" / "table-1-h-1400-mm-edited.json";
   ASSERT_TRUE(fs::exists(written)) << last_text_;
   EXPECT_EQ(load_preset(written).parameters.hanging.support_displacement_mm, 123.0);
-  EXPECT_EQ(document().modal_title(), "");
+  EXPECT_EQ(status().modal_title(), "");
   EXPECT_EQ(document().loaded().name, "Cotton jersey knit");
 }
 
@@ -1328,7 +1329,7 @@ TEST_F(ExplorerTest, ThePapersCaseButtonsAskBeforeReplacingUnsavedEdits) {
   ASSERT_EQ(explorer_->set_input("h", 900.0), std::nullopt);
   frame();
   click("Table 2 (w)");
-  EXPECT_EQ(document().modal_title(), "Unsaved changes");
+  EXPECT_EQ(status().modal_title(), "Unsaved changes");
   EXPECT_EQ(shown().hanging.height_mm, 900.0);
   click("Discard");
   EXPECT_EQ(document().loaded().name, "Table 2, w = 336 g/m²");
@@ -1343,7 +1344,7 @@ TEST_F(ExplorerTest, ClosingTheWindowAsksWhenEditsWouldBeLost) {
   EXPECT_FALSE(explorer_->may_quit());
   frame();
   frame();  // a dialog sizes itself on its first frame and shows from the next
-  EXPECT_EQ(document().modal_title(), "Unsaved changes");
+  EXPECT_EQ(status().modal_title(), "Unsaved changes");
   EXPECT_NE(last_text_.find("Closing the window loses them."), std::string::npos) << last_text_;
   press(kEscape);
   EXPECT_FALSE(explorer_->quit_confirmed());
@@ -1420,29 +1421,29 @@ TEST_F(ExplorerTest, CtrlSSavesAsThenOverTheUsersPreset) {
   ASSERT_EQ(explorer_->set_input("h", 900.0), std::nullopt);
   frame();
   press('S', true);
-  EXPECT_EQ(document().modal_title(), "Save as") << "a shipped preset is never overwritten";
+  EXPECT_EQ(status().modal_title(), "Save as") << "a shipped preset is never overwritten";
   click("Save");
   const fs::path written = dir_ / "user-presets" / "table-1-h-1400-mm-edited.json";
   ASSERT_TRUE(fs::exists(written));
-  EXPECT_EQ(document().message(), "Saved to " + written.string());
+  EXPECT_EQ(status().message(), "Saved to " + written.string());
   EXPECT_NE(frame().find("Saved to"), std::string::npos) << last_text_;
   EXPECT_FALSE(document().unsaved());
 
   // Now the loaded preset is the user's: Ctrl+S writes over it without asking.
   ASSERT_EQ(explorer_->set_input("h", 950.0), std::nullopt);
   press('S', true);
-  EXPECT_EQ(document().modal_title(), "");
+  EXPECT_EQ(status().modal_title(), "");
   EXPECT_EQ(load_preset(written).parameters.hanging.height_mm, 950.0);
   EXPECT_FALSE(document().unsaved());
 }
 
 TEST_F(ExplorerTest, NotSavingIsAWarningNotASuccess) {
   press('S', true);
-  ASSERT_EQ(document().modal_title(), "Save as");
+  ASSERT_EQ(status().modal_title(), "Save as");
   press(kEscape);
-  EXPECT_EQ(document().modal_title(), "");
-  EXPECT_EQ(document().message(), "Not saved.");
-  EXPECT_EQ(document().message_kind(), MessageKind::warning);
+  EXPECT_EQ(status().modal_title(), "");
+  EXPECT_EQ(status().message(), "Not saved.");
+  EXPECT_EQ(status().message_kind(), MessageKind::warning);
   EXPECT_FALSE(fs::exists(dir_ / "user-presets"));
 }
 
@@ -1458,7 +1459,7 @@ TEST_F(ExplorerTest, StatusMessagesExpire) {
 
 // A refused value's reason once appeared under its slider and pushed every slider below it down.
 TEST_F(ExplorerTest, ARefusedValueMovesNoSliderAndMarksTheViewsStale) {
-  document().set_expert_mode(true);  // K, the last slider
+  status().set_expert_mode(true);  // K, the last slider
   frame();
   const ImVec2 before = position_of("K (");
   EXPECT_EQ(last_text_.find("stale"), std::string::npos);
@@ -1705,8 +1706,8 @@ TEST_F(ExplorerTest, WrappingIntoNoWidthPutsEachCharacterOnALine) {
 TEST_F(ExplorerTest, EveryPanelDrawsAtAnySizeDownToOnePixelAndComesBack) {
   for (const std::string tab : {"equations", "method", "sweep", "map"}) {
     open_explorer(tab);
-    document().set_expert_mode(true);
-    pin_as_b(document());
+    status().set_expert_mode(true);
+    pin_as_b(document(), status());
     std::vector<std::string> presented = {"none"};
     for (const std::unique_ptr<Panel>& panel : explorer_->panels()) {
       if (panel->tile()) {
@@ -1730,7 +1731,7 @@ TEST_F(ExplorerTest, EveryPanelDrawsAtAnySizeDownToOnePixelAndComesBack) {
 }
 
 TEST_F(ExplorerTest, GreekShowsWithDejaVuAndSpeltOutWithTheBuiltInFont) {
-  document().set_expert_mode(true);
+  status().set_expert_mode(true);
   frame();
   std::string text = frame();
   EXPECT_NE(text.find("nu (Poisson's ratio)"), std::string::npos) << text;
@@ -1738,7 +1739,7 @@ TEST_F(ExplorerTest, GreekShowsWithDejaVuAndSpeltOutWithTheBuiltInFont) {
   EXPECT_EQ(readable("ν σ λ π Σ ∫ −"), "nu sigma lambda pi Sum Int -");
 
   open_explorer("map", kDejaVuSans);
-  document().set_expert_mode(true);
+  status().set_expert_mode(true);
   frame();
   text = frame();
   // (Spaces in DejaVu's proportional text are not told from narrow gaps: compared without.)
@@ -1883,7 +1884,7 @@ TEST_F(ExplorerTest, ASessionWithOneBadValueKeepsTheRestAndTheFileAsItWas) {
   open_explorer("equations", {}, session);
   ASSERT_EQ(explorer_->set_view("wireframe", "1"), std::nullopt);
   ASSERT_EQ(explorer_->set_input("h", 1500.0), std::nullopt);
-  pin_as_b(document());
+  pin_as_b(document(), status());
   explorer_->save_session_now();
   explorer_.reset();
   nlohmann::json j = nlohmann::json::parse(foldlab::testing::read_file(session));
@@ -2832,12 +2833,12 @@ TEST_F(ExplorerTest, APhotoOfKnownFoldsClickedGivesItsNAndQAndFeedsAFit) {
 
   frame();
   click("Load");  // "Load photo...", the only "Load" before the dialog opens
-  EXPECT_EQ(document().modal_title(), PhotoOverlay::kLoadModal);
+  EXPECT_EQ(status().modal_title(), PhotoOverlay::kLoadModal);
   ImGui::GetIO().AddInputCharactersUTF8(png.string().c_str());
   frame();
   frame();
   click("Load");
-  EXPECT_EQ(document().modal_title(), "");
+  EXPECT_EQ(status().modal_title(), "");
   nlohmann::json report = explorer_->photo().report();
   ASSERT_TRUE(report.at("photo").is_object()) << last_text_;
   EXPECT_EQ(report.at("photo").at("width_px"), photo.width_px);
@@ -2942,11 +2943,11 @@ TEST_F(ExplorerTest, APhotoThatCannotBeReadIsRefusedWithItsReason) {
   frame();
   frame();
   click("Load");
-  EXPECT_EQ(document().modal_title(), PhotoOverlay::kLoadModal);  // stays open to correct it
+  EXPECT_EQ(status().modal_title(), PhotoOverlay::kLoadModal);  // stays open to correct it
   EXPECT_NE(squeezed(last_text_).find("notaPNGorJPEGfile"), std::string::npos) << last_text_;
   EXPECT_TRUE(explorer_->photo().report().at("photo").is_null());
   press(kEscape);
-  EXPECT_EQ(document().modal_title(), "");
+  EXPECT_EQ(status().modal_title(), "");
 }
 
 }  // namespace

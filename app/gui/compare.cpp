@@ -56,18 +56,18 @@ PinnedFabric fabric_a(const Document& document) {
 
 }  // namespace
 
-void pin_as_b(Document& document) {
+void pin_as_b(Document& document, UiStatus& status) {
   PinnedFabric b = fabric_a(document);
   const std::string label = b.fabric.name;
   document.end_step();  // a drag still open is a step of its own
   document.compare().pin(std::move(b));
   document.end_step();
-  document.mark_session_dirty();
-  document.notify("Pinned \"" + label + "\" as B; A keeps changing with the sliders.",
-                  MessageKind::info);
+  status.mark_session_dirty();
+  status.notify("Pinned \"" + label + "\" as B; A keeps changing with the sliders.",
+                MessageKind::info);
 }
 
-void swap_a_and_b(Document& document) {
+void swap_a_and_b(Document& document, UiStatus& status) {
   if (!document.compare().pinned()) {
     return;
   }
@@ -79,24 +79,24 @@ void swap_a_and_b(Document& document) {
   if (const std::optional<std::string> problem =
           document.take_fabric(former_b.origin, former_b.origin_path, former_b.fabric.parameters)) {
     document.compare().pin(former_b);
-    document.notify("Not swapped: " + *problem, MessageKind::error);
+    status.notify("Not swapped: " + *problem, MessageKind::error);
     return;
   }
-  document.mark_session_dirty();
-  document.notify(
+  status.mark_session_dirty();
+  status.notify(
       "Swapped: A is \"" + fabric_label(document) + "\", B is \"" + former_a.fabric.name + "\".",
       MessageKind::info);
 }
 
-void clear_b(Document& document) {
+void clear_b(Document& document, UiStatus& status) {
   if (!document.compare().pinned()) {
     return;
   }
   document.end_step();
   document.compare().clear();
   document.end_step();
-  document.mark_session_dirty();
-  document.notify("Cleared B (Ctrl+Z brings it back).", MessageKind::info);
+  status.mark_session_dirty();
+  status.notify("Cleared B (Ctrl+Z brings it back).", MessageKind::info);
 }
 
 }  // namespace foldlab::gui

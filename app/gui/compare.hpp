@@ -16,6 +16,7 @@
 namespace foldlab::gui {
 
 class Document;
+class UiStatus;
 
 // A fabric pinned as B: its label and last valid parameters (`fabric`), and the preset it came
 // from with that preset's file (`origin`, `origin_path`, empty for the built-in default) — what
@@ -70,8 +71,8 @@ Preset current_fabric(const Document& document);
 // Pinning replaces an earlier B. Swapping gives A the parameters and the preset of B, and pins A's
 // former state with its preset as B: each fabric keeps its own identity. Each says what it did in
 // the status line.
-void pin_as_b(Document& document);
-void swap_a_and_b(Document& document);
-void clear_b(Document& document);
+void pin_as_b(Document& document, UiStatus& status);
+void swap_a_and_b(Document& document, UiStatus& status);
+void clear_b(Document& document, UiStatus& status);
 
 }  // namespace foldlab::gui

@@ -7,24 +7,6 @@
 #include "core/model/text_format.hpp"
 
 namespace foldlab::gui {
-namespace {
-
-// Long enough to read twice; an error stays until the user has surely seen it.
-double lifetime_s(MessageKind kind) {
-  switch (kind) {
-    case MessageKind::info:
-    case MessageKind::success:
-      return 8.0;
-    case MessageKind::warning:
-      return 15.0;
-    case MessageKind::error:
-      return 60.0;
-  }
-  return 8.0;
-}
-
-}  // namespace
-
 Edit Edit::input(std::string key, double value) {
   return inputs({{std::move(key), value}});
 }
@@ -55,11 +37,12 @@ Edit Edit::replace(Parameters parameters) {
   return e;
 }
 
-Document::Document(const Preset& initial, std::string initial_path)
+Document::Document(const Preset& initial, std::string initial_path, UiStatus& status)
     : loaded_(initial),
       loaded_path_(std::move(initial_path)),
       edited_(initial.parameters),
-      scene_(initial.parameters) {
+      scene_(initial.parameters),
+      status_(status) {
   commit();
   step_base_ = snapshot();
 }
@@ -68,7 +51,7 @@ void Document::commit() {
   issues_ = validate(edited_);
   if (issues_.empty() && !(edited_ == scene_.parameters())) {
     scene_.set_parameters(edited_);
-    session_dirty_ = true;
+    status_.mark_session_dirty();
   }
 }
 
@@ -106,17 +89,18 @@ void Document::load_preset_file(const std::filesystem::path& path) {
     loaded_path_ = path.string();
     ++loads_;
     apply(Edit::replace(preset.parameters));
-    notify("Loaded " + preset.name + ".", MessageKind::success);
-    session_dirty_ = true;
+    status_.notify("Loaded " + preset.name + ".", MessageKind::success);
+    status_.mark_session_dirty();
   } catch (const PresetError& e) {
-    notify(std::string("Not loaded; the current state is kept.\n") + e.what(), MessageKind::error);
+    status_.notify(std::string("Not loaded; the current state is kept.\n") + e.what(),
+                   MessageKind::error);
   }
 }
 
 void Document::adopt(const Preset& loaded, std::string path) {
   loaded_ = loaded;
   loaded_path_ = std::move(path);
-  session_dirty_ = true;
+  status_.mark_session_dirty();
   // Saving is no edit to undo: the history goes on from the state as saved.
   step_base_.loaded = loaded_;
   step_base_.loaded_path = loaded_path_;
@@ -188,7 +172,7 @@ void Document::restore(const Snapshot& s) {
     }
   }
   step_base_ = s;
-  session_dirty_ = true;
+  status_.mark_session_dirty();
 }
 
 void Document::end_step() {
@@ -221,7 +205,7 @@ bool Document::step_through_history(std::vector<Snapshot>& from, std::vector<Sna
   Snapshot back = std::move(from.back());
   from.pop_back();
   restore(back);
-  notify(message, MessageKind::info);
+  status_.notify(message, MessageKind::info);
   return true;
 }
 
@@ -239,16 +223,16 @@ void Document::replace_edits(std::string what, std::function<void(Document&)> re
   }
   pending_what_ = std::move(what);
   pending_replace_ = std::move(replace);
-  modal_title_ = kUnsavedModal;
+  status_.set_modal(UiStatus::kUnsavedModal);
 }
 
 void Document::discard_and_replace() {
-  modal_title_.clear();
+  status_.set_modal("");
   continue_replace();
 }
 
 void Document::cancel_replace() {
-  modal_title_.clear();
+  status_.set_modal("");
   pending_what_.clear();
   pending_replace_ = nullptr;
 }
@@ -259,27 +243,6 @@ void Document::continue_replace() {
   pending_what_.clear();
   if (replace) {
     replace(*this);
-  }
-}
-
-void Document::notify(std::string message, MessageKind kind) {
-  message_ = std::move(message);
-  message_kind_ = kind;
-  message_time_s_ = now_s_;
-}
-
-const std::string& Document::message() const {
-  static const std::string none;
-  return now_s_ - message_time_s_ > lifetime_s(message_kind_) ? none : message_;
-}
-
-void Document::tick(double now_s) {
-  now_s_ = now_s;
-}
-
-void Document::add_notice(const std::string& notice) {
-  if (std::find(notices_.begin(), notices_.end(), notice) == notices_.end()) {
-    notices_.push_back(notice);
   }
 }
 

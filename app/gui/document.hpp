@@ -1,9 +1,11 @@
-// What the explorer's panels share, one copy of each: the preset as loaded, the parameters being
-// edited (possibly invalid) with their validation, the scene that always holds the last valid
-// parameters, the undo history, the question asked before unsaved edits are replaced, and the
-// status line. The parameters change only through apply(Edit) (and the preset loads, undo and
-// redo built on it), so that a slider, a map click, a preset load and a scripted run all take the
-// same path to the scene: one validation, one commit, one piece of undo bookkeeping.
+// The fabric the explorer's panels share, one copy of each: the preset as loaded, the parameters
+// being edited (possibly invalid) with their validation, the scene that always holds the last
+// valid parameters, the fabric pinned as B, the undo history and the question asked before
+// unsaved edits are replaced. What the explorer says and remembers about itself (status line,
+// dialogs, session flag, expert mode) is the UiStatus beside it, which the document reports to. The
+// parameters change only through apply(Edit) (and the preset loads, undo and redo built on it), so
+// that a slider, a map click, a preset load and a scripted run all take the same path to the scene:
+// one validation, one commit, one piece of undo bookkeeping.
 #pragma once
 
 #include <cstdint>
@@ -16,15 +18,13 @@
 #include <vector>
 
 #include "app/gui/compare.hpp"
+#include "app/gui/ui_status.hpp"
 #include "core/geometry/scene.hpp"
 #include "core/io/preset.hpp"
 #include "core/model/parameters.hpp"
 #include "core/model/settings.hpp"
 
 namespace foldlab::gui {
-
-// How a status message reads: its colour, and how long it stays.
-enum class MessageKind { info, success, warning, error };
 
 // One change to the parameters, as a value: what Document::apply takes.
 struct Edit {
@@ -56,7 +56,9 @@ struct Edit {
 
 class Document {
  public:
-  Document(const Preset& initial, std::string initial_path);
+  // `status` hears of loads, undo and redo and of every change the session keeps; it must
+  // outlive the document.
+  Document(const Preset& initial, std::string initial_path, UiStatus& status);
 
   const Preset& loaded() const { return loaded_; }
   const std::string& loaded_path() const { return loaded_path_; }
@@ -69,7 +71,9 @@ class Document {
   const Scene& scene() const { return scene_; }
   // Vertices per side of the 3D cloth mesh, a view setting remembered in the session (no re-solve).
   void set_grid_resolution(int per_side) {
-    session_dirty_ = session_dirty_ || per_side != scene_.grid_nx();
+    if (per_side != scene_.grid_nx()) {
+      status_.mark_session_dirty();
+    }
     scene_.set_grid_resolution(per_side, per_side);
   }
 
@@ -111,7 +115,7 @@ class Document {
   void forget_history();
 
   // Runs `replace` (which replaces the edits, e.g. loads another preset) now when nothing would be
-  // lost, else asks first: the explorer shows the modal until save_and_replace,
+  // lost, else asks first: the explorer shows UiStatus::kUnsavedModal until save_and_replace,
   // discard_and_replace or cancel_replace answers it. `what` is the question's sentence on what
   // would happen to the edits ("Loading X replaces them.").
   void replace_edits(std::string what, std::function<void(Document&)> replace);
@@ -121,41 +125,6 @@ class Document {
   // After the edits were saved: runs the pending replacement, if any.
   void continue_replace();
 
-  // The title of the open modal dialog, empty when none. Dialogs other than the unsaved-edits
-  // question (overwrite, save as) open and close theirs with set_modal.
-  const std::string& modal_title() const { return modal_title_; }
-  void set_modal(std::string title) { modal_title_ = std::move(title); }
-  static constexpr const char* kUnsavedModal = "Unsaved changes";
-
-  // The status line. A message expires after a time that depends on its kind (errors stay
-  // longest), counted from the time given to tick().
-  void notify(std::string message, MessageKind kind);
-  void notify(std::string message, bool is_error) {
-    notify(std::move(message), is_error ? MessageKind::error : MessageKind::success);
-  }
-  // The current message, empty once expired.
-  const std::string& message() const;
-  MessageKind message_kind() const { return message_kind_; }
-  bool message_is_error() const { return message_kind_ == MessageKind::error; }
-  // The frame's clock in seconds (ImGui::GetTime()).
-  void tick(double now_s);
-  // Lines shown in the Presets panel until the explorer closes, and listed by `gui --report`:
-  // config files that were not used, values brought into range. Repeats are kept once.
-  void add_notice(const std::string& notice);
-  const std::vector<std::string>& notices() const { return notices_; }
-
-  // Set by every accepted change and every remembered choice; the explorer saves the session
-  // and then calls session_saved().
-  bool session_dirty() const { return session_dirty_; }
-  void mark_session_dirty() { session_dirty_ = true; }
-  void session_saved() { session_dirty_ = false; }
-  // Whether the panels show the model's settings as well as the cloth; remembered in the session.
-  // A first start shows the cloth alone, for a designer who has not met eq. 7.
-  bool expert_mode() const { return expert_mode_; }
-  void set_expert_mode(bool on) {
-    session_dirty_ = session_dirty_ || on != expert_mode_;
-    expert_mode_ = on;
-  }
   // The fabric pinned as B beside this one (A). Pinning, swapping and clearing are undo steps
   // like an edit of A (app/gui/compare.hpp), so that an undone swap brings back both fabrics.
   Comparison& compare() { return compare_; }
@@ -186,9 +155,8 @@ class Document {
   std::vector<ValidationIssue> issues_;
   Scene scene_;
   std::uint64_t loads_ = 0;
-  bool session_dirty_ = false;
-  bool expert_mode_ = false;
   Comparison compare_;
+  UiStatus& status_;
 
   Snapshot step_base_;  // the state when the open step began
   std::vector<Snapshot> undo_;
@@ -196,13 +164,6 @@ class Document {
 
   std::string pending_what_;
   std::function<void(Document&)> pending_replace_;
-  std::string modal_title_;
-
-  std::string message_;
-  MessageKind message_kind_ = MessageKind::info;
-  double now_s_ = 0.0;
-  double message_time_s_ = 0.0;
-  std::vector<std::string> notices_;
 };
 
 }  // namespace foldlab::gui

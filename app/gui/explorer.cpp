@@ -25,7 +25,7 @@ Explorer::Explorer(const Preset& initial, const std::string& initial_path, bool 
     : options_(std::move(options)),
       renderer_(renderer),
       appearance_(options_.font_file),
-      document_(initial, initial_path),
+      document_(initial, initial_path, status_),
       files_(options_.start_folder.empty() ? std::filesystem::current_path()
                                            : options_.start_folder) {
   // A panel moves by its title bar only: a drag that misses a slider's handle by a few pixels
@@ -33,23 +33,23 @@ Explorer::Explorer(const Preset& initial, const std::string& initial_path, bool 
   // explorer, in the app and in the tests.)
   ImGui::GetIO().ConfigWindowsMoveFromTitleBarOnly = true;
   // The panels, in drawing order: the tiled ones in the layout's order, then the floating windows.
-  parameters_ = add<ParametersPanel>();
-  presets_ = add<PresetsPanel>(options_.presets_dir, options_.user_presets_dir);
-  fold_plot_ = add<FoldPlotPanel>();
-  cloth_view_ = add<ClothViewPanel>();
-  results_ = add<ResultsPanel>();
-  analysis_ = add<AnalysisPanel>(options_.presets_dir, options_.analysis_tab);
-  calibration_ = add<CalibrationPanel>();
-  photo_ = add<PhotoOverlay>(PhotoPaths{options_.measurements_file, options_.user_presets_dir,
-                                        shipped_measurements_file(options_.presets_dir)});
-  intro_ = add<IntroWindow>();
+  add<ParametersPanel>();
+  add<PresetsPanel>(options_.presets_dir, options_.user_presets_dir);
+  add<FoldPlotPanel>();
+  add<ClothViewPanel>();
+  add<ResultsPanel>();
+  add<AnalysisPanel>(options_.presets_dir, options_.analysis_tab);
+  add<CalibrationPanel>();
+  add<PhotoOverlay>(PhotoPaths{options_.measurements_file, options_.user_presets_dir,
+                               shipped_measurements_file(options_.presets_dir)});
+  add<IntroWindow>();
 
   layout_.remember(remembered_);
   for (const std::unique_ptr<Panel>& panel : panels_) {
     panel->remember(remembered_);
   }
-  presets_->set_footer([this] {
-    calibration_->open_button(document_.scene().parameters());
+  panel<PresetsPanel>().set_footer([this] {
+    panel<CalibrationPanel>().open_button(document_.scene().parameters());
     if (!appearance_.notice().empty()) {
       ImGui::PushStyleColor(ImGuiCol_Text, kNoteText);
       wrapped_text("%s", appearance_.notice().c_str());
@@ -77,26 +77,26 @@ Explorer::Explorer(const Preset& initial, const std::string& initial_path, bool 
             {*s->compare, s->compare_origin.value_or(*s->compare), s->compare_origin_path});
       }
       load_settings(s->view);
-      document_.notify("Restored the last session.", MessageKind::info);
+      status_.notify("Restored the last session.", MessageKind::info);
       for (const std::string& notice : s->notices) {
-        document_.add_notice(notice);
+        status_.add_notice(notice);
       }
     } else if (!error.empty()) {
-      document_.add_notice(error);  // present but unusable: say why the defaults are shown
+      status_.add_notice(error);  // present but unusable: say why the defaults are shown
     }
     if (!may_save) {
-      document_.add_notice("The session will not be saved over " + options_.session_file.string() +
-                           ", which is not a session file the explorer can read; move it away to "
-                           "have the session kept.");
+      status_.add_notice("The session will not be saved over " + options_.session_file.string() +
+                         ", which is not a session file the explorer can read; move it away to "
+                         "have the session kept.");
       options_.session_file.clear();  // nothing is saved, and closing asks about unsaved edits
     }
   }
-  for (const std::string& notice : presets_->notices()) {
-    document_.add_notice(notice);
+  for (const std::string& notice : panel<PresetsPanel>().notices()) {
+    status_.add_notice(notice);
   }
   document_.forget_history();  // undo goes back no further than what the window opened with
   remembered_.take_changed();  // what the window opened with is what the session has
-  document_.session_saved();
+  status_.session_saved();
   appearance_.apply(renderer_);
 }
 
@@ -117,7 +117,7 @@ std::optional<std::string> Explorer::set_view(std::string_view key, std::string_
     static const char* const names[] = {"table1", "table2", "fig4"};
     for (int which = 0; which < SweepPanel::kPaperCases; ++which) {
       if (value == names[which]) {
-        analysis_->show_paper_case(which, document_);
+        panel<AnalysisPanel>().show_paper_case(which, document_);
         return std::nullopt;
       }
     }
@@ -172,7 +172,7 @@ std::optional<std::string> Explorer::set_view(std::string_view key, std::string_
     document_.set_grid_resolution(n);
     return std::nullopt;
   }
-  return cloth_view_->set_view(key, value);
+  return panel<ClothViewPanel>().set_view(key, value);
 }
 
 std::string Explorer::link() const {
@@ -196,7 +196,7 @@ std::string Explorer::link() const {
 
 void Explorer::copy_link() {
   page_link_->copy(page_link_->address(link()));
-  document_.notify("Link copied.", MessageKind::success);
+  status_.notify("Link copied.", MessageKind::success);
 }
 
 std::optional<PictureRequest> Explorer::take_screenshot_request() {
@@ -220,13 +220,13 @@ std::optional<PictureRequest> Explorer::take_screenshot_request() {
     case ExportPanel::Picture::window:
       break;
     case ExportPanel::Picture::cloth_view:
-      request.crop = cloth_view_->view_rect();
+      request.crop = panel<ClothViewPanel>().view_rect();
       break;
     case ExportPanel::Picture::fold_plot:
-      request.crop = rect_of(fold_plot_->key());
+      request.crop = rect_of(panel<FoldPlotPanel>().key());
       break;
     case ExportPanel::Picture::sweep:
-      request.crop = rect_of(analysis_->key());
+      request.crop = rect_of(panel<AnalysisPanel>().key());
       break;
   }
   return request;
@@ -237,9 +237,9 @@ void Explorer::write_picture(const std::filesystem::path& path, const PictureSpe
     picture_view_ = renderer_.create_cloth_view();
   }
   // The 3D view's camera once it has framed the cloth; until then, framed as it would be.
-  const PictureSource source{document_, cloth_view_->style(),
-                             cloth_view_->camera_framed()
-                                 ? std::optional<OrbitCamera>(cloth_view_->camera())
+  const PictureSource source{document_, panel<ClothViewPanel>().style(),
+                             panel<ClothViewPanel>().camera_framed()
+                                 ? std::optional<OrbitCamera>(panel<ClothViewPanel>().camera())
                                  : std::nullopt,
                              picture_view_, appearance_.font_file()};
   write_png(path.c_str(), spec.size, draw_picture(renderer_, source, spec));
@@ -254,14 +254,14 @@ void Explorer::save_settings(SessionSettings& settings) const {
   remembered_.save(settings);
   settings.set("ui_scale_percent", appearance_.scale_percent());
   settings.set("light_theme", appearance_.light_theme());
-  settings.set("expert", document_.expert_mode());
+  settings.set("expert", status_.expert_mode());
 }
 
 void Explorer::load_settings(const SessionSettings& settings) {
   appearance_.request(settings.get("ui_scale_percent", appearance_.scale_percent()),
                       settings.get("light_theme", appearance_.light_theme()));
   remembered_.load(settings);
-  document_.set_expert_mode(settings.get("expert", document_.expert_mode()));
+  status_.set_expert_mode(settings.get("expert", status_.expert_mode()));
 }
 
 void Explorer::save_session_now() {
@@ -281,14 +281,14 @@ void Explorer::save_session_now() {
   }
   save_settings(s.view);
   save_session(options_.session_file, s);
-  document_.session_saved();
+  status_.session_saved();
 }
 
 bool Explorer::may_quit() {
   if (quit_confirmed_ || !options_.session_file.empty() || !document_.unsaved()) {
     return true;
   }
-  if (document_.modal_title().empty()) {
+  if (status_.modal_title().empty()) {
     document_.replace_edits("Closing the window loses them.",
                             [this](Document&) { quit_confirmed_ = true; });
   }
@@ -298,13 +298,13 @@ bool Explorer::may_quit() {
 // Keeps the session on disk a second after the last change, so that a crash loses little.
 void Explorer::save_session_when_idle() {
   const double now = ImGui::GetTime();
-  if (document_.session_dirty() && now - last_session_save_time_ > 1.0) {
+  if (status_.session_dirty() && now - last_session_save_time_ > 1.0) {
     last_session_save_time_ = now;
     try {
       save_session_now();
     } catch (const std::exception& e) {
-      document_.notify(std::string("Could not save the session: ") + e.what(), MessageKind::error);
-      document_.session_saved();
+      status_.notify(std::string("Could not save the session: ") + e.what(), MessageKind::error);
+      status_.session_saved();
     }
   }
 }
@@ -314,7 +314,7 @@ void Explorer::handle_shortcuts() {
   const ImGuiIO& io = ImGui::GetIO();
   // A dialog answers its own keys; a widget being dragged or typed into keeps them (a text
   // field has its own Ctrl+Z).
-  if (!document_.modal_title().empty() || ImGui::IsAnyItemActive() || !io.KeyCtrl || io.KeyAlt) {
+  if (!status_.modal_title().empty() || ImGui::IsAnyItemActive() || !io.KeyCtrl || io.KeyAlt) {
     return;
   }
   if (ImGui::IsKeyPressed('Z', false)) {
@@ -326,13 +326,13 @@ void Explorer::handle_shortcuts() {
   } else if (ImGui::IsKeyPressed('Y', false)) {
     document_.redo();
   } else if (ImGui::IsKeyPressed('S', false)) {
-    presets_->save(document_);
+    panel<PresetsPanel>().save(document_, status_);
   }
 }
 
 void Explorer::draw_unsaved_dialog() {
-  const char* title = Document::kUnsavedModal;
-  if (document_.modal_title() != title) {
+  const char* title = UiStatus::kUnsavedModal;
+  if (status_.modal_title() != title) {
     return;
   }
   if (!ImGui::IsPopupOpen(title)) {
@@ -344,8 +344,9 @@ void Explorer::draw_unsaved_dialog() {
     ImGui::TextUnformatted(document_.pending_replacement().c_str());
     if (ImGui::Button("Save")) {
       ImGui::CloseCurrentPopup();
-      document_.set_modal("");
-      presets_->save(document_);  // then loads, unless it asks for a name or fails
+      status_.set_modal("");
+      panel<PresetsPanel>().save(document_,
+                                 status_);  // then loads, unless it asks for a name or fails
     }
     ImGui::SameLine();
     if (ImGui::Button("Discard")) {
@@ -356,7 +357,7 @@ void Explorer::draw_unsaved_dialog() {
     if (ImGui::Button("Cancel") || escape) {
       ImGui::CloseCurrentPopup();
       document_.cancel_replace();
-      document_.notify("Cancelled; your edits are kept.", MessageKind::info);
+      status_.notify("Cancelled; your edits are kept.", MessageKind::info);
     }
     ImGui::EndPopup();
   }
@@ -402,7 +403,7 @@ void Explorer::view_menu() {
     ImGui::EndMenu();
   }
   if (ImGui::MenuItem(IntroWindow::kTitle)) {
-    intro_->open();
+    panel<IntroWindow>().open();
   }
   if (ImGui::MenuItem("Reset layout", nullptr, false,
                       !layout_.automatic() || layout_.splits().any())) {
@@ -415,7 +416,7 @@ void Explorer::view_menu() {
 void Explorer::handle_escape() {
   // A dialog answers Escape itself, and a field being typed in takes it back to its old text.
   if (!ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape), false) ||
-      !document_.modal_title().empty() || ImGui::IsAnyItemActive()) {
+      !status_.modal_title().empty() || ImGui::IsAnyItemActive()) {
     return;
   }
   // A floating window (the introduction) closes itself on Escape while it has the focus.
@@ -436,7 +437,8 @@ void Explorer::handle_escape() {
 float Explorer::presentation_bar() {
   const ImVec2 display = ImGui::GetIO().DisplaySize;
   const ImGuiStyle& style = ImGui::GetStyle();
-  const std::vector<std::pair<std::string, ImVec4>> lines = results_->headlines(document_);
+  const std::vector<std::pair<std::string, ImVec4>> lines =
+      panel<ResultsPanel>().headlines(document_);
   // As large as the width allows, up to two and a half times the text: it is read from the
   // back of a room (a hair short of the width, so that rounding never wraps it). Too long even at
   // the text's size, it wraps.
@@ -485,11 +487,12 @@ float Explorer::main_menu() {
       ImGui::EndMenu();
     }
     if (ImGui::BeginMenu("Compare")) {
-      compare_menu(document_);
+      compare_menu(document_, status_);
       ImGui::EndMenu();
     }
     if (ImGui::BeginMenu("Export")) {
-      export_.menu(document_, cloth_view_->style(), files_, analysis_->sweep_shown());
+      export_.menu(document_, status_, panel<ClothViewPanel>().style(), files_,
+                   panel<AnalysisPanel>().sweep_shown());
       ImGui::Separator();
       if (ImGui::MenuItem("Copy link")) {
         copy_link();
@@ -501,7 +504,7 @@ float Explorer::main_menu() {
       ImGui::EndMenu();
     }
     if (ImGui::MenuItem(IntroWindow::kTitle)) {
-      intro_->open();
+      panel<IntroWindow>().open();
     }
     // One click from the menu bar while the user's own arrangement is shown.
     const bool presenting = layout_.presented().has_value();
@@ -519,14 +522,14 @@ float Explorer::main_menu() {
 
 bool Explorer::awaits_time() const {
   const ImGuiIO& io = ImGui::GetIO();
-  return !document_.message().empty() || document_.session_dirty() || address_.pending() ||
+  return !status_.message().empty() || status_.session_dirty() || address_.pending() ||
          io.WantTextInput || io.WantSaveIniSettings ||
          ImGui::GetCurrentContext()->SettingsDirtyTimer > 0.0f;
 }
 
 void Explorer::frame() {
   export_.new_frame();
-  document_.tick(ImGui::GetTime());
+  status_.tick(ImGui::GetTime());
   const int scale_before = appearance_.scale_percent();
   const bool light_before = appearance_.light_theme();
   appearance_.handle_shortcuts();
@@ -538,7 +541,7 @@ void Explorer::frame() {
     layout_.set_presented_top(presentation_bar());
   }
   PanelContext context{
-      document_, renderer_, *photo_, files_, wake_, panels_, parameters_->animating()};
+      document_, status_, renderer_, files_, wake_, panels_, panel<ParametersPanel>().animating()};
   for (const std::unique_ptr<Panel>& panel : panels_) {
     if (!layout_.shows(*panel)) {
       continue;  // hidden behind the presented one, and not drawn
@@ -554,19 +557,19 @@ void Explorer::frame() {
 
   stats_overlay(show_stats_, document_.scene(), renderer_counters());
   draw_unsaved_dialog();
-  presets_->draw_dialogs(document_);
-  export_.draw_picture_dialog(document_, files_);
-  files_.draw(document_);
-  if (photo_->take_saved_preset()) {
-    presets_->refresh();  // the fitted preset joins the list
+  panel<PresetsPanel>().draw_dialogs(document_, status_);
+  export_.draw_picture_dialog(status_, files_);
+  files_.draw(status_);
+  if (panel<PhotoOverlay>().take_saved_preset()) {
+    panel<PresetsPanel>().refresh();  // the fitted preset joins the list
   }
   // A drag ends when its widget lets go; an animation when it is paused.
-  if (!ImGui::IsAnyItemActive() && !parameters_->animating()) {
+  if (!ImGui::IsAnyItemActive() && !panel<ParametersPanel>().animating()) {
     document_.end_step();
   }
   if (appearance_.scale_percent() != scale_before || appearance_.light_theme() != light_before ||
       remembered_.take_changed()) {
-    document_.mark_session_dirty();
+    status_.mark_session_dirty();
   }
   save_session_when_idle();
   if (page_link_->follows()) {

@@ -79,24 +79,30 @@ class Explorer {
   std::optional<std::string> set_view(std::string_view key, std::string_view value);
   void load_preset_file(const std::filesystem::path& path) { document_.load_preset_file(path); }
   // Ctrl+S, as the keys do.
-  void save() { presets_->save(document_); }
+  void save() { panel<PresetsPanel>().save(document_, status_); }
 
   Document& document() { return document_; }
+  UiStatus& status() { return status_; }
+  const UiStatus& status() const { return status_; }
   Scene& scene() { return document_.scene(); }
   const Parameters& edited() const { return document_.edited(); }
   const RenderCounters& renderer_counters() const {
-    return renderer_.cloth_counters(cloth_view_->a_view());
+    return renderer_.cloth_counters(panel<ClothViewPanel>().a_view());
   }
   const RenderCounters& compare_counters() const {
-    return renderer_.cloth_counters(cloth_view_->b_view());
+    return renderer_.cloth_counters(panel<ClothViewPanel>().b_view());
   }
-  const AnalysisPanel& analysis() const { return *analysis_; }
-  const PresetsPanel& presets() const { return *presets_; }
-  const ParametersPanel& parameters_panel() const { return *parameters_; }
-  const FoldPlotPanel& fold_plot() const { return *fold_plot_; }
-  const ClothViewPanel& cloth_view() const { return *cloth_view_; }
-  PhotoOverlay& photo() { return *photo_; }
-  const PhotoOverlay& photo() const { return *photo_; }
+  // The panel of type P (tests, reports and the frame loop look into one by its type).
+  template <class P>
+  P& panel() const {
+    return find_panel<P>(panels_);
+  }
+  const AnalysisPanel& analysis() const { return panel<AnalysisPanel>(); }
+  const PresetsPanel& presets() const { return panel<PresetsPanel>(); }
+  const ParametersPanel& parameters_panel() const { return panel<ParametersPanel>(); }
+  const FoldPlotPanel& fold_plot() const { return panel<FoldPlotPanel>(); }
+  const ClothViewPanel& cloth_view() const { return panel<ClothViewPanel>(); }
+  PhotoOverlay& photo() const { return panel<PhotoOverlay>(); }
   // Every panel, in the order they are drawn (the tiled ones first, in the layout's order).
   const std::vector<std::unique_ptr<Panel>>& panels() const { return panels_; }
   // How a background job that finished wakes the frame loop while it sleeps (the window's
@@ -137,33 +143,35 @@ class Explorer {
   // PNG to `path`. Throws SurfaceError when it cannot be drawn or written.
   void write_picture(const std::filesystem::path& path, const PictureSpec& spec);
   FileDialog& file_dialog() { return files_; }
-  IntroWindow& intro() { return *intro_; }
+  IntroWindow& intro() const { return panel<IntroWindow>(); }
   // Shows a line in the Presets panel (the outcome of an export done by the frame loop).
-  void notify(const std::string& message, bool is_error) { document_.notify(message, is_error); }
-  // A line kept in the Presets panel and listed by `gui --report` (see Document::add_notice).
-  void add_notice(const std::string& notice) { document_.add_notice(notice); }
-  const std::vector<std::string>& notices() const { return document_.notices(); }
+  void notify(const std::string& message, bool is_error) { status_.notify(message, is_error); }
+  // A line kept in the Presets panel and listed by `gui --report` (see UiStatus::add_notice).
+  void add_notice(const std::string& notice) { status_.add_notice(notice); }
+  const std::vector<std::string>& notices() const { return status_.notices(); }
   // True while background work of any panel (the regime map, a calibration, the photo's fit) is
   // still to show up in what the window shows.
   bool busy() const;
   // True while a frame would differ from the last without any input: background work, the
   // breeze or an input the play button sweeps. Otherwise the window may sleep until an event (or a
   // finished job's wake) comes.
-  bool animating() const { return busy() || cloth_view_->animating() || parameters_->animating(); }
+  bool animating() const {
+    return busy() || panel<ClothViewPanel>().animating() || panel<ParametersPanel>().animating();
+  }
   // True while a frame would differ from the last after a while, with no input: a message that
   // will fade, a session or window layout to save, a text cursor blinking. (Tooltips show at
   // once, in the frames that follow the mouse's move.) Call after a frame; otherwise a sleeping
   // window needs no timeout.
   bool awaits_time() const;
-  const ClothStyle& cloth_style() const { return cloth_view_->style(); }
+  const ClothStyle& cloth_style() const { return panel<ClothViewPanel>().style(); }
   // The files the explorer has open now (the 3D view's swatch, the fold plot's photo), each named
   // as the user knows it; no picture may be written over them.
   std::vector<app::NamedPath> files_in_use() const {
-    return {{"the 3D view's print file", cloth_view_->print_file()},
-            {"the fold plot's photo", photo_->photo_file()}};
+    return {{"the 3D view's print file", panel<ClothViewPanel>().print_file()},
+            {"the fold plot's photo", panel<PhotoOverlay>().photo_file()}};
   }
   // The last finished regime map's wall time in ms (0 before one finishes).
-  double regime_map_ms() const { return analysis_->regime_map().last_map_ms(); }
+  double regime_map_ms() const { return panel<AnalysisPanel>().regime_map().last_map_ms(); }
 
  private:
   void save_session_when_idle();
@@ -183,34 +191,21 @@ class Explorer {
   // remembered setting.
   void save_settings(SessionSettings& settings) const;
   void load_settings(const SessionSettings& settings);
-  // Appends a panel to the list and returns it.
   template <class P, class... Args>
-  P* add(Args&&... args) {
-    auto panel = std::make_unique<P>(std::forward<Args>(args)...);
-    P* raw = panel.get();
-    panels_.push_back(std::move(panel));
-    return raw;
+  void add(Args&&... args) {
+    panels_.push_back(std::make_unique<P>(std::forward<Args>(args)...));
   }
 
   ExplorerOptions options_;
   Renderer& renderer_;
   Appearance appearance_;
+  UiStatus status_;  // before the document, which reports to it
   Document document_;
   ExportPanel export_;                     // the Export menu, in the menu bar
   ClothView picture_view_ = kNoClothView;  // the cloth of pictures (write_picture)
   FileDialog files_;                       // every panel's open and save dialog
-  // The panels, in drawing order; the pointers below point into it, for what the explorer's
-  // own interface offers of them.
+  // The panels, in drawing order, each type once (panel<P>() finds one).
   std::vector<std::unique_ptr<Panel>> panels_;
-  ParametersPanel* parameters_ = nullptr;
-  PresetsPanel* presets_ = nullptr;
-  FoldPlotPanel* fold_plot_ = nullptr;
-  ClothViewPanel* cloth_view_ = nullptr;
-  ResultsPanel* results_ = nullptr;
-  AnalysisPanel* analysis_ = nullptr;
-  CalibrationPanel* calibration_ = nullptr;  // "Fit to measurements", opened from the Presets panel
-  PhotoOverlay* photo_ = nullptr;            // the fold plot's photo and its measurement window
-  IntroWindow* intro_ = nullptr;             // "What am I looking at?"
   std::function<void()> wake_;
   std::unique_ptr<PageLink> page_link_ = std::make_unique<PageLink>();
   LinkThrottle address_;  // when the page's address follows the link

@@ -260,7 +260,7 @@ json explorer_state_json(Explorer& explorer) {
     unread[key] = reason;
   }
   const std::optional<std::string> refused = document.refusal();
-  const std::string& modal = document.modal_title();
+  const std::string& modal = explorer.status().modal_title();
   std::string presented;
   for (const std::unique_ptr<Panel>& panel : explorer.panels()) {
     if (panel->tile() && panel->tile() == explorer.presented()) {
@@ -291,7 +291,7 @@ json explorer_state_json(Explorer& explorer) {
       {"display", {ImGui::GetIO().DisplaySize.x, ImGui::GetIO().DisplaySize.y}},
       {"method_step", method_step_json(explorer.analysis().method())},
       {"view", cloth_view_json(explorer.cloth_style())},
-      {"message", document.message()},
+      {"message", explorer.status().message()},
       {"link", explorer.link()},
       {"clipboard", detail::escaped(clipboard != nullptr ? clipboard : "")},
       {"popup_open", ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId)},

@@ -9,27 +9,33 @@
 #include <memory>
 #include <optional>
 #include <span>
+#include <stdexcept>
 #include <string>
+#include <typeinfo>
 
 #include "app/gui/document.hpp"
 #include "app/gui/panels/widgets.hpp"
 #include "app/gui/remembered.hpp"
 #include "app/gui/renderer.hpp"
 #include "app/gui/session.hpp"
+#include "app/gui/ui_status.hpp"
 
 namespace foldlab::gui {
 
-class PhotoOverlay;
 class FileDialog;
 class Panel;
+
+// The panel of type P in a list of panels; every panel type is in the explorer's list once.
+template <class P>
+P& find_panel(std::span<const std::unique_ptr<Panel>> panels);
 
 // What a panel's draw is given: the one copy of the state, the way to the GPU and the pieces one
 // panel lends another.
 struct PanelContext {
   Document& document;
+  UiStatus& status;
   Renderer& renderer;
-  PhotoOverlay& photo;  // the fold plot's backdrop, its clicks and its measurement window
-  FileDialog& files;    // the one open/save dialog, which remembers the folder last used
+  FileDialog& files;  // the one open/save dialog, which remembers the folder last used
   // Wakes the frame loop when it sleeps; callable from any thread (a background job's end).
   std::function<void()> wake;
   // Every panel of the explorer, in drawing order, for one that lists the others.
@@ -37,6 +43,13 @@ struct PanelContext {
   // An input is being played: the views keep their frame, growing it but never shrinking it, so
   // that the cloth is seen to change size.
   bool holding_frame = false;
+
+  // Another panel, for one that works with it (the fold plot draws the photo overlay's photo
+  // behind its lines and passes it the clicks).
+  template <class P>
+  P& panel() const {
+    return find_panel<P>(panels);
+  }
 };
 
 class Panel {
@@ -72,5 +85,15 @@ class Panel {
     return begin_panel(window_label(mark).c_str(), renderer);
   }
 };
+
+template <class P>
+P& find_panel(std::span<const std::unique_ptr<Panel>> panels) {
+  for (const std::unique_ptr<Panel>& panel : panels) {
+    if (auto* found = dynamic_cast<P*>(panel.get())) {
+      return *found;
+    }
+  }
+  throw std::logic_error(std::string("no such panel in the list: ") + typeid(P).name());
+}
 
 }  // namespace foldlab::gui

@@ -274,7 +274,7 @@ bool ClothViewPanel::toolbar(PanelContext& context) {
                             photo_path_ = path.string();
                             return load_photo(photo_path_);
                           }},
-                         context.document);
+                         context.status);
     }
     help_marker(
         "A photo of the fabric (PNG or JPEG), tiled over the cloth every print size; "

@@ -45,16 +45,16 @@ void draw_compare_names(Document& document) {
   }
 }
 
-void compare_menu(Document& document) {
+void compare_menu(Document& document, UiStatus& status) {
   const bool pinned = document.compare().pinned();
   if (ImGui::MenuItem("Pin as B")) {
-    pin_as_b(document);
+    pin_as_b(document, status);
   }
   if (ImGui::MenuItem("Swap A and B", nullptr, false, pinned)) {
-    swap_a_and_b(document);
+    swap_a_and_b(document, status);
   }
   if (ImGui::MenuItem("Clear B", nullptr, false, pinned)) {
-    clear_b(document);
+    clear_b(document, status);
   }
   if (document.compare().pinned()) {  // not `pinned`: Clear B may have just cleared it
     ImGui::Separator();
@@ -62,10 +62,10 @@ void compare_menu(Document& document) {
   }
 }
 
-void draw_compare_section(Document& document, const ModelStanding& standing_a) {
+void draw_compare_section(Document& document, UiStatus& status, const ModelStanding& standing_a) {
   Comparison& compare = document.compare();
   if (ImGui::Button("Pin as B")) {
-    pin_as_b(document);
+    pin_as_b(document, status);
   }
   if (ImGui::IsItemHovered()) {
     ImGui::SetTooltip(
@@ -77,11 +77,11 @@ void draw_compare_section(Document& document, const ModelStanding& standing_a) {
   }
   same_line_if_fits(button_width("Swap A and B"));
   if (ImGui::Button("Swap A and B")) {
-    swap_a_and_b(document);
+    swap_a_and_b(document, status);
   }
   same_line_if_fits(button_width("Clear B"));
   if (ImGui::Button("Clear B")) {
-    clear_b(document);
+    clear_b(document, status);
   }
   if (!compare.pinned()) {
     return;  // cleared just now

@@ -34,10 +34,10 @@ std::string headline(const QuantityTexts& texts);
 QuantityTexts difference_texts(const Solution& a, const Solution& b);
 
 // The buttons, and the table while B is pinned. `standing_a` is A's form of eq. 7 and range.
-void draw_compare_section(Document& document, const ModelStanding& standing_a);
+void draw_compare_section(Document& document, UiStatus& status, const ModelStanding& standing_a);
 // "A: name" and "B: name" in their curves' colours, wrapped; B must be pinned.
 void draw_compare_names(Document& document);
 // The same three actions as the menu bar's Compare menu.
-void compare_menu(Document& document);
+void compare_menu(Document& document, UiStatus& status);
 
 }  // namespace foldlab::gui

@@ -55,8 +55,8 @@ std::optional<ExportPanel::PictureRequest> ExportPanel::take_picture_request() {
   return std::exchange(picture_, std::nullopt);
 }
 
-void ExportPanel::menu(Document& document, const ClothStyle& style, FileDialog& files,
-                       bool sweep_shown) {
+void ExportPanel::menu(Document& document, UiStatus& status, const ClothStyle& style,
+                       FileDialog& files, bool sweep_shown) {
   Scene& scene = document.scene();
   const std::string& name = document.loaded().name;
   // The files are written when the dialog's answer comes, from the scene as it is then.
@@ -65,16 +65,16 @@ void ExportPanel::menu(Document& document, const ClothStyle& style, FileDialog& 
                 title,
                 std::string(kStem) + extension,
                 {extension},
-                [&document, make](const std::filesystem::path& path) -> std::optional<std::string> {
+                [&status, make](const std::filesystem::path& path) -> std::optional<std::string> {
                   try {
                     write_file_atomically(path, make());
                   } catch (const std::exception& e) {
                     return std::string("Not exported: ") + e.what();
                   }
-                  document.notify("Wrote " + path.string(), false);
+                  status.notify("Wrote " + path.string(), false);
                   return std::nullopt;
                 }},
-               document);
+               status);
   };
   const auto picture = [&](const char* title, Picture what) {
     files.open({FileDialog::Mode::save,
@@ -86,7 +86,7 @@ void ExportPanel::menu(Document& document, const ClothStyle& style, FileDialog& 
                   picture_ready_ = false;
                   return std::nullopt;
                 }},
-               document);
+               status);
   };
   for (const ExportFormat& format : kExportFormats) {
     const std::string label = std::string(format.menu_label) + "...";
@@ -135,7 +135,7 @@ void ExportPanel::menu(Document& document, const ClothStyle& style, FileDialog& 
   }
 }
 
-void ExportPanel::draw_picture_dialog(Document& document, FileDialog& files) {
+void ExportPanel::draw_picture_dialog(UiStatus& status, FileDialog& files) {
   if (open_dialog_) {
     ImGui::OpenPopup(kPictureDialog);
     open_dialog_ = false;
@@ -199,7 +199,7 @@ void ExportPanel::draw_picture_dialog(Document& document, FileDialog& files) {
                   picture_ready_ = false;
                   return std::nullopt;
                 }},
-               document);
+               status);
   }
   ImGui::EndPopup();
 }

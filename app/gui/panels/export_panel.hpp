@@ -30,10 +30,11 @@ class ExportPanel {
 
   // The menu's contents, between ImGui::BeginMenu and EndMenu: one item per format, each opening
   // the save dialog. `sweep_shown`: the Sweep tab is on screen, so that its plots can be taken.
-  void menu(Document& document, const ClothStyle& style, FileDialog& files, bool sweep_shown);
+  void menu(Document& document, UiStatus& status, const ClothStyle& style, FileDialog& files,
+            bool sweep_shown);
   // The picture dialog (size, background, caption) the menu's "... any size" items open; every
   // frame, outside the menu.
-  void draw_picture_dialog(Document& document, FileDialog& files);
+  void draw_picture_dialog(UiStatus& status, FileDialog& files);
   // At the start of a frame: a picture asked for in an earlier frame may be taken after this one,
   // which draws neither the menu nor the dialog it was asked for in.
   void new_frame() { picture_ready_ = picture_.has_value(); }

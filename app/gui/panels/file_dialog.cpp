@@ -37,7 +37,7 @@ const std::string& FileDialog::title() const {
   return request_ ? request_->title : none;
 }
 
-void FileDialog::open(Request request, Document& document) {
+void FileDialog::open(Request request, UiStatus& status) {
   request_ = std::move(request);
   std::snprintf(name_, sizeof name_, "%s", request_->file_name.c_str());
   replace_.reset();
@@ -48,7 +48,7 @@ void FileDialog::open(Request request, Document& document) {
     folder_ = fs::current_path(error);
   }
   list();
-  document.set_modal(request_->title);
+  status.set_modal(request_->title);
 }
 
 bool FileDialog::listed(const fs::path& file) const {
@@ -99,16 +99,16 @@ void FileDialog::enter(const fs::path& folder) {
   list();
 }
 
-void FileDialog::close(Document& document) {
+void FileDialog::close(UiStatus& status) {
   request_.reset();
   replace_.reset();
   entries_.clear();
-  if (!document.modal_title().empty()) {
-    document.set_modal("");
+  if (!status.modal_title().empty()) {
+    status.set_modal("");
   }
 }
 
-void FileDialog::submit(std::string_view typed, Document& document) {
+void FileDialog::submit(std::string_view typed, UiStatus& status) {
   if (!request_) {
     return;
   }
@@ -134,7 +134,7 @@ void FileDialog::submit(std::string_view typed, Document& document) {
       problem_ = "There is no file " + path.string() + ".";
       return;
     }
-    choose(path, document);
+    choose(path, status);
     return;
   }
   if (!request_->extensions.empty() && path.extension().empty()) {
@@ -149,10 +149,10 @@ void FileDialog::submit(std::string_view typed, Document& document) {
     problem_.clear();
     return;
   }
-  choose(path, document);
+  choose(path, status);
 }
 
-void FileDialog::choose(const fs::path& path, Document& document) {
+void FileDialog::choose(const fs::path& path, UiStatus& status) {
   replace_.reset();
   const std::optional<std::string> problem = request_->chosen(path);
   if (problem) {
@@ -164,16 +164,16 @@ void FileDialog::choose(const fs::path& path, Document& document) {
   if (error || folder_.empty()) {
     folder_ = path.parent_path();
   }
-  close(document);
+  close(status);
 }
 
-void FileDialog::draw(Document& document) {
+void FileDialog::draw(UiStatus& status) {
   if (!request_) {
     return;
   }
   const char* title = request_->title.c_str();
-  if (document.modal_title() != request_->title) {
-    close(document);  // another dialog took over
+  if (status.modal_title() != request_->title) {
+    close(status);  // another dialog took over
     return;
   }
   if (!ImGui::IsPopupOpen(title)) {
@@ -251,11 +251,11 @@ void FileDialog::draw(Document& document) {
   }
   if (cancel) {
     ImGui::CloseCurrentPopup();
-    close(document);
+    close(status);
   } else if (go_to) {
     enter(*go_to);
   } else if (picked) {
-    submit(*picked, document);
+    submit(*picked, status);
     if (!request_) {
       ImGui::CloseCurrentPopup();
     }

@@ -11,7 +11,7 @@
 #include <string_view>
 #include <vector>
 
-#include "app/gui/document.hpp"
+#include "app/gui/ui_status.hpp"
 
 namespace foldlab::gui {
 
@@ -42,10 +42,10 @@ class FileDialog {
 
   explicit FileDialog(std::filesystem::path folder) : folder_(std::move(folder)) {}
 
-  // Opens the dialog (as the document's modal) in the folder last used.
-  void open(Request request, Document& document);
+  // Opens the dialog (as the status's modal) in the folder last used.
+  void open(Request request, UiStatus& status);
   // Once per frame, after the panels: the dialog while it is open.
-  void draw(Document& document);
+  void draw(UiStatus& status);
   bool is_open() const { return request_.has_value(); }
   const std::string& title() const;
   const std::filesystem::path& folder() const { return folder_; }
@@ -54,13 +54,13 @@ class FileDialog {
 
   // What the buttons and the name field do, for the draw and for tests: a typed name or path
   // (relative to the folder; a folder is entered), an entry clicked, the answer to "replace?".
-  void submit(std::string_view typed, Document& document);
+  void submit(std::string_view typed, UiStatus& status);
   void enter(const std::filesystem::path& folder);
 
  private:
   void list();
-  void choose(const std::filesystem::path& path, Document& document);
-  void close(Document& document);
+  void choose(const std::filesystem::path& path, UiStatus& status);
+  void close(UiStatus& status);
   bool listed(const std::filesystem::path& file) const;
 
   std::filesystem::path folder_;

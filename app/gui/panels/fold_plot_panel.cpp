@@ -108,7 +108,7 @@ void FoldPlotPanel::dash_compare_lines(Document& document) {
 void FoldPlotPanel::draw(PanelContext& context) {
   Document& document = context.document;
   Renderer& renderer = context.renderer;
-  PhotoOverlay& photo = context.photo;
+  PhotoOverlay& photo = context.panel<PhotoOverlay>();
   if (!begin(renderer)) {
     ImGui::End();
     return;  // hidden: the fold lines are not even computed
@@ -154,7 +154,7 @@ void FoldPlotPanel::draw(PanelContext& context) {
     series_.outline_and_supports(plot_, scene, true);
     photo.plot_items(plot_, document);
     const std::optional<PlotHit> hit = plot_.end();
-    photo.handle_click(plot_, document);
+    photo.handle_click(plot_, context.status);
     if (hit && hit->series < static_cast<int>(lines.lines.size())) {
       const FoldLine& line = lines.lines[static_cast<std::size_t>(hit->series)];
       const Eigen::Vector3d& p = line.points_mm[static_cast<std::size_t>(hit->index)];

@@ -174,7 +174,8 @@ std::map<std::string, std::string> ParametersPanel::unread_reasons() const {
   return out;
 }
 
-void ParametersPanel::input_slider(Document& document, const InputSpec& spec, float width) {
+void ParametersPanel::input_slider(PanelContext& context, const InputSpec& spec, float width) {
+  Document& document = context.document;
   double value = spec.value(document.edited()).value_or(0.0);
   const std::string key(spec.key);
   const std::string label = slider_label(spec);
@@ -214,7 +215,7 @@ void ParametersPanel::input_slider(Document& document, const InputSpec& spec, fl
         (units.empty() ? "" : " with a unit (" + units + ")") +
         ", nor arithmetic such as 2*153; the value stays " + shown_text(spec, value) + ".";
     unread_[key] = {detail::cut(text), reason, value};
-    document.notify(reason, MessageKind::error);
+    context.status.notify(reason, MessageKind::error);
   };
   if (ImGui::TempInputIsActive(id)) {
     // ImGui opened its text field over the slider on the Ctrl+click, with the shown text; this
@@ -235,7 +236,8 @@ void ParametersPanel::input_slider(Document& document, const InputSpec& spec, fl
     if (typing_id_ == id) {
       read_typed();  // a click elsewhere took the text cursor before this frame drew the field
     }
-    const SliderReach reach = document.expert_mode() ? SliderReach::expert : SliderReach::beginner;
+    const SliderReach reach =
+        context.status.expert_mode() ? SliderReach::expert : SliderReach::beginner;
     const InputInterval range = interval(spec, document.edited(), reach);
     // The shown text doubles as the text field's first contents on Ctrl+click, which parses
     // back to the value with its unit.
@@ -312,8 +314,9 @@ void ParametersPanel::play_frame(Document& document) {
   document.apply(Edit::input(animate_key_, animation_->at(animation_ways_)).open());
 }
 
-void ParametersPanel::animation_row(Document& document,
+void ParametersPanel::animation_row(PanelContext& context,
                                     const std::vector<const InputSpec*>& sliders) {
+  Document& document = context.document;
   ImGui::AlignTextToFramePadding();
   ImGui::TextUnformatted("animate");
   ImGui::SameLine();
@@ -342,8 +345,9 @@ void ParametersPanel::animation_row(Document& document,
       // input carries on where it paused, over the range typed for it.
       const bool resuming = animation_ && animation_->key() == animate_key_;
       try {
-        AnimatedInput fresh(animate_key_, document.edited(),
-                            document.expert_mode() ? SliderReach::expert : SliderReach::beginner);
+        AnimatedInput fresh(
+            animate_key_, document.edited(),
+            context.status.expert_mode() ? SliderReach::expert : SliderReach::beginner);
         if (resuming) {
           fresh.set_range(range_lo_, range_hi_);
         } else {
@@ -395,8 +399,8 @@ void ParametersPanel::draw(PanelContext& context) {
     document.reset_to_loaded();
   }
   ImGui::SameLine();
-  if (bool expert = document.expert_mode(); ImGui::Checkbox(kExpertLabel, &expert)) {
-    document.set_expert_mode(expert);
+  if (bool expert = context.status.expert_mode(); ImGui::Checkbox(kExpertLabel, &expert)) {
+    context.status.set_expert_mode(expert);
   }
   help_marker(
       "Beginners see the cloth (t, E, w, h, L, d) and its shape; experts also the model's "
@@ -419,7 +423,7 @@ void ParametersPanel::draw(PanelContext& context) {
   float label_width = ImGui::CalcTextSize("span rule").x;
   for (const std::string& key : sweepable_keys()) {
     const InputSpec* spec = find_input(key);
-    if (spec->expert && !document.expert_mode()) {
+    if (spec->expert && !context.status.expert_mode()) {
       places_.erase(key);  // playback must not press what is no longer there
       continue;
     }
@@ -431,21 +435,21 @@ void ParametersPanel::draw(PanelContext& context) {
       ems(6.0f), ImGui::GetContentRegionAvail().x - label_width - ImGui::CalcTextSize(" (?)").x -
                      2.0f * style.ItemInnerSpacing.x - style.ItemSpacing.x);
   for (const InputSpec* spec : sliders) {
-    input_slider(document, *spec, width);
+    input_slider(context, *spec, width);
     if (spec->key == "w") {
       const double w = document.edited().fabric.weight_N_per_mm2;
       ImGui::TextColored(kDimText, "    = %.3g oz/yd² = %.4g N/mm²",
                          w / input_units(*spec)[2].per_unit, w);
     }
   }
-  if (document.expert_mode()) {
+  if (context.status.expert_mode()) {
     ImGui::TextColored(kDimText, "    c = %.4g (load-condition constant)",
                        document.edited().model.load_constant_c);
-    input_slider(document, *find_input("p"), width);
+    input_slider(context, *find_input("p"), width);
   } else {
     places_.erase("p");
   }
-  animation_row(document, sliders);
+  animation_row(context, sliders);
 
   ImGui::Separator();
   const InputSpec& shape = *find_input("shape");
@@ -461,9 +465,9 @@ void ParametersPanel::draw(PanelContext& context) {
     }
     help_marker(std::string(supports.help).c_str());
   } else if (document.edited().shape.kind == ShapeKind::inclined) {
-    input_slider(document, *find_input("incline_deg"), width);
+    input_slider(context, *find_input("incline_deg"), width);
   }
-  if (document.expert_mode()) {
+  if (context.status.expert_mode()) {
     law_combo(document, width);
     for (const char* key : kChoiceKeys) {
       choice_combo(document, *find_input(key), width);

@@ -63,9 +63,9 @@ class ParametersPanel : public Panel {
   std::map<std::string, std::string> unread_reasons() const;
 
  private:
-  void input_slider(Document& document, const InputSpec& spec, float width);
+  void input_slider(PanelContext& context, const InputSpec& spec, float width);
   // The play row: which input, play/pause, and the range it sweeps.
-  void animation_row(Document& document, const std::vector<const InputSpec*>& sliders);
+  void animation_row(PanelContext& context, const std::vector<const InputSpec*>& sliders);
   // While playing: the next frame's value, one open edit for the whole animation.
   void play_frame(Document& document);
 

@@ -92,13 +92,13 @@ ImVec2 PhotoOverlay::screen_of_pixel(double x_px, double y_px) const {
   return view_.to_screen(x_mm, y_mm);
 }
 
-bool PhotoOverlay::load(const std::filesystem::path& path, Document& document, Renderer& renderer) {
+bool PhotoOverlay::load(const std::filesystem::path& path, UiStatus& status, Renderer& renderer) {
   Image image;
   try {
     image = load_image(path);
   } catch (const ImageError& e) {
     load_error_ = e.what();
-    document.notify(std::string("Photo not loaded: ") + e.what(), MessageKind::error);
+    status.notify(std::string("Photo not loaded: ") + e.what(), MessageKind::error);
     return false;
   }
   if (texture_ < 0) {
@@ -123,24 +123,24 @@ bool PhotoOverlay::load(const std::filesystem::path& path, Document& document, R
       rows_message_is_error_ = true;
     }
   }
-  document.notify("Loaded " + photo_path_ + ": click the two supports on it.", MessageKind::info);
+  status.notify("Loaded " + photo_path_ + ": click the two supports on it.", MessageKind::info);
   return true;
 }
 
 void PhotoOverlay::toolbar(PanelContext& context) {
   if (ImGui::SmallButton("Load photo...")) {
     load_error_.clear();
-    Document* document = &context.document;
+    UiStatus* status = &context.status;
     Renderer* renderer = &context.renderer;
-    context.files.open({FileDialog::Mode::open, kLoadModal, "", kImageExtensions,
-                        [this, document, renderer](
-                            const std::filesystem::path& path) -> std::optional<std::string> {
-                          if (load(path, *document, *renderer)) {
-                            return std::nullopt;
-                          }
-                          return load_error_;
-                        }},
-                       context.document);
+    context.files.open(
+        {FileDialog::Mode::open, kLoadModal, "", kImageExtensions,
+         [this, status, renderer](const std::filesystem::path& path) -> std::optional<std::string> {
+           if (load(path, *status, *renderer)) {
+             return std::nullopt;
+           }
+           return load_error_;
+         }},
+        context.status);
   }
   if (!photo_) {
     ImGui::SameLine();
@@ -228,10 +228,10 @@ void PhotoOverlay::plot_items(Plot& plot, const Document& document) {
                6.0f);
 }
 
-void PhotoOverlay::handle_click(const Plot& plot, const Document& document) {
+void PhotoOverlay::handle_click(const Plot& plot, const UiStatus& status) {
   view_ = plot.view();
   have_view_ = true;
-  if (!photo_ || mode_ == Mode::none || !document.modal_title().empty() ||
+  if (!photo_ || mode_ == Mode::none || !status.modal_title().empty() ||
       // The press makes the plot's own button active (it pans on a drag).
       !ImGui::IsWindowHovered(ImGuiHoveredFlags_AllowWhenBlockedByActiveItem) ||
       !ImGui::IsMouseClicked(0)) {
@@ -343,7 +343,7 @@ void PhotoOverlay::start_fit(const Document& document) {
       wake_);
 }
 
-void PhotoOverlay::collect_fit(Document& document) {
+void PhotoOverlay::collect_fit(const Document& document, UiStatus& status) {
   if (!fit_.finished()) {
     return;
   }
@@ -380,7 +380,7 @@ void PhotoOverlay::collect_fit(Document& document) {
                    summary_text(report.leave_one_out) + ". Saved as preset \"" + out.name + "\" (" +
                    path.string() + ").";
     fit_message_is_error_ = false;
-    document.notify("Saved the fitted preset to " + path.string(), MessageKind::success);
+    status.notify("Saved the fitted preset to " + path.string(), MessageKind::success);
   } catch (const std::exception& e) {
     fit_message_ = std::string("The fit did not run: ") + e.what();
     fit_message_is_error_ = true;
@@ -391,8 +391,8 @@ std::optional<std::filesystem::path> PhotoOverlay::take_saved_preset() {
   return std::exchange(unreported_preset_, std::nullopt);
 }
 
-void PhotoOverlay::draw_windows(Document& document, Renderer& renderer) {
-  collect_fit(document);
+void PhotoOverlay::draw_windows(Document& document, UiStatus& status, Renderer& renderer) {
+  collect_fit(document, status);
   if (photo_) {
     remeasure(document);
     measurement_window(document, renderer);

@@ -47,7 +47,7 @@ class PhotoOverlay : public Panel {
   // The measurement window (the fold plot draws the rest).
   void draw(PanelContext& context) override {
     wake_ = context.wake;  // for the fit started from the window
-    draw_windows(context.document, context.renderer);
+    draw_windows(context.document, context.status, context.renderer);
   }
   bool busy() const override { return fitting(); }
 
@@ -58,12 +58,12 @@ class PhotoOverlay : public Panel {
   // centre line.
   void plot_items(Plot& plot, const Document& document);
   // After the plot's end(): a click in its data area places a support or a fold.
-  void handle_click(const Plot& plot, const Document& document);
+  void handle_click(const Plot& plot, const UiStatus& status);
   // The measurement window, outside the tiled panels.
-  void draw_windows(Document& document, Renderer& renderer);
+  void draw_windows(Document& document, UiStatus& status, Renderer& renderer);
 
   // Loads a photo as the backdrop; on failure keeps the previous one and says why.
-  bool load(const std::filesystem::path& path, Document& document, Renderer& renderer);
+  bool load(const std::filesystem::path& path, UiStatus& status, Renderer& renderer);
   // A preset "Fit" saved since the last call, for the presets list to show.
   std::optional<std::filesystem::path> take_saved_preset();
   // From "Fit" until its result is collected.
@@ -85,7 +85,7 @@ class PhotoOverlay : public Panel {
   void remeasure(const Document& document);
   void add_row(const Document& document);
   void start_fit(const Document& document);
-  void collect_fit(Document& document);
+  void collect_fit(const Document& document, UiStatus& status);
   void measurement_window(Document& document, Renderer& renderer);
 
   PhotoPaths paths_;

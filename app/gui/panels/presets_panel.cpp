@@ -77,19 +77,20 @@ void PresetsPanel::refresh() {
   add_folder(user_presets_dir_, true);
 }
 
-void PresetsPanel::save_as(Document& document, const std::string& name, bool overwrite) {
+void PresetsPanel::save_as(Document& document, UiStatus& status, const std::string& name,
+                           bool overwrite) {
   const std::string file = preset_slug(name);
   if (file.empty()) {
-    document.notify("Give the preset a name with at least one letter or digit.", true);
+    status.notify("Give the preset a name with at least one letter or digit.", true);
     return;
   }
   const std::filesystem::path path = user_presets_dir_ / (file + ".json");
   if (!overwrite && std::filesystem::exists(path)) {
     pending_overwrite_ = name;
-    document.set_modal(kOverwriteModal);
+    status.set_modal(kOverwriteModal);
     return;
   }
-  write(document, name, path);
+  write(document, status, name, path);
 }
 
 bool PresetsPanel::is_user_preset(const std::string& path) const {
@@ -101,17 +102,17 @@ bool PresetsPanel::is_user_preset(const std::string& path) const {
                                      error);
 }
 
-void PresetsPanel::save(Document& document) {
+void PresetsPanel::save(Document& document, UiStatus& status) {
   if (is_user_preset(document.loaded_path())) {
-    write(document, document.loaded().name, document.loaded_path());
+    write(document, status, document.loaded().name, document.loaded_path());
     return;
   }
   const std::string suggestion = document.loaded().name + " (edited)";
   std::snprintf(save_as_name_, sizeof save_as_name_, "%s", suggestion.c_str());
-  document.set_modal(kSaveAsModal);
+  status.set_modal(kSaveAsModal);
 }
 
-void PresetsPanel::write(Document& document, const std::string& name,
+void PresetsPanel::write(Document& document, UiStatus& status, const std::string& name,
                          const std::filesystem::path& path) {
   const Preset& loaded = document.loaded();
   Preset preset = loaded;
@@ -130,18 +131,18 @@ void PresetsPanel::write(Document& document, const std::string& name,
     std::filesystem::create_directories(path.parent_path());
     save_preset(preset, path);
     document.adopt(preset, path.string());
-    document.notify("Saved to " + path.string(), MessageKind::success);
+    status.notify("Saved to " + path.string(), MessageKind::success);
     refresh();
   } catch (const std::exception& e) {
     document.cancel_replace();  // what waited for the save must not replace unsaved edits
-    document.notify(std::string("Not saved: ") + e.what(), MessageKind::error);
+    status.notify(std::string("Not saved: ") + e.what(), MessageKind::error);
     return;
   }
   document.continue_replace();
 }
 
-void PresetsPanel::draw_dialogs(Document& document) {
-  const std::string& modal = document.modal_title();
+void PresetsPanel::draw_dialogs(Document& document, UiStatus& status) {
+  const std::string& modal = status.modal_title();
   if (modal != kOverwriteModal && modal != kSaveAsModal) {
     return;
   }
@@ -149,18 +150,18 @@ void PresetsPanel::draw_dialogs(Document& document) {
     ImGui::OpenPopup(modal.c_str());
   }
   const bool escape = ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape), false);
-  const auto cancel = [&document] {
-    document.set_modal("");
+  const auto cancel = [&document, &status] {
+    status.set_modal("");
     ImGui::CloseCurrentPopup();
     document.cancel_replace();
-    document.notify("Not saved.", MessageKind::warning);
+    status.notify("Not saved.", MessageKind::warning);
   };
   if (ImGui::BeginPopupModal(kOverwriteModal, nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
     ImGui::Text("A preset named \"%s\" exists. Replace it?", pending_overwrite_.c_str());
     if (ImGui::Button("Replace")) {
-      document.set_modal("");
+      status.set_modal("");
       ImGui::CloseCurrentPopup();
-      save_as(document, pending_overwrite_, true);
+      save_as(document, status, pending_overwrite_, true);
     }
     ImGui::SameLine();
     if (ImGui::Button("Cancel") || escape) {
@@ -178,9 +179,9 @@ void PresetsPanel::draw_dialogs(Document& document) {
                                           ImGuiInputTextFlags_EnterReturnsTrue);
     ImGui::TextDisabled("in %s", user_presets_dir_.string().c_str());
     if (ImGui::Button("Save") || entered) {
-      document.set_modal("");
+      status.set_modal("");
       ImGui::CloseCurrentPopup();
-      save_as(document, save_as_name_, false);
+      save_as(document, status, save_as_name_, false);
     }
     ImGui::SameLine();
     if (ImGui::Button("Cancel") || escape) {
@@ -191,6 +192,7 @@ void PresetsPanel::draw_dialogs(Document& document) {
 }
 
 void PresetsPanel::draw(PanelContext& context) {
+  UiStatus& status = context.status;
   Document& document = context.document;
   if (!begin(context.renderer)) {
     ImGui::End();
@@ -228,17 +230,17 @@ void PresetsPanel::draw(PanelContext& context) {
   ImGui::InputTextWithHint("##save name", "name of the new preset", save_name_, sizeof save_name_);
   ImGui::SameLine();
   if (ImGui::Button("Save as...")) {
-    save_as(document, save_name_, false);
+    save_as(document, status, save_name_, false);
   }
-  if (!document.message().empty()) {
-    ImGui::PushStyleColor(ImGuiCol_Text, message_colour(document.message_kind()));
-    wrapped_text("%s", document.message().c_str());
+  if (!status.message().empty()) {
+    ImGui::PushStyleColor(ImGuiCol_Text, message_colour(status.message_kind()));
+    wrapped_text("%s", status.message().c_str());
     ImGui::PopStyleColor();
   }
   for (const std::string& notice : notices_) {
-    document.add_notice(notice);  // a listing refreshed by "Save as..." may be newly capped
+    status.add_notice(notice);  // a listing refreshed by "Save as..." may be newly capped
   }
-  for (const std::string& notice : document.notices()) {
+  for (const std::string& notice : status.notices()) {
     ImGui::PushStyleColor(ImGuiCol_Text, kErrorText);
     wrapped_text("%s", notice.c_str());
     ImGui::PopStyleColor();

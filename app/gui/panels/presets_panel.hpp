@@ -28,12 +28,12 @@ class PresetsPanel : public Panel {
   void set_footer(std::function<void()> footer) { footer_ = std::move(footer); }
   // Saves the current valid parameters as a user preset named `name` (the file name is its slug);
   // asks before replacing a file unless `overwrite`.
-  void save_as(Document& document, const std::string& name, bool overwrite);
+  void save_as(Document& document, UiStatus& status, const std::string& name, bool overwrite);
   // Ctrl+S: over the loaded preset when it is one of the user's, else opens "Save as".
-  void save(Document& document);
+  void save(Document& document, UiStatus& status);
   // The overwrite question and "Save as", shown while the document names them as its modal;
   // drawn outside any panel so that they open whether or not the panel is visible.
-  void draw_dialogs(Document& document);
+  void draw_dialogs(Document& document, UiStatus& status);
   static constexpr const char* kOverwriteModal = "Overwrite preset?";
   static constexpr const char* kSaveAsModal = "Save as";
 
@@ -53,7 +53,8 @@ class PresetsPanel : public Panel {
   bool is_user_preset(const std::string& path) const;
   // Writes the valid parameters as preset `name` to `path`, then goes on with what waited for
   // the save (a preset load after "Save" in the unsaved-changes question).
-  void write(Document& document, const std::string& name, const std::filesystem::path& path);
+  void write(Document& document, UiStatus& status, const std::string& name,
+             const std::filesystem::path& path);
 
   std::filesystem::path presets_dir_;
   std::filesystem::path user_presets_dir_;

@@ -37,7 +37,7 @@ std::string ResultsPanel::Row::one_line() const {
                                    : value.substr(0, unit) + " " + range + value.substr(unit);
 }
 
-std::vector<ResultsPanel::Row> ResultsPanel::rows(Document& document) {
+std::vector<ResultsPanel::Row> ResultsPanel::rows(Document& document, bool expert) {
   Scene& scene = document.scene();
   const Solution& s = scene.solution();
   const StageStats& timing = scene.stats(Stage::solution);
@@ -51,7 +51,7 @@ std::vector<ResultsPanel::Row> ResultsPanel::rows(Document& document) {
   std::vector<Row> out;
   out.push_back(row("number of wrinkles", "n", shown.n));
   out.push_back(row("amplitude ratio", "Q", shown.Q));
-  if (!document.expert_mode()) {
+  if (!expert) {
     // A beginner sees what the cloth does; how the solver got there is for experts.
     out.push_back(row("out-of-plane depth", "z_max", shown.z_max));
     return out;
@@ -164,10 +164,10 @@ void ResultsPanel::draw(PanelContext& context) {
     ImGui::PopStyleColor();
   }
   const ModelStanding& model = standing(document);
-  draw_compare_section(document, model);
+  draw_compare_section(document, context.status, model);
   Scene& scene = document.scene();
   const Solution& s = scene.solution();
-  const bool expert = document.expert_mode();
+  const bool expert = context.status.expert_mode();
   if (!expert) {
     const RegimeInfo& regime = regime_info(s.regime);
     wrapped_text("%s: %s", std::string(regime.label).c_str(), std::string(regime.plain).c_str());
@@ -191,7 +191,7 @@ void ResultsPanel::draw(PanelContext& context) {
   if (ImGui::IsItemHovered()) {
     ImGui::SetTooltip("intervals of n, Q and z_max: %s", model.range_basis.c_str());
   }
-  draw_table(rows(document));
+  draw_table(rows(document, expert));
   if (s.n_capped) {
     ImGui::PushStyleColor(ImGuiCol_Text, kNoteText);
     wrapped_text("n is capped: eq. 10 asks for more.");

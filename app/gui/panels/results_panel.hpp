@@ -41,7 +41,8 @@ class ResultsPanel : public Panel {
     std::string range;
     std::string one_line() const;
   };
-  std::vector<Row> rows(Document& document);
+  // A beginner's rows are n, Q and z_max; an expert's add how the solver got there.
+  std::vector<Row> rows(Document& document, bool expert);
   void draw_table(const std::vector<Row>& rows) const;
   const ModelStanding& standing(Document& document);
 
