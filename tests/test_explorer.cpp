@@ -1437,6 +1437,29 @@ TEST_F(ExplorerTest, CtrlSSavesAsThenOverTheUsersPreset) {
   EXPECT_FALSE(document().unsaved());
 }
 
+// Two presets of one name in the list cannot be told apart: a shipped preset's name is refused
+// and the dialog stays open with the name typed.
+TEST_F(ExplorerTest, SaveAsRefusesTheNameOfAShippedPreset) {
+  ASSERT_EQ(explorer_->set_input("h", 900.0), std::nullopt);
+  frame();
+  press('S', true);
+  ASSERT_EQ(status().modal_title(), "Save as");
+  press('A', true);
+  ImGui::GetIO().AddInputCharactersUTF8("cotton POPLIN");
+  frame();
+  click("Save");
+  EXPECT_EQ(status().modal_title(), "Save as");
+  EXPECT_EQ(status().message(),
+            "\"cotton POPLIN\" is the name of a shipped preset; give yours another name.");
+  EXPECT_FALSE(fs::exists(dir_ / "user-presets"));
+  frame();
+  ImGui::GetIO().AddInputCharactersUTF8(" 2");
+  frame();
+  click("Save");
+  EXPECT_EQ(status().modal_title(), "");
+  EXPECT_TRUE(fs::exists(dir_ / "user-presets" / "cotton-poplin-2.json")) << last_text_;
+}
+
 TEST_F(ExplorerTest, NotSavingIsAWarningNotASuccess) {
   press('S', true);
   ASSERT_EQ(status().modal_title(), "Save as");

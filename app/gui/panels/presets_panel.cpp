@@ -84,6 +84,17 @@ void PresetsPanel::save_as(Document& document, UiStatus& status, const std::stri
     status.notify("Give the preset a name with at least one letter or digit.", true);
     return;
   }
+  // Two entries of one name in the list could not be told apart, and Ctrl+S on the user's would
+  // look like saving over the shipped one.
+  const bool shipped_name = std::any_of(entries_.begin(), entries_.end(), [&](const Entry& e) {
+    return !e.user && preset_slug(e.name) == file;
+  });
+  if (shipped_name) {
+    status.notify("\"" + name + "\" is the name of a shipped preset; give yours another name.",
+                  MessageKind::error);
+    status.set_modal(kSaveAsModal);  // the name stays typed, to be changed
+    return;
+  }
   const std::filesystem::path path = user_presets_dir_ / (file + ".json");
   if (!overwrite && std::filesystem::exists(path)) {
     pending_overwrite_ = name;
