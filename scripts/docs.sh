@@ -69,6 +69,8 @@ EOF
 "$foldlab" render --size 1280x800 --out docs/explorer-1280x800.png
 "$foldlab" render --size 1920x1080 --view theme=light --view scale=150 \
   --out docs/explorer-1920x1080-light-150.png
+# A presented fold plot on a projector, with the strip of inputs under the read-out.
+"$foldlab" render --size 1920x1080 --view present=fold_plot --out docs/explorer-present-fold-plot.png
 # The photo workflow on a "photo" that FoldLab draws of the default cloth's folds (any real photo
 # works the same): loaded, its supports and folds clicked by a playback script.
 "$build/tests/make_fold_photo" presets/default.json "$work/cloth-photo.png" "$work/photo.json" \

@@ -2549,6 +2549,93 @@ TEST_F(ExplorerTest, APanelIsPresentedByItsTitleButtonAndEscapeReturnsToTheTiles
   expect_tiles_fill(explorer_->panel_rects(), display, menu_height);
 }
 
+// Presenting, a teacher answers "what if it were twice as heavy?" without leaving the view: the
+// strip under the read-out holds t, E, w, h, L and d, driven as the panel's sliders are (a click,
+// arrow keys with Shift for a tenth of the step, a value typed with its unit, a refused one with
+// its reason under the strip), while the view stays presented. "Hide inputs" in the menu bar
+// takes the strip away, and the choice is kept with the session.
+TEST_F(ExplorerTest, ThePresentedViewsStripOfInputsChangesTheFabricWithoutLeavingIt) {
+  const fs::path session = dir_ / "session.json";
+  open_explorer("equations", {}, session);
+  const auto script = [&](nlohmann::json steps) {
+    return play(*explorer_, {{"steps", std::move(steps)}}, [&] { frame(); });
+  };
+  ASSERT_EQ(explorer_->set_view("present", "fold_plot"), std::nullopt);
+  frame();
+  frame();
+  const PanelRect with_strip = rect_of("fold_plot");
+  std::vector<std::string> keys;
+  for (const auto& [key, place] : explorer_->parameters_panel().slider_places()) {
+    keys.push_back(key);
+    EXPECT_LE(place.max.y, with_strip.pos.y) << key << ": above the presented view";
+    EXPECT_GE(place.max.x - place.min.x, 7.0f * ImGui::GetFontSize()) << key;
+  }
+  EXPECT_EQ(keys, (std::vector<std::string>{"E", "L", "d", "h", "t", "w"}));
+
+  // A click focuses w; each arrow key moves it by 1 % of the slider, Shift+arrow by 0.1 %: of
+  // the beginner's 1e-7 N/mm² (10.2 g/m²) to 1000 g/m², log10(1000 x 9.81e-9 / 1e-7) = 1.99
+  // decades on a log scale.
+  const double slider_decades = std::log10(1000.0 * 9.81e-9 / 1e-7);
+  ASSERT_EQ(script({{{"click", "w"}, {"at", 0.5}}}), 0);
+  const double w0 = explorer_->edited().fabric.weight_N_per_mm2;
+  ASSERT_EQ(script({{{"key", "right"}}}), 0);
+  const double w1 = explorer_->edited().fabric.weight_N_per_mm2;
+  EXPECT_NEAR(std::log10(w1 / w0), 0.01 * slider_decades, 1e-9);
+  ASSERT_EQ(script({{{"key", "shift+right"}}, {{"key", "shift+left"}}, {{"key", "shift+left"}}}),
+            0);
+  EXPECT_NEAR(std::log10(explorer_->edited().fabric.weight_N_per_mm2 / w1), -0.001 * slider_decades,
+              1e-9);
+  EXPECT_EQ(explorer_->presented(), Tile::fold_plot);
+
+  // Twice as heavy, typed with its unit.
+  ASSERT_EQ(script({{{"click", "w"}, {"at", 0.5}, {"ctrl", true}},
+                    {{"type", "306 gsm"}},
+                    {{"key", "enter"}},
+                    {{"frames", 2}}}),
+            0);
+  const InputSpec& w = *find_input("w");
+  EXPECT_EQ(explorer_->parameters_panel().shown(document(), w), "306 g/m²");
+  EXPECT_TRUE(document().issues().empty());
+  EXPECT_EQ(explorer_->presented(), Tile::fold_plot);
+
+  // Refused: the reason under the strip, above the view, as at the panel's foot.
+  ASSERT_EQ(script({{{"click", "w"}, {"at", 0.5}, {"ctrl", true}},
+                    {{"type", "-5 gsm"}},
+                    {{"key", "enter"}},
+                    {{"frames", 2}}}),
+            0);
+  ASSERT_FALSE(document().issues().empty());
+  const PanelRect refused = rect_of("fold_plot");
+  EXPECT_LE(position_of("must be between").y, refused.pos.y) << last_text_;
+  EXPECT_GT(refused.pos.y, with_strip.pos.y) << "the strip grew by the reason's lines";
+  EXPECT_EQ(explorer_->presented(), Tile::fold_plot);
+  ASSERT_EQ(script({{{"click", "w"}, {"at", 0.5}, {"ctrl", true}},
+                    {{"type", "heavy"}},
+                    {{"key", "enter"}},
+                    {{"frames", 2}}}),
+            0);
+  EXPECT_LE(position_of("is not a number").y, rect_of("fold_plot").pos.y) << last_text_;
+  press('Z', true);
+  frame();
+  EXPECT_EQ(explorer_->parameters_panel().shown(document(), w), "306 g/m²");
+
+  // Hidden from the menu bar: no slider to press, the view a strip taller, and so on the next
+  // start.
+  ASSERT_EQ(script({{{"click", Explorer::kHideInputsLabel}}, {{"frames", 2}}}), 0);
+  EXPECT_TRUE(explorer_->parameters_panel().slider_places().empty());
+  EXPECT_LT(rect_of("fold_plot").pos.y, with_strip.pos.y);
+  EXPECT_EQ(explorer_->presented(), Tile::fold_plot);
+  explorer_->save_session_now();
+  open_explorer("equations", {}, session, true);
+  EXPECT_FALSE(explorer_->layout().presents_inputs());
+  ASSERT_EQ(explorer_->set_view("present", "fold_plot"), std::nullopt);
+  frame();
+  frame();
+  EXPECT_TRUE(explorer_->parameters_panel().slider_places().empty());
+  ASSERT_EQ(script({{{"click", Explorer::kShowInputsLabel}}, {{"frames", 2}}}), 0);
+  EXPECT_EQ(explorer_->parameters_panel().slider_places().size(), 6u);
+}
+
 // A drag that missed w's handle and started on the line of text under it carried the whole
 // Parameters panel away from its tile.
 TEST_F(ExplorerTest, APanelMovesByItsTitleOnlyNotByADragInsideIt) {
@@ -2854,7 +2941,10 @@ TEST_F(ExplorerTest, APhotoOfKnownFoldsClickedGivesItsNAndQAndFeedsAFit) {
   const fs::path png = dir_ / "cloth.png";
   const testing::FoldPhoto photo = testing::write_fold_photo(s, p, png);
 
-  frame();
+  // Clicked on a projector's 1920 x 1080: drawn at true scale, the fold plot of this square
+  // cloth tiled at 1280 x 800 leaves a screen pixel too many of the photo's for the measured Q
+  // to tell this cloth from the next.
+  show_at(ImVec2(1920, 1080));
   click("Load");  // "Load photo...", the only "Load" before the dialog opens
   EXPECT_EQ(status().modal_title(), PhotoOverlay::kLoadModal);
   ImGui::GetIO().AddInputCharactersUTF8(png.string().c_str());

@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
+#include <numbers>
 #include <string>
 #include <utility>
 #include <vector>
@@ -86,6 +87,117 @@ constexpr std::array<int, 3> kPositiveFold = {140, 191, 255};
 // The plot window's first-use place: x 30-65 %, y 0-56 % of the window.
 constexpr double kPlotX0 = 0.30, kPlotY0 = 0.0, kPlotX1 = 0.65, kPlotY1 = 0.56;
 
+// The fold lines as drawn: every fold line runs from one support to the other, so that together
+// they make one connected shape of fold colours, apart from the legend's swatches under the axes.
+struct DrawnFolds {
+  int x0 = 0, y0 = 0, x1 = -1, y1 = -1;  // its bounding box, inclusive
+  std::vector<std::uint8_t> mask;        // 1 where the shape is, over the whole picture
+  int width = 0;
+  bool at(int x, int y) const { return mask[static_cast<std::size_t>(y) * width + x] != 0; }
+};
+
+bool near_colour(const std::uint8_t* p, std::array<int, 3> colour, int tolerance) {
+  for (int c = 0; c < 3; ++c) {
+    if (std::abs(p[c] - colour[static_cast<std::size_t>(c)]) > tolerance) {
+      return false;
+    }
+  }
+  return true;
+}
+
+// The largest 8-connected shape of `colours` inside the rectangle (pixels).
+DrawnFolds largest_shape(const Image& image, const std::vector<std::array<int, 3>>& colours,
+                         int rx0, int ry0, int rx1, int ry1, int tolerance = 40) {
+  const int w = image.width;
+  std::vector<std::uint8_t> in(static_cast<std::size_t>(w) * image.height, 0);
+  for (int y = std::max(ry0, 0); y < std::min(ry1, image.height); ++y) {
+    for (int x = std::max(rx0, 0); x < std::min(rx1, w); ++x) {
+      for (const auto& colour : colours) {
+        if (near_colour(image.at(x, y), colour, tolerance)) {
+          in[static_cast<std::size_t>(y) * w + x] = 1;
+        }
+      }
+    }
+  }
+  std::vector<int> label(in.size(), 0);
+  DrawnFolds best;
+  best.width = w;
+  best.mask.assign(in.size(), 0);
+  std::size_t best_size = 0;
+  int next = 0;
+  std::vector<std::size_t> stack;
+  for (std::size_t start = 0; start < in.size(); ++start) {
+    if (!in[start] || label[start] != 0) {
+      continue;
+    }
+    ++next;
+    std::vector<std::size_t> members;
+    stack.assign(1, start);
+    label[start] = next;
+    while (!stack.empty()) {
+      const std::size_t at = stack.back();
+      stack.pop_back();
+      members.push_back(at);
+      const int x = static_cast<int>(at % static_cast<std::size_t>(w));
+      const int y = static_cast<int>(at / static_cast<std::size_t>(w));
+      for (int dy = -1; dy <= 1; ++dy) {
+        for (int dx = -1; dx <= 1; ++dx) {
+          const int nx = x + dx, ny = y + dy;
+          if (nx < 0 || ny < 0 || nx >= w || ny >= image.height) {
+            continue;
+          }
+          const std::size_t n = static_cast<std::size_t>(ny) * w + nx;
+          if (in[n] && label[n] == 0) {
+            label[n] = next;
+            stack.push_back(n);
+          }
+        }
+      }
+    }
+    if (members.size() > best_size) {
+      best_size = members.size();
+      std::fill(best.mask.begin(), best.mask.end(), 0);
+      best.x0 = w;
+      best.y0 = image.height;
+      best.x1 = -1;
+      best.y1 = -1;
+      for (const std::size_t m : members) {
+        best.mask[m] = 1;
+        const int x = static_cast<int>(m % static_cast<std::size_t>(w));
+        const int y = static_cast<int>(m / static_cast<std::size_t>(w));
+        best.x0 = std::min(best.x0, x);
+        best.x1 = std::max(best.x1, x);
+        best.y0 = std::min(best.y0, y);
+        best.y1 = std::max(best.y1, y);
+      }
+    }
+  }
+  return best;
+}
+
+// The centres of the runs of `colour` down one column of the picture between rows y0 and y1.
+std::vector<double> run_centres(const Image& image, int x, int y0, int y1,
+                                const std::vector<std::array<int, 3>>& colours,
+                                int tolerance = 40) {
+  std::vector<double> centres;
+  int start = -1;
+  for (int y = y0; y <= y1 + 1; ++y) {
+    bool hit = false;
+    if (y <= y1) {
+      for (const auto& colour : colours) {
+        hit = hit || near_colour(image.at(x, y), colour, tolerance);
+      }
+    }
+    if (hit && start < 0) {
+      start = y;
+    } else if (!hit && start >= 0) {
+      centres.push_back(0.5 * (start + y - 1));
+      start = -1;
+    }
+  }
+  return centres;
+}
+
 class GuiTest : public foldlab::testing::TempDirTest {
  protected:
   GuiTest() : TempDirTest("foldlab_gui_") {}
@@ -102,6 +214,30 @@ class GuiTest : public foldlab::testing::TempDirTest {
     const RunResult r = foldlab::testing::run_process(kExecutable, args, dir_, environment());
     EXPECT_EQ(r.exit_status, 0) << r.err;
     return load_png(out);
+  }
+
+  // A picture with the run's --report (its layout and solution).
+  std::pair<Image, nlohmann::json> render_reported(const std::string& name,
+                                                   std::vector<std::string> args) {
+    const fs::path out = dir_ / (name + ".png");
+    args.insert(args.begin(), {"render", "--out", out.string(), "--report"});
+    const nlohmann::json report = foldlab::testing::json_output(
+        foldlab::testing::run_process(kExecutable, args, dir_, environment()));
+    return {load_png(out), report};
+  }
+
+  // The fold lines drawn in the fold plot's panel of a reported picture.
+  static DrawnFolds fold_shape(const Image& image, const nlohmann::json& report) {
+    const nlohmann::json& r = report["layout"]["panels"]["fold_plot"];
+    EXPECT_TRUE(r.is_object()) << report.dump();
+    if (!r.is_object()) {
+      return {};
+    }
+    const int x = static_cast<int>(r["x"].get<double>());
+    const int y = static_cast<int>(r["y"].get<double>());
+    return largest_shape(image, {kNegativeFold, kPositiveFold}, x, y,
+                         x + static_cast<int>(r["w"].get<double>()),
+                         y + static_cast<int>(r["h"].get<double>()));
   }
 };
 
@@ -203,16 +339,151 @@ TEST_F(GuiTest, RenderDrawsTheWholeWindowWithFoldColoursInThePlot) {
   EXPECT_GT(count_colour(image, kPositiveFold, kPlotX0, kPlotY0, kPlotX1, kPlotY1), 500);
 }
 
+// The centres of the fold lines down the column through the middle of the span, top first: one
+// run of a fold colour per line (neighbours alternate in colour, so that touching ones stay apart).
+std::vector<double> lines_down_the_middle(const Image& image, const DrawnFolds& folds,
+                                          std::array<int, 3> only = {-1, -1, -1}) {
+  const int middle = (folds.x0 + folds.x1) / 2;
+  std::vector<double> rows;
+  for (const auto& colour : {kNegativeFold, kPositiveFold}) {
+    if (only[0] >= 0 && colour != only) {
+      continue;
+    }
+    const std::vector<double> runs = run_centres(image, middle, folds.y0, folds.y1, {colour});
+    rows.insert(rows.end(), runs.begin(), runs.end());
+  }
+  std::sort(rows.begin(), rows.end());
+  return rows;
+}
+
 TEST_F(GuiTest, AnotherPresetOrParameterGivesAnotherPicture) {
-  const Image base = render("default", {});
+  const auto [base, base_report] = render_reported("default", {});
   const Image table1 =
       render("h900", {"--preset", (kPresetsDir / "paper-table1-h900.json").string()});
-  const Image taller = render("h2350", {"--set", "h=2350"});
+  const auto [taller, taller_report] = render_reported("h2350", {"--set", "h=2350"});
   EXPECT_GT(fraction_different(base, table1), 0.01);
   EXPECT_GT(fraction_different(base, taller), 0.01);
-  // h = 2350 mm has 14 folds against 8: more red in the plot.
-  EXPECT_GT(count_colour(taller, kNegativeFold, kPlotX0, kPlotY0, kPlotX1, kPlotY1),
-            count_colour(base, kNegativeFold, kPlotX0, kPlotY0, kPlotX1, kPlotY1));
+  // h = 2350 mm has 14 folds against 8: more negative (red) fold lines cross the middle of the
+  // plot, one for each odd i up to n, however much room the taller cloth leaves each line.
+  const int base_n = base_report["solution"]["n"].get<int>();
+  const int taller_n = taller_report["solution"]["n"].get<int>();
+  ASSERT_GT(taller_n, base_n);
+  const auto negative_lines = [](const Image& image, const nlohmann::json& report) {
+    return lines_down_the_middle(image, fold_shape(image, report), kNegativeFold).size();
+  };
+  EXPECT_EQ(negative_lines(base, base_report), static_cast<std::size_t>((base_n + 1) / 2));
+  EXPECT_EQ(negative_lines(taller, taller_report), static_cast<std::size_t>((taller_n + 1) / 2));
+}
+
+// The fold plot draws a mm across as many pixels as a mm down, tiled and presented. Down the
+// middle the lines cross at their depths a_i (the report's), which give the pixels per mm down
+// and where y = 0 is; the deepest line, a cos(pi x / l), crosses a row y below the supports at
+// x = ±(l / pi) acos(y / a), the outermost crossings of its colour on that row, which with the same
+// pixels per mm must be as far apart as drawn, to a pixel and a half (each crossing's centre is
+// read to half a pixel, and the row to a whole one).
+TEST_F(GuiTest, TheFoldPlotDrawsAMillimetreAsLongAcrossAsDown) {
+  const std::vector<std::vector<std::string>> runs = {
+      {"--size", "1280x800"},
+      {"--size", "1280x800", "--set", "h=2350"},
+      {"--size", "1920x1080", "--view", "present=fold_plot"},
+      {"--size", "1280x800", "--view", "present=fold_plot", "--set", "L=3000"}};
+  int k = 0;
+  for (const std::vector<std::string>& args : runs) {
+    SCOPED_TRACE(::testing::PrintToString(args));
+    const auto [image, report] = render_reported("scales" + std::to_string(k++), args);
+    const DrawnFolds folds = fold_shape(image, report);
+    std::vector<double> depths = report["solution"]["a_mm"].get<std::vector<double>>();
+    std::sort(depths.begin(), depths.end());
+    const double span_mm = report["solution"]["l_mm"].get<double>();
+    const std::vector<double> rows = lines_down_the_middle(image, folds);
+    ASSERT_EQ(rows.size(), depths.size());
+    // Least squares: row = top + px_per_mm * depth.
+    double mean_a = 0.0, mean_row = 0.0;
+    for (std::size_t i = 0; i < rows.size(); ++i) {
+      mean_a += depths[i] / static_cast<double>(rows.size());
+      mean_row += rows[i] / static_cast<double>(rows.size());
+    }
+    double sxy = 0.0, sxx = 0.0;
+    for (std::size_t i = 0; i < rows.size(); ++i) {
+      sxy += (depths[i] - mean_a) * (rows[i] - mean_row);
+      sxx += (depths[i] - mean_a) * (depths[i] - mean_a);
+    }
+    const double px_per_mm = sxy / sxx;
+    const double top = mean_row - px_per_mm * mean_a;
+    ASSERT_GT(px_per_mm, 0.0);
+    const int row = static_cast<int>(std::lround(top + 0.5 * px_per_mm * depths.back()));
+    const double row_mm = (row - top) / px_per_mm;
+    // The deepest line's runs along that row, in its own colour: its neighbours are drawn in the
+    // other one.
+    const std::vector<double> a_mm = report["solution"]["a_mm"].get<std::vector<double>>();
+    const auto deepest = std::max_element(a_mm.begin(), a_mm.end()) - a_mm.begin();
+    const std::array<int, 3> colour = deepest % 2 == 0 ? kPositiveFold : kNegativeFold;
+    std::vector<double> across;
+    int start = -1;
+    for (int x = folds.x0; x <= folds.x1 + 1; ++x) {
+      const bool hit =
+          x <= folds.x1 && folds.at(x, row) && near_colour(image.at(x, row), colour, 40);
+      if (hit && start < 0) {
+        start = x;
+      } else if (!hit && start >= 0) {
+        across.push_back(0.5 * (start + x - 1));
+        start = -1;
+      }
+    }
+    ASSERT_GE(across.size(), 2u);
+    const double half_width_mm = span_mm / std::numbers::pi * std::acos(row_mm / depths.back());
+    EXPECT_NEAR(across.back() - across.front(), 2.0 * half_width_mm * px_per_mm, 1.5)
+        << "px per mm down " << px_per_mm << ", across "
+        << (across.back() - across.front()) / (2.0 * half_width_mm);
+  }
+}
+
+// A/B in the fold plot: towards the supports every fold line runs into its neighbours, and B's
+// dashes there merged into a grey fence over A's lines. B is drawn only where its lines stand
+// apart: beside each support (the outer twentieth of the span) hardly any of B's colours, in the
+// middle of the span its dashes.
+TEST_F(GuiTest, BsDashedFoldLinesStayClearOfTheSupports) {
+  const fs::path shot = dir_ / "ab.png";
+  const fs::path script = dir_ / "ab.json";
+  // B: L = 4000 mm, h = 3000 mm (n = 17); A: h = 1400 mm, typed into the presented view's strip
+  // after the pin.
+  std::ofstream(script) << R"({"steps": [{"click": "Compare"}, {"click": "Pin as B"}, {"frames": 2},
+      {"click": "h", "at": 0.5, "ctrl": true}, {"type": "1400 mm"}, {"key": "enter"},
+      {"frames": 3}, {"expect": {"parameters.h_mm": 1400, "compare.parameters.h_mm": 3000}},
+      {"screenshot": ")" << shot.string()
+                        << R"("}]})";
+  const nlohmann::json report = foldlab::testing::json_output(foldlab::testing::run_process(
+      kExecutable,
+      {"render", "--size", "1280x800", "--set", "L=4000", "--set", "h=3000", "--view",
+       "present=fold_plot", "--play", script.string(), "--report"},
+      dir_, environment()));
+  const Image image = load_png(shot);
+  ASSERT_EQ(image.width, 1280);
+  const int b_lines = report["compare"]["solution"]["n"].get<int>() + 1;
+  EXPECT_GE(b_lines, 15) << "a fence to thin out";
+  // B's colours in the dark theme (kCompareB, kCompareBNegative).
+  const std::vector<std::array<int, 3>> b_colours = {{115, 224, 140}, {245, 158, 245}};
+  const DrawnFolds a = fold_shape(image, report);  // A and B share the span: A's ends are B's
+  const int span_px = a.x1 - a.x0;
+  ASSERT_GT(span_px, 200);
+  const auto b_pixels = [&](double from, double to) {
+    int count = 0;
+    for (int y = a.y0; y <= a.y1; ++y) {
+      for (int x = a.x0 + static_cast<int>(from * span_px);
+           x < a.x0 + static_cast<int>(to * span_px); ++x) {
+        for (const auto& colour : b_colours) {
+          count += near_colour(image.at(x, y), colour, 40);
+        }
+      }
+    }
+    return count;
+  };
+  const int middle = b_pixels(0.30, 0.70);
+  const int by_supports = b_pixels(0.0, 0.05) + b_pixels(0.95, 1.0);
+  EXPECT_GT(middle, 50 * b_lines) << "B's dashes are drawn";
+  // Per unit of width, a twentieth as much B beside the supports as in the middle at most.
+  EXPECT_LT(by_supports / 0.10, 0.05 * middle / 0.40)
+      << by_supports << " by the supports, " << middle << " in the middle";
 }
 
 TEST_F(GuiTest, NoSlackShowsNoFoldLines) {

@@ -455,14 +455,23 @@ float Explorer::presentation_bar() {
     text_height += scale * ImGui::CalcTextSize(line.c_str(), nullptr, false, available).y;
   }
   text_height += static_cast<float>(lines.size() - 1) * style.ItemSpacing.y;
-  const float height = std::floor(text_height + 2.0f * style.WindowPadding.y);
+  // The inputs under the read-out, for a "what if" without leaving the view; not over the
+  // Parameters panel itself.
+  const bool strip = layout_.presents_inputs() && layout_.presented() != Tile::parameters;
+  if (strip) {
+    text_height +=
+        style.ItemSpacing.y + panel<ParametersPanel>().strip_height(document_, available);
+  } else if (layout_.presented() != Tile::parameters) {
+    panel<ParametersPanel>().forget_slider_places();
+  }
+  const float height = std::ceil(text_height + 2.0f * style.WindowPadding.y);
   ImGui::SetNextWindowPos(ImVec2(0.0f, menu_height_), ImGuiCond_Always);
   ImGui::SetNextWindowSize(ImVec2(width, height), ImGuiCond_Always);
   const ImGuiWindowFlags flags = ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoResize |
                                  ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoCollapse |
                                  ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoScrollbar |
                                  ImGuiWindowFlags_NoScrollWithMouse;
-  if (ImGui::Begin("##presentation read-out", nullptr, flags)) {
+  if (ImGui::Begin(kPresentationWindow, nullptr, flags)) {
     renderer_.fill_window_background();
     ImGui::SetWindowFontScale(scale);
     ImGui::PushTextWrapPos(0.0f);
@@ -473,6 +482,9 @@ float Explorer::presentation_bar() {
     }
     ImGui::PopTextWrapPos();
     ImGui::SetWindowFontScale(1.0f);
+    if (strip) {
+      panel<ParametersPanel>().draw_strip(document_, status_, available);
+    }
   }
   ImGui::End();
   return menu_height_ + height;
@@ -514,6 +526,10 @@ float Explorer::main_menu() {
     }
     if (presenting && ImGui::MenuItem("Back to the tiles (Esc)")) {
       layout_.request_present(std::nullopt);
+    }
+    if (presenting && layout_.presented() != Tile::parameters &&
+        ImGui::MenuItem(layout_.presents_inputs() ? kHideInputsLabel : kShowInputsLabel)) {
+      layout_.set_presents_inputs(!layout_.presents_inputs());
     }
     ImGui::EndMainMenuBar();
   }

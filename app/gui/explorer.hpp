@@ -112,6 +112,11 @@ class Explorer {
   // Where the panels go (layout.hpp); presentation shows a read-out of n, Q and z_max above the
   // presented panel.
   Layout& layout() { return layout_; }
+  // The read-out's window over a presented panel ("presentation" is its key for playback's "in"),
+  // and the menu bar's item that shows or hides its strip of inputs.
+  static constexpr const char* kPresentationWindow = "##presentation read-out###presentation";
+  static constexpr const char* kShowInputsLabel = "Show inputs";
+  static constexpr const char* kHideInputsLabel = "Hide inputs";
   const Layout& layout() const { return layout_; }
   bool automatic_layout() const { return layout_.automatic(); }
   std::vector<std::pair<std::string, PanelRect>> panel_rects() const {

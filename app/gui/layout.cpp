@@ -64,6 +64,7 @@ void Layout::remember(RememberedSettings& settings) {
     settings.add(k.key, &(splits_.*k.split), -1.0f, 1.0f);  // negative: where the tiles put it
   }
   settings.add("automatic_layout", &automatic_);
+  settings.add("present_inputs", &presents_inputs_);
 }
 
 void Layout::present(std::optional<Tile> tile) {

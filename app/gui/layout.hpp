@@ -41,6 +41,9 @@ class Layout {
   // From a menu or a button, taking effect at the next frame's start.
   void request_present(std::optional<Tile> tile) { present_request_ = tile; }
   std::optional<Tile> presented() const { return presented_; }
+  // Whether a presented view has the strip of the cloth's inputs under its read-out (remembered).
+  bool presents_inputs() const { return presents_inputs_; }
+  void set_presents_inputs(bool shown) { presents_inputs_ = shown; }
   // "View > Reset layout": the automatic layout again, from the next frame.
   void reset();
   // True while the panels follow the window (until the user moves or resizes one).
@@ -53,7 +56,7 @@ class Layout {
   // nothing outside it.
   bool fills_window() const;
 
-  // The user's arrangement: automatic or not, and the dragged edges.
+  // The user's arrangement: automatic or not, the dragged edges, and the presented inputs' strip.
   void remember(RememberedSettings& settings);
 
  private:
@@ -71,6 +74,7 @@ class Layout {
   bool placed_valid_[kTileCount] = {};
   LayoutSplits splits_;
   std::optional<Tile> presented_;
+  bool presents_inputs_ = true;
   PanelRect presented_rect_;  // where the presented panel goes this frame
   std::optional<std::optional<Tile>> present_request_;
   // In the user's own arrangement, where a presented panel was, to put it back.

@@ -247,8 +247,12 @@ void ClothViewPanel::remember(RememberedSettings& settings) {
 bool ClothViewPanel::toolbar(PanelContext& context) {
   settings_row();
   const bool reset = ImGui::SmallButton("reset camera");
-  ImGui::SetNextItemWidth(ems(12.0f));
-  view_slider("z exaggeration", style_, kZExaggeration, "x %.1f");
+  // As long as the panel leaves room for, beside its label and (?): never cut.
+  constexpr const char* kZLabel = "z exaggeration";
+  const float z_room = ImGui::GetContentRegionAvail().x - labelled_width(0.0f, kZLabel) -
+                       ImGui::CalcTextSize(" (?)").x - 2.0f * ImGui::GetStyle().ItemSpacing.x;
+  ImGui::SetNextItemWidth(std::clamp(z_room, ems(3.0f), ems(12.0f)));
+  view_slider(kZLabel, style_, kZExaggeration, "x %.1f");
   help_marker(
       "Draws the out-of-plane depth z this many times deeper, to see the folds; the "
       "numbers are not changed.");

@@ -62,8 +62,10 @@ void compare_menu(Document& document, UiStatus& status) {
   }
 }
 
-void draw_compare_section(Document& document, UiStatus& status, const ModelStanding& standing_a) {
-  Comparison& compare = document.compare();
+namespace {
+
+// "Pin as B", and while B is pinned "Swap A and B" and "Clear B". True while B is still pinned.
+bool compare_buttons(Document& document, UiStatus& status) {
   if (ImGui::Button("Pin as B")) {
     pin_as_b(document, status);
   }
@@ -72,8 +74,8 @@ void draw_compare_section(Document& document, UiStatus& status, const ModelStand
         "Keeps this fabric (its last valid inputs and model settings) as B, drawn beside A in "
         "the plots and the 3D view, while the sliders go on changing A.");
   }
-  if (!compare.pinned()) {
-    return;
+  if (!document.compare().pinned()) {
+    return false;
   }
   same_line_if_fits(button_width("Swap A and B"));
   if (ImGui::Button("Swap A and B")) {
@@ -83,64 +85,78 @@ void draw_compare_section(Document& document, UiStatus& status, const ModelStand
   if (ImGui::Button("Clear B")) {
     clear_b(document, status);
   }
-  if (!compare.pinned()) {
-    return;  // cleared just now
+  return document.compare().pinned();  // false when cleared just now
+}
+
+// One quantity's row of the table: its values and, dimmed on a row under them, their intervals
+// when there are any (the columns stay narrow).
+void quantity_row(const char* symbol, const QuantityText& a_text, const QuantityText& b_text,
+                  const QuantityText& difference_text) {
+  ImGui::TableNextRow();
+  ImGui::TableNextColumn();
+  ImGui::TextUnformatted(symbol);
+  for (const QuantityText* cell : {&a_text, &b_text, &difference_text}) {
+    ImGui::TableNextColumn();
+    ImGui::TextUnformatted((cell->value + cell->unit).c_str());
   }
-  draw_compare_names(document);
-  const Solution& a = document.scene().solution();
-  const Solution& b = compare.solution();
-  const QuantityTexts a_texts = quantity_texts(a, standing_a);
-  const QuantityTexts b_texts = quantity_texts(b, compare.standing());
-  const QuantityTexts difference = difference_texts(a, b);
-  // A narrow Results panel scrolls the table sideways rather than cut off A − B: a header, and
-  // for each quantity its values and, when there are any, its intervals.
+  if (a_text.range.empty() && b_text.range.empty()) {
+    return;
+  }
+  ImGui::TableNextRow();
+  ImGui::TableNextColumn();
+  for (const QuantityText* cell : {&a_text, &b_text}) {
+    ImGui::TableNextColumn();
+    if (!cell->range.empty()) {
+      // " (lo–hi)" after a value; alone on its row, under the value: "lo–hi mm".
+      ImGui::TextColored(kDimText, "%s",
+                         (cell->range.substr(2, cell->range.size() - 3) + cell->unit).c_str());
+    }
+  }
+}
+
+// n, Q and z_max of A and B and A − B. A narrow Results panel scrolls the table sideways rather
+// than cut off A − B: a header, and for each quantity its values and, when there are any, its
+// intervals.
+void quantity_table(const QuantityTexts& a_texts, const QuantityTexts& b_texts,
+                    const QuantityTexts& difference) {
   const bool ranges = !a_texts.n.range.empty() || !b_texts.n.range.empty();
   const ImGuiStyle& style = ImGui::GetStyle();
   const float row_height = ImGui::GetTextLineHeight() + 2.0f * style.CellPadding.y;
   const float table_height =
       static_cast<float>(1 + (ranges ? 6 : 3)) * row_height + style.ScrollbarSize + 2.0f;
-  if (ImGui::BeginTable("A and B", 4,
-                        ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit |
-                            ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_ScrollX,
-                        ImVec2(0.0f, table_height))) {
-    // B is the fabric as it was when pinned, A is being changed: the last column is what the
-    // change did (a heavier A with one more fold reads +1).
-    for (const char* title : {"", "A", "B", "A − B\nsince pinned"}) {
-      ImGui::TableSetupColumn(title);
-    }
-    ImGui::TableHeadersRow();
-    if (ImGui::IsItemHovered()) {  // the last header drawn
-      ImGui::SetTooltip("A − B: what the change made since B was pinned");
-    }
-    // The value on one row and, dimmed under it, its interval: the columns stay narrow.
-    const auto row = [](const char* symbol, const QuantityText& a_text, const QuantityText& b_text,
-                        const QuantityText& difference_text) {
-      ImGui::TableNextRow();
-      ImGui::TableNextColumn();
-      ImGui::TextUnformatted(symbol);
-      for (const QuantityText* cell : {&a_text, &b_text, &difference_text}) {
-        ImGui::TableNextColumn();
-        ImGui::TextUnformatted((cell->value + cell->unit).c_str());
-      }
-      if (a_text.range.empty() && b_text.range.empty()) {
-        return;
-      }
-      ImGui::TableNextRow();
-      ImGui::TableNextColumn();
-      for (const QuantityText* cell : {&a_text, &b_text}) {
-        ImGui::TableNextColumn();
-        if (!cell->range.empty()) {
-          // " (lo–hi)" after a value; alone on its row, under the value: "lo–hi mm".
-          ImGui::TextColored(kDimText, "%s",
-                             (cell->range.substr(2, cell->range.size() - 3) + cell->unit).c_str());
-        }
-      }
-    };
-    row("n", a_texts.n, b_texts.n, difference.n);
-    row("Q", a_texts.Q, b_texts.Q, difference.Q);
-    row("z_max", a_texts.z_max, b_texts.z_max, difference.z_max);
-    ImGui::EndTable();
+  if (!ImGui::BeginTable("A and B", 4,
+                         ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit |
+                             ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_ScrollX,
+                         ImVec2(0.0f, table_height))) {
+    return;
   }
+  // B is the fabric as it was when pinned, A is being changed: the last column is what the
+  // change did (a heavier A with one more fold reads +1).
+  for (const char* title : {"", "A", "B", "A − B\nsince pinned"}) {
+    ImGui::TableSetupColumn(title);
+  }
+  ImGui::TableHeadersRow();
+  if (ImGui::IsItemHovered()) {  // the last header drawn
+    ImGui::SetTooltip("A − B: what the change made since B was pinned");
+  }
+  quantity_row("n", a_texts.n, b_texts.n, difference.n);
+  quantity_row("Q", a_texts.Q, b_texts.Q, difference.Q);
+  quantity_row("z_max", a_texts.z_max, b_texts.z_max, difference.z_max);
+  ImGui::EndTable();
+}
+
+}  // namespace
+
+void draw_compare_section(Document& document, UiStatus& status, const ModelStanding& standing_a) {
+  if (!compare_buttons(document, status)) {
+    return;
+  }
+  Comparison& compare = document.compare();
+  draw_compare_names(document);
+  const Solution& a = document.scene().solution();
+  const Solution& b = compare.solution();
+  quantity_table(quantity_texts(a, standing_a), quantity_texts(b, compare.standing()),
+                 difference_texts(a, b));
   if (a.regime != Regime::wrinkled || b.regime != Regime::wrinkled) {
     ImGui::PushStyleColor(ImGuiCol_Text, kNoteText);
     wrapped_text("regimes: A %s, B %s", std::string(to_string(a.regime)).c_str(),

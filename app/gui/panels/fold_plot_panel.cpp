@@ -20,6 +20,16 @@ namespace {
 // out.
 constexpr std::size_t kDashPeriod = 12;
 constexpr std::size_t kDashGap = 4;
+// Towards the supports every fold line runs into its neighbours; B's dashes there would merge
+// into a grey fence over A's lines. A dash is left out where B's line is closer to a neighbour
+// than two line widths (screen pixels, across the line).
+constexpr double kMinSeparationPx = 4.0;
+
+// How far apart two lines are on screen at one sample: the vertical gap seen across the first
+// line, whose slope there is `dy_dx_px`.
+double separation_px(double gap_y_px, double dy_dx_px) {
+  return std::abs(gap_y_px) / std::sqrt(1.0 + dy_dx_px * dy_dx_px);
+}
 
 }  // namespace
 
@@ -84,25 +94,63 @@ void FoldPlotPanel::dash_compare_lines(Document& document) {
   Comparison& compare = document.compare();
   Scene& scene = compare.scene(document.scene().grid_nx());
   const FoldLines& lines = scene.fold_lines();
+  // The last frame's scale: the lines that stand apart change as the plot zooms.
+  const PlotView& view = plot_.view();
+  const double x_px_per_mm = (view.max.x - view.min.x) / (view.x_hi - view.x_lo);
+  const double y_px_per_mm = (view.max.y - view.min.y) / (view.y_hi - view.y_lo);
   if (compare_changes_ == compare.changes() &&
-      compare_lines_version_ == scene.version(Stage::fold_lines)) {
+      compare_lines_version_ == scene.version(Stage::fold_lines) &&
+      compare_x_px_per_mm_ == x_px_per_mm && compare_y_px_per_mm_ == y_px_per_mm) {
     return;
   }
   compare_changes_ = compare.changes();
   compare_lines_version_ = scene.version(Stage::fold_lines);
+  compare_x_px_per_mm_ = x_px_per_mm;
+  compare_y_px_per_mm_ = y_px_per_mm;
   compare_xs_.assign(lines.lines.size(), {});
   compare_ys_.assign(lines.lines.size(), {});
   compare_signs_.clear();
   const double gap = std::nan("");
+  const bool scale_known = x_px_per_mm > 0.0 && y_px_per_mm > 0.0;
   for (std::size_t k = 0; k < lines.lines.size(); ++k) {
     compare_signs_.push_back(lines.lines[k].sign);
     const std::vector<Eigen::Vector3d>& points = lines.lines[k].points_mm;
     for (std::size_t i = 0; i < points.size(); ++i) {
-      const bool shown = i % kDashPeriod < kDashPeriod - kDashGap || i + 1 == points.size();
+      const bool dash = i % kDashPeriod < kDashPeriod - kDashGap || i + 1 == points.size();
+      const bool shown =
+          dash && (!scale_known || stands_apart(lines, k, i, x_px_per_mm, y_px_per_mm));
       compare_xs_[k].push_back(shown ? points[i].x() : gap);
       compare_ys_[k].push_back(shown ? points[i].y() : gap);
     }
   }
+}
+
+bool FoldPlotPanel::stands_apart(const FoldLines& lines, std::size_t k, std::size_t i,
+                                 double x_px_per_mm, double y_px_per_mm) {
+  const FoldLine& line = lines.lines[k];
+  const std::vector<Eigen::Vector3d>& points = line.points_mm;
+  // The line's slope on screen at the sample, from its neighbouring samples.
+  const std::size_t before = i == 0 ? 0 : i - 1;
+  const std::size_t after = std::min(i + 1, points.size() - 1);
+  const double dx_px = (points[after].x() - points[before].x()) * x_px_per_mm;
+  const double dy_px = (points[after].y() - points[before].y()) * y_px_per_mm;
+  const double slope = dx_px == 0.0 ? 1e9 : dy_px / dx_px;
+  // The neighbours in the same span, sampled at the same x.
+  for (const std::size_t other : {k - 1, k + 1}) {
+    if (other >= lines.lines.size() || lines.lines[other].span != line.span ||
+        lines.lines[other].points_mm.size() != points.size()) {
+      continue;
+    }
+    const double gap_px = (lines.lines[other].points_mm[i].y() - points[i].y()) * y_px_per_mm;
+    if (separation_px(gap_px, slope) < kMinSeparationPx) {
+      return false;
+    }
+  }
+  return true;
+}
+
+void FoldPlotPanel::remember(RememberedSettings& settings) {
+  settings.add("fold_plot_true_scale", &true_scale_);
 }
 
 void FoldPlotPanel::draw(PanelContext& context) {
@@ -121,6 +169,11 @@ void FoldPlotPanel::draw(PanelContext& context) {
   if (ImGui::SmallButton("autoscale")) {
     autoscale_ = true;
   }
+  same_line_if_fits(checkbox_width(kTrueScaleLabel));
+  ImGui::Checkbox(kTrueScaleLabel, &true_scale_);
+  help_marker(
+      "A mm across is as many pixels as a mm down, so that the sag looks as deep as it hangs. "
+      "Off, each axis fills the plot: shallow folds spread apart.");
   hint_after("wheel: zoom, drag: pan, double-click: autoscale");
   if (lines.stride > 1) {
     ImGui::TextColored(kDimText, "every %d-th of %d lines drawn", lines.stride, s.n + 1);
@@ -135,6 +188,9 @@ void FoldPlotPanel::draw(PanelContext& context) {
     }
     if (context.holding_frame) {
       plot_.grow_only();
+    }
+    if (true_scale_) {
+      plot_.equal_scales();
     }
     const bool compare = document.compare().pinned();
     series_.lines(plot_, scene, compare, true);

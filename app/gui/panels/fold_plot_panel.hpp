@@ -51,6 +51,10 @@ class FoldPlotPanel : public Panel {
   std::optional<Tile> tile() const override { return Tile::fold_plot; }
   // The context's photo adds its buttons, its backdrop and its clicks to the plot.
   void draw(PanelContext& context) override;
+  void remember(RememberedSettings& settings) override;
+  // Whether a mm of x is as many pixels as a mm of y (on by default: the sag as it hangs).
+  bool true_scale() const { return true_scale_; }
+  static constexpr const char* kTrueScaleLabel = "true scale";
   // Where the plot was drawn last (its data area and legend, screen pixels).
   const PlotView& plot_view() const { return plot_.view(); }
   // The fold lines of B drawn in the last frame, and their points (0 while no B is pinned).
@@ -60,11 +64,18 @@ class FoldPlotPanel : public Panel {
  private:
   Plot plot_;
   bool autoscale_ = false;
+  bool true_scale_ = true;
   FoldLineSeries series_;
-  // B's fold lines, dashed (a gap is a run of NaN points): rebuilt when B or its lines change.
+  // B's fold lines, dashed (a gap is a run of NaN points) and left out where they run into each
+  // other by the supports: rebuilt when B, its lines or the plot's scale change.
   void dash_compare_lines(Document& document);
+  // Whether sample i of B's line k is clear of its neighbours on screen at the given scale.
+  static bool stands_apart(const FoldLines& lines, std::size_t k, std::size_t i, double x_px_per_mm,
+                           double y_px_per_mm);
   std::uint64_t compare_changes_ = ~std::uint64_t{0};
   std::uint64_t compare_lines_version_ = ~std::uint64_t{0};
+  double compare_x_px_per_mm_ = 0.0;
+  double compare_y_px_per_mm_ = 0.0;
   std::vector<std::vector<double>> compare_xs_;
   std::vector<std::vector<double>> compare_ys_;
   std::vector<int> compare_signs_;

@@ -174,134 +174,172 @@ std::map<std::string, std::string> ParametersPanel::unread_reasons() const {
   return out;
 }
 
-void ParametersPanel::input_slider(PanelContext& context, const InputSpec& spec, float width) {
-  Document& document = context.document;
-  double value = spec.value(document.edited()).value_or(0.0);
+void ParametersPanel::input_slider(Document& document, UiStatus& status, const InputSpec& spec,
+                                   float width, SliderLook look) {
+  const double value = spec.value(document.edited()).value_or(0.0);
   const std::string key(spec.key);
-  const std::string label = slider_label(spec);
-  // A refused value reddens its slider; the reason goes to the foot of the panel, so that no
-  // line appears between the sliders and moves the one under the mouse.
+  // In the strip the symbol goes before the slider and the label is only its id.
+  const std::string label =
+      look == SliderLook::panel ? slider_label(spec) : "##" + slider_label(spec);
+  if (look == SliderLook::strip) {
+    ImGui::AlignTextToFramePadding();
+    ImGui::TextUnformatted(readable(input_symbol(spec)).c_str());
+    ImGui::SameLine(0.0f, ImGui::GetStyle().ItemInnerSpacing.x);
+  } else if (look == SliderLook::stacked) {
+    ImGui::TextUnformatted(slider_label(spec).c_str());
+    help_marker(std::string(spec.help).c_str());
+  }
+  // A refused value reddens its slider; the reason goes to the foot of the panel (or the strip),
+  // so that no line appears between the sliders and moves the one under the mouse.
   const bool is_refused = refused(document, spec) || unread_.contains(key);
   if (is_refused) {
     ImGui::PushStyleColor(ImGuiCol_FrameBg, kRefusedFrame);
   }
   ImGui::SetNextItemWidth(width);
-  bool changed = false;
   const ImGuiID id = ImGui::GetID(label.c_str());
-  const int escape_key = ImGui::GetKeyIndex(ImGuiKey_Escape);
-  const bool escape = escape_key >= 0 && ImGui::IsKeyPressed(escape_key, false);
-  // What is typed is read when it is done (Enter, or the field losing the text cursor), never
-  // keystroke by keystroke: typing 750 must not solve d = 7 and d = 75 on the way. Escape cancels.
-  const auto read_typed = [&] {
-    typing_id_ = 0;
-    const std::string text = trimmed(typed_);
-    if (escape || text == typing_initial_) {
-      return;
-    }
-    if (const std::optional<double> typed = parse_quantity(spec, text, shown_unit(spec).symbol)) {
-      unread_.erase(key);
-      value = *typed;
-      changed = true;
-      return;
-    }
-    // Said, not dropped: the slider going back to its value with no word looks like a fault.
-    // Kept as typed, as a refused number is, so that the person sees what was not understood.
-    std::string units;
-    for (const InputUnit& unit : input_units(spec)) {
-      units += (units.empty() ? "" : ", ") + std::string(unit.symbol);
-    }
-    const std::string reason =
-        input_title(spec) + ": \"" + detail::cut(text) + "\" is not a number" +
-        (units.empty() ? "" : " with a unit (" + units + ")") +
-        ", nor arithmetic such as 2*153; the value stays " + shown_text(spec, value) + ".";
-    unread_[key] = {detail::cut(text), reason, value};
-    context.status.notify(reason, MessageKind::error);
-  };
-  if (ImGui::TempInputIsActive(id)) {
-    // ImGui opened its text field over the slider on the Ctrl+click, with the shown text; this
-    // field, under the same id, carries on editing it without the digits-only filter, so that a
-    // unit can be typed.
-    if (typing_id_ != id) {
-      typing_id_ = id;
-      typing_initial_ = shown(document, spec);
-      std::snprintf(typed_, sizeof typed_, "%s", typing_initial_.c_str());
-    }
-    const bool enter =
-        ImGui::InputText(label.c_str(), typed_, sizeof typed_,
-                         ImGuiInputTextFlags_AutoSelectAll | ImGuiInputTextFlags_EnterReturnsTrue);
-    if (enter || ImGui::IsItemDeactivated()) {
-      read_typed();
-    }
-  } else {
-    if (typing_id_ == id) {
-      read_typed();  // a click elsewhere took the text cursor before this frame drew the field
-    }
-    const SliderReach reach =
-        context.status.expert_mode() ? SliderReach::expert : SliderReach::beginner;
-    const InputInterval range = interval(spec, document.edited(), reach);
-    // The shown text doubles as the text field's first contents on Ctrl+click, which parses
-    // back to the value with its unit.
-    std::string text = shown(document, spec);
-    for (std::size_t at = text.find('%'); at != std::string::npos; at = text.find('%', at + 2)) {
-      text.insert(at, 1, '%');
-    }
-    // A typed value off the slider's scale (w <= 0) pins the handle to the left end.
-    const double on_scale = slider_fraction(spec, range, value);
-    const double fraction = std::isnan(on_scale) ? 0.0 : std::clamp(on_scale, 0.0, 1.0);
-    double position = fraction;
-    constexpr double kZero = 0.0;
-    constexpr double kOne = 1.0;
-    const bool moved = ImGui::SliderScalar(label.c_str(), ImGuiDataType_Double, &position, &kZero,
-                                           &kOne, text.c_str(), ImGuiSliderFlags_AlwaysClamp);
-    const ImGuiIO& io = ImGui::GetIO();
-    if (ImGui::IsItemActive() && (io.KeyShift || relative_drag_id_ == id)) {
-      // ImGui's slider puts the handle under the mouse; a relative drag moves it by the mouse's
-      // movement instead, over the pixels ImGui's handle travels: the frame less 2 px of padding
-      // each side and the handle's own width.
-      relative_drag_id_ = id;
-      const float travel_px = width - 4.0f - ImGui::GetStyle().GrabMinSize;
-      const double speed = io.KeyShift ? kFineDragSpeed : 1.0;
-      position =
-          std::clamp(fraction + speed * io.MouseDelta.x / std::max(1.0f, travel_px), 0.0, 1.0);
-      if (position != fraction) {
-        value = slider_value(spec, range, position);
-        changed = true;
-      }
-    } else if (moved) {
-      value = slider_value(spec, range, position);
-      changed = true;
-    } else if (ImGui::IsItemFocused() && !ImGui::IsItemActive()) {
-      // Arrow keys nudge a focused slider by 1 % of its width (Shift: 10 %).
-      const double step = io.KeyShift ? 0.1 : 0.01;
-      const int left = ImGui::GetKeyIndex(ImGuiKey_LeftArrow);
-      const int right = ImGui::GetKeyIndex(ImGuiKey_RightArrow);
-      const double nudge = (left >= 0 && ImGui::IsKeyPressed(left))     ? -step
-                           : (right >= 0 && ImGui::IsKeyPressed(right)) ? step
-                                                                        : 0.0;
-      if (nudge != 0.0) {
-        value = slider_value(spec, range, std::clamp(fraction + nudge, 0.0, 1.0));
-        changed = true;
-      }
-    }
-    if (relative_drag_id_ == id && !ImGui::IsItemActive()) {
-      relative_drag_id_ = 0;
-    }
-    // The item's rectangle includes its label; the slider's own frame is `width` wide.
-    const ImVec2 min = ImGui::GetItemRectMin();
-    places_[key] =
-        SliderPlace{min, ImVec2(min.x + width, min.y + ImGui::GetFrameHeight()), fraction};
-  }
+  const std::optional<double> changed =
+      ImGui::TempInputIsActive(id) ? typed_field(document, status, spec, label, id, value)
+                                   : slider_field(document, status, spec, label, id, width, value);
   if (changed) {
     unread_.erase(key);
     // A drag stays open until the slider lets go (the frame closes the step); a typed value or
     // an arrow key's nudge is a step of its own.
-    Edit edit = Edit::input(key, value);
+    Edit edit = Edit::input(key, *changed);
     document.apply(ImGui::IsItemActive() ? std::move(edit).open() : edit);
   }
   if (is_refused) {
     ImGui::PopStyleColor();
   }
-  help_marker(std::string(spec.help).c_str());
+  if (look == SliderLook::panel) {
+    help_marker(std::string(spec.help).c_str());
+  } else if (look == SliderLook::strip && ImGui::IsItemHovered() && !ImGui::IsItemActive()) {
+    ImGui::SetTooltip("%s\n%s", readable(slider_label(spec)).c_str(), readable(spec.help).c_str());
+  }
+}
+
+std::optional<double> ParametersPanel::read_typed(UiStatus& status, const InputSpec& spec,
+                                                  double value) {
+  typing_id_ = 0;
+  const int escape_key = ImGui::GetKeyIndex(ImGuiKey_Escape);
+  const bool escape = escape_key >= 0 && ImGui::IsKeyPressed(escape_key, false);
+  const std::string text = trimmed(typed_);
+  if (escape || text == typing_initial_) {
+    return std::nullopt;
+  }
+  const std::string key(spec.key);
+  if (const std::optional<double> typed = parse_quantity(spec, text, shown_unit(spec).symbol)) {
+    unread_.erase(key);
+    return typed;
+  }
+  // Said, not dropped: the slider going back to its value with no word looks like a fault.
+  // Kept as typed, as a refused number is, so that the person sees what was not understood.
+  std::string units;
+  for (const InputUnit& unit : input_units(spec)) {
+    units += (units.empty() ? "" : ", ") + std::string(unit.symbol);
+  }
+  const std::string reason = input_title(spec) + ": \"" + detail::cut(text) + "\" is not a number" +
+                             (units.empty() ? "" : " with a unit (" + units + ")") +
+                             ", nor arithmetic such as 2*153; the value stays " +
+                             shown_text(spec, value) + ".";
+  unread_[key] = {detail::cut(text), reason, value};
+  status.notify(reason, MessageKind::error);
+  return std::nullopt;
+}
+
+std::optional<double> ParametersPanel::typed_field(Document& document, UiStatus& status,
+                                                   const InputSpec& spec, const std::string& label,
+                                                   ImGuiID id, double value) {
+  // ImGui opened its text field over the slider on the Ctrl+click, with the shown text; this
+  // field, under the same id, carries on editing it without the digits-only filter, so that a
+  // unit can be typed. What is typed is read when it is done (Enter, or the field losing the
+  // text cursor), never keystroke by keystroke: typing 750 must not solve d = 7 and d = 75 on the
+  // way. Escape cancels.
+  if (typing_id_ != id) {
+    typing_id_ = id;
+    typing_initial_ = shown(document, spec);
+    std::snprintf(typed_, sizeof typed_, "%s", typing_initial_.c_str());
+  }
+  const bool enter =
+      ImGui::InputText(label.c_str(), typed_, sizeof typed_,
+                       ImGuiInputTextFlags_AutoSelectAll | ImGuiInputTextFlags_EnterReturnsTrue);
+  if (enter || ImGui::IsItemDeactivated()) {
+    return read_typed(status, spec, value);
+  }
+  return std::nullopt;
+}
+
+std::optional<double> ParametersPanel::slider_field(Document& document, UiStatus& status,
+                                                    const InputSpec& spec, const std::string& label,
+                                                    ImGuiID id, float width, double value) {
+  std::optional<double> changed;
+  if (typing_id_ == id) {
+    // A click elsewhere took the text cursor before this frame drew the field.
+    changed = read_typed(status, spec, value);
+    value = changed.value_or(value);
+  }
+  const SliderReach reach = status.expert_mode() ? SliderReach::expert : SliderReach::beginner;
+  const InputInterval range = interval(spec, document.edited(), reach);
+  // The shown text doubles as the text field's first contents on Ctrl+click, which parses
+  // back to the value with its unit.
+  std::string text = shown(document, spec);
+  for (std::size_t at = text.find('%'); at != std::string::npos; at = text.find('%', at + 2)) {
+    text.insert(at, 1, '%');
+  }
+  // A typed value off the slider's scale (w <= 0) pins the handle to the left end.
+  const double on_scale = slider_fraction(spec, range, value);
+  const double fraction = std::isnan(on_scale) ? 0.0 : std::clamp(on_scale, 0.0, 1.0);
+  double position = fraction;
+  constexpr double kZero = 0.0;
+  constexpr double kOne = 1.0;
+  const bool moved = ImGui::SliderScalar(label.c_str(), ImGuiDataType_Double, &position, &kZero,
+                                         &kOne, text.c_str(), ImGuiSliderFlags_AlwaysClamp);
+  const ImGuiIO& io = ImGui::GetIO();
+  std::optional<double> to_position;
+  if (ImGui::IsItemActive() && (io.KeyShift || relative_drag_id_ == id)) {
+    relative_drag_id_ = id;
+    to_position = relative_drag(fraction, width);
+  } else if (moved) {
+    to_position = position;
+  } else if (ImGui::IsItemFocused() && !ImGui::IsItemActive()) {
+    to_position = arrow_nudge(fraction);
+  }
+  if (to_position) {
+    changed = slider_value(spec, range, *to_position);
+  }
+  if (relative_drag_id_ == id && !ImGui::IsItemActive()) {
+    relative_drag_id_ = 0;
+  }
+  // The item's rectangle includes its label; the slider's own frame is `width` wide.
+  const ImVec2 min = ImGui::GetItemRectMin();
+  places_[std::string(spec.key)] =
+      SliderPlace{min, ImVec2(min.x + width, min.y + ImGui::GetFrameHeight()), fraction};
+  return changed;
+}
+
+std::optional<double> ParametersPanel::relative_drag(double fraction, float width) const {
+  // ImGui's slider puts the handle under the mouse; a relative drag moves it by the mouse's
+  // movement instead, over the pixels ImGui's handle travels: the frame less 2 px of padding
+  // each side and the handle's own width.
+  const ImGuiIO& io = ImGui::GetIO();
+  const float travel_px = width - 4.0f - ImGui::GetStyle().GrabMinSize;
+  const double speed = io.KeyShift ? kFineDragSpeed : 1.0;
+  const double position =
+      std::clamp(fraction + speed * io.MouseDelta.x / std::max(1.0f, travel_px), 0.0, 1.0);
+  return position != fraction ? std::optional<double>(position) : std::nullopt;
+}
+
+std::optional<double> ParametersPanel::arrow_nudge(double fraction) const {
+  // Shift gives the fine step, as it gives the fine drag.
+  const double step = ImGui::GetIO().KeyShift ? kArrowStep * kFineDragSpeed : kArrowStep;
+  const int left = ImGui::GetKeyIndex(ImGuiKey_LeftArrow);
+  const int right = ImGui::GetKeyIndex(ImGuiKey_RightArrow);
+  const double nudge = (left >= 0 && ImGui::IsKeyPressed(left))     ? -step
+                       : (right >= 0 && ImGui::IsKeyPressed(right)) ? step
+                                                                    : 0.0;
+  if (nudge == 0.0) {
+    return std::nullopt;
+  }
+  return std::clamp(fraction + nudge, 0.0, 1.0);
 }
 
 void ParametersPanel::play_frame(Document& document) {
@@ -314,9 +352,8 @@ void ParametersPanel::play_frame(Document& document) {
   document.apply(Edit::input(animate_key_, animation_->at(animation_ways_)).open());
 }
 
-void ParametersPanel::animation_row(PanelContext& context,
+void ParametersPanel::animation_row(Document& document, UiStatus& status,
                                     const std::vector<const InputSpec*>& sliders) {
-  Document& document = context.document;
   ImGui::AlignTextToFramePadding();
   ImGui::TextUnformatted("animate");
   ImGui::SameLine();
@@ -345,9 +382,8 @@ void ParametersPanel::animation_row(PanelContext& context,
       // input carries on where it paused, over the range typed for it.
       const bool resuming = animation_ && animation_->key() == animate_key_;
       try {
-        AnimatedInput fresh(
-            animate_key_, document.edited(),
-            context.status.expert_mode() ? SliderReach::expert : SliderReach::beginner);
+        AnimatedInput fresh(animate_key_, document.edited(),
+                            status.expert_mode() ? SliderReach::expert : SliderReach::beginner);
         if (resuming) {
           fresh.set_range(range_lo_, range_hi_);
         } else {
@@ -383,24 +419,54 @@ void ParametersPanel::animation_row(PanelContext& context,
 
 void ParametersPanel::draw(PanelContext& context) {
   Document& document = context.document;
+  UiStatus& status = context.status;
   play_frame(document);  // before the sliders, so that they show this frame's value
-  // Typed text that was no value stays on its slider until the value changes by other means.
-  std::erase_if(unread_, [&](const auto& entry) {
-    return find_input(entry.first)->value(document.edited()) != entry.second.value;
-  });
+  forget_unread_of_changed_values(document);
   const bool unsaved = document.unsaved();
   if (!begin(context.renderer, unsaved ? " *" : "")) {
     ImGui::End();
     return;
   }
+  header_rows(document, status);
+  ImGui::Separator();
+  const std::vector<const InputSpec*> sliders = shown_sliders(status);
+  const float width = slider_width(sliders);
+  // Where the longest label leaves a slider too short beside it (a large text size in a narrow
+  // column), each label goes over its slider, which takes the whole width: no label is cut.
+  const float beside = ImGui::GetContentRegionAvail().x - longest_label_width(sliders);
+  const bool stacked = beside < ems(kMinSliderEms);
+  slider_rows(document, status, sliders, stacked ? ImGui::GetContentRegionAvail().x : width,
+              stacked ? SliderLook::stacked : SliderLook::panel);
+  animation_row(document, status, sliders);
+  ImGui::Separator();
+  shape_rows(document, status, width);
+  if (status.expert_mode()) {
+    expert_rows(document, width);
+  }
+  if (!refusal_lines(document).empty()) {
+    ImGui::Separator();
+    draw_refusals(document);
+  }
+  ImGui::End();
+}
+
+void ParametersPanel::forget_unread_of_changed_values(const Document& document) {
+  // Typed text that was no value stays on its slider until the value changes by other means.
+  std::erase_if(unread_, [&](const auto& entry) {
+    return find_input(entry.first)->value(document.edited()) != entry.second.value;
+  });
+}
+
+void ParametersPanel::header_rows(Document& document, UiStatus& status) {
+  const bool unsaved = document.unsaved();
   ImGui::TextColored(kDimText, "%s%s", document.loaded().name.c_str(),
                      unsaved ? " (unsaved changes)" : "");
   if (ImGui::Button("Reset to preset")) {
     document.reset_to_loaded();
   }
   ImGui::SameLine();
-  if (bool expert = context.status.expert_mode(); ImGui::Checkbox(kExpertLabel, &expert)) {
-    context.status.set_expert_mode(expert);
+  if (bool expert = status.expert_mode(); ImGui::Checkbox(kExpertLabel, &expert)) {
+    status.set_expert_mode(expert);
   }
   help_marker(
       "Beginners see the cloth (t, E, w, h, L, d) and its shape; experts also the model's "
@@ -416,42 +482,57 @@ void ParametersPanel::draw(PanelContext& context) {
       "The paper's method and Conci's eq. 7 as printed: p = 1, K = c/(1 − ν²) = 29.56 (c = 26.9 "
       "at ν = 0.3).");
   hint_after(printed ? "in use" : "Ctrl+click a slider to type");
-  ImGui::Separator();
+}
 
-  // Sliders leave room on their right for the longest label and its (?) marker.
+std::vector<const InputSpec*> ParametersPanel::shown_sliders(const UiStatus& status) {
   std::vector<const InputSpec*> sliders;
-  float label_width = ImGui::CalcTextSize("span rule").x;
   for (const std::string& key : sweepable_keys()) {
     const InputSpec* spec = find_input(key);
-    if (spec->expert && !context.status.expert_mode()) {
+    if (spec->expert && !status.expert_mode()) {
       places_.erase(key);  // playback must not press what is no longer there
       continue;
     }
     sliders.push_back(spec);
+  }
+  return sliders;
+}
+
+float ParametersPanel::longest_label_width(const std::vector<const InputSpec*>& sliders) const {
+  // Sliders leave room on their right for the longest label and its (?) marker.
+  float label_width = ImGui::CalcTextSize("span rule").x;
+  for (const InputSpec* spec : sliders) {
     label_width = std::max(label_width, ImGui::CalcTextSize(slider_label(*spec).c_str()).x);
   }
   const ImGuiStyle& style = ImGui::GetStyle();
-  const float width = std::max(
-      ems(6.0f), ImGui::GetContentRegionAvail().x - label_width - ImGui::CalcTextSize(" (?)").x -
-                     2.0f * style.ItemInnerSpacing.x - style.ItemSpacing.x);
+  return label_width + ImGui::CalcTextSize(" (?)").x + 2.0f * style.ItemInnerSpacing.x +
+         style.ItemSpacing.x;
+}
+
+float ParametersPanel::slider_width(const std::vector<const InputSpec*>& sliders) const {
+  return std::max(ems(6.0f), ImGui::GetContentRegionAvail().x - longest_label_width(sliders));
+}
+
+void ParametersPanel::slider_rows(Document& document, UiStatus& status,
+                                  const std::vector<const InputSpec*>& sliders, float width,
+                                  SliderLook look) {
   for (const InputSpec* spec : sliders) {
-    input_slider(context, *spec, width);
+    input_slider(document, status, *spec, width, look);
     if (spec->key == "w") {
       const double w = document.edited().fabric.weight_N_per_mm2;
       ImGui::TextColored(kDimText, "    = %.3g oz/yd² = %.4g N/mm²",
                          w / input_units(*spec)[2].per_unit, w);
     }
   }
-  if (context.status.expert_mode()) {
+  if (status.expert_mode()) {
     ImGui::TextColored(kDimText, "    c = %.4g (load-condition constant)",
                        document.edited().model.load_constant_c);
-    input_slider(context, *find_input("p"), width);
+    input_slider(document, status, *find_input("p"), width, look);
   } else {
     places_.erase("p");
   }
-  animation_row(context, sliders);
+}
 
-  ImGui::Separator();
+void ParametersPanel::shape_rows(Document& document, UiStatus& status, float width) {
   const InputSpec& shape = *find_input("shape");
   choice_combo(document, shape, width);
   if (document.edited().shape.kind == ShapeKind::strip) {
@@ -465,37 +546,102 @@ void ParametersPanel::draw(PanelContext& context) {
     }
     help_marker(std::string(supports.help).c_str());
   } else if (document.edited().shape.kind == ShapeKind::inclined) {
-    input_slider(context, *find_input("incline_deg"), width);
+    input_slider(document, status, *find_input("incline_deg"), width, SliderLook::panel);
   }
-  if (context.status.expert_mode()) {
-    law_combo(document, width);
-    for (const char* key : kChoiceKeys) {
-      choice_combo(document, *find_input(key), width);
-    }
-    int grid = document.scene().grid_nx();
-    ImGui::SetNextItemWidth(width);
-    if (ImGui::SliderInt("grid", &grid, 8, 512, "%d per side", ImGuiSliderFlags_AlwaysClamp)) {
-      document.set_grid_resolution(grid);
-    }
-    help_marker(
-        "Resolution of the 3D cloth mesh (vertices per side). Changing it does not re-solve.");
+}
+
+void ParametersPanel::expert_rows(Document& document, float width) {
+  law_combo(document, width);
+  for (const char* key : kChoiceKeys) {
+    choice_combo(document, *find_input(key), width);
   }
-  if (!document.issues().empty() || !unread_.empty()) {
-    ImGui::Separator();
-    ImGui::PushStyleColor(ImGuiCol_Text, kErrorText);
-    if (!document.issues().empty()) {
-      wrapped_text("%zu input(s) refused: the views show the last valid state.",
-                   document.issues().size());
-    }
-    for (const ValidationIssue& issue : document.issues()) {
-      wrapped_text("%s", readable(issue.message).c_str());
-    }
-    for (const auto& [key, unread] : unread_) {
-      wrapped_text("%s", readable(unread.reason).c_str());
-    }
-    ImGui::PopStyleColor();
+  int grid = document.scene().grid_nx();
+  ImGui::SetNextItemWidth(width);
+  if (ImGui::SliderInt("grid", &grid, 8, 512, "%d per side", ImGuiSliderFlags_AlwaysClamp)) {
+    document.set_grid_resolution(grid);
   }
-  ImGui::End();
+  help_marker(
+      "Resolution of the 3D cloth mesh (vertices per side). Changing it does not re-solve.");
+}
+
+std::vector<std::string> ParametersPanel::refusal_lines(const Document& document) const {
+  std::vector<std::string> lines;
+  if (!document.issues().empty()) {
+    lines.push_back(detail::printf_string(
+        "%zu input(s) refused: the views show the last valid state.", document.issues().size()));
+  }
+  for (const ValidationIssue& issue : document.issues()) {
+    lines.push_back(readable(issue.message));
+  }
+  for (const auto& [key, unread] : unread_) {
+    lines.push_back(readable(unread.reason));
+  }
+  return lines;
+}
+
+void ParametersPanel::draw_refusals(const Document& document) const {
+  ImGui::PushStyleColor(ImGuiCol_Text, kErrorText);
+  for (const std::string& line : refusal_lines(document)) {
+    wrapped_text("%s", line.c_str());
+  }
+  ImGui::PopStyleColor();
+}
+
+// The strip's cells: as many to a row as give each slider room for its value and unit.
+int ParametersPanel::strip_columns(float width) const {
+  const float cell =
+      strip_symbol_width() + ImGui::GetStyle().ItemInnerSpacing.x + ems(kStripSliderEms);
+  const float spacing = ImGui::GetStyle().ItemSpacing.x;
+  const int count = static_cast<int>(std::size(kStripKeys));
+  const int fit = std::clamp(static_cast<int>((width + spacing) / (cell + spacing)), 1, count);
+  // As few rows as fit, filled evenly (three and three rather than four and two).
+  const int rows = (count + fit - 1) / fit;
+  return (count + rows - 1) / rows;
+}
+
+float ParametersPanel::strip_symbol_width() const {
+  float widest = 0.0f;
+  for (const char* key : kStripKeys) {
+    widest =
+        std::max(widest, ImGui::CalcTextSize(readable(input_symbol(*find_input(key))).c_str()).x);
+  }
+  return widest;
+}
+
+float ParametersPanel::strip_height(const Document& document, float width) const {
+  const int count = static_cast<int>(std::size(kStripKeys));
+  const int columns = strip_columns(width);
+  const int rows = (count + columns - 1) / columns;
+  const float spacing = ImGui::GetStyle().ItemSpacing.y;
+  float height =
+      static_cast<float>(rows) * ImGui::GetFrameHeight() + static_cast<float>(rows - 1) * spacing;
+  for (const std::string& line : refusal_lines(document)) {
+    height += spacing + ImGui::CalcTextSize(line.c_str(), nullptr, false, width).y;
+  }
+  return height;
+}
+
+void ParametersPanel::draw_strip(Document& document, UiStatus& status, float width) {
+  forget_unread_of_changed_values(document);
+  places_.clear();  // only the strip's sliders are there to press
+  const int count = static_cast<int>(std::size(kStripKeys));
+  const int columns = strip_columns(width);
+  const ImGuiStyle& style = ImGui::GetStyle();
+  const float cell =
+      (width - static_cast<float>(columns - 1) * style.ItemSpacing.x) / static_cast<float>(columns);
+  const float symbol = strip_symbol_width();
+  for (int i = 0; i < count; ++i) {
+    const InputSpec& spec = *find_input(kStripKeys[i]);
+    if (i % columns != 0) {
+      ImGui::SameLine();
+    }
+    // The symbols right-aligned in their column, so that the sliders line up across rows.
+    const float symbol_width = ImGui::CalcTextSize(readable(input_symbol(spec)).c_str()).x;
+    ImGui::SetCursorPosX(ImGui::GetCursorPosX() + symbol - symbol_width);
+    input_slider(document, status, spec, cell - symbol - style.ItemInnerSpacing.x,
+                 SliderLook::strip);
+  }
+  draw_refusals(document);
 }
 
 }  // namespace foldlab::gui

@@ -56,6 +56,17 @@ class ParametersPanel : public Panel {
   static constexpr const char* kPauseLabel = "pause";
   static constexpr const char* kPrintedEq7Label = "Conci's eq. 7 as printed";
   static constexpr double kFineDragSpeed = 0.1;
+  // An arrow key moves a focused slider's handle by this part of its width (Shift: a tenth).
+  static constexpr double kArrowStep = 0.01;
+
+  // The strip over a presented view: the cloth's six inputs as compact sliders (the panel's own,
+  // with their typed values, units, keys and refusals), as many to a row as fit `width`.
+  static constexpr const char* kStripKeys[] = {"t", "E", "w", "h", "L", "d"};
+  void draw_strip(Document& document, UiStatus& status, float width);
+  // The strip's height at `width`: its rows and the reasons for refused values under them.
+  float strip_height(const Document& document, float width) const;
+  // No slider is shown (a presented view without the strip): playback presses none.
+  void forget_slider_places() { places_.clear(); }
 
   // What a slider shows: its value in the shown unit, or text typed into it that is no value.
   std::string shown(const Document& document, const InputSpec& spec) const;
@@ -63,9 +74,47 @@ class ParametersPanel : public Panel {
   std::map<std::string, std::string> unread_reasons() const;
 
  private:
-  void input_slider(PanelContext& context, const InputSpec& spec, float width);
+  // How a slider is drawn: in the panel its label and (?) after it (stacked: on a line over it,
+  // when the panel is too narrow for both); in the strip its symbol before it and its help when
+  // hovered.
+  enum class SliderLook { panel, stacked, strip };
+  static constexpr float kMinSliderEms = 7.0f;    // shorter beside its label, a slider is stacked
+  static constexpr float kStripSliderEms = 7.5f;  // room for "10194 g/m²"
+  // One slider of the input table; a change goes to the document as an edit.
+  void input_slider(Document& document, UiStatus& status, const InputSpec& spec, float width,
+                    SliderLook look);
+  // The steps of a slider: the text field a Ctrl+click opens, the slider itself, and the value
+  // each gives when changed.
+  std::optional<double> typed_field(Document& document, UiStatus& status, const InputSpec& spec,
+                                    const std::string& label, ImGuiID id, double value);
+  std::optional<double> slider_field(Document& document, UiStatus& status, const InputSpec& spec,
+                                     const std::string& label, ImGuiID id, float width,
+                                     double value);
+  // The typed text read with its unit; text that is no value is kept and said, and gives none.
+  std::optional<double> read_typed(UiStatus& status, const InputSpec& spec, double value);
+  // Where a Shift drag or an arrow key moves the handle (0 to 1 of the slider), if anywhere.
+  std::optional<double> relative_drag(double fraction, float width) const;
+  std::optional<double> arrow_nudge(double fraction) const;
+
+  // The panel's rows, top to bottom.
+  void forget_unread_of_changed_values(const Document& document);
+  void header_rows(Document& document, UiStatus& status);
+  std::vector<const InputSpec*> shown_sliders(const UiStatus& status);
+  // The room the longest label and its (?) take right of a slider, and the slider's width.
+  float longest_label_width(const std::vector<const InputSpec*>& sliders) const;
+  float slider_width(const std::vector<const InputSpec*>& sliders) const;
+  void slider_rows(Document& document, UiStatus& status,
+                   const std::vector<const InputSpec*>& sliders, float width, SliderLook look);
+  void shape_rows(Document& document, UiStatus& status, float width);
+  void expert_rows(Document& document, float width);
+  // The reasons for refused inputs and unread text, at the panel's foot and under the strip.
+  std::vector<std::string> refusal_lines(const Document& document) const;
+  void draw_refusals(const Document& document) const;
+  int strip_columns(float width) const;
+  float strip_symbol_width() const;
   // The play row: which input, play/pause, and the range it sweeps.
-  void animation_row(PanelContext& context, const std::vector<const InputSpec*>& sliders);
+  void animation_row(Document& document, UiStatus& status,
+                     const std::vector<const InputSpec*>& sliders);
   // While playing: the next frame's value, one open edit for the whole animation.
   void play_frame(Document& document);
 

@@ -155,6 +155,23 @@ void ResultsPanel::draw(PanelContext& context) {
     return;
   }
   stale_mark(document);
+  draw_refusal(document);
+  const ModelStanding& model = standing(document);
+  draw_compare_section(document, context.status, model);
+  draw_regime(document, model, context.status.expert_mode());
+  draw_range_note(model);
+  draw_table(rows(document, context.status.expert_mode()));
+  const Solution& s = document.scene().solution();
+  if (s.n_capped) {
+    ImGui::PushStyleColor(ImGuiCol_Text, kNoteText);
+    wrapped_text("n is capped: eq. 10 asks for more.");
+    ImGui::PopStyleColor();
+  }
+  draw_amplitudes(s, context.status.expert_mode());
+  ImGui::End();
+}
+
+void ResultsPanel::draw_refusal(const Document& document) const {
   // The reason for a refusal is also given at the foot of the Parameters panel, which a small
   // window or the expert settings may scroll out of view; here it is always at the top.
   if (const std::optional<std::string> refusal = document.refusal()) {
@@ -163,25 +180,28 @@ void ResultsPanel::draw(PanelContext& context) {
                  readable(*refusal).c_str());
     ImGui::PopStyleColor();
   }
-  const ModelStanding& model = standing(document);
-  draw_compare_section(document, context.status, model);
+}
+
+void ResultsPanel::draw_regime(Document& document, const ModelStanding& model, bool expert) const {
   Scene& scene = document.scene();
   const Solution& s = scene.solution();
-  const bool expert = context.status.expert_mode();
   if (!expert) {
     const RegimeInfo& regime = regime_info(s.regime);
     wrapped_text("%s: %s", std::string(regime.label).c_str(), std::string(regime.plain).c_str());
-  } else {
-    ImGui::Text("Regime: %s", std::string(to_string(s.regime)).c_str());
-    if (const std::string message = describe(s, scene.parameters()); !message.empty()) {
-      ImGui::PushStyleColor(ImGuiCol_Text, s.regime == Regime::wrinkled ? kDimText : kNoteText);
-      wrapped_text("%s", message.c_str());
-      ImGui::PopStyleColor();
-    }
-    ImGui::PushStyleColor(ImGuiCol_Text, kDimText);
-    wrapped_text("model: %s", model.label.c_str());
+    return;
+  }
+  ImGui::Text("Regime: %s", std::string(to_string(s.regime)).c_str());
+  if (const std::string message = describe(s, scene.parameters()); !message.empty()) {
+    ImGui::PushStyleColor(ImGuiCol_Text, s.regime == Regime::wrinkled ? kDimText : kNoteText);
+    wrapped_text("%s", message.c_str());
     ImGui::PopStyleColor();
   }
+  ImGui::PushStyleColor(ImGuiCol_Text, kDimText);
+  wrapped_text("model: %s", model.label.c_str());
+  ImGui::PopStyleColor();
+}
+
+void ResultsPanel::draw_range_note(const ModelStanding& model) const {
   if (model.range) {
     ImGui::PushStyleColor(ImGuiCol_Text, kDimText);
     wrapped_text("(brackets: %.0f %% prediction intervals, hover for how often they held)",
@@ -191,45 +211,43 @@ void ResultsPanel::draw(PanelContext& context) {
   if (ImGui::IsItemHovered()) {
     ImGui::SetTooltip("intervals of n, Q and z_max: %s", model.range_basis.c_str());
   }
-  draw_table(rows(document, expert));
-  if (s.n_capped) {
-    ImGui::PushStyleColor(ImGuiCol_Text, kNoteText);
-    wrapped_text("n is capped: eq. 10 asks for more.");
-    ImGui::PopStyleColor();
-  }
+}
+
+void ResultsPanel::draw_amplitudes(const Solution& s, bool expert) const {
   // The a_i are how far down each fold line reaches at the centre: a beginner's fold depths.
-  if (!s.a_mm.empty() && ImGui::CollapsingHeader(expert ? "fold amplitudes a_i###amplitudes"
+  if (s.a_mm.empty() || !ImGui::CollapsingHeader(expert ? "fold amplitudes a_i###amplitudes"
                                                         : "fold depths a_i###amplitudes",
                                                  ImGuiTreeNodeFlags_DefaultOpen)) {
-    if (ImGui::BeginTable(
-            "amplitudes", 3,
-            ImGuiTableFlags_RowBg | ImGuiTableFlags_ScrollY | ImGuiTableFlags_BordersInnerV,
-            ImVec2(0.0f, std::max(80.0f, ImGui::GetContentRegionAvail().y)))) {
-      ImGui::TableSetupScrollFreeze(0, 1);
-      ImGui::TableSetupColumn("i");
-      ImGui::TableSetupColumn("a_i (mm)");
-      ImGui::TableSetupColumn("fold");
-      ImGui::TableHeadersRow();
-      ImGuiListClipper clipper;
-      clipper.Begin(static_cast<int>(s.a_mm.size()));
-      while (clipper.Step()) {
-        for (int i = clipper.DisplayStart; i < clipper.DisplayEnd; ++i) {
-          ImGui::TableNextRow();
-          ImGui::TableSetColumnIndex(0);
-          ImGui::Text("%d%s", i, i == 0 ? " (lower)" : (i == s.n ? " (upper edge)" : ""));
-          ImGui::TableSetColumnIndex(1);
-          ImGui::Text("%.2f", s.a_mm[static_cast<std::size_t>(i)]);
-          ImGui::TableSetColumnIndex(2);
-          const bool negative = fold_sign(i) < 0;
-          const FoldColours colours = fold_colours(style_is_light());
-          ImGui::TextColored(negative ? colours.negative : colours.positive,
-                             negative ? "negative" : "positive");
-        }
-      }
-      ImGui::EndTable();
+    return;
+  }
+  if (!ImGui::BeginTable(
+          "amplitudes", 3,
+          ImGuiTableFlags_RowBg | ImGuiTableFlags_ScrollY | ImGuiTableFlags_BordersInnerV,
+          ImVec2(0.0f, std::max(80.0f, ImGui::GetContentRegionAvail().y)))) {
+    return;
+  }
+  ImGui::TableSetupScrollFreeze(0, 1);
+  ImGui::TableSetupColumn("i");
+  ImGui::TableSetupColumn("a_i (mm)");
+  ImGui::TableSetupColumn("fold");
+  ImGui::TableHeadersRow();
+  const FoldColours colours = fold_colours(style_is_light());
+  ImGuiListClipper clipper;
+  clipper.Begin(static_cast<int>(s.a_mm.size()));
+  while (clipper.Step()) {
+    for (int i = clipper.DisplayStart; i < clipper.DisplayEnd; ++i) {
+      ImGui::TableNextRow();
+      ImGui::TableSetColumnIndex(0);
+      ImGui::Text("%d%s", i, i == 0 ? " (lower)" : (i == s.n ? " (upper edge)" : ""));
+      ImGui::TableSetColumnIndex(1);
+      ImGui::Text("%.2f", s.a_mm[static_cast<std::size_t>(i)]);
+      ImGui::TableSetColumnIndex(2);
+      const bool negative = fold_sign(i) < 0;
+      ImGui::TextColored(negative ? colours.negative : colours.positive,
+                         negative ? "negative" : "positive");
     }
   }
-  ImGui::End();
+  ImGui::EndTable();
 }
 
 }  // namespace foldlab::gui

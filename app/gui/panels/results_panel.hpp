@@ -43,7 +43,13 @@ class ResultsPanel : public Panel {
   };
   // A beginner's rows are n, Q and z_max; an expert's add how the solver got there.
   std::vector<Row> rows(Document& document, bool expert);
+  // The panel's parts, top to bottom: the reason for a refusal, the regime (and for experts the
+  // solver's message and the model), the note on the ranges, the table and the a_i.
+  void draw_refusal(const Document& document) const;
+  void draw_regime(Document& document, const ModelStanding& model, bool expert) const;
+  void draw_range_note(const ModelStanding& model) const;
   void draw_table(const std::vector<Row>& rows) const;
+  void draw_amplitudes(const Solution& s, bool expert) const;
   const ModelStanding& standing(Document& document);
 
   std::uint64_t standing_version_ = ~std::uint64_t{0};
