@@ -66,101 +66,142 @@ bool holds(const json& got, const json& wanted) {
   return got == wanted;
 }
 
+// The font's glyphs by the texture coordinates of their top-left corner: a glyph's quad in the
+// draw data is recognised by them.
+class GlyphsByUv {
+ public:
+  explicit GlyphsByUv(const ImFont& font) {
+    for (const ImFontGlyph& g : font.Glyphs) {
+      if (g.Visible) {
+        by_uv_.emplace(key(g.U0, g.V0), &g);
+      }
+    }
+  }
+
+  const ImFontGlyph* find(const ImVec2& uv) const {
+    const auto found = by_uv_.find(key(uv.x, uv.y));
+    return found == by_uv_.end() ? nullptr : found->second;
+  }
+
+ private:
+  static std::uint64_t key(float u, float v) {
+    return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(u * 1e6f)) << 32) |
+           static_cast<std::uint32_t>(v * 1e6f);
+  }
+
+  std::unordered_map<std::uint64_t, const ImFontGlyph*> by_uv_;
+};
+
+void append_utf8(std::string& text, unsigned c) {
+  if (c < 0x80) {
+    text += static_cast<char>(c);
+  } else if (c < 0x800) {
+    text += static_cast<char>(0xC0 | (c >> 6));
+    text += static_cast<char>(0x80 | (c & 0x3F));
+  } else {
+    text += static_cast<char>(0xE0 | (c >> 12));
+    text += static_cast<char>(0x80 | ((c >> 6) & 0x3F));
+    text += static_cast<char>(0x80 | (c & 0x3F));
+  }
+}
+
+// The text one draw list shows, a line break where the baseline moves and a space where a gap
+// after a glyph's advance is wider than half a space (a space draws nothing), with each byte's
+// glyph box; it ends with a line break.
+struct DrawnText {
+  std::string text;
+  std::vector<ImVec4> boxes;  // per byte of `text`
+};
+
+DrawnText drawn_text(const ImDrawList& list, const GlyphsByUv& glyphs, float space) {
+  DrawnText out;
+  const ImVector<ImDrawVert>& v = list.VtxBuffer;
+  float last_x = -1e9f;
+  float last_y = -1e9f;
+  float last_advance = 0.0f;
+  for (int i = 0; i + 3 < v.Size; ++i) {
+    const ImFontGlyph* found = glyphs.find(v[i].uv);
+    if (found == nullptr || v[i + 2].uv.x != found->U1 || v[i + 2].uv.y != found->V1) {
+      continue;
+    }
+    const ImFontGlyph& glyph = *found;
+    const float x = v[i].pos.x - glyph.X0;
+    const float y = v[i].pos.y - glyph.Y0;
+    const ImVec4 box(v[i].pos.x, v[i].pos.y, v[i + 2].pos.x, v[i + 2].pos.y);
+    if (std::abs(y - last_y) > 1.0f) {
+      out.text += '\n';
+      out.boxes.push_back(box);
+    } else if (x - (last_x + last_advance) > 0.5f * space) {
+      out.text += ' ';
+      out.boxes.push_back(box);
+    }
+    const std::size_t before = out.text.size();
+    append_utf8(out.text, glyph.Codepoint);
+    out.boxes.resize(out.boxes.size() + (out.text.size() - before), box);
+    last_x = x;
+    last_y = y;
+    last_advance = glyph.AdvanceX;
+    i += 3;
+  }
+  out.text += '\n';
+  out.boxes.emplace_back();
+  return out;
+}
+
+// With a panel's key, whether the list is that panel's window or a window inside it (a scrolled
+// table is a child window); without one, every list is.
+bool drawn_in_panel(const ImDrawList& list, const std::string& panel_key) {
+  if (panel_key.empty()) {
+    return true;
+  }
+  const char* owner = list._OwnerName;
+  const std::string_view name = owner == nullptr ? std::string_view() : owner;
+  const std::string id = "###" + panel_key;
+  return name.ends_with(id) || name.find(id + "/") != std::string_view::npos;
+}
+
+// The centre of the first match of `label` that is a whole line of `drawn`. The first match
+// inside a longer line goes to `inside`, unless that holds one already.
+std::optional<ImVec2> find_whole_line(const DrawnText& drawn, const std::string& label,
+                                      std::optional<ImVec2>& inside) {
+  const std::string& text = drawn.text;
+  for (std::size_t at = text.find(label); at != std::string::npos; at = text.find(label, at + 1)) {
+    const ImVec4 first = drawn.boxes[at];
+    const ImVec4 last = drawn.boxes[at + label.size() - 1];
+    const ImVec2 centre(0.5f * (first.x + last.z), 0.5f * (first.y + last.w));
+    const bool whole = (at == 0 || text[at - 1] == '\n') &&
+                       (at + label.size() == text.size() || text[at + label.size()] == '\n');
+    if (whole) {
+      return centre;
+    }
+    if (!inside) {
+      inside = centre;
+    }
+  }
+  return std::nullopt;
+}
+
 // Where a text is drawn in the last frame, read from the glyph quads of its draw data (the
 // words a user sees, whichever widget drew them). Prefers a whole line (a button, tab, list
 // entry or menu item has its label alone) over a match inside longer text. With a panel's key,
-// only in that panel's window and the windows inside it (a scrolled table is a child window).
+// only in that panel's window and the windows inside it.
 std::optional<ImVec2> find_label(const std::string& label, const std::string& panel_key = {}) {
   const ImDrawData* data = ImGui::GetDrawData();
   if (data == nullptr || !data->Valid) {
     return std::nullopt;
   }
   const ImFont* font = ImGui::GetFont();
-  std::unordered_map<std::uint64_t, const ImFontGlyph*> by_uv;
-  const auto uv_key = [](float u, float v) {
-    return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(u * 1e6f)) << 32) |
-           static_cast<std::uint32_t>(v * 1e6f);
-  };
-  for (const ImFontGlyph& g : font->Glyphs) {
-    if (g.Visible) {
-      by_uv.emplace(uv_key(g.U0, g.V0), &g);
-    }
-  }
-  // A space draws nothing: a gap after a glyph's advance wider than half a space is one.
+  const GlyphsByUv glyphs(*font);
   const float space = font->FindGlyph(' ')->AdvanceX;
   std::optional<ImVec2> inside;
   // Top window first, as a person sees it: an open menu's item over a panel's button alike.
   for (int l = data->CmdListsCount - 1; l >= 0; --l) {
-    if (!panel_key.empty()) {
-      const char* owner = data->CmdLists[l]->_OwnerName;
-      const std::string_view name = owner == nullptr ? std::string_view() : owner;
-      const std::string id = "###" + panel_key;
-      if (!name.ends_with(id) && name.find(id + "/") == std::string_view::npos) {
-        continue;
-      }
+    const ImDrawList& list = *data->CmdLists[l];
+    if (!drawn_in_panel(list, panel_key)) {
+      continue;
     }
-    const ImVector<ImDrawVert>& v = data->CmdLists[l]->VtxBuffer;
-    // One run of text at a time: its characters and each one's box.
-    std::string text;
-    std::vector<ImVec4> boxes;  // per byte of `text`
-    float last_x = -1e9f;
-    float last_y = -1e9f;
-    float last_advance = 0.0f;
-    const auto check_run = [&]() -> std::optional<ImVec2> {
-      for (std::size_t at = text.find(label); at != std::string::npos;
-           at = text.find(label, at + 1)) {
-        const ImVec4 first = boxes[at];
-        const ImVec4 last = boxes[at + label.size() - 1];
-        const ImVec2 centre(0.5f * (first.x + last.z), 0.5f * (first.y + last.w));
-        const bool whole = (at == 0 || text[at - 1] == '\n') &&
-                           (at + label.size() == text.size() || text[at + label.size()] == '\n');
-        if (whole) {
-          return centre;
-        }
-        if (!inside) {
-          inside = centre;
-        }
-      }
-      return std::nullopt;
-    };
-    for (int i = 0; i + 3 < v.Size; ++i) {
-      const auto found = by_uv.find(uv_key(v[i].uv.x, v[i].uv.y));
-      if (found == by_uv.end() || v[i + 2].uv.x != found->second->U1 ||
-          v[i + 2].uv.y != found->second->V1) {
-        continue;
-      }
-      const ImFontGlyph& glyph = *found->second;
-      const float x = v[i].pos.x - glyph.X0;
-      const float y = v[i].pos.y - glyph.Y0;
-      const ImVec4 box(v[i].pos.x, v[i].pos.y, v[i + 2].pos.x, v[i + 2].pos.y);
-      if (std::abs(y - last_y) > 1.0f) {
-        text += '\n';
-        boxes.push_back(box);
-      } else if (x - (last_x + last_advance) > 0.5f * space) {
-        text += ' ';
-        boxes.push_back(box);
-      }
-      const unsigned c = glyph.Codepoint;
-      const std::size_t before = text.size();
-      if (c < 0x80) {
-        text += static_cast<char>(c);
-      } else if (c < 0x800) {
-        text += static_cast<char>(0xC0 | (c >> 6));
-        text += static_cast<char>(0x80 | (c & 0x3F));
-      } else {
-        text += static_cast<char>(0xE0 | (c >> 12));
-        text += static_cast<char>(0x80 | ((c >> 6) & 0x3F));
-        text += static_cast<char>(0x80 | (c & 0x3F));
-      }
-      boxes.resize(boxes.size() + (text.size() - before), box);
-      last_x = x;
-      last_y = y;
-      last_advance = glyph.AdvanceX;
-      i += 3;
-    }
-    text += '\n';
-    boxes.emplace_back();
-    if (const std::optional<ImVec2> whole = check_run()) {
+    if (const std::optional<ImVec2> whole =
+            find_whole_line(drawn_text(list, glyphs, space), label, inside)) {
       return whole;
     }
   }
@@ -207,45 +248,46 @@ json cloth_view_json(const ClothStyle& style) {
 
 }  // namespace
 
-json explorer_state_json(Explorer& explorer) {
-  Document& document = explorer.document();
-  Scene& scene = document.scene();
-  const RenderCounters& counters = explorer.renderer_counters();
-  const auto parameters_json = [](const Parameters& p) {
-    // Every row of the input table: a number by its field name with the unit ("t_mm"), a choice
-    // by its key ("method").
-    json out = json::object();
-    for (const InputSpec& spec : input_table()) {
-      if (const std::optional<double> value = spec.value(p)) {
-        out[std::string(spec.field)] = *value;
-      } else {
-        out[std::string(spec.key)] = std::string(spec.choice(p));
-      }
+namespace {
+
+// Every row of the input table: a number by its field name with the unit ("t_mm"), a choice by
+// its key ("method").
+json parameters_json(const Parameters& p) {
+  json out = json::object();
+  for (const InputSpec& spec : input_table()) {
+    if (const std::optional<double> value = spec.value(p)) {
+      out[std::string(spec.field)] = *value;
+    } else {
+      out[std::string(spec.key)] = std::string(spec.choice(p));
     }
-    return out;
-  };
-  const json parameters = parameters_json(document.edited());
-  const auto counters_json = [](const RenderCounters& c) {
-    return json{{"mesh_uploads", c.mesh_uploads},
-                {"fold_line_uploads", c.fold_line_uploads},
-                {"frames", c.frames},
-                {"view_renders", c.view_renders},
-                {"view_cache_hits", c.view_cache_hits},
-                {"drawn_columns", c.drawn_columns},
-                {"drawn_rows", c.drawn_rows}};
-  };
-  json renderer = counters_json(counters);
-  renderer["compare"] = counters_json(explorer.compare_counters());
-  // B, the fabric pinned beside A: null while none is.
-  json compare = nullptr;
-  if (document.compare().pinned()) {
-    const Preset& b = document.compare().b();
-    compare = {{"label", b.name},
-               {"parameters", parameters_json(b.parameters)},
-               {"solution", solution_to_json(document.compare().solution(), b.parameters)}};
   }
-  // Where each slider's handle is, so that a test driving the real window (xdotool) can press on
-  // it as a person would.
+  return out;
+}
+
+json counters_json(const RenderCounters& c) {
+  return json{{"mesh_uploads", c.mesh_uploads},
+              {"fold_line_uploads", c.fold_line_uploads},
+              {"frames", c.frames},
+              {"view_renders", c.view_renders},
+              {"view_cache_hits", c.view_cache_hits},
+              {"drawn_columns", c.drawn_columns},
+              {"drawn_rows", c.drawn_rows}};
+}
+
+// B, the fabric pinned beside A: null while none is.
+json compare_json(Document& document) {
+  if (!document.compare().pinned()) {
+    return nullptr;
+  }
+  const Preset& b = document.compare().b();
+  return {{"label", b.name},
+          {"parameters", parameters_json(b.parameters)},
+          {"solution", solution_to_json(document.compare().solution(), b.parameters)}};
+}
+
+// Where each slider's handle is, so that a test driving the real window (xdotool) can press on
+// it as a person would.
+json sliders_json(Explorer& explorer, Document& document) {
   json sliders = json::object();
   for (const auto& [key, place] : explorer.parameters_panel().slider_places()) {
     const float y = 0.5f * (place.min.y + place.max.y);
@@ -254,13 +296,19 @@ json explorer_state_json(Explorer& explorer) {
                     {"right", place.max.x},
                     {"shown", explorer.parameters_panel().shown(document, *find_input(key))}};
   }
-  // Text typed into a slider that is no value, with the reason the panel gives, by input key.
+  return sliders;
+}
+
+// Text typed into a slider that is no value, with the reason the panel gives, by input key.
+json unread_json(Explorer& explorer) {
   json unread = json::object();
   for (const auto& [key, reason] : explorer.parameters_panel().unread_reasons()) {
     unread[key] = reason;
   }
-  const std::optional<std::string> refused = document.refusal();
-  const std::string& modal = explorer.status().modal_title();
+  return unread;
+}
+
+json layout_json(Explorer& explorer) {
   std::string presented;
   for (const std::unique_ptr<Panel>& panel : explorer.panels()) {
     if (panel->tile() && panel->tile() == explorer.presented()) {
@@ -271,6 +319,26 @@ json explorer_state_json(Explorer& explorer) {
   for (const auto& [name, rect] : explorer.panel_rects()) {
     panels[name] = {{"x", rect.pos.x}, {"y", rect.pos.y}, {"w", rect.size.x}, {"h", rect.size.y}};
   }
+  return {{"automatic", explorer.automatic_layout()},
+          {"fills_window", explorer.panels_fill_window()},
+          {"presented", presented.empty() ? json(nullptr) : json(presented)},
+          {"panels", panels}};
+}
+
+}  // namespace
+
+json explorer_state_json(Explorer& explorer) {
+  Document& document = explorer.document();
+  Scene& scene = document.scene();
+  const json parameters = parameters_json(document.edited());
+  json renderer = counters_json(explorer.renderer_counters());
+  renderer["compare"] = counters_json(explorer.compare_counters());
+  const json compare = compare_json(document);
+  const json sliders = sliders_json(explorer, document);
+  const json unread = unread_json(explorer);
+  const std::optional<std::string> refused = document.refusal();
+  const std::string& modal = explorer.status().modal_title();
+  const json layout = layout_json(explorer);
   // The browser's GLFW keeps no clipboard (nothing there reads as empty), and the system's may
   // hold any bytes.
   const char* clipboard = ImGui::GetClipboardText();
@@ -296,11 +364,7 @@ json explorer_state_json(Explorer& explorer) {
       {"clipboard", detail::escaped(clipboard != nullptr ? clipboard : "")},
       {"popup_open", ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId)},
       {"intro_open", explorer.intro().is_open()},
-      {"layout",
-       {{"automatic", explorer.automatic_layout()},
-        {"fills_window", explorer.panels_fill_window()},
-        {"presented", presented.empty() ? json(nullptr) : json(presented)},
-        {"panels", panels}}},
+      {"layout", layout},
       {"appearance",
        {{"scale_percent", explorer.appearance().scale_percent()},
         {"light_theme", explorer.appearance().light_theme()}}},

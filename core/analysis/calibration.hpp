@@ -124,6 +124,9 @@ class CalibrationError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// The indices in data.rows of the rows whose role is fit, in order.
+std::vector<std::size_t> fit_row_indices(const MeasurementSet& data);
+
 // Throws CalibrationError when `fit_rows` rows are fewer than the constants `fit` asks for (one
 // row cannot pin down both K and p).
 void check_fit_row_count(int fit_rows, FitConstants fit);

@@ -216,24 +216,25 @@ int max_coverage_rows(FitConstants fit) {
   return fit == FitConstants::K ? kMaxCoverageRowsK : kMaxCoverageRowsKandP;
 }
 
-std::optional<std::vector<CoverageCheck>> cross_validated_coverage(
-    const MeasurementSet& data, const Parameters& base, const CalibrationOptions& options,
-    const CalibrationProgress& progress) {
-  std::vector<std::size_t> fit_rows;
-  for (std::size_t i = 0; i < data.rows.size(); ++i) {
-    if (data.rows[i].role == MeasurementRole::fit) {
-      fit_rows.push_back(i);
-    }
-  }
-  check_fit_row_count(static_cast<int>(fit_rows.size()), options.fit);
-  if (static_cast<int>(fit_rows.size()) > max_coverage_rows(options.fit)) {
+namespace {
+
+// A named way of holding out parts of the fit rows (rows by index into data.rows).
+using NamedSplits = std::pair<std::string, std::vector<Split>>;
+
+void check_coverage_rows(std::size_t fit_rows, FitConstants fit) {
+  check_fit_row_count(static_cast<int>(fit_rows), fit);
+  if (static_cast<int>(fit_rows) > max_coverage_rows(fit)) {
     throw CalibrationError(printf_string(
         "%zu fit rows: a coverage check fitting %s takes at most %d (it refits about m² times, "
         "each on m rows; docs/performance.md); fit K alone or use fewer rows",
-        fit_rows.size(), std::string(to_string(options.fit)).c_str(),
-        max_coverage_rows(options.fit)));
+        fit_rows, std::string(to_string(fit)).c_str(), max_coverage_rows(fit)));
   }
-  std::vector<std::pair<std::string, std::vector<Split>>> checks(1);
+}
+
+// Leave-one-out, and with more than one group, each group held out in turn.
+std::vector<NamedSplits> coverage_splits(const MeasurementSet& data,
+                                         const std::vector<std::size_t>& fit_rows) {
+  std::vector<NamedSplits> checks(1);
   checks[0].first = "leave-one-out";
   std::set<std::string> groups;
   for (std::size_t i : fit_rows) {
@@ -254,32 +255,21 @@ std::optional<std::vector<CoverageCheck>> cross_validated_coverage(
       checks.back().second.push_back(std::move(split));
     }
   }
-  CalibrationOptions inner = options;
-  inner.held_out = false;
-  const int needed = options.fit == FitConstants::K ? 1 : 2;
-  // Each fit row tabulated once (the first 30 % of the progress); every nested fit then looks up
-  // those tables, and all of them run at once, each into its own slot, so the counts below do not
-  // depend on the number of threads.
-  std::vector<Measurement> fit_measurements;
-  std::vector<std::size_t> position(data.rows.size());
-  for (std::size_t k = 0; k < fit_rows.size(); ++k) {
-    fit_measurements.push_back(data.rows[fit_rows[k]]);
-    position[fit_rows[k]] = k;
-  }
-  auto keep_going = [&](double fraction) { return !progress || progress(fraction); };
-  const std::optional<CalibrationTables> tables = CalibrationTables::tabulate(
-      fit_measurements, base, inner, [&](double f) { return keep_going(0.3 * f); });
-  if (!tables) {
-    return std::nullopt;
-  }
-  // One job per training row of every split large enough: the fit without that row, and that
-  // row's residual under it.
-  struct Job {
-    std::size_t check;
-    std::size_t split;
-    std::size_t left_out;
-    std::vector<std::size_t> rows;  // positions in the tables
-  };
+  return checks;
+}
+
+// The fit without one training row of a split, for that row's residual under it.
+struct Job {
+  std::size_t check;
+  std::size_t split;
+  std::size_t left_out;
+  std::vector<std::size_t> rows;  // positions in the tables
+};
+
+// One job per training row of every split large enough; `position`: a row's place in the tables
+// by its index in data.rows.
+std::vector<Job> held_out_jobs(const std::vector<NamedSplits>& checks, int needed,
+                               const std::vector<std::size_t>& position) {
   std::vector<Job> jobs;
   for (std::size_t c = 0; c < checks.size(); ++c) {
     for (std::size_t s = 0; s < checks[c].second.size(); ++s) {
@@ -299,13 +289,26 @@ std::optional<std::vector<CoverageCheck>> cross_validated_coverage(
       }
     }
   }
+  return jobs;
+}
+
+struct JobResults {
+  std::vector<Eq7Constants> fits;
+  std::vector<HeldOutResidual> residuals;
+};
+
+// Every job at once, each into its own slot, so that the counts do not depend on the number of
+// threads; nullopt when cancelled.
+std::optional<JobResults> run_jobs(const std::vector<Job>& jobs, const CalibrationTables& tables,
+                                   const MeasurementSet& data, const Parameters& base, int threads,
+                                   const std::function<bool(double)>& progress) {
   std::vector<std::optional<Eq7Constants>> fits(jobs.size());
   std::vector<HeldOutResidual> residuals(jobs.size());
   const bool finished = run_tasks(
-      jobs.size(), options.threads,
+      jobs.size(), threads,
       [&](std::size_t i, const std::atomic<bool>& stop) {
         const std::optional<FittedConstants> fit =
-            tables->fit(jobs[i].rows, [&stop](double) { return !stop.load(); });
+            tables.fit(jobs[i].rows, [&stop](double) { return !stop.load(); });
         if (!fit) {
           return;
         }
@@ -314,44 +317,98 @@ std::optional<std::vector<CoverageCheck>> cross_validated_coverage(
         residuals[i] = held_out_residual(
             m.observed, solve(with_constants(parameters_for(m, base), fit->K, fit->p)));
       },
-      [&](double f) { return keep_going(0.3 + 0.7 * f); });
+      progress);
   if (!finished || std::any_of(fits.begin(), fits.end(), [](const auto& f) { return !f; })) {
     return std::nullopt;
   }
+  JobResults out;
+  for (const std::optional<Eq7Constants>& fit : fits) {
+    out.fits.push_back(*fit);
+  }
+  out.residuals = std::move(residuals);
+  return out;
+}
+
+// Whether the split's test rows fall inside the prediction intervals of the fits without each of
+// its training rows.
+void count_split(CoverageCheck& check, const MeasurementSet& data, const Parameters& base,
+                 const Split& split, const std::vector<Eq7Constants>& split_fits,
+                 const std::vector<HeldOutResidual>& split_residuals) {
+  for (std::size_t j : split.test) {
+    const Measurement& m = data.rows[j];
+    const std::optional<PredictionRange> r =
+        prediction_interval(parameters_for(m, base), split_fits, split_residuals);
+    if (!r) {
+      continue;
+    }
+    const std::optional<double> n =
+        m.observed.n ? std::optional<double>(*m.observed.n) : std::nullopt;
+    count(check.n, n, r->n_min, r->n_max, r->level);
+    count(check.z_max, m.observed.z_max_mm, r->z_max_min_mm, r->z_max_max_mm, r->level);
+    count(check.Q, m.observed.Q, r->Q_min, r->Q_max, r->level);
+  }
+}
+
+// The jobs' results gathered per split (the jobs run in the order of the checks and their
+// splits), and each split's test rows counted.
+std::vector<CoverageCheck> tally(const std::vector<NamedSplits>& checks,
+                                 const std::vector<Job>& jobs, const JobResults& results,
+                                 const MeasurementSet& data, const Parameters& base) {
   std::vector<CoverageCheck> out;
   std::size_t next_job = 0;
   for (std::size_t c = 0; c < checks.size(); ++c) {
     CoverageCheck check;
     check.name = checks[c].first;
     for (std::size_t s = 0; s < checks[c].second.size(); ++s) {
-      const Split& split = checks[c].second[s];
       std::vector<Eq7Constants> split_fits;
       std::vector<HeldOutResidual> split_residuals;
       for (; next_job < jobs.size() && jobs[next_job].check == c && jobs[next_job].split == s;
            ++next_job) {
-        split_fits.push_back(*fits[next_job]);
-        split_residuals.push_back(residuals[next_job]);
+        split_fits.push_back(results.fits[next_job]);
+        split_residuals.push_back(results.residuals[next_job]);
       }
-      if (split_fits.empty()) {
-        continue;
-      }
-      for (std::size_t j : split.test) {
-        const Measurement& m = data.rows[j];
-        const std::optional<PredictionRange> r =
-            prediction_interval(parameters_for(m, base), split_fits, split_residuals);
-        if (!r) {
-          continue;
-        }
-        const std::optional<double> n =
-            m.observed.n ? std::optional<double>(*m.observed.n) : std::nullopt;
-        count(check.n, n, r->n_min, r->n_max, r->level);
-        count(check.z_max, m.observed.z_max_mm, r->z_max_min_mm, r->z_max_max_mm, r->level);
-        count(check.Q, m.observed.Q, r->Q_min, r->Q_max, r->level);
+      if (!split_fits.empty()) {
+        count_split(check, data, base, checks[c].second[s], split_fits, split_residuals);
       }
     }
     out.push_back(std::move(check));
   }
   return out;
+}
+
+}  // namespace
+
+std::optional<std::vector<CoverageCheck>> cross_validated_coverage(
+    const MeasurementSet& data, const Parameters& base, const CalibrationOptions& options,
+    const CalibrationProgress& progress) {
+  const std::vector<std::size_t> fit_rows = fit_row_indices(data);
+  check_coverage_rows(fit_rows.size(), options.fit);
+  const std::vector<NamedSplits> checks = coverage_splits(data, fit_rows);
+  CalibrationOptions inner = options;
+  inner.held_out = false;
+  const int needed = options.fit == FitConstants::K ? 1 : 2;
+  // Each fit row tabulated once (the first 30 % of the progress); every nested fit then looks up
+  // those tables.
+  std::vector<Measurement> fit_measurements;
+  std::vector<std::size_t> position(data.rows.size());
+  for (std::size_t k = 0; k < fit_rows.size(); ++k) {
+    fit_measurements.push_back(data.rows[fit_rows[k]]);
+    position[fit_rows[k]] = k;
+  }
+  auto keep_going = [&](double fraction) { return !progress || progress(fraction); };
+  const std::optional<CalibrationTables> tables = CalibrationTables::tabulate(
+      fit_measurements, base, inner, [&](double f) { return keep_going(0.3 * f); });
+  if (!tables) {
+    return std::nullopt;
+  }
+  const std::vector<Job> jobs = held_out_jobs(checks, needed, position);
+  const std::optional<JobResults> results =
+      run_jobs(jobs, *tables, data, base, options.threads,
+               [&](double f) { return keep_going(0.3 + 0.7 * f); });
+  if (!results) {
+    return std::nullopt;
+  }
+  return tally(checks, jobs, *results, data, base);
 }
 
 std::string describe_coverage(const std::vector<CoverageCheck>& checks) {

@@ -106,91 +106,144 @@ DeformedGrid deformed_grid_positions(const Solution& s, const Parameters& p, int
                                  ny);
 }
 
+namespace {
+
+// Where a column of the grid falls: its span and its across-the-cloth coordinate in the flat
+// cloth (all spans side by side, centred) and in its own span.
+struct ColumnPlace {
+  int span = 0;
+  double X_total = 0.0;
+  double X = 0.0;
+};
+
+// The columns across the spans. Each span gets a whole number of the grid's intervals, so that a
+// column falls on every support of a strip: a cell across a support would hang cloth below it.
+class ColumnLayout {
+ public:
+  ColumnLayout(int nx, int spans, double L)
+      : spans_(spans),
+        L_(L),
+        total_width_(spans * L),
+        intervals_(nx - 1),
+        per_span_(spans > 1 && intervals_ >= spans) {}
+
+  // Asked for in order of i: each column's span is searched for from the last one's.
+  ColumnPlace place(int i) {
+    double X_total = total_width_ * (static_cast<double>(i) / intervals_ - 0.5);
+    if (per_span_) {
+      while (span_ + 1 < spans_ && i > first_column(span_ + 1)) {
+        ++span_;
+      }
+      const int from = first_column(span_);
+      X_total = L_ * (span_ + static_cast<double>(i - from) / (first_column(span_ + 1) - from)) -
+                0.5 * total_width_;
+    } else {
+      span_ = std::clamp(static_cast<int>(std::floor((X_total + 0.5 * total_width_) / L_)), 0,
+                         spans_ - 1);
+    }
+    return {span_, X_total, X_total + 0.5 * total_width_ - (span_ + 0.5) * L_};
+  }
+
+ private:
+  int first_column(int span) const {
+    return static_cast<int>(static_cast<long long>(span) * intervals_ / spans_);
+  }
+
+  int spans_;
+  double L_;
+  double total_width_;
+  int intervals_;
+  bool per_span_;
+  int span_ = 0;
+};
+
+// What every column of the membrane shares: the cloth, its shape and the central fibre.
+struct Membrane {
+  const CentreFibre& fibre;
+  const std::vector<Eigen::Vector2d>& rows;  // the central fibre at each row's fraction
+  const Shape& shape;
+  double h = 0.0;         // the cloth's height, mm
+  double L = 0.0;         // its upper edge, mm
+  double l = 0.0;         // the span between supports, mm
+  double fibre_mm = 0.0;  // the central fibre's length
+  bool rectangular = false;
+};
+
+// The membrane's rows sit at the same fraction of every fibre: the central one sampled once.
+std::vector<Eigen::Vector2d> sampled_rows(const CentreFibre& fibre, int ny) {
+  std::vector<Eigen::Vector2d> rows(static_cast<std::size_t>(ny));
+  std::size_t row_piece = 0;
+  for (int j = 0; j < ny; ++j) {
+    rows[static_cast<std::size_t>(j)] =
+        fibre.at_length(fibre.length_mm() * j / (ny - 1), row_piece);
+  }
+  return rows;
+}
+
+// One column's vertices into the grid; returns how far the column's length along them departs
+// from the flat cloth's, relative to the cloth's height.
+double place_column(DeformedGrid& grid, int i, const ColumnPlace& at, const Membrane& m) {
+  const double c = std::max(0.0, std::cos(kPi * at.X / m.L));  // = cos(pi x / l) at x = X l / L
+  const double x = at.X * m.l / m.L;
+  double column_length = 0.0;
+  Eigen::Vector3d previous;
+  std::size_t piece = 0;
+  for (int j = 0; j < grid.ny; ++j) {
+    const double fraction = static_cast<double>(j) / (grid.ny - 1);
+    Eigen::Vector2d yz;
+    double material_Y;
+    if (!m.rectangular) {
+      yz = c * m.rows[static_cast<std::size_t>(j)];
+      material_Y = fraction * m.h * c;
+    } else {
+      // Arc length Y along the fibre (c times the central one), then straight down.
+      material_Y = fraction * m.h;
+      const double fibre_here = c * m.fibre_mm;
+      if (material_Y <= fibre_here && c > 0.0) {
+        yz = c * m.fibre.at_length(material_Y / c, piece);
+      } else {
+        yz = c * m.rows.back() + Eigen::Vector2d(material_Y - fibre_here, 0.0);
+      }
+    }
+    const Eigen::Vector3d point = place_on_shape({x, yz.x(), yz.y()}, at.span, m.l, m.shape);
+    if (j > 0) {
+      column_length += (point - previous).norm();
+    }
+    previous = point;
+    const std::size_t v = static_cast<std::size_t>(j) * grid.nx + i;
+    grid.positions_mm[v] = point.cast<float>();
+    grid.material_mm[v] =
+        Eigen::Vector2f(static_cast<float>(at.X_total), static_cast<float>(material_Y));
+  }
+  const double flat_length = m.rectangular ? m.h : m.h * c;
+  return std::abs(column_length - flat_length) / m.h;
+}
+
+}  // namespace
+
 DeformedGrid deformed_grid_positions(const Solution& s, const Parameters& p,
                                      const CentreFibre& fibre, int nx, int ny) {
   DeformedGrid grid;
   grid.nx = std::max(2, nx);
   grid.ny = std::max(2, ny);
-  const double h = p.hanging.height_mm;
-  const double L = p.hanging.length_mm;
-  const double l = s.span_mm > 0.0 ? s.span_mm : span_mm(p);
-  const Shape& shape = p.shape;
-  const int spans = shape.span_count();
-  const bool rectangular = shape.kind == ShapeKind::rectangular;
-  const double fibre_mm = fibre.length_mm();
-
-  // The membrane's rows sit at the same fraction of every fibre: sample the central one once.
-  std::vector<Eigen::Vector2d> rows(static_cast<std::size_t>(grid.ny));
-  std::size_t row_piece = 0;
-  for (int j = 0; j < grid.ny; ++j) {
-    rows[static_cast<std::size_t>(j)] = fibre.at_length(fibre_mm * j / (grid.ny - 1), row_piece);
-  }
+  const std::vector<Eigen::Vector2d> rows = sampled_rows(fibre, grid.ny);
   grid.sharpest_turn_deg = sharpest_turn_deg(rows);
-
+  const Membrane m{fibre,
+                   rows,
+                   p.shape,
+                   p.hanging.height_mm,
+                   p.hanging.length_mm,
+                   s.span_mm > 0.0 ? s.span_mm : span_mm(p),
+                   fibre.length_mm(),
+                   p.shape.kind == ShapeKind::rectangular};
   const std::size_t count = static_cast<std::size_t>(grid.nx) * grid.ny;
   grid.positions_mm.resize(count);
   grid.material_mm.resize(count);
-  const double total_width = spans * L;
-  // Each span gets a whole number of the grid's intervals, so that a column falls on every support
-  // of a strip: a cell across a support would hang cloth below it.
-  const int intervals = grid.nx - 1;
-  const bool per_span = spans > 1 && intervals >= spans;
-  const auto first_column = [&](int span) {
-    return static_cast<int>(static_cast<long long>(span) * intervals / spans);
-  };
-  int span = 0;
+  ColumnLayout layout(grid.nx, p.shape.span_count(), m.L);
   for (int i = 0; i < grid.nx; ++i) {
-    // Which span the column falls in, and where in it.
-    double X_total = total_width * (static_cast<double>(i) / intervals - 0.5);
-    if (per_span) {
-      while (span + 1 < spans && i > first_column(span + 1)) {
-        ++span;
-      }
-      const int from = first_column(span);
-      X_total = L * (span + static_cast<double>(i - from) / (first_column(span + 1) - from)) -
-                0.5 * total_width;
-    } else {
-      span =
-          std::clamp(static_cast<int>(std::floor((X_total + 0.5 * total_width) / L)), 0, spans - 1);
-    }
-    const double X = X_total + 0.5 * total_width - (span + 0.5) * L;
-    const double c = std::max(0.0, std::cos(kPi * X / L));  // = cos(pi x / l) at x = X l / L
-    const double x = X * l / L;
-    double column_length = 0.0;
-    Eigen::Vector3d previous;
-    std::size_t piece = 0;
-    for (int j = 0; j < grid.ny; ++j) {
-      const double fraction = static_cast<double>(j) / (grid.ny - 1);
-      Eigen::Vector2d yz;
-      double material_Y;
-      if (!rectangular) {
-        yz = c * rows[static_cast<std::size_t>(j)];
-        material_Y = fraction * h * c;
-      } else {
-        // Arc length Y along the fibre (c times the central one), then straight down.
-        material_Y = fraction * h;
-        const double fibre_here = c * fibre_mm;
-        if (material_Y <= fibre_here && c > 0.0) {
-          yz = c * fibre.at_length(material_Y / c, piece);
-        } else {
-          yz = c * rows.back() + Eigen::Vector2d(material_Y - fibre_here, 0.0);
-        }
-      }
-      const Eigen::Vector3d point = place_on_shape({x, yz.x(), yz.y()}, span, l, shape);
-      if (j > 0) {
-        column_length += (point - previous).norm();
-      }
-      previous = point;
-      const std::size_t v = static_cast<std::size_t>(j) * grid.nx + i;
-      grid.positions_mm[v] = point.cast<float>();
-      grid.material_mm[v] =
-          Eigen::Vector2f(static_cast<float>(X_total), static_cast<float>(material_Y));
-    }
-    const double flat_length = rectangular ? h : h * c;
     grid.worst_fibre_error =
-        std::max(grid.worst_fibre_error, std::abs(column_length - flat_length) / h);
+        std::max(grid.worst_fibre_error, place_column(grid, i, layout.place(i), m));
   }
-
   grid.triangle_indices = lattice_triangles(grid.nx, grid.ny);
   return grid;
 }

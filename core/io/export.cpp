@@ -106,90 +106,126 @@ std::string fold_lines_to_csv(const FoldLines& lines) {
   return out;
 }
 
-std::string fold_lines_to_svg(const FoldLines& lines, const Solution& s, const std::string& title) {
+namespace {
+
+void check_solution_finite(const Solution& s) {
   finite_or_throw(s.Q, "Q");
   finite_or_throw(s.z_max_mm, "z_max_mm");
   finite_or_throw(s.span_mm, "l_mm");
   for (double a : s.a_mm) {
     finite_or_throw(a, "a_mm");
   }
-  const double width_px = 800.0;
-  const double height_px = 560.0;
-  const double margin_left = 80.0;
-  const double margin_right = 30.0;
-  const double margin_top = 60.0;
-  const double margin_bottom = 60.0;
-  const double l = std::max(s.span_mm, 1e-9);
-  double y_max = s.a_mm.empty() ? 1.0 : s.a_mm.front();
-  y_max = std::max(y_max, 1e-9) * 1.05;
-  const double x_min = -0.55 * l;
-  const double x_max = 0.55 * l;
-  const double plot_w = width_px - margin_left - margin_right;
-  const double plot_h = height_px - margin_top - margin_bottom;
-  auto px = [&](double x) { return margin_left + (x - x_min) / (x_max - x_min) * plot_w; };
-  auto py = [&](double y) { return margin_top + y / y_max * plot_h; };  // y down, as in the paper
+}
 
+// The fold plot's page and its millimetres in pixels: x across the span, y downward from the
+// line through the supports, as in the paper.
+struct FoldPlotFrame {
+  static constexpr double width_px = 800.0;
+  static constexpr double height_px = 560.0;
+  static constexpr double margin_left = 80.0;
+  static constexpr double margin_right = 30.0;
+  static constexpr double margin_top = 60.0;
+  static constexpr double margin_bottom = 60.0;
+  static constexpr double plot_w = width_px - margin_left - margin_right;
+  static constexpr double plot_h = height_px - margin_top - margin_bottom;
+  double l = 0.0;  // the span, mm
+  double x_min = 0.0;
+  double x_max = 0.0;
+  double y_max = 0.0;
+
+  double px(double x) const { return margin_left + (x - x_min) / (x_max - x_min) * plot_w; }
+  double py(double y) const { return margin_top + y / y_max * plot_h; }
+};
+
+FoldPlotFrame fold_plot_frame(const Solution& s) {
+  FoldPlotFrame f;
+  f.l = std::max(s.span_mm, 1e-9);
+  double y_max = s.a_mm.empty() ? 1.0 : s.a_mm.front();
+  f.y_max = std::max(y_max, 1e-9) * 1.05;
+  f.x_min = -0.55 * f.l;
+  f.x_max = 0.55 * f.l;
+  return f;
+}
+
+std::string fold_plot_heading(const FoldPlotFrame& f, const Solution& s, const std::string& title) {
   std::string out = printf_string(
       "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%.0f\" height=\"%.0f\" "
       "viewBox=\"0 0 %.0f %.0f\" font-family=\"sans-serif\" font-size=\"12\">\n",
-      width_px, height_px, width_px, height_px);
+      f.width_px, f.height_px, f.width_px, f.height_px);
   out += "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
-  out += "<text x=\"" + printf_string("%.0f", margin_left) + "\" y=\"22\" font-size=\"15\">" +
+  out += "<text x=\"" + printf_string("%.0f", f.margin_left) + "\" y=\"22\" font-size=\"15\">" +
          xml_escape(detail::escaped(title)) + "</text>\n";
   out += printf_string(
       "<text x=\"%.0f\" y=\"42\">n = %d, Q = %.3f, z_max = %.1f mm, l = %.0f mm "
       "(y downward from the line through the supports)</text>\n",
-      margin_left, s.n, s.Q, s.z_max_mm, s.span_mm);
+      f.margin_left, s.n, s.Q, s.z_max_mm, s.span_mm);
+  return out;
+}
 
-  // Axes and ticks in mm.
-  out += printf_string(
+// The plot area's frame, ticks in mm and the axes' titles.
+std::string fold_plot_axes(const FoldPlotFrame& f) {
+  std::string out = printf_string(
       "<rect x=\"%.1f\" y=\"%.1f\" width=\"%.1f\" height=\"%.1f\" fill=\"none\" "
       "stroke=\"#888\"/>\n",
-      margin_left, margin_top, plot_w, plot_h);
-  const double x_step = tick_step(x_max - x_min, 8);
-  for (double x = std::ceil(x_min / x_step) * x_step; x <= x_max; x += x_step) {
+      f.margin_left, f.margin_top, f.plot_w, f.plot_h);
+  const double x_step = tick_step(f.x_max - f.x_min, 8);
+  for (double x = std::ceil(f.x_min / x_step) * x_step; x <= f.x_max; x += x_step) {
     out += printf_string(
         "<line x1=\"%.1f\" y1=\"%.1f\" x2=\"%.1f\" y2=\"%.1f\" stroke=\"#ccc\"/>"
         "<text x=\"%.1f\" y=\"%.1f\" text-anchor=\"middle\">%g</text>\n",
-        px(x), margin_top, px(x), margin_top + plot_h, px(x), margin_top + plot_h + 16, x);
+        f.px(x), f.margin_top, f.px(x), f.margin_top + f.plot_h, f.px(x),
+        f.margin_top + f.plot_h + 16, x);
   }
-  const double y_step = tick_step(y_max, 6);
-  for (double y = 0.0; y <= y_max; y += y_step) {
+  const double y_step = tick_step(f.y_max, 6);
+  for (double y = 0.0; y <= f.y_max; y += y_step) {
     out += printf_string(
         "<line x1=\"%.1f\" y1=\"%.1f\" x2=\"%.1f\" y2=\"%.1f\" stroke=\"#ccc\"/>"
         "<text x=\"%.1f\" y=\"%.1f\" text-anchor=\"end\">%g</text>\n",
-        margin_left, py(y), margin_left + plot_w, py(y), margin_left - 6, py(y) + 4, y);
+        f.margin_left, f.py(y), f.margin_left + f.plot_w, f.py(y), f.margin_left - 6, f.py(y) + 4,
+        y);
   }
   out += printf_string("<text x=\"%.1f\" y=\"%.1f\" text-anchor=\"middle\">x (mm)</text>\n",
-                       margin_left + plot_w / 2, height_px - 14);
+                       f.margin_left + f.plot_w / 2, f.height_px - 14);
   out += printf_string(
       "<text x=\"18\" y=\"%.1f\" text-anchor=\"middle\" transform=\"rotate(-90 18 %.1f)\">"
       "y (mm, down)</text>\n",
-      margin_top + plot_h / 2, margin_top + plot_h / 2);
+      f.margin_top + f.plot_h / 2, f.margin_top + f.plot_h / 2);
+  return out;
+}
 
+std::string fold_polylines(const FoldLines& lines, const FoldPlotFrame& f) {
+  std::string out;
   for (const FoldLine& line : lines.lines) {
     out += printf_string("<polyline fill=\"none\" stroke=\"%s\" stroke-width=\"1.5\" points=\"",
                          line.sign < 0 ? kNegativeColour : kPositiveColour);
     for (const Eigen::Vector3d& p : line.points_mm) {
       check_finite(p, "fold-line point (mm)");
-      out += printf_string("%.2f,%.2f ", px(p.x()), py(p.y()));
+      out += printf_string("%.2f,%.2f ", f.px(p.x()), f.py(p.y()));
     }
     out += printf_string("\"><title>line %d (%s fold)</title></polyline>\n", line.index,
                          line.sign < 0 ? "negative" : "positive");
   }
-  // Supports: triangles at x = +-l/2 on the line y = 0.
-  for (double x : {-0.5 * l, 0.5 * l}) {
-    const double cx = px(x);
-    const double cy = py(0.0);
+  return out;
+}
+
+// Triangles at x = +-l/2 on the line y = 0.
+std::string fold_plot_supports(const FoldPlotFrame& f) {
+  std::string out;
+  for (double x : {-0.5 * f.l, 0.5 * f.l}) {
+    const double cx = f.px(x);
+    const double cy = f.py(0.0);
     out += printf_string(
         "<polygon points=\"%.1f,%.1f %.1f,%.1f %.1f,%.1f\" fill=\"#333\"><title>support</title>"
         "</polygon>\n",
         cx, cy, cx - 7, cy - 12, cx + 7, cy - 12);
   }
-  // Legend.
-  const double lx = margin_left + plot_w - 170;
-  const double ly = margin_top + plot_h - 46;
-  out += printf_string(
+  return out;
+}
+
+std::string fold_plot_legend(const FoldPlotFrame& f) {
+  const double lx = f.margin_left + f.plot_w - 170;
+  const double ly = f.margin_top + f.plot_h - 46;
+  return printf_string(
       "<rect x=\"%.1f\" y=\"%.1f\" width=\"160\" height=\"40\" fill=\"white\" stroke=\"#888\"/>\n"
       "<line x1=\"%.1f\" y1=\"%.1f\" x2=\"%.1f\" y2=\"%.1f\" stroke=\"%s\" stroke-width=\"2\"/>"
       "<text x=\"%.1f\" y=\"%.1f\">positive fold</text>\n"
@@ -197,9 +233,21 @@ std::string fold_lines_to_svg(const FoldLines& lines, const Solution& s, const s
       "<text x=\"%.1f\" y=\"%.1f\">negative fold</text>\n",
       lx, ly, lx + 8, ly + 13, lx + 38, ly + 13, kPositiveColour, lx + 46, ly + 17, lx + 8, ly + 29,
       lx + 38, ly + 29, kNegativeColour, lx + 46, ly + 33);
+}
+
+}  // namespace
+
+std::string fold_lines_to_svg(const FoldLines& lines, const Solution& s, const std::string& title) {
+  check_solution_finite(s);
+  const FoldPlotFrame f = fold_plot_frame(s);
+  std::string out = fold_plot_heading(f, s, title);
+  out += fold_plot_axes(f);
+  out += fold_polylines(lines, f);
+  out += fold_plot_supports(f);
+  out += fold_plot_legend(f);
   if (lines.stride > 1) {
     out += printf_string("<text x=\"%.1f\" y=\"%.1f\">every %d-th of %d lines drawn</text>\n",
-                         margin_left + 8, margin_top + 16, lines.stride, s.n + 1);
+                         f.margin_left + 8, f.margin_top + 16, lines.stride, s.n + 1);
   }
   out += "</svg>\n";
   return out;

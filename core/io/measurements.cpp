@@ -351,6 +351,125 @@ std::vector<std::pair<std::string_view, std::string>> csv_cells(const Measuremen
   return cells;
 }
 
+// Without an extension that decides, text that opens a JSON object is read as JSON, any other
+// text as CSV.
+constexpr char kJsonObjectOpen = '{';
+
+bool opens_json_object(std::string_view text) {
+  const std::string_view content = trim(text);
+  return !content.empty() && content.front() == kJsonObjectOpen;
+}
+
+void throw_if_any(const std::vector<std::string>& problems) {
+  if (!problems.empty()) {
+    throw MeasurementError(join_lines(problems));
+  }
+}
+
+// A CSV line as its content: without the CR of a CRLF ending, and the first line without the
+// UTF-8 byte order mark that spreadsheets write.
+void strip_line_ending(std::string& line, bool first_line) {
+  if (!line.empty() && line.back() == '\r') {
+    line.pop_back();
+  }
+  if (first_line && line.rfind("\xEF\xBB\xBF", 0) == 0) {
+    line.erase(0, 3);
+  }
+}
+
+bool is_blank_or_comment(std::string_view line) {
+  const std::string_view content = trim(line);
+  return content.empty() || content.front() == '#';
+}
+
+// Each header column must be a known one, named once.
+void add_column_name_problems(const std::vector<std::string>& header, const std::string& where,
+                              std::vector<std::string>& problems) {
+  for (std::size_t i = 0; i < header.size(); ++i) {
+    if (!is_known_column(header[i])) {
+      problems.push_back(where + " (header), column " + std::to_string(i + 1) + " '" +
+                         detail::cut(header[i]) + "': unknown column (known: " + known_columns() +
+                         ")");
+    } else if (std::find(header.begin(), header.begin() + static_cast<std::ptrdiff_t>(i),
+                         header[i]) != header.begin() + static_cast<std::ptrdiff_t>(i)) {
+      problems.push_back(where + " (header), column " + std::to_string(i + 1) + " '" +
+                         detail::cut(header[i]) + "': appears twice");
+    }
+  }
+}
+
+void add_missing_column_problem(const std::vector<std::string>& header, const std::string& where,
+                                std::vector<std::string>& problems) {
+  std::vector<std::string_view> missing_columns;
+  for (const InputSpec* spec : row_inputs()) {
+    if (std::find(header.begin(), header.end(), spec->field) == header.end()) {
+      missing_columns.push_back(spec->field);
+    }
+  }
+  const std::string missing = detail::join(missing_columns, ", ");
+  if (!missing.empty()) {
+    problems.push_back(where + " (header): missing column(s) " + missing +
+                       " (required: " + required_columns() + ")");
+  }
+}
+
+// The header line into `header`; false, with its problems added, when rows cannot be read by it.
+bool read_csv_header(const std::string& line, const std::string& where,
+                     std::vector<std::string>& header, std::vector<std::string>& problems) {
+  if (const auto error = split_csv_line(line, header)) {
+    problems.push_back(where + " (header): " + *error);
+    return false;
+  }
+  const std::size_t before = problems.size();
+  add_column_name_problems(header, where, problems);
+  add_missing_column_problem(header, where, problems);
+  return problems.size() == before;
+}
+
+// A data line's cells by the header's names, or nothing (with the problem added) when the line
+// does not split into one field per column.
+std::optional<std::map<std::string, Cell, std::less<>>> csv_row_cells(
+    const std::string& line, const std::vector<std::string>& header, const std::string& row_where,
+    std::vector<std::string>& problems) {
+  std::vector<std::string> fields;
+  if (const auto error = split_csv_line(line, fields)) {
+    problems.push_back(row_where + ": " + *error);
+    return std::nullopt;
+  }
+  if (fields.size() != header.size()) {
+    problems.push_back(row_where + ": " + std::to_string(fields.size()) +
+                       " fields, the header has " + std::to_string(header.size()));
+    return std::nullopt;
+  }
+  std::map<std::string, Cell, std::less<>> cells;
+  for (std::size_t i = 0; i < header.size(); ++i) {
+    Cell cell;
+    if (!fields[i].empty()) {
+      cell.kind = Cell::Kind::text;
+      cell.text = fields[i];
+    }
+    cells[header[i]] = std::move(cell);
+  }
+  return cells;
+}
+
+// A JSON value as a cell: an empty string is no value, as an empty CSV field is.
+Cell json_cell(const json& value) {
+  Cell cell;
+  if (value.is_string()) {
+    cell.kind = value.get<std::string>().empty() ? Cell::Kind::missing : Cell::Kind::text;
+    cell.text = value.get<std::string>();
+  } else if (value.is_number()) {
+    cell.kind = Cell::Kind::number;
+    cell.number = value.get<double>();
+    cell.number_is_integer = value.is_number_integer();
+  } else if (!value.is_null()) {
+    cell.kind = Cell::Kind::other;
+    cell.text = describe_json(value);
+  }
+  return cell;
+}
+
 }  // namespace
 
 const std::vector<std::string_view>& measurement_columns() {
@@ -370,91 +489,35 @@ MeasurementSet measurements_from_csv(const std::string& text, const std::string&
   set.origin = origin;
   std::vector<std::string> problems;
   std::vector<std::string> header;
-  std::vector<std::string> fields;
   std::istringstream in(text);
   std::string line;
   int line_number = 0;
   int row = 0;
-  bool header_ok = false;
   while (std::getline(in, line)) {
     ++line_number;
-    if (!line.empty() && line.back() == '\r') {
-      line.pop_back();
-    }
-    if (line_number == 1 && line.rfind("\xEF\xBB\xBF", 0) == 0) {
-      line.erase(0, 3);  // a UTF-8 byte order mark, as spreadsheets write
-    }
-    const std::string_view content = trim(line);
-    if (content.empty() || content.front() == '#') {
+    strip_line_ending(line, line_number == 1);
+    if (is_blank_or_comment(line)) {
       continue;
     }
     const std::string where = origin + ": line " + std::to_string(line_number);
     if (header.empty()) {
-      if (const auto error = split_csv_line(line, header)) {
-        problems.push_back(where + " (header): " + *error);
-        break;
-      }
-      header_ok = true;
-      for (std::size_t i = 0; i < header.size(); ++i) {
-        if (!is_known_column(header[i])) {
-          problems.push_back(where + " (header), column " + std::to_string(i + 1) + " '" +
-                             detail::cut(header[i]) +
-                             "': unknown column (known: " + known_columns() + ")");
-          header_ok = false;
-        } else if (std::find(header.begin(), header.begin() + static_cast<std::ptrdiff_t>(i),
-                             header[i]) != header.begin() + static_cast<std::ptrdiff_t>(i)) {
-          problems.push_back(where + " (header), column " + std::to_string(i + 1) + " '" +
-                             detail::cut(header[i]) + "': appears twice");
-          header_ok = false;
-        }
-      }
-      std::vector<std::string_view> missing_columns;
-      for (const InputSpec* spec : row_inputs()) {
-        if (std::find(header.begin(), header.end(), spec->field) == header.end()) {
-          missing_columns.push_back(spec->field);
-        }
-      }
-      const std::string missing = detail::join(missing_columns, ", ");
-      if (!missing.empty()) {
-        problems.push_back(where + " (header): missing column(s) " + missing +
-                           " (required: " + required_columns() + ")");
-        header_ok = false;
-      }
-      if (!header_ok) {
+      if (!read_csv_header(line, where, header, problems)) {
         break;  // every row would repeat the header's problem
       }
       continue;
     }
     ++row;
     const std::string row_where = where + " (row " + std::to_string(row) + ")";
-    if (const auto error = split_csv_line(line, fields)) {
-      problems.push_back(row_where + ": " + *error);
-      continue;
+    if (auto cells = csv_row_cells(line, header, row_where, problems)) {
+      set.rows.push_back(RowReader(row_where, std::move(*cells), false, problems).read(row));
     }
-    if (fields.size() != header.size()) {
-      problems.push_back(row_where + ": " + std::to_string(fields.size()) +
-                         " fields, the header has " + std::to_string(header.size()));
-      continue;
-    }
-    std::map<std::string, Cell, std::less<>> cells;
-    for (std::size_t i = 0; i < header.size(); ++i) {
-      Cell cell;
-      if (!fields[i].empty()) {
-        cell.kind = Cell::Kind::text;
-        cell.text = fields[i];
-      }
-      cells[header[i]] = std::move(cell);
-    }
-    set.rows.push_back(RowReader(row_where, std::move(cells), false, problems).read(row));
   }
   if (problems.empty() && header.empty()) {
     problems.push_back(origin + ": no header line (expected the columns " + known_columns() + ")");
   } else if (problems.empty() && set.rows.empty()) {
     problems.push_back(origin + ": no rows after the header");
   }
-  if (!problems.empty()) {
-    throw MeasurementError(join_lines(problems));
-  }
+  throw_if_any(problems);
   return set;
 }
 
@@ -511,19 +574,7 @@ MeasurementSet measurements_from_json(const json& j, const std::string& origin) 
                            ": unknown column (known: " + known_columns() + ")");
         continue;
       }
-      Cell cell;
-      if (value.is_string()) {
-        cell.kind = value.get<std::string>().empty() ? Cell::Kind::missing : Cell::Kind::text;
-        cell.text = value.get<std::string>();
-      } else if (value.is_number()) {
-        cell.kind = Cell::Kind::number;
-        cell.number = value.get<double>();
-        cell.number_is_integer = value.is_number_integer();
-      } else if (!value.is_null()) {
-        cell.kind = Cell::Kind::other;
-        cell.text = describe_json(value);
-      }
-      cells[key] = std::move(cell);
+      cells[key] = json_cell(value);
     }
     // Read even with an unknown key, so that every other problem of the row is reported too.
     set.rows.push_back(RowReader(where, std::move(cells), true, problems).read(row));
@@ -531,17 +582,13 @@ MeasurementSet measurements_from_json(const json& j, const std::string& origin) 
   if (problems.empty() && set.rows.empty()) {
     problems.push_back(origin + ": /rows: no rows");
   }
-  if (!problems.empty()) {
-    throw MeasurementError(join_lines(problems));
-  }
+  throw_if_any(problems);
   return set;
 }
 
 MeasurementSet measurements_from_text(const std::string& text, const std::string& origin,
                                       std::string_view extension) {
-  const std::string_view content = trim(text);
-  const bool is_json =
-      extension == ".json" || (extension != ".csv" && !content.empty() && content[0] == '{');
+  const bool is_json = extension == ".json" || (extension != ".csv" && opens_json_object(text));
   if (!is_json) {
     return measurements_from_csv(text, origin);
   }
@@ -661,7 +708,7 @@ void append_measurement(const std::filesystem::path& path, const Measurement& ro
     }
   }
   std::string out;
-  const bool is_json = path.extension() == ".json" || (exists && trim(text).starts_with("{"));
+  const bool is_json = path.extension() == ".json" || (exists && opens_json_object(text));
   if (is_json || !exists) {
     set.rows.push_back(row);
     out = is_json ? measurements_to_json(set).dump(2) + "\n" : measurements_to_csv(set);

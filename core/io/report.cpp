@@ -114,17 +114,14 @@ nlohmann::json solution_to_json(const Solution& s, const Parameters& p,
   return j;
 }
 
-std::string solution_table(const Solution& s, const Parameters& p, const std::string& preset_name,
-                           const ModelStanding* standing) {
-  std::string out = "FoldLab: " + std::string(to_string(s.method)) + " method, " +
-                    std::string(wrinkle_law(p.model.law).title());
-  if (!preset_name.empty()) {
-    out += ", preset \"" + detail::escaped(preset_name) + "\"";
-  }
-  out += "\n\nInputs\n";
+namespace {
+
+// The cloth's inputs and K; p only for the calibrated variant, so that the paper's form reads as
+// before.
+std::string input_lines(const Parameters& p) {
+  std::string out;
   for (const InputSpec& spec : input_table()) {
     const bool cloth = spec.preset.starts_with("/fabric/") || spec.preset.starts_with("/hanging/");
-    // Only the calibrated variant prints its exponent: the paper's form reads as before.
     const bool shown = cloth || spec.key == "K" || (spec.key == "p" && *spec.value(p) != 1.0);
     if (shown) {
       out += line(std::string(spec.name).c_str(), std::string(spec.key).c_str(), *spec.value(p),
@@ -133,24 +130,22 @@ std::string solution_table(const Solution& s, const Parameters& p, const std::st
   }
   out += "  span rule l = " + std::string(to_string(p.model.span_rule)) +
          ", Int[] of eq. 10 = " + std::string(to_string(p.model.int_rounding)) + "\n";
-  const PredictionRange* range = nullptr;
-  if (standing != nullptr) {
-    out += "  form of eq. 7: " + standing->form + ", " + standing->label + "\n";
-    range = standing->range ? &*standing->range : nullptr;
-  }
+  return out;
+}
+
+// n, Q, eq. 7's root (or the spacing that stands in for it), s and z_max, with the prediction
+// interval where the standing has one.
+std::string prediction_lines(const Solution& s, const ModelStanding* standing) {
+  const PredictionRange* range =
+      standing != nullptr && standing->range ? &*standing->range : nullptr;
   auto in_range = [range](auto lo, auto hi, const char* format) {
     return range != nullptr ? range_text(static_cast<double>(range->*lo),
                                          static_cast<double>(range->*hi), format)
                             : std::string();
   };
-
-  out += "\nResult: " + std::string(to_string(s.regime)) + "\n";
-  if (const std::string message = describe(s, p); !message.empty()) {
-    out += "  " + message + "\n";
-  }
-  out += line("number of wrinkles", "n", s.n, "", "%.0f",
-              in_range(&PredictionRange::n_min, &PredictionRange::n_max, "%.0f") +
-                  (s.n_capped ? " (capped: eq. 10 asks for more)" : ""));
+  std::string out = line("number of wrinkles", "n", s.n, "", "%.0f",
+                         in_range(&PredictionRange::n_min, &PredictionRange::n_max, "%.0f") +
+                             (s.n_capped ? " (capped: eq. 10 asks for more)" : ""));
   out += line("amplitude ratio (a_0/a_n)^(1/n)", "Q", s.Q, "", "%.6g",
               in_range(&PredictionRange::Q_min, &PredictionRange::Q_max, "%.4f"));
   if (s.Q7) {
@@ -169,7 +164,12 @@ std::string solution_table(const Solution& s, const Parameters& p, const std::st
                            : std::string("  interval: ");
     out += standing->range_basis + "\n";
   }
-  out += line("span between supports", "l", s.span_mm, "mm", "%.2f");
+  return out;
+}
+
+// The span, the sag, the cloth's bending and, where the folds are rounded, their crests.
+std::string shape_lines(const Solution& s, const Parameters& p) {
+  std::string out = line("span between supports", "l", s.span_mm, "mm", "%.2f");
   out += line("sag of the upper edge", "A", s.sag_amplitude_mm, "mm", "%.2f");
   out += line("bending stiffness Et³/12(1-ν²)", "B", bending_stiffness_Nmm(p.fabric), "N mm");
   out += line("bending length (B/w)^(1/3)", "c_b", bending_length_mm(p.fabric), "mm", "%.2f");
@@ -183,26 +183,60 @@ std::string solution_table(const Solution& s, const Parameters& p, const std::st
         printf_string("mm (%.2f %% below z_max)", 100.0 * (1.0 - rounding.depth_scale)).c_str(),
         "%.2f");
   }
-  out += line("iterations", "", s.iterations, "", "%.0f");
+  return out;
+}
+
+std::string convergence_lines(const Solution& s) {
+  std::string out = line("iterations", "", s.iterations, "", "%.0f");
   out += line("residual of eq. 8, L'/L - 1", "", s.residual_length, "", "%.3e");
   out += line("residual of eq. 9, fibre/h - 1", "", s.residual_height, "", "%.3e");
-  if (!s.a_mm.empty()) {
-    out += "\n  fold amplitudes a_i (mm), i = 0 (lower boundary) .. n (upper edge):\n";
-    const std::size_t shown = std::min<std::size_t>(s.a_mm.size(), 40);
-    for (std::size_t i = 0; i < shown; ++i) {
-      finite_or_throw(s.a_mm[i], "a_" + std::to_string(i));
-      char cell[48];
-      std::snprintf(cell, sizeof cell, "    a_%-3zu %10.2f%s", i, s.a_mm[i],
-                    (i % 4 == 3) ? "\n" : "");
-      out += cell;
-    }
-    if (shown % 4 != 0) {
-      out += "\n";
-    }
-    if (shown < s.a_mm.size()) {
-      out += "    ... " + std::to_string(s.a_mm.size() - shown) + " more (see --json)\n";
-    }
+  return out;
+}
+
+// The first 40 amplitudes, four to a line.
+std::string amplitude_lines(const Solution& s) {
+  if (s.a_mm.empty()) {
+    return "";
   }
+  std::string out = "\n  fold amplitudes a_i (mm), i = 0 (lower boundary) .. n (upper edge):\n";
+  const std::size_t shown = std::min<std::size_t>(s.a_mm.size(), 40);
+  for (std::size_t i = 0; i < shown; ++i) {
+    finite_or_throw(s.a_mm[i], "a_" + std::to_string(i));
+    char cell[48];
+    std::snprintf(cell, sizeof cell, "    a_%-3zu %10.2f%s", i, s.a_mm[i],
+                  (i % 4 == 3) ? "\n" : "");
+    out += cell;
+  }
+  if (shown % 4 != 0) {
+    out += "\n";
+  }
+  if (shown < s.a_mm.size()) {
+    out += "    ... " + std::to_string(s.a_mm.size() - shown) + " more (see --json)\n";
+  }
+  return out;
+}
+
+}  // namespace
+
+std::string solution_table(const Solution& s, const Parameters& p, const std::string& preset_name,
+                           const ModelStanding* standing) {
+  std::string out = "FoldLab: " + std::string(to_string(s.method)) + " method, " +
+                    std::string(wrinkle_law(p.model.law).title());
+  if (!preset_name.empty()) {
+    out += ", preset \"" + detail::escaped(preset_name) + "\"";
+  }
+  out += "\n\nInputs\n" + input_lines(p);
+  if (standing != nullptr) {
+    out += "  form of eq. 7: " + standing->form + ", " + standing->label + "\n";
+  }
+  out += "\nResult: " + std::string(to_string(s.regime)) + "\n";
+  if (const std::string message = describe(s, p); !message.empty()) {
+    out += "  " + message + "\n";
+  }
+  out += prediction_lines(s, standing);
+  out += shape_lines(s, p);
+  out += convergence_lines(s);
+  out += amplitude_lines(s);
   return out;
 }
 

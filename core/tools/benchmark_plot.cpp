@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdio>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/model/text_format.hpp"
@@ -42,18 +43,20 @@ Axis decade_axis(double lo, double hi, double pixel_lo, double pixel_hi) {
   return {lo_log, hi_log, pixel_lo, pixel_hi};
 }
 
-}  // namespace
+// The chart's size and its plot area's margins, in pixels.
+constexpr double kWidth = 960;
+constexpr double kHeight = 640;
+constexpr double kLeft = 90;
+constexpr double kRight = 250;  // room for the legend and labels
+constexpr double kTop = 70;
+constexpr double kBottom = 70;
 
-std::string benchmark_svg(const std::vector<BenchmarkRow>& rows, const std::string& subtitle) {
-  constexpr double kWidth = 960;
-  constexpr double kHeight = 640;
-  constexpr double kLeft = 90;
-  constexpr double kRight = 250;  // room for the legend and labels
-  constexpr double kTop = 70;
-  constexpr double kBottom = 70;
-  auto shown_error = [](const BenchmarkRow& r) {
-    return std::max(r.accuracy.median_z_error, kErrorFloor);
-  };
+double shown_error(const BenchmarkRow& r) {
+  return std::max(r.accuracy.median_z_error, kErrorFloor);
+}
+
+// Run time across, error up, each over the decades the rows reach.
+std::pair<Axis, Axis> chart_axes(const std::vector<BenchmarkRow>& rows) {
   double t_lo = 1e300;
   double t_hi = 0;
   double e_lo = 1e300;
@@ -70,9 +73,11 @@ std::string benchmark_svg(const std::vector<BenchmarkRow>& rows, const std::stri
     e_lo = kErrorFloor;
     e_hi = 1;
   }
-  const Axis x = decade_axis(std::max(t_lo, 1.0), std::max(t_hi, 1.0), kLeft, kWidth - kRight);
-  const Axis y = decade_axis(e_lo, e_hi, kHeight - kBottom, kTop);
+  return {decade_axis(std::max(t_lo, 1.0), std::max(t_hi, 1.0), kLeft, kWidth - kRight),
+          decade_axis(e_lo, e_hi, kHeight - kBottom, kTop)};
+}
 
+std::string chart_heading(const std::string& subtitle) {
   std::string svg = printf_string(
       "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%.0f\" height=\"%.0f\" viewBox=\"0 0 "
       "%.0f %.0f\" font-family=\"sans-serif\" font-size=\"13\">\n",
@@ -82,8 +87,12 @@ std::string benchmark_svg(const std::vector<BenchmarkRow>& rows, const std::stri
          "FoldLab: run time against error of z_max</text>\n";
   svg += printf_string("<text x=\"%.0f\" y=\"50\" fill=\"#555\">", kLeft) +
          detail::xml_escape(subtitle) + "</text>\n";
+  return svg;
+}
 
-  // Decade grid and labels.
+// Decade grid and labels, the plot area's frame and the axes' titles.
+std::string chart_axes_svg(const Axis& x, const Axis& y) {
+  std::string svg;
   for (int k = static_cast<int>(x.lo_log); k <= static_cast<int>(x.hi_log); ++k) {
     const double px = x.at(std::pow(10.0, k));
     svg +=
@@ -111,8 +120,11 @@ std::string benchmark_svg(const std::vector<BenchmarkRow>& rows, const std::stri
   svg += printf_string("<text transform=\"translate(22 %.1f) rotate(-90)\" text-anchor=\"middle\">",
                        (kTop + kHeight - kBottom) / 2) +
          "median relative error of z_max (log scale)</text>\n";
+  return svg;
+}
 
-  // The Pareto front, joined in order of time.
+// The rows on the Pareto front, in order of time.
+std::vector<const BenchmarkRow*> pareto_front(const std::vector<BenchmarkRow>& rows) {
   std::vector<const BenchmarkRow*> front;
   for (const BenchmarkRow& r : rows) {
     if (r.pareto) {
@@ -122,52 +134,65 @@ std::string benchmark_svg(const std::vector<BenchmarkRow>& rows, const std::stri
   std::sort(front.begin(), front.end(), [](const BenchmarkRow* a, const BenchmarkRow* b) {
     return a->timing.median_ns < b->timing.median_ns;
   });
-  if (front.size() > 1) {
-    svg +=
-        "<polyline fill=\"none\" stroke=\"#222\" stroke-width=\"1.5\" stroke-dasharray=\"5 4\" "
-        "points=\"";
-    for (const BenchmarkRow* r : front) {
-      svg += printf_string("%.1f,%.1f ", x.at(r->timing.median_ns), y.at(shown_error(*r)));
-    }
-    svg += "\"/>\n";
-  }
+  return front;
+}
 
-  // The points: circles for Simpson, squares for the trapezoid rule, a diamond for the exact
-  // method; more opaque for tighter tolerances; a thick outline on the Pareto front.
-  for (const BenchmarkRow& r : rows) {
-    const double px = x.at(r.timing.median_ns);
-    const double py = y.at(shown_error(r));
-    const double opacity = r.method.tolerance >= 0.05 ? 0.45 : r.method.tolerance >= 0.01 ? 0.7 : 1;
-    const std::string style =
-        printf_string(" fill-opacity=\"%.2f\" stroke=\"#000\" stroke-width=\"%.1f\"",
-                      r.method.method == Method::exact ? 1.0 : opacity, r.pareto ? 2.0 : 0.5);
-    const std::string title = "<title>" + detail::xml_escape(r.method.name) +
-                              printf_string(": %.0f ns, z_max error %.2g", r.timing.median_ns,
-                                            r.accuracy.median_z_error) +
-                              "</title>";
-    if (r.method.method == Method::exact) {
-      svg += printf_string("<path d=\"M %.1f %.1f l 9 9 l -9 9 l -9 -9 z\" fill=\"#1a9850\"", px,
-                           py - 9) +
-             style + ">" + title + "</path>\n";
-    } else if (r.method.quadrature == LengthQuadrature::simpson) {
-      svg += printf_string("<circle cx=\"%.1f\" cy=\"%.1f\" r=\"6\" fill=\"#2166ac\"", px, py) +
-             style + ">" + title + "</circle>\n";
-    } else {
-      svg +=
-          printf_string("<rect x=\"%.1f\" y=\"%.1f\" width=\"11\" height=\"11\" fill=\"#d6604d\"",
-                        px - 5.5, py - 5.5) +
-          style + ">" + title + "</rect>\n";
-    }
+std::string front_line(const std::vector<const BenchmarkRow*>& front, const Axis& x,
+                       const Axis& y) {
+  if (front.size() <= 1) {
+    return "";
   }
-  // Labels for the front, to the right of each point.
+  std::string svg =
+      "<polyline fill=\"none\" stroke=\"#222\" stroke-width=\"1.5\" stroke-dasharray=\"5 4\" "
+      "points=\"";
+  for (const BenchmarkRow* r : front) {
+    svg += printf_string("%.1f,%.1f ", x.at(r->timing.median_ns), y.at(shown_error(*r)));
+  }
+  return svg + "\"/>\n";
+}
+
+// A circle for Simpson, a square for the trapezoid rule, a diamond for the exact method; more
+// opaque for tighter tolerances; a thick outline on the Pareto front.
+std::string point_marker(const BenchmarkRow& r, const Axis& x, const Axis& y) {
+  const double px = x.at(r.timing.median_ns);
+  const double py = y.at(shown_error(r));
+  const double opacity = r.method.tolerance >= 0.05 ? 0.45 : r.method.tolerance >= 0.01 ? 0.7 : 1;
+  const std::string style =
+      printf_string(" fill-opacity=\"%.2f\" stroke=\"#000\" stroke-width=\"%.1f\"",
+                    r.method.method == Method::exact ? 1.0 : opacity, r.pareto ? 2.0 : 0.5);
+  const std::string title =
+      "<title>" + detail::xml_escape(r.method.name) +
+      printf_string(": %.0f ns, z_max error %.2g", r.timing.median_ns, r.accuracy.median_z_error) +
+      "</title>";
+  if (r.method.method == Method::exact) {
+    return printf_string("<path d=\"M %.1f %.1f l 9 9 l -9 9 l -9 -9 z\" fill=\"#1a9850\"", px,
+                         py - 9) +
+           style + ">" + title + "</path>\n";
+  }
+  if (r.method.quadrature == LengthQuadrature::simpson) {
+    return printf_string("<circle cx=\"%.1f\" cy=\"%.1f\" r=\"6\" fill=\"#2166ac\"", px, py) +
+           style + ">" + title + "</circle>\n";
+  }
+  return printf_string("<rect x=\"%.1f\" y=\"%.1f\" width=\"11\" height=\"11\" fill=\"#d6604d\"",
+                       px - 5.5, py - 5.5) +
+         style + ">" + title + "</rect>\n";
+}
+
+// The front's names, to the right of each point.
+std::string front_labels(const std::vector<const BenchmarkRow*>& front, const Axis& x,
+                         const Axis& y) {
+  std::string svg;
   for (const BenchmarkRow* r : front) {
     const double px = x.at(r->timing.median_ns);
     const double py = y.at(shown_error(*r));
     svg += printf_string("<text x=\"%.1f\" y=\"%.1f\" font-size=\"11\">", px + 11, py + 4) +
            detail::xml_escape(r->method.name) + "</text>\n";
   }
+  return svg;
+}
 
-  // Legend.
+std::string legend() {
+  std::string svg;
   const double lx = kWidth - kRight + 20;
   double ly = kTop + 10;
   auto legend_line = [&](const std::string& marker, const std::string& text) {
@@ -197,6 +222,19 @@ std::string benchmark_svg(const std::vector<BenchmarkRow>& rows, const std::stri
   }
   svg += printf_string("<text x=\"%.1f\" y=\"%.1f\" fill=\"#555\">", lx - 8, ly + 4) +
          printf_string("errors &lt; %.0e drawn at %.0e", kErrorFloor, kErrorFloor) + "</text>\n";
+  return svg;
+}
+
+}  // namespace
+
+std::string benchmark_svg(const std::vector<BenchmarkRow>& rows, const std::string& subtitle) {
+  const auto [x, y] = chart_axes(rows);
+  const std::vector<const BenchmarkRow*> front = pareto_front(rows);
+  std::string svg = chart_heading(subtitle) + chart_axes_svg(x, y) + front_line(front, x, y);
+  for (const BenchmarkRow& r : rows) {
+    svg += point_marker(r, x, y);
+  }
+  svg += front_labels(front, x, y) + legend();
   svg += "</svg>\n";
   return svg;
 }

@@ -639,15 +639,8 @@ void ClothRenderer::draw_shadow(const ClothBuffers& buffers,
   glDisable(GL_BLEND);
 }
 
-unsigned ClothRenderer::render(const ClothBuffers& buffers, const OrbitCamera& camera,
-                               FrameSize size, const ClothStyle& style) {
-  GLint previous_viewport[4];
-  glGetIntegerv(GL_VIEWPORT, previous_viewport);
-  resize(size);
-  update_print(style);
-  const float aspect =
-      static_cast<float>(size.width) / static_cast<float>(std::max(size.height, 1));
-  const Eigen::Matrix4f view_projection = camera.projection(aspect) * camera.view();
+void ClothRenderer::upload_stale(const ClothBuffers& buffers, const OrbitCamera& camera,
+                                 FrameSize size, const ClothStyle& style) {
   // Upload only what changed (cloth_uploads.hpp). The wireframe shows the grid as it is;
   // otherwise the cells are a few pixels (level_of_detail.hpp).
   const ClothBufferSources sources = cloth_buffer_sources(buffers, camera, size, style);
@@ -661,7 +654,9 @@ unsigned ClothRenderer::render(const ClothBuffers& buffers, const OrbitCamera& c
   if (uploads.decorations) {
     upload_decorations(buffers);
   }
+}
 
+void ClothRenderer::begin_drawing(FrameSize size, const ClothStyle& style) {
   glBindFramebuffer(GL_FRAMEBUFFER, gl_->framebuffer.get());
   glViewport(0, 0, size.width, size.height);
   glClearColor(style.background.x(), style.background.y(), style.background.z(),
@@ -671,10 +666,12 @@ unsigned ClothRenderer::render(const ClothBuffers& buffers, const OrbitCamera& c
   glDisable(GL_CULL_FACE);
   glDisable(GL_BLEND);
   glDisable(GL_SCISSOR_TEST);
+}
 
-  const Eigen::Vector3f eye = camera.eye();
-
-  // The cloth, pushed back a little so that lines on its surface win the depth test.
+void ClothRenderer::draw_cloth_surface(const ClothBuffers& buffers, const ClothStyle& style,
+                                       const Eigen::Matrix4f& view_projection,
+                                       const Eigen::Vector3f& eye) {
+  // Pushed back a little so that lines on its surface win the depth test.
   glEnable(GL_POLYGON_OFFSET_FILL);
   glPolygonOffset(1.0f, 1.0f);
   select_mesh_program(style);
@@ -687,19 +684,21 @@ unsigned ClothRenderer::render(const ClothBuffers& buffers, const OrbitCamera& c
   glBindVertexArray(gl_->mesh_vao.get());
   glDrawElements(GL_TRIANGLES, gl_->mesh_index_count, GL_UNSIGNED_INT, nullptr);
   glDisable(GL_POLYGON_OFFSET_FILL);
+}
 
+void ClothRenderer::draw_lines(const ClothBuffers& buffers, const ClothStyle& style,
+                               const Eigen::Matrix4f& view_projection) {
   const LineProgram& line = gl_->line_program;
   glUseProgram(line.program.get());
   glUniformMatrix4fv(line.view_projection, 1, GL_FALSE, view_projection.data());
-  const GLint override_colour = line.override_colour;
   glUniform1f(line.point_size, 1.0f);
   set_breeze_uniforms(line.breeze, buffers, style);
   if (style.wireframe && gl::set_polygon_lines(true)) {
-    glUniform4f(override_colour, 0.1f, 0.1f, 0.1f, 1.0f);
+    glUniform4f(line.override_colour, 0.1f, 0.1f, 0.1f, 1.0f);
     glDrawElements(GL_TRIANGLES, gl_->mesh_index_count, GL_UNSIGNED_INT, nullptr);
     gl::set_polygon_lines(false);
   }
-  glUniform4f(override_colour, 0.0f, 0.0f, 0.0f, 0.0f);
+  glUniform4f(line.override_colour, 0.0f, 0.0f, 0.0f, 0.0f);
   if (style.ground) {
     draw_shadow(buffers, view_projection);
     glUseProgram(line.program.get());
@@ -709,6 +708,11 @@ unsigned ClothRenderer::render(const ClothBuffers& buffers, const OrbitCamera& c
     gl::multi_draw_arrays(GL_LINE_STRIP, gl_->line_firsts.data(), gl_->line_counts.data(),
                           static_cast<GLsizei>(gl_->line_counts.size()));
   }
+}
+
+// The ground's grid and the supports, with the line program in use.
+void ClothRenderer::draw_decorations(const ClothStyle& style) {
+  const LineProgram& line = gl_->line_program;
   glBindVertexArray(gl_->decor_vao.get());
   if (style.ground) {
     glDrawArrays(GL_LINES, 0, gl_->ground_vertex_count);
@@ -716,12 +720,27 @@ unsigned ClothRenderer::render(const ClothBuffers& buffers, const OrbitCamera& c
   gl::set_program_point_size(true);
   glUniform1f(line.point_size, 12.0f);
   // The supports' colour follows the theme (the backdrop does), so it is a uniform, not baked in.
-  glUniform4f(override_colour, style.support_colour.x(), style.support_colour.y(),
+  glUniform4f(line.override_colour, style.support_colour.x(), style.support_colour.y(),
               style.support_colour.z(), 1.0f);
   glDisable(GL_DEPTH_TEST);  // the supports are always visible
   glDrawArrays(GL_POINTS, gl_->support_first, gl_->support_count);
   gl::set_program_point_size(false);
+}
 
+unsigned ClothRenderer::render(const ClothBuffers& buffers, const OrbitCamera& camera,
+                               FrameSize size, const ClothStyle& style) {
+  GLint previous_viewport[4];
+  glGetIntegerv(GL_VIEWPORT, previous_viewport);
+  resize(size);
+  update_print(style);
+  const float aspect =
+      static_cast<float>(size.width) / static_cast<float>(std::max(size.height, 1));
+  const Eigen::Matrix4f view_projection = camera.projection(aspect) * camera.view();
+  upload_stale(buffers, camera, size, style);
+  begin_drawing(size, style);
+  draw_cloth_surface(buffers, style, view_projection, camera.eye());
+  draw_lines(buffers, style, view_projection);
+  draw_decorations(style);
   glBindVertexArray(0);
   glUseProgram(0);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);

@@ -44,6 +44,15 @@ class ClothRenderer {
   void select_mesh_program(const ClothStyle& style);
   void set_mesh_colour_uniforms(const ClothBuffers& buffers, const ClothStyle& style);
   void draw_shadow(const ClothBuffers& buffers, const Eigen::Matrix4f& view_projection);
+  // The steps of render(), in order.
+  void upload_stale(const ClothBuffers& buffers, const OrbitCamera& camera, FrameSize size,
+                    const ClothStyle& style);
+  void begin_drawing(FrameSize size, const ClothStyle& style);
+  void draw_cloth_surface(const ClothBuffers& buffers, const ClothStyle& style,
+                          const Eigen::Matrix4f& view_projection, const Eigen::Vector3f& eye);
+  void draw_lines(const ClothBuffers& buffers, const ClothStyle& style,
+                  const Eigen::Matrix4f& view_projection);
+  void draw_decorations(const ClothStyle& style);
 
   // The GL objects, each owned by a handle; kept out of the header so that it needs no GL include.
   std::unique_ptr<Gl> gl_;

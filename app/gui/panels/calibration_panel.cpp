@@ -180,16 +180,8 @@ void CalibrationPanel::collect_finished_run() {
   }
 }
 
-void CalibrationPanel::draw(PanelContext& context) {
-  Document& document = context.document;
-  Renderer& renderer = context.renderer;
-  collect_finished_run();
-  if (!open_) {
-    return;
-  }
-  const Parameters& edited = document.edited();
-  const Preset& loaded = document.loaded();
-  // A floating window over the tiled panels: it opens on demand from the Presets panel.
+// A floating window over the tiled panels: it opens on demand from the Presets panel.
+void CalibrationPanel::place_window() {
   const ImVec2 display = ImGui::GetIO().DisplaySize;
   ImGui::SetNextWindowPos(ImVec2(0.14f * display.x, 0.06f * display.y), ImGuiCond_FirstUseEver);
   ImGui::SetNextWindowSize(ImVec2(0.72f * display.x, 0.88f * display.y), ImGuiCond_FirstUseEver);
@@ -197,67 +189,84 @@ void CalibrationPanel::draw(PanelContext& context) {
     ImGui::SetNextWindowFocus();
     focus_on_open_ = false;
   }
-  if (ImGui::Begin(window_label().c_str(), &open_)) {
-    renderer.fill_window_background();  // the style's window background is transparent
-    section("The model's constants");
-    ImGui::TextColored(kDimText, "now:");
-    ImGui::SameLine();
-    wrapped_text("%s", describe_model_form(edited).c_str());
-    ImGui::TextColored(kDimText, "preset \"%s\" carries:", loaded.name.c_str());
-    ImGui::SameLine();
-    wrapped_text("%s", describe_model_form(loaded.parameters).c_str());
+}
 
-    section("Measurements");
-    if (!data_ && !data_message_is_error_ && data_message_.empty() && data_path_[0] != '\0') {
-      load_data();  // the shipped paper data, on first opening
-    }
-    ImGui::SetNextItemWidth(-ImGui::CalcTextSize("Load").x -
-                            3.0f * ImGui::GetStyle().ItemSpacing.x);
-    ImGui::InputTextWithHint("##data", "measurements file, CSV or JSON", data_path_,
-                             sizeof data_path_);
-    ImGui::SameLine();
-    if (ImGui::Button("Load")) {
-      load_data();
-    }
-    if (!data_message_.empty()) {
-      ImGui::PushStyleColor(ImGuiCol_Text, data_message_is_error_ ? kErrorText : kDimText);
-      wrapped_text("%s", data_message_.c_str());
-      ImGui::PopStyleColor();
-    }
+void CalibrationPanel::constants_section(const Parameters& edited, const Preset& loaded) {
+  section("The model's constants");
+  ImGui::TextColored(kDimText, "now:");
+  ImGui::SameLine();
+  wrapped_text("%s", describe_model_form(edited).c_str());
+  ImGui::TextColored(kDimText, "preset \"%s\" carries:", loaded.name.c_str());
+  ImGui::SameLine();
+  wrapped_text("%s", describe_model_form(loaded.parameters).c_str());
+}
 
-    section("Fit");
-    ImGui::RadioButton("K alone (p as now)", &fit_choice_, 0);
+void CalibrationPanel::measurements_section() {
+  section("Measurements");
+  if (!data_ && !data_message_is_error_ && data_message_.empty() && data_path_[0] != '\0') {
+    load_data();  // the shipped paper data, on first opening
+  }
+  ImGui::SetNextItemWidth(-ImGui::CalcTextSize("Load").x - 3.0f * ImGui::GetStyle().ItemSpacing.x);
+  ImGui::InputTextWithHint("##data", "measurements file, CSV or JSON", data_path_,
+                           sizeof data_path_);
+  ImGui::SameLine();
+  if (ImGui::Button("Load")) {
+    load_data();
+  }
+  if (!data_message_.empty()) {
+    ImGui::PushStyleColor(ImGuiCol_Text, data_message_is_error_ ? kErrorText : kDimText);
+    wrapped_text("%s", data_message_.c_str());
+    ImGui::PopStyleColor();
+  }
+}
+
+void CalibrationPanel::fit_section(const Parameters& edited, const std::function<void()>& wake) {
+  section("Fit");
+  ImGui::RadioButton("K alone (p as now)", &fit_choice_, 0);
+  ImGui::SameLine();
+  ImGui::RadioButton("K and p (s -> s^p)", &fit_choice_, 1);
+  ImGui::TextColored(
+      kDimText, "Every row is solved with the current model settings: %s method, l = %s, Int = %s.",
+      std::string(to_string(edited.model.method)).c_str(),
+      std::string(to_string(edited.model.span_rule)).c_str(),
+      std::string(to_string(edited.model.int_rounding)).c_str());
+  const bool valid = validate(edited).empty();
+  if (job_.pending()) {
+    ImGui::ProgressBar(static_cast<float>(job_.progress()), ImVec2(-ems(7.0f), 0.0f));
     ImGui::SameLine();
-    ImGui::RadioButton("K and p (s -> s^p)", &fit_choice_, 1);
-    ImGui::TextColored(
-        kDimText,
-        "Every row is solved with the current model settings: %s method, l = %s, Int = %s.",
-        std::string(to_string(edited.model.method)).c_str(),
-        std::string(to_string(edited.model.span_rule)).c_str(),
-        std::string(to_string(edited.model.int_rounding)).c_str());
-    const bool valid = validate(edited).empty();
-    if (job_.pending()) {
-      ImGui::ProgressBar(static_cast<float>(job_.progress()), ImVec2(-ems(7.0f), 0.0f));
+    if (ImGui::Button("Cancel")) {
+      job_.cancel();
+    }
+  } else {
+    ImGui::BeginDisabled(!data_ || !valid);
+    if (ImGui::Button("Run the fit")) {
+      start(edited, wake);
+    }
+    ImGui::EndDisabled();
+    if (!valid) {
       ImGui::SameLine();
-      if (ImGui::Button("Cancel")) {
-        job_.cancel();
-      }
-    } else {
-      ImGui::BeginDisabled(!data_ || !valid);
-      if (ImGui::Button("Run the fit")) {
-        start(edited, context.wake);
-      }
-      ImGui::EndDisabled();
-      if (!valid) {
-        ImGui::SameLine();
-        ImGui::TextColored(kErrorText, "the current parameters are not valid");
-      }
+      ImGui::TextColored(kErrorText, "the current parameters are not valid");
     }
-    if (!run_message_.empty()) {
-      ImGui::PushStyleColor(ImGuiCol_Text, run_message_is_error_ ? kErrorText : kNoteText);
-      wrapped_text("%s", run_message_.c_str());
-      ImGui::PopStyleColor();
-    }
+  }
+  if (!run_message_.empty()) {
+    ImGui::PushStyleColor(ImGuiCol_Text, run_message_is_error_ ? kErrorText : kNoteText);
+    wrapped_text("%s", run_message_.c_str());
+    ImGui::PopStyleColor();
+  }
+}
+
+void CalibrationPanel::draw(PanelContext& context) {
+  Document& document = context.document;
+  collect_finished_run();
+  if (!open_) {
+    return;
+  }
+  place_window();
+  if (ImGui::Begin(window_label().c_str(), &open_)) {
+    context.renderer.fill_window_background();  // the style's window background is transparent
+    constants_section(document.edited(), document.loaded());
+    measurements_section();
+    fit_section(document.edited(), context.wake);
     if (report_) {
       apply_section(document);
       results_section();

@@ -48,6 +48,10 @@ class CalibrationPanel : public Panel {
   void load_data();
   void start(const Parameters& base, const std::function<void()>& wake);
   void collect_finished_run();
+  void place_window();
+  void constants_section(const Parameters& edited, const Preset& loaded);
+  void measurements_section();
+  void fit_section(const Parameters& edited, const std::function<void()>& wake);
   void results_section();
   void apply_section(Document& document);
 
