@@ -69,6 +69,10 @@ class Explorer {
 
   // Before ImGui::NewFrame: applies a new UI scale or theme (fonts cannot change within a frame).
   void prepare_frame() { appearance_.apply(renderer_); }
+  // The last frame asked for another text size or theme, which the next prepare_frame builds:
+  // what it drew is laid out with the old fonts, and a click read against the next frame would
+  // land on another widget than the one drawn where it was made.
+  bool layout_pending() const { return appearance_.pending(); }
   // Builds every window for this frame; between ImGui::NewFrame and ImGui::Render.
   void frame();
 
@@ -91,6 +95,7 @@ class Explorer {
     return renderer_.cloth_counters(cloth_view_->b_view());
   }
   const AnalysisPanel& analysis() const { return *analysis_; }
+  AnalysisPanel& analysis() { return *analysis_; }
   const PresetsPanel& presets() const { return *presets_; }
   const ParametersPanel& parameters_panel() const { return *parameters_; }
   const FoldPlotPanel& fold_plot() const { return *fold_plot_; }
@@ -196,9 +201,10 @@ class Explorer {
   Renderer& renderer_;
   Appearance appearance_;
   Document document_;
-  ExportPanel export_;                     // the Export menu, in the menu bar
-  ClothView picture_view_ = kNoClothView;  // the cloth of pictures (write_picture)
-  FileDialog files_;                       // every panel's open and save dialog
+  ExportPanel export_;                             // the Export menu, in the menu bar
+  ClothView picture_view_ = kNoClothView;          // the cloth of pictures (write_picture)
+  ClothView compare_picture_view_ = kNoClothView;  // B's cloth in pictures of A and B
+  FileDialog files_;                               // every panel's open and save dialog
   // The panels, in drawing order; the pointers below point into it, for what the explorer's
   // own interface offers of them.
   std::vector<std::unique_ptr<Panel>> panels_;
