@@ -58,6 +58,11 @@ echo "docs.sh: explorer pictures" >&2
   --out docs/explorer-table1-h2350-exact.png
 "$foldlab" render --size "$size" --view sweep=table1 --tab sweep --out docs/explorer-sweep-table1.png
 "$foldlab" render --size "$size" --tab map --out docs/explorer-regime-map.png
+# Pictures for a slide, no interface: the sweep of Table 1 and two fabrics side by side.
+"$foldlab" picture sweep --size 1600x1000 --view sweep=table1 --caption \
+  --out docs/picture-sweep-table1.png
+"$foldlab" picture compare --size 1600x800 --preset presets/fabric-cotton-poplin.json \
+  --b-preset presets/fabric-denim-13oz.json --caption --out docs/picture-compare-poplin-denim.png
 # The Method tab for teachers: the exact method's staircase from the paper's start to its fixed
 # point, clicked through as a person would.
 cat >"$work/method.json" <<EOF

@@ -30,6 +30,7 @@
 #include "app/common/version.hpp"
 #include "app/gui/appearance.hpp"
 #include "app/gui/explorer.hpp"
+#include "app/gui/frame_pacing.hpp"
 #include "app/gui/input_player.hpp"
 #include "app/gui/panel.hpp"
 #include "app/gui/panels/widgets.hpp"
@@ -1264,6 +1265,86 @@ TEST_F(ExplorerTest, TheIntroductionOpensFromTheMenuAndClosesWithEscapeOrClose) 
   EXPECT_EQ(frame().find("A cloth hangs"), std::string::npos);
 }
 
+// The window's loop after input (gui_app.cpp): frames until the frames after input have settled
+// and nothing animates, each frame's input noted as the loop notes it.
+int frames_until_rest(FramesAfterInput& pacing, Explorer& explorer,
+                      const std::function<void()>& frame) {
+  int drawn = 0;
+  while ((!pacing.settled() || explorer.animating()) && drawn < 100) {
+    frame();
+    pacing.frame_drawn(frame_saw_input(ImGui::GetIO()));
+    ++drawn;
+  }
+  return drawn;
+}
+
+// The introduction's text scrolls in a child window, whose height ImGui knows only from the frame
+// before: its first frame shows no scrollbar and the text cut at "Results". Opened by a click
+// whose release comes in the last frame after the press, it still gets the frames that bring the
+// scrollbar before the window rests.
+TEST_F(ExplorerTest, TheIntroductionShowsItsScrollbarBeforeTheWindowRests) {
+  ImGuiIO& io = ImGui::GetIO();
+  frame();
+  const ImVec2 at = position_of(IntroWindow::kTitle);
+  FramesAfterInput pacing;
+  pacing.woken(true);  // the press woke the window
+  io.MousePos = ImVec2(at.x + 3.0f, at.y + 4.0f);
+  io.MouseDown[0] = true;
+  frame();
+  pacing.frame_drawn(frame_saw_input(io));
+  frame();
+  pacing.frame_drawn(frame_saw_input(io));
+  io.MouseDown[0] = false;  // the release, in the third frame after the press
+  frame();
+  pacing.frame_drawn(frame_saw_input(io));
+  ASSERT_TRUE(explorer_->intro().is_open());
+  EXPECT_GE(frames_until_rest(pacing, *explorer_, [&] { frame(); }), 2);
+  const ImGuiWindow* text = nullptr;
+  for (const ImGuiWindow* window : ImGui::GetCurrentContext()->Windows) {
+    if (window->Active &&
+        std::string_view(window->Name).find("##intro text") != std::string_view::npos) {
+      text = window;
+    }
+  }
+  ASSERT_NE(text, nullptr);
+  EXPECT_TRUE(text->ScrollbarY) << "the frame the window rests on shows the scrollbar";
+  EXPECT_GT(text->ScrollMax.y, 0.0f);
+}
+
+// Ctrl+0 at 150 %: the frame that reads the key is still laid out with the old font, which the
+// next frame replaces. The window's loop draws that next frame at once, before it reads more
+// input, so that a click made at once lands on the widget drawn where it was made: "play", not
+// the "shape" list the new layout put there.
+TEST_F(ExplorerTest, AClickRightAfterCtrl0LandsOnTheWidgetDrawnThere) {
+  open_explorer("equations", kDejaVuSans);
+  ASSERT_EQ(explorer_->set_view("scale", "150"), std::nullopt);
+  for (int i = 0; i < 3; ++i) {
+    frame();
+  }
+  const ImVec2 hint_at_150 = position_of("(thickness)");
+  ImGuiIO& io = ImGui::GetIO();
+  io.KeyCtrl = true;
+  io.KeysDown['0'] = true;
+  frame();
+  io.KeyCtrl = false;
+  io.KeysDown['0'] = false;
+  ASSERT_TRUE(explorer_->layout_pending()) << "the smaller font waits for the next frame";
+  EXPECT_EQ(position_of("(thickness)").y, hint_at_150.y) << "this frame shows the old layout";
+  int settling = 0;
+  while (explorer_->layout_pending() && settling < 5) {
+    frame();
+    ++settling;
+  }
+  EXPECT_EQ(settling, 1);
+  EXPECT_FALSE(explorer_->layout_pending());
+  EXPECT_NE(position_of("(thickness)").y, hint_at_150.y) << "the layout at 100 % moved";
+  // A click where the screen now shows "play" (the played click's press comes at once).
+  ASSERT_EQ(play(*explorer_, {{"steps", {{{"click", "play"}}}}}, [&] { frame(); }), 0);
+  EXPECT_TRUE(explorer_->animating()) << "play was hit";
+  EXPECT_FALSE(ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId)) << "no list was opened";
+  ASSERT_EQ(play(*explorer_, {{"steps", {{{"click", "pause"}}}}}, [&] { frame(); }), 0);
+}
+
 // Clicking a preset once replaced unsaved edits with no question.
 TEST_F(ExplorerTest, APresetClickAsksBeforeReplacingUnsavedEditsAndCancelKeepsThem) {
   ASSERT_EQ(explorer_->set_input("d", 123.0), std::nullopt);
@@ -2147,6 +2228,12 @@ TEST_F(ExplorerTest, TheSweepShowsAStiffStretchAsABandNotASpike) {
   EXPECT_DOUBLE_EQ(stiff.from, 500.0);
   EXPECT_NEAR(stiff.to, 1402.6, 2500.0 / 199.0);  // within one step of the sweep
   EXPECT_NE(text.find("stiff"), std::string::npos) << "the band's name is drawn\n" << text;
+  // A key above the plots says what each shade is: a band one sample wide has no room for its
+  // name.
+  EXPECT_NE(squeezed(text).find(
+                squeezed(std::string("stiff: ") + std::string(regime_info(Regime::stiff).plain))),
+            std::string::npos)
+      << text;
   // The largest Q with two or more folds, from the same sweep solved here.
   double wrinkled_max_Q = 0.0;
   double stiff_max_Q = 0.0;
@@ -2448,6 +2535,86 @@ TEST_F(ExplorerTest, ResultsAndTheMethodTableCutNoTextAtAnyScaleOrSize) {
       scroll_panel("results", -8);
     }
   }
+}
+
+// The Equations tab at twice the text size and in a 1024 x 640 window: every equation wraps
+// before an operator instead of running past the panel, so that each number is drawn whole
+// (ImGui leaves out a glyph wholly past a clip edge: a cut line loses its last numbers).
+TEST_F(ExplorerTest, TheEquationsCutNoNumberAtTwiceTheTextSizeOrInASmallWindow) {
+  open_explorer("equations", kDejaVuSans);
+  explorer_->load_preset_file(kPresetsDir / "default.json");  // calibrated: s^p, p != 1
+  const Solution& s = explorer_->scene().solution();
+  const double p = explorer_->scene().parameters().model.stress_exponent_p;
+  ASSERT_NE(p, 1.0);
+  ASSERT_TRUE(s.Q7.has_value());
+  // As the tab writes them: what a reader must see whole, spaces and line breaks aside.
+  const std::string s_power =
+      detail::printf_string("s^p=%.5g^%.3g=%.5g", s.stress_ratio, p, std::pow(s.stress_ratio, p));
+  const std::string q7 = detail::printf_string("->Q7=%.5f", *s.Q7);
+  const std::string h_line = detail::printf_string("h=%.1fmm", 1400.0);
+  const std::string q = detail::printf_string("Q=(a_0/a_n)^(1/n)=%.4f", s.Q);
+  // At 200 % a 1024 x 640 window leaves the tiled panel a few lines high: there it is presented.
+  struct Case {
+    const char* scale;
+    ImVec2 size;
+    const char* present;
+  };
+  for (const Case c :
+       {Case{"100", ImVec2(1024, 640), "none"}, Case{"150", ImVec2(1024, 640), "none"},
+        Case{"200", ImVec2(1024, 640), "analysis"}, Case{"200", ImVec2(1280, 800), "none"},
+        Case{"200", ImVec2(1920, 1080), "none"}}) {
+    SCOPED_TRACE(::testing::Message() << c.scale << " % at " << c.size.x << "x" << c.size.y
+                                      << ", presented: " << c.present);
+    ASSERT_EQ(explorer_->set_view("present", c.present), std::nullopt);
+    ASSERT_EQ(explorer_->set_view("scale", c.scale), std::nullopt);
+    show_at(c.size);
+    // The wheel over the equations (the tab's own child window scrolls, not the panel).
+    const auto turn_wheel = [&](float notches) {
+      const PanelRect r = rect_of("analysis");
+      ImGuiIO& io = ImGui::GetIO();
+      io.MousePos = ImVec2(r.pos.x + 0.5f * r.size.x, r.pos.y + 0.75f * r.size.y);
+      io.MouseWheel = notches;
+      frame();
+      io.MouseWheel = 0.0f;
+      frame();
+    };
+    turn_wheel(50.0f);
+    bool seen[4] = {};
+    const std::string wanted[4] = {s_power, q7, h_line, q};
+    for (int scroll = 0; scroll < 30; ++scroll) {
+      const PanelRect r = rect_of("analysis");
+      const std::vector<std::string> cut =
+          cut_glyphs(r.pos, ImVec2(r.pos.x + r.size.x, r.pos.y + r.size.y));
+      EXPECT_TRUE(cut.empty()) << cut.size() << " glyphs cut, first "
+                               << (cut.empty() ? "" : cut.front());
+      const std::string text = squeezed(last_text_);
+      for (int i = 0; i < 4; ++i) {
+        seen[i] = seen[i] || text.find(wanted[i]) != std::string::npos;
+      }
+      turn_wheel(-1.0f);
+    }
+    for (int i = 0; i < 4; ++i) {
+      EXPECT_TRUE(seen[i]) << wanted[i] << " never drawn whole\n" << last_text_;
+    }
+  }
+}
+
+// An equation breaks before "=" first, then before an arithmetic operator, then at a space; a
+// line after a break is indented.
+TEST_F(ExplorerTest, AnEquationWrapsBeforeItsOperators) {
+  frame();
+  const auto width = [](const char* text) { return ImGui::CalcTextSize(text).x; };
+  EXPECT_EQ(wrap_equation("s^p = 0.0012247^0.522 = 0.030123", 1000.0f),
+            "s^p = 0.0012247^0.522 = 0.030123");
+  EXPECT_EQ(wrap_equation("s^p = 0.0012247^0.522 = 0.030123", width("s^p = 0.0012247^0.522")),
+            "s^p = 0.0012247^0.522\n    = 0.030123");
+  EXPECT_EQ(wrap_equation("a = 12 × 345 / 6789 = 2", width("    = 12 × 345")),
+            "a\n    = 12 × 345\n    / 6789\n    = 2");
+  // The leading spaces of a "  = value" line are its own, not a place to break.
+  EXPECT_EQ(wrap_equation("  = 1.25", 1000.0f), "  = 1.25");
+  // No operator left: at spaces, never inside a number.
+  EXPECT_EQ(wrap_equation("check 0.0012247 0.522", width("    0.0012247")),
+            "check\n    0.0012247\n    0.522");
 }
 
 // Each of the Sweep tab's three plots keeps a data area of a few lines at 150 % in a small

@@ -193,6 +193,121 @@ TEST_F(PictureTest, TheFoldPlotDrawsMillimetresAlikeAcrossAndDown) {
       << "pixels " << x_hi - x_lo << " x " << y_hi - y_lo << ", mm " << mm[0] << " x " << mm[1];
 }
 
+// Pixels within `tolerance` of `rgb` in every channel, in [x0, x1) x [y0, y1).
+int count_near(const Rgba& image, std::array<int, 3> rgb, int tolerance, int x0, int y0, int x1,
+               int y1) {
+  int count = 0;
+  for (int y = y0; y < y1; ++y) {
+    for (int x = x0; x < x1; ++x) {
+      const std::uint8_t* p = image.at(x, y);
+      count += std::abs(p[0] - rgb[0]) <= tolerance && std::abs(p[1] - rgb[1]) <= tolerance &&
+               std::abs(p[2] - rgb[2]) <= tolerance;
+    }
+  }
+  return count;
+}
+
+// The light theme's colours (appearance.hpp), as 8-bit sRGB: A's sweep curve and name, B's.
+constexpr std::array<int, 3> kCurveA = {13, 89, 191};
+constexpr std::array<int, 3> kCurveB = {0, 107, 46};
+// ImGui's light button, (0.26, 0.59, 0.98) at 40 % over white: any button, tab or combo arrow.
+constexpr std::array<int, 3> kButtonOnWhite = {179, 213, 253};
+
+// The lowest row holding `rgb`, -1 when none does.
+int lowest_row_of(const Rgba& image, std::array<int, 3> rgb) {
+  for (int y = image.height - 1; y >= 0; --y) {
+    if (count_near(image, rgb, 12, 0, y, image.width, y + 1) > 0) {
+      return y;
+    }
+  }
+  return -1;
+}
+
+// The sweep's three plots stacked over the picture: the model's curve in each third, none of the
+// tab's buttons or fields.
+TEST_F(PictureTest, TheSweepPictureStacksItsThreePlotsWithNoWidgets) {
+  const Rgba image = picture(
+      "sweep", {"sweep", "--size", "900x1200", "--param", "h", "--from", "1000", "--to", "3000"});
+  ASSERT_EQ(image.width, 900);
+  ASSERT_EQ(image.height, 1200);
+  for (int third = 0; third < 3; ++third) {
+    EXPECT_GT(count_near(image, kCurveA, 12, 0, third * 400, 900, (third + 1) * 400), 100)
+        << "plot " << third;
+  }
+  EXPECT_EQ(count_near(image, kButtonOnWhite, 6, 0, 0, 900, 1200), 0);
+}
+
+// A caption takes its lines from the bottom: the last plot's curve ends higher by at least the
+// caption's three lines of text.
+TEST_F(PictureTest, ASweepPictureHasACaptionOnlyWhenAskedFor) {
+  const std::vector<std::string> base = {"sweep",  "--size", "900x600", "--param", "h",
+                                         "--from", "1000",   "--to",    "3000"};
+  const Rgba plain = picture("sweep-plain", base);
+  std::vector<std::string> with_caption = base;
+  with_caption.push_back("--caption");
+  const Rgba captioned = picture("sweep-captioned", with_caption);
+  const int plain_low = lowest_row_of(plain, kCurveA);
+  const int captioned_low = lowest_row_of(captioned, kCurveA);
+  ASSERT_GT(plain_low, 0);
+  ASSERT_GT(captioned_low, 0);
+  EXPECT_LT(captioned_low, plain_low - 3 * 15) << plain_low << " " << captioned_low;
+}
+
+TEST_F(PictureTest, ASweepAxisTheModelRefusesIsInvalidInput) {
+  const RunResult r = run({"picture", "sweep", "--size", "640x400", "--param", "h", "--from", "-5",
+                           "--to", "3000", "--out", "x.png"});
+  EXPECT_EQ(r.exit_status, 2) << r.err;
+  EXPECT_FALSE(fs::exists(dir_ / "x.png"));
+}
+
+// A and B side by side: a cloth in each half, each named at its foot in its colour.
+TEST_F(PictureTest, TheComparePictureShowsAAndBSideBySide) {
+  const Rgba image =
+      picture("ab", {"compare", "--size", "1200x600", "--b-set", "w=300gsm", "--view", "ground=0"});
+  ASSERT_EQ(image.width, 1200);
+  ASSERT_EQ(image.height, 600);
+  // The middle of each half is cloth, not the white background.
+  EXPECT_GT(count_unlike(image, kWhite, 250, 250, 350, 350), 5000);
+  EXPECT_GT(count_unlike(image, kWhite, 850, 250, 950, 350), 5000);
+  // The names: A's colour only on the left, B's only on the right, in the lowest fifth.
+  EXPECT_GT(count_near(image, kCurveA, 12, 0, 480, 600, 600), 20);
+  EXPECT_EQ(count_near(image, kCurveA, 12, 600, 480, 1200, 600), 0);
+  EXPECT_GT(count_near(image, kCurveB, 12, 600, 480, 1200, 600), 20);
+  EXPECT_EQ(count_near(image, kCurveB, 12, 0, 480, 600, 600), 0);
+}
+
+TEST_F(PictureTest, AComparePictureNeedsB) {
+  const RunResult r = run({"picture", "compare", "--size", "640x400", "--out", "x.png"});
+  EXPECT_EQ(r.exit_status, 2);
+  EXPECT_NE(r.err.find("--b-preset"), std::string::npos) << r.err;
+  const RunResult misplaced =
+      run({"picture", "cloth", "--size", "640x400", "--b-set", "h=900", "--out", "x.png"});
+  EXPECT_EQ(misplaced.exit_status, 2);
+  EXPECT_FALSE(fs::exists(dir_ / "x.png"));
+}
+
+// The fold lines grow with the picture: at 3000 px wide about three pixels wide, so that a
+// picture three times as wide holds about nine times the fold lines' pixels, not three.
+TEST_F(PictureTest, TheClothsFoldLinesWidenWithThePicture) {
+  const std::vector<std::string> view = {"--view", "ground=0", "--view", "fold_lines=1"};
+  std::vector<std::string> small = {"cloth", "--size", "1000x625"};
+  std::vector<std::string> large = {"cloth", "--size", "3000x1875"};
+  small.insert(small.end(), view.begin(), view.end());
+  large.insert(large.end(), view.begin(), view.end());
+  const Rgba small_image = picture("small", small);
+  const Rgba large_image = picture("large", large);
+  // ClothStyle's fold colours, drawn unlit.
+  const std::array<std::array<int, 3>, 2> folds = {{{31, 59, 148}, {214, 38, 41}}};
+  double small_px = 0.0;
+  double large_px = 0.0;
+  for (const std::array<int, 3>& colour : folds) {
+    small_px += count_near(small_image, colour, 10, 0, 0, 1000, 625);
+    large_px += count_near(large_image, colour, 10, 0, 0, 3000, 1875);
+  }
+  ASSERT_GT(small_px, 100.0);
+  EXPECT_GT(large_px / small_px, 6.0) << small_px << " " << large_px;
+}
+
 TEST_F(PictureTest, ASizeBelowTheLimitIsRefused) {
   const RunResult r = run({"picture", "cloth", "--size", "10x10", "--out", "x.png"});
   EXPECT_EQ(r.exit_status, 2);

@@ -122,6 +122,12 @@ class Appearance {
   void request(int scale_percent, bool light_theme);
   // Rebuilds the fonts and the style if a request changed them (or on the first call).
   void apply(Renderer& renderer);
+  // A request that the next apply() will build: the frame just drawn is laid out with the old
+  // fonts.
+  bool pending() const {
+    return !applied_ || applied_scale_percent_ != scale_percent_ ||
+           applied_light_theme_ != light_theme_;
+  }
   // Ctrl + / Ctrl - / Ctrl 0 within a frame: requests the new scale.
   void handle_shortcuts();
   const std::filesystem::path& font_file() const { return font_file_; }

@@ -2,6 +2,7 @@
 
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -202,20 +203,84 @@ app::Command add_render_command(CLI::App& app) {
   };
 }
 
+namespace {
+
+struct PictureOptions {
+  GuiCommandOptions scene;
+  std::string view;
+  std::string size;
+  std::string out;
+  std::string background = "white";
+  PictureSpec spec;
+  // A sweep picture's axis, as `foldlab sweep` takes it; none: the Sweep tab's.
+  std::string param;
+  std::optional<double> from, to;
+  std::optional<int> steps;
+  bool log = false, linear = false;
+  // B of a compare picture: a preset (default: A's) and its overrides.
+  std::string b_preset;
+  std::vector<std::string> b_sets;
+};
+
+// --param, --from, --to, --steps, --log and --linear: a sweep picture's axis, checked as `foldlab
+// sweep` checks it; none without --param (the Sweep tab's own).
+std::optional<SweepAxis> picture_sweep_axis(const PictureOptions& options, PictureView view) {
+  const bool given = !options.param.empty() || options.from || options.to || options.steps ||
+                     options.log || options.linear;
+  if (!given) {
+    return std::nullopt;
+  }
+  if (view != PictureView::sweep) {
+    throw InputError(
+        "--param, --from, --to, --steps, --log and --linear belong to a sweep picture");
+  }
+  if (options.param.empty() || !options.from || !options.to) {
+    throw InputError("a sweep picture's axis needs --param, --from and --to together");
+  }
+  if (options.log && options.linear) {
+    throw InputError("--log and --linear exclude each other");
+  }
+  SweepAxis axis{options.param, *options.from, *options.to, options.steps.value_or(200),
+                 options.log || (!options.linear && natural_log_scale(options.param))};
+  if (const std::optional<std::string> problem = check_axis(axis)) {
+    throw InputError(*problem);
+  }
+  return axis;
+}
+
+// --b-preset and --b-set: B of a compare picture, its name marked "(edited)" when the
+// overrides change it. A compare picture needs one of them.
+std::optional<PinnedFabric> picture_b(const PictureOptions& options, PictureView view) {
+  const bool given = !options.b_preset.empty() || !options.b_sets.empty();
+  if (view != PictureView::compare) {
+    if (given) {
+      throw InputError("--b-preset and --b-set belong to a compare picture");
+    }
+    return std::nullopt;
+  }
+  if (!given) {
+    throw InputError(
+        "a compare picture needs B: --b-preset FILE, --b-set KEY=VALUE (B is A's preset with "
+        "them), or both");
+  }
+  const app::InputOptions& a = options.scene.run.inputs;
+  const std::string path = options.b_preset.empty() ? a.preset_path : options.b_preset;
+  const Preset origin = app::resolve_inputs(app::InputOptions{path, {}, a.method, a.law});
+  Preset fabric = app::resolve_inputs(app::InputOptions{path, options.b_sets, a.method, a.law});
+  if (fabric.parameters != origin.parameters) {
+    fabric.name += " (edited)";
+  }
+  return PinnedFabric{fabric, origin, path};
+}
+
+}  // namespace
+
 app::Command add_picture_command(CLI::App& app) {
-  struct PictureOptions {
-    GuiCommandOptions scene;
-    std::string view;
-    std::string size;
-    std::string out;
-    std::string background = "white";
-    PictureSpec spec;
-  };
   auto options = std::make_shared<PictureOptions>();
   CLI::App* command = app.add_subcommand(
       "picture",
-      "draw the 3D cloth or the fold plot alone, with no interface, at any size, into a PNG "
-      "(no display needed: EGL surfaceless)");
+      "draw the 3D cloth, the fold plot, the sweep's plots or A and B side by side, alone, with "
+      "no interface, at any size, into a PNG (no display needed: EGL surfaceless)");
   command
       ->add_option("VIEW", options->view,
                    std::string("what the picture shows: ") + kPictureViewNames)
@@ -234,6 +299,22 @@ app::Command add_picture_command(CLI::App& app) {
   command->add_flag("--caption", options->spec.caption,
                     "a strip at the bottom: the fabric, n, Q, z_max and the inputs");
   command->add_flag("--legend", options->spec.legend, "the fold plot's legend");
+  command->add_option("--param", options->param,
+                      "sweep: the input swept, " + detail::join_comma(sweepable_keys()) +
+                          " (default: the Sweep tab's, h from 500 to 3000 mm)");
+  command->add_option("--from", options->from, "sweep: first value (the input's unit, as sweep)");
+  command->add_option("--to", options->to, "sweep: last value");
+  command->add_option("--steps", options->steps, "sweep: number of values (default 200)")
+      ->transform(app::whole_number_in(2, 10000));
+  command->add_flag("--log", options->log, "sweep: logarithmic spacing (default for t, E, w, K)");
+  command->add_flag("--linear", options->linear, "sweep: linear spacing");
+  command
+      ->add_option("--b-preset", options->b_preset,
+                   "compare: B's preset (default: A's --preset), with --b-set overrides")
+      ->type_name("FILE")
+      ->check(app::non_empty_path());
+  command->add_option("--b-set", options->b_sets, "compare: override one of B's inputs")
+      ->type_name("KEY=VALUE");
   return [options] {
     return guarded([&] {
       PictureSpec& spec = options->spec;
@@ -262,7 +343,11 @@ app::Command add_picture_command(CLI::App& app) {
                          " is a folder; name the PNG file to write");
       }
       prepare_run(options->scene, {{"--out", options->out}});
-      return run_picture(options->scene.run, options->out, spec);
+      check_distinct_files({{"--out", options->out}}, {{"--b-preset", options->b_preset}});
+      PictureInputs inputs;
+      inputs.sweep_axis = picture_sweep_axis(*options, spec.view);
+      inputs.b = picture_b(*options, spec.view);
+      return run_picture(options->scene.run, options->out, spec, inputs);
     });
   };
 }

@@ -233,15 +233,22 @@ std::optional<PictureRequest> Explorer::take_screenshot_request() {
 }
 
 void Explorer::write_picture(const std::filesystem::path& path, const PictureSpec& spec) {
-  if (picture_view_ == kNoClothView) {
-    picture_view_ = renderer_.create_cloth_view();
+  for (ClothView* view : {&picture_view_, &compare_picture_view_}) {
+    if (*view == kNoClothView) {
+      *view = renderer_.create_cloth_view();
+    }
   }
-  // The 3D view's camera once it has framed the cloth; until then, framed as it would be.
-  const PictureSource source{document_, panel<ClothViewPanel>().style(),
+  // The 3D view's camera once it has framed the cloth (both cloths while B is pinned); until
+  // then, framed as it would be.
+  const PictureSource source{document_,
+                             panel<ClothViewPanel>().style(),
                              panel<ClothViewPanel>().camera_framed()
                                  ? std::optional<OrbitCamera>(panel<ClothViewPanel>().camera())
                                  : std::nullopt,
-                             picture_view_, appearance_.font_file()};
+                             picture_view_,
+                             appearance_.font_file(),
+                             &panel<AnalysisPanel>().sweep(),
+                             compare_picture_view_};
   write_png(path.c_str(), spec.size, draw_picture(renderer_, source, spec));
 }
 

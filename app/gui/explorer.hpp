@@ -69,6 +69,10 @@ class Explorer {
 
   // Before ImGui::NewFrame: applies a new UI scale or theme (fonts cannot change within a frame).
   void prepare_frame() { appearance_.apply(renderer_); }
+  // The last frame asked for another text size or theme, which the next prepare_frame builds:
+  // what it drew is laid out with the old fonts, and a click read against the next frame would
+  // land on another widget than the one drawn where it was made.
+  bool layout_pending() const { return appearance_.pending(); }
   // Builds every window for this frame; between ImGui::NewFrame and ImGui::Render.
   void frame();
 
@@ -206,9 +210,10 @@ class Explorer {
   Appearance appearance_;
   UiStatus status_;  // before the document, which reports to it
   Document document_;
-  ExportPanel export_;                     // the Export menu, in the menu bar
-  ClothView picture_view_ = kNoClothView;  // the cloth of pictures (write_picture)
-  FileDialog files_;                       // every panel's open and save dialog
+  ExportPanel export_;                             // the Export menu, in the menu bar
+  ClothView picture_view_ = kNoClothView;          // the cloth of pictures (write_picture)
+  ClothView compare_picture_view_ = kNoClothView;  // B's cloth in pictures of A and B
+  FileDialog files_;                               // every panel's open and save dialog
   // The panels, in drawing order, each type once (panel<P>() finds one).
   std::vector<std::unique_ptr<Panel>> panels_;
   std::function<void()> wake_;

@@ -18,6 +18,7 @@
 
 #include "app/common/presets_dir.hpp"
 #include "app/gui/explorer.hpp"
+#include "app/gui/frame_pacing.hpp"
 #include "app/gui/renderer.hpp"
 #include "app/gui/scripted_run.hpp"
 #include "app/gui/session.hpp"
@@ -148,13 +149,12 @@ void request_close(int) {
   close_requested = 1;
 }
 
-// After an input event ImGui needs a few frames to settle (hover, focus, a window's new size).
+// After an input event ImGui needs a few frames to settle (FramesAfterInput, frame_pacing.hpp).
 // While something is due after a while (the text cursor, a message fading, the session's delayed
 // save) the sleep ends after a short timeout with one frame; otherwise only after a long one, a
 // safety net for anything timed that the explorer does not know of, so that a window left alone
 // costs almost nothing. The long sleep is taken in short slices that draw nothing, since GLFW
 // resumes its wait after a signal: a close request is seen within one slice.
-constexpr int kFramesAfterInput = 3;
 constexpr double kTimedWakeup_s = 0.5;
 constexpr double kRestTimeout_s = 10.0;
 
@@ -181,9 +181,13 @@ bool sleep_until_input(Surface& surface, double timeout_s) {
 // present; a scripted run plugs in before the frame and after it is drawn. False when the script
 // ended the run.
 bool draw_frame(Surface& surface, Renderer& renderer, Explorer& explorer, ScriptedRun& script,
-                FrameTimes& times, LayoutFile* layout, int frame) {
+                FrameTimes& times, LayoutFile* layout, int frame, bool read_input = true) {
   times.start();
-  surface.new_frame();
+  if (read_input) {
+    surface.new_frame();
+  } else {
+    surface.new_frame_without_input();
+  }
   if (!script.before_frame(explorer, surface, frame)) {
     return false;
   }
@@ -291,11 +295,10 @@ class ExplorerRun {
   // A frame is due unless the user's window rests: nothing animating, no panel busy, and the
   // frames after the last input drawn.
   bool may_rest() const {
-    return script_->may_wait_for_input() && !explorer_->animating() &&
-           frames_since_wake_ >= kFramesAfterInput;
+    return script_->may_wait_for_input() && !explorer_->animating() && after_input_.settled();
   }
   // Woken by input (true) or by a timeout (false), after a rest.
-  void woken(bool by_input) { frames_since_wake_ = by_input ? 0 : kFramesAfterInput - 1; }
+  void woken(bool by_input) { after_input_.woken(by_input); }
   // How long a rest may last before one frame for what is due.
   double rest_timeout_s() const {
     return explorer_->awaits_time() ? kTimedWakeup_s : kRestTimeout_s;
@@ -313,12 +316,21 @@ class ExplorerRun {
       }
       surface_.keep_open();  // the explorer asks first; its answer ends the loop or not
     }
-    ++frames_since_wake_;
     if (!draw_frame(surface_, *renderer_, *explorer_, *script_, times_,
                     layout_ ? &*layout_ : nullptr, frame_)) {
       return false;
     }
+    after_input_.frame_drawn(frame_saw_input(ImGui::GetIO()));
     ++frame_;
+    // A frame that asked for another text size showed the old layout: the next is drawn at once,
+    // before any more input is read, so that a click lands on what the screen shows.
+    while (interactive_ && script_->may_wait_for_input() && explorer_->layout_pending()) {
+      if (!draw_frame(surface_, *renderer_, *explorer_, *script_, times_,
+                      layout_ ? &*layout_ : nullptr, frame_, false)) {
+        return false;
+      }
+      ++frame_;
+    }
     return true;
   }
 
@@ -342,7 +354,7 @@ class ExplorerRun {
   std::optional<ScriptedRun> script_;
   FrameTimes times_{options_.report};
   int frame_ = 0;
-  int frames_since_wake_ = 0;
+  FramesAfterInput after_input_;
 };
 
 int run(Surface& surface, const GuiRunOptions& options, const app::StartInputs& start,
@@ -454,14 +466,21 @@ int run_headless(const GuiRunOptions& options) {
 }
 
 int run_picture(const GuiRunOptions& options, const std::filesystem::path& out,
-                const PictureSpec& spec) {
+                const PictureSpec& spec, const PictureInputs& inputs) {
   // A picture shows a fabric the model accepts: a refused value, a link's too, is an error.
   const app::StartInputs start{app::resolve_inputs(options.inputs), std::nullopt};
   // The window is never drawn (the picture has a framebuffer of its own): the smallest one.
   SurfaceOptions surface_options{kMinFrameSize.width, kMinFrameSize.height, false};
   std::unique_ptr<Surface> surface = make_headless_surface(surface_options);
   ExplorerRun run(*surface, options, start, false, std::nullopt);
-  run.explorer().write_picture(out, spec);
+  Explorer& explorer = run.explorer();
+  if (inputs.sweep_axis) {
+    explorer.panel<AnalysisPanel>().sweep().set_axis(*inputs.sweep_axis);
+  }
+  if (inputs.b) {
+    explorer.document().compare().pin(*inputs.b);
+  }
+  explorer.write_picture(out, spec);
   return app::kExitOk;
 }
 

@@ -3,11 +3,14 @@
 #pragma once
 
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "app/common/inputs.hpp"
+#include "app/gui/compare.hpp"
 #include "app/gui/picture.hpp"
+#include "core/analysis/sweep.hpp"
 
 namespace foldlab::gui {
 
@@ -31,9 +34,15 @@ struct GuiRunOptions {
 int run_window(const GuiRunOptions& options);
 // No display, no X server: EGL surfaceless into an off-screen framebuffer, then a PNG.
 int run_headless(const GuiRunOptions& options);
+// What a picture shows besides A: the sweep's axis (none: the Sweep tab's, as --view sweep=...
+// leaves it) and the fabric pinned as B.
+struct PictureInputs {
+  std::optional<SweepAxis> sweep_axis;
+  std::optional<PinnedFabric> b;
+};
 // The same with no window drawn at all: the explorer's picture `spec` (picture.hpp) into `out`,
 // as the Export menu's picture dialog writes it.
 int run_picture(const GuiRunOptions& options, const std::filesystem::path& out,
-                const PictureSpec& spec);
+                const PictureSpec& spec, const PictureInputs& inputs = {});
 
 }  // namespace foldlab::gui

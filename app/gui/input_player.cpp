@@ -596,6 +596,23 @@ bool InputPlayer::start_step(std::size_t index, ImGuiIO& io, Explorer& explorer)
     }
     case StepKind::Id::expect:
       return check_expect(index, step["expect"], explorer);
+    case StepKind::Id::hover_sweep: {
+      const std::string plot = step["hover_sweep"].get<std::string>();
+      const int which = plot == "n" ? 0 : plot == "Q" ? 1 : 2;
+      const SweepPanel& sweep = explorer.analysis().sweep();
+      const std::optional<ImVec2> at = explorer.analysis().sweep_shown()
+                                           ? sweep.screen_point(which, step["x"].get<double>())
+                                           : std::nullopt;
+      if (!at) {
+        fail(index, "the Sweep tab's " + plot + " plot shows no point to hover");
+        return false;
+      }
+      // Held for a few frames: the plot sees the mouse, then its tooltip is drawn.
+      FrameInput hover;
+      hover.mouse = *at;
+      queue_.assign(3, hover);
+      break;
+    }
     case StepKind::Id::visible:
     case StepKind::Id::absent: {
       // What a person reads, not what the report says: drawn glyphs, in one panel or anywhere.

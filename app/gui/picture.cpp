@@ -8,6 +8,7 @@
 #include <imgui.h>
 
 #include "app/gui/appearance.hpp"
+#include "app/gui/compare.hpp"
 #include "app/gui/panels/compare_table.hpp"
 #include "app/gui/panels/fold_plot_panel.hpp"
 #include "app/gui/panels/parameters_panel.hpp"
@@ -86,9 +87,88 @@ OrbitCamera framed_camera(Scene& scene, FrameSize size) {
   return camera;
 }
 
+// The same for A and B side by side: one camera that frames both cloths, so that they are seen
+// at one scale.
+OrbitCamera framed_camera(Scene& a, Scene& b, FrameSize size) {
+  Eigen::Vector3f centre;
+  float radius_mm = 1.0f;
+  cloth_bounds(a, centre, radius_mm);
+  Eigen::Vector3f b_centre;
+  float b_radius_mm = 1.0f;
+  cloth_bounds(b, b_centre, b_radius_mm);
+  enclose(centre, radius_mm, b_centre, b_radius_mm);
+  OrbitCamera camera;
+  camera.frame(centre, radius_mm);
+  const float aspect = static_cast<float>(size.width) / static_cast<float>(size.height);
+  camera.distance_mm /= std::min(aspect, 1.0f);
+  return camera;
+}
+
+// The 3D view's style for a picture: its background, and lines as wide as the picture's text
+// asks.
+ClothStyle picture_style(const PictureSource& source, const PictureSpec& spec) {
+  ClothStyle style = source.style;
+  const ImVec4 background = background_colour(spec.background);
+  style.background = Eigen::Vector3f(background.x, background.y, background.z);
+  style.background_alpha = background.w;
+  style.line_width_px = picture_line_width_px(spec.size);
+  return style;
+}
+
+// A and B, each in its half, named at its foot in the colours the plots give them.
+void draw_compare(Renderer& renderer, const PictureSource& source, const PictureSpec& spec,
+                  FrameSize area) {
+  Document& document = source.document;
+  Scene& a = document.scene();
+  Scene& b = document.compare().scene(a.grid_nx());
+  const ClothStyle style = picture_style(source, spec);
+  const FrameSize a_size{std::max(16, area.width / 2), area.height};
+  const FrameSize b_size{std::max(16, area.width - a_size.width), area.height};
+  const OrbitCamera camera = source.camera ? *source.camera : framed_camera(a, b, a_size);
+  ImDrawList* draw = ImGui::GetWindowDrawList();
+  const ImVec2 b_origin(static_cast<float>(a_size.width), 0.0f);
+  renderer.draw_cloth(source.cloth_view, draw, ImVec2(0, 0), cloth_buffers(a, style), camera,
+                      a_size, style);
+  renderer.draw_cloth(source.compare_cloth_view, draw, b_origin, cloth_buffers(b, style), camera,
+                      b_size, style);
+  const float pad = std::round(0.6f * ImGui::GetFontSize());
+  const auto name = [&](ImVec2 origin, FrameSize half, ImU32 colour, const std::string& text) {
+    const float wrap = static_cast<float>(half.width) - 2.0f * pad;
+    const ImVec2 size = ImGui::CalcTextSize(text.c_str(), nullptr, false, wrap);
+    const ImVec2 at(origin.x + pad, origin.y + static_cast<float>(half.height) - size.y - pad);
+    // On a plate of the background: the ground's grid lines run under the names.
+    const ImVec4 plate = background_colour(spec.background);
+    if (plate.w > 0.0f) {
+      draw->AddRectFilled(ImVec2(at.x - 0.3f * pad, at.y - 0.2f * pad),
+                          ImVec2(at.x + size.x + 0.3f * pad, at.y + size.y + 0.2f * pad),
+                          ImGui::GetColorU32(ImVec4(plate.x, plate.y, plate.z, 0.85f)));
+    }
+    draw->AddText(ImGui::GetFont(), ImGui::GetFontSize(), at, colour, text.c_str(), nullptr, wrap);
+  };
+  name(ImVec2(0, 0), a_size, kSweepCurve.u32(), "A: " + fabric_label(document));
+  name(b_origin, b_size, kCompareB.u32(), "B: " + document.compare().b().name);
+}
+
+// The Sweep tab's keys and its three plots, stacked over the area.
+void draw_sweep(const PictureSource& source, FrameSize area, float pad, SweepPlots& plots) {
+  ImGui::SetCursorPos(ImVec2(pad, pad));
+  const ImVec2 size(static_cast<float>(area.width) - 2.0f * pad,
+                    static_cast<float>(area.height) - 2.0f * pad);
+  ImGui::BeginChild(
+      "sweep", size, false,
+      ImGuiWindowFlags_NoBackground | ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoInputs);
+  source.sweep->draw_keys(source.document);
+  const float spacing = ImGui::GetStyle().ItemSpacing.y;
+  const float height = std::max(4.0f * ImGui::GetFontSize(),
+                                (ImGui::GetContentRegionAvail().y - 2.0f * spacing) / 3.0f);
+  source.sweep->draw_plots(source.document, plots, height);
+  ImGui::EndChild();
+}
+
 // Builds the picture's one window, every frame of it.
 void build_picture(Renderer& renderer, const PictureSource& source, const PictureSpec& spec,
-                   const std::vector<std::string>& caption, Plot& plot, FoldLineSeries& series) {
+                   const std::vector<std::string>& caption, Plot& plot, FoldLineSeries& series,
+                   SweepPlots& sweep_plots) {
   const ImVec2 display = ImGui::GetIO().DisplaySize;
   const float pad = std::round(0.6f * ImGui::GetFontSize());
   ImGui::SetNextWindowPos(ImVec2(0, 0));
@@ -112,13 +192,14 @@ void build_picture(Renderer& renderer, const PictureSource& source, const Pictur
                        std::max(16, spec.size.height - static_cast<int>(caption_height))};
   Scene& scene = source.document.scene();
   if (spec.view == PictureView::cloth) {
-    ClothStyle style = source.style;
-    const ImVec4 background = background_colour(spec.background);
-    style.background = Eigen::Vector3f(background.x, background.y, background.z);
-    style.background_alpha = background.w;
+    const ClothStyle style = picture_style(source, spec);
     const OrbitCamera camera = source.camera ? *source.camera : framed_camera(scene, area);
     renderer.draw_cloth(source.cloth_view, ImGui::GetWindowDrawList(), ImVec2(0, 0),
                         cloth_buffers(scene, style), camera, area, style);
+  } else if (spec.view == PictureView::compare) {
+    draw_compare(renderer, source, spec, area);
+  } else if (spec.view == PictureView::sweep) {
+    draw_sweep(source, area, pad, sweep_plots);
   } else {
     ImGui::SetCursorPos(ImVec2(pad, pad));
     const ImVec2 size(static_cast<float>(area.width) - 2.0f * pad,
@@ -150,6 +231,12 @@ std::optional<PictureView> parse_picture_view(std::string_view name) {
   }
   if (name == "fold_plot") {
     return PictureView::fold_plot;
+  }
+  if (name == "sweep") {
+    return PictureView::sweep;
+  }
+  if (name == "compare") {
+    return PictureView::compare;
   }
   return std::nullopt;
 }
@@ -200,19 +287,26 @@ float picture_text_px(FrameSize size) {
   return std::clamp(std::round(side / 64.0f), 15.0f, 200.0f);
 }
 
-std::vector<std::string> picture_caption(Document& document) {
-  Scene& scene = document.scene();
-  const Preset& loaded = document.loaded();
-  const ModelStanding standing = model_standing(scene.parameters(), loaded.calibration);
-  std::vector<std::string> lines;
-  if (!loaded.name.empty()) {
-    lines.push_back(loaded.name);
+float picture_line_width_px(FrameSize size) {
+  return picture_text_px(size) / kUiFontPx;
+}
+
+namespace {
+
+// One fabric's caption lines: its name (after `letter`, when given) with n, Q and z_max, then
+// its inputs.
+void add_caption(std::vector<std::string>& lines, const std::string& letter,
+                 const std::string& name, const Parameters& parameters, const Solution& solution,
+                 const ModelStanding& standing) {
+  std::string head = letter.empty() ? name : letter + ": " + name;
+  if (!head.empty()) {
+    lines.push_back(head);
   }
-  lines.push_back(headline(quantity_texts(scene.solution(), standing)));
+  lines.push_back(headline(quantity_texts(solution, standing)));
   std::string inputs;
   for (const char* key : kCaptionInputs) {
     const InputSpec* spec = find_input(key);
-    const std::optional<double> value = spec ? spec->value(scene.parameters()) : std::nullopt;
+    const std::optional<double> value = spec ? spec->value(parameters) : std::nullopt;
     if (!value) {
       continue;
     }
@@ -224,7 +318,40 @@ std::vector<std::string> picture_caption(Document& document) {
     inputs += (inputs.empty() ? "" : "     ") + item;
   }
   lines.push_back(inputs);
+}
+
+}  // namespace
+
+std::vector<std::string> picture_caption(Document& document, bool with_b) {
+  Scene& scene = document.scene();
+  const Preset& loaded = document.loaded();
+  std::vector<std::string> lines;
+  Comparison& compare = document.compare();
+  with_b = with_b && compare.pinned();
+  add_caption(lines, with_b ? "A" : "", with_b ? fabric_label(document) : loaded.name,
+              scene.parameters(), scene.solution(),
+              model_standing(scene.parameters(), loaded.calibration));
+  if (with_b) {
+    const Preset& b = compare.b();
+    add_caption(lines, "B", b.name, b.parameters, compare.scene(scene.grid_nx()).solution(),
+                model_standing(b.parameters, b.calibration));
+  }
   return lines;
+}
+
+std::optional<std::string> picture_problem(const PictureSource& source, const PictureSpec& spec) {
+  if (spec.view == PictureView::compare && !source.document.compare().pinned()) {
+    return "a picture of A and B needs a fabric pinned as B (Compare > Pin as B)";
+  }
+  if (spec.view == PictureView::sweep) {
+    if (source.sweep == nullptr) {
+      return "a sweep picture needs the Sweep tab";
+    }
+    if (std::optional<std::string> problem = source.sweep->compute(source.document)) {
+      return "the sweep's axis: " + *problem;
+    }
+  }
+  return std::nullopt;
 }
 
 std::vector<std::uint8_t> draw_picture(Renderer& renderer, const PictureSource& source,
@@ -232,14 +359,19 @@ std::vector<std::uint8_t> draw_picture(Renderer& renderer, const PictureSource& 
   if (std::optional<std::string> problem = picture_size_problem(spec.size)) {
     throw SurfaceError("the picture's size " + *problem);
   }
+  if (std::optional<std::string> problem = picture_problem(source, spec)) {
+    throw SurfaceError(*problem);
+  }
+  const bool with_b = spec.view == PictureView::compare || spec.view == PictureView::sweep;
   const std::vector<std::string> caption =
-      spec.caption ? picture_caption(source.document) : std::vector<std::string>{};
+      spec.caption ? picture_caption(source.document, with_b) : std::vector<std::string>{};
   const PictureContext context(spec.size, source.font_file,
                                spec.background != PictureBackground::dark);
   Plot plot;
   FoldLineSeries series;
+  SweepPlots sweep_plots;
   return renderer.render_picture(spec.size, background_colour(spec.background), [&] {
-    build_picture(renderer, source, spec, caption, plot, series);
+    build_picture(renderer, source, spec, caption, plot, series, sweep_plots);
   });
 }
 

@@ -1,7 +1,8 @@
-// Pictures for a mood board or a slide: the 3D cloth or the fold plot alone, with no interface,
-// at any size, over white, dark or nothing (alpha 0), optionally with a caption of the fabric,
-// its results and its inputs. `foldlab picture` and the Export menu's picture dialog draw them
-// through this one path, in an ImGui context of the picture's own size (Renderer::render_picture).
+// Pictures for a mood board or a slide: the 3D cloth, the fold plot, the sweep's plots or A and B
+// side by side, alone, with no interface, at any size, over white, dark or nothing (alpha 0),
+// optionally with a caption of the fabric, its results and its inputs. `foldlab picture` and the
+// Export menu's picture dialog draw them through this one path, in an ImGui context of the
+// picture's own size (Renderer::render_picture).
 #pragma once
 
 #include <cstdint>
@@ -13,11 +14,12 @@
 
 #include "app/gui/camera.hpp"
 #include "app/gui/document.hpp"
+#include "app/gui/panels/sweep_panel.hpp"
 #include "app/gui/renderer.hpp"
 
 namespace foldlab::gui {
 
-enum class PictureView { cloth, fold_plot };
+enum class PictureView { cloth, fold_plot, sweep, compare };
 enum class PictureBackground { white, transparent, dark };
 
 struct PictureSpec {
@@ -28,11 +30,11 @@ struct PictureSpec {
   bool legend = false;   // the fold plot's legend
 };
 
-// The views and backgrounds by the names the command line takes: "cloth", "fold_plot"; "white",
-// "transparent", "dark". nullopt for any other.
+// The views and backgrounds by the names the command line takes: "cloth", "fold_plot", "sweep",
+// "compare"; "white", "transparent", "dark". nullopt for any other.
 std::optional<PictureView> parse_picture_view(std::string_view name);
 std::optional<PictureBackground> parse_picture_background(std::string_view name);
-inline constexpr const char* kPictureViewNames = "cloth, fold_plot";
+inline constexpr const char* kPictureViewNames = "cloth, fold_plot, sweep, compare";
 inline constexpr const char* kPictureBackgroundNames = "white, transparent, dark";
 
 // A picture's sides are those of a window (kMinFrameSize..kMaxFrameSize) and its pixels at most
@@ -48,9 +50,14 @@ std::optional<FrameSize> parse_picture_size(std::string_view text, std::string& 
 // alike at 1920x1080 and 3000x2000, never below the window's own size.
 float picture_text_px(FrameSize size);
 
+// The 3D view's lines and supports in a picture of `size`, in pixels: as wide as in the window
+// at the window's text size, and in proportion to the picture's text beyond it.
+float picture_line_width_px(FrameSize size);
+
 // The caption's lines: the fabric's name with n, Q and z_max (with the ranges Results shows),
-// then the inputs in the units the explorer shows them (t mm, E MPa, w g/m², h, L, d mm).
-std::vector<std::string> picture_caption(Document& document);
+// then the inputs in the units the explorer shows them (t mm, E MPa, w g/m², h, L, d mm). With
+// `with_b` (B pinned), A's lines and then B's, each name after its letter.
+std::vector<std::string> picture_caption(Document& document, bool with_b = false);
 
 // What a picture is drawn from: the explorer's document and its 3D view.
 struct PictureSource {
@@ -60,7 +67,14 @@ struct PictureSource {
   std::optional<OrbitCamera> camera;
   ClothView cloth_view = kNoClothView;  // the renderer's view kept for pictures
   std::filesystem::path font_file;      // empty: ImGui's built-in font
+  // The Sweep tab, whose axis, curves and paper points a sweep picture shows.
+  SweepPanel* sweep = nullptr;
+  ClothView compare_cloth_view = kNoClothView;  // B's, for a compare picture
 };
+
+// Why `spec` cannot be drawn from `source` as it is (a compare picture with no B pinned, a sweep
+// whose axis is refused); nullopt when it can.
+std::optional<std::string> picture_problem(const PictureSource& source, const PictureSpec& spec);
 
 // The picture's pixels, spec.size, top row first, with alpha.
 std::vector<std::uint8_t> draw_picture(Renderer& renderer, const PictureSource& source,

@@ -212,7 +212,20 @@ void check_expect(const json& step, Problems& problems) {
   }
 }
 
+// "hover_sweep": the mouse held on a Sweep plot's sample nearest "x" (the unit the axis shows).
+void check_hover_sweep(const json& step, Problems& problems) {
+  const json& arg = step["hover_sweep"];
+  if (!arg.is_string() || (arg != "n" && arg != "Q" && arg != "z_max")) {
+    problems.push_back("hover_sweep needs the plot: \"n\", \"Q\" or \"z_max\", not " +
+                       detail::cut(arg.dump()));
+  }
+  if (!step.contains("x") || !step["x"].is_number()) {
+    problems.push_back("hover_sweep needs \"x\": a value of the swept input, in the axis's unit");
+  }
+}
+
 constexpr std::string_view kDragOptions[] = {"dx", "shift"};
+constexpr std::string_view kHoverSweepOptions[] = {"x"};
 constexpr std::string_view kSeenOptions[] = {"in"};
 constexpr std::string_view kClickOptions[] = {"at", "ctrl"};
 
@@ -230,6 +243,7 @@ const StepKind kStepKinds[] = {
     {StepKind::Id::expect, "expect", {}, check_expect},
     {StepKind::Id::visible, "visible", kSeenOptions, check_seen},
     {StepKind::Id::absent, "absent", kSeenOptions, check_seen},
+    {StepKind::Id::hover_sweep, "hover_sweep", kHoverSweepOptions, check_hover_sweep},
 };
 
 // The problems of one step; empty when it can run.

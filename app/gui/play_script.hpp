@@ -51,7 +51,8 @@ struct StepKind {
     screenshot,
     expect,
     visible,
-    absent
+    absent,
+    hover_sweep
   };
   Id id;
   std::string_view name;

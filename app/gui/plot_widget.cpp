@@ -1049,8 +1049,15 @@ void Plot::show_hit(const Frame& f, const PlotHit& hit) const {
   if (s.legend >= 0) {
     ImGui::TextUnformatted(legend_text_.c_str() + legend_[static_cast<std::size_t>(s.legend)].text);
   }
-  ImGui::Text("%s: %.6g", f.x_title ? x_axis_.label.c_str() : "x", hit.x);
-  ImGui::Text("%s: %.6g", f.y_title ? y_axis_.label.c_str() : "y", hit.y);
+  const auto value_line = [](const PlotAxis& axis, bool titled, const char* name, double value) {
+    if (axis.value_text) {
+      ImGui::TextUnformatted(axis.value_text(value).c_str());
+    } else {
+      ImGui::Text("%s: %.6g", titled ? axis.label.c_str() : name, value);
+    }
+  };
+  value_line(x_axis_, f.x_title, "x", hit.x);
+  value_line(y_axis_, f.y_title, "y", hit.y);
   ImGui::EndTooltip();
 }
 

@@ -43,6 +43,9 @@ struct PlotAxis {
   bool flipped = false;  // larger values to the left (x) or downward (y: the paper's figures)
   bool log = false;      // log10 scale; values <= 0 are skipped as if they were NaN
   bool whole = false;    // a count (iterates, folds): ticks on whole numbers only
+  // How the tooltip names a hovered point's value ("w = 213.9 g/m²"); empty: "label: value", or
+  // "x: value" on an axis without a title.
+  std::function<std::string(double)> value_text{};
 };
 
 enum class MarkerShape { Circle, Square, Diamond, Triangle, Cross, Plus };

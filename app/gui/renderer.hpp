@@ -52,6 +52,9 @@ struct ClothStyle {
   Eigen::Vector3f support_colour{0.95f, 0.85f, 0.25f};  // the supports' markers
   // 0 leaves the picture transparent around the cloth (a picture with a transparent background).
   float background_alpha = 1.0f;
+  // The fold lines' and the ground's width and the supports' scale, in pixels at 1: wider in a
+  // large picture, where one pixel would all but vanish.
+  float line_width_px = 1.0f;
   // Every field takes part: the 3D view's picture is kept only while its style is unchanged.
   bool operator==(const ClothStyle&) const = default;
 };

@@ -34,6 +34,9 @@ class Surface {
   virtual void keep_open() {}
   // Polls input and starts ImGui's platform frame: display size, time step, mouse, keys.
   virtual void new_frame() = 0;
+  // The same, reading no new input (the events wait for the next new_frame): a frame drawn again
+  // at once because the one before changed the layout.
+  virtual void new_frame_without_input() { new_frame(); }
   // Sleeps until an input event arrives or `timeout_s` passes (a window); returns at once
   // headless, where nothing arrives.
   virtual void wait_events(double timeout_s) = 0;

@@ -163,10 +163,12 @@ layout(location = 0) in vec3 position;
 layout(location = 1) in vec3 vertex_colour;
 uniform mat4 view_projection;
 uniform float point_size;
+uniform vec2 offset_ndc;
 out vec3 line_colour;
 void main() {
   line_colour = vertex_colour;
   gl_Position = view_projection * vec4(position + breeze(position), 1.0);
+  gl_Position.xy += offset_ndc * gl_Position.w;
   gl_PointSize = point_size;
 }
 )";
@@ -258,12 +260,13 @@ struct MeshProgram {
 
 struct LineProgram {
   GlProgram program;
-  GLint view_projection, point_size, override_colour;
+  GLint view_projection, point_size, offset_ndc, override_colour;
   BreezeUniforms breeze;
   explicit LineProgram(GlProgram linked)
       : program(std::move(linked)),
         view_projection(uniform(program, "view_projection")),
         point_size(uniform(program, "point_size")),
+        offset_ndc(uniform(program, "offset_ndc")),
         override_colour(uniform(program, "override_colour")),
         breeze(program) {}
 };
@@ -687,7 +690,7 @@ void ClothRenderer::draw_cloth_surface(const ClothBuffers& buffers, const ClothS
 }
 
 void ClothRenderer::draw_lines(const ClothBuffers& buffers, const ClothStyle& style,
-                               const Eigen::Matrix4f& view_projection) {
+                               const Eigen::Matrix4f& view_projection, FrameSize size) {
   const LineProgram& line = gl_->line_program;
   glUseProgram(line.program.get());
   glUniformMatrix4fv(line.view_projection, 1, GL_FALSE, view_projection.data());
@@ -703,22 +706,39 @@ void ClothRenderer::draw_lines(const ClothBuffers& buffers, const ClothStyle& st
     draw_shadow(buffers, view_projection);
     glUseProgram(line.program.get());
   }
-  if (style.fold_lines && !gl_->line_counts.empty()) {
-    glBindVertexArray(gl_->lines_vao.get());
-    gl::multi_draw_arrays(GL_LINE_STRIP, gl_->line_firsts.data(), gl_->line_counts.data(),
-                          static_cast<GLsizei>(gl_->line_counts.size()));
+  // A line wider than a pixel is drawn again shifted by whole pixels across its width: core GL
+  // and WebGL draw lines one pixel wide only.
+  const int passes = std::max(1, static_cast<int>(std::lround(style.line_width_px)));
+  const float middle = 0.5f * static_cast<float>(passes - 1);
+  for (int i = 0; i < passes; ++i) {
+    for (int j = 0; j < passes; ++j) {
+      const float dx = static_cast<float>(i) - middle;
+      const float dy = static_cast<float>(j) - middle;
+      if (dx * dx + dy * dy > (middle + 0.5f) * (middle + 0.5f)) {
+        continue;  // a round pen: the corners of the square left out
+      }
+      glUniform2f(line.offset_ndc, 2.0f * dx / static_cast<float>(size.width),
+                  2.0f * dy / static_cast<float>(size.height));
+      if (style.fold_lines && !gl_->line_counts.empty()) {
+        glBindVertexArray(gl_->lines_vao.get());
+        gl::multi_draw_arrays(GL_LINE_STRIP, gl_->line_firsts.data(), gl_->line_counts.data(),
+                              static_cast<GLsizei>(gl_->line_counts.size()));
+      }
+      if (style.ground) {
+        glBindVertexArray(gl_->decor_vao.get());
+        glDrawArrays(GL_LINES, 0, gl_->ground_vertex_count);
+      }
+    }
   }
+  glUniform2f(line.offset_ndc, 0.0f, 0.0f);
 }
 
-// The ground's grid and the supports, with the line program in use.
+// The supports, with the line program in use (the ground's grid is drawn with the lines).
 void ClothRenderer::draw_decorations(const ClothStyle& style) {
   const LineProgram& line = gl_->line_program;
   glBindVertexArray(gl_->decor_vao.get());
-  if (style.ground) {
-    glDrawArrays(GL_LINES, 0, gl_->ground_vertex_count);
-  }
   gl::set_program_point_size(true);
-  glUniform1f(line.point_size, 12.0f);
+  glUniform1f(line.point_size, 12.0f * std::max(1.0f, style.line_width_px));
   // The supports' colour follows the theme (the backdrop does), so it is a uniform, not baked in.
   glUniform4f(line.override_colour, style.support_colour.x(), style.support_colour.y(),
               style.support_colour.z(), 1.0f);
@@ -739,7 +759,7 @@ unsigned ClothRenderer::render(const ClothBuffers& buffers, const OrbitCamera& c
   upload_stale(buffers, camera, size, style);
   begin_drawing(size, style);
   draw_cloth_surface(buffers, style, view_projection, camera.eye());
-  draw_lines(buffers, style, view_projection);
+  draw_lines(buffers, style, view_projection, size);
   draw_decorations(style);
   glBindVertexArray(0);
   glUseProgram(0);

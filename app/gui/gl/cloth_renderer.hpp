@@ -51,7 +51,7 @@ class ClothRenderer {
   void draw_cloth_surface(const ClothBuffers& buffers, const ClothStyle& style,
                           const Eigen::Matrix4f& view_projection, const Eigen::Vector3f& eye);
   void draw_lines(const ClothBuffers& buffers, const ClothStyle& style,
-                  const Eigen::Matrix4f& view_projection);
+                  const Eigen::Matrix4f& view_projection, FrameSize size);
   void draw_decorations(const ClothStyle& style);
 
   // The GL objects, each owned by a handle; kept out of the header so that it needs no GL include.

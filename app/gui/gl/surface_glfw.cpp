@@ -70,6 +70,7 @@ class WindowSurface final : public Surface {
     deferred_releases_.clear();
     pressed_since_frame_ = false;
   }
+  void new_frame_without_input() override { ImGui_ImplGlfw_NewFrame(); }
   void wait_events(double timeout_s) override {
     release_keys_seen_down();
     glfwWaitEventsTimeout(timeout_s);

@@ -44,7 +44,11 @@ void AnalysisPanel::draw(PanelContext& context) {
     tab_selected_ = true;
     if (ImGui::BeginTabItem("Equations", nullptr, equations_flags)) {
       ImGui::BeginChild("equations");
+      // A pixel in: a glyph's left bearing (DejaVu's "T") reaches past where its text starts,
+      // and the child cuts at its own edge.
+      ImGui::Indent(1.0f);
       equations_.draw(document);
+      ImGui::Unindent(1.0f);
       ImGui::EndChild();
       ImGui::EndTabItem();
     }
@@ -69,6 +73,11 @@ void AnalysisPanel::draw(PanelContext& context) {
 }
 
 void EquationsTab::draw(Document& document) {
+  // Each line wraps before an operator rather than run past the panel's edge.
+  const ImVec4 note = kNoteText;
+  const ImVec4 dim = kDimText;
+  const ImVec4 error = kErrorText;
+  const ImVec4 ok = kOkText;
   const Solution& s = document.scene().solution();
   const Parameters& p = document.scene().parameters();
   const double K = stiffness_constant_K(p);
@@ -78,16 +87,16 @@ void EquationsTab::draw(Document& document) {
   const bool even = s.count_rule && s.count_rule->spacing == FoldSpacing::even;
   section(even ? readable("Cerda-Mahadevan: the wrinkle wavelength λ").c_str()
                : "eq. 7: critical stress gives Q7");
-  wrapped_text("s = K E t³ / (w h l²) = %.4g × %.4g × %.4g³ / (%.3g × %.4g × %.5g²)", K,
-               p.fabric.youngs_modulus_MPa, t, p.fabric.weight_N_per_mm2, p.hanging.height_mm,
-               s.span_mm);
-  ImGui::Text("  = %.5g", s.stress_ratio);
+  equation_text(nullptr, "s = K E t³ / (w h l²) = %.4g × %.4g × %.4g³ / (%.3g × %.4g × %.5g²)", K,
+                p.fabric.youngs_modulus_MPa, t, p.fabric.weight_N_per_mm2, p.hanging.height_mm,
+                s.span_mm);
+  equation_text(nullptr, "  = %.5g", s.stress_ratio);
   // A calibrated eq. 7 uses s^p (p = 1 is the paper's form).
   const double exponent = p.model.stress_exponent_p;
   const double s_used = exponent == 1.0 ? s.stress_ratio : std::pow(s.stress_ratio, exponent);
   if (exponent != 1.0) {
-    ImGui::TextColored(kNoteText, "calibrated form: s^p = %.5g^%.3g = %.5g", s.stress_ratio,
-                       exponent, s_used);
+    equation_text(&note, "calibrated form: s^p = %.5g^%.3g = %.5g", s.stress_ratio, exponent,
+                  s_used);
   }
   if (even) {
     wrapped_text(
@@ -99,10 +108,11 @@ void EquationsTab::draw(Document& document) {
             .c_str());
   } else if (s.Q7) {
     const double q = *s.Q7;
-    ImGui::Text("(Q7 - 1)² = %s Q7 (Q7 + 1)  ->  Q7 = %.5f", exponent == 1.0 ? "s" : "s^p", q);
-    ImGui::TextColored(kDimText, "  check: %.6g = %.6g", (q - 1) * (q - 1), s_used * q * (q + 1));
+    equation_text(nullptr, "(Q7 - 1)² = %s Q7 (Q7 + 1)  ->  Q7 = %.5f",
+                  exponent == 1.0 ? "s" : "s^p", q);
+    equation_text(&dim, "  check: %.6g = %.6g", (q - 1) * (q - 1), s_used * q * (q + 1));
   } else {
-    ImGui::TextColored(kErrorText, "s >= 1: no root; at most one fold.");
+    equation_text(&error, "s >= 1: no root; at most one fold.");
   }
   if (s.a_mm.empty()) {
     ImGui::Separator();
@@ -113,40 +123,42 @@ void EquationsTab::draw(Document& document) {
   const double an = s.a_mm.back();
   section("eq. 8: the upper edge keeps its length L");
   const double A = std::hypot(an, s.z_max_mm);
-  ImGui::Text("A = √(a_n² + z_max²) = √(%.2f² + %.2f²) = %.2f mm", an, s.z_max_mm, A);
-  ImGui::Text("L′ = (2l/π) √(1+k²) E(k²/(1+k²)), k = π A/l = %.4f",
-              std::numbers::pi * A / s.span_mm);
-  ImGui::Text("   = %.3f mm  vs  L = %.1f mm  (residual %.2e)",
-              upper_edge_length_closed_form(A, s.span_mm), p.hanging.length_mm, s.residual_length);
+  equation_text(nullptr, "A = √(a_n² + z_max²) = √(%.2f² + %.2f²) = %.2f mm", an, s.z_max_mm, A);
+  equation_text(nullptr, "L′ = (2l/π) √(1+k²) E(k²/(1+k²)), k = π A/l = %.4f",
+                std::numbers::pi * A / s.span_mm);
+  equation_text(nullptr, "   = %.3f mm  vs  L = %.1f mm  (residual %.2e)",
+                upper_edge_length_closed_form(A, s.span_mm), p.hanging.length_mm,
+                s.residual_length);
   section("eq. 9: the centre fibre keeps its length h");
-  ImGui::Text("h′ = Σ √((a_i-1 − a_i)² + (2 z_max)²), i = 1…%d", s.n);
-  ImGui::Text("   = %.3f mm  vs  h = %.1f mm  (residual %.2e)",
-              fibre_length(a0, s.Q, s.n, s.z_max_mm), p.hanging.height_mm, s.residual_height);
+  equation_text(nullptr, "h′ = Σ √((a_i-1 − a_i)² + (2 z_max)²), i = 1…%d", s.n);
+  equation_text(nullptr, "   = %.3f mm  vs  h = %.1f mm  (residual %.2e)",
+                fibre_length(a0, s.Q, s.n, s.z_max_mm), p.hanging.height_mm, s.residual_height);
   section("eq. 10: the number of wrinkles");
   if (s.count_rule) {
     const double argument = s.count_rule->argument(a0, an);
     if (even) {
-      wrapped_text("n = %s = Int[(%.1f - %.2f) / %.2f]", std::string(law.count_formula()).c_str(),
-                   a0, an, s.count_rule->step);
+      equation_text(nullptr, "n = %s = Int[(%.1f - %.2f) / %.2f]",
+                    std::string(law.count_formula()).c_str(), a0, an, s.count_rule->step);
     } else {
-      wrapped_text("n = %s = Int[log(%.1f/%.2f) / log %.4f]",
-                   std::string(law.count_formula()).c_str(), a0, an, *s.Q7);
+      equation_text(nullptr, "n = %s = Int[log(%.1f/%.2f) / log %.4f]",
+                    std::string(law.count_formula()).c_str(), a0, an, *s.Q7);
     }
-    ImGui::Text("  = Int[%.3f] = %d   (Int = %s)", argument, s.n,
-                std::string(to_string(p.model.int_rounding)).c_str());
+    equation_text(nullptr, "  = Int[%.3f] = %d   (Int = %s)", argument, s.n,
+                  std::string(to_string(p.model.int_rounding)).c_str());
     if (shown_n_ != s.n) {
       previous_n_ = shown_n_;
       shown_n_ = s.n;
     }
     if (previous_n_ >= 0 && previous_n_ != s.n) {
-      ImGui::TextColored(
-          kOkText, "n changed from %d to %d: the argument of Int[] crossed %s.", previous_n_, s.n,
-          p.model.int_rounding == IntRounding::nearest ? "a half-integer" : "an integer");
+      ImGui::PushStyleColor(ImGuiCol_Text, ok);
+      wrapped_text("n changed from %d to %d: the argument of Int[] crossed %s.", previous_n_, s.n,
+                   p.model.int_rounding == IntRounding::nearest ? "a half-integer" : "an integer");
+      ImGui::PopStyleColor();
     }
   } else {
-    ImGui::Text("n = 1 (no Q7: stiff)");
+    equation_text(nullptr, "n = 1 (no Q7: stiff)");
   }
-  ImGui::Text("Q = (a_0/a_n)^(1/n) = %.4f", s.Q);
+  equation_text(nullptr, "Q = (a_0/a_n)^(1/n) = %.4f", s.Q);
 }
 
 }  // namespace foldlab::gui

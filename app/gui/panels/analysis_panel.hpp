@@ -43,6 +43,7 @@ class AnalysisPanel : public Panel {
   void show_paper_case(int which, Document& document);
 
   const SweepPanel& sweep() const { return sweep_; }
+  SweepPanel& sweep() { return sweep_; }
   const MethodPanel& method() const { return method_; }
   MethodPanel& method() { return method_; }
   const RegimeMapPanel& regime_map() const { return regime_map_; }

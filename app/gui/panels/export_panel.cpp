@@ -31,6 +31,34 @@ constexpr PictureSize kPictureSizes[] = {{"1920 x 1080 (full HD)", {1920, 1080}}
                                          {"A4 at 300 dpi (3508 x 2480)", {3508, 2480}}};
 constexpr int kCustomSize = static_cast<int>(std::size(kPictureSizes));
 
+// What the picture dialog says it draws, and the save dialog's title, per view.
+const char* picture_dialog_text(PictureView view) {
+  switch (view) {
+    case PictureView::cloth:
+      break;
+    case PictureView::fold_plot:
+      return "The fold plot alone, millimetres alike across and down.";
+    case PictureView::sweep:
+      return "The sweep's n, Q and z_max over the input and range the Sweep tab has now.";
+    case PictureView::compare:
+      return "A and B side by side, as the 3D view shows them now.";
+  }
+  return "The 3D view's cloth alone, as the view shows it now.";
+}
+const char* picture_dialog_title(PictureView view) {
+  switch (view) {
+    case PictureView::cloth:
+      break;
+    case PictureView::fold_plot:
+      return "Export fold plot picture";
+    case PictureView::sweep:
+      return "Export sweep picture";
+    case PictureView::compare:
+      return "Export A and B picture";
+  }
+  return "Export 3D view picture";
+}
+
 }  // namespace
 
 DeformedGrid mesh_as_shown(Scene& scene, const ClothStyle& style) {
@@ -119,14 +147,20 @@ void ExportPanel::menu(Document& document, UiStatus& status, const ClothStyle& s
   if (ImGui::MenuItem("Fold plot picture (.png)...")) {
     picture("Export fold plot picture", Picture::fold_plot);
   }
-  const auto any_size = [&](const char* label, PictureView view) {
-    if (ImGui::MenuItem(label)) {
+  const auto any_size = [&](const char* label, PictureView view, bool enabled = true) {
+    if (ImGui::MenuItem(label, nullptr, false, enabled)) {
       dialog_spec_.view = view;
       open_dialog_ = true;
     }
   };
   any_size("3D view picture, any size (.png)...", PictureView::cloth);
   any_size("Fold plot picture, any size (.png)...", PictureView::fold_plot);
+  any_size("Sweep picture, any size (.png)...", PictureView::sweep);
+  const bool pinned = document.compare().pinned();
+  any_size("A and B picture, any size (.png)...", PictureView::compare, pinned);
+  if (!pinned && ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) {
+    ImGui::SetTooltip("Pin a fabric as B first (Compare > Pin as B).");
+  }
   if (ImGui::MenuItem("Sweep picture (.png)...", nullptr, false, sweep_shown)) {
     picture("Export sweep picture", Picture::sweep);
   }
@@ -145,9 +179,7 @@ void ExportPanel::draw_picture_dialog(UiStatus& status, FileDialog& files) {
   if (!ImGui::BeginPopupModal(kPictureDialog, nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
     return;
   }
-  const bool cloth = dialog_spec_.view == PictureView::cloth;
-  ImGui::TextUnformatted(cloth ? "The 3D view's cloth alone, as the view shows it now."
-                               : "The fold plot alone, millimetres alike across and down.");
+  ImGui::TextUnformatted(picture_dialog_text(dialog_spec_.view));
   ImGui::TextUnformatted("Size (pixels)");
   for (int i = 0; i < kCustomSize; ++i) {
     ImGui::RadioButton(kPictureSizes[i].label, &size_choice_, i);
@@ -171,7 +203,7 @@ void ExportPanel::draw_picture_dialog(UiStatus& status, FileDialog& files) {
   ImGui::RadioButton("dark", &background, static_cast<int>(PictureBackground::dark));
   dialog_spec_.background = static_cast<PictureBackground>(background);
   ImGui::Checkbox("caption (fabric, n, Q, z_max, inputs)", &dialog_spec_.caption);
-  if (!cloth) {
+  if (dialog_spec_.view == PictureView::fold_plot) {
     ImGui::Checkbox("legend", &dialog_spec_.legend);
   }
   const std::optional<std::string> problem = picture_size_problem(dialog_spec_.size);
@@ -191,7 +223,7 @@ void ExportPanel::draw_picture_dialog(UiStatus& status, FileDialog& files) {
     ImGui::CloseCurrentPopup();
     const PictureSpec spec = dialog_spec_;
     files.open({FileDialog::Mode::save,
-                cloth ? "Export 3D view picture" : "Export fold plot picture",
+                picture_dialog_title(spec.view),
                 std::string(kStem) + ".png",
                 {".png"},
                 [this, spec](const std::filesystem::path& path) -> std::optional<std::string> {

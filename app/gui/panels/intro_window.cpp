@@ -49,6 +49,7 @@ void IntroWindow::draw(PanelContext& context) {
   }
   const bool shown = ImGui::Begin(window_label().c_str(), &open_, ImGuiWindowFlags_NoCollapse);
   if (shown) {
+    ++frames_shown_;
     context.renderer.fill_window_background();  // the style's window background is transparent
     // The text scrolls; "Close" stays in view under it.
     ImGui::BeginChild("##intro text", ImVec2(0.0f, -ImGui::GetFrameHeightWithSpacing()));

@@ -13,16 +13,22 @@ class IntroWindow : public Panel {
   const char* name() const override { return kTitle; }
   const char* key() const override { return "intro"; }
   void draw(PanelContext& context) override;
+  // Its first frames: the text's height, and with it the scrollbar, is known only from the frame
+  // before, so that the first frame shows no scrollbar and the text cut at the window's foot.
+  bool busy() const override { return open_ && frames_shown_ < kFramesToSettle; }
 
   void open() {
     open_ = true;
     focus_ = true;
+    frames_shown_ = 0;
   }
   bool is_open() const { return open_; }
 
  private:
+  static constexpr int kFramesToSettle = 2;
   bool open_ = false;
   bool focus_ = false;
+  int frames_shown_ = 0;
 };
 
 }  // namespace foldlab::gui

@@ -14,6 +14,7 @@
 #include "app/gui/panels/compare_table.hpp"
 #include "app/gui/panels/widgets.hpp"
 #include "core/model/solver.hpp"
+#include "core/model/text_format.hpp"
 
 namespace foldlab::gui {
 namespace {
@@ -136,18 +137,54 @@ void SweepPanel::select_paper_case(int which, Document& document) {
   logarithmic_ = c.log;
   load_overlay(c.prefix, std::string("paper, ") + kPaperCaseButtons[which]);
   overlay_load_ = document.loads();
-  n_plot_.request_autoscale();
+  plots_.plots[0].request_autoscale();
 }
 
-void SweepPanel::draw(Document& document) {
-  const Parameters& current = document.scene().parameters();
+void SweepPanel::set_axis(const SweepAxis& axis) {
+  key_ = axis.key;
+  from_ = axis.from;
+  to_ = axis.to;
+  steps_ = axis.steps;
+  logarithmic_ = axis.logarithmic;
+  clear_overlay();
+}
+
+std::optional<std::string> SweepPanel::compute(Document& document) {
   // The paper's points describe the case they came with, not whatever is loaded next.
   if (!overlay_label_.empty() && document.loads() != overlay_load_) {
     clear_overlay();
   }
+  if (std::optional<std::string> problem = check_axis(axis())) {
+    return problem;
+  }
+  recompute(document.scene().parameters());
+  recompute_compare(document);
+  return std::nullopt;
+}
+
+void SweepPanel::draw(Document& document) {
+  draw_axis_controls(document);
+  draw_paper_case_buttons(document);
+  if (const std::optional<std::string> problem = compute(document)) {
+    ImGui::TextColored(kErrorText, "%s", problem->c_str());
+    return;
+  }
+  // The paper's rows against the model's: folded by default, since the plots need the height.
+  if (overlay_shown() && ImGui::CollapsingHeader("Paper vs model (table)")) {
+    draw_comparison(document.scene().parameters());
+  }
+  draw_keys(document);
+  // Each plot keeps room for its ticks, its title and a few lines of data at any UI scale: a
+  // short panel scrolls rather than squeeze a plot under its own labels.
+  const float height =
+      std::max(ems(kMinPlotHeightEms), (ImGui::GetContentRegionAvail().y - 8.0f) / 3.0f);
+  draw_plots(document, plots_, height);
+}
+
+void SweepPanel::draw_axis_controls(Document& document) {
   if (key_combo("input", key_)) {
     logarithmic_ = natural_log_scale(key_);
-    default_range(key_, get_number(current, key_), from_, to_);
+    default_range(key_, get_number(document.scene().parameters(), key_), from_, to_);
     clear_overlay();
   }
   // A narrow panel wraps the row rather than push "log" and "steps" out of sight.
@@ -158,7 +195,9 @@ void SweepPanel::draw(Document& document) {
   same_line_if_fits(labelled_width(ems(6.0f), "steps"));
   ImGui::SetNextItemWidth(ems(6.0f));
   ImGui::SliderInt("steps", &steps_, 10, 1000, "%d", ImGuiSliderFlags_AlwaysClamp);
+}
 
+void SweepPanel::draw_paper_case_buttons(Document& document) {
   for (int which = 0; which < kPaperCases; ++which) {
     if (ImGui::SmallButton(kPaperCaseButtons[which])) {
       document.replace_edits(
@@ -168,95 +207,141 @@ void SweepPanel::draw(Document& document) {
     ImGui::SameLine();
   }
   ImGui::NewLine();
+}
 
-  SweepAxis check{key_, from_, to_, steps_, logarithmic_};
-  if (auto problem = check_axis(check)) {
-    ImGui::TextColored(kErrorText, "%s", problem->c_str());
-    return;
-  }
-  recompute(current);
-  recompute_compare(document);
-  const std::string& key = computed_axis_.key;
-  const double now = to_shown(key, get_number(current, key));
-  const bool overlay = !overlay_label_.empty() && overlay_key_ == key;
-  // The paper's rows against the model's: folded by default, since the plots need the height.
-  if (overlay && ImGui::CollapsingHeader("Paper vs model (table)")) {
-    draw_comparison(current);
-  }
+bool SweepPanel::overlay_shown() const {
+  return !overlay_label_.empty() && overlay_key_ == computed_axis_.key;
+}
+
+void SweepPanel::draw_keys(Document& document) const {
   // With B pinned, a line each names A's and B's colours for the three plots (a legend under
-  // each would take the plots' height), wrapped rather than cut in a narrow panel; where the
-  // paper's points need a legend, "A" and "B" stand for those names.
-  const SweepCurves* b = compare_computed_ ? &compare_curves_ : nullptr;
-  const std::string a_legend = b ? "A" : "model";
-  const std::string b_legend = "B";
-  if (b != nullptr) {
+  // each would take the plots' height), wrapped rather than cut in a narrow panel.
+  if (compare_computed_) {
     draw_compare_names(document);
   }
-  // Each plot keeps room for its ticks, its title and a few lines of data at any UI scale: a
-  // short panel scrolls rather than squeeze a plot under its own labels.
-  const float height =
-      std::max(ems(kMinPlotHeightEms), (ImGui::GetContentRegionAvail().y - 8.0f) / 3.0f);
-  struct Quantity {
-    Plot& plot;
-    const char* id;
-    const char* label;
-    const std::vector<double>& ys;
-    const std::vector<double>& paper_x;
-    const std::vector<double>& paper_y;
-    bool steps;
-    const std::vector<double>* compare_ys;  // B's, while pinned
-  };
+  draw_band_key();
+}
+
+void SweepPanel::draw_band_key() const {
+  // Each kind of band once, in the order they lie along x: a band one sample wide is too narrow
+  // for its name, so the key says what each shade is.
+  std::vector<std::string> named;
+  for (const RegimeBand& band : bands_) {
+    if (std::find(named.begin(), named.end(), band.name) != named.end()) {
+      continue;
+    }
+    named.push_back(band.name);
+    const float side = ImGui::GetTextLineHeight();
+    const ImVec2 at = ImGui::GetCursorScreenPos();
+    ImDrawList* draw = ImGui::GetWindowDrawList();
+    const ImVec2 low(at.x, at.y + 0.15f * side);
+    const ImVec2 high(at.x + 1.4f * side, at.y + 0.85f * side);
+    draw->AddRectFilled(low, high,
+                        ImGui::ColorConvertFloat4ToU32(plot_background(style_is_light())));
+    draw->AddRectFilled(low, high, band.valid ? kRegimeBandFill.u32() : kRefusedBandFill.u32());
+    draw->AddRect(low, high, kDimText.u32());
+    ImGui::Dummy(ImVec2(1.4f * side, side));
+    ImGui::SameLine();
+    const std::string meaning = !band.valid ? std::string("the other inputs refuse these values")
+                                : band.regime == Regime::wrinkled
+                                    ? std::string("a single fold, so no ratio Q")
+                                    : std::string(regime_info(band.regime).plain);
+    ImGui::PushStyleColor(ImGuiCol_Text, static_cast<ImVec4>(kDimText));
+    wrapped_text("%s: %s", band.name.c_str(), meaning.c_str());
+    ImGui::PopStyleColor();
+  }
+}
+
+void SweepPanel::draw_plots(Document& document, SweepPlots& plots, float height_px) {
+  const SweepCurves* b = compare_computed_ ? &compare_curves_ : nullptr;
   const Quantity quantities[] = {
-      {n_plot_, "sweep n", "n", curves_.n, overlay_shown_x_, overlay_n_, true, b ? &b->n : nullptr},
-      {Q_plot_, "sweep Q", "Q", curves_.Q, overlay_Q_shown_x_, overlay_Q_, false,
+      {"sweep n", "n", "n", "", curves_.n, overlay_shown_x_, overlay_n_, true, b ? &b->n : nullptr},
+      {"sweep Q", "Q", "Q", "", curves_.Q, overlay_Q_shown_x_, overlay_Q_, false,
        b ? &b->Q : nullptr},
-      {z_plot_, "sweep z", "z_max (mm)", curves_.z_max_mm, overlay_shown_x_, overlay_z_, false,
-       b ? &b->z_max_mm : nullptr},
+      {"sweep z", "z_max (mm)", "z_max", " mm", curves_.z_max_mm, overlay_shown_x_, overlay_z_,
+       false, b ? &b->z_max_mm : nullptr},
   };
   // The three data areas start at one x, so that the current value's line is one line down all
   // three: each plot's tick labels take the widest's room (last frame's).
   float widest_labels = 0.0f;
-  for (const Quantity& q : quantities) {
-    // The x title only under the last plot; a legend only when the paper's points are shown.
-    const bool last = &q == &quantities[2];
-    q.plot.min_label_width(shared_label_width_);
-    if (!q.plot.begin(q.id, ImVec2(0.0f, height),
-                      PlotAxis{last ? axis_label(key) : std::string(), false, logarithmic_},
-                      PlotAxis{q.label, false, false})) {
-      continue;
-    }
-    if (!shown_x_.empty()) {
-      q.plot.fit_x_to(shown_x_.front(), shown_x_.back());
-    }
-    const char* legend = overlay ? a_legend.c_str() : nullptr;
-    const auto curve = [&](const char* name, const std::vector<double>& ys, ImU32 colour) {
-      if (q.steps) {
-        q.plot.steps(name, shown_x_, ys, colour, 2.0f);
-      } else {
-        q.plot.line(name, shown_x_, ys, colour, 2.0f);
+  for (int which = 0; which < 3; ++which) {
+    Plot& plot = plots.plots[which];
+    plot.min_label_width(plots.shared_label_width);
+    if (draw_quantity(document, plot, quantities[which], which == 2, height_px)) {
+      widest_labels = std::max(widest_labels, plot.label_width_needed());
+      draw_bands(plot, computed_axis_.key, which == 0);
+      if (which == 0) {
+        curves_drawn_ = b != nullptr ? 2 : 1;
       }
-    };
-    curve(legend, q.ys, kSweepCurve.u32());
-    if (q.compare_ys != nullptr) {
-      curve(overlay ? b_legend.c_str() : nullptr, *q.compare_ys, kCompareB.u32());
     }
-    if (&q == &quantities[0]) {
-      curves_drawn_ = q.compare_ys != nullptr ? 2 : 1;
-    }
-    if (overlay) {
-      q.plot.markers(overlay_label_.c_str(), q.paper_x, q.paper_y, kPaperPoint.u32(),
-                     MarkerShape::Diamond, 5.0f);
-    }
-    q.plot.vertical_line(now, kCurrentValue.u32());
-    if (b != nullptr) {
-      q.plot.vertical_line(to_shown(key, get_number(document.compare().b().parameters, key)),
-                           kCompareB.u32());
-    }
-    q.plot.end();
-    widest_labels = std::max(widest_labels, q.plot.label_width_needed());
-    draw_bands(q.plot, key, &q == &quantities[0]);
   }
-  shared_label_width_ = widest_labels;
+  plots.shared_label_width = widest_labels;
+}
+
+bool SweepPanel::draw_quantity(Document& document, Plot& plot, const Quantity& q, bool last,
+                               float height_px) const {
+  const std::string& key = computed_axis_.key;
+  // A hovered point reads in the input's own words and unit: "w = 213.9 g/m²", "n = 7".
+  const auto x_text = [key](double shown) { return shown_value(key, from_shown(key, shown)); };
+  const std::string symbol = q.symbol;
+  const std::string unit = q.unit;
+  const auto y_text = [symbol, unit](double y) {
+    return symbol + " = " + detail::printf_string("%.4g", y) + unit;
+  };
+  // The x title only under the last plot.
+  if (!plot.begin(
+          q.id, ImVec2(0.0f, height_px),
+          PlotAxis{last ? axis_label(key) : std::string(), false, logarithmic_, false, x_text},
+          PlotAxis{q.label, false, false, false, y_text})) {
+    return false;
+  }
+  if (!shown_x_.empty()) {
+    plot.fit_x_to(shown_x_.front(), shown_x_.back());
+  }
+  const auto curve = [&](const char* name, const std::vector<double>& ys, ImU32 colour) {
+    if (q.steps) {
+      plot.steps(name, shown_x_, ys, colour, 2.0f);
+    } else {
+      plot.line(name, shown_x_, ys, colour, 2.0f);
+    }
+  };
+  // A legend only when the paper's points are shown; with B pinned, "A" and "B" stand for the
+  // names above the plots.
+  const bool overlay = overlay_shown();
+  const bool pinned = q.compare_ys != nullptr;
+  curve(overlay ? (pinned ? "A" : "model") : nullptr, q.ys, kSweepCurve.u32());
+  if (pinned) {
+    curve(overlay ? "B" : nullptr, *q.compare_ys, kCompareB.u32());
+  }
+  if (overlay) {
+    plot.markers(overlay_label_.c_str(), q.paper_x, q.paper_y, kPaperPoint.u32(),
+                 MarkerShape::Diamond, 5.0f);
+  }
+  plot.vertical_line(to_shown(key, get_number(document.scene().parameters(), key)),
+                     kCurrentValue.u32());
+  if (pinned) {
+    plot.vertical_line(to_shown(key, get_number(document.compare().b().parameters, key)),
+                       kCompareB.u32());
+  }
+  plot.end();
+  return true;
+}
+
+std::optional<ImVec2> SweepPanel::screen_point(int which, double shown_x) const {
+  const std::vector<double>& ys = which == 0   ? curves_.n
+                                  : which == 1 ? curves_.Q
+                                               : curves_.z_max_mm;
+  std::optional<std::size_t> nearest;
+  for (std::size_t i = 0; i < shown_x_.size() && i < ys.size(); ++i) {
+    if (std::isfinite(ys[i]) &&
+        (!nearest || std::abs(shown_x_[i] - shown_x) < std::abs(shown_x_[*nearest] - shown_x))) {
+      nearest = i;
+    }
+  }
+  if (!nearest) {
+    return std::nullopt;
+  }
+  return plot_view(which).to_screen(shown_x_[*nearest], ys[*nearest]);
 }
 
 void SweepPanel::draw_bands(const Plot& plot, const std::string& key, bool label) const {

@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -15,10 +16,30 @@
 
 namespace foldlab::gui {
 
+// The three plots of a sweep, n, Q and z_max, with the room their y tick labels took last frame
+// (so that the three data areas start at one x): the tab's own, or a picture's.
+struct SweepPlots {
+  Plot plots[3];
+  float shared_label_width = 0.0f;
+};
+
 class SweepPanel {
  public:
   explicit SweepPanel(std::filesystem::path presets_dir);
   void draw(Document& document);
+  // The axis swept: a `foldlab picture sweep`'s --param, --from, --to (drops the paper's points).
+  void set_axis(const SweepAxis& axis);
+  SweepAxis axis() const { return SweepAxis{key_, from_, to_, steps_, logarithmic_}; }
+  // The curves for the axis and the fabrics as they are now (A's, and B's while pinned), again
+  // only when they changed; the axis's problem when it has one.
+  std::optional<std::string> compute(Document& document);
+  // The keys above the plots (A and B while B is pinned, the shaded bands) and the three plots,
+  // each `height_px` tall, after compute(): the tab's own plots, or a picture's.
+  void draw_keys(Document& document) const;
+  void draw_plots(Document& document, SweepPlots& plots, float height_px);
+  // Where the last frame drew plot `which`'s sample nearest `shown_x` (in the unit the axis
+  // shows), skipping gaps; none without one.
+  std::optional<ImVec2> screen_point(int which, double shown_x) const;
   // One click's worth: 0 Table 1, 1 Table 2, 2 Fig. 4 (loads the preset, sweeps, overlays).
   void select_paper_case(int which, Document& document);
   static constexpr int kPaperCases = 3;
@@ -29,9 +50,7 @@ class SweepPanel {
   const std::vector<RegimeBand>& bands() const { return bands_; }
   const SweepCurves& curves() const { return curves_; }
   // Where the last frame drew the n, Q and z_max plots' data (0, 1, 2).
-  const PlotView& plot_view(int which) const {
-    return which == 0 ? n_plot_.view() : which == 1 ? Q_plot_.view() : z_plot_.view();
-  }
+  const PlotView& plot_view(int which) const { return plots_.plots[which].view(); }
   // B's curves over the same axis while a fabric is pinned as B (null otherwise), and how many
   // curves the n plot drew last frame (A's, then B's).
   const SweepCurves* compare_curves() const {
@@ -41,6 +60,29 @@ class SweepPanel {
 
  private:
   void recompute(const Parameters& current);
+  // draw()'s steps: the input, range, scale and steps; the paper's cases; whether the paper's
+  // points belong to the axis shown.
+  void draw_axis_controls(Document& document);
+  void draw_paper_case_buttons(Document& document);
+  bool overlay_shown() const;
+  // What each shade of band over the plots means, a line for each kind shown.
+  void draw_band_key() const;
+  // One of the three plots: its id, y title, the symbol and unit its tooltip gives a value in,
+  // the model's values, the paper's points, and B's values while pinned.
+  struct Quantity {
+    const char* id;
+    const char* label;
+    const char* symbol;
+    const char* unit;
+    const std::vector<double>& ys;
+    const std::vector<double>& paper_x;
+    const std::vector<double>& paper_y;
+    bool steps;
+    const std::vector<double>* compare_ys;
+  };
+  // Draws one plot, the x title only when `last`; false when it is clipped (nothing drawn).
+  bool draw_quantity(Document& document, Plot& plot, const Quantity& q, bool last,
+                     float height_px) const;
   // B's curves over the axis A's were computed on, again only when B or the axis changes.
   void recompute_compare(Document& document);
   // The paper's rows for `prefix` (e.g. "paper-table1-") as points over `key`.
@@ -78,8 +120,7 @@ class SweepPanel {
   std::vector<double> overlay_Q_x_;    // rows without a printed Q are left out of the Q plot
   std::vector<double> overlay_row_Q_;  // per row of overlay_x_, NaN where the paper prints no Q
   std::vector<double> overlay_shown_x_, overlay_Q_shown_x_;  // as plotted, like shown_x_
-  Plot n_plot_, Q_plot_, z_plot_;
-  float shared_label_width_ = 0.0f;  // the widest y tick labels of the three, last frame
+  SweepPlots plots_;
 };
 
 }  // namespace foldlab::gui

@@ -3,7 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdarg>
+#include <span>
+#include <string_view>
 #include <utility>
+#include <vector>
 
 #include "core/model/text_format.hpp"
 
@@ -186,7 +189,10 @@ void hint_after(const char* text) {
 
 void section(const char* title) {
   ImGui::Spacing();
-  ImGui::TextColored(kSectionText, "%s", title);
+  // Wrapped in a narrow panel rather than cut ("eq. 7: critical stress gives Q7").
+  ImGui::PushStyleColor(ImGuiCol_Text, static_cast<ImVec4>(kSectionText));
+  wrapped_text("%s", title);
+  ImGui::PopStyleColor();
   ImGui::Separator();
 }
 
@@ -307,6 +313,127 @@ void wrapped_text(const char* format, ...) {
   const std::string text = detail::vprintf_string(format, args);
   va_end(args);
   ImGui::TextUnformatted(wrap_at_spaces(text, ImGui::GetContentRegionAvail().x).c_str());
+}
+
+namespace {
+
+// The words an equation breaks before, the stronger first.
+constexpr std::string_view kRelations[] = {"=", "->", "→", "vs", "≈", "<", ">", "≤", "≥"};
+constexpr std::string_view kArithmetic[] = {"×", "/", "+", "-", "−", "·"};
+
+// `text` as pieces that each start at an operator of `operators` (the first piece at the start),
+// split at the space before the operator.
+std::vector<std::string_view> split_before(std::string_view text,
+                                           std::span<const std::string_view> operators) {
+  std::vector<std::string_view> pieces;
+  std::size_t piece_start = 0;
+  for (std::size_t at = 0; at < text.size();) {
+    const std::size_t space = text.find(' ', at);
+    if (space == std::string_view::npos) {
+      break;
+    }
+    std::size_t word_start = space;
+    while (word_start < text.size() && text[word_start] == ' ') {
+      ++word_start;
+    }
+    const std::size_t word_end = std::min(text.find(' ', word_start), text.size());
+    const std::string_view word = text.substr(word_start, word_end - word_start);
+    const bool before_operator =
+        std::find(operators.begin(), operators.end(), word) != operators.end();
+    // Not at a line's own leading spaces ("  = value"): those stay with their operator.
+    if (before_operator && text.find_first_not_of(' ', piece_start) < space) {
+      pieces.push_back(text.substr(piece_start, space - piece_start));
+      piece_start = space;
+    }
+    at = word_start;
+  }
+  pieces.push_back(text.substr(piece_start));
+  return pieces;
+}
+
+// Lines of `text` at most `width_px` wide, continuation lines starting with `indent`; `level` 0
+// breaks at relations, 1 at arithmetic, 2 at any space.
+void wrap_equation_lines(std::string_view text, float width_px, std::string_view indent, int level,
+                         std::vector<std::string>& lines) {
+  // A line after the first: the indent, then the text without its own leading spaces.
+  const auto shown = [&](std::string_view line) {
+    if (lines.empty()) {
+      return std::string(line);
+    }
+    line.remove_prefix(std::min(line.find_first_not_of(' '), line.size()));
+    return std::string(indent) + std::string(line);
+  };
+  const auto fits = [&](std::string_view line) {
+    const std::string s = shown(line);
+    return ImGui::CalcTextSize(s.c_str()).x <= width_px;
+  };
+  if (level < 2 && fits(text)) {
+    lines.push_back(shown(text));
+    return;
+  }
+  if (level >= 2) {
+    // Any space, as wrap_at_spaces breaks, with room for the indent on every line.
+    const std::string first = shown(text);
+    const std::string_view rest =
+        lines.empty() ? text : std::string_view(first).substr(indent.size());
+    const std::string wrapped =
+        wrap_at_spaces(rest, width_px - ImGui::CalcTextSize(std::string(indent).c_str()).x);
+    for (std::size_t start = 0; start <= wrapped.size();) {
+      const std::size_t end = std::min(wrapped.find('\n', start), wrapped.size());
+      lines.push_back(shown(std::string_view(wrapped).substr(start, end - start)));
+      start = end + 1;
+    }
+    return;
+  }
+  const std::vector<std::string_view> pieces =
+      split_before(text, level == 0 ? std::span<const std::string_view>(kRelations)
+                                    : std::span<const std::string_view>(kArithmetic));
+  // Pieces [first, end) as one line of the original text.
+  const auto joined = [&](std::size_t first, std::size_t end) {
+    const char* from = pieces[first].data();
+    const char* to = pieces[end - 1].data() + pieces[end - 1].size();
+    return std::string_view(from, static_cast<std::size_t>(to - from));
+  };
+  // Greedy: as many pieces on a line as fit; a piece too wide alone breaks at the next level.
+  for (std::size_t first = 0; first < pieces.size();) {
+    std::size_t end = first + 1;
+    while (end < pieces.size() && fits(joined(first, end + 1))) {
+      ++end;
+    }
+    if (fits(joined(first, end))) {
+      lines.push_back(shown(joined(first, end)));
+    } else {
+      wrap_equation_lines(joined(first, end), width_px, indent, level + 1, lines);
+    }
+    first = end;
+  }
+}
+
+}  // namespace
+
+std::string wrap_equation(std::string_view text, float width_px, std::string_view indent) {
+  std::vector<std::string> lines;
+  wrap_equation_lines(text, std::max(width_px, 1.0f), indent, 0, lines);
+  std::string out;
+  for (const std::string& line : lines) {
+    out += (out.empty() ? "" : "\n") + line;
+  }
+  return out;
+}
+
+void equation_text(const ImVec4* colour, const char* format, ...) {
+  std::va_list args;
+  va_start(args, format);
+  const std::string text = detail::vprintf_string(format, args);
+  va_end(args);
+  const std::string wrapped = wrap_equation(text, ImGui::GetContentRegionAvail().x);
+  if (colour != nullptr) {
+    ImGui::PushStyleColor(ImGuiCol_Text, *colour);
+  }
+  ImGui::TextUnformatted(wrapped.c_str());
+  if (colour != nullptr) {
+    ImGui::PopStyleColor();
+  }
 }
 
 void help_marker(const char* text) {

@@ -99,6 +99,14 @@ std::string wrap_at_spaces(std::string_view text, float width_px);
 // ImGui::TextWrapped that wraps at spaces only (see wrap_at_spaces), with a checked format.
 [[gnu::format(printf, 1, 2)]] void wrapped_text(const char* format, ...);
 
+// An equation with today's numbers as lines at most `width_px` wide: broken before a relation
+// ("=", "->", "vs") where it can be, else before an arithmetic operator ("×", "/", "+", "-"),
+// else at a space (wrap_at_spaces), so that no number is cut. A line after a break is indented by
+// `indent`.
+std::string wrap_equation(std::string_view text, float width_px, std::string_view indent = "    ");
+// ImGui::TextUnformatted of wrap_equation at the width left on the line, in `colour` when given.
+[[gnu::format(printf, 2, 3)]] void equation_text(const ImVec4* colour, const char* format, ...);
+
 // A "(?)" after the last item that shows `text` when hovered.
 void help_marker(const char* text);
 
