@@ -724,9 +724,34 @@ std::optional<FittedConstants> fit_constants(const std::vector<Measurement>& row
   return tables->fit(all, [&](double f) { return keep_going(0.5 + 0.5 * f); });
 }
 
-CalibrationReport calibrate(const MeasurementSet& data, const Parameters& base,
-                            const CalibrationOptions& options,
-                            const CalibrationProgress& progress) {
+struct CalibrationSteps::State {
+  MeasurementSet data;
+  Parameters base;
+  CalibrationOptions options;
+  std::vector<std::size_t> fit_rows;  // indices into data.rows
+  std::set<std::string> groups;       // of the fit rows
+  bool leave_one_out = false;
+  bool split_groups = false;
+  std::vector<Measurement> fit_measurements;
+  std::shared_ptr<CalibrationTables::Data> tables;
+  std::vector<char> tabulated;  // per fit row
+  // Subsets as positions in fit_rows; subsets[0] is the in-sample fit.
+  std::vector<std::vector<std::size_t>> subsets;
+  std::vector<std::optional<FittedConstants>> fits;
+  std::size_t next_row = 0;
+  std::size_t next_fit = 0;
+  bool failed = false;  // a tabulation or fit came back empty (cancelled)
+
+  // Where a step's batch from `first` ends: one piece per thread, within `count`.
+  std::size_t batch_end(std::size_t first, std::size_t count) const {
+    return std::min(count, first + static_cast<std::size_t>(resolve_thread_count(options.threads)));
+  }
+  CalibrationReport assemble() const;
+};
+
+CalibrationSteps::CalibrationSteps(const MeasurementSet& data, const Parameters& base,
+                                   const CalibrationOptions& options)
+    : state_(std::make_unique<State>()) {
   check_options(options);
   check_base(base);
   if (static_cast<std::int64_t>(data.rows.size()) > kMaxCalibrationRows) {
@@ -734,13 +759,13 @@ CalibrationReport calibrate(const MeasurementSet& data, const Parameters& base,
                            " rows, above the limit of " + std::to_string(kMaxCalibrationRows) +
                            " rows a calibration fits; split the file");
   }
-  CalibrationReport report;
-  report.fit = options.fit;
-  report.base = base;
-  std::vector<std::size_t> fit_rows;
+  State& s = *state_;
+  s.data = data;
+  s.base = base;
+  s.options = options;
   for (std::size_t i = 0; i < data.rows.size(); ++i) {
     if (data.rows[i].role == MeasurementRole::fit) {
-      fit_rows.push_back(i);
+      s.fit_rows.push_back(i);
     }
   }
   // Rows built in code (the explorer's clicked folds) skip the file reader's bounds: the same
@@ -752,81 +777,130 @@ CalibrationReport calibrate(const MeasurementSet& data, const Parameters& base,
                              std::to_string(kMaxObservedFolds) + " can be observed on one cloth");
     }
   }
-  report.fit_row_count = static_cast<int>(fit_rows.size());
-  report.check_row_count = static_cast<int>(data.rows.size() - fit_rows.size());
-  if (fit_rows.empty()) {
+  if (s.fit_rows.empty()) {
     throw CalibrationError(data.origin + ": nothing to fit: every row has role check");
   }
-  check_fit_row_count(static_cast<int>(fit_rows.size()), options.fit);
+  check_fit_row_count(static_cast<int>(s.fit_rows.size()), options.fit);
   // The groups of the fit rows, for fitting on all but one and testing on that one.
-  std::set<std::string> groups;
-  for (std::size_t i : fit_rows) {
-    groups.insert(data.rows[i].group);
+  for (std::size_t i : s.fit_rows) {
+    s.groups.insert(data.rows[i].group);
   }
   // A held-out fit, like every fit, stands on at least as many rows as it has constants.
   const std::size_t constants = options.fit == FitConstants::K ? 1 : 2;
-  const bool leave_one_out = options.held_out && fit_rows.size() >= constants + 1;
-  const bool split_groups = options.held_out && groups.size() >= 2 &&
-                            std::all_of(groups.begin(), groups.end(), [&](const std::string& g) {
-                              return static_cast<std::size_t>(std::count_if(
-                                         fit_rows.begin(), fit_rows.end(), [&](std::size_t i) {
-                                           return data.rows[i].group != g;
-                                         })) >= constants;
-                            });
-  // Every fit row tabulated once (0 to 40 % of the progress: about as much work as the fits
-  // together for K and p, far more for K alone), then every fit at once: the in-sample one, one
-  // per left-out row and one per left-out group, each written to its own slot.
-  auto keep_going = [&](double fraction) { return !progress || progress(fraction); };
-  std::vector<Measurement> fit_measurements;
-  for (std::size_t i : fit_rows) {
-    fit_measurements.push_back(data.rows[i]);
+  s.leave_one_out = options.held_out && s.fit_rows.size() >= constants + 1;
+  s.split_groups = options.held_out && s.groups.size() >= 2 &&
+                   std::all_of(s.groups.begin(), s.groups.end(), [&](const std::string& g) {
+                     return static_cast<std::size_t>(std::count_if(
+                                s.fit_rows.begin(), s.fit_rows.end(), [&](std::size_t i) {
+                                  return data.rows[i].group != g;
+                                })) >= constants;
+                   });
+  for (std::size_t i : s.fit_rows) {
+    s.fit_measurements.push_back(data.rows[i]);
   }
-  const std::optional<CalibrationTables> tables = CalibrationTables::tabulate(
-      fit_measurements, base, options, [&](double f) { return keep_going(0.4 * f); });
-  if (!tables) {
-    report.cancelled = true;
-    return report;
+  s.tables = std::make_shared<CalibrationTables::Data>();
+  s.tables->tables.resize(s.fit_measurements.size());
+  s.tables->options = options;
+  s.tables->base_p = base.model.stress_exponent_p;
+  s.tables->log_K = log_K_range(base);
+  s.tabulated.assign(s.fit_measurements.size(), 0);
+  s.subsets.resize(1);
+  for (std::size_t k = 0; k < s.fit_rows.size(); ++k) {
+    s.subsets[0].push_back(k);
   }
-  // Subsets as positions in fit_rows; subsets[0] is the in-sample fit.
-  std::vector<std::vector<std::size_t>> subsets(1);
-  for (std::size_t k = 0; k < fit_rows.size(); ++k) {
-    subsets[0].push_back(k);
-  }
-  if (leave_one_out) {
-    for (std::size_t left_out = 0; left_out < fit_rows.size(); ++left_out) {
-      std::vector<std::size_t>& subset = subsets.emplace_back();
-      for (std::size_t k = 0; k < fit_rows.size(); ++k) {
+  if (s.leave_one_out) {
+    for (std::size_t left_out = 0; left_out < s.fit_rows.size(); ++left_out) {
+      std::vector<std::size_t>& subset = s.subsets.emplace_back();
+      for (std::size_t k = 0; k < s.fit_rows.size(); ++k) {
         if (k != left_out) {
           subset.push_back(k);
         }
       }
     }
   }
-  if (split_groups) {
-    for (const std::string& group : groups) {
-      std::vector<std::size_t>& subset = subsets.emplace_back();
-      for (std::size_t k = 0; k < fit_rows.size(); ++k) {
-        if (data.rows[fit_rows[k]].group != group) {
+  if (s.split_groups) {
+    for (const std::string& group : s.groups) {
+      std::vector<std::size_t>& subset = s.subsets.emplace_back();
+      for (std::size_t k = 0; k < s.fit_rows.size(); ++k) {
+        if (data.rows[s.fit_rows[k]].group != group) {
           subset.push_back(k);
         }
       }
     }
   }
-  std::vector<std::optional<FittedConstants>> fits(subsets.size());
-  const bool finished = run_tasks(
-      subsets.size(), options.threads,
-      [&](std::size_t i, const std::atomic<bool>& stop) {
-        fits[i] = tables->fit(subsets[i], [&stop](double) { return !stop.load(); });
-      },
-      [&](double f) { return keep_going(0.4 + 0.6 * f); });
-  if (!finished || std::any_of(fits.begin(), fits.end(), [](const auto& f) { return !f; })) {
+  s.fits.resize(s.subsets.size());
+}
+
+CalibrationSteps::~CalibrationSteps() = default;
+
+bool CalibrationSteps::step() {
+  State& s = *state_;
+  const std::size_t rows = s.fit_measurements.size();
+  if (s.next_row < rows) {
+    // Plain names, not a structured binding: the lambda captures them (emcc's clang cannot).
+    const std::size_t first = s.next_row;
+    const std::size_t last = s.batch_end(first, rows);
+    run_tasks(last - first, s.options.threads, [&](std::size_t k, const std::atomic<bool>& stop) {
+      const std::size_t i = first + k;
+      std::optional<RowTable> t =
+          foldlab::tabulate(s.fit_measurements[i], s.base, s.options.tabulation_step_decades,
+                            [&stop] { return !stop.load(); });
+      if (t) {
+        s.tables->tables[i] = std::move(*t);
+        s.tabulated[i] = 1;
+      }
+    });
+    s.next_row = last;
+    s.failed |= std::count(s.tabulated.begin(),
+                           s.tabulated.begin() + static_cast<std::ptrdiff_t>(last), 0) > 0;
+    return false;
+  }
+  if (s.next_fit < s.subsets.size()) {
+    const CalibrationTables tables(s.tables);
+    const std::size_t first = s.next_fit;
+    const std::size_t last = s.batch_end(first, s.subsets.size());
+    run_tasks(last - first, s.options.threads, [&](std::size_t k, const std::atomic<bool>& stop) {
+      s.fits[first + k] =
+          tables.fit(s.subsets[first + k], [&stop](double) { return !stop.load(); });
+    });
+    s.next_fit = last;
+    s.failed |= std::any_of(s.fits.begin(), s.fits.begin() + static_cast<std::ptrdiff_t>(last),
+                            [](const auto& f) { return !f; });
+  }
+  return s.next_fit >= s.subsets.size();
+}
+
+double CalibrationSteps::fraction_done() const {
+  const State& s = *state_;
+  const double rows = static_cast<double>(s.fit_measurements.size());
+  const double fits = static_cast<double>(s.subsets.size());
+  return 0.4 * static_cast<double>(s.next_row) / rows +
+         0.6 * static_cast<double>(s.next_fit) / fits;
+}
+
+CalibrationReport CalibrationSteps::report() const {
+  const State& s = *state_;
+  if (s.failed || s.next_row < s.fit_measurements.size() || s.next_fit < s.subsets.size()) {
+    CalibrationReport report;
+    report.fit = s.options.fit;
+    report.base = s.base;
+    report.fit_row_count = static_cast<int>(s.fit_rows.size());
+    report.check_row_count = static_cast<int>(s.data.rows.size() - s.fit_rows.size());
     report.cancelled = true;
     return report;
   }
+  return s.assemble();
+}
+
+CalibrationReport CalibrationSteps::State::assemble() const {
+  CalibrationReport report;
+  report.fit = options.fit;
+  report.base = base;
+  report.fit_row_count = static_cast<int>(fit_rows.size());
+  report.check_row_count = static_cast<int>(data.rows.size() - fit_rows.size());
   auto predict = [&](const Measurement& m, double K, double p) {
     return compare_with_published(m.observed, with_constants(parameters_for(m, base), K, p));
   };
-
   const FittedConstants& in_sample = *fits[0];
   report.fitted = in_sample;
   for (const Measurement& m : data.rows) {
@@ -841,10 +915,10 @@ CalibrationReport calibrate(const MeasurementSet& data, const Parameters& base,
     }
     report.rows.push_back(std::move(row));
   }
-  std::size_t next_fit = 1;
+  std::size_t fit_at = 1;
   if (leave_one_out) {
     for (std::size_t left_out : fit_rows) {
-      const FittedConstants& fit = *fits[next_fit++];
+      const FittedConstants& fit = *fits[fit_at++];
       CalibrationRow& row = report.rows[left_out];
       row.held_out = predict(row.measurement, fit.K, fit.p);
       row.held_out_K = fit.K;
@@ -854,7 +928,7 @@ CalibrationReport calibrate(const MeasurementSet& data, const Parameters& base,
   std::vector<PublishedComparison> pooled_test;
   if (split_groups) {
     for (const std::string& group : groups) {
-      const FittedConstants& fit = *fits[next_fit++];
+      const FittedConstants& fit = *fits[fit_at++];
       GroupSplit split;
       split.test_group = group;
       split.fit = fit;
@@ -885,6 +959,23 @@ CalibrationReport calibrate(const MeasurementSet& data, const Parameters& base,
   report.leave_one_out = summarize(held_out);
   report.check_rows = summarize(check);
   return report;
+}
+
+CalibrationReport calibrate(const MeasurementSet& data, const Parameters& base,
+                            const CalibrationOptions& options,
+                            const CalibrationProgress& progress) {
+  CalibrationSteps steps(data, base, options);
+  while (!steps.step()) {
+    if (progress && !progress(steps.fraction_done())) {
+      return steps.report();  // marked cancelled
+    }
+  }
+  if (progress && !progress(1.0)) {
+    CalibrationReport cancelled = steps.report();
+    cancelled.cancelled = true;
+    return cancelled;
+  }
+  return steps.report();
 }
 
 ModelForm model_form(const ModelSettings& m) {
