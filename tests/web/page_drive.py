@@ -4,6 +4,7 @@ DevTools protocol, real mouse and touch events at CSS pixels, the explorer's sta
 time through the page's Module.foldlabState() (what `gui --report` prints), screenshots.
 
   page_drive.py --site DIR --check NAME [--chromium PATH] [--keep-screenshots DIR]
+                [--native FOLDLAB --presets DIR]
 
 Checks (each its own ctest):
   dpr       devicePixelRatio 2 beside 1: the canvas backing store twice as big, the layout the
@@ -13,6 +14,12 @@ Checks (each its own ctest):
             typed value with the on-screen keyboard's field focused, and typed text arrives
   scheme    the theme follows the browser's prefers-color-scheme and the text size its default
             font size, with no stored session
+  regime_map  tests/web/regime_map_slices.json played in real time (a virtual clock stands still
+            while a slice runs, so it would run the whole map in one frame): three frames after
+            the tab opens the map is part done, so frames keep coming while it runs; at the end
+            its cells are those of the desktop program (--native: `render --play
+            regime_map_done.json`): the digest of every cell's n, regime and flags, the sum of n,
+            and the sum of z_max (floats, to 1e-9 of it)
 Exit 0 when every check holds. The DevTools websocket is spoken here (RFC 6455, client side): the
 test needs nothing beyond Python's standard library."""
 import argparse
@@ -104,10 +111,12 @@ class DevTools:
 class Page:
     """A served site and one headless Chromium showing it."""
 
-    def __init__(self, args, root, query, flags=()):
+    def __init__(self, args, root, query, flags=(), play_dir=None):
         self.root = root
         serve = os.path.join(root, "serve")
         os.makedirs(serve, exist_ok=True)
+        if play_dir:
+            os.symlink(os.path.abspath(play_dir), os.path.join(serve, "play"))
         for name in os.listdir(args.site):
             target = os.path.join(serve, name)
             if not os.path.exists(target):
@@ -384,17 +393,65 @@ def check_scheme(args, root, problems):
             page.close()
 
 
+def check_regime_map(args, root, problems):
+    here = os.path.dirname(os.path.abspath(__file__))
+    page = Page(args, os.path.join(root, "map"),
+                "?play=play/regime_map_slices.json&report=1&preset=paper-table1-h1400#L=4000",
+                play_dir=here)
+    try:
+        deadline = time.monotonic() + 240
+        text = ""
+        while not text and time.monotonic() < deadline:
+            time.sleep(0.2)
+            text = page.tools.evaluate("document.getElementById('foldlab-report').textContent")
+        if not text:
+            problems.append("the played script did not end within 240 s")
+            return
+        result = json.loads(text)
+    finally:
+        page.close()
+    if result.get("exit_status") != 0:
+        problems.append(f"the played script failed: {result.get('stderr')}")
+        return
+    if not args.native:
+        return
+    with tempfile.TemporaryDirectory(prefix="foldlab_native_") as home:
+        run = subprocess.run(
+            [args.native, "render", "--play", os.path.join(here, "regime_map_done.json"),
+             "--report", "--preset", os.path.join(args.presets, "paper-table1-h1400.json"),
+             "--set", "L=4000"],
+            capture_output=True, text=True, timeout=600, cwd=home,
+            env={**os.environ, "XDG_CONFIG_HOME": home, "HOME": home})
+    if run.returncode != 0:
+        problems.append(f"the desktop program's run failed ({run.returncode}): {run.stderr}")
+        return
+    native = json.loads(run.stdout[run.stdout.index("{"):])
+    mine = result["report"].get("regime_map") or {}
+    theirs = native.get("regime_map") or {}
+    for key in ("x", "y", "cells", "rows_done", "digest", "n_sum"):
+        check(problems, mine.get(key) == theirs.get(key),
+              f"regime_map.{key}: the page's {mine.get(key)!r}, the desktop's {theirs.get(key)!r}")
+    z_mine, z_theirs = mine.get("z_max_sum_mm"), theirs.get("z_max_sum_mm")
+    check(problems, z_mine is not None and z_theirs is not None and
+          abs(z_mine - z_theirs) <= 1e-9 * abs(z_theirs),
+          f"regime_map.z_max_sum_mm: the page's {z_mine}, the desktop's {z_theirs}")
+
+
 def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("--site", required=True)
-    parser.add_argument("--check", required=True, choices=["dpr", "touch", "scheme"])
+    parser.add_argument("--check", required=True,
+                        choices=["dpr", "touch", "scheme", "regime_map"])
+    parser.add_argument("--native", help="the desktop program (regime_map)")
+    parser.add_argument("--presets", help="the presets folder (regime_map)")
     parser.add_argument("--chromium", default="chromium")
     parser.add_argument("--keep-screenshots", help="a folder to copy the screenshots into")
     args = parser.parse_args()
     problems = []
     started = time.monotonic()
     with tempfile.TemporaryDirectory(prefix="foldlab_drive_") as root:
-        {"dpr": check_dpr, "touch": check_touch, "scheme": check_scheme}[args.check](
+        {"dpr": check_dpr, "touch": check_touch, "scheme": check_scheme,
+         "regime_map": check_regime_map}[args.check](
             args, root, problems)
     for problem in problems:
         print(f"{args.check}: {problem}", file=sys.stderr)

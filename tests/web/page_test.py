@@ -5,14 +5,10 @@
 
   page_test.py --site DIR --play-dir DIR --query '?play=play/slider_h.json&report=1...'
                [--expect KEY=JSON ...] [--expect-address TEXT] [--expect-address-is-link]
-               [--chromium PATH] [--same-as-native EXE --native-script FILE --native-args ...]
+               [--chromium PATH]
 KEY is a dotted path into the report (`gui --report`'s JSON). The address is the page's fragment
 when the run ended (location.hash): --expect-address compares it with TEXT, and
---expect-address-is-link with the explorer's link then ('#' and the report's `link`).
---same-as-native runs the desktop program EXE headless on --native-script with --native-args
-(`render --play FILE --report ARGS`) and checks that the page's regime map has the same cells:
-the digest of every cell's n, regime and flags, the sum of n, and the sum of z_max (floats, to
-1e-9 of it)."""
+--expect-address-is-link with the explorer's link then ('#' and the report's `link`)."""
 import argparse
 import html
 import json
@@ -40,28 +36,6 @@ def lookup(report, dotted):
     return value
 
 
-def native_map_differences(args, report):
-    with tempfile.TemporaryDirectory(prefix="foldlab_native_") as home:
-        run = subprocess.run(
-            [args.same_as_native, "render", "--play", args.native_script, "--report",
-             *args.native_args],
-            capture_output=True, text=True, timeout=600, cwd=home,
-            env={**os.environ, "XDG_CONFIG_HOME": home, "HOME": home})
-    if run.returncode != 0:
-        return [f"the desktop program's run failed ({run.returncode}): {run.stderr}"]
-    native = json.loads(run.stdout[run.stdout.index("{"):])
-    mine, theirs = report.get("regime_map") or {}, native.get("regime_map") or {}
-    problems = []
-    for key in ("x", "y", "cells", "rows_done", "digest", "n_sum"):
-        if mine.get(key) != theirs.get(key):
-            problems.append(f"regime_map.{key}: the page's {mine.get(key)!r}, the desktop's "
-                            f"{theirs.get(key)!r}")
-    z_mine, z_theirs = mine.get("z_max_sum_mm"), theirs.get("z_max_sum_mm")
-    if z_mine is None or z_theirs is None or abs(z_mine - z_theirs) > 1e-9 * abs(z_theirs):
-        problems.append(f"regime_map.z_max_sum_mm: the page's {z_mine}, the desktop's {z_theirs}")
-    return problems
-
-
 def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("--site", required=True)
@@ -72,9 +46,6 @@ def main():
     parser.add_argument("--expect-address-is-link", action="store_true")
     parser.add_argument("--chromium", default="chromium")
     parser.add_argument("--budget-ms", type=int, default=120000)
-    parser.add_argument("--same-as-native")
-    parser.add_argument("--native-script")
-    parser.add_argument("--native-args", nargs="*", default=[])
     args = parser.parse_args()
 
     with tempfile.TemporaryDirectory(prefix="foldlab_page_") as root:
@@ -137,8 +108,6 @@ def main():
         problems.append(f"the address is {address!r}, expected {args.expect_address!r}")
     if args.expect_address_is_link and address != "#" + str(report.get("link")):
         problems.append(f"the address is {address!r}, the explorer's link #{report.get('link')}")
-    if args.same_as_native:
-        problems += native_map_differences(args, report)
     for problem in problems:
         print(f"{url}: {problem}", file=sys.stderr)
     print(f"{url}: {'ok' if not problems else 'FAILED'} in {seconds:.1f} s")
