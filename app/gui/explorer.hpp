@@ -49,7 +49,7 @@ struct ExplorerOptions {
                                             // working folder
   // The theme and text size the browser prefers: the start's, unless a restored session says
   // otherwise (then the session's; a link's `theme` and `scale` win over both).
-  ScreenPreferences preferred;
+  ScreenPreferences preferred{};
 };
 
 // A picture the user asked for, taken by the frame loop after drawing: the whole window, or the

@@ -8,7 +8,8 @@ time through the page's Module.foldlabState() (what `gui --report` prints), scre
 
 Checks (each its own ctest):
   dpr       devicePixelRatio 2 beside 1: the canvas backing store twice as big, the layout the
-            same in CSS pixels, text rasterised at twice the size, a real click hitting its slider
+            same in CSS pixels, text rasterised at twice the size, a real click hitting its slider,
+            a wheel notch zooming the 3D view one step
   touch     a tap clicks a slider; a one-finger drag moves a slider and orbits the 3D view; a
             two-finger pinch zooms it by the pinch's ratio; holding a finger on a slider opens its
             typed value with the on-screen keyboard's field focused, and typed text arrives
@@ -237,6 +238,8 @@ def panel_centre_css(state, key, ratio):
 
 
 QUERY = "?preset=paper-table1-h1400#L=4000"
+# What a scripted run reported, or '' (also while the page is still about:blank).
+REPORT_TEXT = "(document.getElementById('foldlab-report') || {}).textContent || ''"
 
 
 def check_dpr(args, root, problems):
@@ -277,6 +280,17 @@ def check_dpr(args, root, problems):
                       "DPR 2: a click on the h slider left h as it was")
                 check(problems, abs(handle_x - x) <= 3,
                       f"DPR 2: clicked at x = {x:.1f} CSS px, the handle is at {handle_x:.1f}")
+                # One notch of the wheel up over the 3D view: one zoom step in (emscripten's GLFW
+                # alone would give a hundred steps, the wrong way).
+                cx, cy = panel_centre_css(after, "cloth", ratio)
+                page.mouse("mouseMoved", cx, cy)
+                before = page.settle()["camera"]["distance_mm"]
+                page.tools.send("Input.dispatchMouseEvent", type="mouseWheel", x=cx, y=cy,
+                                deltaX=0, deltaY=-100)
+                zoomed = page.settle()["camera"]["distance_mm"] / before
+                check(problems, abs(zoomed - 0.85) < 1e-3,
+                      f"DPR 2: a wheel notch up left the 3D view at {zoomed:.4f} of its distance, "
+                      "not 0.85")
         finally:
             page.close()
     one, two = states[1], states[2]
@@ -403,7 +417,7 @@ def check_regime_map(args, root, problems):
         text = ""
         while not text and time.monotonic() < deadline:
             time.sleep(0.2)
-            text = page.tools.evaluate("document.getElementById('foldlab-report').textContent")
+            text = page.tools.evaluate(REPORT_TEXT)
         if not text:
             problems.append("the played script did not end within 240 s")
             return
@@ -417,8 +431,10 @@ def check_regime_map(args, root, problems):
         return
     with tempfile.TemporaryDirectory(prefix="foldlab_native_") as home:
         run = subprocess.run(
-            [args.native, "render", "--play", os.path.join(here, "regime_map_done.json"),
-             "--report", "--preset", os.path.join(args.presets, "paper-table1-h1400.json"),
+            [os.path.abspath(args.native), "render", "--play",
+             os.path.join(here, "regime_map_done.json"),
+             "--report", "--preset",
+             os.path.join(os.path.abspath(args.presets), "paper-table1-h1400.json"),
              "--set", "L=4000"],
             capture_output=True, text=True, timeout=600, cwd=home,
             env={**os.environ, "XDG_CONFIG_HOME": home, "HOME": home})
