@@ -126,3 +126,100 @@ TEST(BackgroundJob, TheDestructorCancelsAndWaitsForTheWork) {
 
 }  // namespace
 }  // namespace foldlab::gui
+
+namespace foldlab::gui {
+namespace {
+
+// Sums 0..count-1 one number a step: what a row of the regime map is to its map.
+JobSteps<long> counting_steps(int count, std::atomic<int>& next, std::atomic<long>& sum) {
+  JobSteps<long> steps;
+  steps.step = [count, &next, &sum](JobToken& token) {
+    const int i = next++;
+    if (i >= count) {
+      return true;
+    }
+    sum += i;
+    token.report(static_cast<double>(i + 1) / count);
+    return i + 1 >= count;
+  };
+  steps.finish = [&sum] { return sum.load(); };
+  return steps;
+}
+
+TEST(BackgroundJobSlices, FrameSlicesRunOnlyWhenTheFrameLoopGivesThemTime) {
+  BackgroundJob<long> job(JobRunner::frame_slices);
+  std::atomic<int> next{0};
+  std::atomic<long> sum{0};
+  int woken = 0;
+  job.start_slices(counting_steps(1000, next, sum), [&woken] { ++woken; });
+  EXPECT_TRUE(job.running());
+  EXPECT_EQ(next.load(), 0);  // nothing runs inside start_slices
+  // No time at all still gives one step per frame.
+  run_job_slices(std::chrono::nanoseconds(0));
+  EXPECT_EQ(next.load(), 1);
+  EXPECT_TRUE(job.running());
+  EXPECT_DOUBLE_EQ(job.progress(), 0.001);
+  int frames = 1;
+  while (job.running() && frames < 100000) {
+    run_job_slices(std::chrono::nanoseconds(0));
+    ++frames;
+  }
+  EXPECT_EQ(frames, 1000);
+  EXPECT_EQ(woken, 1);
+  EXPECT_EQ(job.take_result(), 999L * 1000L / 2L);
+  EXPECT_TRUE(JobSlices::instance().empty());
+}
+
+TEST(BackgroundJobSlices, ThreadsAndFrameSlicesGiveTheSameResult) {
+  std::atomic<int> next_threaded{0};
+  std::atomic<long> sum_threaded{0};
+  BackgroundJob<long> threaded(JobRunner::thread);
+  JobSteps<long> steps = counting_steps(5000, next_threaded, sum_threaded);
+  steps.parallel = 3;
+  threaded.start_slices(std::move(steps));
+  ASSERT_TRUE(wait_until([&] { return threaded.finished(); }));
+
+  std::atomic<int> next_sliced{0};
+  std::atomic<long> sum_sliced{0};
+  BackgroundJob<long> sliced(JobRunner::frame_slices);
+  sliced.start_slices(counting_steps(5000, next_sliced, sum_sliced));
+  while (sliced.running()) {
+    run_job_slices(std::chrono::milliseconds(1));
+  }
+  const long expected = 4999L * 5000L / 2L;
+  EXPECT_EQ(threaded.take_result(), expected);
+  EXPECT_EQ(sliced.take_result(), expected);
+}
+
+TEST(BackgroundJobSlices, StopAndRestartDropTheSlicedWork) {
+  std::atomic<int> next{0};
+  std::atomic<long> sum{0};
+  {
+    BackgroundJob<long> job(JobRunner::frame_slices);
+    job.start_slices(counting_steps(10, next, sum));
+    run_job_slices(std::chrono::nanoseconds(0));
+    job.stop();
+    EXPECT_FALSE(job.pending());
+    EXPECT_TRUE(JobSlices::instance().empty());
+    run_job_slices(std::chrono::milliseconds(5));
+    EXPECT_EQ(next.load(), 1);  // never ran again
+    job.start_slices(counting_steps(10, next, sum));
+  }  // the destructor stops it too
+  EXPECT_TRUE(JobSlices::instance().empty());
+}
+
+TEST(BackgroundJobSlices, ACancelledSlicedJobFinishesWithWhatItHas) {
+  std::atomic<int> next{0};
+  std::atomic<long> sum{0};
+  BackgroundJob<long> job(JobRunner::frame_slices);
+  job.start_slices(counting_steps(100, next, sum));
+  run_job_slices(std::chrono::nanoseconds(0));
+  run_job_slices(std::chrono::nanoseconds(0));
+  job.cancel();
+  run_job_slices(std::chrono::milliseconds(5));
+  ASSERT_TRUE(job.finished());
+  EXPECT_EQ(job.take_result(), 0L + 1L);
+}
+
+}  // namespace
+}  // namespace foldlab::gui

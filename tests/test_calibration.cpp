@@ -389,6 +389,38 @@ TEST(CalibrationSearch, ReportsProgressAndCanBeCancelled) {
   EXPECT_TRUE(cancelled.cancelled);
 }
 
+TEST(CalibrationSearch, StepsOneAtATimeGiveCalibratesReport) {
+  // The explorer's way where there are no threads: a step a frame, one piece each.
+  const MeasurementSet paper = load_measurements(kPaperCsv);
+  const Parameters base = paper_preset().parameters;
+  CalibrationOptions one_thread;
+  one_thread.fit = FitConstants::K_and_p;
+  one_thread.threads = 1;
+  CalibrationSteps steps(paper, base, one_thread);
+  EXPECT_TRUE(steps.report().cancelled);
+  int count = 0;
+  double last_fraction = 0.0;
+  while (!steps.step()) {
+    ++count;
+    EXPECT_GT(steps.fraction_done(), last_fraction);
+    last_fraction = steps.fraction_done();
+  }
+  EXPECT_DOUBLE_EQ(steps.fraction_done(), 1.0);
+  const CalibrationReport stepped = steps.report();
+  CalibrationOptions all_threads = one_thread;
+  all_threads.threads = 0;
+  const CalibrationReport whole = calibrate(paper, base, all_threads);
+  EXPECT_FALSE(stepped.cancelled);
+  // One step per fit row's tabulation, then one per fit: in-sample, leave-one-out, group splits.
+  EXPECT_EQ(count + 1, 2 * whole.fit_row_count + 1 + static_cast<int>(whole.group_splits.size()));
+  EXPECT_EQ(stepped.fitted.K, whole.fitted.K);
+  EXPECT_EQ(stepped.fitted.p, whole.fitted.p);
+  ASSERT_EQ(stepped.rows.size(), whole.rows.size());
+  for (std::size_t i = 0; i < whole.rows.size(); ++i) {
+    EXPECT_EQ(stepped.rows[i].held_out_K, whole.rows[i].held_out_K) << i;
+  }
+}
+
 TEST(CalibrationSearch, NothingToFitIsAnError) {
   MeasurementSet set = load_measurements(kPaperCsv);
   for (Measurement& m : set.rows) {

@@ -147,12 +147,18 @@ void Appearance::request(int scale_percent, bool light_theme) {
   light_theme_ = light_theme;
 }
 
+void Appearance::set_pixel_ratio(float ratio) {
+  constexpr float kMinPixelRatio = 0.25f;
+  constexpr float kMaxPixelRatio = 8.0f;
+  pixel_ratio_ = std::isfinite(ratio) ? std::clamp(ratio, kMinPixelRatio, kMaxPixelRatio) : 1.0f;
+}
+
 void Appearance::apply(Renderer& renderer) {
   if (applied_ && applied_scale_percent_ == scale_percent_ &&
-      applied_light_theme_ == light_theme_) {
+      applied_light_theme_ == light_theme_ && applied_pixel_ratio_ == pixel_ratio_) {
     return;
   }
-  const float scale = static_cast<float>(scale_percent_) / 100.0f;
+  const float scale = static_cast<float>(scale_percent_) / 100.0f * pixel_ratio_;
   ImGuiIO& io = ImGui::GetIO();
   io.Fonts->Clear();
   notice_.clear();
@@ -169,6 +175,7 @@ void Appearance::apply(Renderer& renderer) {
   applied_ = true;
   applied_scale_percent_ = scale_percent_;
   applied_light_theme_ = light_theme_;
+  applied_pixel_ratio_ = pixel_ratio_;
 }
 
 void Appearance::handle_shortcuts() {

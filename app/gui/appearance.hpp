@@ -120,6 +120,12 @@ class Appearance {
   bool light_theme() const { return light_theme_; }
   // Takes effect at the next apply(); the scale is clamped to 100-250 %.
   void request(int scale_percent, bool light_theme);
+  // Device pixels per pixel of the layout the user sees (the page's devicePixelRatio, 1 on the
+  // desktop): fonts and sizes are built at scale_percent times this, so that the window, sized in
+  // device pixels, keeps the layout of a ratio-1 screen with crisp text. Takes effect at the next
+  // apply(); kept within 0.25-8.
+  void set_pixel_ratio(float ratio);
+  float pixel_ratio() const { return pixel_ratio_; }
   // Rebuilds the fonts and the style if a request changed them (or on the first call).
   void apply(Renderer& renderer);
   // A request that the next apply() will build: the frame just drawn is laid out with the old
@@ -138,7 +144,9 @@ class Appearance {
   std::filesystem::path font_file_;
   int scale_percent_ = kMinUiScalePercent;
   bool light_theme_ = false;
+  float pixel_ratio_ = 1.0f;
   bool applied_ = false;
+  float applied_pixel_ratio_ = 1.0f;
   int applied_scale_percent_ = 0;
   bool applied_light_theme_ = false;
   std::string notice_;

@@ -49,7 +49,7 @@ void OrbitCamera::orbit(float dx_px, float dy_px) {
 }
 
 void OrbitCamera::zoom(float wheel_steps) {
-  distance_mm = std::clamp(distance_mm * std::pow(0.85f, wheel_steps), 10.0f, 1e6f);
+  distance_mm = std::clamp(distance_mm * std::pow(kZoomPerWheelStep, wheel_steps), 10.0f, 1e6f);
 }
 
 void OrbitCamera::pan(float dx_px, float dy_px, float viewport_height_px) {

@@ -8,6 +8,10 @@
 
 namespace foldlab::gui {
 
+// What one wheel step towards the target leaves of the distance to it (the page's pinch zooms in
+// the same steps).
+inline constexpr float kZoomPerWheelStep = 0.85f;
+
 struct OrbitCamera {
   Eigen::Vector3f target = Eigen::Vector3f::Zero();
   float yaw_rad = 0.6f;     // about the vertical axis; 0 looks along -Z

@@ -56,6 +56,8 @@ Explorer::Explorer(const Preset& initial, const std::string& initial_path, bool 
       ImGui::PopStyleColor();
     }
   });
+  appearance_.request(options_.preferred.text_scale_percent.value_or(appearance_.scale_percent()),
+                      options_.preferred.light_theme.value_or(appearance_.light_theme()));
   if (!options_.session_file.empty()) {
     // Read even when not restored: saving over what is there is allowed only when it reads as a
     // session (or nothing is there).

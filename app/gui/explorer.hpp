@@ -33,6 +33,7 @@
 #include "app/gui/panels/widgets.hpp"
 #include "app/gui/picture.hpp"
 #include "app/gui/renderer.hpp"
+#include "app/gui/screen.hpp"
 #include "core/io/preset.hpp"
 
 namespace foldlab::gui {
@@ -46,6 +47,9 @@ struct ExplorerOptions {
   std::filesystem::path measurements_file;  // the photo's "Add to measurements" appends here
   std::filesystem::path start_folder;       // where the first file dialog opens; empty: the
                                             // working folder
+  // The theme and text size the browser prefers: the start's, unless a restored session says
+  // otherwise (then the session's; a link's `theme` and `scale` win over both).
+  ScreenPreferences preferred{};
 };
 
 // A picture the user asked for, taken by the frame loop after drawing: the whole window, or the

@@ -17,9 +17,12 @@
 #include <imgui.h>
 
 #include "app/common/presets_dir.hpp"
+#include "app/gui/background_job.hpp"
 #include "app/gui/explorer.hpp"
 #include "app/gui/frame_pacing.hpp"
+#include "app/gui/input_player.hpp"
 #include "app/gui/renderer.hpp"
+#include "app/gui/screen.hpp"
 #include "app/gui/scripted_run.hpp"
 #include "app/gui/session.hpp"
 #include "app/gui/surface.hpp"
@@ -191,6 +194,8 @@ bool draw_frame(Surface& surface, Renderer& renderer, Explorer& explorer, Script
   if (!script.before_frame(explorer, surface, frame)) {
     return false;
   }
+  // Background work where there are no threads: a slice before the panels show its progress.
+  run_job_slices();
   explorer.prepare_frame();
   renderer.new_frame();
   ImGui::NewFrame();
@@ -258,7 +263,8 @@ class ExplorerRun {
                                      options.analysis_tab,
                                      kDejaVuSans,
                                      measurements,
-                                     std::filesystem::current_path()};
+                                     std::filesystem::current_path(),
+                                     screen_preferences()};
     // A preset named on the command line wins over the restored session.
     const bool restore = persist_ && options.inputs.preset_path.empty() &&
                          options.inputs.assignments.empty() && options.inputs.link.empty();
@@ -316,11 +322,14 @@ class ExplorerRun {
       }
       surface_.keep_open();  // the explorer asks first; its answer ends the loop or not
     }
+    // The page's zoom or a move to another screen changes the ratio between frames.
+    explorer_->appearance().set_pixel_ratio(screen_pixel_ratio());
     if (!draw_frame(surface_, *renderer_, *explorer_, *script_, times_,
                     layout_ ? &*layout_ : nullptr, frame_)) {
       return false;
     }
     after_input_.frame_drawn(frame_saw_input(ImGui::GetIO()));
+    screen_wants_text_input(ImGui::GetIO().WantTextInput);
     ++frame_;
     // A frame that asked for another text size showed the old layout: the next is drawn at once,
     // before any more input is read, so that a click lands on what the screen shows.
@@ -408,6 +417,26 @@ struct WebRun {
   std::unique_ptr<ExplorerRun> run;
   double rest_start_s = 0.0;
 };
+// The page's one run, for the state the page asks for (below); null once it ended.
+WebRun* running_page = nullptr;
+
+// What `gui --report` prints, at any time: the page's Module.foldlabState() (a test that drives
+// the page with real input events reads the explorer through it).
+extern "C" EMSCRIPTEN_KEEPALIVE const char* foldlab_state_json() {
+  static std::string text;
+  text = running_page != nullptr && running_page->run
+             ? explorer_state_json(running_page->run->explorer()).dump()
+             : std::string("null");
+  return text.c_str();
+}
+
+// What the page's touch handling needs of the explorer, and the state hook.
+EM_JS(void, tell_page_screen, (double zoom_per_wheel_step), {
+  Module.foldlabZoomPerWheelStep = zoom_per_wheel_step;
+  Module.foldlabState = function() {
+    return JSON.parse(UTF8ToString(_foldlab_state_json()));
+  };
+});
 
 void web_frame(void* argument) {
   auto& web = *static_cast<WebRun*>(argument);
@@ -424,6 +453,7 @@ void web_frame(void* argument) {
   if (status >= 0) {
     emscripten_cancel_main_loop();
     web.run.reset();
+    running_page = nullptr;
     tell_page_finished(status);
   }
 }
@@ -442,6 +472,8 @@ int run_window(const GuiRunOptions& options) {
   // Lives as long as the page: the browser's loop calls into it after this returns.
   auto* web = new WebRun{make_window_surface(surface_options), nullptr};
   web->run = std::make_unique<ExplorerRun>(*web->surface, options, start, true, std::move(player));
+  running_page = web;
+  tell_page_screen(kZoomPerWheelStep);
   emscripten_set_main_loop_arg(web_frame, web, 0, false);
   if (options.frames > 0 || !options.play_path.empty()) {
     // A scripted run on timers rather than animation frames: as fast as it can, and driven by

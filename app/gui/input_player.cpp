@@ -345,6 +345,7 @@ json explorer_state_json(Explorer& explorer) {
   json state = {
       {"grid", std::to_string(scene.grid_nx()) + "x" + std::to_string(scene.grid_ny())},
       {"regime_map_ms", explorer.regime_map_ms()},
+      {"regime_map", explorer.analysis().regime_map().report()},
       {"stats", scene_stats_to_json(scene)},
       {"solution", solution_to_json(scene.solution(), scene.parameters())},
       {"renderer", renderer},
@@ -359,6 +360,10 @@ json explorer_state_json(Explorer& explorer) {
       {"display", {ImGui::GetIO().DisplaySize.x, ImGui::GetIO().DisplaySize.y}},
       {"method_step", method_step_json(explorer.analysis().method())},
       {"view", cloth_view_json(explorer.cloth_style())},
+      {"camera",
+       {{"yaw_rad", explorer.cloth_view().camera().yaw_rad},
+        {"pitch_rad", explorer.cloth_view().camera().pitch_rad},
+        {"distance_mm", explorer.cloth_view().camera().distance_mm}}},
       {"message", explorer.status().message()},
       {"link", explorer.link()},
       {"clipboard", detail::escaped(clipboard != nullptr ? clipboard : "")},
@@ -367,7 +372,8 @@ json explorer_state_json(Explorer& explorer) {
       {"layout", layout},
       {"appearance",
        {{"scale_percent", explorer.appearance().scale_percent()},
-        {"light_theme", explorer.appearance().light_theme()}}},
+        {"light_theme", explorer.appearance().light_theme()},
+        {"pixel_ratio", explorer.appearance().pixel_ratio()}}},
   };
   state.update(explorer.photo().report());  // "photo" and "measured"
   return state;

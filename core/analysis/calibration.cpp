@@ -7,7 +7,6 @@
 #include <numbers>
 #include <numeric>
 #include <set>
-#include <span>
 #include <utility>
 
 #include "core/analysis/parallel_tasks.hpp"
@@ -383,17 +382,21 @@ FittedConstants fit_K(const Fitter& fitter, double p) {
   return fit;
 }
 
-struct Candidate {
-  double p;
-  Segment along_K;
-};
-
-// The best plateaus along ln K at each p visited, and each p's best score.
-struct PlateausAlongP {
+// K and p: a coarse grid in p with every plateau along ln K at each p, then a grid ten times finer
+// in p around the best p values (a narrow plateau between two coarse p values is found there),
+// then, of the constants that reach the best score, those nearest the paper's form (p closest to
+// 1), centred in their plateau along both coordinates. Where the data cannot tell p apart (the
+// best score holds along a valley of (K, p)), that departs from the paper no further than they
+// demand, instead of drifting to whichever end of the valley is widest.
+std::optional<FittedConstants> fit_K_and_p(const Fitter& fitter, const CalibrationOptions& o,
+                                           const std::function<bool(double)>& keep_going) {
+  struct Candidate {
+    double p;
+    Segment along_K;
+  };
   std::vector<Candidate> candidates;
   std::vector<std::pair<CalibrationScore, double>> best_at_p;
-
-  void visit(const Fitter& fitter, double p) {
+  auto visit = [&](double p) {
     const std::vector<Segment> segments = fitter.sweep_K(p);
     const Segment* best = best_segment(segments);
     best_at_p.emplace_back(best->score, p);
@@ -402,13 +405,15 @@ struct PlateausAlongP {
         candidates.push_back({p, s});
       }
     }
+  };
+  const int coarse = static_cast<int>(std::floor((o.p_max - o.p_min) / o.p_step + 1e-9)) + 1;
+  for (int i = 0; i < coarse; ++i) {
+    visit(o.p_min + i * o.p_step);
+    if (!keep_going(0.8 * (i + 1) / coarse)) {
+      return std::nullopt;
+    }
   }
-};
-
-// The p values of the coarse grid to search again on a finer one: the best first, one per
-// neighbourhood (the finer grid around p covers its neighbours' gaps).
-std::vector<double> refinement_centres(std::vector<std::pair<CalibrationScore, double>> ranked,
-                                       const CalibrationOptions& o) {
+  std::vector<std::pair<CalibrationScore, double>> ranked = best_at_p;
   std::stable_sort(ranked.begin(), ranked.end(),
                    [](const auto& a, const auto& b) { return better(a.first, b.first); });
   std::vector<double> refined;
@@ -416,55 +421,34 @@ std::vector<double> refinement_centres(std::vector<std::pair<CalibrationScore, d
     if (static_cast<int>(refined.size()) >= o.refined_p_values) {
       break;
     }
+    // One refinement per neighbourhood: the finer grid around p covers its neighbours' gaps.
     if (std::none_of(refined.begin(), refined.end(),
                      [&, centre = p](double q) { return std::abs(q - centre) < 1.5 * o.p_step; })) {
       refined.push_back(p);
     }
   }
-  return refined;
-}
-
-// The coarse grid in p (80 % of the progress), then the finer one around its best p values;
-// nullopt when cancelled.
-std::optional<PlateausAlongP> search_along_p(const Fitter& fitter, const CalibrationOptions& o,
-                                             const std::function<bool(double)>& keep_going) {
-  PlateausAlongP found;
-  const int coarse = static_cast<int>(std::floor((o.p_max - o.p_min) / o.p_step + 1e-9)) + 1;
-  for (int i = 0; i < coarse; ++i) {
-    found.visit(fitter, o.p_min + i * o.p_step);
-    if (!keep_going(0.8 * (i + 1) / coarse)) {
-      return std::nullopt;
-    }
-  }
-  const std::vector<double> refined = refinement_centres(found.best_at_p, o);
   for (std::size_t r = 0; r < refined.size(); ++r) {
     for (int k = -9; k <= 9; ++k) {
       const double p = refined[r] + k * 0.1 * o.p_step;
       if (k != 0 && p >= o.p_min && p <= o.p_max) {
-        found.visit(fitter, p);
+        visit(p);
       }
     }
     if (!keep_going(0.8 + 0.1 * static_cast<double>(r + 1) / static_cast<double>(refined.size()))) {
       return std::nullopt;
     }
   }
-  return found;
-}
-
-CalibrationScore best_score(const std::vector<Candidate>& candidates) {
   CalibrationScore best = candidates.front().along_K.score;
   for (const Candidate& c : candidates) {
     best = better(c.along_K.score, best) ? c.along_K.score : best;
   }
-  return best;
-}
-
-// The extent of the constants that reach the best score, and the candidates at its lowest and
-// highest p, into `fit`.
-void bound_best(const std::vector<Candidate>& candidates, const CalibrationScore& best,
-                FittedConstants& fit) {
+  FittedConstants fit;
+  fit.score = best;
   fit.best_K_min = fit.best_p_min = kInfinity;
   fit.best_K_max = fit.best_p_max = 0.0;
+  double robustness = -kInfinity;
+  double log_K = 0.0;
+  double p = 1.0;
   const Candidate* lowest_p = nullptr;
   const Candidate* highest_p = nullptr;
   for (const Candidate& c : candidates) {
@@ -477,47 +461,19 @@ void bound_best(const std::vector<Candidate>& candidates, const CalibrationScore
     fit.best_K_max = std::max(fit.best_K_max, std::exp(c.along_K.hi));
     fit.best_p_min = std::min(fit.best_p_min, c.p);
     fit.best_p_max = std::max(fit.best_p_max, c.p);
-  }
-  for (const Candidate* end : {lowest_p, highest_p}) {
-    fit.equally_good_ends.push_back({std::exp(end->along_K.middle()), end->p});
-  }
-}
-
-// How far a candidate's middle lies from the nearest edge of its plateau, along ln K and along p
-// (p's distance scaled to the change of ln s^p it makes).
-double robustness(const Fitter& fitter, const CalibrationOptions& o, const Candidate& c) {
-  const double u = c.along_K.middle();
-  const std::vector<Segment> along_p_all = fitter.sweep_p(u, o.p_min, o.p_max);
-  const Segment* along_p = segment_containing(along_p_all, c.p);
-  const double per_p = fitter.mean_abs_log_s(u);
-  return std::min({c.p * (u - c.along_K.lo), c.p * (c.along_K.hi - u), per_p * (c.p - along_p->lo),
-                   per_p * (along_p->hi - c.p)});
-}
-
-// (ln K, p) of the best-scoring candidate furthest inside its plateau.
-std::pair<double, double> most_robust(const Fitter& fitter, const CalibrationOptions& o,
-                                      const std::vector<Candidate>& candidates,
-                                      const CalibrationScore& best) {
-  double most = -kInfinity;
-  double log_K = 0.0;
-  double p = 1.0;
-  for (const Candidate& c : candidates) {
-    if (!same_score(c.along_K.score, best)) {
-      continue;
-    }
-    const double r = robustness(fitter, o, c);
-    if (r > most) {
-      most = r;
-      log_K = c.along_K.middle();
+    const double u = c.along_K.middle();
+    const std::vector<Segment> along_p_all = fitter.sweep_p(u, o.p_min, o.p_max);
+    const Segment* along_p = segment_containing(along_p_all, c.p);
+    const double per_p = fitter.mean_abs_log_s(u);
+    const double r = std::min({c.p * (u - c.along_K.lo), c.p * (c.along_K.hi - u),
+                               per_p * (c.p - along_p->lo), per_p * (along_p->hi - c.p)});
+    if (r > robustness) {
+      robustness = r;
+      log_K = u;
       p = c.p;
     }
   }
-  return {log_K, p};
-}
-
-// Centre along p, then along ln K, a few times: each move stays on the same plateau.
-void centre_on_plateau(const Fitter& fitter, const CalibrationOptions& o,
-                       const CalibrationScore& best, double& log_K, double& p) {
+  // Centre along p, then along ln K, a few times: each move stays on the same plateau.
   for (int round = 0; round < 3; ++round) {
     const std::vector<Segment> along_p_all = fitter.sweep_p(log_K, o.p_min, o.p_max);
     const Segment* along_p = segment_containing(along_p_all, p);
@@ -530,25 +486,6 @@ void centre_on_plateau(const Fitter& fitter, const CalibrationOptions& o,
     p = p_next;
     log_K = along_K->middle();
   }
-}
-
-// K and p: a coarse grid in p with every plateau along ln K at each p, then a grid ten times finer
-// in p around the best p values (a narrow plateau between two coarse p values is found there),
-// then, of the constants that reach the best score, those nearest the paper's form (p closest to
-// 1), centred in their plateau along both coordinates. Where the data cannot tell p apart (the
-// best score holds along a valley of (K, p)), that departs from the paper no further than they
-// demand, instead of drifting to whichever end of the valley is widest.
-std::optional<FittedConstants> fit_K_and_p(const Fitter& fitter, const CalibrationOptions& o,
-                                           const std::function<bool(double)>& keep_going) {
-  const std::optional<PlateausAlongP> found = search_along_p(fitter, o, keep_going);
-  if (!found) {
-    return std::nullopt;
-  }
-  const CalibrationScore best = best_score(found->candidates);
-  FittedConstants fit;
-  bound_best(found->candidates, best, fit);
-  auto [log_K, p] = most_robust(fitter, o, found->candidates, best);
-  centre_on_plateau(fitter, o, best, log_K, p);
   const std::vector<Segment> along_K_all = fitter.sweep_K(p);
   const std::vector<Segment> along_p_all = fitter.sweep_p(log_K, o.p_min, o.p_max);
   const Segment along_K = *segment_containing(along_K_all, log_K);
@@ -560,6 +497,9 @@ std::optional<FittedConstants> fit_K_and_p(const Fitter& fitter, const Calibrati
   fit.p_low = along_p.lo;
   fit.p_high = along_p.hi;
   fit.score = fitter.score_at(log_K, p);
+  for (const Candidate* end : {lowest_p, highest_p}) {
+    fit.equally_good_ends.push_back({std::exp(end->along_K.middle()), end->p});
+  }
   return fit;
 }
 
@@ -784,14 +724,46 @@ std::optional<FittedConstants> fit_constants(const std::vector<Measurement>& row
   return tables->fit(all, [&](double f) { return keep_going(0.5 + 0.5 * f); });
 }
 
-namespace {
+struct CalibrationSteps::State {
+  MeasurementSet data;
+  Parameters base;
+  CalibrationOptions options;
+  std::vector<std::size_t> fit_rows;  // indices into data.rows
+  std::set<std::string> groups;       // of the fit rows
+  bool leave_one_out = false;
+  bool split_groups = false;
+  std::vector<Measurement> fit_measurements;
+  std::shared_ptr<CalibrationTables::Data> tables;
+  std::vector<char> tabulated;  // per fit row
+  // Subsets as positions in fit_rows; subsets[0] is the in-sample fit.
+  std::vector<std::vector<std::size_t>> subsets;
+  std::vector<std::optional<FittedConstants>> fits;
+  std::size_t next_row = 0;
+  std::size_t next_fit = 0;
+  bool failed = false;  // a tabulation or fit came back empty (cancelled)
 
-void check_calibration_rows(const MeasurementSet& data) {
+  // Where a step's batch from `first` ends: one piece per thread, within `count`.
+  std::size_t batch_end(std::size_t first, std::size_t count) const {
+    return std::min(count, first + static_cast<std::size_t>(resolve_thread_count(options.threads)));
+  }
+  CalibrationReport assemble() const;
+};
+
+CalibrationSteps::CalibrationSteps(const MeasurementSet& data, const Parameters& base,
+                                   const CalibrationOptions& options)
+    : state_(std::make_unique<State>()) {
+  check_options(options);
+  check_base(base);
   if (static_cast<std::int64_t>(data.rows.size()) > kMaxCalibrationRows) {
     throw CalibrationError(data.origin + ": " + std::to_string(data.rows.size()) +
                            " rows, above the limit of " + std::to_string(kMaxCalibrationRows) +
                            " rows a calibration fits; split the file");
   }
+  State& s = *state_;
+  s.data = data;
+  s.base = base;
+  s.options = options;
+  s.fit_rows = fit_row_indices(data);
   // Rows built in code (the explorer's clicked folds) skip the file reader's bounds: the same
   // bound here keeps one implausible n from making the fit follow millions of folds.
   for (const Measurement& m : data.rows) {
@@ -801,153 +773,173 @@ void check_calibration_rows(const MeasurementSet& data) {
                              std::to_string(kMaxObservedFolds) + " can be observed on one cloth");
     }
   }
-}
-
-// The held-out fits a calibration runs besides the in-sample one.
-struct HeldOutFits {
-  std::set<std::string> groups;  // of the fit rows, for fitting on all but one and testing on it
-  bool leave_one_out = false;
-  bool split_groups = false;
-};
-
-HeldOutFits held_out_fits(const MeasurementSet& data, const std::vector<std::size_t>& fit_rows,
-                          const CalibrationOptions& options) {
-  HeldOutFits out;
-  for (std::size_t i : fit_rows) {
-    out.groups.insert(data.rows[i].group);
+  if (s.fit_rows.empty()) {
+    throw CalibrationError(data.origin + ": nothing to fit: every row has role check");
+  }
+  check_fit_row_count(static_cast<int>(s.fit_rows.size()), options.fit);
+  // The groups of the fit rows, for fitting on all but one and testing on that one.
+  for (std::size_t i : s.fit_rows) {
+    s.groups.insert(data.rows[i].group);
   }
   // A held-out fit, like every fit, stands on at least as many rows as it has constants.
   const std::size_t constants = options.fit == FitConstants::K ? 1 : 2;
-  out.leave_one_out = options.held_out && fit_rows.size() >= constants + 1;
-  out.split_groups = options.held_out && out.groups.size() >= 2 &&
-                     std::all_of(out.groups.begin(), out.groups.end(), [&](const std::string& g) {
-                       return static_cast<std::size_t>(std::count_if(
-                                  fit_rows.begin(), fit_rows.end(), [&](std::size_t i) {
-                                    return data.rows[i].group != g;
-                                  })) >= constants;
-                     });
-  return out;
-}
-
-// Subsets as positions in fit_rows: the in-sample fit first, then one per left-out row, then one
-// per left-out group.
-std::vector<std::vector<std::size_t>> fit_subsets(const MeasurementSet& data,
-                                                  const std::vector<std::size_t>& fit_rows,
-                                                  const HeldOutFits& held_out) {
-  std::vector<std::vector<std::size_t>> subsets(1);
-  for (std::size_t k = 0; k < fit_rows.size(); ++k) {
-    subsets[0].push_back(k);
+  s.leave_one_out = options.held_out && s.fit_rows.size() >= constants + 1;
+  s.split_groups = options.held_out && s.groups.size() >= 2 &&
+                   std::all_of(s.groups.begin(), s.groups.end(), [&](const std::string& g) {
+                     return static_cast<std::size_t>(std::count_if(
+                                s.fit_rows.begin(), s.fit_rows.end(), [&](std::size_t i) {
+                                  return data.rows[i].group != g;
+                                })) >= constants;
+                   });
+  for (std::size_t i : s.fit_rows) {
+    s.fit_measurements.push_back(data.rows[i]);
   }
-  if (held_out.leave_one_out) {
-    for (std::size_t left_out = 0; left_out < fit_rows.size(); ++left_out) {
-      std::vector<std::size_t>& subset = subsets.emplace_back();
-      for (std::size_t k = 0; k < fit_rows.size(); ++k) {
+  s.tables = std::make_shared<CalibrationTables::Data>();
+  s.tables->tables.resize(s.fit_measurements.size());
+  s.tables->options = options;
+  s.tables->base_p = base.model.stress_exponent_p;
+  s.tables->log_K = log_K_range(base);
+  s.tabulated.assign(s.fit_measurements.size(), 0);
+  s.subsets.resize(1);
+  for (std::size_t k = 0; k < s.fit_rows.size(); ++k) {
+    s.subsets[0].push_back(k);
+  }
+  if (s.leave_one_out) {
+    for (std::size_t left_out = 0; left_out < s.fit_rows.size(); ++left_out) {
+      std::vector<std::size_t>& subset = s.subsets.emplace_back();
+      for (std::size_t k = 0; k < s.fit_rows.size(); ++k) {
         if (k != left_out) {
           subset.push_back(k);
         }
       }
     }
   }
-  if (held_out.split_groups) {
-    for (const std::string& group : held_out.groups) {
-      std::vector<std::size_t>& subset = subsets.emplace_back();
-      for (std::size_t k = 0; k < fit_rows.size(); ++k) {
-        if (data.rows[fit_rows[k]].group != group) {
+  if (s.split_groups) {
+    for (const std::string& group : s.groups) {
+      std::vector<std::size_t>& subset = s.subsets.emplace_back();
+      for (std::size_t k = 0; k < s.fit_rows.size(); ++k) {
+        if (data.rows[s.fit_rows[k]].group != group) {
           subset.push_back(k);
         }
       }
     }
   }
-  return subsets;
+  s.fits.resize(s.subsets.size());
 }
 
-// Every subset's fit at once, each written to its own slot; nullopt when cancelled.
-std::optional<std::vector<FittedConstants>> fit_every_subset(
-    const CalibrationTables& tables, const std::vector<std::vector<std::size_t>>& subsets,
-    int threads, const std::function<bool(double)>& progress) {
-  std::vector<std::optional<FittedConstants>> fits(subsets.size());
-  const bool finished = run_tasks(
-      subsets.size(), threads,
-      [&](std::size_t i, const std::atomic<bool>& stop) {
-        fits[i] = tables.fit(subsets[i], [&stop](double) { return !stop.load(); });
-      },
-      progress);
-  if (!finished || std::any_of(fits.begin(), fits.end(), [](const auto& f) { return !f; })) {
-    return std::nullopt;
+CalibrationSteps::~CalibrationSteps() = default;
+
+bool CalibrationSteps::step() {
+  State& s = *state_;
+  const std::size_t rows = s.fit_measurements.size();
+  if (s.next_row < rows) {
+    // Plain names, not a structured binding: the lambda captures them (emcc's clang cannot).
+    const std::size_t first = s.next_row;
+    const std::size_t last = s.batch_end(first, rows);
+    run_tasks(last - first, s.options.threads, [&](std::size_t k, const std::atomic<bool>& stop) {
+      const std::size_t i = first + k;
+      std::optional<RowTable> t =
+          foldlab::tabulate(s.fit_measurements[i], s.base, s.options.tabulation_step_decades,
+                            [&stop] { return !stop.load(); });
+      if (t) {
+        s.tables->tables[i] = std::move(*t);
+        s.tabulated[i] = 1;
+      }
+    });
+    s.next_row = last;
+    s.failed |= std::count(s.tabulated.begin(),
+                           s.tabulated.begin() + static_cast<std::ptrdiff_t>(last), 0) > 0;
+    return false;
   }
-  std::vector<FittedConstants> out;
-  for (std::optional<FittedConstants>& fit : fits) {
-    out.push_back(std::move(*fit));
+  if (s.next_fit < s.subsets.size()) {
+    const CalibrationTables tables(s.tables);
+    const std::size_t first = s.next_fit;
+    const std::size_t last = s.batch_end(first, s.subsets.size());
+    run_tasks(last - first, s.options.threads, [&](std::size_t k, const std::atomic<bool>& stop) {
+      s.fits[first + k] =
+          tables.fit(s.subsets[first + k], [&stop](double) { return !stop.load(); });
+    });
+    s.next_fit = last;
+    s.failed |= std::any_of(s.fits.begin(), s.fits.begin() + static_cast<std::ptrdiff_t>(last),
+                            [](const auto& f) { return !f; });
   }
-  return out;
+  return s.next_fit >= s.subsets.size();
 }
 
-PublishedComparison predicted_with(const Measurement& m, const Parameters& base, double K,
-                                   double p) {
-  return compare_with_published(m.observed, with_constants(parameters_for(m, base), K, p));
+double CalibrationSteps::fraction_done() const {
+  const State& s = *state_;
+  const double rows = static_cast<double>(s.fit_measurements.size());
+  const double fits = static_cast<double>(s.subsets.size());
+  return 0.4 * static_cast<double>(s.next_row) / rows +
+         0.6 * static_cast<double>(s.next_fit) / fits;
 }
 
-// Every row at the base constants and at the in-sample fit; a check row is held out of that fit.
-std::vector<CalibrationRow> compared_rows(const MeasurementSet& data, const Parameters& base,
-                                          const FittedConstants& in_sample) {
-  std::vector<CalibrationRow> rows;
+CalibrationReport CalibrationSteps::report() const {
+  const State& s = *state_;
+  if (s.failed || s.next_row < s.fit_measurements.size() || s.next_fit < s.subsets.size()) {
+    CalibrationReport report;
+    report.fit = s.options.fit;
+    report.base = s.base;
+    report.fit_row_count = static_cast<int>(s.fit_rows.size());
+    report.check_row_count = static_cast<int>(s.data.rows.size() - s.fit_rows.size());
+    report.cancelled = true;
+    return report;
+  }
+  return s.assemble();
+}
+
+CalibrationReport CalibrationSteps::State::assemble() const {
+  CalibrationReport report;
+  report.fit = options.fit;
+  report.base = base;
+  report.fit_row_count = static_cast<int>(fit_rows.size());
+  report.check_row_count = static_cast<int>(data.rows.size() - fit_rows.size());
+  auto predict = [&](const Measurement& m, double K, double p) {
+    return compare_with_published(m.observed, with_constants(parameters_for(m, base), K, p));
+  };
+  const FittedConstants& in_sample = *fits[0];
+  report.fitted = in_sample;
   for (const Measurement& m : data.rows) {
     CalibrationRow row;
     row.measurement = m;
     row.baseline = compare_with_published(m.observed, parameters_for(m, base));
-    row.fitted = predicted_with(m, base, in_sample.K, in_sample.p);
+    row.fitted = predict(m, in_sample.K, in_sample.p);
     if (m.role == MeasurementRole::check) {
       row.held_out = row.fitted;
       row.held_out_K = in_sample.K;
       row.held_out_p = in_sample.p;
     }
-    rows.push_back(std::move(row));
+    report.rows.push_back(std::move(row));
   }
-  return rows;
-}
-
-// `fits`: one per fit row, in order, each without that row.
-void add_leave_one_out(std::vector<CalibrationRow>& rows, const Parameters& base,
-                       const std::vector<std::size_t>& fit_rows,
-                       std::span<const FittedConstants> fits) {
-  for (std::size_t k = 0; k < fit_rows.size(); ++k) {
-    const FittedConstants& fit = fits[k];
-    CalibrationRow& row = rows[fit_rows[k]];
-    row.held_out = predicted_with(row.measurement, base, fit.K, fit.p);
-    row.held_out_K = fit.K;
-    row.held_out_p = fit.p;
-  }
-}
-
-// `fits`: one per group, in order, each without that group. Every split's test rows are added to
-// `pooled_test`.
-std::vector<GroupSplit> group_splits(const MeasurementSet& data, const Parameters& base,
-                                     const std::vector<std::size_t>& fit_rows,
-                                     const std::set<std::string>& groups,
-                                     std::span<const FittedConstants> fits,
-                                     std::vector<PublishedComparison>& pooled_test) {
-  std::vector<GroupSplit> splits;
-  std::size_t next_fit = 0;
-  for (const std::string& group : groups) {
-    const FittedConstants& fit = fits[next_fit++];
-    GroupSplit split;
-    split.test_group = group;
-    split.fit = fit;
-    std::vector<PublishedComparison> train;
-    std::vector<PublishedComparison> test;
-    for (std::size_t i : fit_rows) {
-      (data.rows[i].group == group ? test : train)
-          .push_back(predicted_with(data.rows[i], base, fit.K, fit.p));
+  std::size_t fit_at = 1;
+  if (leave_one_out) {
+    for (std::size_t left_out : fit_rows) {
+      const FittedConstants& fit = *fits[fit_at++];
+      CalibrationRow& row = report.rows[left_out];
+      row.held_out = predict(row.measurement, fit.K, fit.p);
+      row.held_out_K = fit.K;
+      row.held_out_p = fit.p;
     }
-    split.train = summarize(train);
-    split.test = summarize(test);
-    pooled_test.insert(pooled_test.end(), test.begin(), test.end());
-    splits.push_back(std::move(split));
   }
-  return splits;
-}
-
-void summarize_rows(CalibrationReport& report) {
+  std::vector<PublishedComparison> pooled_test;
+  if (split_groups) {
+    for (const std::string& group : groups) {
+      const FittedConstants& fit = *fits[fit_at++];
+      GroupSplit split;
+      split.test_group = group;
+      split.fit = fit;
+      std::vector<PublishedComparison> train;
+      std::vector<PublishedComparison> test;
+      for (std::size_t i : fit_rows) {
+        (data.rows[i].group == group ? test : train).push_back(predict(data.rows[i], fit.K, fit.p));
+      }
+      split.train = summarize(train);
+      split.test = summarize(test);
+      pooled_test.insert(pooled_test.end(), test.begin(), test.end());
+      report.group_splits.push_back(std::move(split));
+    }
+  }
+  report.group_split_test = summarize(pooled_test);
   std::vector<PublishedComparison> baseline_fit, baseline_check, fitted, held_out, check;
   for (const CalibrationRow& row : report.rows) {
     const bool is_fit = row.measurement.role == MeasurementRole::fit;
@@ -962,9 +954,8 @@ void summarize_rows(CalibrationReport& report) {
   report.in_sample = summarize(fitted);
   report.leave_one_out = summarize(held_out);
   report.check_rows = summarize(check);
+  return report;
 }
-
-}  // namespace
 
 std::vector<std::size_t> fit_row_indices(const MeasurementSet& data) {
   std::vector<std::size_t> fit_rows;
@@ -979,53 +970,18 @@ std::vector<std::size_t> fit_row_indices(const MeasurementSet& data) {
 CalibrationReport calibrate(const MeasurementSet& data, const Parameters& base,
                             const CalibrationOptions& options,
                             const CalibrationProgress& progress) {
-  check_options(options);
-  check_base(base);
-  check_calibration_rows(data);
-  const std::vector<std::size_t> fit_rows = fit_row_indices(data);
-  if (fit_rows.empty()) {
-    throw CalibrationError(data.origin + ": nothing to fit: every row has role check");
+  CalibrationSteps steps(data, base, options);
+  while (!steps.step()) {
+    if (progress && !progress(steps.fraction_done())) {
+      return steps.report();  // marked cancelled
+    }
   }
-  check_fit_row_count(static_cast<int>(fit_rows.size()), options.fit);
-  CalibrationReport report;
-  report.fit = options.fit;
-  report.base = base;
-  report.fit_row_count = static_cast<int>(fit_rows.size());
-  report.check_row_count = static_cast<int>(data.rows.size() - fit_rows.size());
-  const HeldOutFits held_out = held_out_fits(data, fit_rows, options);
-  // Every fit row tabulated once (0 to 40 % of the progress: about as much work as the fits
-  // together for K and p, far more for K alone), then every fit at once: the in-sample one, one
-  // per left-out row and one per left-out group.
-  auto keep_going = [&](double fraction) { return !progress || progress(fraction); };
-  std::vector<Measurement> fit_measurements;
-  for (std::size_t i : fit_rows) {
-    fit_measurements.push_back(data.rows[i]);
+  if (progress && !progress(1.0)) {
+    CalibrationReport cancelled = steps.report();
+    cancelled.cancelled = true;
+    return cancelled;
   }
-  const std::optional<CalibrationTables> tables = CalibrationTables::tabulate(
-      fit_measurements, base, options, [&](double f) { return keep_going(0.4 * f); });
-  const std::optional<std::vector<FittedConstants>> fits =
-      tables ? fit_every_subset(*tables, fit_subsets(data, fit_rows, held_out), options.threads,
-                                [&](double f) { return keep_going(0.4 + 0.6 * f); })
-             : std::nullopt;
-  if (!fits) {
-    report.cancelled = true;
-    return report;
-  }
-  report.fitted = fits->front();
-  report.rows = compared_rows(data, base, report.fitted);
-  std::span<const FittedConstants> other_fits = std::span(*fits).subspan(1);
-  if (held_out.leave_one_out) {
-    add_leave_one_out(report.rows, base, fit_rows, other_fits.first(fit_rows.size()));
-    other_fits = other_fits.subspan(fit_rows.size());
-  }
-  std::vector<PublishedComparison> pooled_test;
-  if (held_out.split_groups) {
-    report.group_splits =
-        group_splits(data, base, fit_rows, held_out.groups, other_fits, pooled_test);
-  }
-  report.group_split_test = summarize(pooled_test);
-  summarize_rows(report);
-  return report;
+  return steps.report();
 }
 
 ModelForm model_form(const ModelSettings& m) {

@@ -158,6 +158,7 @@ class CalibrationTables {
   std::size_t size() const;
 
  private:
+  friend class CalibrationSteps;
   struct Data;
   explicit CalibrationTables(std::shared_ptr<const Data> data) : data_(std::move(data)) {}
   std::shared_ptr<const Data> data_;
@@ -207,6 +208,32 @@ struct CalibrationReport {
 CalibrationReport calibrate(const MeasurementSet& data, const Parameters& base,
                             const CalibrationOptions& options,
                             const CalibrationProgress& progress = {});
+
+// calibrate() in steps, for a caller that runs it a piece at a time (the explorer in the browser,
+// which has no threads, between frames): each step tabulates as many fit rows as
+// options.threads has threads (one where there are none), or runs as many of the fits (the
+// in-sample one, one per left-out row, one per left-out group), in parallel; report() assembles
+// what calibrate() returns, which runs these same steps.
+class CalibrationSteps {
+ public:
+  // Checks what calibrate() checks; throws CalibrationError.
+  CalibrationSteps(const MeasurementSet& data, const Parameters& base,
+                   const CalibrationOptions& options);
+  ~CalibrationSteps();
+  CalibrationSteps(const CalibrationSteps&) = delete;
+  CalibrationSteps& operator=(const CalibrationSteps&) = delete;
+  // Runs the next step; true once every step has run (then report()).
+  bool step();
+  // The tabulations as the first 40 % (about as much work as the fits together for K and p, far
+  // more for K alone), the fits as the rest.
+  double fraction_done() const;
+  // The report once every step has run; before that, a report marked cancelled.
+  CalibrationReport report() const;
+
+ private:
+  struct State;
+  std::unique_ptr<State> state_;
+};
 
 // Whether eq. 7 is the paper's form (p = 1 with FoldLab's c = 26.9, docs/calibration.md), the
 // paper's form with some other c, or the calibrated variant (p != 1).

@@ -9,6 +9,7 @@
 #include <imgui.h>
 
 #include "app/common/presets_dir.hpp"
+#include "app/gui/calibration_job.hpp"
 #include "app/gui/panels/widgets.hpp"
 #include "app/gui/renderer.hpp"
 #include "core/model/text_format.hpp"
@@ -149,14 +150,7 @@ void CalibrationPanel::start(const Parameters& base, const std::function<void()>
   CalibrationOptions options;
   options.fit = fit_choice_ == 0 ? FitConstants::K : FitConstants::K_and_p;
   run_message_.clear();
-  job_.start(
-      [data = *data_, base, options](JobToken& token) {
-        return calibrate(data, base, options, [&token](double fraction) {
-          token.report(fraction);
-          return !token.cancelled();
-        });
-      },
-      wake);
+  job_.start_slices(calibration_steps(*data_, base, options), wake);
 }
 
 void CalibrationPanel::collect_finished_run() {

@@ -1,5 +1,6 @@
 // "Fit to measurements": the explorer's window for `foldlab calibrate` (core/calibration.hpp). It
-// loads a measurements file, runs the calibration on a background thread with a progress bar and
+// loads a measurements file, runs the calibration in the background (app/gui/calibration_job.hpp:
+// on a thread, or a slice a frame in the browser) with a progress bar and
 // a cancel button, shows the fit beside its held-out figures, and applies the fitted constants to
 // the current parameters with one button. It also says which constants the preset carries and
 // whether eq. 7 is the paper's form or the calibrated one.

@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/common/version.hpp"
+#include "app/gui/calibration_job.hpp"
 #include "app/gui/panels/file_dialog.hpp"
 #include "app/gui/panels/presets_panel.hpp"
 #include "app/gui/panels/widgets.hpp"
@@ -332,15 +333,22 @@ void PhotoOverlay::start_fit(const Document& document) {
   options.fit = FitConstants::K_and_p;
   fit_message_ = "Fitting K and p to " + std::to_string(data.rows.size()) + " rows...";
   fit_message_is_error_ = false;
-  fit_.start(
-      [data, base = fit_base_, options](JobToken&) {
-        FitOutcome outcome{calibrate(data, base, options), {}};
-        if (const auto checks = cross_validated_coverage(data, base, options)) {
-          outcome.coverage = describe_coverage(*checks);
-        }
-        return outcome;
-      },
-      wake_);
+  // The calibration in steps (as the calibration window's), then the coverage check in one more.
+  auto calibration = std::make_shared<CalibrationJob>(data, fit_base_, options);
+  auto coverage = std::make_shared<std::string>();
+  JobSteps<FitOutcome> steps;
+  steps.step = [calibration, coverage, data, base = fit_base_, options](JobToken& token) {
+    if (!calibration->finished()) {
+      calibration->step(token);
+      return false;
+    }
+    if (const auto checks = cross_validated_coverage(data, base, options)) {
+      *coverage = describe_coverage(*checks);
+    }
+    return true;
+  };
+  steps.finish = [calibration, coverage] { return FitOutcome{calibration->report(), *coverage}; };
+  fit_.start_slices(std::move(steps), wake_);
 }
 
 void PhotoOverlay::collect_fit(const Document& document, UiStatus& status) {

@@ -6,7 +6,6 @@
 #include <cstdint>
 #include <cstdio>
 #include <span>
-#include <thread>
 #include <vector>
 
 #include <imgui.h>
@@ -125,36 +124,31 @@ void RegimeMapPanel::restart(const Parameters& base, const std::function<void()>
   rows_shown_ = -1;
   pixels_.assign(cells->cells.size(), IM_COL32(25, 25, 30, 255));
   threads_ = static_cast<unsigned>(hardware_threads());
-  // Rows are handed out one at a time to every core, so the map fills evenly and a cancel is
-  // honoured within one row.
-  job_.start(
-      [cells, threads = threads_](JobToken& token) {
-        const auto start = std::chrono::steady_clock::now();
-        const int rows = cells->y.steps;
-        const int columns = cells->x.steps;
-        const auto work = [&] {
-          for (int row = cells->next_row++; row < rows && !token.cancelled();
-               row = cells->next_row++) {
-            map_rows(cells->base, cells->x, cells->y, row, row + 1,
-                     std::span<MapCell>(cells->cells)
-                         .subspan(static_cast<std::size_t>(row) * columns,
-                                  static_cast<std::size_t>(columns)));
-            cells->row_done[static_cast<std::size_t>(row)].store(true, std::memory_order_release);
-            token.report(static_cast<double>(++cells->rows_done) / rows);
-          }
-        };
-        std::vector<std::thread> helpers;
-        for (unsigned t = 1; t < threads; ++t) {
-          helpers.emplace_back(work);
-        }
-        work();
-        for (std::thread& helper : helpers) {
-          helper.join();
-        }
-        return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
-            .count();
-      },
-      wake);
+  // Rows are handed out one at a time (to every core where there are threads, a slice of frames
+  // where not), so the map fills evenly and a cancel is honoured within one row.
+  const auto start = std::chrono::steady_clock::now();
+  JobSteps<double> steps;
+  steps.parallel = threads_;
+  steps.step = [cells](JobToken& token) {
+    const int rows = cells->y.steps;
+    const int columns = cells->x.steps;
+    const int row = cells->next_row++;
+    if (row >= rows) {
+      return true;
+    }
+    map_rows(cells->base, cells->x, cells->y, row, row + 1,
+             std::span<MapCell>(cells->cells)
+                 .subspan(static_cast<std::size_t>(row) * static_cast<std::size_t>(columns),
+                          static_cast<std::size_t>(columns)));
+    cells->row_done[static_cast<std::size_t>(row)].store(true, std::memory_order_release);
+    token.report(static_cast<double>(++cells->rows_done) / rows);
+    return row + 1 >= rows;
+  };
+  steps.finish = [start] {
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+        .count();
+  };
+  job_.start_slices(std::move(steps), wake);
 }
 
 void RegimeMapPanel::update_image(Renderer& renderer) {
@@ -460,6 +454,46 @@ void RegimeMapPanel::hover_and_click(const Placement& at, Document& document, bo
     // Both axes at once: one undo step brings back the point before the click.
     document.apply(Edit::inputs({{job.x.key, x_value}, {job.y.key, y_value}}));
   }
+}
+
+nlohmann::json RegimeMapPanel::report() const {
+  if (!cells_) {
+    return nullptr;
+  }
+  // The cells' n, regime and flags hashed (FNV-1a), and z_max summed: two builds' maps compare
+  // by these without the report carrying every cell.
+  std::uint64_t hash = 14695981039346656037ull;
+  const auto mix = [&hash](std::uint64_t value) {
+    for (int byte = 0; byte < 8; ++byte) {
+      hash ^= (value >> (8 * byte)) & 0xffu;
+      hash *= 1099511628211ull;
+    }
+  };
+  double z_sum_mm = 0.0;
+  long long n_sum = 0;
+  for (std::size_t row = 0; row < static_cast<std::size_t>(cells_->y.steps); ++row) {
+    if (!cells_->row_done[row].load(std::memory_order_acquire)) {
+      continue;
+    }
+    for (std::size_t i = 0; i < static_cast<std::size_t>(cells_->x.steps); ++i) {
+      const MapCell& cell = cells_->cells[row * static_cast<std::size_t>(cells_->x.steps) + i];
+      mix(static_cast<std::uint64_t>(cell.n));
+      mix(static_cast<std::uint64_t>(cell.regime));
+      mix((cell.valid ? 1u : 0u) | (cell.n_capped ? 2u : 0u));
+      z_sum_mm += cell.z_max_mm;
+      n_sum += cell.n;
+    }
+  }
+  char digest[17];
+  std::snprintf(digest, sizeof digest, "%016llx", static_cast<unsigned long long>(hash));
+  return {{"x", cells_->x.key},
+          {"y", cells_->y.key},
+          {"cells", cells_->x.steps * cells_->y.steps},
+          {"rows_done", cells_->rows_done.load()},
+          {"computing", computing()},
+          {"n_sum", n_sum},
+          {"z_max_sum_mm", z_sum_mm},
+          {"digest", digest}};
 }
 
 void RegimeMapPanel::draw(PanelContext& context) {

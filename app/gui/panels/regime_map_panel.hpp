@@ -8,6 +8,7 @@
 #include <vector>
 
 #include <imgui.h>
+#include <nlohmann/json.hpp>
 
 #include "app/gui/background_job.hpp"
 #include "app/gui/document.hpp"
@@ -33,6 +34,9 @@ class RegimeMapPanel {
   double last_map_ms() const { return last_map_ms_; }
   // True from a (re)start until every row has been computed.
   bool computing() const { return job_.running(); }
+  // For the report: the axes, how far the map is, and a digest of its cells (null before the
+  // tab was first shown).
+  nlohmann::json report() const;
 
  private:
   struct Cells;

@@ -1,0 +1,28 @@
+// What the screen the explorer is drawn on says about itself and asks of it: how many device
+// pixels make one of the page's CSS pixels, the theme and text size its user prefers, and an
+// on-screen keyboard for typing. One implementation per platform, chosen at link time as
+// PageLink is: the desktop's (app/gui/desktop_screen.cpp) knows none of these and does nothing,
+// the page's (app/web/page_screen.cpp) asks the browser.
+#pragma once
+
+#include <optional>
+
+namespace foldlab::gui {
+
+// Device pixels per CSS pixel (window.devicePixelRatio; 1 on the desktop). The page sizes its
+// canvas in device pixels, so the explorer lays out in device pixels and scales its UI by this
+// to keep the layout of a screen at ratio 1 with text rasterised at the screen's own pixel size.
+float screen_pixel_ratio();
+
+struct ScreenPreferences {
+  std::optional<bool> light_theme;        // prefers-color-scheme, when the browser says
+  std::optional<int> text_scale_percent;  // the browser's default font size against 16 px
+};
+// What the user's browser prefers, read once at start; nothing on the desktop.
+ScreenPreferences screen_preferences();
+
+// Called after every frame with whether a text field has the keyboard: the page focuses a hidden
+// text field then, so that a touch screen brings up its keyboard. Nothing on the desktop.
+void screen_wants_text_input(bool wanted);
+
+}  // namespace foldlab::gui

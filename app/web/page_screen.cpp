@@ -1,0 +1,68 @@
+// The page's screen: the browser's devicePixelRatio, its colour scheme and default font size, and
+// the hidden text field index.html focuses so that a touch screen shows its keyboard.
+#include <emscripten/emscripten.h>
+#include <emscripten/html5.h>
+
+#include "app/gui/screen.hpp"
+
+namespace foldlab::gui {
+namespace {
+
+// 1 light, 0 dark, -1 when the browser states no preference.
+EM_JS(int, page_prefers_light, (), {
+  if (!window.matchMedia)
+    return -1;
+  if (window.matchMedia('(prefers-color-scheme: light)').matches)
+    return 1;
+  if (window.matchMedia('(prefers-color-scheme: dark)').matches)
+    return 0;
+  return -1;
+});
+
+// The browser's default font size ("medium", which the user's text size setting changes) in
+// percent of the 16 px browsers start with; -1 when it cannot be read.
+EM_JS(int, page_text_percent, (), {
+  const probe = document.createElement('div');
+  probe.style.fontSize = 'medium';
+  probe.style.position = 'absolute';
+  probe.style.visibility = 'hidden';
+  document.body.appendChild(probe);
+  const px = parseFloat(getComputedStyle(probe).fontSize);
+  probe.remove();
+  return px > 0 ? Math.round(100 * px / 16) : -1;
+});
+
+EM_JS(void, page_text_input, (int wanted), {
+  if (Module.foldlabTextInput)
+    Module.foldlabTextInput(wanted != 0);
+});
+
+// A browser's default of 16 px is FoldLab's 100 %.
+constexpr int kBrowserDefaultPercent = 100;
+
+}  // namespace
+
+float screen_pixel_ratio() {
+  return static_cast<float>(emscripten_get_device_pixel_ratio());
+}
+
+ScreenPreferences screen_preferences() {
+  ScreenPreferences preferences;
+  if (const int light = page_prefers_light(); light >= 0) {
+    preferences.light_theme = light == 1;
+  }
+  if (const int percent = page_text_percent(); percent > kBrowserDefaultPercent) {
+    preferences.text_scale_percent = percent;
+  }
+  return preferences;
+}
+
+void screen_wants_text_input(bool wanted) {
+  static int shown = -1;  // what the page was last told
+  if (shown != (wanted ? 1 : 0)) {
+    shown = wanted ? 1 : 0;
+    page_text_input(shown);
+  }
+}
+
+}  // namespace foldlab::gui

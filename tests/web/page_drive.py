@@ -1,0 +1,480 @@
+#!/usr/bin/env python3
+"""The page driven as a person's hands drive it: headless Chromium (SwiftShader WebGL2) with its
+DevTools protocol, real mouse and touch events at CSS pixels, the explorer's state read at any
+time through the page's Module.foldlabState() (what `gui --report` prints), screenshots.
+
+  page_drive.py --site DIR --check NAME [--chromium PATH] [--keep-screenshots DIR]
+                [--native FOLDLAB --presets DIR]
+
+Checks (each its own ctest):
+  dpr       devicePixelRatio 2 beside 1: the canvas backing store twice as big, the layout the
+            same in CSS pixels, text rasterised at twice the size, a real click hitting its slider,
+            a wheel notch zooming the 3D view one step
+  touch     a tap clicks a slider; a one-finger drag moves a slider and orbits the 3D view; a
+            two-finger pinch zooms it by the pinch's ratio; holding a finger on a slider opens its
+            typed value with the on-screen keyboard's field focused, and typed text arrives
+  scheme    the theme follows the browser's prefers-color-scheme and the text size its default
+            font size, with no stored session
+  regime_map  tests/web/regime_map_slices.json played in real time (a virtual clock stands still
+            while a slice runs, so it would run the whole map in one frame): three frames after
+            the tab opens the map is part done, so frames keep coming while it runs; at the end
+            its cells are those of the desktop program (--native: `render --play
+            regime_map_done.json`): the digest of every cell's n, regime and flags, the sum of n,
+            and the sum of z_max (floats, to 1e-9 of it)
+Exit 0 when every check holds. The DevTools websocket is spoken here (RFC 6455, client side): the
+test needs nothing beyond Python's standard library."""
+import argparse
+import base64
+import json
+import os
+import shutil
+import socket
+import struct
+import subprocess
+import sys
+import tempfile
+import time
+import urllib.request
+
+
+class DevTools:
+    """One websocket to a page target; send() waits for its answer, events are dropped."""
+
+    def __init__(self, url):
+        rest = url[len("ws://"):]
+        host_port, path = rest.split("/", 1)
+        host, port = host_port.split(":")
+        self.sock = socket.create_connection((host, int(port)), timeout=60)
+        key = base64.b64encode(os.urandom(16)).decode()
+        self.sock.sendall((f"GET /{path} HTTP/1.1\r\nHost: {host_port}\r\nUpgrade: websocket\r\n"
+                           f"Connection: Upgrade\r\nSec-WebSocket-Key: {key}\r\n"
+                           "Sec-WebSocket-Version: 13\r\n\r\n").encode())
+        head = b""
+        while b"\r\n\r\n" not in head:
+            chunk = self.sock.recv(1)
+            if not chunk:
+                raise RuntimeError("DevTools closed the connection during the handshake")
+            head += chunk
+        if b" 101 " not in head.split(b"\r\n")[0]:
+            raise RuntimeError("DevTools refused the websocket: " + head.decode(errors="replace"))
+        self.next_id = 0
+
+    def _read(self, n):
+        data = b""
+        while len(data) < n:
+            chunk = self.sock.recv(n - len(data))
+            if not chunk:
+                raise RuntimeError("DevTools closed the connection")
+            data += chunk
+        return data
+
+    def _message(self):
+        payload = b""
+        while True:
+            b0, b1 = self._read(2)
+            length = b1 & 0x7F
+            if length == 126:
+                length = struct.unpack(">H", self._read(2))[0]
+            elif length == 127:
+                length = struct.unpack(">Q", self._read(8))[0]
+            payload += self._read(length)
+            if b0 & 0x80:
+                return payload.decode()
+
+    def send(self, method, **params):
+        self.next_id += 1
+        data = json.dumps({"id": self.next_id, "method": method, "params": params}).encode()
+        mask = os.urandom(4)
+        header = bytes([0x81])
+        if len(data) < 126:
+            header += bytes([0x80 | len(data)])
+        elif len(data) < 65536:
+            header += bytes([0x80 | 126]) + struct.pack(">H", len(data))
+        else:
+            header += bytes([0x80 | 127]) + struct.pack(">Q", len(data))
+        masked = bytes(b ^ mask[i % 4] for i, b in enumerate(data))
+        self.sock.sendall(header + mask + masked)
+        while True:
+            message = json.loads(self._message())
+            if message.get("id") == self.next_id:
+                if "error" in message:
+                    raise RuntimeError(f"{method}: {message['error']}")
+                return message.get("result", {})
+
+    def evaluate(self, expression):
+        result = self.send("Runtime.evaluate", expression=expression, returnByValue=True,
+                           awaitPromise=True)
+        if "exceptionDetails" in result:
+            raise RuntimeError(f"{expression}: {result['exceptionDetails']}")
+        return result["result"].get("value")
+
+
+class Page:
+    """A served site and one headless Chromium showing it."""
+
+    def __init__(self, args, root, query, flags=(), play_dir=None):
+        self.root = root
+        serve = os.path.join(root, "serve")
+        os.makedirs(serve, exist_ok=True)
+        if play_dir:
+            os.symlink(os.path.abspath(play_dir), os.path.join(serve, "play"))
+        for name in os.listdir(args.site):
+            target = os.path.join(serve, name)
+            if not os.path.exists(target):
+                os.symlink(os.path.abspath(os.path.join(args.site, name)), target)
+        with socket.socket() as s:
+            s.bind(("127.0.0.1", 0))
+            port = s.getsockname()[1]
+        self.server = subprocess.Popen(
+            [sys.executable, "-m", "http.server", "--bind", "127.0.0.1", str(port), "-d", serve],
+            stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+        for _ in range(100):
+            try:
+                socket.create_connection(("127.0.0.1", port), timeout=0.1).close()
+                break
+            except OSError:
+                time.sleep(0.05)
+        profile = tempfile.mkdtemp(prefix="profile_", dir=root)
+        self.url = f"http://127.0.0.1:{port}/index.html{query}"
+        self.browser = subprocess.Popen(
+            [args.chromium, "--headless=new", "--no-sandbox", "--use-gl=angle",
+             "--use-angle=swiftshader", "--enable-unsafe-swiftshader", "--disable-gpu-sandbox",
+             "--no-first-run", "--disable-extensions", "--window-size=1280,800",
+             "--remote-debugging-port=0", f"--user-data-dir={profile}", *flags, "about:blank"],
+            stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+        active = os.path.join(profile, "DevToolsActivePort")
+        deadline = time.monotonic() + 60
+        while not os.path.exists(active) or len(open(active).read().split()) < 2:
+            if time.monotonic() > deadline or self.browser.poll() is not None:
+                raise RuntimeError("Chromium did not open its DevTools port")
+            time.sleep(0.1)
+        debug_port = open(active).read().split()[0]
+        targets = json.load(urllib.request.urlopen(f"http://127.0.0.1:{debug_port}/json/list"))
+        page = next(t for t in targets if t["type"] == "page")
+        self.tools = DevTools(page["webSocketDebuggerUrl"])
+        self.tools.send("Page.enable")
+        self.tools.send("Page.navigate", url=self.url)
+
+    def close(self):
+        for process in (self.browser, self.server):
+            process.terminate()
+            try:
+                process.wait(timeout=10)
+            except subprocess.TimeoutExpired:
+                process.kill()
+
+    def state(self):
+        return self.tools.evaluate("window.Module && Module.foldlabState ? Module.foldlabState() "
+                                   ": null")
+
+    def wait(self, what, condition, timeout_s=90):
+        deadline = time.monotonic() + timeout_s
+        while True:
+            state = self.state()
+            if state and condition(state):
+                return state
+            if time.monotonic() > deadline:
+                log = self.tools.evaluate("document.getElementById('foldlab-log').textContent")
+                raise AssertionError(f"{what}: not within {timeout_s} s; the page's log: {log}")
+            time.sleep(0.1)
+
+    def settle(self, frames=3):
+        """Waits until the explorer has drawn `frames` more frames, or has come to rest (a
+        resting explorer draws nothing until the next input)."""
+        state = self.state()
+        start = last = state["renderer"]["frames"]
+        changed = time.monotonic()
+        while last < start + frames and time.monotonic() - changed < 1.5:
+            time.sleep(0.05)
+            state = self.state()
+            if state["renderer"]["frames"] != last:
+                last = state["renderer"]["frames"]
+                changed = time.monotonic()
+        return state
+
+    def mouse(self, kind, x, y, buttons=0):
+        self.tools.send("Input.dispatchMouseEvent", type=kind, x=x, y=y, button="left",
+                        buttons=buttons, clickCount=1)
+
+    def touch(self, kind, points):
+        self.tools.send("Input.dispatchTouchEvent", type=kind,
+                        touchPoints=[{"x": x, "y": y, "id": i} for i, (x, y) in enumerate(points)])
+
+    def screenshot(self, path, clip=None):
+        """The page as a PNG (device pixels); `clip` (x, y, w, h) in CSS pixels: that part."""
+        extra = {}
+        if clip:
+            extra["clip"] = dict(zip(("x", "y", "width", "height"), clip), scale=1)
+        data = base64.b64decode(
+            self.tools.send("Page.captureScreenshot", format="png", **extra)["data"])
+        with open(path, "wb") as f:
+            f.write(data)
+        return struct.unpack(">II", data[16:24])  # IHDR: width, height
+
+
+def ready(page):
+    return page.wait("the first frames", lambda s: s["renderer"]["frames"] >= 5)
+
+
+def check(problems, ok, text):
+    if not ok:
+        problems.append(text)
+
+
+def slider_css(state, key, ratio, fraction=None):
+    """A slider's handle (or a point at `fraction` of its width) in CSS pixels."""
+    slider = state["sliders"][key]
+    if fraction is None:
+        x, y = slider["handle"]
+    else:
+        x = slider["left"] + fraction * (slider["right"] - slider["left"])
+        y = slider["handle"][1]
+    return x / ratio, y / ratio
+
+
+def panel_centre_css(state, key, ratio):
+    rect = state["layout"]["panels"][key]
+    return (rect["x"] + rect["w"] / 2) / ratio, (rect["y"] + rect["h"] * 0.6) / ratio
+
+
+QUERY = "?preset=paper-table1-h1400#L=4000"
+# What a scripted run reported, or '' (also while the page is still about:blank).
+REPORT_TEXT = "(document.getElementById('foldlab-report') || {}).textContent || ''"
+
+
+def check_dpr(args, root, problems):
+    states = {}
+    for ratio in (1, 2):
+        page = Page(args, os.path.join(root, f"dpr{ratio}"), QUERY,
+                    [f"--force-device-scale-factor={ratio}"])
+        try:
+            state = ready(page)
+            states[ratio] = state
+            shot = os.path.join(page.root, f"page-dpr{ratio}.png")
+            size = page.screenshot(shot)
+            if args.keep_screenshots:
+                shutil.copy(shot, args.keep_screenshots)
+                page.screenshot(os.path.join(args.keep_screenshots, f"page-dpr{ratio}-part.png"),
+                                (0, 20, 400, 200))
+            # The window's viewport in CSS pixels (headless Chromium's window keeps some of its
+            # 1280 x 800 for itself), the same at both ratios.
+            css = page.tools.evaluate("[innerWidth, innerHeight, devicePixelRatio]")
+            check(problems, css[2] == ratio, f"DPR {ratio}: the page's devicePixelRatio is {css[2]}")
+            check(problems, list(size) == [css[0] * ratio, css[1] * ratio],
+                  f"DPR {ratio}: the screenshot is {size[0]}x{size[1]} for a viewport of "
+                  f"{css[0]}x{css[1]} CSS px")
+            check(problems, state["display"] == [css[0] * ratio, css[1] * ratio],
+                  f"DPR {ratio}: the explorer's display is {state['display']}")
+            check(problems, state["appearance"]["pixel_ratio"] == ratio,
+                  f"DPR {ratio}: the explorer's pixel ratio is {state['appearance']['pixel_ratio']}")
+            if ratio == 2:
+                # A real click (CSS pixels) at a quarter of the h slider: the handle goes there.
+                x, y = slider_css(state, "h", ratio, 0.25)
+                h_before = state["parameters"]["h_mm"]
+                page.mouse("mouseMoved", x, y)
+                page.mouse("mousePressed", x, y, 1)
+                page.mouse("mouseReleased", x, y)
+                after = page.settle()
+                handle_x = after["sliders"]["h"]["handle"][0] / ratio
+                check(problems, after["parameters"]["h_mm"] != h_before,
+                      "DPR 2: a click on the h slider left h as it was")
+                check(problems, abs(handle_x - x) <= 3,
+                      f"DPR 2: clicked at x = {x:.1f} CSS px, the handle is at {handle_x:.1f}")
+                # One notch of the wheel up over the 3D view: one zoom step in (emscripten's GLFW
+                # alone would give a hundred steps, the wrong way).
+                cx, cy = panel_centre_css(after, "cloth", ratio)
+                page.mouse("mouseMoved", cx, cy)
+                before = page.settle()["camera"]["distance_mm"]
+                page.tools.send("Input.dispatchMouseEvent", type="mouseWheel", x=cx, y=cy,
+                                deltaX=0, deltaY=-100)
+                zoomed = page.settle()["camera"]["distance_mm"] / before
+                check(problems, abs(zoomed - 0.85) < 1e-3,
+                      f"DPR 2: a wheel notch up left the 3D view at {zoomed:.4f} of its distance, "
+                      "not 0.85")
+        finally:
+            page.close()
+    one, two = states[1], states[2]
+    for key, rect in one["layout"]["panels"].items():
+        other = two["layout"]["panels"].get(key)
+        if other is None:
+            problems.append(f"DPR 2: no panel {key}")
+            continue
+        for side in ("x", "y", "w", "h"):
+            check(problems, abs(other[side] / 2 - rect[side]) <= 2,
+                  f"DPR 2: {key}.{side} is {other[side] / 2} CSS px, at DPR 1 {rect[side]}")
+
+
+def check_touch(args, root, problems):
+    page = Page(args, os.path.join(root, "touch"), QUERY)
+    try:
+        page.tools.send("Emulation.setTouchEmulationEnabled", enabled=True, maxTouchPoints=5)
+        state = ready(page)
+        # A tap is a click: the h slider's value goes where the finger tapped.
+        x, y = slider_css(state, "h", 1, 0.75)
+        h_before = state["parameters"]["h_mm"]
+        page.touch("touchStart", [(x, y)])
+        page.touch("touchEnd", [])
+        state = page.settle()
+        check(problems, state["parameters"]["h_mm"] > h_before,
+              f"a tap at 3/4 of the h slider left h at {state['parameters']['h_mm']} (was {h_before})")
+        check(problems, abs(state["sliders"]["h"]["handle"][0] - x) <= 3,
+              "the tapped slider's handle is not where the finger was")
+        # A one-finger drag on a slider drags it.
+        x, y = slider_css(state, "w", 1)
+        w_before = state["parameters"]["w_N_per_mm2"]
+        page.touch("touchStart", [(x, y)])
+        for step in range(1, 6):
+            page.touch("touchMove", [(x + 8 * step, y)])
+            page.settle(1)
+        page.touch("touchEnd", [])
+        state = page.settle()
+        check(problems, state["parameters"]["w_N_per_mm2"] > w_before,
+              f"a drag to the right on the w slider left w at {state['parameters']['w_N_per_mm2']}")
+        # A one-finger drag on the 3D view orbits it.
+        cx, cy = panel_centre_css(state, "cloth", 1)
+        yaw_before = state["camera"]["yaw_rad"]
+        page.touch("touchStart", [(cx, cy)])
+        for step in range(1, 6):
+            page.touch("touchMove", [(cx + 10 * step, cy)])
+            page.settle(1)
+        page.touch("touchEnd", [])
+        state = page.settle()
+        check(problems, state["camera"]["yaw_rad"] < yaw_before - 0.1,
+              f"a drag on the 3D view left its yaw at {state['camera']['yaw_rad']} ({yaw_before})")
+        # Two fingers spreading from 60 to 120 px apart: the view comes twice as close.
+        distance_before = state["camera"]["distance_mm"]
+        page.touch("touchStart", [(cx - 30, cy), (cx + 30, cy)])
+        for step in range(1, 7):
+            page.touch("touchMove", [(cx - 30 - 5 * step, cy), (cx + 30 + 5 * step, cy)])
+            page.settle(1)
+        page.touch("touchEnd", [])
+        state = page.settle()
+        ratio = state["camera"]["distance_mm"] / distance_before
+        check(problems, abs(ratio - 0.5) < 0.02,
+              f"a pinch from 60 to 120 px left the distance at {ratio:.3f} of what it was, not 0.5")
+        # Holding a finger on the h slider opens its typed value; the keyboard's field has focus
+        # and what the keyboard types (an IME's text, no key events) replaces the value's text,
+        # which the field opens selected.
+        x, y = slider_css(state, "h", 1)
+        page.touch("touchStart", [(x, y)])
+        time.sleep(0.8)
+        page.touch("touchEnd", [])
+        page.settle()
+        focused = page.tools.evaluate("document.activeElement && document.activeElement.id")
+        check(problems, focused == "foldlab-keyboard",
+              f"after a long press on h the focus is on {focused!r}, not the keyboard's field")
+        page.tools.send("Input.insertText", text="1.5m")
+        page.settle(6)
+        page.tools.send("Input.dispatchKeyEvent", type="rawKeyDown", windowsVirtualKeyCode=13,
+                        key="Enter", code="Enter")
+        page.tools.send("Input.dispatchKeyEvent", type="keyUp", windowsVirtualKeyCode=13,
+                        key="Enter", code="Enter")
+        state = page.settle()
+        check(problems, state["parameters"]["h_mm"] == 1500,
+              f"typed 1.5m into h through the keyboard's field: h is {state['parameters']['h_mm']}")
+        focused = page.tools.evaluate("document.activeElement && document.activeElement.id")
+        check(problems, focused != "foldlab-keyboard", "the keyboard's field keeps the focus")
+        if args.keep_screenshots:
+            page.screenshot(os.path.join(args.keep_screenshots, "page-touch.png"))
+    finally:
+        page.close()
+
+
+def check_scheme(args, root, problems):
+    # Chromium has no --force-prefers-color-scheme; Blink's settings set the scheme (0 dark,
+    # 1 light; headless Chromium prefers light by itself) and the default font size.
+    cases = [
+        ("dark", ["--blink-settings=preferredColorScheme=0"], False, 100),
+        ("light", ["--blink-settings=preferredColorScheme=1"], True, 100),
+        ("large text", ["--blink-settings=preferredColorScheme=0,defaultFontSize=24"], False, 150),
+    ]
+    for name, flags, light, percent in cases:
+        page = Page(args, os.path.join(root, name.replace(" ", "_")), QUERY, flags)
+        try:
+            state = ready(page)
+            seen = page.tools.evaluate("matchMedia('(prefers-color-scheme: light)').matches")
+            check(problems, seen == light,
+                  f"{name}: flags {flags} give prefers-color-scheme light = {seen}")
+            check(problems, state["appearance"]["light_theme"] == light,
+                  f"{name}: the explorer's light theme is {state['appearance']['light_theme']}")
+            check(problems, state["appearance"]["scale_percent"] == percent,
+                  f"{name}: the text size is {state['appearance']['scale_percent']} %, not "
+                  f"{percent} %")
+            if args.keep_screenshots:
+                page.screenshot(os.path.join(args.keep_screenshots,
+                                             f"page-{name.replace(' ', '-')}.png"))
+        finally:
+            page.close()
+
+
+def check_regime_map(args, root, problems):
+    here = os.path.dirname(os.path.abspath(__file__))
+    page = Page(args, os.path.join(root, "map"),
+                "?play=play/regime_map_slices.json&report=1&preset=paper-table1-h1400#L=4000",
+                play_dir=here)
+    try:
+        deadline = time.monotonic() + 240
+        text = ""
+        while not text and time.monotonic() < deadline:
+            time.sleep(0.2)
+            text = page.tools.evaluate(REPORT_TEXT)
+        if not text:
+            problems.append("the played script did not end within 240 s")
+            return
+        result = json.loads(text)
+    finally:
+        page.close()
+    if result.get("exit_status") != 0:
+        problems.append(f"the played script failed: {result.get('stderr')}")
+        return
+    if not args.native:
+        return
+    with tempfile.TemporaryDirectory(prefix="foldlab_native_") as home:
+        run = subprocess.run(
+            [os.path.abspath(args.native), "render", "--play",
+             os.path.join(here, "regime_map_done.json"),
+             "--report", "--preset",
+             os.path.join(os.path.abspath(args.presets), "paper-table1-h1400.json"),
+             "--set", "L=4000"],
+            capture_output=True, text=True, timeout=600, cwd=home,
+            env={**os.environ, "XDG_CONFIG_HOME": home, "HOME": home})
+    if run.returncode != 0:
+        problems.append(f"the desktop program's run failed ({run.returncode}): {run.stderr}")
+        return
+    native = json.loads(run.stdout[run.stdout.index("{"):])
+    mine = result["report"].get("regime_map") or {}
+    theirs = native.get("regime_map") or {}
+    for key in ("x", "y", "cells", "rows_done", "digest", "n_sum"):
+        check(problems, mine.get(key) == theirs.get(key),
+              f"regime_map.{key}: the page's {mine.get(key)!r}, the desktop's {theirs.get(key)!r}")
+    z_mine, z_theirs = mine.get("z_max_sum_mm"), theirs.get("z_max_sum_mm")
+    check(problems, z_mine is not None and z_theirs is not None and
+          abs(z_mine - z_theirs) <= 1e-9 * abs(z_theirs),
+          f"regime_map.z_max_sum_mm: the page's {z_mine}, the desktop's {z_theirs}")
+
+
+def main():
+    parser = argparse.ArgumentParser()
+    parser.add_argument("--site", required=True)
+    parser.add_argument("--check", required=True,
+                        choices=["dpr", "touch", "scheme", "regime_map"])
+    parser.add_argument("--native", help="the desktop program (regime_map)")
+    parser.add_argument("--presets", help="the presets folder (regime_map)")
+    parser.add_argument("--chromium", default="chromium")
+    parser.add_argument("--keep-screenshots", help="a folder to copy the screenshots into")
+    args = parser.parse_args()
+    problems = []
+    started = time.monotonic()
+    with tempfile.TemporaryDirectory(prefix="foldlab_drive_") as root:
+        {"dpr": check_dpr, "touch": check_touch, "scheme": check_scheme,
+         "regime_map": check_regime_map}[args.check](
+            args, root, problems)
+    for problem in problems:
+        print(f"{args.check}: {problem}", file=sys.stderr)
+    print(f"{args.check}: {'ok' if not problems else 'FAILED'} in "
+          f"{time.monotonic() - started:.1f} s")
+    return 1 if problems else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,160 @@
+#!/usr/bin/env python3
+"""The browser build's figures, measured (not a test: timings are no pass/fail criterion); run
+by scripts/web-bench.sh, which says how. Prints a Markdown table and the raw numbers as JSON.
+
+  web_bench.py --site DIR --native FOLDLAB --solve-times-native EXE --solve-times-wasm JS
+               [--chromium PATH] [--repeat N]
+
+  first frame   from navigation start to the explorer's first frame drawn (performance.now() of
+                the page when Module.foldlabState() first reports a frame; polled every 10 ms)
+  dragging      tests/web/bench_drag.json (24 drags of the h slider) played at 1280x800: the
+                page in headless Chromium (SwiftShader WebGL2, real time) beside `foldlab render`
+                (EGL on Mesa's llvmpipe); each frame from its start to glFinish, mean and p95
+  solve         time per solve of the 40 realistic benchmark cases, WebAssembly (node) over
+                native, each case's fastest of --repeat runs taken by turns; the geometric mean,
+                median and range of the per-case ratios
+  site          build-web/site's files, raw and gzip -9"""
+import argparse
+import gzip
+import json
+import os
+import statistics
+import subprocess
+import sys
+import tempfile
+import time
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from page_drive import REPORT_TEXT, Page  # noqa: E402
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+QUERY_BASE = "preset=paper-table1-h1400"
+
+
+def first_frame_ms(args, root):
+    page = Page(args, root, f"?{QUERY_BASE}")
+    try:
+        deadline = time.monotonic() + 120
+        while time.monotonic() < deadline:
+            value = page.tools.evaluate(
+                "(window.Module && Module.foldlabState && Module.foldlabState() && "
+                "Module.foldlabState().renderer.frames >= 1) ? performance.now() : null")
+            if value is not None:
+                return value
+            time.sleep(0.01)
+        raise RuntimeError("no first frame within 120 s")
+    finally:
+        page.close()
+
+
+def page_drag(args, root):
+    os.makedirs(os.path.join(root, "serve"), exist_ok=True)
+    os.symlink(HERE, os.path.join(root, "serve", "bench"))
+    page = Page(args, root, f"?play=bench/bench_drag.json&report=1&{QUERY_BASE}")
+    try:
+        deadline = time.monotonic() + 300
+        while time.monotonic() < deadline:
+            text = page.tools.evaluate(REPORT_TEXT)
+            if text:
+                result = json.loads(text)
+                if result.get("exit_status") != 0:
+                    raise RuntimeError(f"the page's drag run failed: {result}")
+                report = result["report"]
+                return report["mean_ms"], report["p95_ms"], report["frames"]
+            time.sleep(0.2)
+        raise RuntimeError("the page's drag run did not end within 300 s")
+    finally:
+        page.close()
+
+
+def native_drag(args, root):
+    run = subprocess.run(
+        [os.path.abspath(args.native), "render", "--play", os.path.join(HERE, "bench_drag.json"),
+         "--report",
+         "--size", "1280x800", "--preset",
+         os.path.join(HERE, "..", "..", "presets", "paper-table1-h1400.json")],
+        capture_output=True, text=True, cwd=root, timeout=600,
+        env={**os.environ, "XDG_CONFIG_HOME": root, "HOME": root})
+    if run.returncode != 0:
+        raise RuntimeError(f"foldlab render failed: {run.stderr}")
+    report = json.loads(run.stdout[run.stdout.index("{"):])
+    return report["mean_ms"], report["p95_ms"], report["frames"]
+
+
+def solve_ratios(args):
+    """Per case the fastest of `repeat` runs of each program, run by turns: on a shared machine a
+    case's time is its own plus whatever else took the core meanwhile, which the minimum drops."""
+    best = {"native": {}, "wasm": {}}
+    commands = {"native": [args.solve_times_native],
+                "wasm": ["node", "--no-experimental-fetch", args.solve_times_wasm]}
+    for _ in range(args.repeat):
+        for name, command in commands.items():
+            cases = json.loads(subprocess.run(command, capture_output=True, text=True,
+                                              check=True).stdout)["cases"]
+            for case in cases:
+                times = best[name]
+                times[case["label"]] = min(times.get(case["label"], float("inf")),
+                                           case["us_per_solve"])
+    labels = list(best["native"])
+    ratios = [best["wasm"][label] / best["native"][label] for label in labels]
+    return (ratios, statistics.median(best["native"].values()),
+            statistics.median(best["wasm"].values()))
+
+
+def site_sizes(site):
+    rows = []
+    for name in sorted(os.listdir(site)):
+        data = open(os.path.join(site, name), "rb").read()
+        rows.append((name, len(data), len(gzip.compress(data, 9))))
+    return rows
+
+
+def main():
+    parser = argparse.ArgumentParser()
+    parser.add_argument("--site", required=True)
+    parser.add_argument("--native", required=True)
+    parser.add_argument("--solve-times-native", required=True)
+    parser.add_argument("--solve-times-wasm", required=True)
+    parser.add_argument("--chromium", default="chromium")
+    parser.add_argument("--repeat", type=int, default=3)
+    parser.add_argument("--keep-screenshots", default=None)
+    args = parser.parse_args()
+    figures = {}
+    with tempfile.TemporaryDirectory(prefix="foldlab_bench_") as root:
+        figures["first_frame_ms"] = [first_frame_ms(args, os.path.join(root, f"first{i}"))
+                                     for i in range(args.repeat)]
+        figures["page_drag"] = [page_drag(args, os.path.join(root, f"drag{i}"))
+                                for i in range(args.repeat)]
+        figures["native_drag"] = []
+        for i in range(args.repeat):
+            os.makedirs(os.path.join(root, f"native{i}"))
+            figures["native_drag"].append(native_drag(args, os.path.join(root, f"native{i}")))
+    ratios, native_us, wasm_us = solve_ratios(args)
+    figures["solve_ratios"] = ratios
+    figures["site"] = site_sizes(args.site)
+
+    geo = statistics.geometric_mean(ratios)
+    print("| figure | measured | aim |\n|---|---|---|")
+    print(f"| first frame after load | {', '.join(f'{v:.0f}' for v in figures['first_frame_ms'])}"
+          f" ms | ≤ 2000 ms |")
+    for name, key in (("page (Chromium, SwiftShader)", "page_drag"),
+                      ("desktop (llvmpipe)", "native_drag")):
+        runs = figures[key]
+        print(f"| frame while dragging, {name} | mean "
+              f"{', '.join(f'{m:.1f}' for m, _, _ in runs)} ms; p95 "
+              f"{', '.join(f'{p:.1f}' for _, p, _ in runs)} ms ({runs[0][2]} frames) | "
+              f"{'≤ 16 ms mean' if key == 'page_drag' else ''} |")
+    print(f"| solve, WebAssembly / native | geometric mean {geo:.2f}×, median "
+          f"{statistics.median(ratios):.2f}×, {min(ratios):.2f}–{max(ratios):.2f}× over "
+          f"{len(ratios)} cases (median {wasm_us:.1f} µs against {native_us:.1f} µs) | ≤ 1.3× |")
+    raw = sum(r for _, r, _ in figures["site"])
+    packed = sum(g for _, _, g in figures["site"])
+    print(f"| site | {raw / 1e6:.2f} MB raw, {packed / 1e6:.2f} MB gzip -9 | ≤ 4 MB gzip |")
+    for name, r, g in figures["site"]:
+        print(f"|   {name} | {r / 1e6:.2f} MB raw, {g / 1e6:.2f} MB gzip -9 | |")
+    print(json.dumps(figures))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
