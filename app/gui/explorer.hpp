@@ -46,6 +46,9 @@ struct ExplorerOptions {
   std::filesystem::path measurements_file;  // the photo's "Add to measurements" appends here
   std::filesystem::path start_folder;       // where the first file dialog opens; empty: the
                                             // working folder
+  // The config folder is the explorer's alone (ConfigStore::owns_folder): a session file there
+  // that does not read is set aside and replaced rather than left for its owner.
+  bool owns_config_folder = false;
 };
 
 // A picture the user asked for, taken by the frame loop after drawing: the whole window, or the
@@ -137,6 +140,11 @@ class Explorer {
   // PNG to `path`. Throws SurfaceError when it cannot be drawn or written.
   void write_picture(const std::filesystem::path& path, const PictureSpec& spec);
   FileDialog& file_dialog() { return files_; }
+  // How files reach the user: the platform's (make_file_transfer()); the desktop's until set.
+  void set_file_transfer(std::unique_ptr<FileTransfer> transfer) {
+    transfer_ = std::move(transfer);
+    files_.set_transfer(*transfer_);
+  }
   IntroWindow& intro() { return *intro_; }
   // Shows a line in the Presets panel (the outcome of an export done by the frame loop).
   void notify(const std::string& message, bool is_error) { document_.notify(message, is_error); }
@@ -196,9 +204,10 @@ class Explorer {
   Renderer& renderer_;
   Appearance appearance_;
   Document document_;
-  ExportPanel export_;                     // the Export menu, in the menu bar
-  ClothView picture_view_ = kNoClothView;  // the cloth of pictures (write_picture)
-  FileDialog files_;                       // every panel's open and save dialog
+  ExportPanel export_;                      // the Export menu, in the menu bar
+  ClothView picture_view_ = kNoClothView;   // the cloth of pictures (write_picture)
+  std::unique_ptr<FileTransfer> transfer_;  // before files_, which points to it once set
+  FileDialog files_;                        // every panel's open and save dialog
   // The panels, in drawing order; the pointers below point into it, for what the explorer's
   // own interface offers of them.
   std::vector<std::unique_ptr<Panel>> panels_;

@@ -17,7 +17,9 @@
 #include <imgui.h>
 
 #include "app/common/presets_dir.hpp"
+#include "app/gui/config_store.hpp"
 #include "app/gui/explorer.hpp"
+#include "app/gui/file_transfer.hpp"
 #include "app/gui/renderer.hpp"
 #include "app/gui/scripted_run.hpp"
 #include "app/gui/session.hpp"
@@ -228,6 +230,8 @@ class ExplorerRun {
         persist_(interactive && !options.fresh),
         imgui_(surface),
         renderer_(make_gl_renderer()) {
+    // Before the session, the layout or the user's presets are read.
+    config_->restore(config_dir());
     const Preset& preset = start.preset;
     std::optional<AnimatedInput> animation;
     if (!options.animate_key.empty()) {
@@ -254,12 +258,14 @@ class ExplorerRun {
                                      options.analysis_tab,
                                      kDejaVuSans,
                                      measurements,
-                                     std::filesystem::current_path()};
+                                     std::filesystem::current_path(),
+                                     config_->owns_folder()};
     // A preset named on the command line wins over the restored session.
     const bool restore = persist_ && options.inputs.preset_path.empty() &&
                          options.inputs.assignments.empty() && options.inputs.link.empty();
     explorer_.emplace(preset, options.inputs.preset_path, restore, explorer_options, *renderer_);
     explorer_->set_page_link(make_page_link());
+    explorer_->set_file_transfer(make_file_transfer());
     if (start.refused) {
       // A link's refused value, kept with its reason as a typed one is; not an edit to undo.
       explorer_->document().apply(Edit::replace(*start.refused));
@@ -287,6 +293,16 @@ class ExplorerRun {
     script_.emplace(options.frames, std::move(animation), std::move(player),
                     options.screenshot_path, options.input_files);
   }
+
+  // What the run leaves (the session and the layout saved as they go) is stored as well.
+  ~ExplorerRun() {
+    script_.reset();
+    layout_.reset();
+    explorer_.reset();
+    config_->keep(config_dir());  // nobody is left to be told of a refusal
+  }
+  ExplorerRun(const ExplorerRun&) = delete;
+  ExplorerRun& operator=(const ExplorerRun&) = delete;
 
   // A frame is due unless the user's window rests: nothing animating, no panel busy, and the
   // frames after the last input drawn.
@@ -318,6 +334,9 @@ class ExplorerRun {
                     layout_ ? &*layout_ : nullptr, frame_)) {
       return false;
     }
+    if (const std::optional<std::string> problem = config_->keep(config_dir())) {
+      explorer_->add_notice(*problem);
+    }
     ++frame_;
     return true;
   }
@@ -335,6 +354,7 @@ class ExplorerRun {
   GuiRunOptions options_;
   bool interactive_;
   bool persist_;
+  std::unique_ptr<ConfigStore> config_ = make_config_store();
   ImGuiContextGuard imgui_;
   std::unique_ptr<Renderer> renderer_;
   std::optional<Explorer> explorer_;

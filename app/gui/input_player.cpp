@@ -259,6 +259,13 @@ json explorer_state_json(Explorer& explorer) {
   for (const auto& [key, reason] : explorer.parameters_panel().unread_reasons()) {
     unread[key] = reason;
   }
+  // The user's own presets as the Presets panel lists them (what "Save as..." kept).
+  json user_presets = json::array();
+  for (const PresetsPanel::Entry& entry : explorer.presets().entries()) {
+    if (entry.user) {
+      user_presets.push_back(entry.name);
+    }
+  }
   const std::optional<std::string> refused = document.refusal();
   const std::string& modal = document.modal_title();
   std::string presented;
@@ -295,6 +302,8 @@ json explorer_state_json(Explorer& explorer) {
       {"link", explorer.link()},
       {"clipboard", detail::escaped(clipboard != nullptr ? clipboard : "")},
       {"popup_open", ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId)},
+      {"file_problem", explorer.file_dialog().problem()},
+      {"user_presets", user_presets},
       {"intro_open", explorer.intro().is_open()},
       {"layout",
        {{"automatic", explorer.automatic_layout()},

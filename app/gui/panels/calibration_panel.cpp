@@ -9,6 +9,7 @@
 #include <imgui.h>
 
 #include "app/common/presets_dir.hpp"
+#include "app/gui/panels/file_dialog.hpp"
 #include "app/gui/panels/widgets.hpp"
 #include "app/gui/renderer.hpp"
 #include "core/model/text_format.hpp"
@@ -211,13 +212,30 @@ void CalibrationPanel::draw(PanelContext& context) {
     if (!data_ && !data_message_is_error_ && data_message_.empty() && data_path_[0] != '\0') {
       load_data();  // the shipped paper data, on first opening
     }
-    ImGui::SetNextItemWidth(-ImGui::CalcTextSize("Load").x -
-                            3.0f * ImGui::GetStyle().ItemSpacing.x);
+    ImGui::SetNextItemWidth(-button_width("Load") - button_width("Choose...") -
+                            2.0f * ImGui::GetStyle().ItemSpacing.x);
     ImGui::InputTextWithHint("##data", "measurements file, CSV or JSON", data_path_,
                              sizeof data_path_);
     ImGui::SameLine();
     if (ImGui::Button("Load")) {
       load_data();
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("Choose...")) {
+      context.files.open({FileDialog::Mode::open,
+                          kChooseDataModal,
+                          "",
+                          {".csv", ".json"},
+                          [this](const std::filesystem::path& path) -> std::optional<std::string> {
+                            std::snprintf(data_path_, sizeof data_path_, "%s",
+                                          path.string().c_str());
+                            load_data();
+                            if (data_message_is_error_) {
+                              return data_message_;
+                            }
+                            return std::nullopt;
+                          }},
+                         document);
     }
     if (!data_message_.empty()) {
       ImGui::PushStyleColor(ImGuiCol_Text, data_message_is_error_ ? kErrorText : kDimText);

@@ -35,6 +35,9 @@ class CalibrationPanel : public Panel {
   // Presets panel).
   void open_button(const Parameters& current);
 
+  // The file dialog's title for "Choose...": a measurements file.
+  static constexpr const char* kChooseDataModal = "Choose a measurements file";
+
   const char* name() const override { return "Fit to measurements"; }
   const char* key() const override { return "calibration"; }
   // The window, when open. "Apply" sets the fitted K (as c at the edited Poisson ratio) and p
