@@ -1115,6 +1115,160 @@ TEST_F(ExplorerTest, SavingAsksWhereAndAPictureIsTakenAfterTheMenuAndDialogClose
   EXPECT_EQ(taken.size(), 2u);
 }
 
+// A FileTransfer that browses no folders, as the page's: what it delivers and was asked to pick.
+class PageLikeTransfer : public FileTransfer {
+ public:
+  explicit PageLikeTransfer(fs::path outbox) : outbox_(std::move(outbox)) {}
+  bool browses_folders() const override { return false; }
+  fs::path outbox() const override { return outbox_; }
+  bool deliver(const fs::path& path) override {
+    std::ifstream in(path, std::ios::binary);
+    delivered.emplace_back(path.filename().string(),
+                           std::string(std::istreambuf_iterator<char>(in), {}));
+    return true;
+  }
+  void pick(const std::vector<std::string>& extensions) override { asked.push_back(extensions); }
+  std::optional<fs::path> take_picked() override { return std::exchange(picked, std::nullopt); }
+
+  std::vector<std::pair<std::string, std::string>> delivered;  // name, bytes
+  std::vector<std::vector<std::string>> asked;                 // extensions of each pick
+  std::optional<fs::path> picked;                              // the next file the user picks
+
+ private:
+  fs::path outbox_;
+};
+
+// In the page there is no folder to browse: saving names a file, which is written into the
+// outbox and delivered (downloaded) once it is there, a picture a frame later; opening asks the
+// picker and takes the copy it brings, through the desktop dialog's own callbacks.
+TEST_F(ExplorerTest, WithoutFoldersAFileIsNamedAndDeliveredAndAPickedOneIsOpened) {
+  auto owned = std::make_unique<PageLikeTransfer>(dir_ / "outbox");
+  PageLikeTransfer& transfer = *owned;
+  explorer_->set_file_transfer(std::move(owned));
+  std::optional<PictureRequest> picture;
+  const auto frame_and_take = [&] {
+    frame();
+    if (std::optional<PictureRequest> request = explorer_->take_screenshot_request()) {
+      picture = request;
+    }
+  };
+  const auto export_as = [&](const std::string& item, const std::string& typed) {
+    return play(*explorer_,
+                {{"steps",
+                  {{{"click", "Export"}},
+                   {{"frames", 1}},
+                   {{"click", item}},
+                   {{"frames", 2}},
+                   {{"type", typed}},
+                   {{"click", "Download"}},
+                   {{"frames", 2}}}}},
+                frame_and_take);
+  };
+  // A name with folders keeps its name alone, and the format's extension is added.
+  ASSERT_EQ(export_as("Fold lines (.svg)...", "some/folder/folds"), 0);
+  ASSERT_EQ(transfer.delivered.size(), 1u);
+  EXPECT_EQ(transfer.delivered[0].first, "folds.svg");
+  EXPECT_NE(transfer.delivered[0].second.find("<svg"), std::string::npos);
+  EXPECT_FALSE(fs::exists(dir_ / "outbox" / "folds.svg")) << "the browser holds its own copy";
+  EXPECT_EQ(status().modal_title(), "");
+  EXPECT_EQ(status().message(), "Downloaded folds.svg (" +
+                                    std::to_string(transfer.delivered[0].second.size()) +
+                                    " bytes): the browser keeps it with its downloads.");
+
+  // The fabric as a preset, named after the file, which opens as the fabric it was.
+  ASSERT_EQ(export_as("Preset (.json)...", "my fabric"), 0);
+  ASSERT_EQ(transfer.delivered.size(), 2u);
+  EXPECT_EQ(transfer.delivered[1].first, "my fabric.json");
+  { std::ofstream(dir_ / "copy.json") << transfer.delivered[1].second; }
+  const Preset exported = load_preset(dir_ / "copy.json");
+  EXPECT_EQ(exported.name, "my fabric");
+  EXPECT_EQ(exported.parameters.hanging.height_mm, 1400.0);  // Table 1's row
+  EXPECT_EQ(exported.parameters.fabric.thickness_mm, 0.25);
+
+  // A picture is delivered once the frame loop has written it.
+  ASSERT_EQ(export_as("Window picture (.png)...", "window"), 0);
+  ASSERT_TRUE(picture.has_value());
+  EXPECT_EQ(fs::path(picture->path), dir_ / "outbox" / "window.png");
+  EXPECT_EQ(transfer.delivered.size(), 2u) << "not written yet";
+  write_png(picture->path.c_str(), FrameSize{2, 1}, {1, 2, 3, 255, 4, 5, 6, 255});
+  frame();
+  ASSERT_EQ(transfer.delivered.size(), 3u);
+  EXPECT_EQ(transfer.delivered[2].first, "window.png");
+  EXPECT_EQ(transfer.delivered[2].second.substr(1, 3), "PNG");
+
+  // Opening: the picker is asked for a preset; the copy it brings loads as a listed preset does.
+  Preset other = load_preset(kPresetsDir / "paper-table1-h1400.json");
+  other.name = "From a colleague";
+  other.parameters.hanging.height_mm = 1234.0;
+  save_preset(other, dir_ / "uploads-colleague.json");
+  click("Open file...");
+  EXPECT_EQ(status().modal_title(), PresetsPanel::kOpenFileModal);
+  ASSERT_EQ(transfer.asked.size(), 1u);
+  EXPECT_EQ(transfer.asked[0], std::vector<std::string>{".json"});
+  transfer.picked = dir_ / "uploads-colleague.json";
+  frame();
+  frame();
+  EXPECT_EQ(status().modal_title(), "");
+  EXPECT_EQ(document().edited().hanging.height_mm, 1234.0);
+  EXPECT_EQ(document().loaded().name, "From a colleague");
+
+  // A file that is no preset is refused in the words a listed one's refusal has; nothing changes.
+  { std::ofstream(dir_ / "notes.json") << "these are my notes"; }
+  click("Open file...");
+  transfer.picked = dir_ / "notes.json";
+  frame();
+  frame();
+  EXPECT_EQ(document().edited().hanging.height_mm, 1234.0);
+  EXPECT_EQ(status().message().rfind("Not loaded; the current state is kept.\n", 0), 0u)
+      << status().message();
+  EXPECT_NE(status().message().find("not valid JSON at line 1"), std::string::npos)
+      << status().message();
+
+  // Cancelled: a file picked afterwards is not taken.
+  click("Open file...");
+  click("Cancel");
+  EXPECT_EQ(status().modal_title(), "");
+  transfer.picked = dir_ / "uploads-colleague.json";
+  frame();
+  EXPECT_FALSE(transfer.picked.has_value());
+  EXPECT_EQ(status().modal_title(), "");
+}
+
+// Where the config folder is the explorer's alone (the page's storage), a session that does not
+// read is said so, set aside and replaced; it is left in place on the desktop.
+TEST_F(ExplorerTest, AnUnreadableSessionIsSetAsideWhereTheConfigFolderIsTheExplorers) {
+  const fs::path session = dir_ / "session.json";
+  for (const bool owned : {false, true}) {
+    { std::ofstream(session) << "{not a session"; }
+    fs::remove(dir_ / "session.json.unread");
+    ExplorerOptions options{kPresetsDir, dir_ / "user-presets",     session, "equations",
+                            {},          dir_ / "measurements.csv", dir_};
+    options.owns_config_folder = owned;
+    explorer_.reset();
+    explorer_ = std::make_unique<Explorer>(load_preset(kPresetsDir / "paper-table1-h1400.json"),
+                                           (kPresetsDir / "paper-table1-h1400.json").string(), true,
+                                           options, renderer_);
+    frame();
+    const std::vector<std::string>& notices = explorer_->notices();
+    ASSERT_GE(notices.size(), 2u);
+    EXPECT_EQ(notices[0].rfind("the saved session " + session.string() + " could not be read", 0),
+              0u)
+        << notices[0];
+    if (owned) {
+      EXPECT_EQ(notices[1], "The session that did not read is kept as " + session.string() +
+                                ".unread; a new session is saved in its place.");
+    } else {
+      EXPECT_NE(notices[1].find("move it away"), std::string::npos) << notices[1];
+    }
+    explorer_.reset();  // saves the session, where it may
+    std::string error;
+    bool may_save = true;
+    EXPECT_EQ(load_session(session, error, may_save).has_value(), owned) << error;
+    EXPECT_EQ(fs::exists(dir_ / "session.json.unread"), owned);
+  }
+  open_explorer("equations");
+}
+
 // "~/" was not read in the 3D view's photo path nor in the fold plot's, and neither had a file
 // browser.
 TEST_F(ExplorerTest, APhotoIsChosenInTheOpenDialogOrTypedWithTilde) {

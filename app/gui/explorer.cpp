@@ -86,7 +86,15 @@ Explorer::Explorer(const Preset& initial, const std::string& initial_path, bool 
     } else if (!error.empty()) {
       status_.add_notice(error);  // present but unusable: say why the defaults are shown
     }
-    if (!may_save) {
+    std::filesystem::path set_aside = options_.session_file;
+    set_aside += ".unread";
+    std::error_code set_aside_error;
+    if (!may_save && options_.owns_config_folder &&
+        (std::filesystem::rename(options_.session_file, set_aside, set_aside_error),
+         !set_aside_error)) {
+      status_.add_notice("The session that did not read is kept as " + set_aside.string() +
+                         "; a new session is saved in its place.");
+    } else if (!may_save) {
       status_.add_notice("The session will not be saved over " + options_.session_file.string() +
                          ", which is not a session file the explorer can read; move it away to "
                          "have the session kept.");

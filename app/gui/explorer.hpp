@@ -50,6 +50,9 @@ struct ExplorerOptions {
   // The theme and text size the browser prefers: the start's, unless a restored session says
   // otherwise (then the session's; a link's `theme` and `scale` win over both).
   ScreenPreferences preferred{};
+  // The config folder is the explorer's alone (ConfigStore::owns_folder): a session file there
+  // that does not read is set aside and replaced rather than left for its owner.
+  bool owns_config_folder = false;
 };
 
 // A picture the user asked for, taken by the frame loop after drawing: the whole window, or the
@@ -156,6 +159,11 @@ class Explorer {
   // PNG to `path`. Throws SurfaceError when it cannot be drawn or written.
   void write_picture(const std::filesystem::path& path, const PictureSpec& spec);
   FileDialog& file_dialog() { return files_; }
+  // How files reach the user: the platform's (make_file_transfer()); the desktop's until set.
+  void set_file_transfer(std::unique_ptr<FileTransfer> transfer) {
+    transfer_ = std::move(transfer);
+    files_.set_transfer(*transfer_);
+  }
   IntroWindow& intro() const { return panel<IntroWindow>(); }
   // Shows a line in the Presets panel (the outcome of an export done by the frame loop).
   void notify(const std::string& message, bool is_error) { status_.notify(message, is_error); }
@@ -217,6 +225,7 @@ class Explorer {
   ExportPanel export_;                             // the Export menu, in the menu bar
   ClothView picture_view_ = kNoClothView;          // the cloth of pictures (write_picture)
   ClothView compare_picture_view_ = kNoClothView;  // B's cloth in pictures of A and B
+  std::unique_ptr<FileTransfer> transfer_;         // before files_, which points to it once set
   FileDialog files_;                               // every panel's open and save dialog
   // The panels, in drawing order, each type once (panel<P>() finds one).
   std::vector<std::unique_ptr<Panel>> panels_;

@@ -18,7 +18,9 @@
 
 #include "app/common/presets_dir.hpp"
 #include "app/gui/background_job.hpp"
+#include "app/gui/config_store.hpp"
 #include "app/gui/explorer.hpp"
+#include "app/gui/file_transfer.hpp"
 #include "app/gui/frame_pacing.hpp"
 #include "app/gui/input_player.hpp"
 #include "app/gui/renderer.hpp"
@@ -237,6 +239,8 @@ class ExplorerRun {
         persist_(interactive && !options.fresh),
         imgui_(surface),
         renderer_(make_gl_renderer()) {
+    // Before the session, the layout or the user's presets are read.
+    config_->restore(config_dir());
     const Preset& preset = start.preset;
     std::optional<AnimatedInput> animation;
     if (!options.animate_key.empty()) {
@@ -264,12 +268,14 @@ class ExplorerRun {
                                      kDejaVuSans,
                                      measurements,
                                      std::filesystem::current_path(),
-                                     screen_preferences()};
+                                     screen_preferences(),
+                                     config_->owns_folder()};
     // A preset named on the command line wins over the restored session.
     const bool restore = persist_ && options.inputs.preset_path.empty() &&
                          options.inputs.assignments.empty() && options.inputs.link.empty();
     explorer_.emplace(preset, options.inputs.preset_path, restore, explorer_options, *renderer_);
     explorer_->set_page_link(make_page_link());
+    explorer_->set_file_transfer(make_file_transfer());
     if (start.refused) {
       // A link's refused value, kept with its reason as a typed one is; not an edit to undo.
       explorer_->document().apply(Edit::replace(*start.refused));
@@ -297,6 +303,16 @@ class ExplorerRun {
     script_.emplace(options.frames, std::move(animation), std::move(player),
                     options.screenshot_path, options.input_files);
   }
+
+  // What the run leaves (the session and the layout saved as they go) is stored as well.
+  ~ExplorerRun() {
+    script_.reset();
+    layout_.reset();
+    explorer_.reset();
+    config_->keep(config_dir());  // nobody is left to be told of a refusal
+  }
+  ExplorerRun(const ExplorerRun&) = delete;
+  ExplorerRun& operator=(const ExplorerRun&) = delete;
 
   // A frame is due unless the user's window rests: nothing animating, no panel busy, and the
   // frames after the last input drawn.
@@ -330,6 +346,9 @@ class ExplorerRun {
     }
     after_input_.frame_drawn(frame_saw_input(ImGui::GetIO()));
     screen_wants_text_input(ImGui::GetIO().WantTextInput);
+    if (const std::optional<std::string> problem = config_->keep(config_dir())) {
+      explorer_->add_notice(*problem);
+    }
     ++frame_;
     // A frame that asked for another text size showed the old layout: the next is drawn at once,
     // before any more input is read, so that a click lands on what the screen shows.
@@ -356,6 +375,7 @@ class ExplorerRun {
   GuiRunOptions options_;
   bool interactive_;
   bool persist_;
+  std::unique_ptr<ConfigStore> config_ = make_config_store();
   ImGuiContextGuard imgui_;
   std::unique_ptr<Renderer> renderer_;
   std::optional<Explorer> explorer_;

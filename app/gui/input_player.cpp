@@ -308,6 +308,17 @@ json unread_json(Explorer& explorer) {
   return unread;
 }
 
+// The user's own presets as the Presets panel lists them (what "Save as..." kept).
+json user_presets_json(const Explorer& explorer) {
+  json user_presets = json::array();
+  for (const PresetsPanel::Entry& entry : explorer.presets().entries()) {
+    if (entry.user) {
+      user_presets.push_back(entry.name);
+    }
+  }
+  return user_presets;
+}
+
 json layout_json(Explorer& explorer) {
   std::string presented;
   for (const std::unique_ptr<Panel>& panel : explorer.panels()) {
@@ -368,6 +379,8 @@ json explorer_state_json(Explorer& explorer) {
       {"link", explorer.link()},
       {"clipboard", detail::escaped(clipboard != nullptr ? clipboard : "")},
       {"popup_open", ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId)},
+      {"file_problem", explorer.file_dialog().problem()},
+      {"user_presets", user_presets_json(explorer)},
       {"intro_open", explorer.intro().is_open()},
       {"layout", layout},
       {"appearance",

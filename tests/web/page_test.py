@@ -5,10 +5,16 @@
 
   page_test.py --site DIR --play-dir DIR --query '?play=play/slider_h.json&report=1...'
                [--expect KEY=JSON ...] [--expect-address TEXT] [--expect-address-is-link]
-               [--chromium PATH]
-KEY is a dotted path into the report (`gui --report`'s JSON). The address is the page's fragment
-when the run ended (location.hash): --expect-address compares it with TEXT, and
---expect-address-is-link with the explorer's link then ('#' and the report's `link`)."""
+               [--expect-result KEY=JSON ...] [--expect-prefix KEY=JSON ...] [--page FILE]
+               [--serve NAME=PATH ...] [--checks FILE] [--chromium PATH]
+KEY is a dotted path into the report (`gui --report`'s JSON); a number in it picks a list's
+entry. The address is the page's fragment when the run ended (location.hash): --expect-address
+compares it with TEXT, and --expect-address-is-link with the explorer's link then ('#' and the
+report's `link`). --expect-result looks into the page's whole result instead (`downloads`, and
+with reload.html `earlier` and `storage`); --expect-prefix checks that the text there starts with
+the JSON string given. --checks reads such checks from a JSON file ({"report": {KEY: VALUE},
+"result": {...}, "prefix": {KEY: TEXT}}), free of a shell's or CMake's quoting. --page opens FILE (served beside index.html, e.g. tests/web/reload.html)
+instead of index.html; --serve serves PATH as NAME beside it. Chromium's home folder is a temporary one: downloads land there."""
 import argparse
 import html
 import json
@@ -30,9 +36,12 @@ def free_port():
 def lookup(report, dotted):
     value = report
     for part in dotted.split("."):
-        if not isinstance(value, dict) or part not in value:
+        if isinstance(value, list) and part.isdigit() and int(part) < len(value):
+            value = value[int(part)]
+        elif isinstance(value, dict) and part in value:
+            value = value[part]
+        else:
             raise KeyError(dotted)
-        value = value[part]
     return value
 
 
@@ -44,6 +53,13 @@ def main():
     parser.add_argument("--expect", action="append", default=[])
     parser.add_argument("--expect-address")
     parser.add_argument("--expect-address-is-link", action="store_true")
+    parser.add_argument("--expect-result", action="append", default=[])
+    parser.add_argument("--expect-prefix", action="append", default=[])
+    parser.add_argument("--checks", help="a JSON file: {\"report\": {KEY: VALUE}, \"result\": "
+                        "{KEY: VALUE}, \"prefix\": {KEY: TEXT}}, as the options of those names")
+    parser.add_argument("--page", default="index.html")
+    parser.add_argument("--serve", action="append", default=[],
+                        help="NAME=PATH: PATH served as NAME beside the page too")
     parser.add_argument("--chromium", default="chromium")
     parser.add_argument("--budget-ms", type=int, default=120000)
     args = parser.parse_args()
@@ -54,6 +70,14 @@ def main():
         for name in os.listdir(args.site):
             os.symlink(os.path.abspath(os.path.join(args.site, name)), os.path.join(serve, name))
         os.symlink(os.path.abspath(args.play_dir), os.path.join(serve, "play"))
+        for extra in args.serve:
+            name, _, path = extra.partition("=")
+            os.symlink(os.path.abspath(path), os.path.join(serve, name))
+        page = os.path.basename(args.page)
+        if not os.path.exists(os.path.join(serve, page)):
+            os.symlink(os.path.abspath(args.page), os.path.join(serve, page))
+        home = os.path.join(root, "home")
+        os.mkdir(home)
         port = free_port()
         server = subprocess.Popen(
             [sys.executable, "-m", "http.server", "--bind", "127.0.0.1", str(port), "-d", serve],
@@ -65,7 +89,7 @@ def main():
                     break
                 except OSError:
                     time.sleep(0.05)
-            url = f"http://127.0.0.1:{port}/index.html{args.query}"
+            url = f"http://127.0.0.1:{port}/{page}{args.query}"
             started = time.monotonic()
             dom = subprocess.run(
                 [args.chromium, "--headless=new", "--no-sandbox", "--use-gl=angle",
@@ -73,7 +97,9 @@ def main():
                  "--no-first-run", "--disable-extensions", "--window-size=1280,800",
                  f"--user-data-dir={os.path.join(root, 'profile')}",
                  f"--virtual-time-budget={args.budget_ms}", "--dump-dom", url],
-                capture_output=True, text=True, timeout=300).stdout
+                capture_output=True, text=True, timeout=300,
+                env=dict(os.environ, HOME=home, XDG_CONFIG_HOME=os.path.join(home, ".config"),
+                         XDG_DOWNLOAD_DIR=os.path.join(home, "Downloads"))).stdout
             seconds = time.monotonic() - started
         finally:
             server.terminate()
@@ -94,15 +120,28 @@ def main():
         problems.append(f"exit status {result.get('exit_status')}: "
                         + "\n".join(result.get("stderr") or []))
     report = result.get("report") or {}
-    for expect in args.expect:
+    if args.checks:
+        with open(args.checks, encoding="utf-8") as f:
+            more = json.load(f)
+        for option, entries in (("expect", "report"), ("expect_result", "result"),
+                                ("expect_prefix", "prefix")):
+            getattr(args, option).extend(f"{key}={json.dumps(value)}"
+                                         for key, value in more.get(entries, {}).items())
+    checks = ([(report, e, False) for e in args.expect] +
+              [(result, e, False) for e in args.expect_result] +
+              [(result, e, True) for e in args.expect_prefix])
+    for where, expect, prefix in checks:
         key, _, wanted = expect.partition("=")
         try:
-            value = lookup(report, key)
+            value = lookup(where, key)
         except KeyError:
-            problems.append(f"{key}: not in the report")
+            problems.append(f"{key}: not in the {'report' if where is report else 'result'}")
             continue
-        if value != json.loads(wanted):
-            problems.append(f"{key} is {json.dumps(value)}, expected {wanted}")
+        wanted_value = json.loads(wanted)
+        if (not prefix and value != wanted_value) or (
+                prefix and not (isinstance(value, str) and value.startswith(wanted_value))):
+            problems.append(f"{key} is {json.dumps(value)}, expected "
+                            f"{'a text starting ' if prefix else ''}{wanted}")
     address = result.get("address")
     if args.expect_address is not None and address != args.expect_address:
         problems.append(f"the address is {address!r}, expected {args.expect_address!r}")

@@ -10,6 +10,7 @@
 
 #include "app/common/presets_dir.hpp"
 #include "app/gui/calibration_job.hpp"
+#include "app/gui/panels/file_dialog.hpp"
 #include "app/gui/panels/widgets.hpp"
 #include "app/gui/renderer.hpp"
 #include "core/model/text_format.hpp"
@@ -195,17 +196,34 @@ void CalibrationPanel::constants_section(const Parameters& edited, const Preset&
   wrapped_text("%s", describe_model_form(loaded.parameters).c_str());
 }
 
-void CalibrationPanel::measurements_section() {
+void CalibrationPanel::measurements_section(FileDialog& files, UiStatus& status) {
   section("Measurements");
   if (!data_ && !data_message_is_error_ && data_message_.empty() && data_path_[0] != '\0') {
     load_data();  // the shipped paper data, on first opening
   }
-  ImGui::SetNextItemWidth(-ImGui::CalcTextSize("Load").x - 3.0f * ImGui::GetStyle().ItemSpacing.x);
+  ImGui::SetNextItemWidth(-button_width("Load") - button_width("Choose...") -
+                          2.0f * ImGui::GetStyle().ItemSpacing.x);
   ImGui::InputTextWithHint("##data", "measurements file, CSV or JSON", data_path_,
                            sizeof data_path_);
   ImGui::SameLine();
   if (ImGui::Button("Load")) {
     load_data();
+  }
+  ImGui::SameLine();
+  if (ImGui::Button("Choose...")) {
+    files.open({FileDialog::Mode::open,
+                kChooseDataModal,
+                "",
+                {".csv", ".json"},
+                [this](const std::filesystem::path& path) -> std::optional<std::string> {
+                  std::snprintf(data_path_, sizeof data_path_, "%s", path.string().c_str());
+                  load_data();
+                  if (data_message_is_error_) {
+                    return data_message_;
+                  }
+                  return std::nullopt;
+                }},
+               status);
   }
   if (!data_message_.empty()) {
     ImGui::PushStyleColor(ImGuiCol_Text, data_message_is_error_ ? kErrorText : kDimText);
@@ -259,7 +277,7 @@ void CalibrationPanel::draw(PanelContext& context) {
   if (ImGui::Begin(window_label().c_str(), &open_)) {
     context.renderer.fill_window_background();  // the style's window background is transparent
     constants_section(document.edited(), document.loaded());
-    measurements_section();
+    measurements_section(context.files, context.status);
     fit_section(document.edited(), context.wake);
     if (report_) {
       apply_section(document);

@@ -14,6 +14,7 @@
 #include "app/gui/background_job.hpp"
 #include "app/gui/document.hpp"
 #include "app/gui/panel.hpp"
+#include "app/gui/panels/file_dialog.hpp"
 #include "core/analysis/calibration.hpp"
 #include "core/io/measurements.hpp"
 #include "core/io/preset.hpp"
@@ -36,6 +37,9 @@ class CalibrationPanel : public Panel {
   // Presets panel).
   void open_button(const Parameters& current);
 
+  // The file dialog's title for "Choose...": a measurements file.
+  static constexpr const char* kChooseDataModal = "Choose a measurements file";
+
   const char* name() const override { return "Fit to measurements"; }
   const char* key() const override { return "calibration"; }
   // The window, when open. "Apply" sets the fitted K (as c at the edited Poisson ratio) and p
@@ -51,7 +55,7 @@ class CalibrationPanel : public Panel {
   void collect_finished_run();
   void place_window();
   void constants_section(const Parameters& edited, const Preset& loaded);
-  void measurements_section();
+  void measurements_section(FileDialog& files, UiStatus& status);
   void fit_section(const Parameters& edited, const std::function<void()>& wake);
   void results_section();
   void apply_section(Document& document);

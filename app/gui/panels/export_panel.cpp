@@ -8,10 +8,12 @@
 #include <imgui.h>
 
 #include "app/gui/appearance.hpp"
+#include "app/gui/panels/presets_panel.hpp"
 #include "app/gui/panels/widgets.hpp"
 #include "core/io/export.hpp"
 #include "core/io/export_formats.hpp"
 #include "core/io/io.hpp"
+#include "core/io/preset.hpp"
 
 namespace foldlab::gui {
 namespace {
@@ -136,6 +138,24 @@ void ExportPanel::menu(Document& document, UiStatus& status, const ClothStyle& s
       }
       return format.write(source);
     });
+  }
+  if (ImGui::MenuItem("Preset (.json)...")) {
+    // The fabric as a preset file to keep or send, named after the file.
+    files.open(
+        {FileDialog::Mode::save,
+         "Export the fabric as a preset",
+         preset_slug(document.loaded().name) + ".json",
+         {".json"},
+         [&document, &status](const std::filesystem::path& path) -> std::optional<std::string> {
+           try {
+             save_preset(preset_to_save(document, path.stem().string()), path);
+           } catch (const std::exception& e) {
+             return std::string("Not exported: ") + e.what();
+           }
+           status.notify("Wrote " + path.string(), false);
+           return std::nullopt;
+         }},
+        status);
   }
   ImGui::Separator();
   if (ImGui::MenuItem("Window picture (.png)...")) {

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <system_error>
+#include <utility>
 
 #include <imgui.h>
 
@@ -43,12 +44,26 @@ void FileDialog::open(Request request, UiStatus& status) {
   replace_.reset();
   problem_.clear();
   focus_name_ = true;
+  status.set_modal(request_->title);
+  if (!transfer_->browses_folders()) {
+    entries_.clear();
+    if (request_->mode == Mode::open) {
+      transfer_->pick(request_->extensions);
+    }
+    return;
+  }
   std::error_code error;
   if (!fs::is_directory(folder_, error)) {
     folder_ = fs::current_path(error);
   }
   list();
-  status.set_modal(request_->title);
+}
+
+void FileDialog::pick_again() {
+  if (request_ && request_->mode == Mode::open && !transfer_->browses_folders()) {
+    problem_.clear();
+    transfer_->pick(request_->extensions);
+  }
 }
 
 bool FileDialog::listed(const fs::path& file) const {
@@ -100,12 +115,14 @@ void FileDialog::enter(const fs::path& folder) {
 }
 
 void FileDialog::close(UiStatus& status) {
+  // What the chosen file led to may have opened a dialog of its own (unsaved edits to keep or
+  // drop before a preset loads): only the file dialog's own closes.
+  if (request_ && status.modal_title() == request_->title) {
+    status.set_modal("");
+  }
   request_.reset();
   replace_.reset();
   entries_.clear();
-  if (!status.modal_title().empty()) {
-    status.set_modal("");
-  }
 }
 
 void FileDialog::submit(std::string_view typed, UiStatus& status) {
@@ -118,6 +135,12 @@ void FileDialog::submit(std::string_view typed, UiStatus& status) {
   if (text.empty()) {
     problem_ = request_->mode == Mode::save ? "Type a file name." : "Choose a file.";
     return;
+  }
+  if (!transfer_->browses_folders()) {
+    if (request_->mode == Mode::save) {
+      download(text, status);
+    }
+    return;  // a file to open comes from the picker, not from a typed path
   }
   fs::path path = expand_home(text);
   if (path.is_relative()) {
@@ -167,8 +190,132 @@ void FileDialog::choose(const fs::path& path, UiStatus& status) {
   close(status);
 }
 
-void FileDialog::draw(UiStatus& status) {
+void FileDialog::download(const std::string& typed, UiStatus& status) {
+  // A name alone: the browser decides where its downloads go.
+  fs::path name = fs::path(typed).filename();
+  if (name.empty() || name == "." || name == "..") {
+    problem_ = "Type a file name.";
+    return;
+  }
+  if (!request_->extensions.empty() && name.extension().empty()) {
+    name += request_->extensions.front();
+  }
+  const fs::path path = transfer_->outbox() / name;
+  std::error_code error;
+  fs::create_directories(path.parent_path(), error);
+  fs::remove(path, error);  // an earlier download's copy: what is delivered is written anew
+  const std::optional<std::string> problem = request_->chosen(path);
+  if (problem) {
+    problem_ = *problem;
+    return;
+  }
+  close(status);
+  to_deliver_ = path;
+  deliver_when_written(status);
+}
+
+void FileDialog::deliver_when_written(UiStatus& status) {
+  std::error_code error;
+  if (!to_deliver_ || !fs::is_regular_file(*to_deliver_, error)) {
+    return;
+  }
+  const fs::path path = *std::exchange(to_deliver_, std::nullopt);
+  const std::uintmax_t bytes = fs::file_size(path, error);
+  const std::string name = path.filename().string();
+  if (transfer_->deliver(path)) {
+    status.notify("Downloaded " + name + " (" + std::to_string(error ? 0 : bytes) +
+                      " bytes): the browser keeps it with its downloads.",
+                  MessageKind::success);
+  } else {
+    status.notify("Not downloaded: the browser did not take " + name + ".", MessageKind::error);
+  }
+  fs::remove(path, error);  // the browser holds its own copy
+}
+
+void FileDialog::draw_without_folders(const std::optional<fs::path>& picked, UiStatus& status) {
+  const std::string title_text = request_->title;  // a picked file may close the request
+  const char* title = title_text.c_str();
+  if (!ImGui::IsPopupOpen(title)) {
+    ImGui::OpenPopup(title);
+  }
+  const ImVec2 display = ImGui::GetIO().DisplaySize;
+  ImGui::SetNextWindowPos(ImVec2(0.5f * display.x, 0.5f * display.y), ImGuiCond_Appearing,
+                          ImVec2(0.5f, 0.5f));
+  const int escape_key = ImGui::GetKeyIndex(ImGuiKey_Escape);
+  const bool escape = escape_key >= 0 && ImGui::IsKeyPressed(escape_key, false);
+  if (!ImGui::BeginPopupModal(
+          title, nullptr, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings)) {
+    return;
+  }
+  if (picked && request_->mode == Mode::open) {
+    choose(*picked, status);
+    if (!request_) {
+      ImGui::CloseCurrentPopup();
+      ImGui::EndPopup();
+      return;
+    }
+  }
+  const float width = std::min(ems(26.0f), 0.9f * display.x);
+  ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + width);
+  bool act = false;
+  if (request_->mode == Mode::save) {
+    ImGui::TextUnformatted(
+        "Name the file: the browser downloads it, into its downloads folder (or it asks where).");
+    if (focus_name_) {
+      ImGui::SetKeyboardFocusHere();
+      focus_name_ = false;
+    }
+    ImGui::SetNextItemWidth(width);
+    if (ImGui::InputTextWithHint(
+            "##file name", "a file name", name_, sizeof name_,
+            ImGuiInputTextFlags_EnterReturnsTrue | ImGuiInputTextFlags_AutoSelectAll)) {
+      act = true;
+    }
+    act = ImGui::Button("Download") || act;
+  } else {
+    std::string kinds;
+    for (const std::string& extension : request_->extensions) {
+      kinds += (kinds.empty() ? "" : ", ") + extension;
+    }
+    ImGui::Text("Choose the file (%s) in the browser's file picker; FoldLab reads a copy of it.",
+                kinds.empty() ? "any" : kinds.c_str());
+    if (ImGui::Button("Choose a file...")) {
+      pick_again();
+    }
+  }
+  ImGui::SameLine();
+  const bool cancel = ImGui::Button("Cancel") || escape;
+  if (!problem_.empty()) {
+    ImGui::PushStyleColor(ImGuiCol_Text, kErrorText);
+    ImGui::TextUnformatted(problem_.c_str());
+    ImGui::PopStyleColor();
+  }
+  ImGui::PopTextWrapPos();
+  if (cancel) {
+    close(status);
+  } else if (act) {
+    submit(name_, status);
+    focus_name_ = request_.has_value();
+  }
   if (!request_) {
+    ImGui::CloseCurrentPopup();
+  }
+  ImGui::EndPopup();
+}
+
+void FileDialog::draw(UiStatus& status) {
+  deliver_when_written(status);
+  // A file picked after its dialog was cancelled is not wanted any more.
+  const std::optional<fs::path> picked_file = transfer_->take_picked();
+  if (!request_) {
+    return;
+  }
+  if (!transfer_->browses_folders()) {
+    if (status.modal_title() != request_->title) {
+      close(status);  // another dialog took over
+      return;
+    }
+    draw_without_folders(picked_file, status);
     return;
   }
   const char* title = request_->title.c_str();

@@ -2,6 +2,8 @@
 // current folder's folders and files (filtered by extension), a typed file name or path ("~/"
 // is the home folder), and a question before a file is replaced. One instance serves every
 // panel, so that the folder last used is where the next dialog opens, for the whole session.
+// Where the platform's FileTransfer browses no folders (the page), saving asks for a name and
+// the file is downloaded, and opening hands over to the browser's file picker.
 #pragma once
 
 #include <filesystem>
@@ -11,6 +13,7 @@
 #include <string_view>
 #include <vector>
 
+#include "app/gui/file_transfer.hpp"
 #include "app/gui/ui_status.hpp"
 
 namespace foldlab::gui {
@@ -42,6 +45,10 @@ class FileDialog {
 
   explicit FileDialog(std::filesystem::path folder) : folder_(std::move(folder)) {}
 
+  // How files reach the user (file_transfer.hpp); the desktop's until set. Must outlive the
+  // dialog.
+  void set_transfer(FileTransfer& transfer) { transfer_ = &transfer; }
+
   // Opens the dialog (as the status's modal) in the folder last used.
   void open(Request request, UiStatus& status);
   // Once per frame, after the panels: the dialog while it is open.
@@ -51,13 +58,24 @@ class FileDialog {
   const std::filesystem::path& folder() const { return folder_; }
   // What the folder holds as listed: "..", then folders, then the files the request lists.
   const std::vector<Entry>& entries() const { return entries_; }
+  // Why the last file chosen was not taken (shown in the dialog); empty when none.
+  const std::string& problem() const { return problem_; }
 
   // What the buttons and the name field do, for the draw and for tests: a typed name or path
   // (relative to the folder; a folder is entered), an entry clicked, the answer to "replace?".
   void submit(std::string_view typed, UiStatus& status);
   void enter(const std::filesystem::path& folder);
+  // Without folders: asks the browser's picker again (the first ask may have been refused).
+  void pick_again();
 
  private:
+  // The dialog where the platform browses no folders: a name and "Download", or the picker.
+  // `picked`: a file the picker has copied in, taken as chosen.
+  void draw_without_folders(const std::optional<std::filesystem::path>& picked, UiStatus& status);
+  void download(const std::string& name, UiStatus& status);
+  // A file written for a download is delivered once it is there (a picture is written by the
+  // frame loop after the dialog closed).
+  void deliver_when_written(UiStatus& status);
   void list();
   void choose(const std::filesystem::path& path, UiStatus& status);
   void close(UiStatus& status);
@@ -70,6 +88,9 @@ class FileDialog {
   std::optional<std::filesystem::path> replace_;  // asked whether to replace this file
   std::string problem_;
   bool focus_name_ = false;
+  FileTransfer desktop_transfer_;
+  FileTransfer* transfer_ = &desktop_transfer_;
+  std::optional<std::filesystem::path> to_deliver_;
 };
 
 }  // namespace foldlab::gui

@@ -403,11 +403,11 @@ void PhotoOverlay::draw_windows(Document& document, UiStatus& status, Renderer& 
   collect_fit(document, status);
   if (photo_) {
     remeasure(document);
-    measurement_window(document, renderer);
+    measurement_window(document, status, renderer);
   }
 }
 
-void PhotoOverlay::measurement_window(Document& document, Renderer& renderer) {
+void PhotoOverlay::measurement_window(Document& document, UiStatus& status, Renderer& renderer) {
   const ImVec2 display = ImGui::GetIO().DisplaySize;
   ImGui::SetNextWindowPos(ImVec2(0.65f * display.x, 0.0f), ImGuiCond_FirstUseEver);
   ImGui::SetNextWindowSize(ImVec2(0.35f * display.x, 0.56f * display.y), ImGuiCond_FirstUseEver);
@@ -465,6 +465,26 @@ void PhotoOverlay::measurement_window(Document& document, Renderer& renderer) {
   wrapped_text("%d %s in %s", rows_in_file_, rows_in_file_ == 1 ? "row" : "rows",
                paths_.measurements_file.string().c_str());
   ImGui::PopStyleColor();
+  ImGui::BeginDisabled(rows_in_file_ == 0 || files_ == nullptr);
+  if (ImGui::SmallButton("Save a copy...")) {
+    const std::filesystem::path rows = paths_.measurements_file;
+    files_->open({FileDialog::Mode::save,
+                  kSaveRowsModal,
+                  rows.filename().string(),
+                  {".csv"},
+                  [rows, &status](const std::filesystem::path& path) -> std::optional<std::string> {
+                    std::error_code error;
+                    std::filesystem::copy_file(
+                        rows, path, std::filesystem::copy_options::overwrite_existing, error);
+                    if (error) {
+                      return "Not saved: " + error.message();
+                    }
+                    status.notify("Wrote " + path.string(), MessageKind::success);
+                    return std::nullopt;
+                  }},
+                 status);
+  }
+  ImGui::EndDisabled();
   if (!rows_message_.empty()) {
     ImGui::PushStyleColor(ImGuiCol_Text, rows_message_is_error_ ? kErrorText : kOkText);
     wrapped_text("%s", rows_message_.c_str());

@@ -42,11 +42,13 @@ class PhotoOverlay : public Panel {
   PhotoOverlay& operator=(const PhotoOverlay&) = delete;
 
   static constexpr const char* kLoadModal = "Load photo";
+  static constexpr const char* kSaveRowsModal = "Save a copy of the measurements";
   const char* name() const override { return "Photo measurement"; }
   const char* key() const override { return "photo"; }
   // The measurement window (the fold plot draws the rest).
   void draw(PanelContext& context) override {
-    wake_ = context.wake;  // for the fit started from the window
+    wake_ = context.wake;     // for the fit started from the window
+    files_ = &context.files;  // for "Save a copy..." of the measurements file
     draw_windows(context.document, context.status, context.renderer);
   }
   bool busy() const override { return fitting(); }
@@ -86,7 +88,7 @@ class PhotoOverlay : public Panel {
   void add_row(const Document& document);
   void start_fit(const Document& document);
   void collect_fit(const Document& document, UiStatus& status);
-  void measurement_window(Document& document, Renderer& renderer);
+  void measurement_window(Document& document, UiStatus& status, Renderer& renderer);
 
   PhotoPaths paths_;
   std::optional<Image> photo_;
@@ -120,6 +122,7 @@ class PhotoOverlay : public Panel {
   };
   BackgroundJob<FitOutcome> fit_;
   std::function<void()> wake_;
+  FileDialog* files_ = nullptr;
   Parameters fit_base_;
   int fit_user_rows_ = 0;
   std::string fit_message_;

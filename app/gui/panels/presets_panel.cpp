@@ -10,6 +10,7 @@
 
 #include "app/common/presets_dir.hpp"
 #include "app/common/version.hpp"
+#include "app/gui/panels/file_dialog.hpp"
 #include "app/gui/panels/widgets.hpp"
 #include "app/gui/session.hpp"
 #include "core/model/text_format.hpp"
@@ -123,8 +124,7 @@ void PresetsPanel::save(Document& document, UiStatus& status) {
   status.set_modal(kSaveAsModal);
 }
 
-void PresetsPanel::write(Document& document, UiStatus& status, const std::string& name,
-                         const std::filesystem::path& path) {
+Preset preset_to_save(const Document& document, const std::string& name) {
   const Preset& loaded = document.loaded();
   Preset preset = loaded;
   preset.name = name;
@@ -138,6 +138,12 @@ void PresetsPanel::write(Document& document, UiStatus& status, const std::string
     preset.published = {};  // published results belong to the paper's case, not to an edit
   }
   preset.written_by = app::version_line();
+  return preset;
+}
+
+void PresetsPanel::write(Document& document, UiStatus& status, const std::string& name,
+                         const std::filesystem::path& path) {
+  const Preset preset = preset_to_save(document, name);
   try {
     std::filesystem::create_directories(path.parent_path());
     save_preset(preset, path);
@@ -236,12 +242,31 @@ void PresetsPanel::draw(PanelContext& context) {
     }
   }
   ImGui::EndChild();
-  ImGui::SetNextItemWidth(-ImGui::CalcTextSize("Save as...").x -
-                          2.0f * ImGui::GetStyle().ItemSpacing.x - 8.0f);
+  const float buttons = button_width("Save as...") + button_width("Open file...") +
+                        2.0f * ImGui::GetStyle().ItemSpacing.x;
+  ImGui::SetNextItemWidth(-buttons);
   ImGui::InputTextWithHint("##save name", "name of the new preset", save_name_, sizeof save_name_);
   ImGui::SameLine();
   if (ImGui::Button("Save as...")) {
     save_as(document, status, save_name_, false);
+  }
+  ImGui::SameLine();
+  if (ImGui::Button("Open file...")) {
+    // A preset file from anywhere, read as one from the list is (and refused in its words).
+    context.files.open({FileDialog::Mode::open,
+                        kOpenFileModal,
+                        "",
+                        {".json"},
+                        [&document](const std::filesystem::path& path) {
+                          document.replace_edits(
+                              "Loading " + path.filename().string() + " replaces them.",
+                              [path](Document& d) { d.load_preset_file(path); });
+                          return std::optional<std::string>();
+                        }},
+                       status);
+  }
+  if (ImGui::IsItemHovered()) {
+    ImGui::SetTooltip("A preset file (.json) from elsewhere: a colleague's, or one you saved.");
   }
   if (!status.message().empty()) {
     ImGui::PushStyleColor(ImGuiCol_Text, message_colour(status.message_kind()));

@@ -36,6 +36,8 @@ class PresetsPanel : public Panel {
   void draw_dialogs(Document& document, UiStatus& status);
   static constexpr const char* kOverwriteModal = "Overwrite preset?";
   static constexpr const char* kSaveAsModal = "Save as";
+  // The file dialog's title for "Open file...": a preset file from anywhere on the disk.
+  static constexpr const char* kOpenFileModal = "Open a preset file";
 
   struct Entry {
     std::string name;
@@ -68,5 +70,9 @@ class PresetsPanel : public Panel {
 
 // A file name from a preset name: lower-case letters, digits and dashes.
 std::string preset_slug(const std::string& name);
+
+// The preset that saving the document's last valid inputs under `name` writes: the loaded one's
+// own when the name is kept, else one derived from it.
+Preset preset_to_save(const Document& document, const std::string& name);
 
 }  // namespace foldlab::gui
