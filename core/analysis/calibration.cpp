@@ -7,6 +7,7 @@
 #include <numbers>
 #include <numeric>
 #include <set>
+#include <span>
 #include <utility>
 
 #include "core/analysis/parallel_tasks.hpp"
@@ -382,21 +383,17 @@ FittedConstants fit_K(const Fitter& fitter, double p) {
   return fit;
 }
 
-// K and p: a coarse grid in p with every plateau along ln K at each p, then a grid ten times finer
-// in p around the best p values (a narrow plateau between two coarse p values is found there),
-// then, of the constants that reach the best score, those nearest the paper's form (p closest to
-// 1), centred in their plateau along both coordinates. Where the data cannot tell p apart (the
-// best score holds along a valley of (K, p)), that departs from the paper no further than they
-// demand, instead of drifting to whichever end of the valley is widest.
-std::optional<FittedConstants> fit_K_and_p(const Fitter& fitter, const CalibrationOptions& o,
-                                           const std::function<bool(double)>& keep_going) {
-  struct Candidate {
-    double p;
-    Segment along_K;
-  };
+struct Candidate {
+  double p;
+  Segment along_K;
+};
+
+// The best plateaus along ln K at each p visited, and each p's best score.
+struct PlateausAlongP {
   std::vector<Candidate> candidates;
   std::vector<std::pair<CalibrationScore, double>> best_at_p;
-  auto visit = [&](double p) {
+
+  void visit(const Fitter& fitter, double p) {
     const std::vector<Segment> segments = fitter.sweep_K(p);
     const Segment* best = best_segment(segments);
     best_at_p.emplace_back(best->score, p);
@@ -405,15 +402,13 @@ std::optional<FittedConstants> fit_K_and_p(const Fitter& fitter, const Calibrati
         candidates.push_back({p, s});
       }
     }
-  };
-  const int coarse = static_cast<int>(std::floor((o.p_max - o.p_min) / o.p_step + 1e-9)) + 1;
-  for (int i = 0; i < coarse; ++i) {
-    visit(o.p_min + i * o.p_step);
-    if (!keep_going(0.8 * (i + 1) / coarse)) {
-      return std::nullopt;
-    }
   }
-  std::vector<std::pair<CalibrationScore, double>> ranked = best_at_p;
+};
+
+// The p values of the coarse grid to search again on a finer one: the best first, one per
+// neighbourhood (the finer grid around p covers its neighbours' gaps).
+std::vector<double> refinement_centres(std::vector<std::pair<CalibrationScore, double>> ranked,
+                                       const CalibrationOptions& o) {
   std::stable_sort(ranked.begin(), ranked.end(),
                    [](const auto& a, const auto& b) { return better(a.first, b.first); });
   std::vector<double> refined;
@@ -421,34 +416,55 @@ std::optional<FittedConstants> fit_K_and_p(const Fitter& fitter, const Calibrati
     if (static_cast<int>(refined.size()) >= o.refined_p_values) {
       break;
     }
-    // One refinement per neighbourhood: the finer grid around p covers its neighbours' gaps.
     if (std::none_of(refined.begin(), refined.end(),
                      [&, centre = p](double q) { return std::abs(q - centre) < 1.5 * o.p_step; })) {
       refined.push_back(p);
     }
   }
+  return refined;
+}
+
+// The coarse grid in p (80 % of the progress), then the finer one around its best p values;
+// nullopt when cancelled.
+std::optional<PlateausAlongP> search_along_p(const Fitter& fitter, const CalibrationOptions& o,
+                                             const std::function<bool(double)>& keep_going) {
+  PlateausAlongP found;
+  const int coarse = static_cast<int>(std::floor((o.p_max - o.p_min) / o.p_step + 1e-9)) + 1;
+  for (int i = 0; i < coarse; ++i) {
+    found.visit(fitter, o.p_min + i * o.p_step);
+    if (!keep_going(0.8 * (i + 1) / coarse)) {
+      return std::nullopt;
+    }
+  }
+  const std::vector<double> refined = refinement_centres(found.best_at_p, o);
   for (std::size_t r = 0; r < refined.size(); ++r) {
     for (int k = -9; k <= 9; ++k) {
       const double p = refined[r] + k * 0.1 * o.p_step;
       if (k != 0 && p >= o.p_min && p <= o.p_max) {
-        visit(p);
+        found.visit(fitter, p);
       }
     }
     if (!keep_going(0.8 + 0.1 * static_cast<double>(r + 1) / static_cast<double>(refined.size()))) {
       return std::nullopt;
     }
   }
+  return found;
+}
+
+CalibrationScore best_score(const std::vector<Candidate>& candidates) {
   CalibrationScore best = candidates.front().along_K.score;
   for (const Candidate& c : candidates) {
     best = better(c.along_K.score, best) ? c.along_K.score : best;
   }
-  FittedConstants fit;
-  fit.score = best;
+  return best;
+}
+
+// The extent of the constants that reach the best score, and the candidates at its lowest and
+// highest p, into `fit`.
+void bound_best(const std::vector<Candidate>& candidates, const CalibrationScore& best,
+                FittedConstants& fit) {
   fit.best_K_min = fit.best_p_min = kInfinity;
   fit.best_K_max = fit.best_p_max = 0.0;
-  double robustness = -kInfinity;
-  double log_K = 0.0;
-  double p = 1.0;
   const Candidate* lowest_p = nullptr;
   const Candidate* highest_p = nullptr;
   for (const Candidate& c : candidates) {
@@ -461,19 +477,47 @@ std::optional<FittedConstants> fit_K_and_p(const Fitter& fitter, const Calibrati
     fit.best_K_max = std::max(fit.best_K_max, std::exp(c.along_K.hi));
     fit.best_p_min = std::min(fit.best_p_min, c.p);
     fit.best_p_max = std::max(fit.best_p_max, c.p);
-    const double u = c.along_K.middle();
-    const std::vector<Segment> along_p_all = fitter.sweep_p(u, o.p_min, o.p_max);
-    const Segment* along_p = segment_containing(along_p_all, c.p);
-    const double per_p = fitter.mean_abs_log_s(u);
-    const double r = std::min({c.p * (u - c.along_K.lo), c.p * (c.along_K.hi - u),
-                               per_p * (c.p - along_p->lo), per_p * (along_p->hi - c.p)});
-    if (r > robustness) {
-      robustness = r;
-      log_K = u;
+  }
+  for (const Candidate* end : {lowest_p, highest_p}) {
+    fit.equally_good_ends.push_back({std::exp(end->along_K.middle()), end->p});
+  }
+}
+
+// How far a candidate's middle lies from the nearest edge of its plateau, along ln K and along p
+// (p's distance scaled to the change of ln s^p it makes).
+double robustness(const Fitter& fitter, const CalibrationOptions& o, const Candidate& c) {
+  const double u = c.along_K.middle();
+  const std::vector<Segment> along_p_all = fitter.sweep_p(u, o.p_min, o.p_max);
+  const Segment* along_p = segment_containing(along_p_all, c.p);
+  const double per_p = fitter.mean_abs_log_s(u);
+  return std::min({c.p * (u - c.along_K.lo), c.p * (c.along_K.hi - u), per_p * (c.p - along_p->lo),
+                   per_p * (along_p->hi - c.p)});
+}
+
+// (ln K, p) of the best-scoring candidate furthest inside its plateau.
+std::pair<double, double> most_robust(const Fitter& fitter, const CalibrationOptions& o,
+                                      const std::vector<Candidate>& candidates,
+                                      const CalibrationScore& best) {
+  double most = -kInfinity;
+  double log_K = 0.0;
+  double p = 1.0;
+  for (const Candidate& c : candidates) {
+    if (!same_score(c.along_K.score, best)) {
+      continue;
+    }
+    const double r = robustness(fitter, o, c);
+    if (r > most) {
+      most = r;
+      log_K = c.along_K.middle();
       p = c.p;
     }
   }
-  // Centre along p, then along ln K, a few times: each move stays on the same plateau.
+  return {log_K, p};
+}
+
+// Centre along p, then along ln K, a few times: each move stays on the same plateau.
+void centre_on_plateau(const Fitter& fitter, const CalibrationOptions& o,
+                       const CalibrationScore& best, double& log_K, double& p) {
   for (int round = 0; round < 3; ++round) {
     const std::vector<Segment> along_p_all = fitter.sweep_p(log_K, o.p_min, o.p_max);
     const Segment* along_p = segment_containing(along_p_all, p);
@@ -486,6 +530,25 @@ std::optional<FittedConstants> fit_K_and_p(const Fitter& fitter, const Calibrati
     p = p_next;
     log_K = along_K->middle();
   }
+}
+
+// K and p: a coarse grid in p with every plateau along ln K at each p, then a grid ten times finer
+// in p around the best p values (a narrow plateau between two coarse p values is found there),
+// then, of the constants that reach the best score, those nearest the paper's form (p closest to
+// 1), centred in their plateau along both coordinates. Where the data cannot tell p apart (the
+// best score holds along a valley of (K, p)), that departs from the paper no further than they
+// demand, instead of drifting to whichever end of the valley is widest.
+std::optional<FittedConstants> fit_K_and_p(const Fitter& fitter, const CalibrationOptions& o,
+                                           const std::function<bool(double)>& keep_going) {
+  const std::optional<PlateausAlongP> found = search_along_p(fitter, o, keep_going);
+  if (!found) {
+    return std::nullopt;
+  }
+  const CalibrationScore best = best_score(found->candidates);
+  FittedConstants fit;
+  bound_best(found->candidates, best, fit);
+  auto [log_K, p] = most_robust(fitter, o, found->candidates, best);
+  centre_on_plateau(fitter, o, best, log_K, p);
   const std::vector<Segment> along_K_all = fitter.sweep_K(p);
   const std::vector<Segment> along_p_all = fitter.sweep_p(log_K, o.p_min, o.p_max);
   const Segment along_K = *segment_containing(along_K_all, log_K);
@@ -497,9 +560,6 @@ std::optional<FittedConstants> fit_K_and_p(const Fitter& fitter, const Calibrati
   fit.p_low = along_p.lo;
   fit.p_high = along_p.hi;
   fit.score = fitter.score_at(log_K, p);
-  for (const Candidate* end : {lowest_p, highest_p}) {
-    fit.equally_good_ends.push_back({std::exp(end->along_K.middle()), end->p});
-  }
   return fit;
 }
 
