@@ -319,12 +319,13 @@ def check_touch(args, root, problems):
               f"a tap at 3/4 of the h slider left h at {state['parameters']['h_mm']} (was {h_before})")
         check(problems, abs(state["sliders"]["h"]["handle"][0] - x) <= 3,
               "the tapped slider's handle is not where the finger was")
-        # A one-finger drag on a slider drags it.
+        # A one-finger drag on a slider drags it. Every move is longer than the page's still
+        # finger (10 px), so that a slow machine's frames cannot turn the drag into a long press.
         x, y = slider_css(state, "w", 1)
         w_before = state["parameters"]["w_N_per_mm2"]
         page.touch("touchStart", [(x, y)])
         for step in range(1, 6):
-            page.touch("touchMove", [(x + 8 * step, y)])
+            page.touch("touchMove", [(x + 12 * step, y)])
             page.settle(1)
         page.touch("touchEnd", [])
         state = page.settle()
@@ -335,7 +336,7 @@ def check_touch(args, root, problems):
         yaw_before = state["camera"]["yaw_rad"]
         page.touch("touchStart", [(cx, cy)])
         for step in range(1, 6):
-            page.touch("touchMove", [(cx + 10 * step, cy)])
+            page.touch("touchMove", [(cx + 12 * step, cy)])
             page.settle(1)
         page.touch("touchEnd", [])
         state = page.settle()
