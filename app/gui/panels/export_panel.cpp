@@ -1,6 +1,7 @@
 #include "app/gui/panels/export_panel.hpp"
 
 #include <filesystem>
+#include <functional>
 #include <iterator>
 #include <string>
 #include <utility>
@@ -85,27 +86,83 @@ std::optional<ExportPanel::PictureRequest> ExportPanel::take_picture_request() {
   return std::exchange(picture_, std::nullopt);
 }
 
+namespace {
+
+// The save dialog's answer for a file made by `write`: written at the chosen path and said in the
+// status line, or the reason it was not.
+FileDialog::Chosen write_and_say(UiStatus& status,
+                                 std::function<void(const std::filesystem::path&)> write) {
+  return [&status, write = std::move(write)](
+             const std::filesystem::path& path) -> std::optional<std::string> {
+    try {
+      write(path);
+    } catch (const std::exception& e) {
+      return std::string("Not exported: ") + e.what();
+    }
+    status.notify("Wrote " + path.string(), false);
+    return std::nullopt;
+  };
+}
+
+}  // namespace
+
 void ExportPanel::menu(Document& document, UiStatus& status, const ClothStyle& style,
                        FileDialog& files, bool sweep_shown) {
+  file_items(document, status, style, files);
+  ImGui::Separator();
+  picture_items(document, status, files, sweep_shown);
+}
+
+void ExportPanel::file_items(Document& document, UiStatus& status, const ClothStyle& style,
+                             FileDialog& files) {
   Scene& scene = document.scene();
   const std::string& name = document.loaded().name;
-  // The files are written when the dialog's answer comes, from the scene as it is then.
-  const auto save_as = [&](const char* title, const char* extension, auto make) {
+  for (const ExportFormat& format : kExportFormats) {
+    const std::string label = std::string(format.menu_label) + "...";
+    if (!ImGui::MenuItem(label.c_str())) {
+      continue;
+    }
+    const std::string extension(format.extension);
+    // The file is written when the dialog's answer comes, from the scene as it is then.
+    const auto make = [&scene, style, name, &format] {
+      // The mesh as the 3D view shows it (with the breeze), built only for a mesh format.
+      DeformedGrid mesh;
+      ExportSource source{.title = name};
+      if (format.content == ExportFormat::Content::mesh) {
+        mesh = mesh_as_shown(scene, style);
+        source.mesh = &mesh;
+      } else {
+        source.lines = &scene.fold_lines();
+        source.solution = &scene.solution();
+      }
+      return format.write(source);
+    };
     files.open({FileDialog::Mode::save,
-                title,
+                "Export " + std::string(format.what),
                 std::string(kStem) + extension,
                 {extension},
-                [&status, make](const std::filesystem::path& path) -> std::optional<std::string> {
-                  try {
-                    write_file_atomically(path, make());
-                  } catch (const std::exception& e) {
-                    return std::string("Not exported: ") + e.what();
-                  }
-                  status.notify("Wrote " + path.string(), false);
-                  return std::nullopt;
-                }},
+                write_and_say(status,
+                              [make](const std::filesystem::path& path) {
+                                write_file_atomically(path, make());
+                              })},
                status);
-  };
+  }
+  if (ImGui::MenuItem("Preset (.json)...")) {
+    // The fabric as a preset file to keep or send, named after the file.
+    files.open({FileDialog::Mode::save,
+                "Export the fabric as a preset",
+                preset_slug(document.loaded().name) + ".json",
+                {".json"},
+                write_and_say(status,
+                              [&document](const std::filesystem::path& path) {
+                                save_preset(preset_to_save(document, path.stem().string()), path);
+                              })},
+               status);
+  }
+}
+
+void ExportPanel::picture_items(const Document& document, UiStatus& status, FileDialog& files,
+                                bool sweep_shown) {
   const auto picture = [&](const char* title, Picture what) {
     files.open({FileDialog::Mode::save,
                 title,
@@ -118,46 +175,6 @@ void ExportPanel::menu(Document& document, UiStatus& status, const ClothStyle& s
                 }},
                status);
   };
-  for (const ExportFormat& format : kExportFormats) {
-    const std::string label = std::string(format.menu_label) + "...";
-    if (!ImGui::MenuItem(label.c_str())) {
-      continue;
-    }
-    const std::string title = "Export " + std::string(format.what);
-    const std::string extension(format.extension);
-    save_as(title.c_str(), extension.c_str(), [&scene, style, name, &format] {
-      // The mesh as the 3D view shows it (with the breeze), built only for a mesh format.
-      DeformedGrid mesh;
-      ExportSource source{.title = name};
-      if (format.content == ExportFormat::Content::mesh) {
-        mesh = mesh_as_shown(scene, style);
-        source.mesh = &mesh;
-      } else {
-        source.lines = &scene.fold_lines();
-        source.solution = &scene.solution();
-      }
-      return format.write(source);
-    });
-  }
-  if (ImGui::MenuItem("Preset (.json)...")) {
-    // The fabric as a preset file to keep or send, named after the file.
-    files.open(
-        {FileDialog::Mode::save,
-         "Export the fabric as a preset",
-         preset_slug(document.loaded().name) + ".json",
-         {".json"},
-         [&document, &status](const std::filesystem::path& path) -> std::optional<std::string> {
-           try {
-             save_preset(preset_to_save(document, path.stem().string()), path);
-           } catch (const std::exception& e) {
-             return std::string("Not exported: ") + e.what();
-           }
-           status.notify("Wrote " + path.string(), false);
-           return std::nullopt;
-         }},
-        status);
-  }
-  ImGui::Separator();
   if (ImGui::MenuItem("Window picture (.png)...")) {
     picture("Export window picture", Picture::window);
   }

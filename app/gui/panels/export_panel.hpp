@@ -42,6 +42,12 @@ class ExportPanel {
   std::optional<PictureRequest> take_picture_request();
 
  private:
+  // The files: one item per export format, and the fabric as a preset.
+  void file_items(Document& document, UiStatus& status, const ClothStyle& style, FileDialog& files);
+  // The pictures: of the window or a part as drawn, or of a view alone at any size.
+  void picture_items(const Document& document, UiStatus& status, FileDialog& files,
+                     bool sweep_shown);
+
   std::optional<PictureRequest> picture_;
   bool picture_ready_ = false;
   // The picture dialog: asked to open, and what it holds (kept for the next picture).
