@@ -138,12 +138,7 @@ class BackgroundJob {
   // work has returned or thrown (and the result can be taken): the frame loop's wake-up.
   template <class Work>
   void start(Work work, std::function<void()> on_done = {}) {
-    stop();
-    token_.cancel_ = false;
-    token_.progress_ = 0.0;
-    finished_ = false;
-    result_.reset();
-    error_ = nullptr;
+    restart();
     auto run = [this, work = std::move(work), on_done = std::move(on_done)]() mutable {
       try {
         result_.emplace(work(token_));
@@ -186,12 +181,7 @@ class BackgroundJob {
           std::move(on_done));
       return;
     }
-    stop();
-    token_.cancel_ = false;
-    token_.progress_ = 0.0;
-    finished_ = false;
-    result_.reset();
-    error_ = nullptr;
+    restart();
     started_ = true;
     slices_id_ =
         JobSlices::instance().add([this, steps = std::move(steps), on_done = std::move(on_done)](
@@ -263,6 +253,16 @@ class BackgroundJob {
   }
 
  private:
+  // A job still running is cancelled and waited for, and what it left is dropped.
+  void restart() {
+    stop();
+    token_.cancel_ = false;
+    token_.progress_ = 0.0;
+    finished_ = false;
+    result_.reset();
+    error_ = nullptr;
+  }
+
   void join() {
     if (thread_.joinable()) {
       thread_.join();

@@ -36,6 +36,8 @@ import tempfile
 import time
 import urllib.request
 
+from page_test import free_port, serve_folder
+
 
 class DevTools:
     """One websocket to a page target; send() waits for its answer, events are dropped."""
@@ -122,18 +124,8 @@ class Page:
             target = os.path.join(serve, name)
             if not os.path.exists(target):
                 os.symlink(os.path.abspath(os.path.join(args.site, name)), target)
-        with socket.socket() as s:
-            s.bind(("127.0.0.1", 0))
-            port = s.getsockname()[1]
-        self.server = subprocess.Popen(
-            [sys.executable, "-m", "http.server", "--bind", "127.0.0.1", str(port), "-d", serve],
-            stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
-        for _ in range(100):
-            try:
-                socket.create_connection(("127.0.0.1", port), timeout=0.1).close()
-                break
-            except OSError:
-                time.sleep(0.05)
+        port = free_port()
+        self.server = serve_folder(serve, port)
         profile = tempfile.mkdtemp(prefix="profile_", dir=root)
         self.url = f"http://127.0.0.1:{port}/index.html{query}"
         self.browser = subprocess.Popen(

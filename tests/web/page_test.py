@@ -33,6 +33,20 @@ def free_port():
         return s.getsockname()[1]
 
 
+def serve_folder(folder, port):
+    """A static server of `folder` on 127.0.0.1:`port`, once it answers; the caller ends it."""
+    server = subprocess.Popen(
+        [sys.executable, "-m", "http.server", "--bind", "127.0.0.1", str(port), "-d", folder],
+        stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    for _ in range(100):
+        try:
+            socket.create_connection(("127.0.0.1", port), timeout=0.1).close()
+            break
+        except OSError:
+            time.sleep(0.05)
+    return server
+
+
 def lookup(report, dotted):
     value = report
     for part in dotted.split("."):
@@ -79,16 +93,8 @@ def main():
         home = os.path.join(root, "home")
         os.mkdir(home)
         port = free_port()
-        server = subprocess.Popen(
-            [sys.executable, "-m", "http.server", "--bind", "127.0.0.1", str(port), "-d", serve],
-            stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+        server = serve_folder(serve, port)
         try:
-            for _ in range(100):
-                try:
-                    socket.create_connection(("127.0.0.1", port), timeout=0.1).close()
-                    break
-                except OSError:
-                    time.sleep(0.05)
             url = f"http://127.0.0.1:{port}/{page}{args.query}"
             started = time.monotonic()
             dom = subprocess.run(
