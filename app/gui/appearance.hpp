@@ -132,7 +132,7 @@ class Appearance {
   // fonts.
   bool pending() const {
     return !applied_ || applied_scale_percent_ != scale_percent_ ||
-           applied_light_theme_ != light_theme_;
+           applied_light_theme_ != light_theme_ || applied_pixel_ratio_ != pixel_ratio_;
   }
   // Ctrl + / Ctrl - / Ctrl 0 within a frame: requests the new scale.
   void handle_shortcuts();
