@@ -1968,7 +1968,7 @@ TEST_F(ExplorerTest, EveryPanelDrawsAtAnySizeDownToOnePixelAndComesBack) {
     pin_as_b(document(), status());
     std::vector<std::string> presented = {"none"};
     for (const std::unique_ptr<Panel>& panel : explorer_->panels()) {
-      if (panel->tile()) {
+      if (Layout::tiled(*panel)) {
         presented.push_back(panel->key());
       }
     }
@@ -2906,7 +2906,7 @@ TEST_F(ExplorerTest, ThePresentedViewsStripOfInputsChangesTheFabricWithoutLeavin
             0);
   EXPECT_NEAR(std::log10(explorer_->edited().fabric.weight_N_per_mm2 / w1), -0.001 * slider_decades,
               1e-9);
-  EXPECT_EQ(explorer_->presented(), Tile::fold_plot);
+  EXPECT_EQ(explorer_->presented(), "fold_plot");
 
   // Twice as heavy, typed with its unit.
   ASSERT_EQ(script({{{"click", "w"}, {"at", 0.5}, {"ctrl", true}},
@@ -2917,7 +2917,7 @@ TEST_F(ExplorerTest, ThePresentedViewsStripOfInputsChangesTheFabricWithoutLeavin
   const InputSpec& w = *find_input("w");
   EXPECT_EQ(explorer_->parameters_panel().shown(document(), w), "306 g/m²");
   EXPECT_TRUE(document().issues().empty());
-  EXPECT_EQ(explorer_->presented(), Tile::fold_plot);
+  EXPECT_EQ(explorer_->presented(), "fold_plot");
 
   // Refused: the reason under the strip, above the view, as at the panel's foot.
   ASSERT_EQ(script({{{"click", "w"}, {"at", 0.5}, {"ctrl", true}},
@@ -2929,7 +2929,7 @@ TEST_F(ExplorerTest, ThePresentedViewsStripOfInputsChangesTheFabricWithoutLeavin
   const PanelRect refused = rect_of("fold_plot");
   EXPECT_LE(position_of("must be between").y, refused.pos.y) << last_text_;
   EXPECT_GT(refused.pos.y, with_strip.pos.y) << "the strip grew by the reason's lines";
-  EXPECT_EQ(explorer_->presented(), Tile::fold_plot);
+  EXPECT_EQ(explorer_->presented(), "fold_plot");
   ASSERT_EQ(script({{{"click", "w"}, {"at", 0.5}, {"ctrl", true}},
                     {{"type", "heavy"}},
                     {{"key", "enter"}},
@@ -2945,7 +2945,7 @@ TEST_F(ExplorerTest, ThePresentedViewsStripOfInputsChangesTheFabricWithoutLeavin
   ASSERT_EQ(script({{{"click", Explorer::kHideInputsLabel}}, {{"frames", 2}}}), 0);
   EXPECT_TRUE(explorer_->parameters_panel().slider_places().empty());
   EXPECT_LT(rect_of("fold_plot").pos.y, with_strip.pos.y);
-  EXPECT_EQ(explorer_->presented(), Tile::fold_plot);
+  EXPECT_EQ(explorer_->presented(), "fold_plot");
   explorer_->save_session_now();
   open_explorer("equations", {}, session, true);
   EXPECT_FALSE(explorer_->layout().presents_inputs());
@@ -3533,7 +3533,7 @@ TEST_F(ExplorerTest, EveryPanelHasADistinctNameAndTheReportNamesComeFromTheList)
     EXPECT_FALSE(std::string(panel->key()).empty());
     names.emplace_back(panel->name());
     keys.emplace_back(panel->key());
-    if (panel->tile()) {
+    if (Layout::tiled(*panel)) {
       tiled.emplace_back(panel->key());
     }
   }
@@ -3557,7 +3557,7 @@ TEST_F(ExplorerTest, EveryPanelHasADistinctNameAndTheReportNamesComeFromTheList)
   // Each title is the one its window shows.
   const std::string text = frame();
   for (const std::unique_ptr<Panel>& panel : explorer_->panels()) {
-    if (panel->tile()) {
+    if (Layout::tiled(*panel)) {
       EXPECT_NE(text.find(panel->name()), std::string::npos) << panel->name();
     }
   }

@@ -135,16 +135,16 @@ std::optional<std::string> Explorer::set_view(std::string_view key, std::string_
   }
   if (key == "present") {
     if (value == "none") {
-      present(std::nullopt);
+      layout_.present(nullptr);
+      return std::nullopt;
+    }
+    if (const Panel* tiled = tiled_panel(value)) {
+      layout_.present(tiled);
       return std::nullopt;
     }
     std::string known = "none";
     for (const std::unique_ptr<Panel>& panel : panels_) {
-      if (const std::optional<Tile> tile = panel->tile()) {
-        if (value == panel->key()) {
-          present(tile);
-          return std::nullopt;
-        }
+      if (Layout::tiled(*panel)) {
         known += std::string(", ") + panel->key();
       }
     }
@@ -190,10 +190,8 @@ std::string Explorer::link() const {
   const auto add = [&out](std::string_view key, const std::string& value) {
     out += "&" + std::string(key) + "=" + percent_encode(value);
   };
-  for (const std::unique_ptr<Panel>& panel : panels_) {
-    if (layout_.presented() && panel->tile() == layout_.presented()) {
-      add(kLinkPresentKey, panel->key());
-    }
+  if (const Panel* presented = layout_.presented()) {
+    add(kLinkPresentKey, presented->key());
   }
   if (appearance_.light_theme()) {
     add(kLinkThemeKey, "light");
@@ -409,12 +407,12 @@ void Explorer::view_menu() {
   ImGui::MenuItem("Pipeline stats", nullptr, &show_stats_);
   if (layout_.presented()) {
     if (ImGui::MenuItem("Back to the tiles", "Esc")) {
-      layout_.request_present(std::nullopt);
+      layout_.request_present(nullptr);
     }
   } else if (ImGui::BeginMenu("Present (fill the window)")) {
     for (const std::unique_ptr<Panel>& panel : panels_) {
-      if (const std::optional<Tile> tile = panel->tile(); tile && ImGui::MenuItem(panel->name())) {
-        layout_.request_present(tile);
+      if (Layout::tiled(*panel) && ImGui::MenuItem(panel->name())) {
+        layout_.request_present(panel.get());
       }
     }
     ImGui::EndMenu();
@@ -439,15 +437,15 @@ void Explorer::handle_escape() {
   // A floating window (the introduction) closes itself on Escape while it has the focus.
   if (const ImGuiWindow* focused = ImGui::GetCurrentContext()->NavWindow; focused != nullptr) {
     for (const std::unique_ptr<Panel>& panel : panels_) {
-      if (!panel->tile() && panel->window_label() == focused->RootWindow->Name) {
+      if (!Layout::tiled(*panel) && panel->window_label() == focused->RootWindow->Name) {
         return;
       }
     }
   }
   if (ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId)) {
     ImGui::ClosePopupsExceptModals();
-  } else if (layout_.presented()) {
-    layout_.present(std::nullopt);
+  } else if (layout_.presented() != nullptr) {
+    layout_.present(nullptr);
   }
 }
 
@@ -474,11 +472,12 @@ float Explorer::presentation_bar() {
   text_height += static_cast<float>(lines.size() - 1) * style.ItemSpacing.y;
   // The inputs under the read-out, for a "what if" without leaving the view; not over the
   // Parameters panel itself.
-  const bool strip = layout_.presents_inputs() && layout_.presented() != Tile::parameters;
+  const bool presents_parameters = layout_.presented() == &panel<ParametersPanel>();
+  const bool strip = layout_.presents_inputs() && !presents_parameters;
   if (strip) {
     text_height +=
         style.ItemSpacing.y + panel<ParametersPanel>().strip_height(document_, available);
-  } else if (layout_.presented() != Tile::parameters) {
+  } else if (!presents_parameters) {
     panel<ParametersPanel>().forget_slider_places();
   }
   const float height = std::ceil(text_height + 2.0f * style.WindowPadding.y);
@@ -536,15 +535,15 @@ float Explorer::main_menu() {
       panel<IntroWindow>().open();
     }
     // One click from the menu bar while the user's own arrangement is shown.
-    const bool presenting = layout_.presented().has_value();
+    const bool presenting = layout_.presented() != nullptr;
     if ((!layout_.automatic() || layout_.splits().any()) && !presenting &&
         ImGui::MenuItem("Reset layout")) {
       layout_.reset();
     }
     if (presenting && ImGui::MenuItem("Back to the tiles (Esc)")) {
-      layout_.request_present(std::nullopt);
+      layout_.request_present(nullptr);
     }
-    if (presenting && layout_.presented() != Tile::parameters &&
+    if (presenting && layout_.presented() != &panel<ParametersPanel>() &&
         ImGui::MenuItem(layout_.presents_inputs() ? kHideInputsLabel : kShowInputsLabel)) {
       layout_.set_presents_inputs(!layout_.presents_inputs());
     }
@@ -570,7 +569,7 @@ void Explorer::frame() {
   handle_escape();
   menu_height_ = main_menu();
   layout_.begin_frame(menu_height_);
-  if (layout_.presented()) {
+  if (layout_.presented() != nullptr) {
     layout_.set_presented_top(presentation_bar());
   }
   PanelContext context{
@@ -579,11 +578,12 @@ void Explorer::frame() {
     if (!layout_.shows(*panel)) {
       continue;  // hidden behind the presented one, and not drawn
     }
-    if (panel->tile()) {
+    const bool tiled = Layout::tiled(*panel);
+    if (tiled) {
       layout_.place(*panel);
     }
     panel->draw(context);
-    if (panel->tile()) {
+    if (tiled) {
       layout_.present_button(*panel);
     }
   }

@@ -108,6 +108,15 @@ class Explorer {
   P& panel() const {
     return find_panel<P>(panels_);
   }
+  // The tiled panel with this key, or null.
+  const Panel* tiled_panel(std::string_view key) const {
+    for (const std::unique_ptr<Panel>& p : panels_) {
+      if (Layout::tiled(*p) && key == p->key()) {
+        return p.get();
+      }
+    }
+    return nullptr;
+  }
   const AnalysisPanel& analysis() const { return panel<AnalysisPanel>(); }
   const PresetsPanel& presets() const { return panel<PresetsPanel>(); }
   const ParametersPanel& parameters_panel() const { return panel<ParametersPanel>(); }
@@ -136,8 +145,12 @@ class Explorer {
   bool panels_fill_window() const { return layout_.fills_window(); }
   void reset_layout() { layout_.reset(); }
   const LayoutSplits& layout_splits() const { return layout_.splits(); }
-  void present(std::optional<Tile> tile) { layout_.present(tile); }
-  std::optional<Tile> presented() const { return layout_.presented(); }
+  // Presents the tiled panel with this key ("fold_plot"); an unknown key returns to the tiles.
+  void present(std::string_view key) { layout_.present(tiled_panel(key)); }
+  // The presented panel's key, empty while the tiles are shown.
+  std::string presented() const {
+    return layout_.presented() != nullptr ? layout_.presented()->key() : "";
+  }
   // Where the link goes: the platform's (make_page_link()); the desktop's until set.
   void set_page_link(std::unique_ptr<PageLink> link) { page_link_ = std::move(link); }
   // The fabric A as a link's fragment (core/io/link.hpp: every input, as edited, refused or not),

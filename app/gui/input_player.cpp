@@ -320,12 +320,7 @@ json user_presets_json(const Explorer& explorer) {
 }
 
 json layout_json(Explorer& explorer) {
-  std::string presented;
-  for (const std::unique_ptr<Panel>& panel : explorer.panels()) {
-    if (panel->tile() && panel->tile() == explorer.presented()) {
-      presented = panel->key();
-    }
-  }
+  const std::string presented = explorer.presented();
   json panels = json::object();
   for (const auto& [name, rect] : explorer.panel_rects()) {
     panels[name] = {{"x", rect.pos.x}, {"y", rect.pos.y}, {"w", rect.size.x}, {"h", rect.size.y}};

@@ -9,16 +9,10 @@
 namespace foldlab::gui {
 namespace {
 
-// The dragged edges as the session keeps them.
-struct SplitKey {
-  const char* key;
-  float LayoutSplits::*split;
-};
-constexpr SplitKey kSplitKeys[] = {{"layout_left_column", &LayoutSplits::left_column},
-                                   {"layout_parameters", &LayoutSplits::parameters},
-                                   {"layout_views", &LayoutSplits::views},
-                                   {"layout_fold_plot", &LayoutSplits::fold_plot},
-                                   {"layout_results", &LayoutSplits::results}};
+// A tiled panel's place in the arrays indexed by tile.
+std::size_t tile_of(const Panel& panel) {
+  return static_cast<std::size_t>(*tile_index(panel.key()));
+}
 
 }  // namespace
 
@@ -43,8 +37,7 @@ void Layout::set_presented_top(float top_px) {
 }
 
 bool Layout::shows(const Panel& panel) const {
-  const std::optional<Tile> tile = panel.tile();
-  return !tile || !presented_ || *tile == *presented_;
+  return !tiled(panel) || presented_ == nullptr || presented_ == &panel;
 }
 
 void Layout::forget_places() {
@@ -60,43 +53,35 @@ void Layout::reset() {
 }
 
 void Layout::remember(RememberedSettings& settings) {
-  for (const SplitKey& k : kSplitKeys) {
-    settings.add(k.key, &(splits_.*k.split), -1.0f, 1.0f);  // negative: where the tiles put it
+  for (int split = 0; split < kSplitCount; ++split) {
+    // negative: where the tiles put it
+    settings.add(split_key(split), &splits_.fraction[static_cast<std::size_t>(split)], -1.0f, 1.0f);
   }
   settings.add("automatic_layout", &automatic_);
   settings.add("present_inputs", &presents_inputs_);
 }
 
-void Layout::present(std::optional<Tile> tile) {
-  if (presented_ == tile) {
+void Layout::present(const Panel* panel) {
+  if (presented_ == panel) {
     return;
   }
-  const auto window_of = [this](Tile t) -> ImGuiWindow* {
-    for (const std::unique_ptr<Panel>& panel : panels_) {
-      if (panel->tile() == t) {
-        return ImGui::FindWindowByName(panel->window_label().c_str());
-      }
-    }
-    return nullptr;
-  };
-  if (!automatic_ && tile) {
-    if (const ImGuiWindow* window = window_of(*tile)) {
-      restore_[static_cast<int>(*tile)] = PanelRect{window->Pos, window->SizeFull};
+  if (!automatic_ && panel != nullptr) {
+    if (const ImGuiWindow* window = ImGui::FindWindowByName(panel->window_label().c_str())) {
+      restore_[tile_of(*panel)] = PanelRect{window->Pos, window->SizeFull};
     }
   }
-  presented_ = tile;
+  presented_ = panel;
   forget_places();
 }
 
 void Layout::present_button(const Panel& panel) {
-  const Tile tile = *panel.tile();
   const std::string label = panel.window_label();
   ImGuiWindow* window = ImGui::FindWindowByName(label.c_str());
   if (window == nullptr || !window->Active) {
     return;
   }
   ImGui::Begin(label.c_str());  // appends to the panel's window, whose title bar holds the button
-  const bool presented = presented_ == tile;
+  const bool presented = presented_ == &panel;
   const ImRect title = window->TitleBarRect();
   const float side = title.GetHeight();
   // The button sits above the content: it must not widen what the window scrolls over.
@@ -137,7 +122,7 @@ void Layout::present_button(const Panel& panel) {
       !hovered && g.HoveredWindow == window && g.HoveredIdPreviousFrame == 0 &&
       ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left) && title.Contains(ImGui::GetIO().MousePos);
   if (clicked || title_double_clicked) {
-    present_request_ = presented ? std::optional<Tile>() : std::optional<Tile>(tile);
+    present_request_ = presented ? nullptr : &panel;
   }
   if (presented) {
     // Never written to imgui.ini: the user's arrangement keeps this panel's own place.
@@ -152,12 +137,11 @@ bool Layout::follow_user_edits() {
   }
   bool moved = false;
   for (const std::unique_ptr<Panel>& panel : panels_) {
-    const std::optional<Tile> tile = panel->tile();
-    if (!tile || !placed_valid_[static_cast<int>(*tile)]) {
+    if (!tiled(*panel) || !placed_valid_[tile_of(*panel)]) {
       continue;
     }
     const ImGuiWindow* window = ImGui::FindWindowByName(panel->window_label().c_str());
-    const PanelRect& last = placed_[static_cast<int>(*tile)];
+    const PanelRect& last = placed_[tile_of(*panel)];
     if (window == nullptr ||
         (window->Pos.x == last.pos.x && window->Pos.y == last.pos.y &&
          window->SizeFull.x == last.size.x && window->SizeFull.y == last.size.y)) {
@@ -173,8 +157,8 @@ bool Layout::follow_user_edits() {
                          window->Pos.y + window->SizeFull.y};
     for (int edge = 0; edge < 4; ++edge) {
       if (now[edge] != before[edge]) {
-        moved |= drag_split(*tile, static_cast<Edge>(edge), now[edge], ImGui::GetIO().DisplaySize,
-                            menu_height_px_, tiles_, splits_);
+        moved |= drag_split(static_cast<int>(tile_of(*panel)), static_cast<Edge>(edge), now[edge],
+                            tiles_, splits_);
       }
     }
   }
@@ -182,11 +166,10 @@ bool Layout::follow_user_edits() {
 }
 
 void Layout::place(const Panel& panel) {
-  const Tile tile = *panel.tile();
-  const int i = static_cast<int>(tile);
-  PanelRect rect = tiles_[tile];
+  const std::size_t i = tile_of(panel);
+  PanelRect rect = tiles_.tiles[i];
   ImGuiCond when = automatic_ ? ImGuiCond_Always : ImGuiCond_FirstUseEver;
-  if (presented_ == tile) {
+  if (presented_ == &panel) {
     rect = presented_rect_;
     when = ImGuiCond_Always;
   } else if (restore_[i]) {
@@ -197,13 +180,13 @@ void Layout::place(const Panel& panel) {
   ImGui::SetNextWindowPos(rect.pos, when);
   ImGui::SetNextWindowSize(rect.size, when);
   placed_[i] = rect;
-  placed_valid_[i] = automatic_ && !presented_;
+  placed_valid_[i] = automatic_ && presented_ == nullptr;
 }
 
 std::vector<std::pair<std::string, PanelRect>> Layout::panel_rects() const {
   std::vector<std::pair<std::string, PanelRect>> out;
   for (const std::unique_ptr<Panel>& panel : panels_) {
-    if (!panel->tile()) {
+    if (!tiled(*panel)) {
       continue;
     }
     const ImGuiWindow* window = ImGui::FindWindowByName(panel->window_label().c_str());

@@ -12,12 +12,14 @@
 
 #include "app/gui/panel.hpp"
 #include "app/gui/remembered.hpp"
+#include "app/gui/tiles.hpp"
 
 namespace foldlab::gui {
 
 class Layout {
  public:
-  // `panels`: the explorer's list, which outlives the layout; each tiled panel names its tile.
+  // `panels`: the explorer's list, which outlives the layout; a panel whose key is in the tiles'
+  // tree (tiles.cpp) is tiled, the others float.
   explicit Layout(const std::vector<std::unique_ptr<Panel>>& panels) : panels_(panels) {}
 
   // At the frame's start, after the menu bar (`menu_height_px` high): a requested presentation
@@ -26,6 +28,8 @@ class Layout {
   void begin_frame(float menu_height_px);
   // While a panel is presented: the read-out above it ends at `top_px`.
   void set_presented_top(float top_px);
+  // Whether the panel has a tile.
+  static bool tiled(const Panel& panel) { return tile_index(panel.key()).has_value(); }
   // Whether the panel is drawn this frame (a tiled one behind the presented one is not).
   bool shows(const Panel& panel) const;
   // Before a tiled panel's draw: its place in the automatic layout (every frame until the user
@@ -35,12 +39,12 @@ class Layout {
   // presents it, or returns to the tiles.
   void present_button(const Panel& panel);
 
-  // Presentation: one tiled panel fills the window, the other tiles hidden; nullopt returns to
-  // the tiles. Not remembered: a start shows the tiles.
-  void present(std::optional<Tile> tile);
+  // Presentation: one tiled panel fills the window, the other tiles hidden; null returns to the
+  // tiles. Not remembered: a start shows the tiles.
+  void present(const Panel* panel);
   // From a menu or a button, taking effect at the next frame's start.
-  void request_present(std::optional<Tile> tile) { present_request_ = tile; }
-  std::optional<Tile> presented() const { return presented_; }
+  void request_present(const Panel* panel) { present_request_ = panel; }
+  const Panel* presented() const { return presented_; }
   // Whether a presented view has the strip of the cloth's inputs under its read-out (remembered).
   bool presents_inputs() const { return presents_inputs_; }
   void set_presents_inputs(bool shown) { presents_inputs_ = shown; }
@@ -73,10 +77,10 @@ class Layout {
   PanelRect placed_[kTileCount];  // what place() set last, to see the user's moves
   bool placed_valid_[kTileCount] = {};
   LayoutSplits splits_;
-  std::optional<Tile> presented_;
+  const Panel* presented_ = nullptr;
   bool presents_inputs_ = true;
   PanelRect presented_rect_;  // where the presented panel goes this frame
-  std::optional<std::optional<Tile>> present_request_;
+  std::optional<const Panel*> present_request_;
   // In the user's own arrangement, where a presented panel was, to put it back.
   std::optional<PanelRect> restore_[kTileCount];
 };

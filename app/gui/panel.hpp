@@ -64,8 +64,6 @@ class Panel {
   // What the introduction says the panel shows, after its name; null for a panel it does not
   // list.
   virtual const char* introduction() const { return nullptr; }
-  // Where the automatic layout puts it; nullopt for a window that floats over the tiles.
-  virtual std::optional<Tile> tile() const { return std::nullopt; }
   // Once per frame, between ImGui::NewFrame and ImGui::Render.
   virtual void draw(PanelContext& context) = 0;
   // True while background work of the panel is still to show up in what it draws: the frame loop

@@ -35,7 +35,6 @@ class AnalysisPanel : public Panel {
            "the answer changes with one input (Sweep) or two (Regime map).";
   }
   const char* key() const override { return "analysis"; }
-  std::optional<Tile> tile() const override { return Tile::analysis; }
   void draw(PanelContext& context) override;
   // While the regime map is being computed.
   bool busy() const override { return regime_map_.computing(); }

@@ -24,7 +24,6 @@ class ClothViewPanel : public Panel {
            "deepens the folds to see them.";
   }
   const char* key() const override { return "cloth"; }
-  std::optional<Tile> tile() const override { return Tile::cloth; }
   void draw(PanelContext& context) override;
   // Wireframe, fold lines and ground.
   void remember(RememberedSettings& settings) override;

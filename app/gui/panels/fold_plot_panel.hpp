@@ -48,7 +48,6 @@ class FoldPlotPanel : public Panel {
            "blue folds bulge one way out of the plane (z > 0), red ones the other.";
   }
   const char* key() const override { return "fold_plot"; }
-  std::optional<Tile> tile() const override { return Tile::fold_plot; }
   // The context's photo adds its buttons, its backdrop and its clicks to the plot.
   void draw(PanelContext& context) override;
   void remember(RememberedSettings& settings) override;

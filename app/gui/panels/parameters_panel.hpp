@@ -39,7 +39,6 @@ class ParametersPanel : public Panel {
            "a value the model refuses, with the reason below.";
   }
   const char* key() const override { return "parameters"; }
-  std::optional<Tile> tile() const override { return Tile::parameters; }
   void draw(PanelContext& context) override;
   // By input key; a slider hidden last frame keeps its older place.
   const std::map<std::string, SliderPlace, std::less<>>& slider_places() const { return places_; }

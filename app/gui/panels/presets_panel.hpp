@@ -22,7 +22,6 @@ class PresetsPanel : public Panel {
     return "the paper's own cases and a few fabrics to start from.";
   }
   const char* key() const override { return "presets"; }
-  std::optional<Tile> tile() const override { return Tile::presets; }
   void draw(PanelContext& context) override;
   // What the explorer adds at the foot of the panel (the calibration window's button).
   void set_footer(std::function<void()> footer) { footer_ = std::move(footer); }

@@ -25,7 +25,6 @@ class ResultsPanel : public Panel {
            "depth.";
   }
   const char* key() const override { return "results"; }
-  std::optional<Tile> tile() const override { return Tile::results; }
   void draw(PanelContext& context) override;
   // n, Q and z_max with their ranges as the table shows them, one line for A and, while B is
   // pinned, one for B, each with the colour it is drawn in: the read-out over a presented view.

@@ -10,6 +10,7 @@
 #include "app/gui/appearance.hpp"
 #include "app/gui/document.hpp"
 #include "app/gui/renderer.hpp"
+#include "app/gui/tiles.hpp"
 
 namespace foldlab::gui {
 
@@ -21,50 +22,6 @@ void stale_mark(const Document& document);
 
 // A width or height that scales with the UI scale: `ems` times the current font size.
 float ems(float ems);
-
-// A panel's place on the display, in whole pixels (ImGui floors what it is given).
-struct PanelRect {
-  ImVec2 pos{0, 0};
-  ImVec2 size{0, 0};
-};
-// The tiled panels' places, in the order of TiledLayout::rects (each panel names its own with
-// Panel::tile()).
-enum class Tile { parameters, presets, fold_plot, cloth, results, analysis };
-inline constexpr int kTileCount = 6;
-
-// Where the user dragged the tiles' shared edges, each as a fraction of what it divides; a
-// negative fraction leaves that edge where the automatic layout puts it.
-struct LayoutSplits {
-  float left_column = -1.0f;  // the parameters column's width, of the window's width
-  float parameters = -1.0f;   // the parameters panel's height, of the height below the menu bar
-  float views = -1.0f;        // the views' (fold plot and cloth) height, of the same
-  float fold_plot = -1.0f;    // the fold plot's width, of the width right of the column
-  float results = -1.0f;      // the results' width, of the width right of the column
-  bool any() const {
-    return left_column >= 0.0f || parameters >= 0.0f || views >= 0.0f || fold_plot >= 0.0f ||
-           results >= 0.0f;
-  }
-};
-
-// The automatic layout: the display below `top_px` (the menu bar) tiled edge to edge with no gap.
-// Parameters and presets on the left, the 2D plot over the results in the middle and the 3D view
-// over the analysis on the right. The column is wide enough for a slider with its label (in
-// font sizes, so that it follows the UI scale) but never more than a third of the width, and the
-// views' row grows with the font by the height of their toolbars: as the UI scale grows the plots
-// keep their share and the text panels wrap or scroll. `splits` moves the edges the user dragged;
-// every panel keeps at least a few font sizes either way.
-struct TiledLayout {
-  PanelRect rects[kTileCount];
-  const PanelRect& operator[](Tile tile) const { return rects[static_cast<int>(tile)]; }
-};
-TiledLayout tiled_layout(ImVec2 display, float top_px, float font_px,
-                         const LayoutSplits& splits = {});
-
-// A tile's edge that a user dragged to `to_px` (screen coordinates): the split it moves, as a
-// fraction of what it divides. False when that edge is the window's border, which stays.
-enum class Edge { left, right, top, bottom };
-bool drag_split(Tile tile, Edge edge, float to_px, ImVec2 display, float top_px,
-                const TiledLayout& layout, LayoutSplits& splits);
 
 // ImGui::Begin for the tiled panels, with the background filled by the renderer. Call
 // ImGui::End() whatever it returns.

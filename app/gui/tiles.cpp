@@ -1,0 +1,168 @@
+#include "app/gui/tiles.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace foldlab::gui {
+namespace {
+
+// Where an edge goes when the user has not dragged it, from the span it divides.
+
+// 25 font sizes hold a slider's label, the slider and its unit; 40 keep the sliders short enough
+// that a pixel of drag stays a small step on a wide screen. At a large UI scale the sliders
+// shorten (to 6 font sizes, 20 with the longest label) and the views keep the rest: the column
+// takes at most 36 % of the width, or up to 40 % for those 20 font sizes.
+float parameters_column_px(float width, float font_px) {
+  const float bound = std::max(0.36f * width, std::min(20.0f * font_px, 0.40f * width));
+  return std::min(std::clamp(0.30f * width, 25.0f * font_px, 40.0f * font_px), bound);
+}
+// The parameters take most of the column; the presets list scrolls.
+float parameters_height_px(float height, float /*font_px*/) {
+  return 0.62f * height;
+}
+// The views' toolbars are lines of text, so their row grows with the font: 56 % of the height at
+// 100 % on a laptop, up to 70 % at a large UI scale, which keeps the plots' share.
+float views_height_px(float height, float font_px) {
+  return std::min(std::max(0.56f * height, 0.42f * height + 6.0f * font_px), 0.70f * height);
+}
+float half(float span, float /*font_px*/) {
+  return span / 2.0f;
+}
+
+// One side of an edge: a panel's tile or another edge.
+struct Part {
+  bool tile;
+  int index;
+};
+struct Split {
+  const char* key;    // in the session
+  bool side_by_side;  // a vertical edge; otherwise the first part is above the second
+  float (*automatic_px)(float span_px, float font_px);
+  Part first, second;
+};
+
+constexpr std::string_view kTiles[] = {"parameters", "presets", "fold_plot",
+                                       "cloth",      "results", "analysis"};
+// The tree, root first: the parameters over the presets in a column on the left; right of it the
+// 2D plot beside the 3D view, over the results beside the analysis.
+constexpr Split kSplits[] = {
+    {"layout_left_column", true, parameters_column_px, {false, 1}, {false, 2}},
+    {"layout_parameters", false, parameters_height_px, {true, 0}, {true, 1}},
+    {"layout_views", false, views_height_px, {false, 3}, {false, 4}},
+    {"layout_fold_plot", true, half, {true, 2}, {true, 3}},
+    {"layout_results", true, half, {true, 4}, {true, 5}},
+};
+static_assert(std::size(kTiles) == kTileCount && std::size(kSplits) == kSplitCount);
+
+// The least a panel keeps either way of a dragged edge: its title and a few lines (a quarter of
+// the window at most, so that the bounds never cross).
+struct Least {
+  float width_px;
+  float height_px;
+};
+
+// The least extent of a part along x (or y): a tile's least, the sum over an edge across that
+// axis, the larger side along it.
+float least_extent(Part part, bool along_x, const Least& least) {
+  if (part.tile) {
+    return along_x ? least.width_px : least.height_px;
+  }
+  const Split& s = kSplits[part.index];
+  const float a = least_extent(s.first, along_x, least);
+  const float b = least_extent(s.second, along_x, least);
+  return s.side_by_side == along_x ? a + b : std::max(a, b);
+}
+
+void lay_out(Part part, const PanelRect& rect, float font_px, const Least& least,
+             const LayoutSplits& splits, TiledLayout& out) {
+  if (part.tile) {
+    out.tiles[static_cast<std::size_t>(part.index)] = rect;
+    return;
+  }
+  out.splits[static_cast<std::size_t>(part.index)] = rect;
+  const Split& s = kSplits[part.index];
+  const float span = s.side_by_side ? rect.size.x : rect.size.y;
+  const float dragged = splits.fraction[static_cast<std::size_t>(part.index)];
+  const float chosen = dragged >= 0.0f ? dragged * span : s.automatic_px(span, font_px);
+  const float high = span - least_extent(s.second, s.side_by_side, least);
+  const float low = std::min(least_extent(s.first, s.side_by_side, least), high);
+  const float first = std::floor(std::clamp(chosen, low, high));
+  PanelRect a = rect;
+  PanelRect b = rect;
+  if (s.side_by_side) {
+    a.size.x = first;
+    b.pos.x = rect.pos.x + first;
+    b.size.x = rect.size.x - first;
+  } else {
+    a.size.y = first;
+    b.pos.y = rect.pos.y + first;
+    b.size.y = rect.size.y - first;
+  }
+  lay_out(s.first, a, font_px, least, splits, out);
+  lay_out(s.second, b, font_px, least, splits, out);
+}
+
+// The edge that holds `part` as its first or second side.
+std::optional<std::pair<int, bool>> parent_of(Part part) {
+  for (int i = 0; i < kSplitCount; ++i) {
+    const Split& s = kSplits[i];
+    if (s.first.tile == part.tile && s.first.index == part.index) {
+      return std::pair{i, true};
+    }
+    if (s.second.tile == part.tile && s.second.index == part.index) {
+      return std::pair{i, false};
+    }
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
+std::optional<int> tile_index(std::string_view panel_key) {
+  for (int i = 0; i < kTileCount; ++i) {
+    if (kTiles[i] == panel_key) {
+      return i;
+    }
+  }
+  return std::nullopt;
+}
+
+const char* split_key(int split) {
+  return kSplits[split].key;
+}
+
+TiledLayout tiled_layout(ImVec2 display, float top_px, float font_px, const LayoutSplits& splits) {
+  const float width = std::max(std::floor(display.x), 1.0f);
+  const float height = std::max(std::floor(display.y - top_px), 1.0f);
+  const Least least{std::min(8.0f * font_px, 0.25f * width),
+                    std::min(4.0f * font_px, 0.25f * height)};
+  TiledLayout out;
+  lay_out(Part{false, 0}, PanelRect{ImVec2(0.0f, std::floor(top_px)), ImVec2(width, height)},
+          font_px, least, splits, out);
+  return out;
+}
+
+bool drag_split(int tile, Edge edge, float to_px, const TiledLayout& layout, LayoutSplits& splits) {
+  // The nearest edge above the tile in the tree that lies on the dragged side.
+  const bool vertical = edge == Edge::left || edge == Edge::right;
+  const bool tile_is_first = edge == Edge::right || edge == Edge::bottom;
+  Part part{true, tile};
+  while (const std::optional<std::pair<int, bool>> parent = parent_of(part)) {
+    const auto [split, first] = *parent;
+    if (kSplits[split].side_by_side == vertical && first == tile_is_first) {
+      const PanelRect& area = layout.splits[static_cast<std::size_t>(split)];
+      const float origin = vertical ? area.pos.x : area.pos.y;
+      const float span = vertical ? area.size.x : area.size.y;
+      if (span <= 0.0f) {
+        return false;
+      }
+      splits.fraction[static_cast<std::size_t>(split)] =
+          std::clamp((to_px - origin) / span, 0.0f, 1.0f);
+      return true;
+    }
+    part = Part{false, split};
+  }
+  return false;
+}
+
+}  // namespace foldlab::gui
