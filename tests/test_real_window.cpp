@@ -175,3 +175,12 @@ TEST_F(RealWindowTest, ClosingTheTerminalKeepsTheSession) {
 }
 
 }  // namespace
+
+// Three quick taps, faster than a frame (4 ms between key events; a frame takes tens): each is
+// seen, as a person's quick presses of Ctrl+plus or Ctrl+Z must be, though ImGui reads keys once
+// a frame. (With no delay at all xdotool itself drops some of the events.)
+TEST_F(RealWindowTest, QuickTapsAreEachSeen) {
+  const json after =
+      run_window("1280x800", "xdotool key --delay 4 ctrl+plus ctrl+plus ctrl+plus\n");
+  EXPECT_EQ(after.at("appearance").at("scale_percent"), 130) << after.dump();
+}

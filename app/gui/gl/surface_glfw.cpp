@@ -2,6 +2,8 @@
 // The GL header first: GLFW must not pull in one of its own.
 #include <GLFW/glfw3.h>
 
+#include <algorithm>
+#include <deque>
 #include <string>
 #include <vector>
 
@@ -61,18 +63,15 @@ class WindowSurface final : public Surface {
   void keep_open() override { glfwSetWindowShouldClose(window_, GLFW_FALSE); }
 
   void new_frame() override {
-    release_keys_seen_down();
     glfwPollEvents();
+    feed_keys();
     ImGui_ImplGlfw_NewFrame();
-    // The frame about to start sees these keys down; their releases go out before the next
-    // batch of events.
-    releases_due_ = std::move(deferred_releases_);
-    deferred_releases_.clear();
-    pressed_since_frame_ = false;
   }
   void new_frame_without_input() override { ImGui_ImplGlfw_NewFrame(); }
   void wait_events(double timeout_s) override {
-    release_keys_seen_down();
+    if (!keys_.empty()) {
+      return;  // keys still to feed: the next frame is due now
+    }
     glfwWaitEventsTimeout(timeout_s);
   }
 
@@ -91,36 +90,39 @@ class WindowSurface final : public Surface {
   struct KeyEvent {
     int key;
     int scancode;
+    int action;
     int mods;
   };
 
-  void release_keys_seen_down() {
-    for (const KeyEvent& release : releases_due_) {
-      ImGui_ImplGlfw_KeyCallback(window_, release.key, release.scancode, GLFW_RELEASE,
-                                 release.mods);
+  // ImGui 1.86 keeps only whether a key is down when a frame starts, so a key pressed and
+  // released between two frames (a quick tap while the loop sleeps, or xdotool's) would never be
+  // seen, and three quick Ctrl+Z would be one. The keys wait in order and each frame takes them
+  // until one would change a key a second time, or would release a key after a press: every
+  // press is seen by a frame of its own with the modifiers held around it (xdotool's Ctrl+S is
+  // Ctrl down, S down, Ctrl up, S up).
+  void feed_keys() {
+    std::vector<int> changed;
+    bool pressed = false;
+    while (!keys_.empty()) {
+      const KeyEvent& e = keys_.front();
+      if (std::find(changed.begin(), changed.end(), e.key) != changed.end() ||
+          (pressed && e.action == GLFW_RELEASE)) {
+        break;
+      }
+      changed.push_back(e.key);
+      pressed |= e.action == GLFW_PRESS;
+      ImGui_ImplGlfw_KeyCallback(window_, e.key, e.scancode, e.action, e.mods);
+      keys_.pop_front();
     }
-    releases_due_.clear();
   }
 
-  // ImGui 1.86 keeps only whether a key is down when a frame starts, so a chord pressed and
-  // released between two frames (a quick tap while the loop sleeps, or xdotool's) would never be
-  // seen: after a press, releases wait for the next frame, in order. A modifier held from an
-  // earlier frame counts too (Ctrl down, then = down, Ctrl up, = up in one batch).
   static void on_key(GLFWwindow* window, int key, int scancode, int action, int mods) {
     auto* self = static_cast<WindowSurface*>(glfwGetWindowUserPointer(window));
-    if (action == GLFW_PRESS) {
-      self->pressed_since_frame_ = true;
-    } else if (action == GLFW_RELEASE && self->pressed_since_frame_) {
-      self->deferred_releases_.push_back({key, scancode, mods});
-      return;
-    }
-    ImGui_ImplGlfw_KeyCallback(window, key, scancode, action, mods);
+    self->keys_.push_back({key, scancode, action, mods});
   }
 
   GLFWwindow* window_ = nullptr;
-  bool pressed_since_frame_ = false;
-  std::vector<KeyEvent> deferred_releases_;
-  std::vector<KeyEvent> releases_due_;
+  std::deque<KeyEvent> keys_;
 };
 
 }  // namespace
