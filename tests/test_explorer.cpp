@@ -1672,6 +1672,59 @@ TEST_F(ExplorerTest, CtrlSSavesAsThenOverTheUsersPreset) {
   EXPECT_FALSE(document().unsaved());
 }
 
+// A preset holds only accepted values: with a refused value on screen neither Ctrl+S nor the
+// "Save" of the unsaved-edits question writes the file (which would hold the last valid value
+// while the slider shows another), the edits stay and still read as unsaved.
+TEST_F(ExplorerTest, RefusedInputsAreNeverSavedAndTheEditsStayUnsaved) {
+  ASSERT_EQ(explorer_->set_input("h", 900.0), std::nullopt);
+  press('S', true);
+  click("Save");
+  const fs::path written = dir_ / "user-presets" / "table-1-h-1400-mm-edited.json";
+  ASSERT_TRUE(fs::exists(written));
+  ASSERT_EQ(explorer_->set_input("h", 950.0), std::nullopt);
+  ASSERT_EQ(explorer_->set_input("t", -0.5), std::nullopt);  // refused: a thickness is > 0
+  ASSERT_FALSE(document().issues().empty());
+  EXPECT_TRUE(document().unsaved());
+  press('S', true);
+  EXPECT_EQ(load_preset(written).parameters.hanging.height_mm, 900.0) << "the file is kept";
+  EXPECT_EQ(status().message_kind(), MessageKind::error);
+  EXPECT_EQ(status().message().rfind("Not saved: a preset holds only accepted values", 0), 0u)
+      << status().message();
+  EXPECT_NE(status().message().find("thickness"), std::string::npos) << status().message();
+
+  click("Cotton jersey knit");
+  ASSERT_EQ(status().modal_title(), "Unsaved changes");
+  click("Save");
+  EXPECT_EQ(status().modal_title(), "");
+  EXPECT_EQ(document().loaded().name, "Table 1, h = 1400 mm (edited)") << "nothing was loaded";
+  EXPECT_EQ(load_preset(written).parameters.hanging.height_mm, 900.0);
+  EXPECT_EQ(shown().hanging.height_mm, 950.0);
+  EXPECT_EQ(document().edited().fabric.thickness_mm, -0.5);
+  EXPECT_TRUE(document().unsaved());
+}
+
+// Saving is no step to undo, but a step undone after it compares with the file as saved: the
+// state before the save differs from the file now, and reads as unsaved.
+TEST_F(ExplorerTest, UndoPastASaveShowsUnsavedEdits) {
+  ASSERT_EQ(explorer_->set_input("h", 900.0), std::nullopt);
+  press('S', true);
+  click("Save");
+  const fs::path written = dir_ / "user-presets" / "table-1-h-1400-mm-edited.json";
+  ASSERT_TRUE(fs::exists(written));
+  ASSERT_EQ(explorer_->set_input("h", 950.0), std::nullopt);
+  frame();
+  press('S', true);
+  ASSERT_EQ(load_preset(written).parameters.hanging.height_mm, 950.0);
+  EXPECT_FALSE(document().unsaved());
+  press('Z', true);
+  EXPECT_EQ(shown().hanging.height_mm, 900.0);
+  EXPECT_TRUE(document().unsaved()) << "the file holds 950 mm";
+  EXPECT_NE(frame().find("Parameters *"), std::string::npos) << last_text_;
+  press('Y', true);
+  EXPECT_EQ(shown().hanging.height_mm, 950.0);
+  EXPECT_FALSE(document().unsaved());
+}
+
 // Two presets of one name in the list cannot be told apart: a shipped preset's name is refused
 // and the dialog stays open with the name typed.
 TEST_F(ExplorerTest, SaveAsRefusesTheNameOfAShippedPreset) {

@@ -101,9 +101,17 @@ void Document::adopt(const Preset& loaded, std::string path) {
   loaded_ = loaded;
   loaded_path_ = std::move(path);
   status_.mark_session_dirty();
-  // Saving is no edit to undo: the history goes on from the state as saved.
-  step_base_.loaded = loaded_;
+  // Saving is no edit to undo: the history goes on from the state as saved, and a step undone
+  // or redone compares its edits with the file as it now is.
+  const auto saved_over = [this](Snapshot& step) {
+    if (step.loaded_path == loaded_path_) {
+      step.loaded = loaded_;
+    }
+  };
   step_base_.loaded_path = loaded_path_;
+  step_base_.loaded = loaded_;
+  std::for_each(undo_.begin(), undo_.end(), saved_over);
+  std::for_each(redo_.begin(), redo_.end(), saved_over);
 }
 
 std::optional<std::string> Document::take_fabric(const Preset& origin, std::string path,
@@ -124,7 +132,8 @@ void Document::set_loaded(const Preset& origin, std::string path) {
 }
 
 bool Document::unsaved() const {
-  return !(scene_.parameters() == loaded_.parameters);
+  // A refused value on screen is an edit too: loading over it would drop what was typed.
+  return !issues_.empty() || !(scene_.parameters() == loaded_.parameters);
 }
 
 std::optional<std::string> Document::refusal() const {

@@ -94,7 +94,7 @@ class Document {
   // parameters cannot be applied.
   std::optional<std::string> take_fabric(const Preset& origin, std::string path,
                                          const Parameters& parameters);
-  // True when the valid parameters differ from the preset as loaded.
+  // True when the valid parameters differ from the preset as loaded, or an input is refused.
   bool unsaved() const;
   // Counts preset loads, so that views can reframe for a new cloth.
   std::uint64_t loads() const { return loads_; }

@@ -78,8 +78,30 @@ void PresetsPanel::refresh() {
   add_folder(user_presets_dir_, true);
 }
 
+namespace {
+
+// A preset holds only values the model accepts: saved with refused inputs on screen, the file
+// would hold the last valid ones while the sliders show others. Says so, and drops a load that
+// waited for the save (the edits stay).
+bool refused_inputs_stop_the_save(Document& document, UiStatus& status) {
+  const std::optional<std::string> refusal = document.refusal();
+  if (!refusal) {
+    return false;
+  }
+  document.cancel_replace();
+  status.notify("Not saved: a preset holds only accepted values, and these are refused:\n" +
+                    *refusal + "\nChange them, or undo (Ctrl+Z), then save.",
+                MessageKind::error);
+  return true;
+}
+
+}  // namespace
+
 void PresetsPanel::save_as(Document& document, UiStatus& status, const std::string& name,
                            bool overwrite) {
+  if (refused_inputs_stop_the_save(document, status)) {
+    return;
+  }
   const std::string file = preset_slug(name);
   if (file.empty()) {
     status.notify("Give the preset a name with at least one letter or digit.", true);
@@ -115,6 +137,9 @@ bool PresetsPanel::is_user_preset(const std::string& path) const {
 }
 
 void PresetsPanel::save(Document& document, UiStatus& status) {
+  if (refused_inputs_stop_the_save(document, status)) {
+    return;
+  }
   if (is_user_preset(document.loaded_path())) {
     write(document, status, document.loaded().name, document.loaded_path());
     return;
