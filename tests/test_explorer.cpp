@@ -3303,6 +3303,38 @@ TEST_F(ExplorerTest, At1024x640NoControlIsCutOff) {
   }
 }
 
+// At 200 % in a 1280 x 800 window the views' settings took most of their panels (the cloth was
+// drawn 85 px high): they fold behind one button and the views keep the room; a click opens them,
+// and they work as in the row. At 100 % they stay in the row.
+TEST_F(ExplorerTest, AtALargeTextSizeTheViewsSettingsFoldAndTheViewsKeepTheirRoom) {
+  ImGui::GetIO().DisplaySize = ImVec2(1280, 800);
+  frame();
+  frame();
+  EXPECT_FALSE(explorer_->cloth_view().toolbar_folded());
+  EXPECT_FALSE(explorer_->fold_plot().toolbar_folded());
+  explorer_->appearance().request(200, false);
+  for (int i = 0; i < 4; ++i) {
+    frame();
+  }
+  EXPECT_TRUE(explorer_->cloth_view().toolbar_folded());
+  EXPECT_TRUE(explorer_->fold_plot().toolbar_folded());
+  EXPECT_EQ(last_text_.find("wireframe"), std::string::npos) << last_text_;
+  // The least useful height of the cloth: twelve lines of text.
+  EXPECT_GE(explorer_->cloth_view().view_rect().size.y, 12.0f * ImGui::GetFontSize());
+  const bool wireframe = explorer_->cloth_style().wireframe;
+  click("view settings...");
+  click("wireframe");
+  EXPECT_NE(explorer_->cloth_style().wireframe, wireframe);
+  EXPECT_TRUE(explorer_->cloth_view().toolbar_folded()) << "a setting does not unfold the row";
+  press(kEscape);
+  explorer_->appearance().request(100, false);
+  for (int i = 0; i < 4; ++i) {
+    frame();
+  }
+  EXPECT_FALSE(explorer_->cloth_view().toolbar_folded());
+  EXPECT_NE(last_text_.find("wireframe"), std::string::npos) << last_text_;
+}
+
 // The photo loop through real clicks: a PNG that FoldLab drew of the loaded preset's folds (turned
 // 3° and scaled, as a camera might) is typed into the load dialog, its two supports and its folds
 // are clicked where the geometry drew them, and the measurement must give back the solution's n

@@ -389,7 +389,11 @@ void ClothViewPanel::draw(PanelContext& context) {
     camera_framed_ = false;
     camera_user_moved_ = false;
   }
-  const bool reset = toolbar(context);
+  bool reset = false;
+  if (toolbar_row_.begin("view settings...", ems(12.0f))) {
+    reset = toolbar(context);
+    toolbar_row_.end();
+  }
   // The view follows the theme: a light page gets a light backdrop.
   const bool light = style_is_light();
   style_.background =
@@ -430,11 +434,16 @@ void ClothViewPanel::draw(PanelContext& context) {
     draw_view(1, b_origin, document.compare().scene(scene.grid_nx()),
               FrameSize{area.width - size.width, area.height});
   }
-  // Wrapped inside the view, so that a narrow view keeps it off the colour bar beside it.
-  draw->AddText(ImGui::GetFont(), ImGui::GetFontSize(), ImVec2(origin.x + 6, origin.y + 4),
-                light ? IM_COL32(60, 60, 60, 220) : IM_COL32(200, 200, 200, 200),
-                "drag: orbit, right-drag: pan, wheel: zoom", nullptr,
-                static_cast<float>(area.width) - 12.0f);
+  // Wrapped inside the view, so that a narrow view keeps it off the colour bar beside it; over a
+  // small view only while the pointer is on it, not to cover the cloth.
+  const bool hint =
+      static_cast<float>(area.height) >= 12.0f * ImGui::GetFontSize() || ImGui::IsItemHovered();
+  if (hint) {
+    draw->AddText(ImGui::GetFont(), ImGui::GetFontSize(), ImVec2(origin.x + 6, origin.y + 4),
+                  light ? IM_COL32(60, 60, 60, 220) : IM_COL32(200, 200, 200, 200),
+                  "drag: orbit, right-drag: pan, wheel: zoom", nullptr,
+                  static_cast<float>(area.width) - 12.0f);
+  }
   if (compare) {
     name_halves(document, draw, origin, size, area);
   }

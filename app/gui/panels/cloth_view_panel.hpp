@@ -13,6 +13,7 @@
 #include "app/gui/camera.hpp"
 #include "app/gui/document.hpp"
 #include "app/gui/panel.hpp"
+#include "app/gui/panels/view_toolbar.hpp"
 
 namespace foldlab::gui {
 
@@ -48,6 +49,8 @@ class ClothViewPanel : public Panel {
   bool animating() const { return style_.breeze && breeze_playing_; }
   // Where the view's picture was drawn last (display pixels), for a picture of the view alone.
   const PanelRect& view_rect() const { return view_rect_; }
+  // Whether the settings above the view are folded behind a "settings..." button.
+  bool toolbar_folded() const { return toolbar_row_.folded(); }
 
  private:
   // The row of controls above the view; true when "reset camera" was clicked.
@@ -81,6 +84,7 @@ class ClothViewPanel : public Panel {
   char photo_input_[512] = {};
   std::string photo_problem_;
   PanelRect view_rect_;
+  ViewToolbar toolbar_row_;
 };
 
 }  // namespace foldlab::gui

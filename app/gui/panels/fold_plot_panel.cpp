@@ -153,6 +153,10 @@ void FoldPlotPanel::remember(RememberedSettings& settings) {
   settings.add("fold_plot_true_scale", &true_scale_);
 }
 
+// Below this the plot's axis labels and legend squash it: the panel scrolls instead, and the
+// settings above it fold away first.
+constexpr float kLeastPlotHeightEms = 14.0f;
+
 void FoldPlotPanel::draw(PanelContext& context) {
   Document& document = context.document;
   Renderer& renderer = context.renderer;
@@ -165,22 +169,25 @@ void FoldPlotPanel::draw(PanelContext& context) {
   Scene& scene = document.scene();
   const FoldLines& lines = scene.fold_lines();
   const Solution& s = scene.solution();
-  photo.toolbar(context);
-  if (ImGui::SmallButton("autoscale")) {
-    autoscale_ = true;
+  if (toolbar_row_.begin("plot settings...", kLeastPlotHeightEms * ImGui::GetFontSize())) {
+    photo.toolbar(context);
+    if (ImGui::SmallButton("autoscale")) {
+      autoscale_ = true;
+    }
+    same_line_if_fits(checkbox_width(kTrueScaleLabel));
+    ImGui::Checkbox(kTrueScaleLabel, &true_scale_);
+    help_marker_and_hint(
+        "A mm across is as many pixels as a mm down, so that the sag looks as deep as it "
+        "hangs. Off, each axis fills the plot: shallow folds spread apart.",
+        "wheel: zoom, drag: pan, double-click: autoscale");
+    toolbar_row_.end();
   }
-  same_line_if_fits(checkbox_width(kTrueScaleLabel));
-  ImGui::Checkbox(kTrueScaleLabel, &true_scale_);
-  help_marker(
-      "A mm across is as many pixels as a mm down, so that the sag looks as deep as it hangs. "
-      "Off, each axis fills the plot: shallow folds spread apart.");
-  hint_after("wheel: zoom, drag: pan, double-click: autoscale");
   if (lines.stride > 1) {
     ImGui::TextColored(kDimText, "every %d-th of %d lines drawn", lines.stride, s.n + 1);
   }
   // At a large UI scale in a small window the panel scrolls rather than squash the plot under its
   // own axis labels and legend.
-  const float height = std::max(ems(14.0f), ImGui::GetContentRegionAvail().y);
+  const float height = std::max(ems(kLeastPlotHeightEms), ImGui::GetContentRegionAvail().y);
   if (plot_.begin("fold lines", ImVec2(0.0f, height), kFoldPlotX, kFoldPlotY)) {
     if (autoscale_) {
       plot_.request_autoscale();

@@ -9,6 +9,7 @@
 #include "app/gui/document.hpp"
 #include "app/gui/panel.hpp"
 #include "app/gui/panels/photo_overlay.hpp"
+#include "app/gui/panels/view_toolbar.hpp"
 #include "app/gui/plot_widget.hpp"
 #include "app/gui/renderer.hpp"
 
@@ -56,6 +57,8 @@ class FoldPlotPanel : public Panel {
   static constexpr const char* kTrueScaleLabel = "true scale";
   // Where the plot was drawn last (its data area and legend, screen pixels).
   const PlotView& plot_view() const { return plot_.view(); }
+  // Whether the settings above the plot are folded behind a "settings..." button.
+  bool toolbar_folded() const { return toolbar_row_.folded(); }
   // The fold lines of B drawn in the last frame, and their points (0 while no B is pinned).
   int compare_lines_drawn() const { return compare_lines_drawn_; }
   std::size_t compare_points_drawn() const { return compare_points_drawn_; }
@@ -63,6 +66,7 @@ class FoldPlotPanel : public Panel {
  private:
   Plot plot_;
   bool autoscale_ = false;
+  ViewToolbar toolbar_row_;
   bool true_scale_ = true;
   FoldLineSeries series_;
   // B's fold lines, dashed (a gap is a run of NaN points) and left out where they run into each

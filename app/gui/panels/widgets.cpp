@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdarg>
 #include <span>
+#include <string>
 #include <string_view>
 #include <utility>
 #include <vector>
@@ -95,6 +96,21 @@ void hint_after(const char* text) {
     // Lines of a wrapped hint would take the height from the view under them: the hint waits
     // behind a marker instead.
     help_marker(text);
+  }
+}
+
+void help_marker_and_hint(const char* help, const char* hint) {
+  const float spacing = ImGui::GetStyle().ItemSpacing.x;
+  const float right_edge = ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x;
+  const float hint_width = ImGui::CalcTextSize(hint).x;
+  const float marker_end = ImGui::GetItemRectMax().x + spacing + ImGui::CalcTextSize("(?)").x;
+  const float line_start = ImGui::GetWindowPos().x + ImGui::GetStyle().WindowPadding.x;
+  if (marker_end + spacing + hint_width <= right_edge || line_start + hint_width <= right_edge) {
+    help_marker(help);
+    hint_after(hint);
+  } else {
+    // Two markers side by side read as a stutter: one holds both.
+    help_marker((std::string(help) + "\n\n" + hint).c_str());
   }
 }
 

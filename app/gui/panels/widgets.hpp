@@ -40,6 +40,9 @@ float labelled_width(float item_width, const char* label);
 // A dim hint after the last item: on its line when it fits there, else on a line of its own, else
 // as a "(?)" that shows it when hovered.
 void hint_after(const char* text);
+// A help marker after the last item, then hint_after(hint); when the hint would only fit behind
+// a marker of its own, the one marker says both.
+void help_marker_and_hint(const char* help, const char* hint);
 
 // ImGui 1.86 has no SeparatorText.
 void section(const char* title);

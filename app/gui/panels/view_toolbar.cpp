@@ -1,0 +1,48 @@
+#include "app/gui/panels/view_toolbar.hpp"
+
+#include <imgui.h>
+
+namespace foldlab::gui {
+
+bool ViewToolbar::begin(const char* label, float least_view_height_px) {
+  const ImVec2 available = ImGui::GetContentRegionAvail();
+  const float font_px = ImGui::GetFontSize();
+  // The window's width, not the content's, which a scrollbar coming and going would change.
+  const float width_px = ImGui::GetWindowWidth();
+  if (width_px != measured_width_px_ || font_px != measured_font_px_) {
+    // A new width or text size rewraps the row: it is drawn in full once to be measured.
+    measured_width_px_ = width_px;
+    measured_font_px_ = font_px;
+    folded_ = false;
+    decided_height_px_ = -1.0f;
+  } else if (available.y != decided_height_px_) {
+    // Decided again only when the panel's size changes, never because a setting in the row made
+    // it longer: a checkbox must not fold away under the pointer that ticked it.
+    folded_ = available.y - full_height_px_ < least_view_height_px;
+    decided_height_px_ = available.y;
+  }
+  in_popup_ = false;
+  if (!folded_) {
+    start_y_px_ = ImGui::GetCursorPosY();
+    return true;
+  }
+  if (ImGui::Button(label)) {
+    ImGui::OpenPopup(label);
+  }
+  if (ImGui::IsItemHovered()) {
+    ImGui::SetTooltip("The view's settings (the panel is too small to show them beside it)");
+  }
+  in_popup_ = ImGui::BeginPopup(label);
+  return in_popup_;
+}
+
+void ViewToolbar::end() {
+  if (in_popup_) {
+    ImGui::EndPopup();
+    in_popup_ = false;
+  } else if (!folded_) {
+    full_height_px_ = ImGui::GetCursorPosY() - start_y_px_;
+  }
+}
+
+}  // namespace foldlab::gui

@@ -1,0 +1,30 @@
+// A view's row of settings above it, which folds into one "... settings..." button when, drawn in
+// full, it would leave the view under it less than its least useful height: at a large text size
+// in a small window the plot or the cloth keeps the room rather than becoming a sliver under its
+// own controls.
+#pragma once
+
+namespace foldlab::gui {
+
+class ViewToolbar {
+ public:
+  // `label` is the button's ("view settings...") and names the popup it opens. Returns true when
+  // the caller
+  // draws the settings now (in full above the view, or inside the open popup); then call end().
+  bool begin(const char* label, float least_view_height_px);
+  void end();
+  // Whether the settings were folded behind the button in the last frame.
+  bool folded() const { return folded_; }
+
+ private:
+  // The full row's height, measured when it was last drawn in full at this width and text size.
+  float full_height_px_ = 0.0f;
+  float measured_width_px_ = -1.0f;
+  float measured_font_px_ = -1.0f;
+  float decided_height_px_ = -1.0f;  // the panel's free height when folded_ was decided
+  float start_y_px_ = 0.0f;
+  bool folded_ = false;
+  bool in_popup_ = false;
+};
+
+}  // namespace foldlab::gui
