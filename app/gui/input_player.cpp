@@ -551,95 +551,113 @@ bool InputPlayer::start_step(std::size_t index, ImGuiIO& io, Explorer& explorer)
   queue_.clear();
   queue_at_ = 0;
   switch (step_kind(step).id) {
-    case StepKind::Id::drag: {
-      const SliderPlace* place = find_slider(index, step["drag"].get<std::string>(), explorer);
-      if (place == nullptr) {
-        return false;
-      }
-      const ImVec2 from(handle_x(*place, place->fraction), 0.5f * (place->min.y + place->max.y));
-      queue_press(from, ImVec2(from.x + step["dx"].get<float>(), from.y), 6);
-      // Shift held from the press to the release: the fine drag.
-      for (FrameInput& input : queue_) {
-        input.shift = step.value("shift", false);
-      }
-      break;
-    }
+    case StepKind::Id::drag:
+      return drag_slider(index, step, explorer);
     case StepKind::Id::click:
-      if (!(step.contains("at") ? click_slider(index, step, explorer)
-                                : click_label(index, step["click"].get<std::string>()))) {
-        return false;
-      }
-      break;
-    case StepKind::Id::click_photo: {
-      if (explorer.photo().report().at("photo").is_null()) {
-        fail(index, "no photo is loaded");
-        return false;
-      }
-      const ImVec2 at = explorer.photo().screen_of_pixel(step["click_photo"][0].get<double>(),
-                                                         step["click_photo"][1].get<double>());
-      queue_press(at, at, 0);
-      break;
-    }
+      return step.contains("at") ? click_slider(index, step, explorer)
+                                 : click_label(index, step["click"].get<std::string>());
+    case StepKind::Id::click_photo:
+      return click_photo(index, step, explorer);
     case StepKind::Id::key:
       queue_key(*parse_chord(step["key"].get<std::string>()), io);
-      break;
+      return true;
     case StepKind::Id::type:
       queue_text(step["type"].get<std::string>());
-      break;
-    case StepKind::Id::resize: {
-      FrameInput resized;
-      resized.mouse = mouse_;
-      resized.resize = parse_frame_size(step["resize"].get<std::string>());
-      queue_.push_back(resized);
-      resized.resize.reset();
-      queue_.insert(queue_.end(), 3, resized);
-      break;
-    }
-    case StepKind::Id::frames: {
-      FrameInput idle;
-      idle.mouse = mouse_;
-      queue_.assign(step["frames"].get<std::size_t>(), idle);
-      break;
-    }
-    case StepKind::Id::screenshot: {
-      FrameInput shot;
-      shot.mouse = mouse_;
-      shot.screenshot = step["screenshot"].get<std::string>();
-      queue_.push_back(shot);
-      break;
-    }
+      return true;
+    case StepKind::Id::resize:
+      queue_resize(parse_frame_size(step["resize"].get<std::string>()));
+      return true;
+    case StepKind::Id::frames:
+      queue_idle(step["frames"].get<std::size_t>());
+      return true;
+    case StepKind::Id::screenshot:
+      queue_screenshot(step["screenshot"].get<std::string>());
+      return true;
     case StepKind::Id::expect:
       return check_expect(index, step["expect"], explorer);
-    case StepKind::Id::hover_sweep: {
-      const std::string plot = step["hover_sweep"].get<std::string>();
-      const int which = plot == "n" ? 0 : plot == "Q" ? 1 : 2;
-      const SweepPanel& sweep = explorer.analysis().sweep();
-      const std::optional<ImVec2> at = explorer.analysis().sweep_shown()
-                                           ? sweep.screen_point(which, step["x"].get<double>())
-                                           : std::nullopt;
-      if (!at) {
-        fail(index, "the Sweep tab's " + plot + " plot shows no point to hover");
-        return false;
-      }
-      // Held for a few frames: the plot sees the mouse, then its tooltip is drawn.
-      FrameInput hover;
-      hover.mouse = *at;
-      queue_.assign(3, hover);
-      break;
-    }
+    case StepKind::Id::hover_sweep:
+      return hover_sweep(index, step, explorer);
     case StepKind::Id::visible:
-    case StepKind::Id::absent: {
-      // What a person reads, not what the report says: drawn glyphs, in one panel or anywhere.
-      const bool wanted = step.contains("visible");
-      const std::string text = step[wanted ? "visible" : "absent"].get<std::string>();
-      const std::string panel = step.value("in", std::string());
-      if (find_label(text, panel).has_value() != wanted) {
-        fail(index, "\"" + text + "\" is " + (wanted ? "not shown" : "shown") +
-                        (panel.empty() ? "" : " in " + panel));
-        return false;
-      }
-      break;
-    }
+    case StepKind::Id::absent:
+      return check_drawn(index, step);
+  }
+  return true;
+}
+
+bool InputPlayer::drag_slider(std::size_t index, const json& step, Explorer& explorer) {
+  const SliderPlace* place = find_slider(index, step["drag"].get<std::string>(), explorer);
+  if (place == nullptr) {
+    return false;
+  }
+  const ImVec2 from(handle_x(*place, place->fraction), 0.5f * (place->min.y + place->max.y));
+  queue_press(from, ImVec2(from.x + step["dx"].get<float>(), from.y), 6);
+  // Shift held from the press to the release: the fine drag.
+  for (FrameInput& input : queue_) {
+    input.shift = step.value("shift", false);
+  }
+  return true;
+}
+
+bool InputPlayer::click_photo(std::size_t index, const json& step, Explorer& explorer) {
+  if (explorer.photo().report().at("photo").is_null()) {
+    fail(index, "no photo is loaded");
+    return false;
+  }
+  const ImVec2 at = explorer.photo().screen_of_pixel(step["click_photo"][0].get<double>(),
+                                                     step["click_photo"][1].get<double>());
+  queue_press(at, at, 0);
+  return true;
+}
+
+void InputPlayer::queue_resize(std::optional<FrameSize> size) {
+  FrameInput resized;
+  resized.mouse = mouse_;
+  resized.resize = size;
+  queue_.push_back(resized);
+  resized.resize.reset();
+  queue_.insert(queue_.end(), 3, resized);
+}
+
+void InputPlayer::queue_idle(std::size_t frames) {
+  FrameInput idle;
+  idle.mouse = mouse_;
+  queue_.assign(frames, idle);
+}
+
+void InputPlayer::queue_screenshot(const std::string& png_path) {
+  FrameInput shot;
+  shot.mouse = mouse_;
+  shot.screenshot = png_path;
+  queue_.push_back(shot);
+}
+
+bool InputPlayer::hover_sweep(std::size_t index, const json& step, Explorer& explorer) {
+  const std::string plot = step["hover_sweep"].get<std::string>();
+  const int which = plot == "n" ? 0 : plot == "Q" ? 1 : 2;
+  const SweepPanel& sweep = explorer.analysis().sweep();
+  const std::optional<ImVec2> at = explorer.analysis().sweep_shown()
+                                       ? sweep.screen_point(which, step["x"].get<double>())
+                                       : std::nullopt;
+  if (!at) {
+    fail(index, "the Sweep tab's " + plot + " plot shows no point to hover");
+    return false;
+  }
+  // Held for a few frames: the plot sees the mouse, then its tooltip is drawn.
+  FrameInput hover;
+  hover.mouse = *at;
+  queue_.assign(3, hover);
+  return true;
+}
+
+bool InputPlayer::check_drawn(std::size_t index, const json& step) {
+  // What a person reads, not what the report says: drawn glyphs, in one panel or anywhere.
+  const bool wanted = step.contains("visible");
+  const std::string text = step[wanted ? "visible" : "absent"].get<std::string>();
+  const std::string panel = step.value("in", std::string());
+  if (find_label(text, panel).has_value() != wanted) {
+    fail(index, "\"" + text + "\" is " + (wanted ? "not shown" : "shown") +
+                    (panel.empty() ? "" : " in " + panel));
+    return false;
   }
   return true;
 }

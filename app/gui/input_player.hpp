@@ -61,11 +61,20 @@ class InputPlayer {
   void queue_press(ImVec2 from, ImVec2 to, int moves);
   void queue_key(const Chord& chord, const ImGuiIO& io);
   void queue_text(const std::string& text);
+  // A new frame size (nullopt: none), then frames at it.
+  void queue_resize(std::optional<FrameSize> size);
+  void queue_idle(std::size_t frames);
+  void queue_screenshot(const std::string& png_path);
   // Each fails the step (and returns null or false) when what it needs is not on screen.
   const SliderPlace* find_slider(std::size_t index, const std::string& key, Explorer& explorer);
   bool click_slider(std::size_t index, const nlohmann::json& step, Explorer& explorer);
   bool click_label(std::size_t index, const std::string& label);
+  bool drag_slider(std::size_t index, const nlohmann::json& step, Explorer& explorer);
+  bool click_photo(std::size_t index, const nlohmann::json& step, Explorer& explorer);
+  bool hover_sweep(std::size_t index, const nlohmann::json& step, Explorer& explorer);
   bool check_expect(std::size_t index, const nlohmann::json& expect, Explorer& explorer);
+  // A `visible` or `absent` step.
+  bool check_drawn(std::size_t index, const nlohmann::json& step);
 
   std::vector<nlohmann::json> steps_;
   std::size_t next_step_ = 0;

@@ -13,6 +13,69 @@
 
 namespace foldlab::gui {
 
+namespace {
+
+// Eq. 7 (or, for evenly spaced folds, Cerda-Mahadevan's wavelength): the stress ratio s and the
+// step between folds it gives.
+void draw_fold_step(const Solution& s, const Parameters& p, bool even) {
+  const ImVec4 note = kNoteText;
+  const ImVec4 dim = kDimText;
+  const ImVec4 error = kErrorText;
+  const double K = stiffness_constant_K(p);
+  const double t = p.fabric.thickness_mm;
+  section(even ? readable("Cerda-Mahadevan: the wrinkle wavelength λ").c_str()
+               : "eq. 7: critical stress gives Q7");
+  equation_text(nullptr, "s = K E t³ / (w h l²) = %.4g × %.4g × %.4g³ / (%.3g × %.4g × %.5g²)", K,
+                p.fabric.youngs_modulus_MPa, t, p.fabric.weight_N_per_mm2, p.hanging.height_mm,
+                s.span_mm);
+  equation_text(nullptr, "  = %.5g", s.stress_ratio);
+  // A calibrated eq. 7 uses s^p (p = 1 is the paper's form).
+  const double exponent = p.model.stress_exponent_p;
+  const double s_used = exponent == 1.0 ? s.stress_ratio : std::pow(s.stress_ratio, exponent);
+  if (exponent != 1.0) {
+    equation_text(&note, "calibrated form: s^p = %.5g^%.3g = %.5g", s.stress_ratio, exponent,
+                  s_used);
+  }
+  if (even) {
+    wrapped_text(
+        "%s",
+        readable(detail::printf_string(
+                     "λ = l (%s)^(1/4) = %.5g × %.5g^(1/4) = %.2f mm: n counts the folds that fit "
+                     "λ apart down the centre fibre; eq. 5 then lays them out",
+                     exponent == 1.0 ? "s" : "s^p", s.span_mm, s_used, s.count_rule->step))
+            .c_str());
+  } else if (s.Q7) {
+    const double q = *s.Q7;
+    equation_text(nullptr, "(Q7 - 1)² = %s Q7 (Q7 + 1)  ->  Q7 = %.5f",
+                  exponent == 1.0 ? "s" : "s^p", q);
+    equation_text(&dim, "  check: %.6g = %.6g", (q - 1) * (q - 1), s_used * q * (q + 1));
+  } else {
+    equation_text(&error, "s >= 1: no root; at most one fold.");
+  }
+}
+
+void draw_upper_edge(const Solution& s, const Parameters& p) {
+  const double an = s.a_mm.back();
+  section("eq. 8: the upper edge keeps its length L");
+  const double A = std::hypot(an, s.z_max_mm);
+  equation_text(nullptr, "A = √(a_n² + z_max²) = √(%.2f² + %.2f²) = %.2f mm", an, s.z_max_mm, A);
+  equation_text(nullptr, "L′ = (2l/π) √(1+k²) E(k²/(1+k²)), k = π A/l = %.4f",
+                std::numbers::pi * A / s.span_mm);
+  equation_text(nullptr, "   = %.3f mm  vs  L = %.1f mm  (residual %.2e)",
+                upper_edge_length_closed_form(A, s.span_mm), p.hanging.length_mm,
+                s.residual_length);
+}
+
+void draw_centre_fibre(const Solution& s, const Parameters& p) {
+  section("eq. 9: the centre fibre keeps its length h");
+  equation_text(nullptr, "h′ = Σ √((a_i-1 − a_i)² + (2 z_max)²), i = 1…%d", s.n);
+  equation_text(nullptr, "   = %.3f mm  vs  h = %.1f mm  (residual %.2e)",
+                fibre_length(s.a_mm.front(), s.Q, s.n, s.z_max_mm), p.hanging.height_mm,
+                s.residual_height);
+}
+
+}  // namespace
+
 AnalysisPanel::AnalysisPanel(std::filesystem::path presets_dir, std::string initial_tab)
     : initial_tab_(std::move(initial_tab)), sweep_(std::move(presets_dir)) {}
 
@@ -74,91 +137,51 @@ void AnalysisPanel::draw(PanelContext& context) {
 
 void EquationsTab::draw(Document& document) {
   // Each line wraps before an operator rather than run past the panel's edge.
-  const ImVec4 note = kNoteText;
-  const ImVec4 dim = kDimText;
-  const ImVec4 error = kErrorText;
-  const ImVec4 ok = kOkText;
   const Solution& s = document.scene().solution();
   const Parameters& p = document.scene().parameters();
-  const double K = stiffness_constant_K(p);
-  const double t = p.fabric.thickness_mm;
   wrapped_text("The model with today's numbers (mm, MPa, N/mm²).");
-  const WrinkleLaw& law = wrinkle_law(p.model.law);
   const bool even = s.count_rule && s.count_rule->spacing == FoldSpacing::even;
-  section(even ? readable("Cerda-Mahadevan: the wrinkle wavelength λ").c_str()
-               : "eq. 7: critical stress gives Q7");
-  equation_text(nullptr, "s = K E t³ / (w h l²) = %.4g × %.4g × %.4g³ / (%.3g × %.4g × %.5g²)", K,
-                p.fabric.youngs_modulus_MPa, t, p.fabric.weight_N_per_mm2, p.hanging.height_mm,
-                s.span_mm);
-  equation_text(nullptr, "  = %.5g", s.stress_ratio);
-  // A calibrated eq. 7 uses s^p (p = 1 is the paper's form).
-  const double exponent = p.model.stress_exponent_p;
-  const double s_used = exponent == 1.0 ? s.stress_ratio : std::pow(s.stress_ratio, exponent);
-  if (exponent != 1.0) {
-    equation_text(&note, "calibrated form: s^p = %.5g^%.3g = %.5g", s.stress_ratio, exponent,
-                  s_used);
-  }
-  if (even) {
-    wrapped_text(
-        "%s",
-        readable(detail::printf_string(
-                     "λ = l (%s)^(1/4) = %.5g × %.5g^(1/4) = %.2f mm: n counts the folds that fit "
-                     "λ apart down the centre fibre; eq. 5 then lays them out",
-                     exponent == 1.0 ? "s" : "s^p", s.span_mm, s_used, s.count_rule->step))
-            .c_str());
-  } else if (s.Q7) {
-    const double q = *s.Q7;
-    equation_text(nullptr, "(Q7 - 1)² = %s Q7 (Q7 + 1)  ->  Q7 = %.5f",
-                  exponent == 1.0 ? "s" : "s^p", q);
-    equation_text(&dim, "  check: %.6g = %.6g", (q - 1) * (q - 1), s_used * q * (q + 1));
-  } else {
-    equation_text(&error, "s >= 1: no root; at most one fold.");
-  }
+  draw_fold_step(s, p, even);
   if (s.a_mm.empty()) {
     ImGui::Separator();
     wrapped_text("%s", describe(s, p).c_str());
     return;
   }
+  draw_upper_edge(s, p);
+  draw_centre_fibre(s, p);
+  draw_fold_count(s, p, even);
+  equation_text(nullptr, "Q = (a_0/a_n)^(1/n) = %.4f", s.Q);
+}
+
+void EquationsTab::draw_fold_count(const Solution& s, const Parameters& p, bool even) {
+  section("eq. 10: the number of wrinkles");
+  if (!s.count_rule) {
+    equation_text(nullptr, "n = 1 (no Q7: stiff)");
+    return;
+  }
   const double a0 = s.a_mm.front();
   const double an = s.a_mm.back();
-  section("eq. 8: the upper edge keeps its length L");
-  const double A = std::hypot(an, s.z_max_mm);
-  equation_text(nullptr, "A = √(a_n² + z_max²) = √(%.2f² + %.2f²) = %.2f mm", an, s.z_max_mm, A);
-  equation_text(nullptr, "L′ = (2l/π) √(1+k²) E(k²/(1+k²)), k = π A/l = %.4f",
-                std::numbers::pi * A / s.span_mm);
-  equation_text(nullptr, "   = %.3f mm  vs  L = %.1f mm  (residual %.2e)",
-                upper_edge_length_closed_form(A, s.span_mm), p.hanging.length_mm,
-                s.residual_length);
-  section("eq. 9: the centre fibre keeps its length h");
-  equation_text(nullptr, "h′ = Σ √((a_i-1 − a_i)² + (2 z_max)²), i = 1…%d", s.n);
-  equation_text(nullptr, "   = %.3f mm  vs  h = %.1f mm  (residual %.2e)",
-                fibre_length(a0, s.Q, s.n, s.z_max_mm), p.hanging.height_mm, s.residual_height);
-  section("eq. 10: the number of wrinkles");
-  if (s.count_rule) {
-    const double argument = s.count_rule->argument(a0, an);
-    if (even) {
-      equation_text(nullptr, "n = %s = Int[(%.1f - %.2f) / %.2f]",
-                    std::string(law.count_formula()).c_str(), a0, an, s.count_rule->step);
-    } else {
-      equation_text(nullptr, "n = %s = Int[log(%.1f/%.2f) / log %.4f]",
-                    std::string(law.count_formula()).c_str(), a0, an, *s.Q7);
-    }
-    equation_text(nullptr, "  = Int[%.3f] = %d   (Int = %s)", argument, s.n,
-                  std::string(to_string(p.model.int_rounding)).c_str());
-    if (shown_n_ != s.n) {
-      previous_n_ = shown_n_;
-      shown_n_ = s.n;
-    }
-    if (previous_n_ >= 0 && previous_n_ != s.n) {
-      ImGui::PushStyleColor(ImGuiCol_Text, ok);
-      wrapped_text("n changed from %d to %d: the argument of Int[] crossed %s.", previous_n_, s.n,
-                   p.model.int_rounding == IntRounding::nearest ? "a half-integer" : "an integer");
-      ImGui::PopStyleColor();
-    }
+  const WrinkleLaw& law = wrinkle_law(p.model.law);
+  const double argument = s.count_rule->argument(a0, an);
+  if (even) {
+    equation_text(nullptr, "n = %s = Int[(%.1f - %.2f) / %.2f]",
+                  std::string(law.count_formula()).c_str(), a0, an, s.count_rule->step);
   } else {
-    equation_text(nullptr, "n = 1 (no Q7: stiff)");
+    equation_text(nullptr, "n = %s = Int[log(%.1f/%.2f) / log %.4f]",
+                  std::string(law.count_formula()).c_str(), a0, an, *s.Q7);
   }
-  equation_text(nullptr, "Q = (a_0/a_n)^(1/n) = %.4f", s.Q);
+  equation_text(nullptr, "  = Int[%.3f] = %d   (Int = %s)", argument, s.n,
+                std::string(to_string(p.model.int_rounding)).c_str());
+  if (shown_n_ != s.n) {
+    previous_n_ = shown_n_;
+    shown_n_ = s.n;
+  }
+  if (previous_n_ >= 0 && previous_n_ != s.n) {
+    ImGui::PushStyleColor(ImGuiCol_Text, kOkText);
+    wrapped_text("n changed from %d to %d: the argument of Int[] crossed %s.", previous_n_, s.n,
+                 p.model.int_rounding == IntRounding::nearest ? "a half-integer" : "an integer");
+    ImGui::PopStyleColor();
+  }
 }
 
 }  // namespace foldlab::gui

@@ -21,6 +21,9 @@ class EquationsTab {
   void draw(Document& document);
 
  private:
+  // Eq. 10 with the numbers, and why n last changed (the n shown is kept from frame to frame).
+  void draw_fold_count(const Solution& s, const Parameters& p, bool even);
+
   int previous_n_ = -1;
   int shown_n_ = -1;
 };

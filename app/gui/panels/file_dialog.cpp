@@ -21,6 +21,19 @@ std::string lower(std::string text) {
   return text;
 }
 
+bool escape_pressed() {
+  const int escape_key = ImGui::GetKeyIndex(ImGuiKey_Escape);
+  return escape_key >= 0 && ImGui::IsKeyPressed(escape_key, false);
+}
+
+void problem_text(const std::string& problem) {
+  if (!problem.empty()) {
+    ImGui::PushStyleColor(ImGuiCol_Text, kErrorText);
+    wrapped_text("%s", problem.c_str());
+    ImGui::PopStyleColor();
+  }
+}
+
 }  // namespace
 
 fs::path expand_home(std::string_view typed) {
@@ -241,8 +254,7 @@ void FileDialog::draw_without_folders(const std::optional<fs::path>& picked, UiS
   const ImVec2 display = ImGui::GetIO().DisplaySize;
   ImGui::SetNextWindowPos(ImVec2(0.5f * display.x, 0.5f * display.y), ImGuiCond_Appearing,
                           ImVec2(0.5f, 0.5f));
-  const int escape_key = ImGui::GetKeyIndex(ImGuiKey_Escape);
-  const bool escape = escape_key >= 0 && ImGui::IsKeyPressed(escape_key, false);
+  const bool escape = escape_pressed();
   if (!ImGui::BeginPopupModal(
           title, nullptr, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings)) {
     return;
@@ -310,19 +322,29 @@ void FileDialog::draw(UiStatus& status) {
   if (!request_) {
     return;
   }
-  if (!transfer_->browses_folders()) {
-    if (status.modal_title() != request_->title) {
-      close(status);  // another dialog took over
-      return;
-    }
-    draw_without_folders(picked_file, status);
-    return;
-  }
-  const char* title = request_->title.c_str();
   if (status.modal_title() != request_->title) {
     close(status);  // another dialog took over
     return;
   }
+  if (!transfer_->browses_folders()) {
+    draw_without_folders(picked_file, status);
+    return;
+  }
+  const bool escape = escape_pressed();
+  if (!begin_browsing_popup()) {
+    return;
+  }
+  Asked asked;
+  draw_folder(asked);
+  draw_name_field(asked);
+  draw_answer_buttons(asked, escape);
+  problem_text(problem_);
+  act_on(asked, status);
+  ImGui::EndPopup();
+}
+
+bool FileDialog::begin_browsing_popup() {
+  const char* title = request_->title.c_str();
   if (!ImGui::IsPopupOpen(title)) {
     ImGui::OpenPopup(title);
   }
@@ -332,36 +354,35 @@ void FileDialog::draw(UiStatus& status) {
       ImGuiCond_Appearing);
   ImGui::SetNextWindowPos(ImVec2(0.5f * display.x, 0.5f * display.y), ImGuiCond_Appearing,
                           ImVec2(0.5f, 0.5f));
-  const int escape_key = ImGui::GetKeyIndex(ImGuiKey_Escape);
-  const bool escape = escape_key >= 0 && ImGui::IsKeyPressed(escape_key, false);
-  if (!ImGui::BeginPopupModal(title, nullptr, ImGuiWindowFlags_NoSavedSettings)) {
-    return;
-  }
+  return ImGui::BeginPopupModal(title, nullptr, ImGuiWindowFlags_NoSavedSettings);
+}
+
+void FileDialog::draw_folder(Asked& asked) {
   ImGui::TextColored(kDimText, "%s", folder_.string().c_str());
-  const float footer = 3.0f * ImGui::GetFrameHeightWithSpacing() +
-                       (problem_.empty() ? 0.0f : 2.0f * ImGui::GetTextLineHeightWithSpacing());
-  std::optional<fs::path> go_to;
-  std::optional<std::string> picked;
-  if (ImGui::BeginChild("##entries", ImVec2(0.0f, -footer), true)) {
+  const float footer_px = 3.0f * ImGui::GetFrameHeightWithSpacing() +
+                          (problem_.empty() ? 0.0f : 2.0f * ImGui::GetTextLineHeightWithSpacing());
+  if (ImGui::BeginChild("##entries", ImVec2(0.0f, -footer_px), true)) {
     for (const Entry& entry : entries_) {
       const std::string label = entry.folder ? entry.name + "/" : entry.name;
       const bool selected = !entry.folder && entry.name == name_;
       if (ImGui::Selectable(label.c_str(), selected, ImGuiSelectableFlags_AllowDoubleClick)) {
         if (entry.folder) {
-          go_to = entry.name == ".." ? folder_.parent_path() : folder_ / entry.name;
+          asked.go_to = entry.name == ".." ? folder_.parent_path() : folder_ / entry.name;
         } else {
           std::snprintf(name_, sizeof name_, "%s", entry.name.c_str());
           replace_.reset();
           if (ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left)) {
-            picked = entry.name;
+            asked.picked = entry.name;
           }
         }
       }
     }
   }
   ImGui::EndChild();
-  const bool saving = request_->mode == Mode::save;
-  ImGui::TextUnformatted(saving ? "file name" : "file");
+}
+
+void FileDialog::draw_name_field(Asked& asked) {
+  ImGui::TextUnformatted(request_->mode == Mode::save ? "file name" : "file");
   ImGui::SameLine();
   if (focus_name_) {
     ImGui::SetKeyboardFocusHere();
@@ -371,43 +392,43 @@ void FileDialog::draw(UiStatus& status) {
   if (ImGui::InputTextWithHint(
           "##file name", "a name, or a path (~/ is your home folder)", name_, sizeof name_,
           ImGuiInputTextFlags_EnterReturnsTrue | ImGuiInputTextFlags_AutoSelectAll)) {
-    picked = name_;
+    asked.picked = name_;
     focus_name_ = true;
   }
+}
+
+void FileDialog::draw_answer_buttons(Asked& asked, bool escape) {
   if (replace_) {
     ImGui::TextColored(kNoteText, "%s is there already: write over it?",
                        replace_->filename().string().c_str());
     if (ImGui::Button("Replace")) {
-      picked = replace_->string();
+      asked.picked = replace_->string();
     }
     ImGui::SameLine();
     if (ImGui::Button("Keep it")) {
       replace_.reset();
     }
   } else {
-    if (ImGui::Button(saving ? "Save" : "Load")) {
-      picked = name_;
+    if (ImGui::Button(request_->mode == Mode::save ? "Save" : "Load")) {
+      asked.picked = name_;
     }
   }
   ImGui::SameLine();
-  const bool cancel = ImGui::Button("Cancel") || escape;
-  if (!problem_.empty()) {
-    ImGui::PushStyleColor(ImGuiCol_Text, kErrorText);
-    wrapped_text("%s", problem_.c_str());
-    ImGui::PopStyleColor();
-  }
-  if (cancel) {
+  asked.cancel = ImGui::Button("Cancel") || escape;
+}
+
+void FileDialog::act_on(const Asked& asked, UiStatus& status) {
+  if (asked.cancel) {
     ImGui::CloseCurrentPopup();
     close(status);
-  } else if (go_to) {
-    enter(*go_to);
-  } else if (picked) {
-    submit(*picked, status);
+  } else if (asked.go_to) {
+    enter(*asked.go_to);
+  } else if (asked.picked) {
+    submit(*asked.picked, status);
     if (!request_) {
       ImGui::CloseCurrentPopup();
     }
   }
-  ImGui::EndPopup();
 }
 
 }  // namespace foldlab::gui

@@ -72,6 +72,21 @@ class FileDialog {
   // The dialog where the platform browses no folders: a name and "Download", or the picker.
   // `picked`: a file the picker has copied in, taken as chosen.
   void draw_without_folders(const std::optional<std::filesystem::path>& picked, UiStatus& status);
+  // What one frame of the dialog with folders was asked: acted on after its last widget, since
+  // entering a folder or choosing a file changes what the widgets read.
+  struct Asked {
+    std::optional<std::filesystem::path> go_to;  // a folder clicked
+    std::optional<std::string> picked;           // a name or path to submit
+    bool cancel = false;
+  };
+  // The dialog with folders, top to bottom: its popup (false while it is not shown), the folder
+  // and its entries, the name field, then "Save"/"Load" (or the question before replacing a
+  // file) and "Cancel".
+  bool begin_browsing_popup();
+  void draw_folder(Asked& asked);
+  void draw_name_field(Asked& asked);
+  void draw_answer_buttons(Asked& asked, bool escape);
+  void act_on(const Asked& asked, UiStatus& status);
   void download(const std::string& name, UiStatus& status);
   // A file written for a download is delivered once it is there (a picture is written by the
   // frame loop after the dialog closed).

@@ -51,6 +51,12 @@ SupportsFrame supports_frame(const PixelPoint& a, const PixelPoint& b) {
   return {0.5 * (a.x + b.x), 0.5 * (a.y + b.y), dx / distance_px, dy / distance_px, distance_px};
 }
 
+void coloured_text(const ImVec4& colour, const std::string& text) {
+  ImGui::PushStyleColor(ImGuiCol_Text, colour);
+  wrapped_text("%s", text.c_str());
+  ImGui::PopStyleColor();
+}
+
 }  // namespace
 
 PhotoOverlay::PhotoOverlay(PhotoPaths paths) : paths_(std::move(paths)) {}
@@ -417,7 +423,18 @@ void PhotoOverlay::measurement_window(Document& document, UiStatus& status, Rend
   }
   renderer.fill_window_background();
   wrapped_text("Photo: %s (%d x %d px)", photo_path_.c_str(), photo_->width_px, photo_->height_px);
-  const Solution& s = document.scene().solution();
+  draw_scale();
+  section("Measured");
+  draw_measured(document.scene().solution());
+  section("Add to measurements");
+  draw_add_row(document);
+  draw_rows_file(status);
+  section("Fit");
+  draw_fit(document);
+  ImGui::End();
+}
+
+void PhotoOverlay::draw_scale() const {
   if (supports_.size() == 2) {
     const double distance_px =
         std::hypot(supports_[1].x - supports_[0].x, supports_[1].y - supports_[0].y);
@@ -429,7 +446,9 @@ void PhotoOverlay::measurement_window(Document& document, UiStatus& status, Rend
   } else {
     ImGui::TextColored(kNoteText, "Click the two supports on the photo: they set its scale.");
   }
-  section("Measured");
+}
+
+void PhotoOverlay::draw_measured(const Solution& predicted) {
   if (measured_) {
     ImGui::Text("n = %d   Q = %.4g   fit residual %.3g", measured_->n, measured_->Q,
                 measured_->fit_residual);
@@ -438,18 +457,18 @@ void PhotoOverlay::measurement_window(Document& document, UiStatus& status, Rend
       depths.push_back(printf_string("%.0f", a));
     }
     wrapped_text("a_i = %s mm", detail::join_comma(depths).c_str());
-    ImGui::TextColored(kDimText, "predicted: n = %d   Q = %.4g", s.n, s.Q);
+    ImGui::TextColored(kDimText, "predicted: n = %d   Q = %.4g", predicted.n, predicted.Q);
   } else if (!measure_error_.empty()) {
-    ImGui::PushStyleColor(ImGuiCol_Text, kErrorText);
-    wrapped_text("%s", measure_error_.c_str());
-    ImGui::PopStyleColor();
+    coloured_text(kErrorText, measure_error_);
   } else {
     ImGui::TextColored(kDimText, "Click at least two folds (%zu so far).", folds_.size());
   }
   if (!folds_.empty() && ImGui::SmallButton("Undo last fold")) {
     folds_.pop_back();
   }
-  section("Add to measurements");
+}
+
+void PhotoOverlay::draw_add_row(const Document& document) {
   ImGui::SetNextItemWidth(ImGui::GetFontSize() * 6.0f);
   ImGui::InputTextWithHint("z_max (mm)", "optional", z_max_field_, sizeof z_max_field_);
   help_marker(
@@ -461,6 +480,9 @@ void PhotoOverlay::measurement_window(Document& document, UiStatus& status, Rend
     add_row(document);
   }
   ImGui::EndDisabled();
+}
+
+void PhotoOverlay::draw_rows_file(UiStatus& status) {
   ImGui::PushStyleColor(ImGuiCol_Text, kDimText);
   wrapped_text("%d %s in %s", rows_in_file_, rows_in_file_ == 1 ? "row" : "rows",
                paths_.measurements_file.string().c_str());
@@ -486,11 +508,11 @@ void PhotoOverlay::measurement_window(Document& document, UiStatus& status, Rend
   }
   ImGui::EndDisabled();
   if (!rows_message_.empty()) {
-    ImGui::PushStyleColor(ImGuiCol_Text, rows_message_is_error_ ? kErrorText : kOkText);
-    wrapped_text("%s", rows_message_.c_str());
-    ImGui::PopStyleColor();
+    coloured_text(rows_message_is_error_ ? kErrorText : kOkText, rows_message_);
   }
-  section("Fit");
+}
+
+void PhotoOverlay::draw_fit(const Document& document) {
   ImGui::BeginDisabled(paths_.shipped_data_file.empty());
   ImGui::Checkbox("with Conci's Tables 1–2 rows", &with_shipped_rows_);
   ImGui::EndDisabled();
@@ -500,11 +522,8 @@ void PhotoOverlay::measurement_window(Document& document, UiStatus& status, Rend
   }
   ImGui::EndDisabled();
   if (!fit_message_.empty()) {
-    ImGui::PushStyleColor(ImGuiCol_Text, fit_message_is_error_ ? kErrorText : kDimText);
-    wrapped_text("%s", fit_message_.c_str());
-    ImGui::PopStyleColor();
+    coloured_text(fit_message_is_error_ ? kErrorText : kDimText, fit_message_);
   }
-  ImGui::End();
 }
 
 json PhotoOverlay::report() const {

@@ -89,6 +89,13 @@ class PhotoOverlay : public Panel {
   void start_fit(const Document& document);
   void collect_fit(const Document& document, UiStatus& status);
   void measurement_window(Document& document, UiStatus& status, Renderer& renderer);
+  // The measurement window's parts, top to bottom: the scale the supports set, the folds
+  // measured (beside the `predicted` ones), the row to add, the measurements file, the fit.
+  void draw_scale() const;
+  void draw_measured(const Solution& predicted);
+  void draw_add_row(const Document& document);
+  void draw_rows_file(UiStatus& status);
+  void draw_fit(const Document& document);
 
   PhotoPaths paths_;
   std::optional<Image> photo_;
