@@ -662,6 +662,24 @@ TEST_F(CliTest, SetReportsParseAndRangeProblemsTogether) {
   EXPECT_TRUE(contains(r.err, "height h = −5 mm must be between 1 and 100,000 mm")) << r.err;
 }
 
+TEST_F(CliTest, UnitsAreCaseSensitiveWhereCaseIsAPrefix) {
+  // 2.4M was 2400 mm, 1Mm 1 mm and 2.4MM 2.4 mm.
+  for (const char* value : {"h=2.4M", "h=1Mm", "h=2.4MM"}) {
+    SCOPED_TRACE(value);
+    const RunResult r = run({"solve", "--set", value});
+    EXPECT_EQ(r.exit_status, 2);
+    EXPECT_TRUE(r.out.empty()) << r.out;
+    EXPECT_TRUE(contains(r.err, "is not a unit of length (known: mm, cm, m)")) << r.err;
+  }
+  const RunResult mega = run({"solve", "--set", "h=2.4M"});
+  EXPECT_TRUE(contains(mega.err,
+                       "'M' is not a unit of length (known: mm, cm, m); did you mean "
+                       "'m'?"))
+      << mega.err;
+  const json solved = solve_json({"--set", "h=2.4m", "--set", "w=150GSM"});
+  EXPECT_EQ(solved.at("inputs").at("height_mm").get<double>(), 2400.0);
+}
+
 TEST_F(CliTest, AHugeBadValueIsEchoedCut) {
   const RunResult r = run({"solve", "--set", "t=" + std::string(100000, 'x')});
   EXPECT_EQ(r.exit_status, 2);

@@ -124,7 +124,12 @@ void add_input_options(CLI::App& command, InputOptions& options) {
   for (const InputSpec& spec : input_table()) {
     keys += "\n    " + input_label(spec) + ": " + std::string(spec.help);
   }
-  command.add_option("--set", options.assignments, "override an input, KEY=VALUE; keys:" + keys)
+  command
+      .add_option("--set", options.assignments,
+                  "override an input, KEY=VALUE; a value may end in a unit written as SI writes "
+                  "it (h=1.4m, E=0.165GPa, w=80g/m2; M is mega, not a metre) or gsm in any case; "
+                  "a bare number is in the key's unit; keys:" +
+                      keys)
       ->type_name("KEY=VALUE");
   command.add_option("--method", options.method, "solution method (default: the preset's)")
       ->check(CLI::IsMember({"paper", "exact"}));

@@ -43,9 +43,6 @@ struct GuiCommandOptions {
 // it), so that the options given beside a link override it.
 void apply_link_option(GuiCommandOptions& options) {
   std::vector<std::string> view;
-  for (const LinkAssignment& piece : parse_fabric_link(options.link)) {
-    (is_link_view_key(piece.key) ? view : options.run.inputs.link).push_back(piece.set_text());
-  }
   options.run.view_settings.insert(options.run.view_settings.begin(), view.begin(), view.end());
 }
 
