@@ -680,6 +680,22 @@ TEST_F(CliTest, UnitsAreCaseSensitiveWhereCaseIsAPrefix) {
   EXPECT_EQ(solved.at("inputs").at("height_mm").get<double>(), 2400.0);
 }
 
+TEST_F(CliTest, ARefusedBareWeightSaysItWasReadInNewtonsPerSquareMillimetre) {
+  // The explorer's w field reads 150 as 150 g/m²; --set, as the input table says, as N/mm².
+  const RunResult bare = run({"solve", "--set", "w=150"});
+  EXPECT_EQ(bare.exit_status, 2);
+  EXPECT_TRUE(contains(bare.err, "weight per area w = ")) << bare.err;
+  EXPECT_TRUE(contains(bare.err,
+                       "(a bare number for w is read in N/mm²; for 150 g/m² write "
+                       "w=150gsm)"))
+      << bare.err;
+  // With a unit the same refusal has no such note, and 150gsm is a fabric.
+  const RunResult heavy = run({"solve", "--set", "w=2e6gsm"});
+  EXPECT_EQ(heavy.exit_status, 2);
+  EXPECT_FALSE(contains(heavy.err, "bare number")) << heavy.err;
+  EXPECT_EQ(run({"solve", "--set", "w=150gsm"}).exit_status, 0);
+}
+
 TEST_F(CliTest, AHugeBadValueIsEchoedCut) {
   const RunResult r = run({"solve", "--set", "t=" + std::string(100000, 'x')});
   EXPECT_EQ(r.exit_status, 2);

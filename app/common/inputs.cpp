@@ -37,6 +37,28 @@ std::vector<std::string> overrides(const InputOptions& options, bool with_link) 
   return assignments;
 }
 
+// The refusals, each with what a bare number meant when the value that set it was one and the
+// explorer shows the input in another unit: `w=150` is 150 N/mm², not the 150 g/m² of its slider.
+std::string refusals(const std::vector<ValidationIssue>& issues,
+                     const std::vector<std::string>& assignments) {
+  std::string out;
+  for (const ValidationIssue& issue : issues) {
+    out += issue.message;
+    const InputSpec* spec = find_input_by_field(issue.field);
+    for (auto it = assignments.rbegin(); spec != nullptr && it != assignments.rend(); ++it) {
+      const std::size_t eq = it->find('=');
+      if (eq != std::string::npos && std::string_view(*it).substr(0, eq) == spec->key) {
+        if (const std::optional<std::string> hint = bare_number_hint(*spec, it->substr(eq + 1))) {
+          out += " (" + *hint + ")";
+        }
+        break;
+      }
+    }
+    out += '\n';
+  }
+  return out;
+}
+
 StartInputs resolve(const InputOptions& options, bool keep_refused) {
   StartInputs start;
   try {
@@ -73,7 +95,7 @@ StartInputs resolve(const InputOptions& options, bool keep_refused) {
       return start;
     }
   }
-  problems += format_issues(issues);
+  problems += refusals(issues, overrides(options, true));
   problems.pop_back();  // the final newline
   throw InputError(problems);
 }

@@ -94,7 +94,8 @@ std::vector<InputSpec> build_table() {
        .preset = "/fabric/weight_N_per_mm2",
        .help = "weight per area: silk chiffon about 35 g/m², cotton poplin 120, linen 200, "
                "denim (13 oz/yd²) 441 (presets/FABRICS.md); 1.5e-6 N/mm² = 153 g/m², and "
-               "80g/m2, 2.4oz/yd2 are read too",
+               "80g/m2, 80gsm, 2.4oz/yd2 are read too; a bare number is N/mm², so 150 g/m² is "
+               "w=150gsm",
        .valid = closed(0.1 * kNPerMm2PerGramPerM2, 1e6 * kNPerMm2PerGramPerM2),
        .why = "from the lightest tissue to a tonne per square metre",
        .typical_lo = 1e-7,
@@ -633,6 +634,19 @@ std::optional<std::string> quantity_problem(const InputSpec& spec, std::string_v
   return ": '" + detail::cut(unit_text) + "' is not a unit of " + std::string(quantity) +
          " (known: " + detail::join(known, ", ") + ")" +
          (meant ? "; did you mean '" + std::string(*meant) + "'?" : "");
+}
+
+std::optional<std::string> bare_number_hint(const InputSpec& spec, std::string_view text) {
+  const std::optional<TypedQuantity> typed = split_quantity(text);
+  const InputUnit shown = shown_unit(spec);
+  if (!typed || !typed->unit.empty() || spec.shown_unit == 0) {
+    return std::nullopt;
+  }
+  const std::string written = detail::shortest_number(typed->number) +
+                              std::string(shown.plain.empty() ? shown.symbol : shown.plain);
+  return "a bare number for " + std::string(spec.key) + " is read in " + std::string(spec.unit) +
+         "; for " + detail::message_number(typed->number) + " " + std::string(shown.symbol) +
+         " write " + std::string(spec.key) + "=" + written;
 }
 
 InputInterval slider_ends(const InputSpec& spec, SliderReach reach) {

@@ -192,6 +192,10 @@ std::optional<double> parse_quantity(const InputSpec& spec, std::string_view tex
 // number". nullopt when it can be read.
 std::optional<std::string> quantity_problem(const InputSpec& spec, std::string_view text,
                                             std::string_view bare_unit = {});
+// When `text` is a bare number (no unit) for an input that the explorer shows in another unit
+// than it stores: what a bare number means here and how to write it in the shown unit ("a bare
+// number for w is read in N/mm²; for 150 g/m² write w=150gsm"). nullopt otherwise.
+std::optional<std::string> bare_number_hint(const InputSpec& spec, std::string_view text);
 
 // The part of the slider's range (slider_ends) that validate() accepts with the other
 // inputs of `p` as they are: d stops below L/2, L above 2d. Found by bisection against
