@@ -696,6 +696,37 @@ TEST_F(CliTest, ARefusedBareWeightSaysItWasReadInNewtonsPerSquareMillimetre) {
   EXPECT_EQ(run({"solve", "--set", "w=150gsm"}).exit_status, 0);
 }
 
+TEST_F(CliTest, AKeySetTwiceIsRefusedAsInAPreset) {
+  // The last one won without a word.
+  const RunResult set = run({"solve", "--set", "h=2.4m", "--set", "h=1000"});
+  EXPECT_EQ(set.exit_status, 2);
+  EXPECT_TRUE(set.out.empty()) << set.out;
+  EXPECT_TRUE(contains(set.err,
+                       "--set h=2.4m and --set h=1000: duplicate key (each key may "
+                       "appear once; which one is meant?)"))
+      << set.err;
+  // The same through every command that takes --set.
+  const RunResult sweep = run({"sweep", "--param", "h", "--from", "900", "--to", "1000", "--set",
+                               "t=0.3", "--set", "t=0.4"});
+  EXPECT_EQ(sweep.exit_status, 2);
+  EXPECT_TRUE(contains(sweep.err, "duplicate key")) << sweep.err;
+  // A link's pieces, its view keys as well; refused before any window or EGL is asked for.
+  const std::string out = (dir_ / "linked.png").string();
+  for (const char* link :
+       {"#t=0.4&t=3", "https://host/foldlab/index.html#theme=dark&theme=light"}) {
+    SCOPED_TRACE(link);
+    const RunResult linked = run({"render", "--link", link, "--out", out});
+    EXPECT_EQ(linked.exit_status, 2);
+    EXPECT_TRUE(contains(linked.err,
+                         "duplicate key (each key may appear once; which one is "
+                         "meant?)"))
+        << linked.err;
+  }
+  const RunResult twice_t = run({"render", "--link", "#t=0.4&t=3", "--out", out});
+  EXPECT_TRUE(contains(twice_t.err, "--link t=0.4 and --link t=3: duplicate key")) << twice_t.err;
+  EXPECT_FALSE(fs::exists(out));
+}
+
 TEST_F(CliTest, AHugeBadValueIsEchoedCut) {
   const RunResult r = run({"solve", "--set", "t=" + std::string(100000, 'x')});
   EXPECT_EQ(r.exit_status, 2);

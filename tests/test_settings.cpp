@@ -280,6 +280,20 @@ TEST(Settings, ARefusedUnitNamesTheKnownOnesAndTheRightCase) {
   EXPECT_FALSE(foldlab::quantity_problem(*foldlab::find_input("h"), "2.4m").has_value());
 }
 
+// A key set twice is refused in the words a preset file uses for a duplicate key.
+TEST(Settings, RepeatedKeysAreNamedWithEveryValueGiven) {
+  EXPECT_TRUE(foldlab::repeated_keys({"h=2.4m", "t=0.3", "K=20"}, "--set").empty());
+  const std::vector<std::string> twice =
+      foldlab::repeated_keys({"h=2.4m", "t=0.3", "h=1000", "t=0.4", "h=2"}, "--set");
+  ASSERT_EQ(twice.size(), 2u);
+  EXPECT_EQ(twice[0],
+            "--set h=2.4m, --set h=1000 and --set h=2: duplicate key (each key may appear once; "
+            "which one is meant?)");
+  EXPECT_EQ(twice[1],
+            "--set t=0.3 and --set t=0.4: duplicate key (each key may appear once; which one is "
+            "meant?)");
+}
+
 // Simple arithmetic before the unit, with the usual precedence; what is not arithmetic is refused
 // rather than read in part.
 TEST(Settings, TypedValuesMayBeSimpleArithmetic) {

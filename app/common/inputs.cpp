@@ -70,6 +70,12 @@ StartInputs resolve(const InputOptions& options, bool keep_refused) {
   // What cannot be applied, named by the option it came with (it does not depend on the values
   // applied before it).
   std::string problems;
+  for (const std::string& repeated : repeated_keys(options.link, "--link")) {
+    problems += repeated + "\n";
+  }
+  for (const std::string& repeated : repeated_keys(options.assignments, "--set")) {
+    problems += repeated + "\n";
+  }
   Parameters scratch = start.preset.parameters;
   for (const std::string& error : apply_assignments(scratch, options.link)) {
     problems += "--link " + error + "\n";

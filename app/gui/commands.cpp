@@ -13,6 +13,7 @@
 #include "app/gui/surface.hpp"
 #include "core/analysis/sweep.hpp"
 #include "core/io/link.hpp"
+#include "core/model/settings.hpp"
 #include "core/model/text_format.hpp"
 
 namespace foldlab::gui {
@@ -43,6 +44,16 @@ struct GuiCommandOptions {
 // it), so that the options given beside a link override it.
 void apply_link_option(GuiCommandOptions& options) {
   std::vector<std::string> view;
+  std::vector<std::string> pieces;
+  for (const LinkAssignment& piece : parse_fabric_link(options.link)) {
+    (is_link_view_key(piece.key) ? view : options.run.inputs.link).push_back(piece.set_text());
+    pieces.push_back(piece.set_text());
+  }
+  // The view keys too: `#theme=dark&theme=light` is as unclear as two values of t.
+  const std::vector<std::string> repeated = repeated_keys(pieces, "--link");
+  if (!repeated.empty()) {
+    throw InputError(detail::join_lines(repeated));
+  }
   options.run.view_settings.insert(options.run.view_settings.begin(), view.begin(), view.end());
 }
 

@@ -767,6 +767,35 @@ std::optional<std::string> apply_assignment(Parameters& p, const Assignment& ass
   return apply_setting(p, assignment.key, std::get<std::string>(assignment.value));
 }
 
+std::vector<std::string> repeated_keys(const std::vector<std::string>& assignments,
+                                       std::string_view option) {
+  std::vector<std::string> problems;
+  std::vector<std::string_view> reported;
+  const auto key_of = [](std::string_view assignment) {
+    return assignment.substr(0, assignment.find('='));
+  };
+  for (std::size_t i = 0; i < assignments.size(); ++i) {
+    const std::string_view key = key_of(assignments[i]);
+    if (key.empty() || std::find(reported.begin(), reported.end(), key) != reported.end()) {
+      continue;
+    }
+    std::vector<std::string> givers{std::string(option) + " " + detail::cut(assignments[i])};
+    for (std::size_t j = i + 1; j < assignments.size(); ++j) {
+      if (key_of(assignments[j]) == key) {
+        givers.push_back(std::string(option) + " " + detail::cut(assignments[j]));
+      }
+    }
+    if (givers.size() > 1) {
+      reported.push_back(key);
+      const std::string last = givers.back();
+      givers.pop_back();
+      problems.push_back(detail::join(givers, ", ") + " and " + last +
+                         ": duplicate key (each key may appear once; which one is meant?)");
+    }
+  }
+  return problems;
+}
+
 std::vector<std::string> apply_assignments(Parameters& p,
                                            const std::vector<std::string>& assignments) {
   std::vector<std::string> errors;

@@ -143,6 +143,13 @@ struct Assignment {
 };
 std::optional<std::string> apply_assignment(Parameters& p, const Assignment& assignment);
 
+// Every key that more than one of the "KEY=VALUE" assignments sets, as a sentence naming them
+// after `option`: "--set h=2.4m and --set h=1000: duplicate key (each key may appear once; which
+// one is meant?)". Applied in order, the last would win without a word, as a preset file does
+// not allow either.
+std::vector<std::string> repeated_keys(const std::vector<std::string>& assignments,
+                                       std::string_view option);
+
 // Applies "KEY=VALUE" assignments in order, except that every K comes after all the others
 // (so `--set K=30 --set nu=0.2` means K = 30 at nu = 0.2). Returns every error at once.
 std::vector<std::string> apply_assignments(Parameters& p,
