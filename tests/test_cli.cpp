@@ -727,6 +727,44 @@ TEST_F(CliTest, AKeySetTwiceIsRefusedAsInAPreset) {
   EXPECT_FALSE(fs::exists(out));
 }
 
+TEST_F(CliTest, AnOutputNamedForAnotherFormatIsRefused) {
+  // picture --out x.jpg wrote PNG data under a JPEG name and exited 0. The checks come before any
+  // EGL is asked for, so they hold without one.
+  const std::vector<std::vector<std::string>> wrong = {
+      {"picture", "cloth", "--size", "400x300", "--out", "x.jpg"},
+      {"render", "--out", "x.jpeg"},
+      {"gui", "--frames", "1", "--screenshot", "x.bmp"},
+      {"export", "--obj", "x.stl"},
+      {"export", "--glb", "x.gltf"},
+      {"export", "--csv", "x.txt"},
+      {"export", "--svg", "x.png"},
+      {"bench", "--cases", "1", "--repeats", "1", "--csv", "x.tsv"},
+      {"bench", "--cases", "1", "--repeats", "1", "--svg", "x.pdf"},
+  };
+  for (std::vector<std::string> args : wrong) {
+    SCOPED_TRACE(args[0] + " " + args[args.size() - 2]);
+    args.back() = (dir_ / args.back()).string();
+    const RunResult r = run(args);
+    EXPECT_EQ(r.exit_status, 2);
+    EXPECT_TRUE(contains(r.err, args[args.size() - 2] + " " + dir_.string().substr(0, 20)))
+        << r.err;
+    EXPECT_TRUE(contains(r.err, " must end in .")) << r.err;
+  }
+  // The name is said as given (cut as any quoted text is), then the rule.
+  const RunResult jpg =
+      run({"picture", "cloth", "--size", "400x300", "--out", (dir_ / "x.jpg").string()});
+  EXPECT_EQ(jpg.exit_status, 2);
+  EXPECT_TRUE(contains(jpg.err, "--out " + dir_.string().substr(0, 20))) << jpg.err;
+  EXPECT_TRUE(contains(jpg.err, " must end in .png (in any case): what is written there is PNG"))
+      << jpg.err;
+  EXPECT_TRUE(entries().empty());
+  // Upper case is a spelling of the same extension.
+  const RunResult upper = run(
+      {"export", "--svg", (dir_ / "LINES.SVG").string(), "--csv", (dir_ / "Lines.Csv").string()});
+  EXPECT_EQ(upper.exit_status, 0) << upper.err;
+  EXPECT_TRUE(fs::exists(dir_ / "LINES.SVG"));
+}
+
 TEST_F(CliTest, AHugeBadValueIsEchoedCut) {
   const RunResult r = run({"solve", "--set", "t=" + std::string(100000, 'x')});
   EXPECT_EQ(r.exit_status, 2);

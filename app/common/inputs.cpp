@@ -1,5 +1,6 @@
 #include "app/common/inputs.hpp"
 
+#include <cctype>
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
@@ -114,6 +115,23 @@ Preset resolve_inputs(const InputOptions& options) {
 
 StartInputs resolve_start_inputs(const InputOptions& options) {
   return resolve(options, true);
+}
+
+void check_output_extension(std::string_view option, const std::string& path,
+                            std::string_view extension, std::string_view format) {
+  const auto lower = [](std::string_view text) {
+    std::string out(text);
+    for (char& c : out) {
+      c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    }
+    return out;
+  };
+  if (path.empty() || lower(path).ends_with(lower(extension))) {
+    return;
+  }
+  throw InputError(std::string(option) + " " + detail::cut(path) + " must end in " +
+                   std::string(extension) + " (in any case): what is written there is " +
+                   std::string(format));
 }
 
 CLI::Validator non_empty_path() {

@@ -73,6 +73,12 @@ struct NamedPath {
 void check_distinct_files(const std::vector<NamedPath>& outputs,
                           const std::vector<NamedPath>& inputs);
 
+// Throws InputError unless `path` ends in `extension` (".png"; in any case, ".PNG" too): a
+// command that writes one format must not put it under another's name, where a viewer would
+// misread it. Empty paths (not given) pass.
+void check_output_extension(std::string_view option, const std::string& path,
+                            std::string_view extension, std::string_view format);
+
 // For every option that names a file: an empty path (`--preset ''`, an unset shell variable) is
 // refused as invalid input rather than read as "not given", which would silently use a default.
 CLI::Validator non_empty_path();

@@ -173,6 +173,7 @@ app::Command add_gui_command(CLI::App& app) {
       parse_size(options->size, options->run);
       check_play_options(options->run);
       prepare_run(*options, {{"--screenshot", options->run.screenshot_path}});
+      app::check_output_extension("--screenshot", options->run.screenshot_path, ".png", "PNG");
       if (!options->run.screenshot_path.empty() && options->run.frames == 0) {
         throw InputError("--screenshot needs --frames N");
       }
@@ -202,6 +203,7 @@ app::Command add_render_command(CLI::App& app) {
       if (options->run.screenshot_path.empty() && options->run.play_path.empty()) {
         throw InputError("render needs --out FILE.png (or --play SCRIPT.json)");
       }
+      app::check_output_extension("--out", options->run.screenshot_path, ".png", "PNG");
       options->run.fresh = true;
       if (options->run.frames == 0 && options->run.play_path.empty()) {
         options->run.frames = 3;  // ImGui settles table and child sizes over the first frames
@@ -352,6 +354,7 @@ app::Command add_picture_command(CLI::App& app) {
       }
       prepare_run(options->scene, {{"--out", options->out}});
       check_distinct_files({{"--out", options->out}}, {{"--b-preset", options->b_preset}});
+      app::check_output_extension("--out", options->out, ".png", "PNG");
       PictureInputs inputs;
       inputs.sweep_axis = picture_sweep_axis(*options, spec.view);
       inputs.b = picture_b(*options, spec.view);
