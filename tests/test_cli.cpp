@@ -765,6 +765,47 @@ TEST_F(CliTest, AnOutputNamedForAnotherFormatIsRefused) {
   EXPECT_TRUE(fs::exists(dir_ / "LINES.SVG"));
 }
 
+TEST_F(CliTest, OptionValuesAreRefusedInOneVoice) {
+  // 1e9 said "Could not convert: --steps = 1e9", 0 gave the range.
+  for (const char* steps : {"1e9", "0", "1", "10001", "2.5"}) {
+    SCOPED_TRACE(steps);
+    const RunResult r =
+        run({"sweep", "--param", "h", "--from", "900", "--to", "1000", "--steps", steps});
+    EXPECT_EQ(r.exit_status, 2);
+    EXPECT_TRUE(contains(
+        r.err, "--steps: " + std::string(steps) + " must be a whole number from 2 to 10000"))
+        << r.err;
+  }
+  const RunResult sweep =
+      run({"sweep", "--param", "h", "--from", "900", "--to", "1000", "--steps", "1e1", "--csv"});
+  ASSERT_EQ(sweep.exit_status, 0) << sweep.err;
+  EXPECT_EQ(std::count(sweep.out.begin(), sweep.out.end(), '\n'), 11);  // header and 10 rows
+  // A choice in the words --set uses, not CLI11's "Exact not in {paper,exact}".
+  const RunResult method = run({"solve", "--method", "Exact"});
+  EXPECT_EQ(method.exit_status, 2);
+  EXPECT_TRUE(contains(method.err, "method = 'Exact' is not one of: paper, exact")) << method.err;
+  const RunResult set_method = run({"solve", "--set", "method=Exact"});
+  EXPECT_TRUE(contains(set_method.err, "method = 'Exact' is not one of: paper, exact"))
+      << set_method.err;
+  const RunResult law = run({"solve", "--law", "Conci"});
+  EXPECT_EQ(law.exit_status, 2);
+  EXPECT_TRUE(contains(law.err, "law = 'Conci' is not one of: conci, cerda-mahadevan")) << law.err;
+  const RunResult fit = run({"calibrate", "--data", "x.csv", "--fit", "k"});
+  EXPECT_EQ(fit.exit_status, 2);
+  EXPECT_TRUE(contains(fit.err, "fit = 'k' is not one of: K, K,p")) << fit.err;
+  // Twenty parentheses deep is no typo in a number: the limit is said.
+  const std::string deep = std::string(20, '(') + "1400" + std::string(20, ')');
+  const RunResult nested = run({"solve", "--set", "h=" + deep});
+  EXPECT_EQ(nested.exit_status, 2);
+  EXPECT_TRUE(contains(nested.err, "h = '" + deep +
+                                       "' is nested too deeply: arithmetic may nest at most 16 "
+                                       "parentheses deep"))
+      << nested.err;
+  const std::string sixteen = std::string(16, '(') + "1400" + std::string(16, ')');
+  EXPECT_EQ(solve_json({"--set", "h=" + sixteen}).at("inputs").at("height_mm").get<double>(),
+            1400.0);
+}
+
 TEST_F(CliTest, AHugeBadValueIsEchoedCut) {
   const RunResult r = run({"solve", "--set", "t=" + std::string(100000, 'x')});
   EXPECT_EQ(r.exit_status, 2);

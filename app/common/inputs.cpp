@@ -1,5 +1,6 @@
 #include "app/common/inputs.hpp"
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <cstdint>
@@ -160,6 +161,31 @@ CLI::Validator whole_number_in(std::int64_t lo, std::int64_t hi) {
       "N", range);
 }
 
+CLI::Validator input_choice(std::string_view key) {
+  const InputSpec* spec = find_input(key);
+  if (spec == nullptr || spec->kind != InputKind::choice) {
+    throw std::logic_error("no input with choices: " + std::string(key));
+  }
+  return CLI::Validator(
+      [key = std::string(key)](std::string& text) {
+        Parameters scratch;
+        return apply_setting(scratch, key, text).value_or(std::string());
+      },
+      "{" + std::string(spec->choices) + "}", std::string(key));
+}
+
+CLI::Validator one_of(std::string name, std::vector<std::string> choices) {
+  const std::string listed = detail::join(choices, ", ");
+  return CLI::Validator(
+      [name, choices, listed](std::string& text) {
+        if (std::find(choices.begin(), choices.end(), text) != choices.end()) {
+          return std::string();
+        }
+        return name + " = '" + detail::cut(text) + "' is not one of: " + listed;
+      },
+      "{" + listed + "}", name);
+}
+
 void add_input_options(CLI::App& command, InputOptions& options) {
   command
       .add_option("--preset", options.preset_path,
@@ -178,20 +204,16 @@ void add_input_options(CLI::App& command, InputOptions& options) {
                       keys)
       ->type_name("KEY=VALUE");
   command.add_option("--method", options.method, "solution method (default: the preset's)")
-      ->check(CLI::IsMember({"paper", "exact"}));
+      ->check(input_choice("method"));
   add_law_option(command, options.law);
 }
 
 void add_law_option(CLI::App& command, std::string& law) {
-  std::vector<std::string> laws;
-  for (const WrinkleLaw* each : wrinkle_laws()) {
-    laws.emplace_back(each->key());
-  }
   command
       .add_option("--law", law,
                   "the law that counts the folds, with its published constants (c, p = 1); "
                   "--set c=, K= or p= override them (default: the preset's law and constants)")
-      ->check(CLI::IsMember(laws));
+      ->check(input_choice("law"));
 }
 
 int guarded(const std::function<int()>& body) {

@@ -86,6 +86,13 @@ CLI::Validator non_empty_path();
 // with ->transform() on an integer option.
 CLI::Validator whole_number_in(std::int64_t lo, std::int64_t hi);
 
+// An option that takes one of an input's choices (--method: the "method" row), refused in the
+// words --set uses: "method = 'Exact' is not one of: paper, exact".
+CLI::Validator input_choice(std::string_view key);
+// An option that takes one of `choices`, refused in the same words: "fit = 'k' is not one of:
+// K, K,p".
+CLI::Validator one_of(std::string name, std::vector<std::string> choices);
+
 // --preset, --set, --method and --law, for every command that solves.
 void add_input_options(CLI::App& command, InputOptions& options);
 // --law alone, for a command that gathers its inputs otherwise (InputOptions::law).

@@ -98,7 +98,7 @@ void add_common_gui_options(CLI::App& command, GuiCommandOptions& options) {
   add_scene_options(command, options);
   command.add_option("--size", options.size, "window or picture size WxH (default 1280x800)");
   command.add_option("--tab", options.run.analysis_tab, "analysis tab shown at start")
-      ->check(CLI::IsMember({"equations", "method", "sweep", "map"}));
+      ->check(app::one_of("tab", {"equations", "method", "sweep", "map"}));
 }
 
 void add_play_option(CLI::App& command, GuiRunOptions& options) {

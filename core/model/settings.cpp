@@ -567,6 +567,16 @@ std::optional<TypedQuantity> split_quantity(std::string_view text) {
   return out;
 }
 
+int parenthesis_depth(std::string_view text) {
+  int depth = 0;
+  int deepest = 0;
+  for (const char c : text) {
+    depth += c == '(' ? 1 : c == ')' ? -1 : 0;
+    deepest = std::max(deepest, depth);
+  }
+  return deepest;
+}
+
 }  // namespace
 
 std::optional<double> parse_quantity(const InputSpec& spec, std::string_view text,
@@ -593,6 +603,10 @@ std::optional<std::string> quantity_problem(const InputSpec& spec, std::string_v
                                             std::string_view bare_unit) {
   if (parse_quantity(spec, text, bare_unit)) {
     return std::nullopt;
+  }
+  if (parenthesis_depth(text) > kMaxArithmeticDepth) {
+    return " is nested too deeply: arithmetic may nest at most " +
+           std::to_string(kMaxArithmeticDepth) + " parentheses deep";
   }
   const std::optional<TypedQuantity> typed = split_quantity(text);
   const std::vector<InputUnit> units = input_units(spec);

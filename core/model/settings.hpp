@@ -195,8 +195,8 @@ std::string refusal_sentence(const InputSpec& spec, double value, const InputInt
 std::optional<double> parse_quantity(const InputSpec& spec, std::string_view text,
                                      std::string_view bare_unit = {});
 // Why parse_quantity cannot read `text`, as the rest of a sentence that has just quoted it:
-// ": 'M' is not a unit of length (known: mm, cm, m); did you mean 'm'?", " is not a
-// number". nullopt when it can be read.
+// ": 'M' is not a unit of length (known: mm, cm, m); did you mean 'm'?", " is nested too
+// deeply: ...", " is not a number". nullopt when it can be read.
 std::optional<std::string> quantity_problem(const InputSpec& spec, std::string_view text,
                                             std::string_view bare_unit = {});
 // When `text` is a bare number (no unit) for an input that the explorer shows in another unit
