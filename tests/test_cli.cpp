@@ -662,6 +662,150 @@ TEST_F(CliTest, SetReportsParseAndRangeProblemsTogether) {
   EXPECT_TRUE(contains(r.err, "height h = −5 mm must be between 1 and 100,000 mm")) << r.err;
 }
 
+TEST_F(CliTest, UnitsAreCaseSensitiveWhereCaseIsAPrefix) {
+  // 2.4M was 2400 mm, 1Mm 1 mm and 2.4MM 2.4 mm.
+  for (const char* value : {"h=2.4M", "h=1Mm", "h=2.4MM"}) {
+    SCOPED_TRACE(value);
+    const RunResult r = run({"solve", "--set", value});
+    EXPECT_EQ(r.exit_status, 2);
+    EXPECT_TRUE(r.out.empty()) << r.out;
+    EXPECT_TRUE(contains(r.err, "is not a unit of length (known: mm, cm, m)")) << r.err;
+  }
+  const RunResult mega = run({"solve", "--set", "h=2.4M"});
+  EXPECT_TRUE(contains(mega.err,
+                       "'M' is not a unit of length (known: mm, cm, m); did you mean "
+                       "'m'?"))
+      << mega.err;
+  const json solved = solve_json({"--set", "h=2.4m", "--set", "w=150GSM"});
+  EXPECT_EQ(solved.at("inputs").at("height_mm").get<double>(), 2400.0);
+}
+
+TEST_F(CliTest, ARefusedBareWeightSaysItWasReadInNewtonsPerSquareMillimetre) {
+  // The explorer's w field reads 150 as 150 g/m²; --set, as the input table says, as N/mm².
+  const RunResult bare = run({"solve", "--set", "w=150"});
+  EXPECT_EQ(bare.exit_status, 2);
+  EXPECT_TRUE(contains(bare.err, "weight per area w = ")) << bare.err;
+  EXPECT_TRUE(contains(bare.err,
+                       "(a bare number for w is read in N/mm²; for 150 g/m² write "
+                       "w=150gsm)"))
+      << bare.err;
+  // With a unit the same refusal has no such note, and 150gsm is a fabric.
+  const RunResult heavy = run({"solve", "--set", "w=2e6gsm"});
+  EXPECT_EQ(heavy.exit_status, 2);
+  EXPECT_FALSE(contains(heavy.err, "bare number")) << heavy.err;
+  EXPECT_EQ(run({"solve", "--set", "w=150gsm"}).exit_status, 0);
+}
+
+TEST_F(CliTest, AKeySetTwiceIsRefusedAsInAPreset) {
+  // The last one won without a word.
+  const RunResult set = run({"solve", "--set", "h=2.4m", "--set", "h=1000"});
+  EXPECT_EQ(set.exit_status, 2);
+  EXPECT_TRUE(set.out.empty()) << set.out;
+  EXPECT_TRUE(contains(set.err,
+                       "--set h=2.4m and --set h=1000: duplicate key (each key may "
+                       "appear once; which one is meant?)"))
+      << set.err;
+  // The same through every command that takes --set.
+  const RunResult sweep = run({"sweep", "--param", "h", "--from", "900", "--to", "1000", "--set",
+                               "t=0.3", "--set", "t=0.4"});
+  EXPECT_EQ(sweep.exit_status, 2);
+  EXPECT_TRUE(contains(sweep.err, "duplicate key")) << sweep.err;
+  // A link's pieces, its view keys as well; refused before any window or EGL is asked for.
+  const std::string out = (dir_ / "linked.png").string();
+  for (const char* link :
+       {"#t=0.4&t=3", "https://host/foldlab/index.html#theme=dark&theme=light"}) {
+    SCOPED_TRACE(link);
+    const RunResult linked = run({"render", "--link", link, "--out", out});
+    EXPECT_EQ(linked.exit_status, 2);
+    EXPECT_TRUE(contains(linked.err,
+                         "duplicate key (each key may appear once; which one is "
+                         "meant?)"))
+        << linked.err;
+  }
+  const RunResult twice_t = run({"render", "--link", "#t=0.4&t=3", "--out", out});
+  EXPECT_TRUE(contains(twice_t.err, "--link t=0.4 and --link t=3: duplicate key")) << twice_t.err;
+  EXPECT_FALSE(fs::exists(out));
+}
+
+TEST_F(CliTest, AnOutputNamedForAnotherFormatIsRefused) {
+  // picture --out x.jpg wrote PNG data under a JPEG name and exited 0. The checks come before any
+  // EGL is asked for, so they hold without one.
+  const std::vector<std::vector<std::string>> wrong = {
+      {"picture", "cloth", "--size", "400x300", "--out", "x.jpg"},
+      {"render", "--out", "x.jpeg"},
+      {"gui", "--frames", "1", "--screenshot", "x.bmp"},
+      {"export", "--obj", "x.stl"},
+      {"export", "--glb", "x.gltf"},
+      {"export", "--csv", "x.txt"},
+      {"export", "--svg", "x.png"},
+      {"bench", "--cases", "1", "--repeats", "1", "--csv", "x.tsv"},
+      {"bench", "--cases", "1", "--repeats", "1", "--svg", "x.pdf"},
+  };
+  for (std::vector<std::string> args : wrong) {
+    SCOPED_TRACE(args[0] + " " + args[args.size() - 2]);
+    args.back() = (dir_ / args.back()).string();
+    const RunResult r = run(args);
+    EXPECT_EQ(r.exit_status, 2);
+    EXPECT_TRUE(contains(r.err, args[args.size() - 2] + " " + dir_.string().substr(0, 20)))
+        << r.err;
+    EXPECT_TRUE(contains(r.err, " must end in .")) << r.err;
+  }
+  // The name is said as given (cut as any quoted text is), then the rule.
+  const RunResult jpg =
+      run({"picture", "cloth", "--size", "400x300", "--out", (dir_ / "x.jpg").string()});
+  EXPECT_EQ(jpg.exit_status, 2);
+  EXPECT_TRUE(contains(jpg.err, "--out " + dir_.string().substr(0, 20))) << jpg.err;
+  EXPECT_TRUE(contains(jpg.err, " must end in .png (in any case): what is written there is PNG"))
+      << jpg.err;
+  EXPECT_TRUE(entries().empty());
+  // Upper case is a spelling of the same extension.
+  const RunResult upper = run(
+      {"export", "--svg", (dir_ / "LINES.SVG").string(), "--csv", (dir_ / "Lines.Csv").string()});
+  EXPECT_EQ(upper.exit_status, 0) << upper.err;
+  EXPECT_TRUE(fs::exists(dir_ / "LINES.SVG"));
+}
+
+TEST_F(CliTest, OptionValuesAreRefusedInOneVoice) {
+  // 1e9 said "Could not convert: --steps = 1e9", 0 gave the range.
+  for (const char* steps : {"1e9", "0", "1", "10001", "2.5"}) {
+    SCOPED_TRACE(steps);
+    const RunResult r =
+        run({"sweep", "--param", "h", "--from", "900", "--to", "1000", "--steps", steps});
+    EXPECT_EQ(r.exit_status, 2);
+    EXPECT_TRUE(contains(
+        r.err, "--steps: " + std::string(steps) + " must be a whole number from 2 to 10000"))
+        << r.err;
+  }
+  const RunResult sweep =
+      run({"sweep", "--param", "h", "--from", "900", "--to", "1000", "--steps", "1e1", "--csv"});
+  ASSERT_EQ(sweep.exit_status, 0) << sweep.err;
+  EXPECT_EQ(std::count(sweep.out.begin(), sweep.out.end(), '\n'), 11);  // header and 10 rows
+  // A choice in the words --set uses, not CLI11's "Exact not in {paper,exact}".
+  const RunResult method = run({"solve", "--method", "Exact"});
+  EXPECT_EQ(method.exit_status, 2);
+  EXPECT_TRUE(contains(method.err, "method = 'Exact' is not one of: paper, exact")) << method.err;
+  const RunResult set_method = run({"solve", "--set", "method=Exact"});
+  EXPECT_TRUE(contains(set_method.err, "method = 'Exact' is not one of: paper, exact"))
+      << set_method.err;
+  const RunResult law = run({"solve", "--law", "Conci"});
+  EXPECT_EQ(law.exit_status, 2);
+  EXPECT_TRUE(contains(law.err, "law = 'Conci' is not one of: conci, cerda-mahadevan")) << law.err;
+  const RunResult fit = run({"calibrate", "--data", "x.csv", "--fit", "k"});
+  EXPECT_EQ(fit.exit_status, 2);
+  EXPECT_TRUE(contains(fit.err, "fit = 'k' is not one of: K, K,p")) << fit.err;
+  // Twenty parentheses deep is no typo in a number: the limit is said.
+  const std::string deep = std::string(20, '(') + "1400" + std::string(20, ')');
+  const RunResult nested = run({"solve", "--set", "h=" + deep});
+  EXPECT_EQ(nested.exit_status, 2);
+  EXPECT_TRUE(contains(nested.err, "h = '" + deep +
+                                       "' is nested too deeply: arithmetic may nest at most 16 "
+                                       "parentheses deep"))
+      << nested.err;
+  const std::string sixteen = std::string(16, '(') + "1400" + std::string(16, ')');
+  EXPECT_EQ(solve_json({"--set", "h=" + sixteen}).at("inputs").at("height_mm").get<double>(),
+            1400.0);
+}
+
 TEST_F(CliTest, AHugeBadValueIsEchoedCut) {
   const RunResult r = run({"solve", "--set", "t=" + std::string(100000, 'x')});
   EXPECT_EQ(r.exit_status, 2);

@@ -34,6 +34,7 @@
 #include "app/gui/input_player.hpp"
 #include "app/gui/panel.hpp"
 #include "app/gui/panels/widgets.hpp"
+#include "app/gui/picture.hpp"
 #include "app/gui/play_script.hpp"
 #include "app/gui/plot_widget.hpp"
 #include "app/gui/renderer.hpp"
@@ -803,7 +804,7 @@ TEST_F(ExplorerTest, TypedArithmeticIsAValueAndTypedWordsAreRefusedWithAReason) 
   ASSERT_EQ(type_into("w", "2*76.5 g/m2"), 0);
   EXPECT_DOUBLE_EQ(document().edited().fabric.weight_N_per_mm2, 153.0 * 9.81e-9);
   const std::size_t steps = document().undo_depth();
-  for (const std::string typed : {"heavy", "2*", "153 furlongs"}) {
+  for (const std::string typed : {"heavy", "2*"}) {
     ASSERT_EQ(type_into("w", typed), 0);
     EXPECT_DOUBLE_EQ(document().edited().fabric.weight_N_per_mm2, 153.0 * 9.81e-9) << typed;
     EXPECT_EQ(document().undo_depth(), steps) << typed;
@@ -813,6 +814,20 @@ TEST_F(ExplorerTest, TypedArithmeticIsAValueAndTypedWordsAreRefusedWithAReason) 
         << message;
     EXPECT_NE(message.find("the value stays 153 g/m²"), std::string::npos) << message;
   }
+  // A unit is read in its own case, as on the command line: M is mega, not a metre.
+  const double height_mm = document().edited().hanging.height_mm;
+  ASSERT_EQ(type_into("h", "2.4M"), 0);
+  EXPECT_EQ(document().edited().hanging.height_mm, height_mm);
+  EXPECT_NE(status().message().find("height h: \"2.4M\": 'M' is not a unit of length (known: mm, "
+                                    "cm, m); did you mean 'm'? The value stays"),
+            std::string::npos)
+      << status().message();
+  ASSERT_EQ(type_into("w", "153 furlongs"), 0);
+  EXPECT_NE(status().message().find("'furlongs' is not a unit of weight per area"),
+            std::string::npos)
+      << status().message();
+  ASSERT_EQ(type_into("w", "150 GSM"), 0);
+  EXPECT_DOUBLE_EQ(document().edited().fabric.weight_N_per_mm2, 150.0 * 9.81e-9);
 }
 
 // Typed text that is no value stays on the slider as typed, reddened, with the reason under the
@@ -1746,6 +1761,54 @@ TEST_F(ExplorerTest, SaveAsRefusesTheNameOfAShippedPreset) {
   click("Save");
   EXPECT_EQ(status().modal_title(), "");
   EXPECT_TRUE(fs::exists(dir_ / "user-presets" / "cotton-poplin-2.json")) << last_text_;
+}
+
+// The custom size of a picture: a long number typed in width showed -276447231 (ImGui's int
+// field wrapped it around) and a message of WxH. Only digits get in, a few of them, and the
+// range is said in words.
+TEST_F(ExplorerTest, APicturesCustomSizeKeepsTypedDigitsBoundedAndSaysTheRange) {
+  ASSERT_EQ(play(*explorer_,
+                 {{"steps",
+                   {{{"click", "Export"}},
+                    {{"frames", 1}},
+                    {{"click", "3D view picture, any size (.png)..."}},
+                    {{"frames", 2}},
+                    {{"click", "custom"}},
+                    {{"frames", 2}}}}},
+                 [&] { frame(); }),
+            0);
+  ASSERT_NE(frame().find("height"), std::string::npos) << last_text_;
+  // The width field ends where its label starts: the text cursor goes after "1920".
+  const ImVec2 label = position_of("width");
+  click_at(ImVec2(label.x - 12.0f, label.y + 4.0f));
+  ImGui::GetIO().AddInputCharactersUTF8("abc-99999999999999");
+  frame();
+  const std::string text = frame();
+  // The letters and the sign are kept out, the digits stop at five: 1920 and one 9.
+  EXPECT_NE(text.find("19209 width"), std::string::npos) << text;
+  EXPECT_NE(text.find("The width must be from 200 to 8192 pixels,"), std::string::npos) << text;
+  EXPECT_NE(text.find("not 19209."), std::string::npos) << text;
+  EXPECT_EQ(text.find("must be WxH"), std::string::npos) << text;
+}
+
+TEST(PictureSize, TypedSidesAreReadWholeAndTheRangeIsSaid) {
+  using foldlab::gui::read_typed_picture_size;
+  const auto typed = read_typed_picture_size("1600", "900");
+  ASSERT_TRUE(typed.size.has_value()) << typed.problem;
+  EXPECT_EQ(typed.size->width, 1600);
+  EXPECT_EQ(typed.size->height, 900);
+  EXPECT_EQ(read_typed_picture_size("99999999999999", "1080").problem,
+            "The width must be from 200 to 8192 pixels, not 99999999999999.");
+  EXPECT_EQ(read_typed_picture_size("99999999999999999999999", "1080").problem,
+            "The width must be from 200 to 8192 pixels, not 99999999999999999999999.");
+  EXPECT_EQ(read_typed_picture_size("abc-99999999999999", "0").problem,
+            "The width must be a whole number of pixels from 200 to 8192, not "
+            "\"abc-99999999999999\". The height must be from 150 to 8192 pixels, not 0.");
+  EXPECT_EQ(read_typed_picture_size("", "1080").problem,
+            "The width must be a whole number of pixels from 200 to 8192.");
+  // Sides within their ranges, but more pixels than a picture may have.
+  EXPECT_NE(read_typed_picture_size("8192", "8192").problem.find("33.5 megapixels"),
+            std::string::npos);
 }
 
 TEST_F(ExplorerTest, NotSavingIsAWarningNotASuccess) {

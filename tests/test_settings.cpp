@@ -176,8 +176,8 @@ TEST(Settings, UnknownKeyIsReported) {
 }
 
 TEST(Settings, MalformedNumbersAreRejected) {
-  for (const char* value : {"1.5.3", "abc", "", "nan", "NaN", "inf", "-inf", "12 furlongs", " 1",
-                            "1 ", "1,5", "0x10", "--1"}) {
+  for (const char* value :
+       {"1.5.3", "abc", "", "nan", "NaN", "inf", "-inf", " 1", "1 ", "1,5", "0x10", "--1"}) {
     SCOPED_TRACE(std::string("'") + value + "'");
     Parameters p;
     const auto error = foldlab::apply_setting(p, "t", value);
@@ -227,6 +227,71 @@ TEST(Settings, WeightsAreReadInGramsPerSquareMetreAndOuncesPerSquareYard) {
   EXPECT_EQ(foldlab::shown_unit(w).symbol, "g/m²");
   EXPECT_NEAR(150.0 * foldlab::kNPerMm2PerGramPerM2 / foldlab::input_units(w)[2].per_unit, 4.4240,
               1e-4);
+}
+
+// SI writes m for a metre and M for mega: a unit is read in its own case, so 2.4M is no length.
+// gsm, a name no prefix changes, is read in any case.
+TEST(Settings, UnitsAreReadInTheirOwnCase) {
+  const foldlab::InputSpec& h = *foldlab::find_input("h");
+  const foldlab::InputSpec& w = *foldlab::find_input("w");
+  const foldlab::InputSpec& E = *foldlab::find_input("E");
+  for (const char* text : {"2.4M", "1Mm", "2.4MM", "140CM", "2.4 M"}) {
+    EXPECT_FALSE(foldlab::parse_quantity(h, text).has_value()) << text;
+  }
+  EXPECT_EQ(foldlab::parse_quantity(h, "2.4m"), 2400.0);
+  EXPECT_EQ(foldlab::parse_quantity(h, "1mm"), 1.0);
+  EXPECT_EQ(foldlab::parse_quantity(h, "140 cm"), 1400.0);
+  EXPECT_EQ(foldlab::parse_quantity(E, "0.165GPa"), 165.0);
+  EXPECT_EQ(foldlab::parse_quantity(E, "160MPa"), 160.0);
+  for (const char* text : {"0.165gpa", "0.165GPA", "160mpa", "160 Mpa"}) {
+    EXPECT_FALSE(foldlab::parse_quantity(E, text).has_value()) << text;
+  }
+  for (const char* text : {"150gsm", "150GSM", "150 Gsm", "150g/m2", "150 g/m²"}) {
+    ASSERT_TRUE(foldlab::parse_quantity(w, text).has_value()) << text;
+    EXPECT_NEAR(*foldlab::parse_quantity(w, text), 1.4715e-6, 1e-17) << text;  // 150 x 9.81e-9
+  }
+  EXPECT_FALSE(foldlab::parse_quantity(w, "150 G/M2").has_value());
+  // In the explorer a bare number is g/m² (its shown unit): still case-sensitive after it.
+  EXPECT_FALSE(foldlab::parse_quantity(w, "150 G/m2", "g/m²").has_value());
+}
+
+TEST(Settings, ARefusedUnitNamesTheKnownOnesAndTheRightCase) {
+  Parameters p;
+  const auto h_mega = foldlab::apply_setting(p, "h", "2.4M");
+  ASSERT_TRUE(h_mega.has_value());
+  EXPECT_EQ(*h_mega,
+            "h = '2.4M': 'M' is not a unit of length (known: mm, cm, m); did you mean 'm'?");
+  const auto h_feet = foldlab::apply_setting(p, "h", "8 ft");
+  ASSERT_TRUE(h_feet.has_value());
+  EXPECT_EQ(*h_feet, "h = '8 ft': 'ft' is not a unit of length (known: mm, cm, m)");
+  const auto e_giga = foldlab::apply_setting(p, "E", "0.1gpa");
+  ASSERT_TRUE(e_giga.has_value());
+  EXPECT_TRUE(contains(*e_giga,
+                       "'gpa' is not a unit of stress (known: MPa, GPa); did you mean "
+                       "'GPa'?"))
+      << *e_giga;
+  const auto w_caps = foldlab::apply_setting(p, "w", "80 G/M2");
+  ASSERT_TRUE(w_caps.has_value());
+  EXPECT_TRUE(contains(*w_caps,
+                       "'G/M2' is not a unit of weight per area (known: N/mm², g/m², "
+                       "oz/yd², gsm); did you mean 'g/m²'?"))
+      << *w_caps;
+  EXPECT_EQ(p.hanging.height_mm, Parameters{}.hanging.height_mm);
+  EXPECT_FALSE(foldlab::quantity_problem(*foldlab::find_input("h"), "2.4m").has_value());
+}
+
+// A key set twice is refused in the words a preset file uses for a duplicate key.
+TEST(Settings, RepeatedKeysAreNamedWithEveryValueGiven) {
+  EXPECT_TRUE(foldlab::repeated_keys({"h=2.4m", "t=0.3", "K=20"}, "--set").empty());
+  const std::vector<std::string> twice =
+      foldlab::repeated_keys({"h=2.4m", "t=0.3", "h=1000", "t=0.4", "h=2"}, "--set");
+  ASSERT_EQ(twice.size(), 2u);
+  EXPECT_EQ(twice[0],
+            "--set h=2.4m, --set h=1000 and --set h=2: duplicate key (each key may appear once; "
+            "which one is meant?)");
+  EXPECT_EQ(twice[1],
+            "--set t=0.3 and --set t=0.4: duplicate key (each key may appear once; which one is "
+            "meant?)");
 }
 
 // Simple arithmetic before the unit, with the usual precedence; what is not arithmetic is refused

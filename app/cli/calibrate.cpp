@@ -432,9 +432,9 @@ void declare(CLI::App& app, Options& options) {
       ->add_option("--fit", options.fit,
                    "K: fit K = c/(1-nu²) alone (p as the base has it); K,p: K and the exponent p "
                    "of s -> s^p in eq. 7")
-      ->check(CLI::IsMember({"K", "K,p"}));
+      ->check(app::one_of("fit", {"K", "K,p"}));
   command->add_option("--method", options.inputs.method, "solution method (default: the base's)")
-      ->check(CLI::IsMember({"paper", "exact"}));
+      ->check(app::input_choice("method"));
   app::add_law_option(*command, options.inputs.law);
   command
       ->add_option("--preset", options.inputs.preset_path,

@@ -1,5 +1,7 @@
 #include "app/cli/export.hpp"
 
+#include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <iostream>
 #include <regex>
@@ -114,6 +116,12 @@ Result run(const Options& options) {
   const GridSize grid = parse_grid(options.grid);
   const int samples = whole_samples(options.samples);
   check_distinct_files(outputs.files, {{"--preset", options.inputs.preset_path}});
+  for (std::size_t i = 0; i < kExportFormats.size(); ++i) {
+    std::string format(kExportFormats[i].key);
+    std::transform(format.begin(), format.end(), format.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::toupper(c)); });
+    app::check_output_extension(flag(i), options.paths[i], kExportFormats[i].extension, format);
+  }
   if (auto problem = check_grid_budget(grid.nx, grid.ny); problem && outputs.mesh) {
     throw InputError("--grid " + options.grid + ": " + *problem);
   }

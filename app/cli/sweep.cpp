@@ -4,6 +4,7 @@
 
 #include "app/cli/commands.hpp"
 #include "app/cli/output.hpp"
+#include "core/io/export_budget.hpp"
 #include "core/model/text_format.hpp"
 
 namespace foldlab::cli {
@@ -60,7 +61,8 @@ void declare(CLI::App& app, Options& options) {
   command->add_option("--from", options.axis.from, "first value (its unit: mm, MPa, N/mm²)")
       ->required();
   command->add_option("--to", options.axis.to, "last value")->required();
-  command->add_option("--steps", options.axis.steps, "number of values (default 50)");
+  command->add_option("--steps", options.axis.steps, "number of values (default 50)")
+      ->transform(app::whole_number_in(2, kMaxSweepSteps));
   command->add_flag("--log", options.log, "logarithmic spacing (default for t, E, w, K)");
   command->add_flag("--linear", options.linear, "linear spacing (default for h, L, d, nu)");
   command->add_flag("--csv", options.csv, "CSV instead of a table");

@@ -1,5 +1,7 @@
 #include "app/common/inputs.hpp"
 
+#include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
@@ -37,6 +39,28 @@ std::vector<std::string> overrides(const InputOptions& options, bool with_link) 
   return assignments;
 }
 
+// The refusals, each with what a bare number meant when the value that set it was one and the
+// explorer shows the input in another unit: `w=150` is 150 N/mm², not the 150 g/m² of its slider.
+std::string refusals(const std::vector<ValidationIssue>& issues,
+                     const std::vector<std::string>& assignments) {
+  std::string out;
+  for (const ValidationIssue& issue : issues) {
+    out += issue.message;
+    const InputSpec* spec = find_input_by_field(issue.field);
+    for (auto it = assignments.rbegin(); spec != nullptr && it != assignments.rend(); ++it) {
+      const std::size_t eq = it->find('=');
+      if (eq != std::string::npos && std::string_view(*it).substr(0, eq) == spec->key) {
+        if (const std::optional<std::string> hint = bare_number_hint(*spec, it->substr(eq + 1))) {
+          out += " (" + *hint + ")";
+        }
+        break;
+      }
+    }
+    out += '\n';
+  }
+  return out;
+}
+
 StartInputs resolve(const InputOptions& options, bool keep_refused) {
   StartInputs start;
   try {
@@ -48,6 +72,12 @@ StartInputs resolve(const InputOptions& options, bool keep_refused) {
   // What cannot be applied, named by the option it came with (it does not depend on the values
   // applied before it).
   std::string problems;
+  for (const std::string& repeated : repeated_keys(options.link, "--link")) {
+    problems += repeated + "\n";
+  }
+  for (const std::string& repeated : repeated_keys(options.assignments, "--set")) {
+    problems += repeated + "\n";
+  }
   Parameters scratch = start.preset.parameters;
   for (const std::string& error : apply_assignments(scratch, options.link)) {
     problems += "--link " + error + "\n";
@@ -73,7 +103,7 @@ StartInputs resolve(const InputOptions& options, bool keep_refused) {
       return start;
     }
   }
-  problems += format_issues(issues);
+  problems += refusals(issues, overrides(options, true));
   problems.pop_back();  // the final newline
   throw InputError(problems);
 }
@@ -86,6 +116,23 @@ Preset resolve_inputs(const InputOptions& options) {
 
 StartInputs resolve_start_inputs(const InputOptions& options) {
   return resolve(options, true);
+}
+
+void check_output_extension(std::string_view option, const std::string& path,
+                            std::string_view extension, std::string_view format) {
+  const auto lower = [](std::string_view text) {
+    std::string out(text);
+    for (char& c : out) {
+      c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    }
+    return out;
+  };
+  if (path.empty() || lower(path).ends_with(lower(extension))) {
+    return;
+  }
+  throw InputError(std::string(option) + " " + detail::cut(path) + " must end in " +
+                   std::string(extension) + " (in any case): what is written there is " +
+                   std::string(format));
 }
 
 CLI::Validator non_empty_path() {
@@ -114,6 +161,31 @@ CLI::Validator whole_number_in(std::int64_t lo, std::int64_t hi) {
       "N", range);
 }
 
+CLI::Validator input_choice(std::string_view key) {
+  const InputSpec* spec = find_input(key);
+  if (spec == nullptr || spec->kind != InputKind::choice) {
+    throw std::logic_error("no input with choices: " + std::string(key));
+  }
+  return CLI::Validator(
+      [key = std::string(key)](std::string& text) {
+        Parameters scratch;
+        return apply_setting(scratch, key, text).value_or(std::string());
+      },
+      "{" + std::string(spec->choices) + "}", std::string(key));
+}
+
+CLI::Validator one_of(std::string name, std::vector<std::string> choices) {
+  const std::string listed = detail::join(choices, ", ");
+  return CLI::Validator(
+      [name, choices, listed](std::string& text) {
+        if (std::find(choices.begin(), choices.end(), text) != choices.end()) {
+          return std::string();
+        }
+        return name + " = '" + detail::cut(text) + "' is not one of: " + listed;
+      },
+      "{" + listed + "}", name);
+}
+
 void add_input_options(CLI::App& command, InputOptions& options) {
   command
       .add_option("--preset", options.preset_path,
@@ -124,23 +196,24 @@ void add_input_options(CLI::App& command, InputOptions& options) {
   for (const InputSpec& spec : input_table()) {
     keys += "\n    " + input_label(spec) + ": " + std::string(spec.help);
   }
-  command.add_option("--set", options.assignments, "override an input, KEY=VALUE; keys:" + keys)
+  command
+      .add_option("--set", options.assignments,
+                  "override an input, KEY=VALUE; a value may end in a unit written as SI writes "
+                  "it (h=1.4m, E=0.165GPa, w=80g/m2; M is mega, not a metre) or gsm in any case; "
+                  "a bare number is in the key's unit; keys:" +
+                      keys)
       ->type_name("KEY=VALUE");
   command.add_option("--method", options.method, "solution method (default: the preset's)")
-      ->check(CLI::IsMember({"paper", "exact"}));
+      ->check(input_choice("method"));
   add_law_option(command, options.law);
 }
 
 void add_law_option(CLI::App& command, std::string& law) {
-  std::vector<std::string> laws;
-  for (const WrinkleLaw* each : wrinkle_laws()) {
-    laws.emplace_back(each->key());
-  }
   command
       .add_option("--law", law,
                   "the law that counts the folds, with its published constants (c, p = 1); "
                   "--set c=, K= or p= override them (default: the preset's law and constants)")
-      ->check(CLI::IsMember(laws));
+      ->check(input_choice("law"));
 }
 
 int guarded(const std::function<int()>& body) {

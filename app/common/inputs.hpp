@@ -73,12 +73,25 @@ struct NamedPath {
 void check_distinct_files(const std::vector<NamedPath>& outputs,
                           const std::vector<NamedPath>& inputs);
 
+// Throws InputError unless `path` ends in `extension` (".png"; in any case, ".PNG" too): a
+// command that writes one format must not put it under another's name, where a viewer would
+// misread it. Empty paths (not given) pass.
+void check_output_extension(std::string_view option, const std::string& path,
+                            std::string_view extension, std::string_view format);
+
 // For every option that names a file: an empty path (`--preset ''`, an unset shell variable) is
 // refused as invalid input rather than read as "not given", which would silently use a default.
 CLI::Validator non_empty_path();
 // A count given in any notation ("1e3" is 1000), refused unless whole and within [lo, hi]; use it
 // with ->transform() on an integer option.
 CLI::Validator whole_number_in(std::int64_t lo, std::int64_t hi);
+
+// An option that takes one of an input's choices (--method: the "method" row), refused in the
+// words --set uses: "method = 'Exact' is not one of: paper, exact".
+CLI::Validator input_choice(std::string_view key);
+// An option that takes one of `choices`, refused in the same words: "fit = 'k' is not one of:
+// K, K,p".
+CLI::Validator one_of(std::string name, std::vector<std::string> choices);
 
 // --preset, --set, --method and --law, for every command that solves.
 void add_input_options(CLI::App& command, InputOptions& options);

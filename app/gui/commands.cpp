@@ -13,6 +13,7 @@
 #include "app/gui/surface.hpp"
 #include "core/analysis/sweep.hpp"
 #include "core/io/link.hpp"
+#include "core/model/settings.hpp"
 #include "core/model/text_format.hpp"
 
 namespace foldlab::gui {
@@ -43,8 +44,15 @@ struct GuiCommandOptions {
 // it), so that the options given beside a link override it.
 void apply_link_option(GuiCommandOptions& options) {
   std::vector<std::string> view;
+  std::vector<std::string> pieces;
   for (const LinkAssignment& piece : parse_fabric_link(options.link)) {
     (is_link_view_key(piece.key) ? view : options.run.inputs.link).push_back(piece.set_text());
+    pieces.push_back(piece.set_text());
+  }
+  // The view keys too: `#theme=dark&theme=light` is as unclear as two values of t.
+  const std::vector<std::string> repeated = repeated_keys(pieces, "--link");
+  if (!repeated.empty()) {
+    throw InputError(detail::join_lines(repeated));
   }
   options.run.view_settings.insert(options.run.view_settings.begin(), view.begin(), view.end());
 }
@@ -90,7 +98,7 @@ void add_common_gui_options(CLI::App& command, GuiCommandOptions& options) {
   add_scene_options(command, options);
   command.add_option("--size", options.size, "window or picture size WxH (default 1280x800)");
   command.add_option("--tab", options.run.analysis_tab, "analysis tab shown at start")
-      ->check(CLI::IsMember({"equations", "method", "sweep", "map"}));
+      ->check(app::one_of("tab", {"equations", "method", "sweep", "map"}));
 }
 
 void add_play_option(CLI::App& command, GuiRunOptions& options) {
@@ -165,6 +173,7 @@ app::Command add_gui_command(CLI::App& app) {
       parse_size(options->size, options->run);
       check_play_options(options->run);
       prepare_run(*options, {{"--screenshot", options->run.screenshot_path}});
+      app::check_output_extension("--screenshot", options->run.screenshot_path, ".png", "PNG");
       if (!options->run.screenshot_path.empty() && options->run.frames == 0) {
         throw InputError("--screenshot needs --frames N");
       }
@@ -194,6 +203,7 @@ app::Command add_render_command(CLI::App& app) {
       if (options->run.screenshot_path.empty() && options->run.play_path.empty()) {
         throw InputError("render needs --out FILE.png (or --play SCRIPT.json)");
       }
+      app::check_output_extension("--out", options->run.screenshot_path, ".png", "PNG");
       options->run.fresh = true;
       if (options->run.frames == 0 && options->run.play_path.empty()) {
         options->run.frames = 3;  // ImGui settles table and child sizes over the first frames
@@ -344,6 +354,7 @@ app::Command add_picture_command(CLI::App& app) {
       }
       prepare_run(options->scene, {{"--out", options->out}});
       check_distinct_files({{"--out", options->out}}, {{"--b-preset", options->b_preset}});
+      app::check_output_extension("--out", options->out, ".png", "PNG");
       PictureInputs inputs;
       inputs.sweep_axis = picture_sweep_axis(*options, spec.view);
       inputs.b = picture_b(*options, spec.view);

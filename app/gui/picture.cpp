@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cfloat>
 #include <cmath>
+#include <cstdint>
+#include <limits>
 #include <string>
 
 #include <imgui.h>
@@ -265,6 +267,48 @@ std::optional<std::string> picture_size_problem(FrameSize size) {
            " is more pixels than a picture may have: 8192x4096 (33.5 megapixels)";
   }
   return std::nullopt;
+}
+
+TypedPictureSize read_typed_picture_size(std::string_view width, std::string_view height) {
+  TypedPictureSize out;
+  // nullopt unless digits alone; 10 digits and more are beyond any side, read as such.
+  const auto side = [](std::string_view text) -> std::optional<std::int64_t> {
+    if (text.empty() ||
+        !std::all_of(text.begin(), text.end(), [](char c) { return c >= '0' && c <= '9'; })) {
+      return std::nullopt;
+    }
+    if (text.size() > 9) {
+      return std::numeric_limits<std::int64_t>::max();
+    }
+    return std::stoll(std::string(text));
+  };
+  const auto check = [&](const char* name, std::string_view text, int lo, int hi) {
+    const std::string range = "from " + std::to_string(lo) + " to " + std::to_string(hi);
+    const std::optional<std::int64_t> value = side(text);
+    if (!value) {
+      out.problem += std::string(out.problem.empty() ? "" : " ") + "The " + name +
+                     " must be a whole number of pixels " + range +
+                     (text.empty() ? "." : ", not \"" + detail::cut(text) + "\".");
+      return 0;
+    }
+    if (*value < lo || *value > hi) {
+      out.problem += std::string(out.problem.empty() ? "" : " ") + "The " + name + " must be " +
+                     range + " pixels, not " + detail::cut(text) + ".";
+      return 0;
+    }
+    return static_cast<int>(*value);
+  };
+  const int w = check("width", width, kMinFrameSize.width, kMaxFrameSize.width);
+  const int h = check("height", height, kMinFrameSize.height, kMaxFrameSize.height);
+  if (!out.problem.empty()) {
+    return out;
+  }
+  if (std::optional<std::string> why = picture_size_problem({w, h})) {
+    out.problem = *why;
+    return out;
+  }
+  out.size = FrameSize{w, h};
+  return out;
 }
 
 std::optional<FrameSize> parse_picture_size(std::string_view text, std::string& problem) {

@@ -43,6 +43,18 @@ inline constexpr const char* kPictureBackgroundNames = "white, transparent, dark
 inline constexpr std::int64_t kMaxPicturePixels = std::int64_t{8192} * 4096;
 // Why `size` cannot be a picture's (nullopt when it can).
 std::optional<std::string> picture_size_problem(FrameSize size);
+// The two sides typed in the picture dialog's custom size: the size, or why there is none,
+// saying the ranges in words ("The width must be from 200 to 8192 pixels, not 99999."). The text
+// is read whole, digits alone, so that a long number is too large rather than wrapped around.
+struct TypedPictureSize {
+  std::optional<FrameSize> size;
+  std::string problem;  // empty when `size` is set
+};
+TypedPictureSize read_typed_picture_size(std::string_view width, std::string_view height);
+// The digits a side's field keeps: enough for the largest side and one more, so that one typed
+// too many is seen and said rather than cut off.
+inline constexpr std::size_t kPictureSideDigits = 5;
+
 // "WxH" as a picture's size; the problem otherwise.
 std::optional<FrameSize> parse_picture_size(std::string_view text, std::string& problem);
 

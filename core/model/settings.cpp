@@ -48,6 +48,7 @@ std::vector<InputSpec> build_table() {
       {.key = "t",
        .name = "thickness",
        .unit = "mm",
+       .quantity = "length",
        .field = "t_mm",
        .preset = "/fabric/thickness_mm",
        .help = "fabric thickness: silk chiffon about 0.09 mm, cotton poplin 0.2, linen 0.4, "
@@ -67,6 +68,7 @@ std::vector<InputSpec> build_table() {
       {.key = "E",
        .name = "Young's modulus",
        .unit = "MPa",
+       .quantity = "stress",
        .field = "E_MPa",
        .preset = "/fabric/youngs_modulus_MPa",
        .help = "Young's modulus (MPa = N/mm²): cotton jersey knit about 9 MPa, silk chiffon 78, "
@@ -87,11 +89,13 @@ std::vector<InputSpec> build_table() {
       {.key = "w",
        .name = "weight per area",
        .unit = "N/mm²",
+       .quantity = "weight per area",
        .field = "w_N_per_mm2",
        .preset = "/fabric/weight_N_per_mm2",
        .help = "weight per area: silk chiffon about 35 g/m², cotton poplin 120, linen 200, "
                "denim (13 oz/yd²) 441 (presets/FABRICS.md); 1.5e-6 N/mm² = 153 g/m², and "
-               "80g/m2, 2.4oz/yd2 are read too",
+               "80g/m2, 80gsm, 2.4oz/yd2 are read too; a bare number is N/mm², so 150 g/m² is "
+               "w=150gsm",
        .valid = closed(0.1 * kNPerMm2PerGramPerM2, 1e6 * kNPerMm2PerGramPerM2),
        .why = "from the lightest tissue to a tonne per square metre",
        .typical_lo = 1e-7,
@@ -123,6 +127,7 @@ std::vector<InputSpec> build_table() {
       {.key = "h",
        .name = "height",
        .unit = "mm",
+       .quantity = "length",
        .field = "h_mm",
        .preset = "/hanging/height_mm",
        .help = "height of the cloth at the centre: a window curtain about 1500-2500 mm, the "
@@ -139,6 +144,7 @@ std::vector<InputSpec> build_table() {
       {.key = "L",
        .name = "width",
        .unit = "mm",
+       .quantity = "length",
        .field = "L_mm",
        .preset = "/hanging/length_mm",
        .help = "length of the upper edge (width): the paper's cloth 1400 mm, a curtain panel "
@@ -155,6 +161,7 @@ std::vector<InputSpec> build_table() {
       {.key = "d",
        .name = "support displacement",
        .unit = "mm",
+       .quantity = "length",
        .field = "d_mm",
        .preset = "/hanging/support_displacement_mm",
        .help = "support displacement: the span is l = L - d (span_rule L-2d: each support moves d)",
@@ -338,6 +345,7 @@ std::vector<InputSpec> build_table() {
       {.key = "incline_deg",
        .name = "incline",
        .unit = "deg",
+       .quantity = "angle",
        .field = "incline_deg",
        .preset = "/shape/incline_deg",
        .help = "inclined: angle of the line through the supports",
@@ -507,8 +515,8 @@ std::string refusal_sentence(const InputSpec& spec, double value, const InputInt
 
 namespace {
 
-// A unit as typed, for comparison: no spaces, lower case, ² as 2, so that "G/M²" and "g / m2"
-// are one unit.
+// A unit as typed, for comparison: no spaces, ² as 2, so that "g/m²" and "g / m2" are one unit.
+// Case is kept: SI prefixes differ only in it (m, M).
 std::string unit_key(std::string_view text) {
   std::string out;
   for (std::size_t i = 0; i < text.size(); ++i) {
@@ -517,42 +525,142 @@ std::string unit_key(std::string_view text) {
       out += '2';
       i += std::string_view("²").size() - 1;
     } else if (c != ' ' && c != '\t') {
-      out += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+      out += c;
     }
   }
   return out;
+}
+
+std::string lower_case(std::string_view text) {
+  std::string out(text);
+  for (char& c : out) {
+    c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  }
+  return out;
+}
+
+bool names_unit(const InputUnit& unit, const std::string& typed) {
+  return typed == unit_key(unit.symbol) ||
+         (!unit.plain.empty() && lower_case(typed) == lower_case(unit.plain));
+}
+
+// The number (or arithmetic) at the front of `text` and the unit typed after it, as unit_key
+// writes it; nullopt when no number starts the text or only spaces follow it.
+struct TypedQuantity {
+  double number = 0.0;
+  std::string unit;
+  std::string_view unit_text;
+};
+
+std::optional<TypedQuantity> split_quantity(std::string_view text) {
+  const std::optional<ArithmeticPrefix> arithmetic = arithmetic_prefix(text);
+  // A number alone must be the whole text, as for parse_number: no space before it either.
+  if (!arithmetic || text.starts_with(' ') || text.starts_with('\t')) {
+    return std::nullopt;
+  }
+  const std::string_view rest = text.substr(arithmetic->end);
+  TypedQuantity out{arithmetic->value, unit_key(rest), rest};
+  // A number alone must be the whole text, as for parse_number; before a unit, spaces may stand.
+  if (out.unit.empty() && !rest.empty()) {
+    return std::nullopt;
+  }
+  return out;
+}
+
+int parenthesis_depth(std::string_view text) {
+  int depth = 0;
+  int deepest = 0;
+  for (const char c : text) {
+    depth += c == '(' ? 1 : c == ')' ? -1 : 0;
+    deepest = std::max(deepest, depth);
+  }
+  return deepest;
 }
 
 }  // namespace
 
 std::optional<double> parse_quantity(const InputSpec& spec, std::string_view text,
                                      std::string_view bare_unit) {
-  const std::optional<ArithmeticPrefix> arithmetic = arithmetic_prefix(text);
-  // A number alone must be the whole text, as for parse_number: no space before it either.
-  if (!arithmetic || text.starts_with(' ') || text.starts_with('\t')) {
-    return std::nullopt;
-  }
-  const double number = arithmetic->value;
-  const char* end = text.data() + text.size();
-  const char* rest = text.data() + arithmetic->end;
-  // A number alone must be the whole text, as for parse_number; before a unit, spaces may stand.
-  const std::string typed = unit_key(std::string_view(rest, static_cast<std::size_t>(end - rest)));
-  if (typed.empty() && rest != end) {
+  const std::optional<TypedQuantity> typed = split_quantity(text);
+  if (!typed) {
     return std::nullopt;
   }
   const std::vector<InputUnit> units = input_units(spec);
   const std::string bare = unit_key(bare_unit);
   for (const InputUnit& unit : units) {
-    const std::string key = unit_key(unit.symbol);
-    const bool named = typed == key || (!unit.plain.empty() && typed == unit_key(unit.plain));
-    if (named || (typed.empty() && (bare.empty() ? &unit == &units.front() : bare == key))) {
-      return number * unit.per_unit;
+    const bool bare_here = bare.empty() ? &unit == &units.front() : bare == unit_key(unit.symbol);
+    if (typed->unit.empty() ? bare_here : names_unit(unit, typed->unit)) {
+      return typed->number * unit.per_unit;
     }
   }
-  if (typed.empty() && units.empty()) {
-    return number;
+  if (typed->unit.empty() && units.empty()) {
+    return typed->number;
   }
   return std::nullopt;
+}
+
+std::optional<std::string> quantity_problem(const InputSpec& spec, std::string_view text,
+                                            std::string_view bare_unit) {
+  if (parse_quantity(spec, text, bare_unit)) {
+    return std::nullopt;
+  }
+  if (parenthesis_depth(text) > kMaxArithmeticDepth) {
+    return " is nested too deeply: arithmetic may nest at most " +
+           std::to_string(kMaxArithmeticDepth) + " parentheses deep";
+  }
+  const std::optional<TypedQuantity> typed = split_quantity(text);
+  const std::vector<InputUnit> units = input_units(spec);
+  // Only a name after the number (letters, or a symbol such as µ, with at most a square's 2 at
+  // its end) is a unit the person meant; "2*", "1)" or "0x10" is a number gone wrong.
+  const auto names_a_unit = [](std::string_view unit) {
+    const auto first = static_cast<unsigned char>(unit.front());
+    const std::string_view body = unit.ends_with('2') ? unit.substr(0, unit.size() - 1) : unit;
+    return (std::isalpha(first) != 0 || first >= 0x80) &&
+           std::none_of(body.begin(), body.end(), [](char c) { return c >= '0' && c <= '9'; });
+  };
+  if (!typed || typed->unit.empty() || units.empty() || !names_a_unit(typed->unit)) {
+    std::vector<std::string_view> symbols;
+    for (const InputUnit& unit : units) {
+      symbols.push_back(unit.symbol);
+    }
+    return std::string(" is not a number") +
+           (symbols.size() > 1 ? " (with an optional unit: " + detail::join(symbols, ", ") + ")"
+                               : "");
+  }
+  std::vector<std::string_view> known;
+  std::optional<std::string_view> meant;
+  for (const InputUnit& unit : units) {
+    known.push_back(unit.symbol);
+    if (lower_case(typed->unit) == lower_case(unit_key(unit.symbol))) {
+      meant = unit.symbol;
+    }
+  }
+  std::string_view unit_text = typed->unit_text;
+  while (!unit_text.empty() && (unit_text.front() == ' ' || unit_text.front() == '\t')) {
+    unit_text.remove_prefix(1);
+  }
+  for (const InputUnit& unit : units) {
+    if (!unit.plain.empty()) {
+      known.push_back(unit.plain);
+    }
+  }
+  const std::string_view quantity = spec.quantity.empty() ? spec.name : spec.quantity;
+  return ": '" + detail::cut(unit_text) + "' is not a unit of " + std::string(quantity) +
+         " (known: " + detail::join(known, ", ") + ")" +
+         (meant ? "; did you mean '" + std::string(*meant) + "'?" : "");
+}
+
+std::optional<std::string> bare_number_hint(const InputSpec& spec, std::string_view text) {
+  const std::optional<TypedQuantity> typed = split_quantity(text);
+  const InputUnit shown = shown_unit(spec);
+  if (!typed || !typed->unit.empty() || spec.shown_unit == 0) {
+    return std::nullopt;
+  }
+  const std::string written = detail::shortest_number(typed->number) +
+                              std::string(shown.plain.empty() ? shown.symbol : shown.plain);
+  return "a bare number for " + std::string(spec.key) + " is read in " + std::string(spec.unit) +
+         "; for " + detail::message_number(typed->number) + " " + std::string(shown.symbol) +
+         " write " + std::string(spec.key) + "=" + written;
 }
 
 InputInterval slider_ends(const InputSpec& spec, SliderReach reach) {
@@ -658,12 +766,10 @@ std::optional<std::string> apply_setting(Parameters& p, std::string_view key,
       return std::string(key) + " = '" + detail::cut(value) +
              "' is beyond the range of a double (magnitudes 2.2e-308 to 1.8e308)";
     }
-    std::vector<std::string_view> units;
-    for (const InputUnit& unit : input_units(*spec)) {
-      units.push_back(unit.symbol);
-    }
-    return std::string(key) + " = '" + detail::cut(value) + "' is not a number" +
-           (units.size() > 1 ? " (with an optional unit: " + detail::join(units, ", ") + ")" : "");
+    const std::string problem = spec->kind == InputKind::whole_number
+                                    ? std::string(" is not a number")
+                                    : quantity_problem(*spec, value).value_or(" is not a number");
+    return std::string(key) + " = '" + detail::cut(value) + "'" + problem;
   }
   return set_input(p, key, *number);
 }
@@ -673,6 +779,35 @@ std::optional<std::string> apply_assignment(Parameters& p, const Assignment& ass
     return set_input(p, assignment.key, *number);
   }
   return apply_setting(p, assignment.key, std::get<std::string>(assignment.value));
+}
+
+std::vector<std::string> repeated_keys(const std::vector<std::string>& assignments,
+                                       std::string_view option) {
+  std::vector<std::string> problems;
+  std::vector<std::string_view> reported;
+  const auto key_of = [](std::string_view assignment) {
+    return assignment.substr(0, assignment.find('='));
+  };
+  for (std::size_t i = 0; i < assignments.size(); ++i) {
+    const std::string_view key = key_of(assignments[i]);
+    if (key.empty() || std::find(reported.begin(), reported.end(), key) != reported.end()) {
+      continue;
+    }
+    std::vector<std::string> givers{std::string(option) + " " + detail::cut(assignments[i])};
+    for (std::size_t j = i + 1; j < assignments.size(); ++j) {
+      if (key_of(assignments[j]) == key) {
+        givers.push_back(std::string(option) + " " + detail::cut(assignments[j]));
+      }
+    }
+    if (givers.size() > 1) {
+      reported.push_back(key);
+      const std::string last = givers.back();
+      givers.pop_back();
+      problems.push_back(detail::join(givers, ", ") + " and " + last +
+                         ": duplicate key (each key may appear once; which one is meant?)");
+    }
+  }
+  return problems;
 }
 
 std::vector<std::string> apply_assignments(Parameters& p,

@@ -27,8 +27,9 @@ enum class InputScale { linear, logarithmic };
 
 // A unit a value may be typed in: `symbol` as shown, `per_unit` the stored value of one of it
 // (1 g/m² is 9.81e-9 N/mm²), `format` how a value in it is shown, and `plain`, when the symbol
-// needs more than letters, a name of it in letters alone, read as the symbol is and written in
-// links ("gsm" for g/m²).
+// needs more than letters, a name of it in letters alone, written in links ("gsm" for g/m²).
+// A symbol is read in its own case, as SI writes it (m is a metre, M would be mega); a plain
+// name, which no prefix can change, in any case ("gsm", "GSM").
 struct InputUnit {
   std::string_view symbol{};
   double per_unit = 1.0;
@@ -70,6 +71,9 @@ struct InputSpec {
   std::string_view name{};    // what it is, for labels and help: "thickness"
   std::string_view symbol{};  // as the paper writes it where that is not the key: "ν" for nu
   std::string_view unit{};    // "mm", "MPa", ...; empty when dimensionless
+  // What its units measure, for a message about a unit that is not one: "length"; empty: the
+  // input's own name.
+  std::string_view quantity{};
   std::string_view field{};   // validation and report name, with the unit: "t_mm"
   std::string_view preset{};  // JSON pointer in a preset file: "/fabric/thickness_mm"; empty: none
   std::string_view help{};    // one line for help texts and tooltips
@@ -139,6 +143,13 @@ struct Assignment {
 };
 std::optional<std::string> apply_assignment(Parameters& p, const Assignment& assignment);
 
+// Every key that more than one of the "KEY=VALUE" assignments sets, as a sentence naming them
+// after `option`: "--set h=2.4m and --set h=1000: duplicate key (each key may appear once; which
+// one is meant?)". Applied in order, the last would win without a word, as a preset file does
+// not allow either.
+std::vector<std::string> repeated_keys(const std::vector<std::string>& assignments,
+                                       std::string_view option);
+
 // Applies "KEY=VALUE" assignments in order, except that every K comes after all the others
 // (so `--set K=30 --set nu=0.2` means K = 30 at nu = 0.2). Returns every error at once.
 std::vector<std::string> apply_assignments(Parameters& p,
@@ -178,11 +189,20 @@ std::string refusal_sentence(const InputSpec& spec, double value, const InputInt
 
 // "80 g/m2", "80 g/m²", "80gsm", "2.4 oz/yd2", "1.5e-6 N/mm2", "2*153 g/m2", "(80 + 120)/2": a
 // number or simple arithmetic of numbers (+ - * / and parentheses), optionally followed by
-// one of input_units(spec) (spaces, case and ² vs 2 do not matter), as the value in the stored
-// unit. A bare number is in `bare_unit` (a symbol from input_units, or empty for the stored
-// unit). nullopt when the number or the unit cannot be read.
+// one of input_units(spec) (spaces and ² vs 2 do not matter; case does, see InputUnit), as the
+// value in the stored unit. A bare number is in `bare_unit` (a symbol from input_units, or empty
+// for the stored unit). nullopt when the number or the unit cannot be read.
 std::optional<double> parse_quantity(const InputSpec& spec, std::string_view text,
                                      std::string_view bare_unit = {});
+// Why parse_quantity cannot read `text`, as the rest of a sentence that has just quoted it:
+// ": 'M' is not a unit of length (known: mm, cm, m); did you mean 'm'?", " is nested too
+// deeply: ...", " is not a number". nullopt when it can be read.
+std::optional<std::string> quantity_problem(const InputSpec& spec, std::string_view text,
+                                            std::string_view bare_unit = {});
+// When `text` is a bare number (no unit) for an input that the explorer shows in another unit
+// than it stores: what a bare number means here and how to write it in the shown unit ("a bare
+// number for w is read in N/mm²; for 150 g/m² write w=150gsm"). nullopt otherwise.
+std::optional<std::string> bare_number_hint(const InputSpec& spec, std::string_view text);
 
 // The part of the slider's range (slider_ends) that validate() accepts with the other
 // inputs of `p` as they are: d stops below L/2, L above 2d. Found by bisection against

@@ -222,15 +222,29 @@ void ExportPanel::draw_picture_dialog(UiStatus& status, FileDialog& files) {
     ImGui::RadioButton(kPictureSizes[i].label, &size_choice_, i);
   }
   ImGui::RadioButton("custom", &size_choice_, kCustomSize);
+  std::optional<std::string> problem;
   if (size_choice_ == kCustomSize) {
+    // Text, not ImGui's InputInt: that reads a long number into an int, wrapped around to a
+    // negative size. Only digits get in, and no more than a side can need.
+    const auto digits_only = [](ImGuiInputTextCallbackData* data) {
+      return data->EventChar >= '0' && data->EventChar <= '9' ? 0 : 1;
+    };
     ImGui::SetNextItemWidth(ems(6.0f));
-    ImGui::InputInt("width", &custom_width_, 0);
+    ImGui::InputText("width", custom_width_, sizeof custom_width_,
+                     ImGuiInputTextFlags_CallbackCharFilter, digits_only);
     ImGui::SameLine();
     ImGui::SetNextItemWidth(ems(6.0f));
-    ImGui::InputInt("height", &custom_height_, 0);
+    ImGui::InputText("height", custom_height_, sizeof custom_height_,
+                     ImGuiInputTextFlags_CallbackCharFilter, digits_only);
+    const TypedPictureSize typed = read_typed_picture_size(custom_width_, custom_height_);
+    if (typed.size) {
+      dialog_spec_.size = *typed.size;
+    } else {
+      problem = typed.problem;
+    }
+  } else {
+    dialog_spec_.size = kPictureSizes[size_choice_].size;
   }
-  dialog_spec_.size = size_choice_ == kCustomSize ? FrameSize{custom_width_, custom_height_}
-                                                  : kPictureSizes[size_choice_].size;
   ImGui::TextUnformatted("Background");
   int background = static_cast<int>(dialog_spec_.background);
   ImGui::RadioButton("white", &background, static_cast<int>(PictureBackground::white));
@@ -243,7 +257,9 @@ void ExportPanel::draw_picture_dialog(UiStatus& status, FileDialog& files) {
   if (dialog_spec_.view == PictureView::fold_plot) {
     ImGui::Checkbox("legend", &dialog_spec_.legend);
   }
-  const std::optional<std::string> problem = picture_size_problem(dialog_spec_.size);
+  if (!problem) {
+    problem = picture_size_problem(dialog_spec_.size);
+  }
   if (problem) {
     ImGui::PushTextWrapPos(ems(24.0f));
     ImGui::TextColored(kErrorText, "%s", problem->c_str());

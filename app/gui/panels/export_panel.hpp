@@ -54,8 +54,9 @@ class ExportPanel {
   bool open_dialog_ = false;
   PictureSpec dialog_spec_;
   int size_choice_ = 0;  // kPictureSizes, then custom
-  int custom_width_ = 1920;
-  int custom_height_ = 1080;
+  // As typed, digits alone (kPictureSideDigits of them): read by read_typed_picture_size.
+  char custom_width_[kPictureSideDigits + 1] = "1920";
+  char custom_height_[kPictureSideDigits + 1] = "1080";
 };
 
 // The mesh as the 3D view shows it: with the breeze's offset at this instant when it blows

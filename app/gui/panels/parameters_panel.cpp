@@ -237,10 +237,16 @@ std::optional<double> ParametersPanel::read_typed(UiStatus& status, const InputS
   for (const InputUnit& unit : input_units(spec)) {
     units += (units.empty() ? "" : ", ") + std::string(unit.symbol);
   }
-  const std::string reason = input_title(spec) + ": \"" + detail::cut(text) + "\" is not a number" +
-                             (units.empty() ? "" : " with a unit (" + units + ")") +
-                             ", nor arithmetic such as 2*153; the value stays " +
-                             shown_text(spec, value) + ".";
+  const std::string quoted = input_title(spec) + ": \"" + detail::cut(text) + "\"";
+  const std::string value_now = shown_text(spec, value);
+  const std::optional<std::string> problem = quantity_problem(spec, text, shown_unit(spec).symbol);
+  // A unit or nesting that is named is said as it is; anything else is no number at all.
+  const bool named = problem && !problem->starts_with(" is not a number");
+  const std::string reason =
+      named ? quoted + *problem + (problem->ends_with('?') ? " " : ". ") + "The value stays " +
+                  value_now + "."
+            : quoted + " is not a number" + (units.empty() ? "" : " with a unit (" + units + ")") +
+                  ", nor arithmetic such as 2*153; the value stays " + value_now + ".";
   unread_[key] = {detail::cut(text), reason, value};
   status.notify(reason, MessageKind::error);
   return std::nullopt;
