@@ -170,27 +170,52 @@ class Page:
                 raise AssertionError(f"{what}: not within {timeout_s} s; the page's log: {log}")
             time.sleep(0.1)
 
-    def settle(self, frames=3):
-        """Waits until the explorer has drawn `frames` more frames, or has come to rest (a
-        resting explorer draws nothing until the next input)."""
-        state = self.state()
-        start = last = state["renderer"]["frames"]
-        changed = time.monotonic()
-        while last < start + frames and time.monotonic() - changed < 1.5:
-            time.sleep(0.05)
-            state = self.state()
-            if state["renderer"]["frames"] != last:
-                last = state["renderer"]["frames"]
-                changed = time.monotonic()
-        return state
+    def settle(self, frames=3, timeout_s=120):
+        """Waits on the page's own state, never on a time: until the page has passed on all the
+        input it was given (its touch handling's queue, Module.foldlabPendingInput, is empty),
+        and then until the explorer has drawn `frames` more frames or has come to rest
+        (Module.foldlabResting: the frames after the last input drawn and no input unseen; a
+        resting explorer draws nothing until the next input). `timeout_s` only says when the
+        page is stuck."""
+        deadline = time.monotonic() + timeout_s
+        start = None
+        while True:
+            done = self.tools.evaluate(
+                "(() => { const s = Module.foldlabState();"
+                " return [Module.foldlabPendingInput ? Module.foldlabPendingInput() : 0,"
+                " Module.foldlabResting(), s.renderer.frames]; })()")
+            pending, resting, frames_drawn = done
+            if pending == 0:
+                if start is None:
+                    start = frames_drawn
+                if resting or frames_drawn >= start + frames:
+                    return self.state()
+            if time.monotonic() > deadline:
+                raise AssertionError(f"the page did not settle within {timeout_s} s "
+                                     f"({pending} inputs pending, {frames_drawn} frames)")
+            time.sleep(0.02)
+
+    def wait_for(self, what, expression, timeout_s=120):
+        """Waits until the JavaScript `expression` is true in the page."""
+        deadline = time.monotonic() + timeout_s
+        while not self.tools.evaluate(expression):
+            if time.monotonic() > deadline:
+                raise AssertionError(f"{what}: not within {timeout_s} s")
+            time.sleep(0.02)
 
     def mouse(self, kind, x, y, buttons=0):
         self.tools.send("Input.dispatchMouseEvent", type=kind, x=x, y=y, button="left",
                         buttons=buttons, clickCount=1)
 
-    def touch(self, kind, points):
-        self.tools.send("Input.dispatchTouchEvent", type=kind,
+    def touch(self, kind, points, at_s=None):
+        """A touch event stamped `at_s` (seconds since the epoch; now by default): the page judges
+        a long press by its events' own times, so a test gives the finger's timeline, which a
+        busy machine's late delivery (each event waits for the page to take the last) cannot
+        stretch. Returns the stamp."""
+        stamp = time.time() if at_s is None else at_s
+        self.tools.send("Input.dispatchTouchEvent", type=kind, timestamp=stamp,
                         touchPoints=[{"x": x, "y": y, "id": i} for i, (x, y) in enumerate(points)])
+        return stamp
 
     def screenshot(self, path, clip=None):
         """The page as a PNG (device pixels); `clip` (x, y, w, h) in CSS pixels: that part."""
@@ -304,8 +329,9 @@ def check_touch(args, root, problems):
         # A tap is a click: the h slider's value goes where the finger tapped.
         x, y = slider_css(state, "h", 1, 0.75)
         h_before = state["parameters"]["h_mm"]
-        page.touch("touchStart", [(x, y)])
-        page.touch("touchEnd", [])
+        # The finger lifts 50 ms after it touched, whenever the page gets to either event.
+        down_s = page.touch("touchStart", [(x, y)])
+        page.touch("touchEnd", [], down_s + 0.05)
         state = page.settle()
         check(problems, state["parameters"]["h_mm"] > h_before,
               f"a tap at 3/4 of the h slider left h at {state['parameters']['h_mm']} (was {h_before})")
@@ -315,32 +341,34 @@ def check_touch(args, root, problems):
         # finger (10 px), so that a slow machine's frames cannot turn the drag into a long press.
         x, y = slider_css(state, "w", 1)
         w_before = state["parameters"]["w_N_per_mm2"]
-        page.touch("touchStart", [(x, y)])
+        # 12 px every 30 ms.
+        down_s = page.touch("touchStart", [(x, y)])
         for step in range(1, 6):
-            page.touch("touchMove", [(x + 12 * step, y)])
+            page.touch("touchMove", [(x + 12 * step, y)], down_s + 0.03 * step)
             page.settle(1)
-        page.touch("touchEnd", [])
+        page.touch("touchEnd", [], down_s + 0.18)
         state = page.settle()
         check(problems, state["parameters"]["w_N_per_mm2"] > w_before,
               f"a drag to the right on the w slider left w at {state['parameters']['w_N_per_mm2']}")
         # A one-finger drag on the 3D view orbits it.
         cx, cy = panel_centre_css(state, "cloth", 1)
         yaw_before = state["camera"]["yaw_rad"]
-        page.touch("touchStart", [(cx, cy)])
+        down_s = page.touch("touchStart", [(cx, cy)])
         for step in range(1, 6):
-            page.touch("touchMove", [(cx + 12 * step, cy)])
+            page.touch("touchMove", [(cx + 12 * step, cy)], down_s + 0.03 * step)
             page.settle(1)
-        page.touch("touchEnd", [])
+        page.touch("touchEnd", [], down_s + 0.18)
         state = page.settle()
         check(problems, state["camera"]["yaw_rad"] < yaw_before - 0.1,
               f"a drag on the 3D view left its yaw at {state['camera']['yaw_rad']} ({yaw_before})")
         # Two fingers spreading from 60 to 120 px apart: the view comes twice as close.
         distance_before = state["camera"]["distance_mm"]
-        page.touch("touchStart", [(cx - 30, cy), (cx + 30, cy)])
+        down_s = page.touch("touchStart", [(cx - 30, cy), (cx + 30, cy)])
         for step in range(1, 7):
-            page.touch("touchMove", [(cx - 30 - 5 * step, cy), (cx + 30 + 5 * step, cy)])
+            page.touch("touchMove", [(cx - 30 - 5 * step, cy), (cx + 30 + 5 * step, cy)],
+                       down_s + 0.03 * step)
             page.settle(1)
-        page.touch("touchEnd", [])
+        page.touch("touchEnd", [], down_s + 0.21)
         state = page.settle()
         ratio = state["camera"]["distance_mm"] / distance_before
         check(problems, abs(ratio - 0.5) < 0.02,
@@ -350,7 +378,10 @@ def check_touch(args, root, problems):
         # which the field opens selected.
         x, y = slider_css(state, "h", 1)
         page.touch("touchStart", [(x, y)])
-        time.sleep(0.8)
+        # The finger stays down until the page has turned it into a Ctrl+click (its timer, then
+        # frames): on a busy machine the lift could otherwise reach the page before the timer.
+        page.wait_for("the long press's Ctrl+click",
+                      "document.activeElement && document.activeElement.id === 'foldlab-keyboard'")
         page.touch("touchEnd", [])
         page.settle()
         focused = page.tools.evaluate("document.activeElement && document.activeElement.id")
