@@ -15,6 +15,7 @@ Checks (each its own ctest):
             typed value with the on-screen keyboard's field focused, and typed text arrives
   scheme    the theme follows the browser's prefers-color-scheme and the text size its default
             font size, with no stored session
+  layout    a tile resized with the mouse (the fold plot's grip) is where it was after a reload
   regime_map  tests/web/regime_map_slices.json played in real time (a virtual clock stands still
             while a slice runs, so it would run the whole map in one frame): three frames after
             the tab opens the map is part done, so frames keep coming while it runs; at the end
@@ -431,6 +432,55 @@ def check_scheme(args, root, problems):
             page.close()
 
 
+def check_layout(args, root, problems):
+    # A person's page: nothing in the address, so the reload restores the session, as the
+    # desktop's next start does.
+    page = Page(args, os.path.join(root, "layout"), "")
+    try:
+        state = ready(page)
+        fresh = state["layout"]["panels"]
+        # The resize grip in the fold plot's lower right corner, dragged 80 px left and 40 px
+        # down with the mouse, as a person resizes the tiles: the edges it shares with the 3D
+        # view and the panels below move with it. 8 px inside the corner: the neighbours' edges
+        # take the 4 px either side of theirs (the page's GLFW has mouse cursors, so edges
+        # resize).
+        rect = fresh["fold_plot"]
+        x, y = rect["x"] + rect["w"] - 8, rect["y"] + rect["h"] - 8
+        page.mouse("mouseMoved", x, y)
+        page.settle()
+        page.mouse("mousePressed", x, y, 1)
+        page.settle(1)
+        for step in range(1, 5):
+            page.mouse("mouseMoved", x - 20 * step, y + 10 * step, 1)
+            page.settle(1)
+        page.mouse("mouseReleased", x - 80, y + 40)
+        dragged = page.settle()
+        now = dragged["layout"]["panels"]["fold_plot"]
+        check(problems, abs(now["w"] - (rect["w"] - 80)) <= 1 and
+              abs(now["h"] - (rect["h"] + 40)) <= 1,
+              f"dragging the fold plot's corner 80 px left and 40 px down made it {now['w']} x "
+              f"{now['h']} px, from {rect['w']} x {rect['h']}")
+        check(problems, dragged["layout"]["automatic"] and dragged["layout"]["fills_window"],
+              f"after the drag the tiles are {dragged['layout']}")
+        page.tools.evaluate("window.foldlabBeforeReload = true")
+        page.tools.send("Page.reload")
+        page.wait_for("the reloaded page's first frames",
+                      "!window.foldlabBeforeReload && window.Module && Module.foldlabState && "
+                      "Module.foldlabState() && Module.foldlabState().renderer.frames >= 5")
+        back = page.settle()
+        check(problems, back["message"] == "Restored the last session.",
+              f"after the reload the status says {back['message']!r}")
+        for key, was in dragged["layout"]["panels"].items():
+            now = back["layout"]["panels"].get(key)
+            check(problems, now is not None and
+                  all(abs(now[side] - was[side]) <= 1 for side in ("x", "y", "w", "h")),
+                  f"after the reload {key} is {now}, before it {was}")
+        check(problems, back["layout"]["automatic"] == dragged["layout"]["automatic"],
+              f"after the reload the layout is automatic = {back['layout']['automatic']}")
+    finally:
+        page.close()
+
+
 def check_regime_map(args, root, problems):
     here = os.path.dirname(os.path.abspath(__file__))
     page = Page(args, os.path.join(root, "map"),
@@ -481,7 +531,7 @@ def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("--site", required=True)
     parser.add_argument("--check", required=True,
-                        choices=["dpr", "touch", "scheme", "regime_map"])
+                        choices=["dpr", "touch", "scheme", "layout", "regime_map"])
     parser.add_argument("--native", help="the desktop program (regime_map)")
     parser.add_argument("--presets", help="the presets folder (regime_map)")
     parser.add_argument("--chromium", default="chromium")
@@ -491,7 +541,7 @@ def main():
     started = time.monotonic()
     with tempfile.TemporaryDirectory(prefix="foldlab_drive_") as root:
         {"dpr": check_dpr, "touch": check_touch, "scheme": check_scheme,
-         "regime_map": check_regime_map}[args.check](
+         "layout": check_layout, "regime_map": check_regime_map}[args.check](
             args, root, problems)
     for problem in problems:
         print(f"{args.check}: {problem}", file=sys.stderr)
