@@ -123,6 +123,7 @@ class Explorer {
   const FoldPlotPanel& fold_plot() const { return panel<FoldPlotPanel>(); }
   const ClothViewPanel& cloth_view() const { return panel<ClothViewPanel>(); }
   PhotoOverlay& photo() const { return panel<PhotoOverlay>(); }
+  const CalibrationPanel& calibration() const { return panel<CalibrationPanel>(); }
   // Every panel, in the order they are drawn (the tiled ones first, in the layout's order).
   const std::vector<std::unique_ptr<Panel>>& panels() const { return panels_; }
   // How a background job that finished wakes the frame loop while it sleeps (the window's

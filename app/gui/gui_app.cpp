@@ -450,11 +450,22 @@ extern "C" EMSCRIPTEN_KEEPALIVE const char* foldlab_state_json() {
   return text.c_str();
 }
 
-// What the page's touch handling needs of the explorer, and the state hook.
+// Whether the explorer has drawn everything the input so far asked for and waits for more (the
+// frames after the last input are drawn, nothing animates): a test that drives the page waits
+// for this rather than for a time.
+extern "C" EMSCRIPTEN_KEEPALIVE int foldlab_resting() {
+  return running_page != nullptr && running_page->run && running_page->run->may_rest() ? 1 : 0;
+}
+
+// What the page's touch handling needs of the explorer, and the state hooks.
 EM_JS(void, tell_page_screen, (double zoom_per_wheel_step), {
   Module.foldlabZoomPerWheelStep = zoom_per_wheel_step;
   Module.foldlabState = function() {
     return JSON.parse(UTF8ToString(_foldlab_state_json()));
+  };
+  // Input seen by the page but not yet by a frame wakes the explorer at its next frame.
+  Module.foldlabResting = function() {
+    return _foldlab_resting() != 0 && !Module.foldlabInputSeen;
   };
 });
 

@@ -384,6 +384,7 @@ json explorer_state_json(Explorer& explorer) {
         {"pixel_ratio", explorer.appearance().pixel_ratio()}}},
   };
   state.update(explorer.photo().report());  // "photo" and "measured"
+  state.update(explorer.calibration().report());
   return state;
 }
 

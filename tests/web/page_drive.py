@@ -15,6 +15,10 @@ Checks (each its own ctest):
             typed value with the on-screen keyboard's field focused, and typed text arrives
   scheme    the theme follows the browser's prefers-color-scheme and the text size its default
             font size, with no stored session
+  layout    a tile resized with the mouse (the fold plot's grip) is where it was after a reload
+  picture   the page's picture of a preset beside the desktop's (--native: `render`) at the same
+            size and pixel ratio 1: at most PICTURE_MAX_OVER pixels differ by more than
+            PICTURE_THRESHOLD in a channel (png_compare.py)
   regime_map  tests/web/regime_map_slices.json played in real time (a virtual clock stands still
             while a slice runs, so it would run the whole map in one frame): three frames after
             the tab opens the map is part done, so frames keep coming while it runs; at the end
@@ -170,27 +174,52 @@ class Page:
                 raise AssertionError(f"{what}: not within {timeout_s} s; the page's log: {log}")
             time.sleep(0.1)
 
-    def settle(self, frames=3):
-        """Waits until the explorer has drawn `frames` more frames, or has come to rest (a
-        resting explorer draws nothing until the next input)."""
-        state = self.state()
-        start = last = state["renderer"]["frames"]
-        changed = time.monotonic()
-        while last < start + frames and time.monotonic() - changed < 1.5:
-            time.sleep(0.05)
-            state = self.state()
-            if state["renderer"]["frames"] != last:
-                last = state["renderer"]["frames"]
-                changed = time.monotonic()
-        return state
+    def settle(self, frames=3, timeout_s=120):
+        """Waits on the page's own state, never on a time: until the page has passed on all the
+        input it was given (its touch handling's queue, Module.foldlabPendingInput, is empty),
+        and then until the explorer has drawn `frames` more frames or has come to rest
+        (Module.foldlabResting: the frames after the last input drawn and no input unseen; a
+        resting explorer draws nothing until the next input). `timeout_s` only says when the
+        page is stuck."""
+        deadline = time.monotonic() + timeout_s
+        start = None
+        while True:
+            done = self.tools.evaluate(
+                "(() => { const s = Module.foldlabState();"
+                " return [Module.foldlabPendingInput ? Module.foldlabPendingInput() : 0,"
+                " Module.foldlabResting(), s.renderer.frames]; })()")
+            pending, resting, frames_drawn = done
+            if pending == 0:
+                if start is None:
+                    start = frames_drawn
+                if resting or frames_drawn >= start + frames:
+                    return self.state()
+            if time.monotonic() > deadline:
+                raise AssertionError(f"the page did not settle within {timeout_s} s "
+                                     f"({pending} inputs pending, {frames_drawn} frames)")
+            time.sleep(0.02)
+
+    def wait_for(self, what, expression, timeout_s=120):
+        """Waits until the JavaScript `expression` is true in the page."""
+        deadline = time.monotonic() + timeout_s
+        while not self.tools.evaluate(expression):
+            if time.monotonic() > deadline:
+                raise AssertionError(f"{what}: not within {timeout_s} s")
+            time.sleep(0.02)
 
     def mouse(self, kind, x, y, buttons=0):
         self.tools.send("Input.dispatchMouseEvent", type=kind, x=x, y=y, button="left",
                         buttons=buttons, clickCount=1)
 
-    def touch(self, kind, points):
-        self.tools.send("Input.dispatchTouchEvent", type=kind,
+    def touch(self, kind, points, at_s=None):
+        """A touch event stamped `at_s` (seconds since the epoch; now by default): the page judges
+        a long press by its events' own times, so a test gives the finger's timeline, which a
+        busy machine's late delivery (each event waits for the page to take the last) cannot
+        stretch. Returns the stamp."""
+        stamp = time.time() if at_s is None else at_s
+        self.tools.send("Input.dispatchTouchEvent", type=kind, timestamp=stamp,
                         touchPoints=[{"x": x, "y": y, "id": i} for i, (x, y) in enumerate(points)])
+        return stamp
 
     def screenshot(self, path, clip=None):
         """The page as a PNG (device pixels); `clip` (x, y, w, h) in CSS pixels: that part."""
@@ -304,8 +333,9 @@ def check_touch(args, root, problems):
         # A tap is a click: the h slider's value goes where the finger tapped.
         x, y = slider_css(state, "h", 1, 0.75)
         h_before = state["parameters"]["h_mm"]
-        page.touch("touchStart", [(x, y)])
-        page.touch("touchEnd", [])
+        # The finger lifts 50 ms after it touched, whenever the page gets to either event.
+        down_s = page.touch("touchStart", [(x, y)])
+        page.touch("touchEnd", [], down_s + 0.05)
         state = page.settle()
         check(problems, state["parameters"]["h_mm"] > h_before,
               f"a tap at 3/4 of the h slider left h at {state['parameters']['h_mm']} (was {h_before})")
@@ -315,32 +345,34 @@ def check_touch(args, root, problems):
         # finger (10 px), so that a slow machine's frames cannot turn the drag into a long press.
         x, y = slider_css(state, "w", 1)
         w_before = state["parameters"]["w_N_per_mm2"]
-        page.touch("touchStart", [(x, y)])
+        # 12 px every 30 ms.
+        down_s = page.touch("touchStart", [(x, y)])
         for step in range(1, 6):
-            page.touch("touchMove", [(x + 12 * step, y)])
+            page.touch("touchMove", [(x + 12 * step, y)], down_s + 0.03 * step)
             page.settle(1)
-        page.touch("touchEnd", [])
+        page.touch("touchEnd", [], down_s + 0.18)
         state = page.settle()
         check(problems, state["parameters"]["w_N_per_mm2"] > w_before,
               f"a drag to the right on the w slider left w at {state['parameters']['w_N_per_mm2']}")
         # A one-finger drag on the 3D view orbits it.
         cx, cy = panel_centre_css(state, "cloth", 1)
         yaw_before = state["camera"]["yaw_rad"]
-        page.touch("touchStart", [(cx, cy)])
+        down_s = page.touch("touchStart", [(cx, cy)])
         for step in range(1, 6):
-            page.touch("touchMove", [(cx + 12 * step, cy)])
+            page.touch("touchMove", [(cx + 12 * step, cy)], down_s + 0.03 * step)
             page.settle(1)
-        page.touch("touchEnd", [])
+        page.touch("touchEnd", [], down_s + 0.18)
         state = page.settle()
         check(problems, state["camera"]["yaw_rad"] < yaw_before - 0.1,
               f"a drag on the 3D view left its yaw at {state['camera']['yaw_rad']} ({yaw_before})")
         # Two fingers spreading from 60 to 120 px apart: the view comes twice as close.
         distance_before = state["camera"]["distance_mm"]
-        page.touch("touchStart", [(cx - 30, cy), (cx + 30, cy)])
+        down_s = page.touch("touchStart", [(cx - 30, cy), (cx + 30, cy)])
         for step in range(1, 7):
-            page.touch("touchMove", [(cx - 30 - 5 * step, cy), (cx + 30 + 5 * step, cy)])
+            page.touch("touchMove", [(cx - 30 - 5 * step, cy), (cx + 30 + 5 * step, cy)],
+                       down_s + 0.03 * step)
             page.settle(1)
-        page.touch("touchEnd", [])
+        page.touch("touchEnd", [], down_s + 0.21)
         state = page.settle()
         ratio = state["camera"]["distance_mm"] / distance_before
         check(problems, abs(ratio - 0.5) < 0.02,
@@ -350,7 +382,10 @@ def check_touch(args, root, problems):
         # which the field opens selected.
         x, y = slider_css(state, "h", 1)
         page.touch("touchStart", [(x, y)])
-        time.sleep(0.8)
+        # The finger stays down until the page has turned it into a Ctrl+click (its timer, then
+        # frames): on a busy machine the lift could otherwise reach the page before the timer.
+        page.wait_for("the long press's Ctrl+click",
+                      "document.activeElement && document.activeElement.id === 'foldlab-keyboard'")
         page.touch("touchEnd", [])
         page.settle()
         focused = page.tools.evaluate("document.activeElement && document.activeElement.id")
@@ -398,6 +433,111 @@ def check_scheme(args, root, problems):
                                              f"page-{name.replace(' ', '-')}.png"))
         finally:
             page.close()
+
+
+def check_layout(args, root, problems):
+    # A person's page: nothing in the address, so the reload restores the session, as the
+    # desktop's next start does.
+    page = Page(args, os.path.join(root, "layout"), "")
+    try:
+        state = ready(page)
+        fresh = state["layout"]["panels"]
+        # The resize grip in the fold plot's lower right corner, dragged 80 px left and 40 px
+        # down with the mouse, as a person resizes the tiles: the edges it shares with the 3D
+        # view and the panels below move with it. 8 px inside the corner: the neighbours' edges
+        # take the 4 px either side of theirs (the page's GLFW has mouse cursors, so edges
+        # resize).
+        rect = fresh["fold_plot"]
+        x, y = rect["x"] + rect["w"] - 8, rect["y"] + rect["h"] - 8
+        page.mouse("mouseMoved", x, y)
+        page.settle()
+        page.mouse("mousePressed", x, y, 1)
+        page.settle(1)
+        for step in range(1, 5):
+            page.mouse("mouseMoved", x - 20 * step, y + 10 * step, 1)
+            page.settle(1)
+        page.mouse("mouseReleased", x - 80, y + 40)
+        dragged = page.settle()
+        now = dragged["layout"]["panels"]["fold_plot"]
+        check(problems, abs(now["w"] - (rect["w"] - 80)) <= 1 and
+              abs(now["h"] - (rect["h"] + 40)) <= 1,
+              f"dragging the fold plot's corner 80 px left and 40 px down made it {now['w']} x "
+              f"{now['h']} px, from {rect['w']} x {rect['h']}")
+        check(problems, dragged["layout"]["automatic"] and dragged["layout"]["fills_window"],
+              f"after the drag the tiles are {dragged['layout']}")
+        page.tools.evaluate("window.foldlabBeforeReload = true")
+        page.tools.send("Page.reload")
+        page.wait_for("the reloaded page's first frames",
+                      "!window.foldlabBeforeReload && window.Module && Module.foldlabState && "
+                      "Module.foldlabState() && Module.foldlabState().renderer.frames >= 5")
+        back = page.settle()
+        check(problems, back["message"] == "Restored the last session.",
+              f"after the reload the status says {back['message']!r}")
+        for key, was in dragged["layout"]["panels"].items():
+            now = back["layout"]["panels"].get(key)
+            check(problems, now is not None and
+                  all(abs(now[side] - was[side]) <= 1 for side in ("x", "y", "w", "h")),
+                  f"after the reload {key} is {now}, before it {was}")
+        check(problems, back["layout"]["automatic"] == dragged["layout"]["automatic"],
+              f"after the reload the layout is automatic = {back['layout']['automatic']}")
+    finally:
+        page.close()
+
+
+# The picture's preset and link, the same in the page and on the desktop: dark, as the desktop
+# starts (the headless browser prefers light).
+PICTURE_PRESET = "paper-table1-h1400"
+PICTURE_LINK = "#L=4000&theme=dark"
+
+
+def check_picture(args, root, problems):
+    """The page's picture beside the desktop's (`render`) of the same preset and link at the page's
+    canvas size and pixel ratio 1, three frames each from a fresh start: how many pixels differ
+    and by how much (png_compare.py)."""
+    from png_compare import compare
+    page = Page(args, os.path.join(root, "picture"),
+                f"?frames=3&preset={PICTURE_PRESET}{PICTURE_LINK}")
+    try:
+        page.wait_for("the page's three frames", REPORT_TEXT)
+        width, height = page.tools.evaluate(
+            "[document.getElementById('canvas').width, document.getElementById('canvas').height]")
+        mine = os.path.join(page.root, "page.png")
+        page.screenshot(mine)
+    finally:
+        page.close()
+    theirs = os.path.join(root, "desktop.png")
+    with tempfile.TemporaryDirectory(prefix="foldlab_native_") as home:
+        run = subprocess.run(
+            [os.path.abspath(args.native), "render", "--out", theirs, "--size",
+             f"{width}x{height}", "--preset",
+             os.path.join(os.path.abspath(args.presets), PICTURE_PRESET + ".json"),
+             "--link", PICTURE_LINK],
+            capture_output=True, text=True, timeout=600, cwd=home,
+            env={**os.environ, "XDG_CONFIG_HOME": home, "HOME": home})
+    if run.returncode != 0:
+        problems.append(f"the desktop program's render failed ({run.returncode}): {run.stderr}")
+        return
+    if args.keep_screenshots:
+        shutil.copy(mine, os.path.join(args.keep_screenshots, "picture-page.png"))
+        shutil.copy(theirs, os.path.join(args.keep_screenshots, "picture-desktop.png"))
+    result = compare(mine, theirs, PICTURE_THRESHOLD)
+    print(f"picture: {json.dumps(result)}")
+    if "error" in result:
+        problems.append(result["error"])
+        return
+    check(problems, result["over_threshold"] <= PICTURE_MAX_OVER,
+          f"{result['over_threshold']} pixels differ by more than {PICTURE_THRESHOLD} (at most "
+          f"{PICTURE_MAX_OVER}), in {result['over_threshold_box']}")
+
+
+# SwiftShader (the page) and llvmpipe (the desktop) round blending and antialiased edges
+# differently: on 2026-11-27, 69 402 of the 840 960 pixels differed, by 8 or less in every
+# channel (51 023 by 1 or 2), in flat translucent fills and along every glyph's and line's edge.
+# By more than 8: 715 pixels, 579 of them along the 3D view's triangles and lines. Twice that
+# leaves room for other versions of either rasteriser, while a line of text moved, another font
+# or size, or another colour differs in thousands of pixels by far more.
+PICTURE_THRESHOLD = 8
+PICTURE_MAX_OVER = 1500
 
 
 def check_regime_map(args, root, problems):
@@ -450,9 +590,9 @@ def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("--site", required=True)
     parser.add_argument("--check", required=True,
-                        choices=["dpr", "touch", "scheme", "regime_map"])
-    parser.add_argument("--native", help="the desktop program (regime_map)")
-    parser.add_argument("--presets", help="the presets folder (regime_map)")
+                        choices=["dpr", "touch", "scheme", "layout", "picture", "regime_map"])
+    parser.add_argument("--native", help="the desktop program (regime_map, picture)")
+    parser.add_argument("--presets", help="the presets folder (regime_map, picture)")
     parser.add_argument("--chromium", default="chromium")
     parser.add_argument("--keep-screenshots", help="a folder to copy the screenshots into")
     args = parser.parse_args()
@@ -460,6 +600,7 @@ def main():
     started = time.monotonic()
     with tempfile.TemporaryDirectory(prefix="foldlab_drive_") as root:
         {"dpr": check_dpr, "touch": check_touch, "scheme": check_scheme,
+         "layout": check_layout, "picture": check_picture,
          "regime_map": check_regime_map}[args.check](
             args, root, problems)
     for problem in problems:

@@ -7,6 +7,7 @@
 #include <set>
 
 #include <imgui.h>
+#include <nlohmann/json.hpp>
 
 #include "app/common/presets_dir.hpp"
 #include "app/gui/calibration_job.hpp"
@@ -119,6 +120,16 @@ void CalibrationPanel::open_button(const Parameters& current) {
   }
   ImGui::SameLine();
   form_tag(current);
+}
+
+nlohmann::json CalibrationPanel::report() const {
+  using nlohmann::json;
+  return {{"calibration",
+           {{"open", open_},
+            {"data_path", std::string(data_path_)},
+            {"data_rows", data_ ? json(data_->rows.size()) : json(nullptr)},
+            {"data_message", data_message_},
+            {"data_message_is_error", data_message_is_error_}}}};
 }
 
 void CalibrationPanel::load_data() {

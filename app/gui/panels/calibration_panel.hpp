@@ -11,6 +11,8 @@
 #include <optional>
 #include <string>
 
+#include <nlohmann/json_fwd.hpp>
+
 #include "app/gui/background_job.hpp"
 #include "app/gui/document.hpp"
 #include "app/gui/panel.hpp"
@@ -48,6 +50,9 @@ class CalibrationPanel : public Panel {
   bool busy() const override { return running(); }
   // From the start of a run until the window has taken its result.
   bool running() const { return job_.pending(); }
+  // For `gui --report`: {"calibration": {open, data_path, data_rows (null when nothing is
+  // loaded), data_message, data_message_is_error}}.
+  nlohmann::json report() const;
 
  private:
   void load_data();
