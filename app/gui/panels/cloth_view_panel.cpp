@@ -347,9 +347,10 @@ void ClothViewPanel::name_halves(const Document& document, ImDrawList* draw, ImV
                                  FrameSize size, FrameSize area) const {
   const auto label = [&](ImVec2 at, float width, ImU32 colour, const char* letter,
                          const std::string& name) {
-    const std::string full = std::string(letter) + ": " + name;
+    // Broken at spaces only: ImGui's own wrap would break "2.4 m" after the point.
     const float wrap = width - 12.0f;
-    const ImVec2 full_size = ImGui::CalcTextSize(full.c_str(), nullptr, false, wrap);
+    const std::string full = wrap_at_spaces(std::string(letter) + ": " + name, wrap);
+    const ImVec2 full_size = ImGui::CalcTextSize(full.c_str());
     const bool fits = full_size.y <= 2.0f * ImGui::GetTextLineHeightWithSpacing();
     const float text_height = fits ? full_size.y : ImGui::GetTextLineHeight();
     const float foot = at.y + static_cast<float>(area.height) - text_height - 6.0f;
@@ -360,7 +361,7 @@ void ClothViewPanel::name_halves(const Document& document, ImDrawList* draw, ImV
                         ImVec2(at.x + 9 + text_size.x, foot + text_size.y + 2),
                         ImGui::GetColorU32(ImVec4(plate.x(), plate.y(), plate.z(), 0.85f)), 3.0f);
     draw->AddText(ImGui::GetFont(), ImGui::GetFontSize(), ImVec2(at.x + 6, foot), colour,
-                  fits ? full.c_str() : letter, nullptr, wrap);
+                  fits ? full.c_str() : letter);
   };
   const ImVec2 b_origin(origin.x + static_cast<float>(size.width), origin.y);
   label(origin, static_cast<float>(size.width), kSweepCurve.u32(), "A", fabric_label(document));

@@ -240,8 +240,12 @@ void PresetsPanel::draw(PanelContext& context) {
     ImGui::End();
     return;
   }
-  const float list_height =
-      std::max(60.0f, ImGui::GetContentRegionAvail().y - 3.2f * ImGui::GetFrameHeightWithSpacing());
+  // The list gives way to what is under it as it was last drawn (a message of several lines, a
+  // notice), so that "Fit to measurements..." stays in view rather than under the panel's edge.
+  if (below_list_px_ <= 0.0f) {
+    below_list_px_ = 3.2f * ImGui::GetFrameHeightWithSpacing();
+  }
+  const float list_height = std::max(60.0f, ImGui::GetContentRegionAvail().y - below_list_px_);
   if (ImGui::BeginChild("preset list", ImVec2(0.0f, list_height), true)) {
     bool user_header = false;
     for (const Entry& entry : entries_) {
@@ -256,8 +260,13 @@ void PresetsPanel::draw(PanelContext& context) {
                                [path = entry.path](Document& d) { d.load_preset_file(path); });
       }
       if (ImGui::IsItemHovered()) {
+        const bool cut = ImGui::GetItemRectSize().x < ImGui::CalcTextSize(entry.name.c_str()).x;
         ImGui::BeginTooltip();
         ImGui::PushTextWrapPos(ImGui::GetFontSize() * 32.0f);
+        if (cut) {
+          ImGui::TextUnformatted(entry.name.c_str());  // the whole name the list cuts
+          ImGui::Separator();
+        }
         ImGui::TextUnformatted(entry.description.empty() ? "(no description)"
                                                          : entry.description.c_str());
         ImGui::PopTextWrapPos();
@@ -267,6 +276,7 @@ void PresetsPanel::draw(PanelContext& context) {
     }
   }
   ImGui::EndChild();
+  const float below_list_start = ImGui::GetCursorPosY();
   const float buttons = button_width("Save as...") + button_width("Open file...") +
                         2.0f * ImGui::GetStyle().ItemSpacing.x;
   ImGui::SetNextItemWidth(-buttons);
@@ -309,6 +319,7 @@ void PresetsPanel::draw(PanelContext& context) {
   if (footer_) {
     footer_();
   }
+  below_list_px_ = ImGui::GetCursorPosY() - below_list_start;
   ImGui::End();
 }
 

@@ -65,6 +65,7 @@ class PresetsPanel : public Panel {
   char save_as_name_[128] = {};
   std::string pending_overwrite_;  // name waiting for the user's "overwrite?" answer
   std::function<void()> footer_;
+  float below_list_px_ = 0.0f;  // the height of what was drawn under the list in the last frame
 };
 
 // A file name from a preset name: lower-case letters, digits and dashes.
