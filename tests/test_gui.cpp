@@ -679,6 +679,12 @@ TEST_F(GuiTest, ALinksRefusedValueIsKeptWithItsReasonAndAWrongOneNamed) {
   for (const char* named : {"--link t = 'abc' is not a number", "--link unknown key 'zz'"}) {
     EXPECT_NE(wrong.err.find(named), std::string::npos) << named << "\n" << wrong.err;
   }
+  // A view key the link carries is named after the link too, not after a --view nobody typed.
+  const RunResult view =
+      run_in_xvfb(dir_, environment(), {"--frames", "1", "--link", "#theme=pink"});
+  EXPECT_EQ(view.exit_status, 2);
+  EXPECT_NE(view.err.find("--link theme = 'pink' is not one of: dark, light"), std::string::npos)
+      << view.err;
 }
 
 // A session saved by a first run, edited by `edit`, then read back by a second run's report.

@@ -37,14 +37,65 @@ std::vector<std::string> overrides(const InputOptions& options, bool with_link) 
   return assignments;
 }
 
-StartInputs resolve(const InputOptions& options, bool keep_refused) {
+// A piece of a link that cannot be applied on its own (an unknown key, a value that is no number,
+// no KEY=VALUE): the reason, else nothing.
+std::optional<std::string> unusable_link_piece(const Parameters& preset, const std::string& piece) {
+  Parameters scratch = preset;
+  const std::vector<std::string> errors = apply_assignments(scratch, {piece});
+  if (errors.empty()) {
+    return std::nullopt;
+  }
+  return errors.front();
+}
+
+// What a forgiving link says of a piece it left out, with what is shown in its place.
+std::string link_note(const std::string& piece, const std::string& reason, const Preset& preset,
+                      const Parameters& shown) {
+  const std::size_t eq = piece.find('=');
+  if (eq == std::string::npos || eq == 0) {
+    return "'" + detail::cut(piece) + "' is no KEY=VALUE, so it is left out";
+  }
+  const std::string key = piece.substr(0, eq);
+  const InputSpec* spec = find_input(key);
+  if (spec == nullptr) {
+    const std::size_t known = reason.find("(known: ");
+    return "'" + detail::cut(key) + "' is no key FoldLab knows" +
+           (known == std::string::npos ? "" : " " + reason.substr(known)) + ", so it is left out";
+  }
+  const std::optional<double> now = spec->value(shown);
+  const std::optional<double> preset_value = spec->value(preset.parameters);
+  const std::string value = now ? shown_quantity(*spec, *now) : std::string(spec->choice(shown));
+  const bool as_preset = now ? preset_value && *preset_value == *now
+                             : spec->choice(shown) == spec->choice(preset.parameters);
+  return reason + ", so " + key + " is " + (as_preset ? "the preset's " : "") + value;
+}
+
+StartInputs resolve(const InputOptions& given, bool keep_refused) {
   StartInputs start;
   try {
-    start.preset =
-        options.preset_path.empty() ? default_preset() : load_preset(options.preset_path);
+    start.preset = given.preset_path.empty() ? default_preset() : load_preset(given.preset_path);
   } catch (const PresetError& e) {
     throw InputError(e.what());
   }
+  InputOptions options = given;
+  // Left out before anything is applied: a piece that cannot be read says nothing of the fabric.
+  std::vector<std::pair<std::string, std::string>> left_out;  // the piece, why
+  if (options.forgiving_link) {
+    std::erase_if(options.link, [&](const std::string& piece) {
+      const std::optional<std::string> reason = unusable_link_piece(start.preset.parameters, piece);
+      if (reason) {
+        left_out.emplace_back(piece, *reason);
+      }
+      return reason.has_value();
+    });
+  }
+  const Preset loaded = start.preset;
+  const auto finish = [&](StartInputs& out) {
+    const Parameters& shown = out.refused ? *out.refused : out.preset.parameters;
+    for (const auto& [piece, reason] : left_out) {
+      out.link_notes.push_back(link_note(piece, reason, loaded, shown));
+    }
+  };
   // What cannot be applied, named by the option it came with (it does not depend on the values
   // applied before it).
   std::string problems;
@@ -62,6 +113,7 @@ StartInputs resolve(const InputOptions& options, bool keep_refused) {
   const std::vector<ValidationIssue> issues = validate(all);
   if (problems.empty() && issues.empty()) {
     start.preset.parameters = all;
+    finish(start);
     return start;
   }
   if (problems.empty() && keep_refused && !options.link.empty()) {
@@ -70,6 +122,7 @@ StartInputs resolve(const InputOptions& options, bool keep_refused) {
     if (validate(without_link).empty()) {
       start.preset.parameters = without_link;
       start.refused = all;
+      finish(start);
       return start;
     }
   }

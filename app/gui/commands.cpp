@@ -42,11 +42,10 @@ struct GuiCommandOptions {
 // --link: the inputs go the way of --set (before it), the view keys the way of --view (before
 // it), so that the options given beside a link override it.
 void apply_link_option(GuiCommandOptions& options) {
-  std::vector<std::string> view;
   for (const LinkAssignment& piece : parse_fabric_link(options.link)) {
-    (is_link_view_key(piece.key) ? view : options.run.inputs.link).push_back(piece.set_text());
+    (is_link_view_key(piece.key) ? options.run.link_view_settings : options.run.inputs.link)
+        .push_back(piece.set_text());
   }
-  options.run.view_settings.insert(options.run.view_settings.begin(), view.begin(), view.end());
 }
 
 // --print FILE is --view print_file=FILE, first so that a later --view print=... still applies.
@@ -139,10 +138,13 @@ void prepare_run(GuiCommandOptions& options, const std::vector<app::NamedPath>& 
 
 }  // namespace
 
-app::Command add_gui_command(CLI::App& app) {
+app::Command add_gui_command(CLI::App& app, GuiCaller caller) {
   auto options = std::make_shared<GuiCommandOptions>();
   CLI::App* command = app.add_subcommand("gui", "open the explorer window");
   add_common_gui_options(*command, *options);
+  if (caller == GuiCaller::page) {
+    options->run.inputs.forgiving_link = true;
+  }
   command
       ->add_option("--frames", options->run.frames,
                    "run this many frames, then exit (scripted runs take no mouse input)")
