@@ -322,6 +322,9 @@ class ExplorerRun {
     if (persist_) {
       layout_.emplace(config_dir() / "imgui.ini", *explorer_);
     }
+    for (const std::string& notice : options.start_notices) {
+      explorer_->add_notice(notice);
+    }
     std::vector<std::string> link_notes = start.link_notes;
     apply_view_settings(*explorer_, options, link_notes);
     if (!link_notes.empty()) {
