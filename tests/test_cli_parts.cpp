@@ -209,6 +209,7 @@ TEST(StartInputsTest, AForgivingLinkOpensWhatItCanAndSaysWhatItLeftOut) {
   EXPECT_EQ(start.refused->fabric.thickness_mm, preset.parameters.fabric.thickness_mm);
   EXPECT_EQ(start.preset.parameters.fabric.weight_N_per_mm2,
             preset.parameters.fabric.weight_N_per_mm2);
+  EXPECT_TRUE(start.origin.parameters == preset.parameters);
   const std::vector<std::string> want = {
       "t = 'abc' is not a number (with an optional unit: mm, cm, m), so t is the preset's 0.25 mm",
       "E = '1e999' is beyond the range of a double (magnitudes 2.2e-308 to 1.8e308), so E is the "
@@ -230,6 +231,19 @@ TEST(StartInputsTest, AForgivingLinkOpensWhatItCanAndSaysWhatItLeftOut) {
     EXPECT_NE(message.find("--link t = 'abc' is not a number"), std::string::npos) << message;
     EXPECT_NE(message.find("--link unknown key 'zz'"), std::string::npos) << message;
   }
+}
+
+TEST(StartInputsTest, ALinksFabricIsAnEditOfItsPreset) {
+  foldlab::app::InputOptions options;
+  options.link = {"t=0.4", "E=200", "w=600gsm", "h=2400"};
+  const foldlab::app::StartInputs start = foldlab::app::resolve_start_inputs(options);
+  EXPECT_FALSE(start.refused.has_value());
+  EXPECT_EQ(start.preset.parameters.fabric.thickness_mm, 0.4);
+  EXPECT_TRUE(start.origin.parameters == foldlab::default_preset().parameters);
+  EXPECT_TRUE(start.link_notes.empty());
+  // Without a link the origin is the preset itself.
+  const foldlab::app::StartInputs plain = foldlab::app::resolve_start_inputs({});
+  EXPECT_TRUE(plain.origin.parameters == plain.preset.parameters);
 }
 
 }  // namespace

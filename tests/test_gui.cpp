@@ -634,6 +634,9 @@ TEST_F(GuiTest, ALinkOpensTheFabricAndTheViewItCarries) {
   EXPECT_EQ(inputs.at("L_mm").get<double>(), 1400.0);  // the default preset's, not in the link
   EXPECT_EQ(report.at("solution").at("inputs").at("height_mm").get<double>(), 2000.0);
   EXPECT_TRUE(report.at("refused").is_null());
+  // An edit of its preset, not the preset itself, and no undo step.
+  EXPECT_EQ(report.at("dirty"), true);
+  EXPECT_EQ(report.at("undo_depth"), 0);
   EXPECT_EQ(report.at("appearance").at("light_theme"), true);
   EXPECT_EQ(report.at("appearance").at("scale_percent"), 150);
   EXPECT_EQ(report.at("layout").at("presented"), "cloth");

@@ -108,6 +108,11 @@ StartInputs resolve(const InputOptions& given, bool keep_refused) {
   }
   Parameters all = start.preset.parameters;
   apply_assignments(all, overrides(options, true));
+  Parameters without_link = start.preset.parameters;
+  apply_assignments(without_link, overrides(options, false));
+  const bool origin_valid = validate(without_link).empty();
+  start.origin = start.preset;
+  start.origin.parameters = origin_valid ? without_link : all;
   // Range problems as well: a value that did not parse left the preset's (valid) value in place,
   // so every range problem reported is a real one.
   const std::vector<ValidationIssue> issues = validate(all);
@@ -116,15 +121,11 @@ StartInputs resolve(const InputOptions& given, bool keep_refused) {
     finish(start);
     return start;
   }
-  if (problems.empty() && keep_refused && !options.link.empty()) {
-    Parameters without_link = start.preset.parameters;
-    apply_assignments(without_link, overrides(options, false));
-    if (validate(without_link).empty()) {
-      start.preset.parameters = without_link;
-      start.refused = all;
-      finish(start);
-      return start;
-    }
+  if (problems.empty() && keep_refused && !options.link.empty() && origin_valid) {
+    start.preset.parameters = without_link;
+    start.refused = all;
+    finish(start);
+    return start;
   }
   problems += format_issues(issues);
   problems.pop_back();  // the final newline

@@ -62,6 +62,10 @@ Preset resolve_inputs(const InputOptions& options);
 struct StartInputs {
   Preset preset;  // with every override, or, when the link's values are refused, without them
   std::optional<Parameters> refused;  // then: every override, as the explorer's edits
+  // The preset with every override but the link's: what a link's fabric is an edit of, so that
+  // it does not pass for the preset itself. `preset` when there is no link, or when the link's
+  // values are what makes the fabric valid.
+  Preset origin;
   // With forgiving_link, each piece of the link left out, as a sentence that says what is shown
   // instead: "t = 'abc' is not a number, so t is the preset's 0.25 mm".
   std::vector<std::string> link_notes;

@@ -302,12 +302,18 @@ class ExplorerRun {
     // A preset named on the command line wins over the restored session.
     const bool restore = persist_ && options.inputs.preset_path.empty() &&
                          options.inputs.assignments.empty() && options.inputs.link.empty();
-    explorer_.emplace(preset, options.inputs.preset_path, restore, explorer_options, *renderer_);
+    // A link's fabric is shown as an edit of its preset (the title's "*", A's "(edited)"): a
+    // student who opens a shared link must not take it for the preset itself.
+    const bool linked = !options.inputs.link.empty();
+    explorer_.emplace(linked ? start.origin : preset, options.inputs.preset_path, restore,
+                      explorer_options, *renderer_);
     explorer_->set_page_link(make_page_link());
     explorer_->set_file_transfer(make_file_transfer());
-    if (start.refused) {
-      // A link's refused value, kept with its reason as a typed one is; not an edit to undo.
-      explorer_->document().apply(Edit::replace(*start.refused));
+    if (linked || start.refused) {
+      // A link's values, a refused one kept with its reason as a typed one is; the start, not an
+      // edit to undo.
+      explorer_->document().apply(
+          Edit::replace(start.refused ? *start.refused : preset.parameters));
       explorer_->document().forget_history();
     }
     if (interactive) {
@@ -556,7 +562,8 @@ int run_headless(const GuiRunOptions& options) {
 int run_picture(const GuiRunOptions& options, const std::filesystem::path& out,
                 const PictureSpec& spec, const PictureInputs& inputs) {
   // A picture shows a fabric the model accepts: a refused value, a link's too, is an error.
-  const app::StartInputs start{app::resolve_inputs(options.inputs), std::nullopt, {}};
+  const Preset preset = app::resolve_inputs(options.inputs);
+  const app::StartInputs start{preset, std::nullopt, preset, {}};
   // The window is never drawn (the picture has a framebuffer of its own): the smallest one.
   SurfaceOptions surface_options{kMinFrameSize.width, kMinFrameSize.height, false};
   std::unique_ptr<Surface> surface = make_headless_surface(surface_options);
