@@ -16,7 +16,9 @@
 #include "app/cli/solve.hpp"
 #include "app/cli/stress.hpp"
 #include "app/cli/sweep.hpp"
+#include "app/common/inputs.hpp"
 #include "core/io/io.hpp"
+#include "core/io/preset.hpp"
 #include "temp_dir.hpp"
 
 namespace fs = std::filesystem;
@@ -186,6 +188,79 @@ TEST_F(CliPartsTest, StressRunReadsTheSeedAsTyped) {
   EXPECT_EQ(report.samples, 10);
   options.seed = "-1";
   EXPECT_THROW(stress_command::run(options), foldlab::app::InputError);
+}
+
+}  // namespace
+
+namespace {
+
+// The page's link (app/common/inputs.hpp, forgiving_link): what can be read opens, a refused
+// value is kept as typed, and every piece that cannot be read is said in plain words.
+TEST(StartInputsTest, AForgivingLinkOpensWhatItCanAndSaysWhatItLeftOut) {
+  foldlab::app::InputOptions options;
+  options.link = {"t=abc", "E=1e999", "w=-5gsm", "h=NaN", "zz=1", "L=2000", "loose"};
+  options.forgiving_link = true;
+  const foldlab::Preset preset = foldlab::default_preset();
+  const foldlab::app::StartInputs start = foldlab::app::resolve_start_inputs(options);
+  // L from the link; w refused (kept as typed, the cloth without it); the rest the preset's.
+  ASSERT_TRUE(start.refused.has_value());
+  EXPECT_EQ(start.refused->hanging.length_mm, 2000.0);
+  EXPECT_EQ(start.refused->fabric.weight_N_per_mm2, -5 * 9.81e-9);
+  EXPECT_EQ(start.refused->fabric.thickness_mm, preset.parameters.fabric.thickness_mm);
+  EXPECT_EQ(start.preset.parameters.fabric.weight_N_per_mm2,
+            preset.parameters.fabric.weight_N_per_mm2);
+  EXPECT_TRUE(start.origin.parameters == preset.parameters);
+  const std::vector<std::string> want = {
+      "t = 'abc' is not a number (with an optional unit: mm, cm, m), so t is the preset's 0.25 mm",
+      "E = '1e999' is beyond the range of a double (magnitudes 2.2e-308 to 1.8e308), so E is the "
+      "preset's 165 MPa",
+      "h = 'NaN' is not a number (with an optional unit: mm, cm, m), so h is the preset's 1400 mm",
+      "'zz' is no key FoldLab knows (known: ", "'loose' is no KEY=VALUE, so it is left out"};
+  ASSERT_EQ(start.link_notes.size(), want.size());
+  for (std::size_t i = 0; i < want.size(); ++i) {
+    EXPECT_TRUE(start.link_notes[i].starts_with(want[i])) << start.link_notes[i];
+  }
+  EXPECT_TRUE(start.link_notes[3].ends_with("), so it is left out")) << start.link_notes[3];
+  // A command line's link stays strict: the same pieces stop the start, named by the option.
+  options.forgiving_link = false;
+  try {
+    (void)foldlab::app::resolve_start_inputs(options);
+    ADD_FAILURE() << "a strict link with unreadable pieces started";
+  } catch (const foldlab::app::InputError& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find("--link t = 'abc' is not a number"), std::string::npos) << message;
+    EXPECT_NE(message.find("--link unknown key 'zz'"), std::string::npos) << message;
+  }
+}
+
+// A key given twice: a command line's link refuses it ("which one is meant?"), the page's keeps the
+// first value and says so.
+TEST(StartInputsTest, AForgivingLinkKeepsTheFirstOfARepeatedKey) {
+  foldlab::app::InputOptions options;
+  options.link = {"t=0.4", "t=3"};
+  options.forgiving_link = true;
+  const foldlab::app::StartInputs start = foldlab::app::resolve_start_inputs(options);
+  EXPECT_EQ(start.preset.parameters.fabric.thickness_mm, 0.4);
+  ASSERT_EQ(start.link_notes.size(), 1u);
+  EXPECT_TRUE(
+      start.link_notes[0].starts_with("t is given twice in the link; the first value is "
+                                      "used, so t is 0.4 mm"))
+      << start.link_notes[0];
+  options.forgiving_link = false;
+  EXPECT_THROW((void)foldlab::app::resolve_start_inputs(options), foldlab::app::InputError);
+}
+
+TEST(StartInputsTest, ALinksFabricIsAnEditOfItsPreset) {
+  foldlab::app::InputOptions options;
+  options.link = {"t=0.4", "E=200", "w=600gsm", "h=2400"};
+  const foldlab::app::StartInputs start = foldlab::app::resolve_start_inputs(options);
+  EXPECT_FALSE(start.refused.has_value());
+  EXPECT_EQ(start.preset.parameters.fabric.thickness_mm, 0.4);
+  EXPECT_TRUE(start.origin.parameters == foldlab::default_preset().parameters);
+  EXPECT_TRUE(start.link_notes.empty());
+  // Without a link the origin is the preset itself.
+  const foldlab::app::StartInputs plain = foldlab::app::resolve_start_inputs({});
+  EXPECT_TRUE(plain.origin.parameters == plain.preset.parameters);
 }
 
 }  // namespace

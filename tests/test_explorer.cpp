@@ -471,10 +471,20 @@ TEST_F(ExplorerTest, TheLinkCarriesTheViewSetUpForARoom) {
   ASSERT_EQ(explorer_->set_view("scale", "125"), std::nullopt);
   frame();
   EXPECT_EQ(explorer_->link(), fabric + "&present=cloth&theme=light&scale=125");
-  // Copied with the desktop's link: the fragment behind '#', with a notice.
+  // Copied with the desktop's link and no page address: the fragment behind '#', said in full
+  // with what opens it, and shown in the presentation's read-out, the status line being hidden.
   explorer_->copy_link();
-  EXPECT_EQ(std::string(ImGui::GetClipboardText()), "#" + explorer_->link());
-  EXPECT_EQ(explorer_->status().message(), "Link copied.");
+  const std::string copied = "#" + explorer_->link();
+  EXPECT_EQ(std::string(ImGui::GetClipboardText()), copied);
+  const std::string said = explorer_->status().message();
+  EXPECT_EQ(said, "Copied the fabric as a link's fragment alone, " + copied.substr(0, 40) +
+                      "…, which only foldlab gui --link opens. FOLDLAB_PAGE_URL makes it a whole "
+                      "address (docs/web.md).");
+  frame();
+  EXPECT_EQ(explorer_->presented_message(), said);
+  ASSERT_EQ(explorer_->set_view("present", "none"), std::nullopt);
+  frame();
+  EXPECT_EQ(explorer_->presented_message(), "");
 }
 
 TEST_F(ExplorerTest, SwitchingPresetShowsTheNewPreset) {

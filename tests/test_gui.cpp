@@ -634,6 +634,9 @@ TEST_F(GuiTest, ALinkOpensTheFabricAndTheViewItCarries) {
   EXPECT_EQ(inputs.at("L_mm").get<double>(), 1400.0);  // the default preset's, not in the link
   EXPECT_EQ(report.at("solution").at("inputs").at("height_mm").get<double>(), 2000.0);
   EXPECT_TRUE(report.at("refused").is_null());
+  // An edit of its preset, not the preset itself, and no undo step.
+  EXPECT_EQ(report.at("dirty"), true);
+  EXPECT_EQ(report.at("undo_depth"), 0);
   EXPECT_EQ(report.at("appearance").at("light_theme"), true);
   EXPECT_EQ(report.at("appearance").at("scale_percent"), 150);
   EXPECT_EQ(report.at("layout").at("presented"), "cloth");
@@ -679,6 +682,12 @@ TEST_F(GuiTest, ALinksRefusedValueIsKeptWithItsReasonAndAWrongOneNamed) {
   for (const char* named : {"--link t = 'abc' is not a number", "--link unknown key 'zz'"}) {
     EXPECT_NE(wrong.err.find(named), std::string::npos) << named << "\n" << wrong.err;
   }
+  // A view key the link carries is named after the link too, not after a --view nobody typed.
+  const RunResult view =
+      run_in_xvfb(dir_, environment(), {"--frames", "1", "--link", "#theme=pink"});
+  EXPECT_EQ(view.exit_status, 2);
+  EXPECT_NE(view.err.find("--link theme = 'pink' is not one of: dark, light"), std::string::npos)
+      << view.err;
 }
 
 // A session saved by a first run, edited by `edit`, then read back by a second run's report.

@@ -189,6 +189,20 @@ TEST(Link, AnAddressAFragmentAndTheBarePiecesReadAlike) {
   EXPECT_EQ(p.fabric.weight_N_per_mm2, 200 * 9.81e-9);
 }
 
+TEST(Link, AnHtmlEscapedAmpersandReadsAsTheAmpersand) {
+  // A link pasted through e-mail or a chat that escapes HTML, once or twice.
+  const std::vector<std::string> want = {"t=0.4", "E=200", "w=600gsm"};
+  EXPECT_EQ(as_set(foldlab::parse_fabric_link("#t=0.4&amp;E=200&amp;w=600gsm")), want);
+  EXPECT_EQ(as_set(foldlab::parse_fabric_link("t=0.4&amp;amp;E=200&w=600gsm")), want);
+  Parameters p;
+  ASSERT_TRUE(apply_link(p, "https://example.org/x#h=2000&amp;w=200gsm").empty());
+  EXPECT_EQ(p.hanging.height_mm, 2000.0);
+  EXPECT_EQ(p.fabric.weight_N_per_mm2, 200 * 9.81e-9);
+  // An escaped '&' inside a value is not a separator: it stays, and the value is no number.
+  Parameters q;
+  EXPECT_EQ(apply_link(q, "h=2000%26amp%3B").size(), 1u);
+}
+
 TEST(Link, PercentEncodingRoundTripsEveryByte) {
   std::string every;
   for (int b = 0; b < 256; ++b) {

@@ -61,14 +61,71 @@ std::string refusals(const std::vector<ValidationIssue>& issues,
   return out;
 }
 
-StartInputs resolve(const InputOptions& options, bool keep_refused) {
+// A piece of a link that cannot be applied on its own (an unknown key, a value that is no number,
+// no KEY=VALUE): the reason, else nothing.
+std::optional<std::string> unusable_link_piece(const Parameters& preset, const std::string& piece) {
+  Parameters scratch = preset;
+  const std::vector<std::string> errors = apply_assignments(scratch, {piece});
+  if (errors.empty()) {
+    return std::nullopt;
+  }
+  return errors.front();
+}
+
+// What a forgiving link says of a piece it left out, with what is shown in its place.
+std::string link_note(const std::string& piece, const std::string& reason, const Preset& preset,
+                      const Parameters& shown) {
+  const std::size_t eq = piece.find('=');
+  if (eq == std::string::npos || eq == 0) {
+    return "'" + detail::cut(piece) + "' is no KEY=VALUE, so it is left out";
+  }
+  const std::string key = piece.substr(0, eq);
+  const InputSpec* spec = find_input(key);
+  if (spec == nullptr) {
+    const std::size_t known = reason.find("(known: ");
+    return "'" + detail::cut(key) + "' is no key FoldLab knows" +
+           (known == std::string::npos ? "" : " " + reason.substr(known)) + ", so it is left out";
+  }
+  const std::optional<double> now = spec->value(shown);
+  const std::optional<double> preset_value = spec->value(preset.parameters);
+  const std::string value = now ? shown_quantity(*spec, *now) : std::string(spec->choice(shown));
+  const bool as_preset = now ? preset_value && *preset_value == *now
+                             : spec->choice(shown) == spec->choice(preset.parameters);
+  return reason + ", so " + key + " is " + (as_preset ? "the preset's " : "") + value;
+}
+
+StartInputs resolve(const InputOptions& given, bool keep_refused) {
   StartInputs start;
   try {
-    start.preset =
-        options.preset_path.empty() ? default_preset() : load_preset(options.preset_path);
+    start.preset = given.preset_path.empty() ? default_preset() : load_preset(given.preset_path);
   } catch (const PresetError& e) {
     throw InputError(e.what());
   }
+  InputOptions options = given;
+  // Left out before anything is applied: a piece that cannot be read says nothing of the fabric.
+  std::vector<std::pair<std::string, std::string>> left_out;  // the piece, why
+  if (options.forgiving_link) {
+    std::vector<std::string> keys_seen;
+    std::erase_if(options.link, [&](const std::string& piece) {
+      std::optional<std::string> reason = unusable_link_piece(start.preset.parameters, piece);
+      const std::string key = piece.substr(0, piece.find('='));
+      if (!reason && std::find(keys_seen.begin(), keys_seen.end(), key) != keys_seen.end()) {
+        reason = key + " is given twice in the link; the first value is used";
+      }
+      keys_seen.push_back(key);
+      if (reason) {
+        left_out.emplace_back(piece, *reason);
+      }
+      return reason.has_value();
+    });
+  }
+  const Preset loaded = start.preset;
+  const auto finish = [&](StartInputs& out) {
+    const Parameters& shown = out.refused ? *out.refused : out.preset.parameters;
+    for (const auto& [piece, reason] : left_out) {
+      out.link_notes.push_back(link_note(piece, reason, loaded, shown));
+    }
+  };
   // What cannot be applied, named by the option it came with (it does not depend on the values
   // applied before it).
   std::string problems;
@@ -87,21 +144,24 @@ StartInputs resolve(const InputOptions& options, bool keep_refused) {
   }
   Parameters all = start.preset.parameters;
   apply_assignments(all, overrides(options, true));
+  Parameters without_link = start.preset.parameters;
+  apply_assignments(without_link, overrides(options, false));
+  const bool origin_valid = validate(without_link).empty();
+  start.origin = start.preset;
+  start.origin.parameters = origin_valid ? without_link : all;
   // Range problems as well: a value that did not parse left the preset's (valid) value in place,
   // so every range problem reported is a real one.
   const std::vector<ValidationIssue> issues = validate(all);
   if (problems.empty() && issues.empty()) {
     start.preset.parameters = all;
+    finish(start);
     return start;
   }
-  if (problems.empty() && keep_refused && !options.link.empty()) {
-    Parameters without_link = start.preset.parameters;
-    apply_assignments(without_link, overrides(options, false));
-    if (validate(without_link).empty()) {
-      start.preset.parameters = without_link;
-      start.refused = all;
-      return start;
-    }
+  if (problems.empty() && keep_refused && !options.link.empty() && origin_valid) {
+    start.preset.parameters = without_link;
+    start.refused = all;
+    finish(start);
+    return start;
   }
   problems += refusals(issues, overrides(options, true));
   problems.pop_back();  // the final newline

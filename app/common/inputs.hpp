@@ -46,6 +46,11 @@ struct InputOptions {
   // A link's inputs as KEY=VALUE (`gui --link`, core/io/link.hpp), applied after the law's
   // constants and before `assignments`.
   std::vector<std::string> link{};
+  // The page's reading of its own address: a piece of the link that cannot be applied at all (an
+  // unknown key, a value that is no number) is left out and said in StartInputs::link_notes
+  // rather than stopping the start, since whoever opened a shared link has no command line to
+  // correct. A command line's link stays strict.
+  bool forgiving_link = false;
 };
 
 // The preset with the overrides applied and validated. Throws InputError listing every problem.
@@ -57,6 +62,13 @@ Preset resolve_inputs(const InputOptions& options);
 struct StartInputs {
   Preset preset;  // with every override, or, when the link's values are refused, without them
   std::optional<Parameters> refused;  // then: every override, as the explorer's edits
+  // The preset with every override but the link's: what a link's fabric is an edit of, so that
+  // it does not pass for the preset itself. `preset` when there is no link, or when the link's
+  // values are what makes the fabric valid.
+  Preset origin;
+  // With forgiving_link, each piece of the link left out, as a sentence that says what is shown
+  // instead: "t = 'abc' is not a number, so t is the preset's 0.25 mm".
+  std::vector<std::string> link_notes;
 };
 // resolve_inputs, except that values the model refuses only with the link's are kept in
 // `refused`. A key or value that cannot be applied at all is an InputError as for --set.

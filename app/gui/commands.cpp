@@ -1,5 +1,6 @@
 #include "app/gui/commands.hpp"
 
+#include <algorithm>
 #include <filesystem>
 #include <memory>
 #include <optional>
@@ -7,6 +8,7 @@
 #include <string_view>
 #include <vector>
 
+#include "app/common/presets_dir.hpp"
 #include "app/gui/gui_app.hpp"
 #include "app/gui/page_link.hpp"
 #include "app/gui/picture.hpp"
@@ -38,23 +40,61 @@ struct GuiCommandOptions {
   std::string size = "1280x800";
   std::string print_path;
   std::string link;
+  std::optional<std::string> preset_name;  // the page's ?preset=NAME, as the address gives it
 };
 
 // --link: the inputs go the way of --set (before it), the view keys the way of --view (before
 // it), so that the options given beside a link override it.
 void apply_link_option(GuiCommandOptions& options) {
-  std::vector<std::string> view;
   std::vector<std::string> pieces;
+  std::vector<std::string> view_keys_seen;
   for (const LinkAssignment& piece : parse_fabric_link(options.link)) {
-    (is_link_view_key(piece.key) ? view : options.run.inputs.link).push_back(piece.set_text());
     pieces.push_back(piece.set_text());
+    if (!is_link_view_key(piece.key)) {
+      options.run.inputs.link.push_back(piece.set_text());
+    } else if (!options.run.inputs.forgiving_link ||
+               std::find(view_keys_seen.begin(), view_keys_seen.end(), piece.key) ==
+                   view_keys_seen.end()) {
+      // A forgiving link keeps a view key's first value (its inputs say so in a notice).
+      view_keys_seen.push_back(piece.key);
+      options.run.link_view_settings.push_back(piece.set_text());
+    }
   }
-  // The view keys too: `#theme=dark&theme=light` is as unclear as two values of t.
+  // The view keys too: `#theme=dark&theme=light` is as unclear as two values of t. A forgiving
+  // link (the page's) leaves the repeats out instead of refusing the page.
   const std::vector<std::string> repeated = repeated_keys(pieces, "--link");
-  if (!repeated.empty()) {
+  if (!repeated.empty() && !options.run.inputs.forgiving_link) {
     throw InputError(detail::join_lines(repeated));
   }
-  options.run.view_settings.insert(options.run.view_settings.begin(), view.begin(), view.end());
+}
+
+// --preset-name NAME: a shipped preset by its name alone, so that no address reaches a file
+// outside the presets folder. An unknown name opens the default preset, saying so and naming
+// the ones there are.
+void apply_preset_name_option(GuiCommandOptions& options) {
+  if (!options.preset_name) {
+    return;
+  }
+  const std::string& wanted = *options.preset_name;
+  std::vector<std::string> names;
+  std::string default_path;
+  for (const std::filesystem::path& file : app::preset_files(app::find_presets_dir())) {
+    if (file.stem().string() == wanted) {
+      options.run.inputs.preset_path = file.string();
+      return;
+    }
+    names.push_back(file.stem().string());
+    if (file.stem() == "default") {
+      default_path = file.string();
+    }
+  }
+  // Named as a preset asked for, so that a stored session does not take its place.
+  options.run.inputs.preset_path = default_path;
+  options.run.start_notices.push_back(
+      "The address asks for the preset '" + detail::cut(wanted) +
+      "', which is not one of the presets here, so the explorer opened with the default preset. "
+      "The presets here: " +
+      (names.empty() ? std::string("none") : detail::join(names, ", ")) + ".");
 }
 
 // --print FILE is --view print_file=FILE, first so that a later --view print=... still applies.
@@ -139,6 +179,7 @@ std::vector<app::NamedPath> run_inputs(const GuiCommandOptions& options) {
 // --print and the checks every command that writes files makes: the options in the order given,
 // no output over an input.
 void prepare_run(GuiCommandOptions& options, const std::vector<app::NamedPath>& outputs) {
+  apply_preset_name_option(options);
   apply_link_option(options);
   apply_print_option(options);
   check_distinct_files(outputs, run_inputs(options));
@@ -147,10 +188,18 @@ void prepare_run(GuiCommandOptions& options, const std::vector<app::NamedPath>& 
 
 }  // namespace
 
-app::Command add_gui_command(CLI::App& app) {
+app::Command add_gui_command(CLI::App& app, GuiCaller caller) {
   auto options = std::make_shared<GuiCommandOptions>();
   CLI::App* command = app.add_subcommand("gui", "open the explorer window");
   add_common_gui_options(*command, *options);
+  if (caller == GuiCaller::page) {
+    options->run.inputs.forgiving_link = true;
+    command
+        ->add_option("--preset-name", options->preset_name,
+                     "a shipped preset by its name (the page's ?preset=NAME); an unknown one "
+                     "opens the default preset with a notice")
+        ->type_name("NAME");
+  }
   command
       ->add_option("--frames", options->run.frames,
                    "run this many frames, then exit (scripted runs take no mouse input)")

@@ -8,7 +8,11 @@
 
 namespace foldlab::gui {
 
-app::Command add_gui_command(CLI::App& app);
+// Who starts `gui`: a command line, whose mistakes are refused (exit 2) for the person who typed
+// them to correct, or the page, which hands on its address (--link, --preset-name) and must open
+// the explorer whatever the address says, saying there what it left out.
+enum class GuiCaller { command_line, page };
+app::Command add_gui_command(CLI::App& app, GuiCaller caller = GuiCaller::command_line);
 app::Command add_render_command(CLI::App& app);
 // `foldlab picture VIEW`: the 3D cloth or the fold plot alone, headless, into a PNG.
 app::Command add_picture_command(CLI::App& app);

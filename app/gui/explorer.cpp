@@ -203,8 +203,23 @@ std::string Explorer::link() const {
 }
 
 void Explorer::copy_link() {
-  page_link_->copy(page_link_->address(link()));
-  status_.notify("Link copied.", MessageKind::success);
+  const std::string address = page_link_->address(link());
+  page_link_->copy(address);
+  // What was copied, by its start (the whole link is a few hundred characters, which would push
+  // the Presets panel's buttons out of sight): with no page address configured it is the fragment
+  // alone, which only `foldlab gui --link` opens, and whoever pastes it should know that.
+  constexpr std::size_t kShownAddressBytes = 80;
+  constexpr std::size_t kShownFragmentBytes = 40;
+  if (address.starts_with('#')) {
+    status_.notify("Copied the fabric as a link's fragment alone, " +
+                       detail::cut(address, kShownFragmentBytes) +
+                       ", which only foldlab gui --link opens. FOLDLAB_PAGE_URL makes it a whole "
+                       "address (docs/web.md).",
+                   MessageKind::success);
+  } else {
+    status_.notify("Copied the fabric as a link: " + detail::cut(address, kShownAddressBytes),
+                   MessageKind::success);
+  }
 }
 
 std::optional<PictureRequest> Explorer::take_screenshot_request() {
@@ -470,6 +485,13 @@ float Explorer::presentation_bar() {
     text_height += scale * ImGui::CalcTextSize(line.c_str(), nullptr, false, available).y;
   }
   text_height += static_cast<float>(lines.size() - 1) * style.ItemSpacing.y;
+  // The status line under the read-out (a copied link, a refused file): the Presets panel that
+  // shows it is out of sight unless it is the one presented.
+  presented_message_ = layout_.presented() != &panel<PresetsPanel>() ? status_.message() : "";
+  if (!presented_message_.empty()) {
+    text_height += style.ItemSpacing.y +
+                   ImGui::CalcTextSize(presented_message_.c_str(), nullptr, false, available).y;
+  }
   // The inputs under the read-out, for a "what if" without leaving the view; not over the
   // Parameters panel itself.
   const bool presents_parameters = layout_.presented() == &panel<ParametersPanel>();
@@ -496,8 +518,13 @@ float Explorer::presentation_bar() {
       ImGui::TextUnformatted(line.c_str());
       ImGui::PopStyleColor();
     }
-    ImGui::PopTextWrapPos();
     ImGui::SetWindowFontScale(1.0f);
+    if (!presented_message_.empty()) {
+      ImGui::PushStyleColor(ImGuiCol_Text, message_colour(status_.message_kind()));
+      ImGui::TextUnformatted(presented_message_.c_str());
+      ImGui::PopStyleColor();
+    }
+    ImGui::PopTextWrapPos();
     if (strip) {
       panel<ParametersPanel>().draw_strip(document_, status_, available);
     }
@@ -569,6 +596,7 @@ void Explorer::frame() {
   handle_escape();
   menu_height_ = main_menu();
   layout_.begin_frame(menu_height_);
+  presented_message_.clear();
   if (layout_.presented() != nullptr) {
     layout_.set_presented_top(presentation_bar());
   }

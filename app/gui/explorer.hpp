@@ -93,6 +93,9 @@ class Explorer {
   void save() { panel<PresetsPanel>().save(document_, status_); }
 
   Document& document() { return document_; }
+  // The status line as the presentation's read-out showed it at the last frame (empty: none):
+  // while a panel is presented the status line, in the Presets panel, is out of sight.
+  const std::string& presented_message() const { return presented_message_; }
   UiStatus& status() { return status_; }
   const UiStatus& status() const { return status_; }
   Scene& scene() { return document_.scene(); }
@@ -248,6 +251,7 @@ class Explorer {
   LinkThrottle address_;  // when the page's address follows the link
   bool show_stats_ = false;
   float menu_height_ = 0.0f;
+  std::string presented_message_;
   Layout layout_{panels_};
   // What the session keeps of the panels' and the layout's settings (each declares its own).
   RememberedSettings remembered_;

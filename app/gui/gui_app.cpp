@@ -128,9 +128,10 @@ class LayoutFile {
   bool may_save_ = true;
 };
 
-// --view KEY=VALUE settings, in order; every one refused is named, one a line.
-void apply_view_settings(Explorer& explorer, const std::vector<std::string>& settings) {
-  std::string problems;
+// KEY=VALUE view settings, in order; the problem of every one refused.
+std::vector<std::string> view_problems(Explorer& explorer,
+                                       const std::vector<std::string>& settings) {
+  std::vector<std::string> problems;
   for (const std::string& setting : settings) {
     const std::size_t eq = setting.find('=');
     const std::optional<std::string> problem =
@@ -138,12 +139,40 @@ void apply_view_settings(Explorer& explorer, const std::vector<std::string>& set
                                 : explorer.set_view(std::string_view(setting).substr(0, eq),
                                                     std::string_view(setting).substr(eq + 1));
     if (problem) {
-      problems += (problems.empty() ? "--view " : "\n--view ") + *problem;
+      problems.push_back(*problem);
     }
+  }
+  return problems;
+}
+
+// The link's view keys, then --view: every one refused is named by the option it came with, one
+// a line. A forgiving link's own problems are `link_notes` instead (the page's link).
+void apply_view_settings(Explorer& explorer, const GuiRunOptions& options,
+                         std::vector<std::string>& link_notes) {
+  std::string problems;
+  for (const std::string& problem : view_problems(explorer, options.link_view_settings)) {
+    if (options.inputs.forgiving_link) {
+      link_notes.push_back(problem + ", so it is left out");
+    } else {
+      problems += (problems.empty() ? "--link " : "\n--link ") + problem;
+    }
+  }
+  for (const std::string& problem : view_problems(explorer, options.view_settings)) {
+    problems += (problems.empty() ? "--view " : "\n--view ") + problem;
   }
   if (!problems.empty()) {
     throw app::InputError(problems);
   }
+}
+
+// One notice for every piece of the link that was left out: each in a line of its own, in words
+// that name the link rather than an option nobody typed.
+std::string link_notice(const std::vector<std::string>& notes) {
+  std::string notice;
+  for (const std::string& note : notes) {
+    notice += (notice.empty() ? "" : "\n") + std::string("The link's ") + note + ".";
+  }
+  return notice;
 }
 
 // SIGTERM, SIGINT and SIGHUP (a desktop's log-out, Ctrl+C in the terminal, the terminal the
@@ -273,12 +302,18 @@ class ExplorerRun {
     // A preset named on the command line wins over the restored session.
     const bool restore = persist_ && options.inputs.preset_path.empty() &&
                          options.inputs.assignments.empty() && options.inputs.link.empty();
-    explorer_.emplace(preset, options.inputs.preset_path, restore, explorer_options, *renderer_);
+    // A link's fabric is shown as an edit of its preset (the title's "*", A's "(edited)"): a
+    // student who opens a shared link must not take it for the preset itself.
+    const bool linked = !options.inputs.link.empty();
+    explorer_.emplace(linked ? start.origin : preset, options.inputs.preset_path, restore,
+                      explorer_options, *renderer_);
     explorer_->set_page_link(make_page_link());
     explorer_->set_file_transfer(make_file_transfer());
-    if (start.refused) {
-      // A link's refused value, kept with its reason as a typed one is; not an edit to undo.
-      explorer_->document().apply(Edit::replace(*start.refused));
+    if (linked || start.refused) {
+      // A link's values, a refused one kept with its reason as a typed one is; the start, not an
+      // edit to undo.
+      explorer_->document().apply(
+          Edit::replace(start.refused ? *start.refused : preset.parameters));
       explorer_->document().forget_history();
     }
     if (interactive) {
@@ -293,7 +328,14 @@ class ExplorerRun {
     if (persist_) {
       layout_.emplace(config_dir() / "imgui.ini", *explorer_);
     }
-    apply_view_settings(*explorer_, options.view_settings);
+    for (const std::string& notice : options.start_notices) {
+      explorer_->add_notice(notice);
+    }
+    std::vector<std::string> link_notes = start.link_notes;
+    apply_view_settings(*explorer_, options, link_notes);
+    if (!link_notes.empty()) {
+      explorer_->add_notice(link_notice(link_notes));
+    }
 
     if (interactive) {
       std::signal(SIGTERM, request_close);
@@ -531,7 +573,8 @@ int run_headless(const GuiRunOptions& options) {
 int run_picture(const GuiRunOptions& options, const std::filesystem::path& out,
                 const PictureSpec& spec, const PictureInputs& inputs) {
   // A picture shows a fabric the model accepts: a refused value, a link's too, is an error.
-  const app::StartInputs start{app::resolve_inputs(options.inputs), std::nullopt};
+  const Preset preset = app::resolve_inputs(options.inputs);
+  const app::StartInputs start{preset, std::nullopt, preset, {}};
   // The window is never drawn (the picture has a framebuffer of its own): the smallest one.
   SurfaceOptions surface_options{kMinFrameSize.width, kMinFrameSize.height, false};
   std::unique_ptr<Surface> surface = make_headless_surface(surface_options);

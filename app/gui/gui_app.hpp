@@ -26,6 +26,11 @@ struct GuiRunOptions {
   std::string play_path;        // input playback script (see InputPlayer)
   std::string analysis_tab;     // equations, sweep or map: the tab shown at start
   std::vector<std::string> view_settings;  // KEY=VALUE, see Explorer::set_view
+  // The link's view keys (present, theme, scale), applied before view_settings: a problem in one
+  // is named as the link's, and with inputs.forgiving_link is a notice rather than an error.
+  std::vector<std::string> link_view_settings;
+  // Said in the explorer from the start, as notices (the page's unknown ?preset=NAME).
+  std::vector<std::string> start_notices;
   // The files the run reads (preset, script, swatches), which no picture may be written over.
   std::vector<app::NamedPath> input_files;
 };

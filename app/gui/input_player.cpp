@@ -328,6 +328,7 @@ json layout_json(Explorer& explorer) {
   return {{"automatic", explorer.automatic_layout()},
           {"fills_window", explorer.panels_fill_window()},
           {"presented", presented.empty() ? json(nullptr) : json(presented)},
+          {"presented_message", explorer.presented_message()},
           {"panels", panels}};
 }
 

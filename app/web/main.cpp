@@ -16,7 +16,9 @@ int main(int argc, char** argv) {
   // foldlab.data holds the presets here (app/web/CMakeLists.txt).
   setenv("FOLDLAB_PRESETS_DIR", "/presets", 0);
   CLI::App app{"FoldLab in the browser"};
-  const app::Command gui = gui::add_gui_command(app);
+  // The address is no command line: what the explorer cannot read of it is a notice in the
+  // explorer, not a page that never opens.
+  const app::Command gui = gui::add_gui_command(app, gui::GuiCaller::page);
   app.require_subcommand(1, 1);
   int status = app::kExitOk;
   try {

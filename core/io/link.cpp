@@ -88,8 +88,13 @@ std::vector<LinkAssignment> parse_fabric_link(std::string_view link) {
   std::vector<LinkAssignment> out;
   while (!link.empty()) {
     const std::size_t amp = link.find('&');
-    const std::string_view piece = link.substr(0, amp);
+    std::string_view piece = link.substr(0, amp);
     link.remove_prefix(amp == std::string_view::npos ? link.size() : amp + 1);
+    // A link pasted through e-mail or a chat that escapes HTML has "&amp;" between its pieces
+    // (or "&amp;amp;", escaped twice): it means the '&' it was. No key begins with "amp;".
+    while (piece.starts_with("amp;")) {
+      piece.remove_prefix(4);
+    }
     if (piece.empty()) {
       continue;
     }

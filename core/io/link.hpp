@@ -31,9 +31,10 @@ struct LinkAssignment {
 };
 
 // The pieces of a link, in order: the text after the first '#' (of a full address, "#..." or the
-// fragment alone; an address with no '#' carries no inputs), split at '&', each at its first '=',
-// then percent-decoded. Empty pieces are skipped and nothing else is checked: apply_assignments
-// names an unknown key, a value that is no number and a refused one.
+// fragment alone; an address with no '#' carries no inputs), split at '&' (an HTML-escaped
+// "&amp;" read as the '&' it stands for), each at its first '=', then percent-decoded. Empty
+// pieces are skipped and nothing else is checked: apply_assignments names an unknown key, a value
+// that is no number and a refused one.
 std::vector<LinkAssignment> parse_fabric_link(std::string_view link);
 
 // Every byte but letters, digits and - . _ ~ as %XX (RFC 3986's unreserved characters stay), so

@@ -90,13 +90,14 @@ def script(size):
         steps += click("Save as...") + [{"type": name}]
         steps += [{"key": "enter"}, {"frames": 2}, {"expect": {"modal": None}}]
     steps += [{"frames": 2}, {"expect": dict(tiled, modal=None)}]
-    # The fabric as a link, on the clipboard (play_copy_link checks its text).
-    steps += menu("Export", "Copy link") + [{"expect": {"message": "Link copied.",
-                                                       "popup_open": False}}]
     # Another window size: the panels refit it.
     steps += [{"resize": NEXT[size]}, {"frames": 3}, {"expect": tiled}]
-    # The calibration window (last: it floats over the panels).
+    # The calibration window (last but one: it floats over the panels).
     steps += click("Fit to measurements...", 3) + click("Measurements")
+    # The fabric as a link, on the clipboard (play_copy_link checks its text and the message);
+    # last, since what the status line says of it takes lines of the Presets panel, above the
+    # calibration's button.
+    steps += menu("Export", "Copy link") + [{"expect": {"popup_open": False}}]
     return {"steps": steps}
 
 

@@ -13,7 +13,8 @@ compares it with TEXT, and --expect-address-is-link with the explorer's link the
 report's `link`). --expect-result looks into the page's whole result instead (`downloads`, and
 with reload.html `earlier` and `storage`); --expect-prefix checks that the text there starts with
 the JSON string given. --checks reads such checks from a JSON file ({"report": {KEY: VALUE},
-"result": {...}, "prefix": {KEY: TEXT}}), free of a shell's or CMake's quoting. --page opens FILE (served beside index.html, e.g. tests/web/reload.html)
+"result": {...}, "prefix": {KEY: TEXT}}, and "query" in place of --query), free of a shell's or
+CMake's quoting. --page opens FILE (served beside index.html, e.g. tests/web/reload.html)
 instead of index.html; --serve serves PATH as NAME beside it. Chromium's home folder is a temporary one: downloads land there."""
 import argparse
 import html
@@ -63,20 +64,30 @@ def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("--site", required=True)
     parser.add_argument("--play-dir", required=True)
-    parser.add_argument("--query", required=True)
+    parser.add_argument("--query", help="the address after the page's name; else the checks "
+                        "file's \"query\"")
     parser.add_argument("--expect", action="append", default=[])
     parser.add_argument("--expect-address")
     parser.add_argument("--expect-address-is-link", action="store_true")
     parser.add_argument("--expect-result", action="append", default=[])
     parser.add_argument("--expect-prefix", action="append", default=[])
     parser.add_argument("--checks", help="a JSON file: {\"report\": {KEY: VALUE}, \"result\": "
-                        "{KEY: VALUE}, \"prefix\": {KEY: TEXT}}, as the options of those names")
+                        "{KEY: VALUE}, \"prefix\": {KEY: TEXT}}, as the options of those names, "
+                        "and optionally \"query\"")
     parser.add_argument("--page", default="index.html")
     parser.add_argument("--serve", action="append", default=[],
                         help="NAME=PATH: PATH served as NAME beside the page too")
     parser.add_argument("--chromium", default="chromium")
     parser.add_argument("--budget-ms", type=int, default=120000)
     args = parser.parse_args()
+    more = {}
+    if args.checks:
+        with open(args.checks, encoding="utf-8") as f:
+            more = json.load(f)
+    if args.query is None:
+        args.query = more.get("query")
+        if args.query is None:
+            parser.error("--query, or a checks file with \"query\", is required")
 
     with tempfile.TemporaryDirectory(prefix="foldlab_page_") as root:
         serve = os.path.join(root, "serve")
@@ -126,9 +137,7 @@ def main():
         problems.append(f"exit status {result.get('exit_status')}: "
                         + "\n".join(result.get("stderr") or []))
     report = result.get("report") or {}
-    if args.checks:
-        with open(args.checks, encoding="utf-8") as f:
-            more = json.load(f)
+    if more:
         for option, entries in (("expect", "report"), ("expect_result", "result"),
                                 ("expect_prefix", "prefix")):
             getattr(args, option).extend(f"{key}={json.dumps(value)}"
