@@ -59,47 +59,7 @@ Explorer::Explorer(const Preset& initial, const std::string& initial_path, bool 
   appearance_.request(options_.preferred.text_scale_percent.value_or(appearance_.scale_percent()),
                       options_.preferred.light_theme.value_or(appearance_.light_theme()));
   if (!options_.session_file.empty()) {
-    // Read even when not restored: saving over what is there is allowed only when it reads as a
-    // session (or nothing is there).
-    std::string error;
-    bool may_save = true;
-    std::optional<Session> s = load_session(options_.session_file, error, may_save);
-    if (!restore_session) {
-      s.reset();
-      error.clear();
-    }
-    if (s) {
-      if (s->fabric_restored) {
-        document_.adopt(s->loaded, s->loaded_preset_path);
-        document_.apply(Edit::replace(s->current.parameters));
-      }
-      document_.set_grid_resolution(s->grid_resolution);
-      if (s->compare) {
-        document_.compare().pin(
-            {*s->compare, s->compare_origin.value_or(*s->compare), s->compare_origin_path});
-      }
-      load_settings(s->view);
-      status_.notify("Restored the last session.", MessageKind::info);
-      for (const std::string& notice : s->notices) {
-        status_.add_notice(notice);
-      }
-    } else if (!error.empty()) {
-      status_.add_notice(error);  // present but unusable: say why the defaults are shown
-    }
-    std::filesystem::path set_aside = options_.session_file;
-    set_aside += ".unread";
-    std::error_code set_aside_error;
-    if (!may_save && options_.owns_config_folder &&
-        (std::filesystem::rename(options_.session_file, set_aside, set_aside_error),
-         !set_aside_error)) {
-      status_.add_notice("The session that did not read is kept as " + set_aside.string() +
-                         "; a new session is saved in its place.");
-    } else if (!may_save) {
-      status_.add_notice("The session will not be saved over " + options_.session_file.string() +
-                         ", which is not a session file the explorer can read; move it away to "
-                         "have the session kept.");
-      options_.session_file.clear();  // nothing is saved, and closing asks about unsaved edits
-    }
+    read_session(restore_session);
   }
   for (const std::string& notice : panel<PresetsPanel>().notices()) {
     status_.add_notice(notice);
@@ -108,6 +68,50 @@ Explorer::Explorer(const Preset& initial, const std::string& initial_path, bool 
   remembered_.take_changed();  // what the window opened with is what the session has
   status_.session_saved();
   appearance_.apply(renderer_);
+}
+
+void Explorer::read_session(bool restore_session) {
+  // Read even when not restored: saving over what is there is allowed only when it reads as a
+  // session (or nothing is there).
+  std::string error;
+  bool may_save = true;
+  std::optional<Session> s = load_session(options_.session_file, error, may_save);
+  if (!restore_session) {
+    s.reset();
+    error.clear();
+  }
+  if (s) {
+    if (s->fabric_restored) {
+      document_.adopt(s->loaded, s->loaded_preset_path);
+      document_.apply(Edit::replace(s->current.parameters));
+    }
+    document_.set_grid_resolution(s->grid_resolution);
+    if (s->compare) {
+      document_.compare().pin(
+          {*s->compare, s->compare_origin.value_or(*s->compare), s->compare_origin_path});
+    }
+    load_settings(s->view);
+    status_.notify("Restored the last session.", MessageKind::info);
+    for (const std::string& notice : s->notices) {
+      status_.add_notice(notice);
+    }
+  } else if (!error.empty()) {
+    status_.add_notice(error);  // present but unusable: say why the defaults are shown
+  }
+  std::filesystem::path set_aside = options_.session_file;
+  set_aside += ".unread";
+  std::error_code set_aside_error;
+  if (!may_save && options_.owns_config_folder &&
+      (std::filesystem::rename(options_.session_file, set_aside, set_aside_error),
+       !set_aside_error)) {
+    status_.add_notice("The session that did not read is kept as " + set_aside.string() +
+                       "; a new session is saved in its place.");
+  } else if (!may_save) {
+    status_.add_notice("The session will not be saved over " + options_.session_file.string() +
+                       ", which is not a session file the explorer can read; move it away to "
+                       "have the session kept.");
+    options_.session_file.clear();  // nothing is saved, and closing asks about unsaved edits
+  }
 }
 
 Explorer::~Explorer() {

@@ -212,6 +212,9 @@ class Explorer {
   double regime_map_ms() const { return panel<AnalysisPanel>().regime_map().last_map_ms(); }
 
  private:
+  // The session file: restored when asked (the fabric, B, the view), set aside or left alone
+  // when it does not read as a session.
+  void read_session(bool restore_session);
   void save_session_when_idle();
   // Ctrl+Z undo, Ctrl+Shift+Z and Ctrl+Y redo, Ctrl+S save.
   void handle_shortcuts();

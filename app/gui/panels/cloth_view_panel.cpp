@@ -372,6 +372,18 @@ void ClothViewPanel::name_halves(const Document& document, ImDrawList* draw, ImV
                 ImGui::GetColorU32(ImGuiCol_Separator));
 }
 
+// Wrapped inside the view, so that a narrow view keeps it off the colour bar beside it; over a
+// small view only while the pointer is on it (the view is the last item), not to cover the cloth.
+void ClothViewPanel::draw_hint(ImDrawList* draw, ImVec2 origin, FrameSize area, bool light) {
+  if (static_cast<float>(area.height) < 12.0f * ImGui::GetFontSize() && !ImGui::IsItemHovered()) {
+    return;
+  }
+  draw->AddText(ImGui::GetFont(), ImGui::GetFontSize(), ImVec2(origin.x + 6, origin.y + 4),
+                light ? IM_COL32(60, 60, 60, 220) : IM_COL32(200, 200, 200, 200),
+                "drag: orbit, right-drag: pan, wheel: zoom", nullptr,
+                static_cast<float>(area.width) - 12.0f);
+}
+
 void ClothViewPanel::draw(PanelContext& context) {
   Document& document = context.document;
   Renderer& renderer = context.renderer;
@@ -435,16 +447,7 @@ void ClothViewPanel::draw(PanelContext& context) {
     draw_view(1, b_origin, document.compare().scene(scene.grid_nx()),
               FrameSize{area.width - size.width, area.height});
   }
-  // Wrapped inside the view, so that a narrow view keeps it off the colour bar beside it; over a
-  // small view only while the pointer is on it, not to cover the cloth.
-  const bool hint =
-      static_cast<float>(area.height) >= 12.0f * ImGui::GetFontSize() || ImGui::IsItemHovered();
-  if (hint) {
-    draw->AddText(ImGui::GetFont(), ImGui::GetFontSize(), ImVec2(origin.x + 6, origin.y + 4),
-                  light ? IM_COL32(60, 60, 60, 220) : IM_COL32(200, 200, 200, 200),
-                  "drag: orbit, right-drag: pan, wheel: zoom", nullptr,
-                  static_cast<float>(area.width) - 12.0f);
-  }
+  draw_hint(draw, origin, area, light);
   if (compare) {
     name_halves(document, draw, origin, size, area);
   }

@@ -56,6 +56,7 @@ class ClothViewPanel : public Panel {
   // The row of controls above the view; true when "reset camera" was clicked.
   bool toolbar(PanelContext& context);
   void steer_camera(FrameSize size);
+  static void draw_hint(ImDrawList* draw, ImVec2 origin, FrameSize area, bool light);
   void name_halves(const Document& document, ImDrawList* draw, ImVec2 origin, FrameSize size,
                    FrameSize area) const;
   void settings_row();

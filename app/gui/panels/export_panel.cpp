@@ -206,17 +206,8 @@ void ExportPanel::picture_items(const Document& document, UiStatus& status, File
   }
 }
 
-void ExportPanel::draw_picture_dialog(UiStatus& status, FileDialog& files) {
-  if (open_dialog_) {
-    ImGui::OpenPopup(kPictureDialog);
-    open_dialog_ = false;
-  }
-  ImGui::SetNextWindowPos(ImGui::GetMainViewport()->GetCenter(), ImGuiCond_Appearing,
-                          ImVec2(0.5f, 0.5f));
-  if (!ImGui::BeginPopupModal(kPictureDialog, nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
-    return;
-  }
-  ImGui::TextUnformatted(picture_dialog_text(dialog_spec_.view));
+// The size radio buttons and the custom size typed; the reason a typed size is refused.
+std::optional<std::string> ExportPanel::picture_size_choice() {
   ImGui::TextUnformatted("Size (pixels)");
   for (int i = 0; i < kCustomSize; ++i) {
     ImGui::RadioButton(kPictureSizes[i].label, &size_choice_, i);
@@ -245,6 +236,21 @@ void ExportPanel::draw_picture_dialog(UiStatus& status, FileDialog& files) {
   } else {
     dialog_spec_.size = kPictureSizes[size_choice_].size;
   }
+  return problem;
+}
+
+void ExportPanel::draw_picture_dialog(UiStatus& status, FileDialog& files) {
+  if (open_dialog_) {
+    ImGui::OpenPopup(kPictureDialog);
+    open_dialog_ = false;
+  }
+  ImGui::SetNextWindowPos(ImGui::GetMainViewport()->GetCenter(), ImGuiCond_Appearing,
+                          ImVec2(0.5f, 0.5f));
+  if (!ImGui::BeginPopupModal(kPictureDialog, nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
+    return;
+  }
+  ImGui::TextUnformatted(picture_dialog_text(dialog_spec_.view));
+  std::optional<std::string> problem = picture_size_choice();
   ImGui::TextUnformatted("Background");
   int background = static_cast<int>(dialog_spec_.background);
   ImGui::RadioButton("white", &background, static_cast<int>(PictureBackground::white));

@@ -42,6 +42,7 @@ class ExportPanel {
   std::optional<PictureRequest> take_picture_request();
 
  private:
+  std::optional<std::string> picture_size_choice();
   // The files: one item per export format, and the fabric as a preset.
   void file_items(Document& document, UiStatus& status, const ClothStyle& style, FileDialog& files);
   // The pictures: of the window or a part as drawn, or of a view alone at any size.

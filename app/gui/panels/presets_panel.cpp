@@ -233,20 +233,8 @@ void PresetsPanel::draw_dialogs(Document& document, UiStatus& status) {
   }
 }
 
-void PresetsPanel::draw(PanelContext& context) {
-  UiStatus& status = context.status;
-  Document& document = context.document;
-  if (!begin(context.renderer)) {
-    ImGui::End();
-    return;
-  }
-  // The list gives way to what is under it as it was last drawn (a message of several lines, a
-  // notice), so that "Fit to measurements..." stays in view rather than under the panel's edge.
-  if (below_list_px_ <= 0.0f) {
-    below_list_px_ = 3.2f * ImGui::GetFrameHeightWithSpacing();
-  }
-  const float list_height = std::max(60.0f, ImGui::GetContentRegionAvail().y - below_list_px_);
-  if (ImGui::BeginChild("preset list", ImVec2(0.0f, list_height), true)) {
+void PresetsPanel::draw_list(Document& document, float height_px) {
+  if (ImGui::BeginChild("preset list", ImVec2(0.0f, height_px), true)) {
     bool user_header = false;
     for (const Entry& entry : entries_) {
       if (entry.user && !user_header) {
@@ -276,6 +264,39 @@ void PresetsPanel::draw(PanelContext& context) {
     }
   }
   ImGui::EndChild();
+}
+
+// The status line and the notices, under the buttons where the eye is after a click.
+void PresetsPanel::draw_messages(UiStatus& status) {
+  if (!status.message().empty()) {
+    ImGui::PushStyleColor(ImGuiCol_Text, message_colour(status.message_kind()));
+    wrapped_text("%s", status.message().c_str());
+    ImGui::PopStyleColor();
+  }
+  for (const std::string& notice : notices_) {
+    status.add_notice(notice);  // a listing refreshed by "Save as..." may be newly capped
+  }
+  for (const std::string& notice : status.notices()) {
+    ImGui::PushStyleColor(ImGuiCol_Text, kErrorText);
+    wrapped_text("%s", notice.c_str());
+    ImGui::PopStyleColor();
+  }
+}
+
+void PresetsPanel::draw(PanelContext& context) {
+  UiStatus& status = context.status;
+  Document& document = context.document;
+  if (!begin(context.renderer)) {
+    ImGui::End();
+    return;
+  }
+  // The list gives way to what is under it as it was last drawn (a message of several lines, a
+  // notice), so that "Fit to measurements..." stays in view rather than under the panel's edge.
+  if (below_list_px_ <= 0.0f) {
+    below_list_px_ = 3.2f * ImGui::GetFrameHeightWithSpacing();
+  }
+  const float list_height = std::max(60.0f, ImGui::GetContentRegionAvail().y - below_list_px_);
+  draw_list(document, list_height);
   const float below_list_start = ImGui::GetCursorPosY();
   const float buttons = button_width("Save as...") + button_width("Open file...") +
                         2.0f * ImGui::GetStyle().ItemSpacing.x;
@@ -303,19 +324,7 @@ void PresetsPanel::draw(PanelContext& context) {
   if (ImGui::IsItemHovered()) {
     ImGui::SetTooltip("A preset file (.json) from elsewhere: a colleague's, or one you saved.");
   }
-  if (!status.message().empty()) {
-    ImGui::PushStyleColor(ImGuiCol_Text, message_colour(status.message_kind()));
-    wrapped_text("%s", status.message().c_str());
-    ImGui::PopStyleColor();
-  }
-  for (const std::string& notice : notices_) {
-    status.add_notice(notice);  // a listing refreshed by "Save as..." may be newly capped
-  }
-  for (const std::string& notice : status.notices()) {
-    ImGui::PushStyleColor(ImGuiCol_Text, kErrorText);
-    wrapped_text("%s", notice.c_str());
-    ImGui::PopStyleColor();
-  }
+  draw_messages(status);
   if (footer_) {
     footer_();
   }

@@ -56,6 +56,9 @@ class PresetsPanel : public Panel {
   // the save (a preset load after "Save" in the unsaved-changes question).
   void write(Document& document, UiStatus& status, const std::string& name,
              const std::filesystem::path& path);
+  // The list of presets, shipped then the user's, `height_px` high; a click loads one.
+  void draw_list(Document& document, float height_px);
+  void draw_messages(UiStatus& status);
 
   std::filesystem::path presets_dir_;
   std::filesystem::path user_presets_dir_;
