@@ -24,10 +24,9 @@ std::uint64_t parse_seed(const std::string& seed) {
 }  // namespace
 
 void declare(CLI::App& app, Options& options) {
-  CLI::App* command = app.add_subcommand(
-      "stress",
-      "numerical stress test: both methods over t 0.01-2 mm, E 1-5000 MPa, w 1e-7-1e-4 N/mm², "
-      "h and L 100-5000 mm, d 0-L/2, nu 0-0.49; exit 1 on any NaN, inf or solve > 1 s");
+  CLI::App* command = app.add_subcommand("stress", "numerical stress test: both methods over " +
+                                                       stress_sampled_ranges() +
+                                                       "; exit 1 on any NaN, inf or solve > 1 s");
   command->add_option("--samples", options.samples, "input samples (default 100000)")
       ->transform(app::whole_number_in(1, kMaxStressSamples));
   command->add_option("--seed", options.seed, "seed of the samples, 0 to 2^64 - 1 (default 1)");

@@ -56,7 +56,9 @@ void declare(CLI::App& app, Options& options) {
   CLI::App* command = app.add_subcommand(
       "sweep", "solve over a range of one input and print n, Q and z_max for each value");
   add_input_options(*command, options.inputs);
-  command->add_option("--param", options.axis.key, "the input to sweep: t, E, w, h, L, d, K, nu")
+  command
+      ->add_option("--param", options.axis.key,
+                   "the input to sweep: " + detail::join_comma(sweepable_keys()))
       ->required();
   command->add_option("--from", options.axis.from, "first value (its unit: mm, MPa, N/mm²)")
       ->required();

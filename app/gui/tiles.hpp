@@ -30,7 +30,12 @@ const char* split_key(int split);
 // Where the user dragged each edge, as a fraction of what it divides; a negative fraction leaves
 // that edge where the automatic layout puts it.
 struct LayoutSplits {
-  std::array<float, kSplitCount> fraction{-1.0f, -1.0f, -1.0f, -1.0f, -1.0f};
+  static constexpr std::array<float, kSplitCount> all_automatic() {
+    std::array<float, kSplitCount> fractions{};
+    fractions.fill(-1.0f);
+    return fractions;
+  }
+  std::array<float, kSplitCount> fraction = all_automatic();
   bool any() const {
     for (float f : fraction) {
       if (f >= 0.0f) {

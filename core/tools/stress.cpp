@@ -11,6 +11,7 @@
 
 #include "core/geometry/geometry.hpp"
 #include "core/model/settings.hpp"
+#include "core/model/text_format.hpp"
 
 namespace foldlab {
 namespace {
@@ -211,6 +212,23 @@ std::string describe_case(const StressCase& c) {
 }
 
 }  // namespace
+
+std::string stress_sampled_ranges() {
+  std::string out;
+  for (const InputSpec& spec : input_table()) {
+    if (!spec.sampled) {
+      continue;
+    }
+    out += (out.empty() ? "" : ", ") + std::string(spec.key) + " " +
+           detail::shortest_number(spec.typical_lo) + " to " +
+           detail::shortest_number(spec.typical_hi) +
+           (spec.unit.empty() ? "" : " " + std::string(spec.unit));
+    if (spec.upper_bound != nullptr) {
+      out += " (below " + std::string(spec.upper_bound_name) + ")";
+    }
+  }
+  return out;
+}
 
 Parameters stress_sample(std::uint64_t seed, int index) {
   // One generator per sample, seeded from (seed, index): a sample does not depend on which

@@ -32,6 +32,9 @@ struct StressOptions {
 // the input table's typical ranges; d uniform in [0, L/2) and exactly 0 for every 100th sample; nu
 // uniform over its typical range; the default c.
 Parameters stress_sample(std::uint64_t seed, int index);
+// What stress_sample draws, from the input table: "t 0.01 to 5 mm, ..., d 0 to 2500 mm
+// (below L/2), ...", for help texts.
+std::string stress_sampled_ranges();
 
 struct StressCase {
   Parameters parameters;

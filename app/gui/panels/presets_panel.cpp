@@ -266,15 +266,32 @@ void PresetsPanel::draw_list(Document& document, float height_px) {
   ImGui::EndChild();
 }
 
+// What draw_messages takes: each message's lines at the panel's width.
+float PresetsPanel::messages_height_px(UiStatus& status) {
+  for (const std::string& notice : notices_) {
+    status.add_notice(notice);  // a listing refreshed by "Save as..." may be newly capped
+  }
+  const float width = ImGui::GetContentRegionAvail().x;
+  float height = 0.0f;
+  const auto add = [&](const std::string& text) {
+    height += ImGui::CalcTextSize(wrap_at_spaces(text, width).c_str()).y +
+              ImGui::GetStyle().ItemSpacing.y;
+  };
+  if (!status.message().empty()) {
+    add(status.message());
+  }
+  for (const std::string& notice : status.notices()) {
+    add(notice);
+  }
+  return height;
+}
+
 // The status line and the notices, under the buttons where the eye is after a click.
 void PresetsPanel::draw_messages(UiStatus& status) {
   if (!status.message().empty()) {
     ImGui::PushStyleColor(ImGuiCol_Text, message_colour(status.message_kind()));
     wrapped_text("%s", status.message().c_str());
     ImGui::PopStyleColor();
-  }
-  for (const std::string& notice : notices_) {
-    status.add_notice(notice);  // a listing refreshed by "Save as..." may be newly capped
   }
   for (const std::string& notice : status.notices()) {
     ImGui::PushStyleColor(ImGuiCol_Text, kErrorText);
@@ -290,14 +307,16 @@ void PresetsPanel::draw(PanelContext& context) {
     ImGui::End();
     return;
   }
-  // The list gives way to what is under it as it was last drawn (a message of several lines, a
-  // notice), so that "Fit to measurements..." stays in view rather than under the panel's edge.
+  // The list gives way to what is under it, so that "Fit to measurements..." stays in view rather
+  // than under the panel's edge: the rows as they were last drawn, and the messages as they are
+  // now (measured in this frame, so that nothing moves under a click a frame late).
   if (below_list_px_ <= 0.0f) {
     below_list_px_ = 3.2f * ImGui::GetFrameHeightWithSpacing();
   }
-  const float list_height = std::max(60.0f, ImGui::GetContentRegionAvail().y - below_list_px_);
+  const float list_height = std::max(
+      60.0f, ImGui::GetContentRegionAvail().y - below_list_px_ - messages_height_px(status));
   draw_list(document, list_height);
-  const float below_list_start = ImGui::GetCursorPosY();
+  float below_list_start = ImGui::GetCursorPosY();
   const float buttons = button_width("Save as...") + button_width("Open file...") +
                         2.0f * ImGui::GetStyle().ItemSpacing.x;
   ImGui::SetNextItemWidth(-buttons);
@@ -324,7 +343,9 @@ void PresetsPanel::draw(PanelContext& context) {
   if (ImGui::IsItemHovered()) {
     ImGui::SetTooltip("A preset file (.json) from elsewhere: a colleague's, or one you saved.");
   }
+  const float messages_start = ImGui::GetCursorPosY();
   draw_messages(status);
+  below_list_start += ImGui::GetCursorPosY() - messages_start;  // the messages are not rows
   if (footer_) {
     footer_();
   }

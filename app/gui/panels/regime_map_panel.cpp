@@ -279,10 +279,8 @@ RegimeMapPanel::Placement RegimeMapPanel::place_map() {
   }
   const float swatch_rows =
       (swatches_width <= available.x ? 1.0f : 2.0f) * ImGui::GetFrameHeightWithSpacing();
-  // Half a line under the y title, where the top label reaches up to. Never shorter than twelve
-  // lines where the width allows: in a short panel (a large text size, or presented under the
-  // inputs' strip) the panel scrolls rather than shrink the map to a stamp.
-  const float tallest = std::max(ems(12.0f), available.y - 3.5f * font - swatch_rows);
+  // Half a line under the y title, where the top label reaches up to.
+  const float tallest = std::max(ems(5.0f), available.y - 3.5f * font - swatch_rows);
   // The y labels' width at the tallest the map can be: as many labels or fewer fit a shorter one.
   at.left_margin = 0.0f;
   for (const std::string& label : map_ticks(cells_->y, tallest, false).labels) {
