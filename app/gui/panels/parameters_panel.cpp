@@ -470,7 +470,8 @@ void ParametersPanel::header_rows(Document& document, UiStatus& status) {
   if (ImGui::Button("Reset to preset")) {
     document.reset_to_loaded();
   }
-  ImGui::SameLine();
+  // On a line of its own in a narrow panel (a large text size) rather than cut.
+  same_line_if_fits(checkbox_width(kExpertLabel) + ImGui::CalcTextSize(" (?)").x);
   if (bool expert = status.expert_mode(); ImGui::Checkbox(kExpertLabel, &expert)) {
     status.set_expert_mode(expert);
   }

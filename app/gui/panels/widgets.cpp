@@ -364,7 +364,7 @@ void equation_text(const ImVec4* colour, const char* format, ...) {
 }
 
 void help_marker(const char* text) {
-  ImGui::SameLine();
+  same_line_if_fits(ImGui::CalcTextSize("(?)").x);  // under its item rather than cut in half
   ImGui::TextDisabled("(?)");
   if (ImGui::IsItemHovered()) {
     ImGui::BeginTooltip();
