@@ -384,6 +384,16 @@ TEST_F(ExplorerTest, AFrameShowsTheResultsOfTheLoadedPreset) {
   EXPECT_EQ(number_after(text, "number of wrinkles n "), 8.0) << text;
 }
 
+// A slider shows a large value in whole units ("15000 mm", not "1.5e+04 mm"), and a refused huge
+// one as it was typed rather than as hundreds of digits.
+TEST_F(ExplorerTest, ASliderShowsAHugeRefusedValueAsTypedAndALargeOneWhole) {
+  ASSERT_EQ(explorer_->set_input("h", 15000.0), std::nullopt);
+  ASSERT_EQ(explorer_->set_input("E", 1e308), std::nullopt);
+  frame();
+  EXPECT_EQ(explorer_->parameters_panel().shown(document(), *find_input("h")), "15000 mm");
+  EXPECT_EQ(explorer_->parameters_panel().shown(document(), *find_input("E")), "1e308 MPa");
+}
+
 TEST_F(ExplorerTest, ChangingAnInputChangesTheResultsShown) {
   frame();
   // Table 1's h = 900 mm row differs from the loaded h = 1400 mm only in h; the paper printed

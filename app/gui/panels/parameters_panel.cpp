@@ -116,8 +116,10 @@ std::string shown_text(const InputSpec& spec, double value) {
   const InputUnit unit = shown_unit(spec);
   const double in_unit = value / unit.per_unit;
   std::string text = detail::printf_string(std::string(unit.format).c_str(), in_unit);
+  // "15000 mm", not "1.5e+04 mm"; but a refused 1e308 reads as typed, not as 309 digits.
   if (text.find("e+") != std::string::npos) {
-    text = detail::printf_string("%.0f", in_unit);
+    text = std::abs(in_unit) < 1e15 ? detail::printf_string("%.0f", in_unit)
+                                    : detail::message_number(in_unit);
   }
   return unit.symbol.empty() ? text : text + " " + std::string(unit.symbol);
 }
