@@ -267,10 +267,7 @@ void PresetsPanel::draw_list(Document& document, float height_px) {
 }
 
 // What draw_messages takes: each message's lines at the panel's width.
-float PresetsPanel::messages_height_px(UiStatus& status) {
-  for (const std::string& notice : notices_) {
-    status.add_notice(notice);  // a listing refreshed by "Save as..." may be newly capped
-  }
+float PresetsPanel::messages_height_px(const UiStatus& status) {
   const float width = ImGui::GetContentRegionAvail().x;
   float height = 0.0f;
   const auto add = [&](const std::string& text) {
@@ -310,6 +307,9 @@ void PresetsPanel::draw(PanelContext& context) {
   // The list gives way to what is under it, so that "Fit to measurements..." stays in view rather
   // than under the panel's edge: the rows as they were last drawn, and the messages as they are
   // now (measured in this frame, so that nothing moves under a click a frame late).
+  for (const std::string& notice : notices_) {
+    status.add_notice(notice);  // a listing refreshed by "Save as..." may be newly capped
+  }
   if (below_list_px_ <= 0.0f) {
     below_list_px_ = 3.2f * ImGui::GetFrameHeightWithSpacing();
   }
