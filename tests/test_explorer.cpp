@@ -146,6 +146,16 @@ class ExplorerTest : public foldlab::testing::TempDirTest {
   static Preset cotton() { return load_preset(kPresetsDir / "fabric-cotton-jersey.json"); }
   double height_mm() { return explorer_->edited().hanging.height_mm; }
   Document& document() { return explorer_->document(); }
+  // h = 900 mm saved with Ctrl+S under the name "Save as" suggests: from then on the loaded preset
+  // is the user's own file, which this returns.
+  fs::path save_h900_as_the_users() {
+    EXPECT_EQ(explorer_->set_input("h", 900.0), std::nullopt);
+    press('S', true);
+    click("Save");
+    const fs::path written = dir_ / "user-presets" / "table-1-h-1400-mm-edited.json";
+    EXPECT_TRUE(fs::exists(written));
+    return written;
+  }
   UiStatus& status() { return explorer_->status(); }
 
   static void append_utf8(std::string& text, unsigned codepoint) {
@@ -1711,11 +1721,7 @@ TEST_F(ExplorerTest, CtrlSSavesAsThenOverTheUsersPreset) {
 // "Save" of the unsaved-edits question writes the file (which would hold the last valid value
 // while the slider shows another), the edits stay and still read as unsaved.
 TEST_F(ExplorerTest, RefusedInputsAreNeverSavedAndTheEditsStayUnsaved) {
-  ASSERT_EQ(explorer_->set_input("h", 900.0), std::nullopt);
-  press('S', true);
-  click("Save");
-  const fs::path written = dir_ / "user-presets" / "table-1-h-1400-mm-edited.json";
-  ASSERT_TRUE(fs::exists(written));
+  const fs::path written = save_h900_as_the_users();
   ASSERT_EQ(explorer_->set_input("h", 950.0), std::nullopt);
   ASSERT_EQ(explorer_->set_input("t", -0.5), std::nullopt);  // refused: a thickness is > 0
   ASSERT_FALSE(document().issues().empty());
@@ -1741,11 +1747,7 @@ TEST_F(ExplorerTest, RefusedInputsAreNeverSavedAndTheEditsStayUnsaved) {
 // Saving is no step to undo, but a step undone after it compares with the file as saved: the
 // state before the save differs from the file now, and reads as unsaved.
 TEST_F(ExplorerTest, UndoPastASaveShowsUnsavedEdits) {
-  ASSERT_EQ(explorer_->set_input("h", 900.0), std::nullopt);
-  press('S', true);
-  click("Save");
-  const fs::path written = dir_ / "user-presets" / "table-1-h-1400-mm-edited.json";
-  ASSERT_TRUE(fs::exists(written));
+  const fs::path written = save_h900_as_the_users();
   ASSERT_EQ(explorer_->set_input("h", 950.0), std::nullopt);
   frame();
   press('S', true);
