@@ -334,12 +334,19 @@ void Explorer::save_session_when_idle() {
   const double now = ImGui::GetTime();
   if (status_.session_dirty() && now - last_session_save_time_ > 1.0) {
     last_session_save_time_ = now;
-    try {
-      save_session_now();
-    } catch (const std::exception& e) {
-      status_.notify(std::string("Could not save the session: ") + e.what(), MessageKind::error);
-      status_.session_saved();
-    }
+    keep_session();
+  }
+}
+
+void Explorer::keep_session() {
+  if (!status_.session_dirty()) {
+    return;
+  }
+  try {
+    save_session_now();
+  } catch (const std::exception& e) {
+    status_.notify(std::string("Could not save the session: ") + e.what(), MessageKind::error);
+    status_.session_saved();
   }
 }
 

@@ -164,6 +164,9 @@ class Explorer {
   void copy_link();
 
   void save_session_now();
+  // The session saved now if it changed since the last save (rather than a second after the
+  // last change): the page is being left, and what a person did last must not be lost.
+  void keep_session();
   // The window is asked to close: true when nothing would be lost (no unsaved edits, or a session
   // that brings them back); otherwise asks "Save / Discard / Cancel" and returns false, and
   // quit_confirmed() turns true once the answer lets the window close.

@@ -110,7 +110,6 @@ class LayoutFile {
     }
   }
 
- private:
   void save() noexcept {
     if (!may_save_) {
       return;
@@ -406,6 +405,16 @@ class ExplorerRun {
 
   Explorer& explorer() { return *explorer_; }
 
+  // The page is being left (closed, reloaded, or hidden where the browser may discard it):
+  // what the delays would have kept a moment later is kept now.
+  void keep_now() {
+    explorer_->keep_session();
+    if (layout_) {
+      layout_->save();
+    }
+    config_->keep(config_dir());
+  }
+
   // After the last frame: the report when asked for, and the exit status.
   int finish() {
     times_.print_report(interactive_ ? "window" : "headless", options_.animate_key, *explorer_);
@@ -499,8 +508,21 @@ extern "C" EMSCRIPTEN_KEEPALIVE int foldlab_resting() {
   return running_page != nullptr && running_page->run && running_page->run->may_rest() ? 1 : 0;
 }
 
-// What the page's touch handling needs of the explorer, and the state hooks.
+// Called by the page when it is hidden or left: a tab closed within a second of a drag keeps it.
+extern "C" EMSCRIPTEN_KEEPALIVE void foldlab_page_leaving() {
+  if (running_page != nullptr && running_page->run) {
+    running_page->run->keep_now();
+  }
+}
+
+// What the page's touch handling needs of the explorer, the state hooks, and the save when the
+// page goes (pagehide alone is not fired when a phone discards a hidden tab).
 EM_JS(void, tell_page_screen, (double zoom_per_wheel_step), {
+  window.addEventListener('pagehide', function() { _foldlab_page_leaving(); });
+  document.addEventListener('visibilitychange', function() {
+    if (document.visibilityState == 'hidden')
+      _foldlab_page_leaving();
+  });
   Module.foldlabZoomPerWheelStep = zoom_per_wheel_step;
   Module.foldlabState = function() {
     return JSON.parse(UTF8ToString(_foldlab_state_json()));

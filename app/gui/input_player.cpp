@@ -360,6 +360,7 @@ json explorer_state_json(Explorer& explorer) {
       {"compare", compare},
       {"refused", refused ? json(*refused) : json(nullptr)},
       {"dirty", document.unsaved()},
+      {"session_unsaved", explorer.status().session_dirty()},
       {"modal", modal.empty() ? json(nullptr) : json(modal)},
       {"undo_depth", document.undo_depth()},
       {"sliders", sliders},
