@@ -518,11 +518,13 @@ extern "C" EMSCRIPTEN_KEEPALIVE void foldlab_page_leaving() {
 // What the page's touch handling needs of the explorer, the state hooks, and the save when the
 // page goes (pagehide alone is not fired when a phone discards a hidden tab).
 EM_JS(void, tell_page_screen, (double zoom_per_wheel_step), {
-  window.addEventListener('pagehide', function() { _foldlab_page_leaving(); });
-  document.addEventListener('visibilitychange', function() {
-    if (document.visibilityState == 'hidden')
-      _foldlab_page_leaving();
-  });
+  window.addEventListener(
+      'pagehide', function() { _foldlab_page_leaving(); });
+  document.addEventListener(
+      'visibilitychange', function() {
+        if (document.visibilityState == 'hidden')
+          _foldlab_page_leaving();
+      });
   Module.foldlabZoomPerWheelStep = zoom_per_wheel_step;
   Module.foldlabState = function() {
     return JSON.parse(UTF8ToString(_foldlab_state_json()));
