@@ -18,8 +18,16 @@ EM_JS(void, copy_to_browser_clipboard, (const char* text), {
 EM_JS(void, replace_address_fragment, (const char* fragment),
       { history.replaceState(history.state, "", "#" + UTF8ToString(fragment)); });
 
+// An address edited by hand (or Back to an earlier one) is a link to open, as it would be in a
+// new tab: the page opens it afresh, its session kept as it goes (the page saves when it is
+// left). replaceState, which the page's own updates use, fires no hashchange.
+EM_JS(void, reopen_on_edited_address, (), {
+  window.addEventListener('hashchange', function() { location.reload(); });
+});
+
 class BrowserLink final : public PageLink {
  public:
+  BrowserLink() { reopen_on_edited_address(); }
   // The page's address as it is now, its query (?preset=NAME) kept, its fragment replaced.
   std::string address(std::string_view fragment) const override {
     const std::string page = emscripten_run_script_string("location.href.split('#')[0]");

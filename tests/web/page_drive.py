@@ -16,6 +16,7 @@ Checks (each its own ctest):
   scheme    the theme follows the browser's prefers-color-scheme and the text size its default
             font size, with no stored session
   layout    a tile resized with the mouse (the fold plot's grip) is where it was after a reload
+  address   the link in the address edited after the page opened: the page opens the edited link
   picture   the page's picture of a preset beside the desktop's (--native: `render`) at the same
             size and pixel ratio 1: at most PICTURE_MAX_OVER pixels differ by more than
             PICTURE_THRESHOLD in a channel (png_compare.py)
@@ -489,6 +490,31 @@ def check_layout(args, root, problems):
         page.close()
 
 
+def check_address(args, root, problems):
+    # A link's value edited in the address bar (Enter fires hashchange, no reload of its own):
+    # the page opens the edited link, as a new tab would, and its address stays that link.
+    page = Page(args, os.path.join(root, "address"), "#h=2000&w=200gsm")
+    try:
+        state = ready(page)
+        check(problems, abs(state["parameters"]["h_mm"] - 2000) < 1e-9,
+              f"the link's h = 2000 mm opened as {state['parameters']['h_mm']}")
+        page.tools.evaluate("window.foldlabBeforeReload = true")
+        page.tools.evaluate("location.hash = '#h=1500&w=300gsm'")
+        page.wait_for("the edited address's first frames",
+                      "!window.foldlabBeforeReload && window.Module && Module.foldlabState && "
+                      "Module.foldlabState() && Module.foldlabState().renderer.frames >= 5")
+        back = page.settle()
+        # 300 g/m^2 as N/mm^2 at the presets' g = 9.81 m/s^2: 0.3 kg/m^2 * 9.81 / 1e6 mm^2/m^2.
+        check(problems, abs(back["parameters"]["h_mm"] - 1500) < 1e-9 and
+              abs(back["parameters"]["w_N_per_mm2"] - 0.3 * 9.81e-6) < 1e-15,
+              f"after the address was edited the inputs are {back['parameters']}")
+        address = page.tools.evaluate("location.hash")
+        check(problems, "h=1500" in address and "w=300gsm" in address,
+              f"after the address was edited it reads {address!r}")
+    finally:
+        page.close()
+
+
 # The picture's preset and link, the same in the page and on the desktop: dark, as the desktop
 # starts (the headless browser prefers light).
 PICTURE_PRESET = "paper-table1-h1400"
@@ -595,7 +621,8 @@ def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("--site", required=True)
     parser.add_argument("--check", required=True,
-                        choices=["dpr", "touch", "scheme", "layout", "picture", "regime_map"])
+                        choices=["dpr", "touch", "scheme", "layout", "address", "picture",
+                                 "regime_map"])
     parser.add_argument("--native", help="the desktop program (regime_map, picture)")
     parser.add_argument("--presets", help="the presets folder (regime_map, picture)")
     parser.add_argument("--chromium", default="chromium")
@@ -605,7 +632,7 @@ def main():
     started = time.monotonic()
     with tempfile.TemporaryDirectory(prefix="foldlab_drive_") as root:
         {"dpr": check_dpr, "touch": check_touch, "scheme": check_scheme,
-         "layout": check_layout, "picture": check_picture,
+         "layout": check_layout, "address": check_address, "picture": check_picture,
          "regime_map": check_regime_map}[args.check](
             args, root, problems)
     for problem in problems:
