@@ -13,4 +13,6 @@ ScreenPreferences screen_preferences() {
 
 void screen_wants_text_input(bool /*wanted*/) {}
 
+void screen_shares_clipboard() {}
+
 }  // namespace foldlab::gui

@@ -346,8 +346,7 @@ json explorer_state_json(Explorer& explorer) {
   const std::optional<std::string> refused = document.refusal();
   const std::string& modal = explorer.status().modal_title();
   const json layout = layout_json(explorer);
-  // The browser's GLFW keeps no clipboard (nothing there reads as empty), and the system's may
-  // hold any bytes.
+  // The system's clipboard may hold any bytes.
   const char* clipboard = ImGui::GetClipboardText();
   json state = {
       {"grid", std::to_string(scene.grid_nx()) + "x" + std::to_string(scene.grid_ny())},

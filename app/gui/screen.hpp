@@ -25,4 +25,10 @@ ScreenPreferences screen_preferences();
 // text field then, so that a touch screen brings up its keyboard. Nothing on the desktop.
 void screen_wants_text_input(bool wanted);
 
+// Called once the window's ImGui backend is set up: ImGui's copy and paste (Ctrl+C, Ctrl+V in a
+// text field) reach the screen's clipboard. The desktop's GLFW gives ImGui the system's; the
+// page's GLFW has none, so the page takes the browser's paste events and hands copies to the
+// browser's clipboard.
+void screen_shares_clipboard();
+
 }  // namespace foldlab::gui

@@ -1,19 +1,12 @@
 // The page's link: the page's own address, which follows the inputs (history.replaceState: the
-// address changes, the history does not grow), and "Copy link" through the browser's clipboard.
+// address changes, the history does not grow). "Copy link" goes through ImGui's clipboard, which
+// the page hands to the browser's (app/web/page_screen.cpp).
 #include <emscripten/emscripten.h>
 
 #include "app/gui/page_link.hpp"
 
 namespace foldlab::gui {
 namespace {
-
-// A browser that refuses the clipboard (no focus, no permission) keeps ImGui's copy alone.
-EM_JS(void, copy_to_browser_clipboard, (const char* text), {
-  const value = UTF8ToString(text);
-  if (navigator.clipboard && navigator.clipboard.writeText) {
-    navigator.clipboard.writeText(value).catch(function(){});
-  }
-});
 
 EM_JS(void, replace_address_fragment, (const char* fragment),
       { history.replaceState(history.state, "", "#" + UTF8ToString(fragment)); });
@@ -22,7 +15,8 @@ EM_JS(void, replace_address_fragment, (const char* fragment),
 // new tab: the page opens it afresh, its session kept as it goes (the page saves when it is
 // left). replaceState, which the page's own updates use, fires no hashchange.
 EM_JS(void, reopen_on_edited_address, (), {
-  window.addEventListener('hashchange', function() { location.reload(); });
+  window.addEventListener(
+      'hashchange', function() { location.reload(); });
 });
 
 class BrowserLink final : public PageLink {
@@ -32,10 +26,6 @@ class BrowserLink final : public PageLink {
   std::string address(std::string_view fragment) const override {
     const std::string page = emscripten_run_script_string("location.href.split('#')[0]");
     return page + "#" + std::string(fragment);
-  }
-  void copy(const std::string& text) const override {
-    PageLink::copy(text);
-    copy_to_browser_clipboard(text.c_str());
   }
   bool follows() const override { return true; }
   void show(std::string_view fragment) override {

@@ -2,6 +2,9 @@
 // the hidden text field index.html focuses so that a touch screen shows its keyboard.
 #include <emscripten/emscripten.h>
 #include <emscripten/html5.h>
+#include <imgui.h>
+
+#include <string>
 
 #include "app/gui/screen.hpp"
 
@@ -37,6 +40,39 @@ EM_JS(void, page_text_input, (int wanted), {
     Module.foldlabTextInput(wanted != 0);
 });
 
+// The page's clipboard as ImGui sees it: the text of the last paste event (Ctrl+V fires one
+// before the frame that reads the keys) or of the explorer's last copy, whichever came later.
+// A copy also goes to the browser's clipboard where the page may write it (a key press just
+// before gives it the right).
+EM_JS(void, listen_for_paste, (), {
+  Module.foldlabClipboard = "";
+  document.addEventListener(
+      'paste',
+      function(event) {
+        if (event.clipboardData)
+          Module.foldlabClipboard = event.clipboardData.getData('text/plain');
+      },
+      true);
+});
+
+EM_JS(void, copy_to_page_clipboard, (const char* text), {
+  const value = UTF8ToString(text);
+  Module.foldlabClipboard = value;
+  if (navigator.clipboard && navigator.clipboard.writeText) {
+    navigator.clipboard.writeText(value).catch(function(){});
+  }
+});
+
+const char* page_clipboard_text(void* /*user_data*/) {
+  static std::string text;
+  text = emscripten_run_script_string("Module.foldlabClipboard || ''");
+  return text.c_str();
+}
+
+void set_page_clipboard_text(void* /*user_data*/, const char* text) {
+  copy_to_page_clipboard(text);
+}
+
 // A browser's default of 16 px is FoldLab's 100 %.
 constexpr int kBrowserDefaultPercent = 100;
 
@@ -63,6 +99,13 @@ void screen_wants_text_input(bool wanted) {
     shown = wanted ? 1 : 0;
     page_text_input(shown);
   }
+}
+
+void screen_shares_clipboard() {
+  listen_for_paste();
+  ImGuiIO& io = ImGui::GetIO();
+  io.GetClipboardTextFn = page_clipboard_text;
+  io.SetClipboardTextFn = set_page_clipboard_text;
 }
 
 }  // namespace foldlab::gui

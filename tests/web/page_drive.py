@@ -17,6 +17,7 @@ Checks (each its own ctest):
             font size, with no stored session
   layout    a tile resized with the mouse (the fold plot's grip) is where it was after a reload
   address   the link in the address edited after the page opened: the page opens the edited link
+  clipboard Ctrl+V pastes the browser's clipboard into a typed value, Ctrl+C copies one onto it
   picture   the page's picture of a preset beside the desktop's (--native: `render`) at the same
             size and pixel ratio 1: at most PICTURE_MAX_OVER pixels differ by more than
             PICTURE_THRESHOLD in a channel (png_compare.py)
@@ -208,9 +209,42 @@ class Page:
                 raise AssertionError(f"{what}: not within {timeout_s} s")
             time.sleep(0.02)
 
-    def mouse(self, kind, x, y, buttons=0):
+    def mouse(self, kind, x, y, buttons=0, modifiers=0):
         self.tools.send("Input.dispatchMouseEvent", type=kind, x=x, y=y, button="left",
-                        buttons=buttons, clickCount=1)
+                        buttons=buttons, clickCount=1, modifiers=modifiers)
+
+    def ctrl(self, down):
+        """The Ctrl key pressed or released: the page's GLFW knows a modifier by its key."""
+        self.tools.send("Input.dispatchKeyEvent", type="rawKeyDown" if down else "keyUp",
+                        windowsVirtualKeyCode=17, key="Control", code="ControlLeft",
+                        modifiers=2 if down else 0)
+        self.settle(1)
+
+    def key(self, key, code, key_code, modifiers=0, commands=()):
+        """A key pressed and released, as a keyboard does: `modifiers` 2 is Ctrl (held, its own
+        key pressed first), `commands` the editing command the browser runs for it ("paste")."""
+        if modifiers & 2:
+            self.ctrl(True)
+        self.tools.send("Input.dispatchKeyEvent", type="rawKeyDown", windowsVirtualKeyCode=key_code,
+                        key=key, code=code, modifiers=modifiers, commands=list(commands))
+        self.settle(1)
+        self.tools.send("Input.dispatchKeyEvent", type="keyUp", windowsVirtualKeyCode=key_code,
+                        key=key, code=code, modifiers=modifiers)
+        if modifiers & 2:
+            self.settle(1)
+            self.ctrl(False)
+
+    def open_typed_value(self, state, key):
+        """Ctrl+click on a slider: its typed value opens, its text selected."""
+        x, y = slider_css(state, key, 1)
+        self.mouse("mouseMoved", x, y)
+        self.ctrl(True)
+        self.mouse("mousePressed", x, y, 1, modifiers=2)
+        self.settle(1)
+        self.mouse("mouseReleased", x, y, 0, modifiers=2)
+        self.settle(1)
+        self.ctrl(False)
+        return self.settle()
 
     def touch(self, kind, points, at_s=None):
         """A touch event stamped `at_s` (seconds since the epoch; now by default): the page judges
@@ -515,6 +549,40 @@ def check_address(args, root, problems):
         page.close()
 
 
+def check_clipboard(args, root, problems):
+    # Copy and paste between the page's typed values and the browser's clipboard, through the
+    # keys a person presses (the clipboard written by the page itself, as another tab would).
+    page = Page(args, os.path.join(root, "clipboard"), "")
+    try:
+        origin = page.tools.evaluate("location.origin")
+        page.tools.send("Browser.grantPermissions", origin=origin,
+                        permissions=["clipboardReadWrite", "clipboardSanitizedWrite"])
+        # A headless window never has the focus, which the clipboard asks of a page.
+        page.tools.send("Emulation.setFocusEmulationEnabled", enabled=True)
+        state = ready(page)
+        page.tools.evaluate("navigator.clipboard.writeText('1.5 m')")
+        page.open_typed_value(state, "h")
+        page.key("v", "KeyV", 86, modifiers=2, commands=["paste"])
+        page.settle(3)
+        page.key("Enter", "Enter", 13)
+        state = page.settle()
+        check(problems, state["parameters"]["h_mm"] == 1500 and state["refused"] is None,
+              f"'1.5 m' pasted with Ctrl+V over h's typed value: h is "
+              f"{state['parameters']['h_mm']} mm, refused {state['refused']!r}")
+        page.open_typed_value(state, "L")
+        page.key("c", "KeyC", 67, modifiers=2)
+        state = page.settle(3)
+        page.key("Escape", "Escape", 27)
+        page.settle()
+        copied = page.tools.evaluate("navigator.clipboard.readText()")
+        check(problems, copied == "1400" or copied.startswith("1400"),
+              f"Ctrl+C on L's typed value (1400 mm) left {copied!r} on the browser's clipboard")
+        check(problems, state["clipboard"] == copied,
+              f"the explorer's clipboard reads {state['clipboard']!r}, the browser's {copied!r}")
+    finally:
+        page.close()
+
+
 # The picture's preset and link, the same in the page and on the desktop: dark, as the desktop
 # starts (the headless browser prefers light).
 PICTURE_PRESET = "paper-table1-h1400"
@@ -621,7 +689,7 @@ def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("--site", required=True)
     parser.add_argument("--check", required=True,
-                        choices=["dpr", "touch", "scheme", "layout", "address", "picture",
+                        choices=["dpr", "touch", "scheme", "layout", "address", "clipboard", "picture",
                                  "regime_map"])
     parser.add_argument("--native", help="the desktop program (regime_map, picture)")
     parser.add_argument("--presets", help="the presets folder (regime_map, picture)")
@@ -632,7 +700,8 @@ def main():
     started = time.monotonic()
     with tempfile.TemporaryDirectory(prefix="foldlab_drive_") as root:
         {"dpr": check_dpr, "touch": check_touch, "scheme": check_scheme,
-         "layout": check_layout, "address": check_address, "picture": check_picture,
+         "layout": check_layout, "address": check_address, "clipboard": check_clipboard,
+         "picture": check_picture,
          "regime_map": check_regime_map}[args.check](
             args, root, problems)
     for problem in problems:

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "app/gui/screen.hpp"
 #include "app/gui/surface.hpp"
 #include "backends/imgui_impl_glfw.h"
 
@@ -55,6 +56,7 @@ class WindowSurface final : public Surface {
 
   void init_imgui_platform() override {
     ImGui_ImplGlfw_InitForOpenGL(window_, true);
+    screen_shares_clipboard();
     glfwSetWindowUserPointer(window_, this);
     glfwSetKeyCallback(window_, on_key);
   }
