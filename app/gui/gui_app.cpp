@@ -515,9 +515,8 @@ extern "C" EMSCRIPTEN_KEEPALIVE void foldlab_page_leaving() {
   }
 }
 
-// What the page's touch handling needs of the explorer, the state hooks, and the save when the
-// page goes (pagehide alone is not fired when a phone discards a hidden tab).
-EM_JS(void, tell_page_screen, (double zoom_per_wheel_step), {
+// pagehide alone is not enough: a phone may discard a hidden tab without one.
+EM_JS(void, save_when_page_leaves, (), {
   window.addEventListener(
       'pagehide', function() { _foldlab_page_leaving(); });
   document.addEventListener(
@@ -525,6 +524,10 @@ EM_JS(void, tell_page_screen, (double zoom_per_wheel_step), {
         if (document.visibilityState == 'hidden')
           _foldlab_page_leaving();
       });
+});
+
+// What the page's touch handling needs of the explorer, and the state hooks.
+EM_JS(void, tell_page_screen, (double zoom_per_wheel_step), {
   Module.foldlabZoomPerWheelStep = zoom_per_wheel_step;
   Module.foldlabState = function() {
     return JSON.parse(UTF8ToString(_foldlab_state_json()));
@@ -571,6 +574,7 @@ int run_window(const GuiRunOptions& options) {
   web->run = std::make_unique<ExplorerRun>(*web->surface, options, start, true, std::move(player));
   running_page = web;
   tell_page_screen(kZoomPerWheelStep);
+  save_when_page_leaves();
   emscripten_set_main_loop_arg(web_frame, web, 0, false);
   if (options.frames > 0 || !options.play_path.empty()) {
     // A scripted run on timers rather than animation frames: as fast as it can, and driven by

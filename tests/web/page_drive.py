@@ -213,6 +213,15 @@ class Page:
         self.tools.send("Input.dispatchMouseEvent", type=kind, x=x, y=y, button="left",
                         buttons=buttons, clickCount=1, modifiers=modifiers)
 
+    def reload_by(self, what, action):
+        """Runs `action` (a JavaScript expression) that makes the page load again, and waits for
+        the new page's first frames: the old page's flag is gone once the new one runs."""
+        self.tools.evaluate("window.foldlabBeforeReload = true")
+        self.tools.evaluate(action)
+        self.wait_for(what, "!window.foldlabBeforeReload && window.Module && Module.foldlabState && "
+                            "Module.foldlabState() && Module.foldlabState().renderer.frames >= 5")
+        return self.settle()
+
     def ctrl(self, down):
         """The Ctrl key pressed or released: the page's GLFW knows a modifier by its key."""
         self.tools.send("Input.dispatchKeyEvent", type="rawKeyDown" if down else "keyUp",
@@ -505,12 +514,7 @@ def check_layout(args, root, problems):
         print("layout: at the reload the session was "
               + ("not yet saved (kept as the page went)" if dragged["session_unsaved"]
                  else "already saved"))
-        page.tools.evaluate("window.foldlabBeforeReload = true")
-        page.tools.send("Page.reload")
-        page.wait_for("the reloaded page's first frames",
-                      "!window.foldlabBeforeReload && window.Module && Module.foldlabState && "
-                      "Module.foldlabState() && Module.foldlabState().renderer.frames >= 5")
-        back = page.settle()
+        back = page.reload_by("the reloaded page's first frames", "location.reload()")
         check(problems, back["message"] == "Restored the last session.",
               f"after the reload the status says {back['message']!r}")
         for key, was in dragged["layout"]["panels"].items():
@@ -532,12 +536,8 @@ def check_address(args, root, problems):
         state = ready(page)
         check(problems, abs(state["parameters"]["h_mm"] - 2000) < 1e-9,
               f"the link's h = 2000 mm opened as {state['parameters']['h_mm']}")
-        page.tools.evaluate("window.foldlabBeforeReload = true")
-        page.tools.evaluate("location.hash = '#h=1500&w=300gsm'")
-        page.wait_for("the edited address's first frames",
-                      "!window.foldlabBeforeReload && window.Module && Module.foldlabState && "
-                      "Module.foldlabState() && Module.foldlabState().renderer.frames >= 5")
-        back = page.settle()
+        back = page.reload_by("the edited address's first frames",
+                              "location.hash = '#h=1500&w=300gsm'")
         # 300 g/m^2 as N/mm^2 at the presets' g = 9.81 m/s^2: 0.3 kg/m^2 * 9.81 / 1e6 mm^2/m^2.
         check(problems, abs(back["parameters"]["h_mm"] - 1500) < 1e-9 and
               abs(back["parameters"]["w_N_per_mm2"] - 0.3 * 9.81e-6) < 1e-15,
