@@ -3420,6 +3420,73 @@ TEST_F(ExplorerTest, AtALargeTextSizeTheViewsSettingsFoldAndTheViewsKeepTheirRoo
   EXPECT_NE(last_text_.find("wireframe"), std::string::npos) << last_text_;
 }
 
+// The regime map in its tile at 200 % in 1280 x 800: its axes and cells took the whole tile and
+// the map was out of sight. They fold behind "map settings..." as the views' settings do, the
+// line of timing goes with them, and they work from the popup.
+TEST_F(ExplorerTest, AtALargeTextSizeTheRegimeMapsSettingsFoldAndStillWork) {
+  open_explorer("map");
+  ImGui::GetIO().DisplaySize = ImVec2(1280, 800);
+  frame();
+  frame();
+  const auto report = [&] { return explorer_->analysis().regime_map().report(); };
+  EXPECT_FALSE(report().at("settings_folded").get<bool>());
+  EXPECT_NE(last_text_.find("show z_max instead of n"), std::string::npos) << last_text_;
+  explorer_->appearance().request(200, false);
+  for (int i = 0; i < 4; ++i) {
+    frame();
+  }
+  EXPECT_TRUE(report().at("settings_folded").get<bool>());
+  EXPECT_EQ(last_text_.find("show z_max instead of n"), std::string::npos) << last_text_;
+  EXPECT_EQ(last_text_.find("solves in"), std::string::npos) << last_text_;
+  click("map settings...");
+  EXPECT_NE(last_text_.find("solves in"), std::string::npos) << last_text_;
+  EXPECT_EQ(report().at("shows"), "n");
+  click("show z_max instead of n");
+  EXPECT_EQ(report().at("shows"), "z_max");
+  EXPECT_TRUE(report().at("settings_folded").get<bool>()) << "a setting does not unfold the row";
+  press(kEscape);
+  explorer_->appearance().request(100, false);
+  for (int i = 0; i < 4; ++i) {
+    frame();
+  }
+  EXPECT_FALSE(report().at("settings_folded").get<bool>());
+}
+
+// Presented at 200 % in 1024 x 640: the read-out wraps between n, Q and z_max, never inside one
+// ("z_max = 48.96 (30.5–78." over "6) mm" was drawn), and the menu bar's last item stays on it.
+TEST_F(ExplorerTest, APresentedReadOutWrapsBetweenItsValuesAndTheMenuBarKeepsItsItems) {
+  open_explorer("equations", kDejaVuSans);  // the explorer's own font: the bar's widths are its
+  // The default preset: its calibration gives each value a range, which makes the line long.
+  document().load_preset_file(kPresetsDir / "default.json");
+  ImGui::GetIO().DisplaySize = ImVec2(1024, 640);
+  explorer_->appearance().request(200, false);
+  ASSERT_EQ(explorer_->set_view("present", "cloth"), std::nullopt);
+  for (int i = 0; i < 4; ++i) {
+    frame();
+  }
+  // (DejaVu's narrow gaps read as spaces or not: "z_m ax", "m m".)
+  const std::size_t z = last_text_.find("z_");
+  ASSERT_NE(z, std::string::npos) << last_text_;
+  const std::size_t mm = last_text_.find('m', last_text_.find(')', z));
+  ASSERT_NE(mm, std::string::npos) << last_text_;
+  EXPECT_EQ(last_positions_[z].y, last_positions_[mm].y) << "z_max's value and unit on one line";
+  const std::size_t q = last_text_.find("Q");
+  ASSERT_LT(q, z);
+  EXPECT_GT(last_positions_[z].y, last_positions_[q].y) << "this width needs two lines";
+  const std::size_t range_end = last_text_.find(")", q);
+  EXPECT_EQ(last_positions_[range_end].y, last_positions_[q].y) << "Q's range on Q's line";
+  const float right =
+      position_of(Explorer::kHideInputsLabel).x + ImGui::CalcTextSize(Explorer::kHideInputsLabel).x;
+  EXPECT_LE(right, 1024.0f);
+  EXPECT_TRUE(shows(last_text_, Explorer::kBackToTilesShortLabel)) << last_text_;
+  // At 100 % the bar has room for the long wording.
+  explorer_->appearance().request(100, false);
+  for (int i = 0; i < 4; ++i) {
+    frame();
+  }
+  EXPECT_TRUE(shows(last_text_, Explorer::kBackToTilesLabel)) << last_text_;
+}
+
 // The photo loop through real clicks: a PNG that FoldLab drew of the loaded preset's folds (turned
 // 3° and scaled, as a camera might) is typed into the load dialog, its two supports and its folds
 // are clicked where the geometry drew them, and the measurement must give back the solution's n

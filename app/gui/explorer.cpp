@@ -478,8 +478,7 @@ void Explorer::handle_escape() {
 float Explorer::presentation_bar() {
   const ImVec2 display = ImGui::GetIO().DisplaySize;
   const ImGuiStyle& style = ImGui::GetStyle();
-  const std::vector<std::pair<std::string, ImVec4>> lines =
-      panel<ResultsPanel>().headlines(document_);
+  std::vector<std::pair<std::string, ImVec4>> lines = panel<ResultsPanel>().headlines(document_);
   // As large as the width allows, up to two and a half times the text: it is read from the
   // back of a room (a hair short of the width, so that rounding never wraps it). Too long even at
   // the text's size, it wraps.
@@ -492,8 +491,11 @@ float Explorer::presentation_bar() {
   }
   const float scale = std::clamp(0.98f * available / text_width, 1.0f, kLargestScale);
   float text_height = 0.0f;
-  for (const auto& [line, colour] : lines) {
-    text_height += scale * ImGui::CalcTextSize(line.c_str(), nullptr, false, available).y;
+  for (auto& [line, colour] : lines) {
+    // Only a line too long at the text's own size (scale 1) wraps: between n, Q and z_max
+    // (headline()), never after a number's '.' as ImGui's wrapping would.
+    line = wrap_at_spaces(line, available);
+    text_height += scale * ImGui::CalcTextSize(line.c_str()).y;
   }
   text_height += static_cast<float>(lines.size() - 1) * style.ItemSpacing.y;
   // The status line under the read-out (a copied link, a refused file): the Presets panel that
@@ -578,12 +580,26 @@ float Explorer::main_menu() {
         ImGui::MenuItem("Reset layout")) {
       layout_.reset();
     }
-    if (presenting && ImGui::MenuItem("Back to the tiles (Esc)")) {
-      layout_.request_present(nullptr);
-    }
-    if (presenting && layout_.presented() != &panel<ParametersPanel>() &&
-        ImGui::MenuItem(layout_.presents_inputs() ? kHideInputsLabel : kShowInputsLabel)) {
-      layout_.set_presents_inputs(!layout_.presents_inputs());
+    if (presenting) {
+      const bool strip_item = layout_.presented() != &panel<ParametersPanel>();
+      const char* strip_label = layout_.presents_inputs() ? kHideInputsLabel : kShowInputsLabel;
+      // At a large text size in a small window the long label would push the last item off the
+      // bar.
+      // A menu bar item takes its text and twice the item spacing.
+      const ImGuiStyle& style = ImGui::GetStyle();
+      const auto item_width = [&style](const char* label) {
+        return ImGui::CalcTextSize(label).x + 2.0f * style.ItemSpacing.x;
+      };
+      const float needed =
+          item_width(kBackToTilesLabel) + (strip_item ? item_width(strip_label) : 0.0f);
+      const bool fits =
+          ImGui::GetCursorPosX() + needed <= ImGui::GetWindowWidth() - style.WindowPadding.x;
+      if (ImGui::MenuItem(fits ? kBackToTilesLabel : kBackToTilesShortLabel)) {
+        layout_.request_present(nullptr);
+      }
+      if (strip_item && ImGui::MenuItem(strip_label)) {
+        layout_.set_presents_inputs(!layout_.presents_inputs());
+      }
     }
     ImGui::EndMainMenuBar();
   }

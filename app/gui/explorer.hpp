@@ -137,10 +137,13 @@ class Explorer {
   // presented panel.
   Layout& layout() { return layout_; }
   // The read-out's window over a presented panel ("presentation" is its key for playback's "in"),
-  // and the menu bar's item that shows or hides its strip of inputs.
+  // the menu bar's item that shows or hides its strip of inputs, and the one back to the tiles
+  // (short when the bar is narrow).
   static constexpr const char* kPresentationWindow = "##presentation read-out###presentation";
   static constexpr const char* kShowInputsLabel = "Show inputs";
   static constexpr const char* kHideInputsLabel = "Hide inputs";
+  static constexpr const char* kBackToTilesLabel = "Back to the tiles (Esc)";
+  static constexpr const char* kBackToTilesShortLabel = "Tiles (Esc)";
   const Layout& layout() const { return layout_; }
   bool automatic_layout() const { return layout_.automatic(); }
   std::vector<std::pair<std::string, PanelRect>> panel_rects() const {

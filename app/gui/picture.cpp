@@ -14,6 +14,7 @@
 #include "app/gui/panels/compare_table.hpp"
 #include "app/gui/panels/fold_plot_panel.hpp"
 #include "app/gui/panels/parameters_panel.hpp"
+#include "app/gui/panels/widgets.hpp"
 #include "app/gui/plot_widget.hpp"
 #include "app/gui/surface.hpp"
 #include "core/analysis/uncertainty.hpp"
@@ -181,10 +182,12 @@ void build_picture(Renderer& renderer, const PictureSource& source, const Pictur
                ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoBackground |
                    ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoInputs);
   ImGui::PopStyleVar(2);
-  const float wrap = display.x - 2.0f * pad;
+  // Broken at spaces only: ImGui's own wrapping would also break a number after its '.'.
+  std::vector<std::string> lines;
   float caption_height = 0.0f;
   for (const std::string& line : caption) {
-    caption_height += ImGui::CalcTextSize(line.c_str(), nullptr, false, wrap).y;
+    lines.push_back(wrap_at_spaces(line, display.x - 2.0f * pad));
+    caption_height += ImGui::CalcTextSize(lines.back().c_str()).y;
   }
   if (!caption.empty()) {
     caption_height +=
@@ -215,12 +218,10 @@ void build_picture(Renderer& renderer, const PictureSource& source, const Pictur
   }
   if (!caption.empty()) {
     ImGui::SetCursorPosY(static_cast<float>(area.height) + pad);
-    ImGui::PushTextWrapPos(display.x - pad);
-    for (const std::string& line : caption) {
+    for (const std::string& line : lines) {
       ImGui::SetCursorPosX(pad);
       ImGui::TextUnformatted(line.c_str());
     }
-    ImGui::PopTextWrapPos();
   }
   ImGui::End();
 }
@@ -354,12 +355,9 @@ void add_caption(std::vector<std::string>& lines, const std::string& letter,
     if (!value) {
       continue;
     }
-    // No-break spaces within an input: a line too long wraps between inputs.
-    std::string item;
-    for (const char c : std::string(input_symbol(*spec)) + " = " + shown_text(*spec, *value)) {
-      item += c == ' ' ? std::string("\u00A0") : std::string(1, c);
-    }
-    inputs += (inputs.empty() ? "" : "     ") + item;
+    // A line too long wraps between inputs.
+    inputs += (inputs.empty() ? "" : "     ") +
+              unbroken(std::string(input_symbol(*spec)) + " = " + shown_text(*spec, *value));
   }
   lines.push_back(inputs);
 }

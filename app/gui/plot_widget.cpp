@@ -1067,15 +1067,23 @@ void Plot::draw_tick_labels_and_titles(const Frame& f) const {
   draw_x_tick_labels(f);
   draw_y_tick_labels(f);
   const ImU32 col_text = f.col_text;
+  // A title wider than the axes (equal scales make a tall cloth's plot narrow) moves over the
+  // tick labels' side rather than past the frame's edge.
+  const auto within_frame = [this](float left, float width) {
+    return std::max(frame_min_.x, std::min(left, frame_max_.x - width));
+  };
   if (f.x_title) {
     const float w = ImGui::CalcTextSize(x_axis_.label.c_str()).x;
-    f.draw_list->AddText(
-        {(f.lay.min.x + f.lay.max.x - w) / 2, f.lay.max.y + f.pad + f.font + f.pad / 2}, col_text,
-        x_axis_.label.c_str());
+    f.draw_list->AddText({within_frame((f.lay.min.x + f.lay.max.x - w) / 2, w),
+                          f.lay.max.y + f.pad + f.font + f.pad / 2},
+                         col_text, x_axis_.label.c_str());
   }
   // Above the axis rather than beside the tick labels, where the top label could collide.
-  if (f.y_title)
-    f.draw_list->AddText({f.lay.min.x, frame_min_.y}, col_text, y_axis_.label.c_str());
+  if (f.y_title) {
+    const float w = ImGui::CalcTextSize(y_axis_.label.c_str()).x;
+    f.draw_list->AddText({within_frame(f.lay.min.x, w), frame_min_.y}, col_text,
+                         y_axis_.label.c_str());
+  }
   f.draw_list->PopClipRect();
 }
 

@@ -42,8 +42,17 @@ def script(size):
     # Analysis tabs: each tab's own content is there to be clicked.
     steps += click("Equations") + click("eq. 7: critical stress gives Q7")
     steps += click("Sweep") + click("Table 1 (h)") + [{"expect": {"modal": None}}]
-    steps += click("Regime map") + click("show z_max instead of n")
-    steps += click("show z_max instead of n") + click("Equations")
+    steps += click("Regime map")
+    # In the smallest window the map's settings fold behind one button, which opens them.
+    folded = size == "1024x640"
+    steps += [{"expect": {"regime_map.settings_folded": folded}}]
+    if folded:
+        steps += click("map settings...")
+    steps += click("show z_max instead of n") + [{"expect": {"regime_map.shows": "z_max"}}]
+    steps += click("show z_max instead of n") + [{"expect": {"regime_map.shows": "n"}}]
+    if folded:
+        steps += [{"key": "escape"}, {"frames": 2}]
+    steps += click("Equations")
     # The 3D view's toggles, twice each so that the view ends as it began.
     for label in ["wireframe", "fold lines", "ground", "breeze"]:
         steps += click(label) + click(label)

@@ -108,7 +108,9 @@ bool range_inputs(const char* id, const std::string& key, double& from, double& 
     }
   };
   field("##from", from);
-  ImGui::SameLine();
+  // In a narrow panel "to ..." goes under "from" rather than past the panel's edge.
+  same_line_if_fits(range_inputs_width() - ems(kRangeFieldEms) - ImGui::GetStyle().ItemSpacing.x);
+  ImGui::AlignTextToFramePadding();
   ImGui::TextUnformatted("to");
   ImGui::SameLine();
   field("##to", to);

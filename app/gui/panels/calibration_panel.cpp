@@ -34,8 +34,9 @@ namespace {
 
 using detail::printf_string;
 
-// The tag beside the button, coloured by whether eq. 7 is the paper's: the longest wording that
-// fits the space left on the line (the Presets panel is narrow at small window sizes).
+// The tag beside the button (under it when even the short wording does not fit there), coloured
+// by whether eq. 7 is the paper's: the longest wording that fits (the Presets panel is narrow at
+// small window sizes).
 void form_tag(const Parameters& p) {
   const ModelForm form = model_form(p.model);
   // Conci's law is "eq. 7"; another law goes by its key.
@@ -54,7 +55,14 @@ void form_tag(const Parameters& p) {
                                ? (p.model.law == WrinkleLawKind::conci ? "paper's" : "published")
                            : form == ModelForm::paper_other_c ? "own c"
                                                               : "calibrated";
-  const float available = ImGui::GetContentRegionAvail().x;
+  // On the button's line when a wording fits there, else on a line of its own.
+  const float line_right = ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x;
+  const float beside = line_right - ImGui::GetItemRectMax().x - ImGui::GetStyle().ItemSpacing.x;
+  const bool same_line = ImGui::CalcTextSize(short_text).x <= beside;
+  const float available = same_line ? beside : ImGui::GetContentRegionAvail().x;
+  if (same_line) {
+    ImGui::SameLine();
+  }
   const char* text = ImGui::CalcTextSize(long_text).x <= available ? long_text : short_text;
   ImGui::TextColored(form == ModelForm::paper ? kOkText : kNoteText, "%s", text);
 }
@@ -118,7 +126,6 @@ void CalibrationPanel::open_button(const Parameters& current) {
     ImGui::SetTooltip("Fit eq. 7's K (and p) to measured n, z_max and Q.\nNow: %s",
                       describe_model_form(current).c_str());
   }
-  ImGui::SameLine();
   form_tag(current);
 }
 

@@ -25,8 +25,9 @@ QuantityTexts quantity_texts(const Solution& s, const ModelStanding& standing) {
 }
 
 std::string headline(const QuantityTexts& texts) {
-  return "n = " + texts.n.joined() + "     Q = " + texts.Q.joined() +
-         "     z_max = " + texts.z_max.joined();
+  // A line too narrow for all three breaks between them, never inside one.
+  return unbroken("n = " + texts.n.joined()) + "     " + unbroken("Q = " + texts.Q.joined()) +
+         "     " + unbroken("z_max = " + texts.z_max.joined());
 }
 
 QuantityTexts difference_texts(const Solution& a, const Solution& b) {

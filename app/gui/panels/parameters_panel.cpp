@@ -467,8 +467,10 @@ void ParametersPanel::forget_unread_of_changed_values(const Document& document) 
 
 void ParametersPanel::header_rows(Document& document, UiStatus& status) {
   const bool unsaved = document.unsaved();
-  ImGui::TextColored(kDimText, "%s%s", document.loaded().name.c_str(),
-                     unsaved ? " (unsaved changes)" : "");
+  // Wrapped: cut at the panel's edge a long name would hide "(unsaved changes)".
+  ImGui::PushStyleColor(ImGuiCol_Text, kDimText);
+  wrapped_text("%s%s", document.loaded().name.c_str(), unsaved ? " (unsaved changes)" : "");
+  ImGui::PopStyleColor();
   if (ImGui::Button("Reset to preset")) {
     document.reset_to_loaded();
   }

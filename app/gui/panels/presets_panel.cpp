@@ -297,6 +297,8 @@ void PresetsPanel::draw_messages(UiStatus& status) {
   }
 }
 
+constexpr float kLeastNameFieldEms = 7.0f;
+
 void PresetsPanel::draw(PanelContext& context) {
   UiStatus& status = context.status;
   Document& document = context.document;
@@ -319,9 +321,13 @@ void PresetsPanel::draw(PanelContext& context) {
   float below_list_start = ImGui::GetCursorPosY();
   const float buttons = button_width("Save as...") + button_width("Open file...") +
                         2.0f * ImGui::GetStyle().ItemSpacing.x;
-  ImGui::SetNextItemWidth(-buttons);
+  // Too narrow a field beside the buttons to read a name in: it takes a line of its own.
+  const bool field_beside = ImGui::GetContentRegionAvail().x - buttons >= ems(kLeastNameFieldEms);
+  ImGui::SetNextItemWidth(field_beside ? -buttons : -1.0f);
   ImGui::InputTextWithHint("##save name", "name of the new preset", save_name_, sizeof save_name_);
-  ImGui::SameLine();
+  if (field_beside) {
+    ImGui::SameLine();
+  }
   if (ImGui::Button("Save as...")) {
     save_as(document, status, save_name_, false);
   }

@@ -184,22 +184,24 @@ void RegimeMapPanel::update_image(Renderer& renderer) {
 }
 
 bool RegimeMapPanel::controls(const Parameters& current) {
-  bool restart_needed = !job_started_;
+  bool restart_needed = false;
+  ImGui::AlignTextToFramePadding();
   ImGui::TextUnformatted("x");
   ImGui::SameLine();
   if (key_combo("##x key", x_key_)) {
     default_range(x_key_, get_number(current, x_key_), x_from_, x_to_);
     restart_needed = true;
   }
-  ImGui::SameLine();
+  same_line_if_fits(range_inputs_width());
   restart_needed |= range_inputs("x range", x_key_, x_from_, x_to_);
+  ImGui::AlignTextToFramePadding();
   ImGui::TextUnformatted("y");
   ImGui::SameLine();
   if (key_combo("##y key", y_key_)) {
     default_range(y_key_, get_number(current, y_key_), y_from_, y_to_);
     restart_needed = true;
   }
-  ImGui::SameLine();
+  same_line_if_fits(range_inputs_width());
   restart_needed |= range_inputs("y range", y_key_, y_from_, y_to_);
   ImGui::SetNextItemWidth(ems(6.5f));
   static const int sizes[] = {64, 128, 256, 512};
@@ -254,12 +256,17 @@ void RegimeMapPanel::status_line() {
   if (job_.running() || done < resolution_) {
     ImGui::ProgressBar(static_cast<float>(done) / static_cast<float>(resolution_),
                        ImVec2(-1.0f, 0.0f));
-  } else {
-    ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyle().Colors[ImGuiCol_TextDisabled]);
-    wrapped_text("%d x %d solves in %.0f ms on %u threads; click to move the sliders there",
-                 resolution_, resolution_, last_map_ms_, threads_);
-    ImGui::PopStyleColor();
+  } else if (!toolbar_row_.folded()) {
+    // Folded, the map keeps the room: the line is under the settings in their popup.
+    timing_text();
   }
+}
+
+void RegimeMapPanel::timing_text() const {
+  ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyle().Colors[ImGuiCol_TextDisabled]);
+  wrapped_text("%d x %d solves in %.0f ms on %u threads; click to move the sliders there",
+               resolution_, resolution_, last_map_ms_, threads_);
+  ImGui::PopStyleColor();
 }
 
 // The map with its axis labels (the y title above it, the x title under the x ticks), a colour
@@ -491,16 +498,27 @@ nlohmann::json RegimeMapPanel::report() const {
           {"cells", cells_->x.steps * cells_->y.steps},
           {"rows_done", cells_->rows_done.load()},
           {"computing", computing()},
+          {"settings_folded", toolbar_row_.folded()},
+          {"shows", show_z_ ? "z_max" : "n"},
           {"n_sum", n_sum},
           {"z_max_sum_mm", z_sum_mm},
           {"digest", digest}};
 }
 
+// The map, its axis titles, colour bar and swatches at the least size that still reads.
+constexpr float kLeastMapHeightEms = 12.0f;
+
 void RegimeMapPanel::draw(PanelContext& context) {
   Document& document = context.document;
   const Parameters& current = document.scene().parameters();
-  bool restart_needed = controls(current);
-  restart_needed |= other_inputs_changed(current);
+  bool restart_needed = !job_started_ || other_inputs_changed(current);
+  if (toolbar_row_.begin("map settings...", ems(kLeastMapHeightEms))) {
+    restart_needed |= controls(current);
+    if (toolbar_row_.folded()) {
+      timing_text();
+    }
+    toolbar_row_.end();
+  }
   if (axes_refused()) {
     return;
   }

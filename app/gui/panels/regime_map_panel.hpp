@@ -13,6 +13,7 @@
 #include "app/gui/background_job.hpp"
 #include "app/gui/document.hpp"
 #include "app/gui/panel.hpp"
+#include "app/gui/panels/view_toolbar.hpp"
 #include "app/gui/plot_widget.hpp"
 #include "app/gui/renderer.hpp"
 #include "core/analysis/sweep.hpp"
@@ -34,6 +35,8 @@ class RegimeMapPanel {
   double last_map_ms() const { return last_map_ms_; }
   // True from a (re)start until every row has been computed.
   bool computing() const { return job_.running(); }
+  // Whether the axes and cells are folded behind a "map settings..." button (a small panel).
+  bool toolbar_folded() const { return toolbar_row_.folded(); }
   // For the report: the axes, how far the map is, and a digest of its cells (null before the
   // tab was first shown).
   nlohmann::json report() const;
@@ -58,6 +61,7 @@ class RegimeMapPanel {
   void update_image(Renderer& renderer);
   // The progress bar while rows arrive, else the last map's time and the hint.
   void status_line();
+  void timing_text() const;
   // The map's side and margins for the space left in the panel, and its y title.
   Placement place_map();
   static AxisTicks map_ticks(const SweepAxis& axis, float length_px, bool horizontal);
@@ -68,6 +72,7 @@ class RegimeMapPanel {
   // The hovered cell's tooltip; a click moves both sliders there as one undo step.
   void hover_and_click(const Placement& at, Document& document, bool clicked) const;
 
+  ViewToolbar toolbar_row_;
   std::string x_key_ = "h";
   std::string y_key_ = "w";
   double x_from_ = 300.0, x_to_ = 3000.0;

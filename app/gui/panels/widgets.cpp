@@ -150,6 +150,15 @@ std::pair<unsigned, std::size_t> decode(std::string_view s, std::size_t at) {
 
 }  // namespace
 
+std::string unbroken(std::string_view text) {
+  std::string out;
+  out.reserve(text.size());
+  for (const char c : text) {
+    out += c == ' ' ? std::string_view("\u00A0") : std::string_view(&c, 1);
+  }
+  return out;
+}
+
 std::string readable(std::string_view utf8) {
   const ImFont* font = ImGui::GetFont();
   std::string out;

@@ -52,6 +52,10 @@ void section(const char* title);
 // which has no Greek, shows "nu" rather than "?". Everything else is kept.
 std::string readable(std::string_view utf8);
 
+// `text` with each space a no-break space (U+00A0), which ImGui's wrapping does not break at:
+// "z_max = 48.96 (30.5–78.6) mm" moves to the next line whole, not its "mm" alone.
+std::string unbroken(std::string_view text);
+
 // `text` with line breaks put in at spaces only, each line at most `width_px` wide (a word
 // wider than that stays whole on its own line). ImGui's own wrapping also breaks after a '.'
 // or ',', which cuts a number in two ("p = 0." / "5216").
