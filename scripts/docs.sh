@@ -76,6 +76,11 @@ EOF
   --out docs/explorer-1920x1080-light-150.png
 # A presented fold plot on a projector, with the strip of inputs under the read-out.
 "$foldlab" render --size 1920x1080 --view present=fold_plot --out docs/explorer-present-fold-plot.png
+# Twice the text in the smallest window: the views' and the map's settings folded, the read-out
+# over a presented panel wrapped between its values.
+"$foldlab" render --size 1024x640 --view scale=200 --tab map --out docs/explorer-1024x640-200.png
+"$foldlab" render --size 1024x640 --view scale=200 --view present=cloth \
+  --out docs/explorer-present-1024x640-200.png
 # The photo workflow on a "photo" that FoldLab draws of the default cloth's folds (any real photo
 # works the same): loaded, its supports and folds clicked by a playback script.
 "$build/tests/make_fold_photo" presets/default.json "$work/cloth-photo.png" "$work/photo.json" \

@@ -3420,6 +3420,52 @@ TEST_F(ExplorerTest, AtALargeTextSizeTheViewsSettingsFoldAndTheViewsKeepTheirRoo
   EXPECT_NE(last_text_.find("wireframe"), std::string::npos) << last_text_;
 }
 
+// The preset's name over the sliders wraps rather than hide "(unsaved changes)"; that note must
+// not add a line under the pointer when a drag makes the first edit: at 1920 x 1080 it did, and
+// a Ctrl+click meant for w opened E. Each slider stays where it was drawn before the edit.
+TEST_F(ExplorerTest, TheFirstEditDoesNotMoveTheSlidersUnderThePointer) {
+  open_explorer("equations", kDejaVuSans);
+  document().load_preset_file(kPresetsDir / "default.json");
+  for (const ImVec2 size : {ImVec2(1024, 640), ImVec2(1280, 800), ImVec2(1920, 1080),
+                            ImVec2(1600, 900), ImVec2(2560, 1440)}) {
+    SCOPED_TRACE(size.x);
+    show_at(size);
+    ASSERT_FALSE(document().unsaved());
+    const float before = explorer_->parameters_panel().slider_places().at("w").min.y;
+    ASSERT_EQ(document().apply(Edit::input("h", 1500.0)), std::nullopt);
+    frame();
+    frame();
+    ASSERT_TRUE(document().unsaved());
+    EXPECT_TRUE(shows(last_text_, "(unsaved")) << last_text_;
+    EXPECT_EQ(explorer_->parameters_panel().slider_places().at("w").min.y, before);
+    document().reset_to_loaded();
+    frame();
+  }
+}
+
+// A slider's help is one long sentence: at 200 % its tooltip ran past the window's right edge
+// ("denim (13 oz/yd²) 441 (p" was the last thing read). It wraps inside the window.
+TEST_F(ExplorerTest, ASlidersHelpTooltipStaysInsideTheWindowAtTwiceTheTextSize) {
+  open_explorer("equations", kDejaVuSans);
+  ImGui::GetIO().DisplaySize = ImVec2(1280, 800);
+  explorer_->appearance().request(200, false);
+  ASSERT_EQ(explorer_->set_view("present", "fold_plot"), std::nullopt);
+  for (int i = 0; i < 4; ++i) {
+    frame();
+  }
+  const SliderPlace w = explorer_->parameters_panel().slider_places().at("w");
+  ImGui::GetIO().MousePos = ImVec2(0.5f * (w.min.x + w.max.x), 0.5f * (w.min.y + w.max.y));
+  for (int i = 0; i < 3; ++i) {
+    frame();
+  }
+  const ImGuiWindow* tooltip = ImGui::FindWindowByName("##Tooltip_00");
+  ASSERT_NE(tooltip, nullptr);
+  ASSERT_TRUE(tooltip->Active);
+  EXPECT_GE(tooltip->Pos.x, 0.0f);
+  EXPECT_LE(tooltip->Pos.x + tooltip->Size.x, 1280.0f);
+  EXPECT_TRUE(shows(last_text_, "441")) << last_text_;
+}
+
 // The regime map in its tile at 200 % in 1280 x 800: its axes and cells took the whole tile and
 // the map was out of sight. They fold behind "map settings..." as the views' settings do, the
 // line of timing goes with them, and they work from the popup.

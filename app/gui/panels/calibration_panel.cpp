@@ -123,8 +123,8 @@ void CalibrationPanel::open_button(const Parameters& current) {
     focus_on_open_ = true;
   }
   if (ImGui::IsItemHovered()) {
-    ImGui::SetTooltip("Fit eq. 7's K (and p) to measured n, z_max and Q.\nNow: %s",
-                      describe_model_form(current).c_str());
+    wrapped_tooltip("Fit eq. 7's K (and p) to measured n, z_max and Q.\nNow: %s",
+                    describe_model_form(current).c_str());
   }
   form_tag(current);
 }
@@ -313,7 +313,7 @@ void CalibrationPanel::apply_section(Document& document) {
     document.apply(Edit::assign({{"p", f.p}, {"K", f.K}}));
   }
   if (ImGui::IsItemHovered()) {
-    ImGui::SetTooltip(
+    wrapped_tooltip(
         "Sets c = K (1 − ν²) at the current ν, and p. Save a preset to keep them.\nThe "
         "paper's form is p = 1, c = 26.9.");
   }

@@ -71,7 +71,7 @@ bool compare_buttons(Document& document, UiStatus& status) {
     pin_as_b(document, status);
   }
   if (ImGui::IsItemHovered()) {
-    ImGui::SetTooltip(
+    wrapped_tooltip(
         "Keeps this fabric (its last valid inputs and model settings) as B, drawn beside A in "
         "the plots and the 3D view, while the sliders go on changing A.");
   }

@@ -215,7 +215,7 @@ void ParametersPanel::input_slider(Document& document, UiStatus& status, const I
   if (look == SliderLook::panel) {
     help_marker(std::string(spec.help).c_str());
   } else if (look == SliderLook::strip && ImGui::IsItemHovered() && !ImGui::IsItemActive()) {
-    ImGui::SetTooltip("%s\n%s", readable(slider_label(spec)).c_str(), readable(spec.help).c_str());
+    wrapped_tooltip("%s\n%s", readable(slider_label(spec)).c_str(), readable(spec.help).c_str());
   }
 }
 
@@ -467,10 +467,20 @@ void ParametersPanel::forget_unread_of_changed_values(const Document& document) 
 
 void ParametersPanel::header_rows(Document& document, UiStatus& status) {
   const bool unsaved = document.unsaved();
-  // Wrapped: cut at the panel's edge a long name would hide "(unsaved changes)".
+  // Wrapped: cut at the panel's edge a long name would hide "(unsaved changes)". The rows keep
+  // the height of the longer form, so that the first edit of a drag never moves the sliders
+  // under the pointer by the line it adds.
+  const std::string name = document.loaded().name;
+  const std::string longer = name + " (unsaved changes)";
+  const float width = ImGui::GetContentRegionAvail().x;
   ImGui::PushStyleColor(ImGuiCol_Text, kDimText);
-  wrapped_text("%s%s", document.loaded().name.c_str(), unsaved ? " (unsaved changes)" : "");
+  wrapped_text("%s", unsaved ? longer.c_str() : name.c_str());
   ImGui::PopStyleColor();
+  const float missing = ImGui::CalcTextSize(wrap_at_spaces(longer, width).c_str()).y -
+                        ImGui::CalcTextSize(wrap_at_spaces(name, width).c_str()).y;
+  if (!unsaved && missing > 0.0f) {
+    ImGui::SetCursorPosY(ImGui::GetCursorPosY() + missing);
+  }
   if (ImGui::Button("Reset to preset")) {
     document.reset_to_loaded();
   }

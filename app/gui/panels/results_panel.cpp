@@ -209,7 +209,7 @@ void ResultsPanel::draw_range_note(const ModelStanding& model) const {
     ImGui::PopStyleColor();
   }
   if (ImGui::IsItemHovered()) {
-    ImGui::SetTooltip("intervals of n, Q and z_max: %s", model.range_basis.c_str());
+    wrapped_tooltip("intervals of n, Q and z_max: %s", model.range_basis.c_str());
   }
 }
 

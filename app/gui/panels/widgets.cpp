@@ -376,12 +376,22 @@ void help_marker(const char* text) {
   same_line_if_fits(ImGui::CalcTextSize("(?)").x);  // under its item rather than cut in half
   ImGui::TextDisabled("(?)");
   if (ImGui::IsItemHovered()) {
-    ImGui::BeginTooltip();
-    ImGui::PushTextWrapPos(ImGui::GetFontSize() * 30.0f);
-    ImGui::TextUnformatted(readable(text).c_str());
-    ImGui::PopTextWrapPos();
-    ImGui::EndTooltip();
+    wrapped_tooltip("%s", readable(text).c_str());
   }
+}
+
+void wrapped_tooltip(const char* format, ...) {
+  std::va_list args;
+  va_start(args, format);
+  const std::string text = detail::vprintf_string(format, args);
+  va_end(args);
+  // Thirty font sizes, or the window's width less a margin when that is narrower (a large text
+  // size in a small window).
+  const float width = std::min(ImGui::GetFontSize() * 30.0f,
+                               ImGui::GetIO().DisplaySize.x - 4.0f * ImGui::GetFontSize());
+  ImGui::BeginTooltip();
+  ImGui::TextUnformatted(wrap_at_spaces(text, width).c_str());
+  ImGui::EndTooltip();
 }
 
 }  // namespace foldlab::gui

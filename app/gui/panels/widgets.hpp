@@ -60,6 +60,8 @@ std::string unbroken(std::string_view text);
 // wider than that stays whole on its own line). ImGui's own wrapping also breaks after a '.'
 // or ',', which cuts a number in two ("p = 0." / "5216").
 std::string wrap_at_spaces(std::string_view text, float width_px);
+// ImGui::SetTooltip with its text wrapped at spaces to a readable width that fits the window.
+[[gnu::format(printf, 1, 2)]] void wrapped_tooltip(const char* format, ...);
 // ImGui::TextWrapped that wraps at spaces only (see wrap_at_spaces), with a checked format.
 [[gnu::format(printf, 1, 2)]] void wrapped_text(const char* format, ...);
 
