@@ -16,8 +16,9 @@ SIZES = ["1024x640", "1280x800", "1920x1080"]
 NEXT = {"1024x640": "1920x1080", "1280x800": "1024x640", "1920x1080": "1280x800"}
 UNSAVED = "Unsaved changes"
 SAVE_AS = "Save as"
-# Each Export item opens the save dialog with "foldlab-export" and its extension as the name;
-# None keeps that name (Enter), a text is typed over it (the extension is added).
+# Each Export item opens the save dialog with the fabric's name, what the file holds and its
+# extension as the name ("cotton-jersey-knit-cloth.obj"); None keeps that name (Enter), a text is
+# typed over it (the extension is added).
 EXPORTS = [("OBJ mesh (.obj)...", None), ("glTF mesh (.glb)...", None),
            ("Fold lines (.svg)...", None), ("Fold lines (.csv)...", None),
            ("Window picture (.png)...", None), ("3D view picture (.png)...", "view"),

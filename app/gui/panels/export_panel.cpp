@@ -19,8 +19,35 @@
 namespace foldlab::gui {
 namespace {
 
-// The name the save dialog offers, before the user types another.
-constexpr const char* kStem = "foldlab-export";
+// The name the save dialog offers, before the user types another: the fabric's name as a file
+// name (cut at a word to 40 characters) and what the file holds, so that a mood board's files
+// tell apart ("linen-medium-weight-3d-view.png").
+std::string offered_name(const Document& document, std::string_view what,
+                         std::string_view extension) {
+  constexpr std::size_t kLongest = 40;
+  std::string stem = preset_slug(document.loaded().name);
+  if (stem.size() > kLongest) {
+    const std::size_t cut = stem.rfind('-', kLongest);
+    stem.resize(cut == std::string::npos || cut == 0 ? kLongest : cut);
+  }
+  return (stem.empty() ? std::string("foldlab") : stem) + "-" + std::string(what) +
+         std::string(extension);
+}
+
+// What a picture of each view is called in its offered name.
+std::string_view picture_words(PictureView view) {
+  switch (view) {
+    case PictureView::cloth:
+      return "3d-view";
+    case PictureView::fold_plot:
+      return "fold-plot";
+    case PictureView::sweep:
+      return "sweep";
+    case PictureView::compare:
+      return "a-and-b";
+  }
+  return "picture";
+}
 
 constexpr const char* kPictureDialog = "Picture";
 
@@ -139,7 +166,9 @@ void ExportPanel::file_items(Document& document, UiStatus& status, const ClothSt
     };
     files.open({FileDialog::Mode::save,
                 "Export " + std::string(format.what),
-                std::string(kStem) + extension,
+                offered_name(document,
+                             format.content == ExportFormat::Content::mesh ? "cloth" : "fold-lines",
+                             extension),
                 {extension},
                 write_and_say(status,
                               [make](const std::filesystem::path& path) {
@@ -163,10 +192,10 @@ void ExportPanel::file_items(Document& document, UiStatus& status, const ClothSt
 
 void ExportPanel::picture_items(const Document& document, UiStatus& status, FileDialog& files,
                                 bool sweep_shown) {
-  const auto picture = [&](const char* title, Picture what) {
+  const auto picture = [&](const char* title, Picture what, std::string_view words) {
     files.open({FileDialog::Mode::save,
                 title,
-                std::string(kStem) + ".png",
+                offered_name(document, words, ".png"),
                 {".png"},
                 [this, what](const std::filesystem::path& path) -> std::optional<std::string> {
                   picture_ = PictureRequest{path.string(), what, std::nullopt};
@@ -176,17 +205,18 @@ void ExportPanel::picture_items(const Document& document, UiStatus& status, File
                status);
   };
   if (ImGui::MenuItem("Window picture (.png)...")) {
-    picture("Export window picture", Picture::window);
+    picture("Export window picture", Picture::window, "window");
   }
   if (ImGui::MenuItem("3D view picture (.png)...")) {
-    picture("Export 3D view picture", Picture::cloth_view);
+    picture("Export 3D view picture", Picture::cloth_view, "3d-view");
   }
   if (ImGui::MenuItem("Fold plot picture (.png)...")) {
-    picture("Export fold plot picture", Picture::fold_plot);
+    picture("Export fold plot picture", Picture::fold_plot, "fold-plot");
   }
   const auto any_size = [&](const char* label, PictureView view, bool enabled = true) {
     if (ImGui::MenuItem(label, nullptr, false, enabled)) {
       dialog_spec_.view = view;
+      dialog_name_ = offered_name(document, picture_words(view), ".png");
       open_dialog_ = true;
     }
   };
@@ -199,7 +229,7 @@ void ExportPanel::picture_items(const Document& document, UiStatus& status, File
     ImGui::SetTooltip("Pin a fabric as B first (Compare > Pin as B).");
   }
   if (ImGui::MenuItem("Sweep picture (.png)...", nullptr, false, sweep_shown)) {
-    picture("Export sweep picture", Picture::sweep);
+    picture("Export sweep picture", Picture::sweep, "sweep-plots");
   }
   if (!sweep_shown && ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) {
     ImGui::SetTooltip("Open Analysis > Sweep to take its plots.");
@@ -283,7 +313,7 @@ void ExportPanel::draw_picture_dialog(UiStatus& status, FileDialog& files) {
     const PictureSpec spec = dialog_spec_;
     files.open({FileDialog::Mode::save,
                 picture_dialog_title(spec.view),
-                std::string(kStem) + ".png",
+                dialog_name_,
                 {".png"},
                 [this, spec](const std::filesystem::path& path) -> std::optional<std::string> {
                   picture_ = PictureRequest{path.string(), Picture::window, spec};

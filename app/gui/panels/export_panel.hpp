@@ -54,7 +54,8 @@ class ExportPanel {
   // The picture dialog: asked to open, and what it holds (kept for the next picture).
   bool open_dialog_ = false;
   PictureSpec dialog_spec_;
-  int size_choice_ = 0;  // kPictureSizes, then custom
+  std::string dialog_name_;  // the file name the any-size picture's save dialog offers
+  int size_choice_ = 0;      // kPictureSizes, then custom
   // As typed, digits alone (kPictureSideDigits of them): read by read_typed_picture_size.
   char custom_width_[kPictureSideDigits + 1] = "1920";
   char custom_height_[kPictureSideDigits + 1] = "1080";
