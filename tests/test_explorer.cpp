@@ -892,6 +892,14 @@ TEST_F(ExplorerTest, TypedTextThatIsNoValueIsKeptAsTypedWithItsReason) {
   frame();
   EXPECT_TRUE(explorer_->parameters_panel().unread_reasons().empty());
   EXPECT_EQ(frame().find("is not a number"), std::string::npos) << last_text_;
+  // A value typed after the text that was none answers it: its reason ("the value stays
+  // 153 g/m²") leaves the status line rather than contradict the slider for a minute.
+  ASSERT_EQ(type_into_w("heavy"), 0);
+  EXPECT_NE(status().message().find("is not a number"), std::string::npos) << status().message();
+  ASSERT_EQ(type_into_w("2*153"), 0);
+  frame();
+  EXPECT_EQ(status().message().find("is not a number"), std::string::npos) << status().message();
+  EXPECT_EQ(frame().find("is not a number"), std::string::npos) << last_text_;
 }
 
 // Shift slows a drag to a tenth: the same pixels moved with and without it, measured here, change
@@ -928,17 +936,35 @@ TEST_F(ExplorerTest, ShiftDragsAtATenthOfThePlainSpeed) {
   EXPECT_NEAR(fine_decades / plain_decades, 0.1, 0.005);
 }
 
+// A click on a slider, wherever it lands, takes the focus for the arrow keys and leaves the value:
+// a teacher's click "to focus" w, 20 px left of its handle, took w from 108 to 37.8 g/m² in front
+// of the class. A drag still moves it from the point pressed.
+TEST_F(ExplorerTest, AClickOnASliderFocusesItWithoutChangingTheValue) {
+  const double w0 = document().edited().fabric.weight_N_per_mm2;
+  for (const double at : {0.0, 0.2, 0.5, 1.0}) {
+    ASSERT_EQ(play(*explorer_, {{"steps", {{{"click", "w"}, {"at", at}}, {{"frames", 2}}}}},
+                   [&] { frame(); }),
+              0);
+    EXPECT_EQ(document().edited().fabric.weight_N_per_mm2, w0) << at;
+    EXPECT_FALSE(document().unsaved()) << at;
+  }
+  ASSERT_EQ(play(*explorer_, {{"steps", {{{"key", "right"}}, {{"frames", 2}}}}}, [&] { frame(); }),
+            0);
+  EXPECT_GT(document().edited().fabric.weight_N_per_mm2, w0) << "the click gave the focus";
+}
+
 // A beginner's w slider runs from 10.2 to 1000 g/m², an expert's over the whole typical range,
 // 10.2 to 10,194 g/m²; a value typed beyond the beginner's slider is still taken.
 TEST_F(ExplorerTest, BeginnerSlidersSpanRealFabricsAndTypedValuesGoBeyond) {
-  const auto click_w = [&](double at) {
-    return play(*explorer_, {{"steps", {{{"click", "w"}, {"at", at}}, {{"frames", 2}}}}},
+  // Dragged past an end, the slider stops at it.
+  const auto drag_w = [&](float dx) {
+    return play(*explorer_, {{"steps", {{{"drag", "w"}, {"dx", dx}}, {{"frames", 2}}}}},
                 [&] { frame(); });
   };
   const double g_per_m2 = 9.81e-9;
-  ASSERT_EQ(click_w(1.0), 0);
+  ASSERT_EQ(drag_w(2000.0f), 0);
   EXPECT_NEAR(document().edited().fabric.weight_N_per_mm2 / g_per_m2, 1000.0, 1.0);
-  ASSERT_EQ(click_w(0.0), 0);
+  ASSERT_EQ(drag_w(-2000.0f), 0);
   EXPECT_NEAR(document().edited().fabric.weight_N_per_mm2, 1e-7, 1e-10);
   ASSERT_EQ(play(*explorer_,
                  {{"steps",
@@ -954,7 +980,7 @@ TEST_F(ExplorerTest, BeginnerSlidersSpanRealFabricsAndTypedValuesGoBeyond) {
   status().set_expert_mode(true);
   frame();
   frame();
-  ASSERT_EQ(click_w(1.0), 0);
+  ASSERT_EQ(drag_w(2000.0f), 0);
   EXPECT_NEAR(document().edited().fabric.weight_N_per_mm2, 1e-4, 1e-7);
 }
 
@@ -2086,6 +2112,10 @@ TEST_F(ExplorerTest, WrappedTextBreaksOnlyAtSpacesSoNoNumberIsCutInTwo) {
   // A word wider than the line is cut between characters, so that nothing sticks out.
   const float two_digits = ImGui::CalcTextSize("00").x;
   EXPECT_EQ(wrap_at_spaces("0123456789", two_digits), "01\n23\n45\n67\n89");
+  // A path is cut after a folder's '/' ("Saved to …/presets/chiffon.js" over "on" was drawn).
+  const float path_width = ImGui::CalcTextSize("/tmp/cfg/presets/chif").x;
+  EXPECT_EQ(wrap_at_spaces("Saved to /tmp/cfg/presets/chiffon.json", path_width),
+            "Saved to\n/tmp/cfg/presets/\nchiffon.json");
 }
 
 // A window squeezed below a word's width (a tiling window manager, xdotool, a phone) once made the
@@ -3467,6 +3497,53 @@ TEST_F(ExplorerTest, ASlidersHelpTooltipStaysInsideTheWindowAtTwiceTheTextSize) 
   EXPECT_GE(tooltip->Pos.x, 0.0f);
   EXPECT_LE(tooltip->Pos.x + tooltip->Size.x, 1280.0f);
   EXPECT_TRUE(shows(last_text_, "441")) << last_text_;
+}
+
+// A message on the status line while a view is presented ("Undone.", a refusal) went between the
+// read-out and the strip and moved the strip's sliders under the pointer; a typed text's reason
+// was said twice, over and under the strip. The message goes under the strip, and once.
+TEST_F(ExplorerTest, APresentedMessageNeverMovesTheStripAndIsSaidOnce) {
+  ASSERT_EQ(explorer_->set_view("present", "fold_plot"), std::nullopt);
+  frame();
+  frame();
+  const float w_y = explorer_->parameters_panel().slider_places().at("w").min.y;
+  status().notify("Undone.", false);
+  frame();
+  EXPECT_NE(last_text_.find("Undone."), std::string::npos) << last_text_;
+  EXPECT_EQ(explorer_->parameters_panel().slider_places().at("w").min.y, w_y);
+  ASSERT_EQ(play(*explorer_,
+                 {{"steps",
+                   {{{"click", "w"}, {"at", 0.5}, {"ctrl", true}},
+                    {{"type", "heavy"}},
+                    {{"key", "enter"}},
+                    {{"frames", 2}}}}},
+                 [&] { frame(); }),
+            0);
+  EXPECT_EQ(explorer_->parameters_panel().slider_places().at("w").min.y, w_y);
+  const std::size_t first = last_text_.find("is not a number");
+  ASSERT_NE(first, std::string::npos) << last_text_;
+  EXPECT_EQ(last_text_.find("is not a number", first + 1), std::string::npos) << last_text_;
+}
+
+// "Loaded Silk chiffon." coming and going moved the Presets panel's name field and buttons by a
+// line or two, so that a click meant for the field loaded a preset. They stay where they are; the
+// message shows at the panel's foot.
+TEST_F(ExplorerTest, TheStatusLineNeverMovesThePresetsFieldOrButtons) {
+  for (const ImVec2 size : {ImVec2(1280, 800), ImVec2(1024, 640), ImVec2(1920, 1080)}) {
+    SCOPED_TRACE(size.x);
+    show_at(size);
+    const ImVec2 field = position_of("name of the ne");
+    const ImVec2 save = position_of("Save as...");
+    status().notify("Saved to /tmp/somewhere/rather/long/presets/chiffon-curtain-2-4m.json", false);
+    frame();
+    frame();
+    EXPECT_TRUE(shows(last_text_, "chiffon-curtain")) << last_text_;
+    EXPECT_EQ(position_of("name of the ne").y, field.y);
+    EXPECT_EQ(position_of("Save as...").y, save.y);
+    status().withdraw(status().message());
+    frame();
+    EXPECT_EQ(position_of("Save as...").y, save.y);
+  }
 }
 
 // The regime map in its tile at 200 % in 1280 x 800: its axes and cells took the whole tile and

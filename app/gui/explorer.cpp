@@ -498,9 +498,18 @@ float Explorer::presentation_bar() {
     text_height += scale * ImGui::CalcTextSize(line.c_str()).y;
   }
   text_height += static_cast<float>(lines.size() - 1) * style.ItemSpacing.y;
-  // The status line under the read-out (a copied link, a refused file): the Presets panel that
-  // shows it is out of sight unless it is the one presented.
+  // The status line under the read-out and the strip (a copied link, a refused file): the
+  // Presets panel that shows it is out of sight unless it is the one presented. Under the strip,
+  // so that a message coming and going never moves the strip's sliders; not when the strip
+  // already says it (the reason typed text was no value, under its slider).
   presented_message_ = layout_.presented() != &panel<PresetsPanel>() ? status_.message() : "";
+  const bool strip_shown =
+      layout_.presents_inputs() && layout_.presented() != &panel<ParametersPanel>();
+  for (const auto& [key, reason] : panel<ParametersPanel>().unread_reasons()) {
+    if (strip_shown && reason == presented_message_) {
+      presented_message_.clear();
+    }
+  }
   if (!presented_message_.empty()) {
     text_height += style.ItemSpacing.y +
                    ImGui::CalcTextSize(presented_message_.c_str(), nullptr, false, available).y;
@@ -532,15 +541,15 @@ float Explorer::presentation_bar() {
       ImGui::PopStyleColor();
     }
     ImGui::SetWindowFontScale(1.0f);
+    if (strip) {
+      panel<ParametersPanel>().draw_strip(document_, status_, available);
+    }
     if (!presented_message_.empty()) {
       ImGui::PushStyleColor(ImGuiCol_Text, message_colour(status_.message_kind()));
       ImGui::TextUnformatted(presented_message_.c_str());
       ImGui::PopStyleColor();
     }
     ImGui::PopTextWrapPos();
-    if (strip) {
-      panel<ParametersPanel>().draw_strip(document_, status_, available);
-    }
   }
   ImGui::End();
   return menu_height_ + height;

@@ -685,7 +685,10 @@ bool InputPlayer::before_new_frame(ImGuiIO& io, Explorer& explorer) {
   }
   const FrameInput& input = queue_[queue_at_++];
   mouse_ = input.mouse;
-  io.MousePos = input.mouse.x < 0.0f ? ImVec2(-FLT_MAX, -FLT_MAX) : input.mouse;
+  // Left of the window is no pointer, except while a button is held (and on its release): a
+  // window system keeps reporting a dragging pointer outside the window, at negative x too.
+  const bool dragging = input.mouse_down || io.MouseDown[0];
+  io.MousePos = input.mouse.x < 0.0f && !dragging ? ImVec2(-FLT_MAX, -FLT_MAX) : input.mouse;
   std::fill(std::begin(io.MouseDown), std::end(io.MouseDown), false);
   io.MouseDown[0] = input.mouse_down;
   io.MouseWheel = 0.0f;

@@ -23,6 +23,12 @@ class UiStatus {
   }
   // The current message, empty once expired.
   const std::string& message() const;
+  // Takes `message` off the status line if it is the one shown (a later edit has answered it).
+  void withdraw(const std::string& message) {
+    if (message_ == message) {
+      message_.clear();
+    }
+  }
   MessageKind message_kind() const { return message_kind_; }
   bool message_is_error() const { return message_kind_ == MessageKind::error; }
   // The frame's clock in seconds (ImGui::GetTime()).

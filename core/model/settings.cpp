@@ -94,8 +94,8 @@ std::vector<InputSpec> build_table() {
        .preset = "/fabric/weight_N_per_mm2",
        .help = "weight per area: silk chiffon about 35 g/m², cotton poplin 120, linen 200, "
                "denim (13 oz/yd²) 441 (presets/FABRICS.md); 1.5e-6 N/mm² = 153 g/m², and "
-               "80g/m2, 80gsm, 2.4oz/yd2 are read too; a bare number is N/mm², so 150 g/m² is "
-               "w=150gsm",
+               "80g/m2, 80gsm, 2.4oz/yd2 are read too; a bare number is N/mm² in --set and "
+               "presets (150 g/m² is w=150gsm) and g/m² typed into the explorer's slider",
        .valid = closed(0.1 * kNPerMm2PerGramPerM2, 1e6 * kNPerMm2PerGramPerM2),
        .why = "from the lightest tissue to a tonne per square metre",
        .typical_lo = 1e-7,

@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
-"""Writes slider_KEY.json: drags of +-40 px from the handle and clicks at 0, 0.5 and 1 of each
-parameter slider, with the ranges a correct slider must land in.
+"""Writes slider_KEY.json: drags of +-40 px from the handle, clicks at 0, 0.5 and 1 of each
+parameter slider (which take the focus and leave the value), and drags past both ends, with the
+ranges a correct slider must land in.
 
 The ranges come from the input table's slider range and scale (copied here by hand, so that a
 change of the table shows up as a failing test): a fresh start is a beginner's, whose t, E and w
@@ -8,8 +9,6 @@ sliders run over the rows' beginner range (the fabrics one buys), the others ove
 slider's handle is GrabMinSize = 10 px wide inside 2 px of padding, so 40 px move the handle by
 40 / (W - 14) of the range for a slider W px wide. The layout may give the slider anything from
 100 to 600 px, so a drag must move between 40/586 and 40/86 of the range (clamped at the ends).
-ImGui floors the mouse position, so a click at 0.5 of the width lands within 1.5 / (W - 14) left
-of the middle.
 
 The L and d sliders stop where validation starts refusing, d < L/2: with the other inputs fixed, L's
 slider runs from 2d (just above) and d's to L/2 (just below). nu and K are expert settings: their
@@ -85,11 +84,14 @@ def script(key, base_value):
     steps += [{"drag": key, "dx": -40},
               {"expect": {field: band(key, f0 - MOVE_HI, f0 - MOVE_LO), "refused": None}}]
     steps += reset
-    steps += [{"click": key, "at": 0.0}, {"expect": {field: band(key, 0.0, 0.0)}}]
-    steps += [{"click": key, "at": 0.5}, {"expect": {field: band(key, 0.5 - 1.5 / 86, 0.5)}}]
-    steps += [{"click": key, "at": 1.0}, {"expect": {field: band(key, 1.0, 1.0)}}]
-    # Every value a click reaches is accepted, the ends of L and d included.
-    for step in steps[-5::2]:
+    # A click only takes the focus (for the arrow keys), wherever it lands: the value stays.
+    for at in (0.0, 0.5, 1.0):
+        steps += [{"click": key, "at": at}, {"expect": {field: base_value, "dirty": False}}]
+    # A drag far past either end reaches it, and every value there is accepted, the ends of L and
+    # d included.
+    steps += [{"drag": key, "dx": -2000}, {"expect": {field: band(key, 0.0, 0.0)}}]
+    steps += [{"drag": key, "dx": 2000}, {"expect": {field: band(key, 1.0, 1.0)}}]
+    for step in steps[-3::2]:
         step["expect"]["refused"] = None
     return {"steps": steps}
 

@@ -203,7 +203,12 @@ void ParametersPanel::input_slider(Document& document, UiStatus& status, const I
       ImGui::TempInputIsActive(id) ? typed_field(document, status, spec, label, id, value)
                                    : slider_field(document, status, spec, label, id, width, value);
   if (changed) {
-    unread_.erase(key);
+    // The last text typed here that was no value, and its reason on the status line, no longer
+    // hold.
+    if (const auto unread = unread_.find(key); unread != unread_.end()) {
+      status.withdraw(unread->second.reason);
+      unread_.erase(unread);
+    }
     // A drag stays open until the slider lets go (the frame closes the step); a typed value or
     // an arrow key's nudge is a step of its own.
     Edit edit = Edit::input(key, *changed);
@@ -230,7 +235,6 @@ std::optional<double> ParametersPanel::read_typed(UiStatus& status, const InputS
   }
   const std::string key(spec.key);
   if (const std::optional<double> typed = parse_quantity(spec, text, shown_unit(spec).symbol)) {
-    unread_.erase(key);
     return typed;
   }
   // Said, not dropped: the slider going back to its value with no word looks like a fault.
@@ -302,8 +306,14 @@ std::optional<double> ParametersPanel::slider_field(Document& document, UiStatus
   const bool moved = ImGui::SliderScalar(label.c_str(), ImGuiDataType_Double, &position, &kZero,
                                          &kOne, text.c_str(), ImGuiSliderFlags_AlwaysClamp);
   const ImGuiIO& io = ImGui::GetIO();
+  // A press that has not yet moved past ImGui's drag threshold only takes the focus (for the
+  // arrow keys): ImGui's slider would put the value where the pointer landed, and a click meant
+  // to focus a slider in front of a class changed the fabric.
+  const bool pressed_in_place =
+      ImGui::IsItemActive() && io.MouseDown[0] && !ImGui::IsMouseDragPastThreshold(0);
   std::optional<double> to_position;
-  if (ImGui::IsItemActive() && (io.KeyShift || relative_drag_id_ == id)) {
+  if (pressed_in_place) {
+  } else if (ImGui::IsItemActive() && (io.KeyShift || relative_drag_id_ == id)) {
     relative_drag_id_ = id;
     to_position = relative_drag(fraction, width);
   } else if (moved) {
@@ -429,7 +439,7 @@ void ParametersPanel::draw(PanelContext& context) {
   Document& document = context.document;
   UiStatus& status = context.status;
   play_frame(document);  // before the sliders, so that they show this frame's value
-  forget_unread_of_changed_values(document);
+  forget_unread_of_changed_values(document, status);
   const bool unsaved = document.unsaved();
   if (!begin(context.renderer, unsaved ? " *" : "")) {
     ImGui::End();
@@ -458,10 +468,16 @@ void ParametersPanel::draw(PanelContext& context) {
   ImGui::End();
 }
 
-void ParametersPanel::forget_unread_of_changed_values(const Document& document) {
-  // Typed text that was no value stays on its slider until the value changes by other means.
+void ParametersPanel::forget_unread_of_changed_values(const Document& document, UiStatus& status) {
+  // Typed text that was no value stays on its slider, and its reason on the status line, until
+  // the value changes by other means: a reason that says "the value stays 103 g/m²" under a
+  // slider showing 306 g/m² contradicts it.
   std::erase_if(unread_, [&](const auto& entry) {
-    return find_input(entry.first)->value(document.edited()) != entry.second.value;
+    const bool changed = find_input(entry.first)->value(document.edited()) != entry.second.value;
+    if (changed) {
+      status.withdraw(entry.second.reason);
+    }
+    return changed;
   });
 }
 
@@ -643,7 +659,7 @@ float ParametersPanel::strip_height(const Document& document, float width) const
 }
 
 void ParametersPanel::draw_strip(Document& document, UiStatus& status, float width) {
-  forget_unread_of_changed_values(document);
+  forget_unread_of_changed_values(document, status);
   places_.clear();  // only the strip's sliders are there to press
   const int count = static_cast<int>(std::size(kStripKeys));
   const int columns = strip_columns(width);

@@ -96,7 +96,7 @@ class ParametersPanel : public Panel {
   std::optional<double> arrow_nudge(double fraction) const;
 
   // The panel's rows, top to bottom.
-  void forget_unread_of_changed_values(const Document& document);
+  void forget_unread_of_changed_values(const Document& document, UiStatus& status);
   void header_rows(Document& document, UiStatus& status);
   std::vector<const InputSpec*> shown_sliders(const UiStatus& status);
   // The room the longest label and its (?) take right of a slider, and the slider's width.

@@ -266,24 +266,18 @@ void PresetsPanel::draw_list(Document& document, float height_px) {
   ImGui::EndChild();
 }
 
-// What draw_messages takes: each message's lines at the panel's width.
-float PresetsPanel::messages_height_px(const UiStatus& status) {
+// What the notices take in draw_messages: each one's lines at the panel's width.
+float PresetsPanel::notices_height_px(const UiStatus& status) {
   const float width = ImGui::GetContentRegionAvail().x;
   float height = 0.0f;
-  const auto add = [&](const std::string& text) {
-    height += ImGui::CalcTextSize(wrap_at_spaces(text, width).c_str()).y +
-              ImGui::GetStyle().ItemSpacing.y;
-  };
-  if (!status.message().empty()) {
-    add(status.message());
-  }
   for (const std::string& notice : status.notices()) {
-    add(notice);
+    height += ImGui::CalcTextSize(wrap_at_spaces(notice, width).c_str()).y +
+              ImGui::GetStyle().ItemSpacing.y;
   }
   return height;
 }
 
-// The status line and the notices, under the buttons where the eye is after a click.
+// The status line and the notices, at the panel's foot under the buttons.
 void PresetsPanel::draw_messages(UiStatus& status) {
   if (!status.message().empty()) {
     ImGui::PushStyleColor(ImGuiCol_Text, message_colour(status.message_kind()));
@@ -307,16 +301,19 @@ void PresetsPanel::draw(PanelContext& context) {
     return;
   }
   // The list gives way to what is under it, so that "Fit to measurements..." stays in view rather
-  // than under the panel's edge: the rows as they were last drawn, and the messages as they are
-  // now (measured in this frame, so that nothing moves under a click a frame late).
+  // than under the panel's edge: the rows as they were last drawn, the notices, and two lines
+  // kept for the status line at the panel's foot. The list's height does not follow the status
+  // line, which comes and goes by itself: the name field and the buttons under the list never
+  // move under a click when "Loaded ..." fades (a click meant for the field loaded a preset).
   for (const std::string& notice : notices_) {
     status.add_notice(notice);  // a listing refreshed by "Save as..." may be newly capped
   }
   if (below_list_px_ <= 0.0f) {
     below_list_px_ = 3.2f * ImGui::GetFrameHeightWithSpacing();
   }
-  const float list_height = std::max(
-      60.0f, ImGui::GetContentRegionAvail().y - below_list_px_ - messages_height_px(status));
+  const float status_lines_px = 2.0f * ImGui::GetTextLineHeightWithSpacing();
+  const float list_height = std::max(60.0f, ImGui::GetContentRegionAvail().y - below_list_px_ -
+                                                notices_height_px(status) - status_lines_px);
   draw_list(document, list_height);
   float below_list_start = ImGui::GetCursorPosY();
   const float buttons = button_width("Save as...") + button_width("Open file...") +
@@ -349,13 +346,11 @@ void PresetsPanel::draw(PanelContext& context) {
   if (ImGui::IsItemHovered()) {
     ImGui::SetTooltip("A preset file (.json) from elsewhere: a colleague's, or one you saved.");
   }
-  const float messages_start = ImGui::GetCursorPosY();
-  draw_messages(status);
-  below_list_start += ImGui::GetCursorPosY() - messages_start;  // the messages are not rows
   if (footer_) {
     footer_();
   }
   below_list_px_ = ImGui::GetCursorPosY() - below_list_start;
+  draw_messages(status);
   ImGui::End();
 }
 

@@ -58,7 +58,7 @@ class PresetsPanel : public Panel {
              const std::filesystem::path& path);
   // The list of presets, shipped then the user's, `height_px` high; a click loads one.
   void draw_list(Document& document, float height_px);
-  static float messages_height_px(const UiStatus& status);
+  static float notices_height_px(const UiStatus& status);
   void draw_messages(UiStatus& status);
 
   std::filesystem::path presets_dir_;

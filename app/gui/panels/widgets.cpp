@@ -213,6 +213,11 @@ std::string wrap_at_spaces(std::string_view text, float width_px) {
            next = char_end(word, cut)) {
         cut = next;
       }
+      // A path breaks after a folder's '/' rather than inside a name ("….js" over "on").
+      if (const std::size_t slash = word.substr(0, cut).rfind('/');
+          slash != std::string_view::npos && slash > 0 && cut < word.size()) {
+        cut = slash + 1;
+      }
       out += std::string(word.substr(0, cut)) + "\n";
       word.remove_prefix(cut);
     }
