@@ -204,9 +204,17 @@ class Page:
     def wait_for(self, what, expression, timeout_s=120):
         """Waits until the JavaScript `expression` is true in the page."""
         deadline = time.monotonic() + timeout_s
-        while not self.tools.evaluate(expression):
+        last_error = None
+        while True:
+            try:
+                if self.tools.evaluate(expression):
+                    return
+            except RuntimeError as error:
+                # While the page loads again its old context is gone and the new one not yet
+                # there ("Execution context was destroyed"): asked again, as a person waits.
+                last_error = error
             if time.monotonic() > deadline:
-                raise AssertionError(f"{what}: not within {timeout_s} s")
+                raise AssertionError(f"{what}: not within {timeout_s} s (last: {last_error})")
             time.sleep(0.02)
 
     def mouse(self, kind, x, y, buttons=0, modifiers=0):
