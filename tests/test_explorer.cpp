@@ -1970,6 +1970,15 @@ TEST(Contrast, NonTextMarksReadAtThreeToOneInBothThemes) {
   // The 3D view's backdrops (ClothViewPanel) and the supports' colour drawn on them.
   const ImVec4 light_backdrop(0.90f, 0.91f, 0.93f, 1.0f);
   const ImVec4 dark_backdrop(0.16f, 0.17f, 0.20f, 1.0f);
+  // A slider's handle on its field in the light theme (pale blue on white was 1.7:1 and hard to
+  // find on a projector).
+  {
+    const ImGuiStyle style = theme_style(true);
+    const ImVec4 field = blend_over(style.Colors[ImGuiCol_FrameBg], window_background(true));
+    EXPECT_GE(contrast_ratio(blend_over(style.Colors[ImGuiCol_SliderGrab], field), field), 3.0);
+    EXPECT_GE(contrast_ratio(blend_over(style.Colors[ImGuiCol_SliderGrabActive], field), field),
+              3.0);
+  }
   EXPECT_GE(contrast_ratio(kSupportMarker.get(true), light_backdrop), 3.0);
   EXPECT_GE(contrast_ratio(kSupportMarker.get(false), dark_backdrop), 3.0);
   // What it was: the dark theme's yellow on the light backdrop.
@@ -3308,6 +3317,9 @@ TEST_F(ExplorerTest, TheRegimeMapHasAColourBarAndNamesItsRegimes) {
   EXPECT_LT(top.y, bottom.y);
   EXPECT_GT(top.x, x_to.x);
   EXPECT_GT(bottom.x, x_to.x);
+  // The bar's title above it, clear of the x labels' line (under the bar "3000" ran into it).
+  const ImVec2 title = position_of("\nn\n");
+  EXPECT_LT(title.y + ImGui::GetFontSize(), top.y);
 }
 
 // The map's axes carry round ticks in the sliders' units: h over 300..3000 mm 1, 2 or 5 × 10^k

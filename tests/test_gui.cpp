@@ -339,6 +339,24 @@ TEST_F(GuiTest, RenderDrawsTheWholeWindowWithFoldColoursInThePlot) {
   EXPECT_GT(count_colour(image, kPositiveFold, kPlotX0, kPlotY0, kPlotX1, kPlotY1), 500);
 }
 
+// The light theme presented on a projector showed a dark frame a few pixels wide round the
+// panel: what lay outside the panels' own fills was cleared in the dark theme's grey. Every
+// pixel of the window's outermost columns is the light theme's panel grey now.
+TEST_F(GuiTest, TheLightThemeHasNoDarkFrameRoundItsPanels) {
+  const Image image = render(
+      "light", {"--size", "800x500", "--view", "theme=light", "--view", "present=fold_plot"});
+  ASSERT_EQ(image.width, 800);
+  int dark = 0;
+  for (int y = 60; y < image.height - 10; ++y) {
+    for (const int x : {1, 2, 3, image.width - 4, image.width - 3, image.width - 2}) {
+      const std::uint8_t* p = image.at(x, y);
+      // The old frame was the dark theme's clear grey, (26, 26, 31); borders are (94, 94, 94).
+      dark += (p[0] + p[1] + p[2]) < 3 * 60;
+    }
+  }
+  EXPECT_EQ(dark, 0);
+}
+
 // The centres of the fold lines down the column through the middle of the span, top first: one
 // run of a fold colour per line (neighbours alternate in colour, so that touching ones stay apart).
 std::vector<double> lines_down_the_middle(const Image& image, const DrawnFolds& folds,

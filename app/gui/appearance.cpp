@@ -70,8 +70,16 @@ ImGuiStyle theme_style(bool light_theme) {
   style.Colors[ImGuiCol_Border] = light_theme ? ImVec4(0.0f, 0.0f, 0.0f, kFrameBorderAlpha)
                                               : ImVec4(1.0f, 1.0f, 1.0f, kFrameBorderAlpha);
   style.GrabMinSize = kGrabWidthPx;
-  style.Colors[ImGuiCol_SliderGrab].w = kGrabAlpha;
-  style.Colors[ImGuiCol_SliderGrabActive].w = kGrabAlpha + 0.15f;
+  if (light_theme) {
+    // ImGui's pale blue handle at any alpha is under 2:1 on the white field: from the back of a
+    // room the handles vanish. An opaque middle blue reads at 3:1 on the field and still carries
+    // the black value over it at 4.5:1.
+    style.Colors[ImGuiCol_SliderGrab] = ImVec4(0.20f, 0.52f, 0.95f, 1.0f);
+    style.Colors[ImGuiCol_SliderGrabActive] = ImVec4(0.24f, 0.56f, 1.0f, 1.0f);
+  } else {
+    style.Colors[ImGuiCol_SliderGrab].w = kGrabAlpha;
+    style.Colors[ImGuiCol_SliderGrabActive].w = kGrabAlpha + 0.15f;
+  }
   return style;
 }
 

@@ -113,7 +113,10 @@ class GlRenderer final : public Renderer {
 
   void render_draw_data(FrameSize size) override {
     glViewport(0, 0, size.width, size.height);
-    glClearColor(0.10f, 0.10f, 0.12f, 1.0f);
+    // The theme's panel colour: what shows between and at the edges of the panels' own fills
+    // (a dark frame round every panel of the light theme).
+    const ImVec4 panel = ImGui::GetStyle().Colors[ImGuiCol_WindowBg];
+    glClearColor(panel.x, panel.y, panel.z, 1.0f);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
   }

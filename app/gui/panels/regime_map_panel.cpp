@@ -391,7 +391,8 @@ void RegimeMapPanel::colour_bar(const Placement& at) const {
     draw->AddText(ImVec2(bar_max.x + style.ItemInnerSpacing.x, label_y), text_colour, text);
     last_label_y = label_y;
   }
-  draw->AddText(ImVec2(bar_min.x, bar_max.y), text_colour, show_z_ ? "z_max" : "n");
+  // Above the bar, on the y title's line: under it the last x tick's label ran into it.
+  draw->AddText(ImVec2(bar_min.x, bar_min.y - 1.5f * font), text_colour, show_z_ ? "z_max" : "n");
 
   if (ImGui::IsMouseHoveringRect(bar_min, bar_max)) {
     ImGui::SetTooltip(show_z_ ? "z_max of the wrinkled cells, log scale"
