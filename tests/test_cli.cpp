@@ -740,6 +740,10 @@ TEST_F(CliTest, AnOutputNamedForAnotherFormatIsRefused) {
       {"export", "--svg", "x.png"},
       {"bench", "--cases", "1", "--repeats", "1", "--csv", "x.tsv"},
       {"bench", "--cases", "1", "--repeats", "1", "--svg", "x.pdf"},
+      {"calibrate", "--data",
+       (kPresetsDir.parent_path() / "data" / "paper-measurements.csv").string(), "--save-preset",
+       "x.txt"},
+      {"measure", "--depths-mm", "80,40,20,10", "--append", "rows.txt"},
   };
   for (std::vector<std::string> args : wrong) {
     SCOPED_TRACE(args[0] + " " + args[args.size() - 2]);
@@ -763,6 +767,12 @@ TEST_F(CliTest, AnOutputNamedForAnotherFormatIsRefused) {
       {"export", "--svg", (dir_ / "LINES.SVG").string(), "--csv", (dir_ / "Lines.Csv").string()});
   EXPECT_EQ(upper.exit_status, 0) << upper.err;
   EXPECT_TRUE(fs::exists(dir_ / "LINES.SVG"));
+  // A measurements file may be either: CSV or JSON, by its extension.
+  EXPECT_EQ(
+      run({"measure", "--depths-mm", "80,40,20,10", "--append", (dir_ / "rows.JSON").string()})
+          .exit_status,
+      0);
+  EXPECT_TRUE(fs::exists(dir_ / "rows.JSON"));
 }
 
 TEST_F(CliTest, OptionValuesAreRefusedInOneVoice) {

@@ -215,7 +215,8 @@ void declare(CLI::App& app, Options& options) {
   command->add_option("--name", options.name, "a label for the row");
   command
       ->add_option("--append", options.append_path,
-                   "add the row to this measurements file (created with its header if absent)")
+                   "add the row to this measurements file, .csv or .json (created with its "
+                   "header if absent)")
       ->check(app::non_empty_path());
   command->add_flag("--json", options.json, "print JSON instead of text");
 }
@@ -238,6 +239,8 @@ Result run(const Options& options) {
   }
   check_distinct_files({{"--append", options.append_path}},
                        {{"--preset", options.preset_path}, {"--photo", options.photo}});
+  app::check_output_extension("--append", options.append_path, {".csv", ".json"},
+                              "a measurements file, CSV or JSON by its extension");
   result.row = measurement_row(p, result.folds, options.z_max_mm, options.name);
   check_row(result.row);
   return result;

@@ -180,6 +180,12 @@ StartInputs resolve_start_inputs(const InputOptions& options) {
 
 void check_output_extension(std::string_view option, const std::string& path,
                             std::string_view extension, std::string_view format) {
+  check_output_extension(option, path, {extension}, format);
+}
+
+void check_output_extension(std::string_view option, const std::string& path,
+                            std::initializer_list<std::string_view> extensions,
+                            std::string_view format) {
   const auto lower = [](std::string_view text) {
     std::string out(text);
     for (char& c : out) {
@@ -187,12 +193,15 @@ void check_output_extension(std::string_view option, const std::string& path,
     }
     return out;
   };
-  if (path.empty() || lower(path).ends_with(lower(extension))) {
-    return;
+  std::string listed;
+  for (const std::string_view extension : extensions) {
+    if (path.empty() || lower(path).ends_with(lower(extension))) {
+      return;
+    }
+    listed += (listed.empty() ? "" : " or ") + std::string(extension);
   }
-  throw InputError(std::string(option) + " " + detail::cut(path) + " must end in " +
-                   std::string(extension) + " (in any case): what is written there is " +
-                   std::string(format));
+  throw InputError(std::string(option) + " " + detail::cut(path) + " must end in " + listed +
+                   " (in any case): what is written there is " + std::string(format));
 }
 
 CLI::Validator non_empty_path() {

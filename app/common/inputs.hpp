@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <initializer_list>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -90,6 +91,10 @@ void check_distinct_files(const std::vector<NamedPath>& outputs,
 // misread it. Empty paths (not given) pass.
 void check_output_extension(std::string_view option, const std::string& path,
                             std::string_view extension, std::string_view format);
+// The same, where any of `extensions` will do (a measurements file: .csv or .json).
+void check_output_extension(std::string_view option, const std::string& path,
+                            std::initializer_list<std::string_view> extensions,
+                            std::string_view format);
 
 // For every option that names a file: an empty path (`--preset ''`, an unset shell variable) is
 // refused as invalid input rather than read as "not given", which would silently use a default.
