@@ -902,6 +902,22 @@ TEST_F(ExplorerTest, TypedTextThatIsNoValueIsKeptAsTypedWithItsReason) {
   EXPECT_EQ(frame().find("is not a number"), std::string::npos) << last_text_;
 }
 
+// A typed value's field holds 32 characters (ImGui's Ctrl+click field, whose editing state ours
+// carries on); more keys went nowhere without a word. Full, it says so, until Enter reads it.
+TEST_F(ExplorerTest, ATypedValueThatFillsItsFieldSaysSo) {
+  ASSERT_EQ(play(*explorer_,
+                 {{"steps",
+                   {{{"click", "w"}, {"at", 0.5}, {"ctrl", true}},
+                    {{"type", std::string(70, '7')}},
+                    {{"frames", 2}}}}},
+                 [&] { frame(); }),
+            0);
+  EXPECT_NE(last_text_.find("at most 32 characters"), std::string::npos) << last_text_;
+  ASSERT_EQ(play(*explorer_, {{"steps", {{{"key", "enter"}}, {{"frames", 2}}}}}, [&] { frame(); }),
+            0);
+  EXPECT_EQ(last_text_.find("at most 32 characters"), std::string::npos) << last_text_;
+}
+
 // Shift slows a drag to a tenth: the same pixels moved with and without it, measured here, change
 // the value (on the slider's own scale) in the ratio 0.1. A linear slider (h) and a log one (w).
 TEST_F(ExplorerTest, ShiftDragsAtATenthOfThePlainSpeed) {

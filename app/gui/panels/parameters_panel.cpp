@@ -274,6 +274,13 @@ std::optional<double> ParametersPanel::typed_field(Document& document, UiStatus&
   const bool enter =
       ImGui::InputText(label.c_str(), typed_, sizeof typed_,
                        ImGuiInputTextFlags_AutoSelectAll | ImGuiInputTextFlags_EnterReturnsTrue);
+  // The field stops taking characters when full (at the capacity of the field ImGui opened on
+  // the Ctrl+click, whose editing state this one carries on): said, rather than keys seeming to go
+  // nowhere.
+  if (const ImGuiInputTextState* state = ImGui::GetInputTextState(id);
+      ImGui::IsItemActive() && state != nullptr && state->CurLenW + 1 >= state->TextW.Size) {
+    wrapped_tooltip("A typed value takes at most %d characters.", state->TextW.Size - 1);
+  }
   if (enter || ImGui::IsItemDeactivated()) {
     return read_typed(status, spec, value);
   }
