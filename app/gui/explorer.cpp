@@ -505,10 +505,10 @@ float Explorer::presentation_bar() {
   presented_message_ = layout_.presented() != &panel<PresetsPanel>() ? status_.message() : "";
   const bool strip_shown =
       layout_.presents_inputs() && layout_.presented() != &panel<ParametersPanel>();
-  for (const auto& [key, reason] : panel<ParametersPanel>().unread_reasons()) {
-    if (strip_shown && reason == presented_message_) {
-      presented_message_.clear();
-    }
+  if (strip_shown &&
+      std::ranges::any_of(panel<ParametersPanel>().unread_reasons(),
+                          [&](const auto& entry) { return entry.second == presented_message_; })) {
+    presented_message_.clear();
   }
   if (!presented_message_.empty()) {
     text_height += style.ItemSpacing.y +

@@ -34,21 +34,6 @@ std::string offered_name(const Document& document, std::string_view what,
          std::string(extension);
 }
 
-// What a picture of each view is called in its offered name.
-std::string_view picture_words(PictureView view) {
-  switch (view) {
-    case PictureView::cloth:
-      return "3d-view";
-    case PictureView::fold_plot:
-      return "fold-plot";
-    case PictureView::sweep:
-      return "sweep";
-    case PictureView::compare:
-      return "a-and-b";
-  }
-  return "picture";
-}
-
 constexpr const char* kPictureDialog = "Picture";
 
 // The sizes the picture dialog offers before "custom": a screen, a slide, a print.
@@ -61,32 +46,36 @@ constexpr PictureSize kPictureSizes[] = {{"1920 x 1080 (full HD)", {1920, 1080}}
                                          {"A4 at 300 dpi (3508 x 2480)", {3508, 2480}}};
 constexpr int kCustomSize = static_cast<int>(std::size(kPictureSizes));
 
-// What the picture dialog says it draws, and the save dialog's title, per view.
-const char* picture_dialog_text(PictureView view) {
-  switch (view) {
-    case PictureView::cloth:
-      break;
-    case PictureView::fold_plot:
-      return "The fold plot alone, millimetres alike across and down.";
-    case PictureView::sweep:
-      return "The sweep's n, Q and z_max over the input and range the Sweep tab has now.";
-    case PictureView::compare:
-      return "A and B side by side, as the 3D view shows them now.";
+// Per view (in PictureView's order): what the picture dialog says it draws, the save dialog's
+// title, and the words the offered file name gives it.
+struct PictureViewWords {
+  PictureView view;
+  const char* text;
+  const char* title;
+  const char* file_words;
+};
+constexpr PictureViewWords kPictureViewWords[] = {
+    {PictureView::cloth, "The 3D view's cloth alone, as the view shows it now.",
+     "Export 3D view picture", "3d-view"},
+    {PictureView::fold_plot, "The fold plot alone, millimetres alike across and down.",
+     "Export fold plot picture", "fold-plot"},
+    {PictureView::sweep,
+     "The sweep's n, Q and z_max over the input and range the Sweep tab has now.",
+     "Export sweep picture", "sweep"},
+    {PictureView::compare, "A and B side by side, as the 3D view shows them now.",
+     "Export A and B picture", "a-and-b"},
+};
+constexpr bool in_view_order() {
+  for (std::size_t i = 0; i < std::size(kPictureViewWords); ++i) {
+    if (static_cast<std::size_t>(kPictureViewWords[i].view) != i) {
+      return false;
+    }
   }
-  return "The 3D view's cloth alone, as the view shows it now.";
+  return std::size(kPictureViewWords) == static_cast<std::size_t>(PictureView::compare) + 1;
 }
-const char* picture_dialog_title(PictureView view) {
-  switch (view) {
-    case PictureView::cloth:
-      break;
-    case PictureView::fold_plot:
-      return "Export fold plot picture";
-    case PictureView::sweep:
-      return "Export sweep picture";
-    case PictureView::compare:
-      return "Export A and B picture";
-  }
-  return "Export 3D view picture";
+static_assert(in_view_order());
+const PictureViewWords& words_of(PictureView view) {
+  return kPictureViewWords[static_cast<std::size_t>(view)];
 }
 
 }  // namespace
@@ -216,7 +205,7 @@ void ExportPanel::picture_items(const Document& document, UiStatus& status, File
   const auto any_size = [&](const char* label, PictureView view, bool enabled = true) {
     if (ImGui::MenuItem(label, nullptr, false, enabled)) {
       dialog_spec_.view = view;
-      dialog_name_ = offered_name(document, picture_words(view), ".png");
+      dialog_name_ = offered_name(document, words_of(view).file_words, ".png");
       open_dialog_ = true;
     }
   };
@@ -279,7 +268,7 @@ void ExportPanel::draw_picture_dialog(UiStatus& status, FileDialog& files) {
   if (!ImGui::BeginPopupModal(kPictureDialog, nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
     return;
   }
-  ImGui::TextUnformatted(picture_dialog_text(dialog_spec_.view));
+  ImGui::TextUnformatted(words_of(dialog_spec_.view).text);
   std::optional<std::string> problem = picture_size_choice();
   ImGui::TextUnformatted("Background");
   int background = static_cast<int>(dialog_spec_.background);
@@ -312,7 +301,7 @@ void ExportPanel::draw_picture_dialog(UiStatus& status, FileDialog& files) {
     ImGui::CloseCurrentPopup();
     const PictureSpec spec = dialog_spec_;
     files.open({FileDialog::Mode::save,
-                picture_dialog_title(spec.view),
+                words_of(spec.view).title,
                 dialog_name_,
                 {".png"},
                 [this, spec](const std::filesystem::path& path) -> std::optional<std::string> {

@@ -316,14 +316,13 @@ std::optional<double> ParametersPanel::slider_field(Document& document, UiStatus
   // A press that has not yet moved past ImGui's drag threshold only takes the focus (for the
   // arrow keys): ImGui's slider would put the value where the pointer landed, and a click meant
   // to focus a slider in front of a class changed the fabric.
-  const bool pressed_in_place =
-      ImGui::IsItemActive() && io.MouseDown[0] && !ImGui::IsMouseDragPastThreshold(0);
+  const bool dragging =
+      ImGui::IsItemActive() && !(io.MouseDown[0] && !ImGui::IsMouseDragPastThreshold(0));
   std::optional<double> to_position;
-  if (pressed_in_place) {
-  } else if (ImGui::IsItemActive() && (io.KeyShift || relative_drag_id_ == id)) {
+  if (dragging && (io.KeyShift || relative_drag_id_ == id)) {
     relative_drag_id_ = id;
     to_position = relative_drag(fraction, width);
-  } else if (moved) {
+  } else if (moved && dragging) {
     to_position = position;
   } else if (ImGui::IsItemFocused() && !ImGui::IsItemActive()) {
     to_position = arrow_nudge(fraction);
@@ -493,17 +492,12 @@ void ParametersPanel::header_rows(Document& document, UiStatus& status) {
   // Wrapped: cut at the panel's edge a long name would hide "(unsaved changes)". The rows keep
   // the height of the longer form, so that the first edit of a drag never moves the sliders
   // under the pointer by the line it adds.
-  const std::string name = document.loaded().name;
-  const std::string longer = name + " (unsaved changes)";
   const float width = ImGui::GetContentRegionAvail().x;
-  ImGui::PushStyleColor(ImGuiCol_Text, kDimText);
-  wrapped_text("%s", unsaved ? longer.c_str() : name.c_str());
-  ImGui::PopStyleColor();
-  const float missing = ImGui::CalcTextSize(wrap_at_spaces(longer, width).c_str()).y -
-                        ImGui::CalcTextSize(wrap_at_spaces(name, width).c_str()).y;
-  if (!unsaved && missing > 0.0f) {
-    ImGui::SetCursorPosY(ImGui::GetCursorPosY() + missing);
-  }
+  const std::string longer = wrap_at_spaces(document.loaded().name + " (unsaved changes)", width);
+  const std::string drawn = unsaved ? longer : wrap_at_spaces(document.loaded().name, width);
+  ImGui::TextColored(kDimText, "%s", drawn.c_str());
+  ImGui::SetCursorPosY(ImGui::GetCursorPosY() + ImGui::CalcTextSize(longer.c_str()).y -
+                       ImGui::CalcTextSize(drawn.c_str()).y);
   if (ImGui::Button("Reset to preset")) {
     document.reset_to_loaded();
   }
