@@ -505,9 +505,11 @@ float Explorer::presentation_bar() {
   presented_message_ = layout_.presented() != &panel<PresetsPanel>() ? status_.message() : "";
   const bool strip_shown =
       layout_.presents_inputs() && layout_.presented() != &panel<ParametersPanel>();
-  if (strip_shown &&
-      std::ranges::any_of(panel<ParametersPanel>().unread_reasons(),
-                          [&](const auto& entry) { return entry.second == presented_message_; })) {
+  // (std::any_of, not std::ranges: the page's libc++ has no ranges algorithms.)
+  const std::map<std::string, std::string> reasons = panel<ParametersPanel>().unread_reasons();
+  if (strip_shown && std::any_of(reasons.begin(), reasons.end(), [&](const auto& entry) {
+        return entry.second == presented_message_;
+      })) {
     presented_message_.clear();
   }
   if (!presented_message_.empty()) {

@@ -42,7 +42,7 @@ import tempfile
 import time
 import urllib.request
 
-from page_test import free_port, serve_folder
+from page_test import browser_folder, free_port, serve_folder
 
 
 class DevTools:
@@ -715,7 +715,7 @@ def main():
     args = parser.parse_args()
     problems = []
     started = time.monotonic()
-    with tempfile.TemporaryDirectory(prefix="foldlab_drive_") as root:
+    with browser_folder("foldlab_drive_") as root:
         {"dpr": check_dpr, "touch": check_touch, "scheme": check_scheme,
          "layout": check_layout, "address": check_address, "clipboard": check_clipboard,
          "picture": check_picture,

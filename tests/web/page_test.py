@@ -17,15 +17,39 @@ the JSON string given. --checks reads such checks from a JSON file ({"report": {
 CMake's quoting. --page opens FILE (served beside index.html, e.g. tests/web/reload.html)
 instead of index.html; --serve serves PATH as NAME beside it. Chromium's home folder is a temporary one: downloads land there."""
 import argparse
+import contextlib
 import html
 import json
 import os
 import re
+import shutil
 import socket
 import subprocess
 import sys
 import tempfile
 import time
+
+
+@contextlib.contextmanager
+def browser_folder(prefix):
+    """A temporary folder for a browser's profile and files, removed afterwards. Chromium's helper
+    processes may still write the profile ("Default") for a moment after the browser has exited,
+    so the removal is tried again for a few seconds rather than failing a test that passed."""
+    root = tempfile.mkdtemp(prefix=prefix)
+    try:
+        yield root
+    finally:
+        deadline = time.monotonic() + 10
+        while True:
+            try:
+                shutil.rmtree(root)
+                break
+            except FileNotFoundError:
+                break
+            except OSError:
+                if time.monotonic() > deadline:
+                    raise
+                time.sleep(0.2)
 
 
 def free_port():
@@ -89,7 +113,7 @@ def main():
         if args.query is None:
             parser.error("--query, or a checks file with \"query\", is required")
 
-    with tempfile.TemporaryDirectory(prefix="foldlab_page_") as root:
+    with browser_folder("foldlab_page_") as root:
         serve = os.path.join(root, "serve")
         os.mkdir(serve)
         for name in os.listdir(args.site):

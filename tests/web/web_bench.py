@@ -21,11 +21,11 @@ import os
 import statistics
 import subprocess
 import sys
-import tempfile
 import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from page_drive import REPORT_TEXT, Page  # noqa: E402
+from page_test import browser_folder  # noqa: E402
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 QUERY_BASE = "preset=paper-table1-h1400"
@@ -120,7 +120,7 @@ def main():
     parser.add_argument("--keep-screenshots", default=None)
     args = parser.parse_args()
     figures = {}
-    with tempfile.TemporaryDirectory(prefix="foldlab_bench_") as root:
+    with browser_folder("foldlab_bench_") as root:
         figures["first_frame_ms"] = [first_frame_ms(args, os.path.join(root, f"first{i}"))
                                      for i in range(args.repeat)]
         figures["page_drag"] = [page_drag(args, os.path.join(root, f"drag{i}"))
