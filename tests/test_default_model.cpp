@@ -186,7 +186,8 @@ TEST(PredictionIntervals, AreTheLeaveOneOutPredictionsShiftedByTheirResiduals) {
 }
 
 // Residuals far beyond any real fit (a hand-edited or corrupt record) still give an interval
-// within what the geometry allows: n from 0 to the solver's 10,000 folds, z_max from 0 to h, Q
+// within what the geometry allows: n from 0 to the solver's 10,000 folds, z_max from 0 to the
+// upper edge's sag A (never more than L/2: an edge of length L hanging between two points), Q
 // from 1 to a_0 / (0.01 h) = 101, every end finite. ln z_max = 710 made z_max's upper end inf.
 TEST(PredictionIntervals, HugeResidualsGiveFiniteBoundsWithinThePhysicalRange) {
   const Parameters p = default_preset().parameters;
@@ -201,6 +202,7 @@ TEST(PredictionIntervals, HugeResidualsGiveFiniteBoundsWithinThePhysicalRange) {
     EXPECT_GE(r->z_max_min_mm, 0.0);
     EXPECT_TRUE(std::isfinite(r->z_max_max_mm));
     EXPECT_LE(r->z_max_max_mm, p.hanging.height_mm);
+    EXPECT_LE(r->z_max_max_mm, 0.5 * p.hanging.length_mm);
     EXPECT_EQ(r->Q_min, 1.0);
     EXPECT_EQ(r->Q_max, 101.0);
   }
@@ -208,8 +210,45 @@ TEST(PredictionIntervals, HugeResidualsGiveFiniteBoundsWithinThePhysicalRange) {
   const std::vector<HeldOutResidual> up = {{0.0, 710.0, 710.0}, {0.0, 710.0, 710.0}};
   const std::optional<PredictionRange> r = prediction_interval(p, {k, k}, up);
   ASSERT_TRUE(r);
-  EXPECT_EQ(r->z_max_max_mm, p.hanging.height_mm);
+  EXPECT_EQ(r->z_max_max_mm, solve(p).sag_amplitude_mm);
+  EXPECT_LT(r->z_max_max_mm, 0.5 * p.hanging.length_mm);
   EXPECT_EQ(r->Q_max, 101.0);
+}
+
+// Far from the paper's cloths, where a stranger tries first: every interval holds the value it is
+// printed beside, and z_max's stays below L/2, the most an edge of length L can sag.
+TEST(PredictionIntervals, HoldTheirOwnPredictionAndStayWithinTheClothFarFromTheData) {
+  const Preset& preset = default_preset();
+  const std::vector<std::vector<std::pair<std::string, std::string>>> cloths = {
+      {{"h", "100000"}, {"L", "1"}, {"d", "0.4"}},  // an edge that hardly sags: flat folds
+      {{"span_rule", "L-2d"}, {"d", "699"}},        // supports 2 mm apart: a deep sag, one fold
+      {{"h", "5"}},                                 // too short for any fold
+      {{"d", "0.0001"}},
+      {{"t", "0.001"}, {"w", "0.01"}},
+  };
+  for (const auto& settings : cloths) {
+    Parameters p = preset.parameters;
+    std::string label;
+    for (const auto& [key, value] : settings) {
+      ASSERT_EQ(apply_setting(p, key, value), std::nullopt) << key << "=" << value;
+      label += key + "=" + value + " ";
+    }
+    SCOPED_TRACE(label);
+    const Solution s = solve(p);
+    const ModelStanding standing = model_standing(p, preset.calibration);
+    ASSERT_TRUE(standing.range);
+    const PredictionRange& r = *standing.range;
+    EXPECT_LE(r.n_min, s.n);
+    EXPECT_GE(r.n_max, s.n);
+    EXPECT_LE(r.z_max_min_mm, s.z_max_mm);
+    EXPECT_GE(r.z_max_max_mm, s.z_max_mm);
+    EXPECT_LE(r.z_max_max_mm, 0.5 * p.hanging.length_mm);
+    EXPECT_LE(r.z_max_max_mm, p.hanging.height_mm);
+    if (s.n >= 1) {
+      EXPECT_LE(r.Q_min, s.Q);
+      EXPECT_GE(r.Q_max, s.Q);
+    }
+  }
 }
 
 // The stated level is judged on rows the intervals were not built from: leave-one-out (each row's

@@ -1186,6 +1186,21 @@ TEST_F(ExplorerTest, SavingAsksWhereAndAPictureIsTakenAfterTheMenuAndDialogClose
   EXPECT_EQ(status().modal_title(), "");
   EXPECT_NE(read(dir_ / "folds.svg").find("<svg"), std::string::npos);
 
+  // Another name typed while the question is shown withdraws it: Save then writes the new name
+  // and the file asked about is left as it was.
+  { std::ofstream(dir_ / "folds.svg") << "old"; }
+  ASSERT_EQ(export_as("Fold lines (.svg)...", "folds"), 0);
+  ASSERT_TRUE(shows(last_text_, "folds.svg is there already")) << last_text_;
+  ASSERT_EQ(
+      play(*explorer_, {{"steps", {{{"type", "other-folds"}}, {{"frames", 2}}}}}, frame_and_take),
+      0);
+  EXPECT_FALSE(shows(last_text_, "is there already")) << last_text_;
+  ASSERT_EQ(play(*explorer_, {{"steps", {{{"click", "Save"}}, {{"frames", 2}}}}}, frame_and_take),
+            0);
+  EXPECT_EQ(status().modal_title(), "");
+  EXPECT_EQ(read(dir_ / "folds.svg"), "old");
+  EXPECT_NE(read(dir_ / "other-folds.svg").find("<svg"), std::string::npos);
+
   // The name offered is the fabric's and what the file holds; Escape cancels: nothing is written.
   ASSERT_EQ(play(*explorer_,
                  {{"steps",
@@ -1478,6 +1493,23 @@ TEST_F(ExplorerTest, ThePlayButtonSweepsOneInputAndPauseLeavesItAsOneUndoStep) {
   EXPECT_LT(height_mm(), 300.0) << "it came back down";
   EXPECT_NEAR(highest, 1500.0, 1400.0 / 240.0 + 1e-6);
   EXPECT_LE(highest, 1500.0);
+}
+
+// A class watches the presented cloth while h plays: the Parameters panel that holds the play
+// button is out of sight, and the animation goes on all the same.
+TEST_F(ExplorerTest, AnAnimationGoesOnWhileAnotherViewIsPresented) {
+  ASSERT_EQ(play(*explorer_, {{"steps", {{{"click", "play"}}}}}, [&] { frame(); }), 0);
+  for (const char* presented : {"cloth", "fold_plot"}) {
+    ASSERT_EQ(explorer_->set_view("present", presented), std::nullopt);
+    frame();
+    const double before = height_mm();
+    for (int i = 0; i < 10; ++i) {
+      frame();
+    }
+    // One way of 4900 mm in 4 s at 60 frames a second: 20.4 mm a frame.
+    EXPECT_NEAR(height_mm() - before, 10.0 * 4900.0 / 240.0, 1e-3) << presented;
+    EXPECT_EQ(shown().hanging.height_mm, height_mm()) << presented;
+  }
 }
 
 // The introduction for a class: from the menu bar or the View menu, closed by Escape or Close.
@@ -2459,6 +2491,29 @@ TEST_F(ExplorerTest, APlayedScriptFailsAtTheFirstExpectThatDoesNotHold) {
   EXPECT_LT(frames, 10);
   EXPECT_EQ(player.exit_status(), 1);
   EXPECT_NE(player.failure().find("step 2 "), std::string::npos) << player.failure();
+}
+
+// A slider below the edge of a small window cannot be pressed by a person, so a script that drags
+// or clicks it fails, saying where it is, rather than pass with the value unchanged.
+TEST_F(ExplorerTest, APlayedScriptFailsOnASliderOutOfSight) {
+  show_at(ImVec2(400, 300));
+  for (const char* step : {"drag", "click"}) {
+    SCOPED_TRACE(step);
+    InputPlayer player({{"steps",
+                         {{{"frames", 1}},
+                          {{"frames", 1}},
+                          step == std::string("drag") ? json{{"drag", "h"}, {"dx", 50}}
+                                                      : json{{"click", "h"}, {"at", 0.9}}}}},
+                       "test script");
+    while (player.before_new_frame(ImGui::GetIO(), *explorer_)) {
+      frame();
+    }
+    EXPECT_EQ(player.exit_status(), 1);
+    EXPECT_NE(player.failure().find("step 3 "), std::string::npos) << player.failure();
+    EXPECT_NE(player.failure().find("the slider h is out of sight"), std::string::npos)
+        << player.failure();
+    EXPECT_EQ(height_mm(), 1400.0);
+  }
 }
 
 TEST_F(ExplorerTest, AMalformedScriptNamesEveryProblem) {

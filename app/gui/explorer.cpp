@@ -475,51 +475,81 @@ void Explorer::handle_escape() {
   }
 }
 
-float Explorer::presentation_bar() {
-  const ImVec2 display = ImGui::GetIO().DisplaySize;
-  const ImGuiStyle& style = ImGui::GetStyle();
-  std::vector<std::pair<std::string, ImVec4>> lines = panel<ResultsPanel>().headlines(document_);
-  // As large as the width allows, up to two and a half times the text: it is read from the
-  // back of a room (a hair short of the width, so that rounding never wraps it). Too long even at
-  // the text's size, it wraps.
+namespace {
+
+// The read-out's lines at one scale: as large as the width allows, up to two and a half times the
+// text, as it is read from the back of a room (a hair short of the width, so that rounding never
+// wraps it). Only a line too long at the text's own size (scale 1) wraps: between n, Q and z_max
+// (headline()), never after a number's '.' as ImGui's wrapping would.
+struct Headlines {
+  std::vector<std::pair<std::string, ImVec4>> lines;
+  float scale = 1.0f;
+  float height = 0.0f;
+};
+
+Headlines fit_headlines(std::vector<std::pair<std::string, ImVec4>> lines, float available) {
   constexpr float kLargestScale = 2.5f;
-  const float width = std::floor(display.x);
-  const float available = width - 2.0f * style.WindowPadding.x;
   float text_width = 1.0f;
   for (const auto& [line, colour] : lines) {
     text_width = std::max(text_width, ImGui::CalcTextSize(line.c_str()).x);
   }
-  const float scale = std::clamp(0.98f * available / text_width, 1.0f, kLargestScale);
-  float text_height = 0.0f;
+  Headlines fitted;
+  fitted.scale = std::clamp(0.98f * available / text_width, 1.0f, kLargestScale);
   for (auto& [line, colour] : lines) {
-    // Only a line too long at the text's own size (scale 1) wraps: between n, Q and z_max
-    // (headline()), never after a number's '.' as ImGui's wrapping would.
     line = wrap_at_spaces(line, available);
-    text_height += scale * ImGui::CalcTextSize(line.c_str()).y;
+    fitted.height += fitted.scale * ImGui::CalcTextSize(line.c_str()).y;
   }
-  text_height += static_cast<float>(lines.size() - 1) * style.ItemSpacing.y;
-  // The status line under the read-out and the strip (a copied link, a refused file): the
-  // Presets panel that shows it is out of sight unless it is the one presented. Under the strip,
-  // so that a message coming and going never moves the strip's sliders; not when the strip
-  // already says it (the reason typed text was no value, under its slider).
-  presented_message_ = layout_.presented() != &panel<PresetsPanel>() ? status_.message() : "";
-  const bool strip_shown =
-      layout_.presents_inputs() && layout_.presented() != &panel<ParametersPanel>();
+  fitted.height += static_cast<float>(lines.size() - 1) * ImGui::GetStyle().ItemSpacing.y;
+  fitted.lines = std::move(lines);
+  return fitted;
+}
+
+void draw_headlines(const Headlines& headlines) {
+  ImGui::SetWindowFontScale(headlines.scale);
+  for (const auto& [line, colour] : headlines.lines) {
+    ImGui::PushStyleColor(ImGuiCol_Text, colour);
+    ImGui::TextUnformatted(line.c_str());
+    ImGui::PopStyleColor();
+  }
+  ImGui::SetWindowFontScale(1.0f);
+}
+
+}  // namespace
+
+// The status line under the read-out and the strip (a copied link, a refused file): the Presets
+// panel that shows it is out of sight unless it is the one presented. Under the strip, so that a
+// message coming and going never moves the strip's sliders; not when the strip already says it
+// (the reason typed text was no value, under its slider).
+std::string Explorer::message_for_presented(bool strip) {
+  if (layout_.presented() == &panel<PresetsPanel>()) {
+    return "";
+  }
+  const std::string& message = status_.message();
   // (std::any_of, not std::ranges: the page's libc++ has no ranges algorithms.)
   const std::map<std::string, std::string> reasons = panel<ParametersPanel>().unread_reasons();
-  if (strip_shown && std::any_of(reasons.begin(), reasons.end(), [&](const auto& entry) {
-        return entry.second == presented_message_;
-      })) {
-    presented_message_.clear();
+  if (strip && std::any_of(reasons.begin(), reasons.end(),
+                           [&](const auto& entry) { return entry.second == message; })) {
+    return "";
   }
-  if (!presented_message_.empty()) {
-    text_height += style.ItemSpacing.y +
-                   ImGui::CalcTextSize(presented_message_.c_str(), nullptr, false, available).y;
-  }
+  return message;
+}
+
+float Explorer::presentation_bar() {
+  const ImVec2 display = ImGui::GetIO().DisplaySize;
+  const ImGuiStyle& style = ImGui::GetStyle();
+  const float width = std::floor(display.x);
+  const float available = width - 2.0f * style.WindowPadding.x;
+  const Headlines headlines = fit_headlines(panel<ResultsPanel>().headlines(document_), available);
   // The inputs under the read-out, for a "what if" without leaving the view; not over the
   // Parameters panel itself.
   const bool presents_parameters = layout_.presented() == &panel<ParametersPanel>();
   const bool strip = layout_.presents_inputs() && !presents_parameters;
+  presented_message_ = message_for_presented(strip);
+  float text_height = headlines.height;
+  if (!presented_message_.empty()) {
+    text_height += style.ItemSpacing.y +
+                   ImGui::CalcTextSize(presented_message_.c_str(), nullptr, false, available).y;
+  }
   if (strip) {
     text_height +=
         style.ItemSpacing.y + panel<ParametersPanel>().strip_height(document_, available);
@@ -535,14 +565,8 @@ float Explorer::presentation_bar() {
                                  ImGuiWindowFlags_NoScrollWithMouse;
   if (ImGui::Begin(kPresentationWindow, nullptr, flags)) {
     renderer_.fill_window_background();
-    ImGui::SetWindowFontScale(scale);
     ImGui::PushTextWrapPos(0.0f);
-    for (const auto& [line, colour] : lines) {
-      ImGui::PushStyleColor(ImGuiCol_Text, colour);
-      ImGui::TextUnformatted(line.c_str());
-      ImGui::PopStyleColor();
-    }
-    ImGui::SetWindowFontScale(1.0f);
+    draw_headlines(headlines);
     if (strip) {
       panel<ParametersPanel>().draw_strip(document_, status_, available);
     }
@@ -635,6 +659,8 @@ void Explorer::frame() {
   menu_height_ = main_menu();
   layout_.begin_frame(menu_height_);
   presented_message_.clear();
+  // Before anything is drawn, so that every view and the read-out show this frame's value.
+  panel<ParametersPanel>().play_frame(document_);
   if (layout_.presented() != nullptr) {
     layout_.set_presented_top(presentation_bar());
   }

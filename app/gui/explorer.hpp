@@ -231,6 +231,8 @@ class Explorer {
   void handle_escape();
   // The read-out over a presented panel; returns where the panel starts below it.
   float presentation_bar();
+  // The status line to show under a presented panel's read-out, or "" when it is seen elsewhere.
+  std::string message_for_presented(bool strip);
   // The menu bar (View, Export); returns its height, where the tiled panels start.
   float main_menu();
   void view_menu();

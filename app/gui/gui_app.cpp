@@ -375,6 +375,12 @@ class ExplorerRun {
     if (!surface_.open() || close_requested != 0) {
       close_requested = 0;
       if (explorer_->may_quit()) {
+        // The report describes the window as it was closed: a last frame takes what came just
+        // before the close (a resize, on a machine too busy to have drawn it yet).
+        if (options_.report) {
+          draw_frame(surface_, *renderer_, *explorer_, *script_, times_,
+                     layout_ ? &*layout_ : nullptr, frame_);
+        }
         return false;
       }
       surface_.keep_open();  // the explorer asks first; its answer ends the loop or not

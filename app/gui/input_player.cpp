@@ -471,14 +471,34 @@ const SliderPlace* InputPlayer::find_slider(std::size_t index, const std::string
   return &found->second;
 }
 
+// A person cannot press what the window does not show: a slider scrolled out of its panel or
+// below a small window's edge. The point must be inside the slider's clip and the window.
+bool InputPlayer::reachable(std::size_t index, const std::string& key, const SliderPlace& place,
+                            ImVec2 at) {
+  const ImVec2 display = ImGui::GetIO().DisplaySize;
+  const ImVec2 lo(std::max(place.clip_min.x, 0.0f), std::max(place.clip_min.y, 0.0f));
+  const ImVec2 hi(std::min(place.clip_max.x, display.x), std::min(place.clip_max.y, display.y));
+  if (at.x >= lo.x && at.x < hi.x && at.y >= lo.y && at.y < hi.y) {
+    return true;
+  }
+  fail(index, printf_string("the slider %s is out of sight (its handle at x = %.0f, y = %.0f; "
+                            "what can be seen of its panel: x %.0f to %.0f, y %.0f to %.0f)",
+                            key.c_str(), at.x, at.y, lo.x, hi.x, lo.y, hi.y));
+  return false;
+}
+
 bool InputPlayer::click_slider(std::size_t index, const json& step, Explorer& explorer) {
-  const SliderPlace* place = find_slider(index, step["click"].get<std::string>(), explorer);
+  const std::string key = step["click"].get<std::string>();
+  const SliderPlace* place = find_slider(index, key, explorer);
   if (place == nullptr) {
     return false;
   }
   // The frame's right edge itself is outside the item.
   const float x = place->min.x + step["at"].get<float>() * (place->max.x - place->min.x - 1.0f);
   const ImVec2 at(x, 0.5f * (place->min.y + place->max.y));
+  if (!reachable(index, key, *place, at)) {
+    return false;
+  }
   queue_press(at, at, 0);
   // Ctrl+click opens the slider's text field, where a value is typed with its unit.
   const bool ctrl = step.value("ctrl", false);
@@ -587,11 +607,15 @@ bool InputPlayer::start_step(std::size_t index, ImGuiIO& io, Explorer& explorer)
 }
 
 bool InputPlayer::drag_slider(std::size_t index, const json& step, Explorer& explorer) {
-  const SliderPlace* place = find_slider(index, step["drag"].get<std::string>(), explorer);
+  const std::string key = step["drag"].get<std::string>();
+  const SliderPlace* place = find_slider(index, key, explorer);
   if (place == nullptr) {
     return false;
   }
   const ImVec2 from(handle_x(*place, place->fraction), 0.5f * (place->min.y + place->max.y));
+  if (!reachable(index, key, *place, from)) {
+    return false;
+  }
   queue_press(from, ImVec2(from.x + step["dx"].get<float>(), from.y), 6);
   // Shift held from the press to the release: the fine drag.
   for (FrameInput& input : queue_) {

@@ -102,11 +102,17 @@ std::optional<PredictionRange> prediction_interval(const Parameters& p,
   PredictionRange out;
   out.level = interval_level(n.count);
   // Every end within what the geometry allows, whatever the residuals say: n from 0 to the
-  // solver's cap, z_max from 0 to h, Q from 1 to a_0 / (0.01 h) = 101. A quantity the data never
-  // observed often enough gets that whole range. Clamped before rounding: a residual of any size
-  // stays a finite int.
-  const double z_ceiling = p.hanging.height_mm;
-  constexpr double kQCeiling = kLowerBoundaryFactor / 0.01;
+  // solver's cap; z_max from 0 to the sag A of the upper edge (A² = a_n² + z_max², and A is the
+  // same for every fit: it depends on L and l alone) and to h; Q from 1 to a_0 / a_n at the least
+  // a_n the solver gives, 0.01 h or, where the edge sags less (flat folds), A: 101 for most cloths.
+  // A quantity the data never observed often enough gets that whole range. Clamped before
+  // rounding: a residual of any size stays a finite int.
+  const Solution own = solve(p);
+  const double h = p.hanging.height_mm;
+  const bool sags = own.sag_amplitude_mm > 0.0;
+  const double z_ceiling = sags ? std::min(h, own.sag_amplitude_mm) : h;
+  const double least_a_n = sags ? std::min(0.01 * h, own.sag_amplitude_mm) : 0.01 * h;
+  const double Q_ceiling = kLowerBoundaryFactor * h / least_a_n;
   auto folds = [](double v) {
     return static_cast<int>(std::lround(std::clamp(v, 0.0, static_cast<double>(kMaxWrinkles))));
   };
@@ -117,8 +123,19 @@ std::optional<PredictionRange> prediction_interval(const Parameters& p,
   out.z_max_max_mm =
       z_known ? std::clamp(std::exp(log_z.hi), out.z_max_min_mm, z_ceiling) : z_ceiling;
   const bool Q_known = log_Q.count >= 2;
-  out.Q_min = Q_known ? std::clamp(std::exp(log_Q.lo), 1.0, kQCeiling) : 1.0;
-  out.Q_max = Q_known ? std::clamp(std::exp(log_Q.hi), out.Q_min, kQCeiling) : kQCeiling;
+  out.Q_min = Q_known ? std::clamp(std::exp(log_Q.lo), 1.0, Q_ceiling) : 1.0;
+  out.Q_max = Q_known ? std::clamp(std::exp(log_Q.hi), out.Q_min, Q_ceiling) : Q_ceiling;
+  // Each interval holds the prediction it is printed beside (the constants in force, not the
+  // leave-one-out fits the jackknife+ is made of): far from the data the fits can all land to one
+  // side of it. Widening never lowers the coverage the level states.
+  out.n_min = std::min(out.n_min, own.n);
+  out.n_max = std::max(out.n_max, own.n);
+  out.z_max_min_mm = std::min(out.z_max_min_mm, own.z_max_mm);
+  out.z_max_max_mm = std::max(out.z_max_max_mm, own.z_max_mm);
+  if (own.n >= 1) {
+    out.Q_min = std::min(out.Q_min, own.Q);
+    out.Q_max = std::max(out.Q_max, own.Q);
+  }
   return out;
 }
 

@@ -394,6 +394,10 @@ void FileDialog::draw_name_field(Asked& asked) {
           ImGuiInputTextFlags_EnterReturnsTrue | ImGuiInputTextFlags_AutoSelectAll)) {
     asked.picked = name_;
     focus_name_ = true;
+  } else if (ImGui::IsItemEdited()) {
+    // A name typed after "write over it?" is a new answer: the question was of the old name,
+    // and its Replace must never write that file under the name now shown.
+    replace_.reset();
   }
 }
 

@@ -335,8 +335,10 @@ std::optional<double> ParametersPanel::slider_field(Document& document, UiStatus
   }
   // The item's rectangle includes its label; the slider's own frame is `width` wide.
   const ImVec2 min = ImGui::GetItemRectMin();
+  ImDrawList& drawn = *ImGui::GetWindowDrawList();
   places_[std::string(spec.key)] =
-      SliderPlace{min, ImVec2(min.x + width, min.y + ImGui::GetFrameHeight()), fraction};
+      SliderPlace{min, ImVec2(min.x + width, min.y + ImGui::GetFrameHeight()), fraction,
+                  drawn.GetClipRectMin(), drawn.GetClipRectMax()};
   return changed;
 }
 
@@ -444,7 +446,6 @@ void ParametersPanel::animation_row(Document& document, UiStatus& status,
 void ParametersPanel::draw(PanelContext& context) {
   Document& document = context.document;
   UiStatus& status = context.status;
-  play_frame(document);  // before the sliders, so that they show this frame's value
   forget_unread_of_changed_values(document, status);
   const bool unsaved = document.unsaved();
   if (!begin(context.renderer, unsaved ? " *" : "")) {

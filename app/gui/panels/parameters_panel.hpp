@@ -29,6 +29,9 @@ struct SliderPlace {
   ImVec2 min;
   ImVec2 max;
   double fraction = 0.0;
+  // What of it can be seen: its window's clip rectangle (a panel scrolled, a window too small).
+  ImVec2 clip_min;
+  ImVec2 clip_max;
 };
 
 class ParametersPanel : public Panel {
@@ -43,6 +46,9 @@ class ParametersPanel : public Panel {
   // By input key; a slider hidden last frame keeps its older place.
   const std::map<std::string, SliderPlace, std::less<>>& slider_places() const { return places_; }
 
+  // While playing: the next frame's value, one open edit for the whole animation. Called by the
+  // explorer every frame, whether or not this panel is drawn (a presented view still plays).
+  void play_frame(Document& document);
   // True while the play button sweeps an input: every frame shows new inputs.
   bool animating() const { return playing_; }
   // The input the play button sweeps, and the sweep while it plays or is paused.
@@ -114,8 +120,6 @@ class ParametersPanel : public Panel {
   // The play row: which input, play/pause, and the range it sweeps.
   void animation_row(Document& document, UiStatus& status,
                      const std::vector<const InputSpec*>& sliders);
-  // While playing: the next frame's value, one open edit for the whole animation.
-  void play_frame(Document& document);
 
   std::map<std::string, SliderPlace, std::less<>> places_;
   // What is typed into a slider's text field (Ctrl+click), read with its unit on Enter or when
