@@ -25,6 +25,7 @@
 #include "core/io/measurements.hpp"
 #include "core/io/preset.hpp"
 #include "core/model/equations.hpp"
+#include "core/model/settings.hpp"
 #include "core/model/solver.hpp"
 #include "core/model/text_format.hpp"
 #include "fold_photo.hpp"

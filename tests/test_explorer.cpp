@@ -2499,12 +2499,13 @@ TEST_F(ExplorerTest, APlayedScriptFailsOnASliderOutOfSight) {
   show_at(ImVec2(400, 300));
   for (const char* step : {"drag", "click"}) {
     SCOPED_TRACE(step);
-    InputPlayer player({{"steps",
-                         {{{"frames", 1}},
-                          {{"frames", 1}},
-                          step == std::string("drag") ? json{{"drag", "h"}, {"dx", 50}}
-                                                      : json{{"click", "h"}, {"at", 0.9}}}}},
-                       "test script");
+    InputPlayer player(
+        {{"steps",
+          {{{"frames", 1}},
+           {{"frames", 1}},
+           step == std::string("drag") ? nlohmann::json{{"drag", "h"}, {"dx", 50}}
+                                       : nlohmann::json{{"click", "h"}, {"at", 0.9}}}}},
+        "test script");
     while (player.before_new_frame(ImGui::GetIO(), *explorer_)) {
       frame();
     }

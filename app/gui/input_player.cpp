@@ -481,9 +481,10 @@ bool InputPlayer::reachable(std::size_t index, const std::string& key, const Sli
   if (at.x >= lo.x && at.x < hi.x && at.y >= lo.y && at.y < hi.y) {
     return true;
   }
-  fail(index, printf_string("the slider %s is out of sight (its handle at x = %.0f, y = %.0f; "
-                            "what can be seen of its panel: x %.0f to %.0f, y %.0f to %.0f)",
-                            key.c_str(), at.x, at.y, lo.x, hi.x, lo.y, hi.y));
+  fail(index,
+       detail::printf_string("the slider %s is out of sight (its handle at x = %.0f, y = %.0f; "
+                             "what can be seen of its panel: x %.0f to %.0f, y %.0f to %.0f)",
+                             key.c_str(), at.x, at.y, lo.x, hi.x, lo.y, hi.y));
   return false;
 }
 

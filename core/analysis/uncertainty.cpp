@@ -76,8 +76,10 @@ std::optional<PredictionRange> prediction_interval(const Parameters& p,
   Extremes n;
   Extremes log_z;
   Extremes log_Q;
+  double sag_mm = 0.0;  // A(L, l), the same under every fit's constants
   for (std::size_t i = 0; i < fits.size() && i < residuals.size(); ++i) {
     const Solution s = solve(with_constants(p, fits[i].K, fits[i].p));
+    sag_mm = s.sag_amplitude_mm;
     const HeldOutResidual& r = residuals[i];
     // Symmetric about each fit's prediction, as the jackknife+ has it: an error seen one way on
     // one row can go the other way on the next (signed shifts missed the table split's Q rows).
@@ -107,11 +109,10 @@ std::optional<PredictionRange> prediction_interval(const Parameters& p,
   // a_n the solver gives, 0.01 h or, where the edge sags less (flat folds), A: 101 for most cloths.
   // A quantity the data never observed often enough gets that whole range. Clamped before
   // rounding: a residual of any size stays a finite int.
-  const Solution own = solve(p);
   const double h = p.hanging.height_mm;
-  const bool sags = own.sag_amplitude_mm > 0.0;
-  const double z_ceiling = sags ? std::min(h, own.sag_amplitude_mm) : h;
-  const double least_a_n = sags ? std::min(0.01 * h, own.sag_amplitude_mm) : 0.01 * h;
+  const bool sags = sag_mm > 0.0;
+  const double z_ceiling = sags ? std::min(h, sag_mm) : h;
+  const double least_a_n = sags ? std::min(0.01 * h, sag_mm) : 0.01 * h;
   const double Q_ceiling = kLowerBoundaryFactor * h / least_a_n;
   auto folds = [](double v) {
     return static_cast<int>(std::lround(std::clamp(v, 0.0, static_cast<double>(kMaxWrinkles))));
@@ -125,18 +126,18 @@ std::optional<PredictionRange> prediction_interval(const Parameters& p,
   const bool Q_known = log_Q.count >= 2;
   out.Q_min = Q_known ? std::clamp(std::exp(log_Q.lo), 1.0, Q_ceiling) : 1.0;
   out.Q_max = Q_known ? std::clamp(std::exp(log_Q.hi), out.Q_min, Q_ceiling) : Q_ceiling;
-  // Each interval holds the prediction it is printed beside (the constants in force, not the
-  // leave-one-out fits the jackknife+ is made of): far from the data the fits can all land to one
-  // side of it. Widening never lowers the coverage the level states.
-  out.n_min = std::min(out.n_min, own.n);
-  out.n_max = std::max(out.n_max, own.n);
-  out.z_max_min_mm = std::min(out.z_max_min_mm, own.z_max_mm);
-  out.z_max_max_mm = std::max(out.z_max_max_mm, own.z_max_mm);
-  if (own.n >= 1) {
-    out.Q_min = std::min(out.Q_min, own.Q);
-    out.Q_max = std::max(out.Q_max, own.Q);
-  }
   return out;
+}
+
+void hold_prediction(PredictionRange& range, const Solution& predicted) {
+  range.n_min = std::min(range.n_min, predicted.n);
+  range.n_max = std::max(range.n_max, predicted.n);
+  range.z_max_min_mm = std::min(range.z_max_min_mm, predicted.z_max_mm);
+  range.z_max_max_mm = std::max(range.z_max_max_mm, predicted.z_max_mm);
+  if (predicted.n >= 1) {
+    range.Q_min = std::min(range.Q_min, predicted.Q);
+    range.Q_max = std::max(range.Q_max, predicted.Q);
+  }
 }
 
 bool record_applies(const Parameters& p, const CalibrationRecord& record) {
@@ -180,6 +181,7 @@ ModelStanding model_standing(const Parameters& p, const std::optional<Calibratio
     out.range_basis = "none: the calibration stored fewer than two leave-one-out residuals";
     return out;
   }
+  hold_prediction(*out.range, solve(p));
   out.range_basis = printf_string("jackknife+ over the %zu leave-one-out fits on ",
                                   record->leave_one_out.size()) +
                     record->calibrated_on + " and each one's error on the row it left out" +

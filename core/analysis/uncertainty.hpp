@@ -35,6 +35,13 @@ std::optional<PredictionRange> prediction_interval(const Parameters& p,
                                                    const std::vector<Eq7Constants>& fits,
                                                    const std::vector<HeldOutResidual>& residuals);
 
+// Widens `range` to hold the prediction it is shown beside (the constants in force, not the
+// leave-one-out fits the jackknife+ is made of): far from the data the fits can all land to one
+// side of it. Only for showing: the coverage checks judge the jackknife+ alone, whose rows must
+// not reach the interval through the constants fitted on all of them; widening never lowers
+// coverage.
+void hold_prediction(PredictionRange& range, const Solution& predicted);
+
 // One fit row's residual under the fit that left it out: observed minus predicted.
 HeldOutResidual held_out_residual(const PublishedResult& observed, const Solution& predicted);
 
