@@ -289,6 +289,36 @@ TEST_F(PlotWidget, LinesAreDrawnInTheirColoursInsideThePlotRect) {
   }));
 }
 
+// A line is as thick beside large text as beside the usual: at four times the text size (a
+// room's 200 %, a picture's text) a 2 px fold line is no hair.
+TEST_F(PlotWidget, LinesGrowWithTheTextSize) {
+  const std::vector<double> xs{0, 300}, ys{50, 50};
+  const auto drawn_height = [&](float font_scale) {
+    frame([&] {
+      ImGui::SetWindowFontScale(font_scale);
+      ASSERT_TRUE(plot_.begin("plot", kPlotSize, x_axis_, y_axis_));
+      plot_.line(nullptr, xs, ys, kColC, 2.0f);
+      plot_.end();
+    });
+    // With the anti-aliased fringe, which has the line's colour at no opacity.
+    float lo = FLT_MAX, hi = -FLT_MAX;
+    for (const Vertex& v : vertices_of(kColC)) {
+      lo = std::min(lo, v.pos.y);
+      hi = std::max(hi, v.pos.y);
+    }
+    for (const Vertex& v : vertices_of(kColC & ~IM_COL32_A_MASK)) {
+      lo = std::min(lo, v.pos.y);
+      hi = std::max(hi, v.pos.y);
+    }
+    return hi - lo;
+  };
+  // ImGui's default font is 13 px: 13 x 4 = 52 px text draws a 2 px line 2 x 52 / 15 = 6.9 px.
+  const float usual = drawn_height(1.0f);
+  const float large = drawn_height(4.0f);
+  EXPECT_GT(usual, 0.0f);
+  EXPECT_NEAR(large - usual, 6.9f - 2.0f, 1.0f) << usual << " px at the usual size";
+}
+
 TEST_F(PlotWidget, ZoomedInLinesAreCutToThePlotRect) {
   frame_ab();
   move_mouse(plot_.view().to_screen(150, 50));

@@ -16,6 +16,8 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr float kHoverRadius = 12.0f;
 constexpr double kAutoscaleMargin = 0.05;
+// The text size a series' line width and marker size are given for: the explorer's at 100 %.
+constexpr float kUsualFontPx = 15.0f;
 constexpr double kWheelZoom = 1.25;  // range factor per wheel notch
 // Zooming further than this relative span only shows floating-point noise.
 constexpr double kMinRelativeSpan = 1e-12;
@@ -627,6 +629,7 @@ struct Plot::Frame {
   const ImGuiIO* io = nullptr;
   float font = 0;
   float swatch = 0, row = 0, pad = 0;  // legend swatch width, legend row height, padding
+  float weight = 1;                    // lines and markers grow with the text, never thinner
   bool x_log = false, y_log = false;
   bool x_title = false, y_title = false;
   double xt0 = 0, xt1 = 1, yt0 = 0, yt1 = 1;  // the visible range in axis coordinates
@@ -649,6 +652,9 @@ std::optional<PlotHit> Plot::end() {
   f.io = &ImGui::GetIO();
   f.font = ImGui::GetFontSize();
   f.swatch = f.font * 1.6f;
+  // A series' size is given for the usual text size: at 200 % for a room, or in a picture of a
+  // few thousand pixels, a 2 px line would be a hair beside the text.
+  f.weight = std::max(1.0f, f.font / kUsualFontPx);
   f.row = f.font + 2;
   f.pad = std::round(f.font * 0.35f);
   f.x_log = x_axis_.log;
@@ -946,18 +952,19 @@ void Plot::draw_series(const Frame& f) {
       line_path(f, s);
     else
       steps_path(f, s);
-    stroke(f.draw_list, s.colour, s.size, f.lay.min, f.lay.max);
+    stroke(f.draw_list, s.colour, s.size * f.weight, f.lay.min, f.lay.max);
   }
 }
 
 void Plot::draw_markers(const Frame& f, const Series& s) const {
+  const double size = s.size * f.weight;
   for (std::size_t i = 0; i < s.xs.size(); ++i) {
     const double px = f.xm.px(s.xs[i]), py = f.ym.px(s.ys[i]);
-    if (!(px >= f.lay.min.x - s.size && px <= f.lay.max.x + s.size && py >= f.lay.min.y - s.size &&
-          py <= f.lay.max.y + s.size)) {
+    if (!(px >= f.lay.min.x - size && px <= f.lay.max.x + size && py >= f.lay.min.y - size &&
+          py <= f.lay.max.y + size)) {
       continue;  // also skips NaN
     }
-    draw_marker(f.draw_list, vec(px, py), s.size, s.colour, s.shape);
+    draw_marker(f.draw_list, vec(px, py), static_cast<float>(size), s.colour, s.shape);
   }
 }
 
@@ -1000,7 +1007,7 @@ void Plot::draw_vertical_lines(const Frame& f) const {
     if (!(px >= f.lay.min.x && px <= f.lay.max.x))
       continue;
     const float fx = static_cast<float>(px);
-    f.draw_list->AddLine({fx, f.lay.min.y}, {fx, f.lay.max.y}, v.colour, 1.5f);
+    f.draw_list->AddLine({fx, f.lay.min.y}, {fx, f.lay.max.y}, v.colour, 1.5f * f.weight);
     if (v.text != std::string::npos) {
       f.draw_list->AddText({fx + f.pad, f.lay.min.y + f.pad}, v.colour,
                            legend_text_.c_str() + v.text);
@@ -1141,7 +1148,8 @@ void Plot::draw_legend(const Frame& f) {
     if (e.kind == Kind::Markers) {
       draw_marker(dl, mid, std::min(4.0f, f.row / 2 - 1), e.colour, e.shape);
     } else {
-      dl->AddLine({mid.x - f.swatch / 2, mid.y}, {mid.x + f.swatch / 2, mid.y}, e.colour, 2.0f);
+      dl->AddLine({mid.x - f.swatch / 2, mid.y}, {mid.x + f.swatch / 2, mid.y}, e.colour,
+                  2.0f * f.weight);
     }
     dl->AddText({left + r.x + f.swatch + f.pad, top + r.y + 1}, col_text,
                 legend_text_.c_str() + e.text);
