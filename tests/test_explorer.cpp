@@ -1512,6 +1512,22 @@ TEST_F(ExplorerTest, AnAnimationGoesOnWhileAnotherViewIsPresented) {
   }
 }
 
+// Results presented on a wide screen: each value is read beside its name, not across the room.
+TEST_F(ExplorerTest, PresentedResultsKeepEachValueBesideItsName) {
+  show_at(ImVec2(1920, 1080));
+  ASSERT_EQ(explorer_->set_view("present", "results"), std::nullopt);
+  frame();
+  frame();
+  const float name_x = position_of("out-of-plane depth").x;
+  const std::string value =
+      detail::printf_string("%.2f mm", explorer_->scene().solution().z_max_mm);
+  const float value_x = position_of(value).x;
+  EXPECT_GT(value_x, name_x);
+  // The name is about 18 characters: its value starts within 40 font sizes of it, not at the
+  // far edge of a 1920 px window.
+  EXPECT_LT(value_x - name_x, 40.0f * ImGui::GetFontSize()) << last_text_;
+}
+
 // The introduction for a class: from the menu bar or the View menu, closed by Escape or Close.
 TEST_F(ExplorerTest, TheIntroductionOpensFromTheMenuAndClosesWithEscapeOrClose) {
   EXPECT_EQ(frame().find("A cloth hangs"), std::string::npos);

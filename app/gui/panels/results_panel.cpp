@@ -88,15 +88,18 @@ std::vector<std::pair<std::string, ImVec4>> ResultsPanel::headlines(Document& do
 
 // The symbols and values are never cut: their columns are as wide as their widest text, and the
 // names wrap into what is left. When that is too narrow, each range goes under its value, and
-// then each symbol follows its name.
+// then each symbol follows its name. In a wide panel (presented on a projector) the table is no
+// wider than its longest line, so that a value is read beside its name, not half a screen away.
 void ResultsPanel::draw_table(const std::vector<Row>& rows) const {
   const ImGuiStyle& style = ImGui::GetStyle();
   float symbol_width = 0.0f;
   float one_line_width = 0.0f;
   float two_line_width = 0.0f;
   float word_width = 0.0f;  // the names' longest word: narrower, a name would be cut
+  float name_width = 0.0f;  // the longest name on one line
   for (const Row& row : rows) {
     symbol_width = std::max(symbol_width, ImGui::CalcTextSize(row.symbol.c_str()).x);
+    name_width = std::max(name_width, ImGui::CalcTextSize(row.name.c_str()).x);
     one_line_width = std::max(one_line_width, ImGui::CalcTextSize(row.one_line().c_str()).x);
     two_line_width = std::max({two_line_width, ImGui::CalcTextSize(row.value.c_str()).x,
                                ImGui::CalcTextSize(row.range.c_str()).x});
@@ -114,8 +117,12 @@ void ResultsPanel::draw_table(const std::vector<Row>& rows) const {
   const bool two_lines = symbol_width + one_line_width + word_width + 3.0f * padding > available;
   const float value_width = two_lines ? two_line_width : one_line_width;
   const bool symbol_column = symbol_width + value_width + word_width + 3.0f * padding <= available;
+  const float natural_width = name_width + (symbol_column ? symbol_width + padding : 0.0f) +
+                              value_width + 2.0f * padding + ImGui::GetFontSize();
+  const float table_width = std::min(ImGui::GetContentRegionAvail().x, natural_width);
   if (!ImGui::BeginTable("results", symbol_column ? 3 : 2,
-                         ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit)) {
+                         ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit,
+                         ImVec2(table_width, 0.0f))) {
     return;
   }
   ImGui::TableSetupColumn("name", ImGuiTableColumnFlags_WidthStretch);
