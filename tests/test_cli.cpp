@@ -292,6 +292,28 @@ TEST_F(CliTest, NoArgumentsWithoutADisplayPrintsTheTable) {
   EXPECT_TRUE(contains(r.out, kDefaultPresetName)) << r.out;
 }
 
+// A preset's name may state its values ("h = 1400 mm"): once --set changes them, the header, the
+// OBJ's comment and compare's rows say the values solved after it, not only the preset's.
+TEST_F(CliTest, ReportsNameTheInputsSolvedNotOnlyThePresets) {
+  const RunResult solved = run({"solve", "--set", "h=5"});
+  ASSERT_EQ(solved.exit_status, 0) << solved.err;
+  const std::string header = split_lines(solved.out).at(0);
+  EXPECT_TRUE(contains(header, kDefaultPresetName + " (edited: h = 5 mm)")) << header;
+
+  const fs::path obj = dir_ / "k.obj";
+  ASSERT_EQ(run({"export", "--set", "h=1.2m", "--obj", obj.string()}).exit_status, 0);
+  const std::string comment = split_lines(read_file(obj)).at(0);
+  EXPECT_TRUE(contains(comment, "(edited: h = 1200 mm)")) << comment;
+
+  const RunResult compared = run({"compare", "--preset", kH900, "--set", "h=950"});
+  ASSERT_EQ(compared.exit_status, 0) << compared.err;
+  EXPECT_TRUE(contains(compared.out, "(edited: h = 950 mm)")) << compared.out;
+
+  // Without overrides the name is the preset's alone.
+  const RunResult plain = run({"solve"});
+  EXPECT_FALSE(contains(plain.out, "(edited")) << plain.out;
+}
+
 TEST_F(CliTest, SolveTableAndJsonAgreeOnN) {
   const json j = solve_json({"--preset", kH900});
   const RunResult r = run({"solve", "--preset", kH900});

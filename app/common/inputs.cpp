@@ -94,13 +94,17 @@ std::string link_note(const std::string& piece, const std::string& reason, const
   return reason + ", so " + key + " is " + (as_preset ? "the preset's " : "") + value;
 }
 
-StartInputs resolve(const InputOptions& given, bool keep_refused) {
-  StartInputs start;
+Preset load(const std::string& preset_path) {
   try {
-    start.preset = given.preset_path.empty() ? default_preset() : load_preset(given.preset_path);
+    return preset_path.empty() ? default_preset() : load_preset(preset_path);
   } catch (const PresetError& e) {
     throw InputError(e.what());
   }
+}
+
+StartInputs resolve(const InputOptions& given, bool keep_refused) {
+  StartInputs start;
+  start.preset = load(given.preset_path);
   InputOptions options = given;
   // Left out before anything is applied: a piece that cannot be read says nothing of the fabric.
   std::vector<std::pair<std::string, std::string>> left_out;  // the piece, why
@@ -176,6 +180,26 @@ Preset resolve_inputs(const InputOptions& options) {
 
 StartInputs resolve_start_inputs(const InputOptions& options) {
   return resolve(options, true);
+}
+
+std::string solved_name(const Preset& solved, const InputOptions& options) {
+  const Parameters loaded = load(options.preset_path).parameters;
+  std::vector<std::string> changed;
+  for (const InputSpec& spec : input_table()) {
+    const std::optional<double> now = spec.value(solved.parameters);
+    if (now) {
+      if (*now != spec.value(loaded)) {
+        changed.push_back(std::string(input_symbol(spec)) + " = " + shown_quantity(spec, *now));
+      }
+    } else if (spec.choice(solved.parameters) != spec.choice(loaded)) {
+      changed.push_back(std::string(spec.key) + " = " +
+                        std::string(spec.choice(solved.parameters)));
+    }
+  }
+  if (changed.empty()) {
+    return solved.name;
+  }
+  return solved.name + " (edited: " + detail::join_comma(changed) + ")";
 }
 
 void check_output_extension(std::string_view option, const std::string& path,

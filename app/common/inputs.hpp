@@ -75,6 +75,11 @@ struct StartInputs {
 // `refused`. A key or value that cannot be applied at all is an InputError as for --set.
 StartInputs resolve_start_inputs(const InputOptions& options);
 
+// The name a report gives the fabric it solved (`solved`, from resolve_inputs(options)): the
+// preset's, and when the overrides changed inputs, those inputs as solved after it, "Default: ...,
+// h = 1400 mm ... (edited: h = 5 mm)", since a preset's name may state values it no longer has.
+std::string solved_name(const Preset& solved, const InputOptions& options);
+
 // A file named on the command line by the option that names it.
 struct NamedPath {
   std::string_view option;
