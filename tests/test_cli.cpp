@@ -919,6 +919,49 @@ TEST_F(CliTest, SweepPastTheValidRangeSaysWhyOnceAndAllRefusedIsInvalidInput) {
   EXPECT_TRUE(all.out.empty()) << all.out;
 }
 
+// picture sweep draws what sweep solves: a range sweep refuses is refused there in the same words,
+// before anything is drawn.
+TEST_F(CliTest, PictureSweepRefusesWhatSweepRefuses) {
+  const RunResult swept = run({"sweep", "--param", "d", "--from", "700", "--to", "900"});
+  ASSERT_EQ(swept.exit_status, 2);
+  const fs::path png = dir_ / "x.png";
+  const RunResult drawn = run({"picture", "sweep", "--size", "800x600", "--param", "d", "--from",
+                               "700", "--to", "900", "--out", png.string()});
+  EXPECT_EQ(drawn.exit_status, 2) << drawn.err;
+  EXPECT_TRUE(contains(drawn.err,
+                       "no value of the range is valid given the other inputs; at d = "
+                       "700"))
+      << drawn.err;
+  EXPECT_EQ(drawn.err, swept.err);
+  EXPECT_FALSE(fs::exists(png));
+}
+
+// The other inputs are judged at the swept values: d = 800 mm needs L above 1600 mm, which the
+// preset's L = 1400 mm is not but most of the swept L are.
+TEST_F(CliTest, SweepJudgesTheOtherInputsAtTheSweptValues) {
+  const RunResult r = run({"sweep", "--set", "d=800", "--param", "L", "--from", "1000", "--to",
+                           "3000", "--steps", "5", "--csv"});
+  ASSERT_EQ(r.exit_status, 0) << r.err;
+  const std::vector<std::string> lines = split_lines(r.out);
+  ASSERT_EQ(lines.size(), 6u) << r.out;
+  EXPECT_EQ(lines[1], "1000,,,,invalid,");
+  EXPECT_EQ(lines[2], "1500,,,,invalid,");
+  for (std::size_t i = 3; i < lines.size(); ++i) {
+    EXPECT_FALSE(contains(lines[i], "invalid")) << lines[i];
+  }
+  EXPECT_TRUE(contains(r.err, "2 of 5 values are refused")) << r.err;
+  EXPECT_TRUE(contains(r.err, "L = 1000")) << r.err;
+  // No swept L leaves room for d: refused, at the swept values rather than the preset's L.
+  const RunResult none =
+      run({"sweep", "--set", "d=800", "--param", "L", "--from", "1000", "--to", "1500"});
+  EXPECT_EQ(none.exit_status, 2);
+  EXPECT_TRUE(contains(none.err,
+                       "no value of the range is valid given the other inputs; at L = "
+                       "1000"))
+      << none.err;
+  EXPECT_FALSE(contains(none.err, "700 mm")) << none.err;
+}
+
 TEST_F(CliTest, OverflowingNumberIsNamedAsSuch) {
   const RunResult r = run({"solve", "--set", "t=1e309"});
   EXPECT_EQ(r.exit_status, 2);

@@ -73,7 +73,7 @@ void declare(CLI::App& app, Options& options) {
 Result run(const Options& options) {
   Result result;
   result.axis = checked_axis(options);
-  const Preset preset = resolve_inputs(options.inputs);
+  const Preset preset = app::resolve_sweep_inputs(options.inputs, result.axis);
   result.points = sweep(preset.parameters, result.axis);
   // Checked before the first row goes out, so that a bad row never leaves half a table.
   for (const SweepPoint& p : result.points) {
@@ -82,16 +82,12 @@ Result run(const Options& options) {
     detail::finite_or_throw(p.z_max_mm, "z_max_mm");
   }
   // A range may run past what the other inputs allow (d up to L/2, say): those rows say
-  // "invalid" and the reason is given once; a range with no valid value is an input error.
+  // "invalid" and the reason is given once (resolve_sweep_inputs refused a range with none).
   for (const SweepPoint& p : result.points) {
     if (!p.valid && result.refused++ == 0) {
       result.first_reason = refusal(preset.parameters, result.axis.key, p.value);
     }
     result.capped += p.valid && p.n_capped ? 1 : 0;
-  }
-  if (result.refused == static_cast<int>(result.points.size())) {
-    throw InputError("no value of the range is valid given the other inputs; at " +
-                     result.first_reason);
   }
   result.notes = notes(result);
   return result;

@@ -102,7 +102,26 @@ Preset load(const std::string& preset_path) {
   }
 }
 
-StartInputs resolve(const InputOptions& given, bool keep_refused) {
+// The inputs of a sweep, judged along its range: `all` where it is valid itself, else with the
+// swept input at the first value the others accept; a range with none is refused.
+Parameters judged_along(const Parameters& all, const SweepAxis& axis,
+                        const std::vector<std::string>& assignments) {
+  for (int i = 0; i < axis.steps; ++i) {
+    Parameters at = all;
+    set_number(at, axis.key, axis.value(i));
+    if (validate(at).empty()) {
+      return validate(all).empty() ? all : at;
+    }
+  }
+  Parameters first = all;
+  set_number(first, axis.key, axis.from);
+  std::string reasons = refusals(validate(first), assignments);
+  reasons.pop_back();  // the final newline
+  throw InputError("no value of the range is valid given the other inputs; at " + axis.key + " = " +
+                   detail::shortest_number(axis.from) + ": " + reasons);
+}
+
+StartInputs resolve(const InputOptions& given, bool keep_refused, const SweepAxis* axis = nullptr) {
   StartInputs start;
   start.preset = load(given.preset_path);
   InputOptions options = given;
@@ -155,6 +174,10 @@ StartInputs resolve(const InputOptions& given, bool keep_refused) {
   start.origin.parameters = origin_valid ? without_link : all;
   // Range problems as well: a value that did not parse left the preset's (valid) value in place,
   // so every range problem reported is a real one.
+  if (axis != nullptr && problems.empty()) {
+    start.preset.parameters = judged_along(all, *axis, overrides(options, true));
+    return start;
+  }
   const std::vector<ValidationIssue> issues = validate(all);
   if (problems.empty() && issues.empty()) {
     start.preset.parameters = all;
@@ -180,6 +203,10 @@ Preset resolve_inputs(const InputOptions& options) {
 
 StartInputs resolve_start_inputs(const InputOptions& options) {
   return resolve(options, true);
+}
+
+Preset resolve_sweep_inputs(const InputOptions& options, const SweepAxis& axis) {
+  return resolve(options, false, &axis).preset;
 }
 
 std::string solved_name(const Preset& solved, const InputOptions& options) {

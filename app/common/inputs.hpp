@@ -13,6 +13,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "core/analysis/sweep.hpp"
 #include "core/io/preset.hpp"
 
 namespace foldlab::app {
@@ -74,6 +75,13 @@ struct StartInputs {
 // resolve_inputs, except that values the model refuses only with the link's are kept in
 // `refused`. A key or value that cannot be applied at all is an InputError as for --set.
 StartInputs resolve_start_inputs(const InputOptions& options);
+
+// resolve_inputs for a sweep over `axis` (`foldlab sweep`, `picture sweep`): the inputs are judged
+// at the swept values, not at the preset's value of the swept input, which the sweep replaces
+// (d = 800 mm is refused at the preset's L = 1400 mm, not when L runs from 1000 to 3000 mm).
+// Throws InputError, naming the first value and why, when no value of the range is valid. When
+// the preset's own value is refused with the others, the preset holds the first valid one.
+Preset resolve_sweep_inputs(const InputOptions& options, const SweepAxis& axis);
 
 // The name a report gives the fabric it solved (`solved`, from resolve_inputs(options)): the
 // preset's, and when the overrides changed inputs, those inputs as solved after it, "Default: ...,
