@@ -1010,6 +1010,24 @@ TEST_F(CliTest, MeasuredDepthBeyondHalfTheUpperEdgeIsRefused) {
   EXPECT_EQ(fine.exit_status, 0) << fine.err;
 }
 
+// A fold depth is bounded as z_max is, by how far the cloth hangs: its lower boundary at the
+// centre, a_0 = 1.01 h (1414 mm for the default h = 1400 mm), which solve's own a_0 stays within.
+TEST_F(CliTest, MeasuredFoldDeeperThanTheClothHangsIsRefused) {
+  const RunResult deep = run({"measure", "--depths-mm", "90000,60000"});
+  EXPECT_EQ(deep.exit_status, 2) << deep.out;
+  EXPECT_TRUE(contains(deep.err,
+                       "--depths-mm: depth 0 = 90000 mm is deeper than the cloth's "
+                       "lower boundary at the centre, 1.01 h = 1414 mm at h = 1400 mm"))
+      << deep.err;
+  EXPECT_TRUE(contains(run({"measure", "--depths-mm", "1415,700"}).err, "depth 0 = 1415 mm"));
+  const json solved = solve_json({});
+  const double a0 = solved.at("a_mm").at(0).get<double>();
+  char first[32];
+  std::snprintf(first, sizeof first, "%.17g", a0);
+  const RunResult back = run({"measure", "--depths-mm", std::string(first) + ",700"});
+  EXPECT_EQ(back.exit_status, 0) << back.err;
+}
+
 // `measure` refuses a row that its own readers would refuse (Q above 100, z_max of 0), with or
 // without --append, and leaves the file as it was: every later append and calibration on it goes
 // on working.
@@ -1019,7 +1037,7 @@ TEST_F(CliTest, MeasureNeverWritesARowItsReadersRefuse) {
             0);
   const std::string before = read_file(rows);
   for (const std::vector<std::string>& bad :
-       {std::vector<std::string>{"--depths-mm", "100000,0.001"},
+       {std::vector<std::string>{"--depths-mm", "1000,0.001"},
         std::vector<std::string>{"--depths-mm", "80,40,20,10", "--z-max-mm", "0"}}) {
     for (const bool append : {false, true}) {
       std::vector<std::string> args = {"measure"};
