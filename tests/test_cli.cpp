@@ -962,6 +962,37 @@ TEST_F(CliTest, SweepJudgesTheOtherInputsAtTheSweptValues) {
   EXPECT_FALSE(contains(none.err, "700 mm")) << none.err;
 }
 
+// --from and --to read a value as --set reads one of the swept input: with its unit, and a bare
+// weight with --set's hint.
+TEST_F(CliTest, SweepEndsAreReadWithTheirUnitsAsSetReadsThem) {
+  const RunResult r = run(
+      {"sweep", "--param", "w", "--from", "100gsm", "--to", "300 g/m2", "--steps", "2", "--csv"});
+  ASSERT_EQ(r.exit_status, 0) << r.err;
+  const std::vector<std::string> lines = split_lines(r.out);
+  ASSERT_EQ(lines.size(), 3u) << r.out;
+  EXPECT_TRUE(starts_with(lines[1], "9.81e-07,")) << lines[1];
+  EXPECT_TRUE(starts_with(lines[2], "2.943e-06,")) << lines[2];
+  const RunResult metres =
+      run({"sweep", "--param", "L", "--from", "1m", "--to", "2m", "--steps", "2", "--csv"});
+  ASSERT_EQ(metres.exit_status, 0) << metres.err;
+  EXPECT_TRUE(starts_with(split_lines(metres.out).at(1), "1000,")) << metres.out;
+
+  const RunResult bare = run({"sweep", "--param", "w", "--from", "100", "--to", "300"});
+  EXPECT_EQ(bare.exit_status, 2);
+  EXPECT_TRUE(contains(bare.err,
+                       "a bare number for w is read in N/mm²; for 100 g/m² write "
+                       "w=100gsm"))
+      << bare.err;
+  const RunResult mega = run({"sweep", "--param", "L", "--from", "1.4M", "--to", "2m"});
+  EXPECT_EQ(mega.exit_status, 2);
+  EXPECT_TRUE(contains(mega.err, "--from L = '1.4M': 'M' is not a unit of length")) << mega.err;
+  // picture sweep reads them the same way.
+  const RunResult picture = run({"picture", "sweep", "--size", "400x300", "--param", "w", "--from",
+                                 "100", "--to", "300", "--out", (dir_ / "w.png").string()});
+  EXPECT_EQ(picture.exit_status, 2);
+  EXPECT_EQ(picture.err, bare.err);
+}
+
 TEST_F(CliTest, OverflowingNumberIsNamedAsSuch) {
   const RunResult r = run({"solve", "--set", "t=1e309"});
   EXPECT_EQ(r.exit_status, 2);

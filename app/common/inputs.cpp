@@ -1,6 +1,7 @@
 #include "app/common/inputs.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cctype>
 #include <cmath>
 #include <cstdint>
@@ -203,6 +204,41 @@ Preset resolve_inputs(const InputOptions& options) {
 
 StartInputs resolve_start_inputs(const InputOptions& options) {
   return resolve(options, true);
+}
+
+SweepAxis read_sweep_axis(const SweepAxisText& text) {
+  if (text.log && text.linear) {
+    throw InputError("--log and --linear exclude each other");
+  }
+  SweepAxis axis{.key = text.key,
+                 .steps = text.steps,
+                 .logarithmic = text.log || (!text.linear && natural_log_scale(text.key))};
+  const InputSpec* spec = find_input(text.key);
+  const std::array<std::pair<std::string_view, const std::string*>, 2> ends{
+      {{"--from", &text.from}, {"--to", &text.to}}};
+  // An unknown key leaves the ends as they are, for check_axis to name the key.
+  for (std::size_t i = 0; spec != nullptr && i < ends.size(); ++i) {
+    const auto& [option, typed] = ends[i];
+    const std::optional<double> value = parse_quantity(*spec, *typed);
+    if (!value) {
+      throw InputError(std::string(option) + " " + text.key + " = '" + detail::cut(*typed) + "'" +
+                       quantity_problem(*spec, *typed).value_or(" is not a number"));
+    }
+    (i == 0 ? axis.from : axis.to) = *value;
+  }
+  if (const std::optional<std::string> problem = check_axis(axis)) {
+    for (const auto& [option, typed] : ends) {
+      SweepAxis alone = axis;
+      alone.from = alone.to = option == ends[0].first ? axis.from : axis.to;
+      const std::optional<std::string> hint =
+          spec == nullptr ? std::nullopt : bare_number_hint(*spec, *typed);
+      if (hint && check_axis(alone)) {
+        throw InputError(*problem + " (" + *hint + ")");
+      }
+    }
+    throw InputError(*problem);
+  }
+  return axis;
 }
 
 Preset resolve_sweep_inputs(const InputOptions& options, const SweepAxis& axis) {

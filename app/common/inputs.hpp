@@ -76,6 +76,20 @@ struct StartInputs {
 // `refused`. A key or value that cannot be applied at all is an InputError as for --set.
 StartInputs resolve_start_inputs(const InputOptions& options);
 
+// A sweep's axis as `foldlab sweep` and `picture sweep` take it, --from and --to as typed.
+struct SweepAxisText {
+  std::string key;
+  std::string from;
+  std::string to;
+  int steps = 50;
+  bool log = false;
+  bool linear = false;
+};
+// The axis with its ends read as --set reads a value of the swept input (w from 100gsm, L from
+// 1.4m; a bare number is in the input's unit) and checked by check_axis, a refused end that was a
+// bare number with --set's hint. Throws InputError.
+SweepAxis read_sweep_axis(const SweepAxisText& text);
+
 // resolve_inputs for a sweep over `axis` (`foldlab sweep`, `picture sweep`): the inputs are judged
 // at the swept values, not at the preset's value of the swept input, which the sweep replaces
 // (d = 800 mm is refused at the preset's L = 1400 mm, not when L runs from 1000 to 3000 mm).
