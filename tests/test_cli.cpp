@@ -1059,6 +1059,40 @@ TEST_F(CliTest, MeasuredFoldDeeperThanTheClothHangsIsRefused) {
   EXPECT_EQ(back.exit_status, 0) << back.err;
 }
 
+// Refusals say what is wrong in words that agree with each other and name the option given.
+TEST_F(CliTest, MeasureAndPictureRefusalsSayWhatIsWrongAndWhose) {
+  const RunResult nothing = run({"measure"});
+  EXPECT_EQ(nothing.exit_status, 2);
+  EXPECT_TRUE(contains(nothing.err, "measure needs the folds, and none were given")) << nothing.err;
+  EXPECT_FALSE(contains(nothing.err, "not both")) << nothing.err;
+
+  const RunResult order = run({"measure", "--depths-mm", "100,200"});
+  EXPECT_EQ(order.exit_status, 2);
+  EXPECT_TRUE(contains(order.err, "the depths must be listed deepest first")) << order.err;
+  EXPECT_TRUE(contains(order.err, "depth 1 = 200 mm is not shallower than depth 0 = 100 mm"))
+      << order.err;
+
+  // A negative z_max and a zero one are refused in the same words.
+  const RunResult negative = run({"measure", "--depths-mm", "80,40", "--z-max-mm", "-1"});
+  const RunResult zero = run({"measure", "--depths-mm", "80,40", "--z-max-mm", "0"});
+  EXPECT_EQ(negative.exit_status, 2);
+  EXPECT_EQ(zero.exit_status, 2);
+  EXPECT_TRUE(contains(negative.err, "--z-max-mm -1 must be > 0")) << negative.err;
+  EXPECT_TRUE(contains(zero.err, "--z-max-mm 0 must be > 0")) << zero.err;
+
+  const fs::path png = dir_ / "ab.png";
+  const RunResult unknown =
+      run({"picture", "compare", "--size", "400x300", "--b-set", "zz=1", "--out", png.string()});
+  EXPECT_EQ(unknown.exit_status, 2);
+  EXPECT_TRUE(contains(unknown.err, "--b-set unknown key 'zz'")) << unknown.err;
+  EXPECT_FALSE(contains(unknown.err, "--set")) << unknown.err;
+  const RunResult range =
+      run({"picture", "compare", "--size", "400x300", "--b-set", "h=2e5", "--out", png.string()});
+  EXPECT_EQ(range.exit_status, 2);
+  EXPECT_TRUE(contains(range.err, "B's height h = 200,000 mm must be between")) << range.err;
+  EXPECT_FALSE(fs::exists(png));
+}
+
 // `measure` refuses a row that its own readers would refuse (Q above 100, z_max of 0), with or
 // without --append, and leaves the file as it was: every later append and calibration on it goes
 // on working.
@@ -1078,7 +1112,8 @@ TEST_F(CliTest, MeasureNeverWritesARowItsReadersRefuse) {
       }
       const RunResult r = run(args);
       EXPECT_EQ(r.exit_status, 2) << bad[1] << ": " << r.out;
-      EXPECT_TRUE(contains(r.err, "the measured row")) << r.err;
+      // A z_max of 0 is refused up front, in the words of the row's rule.
+      EXPECT_TRUE(contains(r.err, bad.size() > 2 ? "must be > 0" : "the measured row")) << r.err;
     }
   }
   EXPECT_EQ(read_file(rows), before);

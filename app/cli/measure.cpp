@@ -99,10 +99,13 @@ std::string number_text(const std::vector<double>& values) {
 bool by_depth(const Options& o) {
   const bool depths = !o.depths_mm.empty();
   const bool photo = !o.photo.empty() || !o.supports_px.empty() || !o.folds_px.empty();
-  if (depths == photo) {
-    throw InputError(
-        "measure needs either --depths-mm A0,A1,... or --photo FILE --supports-px "
-        "X1,Y1,X2,Y2 --folds-px Y0,Y1,..., not both");
+  const std::string either =
+      "--depths-mm A0,A1,... or --photo FILE --supports-px X1,Y1,X2,Y2 --folds-px Y0,Y1,...";
+  if (!depths && !photo) {
+    throw InputError("measure needs the folds, and none were given: " + either);
+  }
+  if (depths && photo) {
+    throw InputError("measure takes either " + either + ", not both");
   }
   if (photo) {
     for (const auto& [option, value] :
@@ -132,9 +135,10 @@ void check_name(const std::string& name) {
 }
 
 void check_z_max(const std::optional<double>& z_max_mm) {
-  if (z_max_mm && !(*z_max_mm >= 0.0 && std::isfinite(*z_max_mm))) {
+  // In the words of the rule a measurements file is read by, which refuses 0 too.
+  if (z_max_mm && !(*z_max_mm > 0.0 && std::isfinite(*z_max_mm))) {
     throw InputError("--z-max-mm " + detail::shortest_number(*z_max_mm) +
-                     ": an out-of-plane depth is a finite number >= 0");
+                     " must be > 0: an observed depth is compared by ratio");
   }
 }
 

@@ -43,10 +43,10 @@ std::vector<std::string> overrides(const InputOptions& options, bool with_link) 
 // The refusals, each with what a bare number meant when the value that set it was one and the
 // explorer shows the input in another unit: `w=150` is 150 N/mm², not the 150 g/m² of its slider.
 std::string refusals(const std::vector<ValidationIssue>& issues,
-                     const std::vector<std::string>& assignments) {
+                     const std::vector<std::string>& assignments, const std::string& whose = {}) {
   std::string out;
   for (const ValidationIssue& issue : issues) {
-    out += issue.message;
+    out += whose + issue.message;
     const InputSpec* spec = find_input_by_field(issue.field);
     for (auto it = assignments.rbegin(); spec != nullptr && it != assignments.rend(); ++it) {
       const std::size_t eq = it->find('=');
@@ -156,7 +156,7 @@ StartInputs resolve(const InputOptions& given, bool keep_refused, const SweepAxi
   for (const std::string& repeated : repeated_keys(options.link, "--link")) {
     problems += repeated + "\n";
   }
-  for (const std::string& repeated : repeated_keys(options.assignments, "--set")) {
+  for (const std::string& repeated : repeated_keys(options.assignments, options.set_option)) {
     problems += repeated + "\n";
   }
   Parameters scratch = start.preset.parameters;
@@ -164,7 +164,7 @@ StartInputs resolve(const InputOptions& given, bool keep_refused, const SweepAxi
     problems += "--link " + error + "\n";
   }
   for (const std::string& error : apply_assignments(scratch, overrides(options, false))) {
-    problems += "--set " + error + "\n";
+    problems += options.set_option + " " + error + "\n";
   }
   Parameters all = start.preset.parameters;
   apply_assignments(all, overrides(options, true));
@@ -191,7 +191,7 @@ StartInputs resolve(const InputOptions& given, bool keep_refused, const SweepAxi
     finish(start);
     return start;
   }
-  problems += refusals(issues, overrides(options, true));
+  problems += refusals(issues, overrides(options, true), options.whose);
   problems.pop_back();  // the final newline
   throw InputError(problems);
 }

@@ -53,6 +53,11 @@ struct InputOptions {
   // rather than stopping the start, since whoever opened a shared link has no command line to
   // correct. A command line's link stays strict.
   bool forgiving_link = false;
+  // How messages name the option `assignments` came from, and whose inputs are refused, for a
+  // second fabric beside the first (picture compare's B: "--b-set", "B's "), so that a refusal
+  // never points at the first fabric's --set.
+  std::string set_option = "--set";
+  std::string whose{};
 };
 
 // The preset with the overrides applied and validated. Throws InputError listing every problem.

@@ -318,8 +318,14 @@ std::optional<PinnedFabric> picture_b(const PictureOptions& options, PictureView
   }
   const app::InputOptions& a = options.scene.run.inputs;
   const std::string path = options.b_preset.empty() ? a.preset_path : options.b_preset;
+  const app::InputOptions b{.preset_path = path,
+                            .assignments = options.b_sets,
+                            .method = a.method,
+                            .law = a.law,
+                            .set_option = "--b-set",
+                            .whose = "B's "};
   const Preset origin = app::resolve_inputs(app::InputOptions{path, {}, a.method, a.law});
-  Preset fabric = app::resolve_inputs(app::InputOptions{path, options.b_sets, a.method, a.law});
+  Preset fabric = app::resolve_inputs(b);
   if (fabric.parameters != origin.parameters) {
     fabric.name += " (edited)";
   }
