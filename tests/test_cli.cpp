@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
+#include <csignal>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
@@ -1179,6 +1180,50 @@ TEST_F(CliTest, NamesReachTheTerminalSpeltOutNeverAsEscapes) {
   const RunResult two_lines = run({"measure", "--depths-mm", "80,40", "--name", "A\nB"});
   EXPECT_EQ(two_lines.exit_status, 2) << two_lines.err;
   EXPECT_TRUE(contains(two_lines.err, "A\\x0aB")) << two_lines.err;
+}
+
+// An export stopped by SIGTERM or SIGINT while it writes removes its temporary, 100 MB for a
+// 1024 x 1024 OBJ, and leaves no file under the target's name: nothing was written.
+TEST_F(CliTest, AnExportInterruptedWhileItWritesLeavesNoTemporary) {
+  for (const int number : {SIGTERM, SIGINT}) {
+    const fs::path obj = dir_ / "k.obj";
+    const pid_t pid = ::fork();
+    ASSERT_GE(pid, 0);
+    if (pid == 0) {
+      const int null = ::open("/dev/null", O_WRONLY);
+      ::dup2(null, STDOUT_FILENO);
+      ::dup2(null, STDERR_FILENO);
+      ::unsetenv("DISPLAY");
+      ::unsetenv("WAYLAND_DISPLAY");
+      ::execl(kExecutable.c_str(), kExecutable.c_str(), "export", "--obj", obj.c_str(), "--grid",
+              "1024x1024", static_cast<char*>(nullptr));
+      ::_exit(127);
+    }
+    const auto temporaries = [&] {
+      int count = 0;
+      for (const std::string& name : entries()) {
+        count += contains(name, ".tmp.") ? 1 : 0;
+      }
+      return count;
+    };
+    // Polled until the temporary appears: the signal must come while the file is written.
+    bool writing = false;
+    int status = 0;
+    bool exited = false;
+    while (!writing && !exited) {
+      writing = temporaries() > 0;
+      if (!writing) {
+        exited = ::waitpid(pid, &status, WNOHANG) == pid;
+        ::usleep(500);
+      }
+    }
+    ASSERT_TRUE(writing) << "the export finished before a temporary was seen";
+    ASSERT_EQ(::kill(pid, number), 0);
+    ASSERT_EQ(::waitpid(pid, &status, 0), pid);
+    EXPECT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == number) << status;
+    EXPECT_EQ(temporaries(), 0) << number;
+    EXPECT_FALSE(fs::exists(obj)) << number;
+  }
 }
 
 // An output that exists and that the user could not open for writing is refused (exit 1), not

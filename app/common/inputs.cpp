@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <iostream>
 
+#include "app/common/interrupt.hpp"
 #include "core/io/io.hpp"
 #include "core/model/settings.hpp"
 #include "core/model/text_format.hpp"
@@ -373,6 +374,8 @@ void add_law_option(CLI::App& command, std::string& law) {
 }
 
 int guarded(const std::function<int()>& body) {
+  // Every command may write a file: one stopped while it writes leaves no temporary behind.
+  remove_temporaries_when_interrupted();
   // Messages quote paths, values and names as given: printed through escaped_lines().
   const auto say = [](const char* prefix, const char* what) {
     std::cerr << prefix << detail::escaped_lines(what) << "\n";

@@ -149,6 +149,8 @@ void add_law_option(CLI::App& command, std::string& law);
 
 // Runs a command's body: InputError and PresetError give exit 2, EnvironmentError and WriteError
 // exit 1 with their message, anything else exit 1 as an internal error; messages go to stderr.
+// SIGINT and SIGTERM remove the temporaries of files being written before they stop it
+// (app/common/interrupt.hpp).
 int guarded(const std::function<int()>& body);
 
 }  // namespace foldlab::app
