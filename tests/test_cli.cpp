@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
+#include <csignal>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
@@ -290,6 +291,28 @@ TEST_F(CliTest, NoArgumentsWithoutADisplayPrintsTheTable) {
   EXPECT_TRUE(contains(r.out, "z_max")) << r.out;
   EXPECT_TRUE(contains(r.out, "mm")) << r.out;
   EXPECT_TRUE(contains(r.out, kDefaultPresetName)) << r.out;
+}
+
+// A preset's name may state its values ("h = 1400 mm"): once --set changes them, the header, the
+// OBJ's comment and compare's rows say the values solved after it, not only the preset's.
+TEST_F(CliTest, ReportsNameTheInputsSolvedNotOnlyThePresets) {
+  const RunResult solved = run({"solve", "--set", "h=5"});
+  ASSERT_EQ(solved.exit_status, 0) << solved.err;
+  const std::string header = split_lines(solved.out).at(0);
+  EXPECT_TRUE(contains(header, kDefaultPresetName + " (edited: h = 5 mm)")) << header;
+
+  const fs::path obj = dir_ / "k.obj";
+  ASSERT_EQ(run({"export", "--set", "h=1.2m", "--obj", obj.string()}).exit_status, 0);
+  const std::string comment = split_lines(read_file(obj)).at(0);
+  EXPECT_TRUE(contains(comment, "(edited: h = 1200 mm)")) << comment;
+
+  const RunResult compared = run({"compare", "--preset", kH900, "--set", "h=950"});
+  ASSERT_EQ(compared.exit_status, 0) << compared.err;
+  EXPECT_TRUE(contains(compared.out, "(edited: h = 950 mm)")) << compared.out;
+
+  // Without overrides the name is the preset's alone.
+  const RunResult plain = run({"solve"});
+  EXPECT_FALSE(contains(plain.out, "(edited")) << plain.out;
 }
 
 TEST_F(CliTest, SolveTableAndJsonAgreeOnN) {
@@ -897,6 +920,80 @@ TEST_F(CliTest, SweepPastTheValidRangeSaysWhyOnceAndAllRefusedIsInvalidInput) {
   EXPECT_TRUE(all.out.empty()) << all.out;
 }
 
+// picture sweep draws what sweep solves: a range sweep refuses is refused there in the same words,
+// before anything is drawn.
+TEST_F(CliTest, PictureSweepRefusesWhatSweepRefuses) {
+  const RunResult swept = run({"sweep", "--param", "d", "--from", "700", "--to", "900"});
+  ASSERT_EQ(swept.exit_status, 2);
+  const fs::path png = dir_ / "x.png";
+  const RunResult drawn = run({"picture", "sweep", "--size", "800x600", "--param", "d", "--from",
+                               "700", "--to", "900", "--out", png.string()});
+  EXPECT_EQ(drawn.exit_status, 2) << drawn.err;
+  EXPECT_TRUE(contains(drawn.err,
+                       "no value of the range is valid given the other inputs; at d = "
+                       "700"))
+      << drawn.err;
+  EXPECT_EQ(drawn.err, swept.err);
+  EXPECT_FALSE(fs::exists(png));
+}
+
+// The other inputs are judged at the swept values: d = 800 mm needs L above 1600 mm, which the
+// preset's L = 1400 mm is not but most of the swept L are.
+TEST_F(CliTest, SweepJudgesTheOtherInputsAtTheSweptValues) {
+  const RunResult r = run({"sweep", "--set", "d=800", "--param", "L", "--from", "1000", "--to",
+                           "3000", "--steps", "5", "--csv"});
+  ASSERT_EQ(r.exit_status, 0) << r.err;
+  const std::vector<std::string> lines = split_lines(r.out);
+  ASSERT_EQ(lines.size(), 6u) << r.out;
+  EXPECT_EQ(lines[1], "1000,,,,invalid,");
+  EXPECT_EQ(lines[2], "1500,,,,invalid,");
+  for (std::size_t i = 3; i < lines.size(); ++i) {
+    EXPECT_FALSE(contains(lines[i], "invalid")) << lines[i];
+  }
+  EXPECT_TRUE(contains(r.err, "2 of 5 values are refused")) << r.err;
+  EXPECT_TRUE(contains(r.err, "L = 1000")) << r.err;
+  // No swept L leaves room for d: refused, at the swept values rather than the preset's L.
+  const RunResult none =
+      run({"sweep", "--set", "d=800", "--param", "L", "--from", "1000", "--to", "1500"});
+  EXPECT_EQ(none.exit_status, 2);
+  EXPECT_TRUE(contains(none.err,
+                       "no value of the range is valid given the other inputs; at L = "
+                       "1000"))
+      << none.err;
+  EXPECT_FALSE(contains(none.err, "700 mm")) << none.err;
+}
+
+// --from and --to read a value as --set reads one of the swept input: with its unit, and a bare
+// weight with --set's hint.
+TEST_F(CliTest, SweepEndsAreReadWithTheirUnitsAsSetReadsThem) {
+  const RunResult r = run(
+      {"sweep", "--param", "w", "--from", "100gsm", "--to", "300 g/m2", "--steps", "2", "--csv"});
+  ASSERT_EQ(r.exit_status, 0) << r.err;
+  const std::vector<std::string> lines = split_lines(r.out);
+  ASSERT_EQ(lines.size(), 3u) << r.out;
+  EXPECT_TRUE(starts_with(lines[1], "9.81e-07,")) << lines[1];
+  EXPECT_TRUE(starts_with(lines[2], "2.943e-06,")) << lines[2];
+  const RunResult metres =
+      run({"sweep", "--param", "L", "--from", "1m", "--to", "2m", "--steps", "2", "--csv"});
+  ASSERT_EQ(metres.exit_status, 0) << metres.err;
+  EXPECT_TRUE(starts_with(split_lines(metres.out).at(1), "1000,")) << metres.out;
+
+  const RunResult bare = run({"sweep", "--param", "w", "--from", "100", "--to", "300"});
+  EXPECT_EQ(bare.exit_status, 2);
+  EXPECT_TRUE(contains(bare.err,
+                       "a bare number for w is read in N/mm²; for 100 g/m² write "
+                       "w=100gsm"))
+      << bare.err;
+  const RunResult mega = run({"sweep", "--param", "L", "--from", "1.4M", "--to", "2m"});
+  EXPECT_EQ(mega.exit_status, 2);
+  EXPECT_TRUE(contains(mega.err, "--from L = '1.4M': 'M' is not a unit of length")) << mega.err;
+  // picture sweep reads them the same way.
+  const RunResult picture = run({"picture", "sweep", "--size", "400x300", "--param", "w", "--from",
+                                 "100", "--to", "300", "--out", (dir_ / "w.png").string()});
+  EXPECT_EQ(picture.exit_status, 2);
+  EXPECT_EQ(picture.err, bare.err);
+}
+
 TEST_F(CliTest, OverflowingNumberIsNamedAsSuch) {
   const RunResult r = run({"solve", "--set", "t=1e309"});
   EXPECT_EQ(r.exit_status, 2);
@@ -945,6 +1042,58 @@ TEST_F(CliTest, MeasuredDepthBeyondHalfTheUpperEdgeIsRefused) {
   EXPECT_EQ(fine.exit_status, 0) << fine.err;
 }
 
+// A fold depth is bounded as z_max is, by how far the cloth hangs: its lower boundary at the
+// centre, a_0 = 1.01 h (1414 mm for the default h = 1400 mm), which solve's own a_0 stays within.
+TEST_F(CliTest, MeasuredFoldDeeperThanTheClothHangsIsRefused) {
+  const RunResult deep = run({"measure", "--depths-mm", "90000,60000"});
+  EXPECT_EQ(deep.exit_status, 2) << deep.out;
+  EXPECT_TRUE(contains(deep.err,
+                       "--depths-mm: depth 0 = 90000 mm is deeper than the cloth's "
+                       "lower boundary at the centre, 1.01 h = 1414 mm at h = 1400 mm"))
+      << deep.err;
+  EXPECT_TRUE(contains(run({"measure", "--depths-mm", "1415,700"}).err, "depth 0 = 1415 mm"));
+  const json solved = solve_json({});
+  const double a0 = solved.at("a_mm").at(0).get<double>();
+  char first[32];
+  std::snprintf(first, sizeof first, "%.17g", a0);
+  const RunResult back = run({"measure", "--depths-mm", std::string(first) + ",700"});
+  EXPECT_EQ(back.exit_status, 0) << back.err;
+}
+
+// Refusals say what is wrong in words that agree with each other and name the option given.
+TEST_F(CliTest, MeasureAndPictureRefusalsSayWhatIsWrongAndWhose) {
+  const RunResult nothing = run({"measure"});
+  EXPECT_EQ(nothing.exit_status, 2);
+  EXPECT_TRUE(contains(nothing.err, "measure needs the folds, and none were given")) << nothing.err;
+  EXPECT_FALSE(contains(nothing.err, "not both")) << nothing.err;
+
+  const RunResult order = run({"measure", "--depths-mm", "100,200"});
+  EXPECT_EQ(order.exit_status, 2);
+  EXPECT_TRUE(contains(order.err, "the depths must be listed deepest first")) << order.err;
+  EXPECT_TRUE(contains(order.err, "depth 1 = 200 mm is not shallower than depth 0 = 100 mm"))
+      << order.err;
+
+  // A negative z_max and a zero one are refused in the same words.
+  const RunResult negative = run({"measure", "--depths-mm", "80,40", "--z-max-mm", "-1"});
+  const RunResult zero = run({"measure", "--depths-mm", "80,40", "--z-max-mm", "0"});
+  EXPECT_EQ(negative.exit_status, 2);
+  EXPECT_EQ(zero.exit_status, 2);
+  EXPECT_TRUE(contains(negative.err, "--z-max-mm -1 must be > 0")) << negative.err;
+  EXPECT_TRUE(contains(zero.err, "--z-max-mm 0 must be > 0")) << zero.err;
+
+  const fs::path png = dir_ / "ab.png";
+  const RunResult unknown =
+      run({"picture", "compare", "--size", "400x300", "--b-set", "zz=1", "--out", png.string()});
+  EXPECT_EQ(unknown.exit_status, 2);
+  EXPECT_TRUE(contains(unknown.err, "--b-set unknown key 'zz'")) << unknown.err;
+  EXPECT_FALSE(contains(unknown.err, "--set")) << unknown.err;
+  const RunResult range =
+      run({"picture", "compare", "--size", "400x300", "--b-set", "h=2e5", "--out", png.string()});
+  EXPECT_EQ(range.exit_status, 2);
+  EXPECT_TRUE(contains(range.err, "B's height h = 200,000 mm must be between")) << range.err;
+  EXPECT_FALSE(fs::exists(png));
+}
+
 // `measure` refuses a row that its own readers would refuse (Q above 100, z_max of 0), with or
 // without --append, and leaves the file as it was: every later append and calibration on it goes
 // on working.
@@ -954,7 +1103,7 @@ TEST_F(CliTest, MeasureNeverWritesARowItsReadersRefuse) {
             0);
   const std::string before = read_file(rows);
   for (const std::vector<std::string>& bad :
-       {std::vector<std::string>{"--depths-mm", "100000,0.001"},
+       {std::vector<std::string>{"--depths-mm", "1000,0.001"},
         std::vector<std::string>{"--depths-mm", "80,40,20,10", "--z-max-mm", "0"}}) {
     for (const bool append : {false, true}) {
       std::vector<std::string> args = {"measure"};
@@ -964,7 +1113,8 @@ TEST_F(CliTest, MeasureNeverWritesARowItsReadersRefuse) {
       }
       const RunResult r = run(args);
       EXPECT_EQ(r.exit_status, 2) << bad[1] << ": " << r.out;
-      EXPECT_TRUE(contains(r.err, "the measured row")) << r.err;
+      // A z_max of 0 is refused up front, in the words of the row's rule.
+      EXPECT_TRUE(contains(r.err, bad.size() > 2 ? "must be > 0" : "the measured row")) << r.err;
     }
   }
   EXPECT_EQ(read_file(rows), before);
@@ -1030,6 +1180,50 @@ TEST_F(CliTest, NamesReachTheTerminalSpeltOutNeverAsEscapes) {
   const RunResult two_lines = run({"measure", "--depths-mm", "80,40", "--name", "A\nB"});
   EXPECT_EQ(two_lines.exit_status, 2) << two_lines.err;
   EXPECT_TRUE(contains(two_lines.err, "A\\x0aB")) << two_lines.err;
+}
+
+// An export stopped by SIGTERM or SIGINT while it writes removes its temporary, 100 MB for a
+// 1024 x 1024 OBJ, and leaves no file under the target's name: nothing was written.
+TEST_F(CliTest, AnExportInterruptedWhileItWritesLeavesNoTemporary) {
+  for (const int number : {SIGTERM, SIGINT}) {
+    const fs::path obj = dir_ / "k.obj";
+    const pid_t pid = ::fork();
+    ASSERT_GE(pid, 0);
+    if (pid == 0) {
+      const int null = ::open("/dev/null", O_WRONLY);
+      ::dup2(null, STDOUT_FILENO);
+      ::dup2(null, STDERR_FILENO);
+      ::unsetenv("DISPLAY");
+      ::unsetenv("WAYLAND_DISPLAY");
+      ::execl(kExecutable.c_str(), kExecutable.c_str(), "export", "--obj", obj.c_str(), "--grid",
+              "1024x1024", static_cast<char*>(nullptr));
+      ::_exit(127);
+    }
+    const auto temporaries = [&] {
+      int count = 0;
+      for (const std::string& name : entries()) {
+        count += contains(name, ".tmp.") ? 1 : 0;
+      }
+      return count;
+    };
+    // Polled until the temporary appears: the signal must come while the file is written.
+    bool writing = false;
+    int status = 0;
+    bool exited = false;
+    while (!writing && !exited) {
+      writing = temporaries() > 0;
+      if (!writing) {
+        exited = ::waitpid(pid, &status, WNOHANG) == pid;
+        ::usleep(500);
+      }
+    }
+    ASSERT_TRUE(writing) << "the export finished before a temporary was seen";
+    ASSERT_EQ(::kill(pid, number), 0);
+    ASSERT_EQ(::waitpid(pid, &status, 0), pid);
+    EXPECT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == number) << status;
+    EXPECT_EQ(temporaries(), 0) << number;
+    EXPECT_FALSE(fs::exists(obj)) << number;
+  }
 }
 
 // An output that exists and that the user could not open for writing is refused (exit 1), not

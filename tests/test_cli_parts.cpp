@@ -115,8 +115,8 @@ TEST_F(CliPartsTest, SweepRunCountsTheValuesTheOtherInputsRefuse) {
   sweep_command::Options options;
   options.inputs.assignments = {"L=1400"};
   options.axis.key = "d";
-  options.axis.from = 300;
-  options.axis.to = 800;
+  options.axis.from = "300";
+  options.axis.to = "800";
   options.axis.steps = 6;  // d = 300, 400, ..., 800; d must stay below L/2 = 700
   sweep_command::Result result;
   EXPECT_EQ(printed_by([&] { result = sweep_command::run(options); }), "");

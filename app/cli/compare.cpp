@@ -142,7 +142,8 @@ void declare(CLI::App& app, Options& options) {
 Result run(const Options& options) {
   Result result;
   for (const std::string& path : preset_paths(options)) {
-    const Preset preset = resolve_inputs({path, options.assignments, "", options.law});
+    const app::InputOptions inputs{path, options.assignments, "", options.law};
+    const Preset preset = resolve_inputs(inputs);
     const PublishedResult& pub = preset.published;
     if (!pub.n && !pub.z_max_mm && !pub.Q) {
       continue;
@@ -152,7 +153,7 @@ Result run(const Options& options) {
       p.model.method = kMethods[m];
       result.rows[m].push_back(compare_with_published(pub, p));
     }
-    result.names.push_back(preset.name);
+    result.names.push_back(app::solved_name(preset, inputs));
   }
   if (result.names.empty()) {
     throw InputError("none of the presets carries published results");

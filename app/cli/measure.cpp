@@ -16,6 +16,7 @@
 #include "core/io/image.hpp"
 #include "core/io/measurements.hpp"
 #include "core/model/settings.hpp"
+#include "core/model/solver.hpp"
 #include "core/model/text_format.hpp"
 
 namespace foldlab::cli {
@@ -98,10 +99,13 @@ std::string number_text(const std::vector<double>& values) {
 bool by_depth(const Options& o) {
   const bool depths = !o.depths_mm.empty();
   const bool photo = !o.photo.empty() || !o.supports_px.empty() || !o.folds_px.empty();
-  if (depths == photo) {
-    throw InputError(
-        "measure needs either --depths-mm A0,A1,... or --photo FILE --supports-px "
-        "X1,Y1,X2,Y2 --folds-px Y0,Y1,..., not both");
+  const std::string either =
+      "--depths-mm A0,A1,... or --photo FILE --supports-px X1,Y1,X2,Y2 --folds-px Y0,Y1,...";
+  if (!depths && !photo) {
+    throw InputError("measure needs the folds, and none were given: " + either);
+  }
+  if (depths && photo) {
+    throw InputError("measure takes either " + either + ", not both");
   }
   if (photo) {
     for (const auto& [option, value] :
@@ -131,20 +135,46 @@ void check_name(const std::string& name) {
 }
 
 void check_z_max(const std::optional<double>& z_max_mm) {
-  if (z_max_mm && !(*z_max_mm >= 0.0 && std::isfinite(*z_max_mm))) {
+  // In the words of the rule a measurements file is read by, which refuses 0 too.
+  if (z_max_mm && !(*z_max_mm > 0.0 && std::isfinite(*z_max_mm))) {
     throw InputError("--z-max-mm " + detail::shortest_number(*z_max_mm) +
-                     ": an out-of-plane depth is a finite number >= 0");
+                     " must be > 0: an observed depth is compared by ratio");
+  }
+}
+
+// A depth beyond what the cloth can hang to (`reach_mm`, said as `reach` with its value) is a
+// typing error (a unit off, say), not a measurement: the z_max and the folds' depths alike.
+void check_reach(const std::string& what, double depth_mm, double reach_mm,
+                 const std::string& reach) {
+  if (depth_mm > reach_mm) {
+    throw InputError(what + " is deeper than " + reach + ", which no fold of this cloth can reach");
   }
 }
 
 // The upper edge is held at its supports, so no point of it lies further than half its length L
-// from them: a deeper fold is a typing error (a unit off, say), not a measurement.
+// from them.
 void check_z_max_reach(const std::optional<double>& z_max_mm, const Parameters& p) {
-  if (z_max_mm && *z_max_mm > 0.5 * p.hanging.length_mm) {
-    throw InputError("--z-max-mm " + detail::shortest_number(*z_max_mm) +
-                     " is deeper than half the upper edge, L/2 = " +
-                     detail::shortest_number(0.5 * p.hanging.length_mm) +
-                     " mm, which no fold of this cloth can reach");
+  const double half_mm = 0.5 * p.hanging.length_mm;
+  if (z_max_mm) {
+    check_reach("--z-max-mm " + detail::shortest_number(*z_max_mm), *z_max_mm, half_mm,
+                "half the upper edge, L/2 = " + detail::shortest_number(half_mm) + " mm");
+  }
+}
+
+// The centre line hangs from the supports' line down to the cloth's lower boundary, which the
+// model puts at a_0 = 1.01 h: a fold below it is not on this cloth. The bound is the model's, so
+// that the amplitudes `solve` prints are accepted back.
+void check_depths_reach(const std::string& option, const std::vector<double>& depths_mm,
+                        const Parameters& p) {
+  const double boundary_mm = kLowerBoundaryFactor * p.hanging.height_mm;
+  const std::string reach = "the cloth's lower boundary at the centre, " +
+                            detail::shortest_number(kLowerBoundaryFactor) +
+                            " h = " + detail::shortest_number(boundary_mm) +
+                            " mm at h = " + detail::shortest_number(p.hanging.height_mm) + " mm";
+  for (std::size_t i = 0; i < depths_mm.size(); ++i) {
+    check_reach(option + ": depth " + std::to_string(i) + " = " +
+                    detail::shortest_number(depths_mm[i]) + " mm",
+                depths_mm[i], boundary_mm, reach);
   }
 }
 
@@ -237,6 +267,7 @@ Result run(const Options& options) {
   } catch (const FoldMeasurementError& e) {
     throw InputError(std::string(depths ? "--depths-mm" : "--folds-px") + ": " + e.what());
   }
+  check_depths_reach(depths ? "--depths-mm" : "--folds-px", depths_mm, p);
   check_distinct_files({{"--append", options.append_path}},
                        {{"--preset", options.preset_path}, {"--photo", options.photo}});
   app::check_output_extension("--append", options.append_path, {".csv", ".json"},

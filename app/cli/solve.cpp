@@ -20,6 +20,7 @@ void declare(CLI::App& app, Options& options) {
 
 Result run(const Options& options) {
   Preset preset = resolve_inputs(options.inputs);
+  preset.name = app::solved_name(preset, options.inputs);
   Scene scene(preset.parameters);
   Solution solution = scene.solution();
   ModelStanding standing = model_standing(preset.parameters, preset.calibration);

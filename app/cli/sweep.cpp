@@ -13,18 +13,6 @@ namespace {
 
 using detail::printf_string;
 
-SweepAxis checked_axis(const Options& options) {
-  SweepAxis axis = options.axis;
-  if (options.log && options.linear) {
-    throw InputError("--log and --linear exclude each other");
-  }
-  axis.logarithmic = options.log || (!options.linear && natural_log_scale(axis.key));
-  if (auto problem = check_axis(axis)) {
-    throw InputError(*problem);
-  }
-  return axis;
-}
-
 // "d = 700: d_mm = 700 must be in [0, 700): ...": why the other inputs refuse `value`.
 std::string refusal(const Parameters& base, const std::string& key, double value) {
   Parameters at = base;
@@ -60,20 +48,23 @@ void declare(CLI::App& app, Options& options) {
       ->add_option("--param", options.axis.key,
                    "the input to sweep: " + detail::join_comma(sweepable_keys()))
       ->required();
-  command->add_option("--from", options.axis.from, "first value (its unit: mm, MPa, N/mm²)")
+  command
+      ->add_option("--from", options.axis.from,
+                   "first value, in the input's unit or with a unit as --set takes it (w=150gsm: "
+                   "--from 150gsm)")
       ->required();
-  command->add_option("--to", options.axis.to, "last value")->required();
+  command->add_option("--to", options.axis.to, "last value, as --from")->required();
   command->add_option("--steps", options.axis.steps, "number of values (default 50)")
       ->transform(app::whole_number_in(2, kMaxSweepSteps));
-  command->add_flag("--log", options.log, "logarithmic spacing (default for t, E, w, K)");
-  command->add_flag("--linear", options.linear, "linear spacing (default for h, L, d, nu)");
+  command->add_flag("--log", options.axis.log, "logarithmic spacing (default for t, E, w, K)");
+  command->add_flag("--linear", options.axis.linear, "linear spacing (default for h, L, d, nu)");
   command->add_flag("--csv", options.csv, "CSV instead of a table");
 }
 
 Result run(const Options& options) {
   Result result;
-  result.axis = checked_axis(options);
-  const Preset preset = resolve_inputs(options.inputs);
+  result.axis = app::read_sweep_axis(options.axis);
+  const Preset preset = app::resolve_sweep_inputs(options.inputs, result.axis);
   result.points = sweep(preset.parameters, result.axis);
   // Checked before the first row goes out, so that a bad row never leaves half a table.
   for (const SweepPoint& p : result.points) {
@@ -82,16 +73,12 @@ Result run(const Options& options) {
     detail::finite_or_throw(p.z_max_mm, "z_max_mm");
   }
   // A range may run past what the other inputs allow (d up to L/2, say): those rows say
-  // "invalid" and the reason is given once; a range with no valid value is an input error.
+  // "invalid" and the reason is given once (resolve_sweep_inputs refused a range with none).
   for (const SweepPoint& p : result.points) {
     if (!p.valid && result.refused++ == 0) {
       result.first_reason = refusal(preset.parameters, result.axis.key, p.value);
     }
     result.capped += p.valid && p.n_capped ? 1 : 0;
-  }
-  if (result.refused == static_cast<int>(result.points.size())) {
-    throw InputError("no value of the range is valid given the other inputs; at " +
-                     result.first_reason);
   }
   result.notes = notes(result);
   return result;

@@ -14,11 +14,8 @@ namespace foldlab::cli::sweep_command {
 
 struct Options {
   app::InputOptions inputs;
-  SweepAxis axis{.key = "",
-                 .steps = 50};  // logarithmic: from --log, --linear or the key's natural scale
+  app::SweepAxisText axis;
   bool csv = false;
-  bool log = false;
-  bool linear = false;
 };
 
 // The explorer's Sweep tab shows the same points (core's sweep()).

@@ -1,12 +1,14 @@
 #include "app/common/inputs.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cctype>
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
 #include <iostream>
 
+#include "app/common/interrupt.hpp"
 #include "core/io/io.hpp"
 #include "core/model/settings.hpp"
 #include "core/model/text_format.hpp"
@@ -42,10 +44,10 @@ std::vector<std::string> overrides(const InputOptions& options, bool with_link) 
 // The refusals, each with what a bare number meant when the value that set it was one and the
 // explorer shows the input in another unit: `w=150` is 150 N/mm², not the 150 g/m² of its slider.
 std::string refusals(const std::vector<ValidationIssue>& issues,
-                     const std::vector<std::string>& assignments) {
+                     const std::vector<std::string>& assignments, const std::string& whose = {}) {
   std::string out;
   for (const ValidationIssue& issue : issues) {
-    out += issue.message;
+    out += whose + issue.message;
     const InputSpec* spec = find_input_by_field(issue.field);
     for (auto it = assignments.rbegin(); spec != nullptr && it != assignments.rend(); ++it) {
       const std::size_t eq = it->find('=');
@@ -94,13 +96,36 @@ std::string link_note(const std::string& piece, const std::string& reason, const
   return reason + ", so " + key + " is " + (as_preset ? "the preset's " : "") + value;
 }
 
-StartInputs resolve(const InputOptions& given, bool keep_refused) {
-  StartInputs start;
+Preset load(const std::string& preset_path) {
   try {
-    start.preset = given.preset_path.empty() ? default_preset() : load_preset(given.preset_path);
+    return preset_path.empty() ? default_preset() : load_preset(preset_path);
   } catch (const PresetError& e) {
     throw InputError(e.what());
   }
+}
+
+// The inputs of a sweep, judged along its range: `all` where it is valid itself, else with the
+// swept input at the first value the others accept; a range with none is refused.
+Parameters judged_along(const Parameters& all, const SweepAxis& axis,
+                        const std::vector<std::string>& assignments) {
+  for (int i = 0; i < axis.steps; ++i) {
+    Parameters at = all;
+    set_number(at, axis.key, axis.value(i));
+    if (validate(at).empty()) {
+      return validate(all).empty() ? all : at;
+    }
+  }
+  Parameters first = all;
+  set_number(first, axis.key, axis.from);
+  std::string reasons = refusals(validate(first), assignments);
+  reasons.pop_back();  // the final newline
+  throw InputError("no value of the range is valid given the other inputs; at " + axis.key + " = " +
+                   detail::shortest_number(axis.from) + ": " + reasons);
+}
+
+StartInputs resolve(const InputOptions& given, bool keep_refused, const SweepAxis* axis = nullptr) {
+  StartInputs start;
+  start.preset = load(given.preset_path);
   InputOptions options = given;
   // Left out before anything is applied: a piece that cannot be read says nothing of the fabric.
   std::vector<std::pair<std::string, std::string>> left_out;  // the piece, why
@@ -132,7 +157,7 @@ StartInputs resolve(const InputOptions& given, bool keep_refused) {
   for (const std::string& repeated : repeated_keys(options.link, "--link")) {
     problems += repeated + "\n";
   }
-  for (const std::string& repeated : repeated_keys(options.assignments, "--set")) {
+  for (const std::string& repeated : repeated_keys(options.assignments, options.set_option)) {
     problems += repeated + "\n";
   }
   Parameters scratch = start.preset.parameters;
@@ -140,7 +165,7 @@ StartInputs resolve(const InputOptions& given, bool keep_refused) {
     problems += "--link " + error + "\n";
   }
   for (const std::string& error : apply_assignments(scratch, overrides(options, false))) {
-    problems += "--set " + error + "\n";
+    problems += options.set_option + " " + error + "\n";
   }
   Parameters all = start.preset.parameters;
   apply_assignments(all, overrides(options, true));
@@ -151,6 +176,10 @@ StartInputs resolve(const InputOptions& given, bool keep_refused) {
   start.origin.parameters = origin_valid ? without_link : all;
   // Range problems as well: a value that did not parse left the preset's (valid) value in place,
   // so every range problem reported is a real one.
+  if (axis != nullptr && problems.empty()) {
+    start.preset.parameters = judged_along(all, *axis, overrides(options, true));
+    return start;
+  }
   const std::vector<ValidationIssue> issues = validate(all);
   if (problems.empty() && issues.empty()) {
     start.preset.parameters = all;
@@ -163,7 +192,7 @@ StartInputs resolve(const InputOptions& given, bool keep_refused) {
     finish(start);
     return start;
   }
-  problems += refusals(issues, overrides(options, true));
+  problems += refusals(issues, overrides(options, true), options.whose);
   problems.pop_back();  // the final newline
   throw InputError(problems);
 }
@@ -176,6 +205,65 @@ Preset resolve_inputs(const InputOptions& options) {
 
 StartInputs resolve_start_inputs(const InputOptions& options) {
   return resolve(options, true);
+}
+
+SweepAxis read_sweep_axis(const SweepAxisText& text) {
+  if (text.log && text.linear) {
+    throw InputError("--log and --linear exclude each other");
+  }
+  SweepAxis axis{.key = text.key,
+                 .steps = text.steps,
+                 .logarithmic = text.log || (!text.linear && natural_log_scale(text.key))};
+  const InputSpec* spec = find_input(text.key);
+  const std::array<std::pair<std::string_view, const std::string*>, 2> ends{
+      {{"--from", &text.from}, {"--to", &text.to}}};
+  // An unknown key leaves the ends as they are, for check_axis to name the key.
+  for (std::size_t i = 0; spec != nullptr && i < ends.size(); ++i) {
+    const auto& [option, typed] = ends[i];
+    const std::optional<double> value = parse_quantity(*spec, *typed);
+    if (!value) {
+      throw InputError(std::string(option) + " " + text.key + " = '" + detail::cut(*typed) + "'" +
+                       quantity_problem(*spec, *typed).value_or(" is not a number"));
+    }
+    (i == 0 ? axis.from : axis.to) = *value;
+  }
+  if (const std::optional<std::string> problem = check_axis(axis)) {
+    for (const auto& [option, typed] : ends) {
+      SweepAxis alone = axis;
+      alone.from = alone.to = option == ends[0].first ? axis.from : axis.to;
+      const std::optional<std::string> hint =
+          spec == nullptr ? std::nullopt : bare_number_hint(*spec, *typed);
+      if (hint && check_axis(alone)) {
+        throw InputError(*problem + " (" + *hint + ")");
+      }
+    }
+    throw InputError(*problem);
+  }
+  return axis;
+}
+
+Preset resolve_sweep_inputs(const InputOptions& options, const SweepAxis& axis) {
+  return resolve(options, false, &axis).preset;
+}
+
+std::string solved_name(const Preset& solved, const InputOptions& options) {
+  const Parameters loaded = load(options.preset_path).parameters;
+  std::vector<std::string> changed;
+  for (const InputSpec& spec : input_table()) {
+    const std::optional<double> now = spec.value(solved.parameters);
+    if (now) {
+      if (*now != spec.value(loaded)) {
+        changed.push_back(std::string(input_symbol(spec)) + " = " + shown_quantity(spec, *now));
+      }
+    } else if (spec.choice(solved.parameters) != spec.choice(loaded)) {
+      changed.push_back(std::string(spec.key) + " = " +
+                        std::string(spec.choice(solved.parameters)));
+    }
+  }
+  if (changed.empty()) {
+    return solved.name;
+  }
+  return solved.name + " (edited: " + detail::join_comma(changed) + ")";
 }
 
 void check_output_extension(std::string_view option, const std::string& path,
@@ -286,6 +374,8 @@ void add_law_option(CLI::App& command, std::string& law) {
 }
 
 int guarded(const std::function<int()>& body) {
+  // Every command may write a file: one stopped while it writes leaves no temporary behind.
+  remove_temporaries_when_interrupted();
   // Messages quote paths, values and names as given: printed through escaped_lines().
   const auto say = [](const char* prefix, const char* what) {
     std::cerr << prefix << detail::escaped_lines(what) << "\n";

@@ -13,6 +13,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "core/analysis/sweep.hpp"
 #include "core/io/preset.hpp"
 
 namespace foldlab::app {
@@ -52,6 +53,11 @@ struct InputOptions {
   // rather than stopping the start, since whoever opened a shared link has no command line to
   // correct. A command line's link stays strict.
   bool forgiving_link = false;
+  // How messages name the option `assignments` came from, and whose inputs are refused, for a
+  // second fabric beside the first (picture compare's B: "--b-set", "B's "), so that a refusal
+  // never points at the first fabric's --set.
+  std::string set_option = "--set";
+  std::string whose{};
 };
 
 // The preset with the overrides applied and validated. Throws InputError listing every problem.
@@ -74,6 +80,32 @@ struct StartInputs {
 // resolve_inputs, except that values the model refuses only with the link's are kept in
 // `refused`. A key or value that cannot be applied at all is an InputError as for --set.
 StartInputs resolve_start_inputs(const InputOptions& options);
+
+// A sweep's axis as `foldlab sweep` and `picture sweep` take it, --from and --to as typed.
+struct SweepAxisText {
+  std::string key;
+  std::string from;
+  std::string to;
+  int steps = 50;
+  bool log = false;
+  bool linear = false;
+};
+// The axis with its ends read as --set reads a value of the swept input (w from 100gsm, L from
+// 1.4m; a bare number is in the input's unit) and checked by check_axis, a refused end that was a
+// bare number with --set's hint. Throws InputError.
+SweepAxis read_sweep_axis(const SweepAxisText& text);
+
+// resolve_inputs for a sweep over `axis` (`foldlab sweep`, `picture sweep`): the inputs are judged
+// at the swept values, not at the preset's value of the swept input, which the sweep replaces
+// (d = 800 mm is refused at the preset's L = 1400 mm, not when L runs from 1000 to 3000 mm).
+// Throws InputError, naming the first value and why, when no value of the range is valid. When
+// the preset's own value is refused with the others, the preset holds the first valid one.
+Preset resolve_sweep_inputs(const InputOptions& options, const SweepAxis& axis);
+
+// The name a report gives the fabric it solved (`solved`, from resolve_inputs(options)): the
+// preset's, and when the overrides changed inputs, those inputs as solved after it, "Default: ...,
+// h = 1400 mm ... (edited: h = 5 mm)", since a preset's name may state values it no longer has.
+std::string solved_name(const Preset& solved, const InputOptions& options);
 
 // A file named on the command line by the option that names it.
 struct NamedPath {
@@ -117,6 +149,8 @@ void add_law_option(CLI::App& command, std::string& law);
 
 // Runs a command's body: InputError and PresetError give exit 2, EnvironmentError and WriteError
 // exit 1 with their message, anything else exit 1 as an internal error; messages go to stderr.
+// SIGINT and SIGTERM remove the temporaries of files being written before they stop it
+// (app/common/interrupt.hpp).
 int guarded(const std::function<int()>& body);
 
 }  // namespace foldlab::app

@@ -273,7 +273,7 @@ struct PictureOptions {
   PictureSpec spec;
   // A sweep picture's axis, as `foldlab sweep` takes it; none: the Sweep tab's.
   std::string param;
-  std::optional<double> from, to;
+  std::optional<std::string> from, to;
   std::optional<int> steps;
   bool log = false, linear = false;
   // B of a compare picture: a preset (default: A's) and its overrides.
@@ -296,15 +296,9 @@ std::optional<SweepAxis> picture_sweep_axis(const PictureOptions& options, Pictu
   if (options.param.empty() || !options.from || !options.to) {
     throw InputError("a sweep picture's axis needs --param, --from and --to together");
   }
-  if (options.log && options.linear) {
-    throw InputError("--log and --linear exclude each other");
-  }
-  SweepAxis axis{options.param, *options.from, *options.to, options.steps.value_or(200),
-                 options.log || (!options.linear && natural_log_scale(options.param))};
-  if (const std::optional<std::string> problem = check_axis(axis)) {
-    throw InputError(*problem);
-  }
-  return axis;
+  return app::read_sweep_axis(app::SweepAxisText{options.param, *options.from, *options.to,
+                                                 options.steps.value_or(200), options.log,
+                                                 options.linear});
 }
 
 // --b-preset and --b-set: B of a compare picture, its name marked "(edited)" when the
@@ -324,8 +318,14 @@ std::optional<PinnedFabric> picture_b(const PictureOptions& options, PictureView
   }
   const app::InputOptions& a = options.scene.run.inputs;
   const std::string path = options.b_preset.empty() ? a.preset_path : options.b_preset;
+  const app::InputOptions b{.preset_path = path,
+                            .assignments = options.b_sets,
+                            .method = a.method,
+                            .law = a.law,
+                            .set_option = "--b-set",
+                            .whose = "B's "};
   const Preset origin = app::resolve_inputs(app::InputOptions{path, {}, a.method, a.law});
-  Preset fabric = app::resolve_inputs(app::InputOptions{path, options.b_sets, a.method, a.law});
+  Preset fabric = app::resolve_inputs(b);
   if (fabric.parameters != origin.parameters) {
     fabric.name += " (edited)";
   }
@@ -361,7 +361,8 @@ app::Command add_picture_command(CLI::App& app) {
   command->add_option("--param", options->param,
                       "sweep: the input swept, " + detail::join_comma(sweepable_keys()) +
                           " (default: the Sweep tab's, h from 500 to 3000 mm)");
-  command->add_option("--from", options->from, "sweep: first value (the input's unit, as sweep)");
+  command->add_option("--from", options->from,
+                      "sweep: first value, in the input's unit or with a unit (as sweep)");
   command->add_option("--to", options->to, "sweep: last value");
   command->add_option("--steps", options->steps, "sweep: number of values (default 200)")
       ->transform(app::whole_number_in(2, 10000));

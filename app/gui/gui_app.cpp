@@ -607,7 +607,10 @@ int run_headless(const GuiRunOptions& options) {
 int run_picture(const GuiRunOptions& options, const std::filesystem::path& out,
                 const PictureSpec& spec, const PictureInputs& inputs) {
   // A picture shows a fabric the model accepts: a refused value, a link's too, is an error.
-  const Preset preset = app::resolve_inputs(options.inputs);
+  // A sweep's inputs are judged along its range, as `foldlab sweep` judges them.
+  const Preset preset = inputs.sweep_axis
+                            ? app::resolve_sweep_inputs(options.inputs, *inputs.sweep_axis)
+                            : app::resolve_inputs(options.inputs);
   const app::StartInputs start{preset, std::nullopt, preset, {}};
   // The window is never drawn (the picture has a framebuffer of its own): the smallest one.
   SurfaceOptions surface_options{kMinFrameSize.width, kMinFrameSize.height, false};

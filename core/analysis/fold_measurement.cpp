@@ -40,10 +40,11 @@ FoldMeasurement measure_folds(const std::vector<double>& depths_mm) {
     }
     if (i > 0 && !(a < depths_mm[i - 1])) {
       throw FoldMeasurementError(
-          "depths", "depth " + std::to_string(i) + " = " + shortest_number(a) +
-                        " mm is not above depth " + std::to_string(i - 1) + " = " +
-                        shortest_number(depths_mm[i - 1]) +
-                        " mm: give the folds lowest first, each higher than the one before");
+          "depths",
+          "the depths must be listed deepest first, each shallower than the one "
+          "before, but depth " +
+              std::to_string(i) + " = " + shortest_number(a) + " mm is not shallower than depth " +
+              std::to_string(i - 1) + " = " + shortest_number(depths_mm[i - 1]) + " mm");
     }
   }
   // Least squares of ln a_i = ln a_0 - i ln Q (eq. 5) over i = 0..n.

@@ -5,6 +5,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <array>
 #include <atomic>
 #include <cerrno>
 #include <charconv>
@@ -127,7 +128,55 @@ std::string describe_bytes(std::uintmax_t bytes) {
   return text;
 }
 
+// A temporary being written, where a signal handler can read its name: a fixed table, so that
+// nothing is allocated, whose state says when a slot's name is whole. A name too long for a slot,
+// or a slot wanted while all are taken, is not registered: the next save removes it as stale.
+struct PendingTemporary {
+  std::atomic<int> state{0};  // kFree, kNaming, kNamed
+  std::array<char, 4096> name{};
+};
+constexpr int kFree = 0;
+constexpr int kNaming = 1;
+constexpr int kNamed = 2;
+static_assert(std::atomic<int>::is_always_lock_free, "a signal handler reads the state");
+std::array<PendingTemporary, 16> pending_temporaries;
+
+// Registers `path` for the life of the write.
+class PendingRegistration {
+ public:
+  explicit PendingRegistration(const fs::path& path) {
+    const std::string& name = path.native();
+    for (PendingTemporary& slot : pending_temporaries) {
+      int expected = kFree;
+      if (name.size() < slot.name.size() && slot.state.compare_exchange_strong(expected, kNaming)) {
+        std::memcpy(slot.name.data(), name.c_str(), name.size() + 1);
+        slot.state.store(kNamed);
+        slot_ = &slot;
+        return;
+      }
+    }
+  }
+  ~PendingRegistration() {
+    if (slot_ != nullptr) {
+      slot_->state.store(kFree);
+    }
+  }
+  PendingRegistration(const PendingRegistration&) = delete;
+  PendingRegistration& operator=(const PendingRegistration&) = delete;
+
+ private:
+  PendingTemporary* slot_ = nullptr;
+};
+
 }  // namespace
+
+void remove_pending_temporaries() noexcept {
+  for (PendingTemporary& slot : pending_temporaries) {
+    if (slot.state.load() == kNamed) {
+      ::unlink(slot.name.data());
+    }
+  }
+}
 
 std::string read_text_file(const std::filesystem::path& path, std::uintmax_t max_bytes) {
   // O_NONBLOCK: opening a FIFO for reading would otherwise wait for a writer forever.
@@ -199,6 +248,8 @@ void write_file_atomically(const std::filesystem::path& path, std::string_view c
     fs::remove(temporary, ignored);
     throw WriteError(path.string() + through + ": " + what + " (" + reason(error) + ")");
   };
+  // Before it exists, so that no moment of its life is hidden from a signal handler.
+  const PendingRegistration registered(temporary);
   FileDescriptor file{
       ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_TRUNC | O_CLOEXEC, 0644)};
   if (file.fd < 0) {

@@ -40,4 +40,8 @@ std::string read_text_file(const std::filesystem::path& path, std::uintmax_t max
 // removed. Throws WriteError naming the path and the system's reason.
 void write_file_atomically(const std::filesystem::path& path, std::string_view contents);
 
+// Unlinks the temporaries write_file_atomically is writing now. Async-signal-safe: a handler of
+// SIGINT or SIGTERM calls it, so that a stopped write leaves no temporary as large as the file.
+void remove_pending_temporaries() noexcept;
+
 }  // namespace foldlab
