@@ -250,6 +250,9 @@ std::string solved_name(const Preset& solved, const InputOptions& options) {
   const Parameters loaded = load(options.preset_path).parameters;
   std::vector<std::string> changed;
   for (const InputSpec& spec : input_table()) {
+    if (spec.kind == InputKind::stiffness_K) {
+      continue;  // K is c at the Poisson ratio: a change of either shows as c (or nu)
+    }
     const std::optional<double> now = spec.value(solved.parameters);
     if (now) {
       if (*now != spec.value(loaded)) {
