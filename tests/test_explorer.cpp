@@ -1526,6 +1526,11 @@ TEST_F(ExplorerTest, PresentedResultsKeepEachValueBesideItsName) {
   // The name is about 18 characters: its value starts within 40 font sizes of it, not at the
   // far edge of a 1920 px window.
   EXPECT_LT(value_x - name_x, 40.0f * ImGui::GetFontSize()) << last_text_;
+  // The fold depths likewise: a depth beside its fold's sign.
+  const float depth_x = position_of("a_i (mm)").x;
+  const float sign_x = position_of("negative").x;
+  EXPECT_GT(sign_x, depth_x);
+  EXPECT_LT(sign_x - depth_x, 20.0f * ImGui::GetFontSize()) << last_text_;
 }
 
 // The introduction for a class: from the menu bar or the View menu, closed by Escape or Close.

@@ -227,10 +227,18 @@ void ResultsPanel::draw_amplitudes(const Solution& s, bool expert) const {
                                                  ImGuiTreeNodeFlags_DefaultOpen)) {
     return;
   }
+  // As the table above: no wider than its longest row (and the scroll bar), so that a depth is
+  // read beside its fold on a wide screen.
+  const ImGuiStyle& style = ImGui::GetStyle();
+  const float natural_width = ImGui::CalcTextSize("10000 (upper edge)").x +
+                              ImGui::CalcTextSize("a_i (mm) 0000.00").x +
+                              ImGui::CalcTextSize("negative").x + 6.0f * style.CellPadding.x +
+                              style.ScrollbarSize + ImGui::GetFontSize();
   if (!ImGui::BeginTable(
           "amplitudes", 3,
           ImGuiTableFlags_RowBg | ImGuiTableFlags_ScrollY | ImGuiTableFlags_BordersInnerV,
-          ImVec2(0.0f, std::max(80.0f, ImGui::GetContentRegionAvail().y)))) {
+          ImVec2(std::min(ImGui::GetContentRegionAvail().x, natural_width),
+                 std::max(80.0f, ImGui::GetContentRegionAvail().y)))) {
     return;
   }
   ImGui::TableSetupScrollFreeze(0, 1);
