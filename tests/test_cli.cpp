@@ -750,6 +750,24 @@ TEST_F(CliTest, AKeySetTwiceIsRefusedAsInAPreset) {
   EXPECT_FALSE(fs::exists(out));
 }
 
+// Two ways of giving one input: K is c at the Poisson ratio, and --method is --set method=. K,
+// applied after c, and the option, applied after --set, won without a word.
+TEST_F(CliTest, OneInputGivenTwoWaysIsRefusedNamingBoth) {
+  const RunResult stiffness = run({"solve", "--set", "c=1.5", "--set", "K=2"});
+  EXPECT_EQ(stiffness.exit_status, 2);
+  EXPECT_TRUE(stiffness.out.empty()) << stiffness.out;
+  EXPECT_TRUE(contains(stiffness.err, "--set c=1.5 and --set K=2: c and K set the same input"))
+      << stiffness.err;
+  const RunResult method = run({"solve", "--set", "method=paper", "--method", "exact"});
+  EXPECT_EQ(method.exit_status, 2);
+  EXPECT_TRUE(
+      contains(method.err, "--method exact and --set method=paper: both set method; which one"))
+      << method.err;
+  // Each alone, or K with the Poisson ratio it is taken at, is one input each.
+  EXPECT_EQ(run({"solve", "--set", "K=2", "--set", "nu=0.2"}).exit_status, 0);
+  EXPECT_EQ(run({"solve", "--method", "paper"}).exit_status, 0);
+}
+
 TEST_F(CliTest, AnOutputNamedForAnotherFormatIsRefused) {
   // picture --out x.jpg wrote PNG data under a JPEG name and exited 0. The checks come before any
   // EGL is asked for, so they hold without one.

@@ -123,6 +123,27 @@ Parameters judged_along(const Parameters& all, const SweepAxis& axis,
                    detail::shortest_number(axis.from) + ": " + reasons);
 }
 
+// --method and --law beside a --set of the same key: applied in order, the option would win
+// without a word.
+std::vector<std::string> option_clashes(const InputOptions& options) {
+  std::vector<std::string> problems;
+  const auto clash = [&](std::string_view flag, const std::string& value, std::string_view key) {
+    if (value.empty()) {
+      return;
+    }
+    for (const std::string& assignment : options.assignments) {
+      if (std::string_view(assignment).substr(0, assignment.find('=')) == key) {
+        problems.push_back(std::string(flag) + " " + detail::cut(value) + " and " +
+                           options.set_option + " " + detail::cut(assignment) + ": both set " +
+                           std::string(key) + "; which one is meant?");
+      }
+    }
+  };
+  clash("--method", options.method, "method");
+  clash("--law", options.law, "law");
+  return problems;
+}
+
 StartInputs resolve(const InputOptions& given, bool keep_refused, const SweepAxis* axis = nullptr) {
   StartInputs start;
   start.preset = load(given.preset_path);
@@ -159,6 +180,9 @@ StartInputs resolve(const InputOptions& given, bool keep_refused, const SweepAxi
   }
   for (const std::string& repeated : repeated_keys(options.assignments, options.set_option)) {
     problems += repeated + "\n";
+  }
+  for (const std::string& clash : option_clashes(options)) {
+    problems += clash + "\n";
   }
   Parameters scratch = start.preset.parameters;
   for (const std::string& error : apply_assignments(scratch, options.link)) {

@@ -785,26 +785,35 @@ std::vector<std::string> repeated_keys(const std::vector<std::string>& assignmen
                                        std::string_view option) {
   std::vector<std::string> problems;
   std::vector<std::string_view> reported;
-  const auto key_of = [](std::string_view assignment) {
-    return assignment.substr(0, assignment.find('='));
+  // K is c at the Poisson ratio in force: K=... and c=... set one field, and K, applied last,
+  // would win without a word.
+  const auto input_of = [](std::string_view assignment) {
+    const std::string_view key = assignment.substr(0, assignment.find('='));
+    const InputSpec* spec = find_input(key);
+    return spec != nullptr && spec->kind == InputKind::stiffness_K ? std::string_view("c") : key;
   };
   for (std::size_t i = 0; i < assignments.size(); ++i) {
-    const std::string_view key = key_of(assignments[i]);
-    if (key.empty() || std::find(reported.begin(), reported.end(), key) != reported.end()) {
+    const std::string_view input = input_of(assignments[i]);
+    if (input.empty() || std::find(reported.begin(), reported.end(), input) != reported.end()) {
       continue;
     }
     std::vector<std::string> givers{std::string(option) + " " + detail::cut(assignments[i])};
+    bool one_key = true;
     for (std::size_t j = i + 1; j < assignments.size(); ++j) {
-      if (key_of(assignments[j]) == key) {
+      if (input_of(assignments[j]) == input) {
         givers.push_back(std::string(option) + " " + detail::cut(assignments[j]));
+        one_key = one_key && assignments[j].substr(0, assignments[j].find('=')) ==
+                                 assignments[i].substr(0, assignments[i].find('='));
       }
     }
     if (givers.size() > 1) {
-      reported.push_back(key);
+      reported.push_back(input);
       const std::string last = givers.back();
       givers.pop_back();
-      problems.push_back(detail::join(givers, ", ") + " and " + last +
-                         ": duplicate key (each key may appear once; which one is meant?)");
+      problems.push_back(
+          detail::join(givers, ", ") + " and " + last +
+          (one_key ? ": duplicate key (each key may appear once; which one is meant?)"
+                   : ": c and K set the same input (K = c / (1 - nu²)); which one is meant?"));
     }
   }
   return problems;
