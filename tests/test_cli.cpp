@@ -235,6 +235,39 @@ TEST_F(CliTest, MissingPresetFileIsInvalidInputNamingTheFile) {
   EXPECT_TRUE(r.out.empty()) << r.out;
 }
 
+// A designer saves "Studio linen" in the explorer and scripts a picture of it: --preset takes a
+// preset's name as the Presets panel lists it (the user's, then the shipped ones; case and
+// punctuation aside) or its file's name, without the folder.
+TEST_F(CliTest, APresetIsFoundByItsNameAmongTheUsersAndTheShippedOnes) {
+  const fs::path config = dir_ / "config";
+  fs::create_directories(config / "foldlab" / "presets");
+  json mine = json::parse(std::ifstream(fs::path(kPresetsDir) / "default.json"));
+  mine["name"] = "Studio linen, 2.4 m";
+  mine["hanging"]["height_mm"] = 2400.0;
+  std::ofstream(config / "foldlab" / "presets" / "studio-linen-2-4-m.json") << mine.dump();
+  foldlab::testing::Environment env;
+  env.set = {{"XDG_CONFIG_HOME", config.string()}, {"HOME", dir_.string()}};
+  const auto height_of = [&](const std::string& preset) {
+    const RunResult r = foldlab::testing::run_process(
+        kExecutable, {"solve", "--preset", preset, "--json"}, dir_, env);
+    EXPECT_EQ(r.exit_status, 0) << preset << ": " << r.err;
+    return r.exit_status == 0 ? json::parse(r.out).at("inputs").at("height_mm").get<double>()
+                              : -1.0;
+  };
+  EXPECT_EQ(height_of("Studio linen, 2.4 m"), 2400.0);
+  EXPECT_EQ(height_of("studio linen 2.4 m"), 2400.0);
+  EXPECT_EQ(height_of("studio-linen-2-4-m.json"), 2400.0);
+  EXPECT_EQ(height_of("Table 1, h = 2350 mm"), 2350.0);  // a shipped one
+  EXPECT_EQ(height_of("paper-table1-h900"), 900.0);
+  const RunResult unknown =
+      foldlab::testing::run_process(kExecutable, {"solve", "--preset", "Studio silk"}, dir_, env);
+  EXPECT_EQ(unknown.exit_status, 2);
+  EXPECT_TRUE(contains(unknown.err,
+                       "--preset Studio silk: there is no such file, and no preset is "
+                       "named so. The presets: Studio linen, 2.4 m; Default"))
+      << unknown.err;
+}
+
 TEST_F(CliTest, AnEmptyPresetPathIsInvalidInputNotTheDefault) {
   for (const std::string command : {"solve", "export", "sweep", "calibrate", "measure"}) {
     SCOPED_TRACE(command);

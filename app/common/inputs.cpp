@@ -9,6 +9,7 @@
 #include <iostream>
 
 #include "app/common/interrupt.hpp"
+#include "app/common/presets_dir.hpp"
 #include "core/io/io.hpp"
 #include "core/model/settings.hpp"
 #include "core/model/text_format.hpp"
@@ -96,9 +97,28 @@ std::string link_note(const std::string& piece, const std::string& reason, const
   return reason + ", so " + key + " is " + (as_preset ? "the preset's " : "") + value;
 }
 
+}  // namespace
+
+std::string preset_file(const std::string& given) {
+  std::error_code error;
+  if (given.empty() || given.find('/') != std::string::npos ||
+      std::filesystem::exists(given, error)) {
+    return given;
+  }
+  if (const std::optional<std::filesystem::path> named = preset_named(given)) {
+    return named->string();
+  }
+  const std::vector<std::string> names = preset_names();
+  throw InputError("--preset " + detail::cut(given) +
+                   ": there is no such file, and no preset is named so. The presets: " +
+                   (names.empty() ? std::string("none") : detail::join(names, "; ")) + ".");
+}
+
+namespace {
+
 Preset load(const std::string& preset_path) {
   try {
-    return preset_path.empty() ? default_preset() : load_preset(preset_path);
+    return preset_path.empty() ? default_preset() : load_preset(preset_file(preset_path));
   } catch (const PresetError& e) {
     throw InputError(e.what());
   }

@@ -60,6 +60,12 @@ struct InputOptions {
   std::string whose{};
 };
 
+// The file --preset means: `given` itself when it is a file or a path (or empty, the default),
+// else the preset of that name as the Presets panel lists it ("Linen (medium weight)", or one
+// saved in the explorer; presets_dir.hpp's preset_named). Throws InputError naming the presets
+// there are when none is.
+std::string preset_file(const std::string& given);
+
 // The preset with the overrides applied and validated. Throws InputError listing every problem.
 Preset resolve_inputs(const InputOptions& options);
 

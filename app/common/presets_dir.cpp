@@ -9,6 +9,8 @@
 #include <string_view>
 #include <system_error>
 
+#include "core/io/preset.hpp"
+
 namespace foldlab::app {
 namespace {
 
@@ -96,6 +98,90 @@ std::vector<std::filesystem::path> preset_files(const std::filesystem::path& dir
     return natural_less(a.filename().string(), b.filename().string());
   });
   return files;
+}
+
+std::string preset_slug(const std::string& name) {
+  std::string out;
+  for (char c : name) {
+    if (std::isalnum(static_cast<unsigned char>(c))) {
+      out += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    } else if (!out.empty() && out.back() != '-') {
+      out += '-';
+    }
+  }
+  while (!out.empty() && out.back() == '-') {
+    out.pop_back();
+  }
+  return out;
+}
+
+std::filesystem::path config_dir() {
+  if (const char* xdg = std::getenv("XDG_CONFIG_HOME"); xdg && *xdg) {
+    return std::filesystem::path(xdg) / "foldlab";
+  }
+  if (const char* home = std::getenv("HOME"); home && *home) {
+    return std::filesystem::path(home) / ".config" / "foldlab";
+  }
+  return std::filesystem::current_path() / ".foldlab";
+}
+
+std::filesystem::path user_presets_dir() {
+  return config_dir() / "presets";
+}
+
+namespace {
+
+std::string lower(std::string text) {
+  for (char& c : text) {
+    c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  }
+  return text;
+}
+
+// Each preset file where the user and the program keep them, the user's first, with its name;
+// a file that cannot be read is passed over.
+template <class Visit>
+void for_each_preset(Visit visit) {
+  for (const std::filesystem::path& dir : {user_presets_dir(), find_presets_dir()}) {
+    if (dir.empty()) {
+      continue;
+    }
+    for (const std::filesystem::path& file : preset_files(dir)) {
+      try {
+        if (visit(file, load_preset(file.string()).name)) {
+          return;
+        }
+      } catch (const PresetError&) {
+        continue;
+      }
+    }
+  }
+}
+
+}  // namespace
+
+std::optional<std::filesystem::path> preset_named(const std::string& name) {
+  const std::string wanted = lower(name);
+  const std::string wanted_slug = preset_slug(name);
+  std::optional<std::filesystem::path> found;
+  for_each_preset([&](const std::filesystem::path& file, const std::string& preset_name) {
+    const std::string stem = lower(file.stem().string());
+    if ((!wanted_slug.empty() && preset_slug(preset_name) == wanted_slug) || stem == wanted ||
+        stem + ".json" == wanted) {
+      found = file;
+    }
+    return found.has_value();
+  });
+  return found;
+}
+
+std::vector<std::string> preset_names() {
+  std::vector<std::string> names;
+  for_each_preset([&](const std::filesystem::path&, const std::string& preset_name) {
+    names.push_back(preset_name);
+    return false;
+  });
+  return names;
 }
 
 }  // namespace foldlab::app

@@ -304,8 +304,9 @@ class ExplorerRun {
     // A link's fabric is shown as an edit of its preset (the title's "*", A's "(edited)"): a
     // student who opens a shared link must not take it for the preset itself.
     const bool linked = !options.inputs.link.empty();
-    explorer_.emplace(linked ? start.origin : preset, options.inputs.preset_path, restore,
-                      explorer_options, *renderer_);
+    // The file a preset's name stands for: Ctrl+S saves over it when it is the user's.
+    explorer_.emplace(linked ? start.origin : preset, app::preset_file(options.inputs.preset_path),
+                      restore, explorer_options, *renderer_);
     explorer_->set_page_link(make_page_link());
     explorer_->set_file_transfer(make_file_transfer());
     if (linked || start.refused) {

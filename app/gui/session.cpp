@@ -18,20 +18,6 @@
 
 namespace foldlab::gui {
 
-std::filesystem::path config_dir() {
-  if (const char* xdg = std::getenv("XDG_CONFIG_HOME"); xdg && *xdg) {
-    return std::filesystem::path(xdg) / "foldlab";
-  }
-  if (const char* home = std::getenv("HOME"); home && *home) {
-    return std::filesystem::path(home) / ".config" / "foldlab";
-  }
-  return std::filesystem::current_path() / ".foldlab";
-}
-
-std::filesystem::path user_presets_dir() {
-  return config_dir() / "presets";
-}
-
 std::optional<std::string> oversized_file(const std::filesystem::path& path, std::uintmax_t limit) {
   std::error_code ec;
   const std::uintmax_t bytes = std::filesystem::file_size(path, ec);

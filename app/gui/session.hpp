@@ -3,6 +3,8 @@
 // ImGui's own imgui.ini that holds the window layout.
 #pragma once
 
+#include "app/common/presets_dir.hpp"
+
 #include <cstdint>
 #include <filesystem>
 #include <limits>
@@ -112,9 +114,10 @@ struct ConfigFile {
 // bytes. A FIFO or device is never opened, so a start cannot wait on one.
 ConfigFile read_config_file(const std::filesystem::path& path, std::uintmax_t limit);
 
-// $XDG_CONFIG_HOME/foldlab, else $HOME/.config/foldlab (created on demand by the savers).
-std::filesystem::path config_dir();
-std::filesystem::path user_presets_dir();
+// $XDG_CONFIG_HOME/foldlab, else $HOME/.config/foldlab (created on demand by the savers); the
+// command line finds the user's presets there too.
+using app::config_dir;
+using app::user_presets_dir;
 
 // Reads a session file; nullopt when it is absent (`error` empty) or unusable (`error` says why;
 // the caller starts from the default preset and shows it). A session with a part that does not

@@ -17,21 +17,6 @@
 
 namespace foldlab::gui {
 
-std::string preset_slug(const std::string& name) {
-  std::string out;
-  for (char c : name) {
-    if (std::isalnum(static_cast<unsigned char>(c))) {
-      out += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    } else if (!out.empty() && out.back() != '-') {
-      out += '-';
-    }
-  }
-  while (!out.empty() && out.back() == '-') {
-    out.pop_back();
-  }
-  return out;
-}
-
 PresetsPanel::PresetsPanel(std::filesystem::path presets_dir,
                            std::filesystem::path user_presets_dir)
     : presets_dir_(std::move(presets_dir)), user_presets_dir_(std::move(user_presets_dir)) {

@@ -4,6 +4,8 @@
 // section, the calibration window's button) the explorer draws through `footer`.
 #pragma once
 
+#include "app/common/presets_dir.hpp"
+
 #include <filesystem>
 #include <functional>
 #include <string>
@@ -72,8 +74,7 @@ class PresetsPanel : public Panel {
   float below_list_px_ = 0.0f;  // the height of what was drawn under the list in the last frame
 };
 
-// A file name from a preset name: lower-case letters, digits and dashes.
-std::string preset_slug(const std::string& name);
+using app::preset_slug;
 
 // The preset that saving the document's last valid inputs under `name` writes: the loaded one's
 // own when the name is kept, else one derived from it.
