@@ -231,7 +231,10 @@ TEST(BenchmarkTiming, MeasuresTheWorkOfTheSolves) {
   std::printf("light: median %.0f ns, heavy: median %.0f ns; %.0f of %.0f ns of wall clock\n",
               t[0].median_ns, t[1].median_ns, (t[0].mean_ns + t[1].mean_ns) * 20 * kRepeats,
               wall_ns);
-  EXPECT_GT(t[1].median_ns, 20.0 * t[0].median_ns);
+  // About 300 times natively; about 10 times under AddressSanitizer, whose fake stacks slow every
+  // call of the light solve some 28 times while the heavy one's quadrature loop hardly slows. Five
+  // times tells the two lists apart in both.
+  EXPECT_GT(t[1].median_ns, 5.0 * t[0].median_ns);
   EXPECT_GT(t[1].p10_ns, t[0].p90_ns);
   const double reported_ns = (t[0].mean_ns + t[1].mean_ns) * 20 * kRepeats;
   EXPECT_LE(reported_ns, wall_ns);
