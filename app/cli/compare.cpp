@@ -142,8 +142,7 @@ void declare(CLI::App& app, Options& options) {
 Result run(const Options& options) {
   Result result;
   for (const std::string& path : preset_paths(options)) {
-    const app::InputOptions inputs{path, options.assignments, "", options.law};
-    const Preset preset = resolve_inputs(inputs);
+    const Preset preset = app::resolve_named_inputs({path, options.assignments, "", options.law});
     const PublishedResult& pub = preset.published;
     if (!pub.n && !pub.z_max_mm && !pub.Q) {
       continue;
@@ -153,7 +152,7 @@ Result run(const Options& options) {
       p.model.method = kMethods[m];
       result.rows[m].push_back(compare_with_published(pub, p));
     }
-    result.names.push_back(app::solved_name(preset, inputs));
+    result.names.push_back(preset.name);
   }
   if (result.names.empty()) {
     throw InputError("none of the presets carries published results");

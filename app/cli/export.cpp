@@ -125,8 +125,7 @@ Result run(const Options& options) {
   if (auto problem = check_grid_budget(grid.nx, grid.ny); problem && outputs.mesh) {
     throw InputError("--grid " + options.grid + ": " + *problem);
   }
-  Preset preset = resolve_inputs(options.inputs);
-  preset.name = app::solved_name(preset, options.inputs);
+  const Preset preset = app::resolve_named_inputs(options.inputs);
   Result result{preset, Scene(preset.parameters), outputs.mesh, outputs.lines, {}};
   Scene& scene = result.scene;
   scene.set_grid_resolution(grid.nx, grid.ny);

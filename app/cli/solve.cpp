@@ -19,11 +19,10 @@ void declare(CLI::App& app, Options& options) {
 }
 
 Result run(const Options& options) {
-  Preset preset = resolve_inputs(options.inputs);
-  preset.name = app::solved_name(preset, options.inputs);
+  const Preset preset = app::resolve_named_inputs(options.inputs);
   Scene scene(preset.parameters);
   Solution solution = scene.solution();
-  ModelStanding standing = model_standing(preset.parameters, preset.calibration);
+  ModelStanding standing = model_standing(preset.parameters, preset.calibration, solution);
   return {std::move(preset), std::move(scene), std::move(solution), std::move(standing),
           options.stats};
 }

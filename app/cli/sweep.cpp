@@ -64,7 +64,7 @@ void declare(CLI::App& app, Options& options) {
 Result run(const Options& options) {
   Result result;
   result.axis = app::read_sweep_axis(options.axis);
-  const Preset preset = app::resolve_sweep_inputs(options.inputs, result.axis);
+  const Preset preset = app::resolve_inputs_in_full(options.inputs, &result.axis).preset;
   result.points = sweep(preset.parameters, result.axis);
   // Checked before the first row goes out, so that a bad row never leaves half a table.
   for (const SweepPoint& p : result.points) {
@@ -73,7 +73,7 @@ Result run(const Options& options) {
     detail::finite_or_throw(p.z_max_mm, "z_max_mm");
   }
   // A range may run past what the other inputs allow (d up to L/2, say): those rows say
-  // "invalid" and the reason is given once (resolve_sweep_inputs refused a range with none).
+  // "invalid" and the reason is given once (resolve_inputs_in_full refused a range with none).
   for (const SweepPoint& p : result.points) {
     if (!p.valid && result.refused++ == 0) {
       result.first_reason = refusal(preset.parameters, result.axis.key, p.value);

@@ -97,8 +97,10 @@ std::string link_note(const std::string& piece, const std::string& reason, const
   return reason + ", so " + key + " is " + (as_preset ? "the preset's " : "") + value;
 }
 
-}  // namespace
-
+// The file --preset means: `given` itself when it is a file or a path (or empty, the default),
+// else the preset of that name as the Presets panel lists it ("Linen (medium weight)", or one
+// saved in the explorer; presets_dir.hpp's preset_named). Throws InputError naming the presets
+// there are when none is.
 std::string preset_file(const std::string& given) {
   std::error_code error;
   if (given.empty() || given.find('/') != std::string::npos ||
@@ -114,11 +116,9 @@ std::string preset_file(const std::string& given) {
                    (names.empty() ? std::string("none") : detail::join(names, "; ")) + ".");
 }
 
-namespace {
-
-Preset load(const std::string& preset_path) {
+Preset load(const std::string& file) {
   try {
-    return preset_path.empty() ? default_preset() : load_preset(preset_file(preset_path));
+    return file.empty() ? default_preset() : load_preset(file);
   } catch (const PresetError& e) {
     throw InputError(e.what());
   }
@@ -141,6 +141,29 @@ Parameters judged_along(const Parameters& all, const SweepAxis& axis,
   reasons.pop_back();  // the final newline
   throw InputError("no value of the range is valid given the other inputs; at " + axis.key + " = " +
                    detail::shortest_number(axis.from) + ": " + reasons);
+}
+
+// The preset's name, and the inputs the overrides changed from `loaded` as solved after it.
+std::string edited_name(const Preset& solved, const Parameters& loaded) {
+  std::vector<std::string> changed;
+  for (const InputSpec& spec : input_table()) {
+    if (spec.kind == InputKind::stiffness_K) {
+      continue;  // K is c at the Poisson ratio: a change of either shows as c (or nu)
+    }
+    const std::optional<double> now = spec.value(solved.parameters);
+    if (now) {
+      if (*now != spec.value(loaded)) {
+        changed.push_back(std::string(input_symbol(spec)) + " = " + shown_quantity(spec, *now));
+      }
+    } else if (spec.choice(solved.parameters) != spec.choice(loaded)) {
+      changed.push_back(std::string(spec.key) + " = " +
+                        std::string(spec.choice(solved.parameters)));
+    }
+  }
+  if (changed.empty()) {
+    return solved.name;
+  }
+  return solved.name + " (edited: " + detail::join_comma(changed) + ")";
 }
 
 // --method and --law beside a --set of the same key: applied in order, the option would win
@@ -166,7 +189,9 @@ std::vector<std::string> option_clashes(const InputOptions& options) {
 
 StartInputs resolve(const InputOptions& given, bool keep_refused, const SweepAxis* axis = nullptr) {
   StartInputs start;
-  start.preset = load(given.preset_path);
+  start.preset_file = preset_file(given.preset_path);
+  start.preset = load(start.preset_file);
+  start.loaded = start.preset.parameters;
   InputOptions options = given;
   // Left out before anything is applied: a piece that cannot be read says nothing of the fabric.
   std::vector<std::pair<std::string, std::string>> left_out;  // the piece, why
@@ -286,31 +311,14 @@ SweepAxis read_sweep_axis(const SweepAxisText& text) {
   return axis;
 }
 
-Preset resolve_sweep_inputs(const InputOptions& options, const SweepAxis& axis) {
-  return resolve(options, false, &axis).preset;
+StartInputs resolve_inputs_in_full(const InputOptions& options, const SweepAxis* axis) {
+  return resolve(options, false, axis);
 }
 
-std::string solved_name(const Preset& solved, const InputOptions& options) {
-  const Parameters loaded = load(options.preset_path).parameters;
-  std::vector<std::string> changed;
-  for (const InputSpec& spec : input_table()) {
-    if (spec.kind == InputKind::stiffness_K) {
-      continue;  // K is c at the Poisson ratio: a change of either shows as c (or nu)
-    }
-    const std::optional<double> now = spec.value(solved.parameters);
-    if (now) {
-      if (*now != spec.value(loaded)) {
-        changed.push_back(std::string(input_symbol(spec)) + " = " + shown_quantity(spec, *now));
-      }
-    } else if (spec.choice(solved.parameters) != spec.choice(loaded)) {
-      changed.push_back(std::string(spec.key) + " = " +
-                        std::string(spec.choice(solved.parameters)));
-    }
-  }
-  if (changed.empty()) {
-    return solved.name;
-  }
-  return solved.name + " (edited: " + detail::join_comma(changed) + ")";
+Preset resolve_named_inputs(const InputOptions& options) {
+  StartInputs start = resolve(options, false);
+  start.preset.name = edited_name(start.preset, start.loaded);
+  return start.preset;
 }
 
 void check_output_extension(std::string_view option, const std::string& path,

@@ -60,12 +60,6 @@ struct InputOptions {
   std::string whose{};
 };
 
-// The file --preset means: `given` itself when it is a file or a path (or empty, the default),
-// else the preset of that name as the Presets panel lists it ("Linen (medium weight)", or one
-// saved in the explorer; presets_dir.hpp's preset_named). Throws InputError naming the presets
-// there are when none is.
-std::string preset_file(const std::string& given);
-
 // The preset with the overrides applied and validated. Throws InputError listing every problem.
 Preset resolve_inputs(const InputOptions& options);
 
@@ -82,6 +76,10 @@ struct StartInputs {
   // With forgiving_link, each piece of the link left out, as a sentence that says what is shown
   // instead: "t = 'abc' is not a number, so t is the preset's 0.25 mm".
   std::vector<std::string> link_notes;
+  // The file --preset meant (preset_file(); empty: the built-in default) and its inputs as read,
+  // before any override: what a report names as edited.
+  std::string preset_file;
+  Parameters loaded;
 };
 // resolve_inputs, except that values the model refuses only with the link's are kept in
 // `refused`. A key or value that cannot be applied at all is an InputError as for --set.
@@ -101,17 +99,18 @@ struct SweepAxisText {
 // bare number with --set's hint. Throws InputError.
 SweepAxis read_sweep_axis(const SweepAxisText& text);
 
-// resolve_inputs for a sweep over `axis` (`foldlab sweep`, `picture sweep`): the inputs are judged
-// at the swept values, not at the preset's value of the swept input, which the sweep replaces
-// (d = 800 mm is refused at the preset's L = 1400 mm, not when L runs from 1000 to 3000 mm).
-// Throws InputError, naming the first value and why, when no value of the range is valid. When
-// the preset's own value is refused with the others, the preset holds the first valid one.
-Preset resolve_sweep_inputs(const InputOptions& options, const SweepAxis& axis);
+// resolve_inputs with all the start knows (the file, the preset as read). With `axis` (`foldlab
+// sweep`, `picture sweep`), the inputs are judged at the swept values, not at the preset's value
+// of the swept input, which the sweep replaces (d = 800 mm is refused at the preset's L = 1400 mm,
+// not when L runs from 1000 to 3000 mm): InputError, naming the first value and why, when no value
+// of the range is valid; when the preset's own value is refused with the others, the preset holds
+// the first valid one.
+StartInputs resolve_inputs_in_full(const InputOptions& options, const SweepAxis* axis = nullptr);
 
-// The name a report gives the fabric it solved (`solved`, from resolve_inputs(options)): the
-// preset's, and when the overrides changed inputs, those inputs as solved after it, "Default: ...,
-// h = 1400 mm ... (edited: h = 5 mm)", since a preset's name may state values it no longer has.
-std::string solved_name(const Preset& solved, const InputOptions& options);
+// resolve_inputs for a report: the preset's name followed, when the overrides changed inputs, by
+// those inputs as solved, "Default: ..., h = 1400 mm ... (edited: h = 5 mm)", since a preset's name
+// may state values it no longer has.
+Preset resolve_named_inputs(const InputOptions& options);
 
 // A file named on the command line by the option that names it.
 struct NamedPath {

@@ -17,7 +17,7 @@ Scene& Comparison::scene(int grid_nx) {
 
 const ModelStanding& Comparison::standing() {
   if (!standing_) {
-    standing_ = model_standing(b_->fabric.parameters, b_->fabric.calibration);
+    standing_ = model_standing(b_->fabric.parameters, b_->fabric.calibration, solution());
   }
   return *standing_;
 }

@@ -305,8 +305,8 @@ class ExplorerRun {
     // student who opens a shared link must not take it for the preset itself.
     const bool linked = !options.inputs.link.empty();
     // The file a preset's name stands for: Ctrl+S saves over it when it is the user's.
-    explorer_.emplace(linked ? start.origin : preset, app::preset_file(options.inputs.preset_path),
-                      restore, explorer_options, *renderer_);
+    explorer_.emplace(linked ? start.origin : preset, start.preset_file, restore, explorer_options,
+                      *renderer_);
     explorer_->set_page_link(make_page_link());
     explorer_->set_file_transfer(make_file_transfer());
     if (linked || start.refused) {
@@ -609,10 +609,9 @@ int run_picture(const GuiRunOptions& options, const std::filesystem::path& out,
                 const PictureSpec& spec, const PictureInputs& inputs) {
   // A picture shows a fabric the model accepts: a refused value, a link's too, is an error.
   // A sweep's inputs are judged along its range, as `foldlab sweep` judges them.
-  const Preset preset = inputs.sweep_axis
-                            ? app::resolve_sweep_inputs(options.inputs, *inputs.sweep_axis)
-                            : app::resolve_inputs(options.inputs);
-  const app::StartInputs start{preset, std::nullopt, preset, {}};
+  app::StartInputs start = app::resolve_inputs_in_full(
+      options.inputs, inputs.sweep_axis ? &*inputs.sweep_axis : nullptr);
+  start.origin = start.preset;  // a picture's caption names the fabric it shows, link or not
   // The window is never drawn (the picture has a framebuffer of its own): the smallest one.
   SurfaceOptions surface_options{kMinFrameSize.width, kMinFrameSize.height, false};
   std::unique_ptr<Surface> surface = make_headless_surface(surface_options);

@@ -372,11 +372,11 @@ std::vector<std::string> picture_caption(Document& document, bool with_b) {
   with_b = with_b && compare.pinned();
   add_caption(lines, with_b ? "A" : "", with_b ? fabric_label(document) : loaded.name,
               scene.parameters(), scene.solution(),
-              model_standing(scene.parameters(), loaded.calibration));
+              model_standing(scene.parameters(), loaded.calibration, scene.solution()));
   if (with_b) {
     const Preset& b = compare.b();
     add_caption(lines, "B", b.name, b.parameters, compare.scene(scene.grid_nx()).solution(),
-                model_standing(b.parameters, b.calibration));
+                compare.standing());
   }
   return lines;
 }

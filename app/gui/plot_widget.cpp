@@ -1,5 +1,7 @@
 #include "app/gui/plot_widget.hpp"
 
+#include "app/gui/appearance.hpp"
+
 #include <imgui_internal.h>  // SetItemUsingMouseWheel: without it the window scrolls as we zoom
 
 #include <algorithm>
@@ -16,8 +18,6 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr float kHoverRadius = 12.0f;
 constexpr double kAutoscaleMargin = 0.05;
-// The text size a series' line width and marker size are given for: the explorer's at 100 %.
-constexpr float kUsualFontPx = 15.0f;
 constexpr double kWheelZoom = 1.25;  // range factor per wheel notch
 // Zooming further than this relative span only shows floating-point noise.
 constexpr double kMinRelativeSpan = 1e-12;
@@ -654,7 +654,7 @@ std::optional<PlotHit> Plot::end() {
   f.swatch = f.font * 1.6f;
   // A series' size is given for the usual text size: at 200 % for a room, or in a picture of a
   // few thousand pixels, a 2 px line would be a hair beside the text.
-  f.weight = std::max(1.0f, f.font / kUsualFontPx);
+  f.weight = std::max(1.0f, f.font / kUiFontPx);
   f.row = f.font + 2;
   f.pad = std::round(f.font * 0.35f);
   f.x_log = x_axis_.log;

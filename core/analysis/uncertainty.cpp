@@ -147,6 +147,11 @@ bool record_applies(const Parameters& p, const CalibrationRecord& record) {
 }
 
 ModelStanding model_standing(const Parameters& p, const std::optional<CalibrationRecord>& record) {
+  return model_standing(p, record, solve(p));
+}
+
+ModelStanding model_standing(const Parameters& p, const std::optional<CalibrationRecord>& record,
+                             const Solution& predicted) {
   ModelStanding out;
   const double K = stiffness_constant_K(p);
   const double exponent = p.model.stress_exponent_p;
@@ -181,7 +186,7 @@ ModelStanding model_standing(const Parameters& p, const std::optional<Calibratio
     out.range_basis = "none: the calibration stored fewer than two leave-one-out residuals";
     return out;
   }
-  hold_prediction(*out.range, solve(p));
+  hold_prediction(*out.range, predicted);
   out.range_basis = printf_string("jackknife+ over the %zu leave-one-out fits on ",
                                   record->leave_one_out.size()) +
                     record->calibrated_on + " and each one's error on the row it left out" +

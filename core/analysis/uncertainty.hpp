@@ -77,8 +77,12 @@ std::string describe_coverage(const std::vector<CoverageCheck>& checks);
 // record's ranges describe it.
 bool record_applies(const Parameters& p, const CalibrationRecord& record);
 
-// The form of eq. 7 in force, its label, and the range when `record` applies to `p`.
+// The form of eq. 7 in force, its label, and the range when `record` applies to `p`, widened to
+// hold `predicted`, solve(p), which the caller has already (hold_prediction).
 // Precondition: validate(p) is empty.
+ModelStanding model_standing(const Parameters& p, const std::optional<CalibrationRecord>& record,
+                             const Solution& predicted);
+// The same, solving `p` for the prediction.
 ModelStanding model_standing(const Parameters& p, const std::optional<CalibrationRecord>& record);
 
 // What a preset stores of a calibration: the fitted constants, the ends of the equally good set,

@@ -22,7 +22,8 @@ const ModelStanding& ResultsPanel::standing(Document& document) {
   if (standing_version_ != scene.version(Stage::solution) || standing_record_ != record) {
     standing_version_ = scene.version(Stage::solution);
     standing_record_ = record;
-    standing_ = model_standing(scene.parameters(), record);  // the scene's are always valid
+    // The scene's are always valid, and its solution is this frame's anyway.
+    standing_ = model_standing(scene.parameters(), record, scene.solution());
   }
   return standing_;
 }
@@ -230,10 +231,13 @@ void ResultsPanel::draw_amplitudes(const Solution& s, bool expert) const {
   // As the table above: no wider than its longest row (and the scroll bar), so that a depth is
   // read beside its fold on a wide screen.
   const ImGuiStyle& style = ImGui::GetStyle();
-  const float natural_width = ImGui::CalcTextSize("10000 (upper edge)").x +
-                              ImGui::CalcTextSize("a_i (mm) 0000.00").x +
-                              ImGui::CalcTextSize("negative").x + 6.0f * style.CellPadding.x +
-                              style.ScrollbarSize + ImGui::GetFontSize();
+  // Measured on the widest texts a row can hold rather than on the rows, of which there may be
+  // thousands (drawn through a clipper).
+  const float natural_width =
+      ImGui::CalcTextSize("10000 (upper edge)").x +
+      std::max(ImGui::CalcTextSize("a_i (mm)").x, ImGui::CalcTextSize("000000.00").x) +
+      ImGui::CalcTextSize("negative").x + 6.0f * style.CellPadding.x + style.ScrollbarSize +
+      ImGui::GetFontSize();
   if (!ImGui::BeginTable(
           "amplitudes", 3,
           ImGuiTableFlags_RowBg | ImGuiTableFlags_ScrollY | ImGuiTableFlags_BordersInnerV,
