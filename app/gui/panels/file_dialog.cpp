@@ -403,8 +403,11 @@ void FileDialog::draw_name_field(Asked& asked) {
 
 void FileDialog::draw_answer_buttons(Asked& asked, bool escape) {
   if (replace_) {
-    ImGui::TextColored(kNoteText, "%s is there already: write over it?",
+    // Wrapped: a long file name would push "write over it?" past the dialog's edge.
+    ImGui::PushStyleColor(ImGuiCol_Text, kNoteText);
+    ImGui::TextWrapped("%s is there already: write over it?",
                        replace_->filename().string().c_str());
+    ImGui::PopStyleColor();
     if (ImGui::Button("Replace")) {
       asked.picked = replace_->string();
     }
