@@ -32,11 +32,22 @@
 #include "app/gui/explorer.hpp"
 #include "app/gui/frame_pacing.hpp"
 #include "app/gui/input_player.hpp"
+#include "app/gui/menu_bar.hpp"
 #include "app/gui/panel.hpp"
+#include "app/gui/panels/analysis_panel.hpp"
+#include "app/gui/panels/calibration_panel.hpp"
+#include "app/gui/panels/cloth_view_panel.hpp"
+#include "app/gui/panels/file_dialog.hpp"
+#include "app/gui/panels/fold_plot_panel.hpp"
+#include "app/gui/panels/intro_window.hpp"
+#include "app/gui/panels/parameters_panel.hpp"
+#include "app/gui/panels/photo_overlay.hpp"
+#include "app/gui/panels/presets_panel.hpp"
 #include "app/gui/panels/widgets.hpp"
 #include "app/gui/picture.hpp"
 #include "app/gui/play_script.hpp"
 #include "app/gui/plot_widget.hpp"
+#include "app/gui/presentation_bar.hpp"
 #include "app/gui/renderer.hpp"
 #include "app/gui/scripted_run.hpp"
 #include "app/gui/surface.hpp"
@@ -85,6 +96,12 @@ class ExplorerTest : public foldlab::testing::TempDirTest {
     // ImGui sizes tables and child windows from what the previous frame held.
     frame();
     frame();
+  }
+
+  // The explorer's panel of type P.
+  template <class P>
+  P& panel() const {
+    return find_panel<P>(explorer_->panels());
   }
 
   void TearDown() override {
@@ -280,7 +297,7 @@ class ExplorerTest : public foldlab::testing::TempDirTest {
 
   // The tiled panel `key`'s rectangle in the last frame (a zero one when it is not shown).
   PanelRect rect_of(const std::string& key) const {
-    for (const auto& [name, rect] : explorer_->panel_rects()) {
+    for (const auto& [name, rect] : explorer_->layout().panel_rects()) {
       if (name == key) {
         return rect;
       }
@@ -400,8 +417,8 @@ TEST_F(ExplorerTest, ASliderShowsAHugeRefusedValueAsTypedAndALargeOneWhole) {
   ASSERT_EQ(explorer_->set_input("h", 15000.0), std::nullopt);
   ASSERT_EQ(explorer_->set_input("E", 1e308), std::nullopt);
   frame();
-  EXPECT_EQ(explorer_->parameters_panel().shown(document(), *find_input("h")), "15000 mm");
-  EXPECT_EQ(explorer_->parameters_panel().shown(document(), *find_input("E")), "1e308 MPa");
+  EXPECT_EQ(panel<ParametersPanel>().shown(document(), *find_input("h")), "15000 mm");
+  EXPECT_EQ(panel<ParametersPanel>().shown(document(), *find_input("E")), "1e308 MPa");
 }
 
 TEST_F(ExplorerTest, ChangingAnInputChangesTheResultsShown) {
@@ -531,7 +548,7 @@ TEST_F(ExplorerTest, ColourByZShowsABarOverTheSolutionsDepth) {
 
   ASSERT_EQ(explorer_->set_view("colour_by", "z"), std::nullopt);
   text = frame();
-  EXPECT_EQ(explorer_->cloth_style().colour_by, ClothStyle::ColourBy::z);
+  EXPECT_EQ(panel<ClothViewPanel>().style().colour_by, ClothStyle::ColourBy::z);
   EXPECT_NE(text.find(high), std::string::npos) << text;
   EXPECT_NE(text.find(low), std::string::npos) << text;
 
@@ -544,7 +561,7 @@ TEST_F(ExplorerTest, ColourByZShowsABarOverTheSolutionsDepth) {
   const auto refused = explorer_->set_view("colour_by", "height");
   ASSERT_TRUE(refused.has_value());
   EXPECT_NE(refused->find("none, z, fold_sign"), std::string::npos) << *refused;
-  EXPECT_EQ(explorer_->cloth_style().colour_by, ClothStyle::ColourBy::fold_sign);
+  EXPECT_EQ(panel<ClothViewPanel>().style().colour_by, ClothStyle::ColourBy::fold_sign);
 }
 
 TEST_F(ExplorerTest, ASwatchPhotoBecomesThePrintAndABadFileIsRefusedByName) {
@@ -571,7 +588,7 @@ TEST_F(ExplorerTest, ASwatchPhotoBecomesThePrintAndABadFileIsRefusedByName) {
   ASSERT_TRUE(unreadable.has_value());
   EXPECT_NE(unreadable->find("swatch.jpg"), std::string::npos) << *unreadable;
   EXPECT_NE(unreadable->find("not a PNG or JPEG file"), std::string::npos) << *unreadable;
-  EXPECT_EQ(explorer_->cloth_style().print, ClothStyle::Print::plain);
+  EXPECT_EQ(panel<ClothViewPanel>().style().print, ClothStyle::Print::plain);
   EXPECT_TRUE(explorer_->set_view("print", "photo").has_value()) << "no photo loaded yet";
 
   // A 3 x 2 swatch with a known pixel at each corner: the print holds them top row first.
@@ -581,7 +598,7 @@ TEST_F(ExplorerTest, ASwatchPhotoBecomesThePrintAndABadFileIsRefusedByName) {
   const auto good_path = dir_ / "swatch.png";
   write_png(good_path.c_str(), FrameSize{3, 2}, pixels);
   ASSERT_EQ(explorer_->set_view("print_file", good_path.string()), std::nullopt);
-  const ClothStyle& style = explorer_->cloth_style();
+  const ClothStyle& style = panel<ClothViewPanel>().style();
   EXPECT_EQ(style.print, ClothStyle::Print::photo);
   ASSERT_NE(style.photo, nullptr);
   EXPECT_EQ(style.photo->width, 3);
@@ -600,47 +617,50 @@ TEST_F(ExplorerTest, IdleFramesRecomputeNothingAndADragRecomputesOnce) {
     before[k] = evaluations(stages[k]);
     EXPECT_GE(before[k], 1u) << to_string(stages[k]) << ": the views need every stage";
   }
-  const RenderCounters counters = explorer_->renderer_counters();
+  const RenderCounters counters = renderer_.cloth_counters(panel<ClothViewPanel>().a_view());
   for (int i = 0; i < 10; ++i) {
     frame();
   }
   for (int k = 0; k < 4; ++k) {
     EXPECT_EQ(evaluations(stages[k]), before[k]) << to_string(stages[k]);
   }
-  EXPECT_EQ(explorer_->renderer_counters().mesh_uploads, counters.mesh_uploads);
-  EXPECT_EQ(explorer_->renderer_counters().frames, counters.frames + 10);
+  EXPECT_EQ(renderer_.cloth_counters(panel<ClothViewPanel>().a_view()).mesh_uploads,
+            counters.mesh_uploads);
+  EXPECT_EQ(renderer_.cloth_counters(panel<ClothViewPanel>().a_view()).frames,
+            counters.frames + 10);
 
   explorer_->set_input("h", 1500.0);
   frame();
   for (int k = 0; k < 4; ++k) {
     EXPECT_EQ(evaluations(stages[k]), before[k] + 1) << to_string(stages[k]);
   }
-  EXPECT_EQ(explorer_->renderer_counters().mesh_uploads, counters.mesh_uploads + 1);
+  EXPECT_EQ(renderer_.cloth_counters(panel<ClothViewPanel>().a_view()).mesh_uploads,
+            counters.mesh_uploads + 1);
 }
 
 // The analysis panels once chose inputs by their index in the input table, which moved when the
 // table was reordered (index 3 became nu): Table 1 was swept over nu, the map's x axis was nu.
 TEST_F(ExplorerTest, AnalysisPanelsSweepThePapersInputsByKey) {
-  EXPECT_EQ(explorer_->analysis().sweep().key(), "h");
-  EXPECT_EQ(explorer_->analysis().regime_map().x_key(), "h");
-  EXPECT_EQ(explorer_->analysis().regime_map().y_key(), "w");
+  EXPECT_EQ(panel<AnalysisPanel>().sweep().key(), "h");
+  EXPECT_EQ(panel<AnalysisPanel>().regime_map().x_key(), "h");
+  EXPECT_EQ(panel<AnalysisPanel>().regime_map().y_key(), "w");
 
   ASSERT_EQ(explorer_->set_view("sweep", "table1"), std::nullopt);
   frame();                       // a tab selected now shows from the next frame on
   scroll_panel("analysis", 10);  // to the last plot, which has the x axis's title
   std::string text = frame();
-  EXPECT_EQ(explorer_->analysis().sweep().key(), "h");
+  EXPECT_EQ(panel<AnalysisPanel>().sweep().key(), "h");
   EXPECT_NE(text.find("h (mm)"), std::string::npos) << "the sweep's x axis\n" << text;
   // The heights of the paper's Table 1 rows that ship as presets.
-  std::vector<double> xs = explorer_->analysis().sweep().overlay_x();
+  std::vector<double> xs = panel<AnalysisPanel>().sweep().overlay_x();
   std::sort(xs.begin(), xs.end());
   EXPECT_EQ(xs, (std::vector<double>{900.0, 1400.0, 2350.0}));
   EXPECT_EQ(text.find("cannot be swept"), std::string::npos) << text;
 
   ASSERT_EQ(explorer_->set_view("sweep", "table2"), std::nullopt);
   text = frame();
-  EXPECT_EQ(explorer_->analysis().sweep().key(), "w");
-  xs = explorer_->analysis().sweep().overlay_x();
+  EXPECT_EQ(panel<AnalysisPanel>().sweep().key(), "w");
+  xs = panel<AnalysisPanel>().sweep().overlay_x();
   std::sort(xs.begin(), xs.end());
   ASSERT_EQ(xs.size(), 3u);
   EXPECT_DOUBLE_EQ(xs[0], 10e-7);
@@ -660,7 +680,7 @@ TEST_F(ExplorerTest, AnalysisPanelsSweepThePapersInputsByKey) {
               analysis.pos.x + analysis.size.x - ImGui::GetStyle().ScrollbarSize)
         << label;
   }
-  const PlotView& sweep_view = explorer_->analysis().sweep().plot_view(0);
+  const PlotView& sweep_view = panel<AnalysisPanel>().sweep().plot_view(0);
   EXPECT_LE(sweep_view.x_lo, 50.97);
   EXPECT_GE(sweep_view.x_hi, 815.5);
   EXPECT_GT(sweep_view.x_lo, 40.0) << "not in N/mm²";
@@ -712,7 +732,7 @@ TEST_F(ExplorerTest, BeginnersSeeTheClothAndExpertsTheModelTooRemembered) {
                              "per side", "load-condition constant"}) {
     EXPECT_EQ(text.find(hidden), std::string::npos) << hidden;
   }
-  EXPECT_EQ(explorer_->parameters_panel().slider_places().count("K"), 0u);
+  EXPECT_EQ(panel<ParametersPanel>().slider_places().count("K"), 0u);
   click(ParametersPanel::kExpertLabel);
   text = frame();
   for (const char* shown : {"nu (Poisson's ratio)", "K (eq. 7", "p (eq. 7", "span rule", "Int[]",
@@ -783,7 +803,7 @@ TEST_F(ExplorerTest, SaveAsRecordsWhatThePresetWasDerivedFrom) {
   press('S', true);
   EXPECT_EQ(load_preset(written).derived_from, "Cotton jersey knit");
   // The listing's hover names the origin.
-  const auto& entries = explorer_->presets().entries();
+  const auto& entries = panel<PresetsPanel>().entries();
   const auto entry = std::find_if(entries.begin(), entries.end(), [](const auto& e) {
     return e.path.filename() == "cotton-jersey-knit-edited.json";
   });
@@ -881,16 +901,16 @@ TEST_F(ExplorerTest, TypedTextThatIsNoValueIsKeptAsTypedWithItsReason) {
   const std::string reason =
       "weight per area w: \"heavy\" is not a number with a unit (N/mm², g/m², oz/yd²), nor "
       "arithmetic such as 2*153; the value stays 306 g/m².";
-  EXPECT_EQ(explorer_->parameters_panel().unread_reasons().at("w"), reason);
+  EXPECT_EQ(panel<ParametersPanel>().unread_reasons().at("w"), reason);
   // On the slider where the value was, and under the sliders (wrapped, so its first words).
-  EXPECT_EQ(explorer_->parameters_panel().shown(document(), *foldlab::find_input("w")), "heavy");
+  EXPECT_EQ(panel<ParametersPanel>().shown(document(), *foldlab::find_input("w")), "heavy");
   EXPECT_NE(text.find("heavy"), std::string::npos) << text;
   EXPECT_NE(text.find("is not a number"), std::string::npos) << text;
   EXPECT_EQ(document().undo_depth(), 1u);
   // Undo takes w back to its preset value: the text typed for 306 g/m² goes.
   press('Z', true);
   frame();
-  EXPECT_TRUE(explorer_->parameters_panel().unread_reasons().empty());
+  EXPECT_TRUE(panel<ParametersPanel>().unread_reasons().empty());
   EXPECT_EQ(frame().find("is not a number"), std::string::npos) << last_text_;
   // A value typed after the text that was none answers it: its reason ("the value stays
   // 153 g/m²") leaves the status line rather than contradict the slider for a minute.
@@ -992,7 +1012,7 @@ TEST_F(ExplorerTest, BeginnerSlidersSpanRealFabricsAndTypedValuesGoBeyond) {
             0);
   EXPECT_DOUBLE_EQ(document().edited().fabric.weight_N_per_mm2, 5000.0 * g_per_m2);
   EXPECT_TRUE(document().issues().empty());
-  EXPECT_EQ(explorer_->parameters_panel().slider_places().at("w").fraction, 1.0);
+  EXPECT_EQ(panel<ParametersPanel>().slider_places().at("w").fraction, 1.0);
   status().set_expert_mode(true);
   frame();
   frame();
@@ -1152,7 +1172,7 @@ TEST_F(ExplorerTest, SavingAsksWhereAndAPictureIsTakenAfterTheMenuAndDialogClose
   EXPECT_EQ(fs::path(taken[1].request.path), fs::weakly_canonical(dir_) / "view.png");
   ASSERT_TRUE(taken[1].request.crop.has_value());
   const PanelRect view = *taken[1].request.crop;
-  for (const auto& [key, rect] : explorer_->panel_rects()) {
+  for (const auto& [key, rect] : explorer_->layout().panel_rects()) {
     if (key == "cloth") {
       EXPECT_GE(view.pos.x, rect.pos.x);
       EXPECT_GT(view.pos.y, rect.pos.y) << "below the title and the view's settings";
@@ -1389,8 +1409,8 @@ TEST_F(ExplorerTest, APhotoIsChosenInTheOpenDialogOrTypedWithTilde) {
   click("photo");
   click("swatch PNG");
   ASSERT_EQ(type_and_enter("~/photos/swatch.png"), 0);
-  ASSERT_NE(explorer_->cloth_style().photo, nullptr);
-  EXPECT_EQ(explorer_->cloth_style().photo->width, 2);
+  ASSERT_NE(panel<ClothViewPanel>().style().photo, nullptr);
+  EXPECT_EQ(panel<ClothViewPanel>().style().photo->width, 2);
 
   // Browsed: a folder typed is entered, and only folders and pictures are listed.
   ASSERT_EQ(play(*explorer_,
@@ -1421,14 +1441,14 @@ TEST_F(ExplorerTest, APhotoIsChosenInTheOpenDialogOrTypedWithTilde) {
   EXPECT_EQ(status().modal_title(), PhotoOverlay::kLoadModal);
   ASSERT_EQ(type_and_enter("swatch.png"), 0);
   EXPECT_EQ(status().modal_title(), "");
-  EXPECT_EQ(fs::path(explorer_->photo().photo_file()),
+  EXPECT_EQ(fs::path(panel<PhotoOverlay>().photo_file()),
             fs::weakly_canonical(dir_ / "photos") / "swatch.png");
 
   // Typed with "~/" in the same dialog, from anywhere.
   click("Load");
   ASSERT_EQ(type_and_enter("~/photos/swatch.png"), 0);
   EXPECT_EQ(status().modal_title(), "");
-  EXPECT_EQ(fs::path(explorer_->photo().photo_file()), dir_ / "photos" / "swatch.png");
+  EXPECT_EQ(fs::path(panel<PhotoOverlay>().photo_file()), dir_ / "photos" / "swatch.png");
 }
 
 // A play button sweeps one input while everything re-solves; pause leaves the value.
@@ -1484,11 +1504,11 @@ TEST_F(ExplorerTest, ThePlayButtonSweepsOneInputAndPauseLeavesItAsOneUndoStep) {
   for (int i = 0; i < 3000 && !(highest > 1450.0 && height_mm() < 300.0); ++i) {
     frame();
     highest = std::max(highest, height_mm());
-    const PlotView& fold = explorer_->fold_plot().plot_view();
+    const PlotView& fold = panel<FoldPlotPanel>().plot_view();
     EXPECT_GE(fold.y_hi - fold.y_lo, y_span) << "at h = " << height_mm() << " mm";
-    EXPECT_GE(explorer_->cloth_view().camera().distance_mm, distance) << height_mm();
+    EXPECT_GE(panel<ClothViewPanel>().camera().distance_mm, distance) << height_mm();
     y_span = fold.y_hi - fold.y_lo;
-    distance = explorer_->cloth_view().camera().distance_mm;
+    distance = panel<ClothViewPanel>().camera().distance_mm;
   }
   EXPECT_LT(height_mm(), 300.0) << "it came back down";
   EXPECT_NEAR(highest, 1500.0, 1400.0 / 240.0 + 1e-6);
@@ -1537,7 +1557,7 @@ TEST_F(ExplorerTest, PresentedResultsKeepEachValueBesideItsName) {
 TEST_F(ExplorerTest, TheIntroductionOpensFromTheMenuAndClosesWithEscapeOrClose) {
   EXPECT_EQ(frame().find("A cloth hangs"), std::string::npos);
   click(IntroWindow::kTitle);
-  EXPECT_TRUE(explorer_->intro().is_open());
+  EXPECT_TRUE(panel<IntroWindow>().is_open());
   EXPECT_NE(last_text_.find("A cloth hangs"), std::string::npos) << last_text_;
   // What it says of the folds is what the model draws: going up (i = 0 is the lowest fold line,
   // eq. 6), each arch's depth a_i is the one below's over Q.
@@ -1550,15 +1570,15 @@ TEST_F(ExplorerTest, TheIntroductionOpensFromTheMenuAndClosesWithEscapeOrClose) 
     EXPECT_NEAR(s.a_mm[i] / s.a_mm[i + 1], s.Q, 1e-9 * s.Q) << i;
   }
   press(kEscape);
-  EXPECT_FALSE(explorer_->intro().is_open());
+  EXPECT_FALSE(panel<IntroWindow>().is_open());
   EXPECT_EQ(frame().find("A cloth hangs"), std::string::npos);
 
   click("View");
   click(IntroWindow::kTitle);  // the last drawn: the View menu's item
-  EXPECT_TRUE(explorer_->intro().is_open());
+  EXPECT_TRUE(panel<IntroWindow>().is_open());
   EXPECT_NE(frame().find("A cloth hangs"), std::string::npos);
   click("Close");
-  EXPECT_FALSE(explorer_->intro().is_open());
+  EXPECT_FALSE(panel<IntroWindow>().is_open());
   EXPECT_EQ(frame().find("A cloth hangs"), std::string::npos);
 }
 
@@ -1594,7 +1614,7 @@ TEST_F(ExplorerTest, TheIntroductionShowsItsScrollbarBeforeTheWindowRests) {
   io.MouseDown[0] = false;  // the release, in the third frame after the press
   frame();
   pacing.frame_drawn(frame_saw_input(io));
-  ASSERT_TRUE(explorer_->intro().is_open());
+  ASSERT_TRUE(panel<IntroWindow>().is_open());
   EXPECT_GE(frames_until_rest(pacing, *explorer_, [&] { frame(); }), 2);
   const ImGuiWindow* text = nullptr;
   for (const ImGuiWindow* window : ImGui::GetCurrentContext()->Windows) {
@@ -1711,7 +1731,7 @@ TEST_F(ExplorerTest, ThePapersCaseButtonsAskBeforeReplacingUnsavedEdits) {
   EXPECT_EQ(shown().hanging.height_mm, 900.0);
   click("Discard");
   EXPECT_EQ(document().loaded().name, "Table 2, w = 336 g/m²");
-  EXPECT_EQ(explorer_->analysis().sweep().key(), "w");
+  EXPECT_EQ(panel<AnalysisPanel>().sweep().key(), "w");
 }
 
 // With no session to bring them back (--fresh), closing the window lost the edits unasked.
@@ -2113,7 +2133,7 @@ TEST_F(ExplorerTest, ASlidersHandleIsNarrowerThanADigitOfItsValue) {
       ASSERT_EQ(explorer_->set_view("theme", theme), std::nullopt);
       frame();
       frame();
-      const SliderPlace place = explorer_->parameters_panel().slider_places().at("w");
+      const SliderPlace place = panel<ParametersPanel>().slider_places().at("w");
       const auto inside = [&](ImVec2 at) {
         return at.x >= place.min.x && at.x <= place.max.x && at.y >= place.min.y &&
                at.y <= place.max.y;
@@ -2233,7 +2253,7 @@ TEST_F(ExplorerTest, EveryPanelDrawsAtAnySizeDownToOnePixelAndComesBack) {
     ASSERT_EQ(explorer_->set_view("present", "none"), std::nullopt);
     ASSERT_EQ(explorer_->set_view("scale", "100"), std::nullopt);
     show_at(ImVec2(1280, 800));
-    EXPECT_TRUE(explorer_->panels_fill_window()) << tab;
+    EXPECT_TRUE(explorer_->layout().fills_window()) << tab;
   }
 }
 
@@ -2299,7 +2319,7 @@ TEST_F(ExplorerTest, AViewSettingChosenByHandIsOnDiskWithinSecondsAndComesBack) 
   click("plain");
   click("woven checks");
   frame();
-  ASSERT_EQ(explorer_->cloth_style().print, ClothStyle::Print::checks);
+  ASSERT_EQ(panel<ClothViewPanel>().style().print, ClothStyle::Print::checks);
   // Two seconds of frames (ImGui's clock), with no save asked for.
   for (int i = 0; i < 120; ++i) {
     frame();
@@ -2307,7 +2327,7 @@ TEST_F(ExplorerTest, AViewSettingChosenByHandIsOnDiskWithinSecondsAndComesBack) 
   const nlohmann::json saved = nlohmann::json::parse(foldlab::testing::read_file(session));
   EXPECT_EQ(saved["view"].value("print", -1.0), 1.0) << saved.dump();
   open_explorer("equations", {}, session, true);
-  EXPECT_EQ(explorer_->cloth_style().print, ClothStyle::Print::checks);
+  EXPECT_EQ(panel<ClothViewPanel>().style().print, ClothStyle::Print::checks);
 }
 
 TEST_F(ExplorerTest, UiScaleIsClampedAndRememberedWithTheTheme) {
@@ -2412,7 +2432,7 @@ TEST_F(ExplorerTest, ASessionWithOneBadValueKeepsTheRestAndTheFileAsItWas) {
   EXPECT_NE(notices.find("view.grid_resolution must be true, false or a number, not string"),
             std::string::npos)
       << notices;
-  EXPECT_TRUE(explorer_->cloth_style().wireframe) << "the view's switches are the user's";
+  EXPECT_TRUE(panel<ClothViewPanel>().style().wireframe) << "the view's switches are the user's";
   EXPECT_TRUE(document().compare().pinned()) << "B is the user's";
   EXPECT_EQ(shown().hanging.height_mm, loaded_h) << "the preset it came from";
   EXPECT_EQ(foldlab::testing::read_file(dir_ / "session.json.unread"), broken);
@@ -2427,10 +2447,10 @@ TEST_F(ExplorerTest, ASessionWithOneBadValueKeepsTheRestAndTheFileAsItWas) {
 TEST_F(ExplorerTest, ThePapersOverlayBelongsToItsCaseOnly) {
   ASSERT_EQ(explorer_->set_view("sweep", "table2"), std::nullopt);
   frame();
-  EXPECT_EQ(explorer_->analysis().sweep().overlay_x().size(), 3u) << "Table 2's printed rows";
+  EXPECT_EQ(panel<AnalysisPanel>().sweep().overlay_x().size(), 3u) << "Table 2's printed rows";
   explorer_->load_preset_file(kPresetsDir / "paper-table1-h900.json");
   const std::string text = frame();
-  EXPECT_TRUE(explorer_->analysis().sweep().overlay_x().empty());
+  EXPECT_TRUE(panel<AnalysisPanel>().sweep().overlay_x().empty());
   EXPECT_EQ(text.find("paper, Table 2"), std::string::npos) << text;
 }
 
@@ -2483,7 +2503,7 @@ TEST_F(ExplorerTest, DraggingTheWSliderFromItsHandleMovesWByItsShareOfTheSliders
   // log10(1000 x 9.81e-9 / 1e-7) = 1.99 decades.
   const double slider_decades = std::log10(1000.0 * 9.81e-9 / 1e-7);
   const double w0 = explorer_->edited().fabric.weight_N_per_mm2;
-  const SliderPlace place = explorer_->parameters_panel().slider_places().at("w");
+  const SliderPlace place = panel<ParametersPanel>().slider_places().at("w");
   ASSERT_EQ(ImGui::GetStyle().GrabMinSize, 4.0f);
   const double travel_px = place.max.x - place.min.x - 8.0;
   for (const double dx : {40.0, -40.0}) {
@@ -2570,23 +2590,23 @@ TEST_F(ExplorerTest, TheMethodTabStepsThroughThePapersIteration) {
   EXPECT_NE(text.find("0.9288"), std::string::npos) << "L′/L in the table";
   // a_0 − a_n = 1.01 h − 0.01 h = h: the a-differences alone make h, so eq. 9's root on the first
   // iterate is exactly 0, shown as such (not as a rounded 0.00) and said to come from eq. 9.
-  EXPECT_EQ(explorer_->analysis().method().trace().iterates.front().z_max_mm, 0.0);
+  EXPECT_EQ(panel<AnalysisPanel>().method().trace().iterates.front().z_max_mm, 0.0);
   EXPECT_NE(squeezed(text).find(squeezed("so eq. 9 gives z_max = 0 mm.")), std::string::npos)
       << text;
   EXPECT_EQ(text.find("0.00 "), std::string::npos) << text;
   click("Step");
   text = frame();
-  EXPECT_EQ(explorer_->analysis().method().shown(), 2);
+  EXPECT_EQ(panel<AnalysisPanel>().method().shown(), 2);
   EXPECT_NE(text.find("iterate 2 of 2"), std::string::npos) << text;
   EXPECT_NE(text.find("= 0.229 % ? 5 %: stop. This is the answer."), std::string::npos) << text;
   click("Step");  // disabled at the end: nothing moves
-  EXPECT_EQ(explorer_->analysis().method().shown(), 2);
+  EXPECT_EQ(panel<AnalysisPanel>().method().shown(), 2);
   click("Back");
-  EXPECT_EQ(explorer_->analysis().method().shown(), 1);
+  EXPECT_EQ(panel<AnalysisPanel>().method().shown(), 1);
   click("Run to end");
-  EXPECT_EQ(explorer_->analysis().method().shown(), 2);
+  EXPECT_EQ(panel<AnalysisPanel>().method().shown(), 2);
   click("Reset");
-  EXPECT_EQ(explorer_->analysis().method().shown(), 1);
+  EXPECT_EQ(panel<AnalysisPanel>().method().shown(), 1);
   EXPECT_EQ(shown().model.method, Method::paper) << "viewing a method edits nothing";
 }
 
@@ -2600,14 +2620,14 @@ TEST_F(ExplorerTest, TheMethodTabSetsThePaperMethodsToleranceAsOneValidatedStep)
   explorer_->load_preset_file(kPresetsDir / "paper-table2-w10.json");
   frame();
   frame();
-  const int iterates_at_5_percent = explorer_->analysis().method().iterates();
+  const int iterates_at_5_percent = panel<AnalysisPanel>().method().iterates();
   const std::size_t depth = document().undo_depth();  // the preset load is a step
   const std::string text = frame();
   const ImVec2 field = last_positions_[text.find("0.05", text.find("stop when"))];
   click_at(ImVec2(field.x + 3.0f, field.y + 4.0f));
   ASSERT_EQ(type_and_enter("1e-5"), 0);
   EXPECT_EQ(explorer_->edited().model.length_tolerance, 1e-5);
-  EXPECT_EQ(explorer_->analysis().method().iterates(), 8);
+  EXPECT_EQ(panel<AnalysisPanel>().method().iterates(), 8);
   EXPECT_EQ(document().undo_depth(), depth + 1);
 
   // Beyond 0.5 the tolerance is refused with its reason, the scene keeps the last valid one.
@@ -2620,14 +2640,14 @@ TEST_F(ExplorerTest, TheMethodTabSetsThePaperMethodsToleranceAsOneValidatedStep)
   press('Z', true);
   EXPECT_EQ(shown().model.length_tolerance, 0.05);
   frame();
-  EXPECT_EQ(explorer_->analysis().method().iterates(), iterates_at_5_percent);
+  EXPECT_EQ(panel<AnalysisPanel>().method().iterates(), iterates_at_5_percent);
 }
 
 TEST_F(ExplorerTest, TheMethodTabShowsTheExactMethodsStaircaseToItsFixedPoint) {
   open_explorer("method");
   click("exact method");
   std::string text = frame();
-  EXPECT_EQ(explorer_->analysis().method().method(), Method::exact);
+  EXPECT_EQ(panel<AnalysisPanel>().method().method(), Method::exact);
   EXPECT_EQ(shown().model.method, Method::paper);
   EXPECT_NE(text.find("n = 21:"), std::string::npos) << text;
   EXPECT_NE(text.find("= Int[8.18"), std::string::npos) << text;
@@ -2636,7 +2656,7 @@ TEST_F(ExplorerTest, TheMethodTabShowsTheExactMethodsStaircaseToItsFixedPoint) {
   click("Run to end");
   text = frame();
   EXPECT_NE(text.find("n = 8 maps to itself: the fixed point."), std::string::npos) << text;
-  EXPECT_EQ(explorer_->analysis().method().trace().solution.n, 8);
+  EXPECT_EQ(panel<AnalysisPanel>().method().trace().solution.n, 8);
 }
 
 // At t = 0.9 mm, Table 1's cloth is stiff (s >= 1) below h = K E t³ / (w l²) =
@@ -2647,7 +2667,7 @@ TEST_F(ExplorerTest, TheSweepShowsAStiffStretchAsABandNotASpike) {
   ASSERT_EQ(explorer_->set_input("t", 0.9), std::nullopt);
   frame();
   const std::string text = frame();
-  const SweepPanel& sweep_panel = explorer_->analysis().sweep();
+  const SweepPanel& sweep_panel = panel<AnalysisPanel>().sweep();
   ASSERT_EQ(sweep_panel.key(), "h");
   ASSERT_FALSE(sweep_panel.bands().empty());
   const RegimeBand& stiff = sweep_panel.bands().front();
@@ -2756,11 +2776,11 @@ TEST_F(ExplorerTest, TheThreeDViewIsDrawnAgainOnlyWhenWhatItShowsChanges) {
   for (int i = 0; i < 3; ++i) {
     frame();
   }
-  const RenderCounters before = explorer_->renderer_counters();
+  const RenderCounters before = renderer_.cloth_counters(panel<ClothViewPanel>().a_view());
   for (int i = 0; i < 5; ++i) {
     frame();
   }
-  RenderCounters now = explorer_->renderer_counters();
+  RenderCounters now = renderer_.cloth_counters(panel<ClothViewPanel>().a_view());
   EXPECT_EQ(now.frames, before.frames + 5);
   EXPECT_EQ(now.view_renders, before.view_renders) << "idle frames show the kept picture";
   EXPECT_EQ(now.view_cache_hits, before.view_cache_hits + 5);
@@ -2768,16 +2788,20 @@ TEST_F(ExplorerTest, TheThreeDViewIsDrawnAgainOnlyWhenWhatItShowsChanges) {
   explorer_->set_input("h", 1500.0);
   frame();
   frame();
-  EXPECT_EQ(explorer_->renderer_counters().view_renders, now.view_renders + 1) << "a new h";
+  EXPECT_EQ(renderer_.cloth_counters(panel<ClothViewPanel>().a_view()).view_renders,
+            now.view_renders + 1)
+      << "a new h";
 
-  now = explorer_->renderer_counters();
-  ASSERT_EQ(explorer_->set_view("z", "4"), std::nullopt);
+  now = renderer_.cloth_counters(panel<ClothViewPanel>().a_view());
+  ASSERT_EQ(explorer_->set_view("z_exaggeration", "4"), std::nullopt);
   frame();
   frame();
-  EXPECT_EQ(explorer_->renderer_counters().view_renders, now.view_renders + 1) << "z x4";
+  EXPECT_EQ(renderer_.cloth_counters(panel<ClothViewPanel>().a_view()).view_renders,
+            now.view_renders + 1)
+      << "z x4";
 
   // An orbit: a drag across the middle of the view (the panel's top right of the window).
-  now = explorer_->renderer_counters();
+  now = renderer_.cloth_counters(panel<ClothViewPanel>().a_view());
   const std::uint64_t solves = evaluations(Stage::solution);
   ImGuiIO& io = ImGui::GetIO();
   io.MousePos = ImVec2(1060.0f, 300.0f);
@@ -2790,8 +2814,11 @@ TEST_F(ExplorerTest, TheThreeDViewIsDrawnAgainOnlyWhenWhatItShowsChanges) {
   frame();
   frame();
   EXPECT_EQ(evaluations(Stage::solution), solves) << "the drag moved the camera, not an input";
-  EXPECT_EQ(explorer_->renderer_counters().view_renders, now.view_renders + 1) << "camera moved";
-  EXPECT_EQ(explorer_->renderer_counters().view_cache_hits, now.view_cache_hits + 4);
+  EXPECT_EQ(renderer_.cloth_counters(panel<ClothViewPanel>().a_view()).view_renders,
+            now.view_renders + 1)
+      << "camera moved";
+  EXPECT_EQ(renderer_.cloth_counters(panel<ClothViewPanel>().a_view()).view_cache_hits,
+            now.view_cache_hits + 4);
 }
 
 TEST_F(ExplorerTest, TheGridViewSettingTakesTheSlidersWholeNumbersOnly) {
@@ -2843,8 +2870,8 @@ TEST_F(ExplorerTest, PanelsRefitTheWindowAsItGrowsAndShrinks) {
     io.DisplaySize = size;
     frame();
     frame();
-    EXPECT_TRUE(explorer_->automatic_layout());
-    expect_tiles_fill(explorer_->panel_rects(), size, menu_height);
+    EXPECT_TRUE(explorer_->layout().automatic());
+    expect_tiles_fill(explorer_->layout().panel_rects(), size, menu_height);
   }
 }
 
@@ -2855,7 +2882,7 @@ TEST_F(ExplorerTest, TheLayoutsWidthsFollowTheUiScale) {
   io.DisplaySize = ImVec2(1024, 640);
   frame();
   const auto width_of = [this](const std::string& name) {
-    for (const auto& [n, r] : explorer_->panel_rects()) {
+    for (const auto& [n, r] : explorer_->layout().panel_rects()) {
       if (n == name) {
         return r.size.x;
       }
@@ -2872,7 +2899,7 @@ TEST_F(ExplorerTest, TheLayoutsWidthsFollowTheUiScale) {
   // 20 font sizes that hold the longest label with a short slider), so that the views keep the
   // rest.
   EXPECT_FLOAT_EQ(width_of("parameters"), std::floor(0.40f * 1024.0f));
-  expect_tiles_fill(explorer_->panel_rects(), io.DisplaySize, ImGui::GetFrameHeight());
+  expect_tiles_fill(explorer_->layout().panel_rects(), io.DisplaySize, ImGui::GetFrameHeight());
   io.DisplaySize = ImVec2(2560, 1440);
   frame();
   frame();
@@ -2889,7 +2916,7 @@ TEST_F(ExplorerTest, TheFoldPlotKeepsItsSizeAtALargeUiScale) {
   for (int i = 0; i < 3; ++i) {
     frame();
   }
-  const PlotView& view = explorer_->fold_plot().plot_view();
+  const PlotView& view = panel<FoldPlotPanel>().plot_view();
   EXPECT_GT(view.max.y - view.min.y, 5.0f * ImGui::GetFontSize());
   EXPECT_GE(view.legend_min.y, view.max.y);  // the legend below the data, not over it
 }
@@ -2903,13 +2930,13 @@ TEST_F(ExplorerTest, AtTwiceTheTextSizeThePlotsKeepTheirShareOfTheWindow) {
     SCOPED_TRACE(::testing::Message() << size.x << "x" << size.y);
     show_at(size);
     const double window = static_cast<double>(size.x) * size.y;
-    const PlotView& plot = explorer_->fold_plot().plot_view();
+    const PlotView& plot = panel<FoldPlotPanel>().plot_view();
     const double plot_share = (plot.max.x - plot.min.x) * (plot.max.y - plot.min.y) / window;
     const PanelRect cloth = rect_of("cloth");
     const double cloth_share = static_cast<double>(cloth.size.x) * cloth.size.y / window;
     EXPECT_GT(plot_share, 0.03) << "the fold plot's data";
     EXPECT_GT(cloth_share, 0.175) << "the 3D view's panel";
-    EXPECT_TRUE(explorer_->panels_fill_window());
+    EXPECT_TRUE(explorer_->layout().fills_window());
   }
 }
 
@@ -3058,7 +3085,7 @@ TEST_F(ExplorerTest, EachSweepPlotKeepsItsHeightAtALargeUiScale) {
     bool seen[3] = {};
     for (int scroll = 0; scroll < 12; ++scroll) {
       for (int which = 0; which < 3; ++which) {
-        const PlotView& view = explorer_->analysis().sweep().plot_view(which);
+        const PlotView& view = panel<AnalysisPanel>().sweep().plot_view(which);
         if (view.max.y > analysis.pos.y && view.min.y < analysis.pos.y + analysis.size.y) {
           seen[which] = true;
           EXPECT_GE(view.max.y - view.min.y, 3.0f * ImGui::GetFontSize()) << "plot " << which;
@@ -3083,7 +3110,7 @@ TEST_F(ExplorerTest, APanelIsPresentedByItsTitleButtonAndEscapeReturnsToTheTiles
     return ImVec2(r.pos.x + r.size.x - 0.5f * title_height, r.pos.y + 0.5f * title_height);
   };
   const auto expect_presented = [&](const std::string& key) {
-    const Rects rects = explorer_->panel_rects();
+    const Rects rects = explorer_->layout().panel_rects();
     ASSERT_EQ(rects.size(), 1u) << "the other tiles are hidden";
     EXPECT_EQ(rects[0].first, key);
     const PanelRect& r = rects[0].second;
@@ -3104,11 +3131,11 @@ TEST_F(ExplorerTest, APanelIsPresentedByItsTitleButtonAndEscapeReturnsToTheTiles
   EXPECT_NE(text.find(detail::printf_string("n=%d", s.n)), std::string::npos) << text;
   EXPECT_NE(text.find(detail::printf_string("z_max=%.2fmm", s.z_max_mm)), std::string::npos)
       << text;
-  EXPECT_FALSE(explorer_->panels_fill_window());
+  EXPECT_FALSE(explorer_->layout().fills_window());
   press(kEscape);
   frame();
-  expect_tiles_fill(explorer_->panel_rects(), display, menu_height);
-  EXPECT_TRUE(explorer_->automatic_layout());
+  expect_tiles_fill(explorer_->layout().panel_rects(), display, menu_height);
+  EXPECT_TRUE(explorer_->layout().automatic());
 
   // A double-click on the 3D view's title, then the menu bar's button back.
   const PanelRect cloth = rect_of("cloth");
@@ -3123,7 +3150,7 @@ TEST_F(ExplorerTest, APanelIsPresentedByItsTitleButtonAndEscapeReturnsToTheTiles
   frame();
   expect_presented("cloth");
   click("Back to the tiles (Esc)");
-  expect_tiles_fill(explorer_->panel_rects(), display, menu_height);
+  expect_tiles_fill(explorer_->layout().panel_rects(), display, menu_height);
   // A script names the panel.
   ASSERT_EQ(explorer_->set_view("present", "analysis"), std::nullopt);
   frame();
@@ -3133,14 +3160,14 @@ TEST_F(ExplorerTest, APanelIsPresentedByItsTitleButtonAndEscapeReturnsToTheTiles
   // The introduction opened over a presented panel takes the first Escape; the next one returns
   // to the tiles.
   click(IntroWindow::kTitle);
-  ASSERT_TRUE(explorer_->intro().is_open());
+  ASSERT_TRUE(panel<IntroWindow>().is_open());
   press(kEscape);
-  EXPECT_FALSE(explorer_->intro().is_open());
+  EXPECT_FALSE(panel<IntroWindow>().is_open());
   frame();
   expect_presented("analysis");
   press(kEscape);
   frame();
-  expect_tiles_fill(explorer_->panel_rects(), display, menu_height);
+  expect_tiles_fill(explorer_->layout().panel_rects(), display, menu_height);
 }
 
 // Presenting, a teacher answers "what if it were twice as heavy?" without leaving the view: the
@@ -3159,7 +3186,7 @@ TEST_F(ExplorerTest, ThePresentedViewsStripOfInputsChangesTheFabricWithoutLeavin
   frame();
   const PanelRect with_strip = rect_of("fold_plot");
   std::vector<std::string> keys;
-  for (const auto& [key, place] : explorer_->parameters_panel().slider_places()) {
+  for (const auto& [key, place] : panel<ParametersPanel>().slider_places()) {
     keys.push_back(key);
     EXPECT_LE(place.max.y, with_strip.pos.y) << key << ": above the presented view";
     EXPECT_GE(place.max.x - place.min.x, 7.0f * ImGui::GetFontSize()) << key;
@@ -3188,7 +3215,7 @@ TEST_F(ExplorerTest, ThePresentedViewsStripOfInputsChangesTheFabricWithoutLeavin
                     {{"frames", 2}}}),
             0);
   const InputSpec& w = *find_input("w");
-  EXPECT_EQ(explorer_->parameters_panel().shown(document(), w), "306 g/m²");
+  EXPECT_EQ(panel<ParametersPanel>().shown(document(), w), "306 g/m²");
   EXPECT_TRUE(document().issues().empty());
   EXPECT_EQ(explorer_->presented(), "fold_plot");
 
@@ -3211,12 +3238,12 @@ TEST_F(ExplorerTest, ThePresentedViewsStripOfInputsChangesTheFabricWithoutLeavin
   EXPECT_LE(position_of("is not a number").y, rect_of("fold_plot").pos.y) << last_text_;
   press('Z', true);
   frame();
-  EXPECT_EQ(explorer_->parameters_panel().shown(document(), w), "306 g/m²");
+  EXPECT_EQ(panel<ParametersPanel>().shown(document(), w), "306 g/m²");
 
   // Hidden from the menu bar: no slider to press, the view a strip taller, and so on the next
   // start.
-  ASSERT_EQ(script({{{"click", Explorer::kHideInputsLabel}}, {{"frames", 2}}}), 0);
-  EXPECT_TRUE(explorer_->parameters_panel().slider_places().empty());
+  ASSERT_EQ(script({{{"click", MenuBar::kHideInputsLabel}}, {{"frames", 2}}}), 0);
+  EXPECT_TRUE(panel<ParametersPanel>().slider_places().empty());
   EXPECT_LT(rect_of("fold_plot").pos.y, with_strip.pos.y);
   EXPECT_EQ(explorer_->presented(), "fold_plot");
   explorer_->save_session_now();
@@ -3225,9 +3252,9 @@ TEST_F(ExplorerTest, ThePresentedViewsStripOfInputsChangesTheFabricWithoutLeavin
   ASSERT_EQ(explorer_->set_view("present", "fold_plot"), std::nullopt);
   frame();
   frame();
-  EXPECT_TRUE(explorer_->parameters_panel().slider_places().empty());
-  ASSERT_EQ(script({{{"click", Explorer::kShowInputsLabel}}, {{"frames", 2}}}), 0);
-  EXPECT_EQ(explorer_->parameters_panel().slider_places().size(), 6u);
+  EXPECT_TRUE(panel<ParametersPanel>().slider_places().empty());
+  ASSERT_EQ(script({{{"click", MenuBar::kShowInputsLabel}}, {{"frames", 2}}}), 0);
+  EXPECT_EQ(panel<ParametersPanel>().slider_places().size(), 6u);
 }
 
 // A drag that missed w's handle and started on the line of text under it carried the whole
@@ -3251,7 +3278,7 @@ TEST_F(ExplorerTest, APanelMovesByItsTitleOnlyNotByADragInsideIt) {
   frame();
   EXPECT_EQ(rect_of("parameters").pos.x, before.pos.x);
   EXPECT_EQ(rect_of("parameters").pos.y, before.pos.y);
-  EXPECT_TRUE(explorer_->automatic_layout());
+  EXPECT_TRUE(explorer_->layout().automatic());
   EXPECT_EQ(document().undo_depth(), 0u) << "nothing changed";
 }
 
@@ -3279,8 +3306,8 @@ TEST_F(ExplorerTest, DraggingAPanelsCornerMovesTheNeighboursEdgesWithIt) {
   io.MouseDown[0] = false;
   frame();
   frame();
-  EXPECT_TRUE(explorer_->panels_fill_window());
-  expect_tiles_fill(explorer_->panel_rects(), io.DisplaySize, ImGui::GetFrameHeight());
+  EXPECT_TRUE(explorer_->layout().fills_window());
+  expect_tiles_fill(explorer_->layout().panel_rects(), io.DisplaySize, ImGui::GetFrameHeight());
   EXPECT_FLOAT_EQ(rect_of("fold_plot").size.x, fold.size.x - 80.0f);
   EXPECT_FLOAT_EQ(rect_of("fold_plot").size.y, fold.size.y + 40.0f);
   EXPECT_FLOAT_EQ(rect_of("cloth").pos.x, cloth.pos.x - 80.0f);
@@ -3291,11 +3318,11 @@ TEST_F(ExplorerTest, DraggingAPanelsCornerMovesTheNeighboursEdgesWithIt) {
   io.DisplaySize = ImVec2(1600, 1000);
   frame();
   frame();
-  EXPECT_TRUE(explorer_->panels_fill_window());
+  EXPECT_TRUE(explorer_->layout().fills_window());
   click("Reset layout");
   frame();
   EXPECT_FLOAT_EQ(rect_of("fold_plot").size.x, rect_of("results").size.x);
-  EXPECT_TRUE(explorer_->panels_fill_window());
+  EXPECT_TRUE(explorer_->layout().fills_window());
 }
 
 // Escape closes an open menu and an open combo, as elsewhere on the desktop.
@@ -3314,7 +3341,7 @@ TEST_F(ExplorerTest, APanelTheUserMovesStaysUntilResetLayout) {
   ImGuiIO& io = ImGui::GetIO();
   frame();
   const auto results_pos = [this] {
-    for (const auto& [n, r] : explorer_->panel_rects()) {
+    for (const auto& [n, r] : explorer_->layout().panel_rects()) {
       if (n == "results") {
         return r.pos;
       }
@@ -3336,7 +3363,7 @@ TEST_F(ExplorerTest, APanelTheUserMovesStaysUntilResetLayout) {
   io.MouseDown[0] = false;
   frame();
   frame();
-  EXPECT_FALSE(explorer_->automatic_layout());
+  EXPECT_FALSE(explorer_->layout().automatic());
   EXPECT_FLOAT_EQ(results_pos().x, before.x + 60.0f);
   EXPECT_FLOAT_EQ(results_pos().y, before.y + 40.0f);
   // A bigger window no longer moves the user's panel.
@@ -3347,8 +3374,8 @@ TEST_F(ExplorerTest, APanelTheUserMovesStaysUntilResetLayout) {
   EXPECT_FLOAT_EQ(results_pos().y, before.y + 40.0f);
   // "Reset layout" stands in the menu bar while the user's arrangement is shown.
   click("Reset layout");
-  EXPECT_TRUE(explorer_->automatic_layout());
-  expect_tiles_fill(explorer_->panel_rects(), io.DisplaySize, ImGui::GetFrameHeight());
+  EXPECT_TRUE(explorer_->layout().automatic());
+  expect_tiles_fill(explorer_->layout().panel_rects(), io.DisplaySize, ImGui::GetFrameHeight());
   EXPECT_EQ(frame().find("Reset layout"), std::string::npos) << "only shown when it would act";
 }
 
@@ -3357,7 +3384,7 @@ TEST_F(ExplorerTest, APanelTheUserMovesStaysUntilResetLayout) {
 TEST_F(ExplorerTest, TheUsersArrangementIsRememberedWithTheSession) {
   const fs::path session = dir_ / "session.json";
   open_explorer("equations", {}, session);
-  EXPECT_TRUE(explorer_->automatic_layout());
+  EXPECT_TRUE(explorer_->layout().automatic());
   const ImVec2 title = position_of("Results");
   ImGuiIO& io = ImGui::GetIO();
   io.MousePos = ImVec2(title.x + 80.0f, title.y + 4.0f);
@@ -3368,14 +3395,14 @@ TEST_F(ExplorerTest, TheUsersArrangementIsRememberedWithTheSession) {
   frame();
   io.MouseDown[0] = false;
   frame();
-  ASSERT_FALSE(explorer_->automatic_layout());
+  ASSERT_FALSE(explorer_->layout().automatic());
   explorer_->save_session_now();
   open_explorer("equations", {}, session, true);
-  EXPECT_FALSE(explorer_->automatic_layout());
-  explorer_->reset_layout();
+  EXPECT_FALSE(explorer_->layout().automatic());
+  explorer_->layout().reset();
   explorer_->save_session_now();
   open_explorer("equations", {}, session, true);
-  EXPECT_TRUE(explorer_->automatic_layout());
+  EXPECT_TRUE(explorer_->layout().automatic());
 }
 
 // The session file says which FoldLab wrote it; a session from before it did still loads.
@@ -3504,7 +3531,7 @@ TEST_F(ExplorerTest, At1024x640NoControlIsCutOff) {
   ImGui::GetIO().DisplaySize = ImVec2(1024, 640);
   frame();
   frame();
-  const Rects rects = explorer_->panel_rects();
+  const Rects rects = explorer_->layout().panel_rects();
   const auto right_of = [&](const std::string& name) {
     for (const auto& [n, r] : rects) {
       if (n == name) {
@@ -3533,28 +3560,28 @@ TEST_F(ExplorerTest, AtALargeTextSizeTheViewsSettingsFoldAndTheViewsKeepTheirRoo
   ImGui::GetIO().DisplaySize = ImVec2(1280, 800);
   frame();
   frame();
-  EXPECT_FALSE(explorer_->cloth_view().toolbar_folded());
-  EXPECT_FALSE(explorer_->fold_plot().toolbar_folded());
+  EXPECT_FALSE(panel<ClothViewPanel>().toolbar_folded());
+  EXPECT_FALSE(panel<FoldPlotPanel>().toolbar_folded());
   explorer_->appearance().request(200, false);
   for (int i = 0; i < 4; ++i) {
     frame();
   }
-  EXPECT_TRUE(explorer_->cloth_view().toolbar_folded());
-  EXPECT_TRUE(explorer_->fold_plot().toolbar_folded());
+  EXPECT_TRUE(panel<ClothViewPanel>().toolbar_folded());
+  EXPECT_TRUE(panel<FoldPlotPanel>().toolbar_folded());
   EXPECT_EQ(last_text_.find("wireframe"), std::string::npos) << last_text_;
   // The least useful height of the cloth: twelve lines of text.
-  EXPECT_GE(explorer_->cloth_view().view_rect().size.y, 12.0f * ImGui::GetFontSize());
-  const bool wireframe = explorer_->cloth_style().wireframe;
+  EXPECT_GE(panel<ClothViewPanel>().view_rect().size.y, 12.0f * ImGui::GetFontSize());
+  const bool wireframe = panel<ClothViewPanel>().style().wireframe;
   click("view settings...");
   click("wireframe");
-  EXPECT_NE(explorer_->cloth_style().wireframe, wireframe);
-  EXPECT_TRUE(explorer_->cloth_view().toolbar_folded()) << "a setting does not unfold the row";
+  EXPECT_NE(panel<ClothViewPanel>().style().wireframe, wireframe);
+  EXPECT_TRUE(panel<ClothViewPanel>().toolbar_folded()) << "a setting does not unfold the row";
   press(kEscape);
   explorer_->appearance().request(100, false);
   for (int i = 0; i < 4; ++i) {
     frame();
   }
-  EXPECT_FALSE(explorer_->cloth_view().toolbar_folded());
+  EXPECT_FALSE(panel<ClothViewPanel>().toolbar_folded());
   EXPECT_NE(last_text_.find("wireframe"), std::string::npos) << last_text_;
 }
 
@@ -3569,13 +3596,13 @@ TEST_F(ExplorerTest, TheFirstEditDoesNotMoveTheSlidersUnderThePointer) {
     SCOPED_TRACE(size.x);
     show_at(size);
     ASSERT_FALSE(document().unsaved());
-    const float before = explorer_->parameters_panel().slider_places().at("w").min.y;
+    const float before = panel<ParametersPanel>().slider_places().at("w").min.y;
     ASSERT_EQ(document().apply(Edit::input("h", 1500.0)), std::nullopt);
     frame();
     frame();
     ASSERT_TRUE(document().unsaved());
     EXPECT_TRUE(shows(last_text_, "(unsaved")) << last_text_;
-    EXPECT_EQ(explorer_->parameters_panel().slider_places().at("w").min.y, before);
+    EXPECT_EQ(panel<ParametersPanel>().slider_places().at("w").min.y, before);
     document().reset_to_loaded();
     frame();
   }
@@ -3591,7 +3618,7 @@ TEST_F(ExplorerTest, ASlidersHelpTooltipStaysInsideTheWindowAtTwiceTheTextSize) 
   for (int i = 0; i < 4; ++i) {
     frame();
   }
-  const SliderPlace w = explorer_->parameters_panel().slider_places().at("w");
+  const SliderPlace w = panel<ParametersPanel>().slider_places().at("w");
   ImGui::GetIO().MousePos = ImVec2(0.5f * (w.min.x + w.max.x), 0.5f * (w.min.y + w.max.y));
   for (int i = 0; i < 3; ++i) {
     frame();
@@ -3611,11 +3638,11 @@ TEST_F(ExplorerTest, APresentedMessageNeverMovesTheStripAndIsSaidOnce) {
   ASSERT_EQ(explorer_->set_view("present", "fold_plot"), std::nullopt);
   frame();
   frame();
-  const float w_y = explorer_->parameters_panel().slider_places().at("w").min.y;
+  const float w_y = panel<ParametersPanel>().slider_places().at("w").min.y;
   status().notify("Undone.", false);
   frame();
   EXPECT_NE(last_text_.find("Undone."), std::string::npos) << last_text_;
-  EXPECT_EQ(explorer_->parameters_panel().slider_places().at("w").min.y, w_y);
+  EXPECT_EQ(panel<ParametersPanel>().slider_places().at("w").min.y, w_y);
   ASSERT_EQ(play(*explorer_,
                  {{"steps",
                    {{{"click", "w"}, {"at", 0.5}, {"ctrl", true}},
@@ -3624,7 +3651,7 @@ TEST_F(ExplorerTest, APresentedMessageNeverMovesTheStripAndIsSaidOnce) {
                     {{"frames", 2}}}}},
                  [&] { frame(); }),
             0);
-  EXPECT_EQ(explorer_->parameters_panel().slider_places().at("w").min.y, w_y);
+  EXPECT_EQ(panel<ParametersPanel>().slider_places().at("w").min.y, w_y);
   const std::size_t first = last_text_.find("is not a number");
   ASSERT_NE(first, std::string::npos) << last_text_;
   EXPECT_EQ(last_text_.find("is not a number", first + 1), std::string::npos) << last_text_;
@@ -3659,7 +3686,7 @@ TEST_F(ExplorerTest, AtALargeTextSizeTheRegimeMapsSettingsFoldAndStillWork) {
   ImGui::GetIO().DisplaySize = ImVec2(1280, 800);
   frame();
   frame();
-  const auto report = [&] { return explorer_->analysis().regime_map().report(); };
+  const auto report = [&] { return panel<AnalysisPanel>().regime_map().report(); };
   EXPECT_FALSE(report().at("settings_folded").get<bool>());
   EXPECT_NE(last_text_.find("show z_max instead of n"), std::string::npos) << last_text_;
   explorer_->appearance().request(200, false);
@@ -3707,15 +3734,15 @@ TEST_F(ExplorerTest, APresentedReadOutWrapsBetweenItsValuesAndTheMenuBarKeepsIts
   const std::size_t range_end = last_text_.find(")", q);
   EXPECT_EQ(last_positions_[range_end].y, last_positions_[q].y) << "Q's range on Q's line";
   const float right =
-      position_of(Explorer::kHideInputsLabel).x + ImGui::CalcTextSize(Explorer::kHideInputsLabel).x;
+      position_of(MenuBar::kHideInputsLabel).x + ImGui::CalcTextSize(MenuBar::kHideInputsLabel).x;
   EXPECT_LE(right, 1024.0f);
-  EXPECT_TRUE(shows(last_text_, Explorer::kBackToTilesShortLabel)) << last_text_;
+  EXPECT_TRUE(shows(last_text_, MenuBar::kBackToTilesShortLabel)) << last_text_;
   // At 100 % the bar has room for the long wording.
   explorer_->appearance().request(100, false);
   for (int i = 0; i < 4; ++i) {
     frame();
   }
-  EXPECT_TRUE(shows(last_text_, Explorer::kBackToTilesLabel)) << last_text_;
+  EXPECT_TRUE(shows(last_text_, MenuBar::kBackToTilesLabel)) << last_text_;
 }
 
 // The photo loop through real clicks: a PNG that FoldLab drew of the loaded preset's folds (turned
@@ -3741,26 +3768,26 @@ TEST_F(ExplorerTest, APhotoOfKnownFoldsClickedGivesItsNAndQAndFeedsAFit) {
   frame();
   click("Load");
   EXPECT_EQ(status().modal_title(), "");
-  nlohmann::json report = explorer_->photo().report();
+  nlohmann::json report = panel<PhotoOverlay>().report();
   ASSERT_TRUE(report.at("photo").is_object()) << last_text_;
   EXPECT_EQ(report.at("photo").at("width_px"), photo.width_px);
   EXPECT_EQ(report.at("photo").at("height_px"), photo.height_px);
 
   auto click_pixel = [&](PixelPoint at) {
-    const ImVec2 screen = explorer_->photo().screen_of_pixel(at.x, at.y);
+    const ImVec2 screen = panel<PhotoOverlay>().screen_of_pixel(at.x, at.y);
     click_at(screen);
   };
   // ImGui floors the mouse position to whole screen pixels: a click lands within one screen
   // pixel (diagonal: sqrt 2) of its aim, which is this many photo pixels.
   auto photo_px_per_screen_px = [&] {
-    const ImVec2 a = explorer_->photo().screen_of_pixel(photo.left_support.x, 0.0);
-    const ImVec2 b = explorer_->photo().screen_of_pixel(photo.right_support.x, 0.0);
+    const ImVec2 a = panel<PhotoOverlay>().screen_of_pixel(photo.left_support.x, 0.0);
+    const ImVec2 b = panel<PhotoOverlay>().screen_of_pixel(photo.right_support.x, 0.0);
     return (photo.right_support.x - photo.left_support.x) / std::hypot(b.x - a.x, b.y - a.y);
   };
   const double before_px = std::sqrt(2.0) * photo_px_per_screen_px();
   click_pixel(photo.right_support);  // either order: the left one becomes the first
   click_pixel(photo.left_support);
-  report = explorer_->photo().report();
+  report = panel<PhotoOverlay>().report();
   ASSERT_EQ(report.at("photo").at("supports_px").size(), 2u);
   EXPECT_NEAR(report.at("photo").at("supports_px")[0][0].get<double>(), photo.left_support.x,
               before_px);
@@ -3770,7 +3797,7 @@ TEST_F(ExplorerTest, APhotoOfKnownFoldsClickedGivesItsNAndQAndFeedsAFit) {
   for (auto fold = photo.folds.rbegin(); fold != photo.folds.rend(); ++fold) {
     click_pixel(*fold);
   }
-  report = explorer_->photo().report();
+  report = panel<PhotoOverlay>().report();
   ASSERT_TRUE(report.at("measured").is_object()) << last_text_;
   EXPECT_EQ(report.at("measured").at("n"), s.n);
   // A depth is off by the rows of its click and of the supports' clicks (one screen pixel each,
@@ -3814,13 +3841,13 @@ TEST_F(ExplorerTest, APhotoOfKnownFoldsClickedGivesItsNAndQAndFeedsAFit) {
   // The fit's leave-one-out refits take tens of seconds on a loaded machine: a generous wall
   // clock, not a frame count, bounds the wait.
   const auto give_up = std::chrono::steady_clock::now() + std::chrono::minutes(8);
-  while (explorer_->photo().fitting() && std::chrono::steady_clock::now() < give_up) {
+  while (panel<PhotoOverlay>().fitting() && std::chrono::steady_clock::now() < give_up) {
     std::this_thread::sleep_for(std::chrono::milliseconds(50));
     frame();
   }
-  ASSERT_FALSE(explorer_->photo().fitting());
+  ASSERT_FALSE(panel<PhotoOverlay>().fitting());
   frame();
-  report = explorer_->photo().report();
+  report = panel<PhotoOverlay>().report();
   ASSERT_TRUE(report.at("photo").at("fitted_preset").is_string()) << last_text_;
   const Preset fitted = load_preset(report.at("photo").at("fitted_preset").get<std::string>());
   ASSERT_TRUE(fitted.calibration.has_value());
@@ -3831,7 +3858,7 @@ TEST_F(ExplorerTest, APhotoOfKnownFoldsClickedGivesItsNAndQAndFeedsAFit) {
   EXPECT_EQ(fitted.parameters.model.stress_exponent_p, fitted.calibration->fitted.p);
   EXPECT_NE(fitted.description.find("leave-one-out"), std::string::npos) << fitted.description;
   bool listed = false;
-  for (const PresetsPanel::Entry& entry : explorer_->presets().entries()) {
+  for (const PresetsPanel::Entry& entry : panel<PresetsPanel>().entries()) {
     listed = listed || entry.name == fitted.name;
   }
   EXPECT_TRUE(listed) << fitted.name;
@@ -3847,7 +3874,7 @@ TEST_F(ExplorerTest, APhotoThatCannotBeReadIsRefusedWithItsReason) {
   click("Load");
   EXPECT_EQ(status().modal_title(), PhotoOverlay::kLoadModal);  // stays open to correct it
   EXPECT_NE(squeezed(last_text_).find("notaPNGorJPEGfile"), std::string::npos) << last_text_;
-  EXPECT_TRUE(explorer_->photo().report().at("photo").is_null());
+  EXPECT_TRUE(panel<PhotoOverlay>().report().at("photo").is_null());
   press(kEscape);
   EXPECT_EQ(status().modal_title(), "");
 }
@@ -3893,8 +3920,8 @@ TEST_F(ExplorerTest, ResultsShowTheRangeTheCalibrationAllows) {
 // moved to the nearest allowed value (README: values are never clamped).
 TEST_F(ExplorerTest, ViewSettingsOutsideTheirRangeAreRefusedNotClamped) {
   for (const auto& [key, value] :
-       std::vector<std::pair<const char*, const char*>>{{"z", "100"},
-                                                        {"z", "-3"},
+       std::vector<std::pair<const char*, const char*>>{{"z_exaggeration", "100"},
+                                                        {"z_exaggeration", "-3"},
                                                         {"scale", "1000"},
                                                         {"scale", "99"},
                                                         {"breeze", "2"},
@@ -3908,11 +3935,12 @@ TEST_F(ExplorerTest, ViewSettingsOutsideTheirRangeAreRefusedNotClamped) {
     ASSERT_TRUE(problem.has_value());
     EXPECT_NE(problem->find("must be"), std::string::npos) << *problem;
   }
-  EXPECT_EQ(explorer_->cloth_style().z_exaggeration, 1.0f) << "a refused value changes nothing";
-  EXPECT_EQ(explorer_->set_view("z", "20"), std::nullopt);
-  EXPECT_EQ(explorer_->cloth_style().z_exaggeration, 20.0f);
+  EXPECT_EQ(panel<ClothViewPanel>().style().z_exaggeration, 1.0f)
+      << "a refused value changes nothing";
+  EXPECT_EQ(explorer_->set_view("z_exaggeration", "20"), std::nullopt);
+  EXPECT_EQ(panel<ClothViewPanel>().style().z_exaggeration, 20.0f);
   EXPECT_EQ(explorer_->set_view("wireframe", "1"), std::nullopt);
-  EXPECT_TRUE(explorer_->cloth_style().wireframe);
+  EXPECT_TRUE(panel<ClothViewPanel>().style().wireframe);
   EXPECT_EQ(explorer_->set_view("scale", "250"), std::nullopt);
 }
 
@@ -4014,7 +4042,7 @@ TEST_F(ExplorerTest, EveryPanelHasADistinctNameAndTheReportNamesComeFromTheList)
   EXPECT_EQ(tiled.size(), static_cast<std::size_t>(kTileCount));
   frame();
   std::vector<std::string> reported;
-  for (const auto& [key, rect] : explorer_->panel_rects()) {
+  for (const auto& [key, rect] : explorer_->layout().panel_rects()) {
     reported.push_back(key);
   }
   EXPECT_EQ(reported, tiled);
@@ -4103,8 +4131,8 @@ TEST_F(ExplorerTest, PinnedBKeepsItsNumbersWhileADragChangesAAndTheTableShowsThe
 }
 
 TEST_F(ExplorerTest, TheFoldPlotDrawsBsFoldLinesDashedBesideAs) {
-  EXPECT_EQ(explorer_->fold_plot().compare_lines_drawn(), 0);
-  const int legend_without_b = explorer_->fold_plot().plot_view().legend_entries;
+  EXPECT_EQ(panel<FoldPlotPanel>().compare_lines_drawn(), 0);
+  const int legend_without_b = panel<FoldPlotPanel>().plot_view().legend_entries;
   click("Pin as B");
   const Parameters b = shown();
   ASSERT_EQ(explorer_->set_input("h", 2350.0), std::nullopt);
@@ -4117,11 +4145,11 @@ TEST_F(ExplorerTest, TheFoldPlotDrawsBsFoldLinesDashedBesideAs) {
     points += line.points_mm.size();
   }
   ASSERT_GT(lines.lines.size(), 1u);
-  EXPECT_EQ(explorer_->fold_plot().compare_lines_drawn(), static_cast<int>(lines.lines.size()));
-  EXPECT_EQ(explorer_->fold_plot().compare_points_drawn(), points);
+  EXPECT_EQ(panel<FoldPlotPanel>().compare_lines_drawn(), static_cast<int>(lines.lines.size()));
+  EXPECT_EQ(panel<FoldPlotPanel>().compare_points_drawn(), points);
   // "A positive fold", "A negative fold", "B positive fold (dashed)", "B negative fold (dashed)"
   // in place of the two fold entries, none cut at the plot's edge.
-  EXPECT_EQ(explorer_->fold_plot().plot_view().legend_entries, legend_without_b + 2);
+  EXPECT_EQ(panel<FoldPlotPanel>().plot_view().legend_entries, legend_without_b + 2);
   const std::string text = frame();
   for (const char* entry : {"A positive fold", "A negative fold", "B positive fold (dashed)",
                             "B negative fold (dashed)"}) {
@@ -4132,27 +4160,30 @@ TEST_F(ExplorerTest, TheFoldPlotDrawsBsFoldLinesDashedBesideAs) {
             std::vector<std::string>{});
   click("Clear B");
   EXPECT_FALSE(document().compare().pinned());
-  EXPECT_EQ(explorer_->fold_plot().compare_lines_drawn(), 0);
-  EXPECT_EQ(explorer_->fold_plot().plot_view().legend_entries, legend_without_b);
+  EXPECT_EQ(panel<FoldPlotPanel>().compare_lines_drawn(), 0);
+  EXPECT_EQ(panel<FoldPlotPanel>().plot_view().legend_entries, legend_without_b);
 }
 
 TEST_F(ExplorerTest, TheThreeDViewDrawsBBesideAOnlyWhilePinned) {
   frame();
-  EXPECT_EQ(explorer_->compare_counters().frames, 0u) << "no B: nothing drawn for it";
-  EXPECT_EQ(explorer_->compare_counters().mesh_uploads, 0u);
+  EXPECT_EQ(renderer_.cloth_counters(panel<ClothViewPanel>().b_view()).frames, 0u)
+      << "no B: nothing drawn for it";
+  EXPECT_EQ(renderer_.cloth_counters(panel<ClothViewPanel>().b_view()).mesh_uploads, 0u);
   click("Pin as B");
-  const RenderCounters pinned = explorer_->compare_counters();
+  const RenderCounters pinned = renderer_.cloth_counters(panel<ClothViewPanel>().b_view());
   EXPECT_GE(pinned.mesh_uploads, 1u);
   EXPECT_GE(pinned.frames, 1u);
-  const std::uint64_t a_frames = explorer_->renderer_counters().frames;
+  const std::uint64_t a_frames = renderer_.cloth_counters(panel<ClothViewPanel>().a_view()).frames;
   for (int i = 0; i < 3; ++i) {
     frame();
   }
   // Both cloths every frame, and B's picture kept while nothing it shows changes.
-  EXPECT_EQ(explorer_->renderer_counters().frames, a_frames + 3);
-  EXPECT_EQ(explorer_->compare_counters().frames, pinned.frames + 3);
-  EXPECT_EQ(explorer_->compare_counters().view_cache_hits, pinned.view_cache_hits + 3);
-  EXPECT_EQ(explorer_->compare_counters().mesh_uploads, pinned.mesh_uploads);
+  EXPECT_EQ(renderer_.cloth_counters(panel<ClothViewPanel>().a_view()).frames, a_frames + 3);
+  EXPECT_EQ(renderer_.cloth_counters(panel<ClothViewPanel>().b_view()).frames, pinned.frames + 3);
+  EXPECT_EQ(renderer_.cloth_counters(panel<ClothViewPanel>().b_view()).view_cache_hits,
+            pinned.view_cache_hits + 3);
+  EXPECT_EQ(renderer_.cloth_counters(panel<ClothViewPanel>().b_view()).mesh_uploads,
+            pinned.mesh_uploads);
   // Each half is named. In the tiled half view a preset's long name would wrap over the cloth
   // and its supports: the letter alone; presented, the view is wide enough for the name.
   const auto drawn_in_cloth_view = [&](const std::string& words) {
@@ -4198,29 +4229,29 @@ TEST_F(ExplorerTest, TheThreeDViewDrawsBBesideAOnlyWhilePinned) {
   ASSERT_EQ(explorer_->set_view("present", "none"), std::nullopt);
   frame();
   click("Clear B");
-  const std::uint64_t cleared = explorer_->compare_counters().frames;
+  const std::uint64_t cleared = renderer_.cloth_counters(panel<ClothViewPanel>().b_view()).frames;
   frame();
   frame();
-  EXPECT_EQ(explorer_->compare_counters().frames, cleared);
+  EXPECT_EQ(renderer_.cloth_counters(panel<ClothViewPanel>().b_view()).frames, cleared);
 }
 
 TEST_F(ExplorerTest, TheSweepDrawsBsCurveBesideAs) {
   open_explorer("sweep");
-  EXPECT_EQ(explorer_->analysis().sweep().curves_drawn(), 1);
-  EXPECT_EQ(explorer_->analysis().sweep().compare_curves(), nullptr);
+  EXPECT_EQ(panel<AnalysisPanel>().sweep().curves_drawn(), 1);
+  EXPECT_EQ(panel<AnalysisPanel>().sweep().compare_curves(), nullptr);
   click("Pin as B");
   const Parameters b = shown();
   ASSERT_EQ(explorer_->set_input("w", 2.0 * b.fabric.weight_N_per_mm2), std::nullopt);
   frame();
-  EXPECT_EQ(explorer_->analysis().sweep().curves_drawn(), 2);
-  const SweepCurves* drawn = explorer_->analysis().sweep().compare_curves();
+  EXPECT_EQ(panel<AnalysisPanel>().sweep().curves_drawn(), 2);
+  const SweepCurves* drawn = panel<AnalysisPanel>().sweep().compare_curves();
   ASSERT_NE(drawn, nullptr);
   // The sweep's own axis (h from 500 to 3000 mm, 200 steps) over B's parameters, from the core.
   const SweepCurves direct = sweep_curves(sweep(b, SweepAxis{"h", 500.0, 3000.0, 200, false}));
   EXPECT_EQ(drawn->x, direct.x);
   EXPECT_EQ(drawn->n, direct.n);
   EXPECT_EQ(drawn->z_max_mm, direct.z_max_mm);
-  EXPECT_NE(explorer_->analysis().sweep().curves().z_max_mm, direct.z_max_mm) << "A moved";
+  EXPECT_NE(panel<AnalysisPanel>().sweep().curves().z_max_mm, direct.z_max_mm) << "A moved";
 }
 
 TEST_F(ExplorerTest, APlayedScriptPinsSwapsAndClearsB) {
@@ -4322,14 +4353,15 @@ TEST_F(ExplorerTest, EachFabricKeepsItsOwnPresetThroughPinSwapResetUndoAndTheSes
 TEST_F(ExplorerTest, TheThreeDViewsLookIsRestoredWithTheSession) {
   const fs::path session = dir_ / "session.json";
   open_explorer("equations", {}, session);
-  for (const auto& [key, value] : {std::pair{"print", "checks"}, std::pair{"print_mm", "25"},
-                                   std::pair{"colour_by", "fold_sign"}, std::pair{"z", "4"}}) {
+  for (const auto& [key, value] :
+       {std::pair{"print", "checks"}, std::pair{"print_mm", "25"},
+        std::pair{"colour_by", "fold_sign"}, std::pair{"z_exaggeration", "4"}}) {
     ASSERT_EQ(explorer_->set_view(key, value), std::nullopt) << key;
   }
   frame();
   explorer_->save_session_now();
   open_explorer("equations", {}, session, true);
-  const ClothStyle& style = explorer_->cloth_style();
+  const ClothStyle& style = panel<ClothViewPanel>().style();
   EXPECT_EQ(style.print, ClothStyle::Print::checks);
   EXPECT_EQ(style.print_mm, 25.0f);
   EXPECT_EQ(style.colour_by, ClothStyle::ColourBy::fold_sign);

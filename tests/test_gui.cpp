@@ -314,7 +314,7 @@ TEST_F(GuiDetailTest, AFineGridIsDrawnWithCellsOfAFewPixelsAndLooksTheSame) {
 TEST_F(GuiDetailTest, ExaggeratedPleatsKeepTheirRowsAndFoldLines) {
   const DetailComparison c =
       compare("chiffon", {"--preset", (kPresetsDir / "fabric-silk-chiffon.json").string(), "--view",
-                          "z=3", "--view", "full=1"});
+                          "z_exaggeration=3", "--view", "full=1"});
   EXPECT_LT(c.detail["renderer"]["drawn_rows"].get<int>(), 512);
   EXPECT_LT(c.mean_difference, 0.6);
   EXPECT_LT(c.far_fraction, 0.001);
@@ -526,12 +526,13 @@ TEST_F(GuiTest, RenderRejectsBadInputWithExitTwo) {
   EXPECT_EQ(bad_switch.exit_status, 2);
   EXPECT_NE(bad_switch.err.find("lod = 'yes' must be 0 or 1"), std::string::npos) << bad_switch.err;
   // Every refused view setting is named, not only the first.
-  const RunResult three = foldlab::testing::run_process(
-      kExecutable,
-      {"render", "--out", out.string(), "--view", "foo=1", "--view", "grid=1", "--view", "z=99"},
-      dir_, environment());
+  const RunResult three =
+      foldlab::testing::run_process(kExecutable,
+                                    {"render", "--out", out.string(), "--view", "foo=1", "--view",
+                                     "grid=1", "--view", "z_exaggeration=99"},
+                                    dir_, environment());
   EXPECT_EQ(three.exit_status, 2);
-  for (const char* named : {"'foo'", "grid = '1'", "z = 99"}) {
+  for (const char* named : {"'foo'", "grid = '1'", "z_exaggeration = 99"}) {
     EXPECT_NE(three.err.find(named), std::string::npos) << named << "\n" << three.err;
   }
   EXPECT_FALSE(fs::exists(out));

@@ -139,7 +139,7 @@ TEST_F(NewInputRowInTheExplorer, HasASliderThatAPlayedScriptDragsAndExpects) {
   };
   frame();
   frame();
-  EXPECT_TRUE(explorer->parameters_panel().slider_places().contains("t_um"));
+  EXPECT_TRUE(explorer->report().at("sliders").contains("t_um"));
   // 0.25 mm is 250 µm; a drag to the right thickens the cloth, seen by both rows.
   const nlohmann::json script = {
       {"steps",

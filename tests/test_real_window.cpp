@@ -151,7 +151,7 @@ TEST_F(RealWindowTest, TeacherScalesTheTextAndResizesTheWindow) {
                                 "sleep 0.3\nxdotool windowsize --sync $WID 1024 640\nsleep 1\n");
   EXPECT_EQ(after.at("display"), json::array({1024.0, 640.0}));
   const json session = read_json(config() / "foldlab" / "session.json");
-  EXPECT_EQ(session.at("view").at("ui_scale_percent"), 120) << session.dump();
+  EXPECT_EQ(session.at("view").at("scale"), 120) << session.dump();
 }
 
 // A window dragged down to nothing by hand (no window manager here keeps GLFW's minimum size)
@@ -172,7 +172,7 @@ TEST_F(RealWindowTest, AWindowSqueezedToOnePixelAndBackKeepsRunning) {
 TEST_F(RealWindowTest, ClosingTheTerminalKeepsTheSession) {
   const json after = run_window("1280x800", "xdotool key ctrl+plus\nsleep 0.5\n", "HUP");
   const json session = read_json(config() / "foldlab" / "session.json");
-  EXPECT_EQ(session.at("view").at("ui_scale_percent"), 110) << session.dump();
+  EXPECT_EQ(session.at("view").at("scale"), 110) << session.dump();
   EXPECT_EQ(after.at("appearance").at("scale_percent"), 110);
 }
 

@@ -11,6 +11,7 @@
 #include "app/common/presets_dir.hpp"
 #include "app/gui/gui_app.hpp"
 #include "app/gui/page_link.hpp"
+#include "app/gui/panel_list.hpp"
 #include "app/gui/picture.hpp"
 #include "app/gui/surface.hpp"
 #include "core/analysis/sweep.hpp"
@@ -340,9 +341,7 @@ app::Command add_picture_command(CLI::App& app) {
       "picture",
       "draw the 3D cloth, the fold plot, the sweep's plots or A and B side by side, alone, with "
       "no interface, at any size, into a PNG (no display needed: EGL surfaceless)");
-  command
-      ->add_option("VIEW", options->view,
-                   std::string("what the picture shows: ") + kPictureViewNames)
+  command->add_option("VIEW", options->view, "what the picture shows: " + picture_view_names())
       ->required();
   add_scene_options(*command, options->scene);
   command
@@ -378,12 +377,12 @@ app::Command add_picture_command(CLI::App& app) {
   return [options] {
     return guarded([&] {
       PictureSpec& spec = options->spec;
-      const std::optional<PictureView> view = parse_picture_view(options->view);
-      if (!view) {
+      const PictureOffer* view = picture_offer(std::string_view(options->view));
+      if (view == nullptr) {
         throw InputError("VIEW '" + detail::cut(options->view) + "' must be one of " +
-                         kPictureViewNames);
+                         picture_view_names());
       }
-      spec.view = *view;
+      spec.view = view->view;
       const std::optional<PictureBackground> background =
           parse_picture_background(options->background);
       if (!background) {

@@ -23,6 +23,7 @@
 #include "app/gui/file_transfer.hpp"
 #include "app/gui/frame_pacing.hpp"
 #include "app/gui/input_player.hpp"
+#include "app/gui/panels/analysis_panel.hpp"
 #include "app/gui/renderer.hpp"
 #include "app/gui/screen.hpp"
 #include "app/gui/scripted_run.hpp"
@@ -618,7 +619,7 @@ int run_picture(const GuiRunOptions& options, const std::filesystem::path& out,
   ExplorerRun run(*surface, options, start, false, std::nullopt);
   Explorer& explorer = run.explorer();
   if (inputs.sweep_axis) {
-    explorer.panel<AnalysisPanel>().sweep().set_axis(*inputs.sweep_axis);
+    find_panel<AnalysisPanel>(explorer.panels()).sweep().set_axis(*inputs.sweep_axis);
   }
   if (inputs.b) {
     explorer.document().compare().pin(*inputs.b);

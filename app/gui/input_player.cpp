@@ -12,6 +12,7 @@
 #include <unordered_map>
 
 #include "app/common/inputs.hpp"
+#include "app/gui/panels/file_dialog.hpp"
 #include "app/gui/play_script.hpp"
 #include "app/gui/surface.hpp"
 #include "core/analysis/sweep.hpp"
@@ -208,45 +209,9 @@ std::optional<ImVec2> find_label(const std::string& label, const std::string& pa
   return inside;
 }
 
-// Where ImGui 1.86 centres a float slider's handle for `fraction` (SliderBehaviorT's geometry).
-float handle_x(const SliderPlace& place, double fraction) {
-  constexpr float kGrabPadding = 2.0f;
-  const float slider_px = place.max.x - place.min.x - 2.0f * kGrabPadding;
-  const float grab_px = std::min(ImGui::GetStyle().GrabMinSize, slider_px);
-  return place.min.x + kGrabPadding + 0.5f * grab_px +
-         static_cast<float>(fraction) * (slider_px - grab_px);
-}
-
-// The Method tab's stepper: how far it is and the iterate it shows.
-json method_step_json(const MethodPanel& stepper) {
-  if (stepper.iterates() == 0) {
-    return {{"method", to_string(stepper.method())}, {"shown", 0}, {"of", 0}};
-  }
-  const Iterate& it = stepper.trace().iterates[static_cast<std::size_t>(stepper.shown() - 1)];
-  return {{"method", to_string(stepper.method())},
-          {"shown", stepper.shown()},
-          {"of", stepper.iterates()},
-          {"n", it.n},
-          {"Q", it.Q},
-          {"z_max_mm", it.z_max_mm},
-          {"length_ratio", it.length_ratio}};
-}
-
 }  // namespace
 
-namespace {
-
-// The 3D view's settings that a person picks from its combos.
-json cloth_view_json(const ClothStyle& style) {
-  static const char* const kPrints[] = {"plain", "checks", "stripes", "photo"};
-  static const char* const kColourBy[] = {"none", "z", "fold_sign"};
-  return {{"print", kPrints[static_cast<int>(style.print)]},
-          {"print_file", style.photo ? json(style.photo->path) : json(nullptr)},
-          {"colour_by", kColourBy[static_cast<int>(style.colour_by)]},
-          {"z_exaggeration", style.z_exaggeration}};
-}
-
-}  // namespace
+namespace {}  // namespace
 
 namespace {
 
@@ -264,16 +229,6 @@ json parameters_json(const Parameters& p) {
   return out;
 }
 
-json counters_json(const RenderCounters& c) {
-  return json{{"mesh_uploads", c.mesh_uploads},
-              {"fold_line_uploads", c.fold_line_uploads},
-              {"frames", c.frames},
-              {"view_renders", c.view_renders},
-              {"view_cache_hits", c.view_cache_hits},
-              {"drawn_columns", c.drawn_columns},
-              {"drawn_rows", c.drawn_rows}};
-}
-
 // B, the fabric pinned beside A: null while none is.
 json compare_json(Document& document) {
   if (!document.compare().pinned()) {
@@ -285,48 +240,14 @@ json compare_json(Document& document) {
           {"solution", solution_to_json(document.compare().solution(), b.parameters)}};
 }
 
-// Where each slider's handle is, so that a test driving the real window (xdotool) can press on
-// it as a person would.
-json sliders_json(Explorer& explorer, Document& document) {
-  json sliders = json::object();
-  for (const auto& [key, place] : explorer.parameters_panel().slider_places()) {
-    const float y = 0.5f * (place.min.y + place.max.y);
-    sliders[key] = {{"handle", {handle_x(place, place.fraction), y}},
-                    {"left", place.min.x},
-                    {"right", place.max.x},
-                    {"shown", explorer.parameters_panel().shown(document, *find_input(key))}};
-  }
-  return sliders;
-}
-
-// Text typed into a slider that is no value, with the reason the panel gives, by input key.
-json unread_json(Explorer& explorer) {
-  json unread = json::object();
-  for (const auto& [key, reason] : explorer.parameters_panel().unread_reasons()) {
-    unread[key] = reason;
-  }
-  return unread;
-}
-
-// The user's own presets as the Presets panel lists them (what "Save as..." kept).
-json user_presets_json(const Explorer& explorer) {
-  json user_presets = json::array();
-  for (const PresetsPanel::Entry& entry : explorer.presets().entries()) {
-    if (entry.user) {
-      user_presets.push_back(entry.name);
-    }
-  }
-  return user_presets;
-}
-
 json layout_json(Explorer& explorer) {
   const std::string presented = explorer.presented();
   json panels = json::object();
-  for (const auto& [name, rect] : explorer.panel_rects()) {
+  for (const auto& [name, rect] : explorer.layout().panel_rects()) {
     panels[name] = {{"x", rect.pos.x}, {"y", rect.pos.y}, {"w", rect.size.x}, {"h", rect.size.y}};
   }
-  return {{"automatic", explorer.automatic_layout()},
-          {"fills_window", explorer.panels_fill_window()},
+  return {{"automatic", explorer.layout().automatic()},
+          {"fills_window", explorer.layout().fills_window()},
           {"presented", presented.empty() ? json(nullptr) : json(presented)},
           {"presented_message", explorer.presented_message()},
           {"panels", panels}};
@@ -337,55 +258,34 @@ json layout_json(Explorer& explorer) {
 json explorer_state_json(Explorer& explorer) {
   Document& document = explorer.document();
   Scene& scene = document.scene();
-  const json parameters = parameters_json(document.edited());
-  json renderer = counters_json(explorer.renderer_counters());
-  renderer["compare"] = counters_json(explorer.compare_counters());
-  const json compare = compare_json(document);
-  const json sliders = sliders_json(explorer, document);
-  const json unread = unread_json(explorer);
   const std::optional<std::string> refused = document.refusal();
   const std::string& modal = explorer.status().modal_title();
-  const json layout = layout_json(explorer);
   // The system's clipboard may hold any bytes.
   const char* clipboard = ImGui::GetClipboardText();
-  json state = {
+  json state = explorer.report();  // every panel's keys, and "view"
+  state.update(json{
       {"grid", std::to_string(scene.grid_nx()) + "x" + std::to_string(scene.grid_ny())},
-      {"regime_map_ms", explorer.regime_map_ms()},
-      {"regime_map", explorer.analysis().regime_map().report()},
       {"stats", scene_stats_to_json(scene)},
       {"solution", solution_to_json(scene.solution(), scene.parameters())},
-      {"renderer", renderer},
-      {"parameters", parameters},
-      {"compare", compare},
+      {"parameters", parameters_json(document.edited())},
+      {"compare", compare_json(document)},
       {"refused", refused ? json(*refused) : json(nullptr)},
       {"dirty", document.unsaved()},
       {"session_unsaved", explorer.status().session_dirty()},
       {"modal", modal.empty() ? json(nullptr) : json(modal)},
       {"undo_depth", document.undo_depth()},
-      {"sliders", sliders},
-      {"unread", unread},
       {"display", {ImGui::GetIO().DisplaySize.x, ImGui::GetIO().DisplaySize.y}},
-      {"method_step", method_step_json(explorer.analysis().method())},
-      {"view", cloth_view_json(explorer.cloth_style())},
-      {"camera",
-       {{"yaw_rad", explorer.cloth_view().camera().yaw_rad},
-        {"pitch_rad", explorer.cloth_view().camera().pitch_rad},
-        {"distance_mm", explorer.cloth_view().camera().distance_mm}}},
       {"message", explorer.status().message()},
       {"link", explorer.link()},
       {"clipboard", detail::escaped(clipboard != nullptr ? clipboard : "")},
       {"popup_open", ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId)},
       {"file_problem", explorer.file_dialog().problem()},
-      {"user_presets", user_presets_json(explorer)},
-      {"intro_open", explorer.intro().is_open()},
-      {"layout", layout},
+      {"layout", layout_json(explorer)},
       {"appearance",
        {{"scale_percent", explorer.appearance().scale_percent()},
         {"light_theme", explorer.appearance().light_theme()},
         {"pixel_ratio", explorer.appearance().pixel_ratio()}}},
-  };
-  state.update(explorer.photo().report());  // "photo" and "measured"
-  state.update(explorer.calibration().report());
+  });
   return state;
 }
 
@@ -442,6 +342,18 @@ int InputPlayer::exit_status() const {
   return failure_.empty() ? app::kExitOk : 1;
 }
 
+// Where the panel that has `target` on screen draws it (Panel::locate), or nullopt.
+std::optional<ImVec2> locate(const Explorer& explorer, std::string_view target,
+                             std::initializer_list<double> at) {
+  const std::vector<double> args(at);
+  for (const std::unique_ptr<Panel>& panel : explorer.panels()) {
+    if (std::optional<ImVec2> found = panel->locate(target, args)) {
+      return found;
+    }
+  }
+  return std::nullopt;
+}
+
 void InputPlayer::queue_press(ImVec2 from, ImVec2 to, int moves) {
   FrameInput hover;
   hover.mouse = from;
@@ -460,15 +372,20 @@ void InputPlayer::queue_press(ImVec2 from, ImVec2 to, int moves) {
   queue_.push_back(up);
 }
 
-const SliderPlace* InputPlayer::find_slider(std::size_t index, const std::string& key,
-                                            Explorer& explorer) {
-  const auto& places = explorer.parameters_panel().slider_places();
-  const auto found = places.find(key);
-  if (found == places.end()) {
+std::optional<SliderPlace> InputPlayer::find_slider(std::size_t index, const std::string& key,
+                                                    Explorer& explorer) {
+  const json sliders = explorer.report().value("sliders", json::object());
+  if (!sliders.contains(key)) {
     fail(index, "the slider " + key + " is not shown");
-    return nullptr;
+    return std::nullopt;
   }
-  return &found->second;
+  const json& slider = sliders.at(key);
+  const json& clip = slider.at("clip");
+  return SliderPlace{ImVec2(slider.at("left").get<float>(), slider.at("top").get<float>()),
+                     ImVec2(slider.at("right").get<float>(), slider.at("bottom").get<float>()),
+                     slider.at("fraction").get<double>(),
+                     ImVec2(clip.at(0).get<float>(), clip.at(1).get<float>()),
+                     ImVec2(clip.at(2).get<float>(), clip.at(3).get<float>())};
 }
 
 // A person cannot press what the window does not show: a slider scrolled out of its panel or
@@ -490,8 +407,8 @@ bool InputPlayer::reachable(std::size_t index, const std::string& key, const Sli
 
 bool InputPlayer::click_slider(std::size_t index, const json& step, Explorer& explorer) {
   const std::string key = step["click"].get<std::string>();
-  const SliderPlace* place = find_slider(index, key, explorer);
-  if (place == nullptr) {
+  const std::optional<SliderPlace> place = find_slider(index, key, explorer);
+  if (!place) {
     return false;
   }
   // The frame's right edge itself is outside the item.
@@ -609,11 +526,11 @@ bool InputPlayer::start_step(std::size_t index, ImGuiIO& io, Explorer& explorer)
 
 bool InputPlayer::drag_slider(std::size_t index, const json& step, Explorer& explorer) {
   const std::string key = step["drag"].get<std::string>();
-  const SliderPlace* place = find_slider(index, key, explorer);
-  if (place == nullptr) {
+  const std::optional<SliderPlace> place = find_slider(index, key, explorer);
+  if (!place) {
     return false;
   }
-  const ImVec2 from(handle_x(*place, place->fraction), 0.5f * (place->min.y + place->max.y));
+  const ImVec2 from(slider_handle_x(*place, place->fraction), 0.5f * (place->min.y + place->max.y));
   if (!reachable(index, key, *place, from)) {
     return false;
   }
@@ -626,13 +543,14 @@ bool InputPlayer::drag_slider(std::size_t index, const json& step, Explorer& exp
 }
 
 bool InputPlayer::click_photo(std::size_t index, const json& step, Explorer& explorer) {
-  if (explorer.photo().report().at("photo").is_null()) {
+  const std::optional<ImVec2> at =
+      locate(explorer, "photo_pixel",
+             {step["click_photo"][0].get<double>(), step["click_photo"][1].get<double>()});
+  if (!at) {
     fail(index, "no photo is loaded");
     return false;
   }
-  const ImVec2 at = explorer.photo().screen_of_pixel(step["click_photo"][0].get<double>(),
-                                                     step["click_photo"][1].get<double>());
-  queue_press(at, at, 0);
+  queue_press(*at, *at, 0);
   return true;
 }
 
@@ -660,11 +578,8 @@ void InputPlayer::queue_screenshot(const std::string& png_path) {
 
 bool InputPlayer::hover_sweep(std::size_t index, const json& step, Explorer& explorer) {
   const std::string plot = step["hover_sweep"].get<std::string>();
-  const int which = plot == "n" ? 0 : plot == "Q" ? 1 : 2;
-  const SweepPanel& sweep = explorer.analysis().sweep();
-  const std::optional<ImVec2> at = explorer.analysis().sweep_shown()
-                                       ? sweep.screen_point(which, step["x"].get<double>())
-                                       : std::nullopt;
+  const std::string target = plot == "n" ? "sweep_n" : plot == "Q" ? "sweep_Q" : "sweep_z_max";
+  const std::optional<ImVec2> at = locate(explorer, target, {step["x"].get<double>()});
   if (!at) {
     fail(index, "the Sweep tab's " + plot + " plot shows no point to hover");
     return false;

@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/gui/explorer.hpp"
+#include "app/gui/panels/parameters_panel.hpp"
 #include "app/gui/play_script.hpp"
 
 namespace foldlab::gui {
@@ -66,7 +67,8 @@ class InputPlayer {
   void queue_idle(std::size_t frames);
   void queue_screenshot(const std::string& png_path);
   // Each fails the step (and returns null or false) when what it needs is not on screen.
-  const SliderPlace* find_slider(std::size_t index, const std::string& key, Explorer& explorer);
+  std::optional<SliderPlace> find_slider(std::size_t index, const std::string& key,
+                                         Explorer& explorer);
   bool reachable(std::size_t index, const std::string& key, const SliderPlace& place, ImVec2 at);
   bool click_slider(std::size_t index, const nlohmann::json& step, Explorer& explorer);
   bool click_label(std::size_t index, const std::string& label);

@@ -1,5 +1,9 @@
 #include "app/gui/layout.hpp"
 
+#include <nlohmann/json.hpp>
+
+#include "core/model/text_format.hpp"
+
 #include <algorithm>
 #include <cmath>
 
@@ -52,13 +56,54 @@ void Layout::reset() {
   forget_places();
 }
 
-void Layout::remember(RememberedSettings& settings) {
+void Layout::view_settings(ViewSettings& settings) {
   for (int split = 0; split < kSplitCount; ++split) {
     // negative: where the tiles put it
-    settings.add(split_key(split), &splits_.fraction[static_cast<std::size_t>(split)], -1.0f, 1.0f);
+    settings.add_number(split_key(split), &splits_.fraction[static_cast<std::size_t>(split)],
+                        ViewRange<float>{-1.0f, 1.0f, ""}, kRemembered);
   }
-  settings.add("automatic_layout", &automatic_);
-  settings.add("present_inputs", &presents_inputs_);
+  settings.add_switch("automatic_layout", &automatic_, kRemembered);
+  settings.add_switch("present_inputs", &presents_inputs_, kRemembered);
+  settings.add_action(
+      "present",
+      [this](std::string_view value) -> std::optional<std::string> {
+        if (value == "none") {
+          present(nullptr);
+          return std::nullopt;
+        }
+        if (const Panel* tiled = tiled_panel(value)) {
+          present(tiled);
+          return std::nullopt;
+        }
+        std::string known = "none";
+        for (const std::unique_ptr<Panel>& panel : panels_) {
+          if (tiled(*panel)) {
+            known += std::string(", ") + panel->key();
+          }
+        }
+        return "present = '" + detail::cut(value) + "' is not one of: " + known;
+      },
+      [this] {
+        return presented_ != nullptr ? nlohmann::json(presented_->key()) : nlohmann::json(nullptr);
+      });
+}
+
+PanelRect Layout::rect_of(const Panel& panel) const {
+  for (const auto& [key, rect] : panel_rects()) {
+    if (key == panel.key()) {
+      return rect;
+    }
+  }
+  return {};
+}
+
+const Panel* Layout::tiled_panel(std::string_view key) const {
+  for (const std::unique_ptr<Panel>& panel : panels_) {
+    if (tiled(*panel) && key == panel->key()) {
+      return panel.get();
+    }
+  }
+  return nullptr;
 }
 
 void Layout::present(const Panel* panel) {

@@ -11,8 +11,8 @@
 #include <vector>
 
 #include "app/gui/panel.hpp"
-#include "app/gui/remembered.hpp"
 #include "app/gui/tiles.hpp"
+#include "app/gui/view_settings.hpp"
 
 namespace foldlab::gui {
 
@@ -56,12 +56,17 @@ class Layout {
   // Where each tiled panel was drawn in the last frame (ImGui's windows, after the user's moves),
   // by Panel::key().
   std::vector<std::pair<std::string, PanelRect>> panel_rects() const;
+  // Where the tiled `panel` was placed last (zero when it was not).
+  PanelRect rect_of(const Panel& panel) const;
   // True when the tiled panels cover the display below the menu bar exactly: no gap, no overlap,
   // nothing outside it.
   bool fills_window() const;
 
   // The user's arrangement: automatic or not, the dragged edges, and the presented inputs' strip.
-  void remember(RememberedSettings& settings);
+  // The dragged edges, the automatic layout and the strip (remembered); `present` (scripted).
+  void view_settings(ViewSettings& settings);
+  // The tiled panel with this key, or null.
+  const Panel* tiled_panel(std::string_view key) const;
 
  private:
   // A resize of a tiled panel since the last frame moves the split it shares with its

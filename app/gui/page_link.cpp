@@ -5,11 +5,46 @@
 
 #include <imgui.h>
 
+#include "app/gui/appearance.hpp"
+#include "core/io/link.hpp"
+#include "core/model/text_format.hpp"
+
 namespace foldlab::gui {
 
 bool is_link_view_key(std::string_view key) {
   return std::find(std::begin(kLinkViewKeys), std::end(kLinkViewKeys), key) !=
          std::end(kLinkViewKeys);
+}
+
+std::string explorer_link(const Parameters& edited, const LinkView& view) {
+  std::string out = fabric_link(edited);
+  const auto add = [&out](std::string_view key, const std::string& value) {
+    out += "&" + std::string(key) + "=" + percent_encode(value);
+  };
+  if (!view.presented.empty()) {
+    add(kLinkPresentKey, view.presented);
+  }
+  if (view.light_theme) {
+    add(kLinkThemeKey, "light");
+  }
+  if (view.scale_percent != kMinUiScalePercent) {
+    add(kLinkScaleKey, std::to_string(view.scale_percent));
+  }
+  return out;
+}
+
+std::string copied_link_notice(const std::string& address) {
+  // With no page address configured it is the fragment alone, which only `foldlab gui --link`
+  // opens, and whoever pastes it should know that.
+  constexpr std::size_t kShownAddressBytes = 80;
+  constexpr std::size_t kShownFragmentBytes = 40;
+  if (address.starts_with('#')) {
+    return "Copied the fabric as a link's fragment alone, " +
+           detail::cut(address, kShownFragmentBytes) +
+           ", which only foldlab gui --link opens. FOLDLAB_PAGE_URL makes it a whole address "
+           "(docs/web.md).";
+  }
+  return "Copied the fabric as a link: " + detail::cut(address, kShownAddressBytes);
 }
 
 std::string PageLink::address(std::string_view fragment) const {

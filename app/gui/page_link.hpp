@@ -9,6 +9,8 @@
 #include <string>
 #include <string_view>
 
+#include "core/model/parameters.hpp"
+
 namespace foldlab::gui {
 
 // The --view keys a link carries besides the inputs, when they differ from a fresh start: how a
@@ -18,6 +20,19 @@ inline constexpr std::string_view kLinkThemeKey = "theme";
 inline constexpr std::string_view kLinkScaleKey = "scale";
 inline constexpr std::string_view kLinkViewKeys[] = {kLinkPresentKey, kLinkThemeKey, kLinkScaleKey};
 bool is_link_view_key(std::string_view key);
+
+// The view a link carries: the presented panel's key (empty: none), the theme and the text size.
+struct LinkView {
+  std::string presented;
+  bool light_theme = false;
+  int scale_percent = 100;
+};
+// The fabric as a link's fragment (core/io/link.hpp: every input, as edited, refused or not),
+// with the view keys that differ from a fresh start.
+std::string explorer_link(const Parameters& edited, const LinkView& view);
+// What the status line says of a link just copied, by its start: the whole link is a few hundred
+// characters, which would push the Presets panel's buttons out of sight.
+std::string copied_link_notice(const std::string& address);
 
 class PageLink {
  public:

@@ -1,29 +1,51 @@
 // What every panel of the explorer is to the Explorer: a name (its window's title, said once,
-// here), a draw with what panels share, whether it has background work in progress, and the
-// settings it remembers in the session. The Explorer keeps its panels in one list, draws them in a
-// loop, asks them all whether it is busy and keeps the settings each declares, so that
-// adding a panel is its two files and one line in that list.
+// here), a draw with what panels share, whether it has background work in progress, its view
+// settings, what it reports, the pictures it gives and the points a script may press in it. The
+// Explorer keeps its panels in one list (panel_list.cpp), draws them in a loop and asks them all,
+// so that adding a panel is its two files and one line in that list.
 #pragma once
 
 #include <functional>
 #include <memory>
+#include <nlohmann/json_fwd.hpp>
 #include <optional>
 #include <span>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <typeinfo>
+#include <vector>
 
+#include "app/common/inputs.hpp"
 #include "app/gui/document.hpp"
 #include "app/gui/panels/widgets.hpp"
-#include "app/gui/remembered.hpp"
 #include "app/gui/renderer.hpp"
 #include "app/gui/session.hpp"
+#include "app/gui/tiles.hpp"
 #include "app/gui/ui_status.hpp"
+#include "app/gui/view_settings.hpp"
 
 namespace foldlab::gui {
 
+class Appearance;
 class FileDialog;
 class Panel;
+
+// The views a picture can show alone at any size (`foldlab picture VIEW`, the Export menu).
+enum class PictureView { cloth, fold_plot, sweep, compare };
+
+// A picture a panel gives of what it shows: the Export menu's items, the save dialog's title, the
+// picture dialog's words and the word the offered file name gives it.
+struct PictureOffer {
+  PictureView view;
+  const char* name;           // as `foldlab picture` takes it: "fold_plot"
+  const char* title;          // the save dialog's: "Export fold plot picture"
+  const char* window_item;    // the view as drawn in the window, or null: "Fold plot picture
+                              // (.png)..."
+  const char* any_size_item;  // "Fold plot picture, any size (.png)..."
+  const char* dialog_words;   // what the picture dialog says it draws
+  const char* file_word;      // "fold-plot"
+};
 
 // The panel of type P in a list of panels; every panel type is in the explorer's list once.
 template <class P>
@@ -40,6 +62,8 @@ struct PanelContext {
   std::function<void()> wake;
   // Every panel of the explorer, in drawing order, for one that lists the others.
   std::span<const std::unique_ptr<Panel>> panels;
+  // The text size and theme (a panel draws a note when the font could not be read).
+  const Appearance& appearance;
   // An input is being played: the views keep their frame, growing it but never shrinking it, so
   // that the cloth is seen to change size.
   bool holding_frame = false;
@@ -66,11 +90,45 @@ class Panel {
   virtual const char* introduction() const { return nullptr; }
   // Once per frame, between ImGui::NewFrame and ImGui::Render.
   virtual void draw(PanelContext& context) = 0;
+  // Once, when the explorer has read its session (a panel says what it could not read).
+  virtual void start(PanelContext& /*context*/) {}
+  // Before any panel draws (an input being played takes this frame's value, so that every view
+  // shows it), and after all have (dialogs over the panels); every frame, shown or not.
+  virtual void begin_frame(PanelContext& /*context*/) {}
+  virtual void end_frame(PanelContext& /*context*/) {}
+  // True while a frame would differ from the last without any input (the breeze, a played input).
+  virtual bool animating() const { return false; }
+  // True while an input is being played: the views hold their frame and the undo step stays open.
+  virtual bool plays_input() const { return false; }
+  // The files the panel has open now, each named as the user knows it: no picture is written
+  // over them.
+  virtual std::vector<app::NamedPath> files_in_use() const { return {}; }
   // True while background work of the panel is still to show up in what it draws: the frame loop
   // keeps drawing, and scripted runs wait for it before their last frame.
   virtual bool busy() const { return false; }
-  // The settings the panel remembers between runs, each added once with a key of its own.
-  virtual void remember(RememberedSettings& /*settings*/) {}
+  // The panel's view settings, each added once with its one name (view_settings.hpp).
+  virtual void view_settings(ViewSettings& /*settings*/, Document& /*document*/) {}
+  // What `gui --report` and the play scripts' state say of the panel, added to `state` under
+  // keys of its own.
+  virtual void report(nlohmann::json& /*state*/, PanelContext& /*context*/) const {}
+  // The pictures the panel gives (Export menu, `foldlab picture`).
+  virtual std::span<const PictureOffer> pictures() const { return {}; }
+  // Why the panel cannot give `view` now, drawn alone or (`as_drawn`) as the window shows it (the
+  // sweep is not on screen, no B is pinned), or nullopt.
+  virtual std::optional<std::string> picture_unavailable(PictureView /*view*/,
+                                                         const Document& /*document*/,
+                                                         bool /*as_drawn*/) const {
+    return std::nullopt;
+  }
+  // Where `view` was drawn last (display pixels), when it is a part of the panel; nullopt: the
+  // whole panel.
+  virtual std::optional<PanelRect> picture_rect(PictureView /*view*/) const { return std::nullopt; }
+  // Where a script presses `target` with arguments `at` (a photo's pixel, a sweep plot's x), or
+  // nullopt when the panel has no such point on screen now.
+  virtual std::optional<ImVec2> locate(std::string_view /*target*/,
+                                       std::span<const double> /*at*/) const {
+    return std::nullopt;
+  }
 
   // What ImGui::Begin is given: the title, then after "###" the key, so that a title with a
   // changing mark ("Parameters *") is the same window. `mark` is appended to the title.

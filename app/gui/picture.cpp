@@ -1,5 +1,8 @@
 #include "app/gui/picture.hpp"
 
+#include "app/gui/panels/analysis_panel.hpp"
+#include "app/gui/panels/cloth_view_panel.hpp"
+
 #include <algorithm>
 #include <cfloat>
 #include <cmath>
@@ -228,22 +231,6 @@ void build_picture(Renderer& renderer, const PictureSource& source, const Pictur
 
 }  // namespace
 
-std::optional<PictureView> parse_picture_view(std::string_view name) {
-  if (name == "cloth") {
-    return PictureView::cloth;
-  }
-  if (name == "fold_plot") {
-    return PictureView::fold_plot;
-  }
-  if (name == "sweep") {
-    return PictureView::sweep;
-  }
-  if (name == "compare") {
-    return PictureView::compare;
-  }
-  return std::nullopt;
-}
-
 std::optional<PictureBackground> parse_picture_background(std::string_view name) {
   if (name == "white") {
     return PictureBackground::white;
@@ -415,6 +402,20 @@ std::vector<std::uint8_t> draw_picture(Renderer& renderer, const PictureSource& 
   return renderer.render_picture(spec.size, background_colour(spec.background), [&] {
     build_picture(renderer, source, spec, caption, plot, series, sweep_plots);
   });
+}
+
+PictureSource picture_source(Document& document, std::span<const std::unique_ptr<Panel>> panels,
+                             ClothView cloth_view, ClothView compare_cloth_view,
+                             const std::filesystem::path& font_file) {
+  const ClothViewPanel& cloth = find_panel<ClothViewPanel>(panels);
+  return PictureSource{
+      document,
+      cloth.style(),
+      cloth.camera_framed() ? std::optional<OrbitCamera>(cloth.camera()) : std::nullopt,
+      cloth_view,
+      font_file,
+      &find_panel<AnalysisPanel>(panels).sweep(),
+      compare_cloth_view};
 }
 
 }  // namespace foldlab::gui

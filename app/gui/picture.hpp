@@ -7,19 +7,21 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <memory>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
 
 #include "app/gui/camera.hpp"
 #include "app/gui/document.hpp"
+#include "app/gui/panel.hpp"
 #include "app/gui/panels/sweep_panel.hpp"
 #include "app/gui/renderer.hpp"
 
 namespace foldlab::gui {
 
-enum class PictureView { cloth, fold_plot, sweep, compare };
 enum class PictureBackground { white, transparent, dark };
 
 struct PictureSpec {
@@ -30,11 +32,9 @@ struct PictureSpec {
   bool legend = false;   // the fold plot's legend
 };
 
-// The views and backgrounds by the names the command line takes: "cloth", "fold_plot", "sweep",
-// "compare"; "white", "transparent", "dark". nullopt for any other.
-std::optional<PictureView> parse_picture_view(std::string_view name);
+// The backgrounds by the names the command line takes: "white", "transparent", "dark"; nullopt
+// for any other. (The views' names are their panels' offers: panel_list.hpp.)
 std::optional<PictureBackground> parse_picture_background(std::string_view name);
-inline constexpr const char* kPictureViewNames = "cloth, fold_plot, sweep, compare";
 inline constexpr const char* kPictureBackgroundNames = "white, transparent, dark";
 
 // A picture's sides are those of a window (kMinFrameSize..kMaxFrameSize) and its pixels at most
@@ -83,6 +83,12 @@ struct PictureSource {
   SweepPanel* sweep = nullptr;
   ClothView compare_cloth_view = kNoClothView;  // B's, for a compare picture
 };
+
+// The source the explorer's panels give: the 3D view's style and camera once it has framed the
+// cloth (until then, framed as it would be), and the Sweep tab.
+PictureSource picture_source(Document& document, std::span<const std::unique_ptr<Panel>> panels,
+                             ClothView cloth_view, ClothView compare_cloth_view,
+                             const std::filesystem::path& font_file);
 
 // Why `spec` cannot be drawn from `source` as it is (a compare picture with no B pinned, a sweep
 // whose axis is refused); nullopt when it can.

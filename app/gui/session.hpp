@@ -33,8 +33,8 @@ inline constexpr std::uintmax_t kMaxListedPresetBytes = 1024 * 1024;
 inline constexpr std::size_t kMaxListedPresets = 500;
 
 // The session's "view" object: settings by name, true/false or numbers. Each panel declares its
-// own once, with its key and range (Panel::remember, remembered.hpp); the member's initial value
-// is the default.
+// own once, with its key and range (Panel::view_settings, view_settings.hpp); the member's initial
+// value is the default.
 class SessionSettings {
  public:
   // The stored value, or `fallback` when it is absent or of another type.

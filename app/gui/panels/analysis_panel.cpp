@@ -6,6 +6,7 @@
 #include <utility>
 
 #include <imgui.h>
+#include <nlohmann/json.hpp>
 
 #include "app/gui/panels/widgets.hpp"
 #include "core/model/equations.hpp"
@@ -182,6 +183,67 @@ void EquationsTab::draw_fold_count(const Solution& s, const Parameters& p, bool 
                  p.model.int_rounding == IntRounding::nearest ? "a half-integer" : "an integer");
     ImGui::PopStyleColor();
   }
+}
+
+namespace {
+
+// The Method tab's stepper: how far it is and the iterate it shows.
+nlohmann::json method_step_json(const MethodPanel& stepper) {
+  if (stepper.iterates() == 0) {
+    return {{"method", to_string(stepper.method())}, {"shown", 0}, {"of", 0}};
+  }
+  const Iterate& it = stepper.trace().iterates[static_cast<std::size_t>(stepper.shown() - 1)];
+  return {{"method", to_string(stepper.method())},
+          {"shown", stepper.shown()},
+          {"of", stepper.iterates()},
+          {"n", it.n},
+          {"Q", it.Q},
+          {"z_max_mm", it.z_max_mm},
+          {"length_ratio", it.length_ratio}};
+}
+
+constexpr std::string_view kPaperCaseNames[] = {"table1", "table2", "fig4"};
+static_assert(std::size(kPaperCaseNames) == SweepPanel::kPaperCases);
+
+}  // namespace
+
+void AnalysisPanel::view_settings(ViewSettings& settings, Document& document) {
+  settings.add_action(
+      "sweep", [this, &document](std::string_view value) -> std::optional<std::string> {
+        for (int which = 0; which < SweepPanel::kPaperCases; ++which) {
+          if (value == kPaperCaseNames[which]) {
+            show_paper_case(which, document);
+            return std::nullopt;
+          }
+        }
+        return "sweep = '" + detail::cut(value) + "' is not one of: table1, table2, fig4";
+      });
+}
+
+void AnalysisPanel::report(nlohmann::json& state, PanelContext& /*context*/) const {
+  state["regime_map_ms"] = regime_map_.last_map_ms();
+  state["regime_map"] = regime_map_.report();
+  state["method_step"] = method_step_json(method_);
+}
+
+std::optional<std::string> AnalysisPanel::picture_unavailable(PictureView /*view*/,
+                                                              const Document& /*document*/,
+                                                              bool as_drawn) const {
+  if (as_drawn && !sweep_shown_) {
+    return "Open Analysis > Sweep to take its plots.";
+  }
+  return std::nullopt;
+}
+
+std::optional<ImVec2> AnalysisPanel::locate(std::string_view target,
+                                            std::span<const double> at) const {
+  constexpr std::string_view kPlots[] = {"sweep_n", "sweep_Q", "sweep_z_max"};
+  for (int which = 0; which < 3; ++which) {
+    if (target == kPlots[which] && sweep_shown_ && !at.empty()) {
+      return sweep_.screen_point(which, at[0]);
+    }
+  }
+  return std::nullopt;
 }
 
 }  // namespace foldlab::gui

@@ -6,6 +6,8 @@
 #include <filesystem>
 #include <string>
 
+#include <nlohmann/json_fwd.hpp>
+
 #include "app/gui/document.hpp"
 #include "app/gui/panel.hpp"
 #include "app/gui/panels/method_panel.hpp"
@@ -43,6 +45,20 @@ class AnalysisPanel : public Panel {
   bool busy() const override { return regime_map_.computing(); }
   // Selects the Sweep tab with one of the paper's cases (0 Table 1, 1 Table 2, 2 Fig. 4).
   void show_paper_case(int which, Document& document);
+  // sweep=table1|table2|fig4: the Sweep tab with one of the paper's cases.
+  void view_settings(ViewSettings& settings, Document& document) override;
+  // The regime map ("regime_map", "regime_map_ms") and the Method tab's stepper ("method_step").
+  void report(nlohmann::json& state, PanelContext& context) const override;
+  static constexpr PictureOffer kPictures[] = {
+      {PictureView::sweep, "sweep", "Export sweep picture", "Sweep picture (.png)...",
+       "Sweep picture, any size (.png)...",
+       "The sweep's n, Q and z_max over the input and range the Sweep tab has now.", "sweep"}};
+  std::span<const PictureOffer> pictures() const override { return kPictures; }
+  std::optional<std::string> picture_unavailable(PictureView view, const Document& document,
+                                                 bool as_drawn) const override;
+  // "sweep_n", "sweep_Q", "sweep_z_max" at x = at[0] in the swept input's shown unit: where the
+  // Sweep tab's plot draws that point.
+  std::optional<ImVec2> locate(std::string_view target, std::span<const double> at) const override;
 
   const SweepPanel& sweep() const { return sweep_; }
   SweepPanel& sweep() { return sweep_; }

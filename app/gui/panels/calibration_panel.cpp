@@ -394,4 +394,8 @@ void CalibrationPanel::results_section() {
   }
 }
 
+void CalibrationPanel::report(nlohmann::json& state, PanelContext& /*context*/) const {
+  state.update(report());
+}
+
 }  // namespace foldlab::gui

@@ -53,6 +53,7 @@ class CalibrationPanel : public Panel {
   // For `gui --report`: {"calibration": {open, data_path, data_rows (null when nothing is
   // loaded), data_message, data_message_is_error}}.
   nlohmann::json report() const;
+  void report(nlohmann::json& state, PanelContext& context) const override;
 
  private:
   void load_data();

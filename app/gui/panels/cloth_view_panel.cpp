@@ -8,6 +8,8 @@
 
 #include <variant>
 
+#include <nlohmann/json.hpp>
+
 #include "app/gui/appearance.hpp"
 #include "app/gui/colour_map.hpp"
 #include "app/gui/compare.hpp"
@@ -19,26 +21,33 @@
 namespace foldlab::gui {
 namespace {
 
+using nlohmann::json;
+
 // The 3D view's numbers and the range each may take: the panel's sliders, a scripted `--view` and
 // the remembered settings all read these rows, so that a value one accepts the others accept.
-struct ViewNumber {
-  std::string_view key;
-  float ClothStyle::*field;
-  float lo;
-  float hi;
-  const char* unit;
-};
 // A breeze below 5 mm is not seen: switching the breeze off says "none".
-constexpr ViewNumber kBreezeMm{"breeze_mm", &ClothStyle::breeze_mm, 5.0f, 300.0f, " mm"};
-constexpr ViewNumber kTimeS{"time", &ClothStyle::time_s, 0.0f, 1e6f, " s"};
-constexpr ViewNumber kZExaggeration{"z", &ClothStyle::z_exaggeration, 1.0f, 20.0f, " (times)"};
-constexpr ViewNumber kPrintMm{"print_mm", &ClothStyle::print_mm, 10.0f, 300.0f, " mm"};
-constexpr ViewNumber kViewNumbers[] = {kBreezeMm, kTimeS, kZExaggeration, kPrintMm};
+constexpr ViewRange<float> kBreezeMm{5.0f, 300.0f, " mm"};
+constexpr ViewRange<float> kTimeS{0.0f, 1e6f, " s"};
+constexpr ViewRange<float> kZExaggeration{1.0f, 20.0f, " (times)"};
+constexpr ViewRange<float> kPrintMm{10.0f, 300.0f, " mm"};
+constexpr std::string_view kPrintNames[] = {"plain", "checks", "stripes", "photo"};
+constexpr std::string_view kColourByNames[] = {"none", "z", "fold_sign"};
 
 // A logarithmic slider over the row's range, kept within it.
-bool view_slider(const char* label, ClothStyle& style, const ViewNumber& row, const char* format) {
-  return ImGui::SliderFloat(label, &(style.*row.field), row.lo, row.hi, format,
+bool view_slider(const char* label, float& value, const ViewRange<float>& range,
+                 const char* format) {
+  return ImGui::SliderFloat(label, &value, range.lo, range.hi, format,
                             ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp);
+}
+
+json counters_json(const RenderCounters& c) {
+  return json{{"mesh_uploads", c.mesh_uploads},
+              {"fold_line_uploads", c.fold_line_uploads},
+              {"frames", c.frames},
+              {"view_renders", c.view_renders},
+              {"view_cache_hits", c.view_cache_hits},
+              {"drawn_columns", c.drawn_columns},
+              {"drawn_rows", c.drawn_rows}};
 }
 
 }  // namespace
@@ -55,78 +64,60 @@ std::optional<std::string> ClothViewPanel::load_photo(const std::string& path) {
   return std::nullopt;
 }
 
-std::optional<std::string> ClothViewPanel::set_view(std::string_view key, std::string_view value) {
-  if (key == "print") {
-    if (value == "plain" || value == "checks" || value == "stripes") {
-      style_.print = value == "plain"    ? ClothStyle::Print::plain
-                     : value == "checks" ? ClothStyle::Print::checks
-                                         : ClothStyle::Print::stripes;
-      return std::nullopt;
-    }
-    if (value == "photo") {
-      if (style_.photo == nullptr) {
-        return std::string("print = photo needs a photo: give print_file=PATH (or --print PATH)");
-      }
-      style_.print = ClothStyle::Print::photo;
-      return std::nullopt;
-    }
-    return "print = '" + detail::cut(value) + "' is not one of: plain, checks, stripes, photo";
+void ClothViewPanel::view_settings(ViewSettings& settings, Document& /*document*/) {
+  // A swatch photo needs its file, which is not kept: the print it replaced is.
+  settings.add_choice<ClothStyle::Print>(
+      "print", &style_.print, kPrintNames, kEveryUse,
+      [this] { return style_.print != ClothStyle::Print::photo; },
+      [this](ClothStyle::Print print) -> std::optional<std::string> {
+        if (print == ClothStyle::Print::photo && style_.photo == nullptr) {
+          return "print = photo needs a photo: give print_file=PATH (or --print PATH)";
+        }
+        return std::nullopt;
+      });
+  settings.add_action(
+      "print_file",
+      [this](std::string_view value) {
+        photo_path_ = std::string(value);
+        const std::size_t shown = std::min(photo_path_.size(), sizeof photo_input_ - 1);
+        std::copy_n(photo_path_.begin(), shown, photo_input_);
+        photo_input_[shown] = '\0';
+        return load_photo(photo_path_);
+      },
+      [this] { return style_.photo ? json(style_.photo->path) : json(nullptr); });
+  settings.add_number("print_mm", &style_.print_mm, kPrintMm, kEveryUse);
+  settings.add_choice<ClothStyle::ColourBy>("colour_by", &style_.colour_by, kColourByNames,
+                                            kEveryUse);
+  settings.add_switch("breeze", &style_.breeze, kScripted);
+  settings.add_number("breeze_mm", &style_.breeze_mm, kBreezeMm, kScripted);
+  // A scripted picture shows that instant.
+  settings.add_number("time", &style_.time_s, kTimeS, kScripted,
+                      [this] { breeze_playing_ = false; });
+  settings.add_number("z_exaggeration", &style_.z_exaggeration, kZExaggeration, kEveryUse);
+  settings.add_switch("wireframe", &style_.wireframe, kRemembered | kScripted);
+  settings.add_switch("lod", &style_.level_of_detail, kScripted);
+  settings.add_switch("fold_lines", &style_.fold_lines, kRemembered | kScripted);
+  settings.add_switch("ground", &style_.ground, kRemembered | kScripted);
+  // A view that fills the window.
+  settings.add_switch("full", &fill_display_, kScripted);
+}
+
+void ClothViewPanel::report(json& state, PanelContext& context) const {
+  state["camera"] = {{"yaw_rad", camera_.yaw_rad},
+                     {"pitch_rad", camera_.pitch_rad},
+                     {"distance_mm", camera_.distance_mm}};
+  json renderer = counters_json(context.renderer.cloth_counters(views_[0]));
+  renderer["compare"] = counters_json(context.renderer.cloth_counters(views_[1]));
+  state["renderer"] = renderer;
+}
+
+std::optional<std::string> ClothViewPanel::picture_unavailable(PictureView view,
+                                                               const Document& document,
+                                                               bool /*as_drawn*/) const {
+  if (view == PictureView::compare && !document.compare().pinned()) {
+    return "Pin a fabric as B first (Compare > Pin as B).";
   }
-  if (key == "print_file") {
-    photo_path_ = std::string(value);
-    const std::size_t shown = std::min(photo_path_.size(), sizeof photo_input_ - 1);
-    std::copy_n(photo_path_.begin(), shown, photo_input_);
-    photo_input_[shown] = '\0';
-    return load_photo(photo_path_);
-  }
-  if (key == "colour_by") {
-    if (value == "none" || value == "z" || value == "fold_sign") {
-      style_.colour_by = value == "none" ? ClothStyle::ColourBy::none
-                         : value == "z"  ? ClothStyle::ColourBy::z
-                                         : ClothStyle::ColourBy::fold_sign;
-      return std::nullopt;
-    }
-    return "colour_by = '" + detail::cut(value) + "' is not one of: none, z, fold_sign";
-  }
-  // One row a key: the switches (0 or 1) and the numbers with their range. Scripted pictures
-  // name exact values: one outside what the panel's own controls allow is refused, not moved to
-  // the nearest end, so that a typo shows rather than a different picture.
-  const std::pair<std::string_view, bool*> switches[] = {
-      {"breeze", &style_.breeze},       {"wireframe", &style_.wireframe},
-      {"lod", &style_.level_of_detail}, {"fold_lines", &style_.fold_lines},
-      {"ground", &style_.ground},       {"full", &fill_display_}};
-  const std::optional<double> number = parse_number(value);
-  for (const auto& [name, field] : switches) {
-    if (key == name) {
-      if (number != 0.0 && number != 1.0) {
-        return detail::cut(key) + " = '" + detail::cut(value) + "' must be 0 or 1";
-      }
-      *field = number == 1.0;
-      return std::nullopt;
-    }
-  }
-  for (const ViewNumber& row : kViewNumbers) {
-    if (key != row.key) {
-      continue;
-    }
-    if (!number) {
-      return detail::cut(key) + " = '" + detail::cut(value) + "' is not a number";
-    }
-    if (!(*number >= row.lo && *number <= row.hi)) {
-      return detail::cut(key) + " = " + detail::shortest_number(*number) + " must be in [" +
-             detail::shortest_number(row.lo) + ", " + detail::shortest_number(row.hi) + "]" +
-             row.unit;
-    }
-    style_.*row.field = static_cast<float>(*number);
-    if (row.field == kTimeS.field) {
-      breeze_playing_ = false;  // a scripted picture shows that instant
-    }
-    return std::nullopt;
-  }
-  return "unknown view key '" + detail::cut(key) +
-         "' (known: sweep, present, theme, scale, grid, print, print_file, print_mm, colour_by, "
-         "breeze, "
-         "breeze_mm, time, z, wireframe, lod, fold_lines, ground, full)";
+  return std::nullopt;
 }
 
 float ClothViewPanel::colour_bar_width() {
@@ -231,19 +222,6 @@ void ClothViewPanel::follow_the_cloth(Document& document, bool reset, bool hold)
   camera_b_grid_version_ = b_grid_version;
 }
 
-void ClothViewPanel::remember(RememberedSettings& settings) {
-  settings.add("wireframe", &style_.wireframe);
-  settings.add("fold_lines", &style_.fold_lines);
-  settings.add("ground", &style_.ground);
-  // A swatch photo needs its file, which is not kept: the print it replaced is.
-  settings.add("print", &style_.print, ClothStyle::Print::plain, ClothStyle::Print::stripes,
-               [this] { return style_.print != ClothStyle::Print::photo; });
-  settings.add("print_mm", &style_.print_mm, kPrintMm.lo, kPrintMm.hi);
-  settings.add("colour_by", &style_.colour_by, ClothStyle::ColourBy::none,
-               ClothStyle::ColourBy::fold_sign);
-  settings.add("z_exaggeration", &style_.z_exaggeration, kZExaggeration.lo, kZExaggeration.hi);
-}
-
 bool ClothViewPanel::toolbar(PanelContext& context) {
   settings_row();
   const bool reset = ImGui::SmallButton("reset camera");
@@ -252,7 +230,7 @@ bool ClothViewPanel::toolbar(PanelContext& context) {
   const float z_room = ImGui::GetContentRegionAvail().x - labelled_width(0.0f, kZLabel) -
                        ImGui::CalcTextSize(" (?)").x - 2.0f * ImGui::GetStyle().ItemSpacing.x;
   ImGui::SetNextItemWidth(std::clamp(z_room, ems(3.0f), ems(12.0f)));
-  view_slider(kZLabel, style_, kZExaggeration, "x %.1f");
+  view_slider(kZLabel, style_.z_exaggeration, kZExaggeration, "x %.1f");
   help_marker(
       "Draws the out-of-plane depth z this many times deeper, to see the folds; the "
       "numbers are not changed.");
@@ -287,7 +265,7 @@ bool ClothViewPanel::toolbar(PanelContext& context) {
   if (style_.print != ClothStyle::Print::plain) {
     same_line_if_fits(ems(8.5f));
     ImGui::SetNextItemWidth(ems(8.5f));
-    view_slider("##print size", style_, kPrintMm, "%.0f mm");
+    view_slider("##print size", style_.print_mm, kPrintMm, "%.0f mm");
   }
   same_line_if_fits(checkbox_width("breeze"));
   ImGui::Checkbox("breeze", &style_.breeze);
@@ -301,7 +279,7 @@ bool ClothViewPanel::toolbar(PanelContext& context) {
     constexpr const char* kBreezeLabel = "sway (mm)";
     same_line_if_fits(labelled_width(ems(6.0f), kBreezeLabel));
     ImGui::SetNextItemWidth(ems(6.0f));
-    view_slider(kBreezeLabel, style_, kBreezeMm, "%.0f");
+    view_slider(kBreezeLabel, style_.breeze_mm, kBreezeMm, "%.0f");
     if (ImGui::IsItemHovered()) {
       ImGui::SetTooltip("How far the breeze sways the cloth at most, in mm");
     }

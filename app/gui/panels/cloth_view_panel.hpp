@@ -26,8 +26,26 @@ class ClothViewPanel : public Panel {
   }
   const char* key() const override { return "cloth"; }
   void draw(PanelContext& context) override;
-  // Wireframe, fold lines and ground.
-  void remember(RememberedSettings& settings) override;
+  // The print and its file, colour, breeze, z exaggeration, switches and `full`.
+  void view_settings(ViewSettings& settings, Document& document) override;
+  // "camera" and the renderer's counters of A's and B's cloth ("renderer").
+  void report(nlohmann::json& state, PanelContext& context) const override;
+  // The cloth, and A and B side by side.
+  static constexpr PictureOffer kPictures[] = {
+      {PictureView::cloth, "cloth", "Export 3D view picture", "3D view picture (.png)...",
+       "3D view picture, any size (.png)...",
+       "The 3D view's cloth alone, as the view shows it now.", "3d-view"},
+      {PictureView::compare, "compare", "Export A and B picture", nullptr,
+       "A and B picture, any size (.png)...",
+       "A and B side by side, as the 3D view shows them now.", "a-and-b"}};
+  std::span<const PictureOffer> pictures() const override { return kPictures; }
+  std::optional<std::string> picture_unavailable(PictureView view, const Document& document,
+                                                 bool as_drawn) const override;
+  std::optional<PanelRect> picture_rect(PictureView /*view*/) const override { return view_rect_; }
+  // The swatch file last asked for as the print.
+  std::vector<app::NamedPath> files_in_use() const override {
+    return {{"the 3D view's print file", photo_path_}};
+  }
 
   static constexpr const char* kBrowseLabel = "browse...";
   ClothStyle& style() { return style_; }
@@ -39,14 +57,8 @@ class ClothViewPanel : public Panel {
   ClothView a_view() const { return views_[0]; }
   ClothView b_view() const { return views_[1]; }
   const ClothStyle& style() const { return style_; }
-  // A view setting by name (print=checks, print_file=swatch.jpg, print_mm=40, colour_by=z,
-  // breeze=1, breeze_mm=80, time=1.5, z=8, wireframe=1, fold_lines=0, ground=0, full=1 for a
-  // view that fills the window): for scripted pictures. Returns the problem, if any.
-  std::optional<std::string> set_view(std::string_view key, std::string_view value);
-  // The swatch file last asked for as the print (empty: none).
-  const std::string& print_file() const { return photo_path_; }
   // True while the breeze plays: every frame shows a new instant.
-  bool animating() const { return style_.breeze && breeze_playing_; }
+  bool animating() const override { return style_.breeze && breeze_playing_; }
   // Where the view's picture was drawn last (display pixels), for a picture of the view alone.
   const PanelRect& view_rect() const { return view_rect_; }
   // Whether the settings above the view are folded behind a "settings..." button.

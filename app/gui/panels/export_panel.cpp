@@ -46,38 +46,6 @@ constexpr PictureSize kPictureSizes[] = {{"1920 x 1080 (full HD)", {1920, 1080}}
                                          {"A4 at 300 dpi (3508 x 2480)", {3508, 2480}}};
 constexpr int kCustomSize = static_cast<int>(std::size(kPictureSizes));
 
-// Per view (in PictureView's order): what the picture dialog says it draws, the save dialog's
-// title, and the words the offered file name gives it.
-struct PictureViewWords {
-  PictureView view;
-  const char* text;
-  const char* title;
-  const char* file_words;
-};
-constexpr PictureViewWords kPictureViewWords[] = {
-    {PictureView::cloth, "The 3D view's cloth alone, as the view shows it now.",
-     "Export 3D view picture", "3d-view"},
-    {PictureView::fold_plot, "The fold plot alone, millimetres alike across and down.",
-     "Export fold plot picture", "fold-plot"},
-    {PictureView::sweep,
-     "The sweep's n, Q and z_max over the input and range the Sweep tab has now.",
-     "Export sweep picture", "sweep"},
-    {PictureView::compare, "A and B side by side, as the 3D view shows them now.",
-     "Export A and B picture", "a-and-b"},
-};
-constexpr bool in_view_order() {
-  for (std::size_t i = 0; i < std::size(kPictureViewWords); ++i) {
-    if (static_cast<std::size_t>(kPictureViewWords[i].view) != i) {
-      return false;
-    }
-  }
-  return std::size(kPictureViewWords) == static_cast<std::size_t>(PictureView::compare) + 1;
-}
-static_assert(in_view_order());
-const PictureViewWords& words_of(PictureView view) {
-  return kPictureViewWords[static_cast<std::size_t>(view)];
-}
-
 }  // namespace
 
 DeformedGrid mesh_as_shown(Scene& scene, const ClothStyle& style) {
@@ -123,10 +91,10 @@ FileDialog::Chosen write_and_say(UiStatus& status,
 }  // namespace
 
 void ExportPanel::menu(Document& document, UiStatus& status, const ClothStyle& style,
-                       FileDialog& files, bool sweep_shown) {
+                       FileDialog& files, std::span<const std::unique_ptr<Panel>> panels) {
   file_items(document, status, style, files);
   ImGui::Separator();
-  picture_items(document, status, files, sweep_shown);
+  picture_items(document, status, files, panels);
 }
 
 void ExportPanel::file_items(Document& document, UiStatus& status, const ClothStyle& style,
@@ -180,48 +148,50 @@ void ExportPanel::file_items(Document& document, UiStatus& status, const ClothSt
 }
 
 void ExportPanel::picture_items(const Document& document, UiStatus& status, FileDialog& files,
-                                bool sweep_shown) {
-  const auto picture = [&](const char* title, Picture what, std::string_view words) {
+                                std::span<const std::unique_ptr<Panel>> panels) {
+  const auto picture = [&](const char* title, std::optional<PictureView> part,
+                           std::string_view words) {
     files.open({FileDialog::Mode::save,
                 title,
                 offered_name(document, words, ".png"),
                 {".png"},
-                [this, what](const std::filesystem::path& path) -> std::optional<std::string> {
-                  picture_ = PictureRequest{path.string(), what, std::nullopt};
+                [this, part](const std::filesystem::path& path) -> std::optional<std::string> {
+                  picture_ = PictureRequest{path.string(), part, std::nullopt};
                   picture_ready_ = false;
                   return std::nullopt;
                 }},
                status);
   };
-  if (ImGui::MenuItem("Window picture (.png)...")) {
-    picture("Export window picture", Picture::window, "window");
-  }
-  if (ImGui::MenuItem("3D view picture (.png)...")) {
-    picture("Export 3D view picture", Picture::cloth_view, "3d-view");
-  }
-  if (ImGui::MenuItem("Fold plot picture (.png)...")) {
-    picture("Export fold plot picture", Picture::fold_plot, "fold-plot");
-  }
-  const auto any_size = [&](const char* label, PictureView view, bool enabled = true) {
-    if (ImGui::MenuItem(label, nullptr, false, enabled)) {
-      dialog_spec_.view = view;
-      dialog_name_ = offered_name(document, words_of(view).file_words, ".png");
-      open_dialog_ = true;
+  // An item greyed while its panel cannot give the picture, saying why when hovered.
+  const auto offered = [&](const Panel& panel, const PictureOffer& offer, const char* label,
+                           bool as_drawn) {
+    const std::optional<std::string> unavailable =
+        panel.picture_unavailable(offer.view, document, as_drawn);
+    const bool chosen = ImGui::MenuItem(label, nullptr, false, !unavailable);
+    if (unavailable && ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) {
+      ImGui::SetTooltip("%s", unavailable->c_str());
     }
+    return chosen;
   };
-  any_size("3D view picture, any size (.png)...", PictureView::cloth);
-  any_size("Fold plot picture, any size (.png)...", PictureView::fold_plot);
-  any_size("Sweep picture, any size (.png)...", PictureView::sweep);
-  const bool pinned = document.compare().pinned();
-  any_size("A and B picture, any size (.png)...", PictureView::compare, pinned);
-  if (!pinned && ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) {
-    ImGui::SetTooltip("Pin a fabric as B first (Compare > Pin as B).");
+  if (ImGui::MenuItem("Window picture (.png)...")) {
+    picture("Export window picture", std::nullopt, "window");
   }
-  if (ImGui::MenuItem("Sweep picture (.png)...", nullptr, false, sweep_shown)) {
-    picture("Export sweep picture", Picture::sweep, "sweep-plots");
+  for (const std::unique_ptr<Panel>& panel : panels) {
+    for (const PictureOffer& offer : panel->pictures()) {
+      if (offer.window_item != nullptr && offered(*panel, offer, offer.window_item, true)) {
+        picture(offer.title, offer.view, offer.file_word);
+      }
+    }
   }
-  if (!sweep_shown && ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) {
-    ImGui::SetTooltip("Open Analysis > Sweep to take its plots.");
+  for (const std::unique_ptr<Panel>& panel : panels) {
+    for (const PictureOffer& offer : panel->pictures()) {
+      if (offered(*panel, offer, offer.any_size_item, false)) {
+        dialog_spec_.view = offer.view;
+        dialog_offer_ = &offer;
+        dialog_name_ = offered_name(document, offer.file_word, ".png");
+        open_dialog_ = true;
+      }
+    }
   }
 }
 
@@ -268,7 +238,7 @@ void ExportPanel::draw_picture_dialog(UiStatus& status, FileDialog& files) {
   if (!ImGui::BeginPopupModal(kPictureDialog, nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
     return;
   }
-  ImGui::TextUnformatted(words_of(dialog_spec_.view).text);
+  ImGui::TextUnformatted(dialog_offer_->dialog_words);
   std::optional<std::string> problem = picture_size_choice();
   ImGui::TextUnformatted("Background");
   int background = static_cast<int>(dialog_spec_.background);
@@ -301,11 +271,11 @@ void ExportPanel::draw_picture_dialog(UiStatus& status, FileDialog& files) {
     ImGui::CloseCurrentPopup();
     const PictureSpec spec = dialog_spec_;
     files.open({FileDialog::Mode::save,
-                words_of(spec.view).title,
+                dialog_offer_->title,
                 dialog_name_,
                 {".png"},
                 [this, spec](const std::filesystem::path& path) -> std::optional<std::string> {
-                  picture_ = PictureRequest{path.string(), Picture::window, spec};
+                  picture_ = PictureRequest{path.string(), std::nullopt, spec};
                   picture_ready_ = false;
                   return std::nullopt;
                 }},

@@ -5,10 +5,13 @@
 // `foldlab picture` draws them (picture.hpp). Every item asks where with the save dialog.
 #pragma once
 
+#include <memory>
 #include <optional>
+#include <span>
 #include <string>
 
 #include "app/gui/document.hpp"
+#include "app/gui/panel.hpp"
 #include "app/gui/panels/file_dialog.hpp"
 #include "app/gui/picture.hpp"
 #include "app/gui/renderer.hpp"
@@ -18,20 +21,19 @@ namespace foldlab::gui {
 
 class ExportPanel {
  public:
-  // Which part of the window a picture shows.
-  enum class Picture { window, cloth_view, fold_plot, sweep };
   struct PictureRequest {
     std::string path;
-    Picture picture = Picture::window;
+    // The view as drawn, cut from the window; none: the whole window.
+    std::optional<PictureView> part;
     // A picture drawn apart from the window at its own size (the picture dialog); none: a part
     // of the window as drawn.
     std::optional<PictureSpec> spec;
   };
 
-  // The menu's contents, between ImGui::BeginMenu and EndMenu: one item per format, each opening
-  // the save dialog. `sweep_shown`: the Sweep tab is on screen, so that its plots can be taken.
+  // The menu's contents, between ImGui::BeginMenu and EndMenu: one item per format and per
+  // picture the panels give, each opening the save dialog.
   void menu(Document& document, UiStatus& status, const ClothStyle& style, FileDialog& files,
-            bool sweep_shown);
+            std::span<const std::unique_ptr<Panel>> panels);
   // The picture dialog (size, background, caption) the menu's "... any size" items open; every
   // frame, outside the menu.
   void draw_picture_dialog(UiStatus& status, FileDialog& files);
@@ -47,13 +49,14 @@ class ExportPanel {
   void file_items(Document& document, UiStatus& status, const ClothStyle& style, FileDialog& files);
   // The pictures: of the window or a part as drawn, or of a view alone at any size.
   void picture_items(const Document& document, UiStatus& status, FileDialog& files,
-                     bool sweep_shown);
+                     std::span<const std::unique_ptr<Panel>> panels);
 
   std::optional<PictureRequest> picture_;
   bool picture_ready_ = false;
   // The picture dialog: asked to open, and what it holds (kept for the next picture).
   bool open_dialog_ = false;
   PictureSpec dialog_spec_;
+  const PictureOffer* dialog_offer_ = nullptr;  // the picture the dialog is for
   std::string dialog_name_;  // the file name the any-size picture's save dialog offers
   int size_choice_ = 0;      // kPictureSizes, then custom
   // As typed, digits alone (kPictureSideDigits of them): read by read_typed_picture_size.

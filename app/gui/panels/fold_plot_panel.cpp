@@ -149,8 +149,8 @@ bool FoldPlotPanel::stands_apart(const FoldLines& lines, std::size_t k, std::siz
   return true;
 }
 
-void FoldPlotPanel::remember(RememberedSettings& settings) {
-  settings.add("fold_plot_true_scale", &true_scale_);
+void FoldPlotPanel::view_settings(ViewSettings& settings, Document& /*document*/) {
+  settings.add_switch("fold_plot_true_scale", &true_scale_, kEveryUse);
 }
 
 // Below this the plot's axis labels and legend squash it: the panel scrolls instead, and the

@@ -51,7 +51,12 @@ class FoldPlotPanel : public Panel {
   const char* key() const override { return "fold_plot"; }
   // The context's photo adds its buttons, its backdrop and its clicks to the plot.
   void draw(PanelContext& context) override;
-  void remember(RememberedSettings& settings) override;
+  void view_settings(ViewSettings& settings, Document& document) override;
+  static constexpr PictureOffer kPictures[] = {
+      {PictureView::fold_plot, "fold_plot", "Export fold plot picture",
+       "Fold plot picture (.png)...", "Fold plot picture, any size (.png)...",
+       "The fold plot alone, millimetres alike across and down.", "fold-plot"}};
+  std::span<const PictureOffer> pictures() const override { return kPictures; }
   // Whether a mm of x is as many pixels as a mm of y (on by default: the sag as it hangs).
   bool true_scale() const { return true_scale_; }
   static constexpr const char* kTrueScaleLabel = "true scale";

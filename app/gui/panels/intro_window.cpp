@@ -1,5 +1,7 @@
 #include "app/gui/panels/intro_window.hpp"
 
+#include <nlohmann/json.hpp>
+
 #include <algorithm>
 
 #include <imgui.h>
@@ -81,6 +83,10 @@ void IntroWindow::draw(PanelContext& context) {
     }
   }
   ImGui::End();
+}
+
+void IntroWindow::report(nlohmann::json& state, PanelContext& /*context*/) const {
+  state["intro_open"] = open_;
 }
 
 }  // namespace foldlab::gui

@@ -23,6 +23,8 @@ class IntroWindow : public Panel {
     frames_shown_ = 0;
   }
   bool is_open() const { return open_; }
+  // "intro_open".
+  void report(nlohmann::json& state, PanelContext& /*context*/) const override;
 
  private:
   static constexpr int kFramesToSettle = 2;

@@ -9,6 +9,7 @@
 
 #include <imgui.h>
 #include <imgui_internal.h>
+#include <nlohmann/json.hpp>
 
 #include "app/gui/panels/axis_inputs.hpp"
 #include "app/gui/panels/widgets.hpp"
@@ -368,7 +369,8 @@ std::optional<double> ParametersPanel::arrow_nudge(double fraction) const {
   return std::clamp(fraction + nudge, 0.0, 1.0);
 }
 
-void ParametersPanel::play_frame(Document& document) {
+void ParametersPanel::begin_frame(PanelContext& context) {
+  Document& document = context.document;
   if (!playing_) {
     return;
   }
@@ -681,6 +683,36 @@ void ParametersPanel::draw_strip(Document& document, UiStatus& status, float wid
                  SliderLook::strip);
   }
   draw_refusals(document);
+}
+
+float slider_handle_x(const SliderPlace& place, double fraction) {
+  constexpr float kGrabPadding = 2.0f;
+  const float slider_px = place.max.x - place.min.x - 2.0f * kGrabPadding;
+  const float grab_px = std::min(ImGui::GetStyle().GrabMinSize, slider_px);
+  return place.min.x + kGrabPadding + 0.5f * grab_px +
+         static_cast<float>(fraction) * (slider_px - grab_px);
+}
+
+void ParametersPanel::report(nlohmann::json& state, PanelContext& context) const {
+  nlohmann::json sliders = nlohmann::json::object();
+  for (const auto& [key, place] : places_) {
+    const float y = 0.5f * (place.min.y + place.max.y);
+    sliders[key] = {
+        {"handle", {slider_handle_x(place, place.fraction), y}},
+        {"left", place.min.x},
+        {"right", place.max.x},
+        {"top", place.min.y},
+        {"bottom", place.max.y},
+        {"fraction", place.fraction},
+        {"clip", {place.clip_min.x, place.clip_min.y, place.clip_max.x, place.clip_max.y}},
+        {"shown", shown(context.document, *find_input(key))}};
+  }
+  state["sliders"] = sliders;
+  nlohmann::json unread = nlohmann::json::object();
+  for (const auto& [key, reason] : unread_reasons()) {
+    unread[key] = reason;
+  }
+  state["unread"] = unread;
 }
 
 }  // namespace foldlab::gui

@@ -6,6 +6,8 @@
 
 #include <functional>
 #include <map>
+
+#include <nlohmann/json_fwd.hpp>
 #include <optional>
 #include <string>
 #include <vector>
@@ -34,6 +36,9 @@ struct SliderPlace {
   ImVec2 clip_max;
 };
 
+// Where ImGui 1.86 centres a float slider's handle for `fraction` (SliderBehaviorT's geometry).
+float slider_handle_x(const SliderPlace& place, double fraction);
+
 class ParametersPanel : public Panel {
  public:
   const char* name() const override { return "Parameters"; }
@@ -48,9 +53,14 @@ class ParametersPanel : public Panel {
 
   // While playing: the next frame's value, one open edit for the whole animation. Called by the
   // explorer every frame, whether or not this panel is drawn (a presented view still plays).
-  void play_frame(Document& document);
+  void begin_frame(PanelContext& context) override;
   // True while the play button sweeps an input: every frame shows new inputs.
-  bool animating() const { return playing_; }
+  bool animating() const override { return playing_; }
+  bool plays_input() const override { return playing_; }
+  // Where each slider's handle is ("sliders": its frame, clip and handle, so that a test driving
+  // the real window can press on it as a person would, and what it shows) and text typed into a
+  // slider that is no value, with its reason ("unread").
+  void report(nlohmann::json& state, PanelContext& context) const override;
   // The input the play button sweeps, and the sweep while it plays or is paused.
   const std::string& animated_key() const { return animate_key_; }
   const std::optional<AnimatedInput>& animation() const { return animation_; }

@@ -556,4 +556,16 @@ json PhotoOverlay::report() const {
   return {{"photo", photo}, {"measured", measured}};
 }
 
+void PhotoOverlay::report(nlohmann::json& state, PanelContext& /*context*/) const {
+  state.update(report());  // "photo" and "measured"
+}
+
+std::optional<ImVec2> PhotoOverlay::locate(std::string_view target,
+                                           std::span<const double> at) const {
+  if (target != "photo_pixel" || at.size() < 2 || report().at("photo").is_null()) {
+    return std::nullopt;
+  }
+  return screen_of_pixel(at[0], at[1]);
+}
+
 }  // namespace foldlab::gui

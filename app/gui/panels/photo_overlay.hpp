@@ -77,6 +77,13 @@ class PhotoOverlay : public Panel {
   ImVec2 screen_of_pixel(double x_px, double y_px) const;
   // The photo, its supports and folds, the measurement and the files: for `gui --report`.
   nlohmann::json report() const;
+  void report(nlohmann::json& state, PanelContext& /*context*/) const override;
+  // "photo_pixel" at (at[0], at[1]): where the photo's pixel is on screen, while a photo is
+  // loaded.
+  std::optional<ImVec2> locate(std::string_view target, std::span<const double> at) const override;
+  std::vector<app::NamedPath> files_in_use() const override {
+    return {{"the fold plot's photo", photo_path_}};
+  }
 
  private:
   enum class Mode { none, supports, folds };

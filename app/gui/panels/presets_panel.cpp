@@ -7,10 +7,14 @@
 #include <utility>
 
 #include <imgui.h>
+#include <nlohmann/json.hpp>
 
 #include "app/common/presets_dir.hpp"
 #include "app/common/version.hpp"
+#include "app/gui/appearance.hpp"
+#include "app/gui/panels/calibration_panel.hpp"
 #include "app/gui/panels/file_dialog.hpp"
+#include "app/gui/panels/photo_overlay.hpp"
 #include "app/gui/panels/widgets.hpp"
 #include "app/gui/session.hpp"
 #include "core/model/text_format.hpp"
@@ -331,12 +335,80 @@ void PresetsPanel::draw(PanelContext& context) {
   if (ImGui::IsItemHovered()) {
     ImGui::SetTooltip("A preset file (.json) from elsewhere: a colleague's, or one you saved.");
   }
-  if (footer_) {
-    footer_();
+  context.panel<CalibrationPanel>().open_button(document.scene().parameters());
+  if (const std::string& note = context.appearance.notice(); !note.empty()) {
+    ImGui::PushStyleColor(ImGuiCol_Text, kNoteText);
+    wrapped_text("%s", note.c_str());
+    ImGui::PopStyleColor();
   }
   below_list_px_ = ImGui::GetCursorPosY() - below_list_start;
   draw_messages(status);
   ImGui::End();
+}
+
+void PresetsPanel::start(PanelContext& context) {
+  for (const std::string& notice : notices_) {
+    context.status.add_notice(notice);
+  }
+}
+
+// Letters by the platform's key codes: GLFW's, which are the upper-case ASCII codes.
+void PresetsPanel::begin_frame(PanelContext& context) {
+  const ImGuiIO& io = ImGui::GetIO();
+  if (context.status.modal_title().empty() && !ImGui::IsAnyItemActive() && io.KeyCtrl &&
+      !io.KeyAlt && ImGui::IsKeyPressed('S', false)) {
+    save(context.document, context.status);
+  }
+}
+
+void PresetsPanel::end_frame(PanelContext& context) {
+  draw_unsaved_dialog(context.document, context.status);
+  draw_dialogs(context.document, context.status);
+  if (context.panel<PhotoOverlay>().take_saved_preset()) {
+    refresh();
+  }
+}
+
+void PresetsPanel::draw_unsaved_dialog(Document& document, UiStatus& status) {
+  const char* title = UiStatus::kUnsavedModal;
+  if (status.modal_title() != title) {
+    return;
+  }
+  if (!ImGui::IsPopupOpen(title)) {
+    ImGui::OpenPopup(title);
+  }
+  const bool escape = ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape), false);
+  if (ImGui::BeginPopupModal(title, nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
+    ImGui::Text("Your edits of \"%s\" are not saved.", document.loaded().name.c_str());
+    ImGui::TextUnformatted(document.pending_replacement().c_str());
+    if (ImGui::Button("Save")) {
+      ImGui::CloseCurrentPopup();
+      status.set_modal("");
+      save(document, status);  // then loads, unless it asks for a name or fails
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("Discard")) {
+      ImGui::CloseCurrentPopup();
+      document.discard_and_replace();
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("Cancel") || escape) {
+      ImGui::CloseCurrentPopup();
+      document.cancel_replace();
+      status.notify("Cancelled; your edits are kept.", MessageKind::info);
+    }
+    ImGui::EndPopup();
+  }
+}
+
+void PresetsPanel::report(nlohmann::json& state, PanelContext& /*context*/) const {
+  nlohmann::json user_presets = nlohmann::json::array();
+  for (const Entry& entry : entries_) {
+    if (entry.user) {
+      user_presets.push_back(entry.name);
+    }
+  }
+  state["user_presets"] = user_presets;
 }
 
 }  // namespace foldlab::gui

@@ -1,13 +1,14 @@
 // The Presets panel: the shipped and the user's presets (a click loads one, asking first when
 // that would replace unsaved edits), "Save as..." with an overwrite question, Ctrl+S, and the
-// document's status line. What else sits in the panel (the Export
-// section, the calibration window's button) the explorer draws through `footer`.
+// document's status line, the calibration window's button and the question before unsaved edits
+// are replaced ("Save / Discard / Cancel").
 #pragma once
 
 #include "app/common/presets_dir.hpp"
 
 #include <filesystem>
 #include <functional>
+#include <nlohmann/json_fwd.hpp>
 #include <string>
 #include <vector>
 
@@ -25,8 +26,15 @@ class PresetsPanel : public Panel {
   }
   const char* key() const override { return "presets"; }
   void draw(PanelContext& context) override;
-  // What the explorer adds at the foot of the panel (the calibration window's button).
-  void set_footer(std::function<void()> footer) { footer_ = std::move(footer); }
+  // Why the listing is not the whole folder (too many presets), said as notices.
+  void start(PanelContext& context) override;
+  // Ctrl+S, unless a dialog or a widget being dragged or typed into has the keys.
+  void begin_frame(PanelContext& context) override;
+  // The save dialogs and the unsaved edits' question, over every panel; a preset the photo's fit
+  // saved joins the list.
+  void end_frame(PanelContext& context) override;
+  // The user's own presets as listed ("user_presets": what "Save as..." kept).
+  void report(nlohmann::json& state, PanelContext& context) const override;
   // Saves the current valid parameters as a user preset named `name` (the file name is its slug);
   // asks before replacing a file unless `overwrite`.
   void save_as(Document& document, UiStatus& status, const std::string& name, bool overwrite);
@@ -62,6 +70,8 @@ class PresetsPanel : public Panel {
   void draw_list(Document& document, float height_px);
   static float notices_height_px(const UiStatus& status);
   void draw_messages(UiStatus& status);
+  // "Save / Discard / Cancel" before a preset load replaces unsaved edits.
+  void draw_unsaved_dialog(Document& document, UiStatus& status);
 
   std::filesystem::path presets_dir_;
   std::filesystem::path user_presets_dir_;
@@ -70,8 +80,7 @@ class PresetsPanel : public Panel {
   char save_name_[128] = {};
   char save_as_name_[128] = {};
   std::string pending_overwrite_;  // name waiting for the user's "overwrite?" answer
-  std::function<void()> footer_;
-  float below_list_px_ = 0.0f;  // the height of what was drawn under the list in the last frame
+  float below_list_px_ = 0.0f;     // the height of what was drawn under the list in the last frame
 };
 
 using app::preset_slug;

@@ -1,0 +1,140 @@
+#include "app/gui/menu_bar.hpp"
+
+#include <string>
+
+#include <imgui.h>
+
+#include "app/common/version.hpp"
+#include "app/gui/appearance.hpp"
+#include "app/gui/panels/cloth_view_panel.hpp"
+#include "app/gui/panels/compare_table.hpp"
+#include "app/gui/panels/intro_window.hpp"
+#include "app/gui/panels/parameters_panel.hpp"
+#include "app/gui/panels/stats_overlay.hpp"
+
+namespace foldlab::gui {
+
+float MenuBar::draw(PanelContext& context) {
+  export_.new_frame();
+  float height = 0.0f;
+  if (ImGui::BeginMainMenuBar()) {
+    height = ImGui::GetWindowHeight();
+    if (ImGui::BeginMenu("View")) {
+      view_menu(context);
+      ImGui::EndMenu();
+    }
+    if (ImGui::BeginMenu("Compare")) {
+      compare_menu(context.document, context.status);
+      ImGui::EndMenu();
+    }
+    if (ImGui::BeginMenu("Export")) {
+      export_items(context);
+      ImGui::EndMenu();
+    }
+    if (ImGui::MenuItem(IntroWindow::kTitle)) {
+      context.panel<IntroWindow>().open();
+    }
+    // One click from the menu bar while the user's own arrangement is shown.
+    if ((!layout_.automatic() || layout_.splits().any()) && layout_.presented() == nullptr &&
+        ImGui::MenuItem("Reset layout")) {
+      layout_.reset();
+    }
+    if (layout_.presented() != nullptr) {
+      presenting_items(context);
+    }
+    ImGui::EndMainMenuBar();
+  }
+  return height;
+}
+
+void MenuBar::presenting_items(PanelContext& context) {
+  const bool strip_item = layout_.presented() != &context.panel<ParametersPanel>();
+  const char* strip_label = layout_.presents_inputs() ? kHideInputsLabel : kShowInputsLabel;
+  // At a large text size in a small window the long label would push the last item off the bar.
+  // A menu bar item takes its text and twice the item spacing.
+  const ImGuiStyle& style = ImGui::GetStyle();
+  const auto item_width = [&style](const char* label) {
+    return ImGui::CalcTextSize(label).x + 2.0f * style.ItemSpacing.x;
+  };
+  const float needed =
+      item_width(kBackToTilesLabel) + (strip_item ? item_width(strip_label) : 0.0f);
+  const bool fits =
+      ImGui::GetCursorPosX() + needed <= ImGui::GetWindowWidth() - style.WindowPadding.x;
+  if (ImGui::MenuItem(fits ? kBackToTilesLabel : kBackToTilesShortLabel)) {
+    layout_.request_present(nullptr);
+  }
+  if (strip_item && ImGui::MenuItem(strip_label)) {
+    layout_.set_presents_inputs(!layout_.presents_inputs());
+  }
+}
+
+void MenuBar::export_items(PanelContext& context) {
+  export_.menu(context.document, context.status, context.panel<ClothViewPanel>().style(),
+               context.files, context.panels);
+  ImGui::Separator();
+  if (ImGui::MenuItem("Copy link")) {
+    copy_link_();
+  }
+  if (ImGui::IsItemHovered()) {
+    ImGui::SetTooltip("The fabric as an address: open it in the page, or with foldlab gui --link");
+  }
+}
+
+// The UI scale and theme, for a projector, beside the shortcuts that do the same.
+void MenuBar::view_menu(PanelContext& context) {
+  int percent = appearance_.scale_percent();
+  bool light = appearance_.light_theme();
+  ImGui::Text("UI scale %d %%", percent);
+  if (ImGui::MenuItem("Larger text", "Ctrl +", false, percent < kMaxUiScalePercent)) {
+    percent += kUiScaleStepPercent;
+  }
+  if (ImGui::MenuItem("Smaller text", "Ctrl -", false, percent > kMinUiScalePercent)) {
+    percent -= kUiScaleStepPercent;
+  }
+  if (ImGui::MenuItem("Default size", "Ctrl 0", false, percent != kMinUiScalePercent)) {
+    percent = kMinUiScalePercent;
+  }
+  // The sizes a room needs, in one move rather than ten presses of Ctrl +.
+  if (ImGui::BeginMenu("Text size")) {
+    for (const int choice : {100, 125, 150, 200}) {
+      if (ImGui::MenuItem((std::to_string(choice) + " %").c_str(), nullptr, percent == choice)) {
+        percent = choice;
+      }
+    }
+    ImGui::EndMenu();
+  }
+  ImGui::MenuItem("Light theme", nullptr, &light);
+  appearance_.request(percent, light);
+  ImGui::Separator();
+  ImGui::MenuItem("Pipeline stats", nullptr, &show_stats_);
+  if (layout_.presented()) {
+    if (ImGui::MenuItem("Back to the tiles", "Esc")) {
+      layout_.request_present(nullptr);
+    }
+  } else if (ImGui::BeginMenu("Present (fill the window)")) {
+    for (const std::unique_ptr<Panel>& panel : context.panels) {
+      if (Layout::tiled(*panel) && ImGui::MenuItem(panel->name())) {
+        layout_.request_present(panel.get());
+      }
+    }
+    ImGui::EndMenu();
+  }
+  if (ImGui::MenuItem(IntroWindow::kTitle)) {
+    context.panel<IntroWindow>().open();
+  }
+  if (ImGui::MenuItem("Reset layout", nullptr, false,
+                      !layout_.automatic() || layout_.splits().any())) {
+    layout_.reset();
+  }
+  ImGui::Separator();
+  ImGui::TextDisabled("About FoldLab: %s", app::version_line().c_str());
+}
+
+void MenuBar::draw_after_panels(PanelContext& context) {
+  const ClothViewPanel& cloth = context.panel<ClothViewPanel>();
+  stats_overlay(show_stats_, context.document.scene(),
+                context.renderer.cloth_counters(cloth.a_view()));
+  export_.draw_picture_dialog(context.status, context.files);
+}
+
+}  // namespace foldlab::gui

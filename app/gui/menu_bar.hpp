@@ -1,0 +1,49 @@
+// The explorer's menu bar: View (text size, theme, presenting, the introduction, the layout),
+// Compare, Export (the files, the panels' pictures and the link), and while a view is presented
+// the way back to the tiles and the strip of inputs shown or hidden.
+#pragma once
+
+#include <functional>
+
+#include "app/gui/layout.hpp"
+#include "app/gui/panel.hpp"
+#include "app/gui/panels/export_panel.hpp"
+
+namespace foldlab::gui {
+
+class Appearance;
+
+class MenuBar {
+ public:
+  // The items that show or hide the strip of inputs, and the one back to the tiles (short when
+  // the bar is narrow).
+  static constexpr const char* kShowInputsLabel = "Show inputs";
+  static constexpr const char* kHideInputsLabel = "Hide inputs";
+  static constexpr const char* kBackToTilesLabel = "Back to the tiles (Esc)";
+  static constexpr const char* kBackToTilesShortLabel = "Tiles (Esc)";
+
+  // `copy_link`: what Export > Copy link does.
+  MenuBar(Layout& layout, Appearance& appearance, std::function<void()> copy_link)
+      : layout_(layout), appearance_(appearance), copy_link_(std::move(copy_link)) {}
+  // The bar; returns its height, where the tiled panels start.
+  float draw(PanelContext& context);
+  // After the panels: the dialogs the Export menu opened and the pipeline's stats.
+  void draw_after_panels(PanelContext& context);
+  // A picture the Export menu asked for (export_panel.hpp).
+  ExportPanel& export_menu() { return export_; }
+
+ private:
+  void view_menu(PanelContext& context);
+  // The files, every panel's pictures, and the link.
+  void export_items(PanelContext& context);
+  // While presenting: the way back to the tiles and the strip's item.
+  void presenting_items(PanelContext& context);
+
+  Layout& layout_;
+  Appearance& appearance_;
+  std::function<void()> copy_link_;
+  ExportPanel export_;
+  bool show_stats_ = false;
+};
+
+}  // namespace foldlab::gui

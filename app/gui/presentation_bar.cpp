@@ -1,0 +1,125 @@
+#include "app/gui/presentation_bar.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <utility>
+#include <vector>
+
+#include <imgui.h>
+
+#include "app/gui/panels/parameters_panel.hpp"
+#include "app/gui/panels/presets_panel.hpp"
+#include "app/gui/panels/results_panel.hpp"
+#include "app/gui/panels/widgets.hpp"
+
+namespace foldlab::gui {
+namespace {
+
+// The read-out's lines at one scale: as large as the width allows, up to two and a half times the
+// text, as it is read from the back of a room (a hair short of the width, so that rounding never
+// wraps it). Only a line too long at the text's own size (scale 1) wraps: between n, Q and z_max
+// (headline()), never after a number's '.' as ImGui's wrapping would.
+struct Headlines {
+  std::vector<std::pair<std::string, ImVec4>> lines;
+  float scale = 1.0f;
+  float height = 0.0f;
+};
+
+Headlines fit_headlines(std::vector<std::pair<std::string, ImVec4>> lines, float available) {
+  constexpr float kLargestScale = 2.5f;
+  float text_width = 1.0f;
+  for (const auto& [line, colour] : lines) {
+    text_width = std::max(text_width, ImGui::CalcTextSize(line.c_str()).x);
+  }
+  Headlines fitted;
+  fitted.scale = std::clamp(0.98f * available / text_width, 1.0f, kLargestScale);
+  for (auto& [line, colour] : lines) {
+    line = wrap_at_spaces(line, available);
+    fitted.height += fitted.scale * ImGui::CalcTextSize(line.c_str()).y;
+  }
+  fitted.height += static_cast<float>(lines.size() - 1) * ImGui::GetStyle().ItemSpacing.y;
+  fitted.lines = std::move(lines);
+  return fitted;
+}
+
+void draw_headlines(const Headlines& headlines) {
+  ImGui::SetWindowFontScale(headlines.scale);
+  for (const auto& [line, colour] : headlines.lines) {
+    ImGui::PushStyleColor(ImGuiCol_Text, colour);
+    ImGui::TextUnformatted(line.c_str());
+    ImGui::PopStyleColor();
+  }
+  ImGui::SetWindowFontScale(1.0f);
+}
+
+}  // namespace
+
+// The status line under the read-out and the strip (a copied link, a refused file): the Presets
+// panel that shows it is out of sight unless it is the one presented. Under the strip, so that a
+// message coming and going never moves the strip's sliders; not when the strip already says it
+// (the reason typed text was no value, under its slider).
+std::string PresentationBar::message_for_presented(PanelContext& context, bool strip) const {
+  if (layout_.presented() == &context.panel<PresetsPanel>()) {
+    return "";
+  }
+  const std::string& message = context.status.message();
+  // (std::any_of, not std::ranges: the page's libc++ has no ranges algorithms.)
+  const std::map<std::string, std::string> reasons =
+      context.panel<ParametersPanel>().unread_reasons();
+  if (strip && std::any_of(reasons.begin(), reasons.end(),
+                           [&](const auto& entry) { return entry.second == message; })) {
+    return "";
+  }
+  return message;
+}
+
+float PresentationBar::draw(PanelContext& context, float top) {
+  ParametersPanel& parameters = context.panel<ParametersPanel>();
+  const ImVec2 display = ImGui::GetIO().DisplaySize;
+  const ImGuiStyle& style = ImGui::GetStyle();
+  const float width = std::floor(display.x);
+  const float available = width - 2.0f * style.WindowPadding.x;
+  const Headlines headlines =
+      fit_headlines(context.panel<ResultsPanel>().headlines(context.document), available);
+  // The inputs under the read-out, for a "what if" without leaving the view; not over the
+  // Parameters panel itself.
+  const bool presents_parameters = layout_.presented() == &parameters;
+  const bool strip = layout_.presents_inputs() && !presents_parameters;
+  message_ = message_for_presented(context, strip);
+  float text_height = headlines.height;
+  if (!message_.empty()) {
+    text_height +=
+        style.ItemSpacing.y + ImGui::CalcTextSize(message_.c_str(), nullptr, false, available).y;
+  }
+  if (strip) {
+    text_height += style.ItemSpacing.y + parameters.strip_height(context.document, available);
+  } else if (!presents_parameters) {
+    parameters.forget_slider_places();
+  }
+  const float height = std::ceil(text_height + 2.0f * style.WindowPadding.y);
+  ImGui::SetNextWindowPos(ImVec2(0.0f, top), ImGuiCond_Always);
+  ImGui::SetNextWindowSize(ImVec2(width, height), ImGuiCond_Always);
+  const ImGuiWindowFlags flags = ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoResize |
+                                 ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoCollapse |
+                                 ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoScrollbar |
+                                 ImGuiWindowFlags_NoScrollWithMouse;
+  if (ImGui::Begin(kWindow, nullptr, flags)) {
+    context.renderer.fill_window_background();
+    ImGui::PushTextWrapPos(0.0f);
+    draw_headlines(headlines);
+    if (strip) {
+      parameters.draw_strip(context.document, context.status, available);
+    }
+    if (!message_.empty()) {
+      ImGui::PushStyleColor(ImGuiCol_Text, message_colour(context.status.message_kind()));
+      ImGui::TextUnformatted(message_.c_str());
+      ImGui::PopStyleColor();
+    }
+    ImGui::PopTextWrapPos();
+  }
+  ImGui::End();
+  return top + height;
+}
+
+}  // namespace foldlab::gui

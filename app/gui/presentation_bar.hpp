@@ -1,0 +1,33 @@
+// The read-out over a presented view: n, Q and z_max as large as the width allows (read from the
+// back of a room), the strip of the cloth's inputs under it when shown, and the status line,
+// which the Presets panel shows out of sight.
+#pragma once
+
+#include <string>
+
+#include "app/gui/layout.hpp"
+#include "app/gui/panel.hpp"
+
+namespace foldlab::gui {
+
+class PresentationBar {
+ public:
+  // The read-out's window ("presentation" is its key for playback's "in").
+  static constexpr const char* kWindow = "##presentation read-out###presentation";
+
+  explicit PresentationBar(Layout& layout) : layout_(layout) {}
+  // Draws the bar below the menu bar (at `top`); returns where the presented panel starts.
+  float draw(PanelContext& context, float top);
+  // The status line as the bar showed it at the last frame (empty: none).
+  const std::string& message() const { return message_; }
+  void clear() { message_.clear(); }
+
+ private:
+  // The status line to show under the read-out and the strip, or "" when it is seen elsewhere.
+  std::string message_for_presented(PanelContext& context, bool strip) const;
+
+  Layout& layout_;
+  std::string message_;
+};
+
+}  // namespace foldlab::gui
