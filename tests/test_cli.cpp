@@ -1049,6 +1049,10 @@ TEST_F(CliTest, OverflowingNumberIsNamedAsSuch) {
   const RunResult r = run({"solve", "--set", "t=1e309"});
   EXPECT_EQ(r.exit_status, 2);
   EXPECT_TRUE(contains(r.err, "beyond the range of a double")) << r.err;
+  // A sweep's end is read as --set reads it, and named in the same words.
+  const RunResult end = run({"sweep", "--param", "t", "--from", "1e309", "--to", "1"});
+  EXPECT_EQ(end.exit_status, 2);
+  EXPECT_TRUE(contains(end.err, "--from t = '1e309' is beyond the range of a double")) << end.err;
 }
 
 // Counts are read as numbers, so that 1e3 is 1000 and 2.5 is refused as not whole.

@@ -277,7 +277,8 @@ TEST(Settings, ARefusedUnitNamesTheKnownOnesAndTheRightCase) {
                        "oz/yd², gsm); did you mean 'g/m²'?"))
       << *w_caps;
   EXPECT_EQ(p.hanging.height_mm, Parameters{}.hanging.height_mm);
-  EXPECT_FALSE(foldlab::quantity_problem(*foldlab::find_input("h"), "2.4m").has_value());
+  EXPECT_TRUE(
+      std::holds_alternative<double>(foldlab::read_quantity(*foldlab::find_input("h"), "2.4m")));
 }
 
 // A key set twice is refused in the words a preset file uses for a duplicate key.
@@ -732,7 +733,7 @@ TEST(SettingsValidate, RefusalsUseTheSlidersLabelAndUnit) {
   // The incline's interval is open at both ends.
   const foldlab::InputSpec& incline = *foldlab::find_input("incline_deg");
   EXPECT_TRUE(
-      foldlab::refusal_sentence(incline, 90.0, incline.valid, "why")
+      foldlab::refusal_sentence(foldlab::range_refusal(incline, 90.0, incline.valid, "why"))
           .starts_with("incline incline_deg = 90 deg must be above \u221280 and below 80 deg"));
 }
 

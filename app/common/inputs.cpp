@@ -85,9 +85,8 @@ std::string link_note(const std::string& piece, const std::string& reason, const
   const std::string key = piece.substr(0, eq);
   const InputSpec* spec = find_input(key);
   if (spec == nullptr) {
-    const std::size_t known = reason.find("(known: ");
-    return "'" + detail::cut(key) + "' is no key FoldLab knows" +
-           (known == std::string::npos ? "" : " " + reason.substr(known)) + ", so it is left out";
+    return "'" + detail::cut(key) + "' is no key FoldLab knows (known: " + known_keys() +
+           "), so it is left out";
   }
   const std::optional<double> now = spec->value(shown);
   const std::optional<double> preset_value = spec->value(preset.parameters);
@@ -289,12 +288,11 @@ SweepAxis read_sweep_axis(const SweepAxisText& text) {
   // An unknown key leaves the ends as they are, for check_axis to name the key.
   for (std::size_t i = 0; spec != nullptr && i < ends.size(); ++i) {
     const auto& [option, typed] = ends[i];
-    const std::optional<double> value = parse_quantity(*spec, *typed);
-    if (!value) {
-      throw InputError(std::string(option) + " " + text.key + " = '" + detail::cut(*typed) + "'" +
-                       quantity_problem(*spec, *typed).value_or(" is not a number"));
+    const std::variant<double, InputRefusal> value = read_quantity(*spec, *typed);
+    if (const InputRefusal* refusal = std::get_if<InputRefusal>(&value)) {
+      throw InputError(std::string(option) + " " + refusal_sentence(*refusal));
     }
-    (i == 0 ? axis.from : axis.to) = *value;
+    (i == 0 ? axis.from : axis.to) = std::get<double>(value);
   }
   if (const std::optional<std::string> problem = check_axis(axis)) {
     for (const auto& [option, typed] : ends) {

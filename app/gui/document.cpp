@@ -60,8 +60,8 @@ std::optional<std::string> Document::apply(const Edit& edit) {
   switch (edit.kind) {
     case Edit::Kind::assign:
       for (const Assignment& a : edit.assignments) {
-        if (auto error = apply_assignment(next, a)) {
-          return error;
+        if (const std::optional<InputRefusal> refusal = assign(next, a)) {
+          return refusal_sentence(*refusal);
         }
       }
       break;

@@ -98,7 +98,7 @@ std::optional<std::string> check_axis(const SweepAxis& axis) {
     if (!range.contains(end)) {
       const std::string why =
           spec.why.empty() ? "c / (1 − ν²) with c and ν in their ranges" : std::string(spec.why);
-      return "the sweep's end: " + refusal_sentence(spec, end, range, why);
+      return "the sweep's end: " + refusal_sentence(range_refusal(spec, end, range, why));
     }
   }
   return std::nullopt;

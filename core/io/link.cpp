@@ -19,7 +19,7 @@ bool same_bits(double a, double b) {
 // Whether `text` is read back as exactly `stored`, by the reader `--set` uses.
 bool reads_back(const InputSpec& spec, const std::string& text, double stored) {
   Parameters p;
-  return !apply_setting(p, spec.key, text) && same_bits(*spec.value(p), stored);
+  return !assign_text(p, spec.key, text) && same_bits(*spec.value(p), stored);
 }
 
 std::string number_text(const InputSpec& spec, double stored) {

@@ -9,13 +9,6 @@
 namespace foldlab {
 namespace {
 
-void check_range(std::vector<ValidationIssue>& issues, const InputSpec& spec, double value) {
-  if (!spec.valid.contains(value)) {
-    issues.push_back(
-        {std::string(spec.field), value, refusal_sentence(spec, value, spec.valid, spec.why)});
-  }
-}
-
 template <class Enum>
 bool parse_named(std::string_view s, Enum& out, std::initializer_list<Enum> values) {
   for (Enum v : values) {
@@ -57,20 +50,8 @@ double bending_length_mm(const Fabric& f) {
 
 std::vector<ValidationIssue> validate(const Parameters& p) {
   std::vector<ValidationIssue> issues;
-  for (const InputSpec& spec : input_table()) {
-    if (spec.kind == InputKind::number || spec.kind == InputKind::whole_number) {
-      const double value = *spec.value(p);
-      check_range(issues, spec, value);
-      const std::optional<double> upper = spec.upper_bound ? spec.upper_bound(p) : std::nullopt;
-      // The reason is spelt out only for a value it refuses: validate() runs on every edit.
-      if (upper && spec.valid.contains(value) && !(value < *upper)) {
-        issues.push_back({std::string(spec.field), value,
-                          input_title(spec) + " = " + shown_quantity(spec, value) +
-                              " must be below " + std::string(spec.upper_bound_name) + " = " +
-                              shown_quantity(spec, *upper) + ", " +
-                              std::string(spec.upper_bound_why)});
-      }
-    }
+  for (const InputRefusal& refusal : input_refusals(p)) {
+    issues.push_back({std::string(refusal.spec->field), refusal.value, refusal_sentence(refusal)});
   }
   // c is what K is stored as: whoever set K reads it by that name too.
   if (!issues.empty() && issues.back().field == "c") {

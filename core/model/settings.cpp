@@ -494,15 +494,41 @@ std::string shown_quantity(const InputSpec& spec, double stored) {
   return with_unit(spec, detail::message_number(to_shown_unit(spec, stored)));
 }
 
-std::string refusal_sentence(const InputSpec& spec, double value, const InputInterval& range,
-                             std::string_view why) {
+InputRefusal range_refusal(const InputSpec& spec, double value, const InputInterval& range,
+                           std::string_view why) {
+  // A NaN is below no end and above none: it is said against the lower one.
+  const bool above_lo = range.lo_open ? value > range.lo : value >= range.lo;
+  return {.kind = RefusalKind::out_of_range,
+          .key = std::string(spec.key),
+          .spec = &spec,
+          .value = value,
+          .bound = above_lo ? range.hi : range.lo,
+          .unit = spec.unit,
+          .range = range,
+          .why = why};
+}
+
+std::string known_keys() {
+  std::vector<std::string_view> keys;
+  for (const InputSpec& spec : input_table()) {
+    keys.push_back(spec.key);
+  }
+  return detail::join(keys, ", ");
+}
+
+namespace {
+
+// "must be between 0.1 and 1,000,000 g/m²" for a value out of range, in the slider's unit.
+std::string range_sentence(const InputRefusal& refusal) {
+  const InputSpec& spec = *refusal.spec;
+  const InputInterval& range = refusal.range;
   const std::string lo = detail::message_number(to_shown_unit(spec, range.lo));
   const std::string hi_number = detail::message_number(to_shown_unit(spec, range.hi));
   const std::string hi = with_unit(spec, hi_number);
   // 0.5000000000001 is refused by "below 0.5": then it is written with all its digits.
-  std::string shown = detail::message_number(to_shown_unit(spec, value));
+  std::string shown = detail::message_number(to_shown_unit(spec, refusal.value));
   if (shown == lo || shown == hi_number) {
-    shown = detail::message_number(to_shown_unit(spec, value), true);
+    shown = detail::message_number(to_shown_unit(spec, refusal.value), true);
   }
   const std::string bounds =
       range.lo_open == range.hi_open
@@ -510,7 +536,81 @@ std::string refusal_sentence(const InputSpec& spec, double value, const InputInt
           : (range.lo_open ? "above " + lo + " and at most " + hi
                            : "at least " + lo + " and below " + hi);
   return input_title(spec) + " = " + with_unit(spec, shown) + " must be " + bounds + ": " +
-         std::string(why);
+         std::string(refusal.why);
+}
+
+}  // namespace
+
+std::string refusal_reason(const InputRefusal& refusal) {
+  const std::vector<InputUnit> units =
+      refusal.spec == nullptr ? std::vector<InputUnit>{} : input_units(*refusal.spec);
+  switch (refusal.kind) {
+    case RefusalKind::not_a_choice:
+      return " is not one of: " + std::string(refusal.spec->choices);
+    case RefusalKind::nested_too_deeply:
+      return " is nested too deeply: arithmetic may nest at most " +
+             std::to_string(kMaxArithmeticDepth) + " parentheses deep";
+    case RefusalKind::beyond_double:
+      return " is beyond the range of a double (magnitudes 2.2e-308 to 1.8e308)";
+    case RefusalKind::unknown_unit: {
+      std::vector<std::string_view> known;
+      for (const InputUnit& unit : units) {
+        known.push_back(unit.symbol);
+      }
+      for (const InputUnit& unit : units) {
+        if (!unit.plain.empty()) {
+          known.push_back(unit.plain);
+        }
+      }
+      const InputSpec& spec = *refusal.spec;
+      const std::string_view quantity = spec.quantity.empty() ? spec.name : spec.quantity;
+      return ": '" + detail::cut(refusal.typed_unit) + "' is not a unit of " +
+             std::string(quantity) + " (known: " + detail::join(known, ", ") + ")" +
+             (refusal.meant_unit.empty()
+                  ? ""
+                  : "; did you mean '" + std::string(refusal.meant_unit) + "'?");
+    }
+    case RefusalKind::unknown_key:
+    case RefusalKind::number_for_choice:
+    case RefusalKind::not_a_number:
+    case RefusalKind::not_whole:
+    case RefusalKind::out_of_range:
+    case RefusalKind::not_below_bound:
+      break;
+  }
+  std::vector<std::string_view> symbols;
+  for (const InputUnit& unit : units) {
+    symbols.push_back(unit.symbol);
+  }
+  return std::string(" is not a number") +
+         (symbols.size() > 1 ? " (with an optional unit: " + detail::join(symbols, ", ") + ")"
+                             : "");
+}
+
+std::string refusal_sentence(const InputRefusal& refusal) {
+  switch (refusal.kind) {
+    case RefusalKind::unknown_key:
+      return "unknown key '" + detail::cut(refusal.key) + "' (known: " + known_keys() + ")";
+    case RefusalKind::number_for_choice:
+      return refusal.key + " takes one of: " + std::string(refusal.spec->choices) +
+             ", not a number";
+    case RefusalKind::not_whole:
+      return refusal.key + " = " + detail::shortest_number(refusal.value) +
+             " must be a whole number";
+    case RefusalKind::out_of_range:
+      return range_sentence(refusal);
+    case RefusalKind::not_below_bound:
+      return input_title(*refusal.spec) + " = " + shown_quantity(*refusal.spec, refusal.value) +
+             " must be below " + std::string(refusal.bound_name) + " = " +
+             shown_quantity(*refusal.spec, refusal.bound) + ", " + std::string(refusal.why);
+    case RefusalKind::not_a_choice:
+    case RefusalKind::not_a_number:
+    case RefusalKind::nested_too_deeply:
+    case RefusalKind::unknown_unit:
+    case RefusalKind::beyond_double:
+      break;
+  }
+  return refusal.key + " = '" + detail::cut(refusal.typed) + "'" + refusal_reason(refusal);
 }
 
 namespace {
@@ -579,75 +679,88 @@ int parenthesis_depth(std::string_view text) {
 
 }  // namespace
 
-std::optional<double> parse_quantity(const InputSpec& spec, std::string_view text,
-                                     std::string_view bare_unit) {
-  const std::optional<TypedQuantity> typed = split_quantity(text);
-  if (!typed) {
-    return std::nullopt;
-  }
-  const std::vector<InputUnit> units = input_units(spec);
-  const std::string bare = unit_key(bare_unit);
-  for (const InputUnit& unit : units) {
-    const bool bare_here = bare.empty() ? &unit == &units.front() : bare == unit_key(unit.symbol);
-    if (typed->unit.empty() ? bare_here : names_unit(unit, typed->unit)) {
-      return typed->number * unit.per_unit;
-    }
-  }
-  if (typed->unit.empty() && units.empty()) {
-    return typed->number;
-  }
-  return std::nullopt;
+namespace {
+
+InputRefusal text_refusal(RefusalKind kind, const InputSpec& spec, std::string_view text) {
+  return {.kind = kind,
+          .key = std::string(spec.key),
+          .spec = &spec,
+          .typed = std::string(text),
+          .unit = spec.unit};
 }
 
-std::optional<std::string> quantity_problem(const InputSpec& spec, std::string_view text,
-                                            std::string_view bare_unit) {
-  if (parse_quantity(spec, text, bare_unit)) {
-    return std::nullopt;
+// A number whose magnitude a double cannot hold, and nothing after it: 1e999, 1e-999.
+bool beyond_double(std::string_view text) {
+  double ignored = 0.0;
+  const char* end = text.data() + text.size();
+  const auto [ptr, ec] = detail::read_double(text.data(), end, ignored);
+  return ec == std::errc::result_out_of_range && ptr == end;
+}
+
+// Only a name after the number (letters, or a symbol such as µ, with at most a square's 2 at its
+// end) is a unit the person meant; "2*", "1)" or "0x10" is a number gone wrong.
+bool names_a_unit(std::string_view unit) {
+  const auto first = static_cast<unsigned char>(unit.front());
+  const std::string_view body = unit.ends_with('2') ? unit.substr(0, unit.size() - 1) : unit;
+  return (std::isalpha(first) != 0 || first >= 0x80) &&
+         std::none_of(body.begin(), body.end(), [](char c) { return c >= '0' && c <= '9'; });
+}
+
+// A whole number's text: a plain number, without arithmetic or unit.
+std::variant<double, InputRefusal> read_whole_number(const InputSpec& spec, std::string_view text) {
+  if (const std::optional<double> number = parse_number(text)) {
+    return *number;
   }
-  if (parenthesis_depth(text) > kMaxArithmeticDepth) {
-    return " is nested too deeply: arithmetic may nest at most " +
-           std::to_string(kMaxArithmeticDepth) + " parentheses deep";
-  }
+  return text_refusal(beyond_double(text) ? RefusalKind::beyond_double : RefusalKind::not_a_number,
+                      spec, text);
+}
+
+}  // namespace
+
+std::variant<double, InputRefusal> read_quantity(const InputSpec& spec, std::string_view text,
+                                                 std::string_view bare_unit) {
   const std::optional<TypedQuantity> typed = split_quantity(text);
   const std::vector<InputUnit> units = input_units(spec);
-  // Only a name after the number (letters, or a symbol such as µ, with at most a square's 2 at
-  // its end) is a unit the person meant; "2*", "1)" or "0x10" is a number gone wrong.
-  const auto names_a_unit = [](std::string_view unit) {
-    const auto first = static_cast<unsigned char>(unit.front());
-    const std::string_view body = unit.ends_with('2') ? unit.substr(0, unit.size() - 1) : unit;
-    return (std::isalpha(first) != 0 || first >= 0x80) &&
-           std::none_of(body.begin(), body.end(), [](char c) { return c >= '0' && c <= '9'; });
-  };
-  if (!typed || typed->unit.empty() || units.empty() || !names_a_unit(typed->unit)) {
-    std::vector<std::string_view> symbols;
+  if (typed) {
+    const std::string bare = unit_key(bare_unit);
     for (const InputUnit& unit : units) {
-      symbols.push_back(unit.symbol);
+      const bool bare_here = bare.empty() ? &unit == &units.front() : bare == unit_key(unit.symbol);
+      if (typed->unit.empty() ? bare_here : names_unit(unit, typed->unit)) {
+        return typed->number * unit.per_unit;
+      }
     }
-    return std::string(" is not a number") +
-           (symbols.size() > 1 ? " (with an optional unit: " + detail::join(symbols, ", ") + ")"
-                               : "");
-  }
-  std::vector<std::string_view> known;
-  std::optional<std::string_view> meant;
-  for (const InputUnit& unit : units) {
-    known.push_back(unit.symbol);
-    if (lower_case(typed->unit) == lower_case(unit_key(unit.symbol))) {
-      meant = unit.symbol;
+    if (typed->unit.empty() && units.empty()) {
+      return typed->number;
     }
   }
+  if (beyond_double(text)) {
+    return text_refusal(RefusalKind::beyond_double, spec, text);
+  }
+  if (parenthesis_depth(text) > kMaxArithmeticDepth) {
+    return text_refusal(RefusalKind::nested_too_deeply, spec, text);
+  }
+  if (!typed || typed->unit.empty() || units.empty() || !names_a_unit(typed->unit)) {
+    return text_refusal(RefusalKind::not_a_number, spec, text);
+  }
+  InputRefusal refusal = text_refusal(RefusalKind::unknown_unit, spec, text);
   std::string_view unit_text = typed->unit_text;
   while (!unit_text.empty() && (unit_text.front() == ' ' || unit_text.front() == '\t')) {
     unit_text.remove_prefix(1);
   }
+  refusal.typed_unit = std::string(unit_text);
   for (const InputUnit& unit : units) {
-    if (!unit.plain.empty()) {
-      known.push_back(unit.plain);
+    if (lower_case(typed->unit) == lower_case(unit_key(unit.symbol))) {
+      refusal.meant_unit = unit.symbol;
     }
   }
-  const std::string_view quantity = spec.quantity.empty() ? spec.name : spec.quantity;
-  return ": '" + detail::cut(unit_text) + "' is not a unit of " + std::string(quantity) +
-         " (known: " + detail::join(known, ", ") + ")" +
-         (meant ? "; did you mean '" + std::string(*meant) + "'?" : "");
+  return refusal;
+}
+
+std::optional<double> parse_quantity(const InputSpec& spec, std::string_view text,
+                                     std::string_view bare_unit) {
+  const std::variant<double, InputRefusal> read = read_quantity(spec, text, bare_unit);
+  const double* value = std::get_if<double>(&read);
+  return value != nullptr ? std::optional(*value) : std::nullopt;
 }
 
 std::optional<std::string> bare_number_hint(const InputSpec& spec, std::string_view text) {
@@ -707,25 +820,24 @@ InputInterval slider_interval(const InputSpec& spec, const Parameters& p, Slider
   return out;
 }
 
-std::optional<std::string> set_input(Parameters& p, std::string_view key, double value) {
+std::optional<InputRefusal> assign_number(Parameters& p, std::string_view key, double value) {
   const InputSpec* spec = find_input(key);
   if (spec == nullptr) {
-    std::vector<std::string_view> known;
-    for (const InputSpec& k : input_table()) {
-      known.push_back(k.key);
-    }
-    return "unknown key '" + detail::cut(key) + "' (known: " + detail::join(known, ", ") + ")";
+    return InputRefusal{.kind = RefusalKind::unknown_key, .key = std::string(key), .value = value};
   }
+  const auto refusal = [&](RefusalKind kind) {
+    return InputRefusal{
+        .kind = kind, .key = std::string(key), .spec = spec, .value = value, .unit = spec->unit};
+  };
   switch (spec->kind) {
     case InputKind::choice:
-      return std::string(key) + " takes one of: " + std::string(spec->choices) + ", not a number";
+      return refusal(RefusalKind::number_for_choice);
     case InputKind::whole_number:
       if (value != std::floor(value)) {
-        return std::string(key) + " = " + detail::shortest_number(value) +
-               " must be a whole number";
+        return refusal(RefusalKind::not_whole);
       }
       if (std::abs(value) > 1e9) {  // beyond what the field holds: the row's range says why
-        return refusal_sentence(*spec, value, spec->valid, spec->why);
+        return range_refusal(*spec, value, spec->valid, spec->why);
       }
       break;
     case InputKind::stiffness_K:  // stored as c: a c out of range is named by validate()
@@ -736,6 +848,33 @@ std::optional<std::string> set_input(Parameters& p, std::string_view key, double
   return std::nullopt;
 }
 
+std::vector<InputRefusal> input_refusals(const Parameters& p) {
+  std::vector<InputRefusal> refusals;
+  for (const InputSpec& spec : input_table()) {
+    if (spec.kind != InputKind::number && spec.kind != InputKind::whole_number) {
+      continue;
+    }
+    const double value = *spec.value(p);
+    if (!spec.valid.contains(value)) {
+      refusals.push_back(range_refusal(spec, value, spec.valid, spec.why));
+      continue;
+    }
+    // Asked only of a value in its own range: the bound follows from other inputs.
+    const std::optional<double> upper = spec.upper_bound ? spec.upper_bound(p) : std::nullopt;
+    if (upper && !(value < *upper)) {
+      refusals.push_back({.kind = RefusalKind::not_below_bound,
+                          .key = std::string(spec.key),
+                          .spec = &spec,
+                          .value = value,
+                          .bound = *upper,
+                          .unit = spec.unit,
+                          .why = spec.upper_bound_why,
+                          .bound_name = spec.upper_bound_name});
+    }
+  }
+  return refusals;
+}
+
 std::optional<double> numeric_setting(const Parameters& p, std::string_view key) {
   const InputSpec* spec = find_input(key);
   if (spec == nullptr || spec->kind == InputKind::whole_number) {
@@ -744,41 +883,54 @@ std::optional<double> numeric_setting(const Parameters& p, std::string_view key)
   return spec->value(p);
 }
 
-std::optional<std::string> apply_setting(Parameters& p, std::string_view key,
-                                         std::string_view value) {
+std::optional<InputRefusal> assign_text(Parameters& p, std::string_view key,
+                                        std::string_view value) {
   const InputSpec* spec = find_input(key);
-  if (spec != nullptr && spec->kind == InputKind::choice) {
+  if (spec == nullptr) {
+    return InputRefusal{
+        .kind = RefusalKind::unknown_key, .key = std::string(key), .typed = std::string(value)};
+  }
+  if (spec->kind == InputKind::choice) {
     if (spec->set_choice(p, value)) {
       return std::nullopt;
     }
-    return std::string(key) + " = '" + detail::cut(value) +
-           "' is not one of: " + std::string(spec->choices);
+    return text_refusal(RefusalKind::not_a_choice, *spec, value);
   }
-  if (spec == nullptr) {
-    return set_input(p, key, 0.0);  // the unknown-key sentence
+  std::variant<double, InputRefusal> read = spec->kind == InputKind::whole_number
+                                                ? read_whole_number(*spec, value)
+                                                : read_quantity(*spec, value);
+  if (InputRefusal* refusal = std::get_if<InputRefusal>(&read)) {
+    return std::move(*refusal);
   }
-  const std::optional<double> number =
-      spec->kind == InputKind::whole_number ? parse_number(value) : parse_quantity(*spec, value);
-  if (!number) {
-    double ignored = 0.0;
-    const auto [ptr, ec] = detail::read_double(value.data(), value.data() + value.size(), ignored);
-    if (ec == std::errc::result_out_of_range && ptr == value.data() + value.size()) {
-      return std::string(key) + " = '" + detail::cut(value) +
-             "' is beyond the range of a double (magnitudes 2.2e-308 to 1.8e308)";
-    }
-    const std::string problem = spec->kind == InputKind::whole_number
-                                    ? std::string(" is not a number")
-                                    : quantity_problem(*spec, value).value_or(" is not a number");
-    return std::string(key) + " = '" + detail::cut(value) + "'" + problem;
+  return assign_number(p, key, std::get<double>(read));
+}
+
+std::optional<InputRefusal> assign(Parameters& p, const Assignment& assignment) {
+  if (const double* number = std::get_if<double>(&assignment.value)) {
+    return assign_number(p, assignment.key, *number);
   }
-  return set_input(p, key, *number);
+  return assign_text(p, assignment.key, std::get<std::string>(assignment.value));
+}
+
+namespace {
+
+std::optional<std::string> sentence_of(const std::optional<InputRefusal>& refusal) {
+  return refusal ? std::optional(refusal_sentence(*refusal)) : std::nullopt;
+}
+
+}  // namespace
+
+std::optional<std::string> set_input(Parameters& p, std::string_view key, double value) {
+  return sentence_of(assign_number(p, key, value));
+}
+
+std::optional<std::string> apply_setting(Parameters& p, std::string_view key,
+                                         std::string_view value) {
+  return sentence_of(assign_text(p, key, value));
 }
 
 std::optional<std::string> apply_assignment(Parameters& p, const Assignment& assignment) {
-  if (const double* number = std::get_if<double>(&assignment.value)) {
-    return set_input(p, assignment.key, *number);
-  }
-  return apply_setting(p, assignment.key, std::get<std::string>(assignment.value));
+  return sentence_of(assign(p, assignment));
 }
 
 std::vector<std::string> repeated_keys(const std::vector<std::string>& assignments,

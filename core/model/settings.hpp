@@ -122,25 +122,83 @@ const InputSpec* find_input_by_field(std::string_view field);
 // "t (mm)" or "nu": a key with its unit, for axis labels and tables.
 std::string input_label(const InputSpec& spec);
 
-// Sets one input from its text. Returns an error sentence for an unknown key or a value that is
-// not a number (or not one of the allowed names); then set_input() stores it. `K` sets c so
-// that c / (1 - nu²) = K at the Poisson ratio in force: apply it after `nu`.
+// Why a value given for an input is refused, as data. Reading and storing a value yield one of
+// these rather than a sentence; the sentence is built from it by refusal_sentence() (or, for a
+// sentence that quotes the value in its own words, refusal_reason()) where it is shown.
+enum class RefusalKind {
+  unknown_key,        // no row has `key`
+  not_a_choice,       // a choice given a name it does not take
+  number_for_choice,  // a choice given a number
+  not_a_number,       // no number, arithmetic or number with one of the row's units
+  nested_too_deeply,  // arithmetic nested more than kMaxArithmeticDepth parentheses deep
+  unknown_unit,       // a number followed by a name that is none of the row's units
+  beyond_double,      // a number whose magnitude a double cannot hold (1e999, 1e-999)
+  not_whole,          // a whole-number row given a fraction
+  out_of_range,       // outside `range`, past `bound`
+  not_below_bound,    // at or above the bound that follows from other inputs (d below L/2)
+};
+
+struct InputRefusal {
+  RefusalKind kind = RefusalKind::not_a_number;
+  std::string key{};                // as given
+  const InputSpec* spec = nullptr;  // its row; nullptr for unknown_key
+  std::string typed{};              // the text as typed; empty for a value given as a number
+  // not_whole, out_of_range, not_below_bound: the value and the end it crossed, in `unit`.
+  double value = 0.0;
+  double bound = 0.0;
+  std::string_view unit{};        // the row's own (stored) unit; empty when dimensionless
+  InputInterval range{};          // out_of_range: the interval refused from, in `unit`
+  std::string_view why{};         // out_of_range, not_below_bound: why values end there
+  std::string_view bound_name{};  // not_below_bound: "L/2"
+  // unknown_unit: the unit as typed ("M") and a unit of the row it differs from only in case.
+  std::string typed_unit{};
+  std::string_view meant_unit{};
+};
+
+// The sentence for a refusal, as the command line, a link's note and validate() say it:
+// "h = '2.4M': 'M' is not a unit of length (known: mm, cm, m); did you mean 'm'?", "weight per
+// area w = −5 g/m² must be between 0.1 and 1,000,000 g/m²: WHY".
+std::string refusal_sentence(const InputRefusal& refusal);
+// For a refusal of typed text (not_a_choice, not_a_number, nested_too_deeply, unknown_unit,
+// beyond_double): the rest of a sentence that has just quoted the text, ": 'M' is not a unit of
+// length (known: mm, cm, m); did you mean 'm'?", " is not a number".
+std::string refusal_reason(const InputRefusal& refusal);
+// The refusal of `value` (stored unit) of `spec` for lying outside `range`, for `why`.
+InputRefusal range_refusal(const InputSpec& spec, double value, const InputInterval& range,
+                           std::string_view why);
+// "t, E, w, ...": every key, as a sentence about an unknown key lists them.
+std::string known_keys();
+
+// Sets one input from its text: a number (or arithmetic, with an optional unit) or a choice's
+// name; then assign_number() stores it. `K` sets c so that c / (1 - nu²) = K at the Poisson
+// ratio in force: apply it after `nu`. A refusal for an unknown key, or a value that cannot be
+// read; a value out of range is stored, for validate() to name.
+std::optional<InputRefusal> assign_text(Parameters& p, std::string_view key,
+                                        std::string_view value);
+// The one way a value reaches a field of Parameters, for text (assign_text), sliders, sweeps,
+// scripts and map clicks alike. Stores the value and leaves range checks to validate(), so that a
+// refused value is kept as typed with its reason; a refusal only for an unknown key, a choice,
+// or a whole number given a fraction (or beyond what its field holds). K sets c at the Poisson
+// ratio in force.
+std::optional<InputRefusal> assign_number(Parameters& p, std::string_view key, double value);
+
+// Every input of `p` out of its row's range, or at or above the bound that follows from the
+// other inputs (d below L/2), in the table's order: what validate() names for the rows.
+std::vector<InputRefusal> input_refusals(const Parameters& p);
+
+// assign_text and assign_number with the refusal as its sentence.
 std::optional<std::string> apply_setting(Parameters& p, std::string_view key,
                                          std::string_view value);
-
-// The one way a value reaches a field of Parameters, for text (apply_setting), sliders, sweeps,
-// scripts and map clicks alike. Stores the value and leaves range checks to validate(), so that a
-// refused value is kept as typed with its reason; an error sentence only for an unknown key, a
-// choice, or a whole number given a fraction. K sets c at the Poisson ratio in force.
 std::optional<std::string> set_input(Parameters& p, std::string_view key, double value);
 std::optional<double> numeric_setting(const Parameters& p, std::string_view key);
 
-// One input set by its key: to a number (set_input) or to text, a choice's name or a number with
-// a unit (apply_setting).
+// One input set by its key: to a number (assign_number) or to text, a choice's name or a number
+// with a unit (assign_text).
 struct Assignment {
   std::string key;
   std::variant<double, std::string> value;
 };
+std::optional<InputRefusal> assign(Parameters& p, const Assignment& assignment);
 std::optional<std::string> apply_assignment(Parameters& p, const Assignment& assignment);
 
 // Every key that more than one of the "KEY=VALUE" assignments sets, as a sentence naming them
@@ -182,23 +240,17 @@ std::string input_title(const InputSpec& spec);
 // A stored value as a sentence for people shows it, in the shown unit: "−5 g/m²", "0.25 mm",
 // "1,000,000 g/m²" (detail::message_number).
 std::string shown_quantity(const InputSpec& spec, double stored);
-// Why `value` (stored unit) is refused, in the slider's words and unit: "weight per area w =
-// −5 g/m² must be between 0.1 and 1,000,000 g/m²: WHY". `range` is in the stored unit.
-std::string refusal_sentence(const InputSpec& spec, double value, const InputInterval& range,
-                             std::string_view why);
-
 // "80 g/m2", "80 g/m²", "80gsm", "2.4 oz/yd2", "1.5e-6 N/mm2", "2*153 g/m2", "(80 + 120)/2": a
 // number or simple arithmetic of numbers (+ - * / and parentheses), optionally followed by
 // one of input_units(spec) (spaces and ² vs 2 do not matter; case does, see InputUnit), as the
 // value in the stored unit. A bare number is in `bare_unit` (a symbol from input_units, or empty
-// for the stored unit). nullopt when the number or the unit cannot be read.
+// for the stored unit). Else why it cannot be read (not_a_number, nested_too_deeply, unknown_unit,
+// beyond_double): the text is read once, and the refusal says what it found.
+std::variant<double, InputRefusal> read_quantity(const InputSpec& spec, std::string_view text,
+                                                 std::string_view bare_unit = {});
+// read_quantity's value; nullopt when the number or the unit cannot be read.
 std::optional<double> parse_quantity(const InputSpec& spec, std::string_view text,
                                      std::string_view bare_unit = {});
-// Why parse_quantity cannot read `text`, as the rest of a sentence that has just quoted it:
-// ": 'M' is not a unit of length (known: mm, cm, m); did you mean 'm'?", " is nested too
-// deeply: ...", " is not a number". nullopt when it can be read.
-std::optional<std::string> quantity_problem(const InputSpec& spec, std::string_view text,
-                                            std::string_view bare_unit = {});
 // When `text` is a bare number (no unit) for an input that the explorer shows in another unit
 // than it stores: what a bare number means here and how to write it in the shown unit ("a bare
 // number for w is read in N/mm²; for 150 g/m² write w=150gsm"). nullopt otherwise.

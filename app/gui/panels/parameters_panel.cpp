@@ -235,8 +235,11 @@ std::optional<double> ParametersPanel::read_typed(UiStatus& status, const InputS
     return std::nullopt;
   }
   const std::string key(spec.key);
-  if (const std::optional<double> typed = parse_quantity(spec, text, shown_unit(spec).symbol)) {
-    return typed;
+  const std::variant<double, InputRefusal> read =
+      read_quantity(spec, text, shown_unit(spec).symbol);
+  const InputRefusal* refusal = std::get_if<InputRefusal>(&read);
+  if (refusal == nullptr) {
+    return std::get<double>(read);
   }
   // Said, not dropped: the slider going back to its value with no word looks like a fault.
   // Kept as typed, as a refused number is, so that the person sees what was not understood.
@@ -246,11 +249,12 @@ std::optional<double> ParametersPanel::read_typed(UiStatus& status, const InputS
   }
   const std::string quoted = input_title(spec) + ": \"" + detail::cut(text) + "\"";
   const std::string value_now = shown_text(spec, value);
-  const std::optional<std::string> problem = quantity_problem(spec, text, shown_unit(spec).symbol);
-  // A unit or nesting that is named is said as it is; anything else is no number at all.
-  const bool named = problem && !problem->starts_with(" is not a number");
+  // A unit, nesting or magnitude that is named is said as it is; anything else is no number at
+  // all.
+  const bool named = refusal->kind != RefusalKind::not_a_number;
+  const std::string problem = refusal_reason(*refusal);
   const std::string reason =
-      named ? quoted + *problem + (problem->ends_with('?') ? " " : ". ") + "The value stays " +
+      named ? quoted + problem + (problem.ends_with('?') ? " " : ". ") + "The value stays " +
                   value_now + "."
             : quoted + " is not a number" + (units.empty() ? "" : " with a unit (" + units + ")") +
                   ", nor arithmetic such as 2*153; the value stays " + value_now + ".";
