@@ -51,18 +51,27 @@ class CliPartsTest : public foldlab::testing::TempDirTest {
   CliPartsTest() : TempDirTest("foldlab_cli_parts_") {}
 };
 
+// Table 1's h = 1400 mm preset with h = 900 typed is Table 1's first row, solved by the paper's
+// method: the paper printed n = 5 and Q = 1.31 for it.
 TEST_F(CliPartsTest, SolveRunPrintsNothingAndItsPrintersShowTheSolution) {
   solve_command::Options options;
+  options.inputs.preset_path = (kPresetsDir / "paper-table1-h1400.json").string();
   options.inputs.assignments = {"h=900"};
   solve_command::Result result;
   EXPECT_EQ(printed_by([&] { result = solve_command::run(options); }), "");
   EXPECT_EQ(result.preset.parameters.hanging.height_mm, 900.0);  // as typed
   const nlohmann::json j = solve_command::print_json(result);
-  EXPECT_EQ(j.at("n"), result.solution.n);
+  EXPECT_EQ(j.at("n"), 5);
+  EXPECT_NEAR(j.at("Q").get<double>(), 1.31, 0.005);
   EXPECT_FALSE(j.contains("stats"));  // not asked for
   std::ostringstream text;
   solve_command::print_text(result, text);
-  EXPECT_NE(text.str().find(std::to_string(result.solution.n)), std::string::npos);
+  // "  number of wrinkles                 n                   5"
+  const std::string printed = text.str();
+  const std::size_t at = printed.find("number of wrinkles");
+  ASSERT_NE(at, std::string::npos) << printed;
+  const std::string line = printed.substr(at, printed.find('\n', at) - at);
+  EXPECT_TRUE(line.ends_with(" 5")) << line;
 }
 
 TEST_F(CliPartsTest, ExportRunWritesNoFileTheGlueWritesThem) {
@@ -106,8 +115,18 @@ TEST_F(CliPartsTest, CompareGroupsRowsByTheTableInEachPresetsName) {
   EXPECT_EQ(result.accuracy_by_table[0].rows, 2);
   EXPECT_EQ(result.accuracy_by_table[1].group, "Table 2");
   EXPECT_EQ(result.accuracy_by_table[1].rows, 1);
+  // Each row against the n the paper printed (Table 1: 5 at h = 900 mm and 7 at h = 1400 mm;
+  // Table 2: 4 at w = 10e-7 N/mm²) and the n both methods give (docs/calibration.md: 5, 3, 8).
+  const int printed_n[] = {5, 4, 7};
+  const int model_n[] = {5, 3, 8};
   for (const auto& method_rows : result.rows) {
-    EXPECT_EQ(method_rows.size(), 3u);
+    ASSERT_EQ(method_rows.size(), 3u);
+    for (std::size_t i = 0; i < 3; ++i) {
+      SCOPED_TRACE(result.names[i]);
+      EXPECT_EQ(method_rows[i].published.n, printed_n[i]);
+      EXPECT_EQ(method_rows[i].solution.n, model_n[i]);
+      EXPECT_EQ(method_rows[i].n_difference, model_n[i] - printed_n[i]);
+    }
   }
 }
 
@@ -171,7 +190,9 @@ TEST_F(CliPartsTest, BenchRunWritesNoFileTheGlueWritesThem) {
   bench_command::Result result;
   EXPECT_EQ(printed_by([&] { result = bench_command::run(options); }), "");
   EXPECT_FALSE(fs::exists(options.csv_path));
-  EXPECT_EQ(result.random_cases, 2);
+  // The two random fabrics and the six printed rows of Tables 1-2 (three each).
+  EXPECT_EQ(result.cases, 8u);
+  EXPECT_EQ(result.table_rows, 6);
   EXPECT_TRUE(result.pipeline.empty());
   bench_command::write_files(options, result);
   EXPECT_TRUE(fs::exists(options.csv_path));
@@ -185,7 +206,16 @@ TEST_F(CliPartsTest, StressRunReadsTheSeedAsTyped) {
   foldlab::StressReport report;
   EXPECT_EQ(printed_by([&] { report = stress_command::run(options); }), "");
   EXPECT_EQ(report.seed, 18446744073709551615ull);
-  EXPECT_EQ(report.samples, 10);
+  // Every sample solved once by each method, and a grid built for sample 0 only (one in 50) by
+  // both.
+  for (const foldlab::MethodStress* method : {&report.paper, &report.exact}) {
+    int solved = 0;
+    for (const auto& [regime, count] : method->regimes) {
+      solved += count;
+    }
+    EXPECT_EQ(solved, 10);
+  }
+  EXPECT_EQ(report.grids, 2);
   options.seed = "-1";
   EXPECT_THROW(stress_command::run(options), foldlab::app::InputError);
 }

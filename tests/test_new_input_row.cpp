@@ -11,6 +11,7 @@
 #include <cmath>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <utility>
 
@@ -151,8 +152,11 @@ TEST_F(NewInputRowInTheExplorer, HasASliderThatAPlayedScriptDragsAndExpects) {
     frame();
   }
   EXPECT_EQ(player.exit_status(), 0) << player.failure();
-  EXPECT_DOUBLE_EQ(explorer->edited().fabric.thickness_mm * 1000.0,
-                   *numeric_setting(explorer->edited(), "t_um"));
+  // A value set through the new row is the cloth's thickness in the old row's unit: 300 µm is
+  // 0.3 mm.
+  ASSERT_EQ(explorer->set_input("t_um", 300.0), std::nullopt);
+  EXPECT_DOUBLE_EQ(explorer->edited().fabric.thickness_mm, 0.3);
+  EXPECT_DOUBLE_EQ(*numeric_setting(explorer->edited(), "t"), 0.3);
   explorer.reset();
   ImGui::DestroyContext(context);
 }
