@@ -130,21 +130,21 @@ namespace {
 // n and z_max join the curve wherever there are folds to count; Q only where there are two or
 // more: a single fold's "ratio" is a_0/a_1, ~100 at the paper's initial guess, no progression.
 bool on_curve(const SweepPoint& p) {
-  return p.valid && (p.regime == Regime::wrinkled || p.regime == Regime::n_cycle);
+  return p.valid && regime_info(p.regime).has_folds;
 }
 bool Q_on_curve(const SweepPoint& p) {
   return on_curve(p) && p.n >= 2;
 }
 
 bool plain(const SweepPoint& p) {
-  return p.valid && p.regime == Regime::wrinkled && p.n >= 2;
+  return p.valid && regime_info(p.regime).unremarkable && p.n >= 2;
 }
 
 const char* band_name(const SweepPoint& p) {
   if (!p.valid) {
     return "refused";
   }
-  if (p.regime == Regime::wrinkled) {
+  if (regime_info(p.regime).unremarkable) {
     return p.n < 2 ? "one fold" : "";
   }
   return regime_info(p.regime).label.data();

@@ -233,7 +233,8 @@ ReferenceSolution reference_solution(const Parameters& p) {
   }
   const Real A = ref.sag_mm;
   Real theta = 0.0L;
-  if (exact.regime == Regime::negligible_slack) {
+  const RegimeInfo& regime = regime_info(exact.regime);
+  if (!regime.equations_hold) {
     ref.an_mm = A;  // the solver's flat-fold answer: a_n = A, z = 0
   } else {
     theta = reference_theta(a0, h, A, ref.n);
@@ -244,10 +245,10 @@ ReferenceSolution reference_solution(const Parameters& p) {
   const Real edge =
       l * edge_quadrature().ratio(kPiL * std::hypot(ref.an_mm, ref.z_max_mm) / l).first;
   ref.residual_length = std::abs(edge / L - 1.0L);
-  if (exact.regime != Regime::negligible_slack) {
+  if (regime.equations_hold) {
     ref.residual_height = std::abs(reference_fibre(a0, ref.an_mm, ref.n, ref.z_max_mm) / h - 1.0L);
   }
-  if (exact.regime == Regime::wrinkled && exact.Q7) {
+  if (regime.n_fixed_point && exact.Q7) {
     ref.n_is_fixed_point = reference_count(a0 / ref.an_mm, *exact.Q7,
                                            p.model.int_rounding == IntRounding::nearest) == ref.n;
   }

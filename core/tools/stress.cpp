@@ -139,9 +139,7 @@ void run_range(const StressOptions& options, int first, int last, StressReport& 
       if (m == Method::exact && s.regime == Regime::n_cycle) {
         ++report.n_cycles;
       }
-      const bool equations_hold =
-          s.regime == Regime::wrinkled || s.regime == Regime::n_cycle || s.regime == Regime::stiff;
-      if (equations_hold) {
+      if (regime_info(s.regime).equations_hold) {
         stats.max_residual_length =
             std::max(stats.max_residual_length, std::abs(s.residual_length));
         stats.max_residual_height =
