@@ -46,6 +46,16 @@ bool natural_log_scale(const std::string& key) {
   return spec != nullptr && spec->scale == InputScale::logarithmic;
 }
 
+std::string sweepable_keys_on_scale(bool logarithmic) {
+  std::vector<std::string> keys;
+  for (const std::string& key : sweepable_keys()) {
+    if (natural_log_scale(key) == logarithmic) {
+      keys.push_back(key);
+    }
+  }
+  return detail::join(keys, ", ");
+}
+
 // The sweepable keys only; the key -> field table itself lives in settings.cpp.
 bool set_number(Parameters& p, const std::string& key, double value) {
   const std::vector<std::string>& keys = sweepable_keys();

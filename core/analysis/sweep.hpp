@@ -25,6 +25,8 @@ struct SweepAxis {
 // The keys a sweep or a map can run over, and whether their natural scale is logarithmic.
 const std::vector<std::string>& sweepable_keys();
 bool natural_log_scale(const std::string& key);
+// The sweepable keys whose natural scale is logarithmic ("t, E, w, K"), or linear: for help texts.
+std::string sweepable_keys_on_scale(bool logarithmic);
 
 // Checks the axis: a known numeric key, finite ends, steps in [2, 100000], positive ends on a log
 // scale. Returns the problem as a sentence, or nullopt.
