@@ -712,15 +712,10 @@ int calibration_fold_cap(std::optional<int> observed_n) {
 }
 
 RowPrediction prediction_of(const Solution& s, int fold_cap) {
-  RowPrediction p;
   if (s.n > fold_cap || s.n_capped) {
-    p.beyond_cap = true;
-    return p;
+    return {FoldSummary{}, true};
   }
-  p.n = s.n;
-  p.z_max_mm = s.z_max_mm;
-  p.Q = s.Q;
-  return p;
+  return {fold_summary(s), false};
 }
 
 bool better(const CalibrationScore& a, const CalibrationScore& b) {

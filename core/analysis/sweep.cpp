@@ -124,13 +124,8 @@ std::vector<SweepPoint> sweep(const Parameters& base, const SweepAxis& axis) {
     if (!validate(p).empty()) {
       continue;
     }
-    const Solution s = solve(p);
+    static_cast<FoldSummary&>(point) = fold_summary(solve(p));
     point.valid = true;
-    point.n = s.n;
-    point.Q = s.Q;
-    point.z_max_mm = s.z_max_mm;
-    point.regime = s.regime;
-    point.n_capped = s.n_capped;
   }
   return points;
 }
@@ -220,12 +215,7 @@ void map_rows(const Parameters& base, const SweepAxis& x, const SweepAxis& y, in
       if (!validate(p).empty()) {
         continue;
       }
-      const Solution s = solve(p);
-      cell.valid = true;
-      cell.n = s.n;
-      cell.z_max_mm = static_cast<float>(s.z_max_mm);
-      cell.regime = s.regime;
-      cell.n_capped = s.n_capped;
+      cell = MapCell::solved(fold_summary(solve(p)));
     }
   }
 }

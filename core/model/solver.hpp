@@ -120,6 +120,17 @@ struct Solution {
 // Precondition: validate(p) is empty. Never throws for valid input.
 Solution solve(const Parameters& p);
 
+// What a sweep's point, a regime map's cell and a calibration's prediction keep of a solution:
+// the count and the folds' measures, without the amplitudes.
+struct FoldSummary {
+  int n = 0;
+  double Q = 1.0;
+  double z_max_mm = 0.0;
+  Regime regime = Regime::no_slack;
+  bool n_capped = false;  // eq. 10 asked for more than kMaxWrinkles folds: n is that cap
+};
+FoldSummary fold_summary(const Solution& s);
+
 // One iterate of a method, so that a teacher (or the CLI) can follow the iteration step by step.
 struct Iterate {
   int n = 0;                  // paper: eq. 10 at the a_n this iterate starts from; exact: n visited
