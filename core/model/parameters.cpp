@@ -1,8 +1,7 @@
 #include "core/model/parameters.hpp"
 
 #include <cmath>
-#include <initializer_list>
-
+#include "core/model/named_enum.hpp"
 #include "core/model/settings.hpp"
 #include "core/model/text_format.hpp"
 
@@ -14,17 +13,6 @@ void check_range(std::vector<ValidationIssue>& issues, const InputSpec& spec, do
     issues.push_back(
         {std::string(spec.field), value, refusal_sentence(spec, value, spec.valid, spec.why)});
   }
-}
-
-template <class Enum>
-bool parse_named(std::string_view s, Enum& out, std::initializer_list<Enum> values) {
-  for (Enum v : values) {
-    if (s == to_string(v)) {
-      out = v;
-      return true;
-    }
-  }
-  return false;
 }
 
 }  // namespace
