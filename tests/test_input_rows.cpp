@@ -53,6 +53,20 @@ TEST(InputRows, TheClothInputsAreThePapersSixInTheirOrder) {
   EXPECT_EQ(keys, kPapersClothInputs);
 }
 
+// A cloth input is one a person sets: it has a slider in the panel's list, the stress test draws
+// it (so that its report names it) and the benchmark's realistic cloths draw it.
+TEST(InputRows, EveryClothInputHasASliderAStressRangeAndARealisticRange) {
+  for (const InputSpec* spec : cloth_inputs()) {
+    EXPECT_EQ(spec->place, InputPlace::list) << spec->key;
+    EXPECT_FALSE(spec->expert) << spec->key << ": a beginner sees the cloth";
+    EXPECT_TRUE(spec->sampled) << spec->key;
+    EXPECT_GT(spec->realistic_lo, 0.0) << spec->key;
+    EXPECT_TRUE(spec->realistic_hi > spec->realistic_lo ||
+                (spec->upper_bound != nullptr && spec->realistic_part_of_upper_bound > 0.0))
+        << spec->key;
+  }
+}
+
 // The report names every input the test draws, the six of the cloth and ν, with its value in
 // full.
 TEST(InputRows, TheStressReportNamesEveryClothInputOfACase) {
