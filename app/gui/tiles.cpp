@@ -5,9 +5,8 @@
 #include <initializer_list>
 
 namespace foldlab::gui {
-namespace {
 
-// Where an edge goes when the user has not dragged it, from the span it divides.
+namespace tile_sizes {
 
 // 25 font sizes hold a slider's label, the slider and its unit; 40 keep the sliders short enough
 // that a pixel of drag stays a small step on a wide screen. At a large UI scale the sliders
@@ -30,26 +29,9 @@ float half(float span, float /*font_px*/) {
   return span / 2.0f;
 }
 
-struct Split {
-  const char* key;    // in the session
-  bool side_by_side;  // a vertical edge; otherwise the first part is above the second
-  float (*automatic_px)(float span_px, float font_px);
-  // Each side: a panel's key (its tile) or another edge's key.
-  std::string_view first, second;
-};
+}  // namespace tile_sizes
 
-constexpr std::string_view kTiles[] = {"parameters", "presets", "fold_plot",
-                                       "cloth",      "results", "analysis"};
-// The tree, root first: the parameters over the presets in a column on the left; right of it the
-// 2D plot beside the 3D view, over the results beside the analysis.
-constexpr Split kSplits[] = {
-    {"layout_left_column", true, parameters_column_px, "layout_parameters", "layout_views"},
-    {"layout_parameters", false, parameters_height_px, "parameters", "presets"},
-    {"layout_views", false, views_height_px, "layout_fold_plot", "layout_results"},
-    {"layout_fold_plot", true, half, "fold_plot", "cloth"},
-    {"layout_results", true, half, "results", "analysis"},
-};
-static_assert(std::size(kTiles) == kTileCount && std::size(kSplits) == kSplitCount);
+namespace {
 
 // One side of an edge, by its index: a panel's tile or another edge.
 struct Part {
@@ -117,7 +99,7 @@ float least_extent(Part part, bool along_x, const Least& least) {
   if (part.tile) {
     return along_x ? least.width_px : least.height_px;
   }
-  const Split& s = kSplits[part.index];
+  const TileSplit& s = kSplits[part.index];
   const float a = least_extent(part_named(s.first), along_x, least);
   const float b = least_extent(part_named(s.second), along_x, least);
   return s.side_by_side == along_x ? a + b : std::max(a, b);
@@ -130,7 +112,7 @@ void lay_out(Part part, const PanelRect& rect, float font_px, const Least& least
     return;
   }
   out.splits[static_cast<std::size_t>(part.index)] = rect;
-  const Split& s = kSplits[part.index];
+  const TileSplit& s = kSplits[part.index];
   const float span = s.side_by_side ? rect.size.x : rect.size.y;
   const float dragged = splits.fraction[static_cast<std::size_t>(part.index)];
   const float chosen = dragged >= 0.0f ? dragged * span : s.automatic_px(span, font_px);
