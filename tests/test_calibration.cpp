@@ -68,7 +68,11 @@ Measurement row(double t, double E, double w, double h, double L, double d) {
 }
 
 RowPrediction predicted(int n, double z, double Q) {
-  return {n, z, Q, false};
+  RowPrediction p;
+  p.n = n;
+  p.z_max_mm = z;
+  p.Q = Q;
+  return p;
 }
 
 // The score the real solver gives at (K, p), row by row: what the search's tables must agree with.

@@ -47,6 +47,7 @@ const InputSpec kMicrometres{
     .typical_hi = 2000.0,
     .scale = InputScale::logarithmic,
     .format = "%.4g",
+    .place = InputPlace::list,
     .sampled = true,
     .access = {[](const Parameters& p) { return 1000.0 * p.fabric.thickness_mm; },
                [](Parameters& p, double um) { p.fabric.thickness_mm = um / 1000.0; }},

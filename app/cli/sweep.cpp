@@ -56,8 +56,10 @@ void declare(CLI::App& app, Options& options) {
   command->add_option("--to", options.axis.to, "last value, as --from")->required();
   command->add_option("--steps", options.axis.steps, "number of values (default 50)")
       ->transform(app::whole_number_in(2, kMaxSweepSteps));
-  command->add_flag("--log", options.axis.log, "logarithmic spacing (default for t, E, w, K)");
-  command->add_flag("--linear", options.axis.linear, "linear spacing (default for h, L, d, nu)");
+  command->add_flag("--log", options.axis.log,
+                    "logarithmic spacing (default for " + sweepable_keys_on_scale(true) + ")");
+  command->add_flag("--linear", options.axis.linear,
+                    "linear spacing (default for " + sweepable_keys_on_scale(false) + ")");
   command->add_flag("--csv", options.csv, "CSV instead of a table");
 }
 

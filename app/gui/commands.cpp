@@ -365,7 +365,9 @@ app::Command add_picture_command(CLI::App& app) {
   command->add_option("--to", options->to, "sweep: last value");
   command->add_option("--steps", options->steps, "sweep: number of values (default 200)")
       ->transform(app::whole_number_in(2, 10000));
-  command->add_flag("--log", options->log, "sweep: logarithmic spacing (default for t, E, w, K)");
+  command->add_flag(
+      "--log", options->log,
+      "sweep: logarithmic spacing (default for " + sweepable_keys_on_scale(true) + ")");
   command->add_flag("--linear", options->linear, "sweep: linear spacing");
   command
       ->add_option("--b-preset", options->b_preset,

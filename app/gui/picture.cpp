@@ -27,9 +27,6 @@
 namespace foldlab::gui {
 namespace {
 
-// The inputs a caption lists, in the Parameters panel's order.
-constexpr const char* kCaptionInputs[] = {"t", "E", "w", "h", "L", "d"};
-
 // An ImGui context for one picture, current while it lives: display size `size`, no input, its
 // own fonts at the picture's text size and the theme the background asks for. The window's
 // context is current again afterwards.
@@ -336,9 +333,9 @@ void add_caption(std::vector<std::string>& lines, const std::string& letter,
   }
   lines.push_back(headline(quantity_texts(solution, standing)));
   std::string inputs;
-  for (const char* key : kCaptionInputs) {
-    const InputSpec* spec = find_input(key);
-    const std::optional<double> value = spec ? spec->value(parameters) : std::nullopt;
+  // The cloth inputs, in the Parameters panel's order.
+  for (const InputSpec* spec : cloth_inputs()) {
+    const std::optional<double> value = spec->value(parameters);
     if (!value) {
       continue;
     }

@@ -2,11 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <initializer_list>
 
 namespace foldlab::gui {
-namespace {
 
-// Where an edge goes when the user has not dragged it, from the span it divides.
+namespace tile_sizes {
 
 // 25 font sizes hold a slider's label, the slider and its unit; 40 keep the sliders short enough
 // that a pixel of drag stays a small step on a wide screen. At a large UI scale the sliders
@@ -29,30 +29,62 @@ float half(float span, float /*font_px*/) {
   return span / 2.0f;
 }
 
-// One side of an edge: a panel's tile or another edge.
+}  // namespace tile_sizes
+
+namespace {
+
+// One side of an edge, by its index: a panel's tile or another edge.
 struct Part {
   bool tile;
   int index;
 };
-struct Split {
-  const char* key;    // in the session
-  bool side_by_side;  // a vertical edge; otherwise the first part is above the second
-  float (*automatic_px)(float span_px, float font_px);
-  Part first, second;
-};
 
-constexpr std::string_view kTiles[] = {"parameters", "presets", "fold_plot",
-                                       "cloth",      "results", "analysis"};
-// The tree, root first: the parameters over the presets in a column on the left; right of it the
-// 2D plot beside the 3D view, over the results beside the analysis.
-constexpr Split kSplits[] = {
-    {"layout_left_column", true, parameters_column_px, {false, 1}, {false, 2}},
-    {"layout_parameters", false, parameters_height_px, {true, 0}, {true, 1}},
-    {"layout_views", false, views_height_px, {false, 3}, {false, 4}},
-    {"layout_fold_plot", true, half, {true, 2}, {true, 3}},
-    {"layout_results", true, half, {true, 4}, {true, 5}},
-};
-static_assert(std::size(kTiles) == kTileCount && std::size(kSplits) == kSplitCount);
+// The part a name in kSplits means; index -1 for a name that is neither.
+constexpr Part part_named(std::string_view name) {
+  for (int i = 0; i < kTileCount; ++i) {
+    if (kTiles[i] == name) {
+      return {true, i};
+    }
+  }
+  for (int i = 0; i < kSplitCount; ++i) {
+    if (kSplits[i].key == name) {
+      return {false, i};
+    }
+  }
+  return {false, -1};
+}
+
+// Every tile and every edge but the root is a side of exactly one edge, which comes before it
+// (so that the tree has no loop), and every side names one of them.
+constexpr bool is_a_tree() {
+  int tiles_used[kTileCount] = {};
+  int splits_used[kSplitCount] = {};
+  for (int i = 0; i < kSplitCount; ++i) {
+    for (const std::string_view side : {kSplits[i].first, kSplits[i].second}) {
+      const Part part = part_named(side);
+      if (part.index < 0 || (!part.tile && part.index <= i)) {
+        return false;
+      }
+      if (part.tile) {
+        ++tiles_used[part.index];
+      } else {
+        ++splits_used[part.index];
+      }
+    }
+  }
+  for (int used : tiles_used) {
+    if (used != 1) {
+      return false;
+    }
+  }
+  for (int i = 1; i < kSplitCount; ++i) {
+    if (splits_used[i] != 1) {
+      return false;
+    }
+  }
+  return splits_used[0] == 0;
+}
+static_assert(is_a_tree());
 
 // The least a panel keeps either way of a dragged edge: its title and a few lines (a quarter of
 // the window at most, so that the bounds never cross).
@@ -67,9 +99,9 @@ float least_extent(Part part, bool along_x, const Least& least) {
   if (part.tile) {
     return along_x ? least.width_px : least.height_px;
   }
-  const Split& s = kSplits[part.index];
-  const float a = least_extent(s.first, along_x, least);
-  const float b = least_extent(s.second, along_x, least);
+  const TileSplit& s = kSplits[part.index];
+  const float a = least_extent(part_named(s.first), along_x, least);
+  const float b = least_extent(part_named(s.second), along_x, least);
   return s.side_by_side == along_x ? a + b : std::max(a, b);
 }
 
@@ -80,12 +112,12 @@ void lay_out(Part part, const PanelRect& rect, float font_px, const Least& least
     return;
   }
   out.splits[static_cast<std::size_t>(part.index)] = rect;
-  const Split& s = kSplits[part.index];
+  const TileSplit& s = kSplits[part.index];
   const float span = s.side_by_side ? rect.size.x : rect.size.y;
   const float dragged = splits.fraction[static_cast<std::size_t>(part.index)];
   const float chosen = dragged >= 0.0f ? dragged * span : s.automatic_px(span, font_px);
-  const float high = span - least_extent(s.second, s.side_by_side, least);
-  const float low = std::min(least_extent(s.first, s.side_by_side, least), high);
+  const float high = span - least_extent(part_named(s.second), s.side_by_side, least);
+  const float low = std::min(least_extent(part_named(s.first), s.side_by_side, least), high);
   const float first = std::floor(std::clamp(chosen, low, high));
   PanelRect a = rect;
   PanelRect b = rect;
@@ -98,18 +130,19 @@ void lay_out(Part part, const PanelRect& rect, float font_px, const Least& least
     b.pos.y = rect.pos.y + first;
     b.size.y = rect.size.y - first;
   }
-  lay_out(s.first, a, font_px, least, splits, out);
-  lay_out(s.second, b, font_px, least, splits, out);
+  lay_out(part_named(s.first), a, font_px, least, splits, out);
+  lay_out(part_named(s.second), b, font_px, least, splits, out);
 }
 
 // The edge that holds `part` as its first or second side.
 std::optional<std::pair<int, bool>> parent_of(Part part) {
   for (int i = 0; i < kSplitCount; ++i) {
-    const Split& s = kSplits[i];
-    if (s.first.tile == part.tile && s.first.index == part.index) {
+    const Part first = part_named(kSplits[i].first);
+    const Part second = part_named(kSplits[i].second);
+    if (first.tile == part.tile && first.index == part.index) {
       return std::pair{i, true};
     }
-    if (s.second.tile == part.tile && s.second.index == part.index) {
+    if (second.tile == part.tile && second.index == part.index) {
       return std::pair{i, false};
     }
   }

@@ -1,10 +1,11 @@
-// The automatic layout of the explorer's tiled panels: one tree, written once in tiles.cpp, of
+// The automatic layout of the explorer's tiled panels: one tree, written once here, of
 // edges that split the display below the menu bar in two, side by side or one over the other,
 // down to the panels, named by their keys. The display is tiled edge to edge with no gap; an
 // edge the user dragged is kept as a fraction of what it divides. Pure geometry: no ImGui state.
 #pragma once
 
 #include <array>
+#include <iterator>
 #include <optional>
 #include <string_view>
 
@@ -18,9 +19,40 @@ struct PanelRect {
   ImVec2 size{0, 0};
 };
 
-// How many panels and edges the tree has (checked against the tree in tiles.cpp).
-inline constexpr int kTileCount = 6;
-inline constexpr int kSplitCount = 5;
+// Where an edge goes when the user has not dragged it, from the span it divides and the font
+// size (tiles.cpp), so that the layout follows the UI scale.
+namespace tile_sizes {
+float parameters_column_px(float width, float font_px);
+float parameters_height_px(float height, float font_px);
+float views_height_px(float height, float font_px);
+float half(float span, float font_px);
+}  // namespace tile_sizes
+
+// An edge of the tree.
+struct TileSplit {
+  const char* key;    // in the session
+  bool side_by_side;  // a vertical edge; otherwise the first part is above the second
+  float (*automatic_px)(float span_px, float font_px);
+  // Each side: a panel's key (its tile) or another edge's key.
+  std::string_view first, second;
+};
+
+// The panels that have a tile, by their keys.
+inline constexpr std::string_view kTiles[] = {"parameters", "presets", "fold_plot",
+                                              "cloth",      "results", "analysis"};
+// The tree, root first: the parameters over the presets in a column on the left; right of it the
+// 2D plot beside the 3D view, over the results beside the analysis. tiles.cpp checks at compile
+// time that it is one tree over every tile.
+inline constexpr TileSplit kSplits[] = {
+    {"layout_left_column", true, tile_sizes::parameters_column_px, "layout_parameters",
+     "layout_views"},
+    {"layout_parameters", false, tile_sizes::parameters_height_px, "parameters", "presets"},
+    {"layout_views", false, tile_sizes::views_height_px, "layout_fold_plot", "layout_results"},
+    {"layout_fold_plot", true, tile_sizes::half, "fold_plot", "cloth"},
+    {"layout_results", true, tile_sizes::half, "results", "analysis"},
+};
+inline constexpr int kTileCount = static_cast<int>(std::size(kTiles));
+inline constexpr int kSplitCount = static_cast<int>(std::size(kSplits));
 
 // Whether the panel with this key has a tile, and its tile's index (in the tree's order).
 std::optional<int> tile_index(std::string_view panel_key);

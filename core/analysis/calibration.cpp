@@ -13,6 +13,7 @@
 #include "core/analysis/parallel_tasks.hpp"
 #include "core/io/export_budget.hpp"
 #include "core/model/equations.hpp"
+#include "core/model/named_enum.hpp"
 #include "core/model/settings.hpp"
 #include "core/model/text_format.hpp"
 
@@ -698,11 +699,7 @@ std::string_view to_string(FitConstants f) {
 }
 
 bool parse_fit_constants(std::string_view s, FitConstants& out) {
-  if (s == "K" || s == "K,p") {
-    out = s == "K" ? FitConstants::K : FitConstants::K_and_p;
-    return true;
-  }
-  return false;
+  return parse_named(s, out, {FitConstants::K, FitConstants::K_and_p});
 }
 
 int calibration_fold_cap(std::optional<int> observed_n) {
@@ -712,15 +709,10 @@ int calibration_fold_cap(std::optional<int> observed_n) {
 }
 
 RowPrediction prediction_of(const Solution& s, int fold_cap) {
-  RowPrediction p;
   if (s.n > fold_cap || s.n_capped) {
-    p.beyond_cap = true;
-    return p;
+    return {FoldSummary{}, true};
   }
-  p.n = s.n;
-  p.z_max_mm = s.z_max_mm;
-  p.Q = s.Q;
-  return p;
+  return {fold_summary(s), false};
 }
 
 bool better(const CalibrationScore& a, const CalibrationScore& b) {

@@ -31,10 +31,7 @@ inline constexpr int kCalibrationFoldCap = 100;
 // The cap for a row that observed `observed_n` folds: kCalibrationFoldCap, or 4 times the
 // observed n if more, never above the solver's kMaxWrinkles.
 int calibration_fold_cap(std::optional<int> observed_n);
-struct RowPrediction {
-  int n = 0;
-  double z_max_mm = 0.0;
-  double Q = 1.0;
+struct RowPrediction : FoldSummary {
   bool beyond_cap = false;  // more folds than the cap: n, z_max and Q are not computed
 };
 RowPrediction prediction_of(const Solution& s, int fold_cap);

@@ -46,6 +46,16 @@ bool natural_log_scale(const std::string& key) {
   return spec != nullptr && spec->scale == InputScale::logarithmic;
 }
 
+std::string sweepable_keys_on_scale(bool logarithmic) {
+  std::vector<std::string> keys;
+  for (const std::string& key : sweepable_keys()) {
+    if (natural_log_scale(key) == logarithmic) {
+      keys.push_back(key);
+    }
+  }
+  return detail::join(keys, ", ");
+}
+
 // The sweepable keys only; the key -> field table itself lives in settings.cpp.
 bool set_number(Parameters& p, const std::string& key, double value) {
   const std::vector<std::string>& keys = sweepable_keys();
@@ -114,13 +124,8 @@ std::vector<SweepPoint> sweep(const Parameters& base, const SweepAxis& axis) {
     if (!validate(p).empty()) {
       continue;
     }
-    const Solution s = solve(p);
+    static_cast<FoldSummary&>(point) = fold_summary(solve(p));
     point.valid = true;
-    point.n = s.n;
-    point.Q = s.Q;
-    point.z_max_mm = s.z_max_mm;
-    point.regime = s.regime;
-    point.n_capped = s.n_capped;
   }
   return points;
 }
@@ -130,21 +135,21 @@ namespace {
 // n and z_max join the curve wherever there are folds to count; Q only where there are two or
 // more: a single fold's "ratio" is a_0/a_1, ~100 at the paper's initial guess, no progression.
 bool on_curve(const SweepPoint& p) {
-  return p.valid && (p.regime == Regime::wrinkled || p.regime == Regime::n_cycle);
+  return p.valid && regime_info(p.regime).has_folds;
 }
 bool Q_on_curve(const SweepPoint& p) {
   return on_curve(p) && p.n >= 2;
 }
 
 bool plain(const SweepPoint& p) {
-  return p.valid && p.regime == Regime::wrinkled && p.n >= 2;
+  return p.valid && regime_info(p.regime).unremarkable && p.n >= 2;
 }
 
 const char* band_name(const SweepPoint& p) {
   if (!p.valid) {
     return "refused";
   }
-  if (p.regime == Regime::wrinkled) {
+  if (regime_info(p.regime).unremarkable) {
     return p.n < 2 ? "one fold" : "";
   }
   return regime_info(p.regime).label.data();
@@ -210,12 +215,7 @@ void map_rows(const Parameters& base, const SweepAxis& x, const SweepAxis& y, in
       if (!validate(p).empty()) {
         continue;
       }
-      const Solution s = solve(p);
-      cell.valid = true;
-      cell.n = s.n;
-      cell.z_max_mm = static_cast<float>(s.z_max_mm);
-      cell.regime = s.regime;
-      cell.n_capped = s.n_capped;
+      cell = MapCell::solved(fold_summary(solve(p)));
     }
   }
 }

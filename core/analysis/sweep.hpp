@@ -25,6 +25,8 @@ struct SweepAxis {
 // The keys a sweep or a map can run over, and whether their natural scale is logarithmic.
 const std::vector<std::string>& sweepable_keys();
 bool natural_log_scale(const std::string& key);
+// The sweepable keys whose natural scale is logarithmic ("t, E, w, K"), or linear: for help texts.
+std::string sweepable_keys_on_scale(bool logarithmic);
 
 // Checks the axis: a known numeric key, finite ends, steps in [2, 100000], positive ends on a log
 // scale. Returns the problem as a sentence, or nullopt.
@@ -34,14 +36,10 @@ std::optional<std::string> check_axis(const SweepAxis& axis);
 bool set_number(Parameters& p, const std::string& key, double value);
 double get_number(const Parameters& p, const std::string& key);
 
-struct SweepPoint {
+// The solution at one value of the axis (FoldSummary's defaults where nothing was solved).
+struct SweepPoint : FoldSummary {
   double value = 0.0;
   bool valid = false;  // false where the parameters do not validate (e.g. d >= L/2): no solve
-  int n = 0;
-  double Q = 1.0;
-  double z_max_mm = 0.0;
-  Regime regime = Regime::no_slack;
-  bool n_capped = false;  // eq. 10 asked for more than kMaxWrinkles folds: n is that cap
 };
 
 std::vector<SweepPoint> sweep(const Parameters& base, const SweepAxis& axis);
@@ -67,12 +65,17 @@ struct SweepCurves {
 };
 SweepCurves sweep_curves(std::span<const SweepPoint> points);
 
+// A FoldSummary narrowed for maps of many cells: no Q, z_max in single precision.
 struct MapCell {
   bool valid = false;
   int n = 0;
   float z_max_mm = 0.0f;
   Regime regime = Regime::no_slack;
   bool n_capped = false;  // n is kMaxWrinkles, the cap, not eq. 10's count
+
+  static MapCell solved(const FoldSummary& s) {
+    return {true, s.n, static_cast<float>(s.z_max_mm), s.regime, s.n_capped};
+  }
 };
 
 // Rows [row_begin, row_end) of a map over two axes, row-major (x fastest): out has x.steps cells

@@ -20,6 +20,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "core/model/named_enum.hpp"
 #include "core/model/settings.hpp"
 #include "core/model/shape.hpp"
 #include "core/model/text_format.hpp"
@@ -824,11 +825,7 @@ std::string_view to_string(MeasurementRole role) {
 }
 
 bool parse_measurement_role(std::string_view s, MeasurementRole& out) {
-  if (s == "fit" || s == "check") {
-    out = s == "fit" ? MeasurementRole::fit : MeasurementRole::check;
-    return true;
-  }
-  return false;
+  return parse_named(s, out, {MeasurementRole::fit, MeasurementRole::check});
 }
 
 }  // namespace foldlab

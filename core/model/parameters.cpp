@@ -1,26 +1,12 @@
 #include "core/model/parameters.hpp"
 
 #include <cmath>
-#include <initializer_list>
 
+#include "core/model/named_enum.hpp"
 #include "core/model/settings.hpp"
 #include "core/model/text_format.hpp"
 
 namespace foldlab {
-namespace {
-
-template <class Enum>
-bool parse_named(std::string_view s, Enum& out, std::initializer_list<Enum> values) {
-  for (Enum v : values) {
-    if (s == to_string(v)) {
-      out = v;
-      return true;
-    }
-  }
-  return false;
-}
-
-}  // namespace
 
 double stiffness_constant_K(const Parameters& p) {
   const double nu = p.fabric.poisson_ratio;

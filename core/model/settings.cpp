@@ -62,8 +62,12 @@ std::vector<InputSpec> build_table() {
        .scale = InputScale::logarithmic,
        .format = "%.3g",
        .required = true,
+       .cloth = true,
+       .place = InputPlace::list,
        .other_units = kLengthUnits,
        .sampled = true,
+       .realistic_lo = 0.05,
+       .realistic_hi = 1.5,
        .access = input_field<&Parameters::fabric, &Fabric::thickness_mm>()},
       {.key = "E",
        .name = "Young's modulus",
@@ -83,8 +87,12 @@ std::vector<InputSpec> build_table() {
        .scale = InputScale::logarithmic,
        .format = "%.4g",
        .required = true,
+       .cloth = true,
+       .place = InputPlace::list,
        .other_units = kModulusUnits,
        .sampled = true,
+       .realistic_lo = 5.0,
+       .realistic_hi = 2000.0,
        .access = input_field<&Parameters::fabric, &Fabric::youngs_modulus_MPa>()},
       {.key = "w",
        .name = "weight per area",
@@ -105,9 +113,13 @@ std::vector<InputSpec> build_table() {
        .scale = InputScale::logarithmic,
        .format = "%.3e",
        .required = true,
+       .cloth = true,
+       .place = InputPlace::list,
        .other_units = kWeightUnits,
        .shown_unit = 1,
        .sampled = true,
+       .realistic_lo = 3e-07,
+       .realistic_hi = 1e-05,
        .access = input_field<&Parameters::fabric, &Fabric::weight_N_per_mm2>()},
       {.key = "nu",
        .name = "Poisson's ratio",
@@ -122,6 +134,8 @@ std::vector<InputSpec> build_table() {
        .typical_hi = 0.49,
        .format = "%.3f",
        .expert = true,
+       .place = InputPlace::list,
+       .axis_over_typical = true,
        .sampled = true,
        .access = input_field<&Parameters::fabric, &Fabric::poisson_ratio>()},
       {.key = "h",
@@ -138,8 +152,12 @@ std::vector<InputSpec> build_table() {
        .typical_hi = 5000.0,
        .format = "%.0f",
        .required = true,
+       .cloth = true,
+       .place = InputPlace::list,
        .other_units = kLengthUnits,
        .sampled = true,
+       .realistic_lo = 300.0,
+       .realistic_hi = 3000.0,
        .access = input_field<&Parameters::hanging, &Hanging::height_mm>()},
       {.key = "L",
        .name = "width",
@@ -155,8 +173,12 @@ std::vector<InputSpec> build_table() {
        .typical_hi = 5000.0,
        .format = "%.0f",
        .required = true,
+       .cloth = true,
+       .place = InputPlace::list,
        .other_units = kLengthUnits,
        .sampled = true,
+       .realistic_lo = 300.0,
+       .realistic_hi = 3000.0,
        .access = input_field<&Parameters::hanging, &Hanging::length_mm>()},
       {.key = "d",
        .name = "support displacement",
@@ -179,8 +201,12 @@ std::vector<InputSpec> build_table() {
        .typical_hi = 2500.0,
        .format = "%.0f",
        .required = true,
+       .cloth = true,
+       .place = InputPlace::list,
        .other_units = kLengthUnits,
        .sampled = true,
+       .realistic_lo = 1.0,
+       .realistic_part_of_upper_bound = 0.6,
        .access = input_field<&Parameters::hanging, &Hanging::support_displacement_mm>()},
       {.key = "K",
        .name = "eq. 7 constant c/(1-ν²)",
@@ -192,6 +218,7 @@ std::vector<InputSpec> build_table() {
        .scale = InputScale::logarithmic,
        .format = "%.3g",
        .expert = true,
+       .place = InputPlace::list,
        .access = {stiffness_constant_K, set_stiffness_constant_K}},
       {.key = "c",
        .name = "load-condition constant",
@@ -205,6 +232,7 @@ std::vector<InputSpec> build_table() {
        .scale = InputScale::logarithmic,
        .format = "%.3g",
        .expert = true,
+       .place = InputPlace::readout,
        .access = input_field<&Parameters::model, &ModelSettings::load_constant_c>()},
       {.key = "p",
        .name = "eq. 7 exponent",
@@ -218,6 +246,7 @@ std::vector<InputSpec> build_table() {
        .typical_hi = 2.0,
        .format = "%.3f",
        .expert = true,
+       .place = InputPlace::after,
        .access = input_field<&Parameters::model, &ModelSettings::stress_exponent_p>()},
       {.key = "method",
        .name = "method",
@@ -225,6 +254,7 @@ std::vector<InputSpec> build_table() {
        .help = "paper | exact",
        .kind = InputKind::choice,
        .expert = true,
+       .place = InputPlace::list,
        .choices = "paper, exact",
        .set_choice = [](Parameters& p,
                         std::string_view v) { return set_named(p.model.method, v, parse_method); },
@@ -235,6 +265,7 @@ std::vector<InputSpec> build_table() {
        .help = "the law that counts the folds (c and p are its constants): see model.md",
        .kind = InputKind::choice,
        .expert = true,
+       .place = InputPlace::list,
        .choices = law_choices(),
        .set_choice =
            [](Parameters& p, std::string_view v) {
@@ -247,6 +278,7 @@ std::vector<InputSpec> build_table() {
        .help = "L-d | L-2d: how the span l follows from L and d",
        .kind = InputKind::choice,
        .expert = true,
+       .place = InputPlace::list,
        .choices = "L-d, L-2d",
        .set_choice =
            [](Parameters& p, std::string_view v) {
@@ -259,6 +291,7 @@ std::vector<InputSpec> build_table() {
        .help = "nearest | floor: Int[] of eq. 10",
        .kind = InputKind::choice,
        .expert = true,
+       .place = InputPlace::list,
        .choices = "nearest, floor",
        .set_choice =
            [](Parameters& p, std::string_view v) {
@@ -341,6 +374,7 @@ std::vector<InputSpec> build_table() {
        .typical_lo = 2.0,
        .typical_hi = 8.0,
        .format = "%.0f",
+       .place = InputPlace::shape,
        .access = input_field<&Parameters::shape, &Shape::supports>()},
       {.key = "incline_deg",
        .name = "incline",
@@ -354,6 +388,7 @@ std::vector<InputSpec> build_table() {
        .typical_lo = -45.0,
        .typical_hi = 45.0,
        .format = "%.1f",
+       .place = InputPlace::shape,
        .access = input_field<&Parameters::shape, &Shape::incline_deg>()},
   };
   return table;
@@ -413,6 +448,16 @@ const InputSpec* find_input(std::string_view key) {
     }
   }
   return nullptr;
+}
+
+std::vector<const InputSpec*> cloth_inputs() {
+  std::vector<const InputSpec*> out;
+  for (const InputSpec& spec : input_table()) {
+    if (spec.cloth) {
+      out.push_back(&spec);
+    }
+  }
+  return out;
 }
 
 const InputSpec* find_input_by_field(std::string_view field) {

@@ -25,6 +25,16 @@ enum class InputKind {
 
 enum class InputScale { linear, logarithmic };
 
+// Where the Parameters panel shows an input.
+enum class InputPlace {
+  none,     // typed only: presets, --set, sweeps
+  list,     // the panel's list: a slider the play button can animate (a beginner sees those that
+            // are not `expert`), or a choice's box among the expert's settings
+  after,    // a slider after the list, with the model's constants, not animated (p)
+  readout,  // a line after the list reading its value (c, which the K slider sets)
+  shape,    // with the shape's own rows, when the shape uses it (supports, incline)
+};
+
 // A unit a value may be typed in: `symbol` as shown, `per_unit` the stored value of one of it
 // (1 g/m² is 9.81e-9 N/mm²), `format` how a value in it is shown, and `plain`, when the symbol
 // needs more than letters, a name of it in letters alone, written in links ("gsm" for g/m²).
@@ -98,12 +108,28 @@ struct InputSpec {
   std::string_view format{};  // printf format of the value alone, e.g. "%.3g"
   bool required = false;      // must appear in a preset
   bool expert = false;        // a model setting rather than a property of the cloth
+  // One of the numbers that say which cloth hangs how, as the paper's experiments vary them (t,
+  // E, w, h, L, d): the strip over a presented view, a picture's caption, the benchmark's
+  // realistic cloths and the beginner's help list the cloth inputs, in table order.
+  bool cloth = false;
+  InputPlace place = InputPlace::none;
+  // A new sweep, map or animation axis over this input starts over its typical range rather than
+  // around the value in force (a decade either way on a log scale, 0.3 to 3 times on a linear
+  // one): for an input whose whole range is narrow (ν).
+  bool axis_over_typical = false;
   // Units besides `unit` a value may be typed in, and which of all (0: `unit`) the explorer shows.
   std::span<const InputUnit> other_units{};
   std::size_t shown_unit = 0;
   std::string_view choices{};  // for InputKind::choice: "paper, exact"
-  // The stress test draws this input over its typical range (below upper_bound).
+  // The stress test draws this input over its typical range (below upper_bound), and its report
+  // names it in each case.
   bool sampled = false;
+  // Where the benchmark's realistic cloths draw a cloth input, log-uniformly: from realistic_lo to
+  // realistic_hi or, for an input whose upper end follows from others, to this part of
+  // upper_bound (d: up to 0.6 of L/2).
+  double realistic_lo = 0.0;
+  double realistic_hi = 0.0;
+  double realistic_part_of_upper_bound = 0.0;
   InputAccess access{};  // for number, whole_number and stiffness_K
   bool (*set_choice)(Parameters&, std::string_view) = nullptr;  // for choice
   std::string_view (*choice)(const Parameters&) = nullptr;      // for choice
@@ -118,6 +144,9 @@ const std::vector<InputSpec>& input_table();
 const InputSpec* find_input(std::string_view key);
 // The row whose `field` (validation name, "t_mm") is this, or nullptr.
 const InputSpec* find_input_by_field(std::string_view field);
+
+// The cloth inputs (`cloth`), in table order: t, E, w, h, L, d.
+std::vector<const InputSpec*> cloth_inputs();
 
 // "t (mm)" or "nu": a key with its unit, for axis labels and tables.
 std::string input_label(const InputSpec& spec);

@@ -3,6 +3,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "core/model/named_enum.hpp"
+
 namespace foldlab {
 
 double Shape::shear() const {
@@ -24,14 +26,9 @@ std::string_view to_string(ShapeKind k) {
 }
 
 bool parse_shape_kind(std::string_view s, ShapeKind& out) {
-  for (ShapeKind k : {ShapeKind::cosine_membrane, ShapeKind::rectangular, ShapeKind::strip,
-                      ShapeKind::inclined}) {
-    if (s == to_string(k)) {
-      out = k;
-      return true;
-    }
-  }
-  return false;
+  return parse_named(
+      s, out,
+      {ShapeKind::cosine_membrane, ShapeKind::rectangular, ShapeKind::strip, ShapeKind::inclined});
 }
 
 }  // namespace foldlab

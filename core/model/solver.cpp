@@ -469,6 +469,10 @@ std::vector<CountMapPoint> count_map(const Parameters& p, int n_from, int n_to) 
   return out;
 }
 
+FoldSummary fold_summary(const Solution& s) {
+  return {.n = s.n, .Q = s.Q, .z_max_mm = s.z_max_mm, .regime = s.regime, .n_capped = s.n_capped};
+}
+
 const RegimeInfo& regime_info(Regime r) {
   for (const RegimeInfo& info : kRegimes) {
     if (info.regime == r) {

@@ -23,8 +23,8 @@ double FoldCountRule::amplitude_at(double a0_mm, double x) const {
 }
 
 std::span<const WrinkleLaw* const> wrinkle_laws() {
-  static const std::array<const WrinkleLaw*, 2> laws = {&conci_wrinkle_law(),
-                                                        &cerda_mahadevan_wrinkle_law()};
+  static const auto laws =
+      std::to_array<const WrinkleLaw*>({&conci_wrinkle_law(), &cerda_mahadevan_wrinkle_law()});
   return laws;
 }
 

@@ -7,7 +7,7 @@
 #include <limits>
 #include <numbers>
 #include <random>
-#include <tuple>
+#include <stdexcept>
 
 #include "core/geometry/geometry.hpp"
 #include "core/geometry/parallel_grid.hpp"
@@ -176,13 +176,24 @@ Parameters realistic_fabric(std::mt19937_64& random) {
     return std::exp(u(random));
   };
   Parameters p;
-  // One draw per input in this order: the cases, and every figure measured on them, stay put.
-  for (const auto& [key, lo, hi] :
-       {std::tuple{"t", 0.05, 1.5}, std::tuple{"E", 5.0, 2000.0}, std::tuple{"w", 3e-7, 1e-5},
-        std::tuple{"h", 300.0, 3000.0}, std::tuple{"L", 300.0, 3000.0}}) {
-    set_input(p, key, log_uniform(lo, hi));
+  // One draw per cloth input in table order (t, E, w, h, L, d): the cases, and every figure
+  // measured on them, stay put as long as the rows keep their order and ranges. An upper end
+  // that follows from other inputs (d's, from L) comes from those drawn before.
+  for (const InputSpec* spec : cloth_inputs()) {
+    double hi = spec->realistic_hi;
+    if (spec->realistic_part_of_upper_bound > 0.0) {
+      const std::optional<double> bound = spec->upper_bound ? spec->upper_bound(p) : std::nullopt;
+      if (!bound) {
+        throw std::logic_error("no upper bound to draw " + std::string(spec->key) + " below");
+      }
+      hi = spec->realistic_part_of_upper_bound * *bound;
+    }
+    if (!(spec->realistic_lo > 0.0 && hi > spec->realistic_lo)) {
+      throw std::logic_error("the cloth input " + std::string(spec->key) +
+                             " has no realistic range to draw from");
+    }
+    set_input(p, spec->key, log_uniform(spec->realistic_lo, hi));
   }
-  set_input(p, "d", log_uniform(1.0, 0.3 * p.hanging.length_mm));
   return p;
 }
 
@@ -233,7 +244,8 @@ ReferenceSolution reference_solution(const Parameters& p) {
   }
   const Real A = ref.sag_mm;
   Real theta = 0.0L;
-  if (exact.regime == Regime::negligible_slack) {
+  const RegimeInfo& regime = regime_info(exact.regime);
+  if (!regime.equations_hold) {
     ref.an_mm = A;  // the solver's flat-fold answer: a_n = A, z = 0
   } else {
     theta = reference_theta(a0, h, A, ref.n);
@@ -244,10 +256,10 @@ ReferenceSolution reference_solution(const Parameters& p) {
   const Real edge =
       l * edge_quadrature().ratio(kPiL * std::hypot(ref.an_mm, ref.z_max_mm) / l).first;
   ref.residual_length = std::abs(edge / L - 1.0L);
-  if (exact.regime != Regime::negligible_slack) {
+  if (regime.equations_hold) {
     ref.residual_height = std::abs(reference_fibre(a0, ref.an_mm, ref.n, ref.z_max_mm) / h - 1.0L);
   }
-  if (exact.regime == Regime::wrinkled && exact.Q7) {
+  if (regime.n_fixed_point && exact.Q7) {
     ref.n_is_fixed_point = reference_count(a0 / ref.an_mm, *exact.Q7,
                                            p.model.int_rounding == IntRounding::nearest) == ref.n;
   }

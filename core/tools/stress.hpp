@@ -50,8 +50,8 @@ struct MethodStress {
   int hangs = 0;                       // solves slower than hang_seconds
   int iteration_cap_hits = 0;
   int n_capped = 0;  // eq. 10 asked for more than kMaxWrinkles folds
-  // Max |residual| of eqs. 8 and 9 over the regimes where both equations hold (wrinkled, n_cycle,
-  // stiff); negligible_slack misses eq. 9 by design (it has no root there).
+  // Max |residual| of eqs. 8 and 9 over the regimes where both equations hold
+  // (RegimeInfo::equations_hold); negligible_slack misses eq. 9 by design (it has no root there).
   double max_residual_length = 0.0;
   double max_residual_height = 0.0;
   int max_n = 0;

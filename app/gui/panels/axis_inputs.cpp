@@ -66,12 +66,13 @@ bool key_combo(const char* label, std::string& key) {
 }
 
 void default_range(const std::string& key, double current, double& from, double& to) {
+  const InputSpec* spec = find_input(key);
   if (natural_log_scale(key)) {
     from = current / 10.0;
     to = current * 10.0;
-  } else if (key == "nu") {
-    from = 0.0;
-    to = 0.49;
+  } else if (spec != nullptr && spec->axis_over_typical) {
+    from = spec->typical_lo;
+    to = spec->typical_hi;
   } else {
     from = std::max(current * 0.3, 1.0);
     to = current * 3.0;

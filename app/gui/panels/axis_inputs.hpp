@@ -17,7 +17,8 @@ double from_shown(const std::string& key, double shown);
 std::string shown_value(const std::string& key, double stored);
 // A combo of the sweepable inputs; true when the user chose another.
 bool key_combo(const char* label, std::string& key);
-// A range for a key around the current value: a decade each way on log scales, x0.3..x3 else.
+// A range for a key around the current value: a decade each way on log scales, x0.3..x3 else;
+// the typical range for a row that asks for it (axis_over_typical: ν).
 void default_range(const std::string& key, double current, double& from, double& to);
 // "from ... to ..." inputs for `key`'s stored range, shown with and typed in its slider's unit
 // and applied on Enter; true when one was applied.

@@ -158,7 +158,7 @@ void draw_compare_section(Document& document, UiStatus& status, const ModelStand
   const Solution& b = compare.solution();
   quantity_table(quantity_texts(a, standing_a), quantity_texts(b, compare.standing()),
                  difference_texts(a, b));
-  if (a.regime != Regime::wrinkled || b.regime != Regime::wrinkled) {
+  if (!regime_info(a.regime).unremarkable || !regime_info(b.regime).unremarkable) {
     ImGui::PushStyleColor(ImGuiCol_Text, kNoteText);
     wrapped_text("regimes: A %s, B %s", std::string(to_string(a.regime)).c_str(),
                  std::string(to_string(b.regime)).c_str());

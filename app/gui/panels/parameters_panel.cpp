@@ -20,9 +20,6 @@
 namespace foldlab::gui {
 namespace {
 
-// The model settings an expert may change here; the rest stay with presets and --set.
-constexpr const char* kChoiceKeys[] = {"method", "span_rule", "int_rounding"};
-
 // "ν (Poisson's ratio)": the paper's symbol, spelt out where the font has no Greek.
 std::string slider_label(const InputSpec& spec) {
   return readable(std::string(input_symbol(spec)) + " (" + std::string(spec.name) + ")");
@@ -123,6 +120,22 @@ std::string shown_text(const InputSpec& spec, double value) {
                                     : detail::message_number(in_unit);
   }
   return unit.symbol.empty() ? text : text + " " + std::string(unit.symbol);
+}
+
+std::string expert_mode_help() {
+  std::string cloth;
+  std::string model;
+  for (const InputSpec& spec : input_table()) {
+    if (spec.cloth) {
+      cloth += (cloth.empty() ? "" : ", ") + std::string(input_symbol(spec));
+    } else if (spec.expert && (spec.place == InputPlace::list || spec.place == InputPlace::after)) {
+      const std::string_view named =
+          spec.kind == InputKind::choice ? spec.name : input_symbol(spec);
+      model += (model.empty() ? "" : ", ") + std::string(named);
+    }
+  }
+  return "Beginners see the cloth (" + cloth +
+         ") and its shape; experts also the model's settings (" + model + ") and the 3D grid.";
 }
 
 const std::vector<Assignment>& printed_eq7() {
@@ -513,9 +526,8 @@ void ParametersPanel::header_rows(Document& document, UiStatus& status) {
   if (bool expert = status.expert_mode(); ImGui::Checkbox(kExpertLabel, &expert)) {
     status.set_expert_mode(expert);
   }
-  help_marker(
-      "Beginners see the cloth (t, E, w, h, L, d) and its shape; experts also the model's "
-      "settings (method, wrinkle law, K, ν, p, Int[·], span rule) and the 3D grid.");
+  static const std::string expert_help = expert_mode_help();
+  help_marker(expert_help.c_str());
   // The paper's own model stays one click away whatever is shown.
   const bool printed = is_printed_eq7(document.edited());
   ImGui::BeginDisabled(printed);
@@ -531,13 +543,15 @@ void ParametersPanel::header_rows(Document& document, UiStatus& status) {
 
 std::vector<const InputSpec*> ParametersPanel::shown_sliders(const UiStatus& status) {
   std::vector<const InputSpec*> sliders;
-  for (const std::string& key : sweepable_keys()) {
-    const InputSpec* spec = find_input(key);
-    if (spec->expert && !status.expert_mode()) {
-      places_.erase(key);  // playback must not press what is no longer there
+  for (const InputSpec& spec : input_table()) {
+    if (spec.place != InputPlace::list || spec.kind == InputKind::choice) {
       continue;
     }
-    sliders.push_back(spec);
+    if (spec.expert && !status.expert_mode()) {
+      places_.erase(std::string(spec.key));  // playback must not press what is no longer there
+      continue;
+    }
+    sliders.push_back(&spec);
   }
   return sliders;
 }
@@ -568,12 +582,21 @@ void ParametersPanel::slider_rows(Document& document, UiStatus& status,
                          w / input_units(*spec)[2].per_unit, w);
     }
   }
-  if (status.expert_mode()) {
-    ImGui::TextColored(kDimText, "    c = %.4g (load-condition constant)",
-                       document.edited().model.load_constant_c);
-    input_slider(document, status, *find_input("p"), width, look);
-  } else {
-    places_.erase("p");
+  // After the list, the model's constants: read out (c, which K sets) or a slider of their own.
+  for (const InputSpec& spec : input_table()) {
+    const bool readout = spec.place == InputPlace::readout;
+    if (!readout && spec.place != InputPlace::after) {
+      continue;
+    }
+    if (spec.expert && !status.expert_mode()) {
+      places_.erase(std::string(spec.key));
+    } else if (readout) {
+      ImGui::TextColored(kDimText, "    %s = %.4g (%s)", std::string(spec.key).c_str(),
+                         spec.value(document.edited()).value_or(0.0),
+                         std::string(spec.name).c_str());
+    } else {
+      input_slider(document, status, spec, width, look);
+    }
   }
 }
 
@@ -596,9 +619,12 @@ void ParametersPanel::shape_rows(Document& document, UiStatus& status, float wid
 }
 
 void ParametersPanel::expert_rows(Document& document, float width) {
+  // The law first: choosing one sets the constants the sliders above show.
   law_combo(document, width);
-  for (const char* key : kChoiceKeys) {
-    choice_combo(document, *find_input(key), width);
+  for (const InputSpec& spec : input_table()) {
+    if (spec.kind == InputKind::choice && spec.place == InputPlace::list && spec.key != "law") {
+      choice_combo(document, spec, width);
+    }
   }
   int grid = document.scene().grid_nx();
   ImGui::SetNextItemWidth(width);
@@ -637,7 +663,7 @@ int ParametersPanel::strip_columns(float width) const {
   const float cell =
       strip_symbol_width() + ImGui::GetStyle().ItemInnerSpacing.x + ems(kStripSliderEms);
   const float spacing = ImGui::GetStyle().ItemSpacing.x;
-  const int count = static_cast<int>(std::size(kStripKeys));
+  const int count = static_cast<int>(cloth_inputs().size());
   const int fit = std::clamp(static_cast<int>((width + spacing) / (cell + spacing)), 1, count);
   // As few rows as fit, filled evenly (three and three rather than four and two).
   const int rows = (count + fit - 1) / fit;
@@ -646,15 +672,14 @@ int ParametersPanel::strip_columns(float width) const {
 
 float ParametersPanel::strip_symbol_width() const {
   float widest = 0.0f;
-  for (const char* key : kStripKeys) {
-    widest =
-        std::max(widest, ImGui::CalcTextSize(readable(input_symbol(*find_input(key))).c_str()).x);
+  for (const InputSpec* spec : cloth_inputs()) {
+    widest = std::max(widest, ImGui::CalcTextSize(readable(input_symbol(*spec)).c_str()).x);
   }
   return widest;
 }
 
 float ParametersPanel::strip_height(const Document& document, float width) const {
-  const int count = static_cast<int>(std::size(kStripKeys));
+  const int count = static_cast<int>(cloth_inputs().size());
   const int columns = strip_columns(width);
   const int rows = (count + columns - 1) / columns;
   const float spacing = ImGui::GetStyle().ItemSpacing.y;
@@ -669,14 +694,15 @@ float ParametersPanel::strip_height(const Document& document, float width) const
 void ParametersPanel::draw_strip(Document& document, UiStatus& status, float width) {
   forget_unread_of_changed_values(document, status);
   places_.clear();  // only the strip's sliders are there to press
-  const int count = static_cast<int>(std::size(kStripKeys));
+  const std::vector<const InputSpec*> strip = cloth_inputs();
+  const int count = static_cast<int>(strip.size());
   const int columns = strip_columns(width);
   const ImGuiStyle& style = ImGui::GetStyle();
   const float cell =
       (width - static_cast<float>(columns - 1) * style.ItemSpacing.x) / static_cast<float>(columns);
   const float symbol = strip_symbol_width();
   for (int i = 0; i < count; ++i) {
-    const InputSpec& spec = *find_input(kStripKeys[i]);
+    const InputSpec& spec = *strip[static_cast<std::size_t>(i)];
     if (i % columns != 0) {
       ImGui::SameLine();
     }

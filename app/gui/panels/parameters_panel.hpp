@@ -74,9 +74,9 @@ class ParametersPanel : public Panel {
   // An arrow key moves a focused slider's handle by this part of its width (Shift: a tenth).
   static constexpr double kArrowStep = 0.01;
 
-  // The strip over a presented view: the cloth's six inputs as compact sliders (the panel's own,
-  // with their typed values, units, keys and refusals), as many to a row as fit `width`.
-  static constexpr const char* kStripKeys[] = {"t", "E", "w", "h", "L", "d"};
+  // The strip over a presented view: the cloth inputs (cloth_inputs) as compact sliders (the
+  // panel's own, with their typed values, units, keys and refusals), as many to a row as fit
+  // `width`.
   void draw_strip(Document& document, UiStatus& status, float width);
   // The strip's height at `width`: its rows and the reasons for refused values under them.
   float strip_height(const Document& document, float width) const;
@@ -167,6 +167,10 @@ class ParametersPanel : public Panel {
   double range_hi_ = 0.0;
   std::string animation_problem_;
 };
+
+// The Expert settings box's help: what a beginner sees (the cloth inputs) and what an expert sees
+// besides (the model's settings the panel shows), from the input table.
+std::string expert_mode_help();
 
 // The paper's form of eq. 7 as inputs of the table: the paper method, Conci's law, p = 1 and
 // K = 29.56 (c = 26.9 at nu = 0.3) at the Poisson ratio in force.

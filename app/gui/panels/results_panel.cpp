@@ -200,7 +200,7 @@ void ResultsPanel::draw_regime(Document& document, const ModelStanding& model, b
   }
   ImGui::Text("Regime: %s", std::string(to_string(s.regime)).c_str());
   if (const std::string message = describe(s, scene.parameters()); !message.empty()) {
-    ImGui::PushStyleColor(ImGuiCol_Text, s.regime == Regime::wrinkled ? kDimText : kNoteText);
+    ImGui::PushStyleColor(ImGuiCol_Text, regime_info(s.regime).unremarkable ? kDimText : kNoteText);
     wrapped_text("%s", message.c_str());
     ImGui::PopStyleColor();
   }

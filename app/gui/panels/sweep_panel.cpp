@@ -243,7 +243,7 @@ void SweepPanel::draw_band_key() const {
     ImGui::Dummy(ImVec2(1.4f * side, side));
     ImGui::SameLine();
     const std::string meaning = !band.valid ? std::string("the other inputs refuse these values")
-                                : band.regime == Regime::wrinkled
+                                : regime_info(band.regime).unremarkable
                                     ? std::string("a single fold, so no ratio Q")
                                     : std::string(regime_info(band.regime).plain);
     ImGui::PushStyleColor(ImGuiCol_Text, static_cast<ImVec4>(kDimText));
