@@ -288,6 +288,21 @@ struct Solver::Impl {
     return g;
   }
 
+  // The free nodes' force imbalance against every external force: the weight's nodal forces and
+  // the supports' reactions (a patch pulled into shape by its edges has no weight).
+  double relative_residual(const std::vector<Vector2d>& g, const Eigen::VectorXd& free_g,
+                           const Material& m) const {
+    double external = 0.0;
+    for (double a : node_area_mm2) {
+      external += std::pow(m.weight_N_per_mm2 * a, 2);
+    }
+    for (int n : mesh.support_nodes) {
+      external += g[n].squaredNorm();
+    }
+    const double imbalance = free_g.norm();
+    return external > 0.0 ? imbalance / std::sqrt(external) : imbalance;
+  }
+
   Eigen::VectorXd free_part(const std::vector<Vector2d>& g) const {
     Eigen::VectorXd out(unknowns);
     for (std::size_t n = 0; n < g.size(); ++n) {
@@ -388,17 +403,10 @@ Solution Solver::solve(const Material& m, const std::vector<Vector2d>& targets,
   for (double a : s.node_area_mm2) {
     weight_N += m.weight_N_per_mm2 * a;
   }
-  // The weight's nodal forces as the residual's yardstick.
-  double load_norm = 0.0;
-  for (double a : s.node_area_mm2) {
-    load_norm += std::pow(m.weight_N_per_mm2 * a, 2);
-  }
-  load_norm = std::sqrt(load_norm);
-
   double damping = options.damping_start;
   std::vector<Vector2d> g = s.gradient(x, m);
   Eigen::VectorXd gf = s.free_part(g);
-  double residual = s.unknowns > 0 ? gf.norm() / load_norm : 0.0;
+  double residual = s.relative_residual(g, gf, m);
   double potential = s.potential(x, m);
   int iterations = 0;
   while (residual > options.relative_tolerance && iterations < options.max_iterations) {
@@ -453,7 +461,7 @@ Solution Solver::solve(const Material& m, const std::vector<Vector2d>& targets,
     potential = trial_potential;
     g = trial_g.empty() ? s.gradient(x, m) : std::move(trial_g);
     gf = s.free_part(g);
-    residual = gf.norm() / load_norm;
+    residual = s.relative_residual(g, gf, m);
     if (alpha == 1.0) {
       damping = std::max(options.damping_floor, 0.1 * damping);
     } else if (alpha < 0.1) {
