@@ -83,7 +83,7 @@ Result run(const Options& options) {
     r.nodes = static_cast<int>(solver.mesh().nodes_mm.size());
     r.triangles = static_cast<int>(solver.mesh().triangles.size());
     const field::Material material = field::material_of(r.preset.parameters.fabric);
-    field::Solution solution = solver.solve(material, field::support_targets(r.outline));
+    field::Solution solution = field::solve_cold(solver, r.outline, material, r.resolution);
     r.report = field::report_field(solver, std::move(solution), r.outline, material, options.rays);
   } catch (const field::OutlineError& e) {
     throw InputError(e.what());

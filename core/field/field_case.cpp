@@ -1,5 +1,6 @@
 #include "core/field/field_case.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -11,6 +12,43 @@ std::vector<Eigen::Vector2d> support_targets(const Outline& outline) {
     out.push_back(s.to_mm);
   }
   return out;
+}
+
+Solution transferred_start(const Mesh& from, const Solution& solved, const Mesh& to) {
+  Solution start;
+  start.positions_mm.reserve(to.nodes_mm.size());
+  for (const Eigen::Vector2d& p : to.nodes_mm) {
+    Eigen::Vector2d q = hung_position(from, solved, p);
+    if (!std::isfinite(q.x())) {
+      std::size_t nearest = 0;
+      for (std::size_t n = 1; n < from.nodes_mm.size(); ++n) {
+        if ((from.nodes_mm[n] - p).squaredNorm() < (from.nodes_mm[nearest] - p).squaredNorm()) {
+          nearest = n;
+        }
+      }
+      q = p + (solved.positions_mm[nearest] - from.nodes_mm[nearest]);
+    }
+    start.positions_mm.push_back(q);
+  }
+  return start;
+}
+
+Solution solve_cold(Solver& solver, const Outline& outline, const Material& material,
+                    const MeshResolution& resolution, const SolveOptions& options) {
+  const std::vector<Eigen::Vector2d> targets = support_targets(outline);
+  if (resolution.cells_x < 16 || resolution.cells_y < 4) {
+    return solver.solve(material, targets, options);
+  }
+  MeshResolution coarse = resolution;
+  coarse.cells_x = resolution.cells_x / 2;
+  coarse.cells_y = std::max(2, resolution.cells_y / 2);
+  Solver coarse_solver(make_mesh(outline, coarse));
+  const Solution coarse_solution = solve_cold(coarse_solver, outline, material, coarse, options);
+  const Solution start = transferred_start(coarse_solver.mesh(), coarse_solution, solver.mesh());
+  Solution fine = solver.solve(material, targets, options, &start);
+  fine.solve_ms += coarse_solution.solve_ms;
+  fine.iterations += coarse_solution.iterations;
+  return fine;
 }
 
 FieldReport report_field(const Solver& solver, Solution solution, const Outline& outline,
@@ -50,7 +88,7 @@ FieldReport solve_outline(const Outline& outline, const Material& material,
                           const MeshResolution& resolution, const SolveOptions& options,
                           int ray_count) {
   Solver solver(make_mesh(outline, resolution));
-  Solution solution = solver.solve(material, support_targets(outline), options);
+  Solution solution = solve_cold(solver, outline, material, resolution, options);
   return report_field(solver, std::move(solution), outline, material, ray_count);
 }
 

@@ -27,6 +27,18 @@ inline constexpr int kDefaultRayCount = 8;
 
 std::vector<Eigen::Vector2d> support_targets(const Outline& outline);
 
+// A start for `to` from a field solved on another mesh `from` of the same cut: each node moved
+// as the solved field moves its flat point (or the nearest solved node, for a point just outside
+// the other mesh's chords).
+Solution transferred_start(const Mesh& from, const Solution& solved, const Mesh& to);
+
+// A cold solve by a coarse-to-fine ladder: the cut solved on meshes of half the cells (down to
+// about 8 across) first, each solution the next one's start, since the slow part of a cold
+// solve (the states settling, about a hundred damped steps) costs least where there are fewest
+// nodes. `solver` holds the finest mesh, made with `resolution`.
+Solution solve_cold(Solver& solver, const Outline& outline, const Material& material,
+                    const MeshResolution& resolution, const SolveOptions& options = {});
+
 // The report of a solved field; `solver` holds the mesh it was solved on.
 FieldReport report_field(const Solver& solver, Solution solution, const Outline& outline,
                          const Material& material, int ray_count = kDefaultRayCount);
