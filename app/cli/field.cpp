@@ -107,7 +107,8 @@ void print_text(const Result& r, std::ostream& out) {
   if (s.folded_share > 0.0) {
     out << "; turned over " << share_text(s.folded_share);
   }
-  out << "\n";
+  out << " (single slack triangles between tensed ones count with their neighbours; "
+      << share_text(s.element_slack_share) << " of the triangles are slack on their own)\n";
   out << "supports (the force each exerts on the cloth; x right, y down):\n";
   for (std::size_t i = 0; i < r.outline.supports.size(); ++i) {
     const field::Support& sup = r.outline.supports[i];
@@ -158,7 +159,8 @@ nlohmann::json print_json(const Result& r) {
   out["regions"] = {{"taut", s.taut_share},
                     {"wrinkled", s.wrinkled_share},
                     {"slack", s.slack_share},
-                    {"turned_over", s.folded_share}};
+                    {"turned_over", s.folded_share},
+                    {"slack_triangles", s.element_slack_share}};
   out["thrust_N"] = r.report.thrust_N;
   out["pencil_thrust_N"] = r.report.pencil_thrust_N;
   out["span_mm"] = r.report.span_mm;

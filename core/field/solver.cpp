@@ -4,6 +4,8 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <map>
+#include <utility>
 
 #include <Eigen/LU>
 #include <Eigen/SparseCholesky>
@@ -166,8 +168,9 @@ struct Solver::Impl {
   Eigen::SparseMatrix<double> matrix;      // lower triangle of the Newton matrix
   std::vector<std::array<int, 36>> slots;  // each element's entries in matrix's values
   Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> cholesky;
-  std::vector<double> damping_values;  // the flat linear stiffness, assembled
-  std::vector<double> node_area_mm2;   // a third of each touching triangle
+  std::vector<double> damping_values;        // the flat linear stiffness, assembled
+  std::vector<double> node_area_mm2;         // a third of each touching triangle
+  std::vector<std::vector<int>> neighbours;  // the elements sharing an edge with each
 
   explicit Impl(Mesh m) : mesh(std::move(m)) {
     dof.assign(mesh.nodes_mm.size(), 0);
@@ -200,6 +203,21 @@ struct Solver::Impl {
         node_area_mm2[n] += e.area_mm2 / 3.0;
       }
       elements.push_back(e);
+    }
+    std::map<std::pair<int, int>, std::vector<int>> edges;
+    for (std::size_t t = 0; t < elements.size(); ++t) {
+      for (int j = 0; j < 3; ++j) {
+        const int a = elements[t].nodes[j];
+        const int b = elements[t].nodes[(j + 1) % 3];
+        edges[{std::min(a, b), std::max(a, b)}].push_back(static_cast<int>(t));
+      }
+    }
+    neighbours.resize(elements.size());
+    for (const auto& [edge, sharing] : edges) {
+      if (sharing.size() == 2) {
+        neighbours[sharing[0]].push_back(sharing[1]);
+        neighbours[sharing[1]].push_back(sharing[0]);
+      }
     }
     std::vector<Eigen::Triplet<double>> pattern;
     for (int i = 0; i < unknowns; ++i) {
@@ -478,12 +496,26 @@ Solution Solver::solve(const Material& m, const std::vector<Vector2d>& targets,
   for (int n : s.mesh.support_nodes) {
     out.reactions_N.push_back(g[n]);
   }
-  double area = 0.0;
+  std::vector<State> states;
   for (const Element& e : s.elements) {
+    states.push_back(kinematics(e, x, m).relaxed.state);
+  }
+  double area = 0.0;
+  for (std::size_t i = 0; i < s.elements.size(); ++i) {
+    const Element& e = s.elements[i];
     const Kinematics k = kinematics(e, x, m);
     const RelaxedStrain& r = k.relaxed;
     TriangleResult t;
     t.state = r.state;
+    t.region = r.state;
+    if (r.state == State::slack) {
+      for (int n : s.neighbours[i]) {
+        if (states[n] == State::wrinkled ||
+            (states[n] == State::taut && t.region == State::slack)) {
+          t.region = states[n];
+        }
+      }
+    }
     t.flat_direction = r.v1;
     const Vector2d along = k.F * r.v1;
     t.direction = along.norm() > 0.0 ? Vector2d(along.normalized()) : r.v1;
@@ -502,16 +534,19 @@ Solution Solver::solve(const Material& m, const std::vector<Vector2d>& targets,
     t.folded_over = k.F.determinant() < 0.0;
     const double a = e.area_mm2;
     area += a;
-    (r.state == State::taut       ? out.taut_share
-     : r.state == State::wrinkled ? out.wrinkled_share
-                                  : out.slack_share) += a;
+    (t.region == State::taut       ? out.taut_share
+     : t.region == State::wrinkled ? out.wrinkled_share
+                                   : out.slack_share) += a;
+    if (r.state == State::slack) {
+      out.element_slack_share += a;
+    }
     if (t.folded_over) {
       out.folded_share += a;
     }
     out.triangles.push_back(t);
   }
-  for (double* share :
-       {&out.taut_share, &out.wrinkled_share, &out.slack_share, &out.folded_share}) {
+  for (double* share : {&out.taut_share, &out.wrinkled_share, &out.slack_share, &out.folded_share,
+                        &out.element_slack_share}) {
     *share /= area;
   }
   out.positions_mm = std::move(x);

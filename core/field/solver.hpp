@@ -56,7 +56,13 @@ struct SolveOptions {
 };
 
 struct TriangleResult {
-  State state = State::slack;
+  State state = State::slack;  // of the triangle's own strain
+  // What the regions are drawn and counted by: the triangle's own state, except that a slack
+  // triangle with a tensed edge neighbour takes the neighbour's state (wrinkled before taut).
+  // Linear triangles let one of a pair carry a uniaxial field while the other goes slack, at no
+  // cost in the relaxed energy: stripes one element wide, in every split, that do not shrink with
+  // the mesh. A slack region is counted where a triangle and all its neighbours are slack.
+  State region = State::slack;
   double tension_N_per_mm = 0.0;             // the larger principal tension, per flat width
   double minor_tension_N_per_mm = 0.0;       // the smaller, 0 unless taut
   Eigen::Vector2d direction{1.0, 0.0};       // the larger tension's direction in the hung cloth
@@ -79,10 +85,11 @@ struct Solution {
   double weight_N = 0.0;
   std::vector<Eigen::Vector2d> reactions_N;  // the force each support exerts on the cloth
   std::vector<TriangleResult> triangles;
-  double taut_share = 0.0;  // shares of the flat area
+  double taut_share = 0.0;  // shares of the flat area, by region
   double wrinkled_share = 0.0;
   double slack_share = 0.0;
   double folded_share = 0.0;
+  double element_slack_share = 0.0;  // by the triangles' own states, for comparison
 };
 
 // One mesh's solver: the mesh's sparsity and the Cholesky ordering are worked out once and
