@@ -108,7 +108,7 @@ void print_text(const Result& r, std::ostream& out) {
     out << "; turned over " << share_text(s.folded_share);
   }
   out << " (single slack triangles between tensed ones count with their neighbours; "
-      << share_text(s.element_slack_share) << " of the triangles are slack on their own)\n";
+      << share_text(s.element_slack_share) << " of the area is in triangles slack on their own)\n";
   out << "supports (the force each exerts on the cloth; x right, y down):\n";
   for (std::size_t i = 0; i < r.outline.supports.size(); ++i) {
     const field::Support& sup = r.outline.supports[i];

@@ -44,7 +44,7 @@ RelaxedStrain relax(const Eigen::Matrix2d& green_strain, const Material& materia
 
 struct SolveOptions {
   double relative_tolerance = 1e-8;  // converged: |force residual| <= this x |weight's forces|
-  int max_iterations = 400;
+  int max_iterations = 1000;
   // The Newton matrix's damping, as a share of the flat cloth's linear-elastic stiffness: it
   // starts here, falls tenfold after each full step and rises tenfold when a step fails, never
   // below the floor. It enters the Newton matrix only, never the energy or the residual: it
