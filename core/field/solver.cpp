@@ -135,11 +135,15 @@ RelaxedStrain relax(const Matrix2d& E, const Material& m) {
   const double mean = 0.5 * (E(0, 0) + E(1, 1));
   const double half_difference = 0.5 * (E(0, 0) - E(1, 1));
   const double off = 0.5 * (E(0, 1) + E(1, 0));
-  const double radius = std::hypot(half_difference, off);
+  const double radius = std::sqrt(half_difference * half_difference + off * off);
   r.e1 = mean + radius;
   r.e2 = mean - radius;
-  const double angle = 0.5 * std::atan2(off, half_difference);
-  r.v1 = Vector2d(std::cos(angle), std::sin(angle));
+  // The eigenvector of e1 without trigonometry (it runs for every triangle on every pass): from
+  // the larger column of E - e2 I, which is never zero unless E is isotropic.
+  const Vector2d along = half_difference >= 0.0 ? Vector2d(half_difference + radius, off)
+                                                : Vector2d(off, radius - half_difference);
+  const double length = along.norm();
+  r.v1 = length > 0.0 ? Vector2d(along / length) : Vector2d(1.0, 0.0);
   r.v2 = Vector2d(-r.v1.y(), r.v1.x());
   const double Y = m.stiffness_N_per_mm;
   const double nu = m.poisson_ratio;
@@ -421,7 +425,7 @@ Solution Solver::solve(const Material& m, const std::vector<Vector2d>& targets,
   for (double a : s.node_area_mm2) {
     weight_N += m.weight_N_per_mm2 * a;
   }
-  double damping = options.damping_start;
+  double damping = start != nullptr ? options.warm_damping_start : options.damping_start;
   std::vector<Vector2d> g = s.gradient(x, m);
   Eigen::VectorXd gf = s.free_part(g);
   double residual = s.relative_residual(g, gf, m);

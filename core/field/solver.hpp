@@ -51,6 +51,8 @@ struct SolveOptions {
   // changes the path, not the converged field.
   double damping_start = 1e-3;
   double damping_floor = 1e-6;
+  // From a previous field (a warm start) the states have mostly settled: start at the floor.
+  double warm_damping_start = 1e-6;
   // Stop after this long (0: no limit) and say so: the last iterate is returned unconverged.
   double time_budget_ms = 0.0;
 };
