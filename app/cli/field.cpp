@@ -51,13 +51,15 @@ void declare(CLI::App& app, Options& options) {
       "its taut, wrinkled and slack shares, the supports' reactions and the rays beside the "
       "closed form's cosines");
   add_input_options(*command, options.inputs);
-  command->add_option("--shape", options.shape,
-                      "the cut: " + field::outline_kind_names() + " (default: the preset's shape)");
+  CLI::Option* shape = command->add_option(
+      "--shape", options.shape,
+      "the cut: " + field::outline_kind_names() + " (default: the preset's shape)");
   command
       ->add_option("--outline", options.outline_path,
                    "a cut of your own: JSON {\"top\": [[x, y], ...], \"bottom\": [[x, y], "
                    "...], \"supports\": [{\"at\": [X, Y], \"to\": [x, y]}, ...]}, mm, y down")
-      ->check(app::non_empty_path());
+      ->check(app::non_empty_path())
+      ->excludes(shape);
   command->add_option("--cells-x", options.cells_x, "mesh cells across the cut (default 40)")
       ->transform(app::whole_number_in(1, 2000));
   command->add_option("--cells-y", options.cells_y, "mesh cells down the cut (default 28)")
