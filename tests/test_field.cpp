@@ -337,6 +337,51 @@ TEST(FieldCosinePencil, ThrustBesideThePencilIsReported) {
   }
 }
 
+// The relaxed energy's table at three strains, and its stress as the derivative of its energy:
+// S = dW/dE by central differences of the energy (a slow path beside the closed-form stress).
+TEST(FieldRelaxedEnergy, StatesEnergiesAndStressFollowTheTable) {
+  const Material m{40.0, 0.3, 0.0};
+  const double c = m.stiffness_N_per_mm / (1.0 - m.poisson_ratio * m.poisson_ratio);
+  struct Case {
+    Eigen::Matrix2d E;
+    State state;
+    double energy;
+  };
+  Eigen::Matrix2d taut;
+  taut << 0.02, 0.0, 0.0, 0.01;  // e2 = 0.01 > -nu e1
+  Eigen::Matrix2d wrinkled;
+  wrinkled << 0.02, 0.0, 0.0, -0.01;  // e2 = -0.01 <= -0.006
+  Eigen::Matrix2d slack;
+  slack << -0.01, 0.002, 0.002, -0.02;
+  const Case cases[] = {
+      {taut, State::taut, 0.5 * c * (0.02 * 0.02 + 0.01 * 0.01 + 2 * 0.3 * 0.02 * 0.01)},
+      {wrinkled, State::wrinkled, 0.5 * 40.0 * 0.02 * 0.02},
+      {slack, State::slack, 0.0},
+  };
+  for (const Case& k : cases) {
+    // Rotated by 30 degrees, so that the principal directions are not the axes.
+    const double a = std::numbers::pi / 6;
+    Eigen::Matrix2d R;
+    R << std::cos(a), -std::sin(a), std::sin(a), std::cos(a);
+    const Eigen::Matrix2d E = R * k.E * R.transpose();
+    const RelaxedStrain r = relax(E, m);
+    EXPECT_EQ(r.state, k.state);
+    EXPECT_NEAR(r.energy_N_per_mm, k.energy, 1e-15);
+    const double step = 1e-7;
+    for (int i = 0; i < 2; ++i) {
+      for (int j = 0; j < 2; ++j) {
+        // A symmetric perturbation: dW = S : dE with dE symmetric.
+        Eigen::Matrix2d dE = Eigen::Matrix2d::Zero();
+        dE(i, j) += 0.5 * step;
+        dE(j, i) += 0.5 * step;
+        const double slope =
+            (relax(E + dE, m).energy_N_per_mm - relax(E - dE, m).energy_N_per_mm) / (2 * step);
+        EXPECT_NEAR(r.stress_N_per_mm(i, j), slope, 1e-6 * m.stiffness_N_per_mm) << i << j;
+      }
+    }
+  }
+}
+
 TEST(FieldOutline, RefusesWhatCannotBeMeshed) {
   const auto refused = [](const char* text) {
     try {
