@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 #include "core/model/text_format.hpp"
 
@@ -13,7 +14,7 @@ using Eigen::Vector2d;
 // Edges turn at a corner of the cut (the triangle's point) by more than this: a column goes
 // there so that the mesh's edge is the cut's. Gentler bends (a cosine drawn as a polyline) are
 // followed by the columns' chords.
-constexpr double kCornerTurn_rad = 5.0 * 3.14159265358979 / 180.0;
+constexpr double kCornerTurn_rad = 5.0 * std::numbers::pi / 180.0;
 
 void add_corners(const std::vector<Vector2d>& edge, std::vector<double>& xs) {
   for (std::size_t i = 1; i + 1 < edge.size(); ++i) {

@@ -34,8 +34,9 @@ struct MeshResolution {
 inline constexpr int kMaxMeshNodes = 200000;
 
 struct Mesh {
-  std::vector<Eigen::Vector2d> nodes_mm;           // flat positions
-  std::vector<std::array<int, 3>> triangles;       // counter-clockwise in x right, y down
+  std::vector<Eigen::Vector2d> nodes_mm;  // flat positions
+  // Each with a positive signed area in (x, y), so that det F > 0 unless it turned over.
+  std::vector<std::array<int, 3>> triangles;
   std::vector<std::vector<int>> column_triangles;  // the triangles between columns i and i + 1
   std::vector<double> column_x_mm;                 // the columns' x, increasing
   std::vector<int> support_nodes;                  // one per outline support, in its order
