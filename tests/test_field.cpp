@@ -300,6 +300,27 @@ TEST(FieldRegularisation, HalvingTheDampingFloorMovesNoFigure) {
   EXPECT_NEAR(a.solution.slack_share, b.solution.slack_share, 1e-9);
 }
 
+// A warm re-solve (from the field of d = 100 mm, after d moved 1 %) lands on the field a cold
+// solve finds: the same thrust, energy and regions.
+TEST(FieldWarmStart, ReachesTheColdField) {
+  Parameters p = default_parameters();
+  const Material material = material_of(p.fabric);
+  const MeshResolution resolution{20, 14, MeshSplit::union_jack};
+  const Outline before = make_outline(p, OutlineKind::rectangular);
+  Solver solver(make_mesh(before, resolution));
+  const Solution first = solve_cold(solver, before, material, resolution);
+  p.hanging.support_displacement_mm *= 1.01;
+  const Outline after = make_outline(p, OutlineKind::rectangular);
+  const Solution warm = solver.solve(material, support_targets(after), {}, &first);
+  const FieldReport cold = solve_outline(after, material, resolution, {}, 0);
+  ASSERT_TRUE(warm.converged);
+  ASSERT_TRUE(cold.solution.converged);
+  EXPECT_LT(warm.iterations, cold.solution.iterations);
+  EXPECT_NEAR(warm.reactions_N[1].x(), cold.thrust_N, 1e-6 * cold.thrust_N);
+  EXPECT_NEAR(warm.energy_Nmm, cold.solution.energy_Nmm, 1e-6 * cold.solution.energy_Nmm);
+  EXPECT_NEAR(warm.wrinkled_share, cold.solution.wrinkled_share, 1e-12);
+}
+
 // Mansfield's cosine outline hung from its ends (l = L): the pencil's thrust
 // (w l² / pi²) ln(a_0 / a_n) beside the solver's, on refined meshes. Statics is asserted (each
 // support carries half the weight); H, the taut share and the rays are reported.
