@@ -48,6 +48,7 @@ int main(int argc, char** argv) {
   commands["sweep"] = cli::add_sweep_command(app);
   commands["calibrate"] = cli::add_calibrate_command(app);
   commands["measure"] = cli::add_measure_command(app);
+  commands["field"] = cli::add_field_command(app);
   commands["bench"] = cli::add_bench_command(app);
   commands["stress"] = cli::add_stress_command(app);
 #ifdef FOLDLAB_WITH_GUI

@@ -1663,4 +1663,66 @@ TEST_F(PaperAccuracy, APresetNamedWithoutACommaIsAGroupOfItsOwn) {
   EXPECT_TRUE(report[1].at("exact").at("median_abs_Q_error").is_null());
 }
 
+// `foldlab field` on Conci's set-up: the weight is w L h of the preset (1.5e-6 N/mm² x 1400 mm x
+// 1400 mm), the supports carry it between them, the regions share the whole cloth.
+TEST_F(CliTest, FieldJsonCarriesTheWeightOnTheSupports) {
+  const RunResult r =
+      run({"field", "--shape", "rectangular", "--cells-x", "12", "--cells-y", "8", "--json"});
+  ASSERT_EQ(r.exit_status, 0) << r.err;
+  const json j = json::parse(r.out);
+  for (const char* key : {"converged", "relative_residual", "iterations", "solve_ms", "weight_N",
+                          "supports", "regions", "rays"}) {
+    EXPECT_TRUE(j.contains(key)) << key;
+  }
+  EXPECT_TRUE(j.at("converged").get<bool>());
+  EXPECT_LE(j.at("relative_residual").get<double>(), 1e-8);
+  const double weight = 1.5e-6 * 1400.0 * 1400.0;
+  EXPECT_NEAR(j.at("weight_N").get<double>(), weight, 1e-12 * weight);
+  double sum_x = 0.0;
+  double sum_y = 0.0;
+  ASSERT_EQ(j.at("supports").size(), 2u);
+  for (const json& s : j.at("supports")) {
+    sum_x += s.at("reaction_N")[0].get<double>();
+    sum_y += s.at("reaction_N")[1].get<double>();
+  }
+  EXPECT_NEAR(sum_x, 0.0, 1e-6 * weight);
+  EXPECT_NEAR(sum_y, -weight, 1e-6 * weight);  // y is down: the supports pull the cloth up
+  // The left top corner, pinned where the default span rule l = L - d puts it.
+  EXPECT_EQ(j.at("supports")[0].at("at_mm"), json({-700.0, 0.0}));
+  EXPECT_EQ(j.at("supports")[0].at("to_mm"), json({-650.0, 0.0}));
+  const json& regions = j.at("regions");
+  EXPECT_NEAR(regions.at("taut").get<double>() + regions.at("wrinkled").get<double>() +
+                  regions.at("slack").get<double>(),
+              1.0, 1e-12);
+  EXPECT_EQ(j.at("rays").size(), 8u);
+}
+
+// A cut of the user's own: a valid one solves, a self-crossing one is refused with exit 2 and a
+// sentence naming the edge and the vertex.
+TEST_F(CliTest, FieldOutlineFileSolvesOrIsRefusedByName) {
+  const fs::path good = dir_ / "panel.json";
+  std::ofstream(good)
+      << R"({"top": [[0, 0], [600, 0]], "bottom": [[0, 400], [300, 500], [600, 400]],
+    "supports": [{"at": [0, 0], "to": [30, 0]}, {"at": [600, 0], "to": [570, 0]}]})";
+  const RunResult ok =
+      run({"field", "--outline", good.string(), "--cells-x", "12", "--cells-y", "8", "--json"});
+  ASSERT_EQ(ok.exit_status, 0) << ok.err;
+  const json j = json::parse(ok.out);
+  // The area by hand: 600 x 400 plus the triangle of base 600 and height 100 below it.
+  const double weight = 1.5e-6 * (600.0 * 400.0 + 0.5 * 600.0 * 100.0);
+  EXPECT_NEAR(j.at("weight_N").get<double>(), weight, 1e-12 * weight);
+
+  const fs::path crossing = dir_ / "crossing.json";
+  std::ofstream(crossing) << R"({"top": [[0, 0], [600, 0], [300, 10]],
+    "bottom": [[0, 400], [600, 400]], "supports": [{"at": [0, 0], "to": [0, 0]}]})";
+  const RunResult refused = run({"field", "--outline", crossing.string()});
+  EXPECT_EQ(refused.exit_status, 2);
+  EXPECT_TRUE(contains(refused.err, "top edge turns back")) << refused.err;
+  EXPECT_TRUE(refused.out.empty());
+
+  const RunResult bad_shape = run({"field", "--shape", "hexagon"});
+  EXPECT_EQ(bad_shape.exit_status, 2);
+  EXPECT_TRUE(contains(bad_shape.err, "hexagon")) << bad_shape.err;
+}
+
 }  // namespace

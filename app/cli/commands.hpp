@@ -44,6 +44,8 @@ Command add_sweep_command(CLI::App& app);
 Command add_calibrate_command(CLI::App& app);
 // Folds measured on a real cloth to n, Q and a measurements row (measure.cpp).
 Command add_measure_command(CLI::App& app);
+// The tension field of the hung cloth (field.cpp).
+Command add_field_command(CLI::App& app);
 // Run time against error (bench.cpp) and the numerical stress test (stress.cpp).
 Command add_bench_command(CLI::App& app);
 Command add_stress_command(CLI::App& app);

@@ -1,0 +1,194 @@
+#include "app/cli/field.hpp"
+
+#include <iostream>
+
+#include "app/cli/commands.hpp"
+#include "app/cli/output.hpp"
+#include "core/io/io.hpp"
+#include "core/model/text_format.hpp"
+
+namespace foldlab::cli {
+namespace field_command {
+namespace {
+
+using detail::printf_string;
+
+// A designer's cut is a few hundred points at most; far above that is no outline.
+constexpr std::uintmax_t kMaxOutlineFileBytes = 4u << 20;
+
+field::Outline read_outline(const Options& options, const Preset& preset, std::string& name) {
+  try {
+    if (!options.outline_path.empty()) {
+      name = options.outline_path;
+      return field::parse_outline_json(read_text_file(options.outline_path, kMaxOutlineFileBytes));
+    }
+    field::OutlineKind kind = field::outline_kind_of(preset.parameters.shape);
+    if (!options.shape.empty() && !field::parse_outline_kind(options.shape, kind)) {
+      throw InputError("--shape '" + options.shape +
+                       "' is not one of: " + field::outline_kind_names());
+    }
+    name = std::string(field::to_string(kind));
+    return field::make_outline(preset.parameters, kind);
+  } catch (const field::OutlineError& e) {
+    throw InputError(
+        (options.outline_path.empty() ? "" : "--outline " + options.outline_path + ": ") +
+        e.what());
+  } catch (const ReadError& e) {
+    throw InputError(std::string("--outline: ") + e.what());
+  }
+}
+
+std::string share_text(double share) {
+  return printf_string("%.1f %%", 100.0 * share);
+}
+
+}  // namespace
+
+void declare(CLI::App& app, Options& options) {
+  CLI::App* command = app.add_subcommand(
+      "field",
+      "solve the tension field of the hung cloth (Pipkin's relaxed membrane, Newton) and print "
+      "its taut, wrinkled and slack shares, the supports' reactions and the rays beside the "
+      "closed form's cosines");
+  add_input_options(*command, options.inputs);
+  CLI::Option* shape = command->add_option(
+      "--shape", options.shape,
+      "the cut: " + field::outline_kind_names() + " (default: the preset's shape)");
+  command
+      ->add_option("--outline", options.outline_path,
+                   "a cut of your own: JSON {\"top\": [[x, y], ...], \"bottom\": [[x, y], "
+                   "...], \"supports\": [{\"at\": [X, Y], \"to\": [x, y]}, ...]}, mm, y down")
+      ->check(app::non_empty_path())
+      ->excludes(shape);
+  command->add_option("--cells-x", options.cells_x, "mesh cells across the cut (default 40)")
+      ->transform(app::whole_number_in(1, 2000));
+  command->add_option("--cells-y", options.cells_y, "mesh cells down the cut (default 28)")
+      ->transform(app::whole_number_in(1, 2000));
+  command
+      ->add_option("--split", options.split,
+                   "how a cell is cut into triangles: uniform, union-jack, crossed")
+      ->check(app::one_of("split", {"uniform", "union-jack", "crossed"}));
+  command->add_option("--rays", options.rays, "rays traced from the centre line (default 8)")
+      ->transform(app::whole_number_in(0, 100));
+  command->add_flag("--json", options.json, "print one JSON object instead of text");
+}
+
+Result run(const Options& options) {
+  Result r;
+  r.preset = app::resolve_named_inputs(options.inputs);
+  r.outline = read_outline(options, r.preset, r.outline_name);
+  r.resolution.cells_x = options.cells_x;
+  r.resolution.cells_y = options.cells_y;
+  field::parse_mesh_split(options.split, r.resolution.split);
+  try {
+    field::Solver solver(field::make_mesh(r.outline, r.resolution));
+    r.nodes = static_cast<int>(solver.mesh().nodes_mm.size());
+    r.triangles = static_cast<int>(solver.mesh().triangles.size());
+    const field::Material material = field::material_of(r.preset.parameters.fabric);
+    field::Solution solution = field::solve_cold(solver, r.outline, material, r.resolution);
+    r.report = field::report_field(solver, std::move(solution), r.outline, material, options.rays);
+  } catch (const field::OutlineError& e) {
+    throw InputError(e.what());
+  }
+  return r;
+}
+
+void print_text(const Result& r, std::ostream& out) {
+  const field::Solution& s = r.report.solution;
+  out << "Tension field of " << r.preset.name << "\n";
+  out << "cut: " << r.outline_name << ", mesh " << r.resolution.cells_x << " x "
+      << r.resolution.cells_y << " cells (" << field::to_string(r.resolution.split) << "), "
+      << r.nodes << " nodes, " << r.triangles << " triangles\n";
+  out << (s.converged ? "converged" : "NOT converged: the field below is the last iterate")
+      << printf_string(": relative force residual %.2e after %d Newton iterations, %.1f ms\n",
+                       s.relative_residual, s.iterations, s.solve_ms);
+  out << printf_string("weight: %.6g N\n", s.weight_N);
+  out << "regions (share of the cloth's area): taut " << share_text(s.taut_share);
+  out << ", wrinkled " << share_text(s.wrinkled_share);
+  out << ", slack " << share_text(s.slack_share);
+  if (s.folded_share > 0.0) {
+    out << "; turned over " << share_text(s.folded_share);
+  }
+  out << " (single slack triangles between tensed ones count with their neighbours; "
+      << share_text(s.element_slack_share) << " of the area is in triangles slack on their own)\n";
+  out << "supports (the force each exerts on the cloth; x right, y down):\n";
+  for (std::size_t i = 0; i < r.outline.supports.size(); ++i) {
+    const field::Support& sup = r.outline.supports[i];
+    out << printf_string(
+        "  %zu: at (%.1f, %.1f) mm, pinned at (%.1f, %.1f) mm: horizontal %+.6g N, vertical "
+        "%+.6g N\n",
+        i + 1, sup.at_mm.x(), sup.at_mm.y(), sup.to_mm.x(), sup.to_mm.y(), s.reactions_N[i].x(),
+        s.reactions_N[i].y());
+  }
+  if (r.report.span_mm > 0.0) {
+    out << printf_string("thrust H: %.6g N; the cosine pencil through the supports: %.6g N",
+                         r.report.thrust_N, r.report.pencil_thrust_N);
+    out << printf_string(" (l = %.1f mm, a_n = %.1f mm, a_0 = %.1f mm at the centre)\n",
+                         r.report.span_mm, r.report.centre_top_depth_mm,
+                         r.report.centre_bottom_depth_mm);
+  }
+  if (!r.report.rays.empty()) {
+    out << "rays from the centre line, each beside the cosine a cos(pi x / l) fitted to it:\n";
+    for (const field::Ray& ray : r.report.rays) {
+      out << printf_string("  at depth %.1f mm: fitted a = %.1f mm, rms distance %.1f mm\n",
+                           ray.depth_mm, ray.fitted_amplitude_mm, ray.fit_rms_mm);
+    }
+  }
+}
+
+nlohmann::json print_json(const Result& r) {
+  const field::Solution& s = r.report.solution;
+  nlohmann::json out;
+  out["preset"] = r.preset.name;
+  out["outline"] = r.outline_name;
+  out["mesh"] = {{"cells_x", r.resolution.cells_x},
+                 {"cells_y", r.resolution.cells_y},
+                 {"split", std::string(field::to_string(r.resolution.split))},
+                 {"nodes", r.nodes},
+                 {"triangles", r.triangles}};
+  out["converged"] = s.converged;
+  out["relative_residual"] = s.relative_residual;
+  out["iterations"] = s.iterations;
+  out["solve_ms"] = s.solve_ms;
+  out["weight_N"] = s.weight_N;
+  out["supports"] = nlohmann::json::array();
+  for (std::size_t i = 0; i < r.outline.supports.size(); ++i) {
+    const field::Support& sup = r.outline.supports[i];
+    out["supports"].push_back({{"at_mm", {sup.at_mm.x(), sup.at_mm.y()}},
+                               {"to_mm", {sup.to_mm.x(), sup.to_mm.y()}},
+                               {"reaction_N", {s.reactions_N[i].x(), s.reactions_N[i].y()}}});
+  }
+  out["regions"] = {{"taut", s.taut_share},
+                    {"wrinkled", s.wrinkled_share},
+                    {"slack", s.slack_share},
+                    {"turned_over", s.folded_share},
+                    {"slack_triangles", s.element_slack_share}};
+  out["thrust_N"] = r.report.thrust_N;
+  out["pencil_thrust_N"] = r.report.pencil_thrust_N;
+  out["span_mm"] = r.report.span_mm;
+  out["rays"] = nlohmann::json::array();
+  for (const field::Ray& ray : r.report.rays) {
+    out["rays"].push_back({{"a_mm", ray.depth_mm},
+                           {"fitted_a_mm", ray.fitted_amplitude_mm},
+                           {"fit_rms_mm", ray.fit_rms_mm}});
+  }
+  return out;
+}
+
+int execute(const Options& options) {
+  const Result result = run(options);
+  if (options.json) {
+    write_json(print_json(result), std::cout);
+  } else {
+    print_text(result, std::cout);
+  }
+  return result.report.solution.converged ? kExitOk : kExitInternal;
+}
+
+}  // namespace field_command
+
+Command add_field_command(CLI::App& app) {
+  return make_command(app, field_command::declare, field_command::execute);
+}
+
+}  // namespace foldlab::cli

@@ -1,0 +1,47 @@
+// `foldlab field`: the tension field of one hung cloth, solved and printed as text or JSON — the
+// regions' shares, each support's reaction, the weight, the rays beside the closed form's cosines,
+// and how the solve went.
+#pragma once
+
+#include <ostream>
+#include <string>
+
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+
+#include "app/common/inputs.hpp"
+#include "core/field/field_case.hpp"
+#include "core/io/preset.hpp"
+
+namespace foldlab::cli::field_command {
+
+struct Options {
+  app::InputOptions inputs;
+  std::string shape;         // empty: the preset's shape
+  std::string outline_path;  // a designer's cut (JSON); replaces the shape
+  int cells_x = field::MeshResolution{}.cells_x;
+  int cells_y = field::MeshResolution{}.cells_y;
+  std::string split = std::string(field::to_string(field::MeshResolution{}.split));
+  int rays = field::kDefaultRayCount;
+  bool json = false;
+};
+
+struct Result {
+  Preset preset;
+  std::string outline_name;  // the shape's name or the outline file
+  field::Outline outline;
+  field::MeshResolution resolution;
+  int nodes = 0;
+  int triangles = 0;
+  field::FieldReport report;
+};
+
+void declare(CLI::App& app, Options& options);
+// Throws app::InputError for inputs, a shape or an outline the solver refuses.
+Result run(const Options& options);
+void print_text(const Result& result, std::ostream& out);
+nlohmann::json print_json(const Result& result);
+// Exit 0 when the field converged, 1 when it did not (printed all the same, marked so).
+int execute(const Options& options);
+
+}  // namespace foldlab::cli::field_command

@@ -1,0 +1,95 @@
+#include "core/field/field_case.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace foldlab::field {
+
+std::vector<Eigen::Vector2d> support_targets(const Outline& outline) {
+  std::vector<Eigen::Vector2d> out;
+  for (const Support& s : outline.supports) {
+    out.push_back(s.to_mm);
+  }
+  return out;
+}
+
+Solution transferred_start(const Mesh& from, const Solution& solved, const Mesh& to) {
+  Solution start;
+  start.positions_mm.reserve(to.nodes_mm.size());
+  for (const Eigen::Vector2d& p : to.nodes_mm) {
+    Eigen::Vector2d q = hung_position(from, solved, p);
+    if (!std::isfinite(q.x())) {
+      std::size_t nearest = 0;
+      for (std::size_t n = 1; n < from.nodes_mm.size(); ++n) {
+        if ((from.nodes_mm[n] - p).squaredNorm() < (from.nodes_mm[nearest] - p).squaredNorm()) {
+          nearest = n;
+        }
+      }
+      q = p + (solved.positions_mm[nearest] - from.nodes_mm[nearest]);
+    }
+    start.positions_mm.push_back(q);
+  }
+  return start;
+}
+
+Solution solve_cold(Solver& solver, const Outline& outline, const Material& material,
+                    const MeshResolution& resolution, const SolveOptions& options) {
+  const std::vector<Eigen::Vector2d> targets = support_targets(outline);
+  if (resolution.cells_x < 16 || resolution.cells_y < 4) {
+    return solver.solve(material, targets, options);
+  }
+  MeshResolution coarse = resolution;
+  coarse.cells_x = resolution.cells_x / 2;
+  coarse.cells_y = std::max(2, resolution.cells_y / 2);
+  Solver coarse_solver(make_mesh(outline, coarse));
+  const Solution coarse_solution = solve_cold(coarse_solver, outline, material, coarse, options);
+  const Solution start = transferred_start(coarse_solver.mesh(), coarse_solution, solver.mesh());
+  Solution fine = solver.solve(material, targets, options, &start);
+  fine.solve_ms += coarse_solution.solve_ms;
+  fine.iterations += coarse_solution.iterations;
+  return fine;
+}
+
+FieldReport report_field(const Solver& solver, Solution solution, const Outline& outline,
+                         const Material& material, int ray_count) {
+  FieldReport r;
+  const std::vector<Eigen::Vector2d> targets = support_targets(outline);
+  r.rays = trace_rays(solver.mesh(), solution, targets, ray_count);
+  if (targets.size() >= 2) {
+    const SupportFrame frame = support_frame(targets);
+    r.span_mm = frame.span_mm();
+    int left = 0;
+    int right = 0;
+    for (std::size_t i = 0; i < targets.size(); ++i) {
+      if (targets[i].x() < targets[left].x())
+        left = static_cast<int>(i);
+      if (targets[i].x() > targets[right].x())
+        right = static_cast<int>(i);
+    }
+    r.thrust_N = 0.5 * (std::abs(solution.reactions_N[left].x()) +
+                        std::abs(solution.reactions_N[right].x()));
+    const CentreLine centre = centre_line(solver.mesh(), solution, targets);
+    if (!centre.depth_mm.empty()) {
+      r.centre_top_depth_mm = centre.depth_mm.front();
+      r.centre_bottom_depth_mm = centre.depth_mm.back();
+      if (r.centre_top_depth_mm > 0.0 && r.centre_bottom_depth_mm > r.centre_top_depth_mm) {
+        r.pencil_thrust_N = material.weight_N_per_mm2 * r.span_mm * r.span_mm /
+                            (std::numbers::pi * std::numbers::pi) *
+                            std::log(r.centre_bottom_depth_mm / r.centre_top_depth_mm);
+      }
+    }
+  }
+  r.solution = std::move(solution);
+  return r;
+}
+
+FieldReport solve_outline(const Outline& outline, const Material& material,
+                          const MeshResolution& resolution, const SolveOptions& options,
+                          int ray_count) {
+  Solver solver(make_mesh(outline, resolution));
+  Solution solution = solve_cold(solver, outline, material, resolution, options);
+  return report_field(solver, std::move(solution), outline, material, ray_count);
+}
+
+}  // namespace foldlab::field

@@ -1,0 +1,82 @@
+// The flat cut of a hung cloth for the tension-field solver: its top and bottom edges (each a
+// polyline monotone in x, y down, mm) and its supports (material points of the cut and where each
+// is pinned). Every outline of the paper's Figs. 1-2 is built here from the model's inputs; a
+// designer's own cut is read from JSON. Anything that cannot be meshed is refused with an
+// OutlineError whose message names what is wrong.
+#pragma once
+
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "core/model/parameters.hpp"
+
+namespace foldlab::field {
+
+class OutlineError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+struct Support {
+  Eigen::Vector2d at_mm;  // the material point on the flat cut
+  Eigen::Vector2d to_mm;  // where it is pinned in the hung state
+
+  bool operator==(const Support&) const = default;
+};
+
+struct Outline {
+  std::vector<Eigen::Vector2d> top_mm;     // left to right, x never decreasing
+  std::vector<Eigen::Vector2d> bottom_mm;  // left to right, from the same first x to the same last
+  std::vector<Support> supports;
+
+  // y of an edge at x (x within the outline's range), the last of equal-x vertices for a step.
+  double top_y_mm(double x_mm) const;
+  double bottom_y_mm(double x_mm) const;
+  double left_mm() const { return top_mm.front().x(); }
+  double right_mm() const { return top_mm.back().x(); }
+  double area_mm2() const;
+};
+
+// The outlines the field command offers: the project's shapes and the paper's further cuts.
+enum class OutlineKind {
+  rectangular,  // Conci's set-up: an L x h rectangle hung from its top corners moved in by d
+  cosine,       // Mansfield's: between a_n cos(pi X / L) and a_0 cos(pi X / L), hung from its ends
+  strip,        // k - 1 rectangles side by side, hung from k points of the top edge
+  inclined,     // the rectangle sheared so that its right support is higher by l tan(incline)
+  triangle,     // a triangle, point down, hung from its two top corners
+  pennant,      // a right triangle, its long side vertical at the left, hung from its top corners
+};
+
+std::string_view to_string(OutlineKind k);
+bool parse_outline_kind(std::string_view s, OutlineKind& out);
+// "rectangular, cosine, ..." for help texts and refusals.
+std::string outline_kind_names();
+// The field's outline for one of the project's shapes.
+OutlineKind outline_kind_of(const Shape& shape);
+
+// The cosine outline's edges at the centre: a_0 = h + a_n below the supports' line and
+// a_n = h / 100 (the paper's starting a_n): the cut is h tall at its centre like the others.
+double cosine_top_depth_mm(const Parameters& p);
+double cosine_bottom_depth_mm(const Parameters& p);
+
+// The cut with its supports for the model's inputs: h, L, d with the span rule of the model
+// (l from span_mm), the strip's k and the incline from the shape.
+Outline make_outline(const Parameters& p, OutlineKind kind);
+
+inline constexpr int kMaxOutlineVertices = 10000;
+
+// Reads {"top": [[x, y], ...], "bottom": [[x, y], ...], "supports": [{"at": [X, Y], "to": [x,
+// y]}, ...]} in mm, y down. Throws OutlineError naming what is wrong.
+Outline parse_outline_json(std::string_view text);
+
+// Throws OutlineError unless the outline can be meshed: at least two vertices per edge, each edge
+// monotone in x, both edges over the same x range, the bottom never above the top, at most
+// kMaxOutlineVertices vertices, at least one support, each support on the top or bottom edge (or
+// an end), no two supports at one point, every number finite.
+void check_outline(const Outline& outline);
+
+}  // namespace foldlab::field

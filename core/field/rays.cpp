@@ -1,0 +1,196 @@
+#include "core/field/rays.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+namespace foldlab::field {
+namespace {
+
+using Eigen::Vector2d;
+
+const Vector2d kOutside(std::numeric_limits<double>::quiet_NaN(),
+                        std::numeric_limits<double>::quiet_NaN());
+
+// One way along the ray from the flat point `from`, starting along `heading`: the flat points.
+std::vector<Vector2d> trace_one_way(const Mesh& mesh, const Solution& solution, Vector2d from,
+                                    Vector2d heading, double step_mm, int max_steps) {
+  std::vector<Vector2d> points;
+  Vector2d p = from;
+  for (int i = 0; i < max_steps; ++i) {
+    const int t = mesh.locate(p);
+    if (t < 0) {
+      break;
+    }
+    // A slack triangle has no ray: keep the heading through it.
+    if (solution.triangles[t].state != State::slack) {
+      Vector2d v = solution.triangles[t].flat_direction;
+      heading = v.dot(heading) < 0.0 ? Vector2d(-v) : v;
+    }
+    for (int s : mesh.support_nodes) {
+      if ((mesh.nodes_mm[s] - p).norm() < step_mm) {
+        points.push_back(mesh.nodes_mm[s]);
+        return points;
+      }
+    }
+    // Midpoint rule: the heading at half a step ahead, where the field may have turned.
+    const int half = mesh.locate(p + 0.5 * step_mm * heading);
+    if (half >= 0 && solution.triangles[half].state != State::slack) {
+      const Vector2d v = solution.triangles[half].flat_direction;
+      heading = v.dot(heading) < 0.0 ? Vector2d(-v) : v;
+    }
+    p += step_mm * heading;
+    points.push_back(p);
+  }
+  if (!points.empty() && mesh.locate(points.back()) < 0) {
+    points.pop_back();
+  }
+  return points;
+}
+
+}  // namespace
+
+double SupportFrame::depth_mm(const Vector2d& p) const {
+  const double s = (p.x() - left_mm.x()) / span_mm();
+  return p.y() - (left_mm.y() + s * (right_mm.y() - left_mm.y()));
+}
+
+SupportFrame support_frame(const std::vector<Vector2d>& targets) {
+  SupportFrame f{targets.front(), targets.front()};
+  for (const Vector2d& t : targets) {
+    if (t.x() < f.left_mm.x())
+      f.left_mm = t;
+    if (t.x() > f.right_mm.x())
+      f.right_mm = t;
+  }
+  return f;
+}
+
+Vector2d hung_position(const Mesh& mesh, const Solution& solution, const Vector2d& p) {
+  const int t = mesh.locate(p);
+  if (t < 0) {
+    return kOutside;
+  }
+  const Eigen::Vector3d b = mesh.barycentric(t, p);
+  const auto& tri = mesh.triangles[t];
+  return b[0] * solution.positions_mm[tri[0]] + b[1] * solution.positions_mm[tri[1]] +
+         b[2] * solution.positions_mm[tri[2]];
+}
+
+CentreLine centre_line(const Mesh& mesh, const Solution& solution,
+                       const std::vector<Vector2d>& targets) {
+  CentreLine out;
+  if (targets.size() < 2 || !(support_frame(targets).span_mm() > 0.0)) {
+    return out;
+  }
+  const SupportFrame frame = support_frame(targets);
+  // The flat centre column: the flat point midway between the outermost supports' columns.
+  double left_X = std::numeric_limits<double>::infinity();
+  double right_X = -left_X;
+  for (int s : mesh.support_nodes) {
+    left_X = std::min(left_X, mesh.nodes_mm[s].x());
+    right_X = std::max(right_X, mesh.nodes_mm[s].x());
+  }
+  const double centre_X = 0.5 * (left_X + right_X);
+  double top = std::numeric_limits<double>::infinity();
+  double bottom = -top;
+  for (const Vector2d& n : mesh.nodes_mm) {
+    top = std::min(top, n.y());
+    bottom = std::max(bottom, n.y());
+  }
+  // Samples down the flat centre column with their hung depths.
+  const int samples = 2000;
+  for (int i = 0; i <= samples; ++i) {
+    const Vector2d p(centre_X, top + (bottom - top) * i / samples);
+    const Vector2d q = hung_position(mesh, solution, p);
+    if (std::isfinite(q.x())) {
+      out.flat_mm.push_back(p);
+      out.depth_mm.push_back(frame.depth_mm(q));
+    }
+  }
+  return out;
+}
+
+std::vector<Ray> trace_rays(const Mesh& mesh, const Solution& solution,
+                            const std::vector<Vector2d>& targets, int count) {
+  std::vector<Ray> rays;
+  if (targets.size() < 2 || count < 1) {
+    return rays;
+  }
+  const SupportFrame frame = support_frame(targets);
+  if (!(frame.span_mm() > 0.0)) {
+    return rays;
+  }
+  const CentreLine centre = centre_line(mesh, solution, targets);
+  const std::vector<Vector2d>& flat = centre.flat_mm;
+  const std::vector<double>& depth = centre.depth_mm;
+  if (flat.size() < 2) {
+    return rays;
+  }
+  double top = std::numeric_limits<double>::infinity();
+  double bottom = -top;
+  for (const Vector2d& n : mesh.nodes_mm) {
+    top = std::min(top, n.y());
+    bottom = std::max(bottom, n.y());
+  }
+  double area = 0.0;
+  for (const auto& tri : mesh.triangles) {
+    const Vector2d u = mesh.nodes_mm[tri[1]] - mesh.nodes_mm[tri[0]];
+    const Vector2d v = mesh.nodes_mm[tri[2]] - mesh.nodes_mm[tri[0]];
+    area += 0.5 * std::abs(u.x() * v.y() - u.y() * v.x());
+  }
+  const double step_mm = 0.3 * std::sqrt(2.0 * area / static_cast<double>(mesh.triangles.size()));
+  const double width = mesh.column_x_mm.back() - mesh.column_x_mm.front();
+  const int max_steps = static_cast<int>(4.0 * (width + bottom - top) / step_mm);
+  const double a_top = depth.front();
+  const double a_bottom = depth.back();
+  for (int k = 1; k <= count; ++k) {
+    const double a = a_top + (a_bottom - a_top) * k / (count + 1);
+    std::size_t i = 1;
+    while (i + 1 < depth.size() && (depth[i] - a) * (depth[i - 1] - a) > 0.0) {
+      ++i;
+    }
+    const double span = depth[i] - depth[i - 1];
+    const double s = span != 0.0 ? std::clamp((a - depth[i - 1]) / span, 0.0, 1.0) : 0.0;
+    const Vector2d start = flat[i - 1] + s * (flat[i] - flat[i - 1]);
+    std::vector<Vector2d> left =
+        trace_one_way(mesh, solution, start, Vector2d(-1.0, 0.0), step_mm, max_steps);
+    const std::vector<Vector2d> right =
+        trace_one_way(mesh, solution, start, Vector2d(1.0, 0.0), step_mm, max_steps);
+    std::reverse(left.begin(), left.end());
+    left.push_back(start);
+    left.insert(left.end(), right.begin(), right.end());
+    Ray ray;
+    ray.depth_mm = a;
+    double yc = 0.0;
+    double cc = 0.0;
+    std::vector<std::pair<double, double>> fitted;
+    for (const Vector2d& p : left) {
+      const Vector2d q = hung_position(mesh, solution, p);
+      if (!std::isfinite(q.x())) {
+        continue;
+      }
+      ray.points_mm.push_back(q);
+      const double x = frame.x_mm(q);
+      if (std::abs(x) <= 0.5 * frame.span_mm()) {
+        const double c = std::cos(std::numbers::pi * x / frame.span_mm());
+        const double y = frame.depth_mm(q);
+        yc += y * c;
+        cc += c * c;
+        fitted.emplace_back(y, c);
+      }
+    }
+    ray.fitted_amplitude_mm = cc > 0.0 ? yc / cc : 0.0;
+    double squares = 0.0;
+    for (const auto& [y, c] : fitted) {
+      squares += std::pow(y - ray.fitted_amplitude_mm * c, 2);
+    }
+    ray.fitted_points = static_cast<int>(fitted.size());
+    ray.fit_rms_mm = fitted.empty() ? 0.0 : std::sqrt(squares / static_cast<double>(fitted.size()));
+    rays.push_back(std::move(ray));
+  }
+  return rays;
+}
+
+}  // namespace foldlab::field

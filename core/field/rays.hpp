@@ -1,0 +1,49 @@
+// Tension rays: streamlines of the larger principal tension, traced on the flat cut (where the
+// mesh is never folded) and carried to the hung cloth, and the closed form's cosine fitted to each.
+#pragma once
+
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "core/field/solver.hpp"
+
+namespace foldlab::field {
+
+// The hung frame the closed form is written in: x from the middle between the outermost
+// supports, y down from the straight line through them, l the horizontal distance between them.
+struct SupportFrame {
+  Eigen::Vector2d left_mm;
+  Eigen::Vector2d right_mm;
+  double span_mm() const { return right_mm.x() - left_mm.x(); }
+  double x_mm(const Eigen::Vector2d& p) const { return p.x() - 0.5 * (left_mm.x() + right_mm.x()); }
+  double depth_mm(const Eigen::Vector2d& p) const;
+};
+SupportFrame support_frame(const std::vector<Eigen::Vector2d>& targets_mm);
+
+struct Ray {
+  double depth_mm = 0.0;  // a: where it crosses the centre line, below the supports' line
+  double fitted_amplitude_mm = 0.0;        // of the cosine a cos(pi x / l) closest to it
+  double fit_rms_mm = 0.0;                 // rms distance of the ray's points from that cosine
+  int fitted_points = 0;                   // points between the supports (the fit's)
+  std::vector<Eigen::Vector2d> points_mm;  // hung, from one end to the other
+};
+
+// The hung position of the flat point p, nullopt-like (NaN) outside the cut.
+Eigen::Vector2d hung_position(const Mesh& mesh, const Solution& solution, const Eigen::Vector2d& p);
+
+// The flat column midway between the outermost supports, sampled from top to bottom, with the
+// hung depth of each sample below the supports' line.
+struct CentreLine {
+  std::vector<Eigen::Vector2d> flat_mm;
+  std::vector<double> depth_mm;
+};
+CentreLine centre_line(const Mesh& mesh, const Solution& solution,
+                       const std::vector<Eigen::Vector2d>& targets_mm);
+
+// `count` rays through the centre line at depths evenly spaced strictly between its top and
+// bottom (hung); a ray is traced both ways until it leaves the cut or reaches a support.
+std::vector<Ray> trace_rays(const Mesh& mesh, const Solution& solution,
+                            const std::vector<Eigen::Vector2d>& targets_mm, int count);
+
+}  // namespace foldlab::field

@@ -1,0 +1,439 @@
+// The tension-field solver against what is exact: a homogeneous shear (every triangle's strain,
+// state, ray and stress in closed form), a sheet hung from its whole top edge (the weight below
+// carried straight up), statics for every outline, refinement, and Mansfield's cosine pencil
+// beside the solver's thrust (reported, not asserted: the pencil is an equilibrium, not the
+// elastic answer).
+#include <algorithm>
+#include <cmath>
+#include <iostream>
+#include <numbers>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "core/field/field_case.hpp"
+#include "core/field/mesh.hpp"
+#include "core/field/outline.hpp"
+#include "core/field/solver.hpp"
+
+namespace foldlab::field {
+namespace {
+
+using Eigen::Vector2d;
+
+// A W x H rectangle on an nx x ny grid with a support at every boundary node, each pinned
+// where `map` puts it.
+template <class Map>
+Outline pinned_rectangle(double W, double H, int nx, int ny, Map map) {
+  Outline o;
+  o.top_mm = {{0.0, 0.0}, {W, 0.0}};
+  o.bottom_mm = {{0.0, H}, {W, H}};
+  for (int i = 0; i <= nx; ++i) {
+    for (int j = 0; j <= ny; ++j) {
+      if (i == 0 || i == nx || j == 0 || j == ny) {
+        const Vector2d at(W * i / nx, H * j / ny);
+        o.supports.push_back({at, map(at)});
+      }
+    }
+  }
+  return o;
+}
+
+// Simple shear x -> x + gamma y, no weight: F = [[1, gamma], [0, 1]], so the Green strain is
+// E = 1/2 [[0, gamma], [gamma, gamma²]] everywhere. By hand: e = gamma²/4 +- (gamma/2)
+// sqrt(1 + gamma²/4); the larger one's direction on the flat cut at angle 1/2 atan2(gamma,
+// -gamma²/2); wrinkled when e2 <= -nu e1; then S = Y e1 v1 v1^T and the nominal stress P = F S.
+TEST(FieldPatch, HomogeneousShearIsReproducedToRoundOff) {
+  const double gamma = 0.1;
+  const double W = 120.0;
+  const double H = 80.0;
+  const int nx = 6;
+  const int ny = 4;
+  const Outline outline = pinned_rectangle(
+      W, H, nx, ny, [&](const Vector2d& p) { return Vector2d(p.x() + gamma * p.y(), p.y()); });
+  const Material material{40.0, 0.3, 0.0};
+  for (MeshSplit split : {MeshSplit::uniform, MeshSplit::union_jack, MeshSplit::crossed}) {
+    SCOPED_TRACE(std::string(to_string(split)));
+    const Mesh mesh = make_mesh(outline, {nx, ny, split});
+    Solver solver(mesh);
+    SolveOptions tight;
+    tight.relative_tolerance = 1e-13;
+    const Solution s = solver.solve(material, support_targets(outline), tight);
+    ASSERT_TRUE(s.converged) << s.relative_residual;
+
+    const double e1 = gamma * gamma / 4 + gamma / 2 * std::sqrt(1 + gamma * gamma / 4);
+    const double e2 = gamma * gamma / 4 - gamma / 2 * std::sqrt(1 + gamma * gamma / 4);
+    ASSERT_LE(e2, -material.poisson_ratio * e1);  // wrinkled by the table
+    const double angle = 0.5 * std::atan2(gamma, -gamma * gamma / 2);
+    const Vector2d v1(std::cos(angle), std::sin(angle));
+    Eigen::Matrix2d F;
+    F << 1, gamma, 0, 1;
+    const Eigen::Matrix2d P = F * (material.stiffness_N_per_mm * e1 * v1 * v1.transpose());
+    const Vector2d hung = (F * v1).normalized();
+    for (std::size_t n = 0; n < mesh.nodes_mm.size(); ++n) {
+      const Vector2d& X = mesh.nodes_mm[n];
+      EXPECT_NEAR((s.positions_mm[n] - Vector2d(X.x() + gamma * X.y(), X.y())).norm(), 0.0,
+                  1e-9 * W);
+    }
+    for (const TriangleResult& t : s.triangles) {
+      EXPECT_EQ(t.state, State::wrinkled);
+      EXPECT_NEAR(t.tension_N_per_mm, material.stiffness_N_per_mm * e1 * std::sqrt(1 + 2 * e1),
+                  1e-10);
+      EXPECT_NEAR(std::abs(t.flat_direction.dot(v1)), 1.0, 1e-12);
+      EXPECT_NEAR(std::abs(t.direction.dot(hung)), 1.0, 1e-12);
+      EXPECT_NEAR(t.slack_strain, -(e2 + material.poisson_ratio * e1), 1e-12);
+    }
+    // A node inside an edge takes the traction on its share of the edge: R = P n * spacing,
+    // with n the outward normal (y is down: the top edge's is (0, -1)).
+    for (std::size_t i = 0; i < outline.supports.size(); ++i) {
+      const Vector2d at = outline.supports[i].at_mm;
+      const bool top = at.y() == 0.0 && at.x() > 0.0 && at.x() < W;
+      const bool right = at.x() == W && at.y() > 0.0 && at.y() < H;
+      if (top) {
+        const Vector2d expected = P * Vector2d(0, -1) * (W / nx);
+        EXPECT_NEAR((s.reactions_N[i] - expected).norm(), 0.0, 1e-10 * expected.norm());
+      }
+      if (right) {
+        const Vector2d expected = P * Vector2d(1, 0) * (H / ny);
+        EXPECT_NEAR((s.reactions_N[i] - expected).norm(), 0.0, 1e-10 * expected.norm());
+      }
+    }
+  }
+}
+
+// A sheet hung from every node of its top edge: below the top, each horizontal cut carries the
+// weight under it, T_yy = w (h - Y), and each top support away from the corners carries the
+// column of cloth under its share of the edge, w h per unit length. The latter is tension field
+// theory's statement (no stress across the fibres): with nu > 0 the pinned top restrains the
+// cloth's Poisson contraction, and the shear this sets up hands a share of the weight towards the
+// corners over a length of the order of the width, so it is asserted for nu = 0 and reported
+// for nu = 0.3.
+TEST(FieldHungSheet, CarriesTheWeightBelowStraightUp) {
+  const double L = 1200.0;
+  const double h = 300.0;
+  const int nx = 60;
+  const int ny = 30;
+  Outline o;
+  o.top_mm = {{-0.5 * L, 0.0}, {0.5 * L, 0.0}};
+  o.bottom_mm = {{-0.5 * L, h}, {0.5 * L, h}};
+  for (int i = 0; i <= nx; ++i) {
+    const Vector2d at(-0.5 * L + L * i / nx, 0.0);
+    o.supports.push_back({at, at});
+  }
+  const Mesh mesh = make_mesh(o, {nx, ny, MeshSplit::union_jack});
+  Solver solver(mesh);
+  for (double nu : {0.0, 0.3}) {
+    SCOPED_TRACE(nu);
+    const Material material{41.25, nu, 1.5e-6};
+    const Solution s = solver.solve(material, support_targets(o));
+    ASSERT_TRUE(s.converged) << s.relative_residual;
+    int checked = 0;
+    for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+      Vector2d centroid = Vector2d::Zero();
+      for (int n : mesh.triangles[t]) {
+        centroid += mesh.nodes_mm[n] / 3.0;
+      }
+      if (std::abs(centroid.x()) > 0.25 * L || centroid.y() < 0.35 * h || centroid.y() > 0.85 * h) {
+        continue;
+      }
+      const double expected = material.weight_N_per_mm2 * (h - centroid.y());
+      EXPECT_NEAR(s.triangles[t].tension_N_per_mm, expected, 0.01 * expected)
+          << centroid.transpose();
+      // Near the taut/wrinkled border (T_xx about 0) the direction is sensitive: within 6 degrees.
+      EXPECT_GT(std::abs(s.triangles[t].direction.y()), std::cos(6.0 * std::numbers::pi / 180.0));
+      ++checked;
+    }
+    EXPECT_GT(checked, 50);
+    const double per_support = material.weight_N_per_mm2 * h * (L / nx);
+    double lowest = 1e300;
+    double highest = 0.0;
+    for (std::size_t i = 0; i < o.supports.size(); ++i) {
+      if (std::abs(o.supports[i].at_mm.x()) <= 0.25 * L) {
+        const double share = -s.reactions_N[i].y() / per_support;
+        lowest = std::min(lowest, share);
+        highest = std::max(highest, share);
+        if (nu == 0.0) {
+          EXPECT_NEAR(share, 1.0, 0.01);
+        }
+      }
+    }
+    std::cout << "hung sheet, nu = " << nu << ": middle supports take " << lowest << " to "
+              << highest << " of w h per unit length\n";
+  }
+}
+
+Parameters default_parameters() {
+  Parameters p;  // the Table 1 cloth: t = 0.25 mm, E = 165 MPa, w = 1.5e-6 N/mm², 1400 x 1400 mm
+  p.hanging.height_mm = 1400.0;
+  p.hanging.length_mm = 1400.0;
+  p.hanging.support_displacement_mm = 100.0;
+  return p;
+}
+
+// The flat area of each outline by hand, for its weight.
+double outline_area_by_hand(const Parameters& p, OutlineKind kind) {
+  const double h = p.hanging.height_mm;
+  const double L = p.hanging.length_mm;
+  switch (kind) {
+    case OutlineKind::rectangular:
+    case OutlineKind::inclined:
+      return L * h;
+    case OutlineKind::strip:
+      return (p.shape.supports - 1) * L * h;
+    case OutlineKind::cosine:
+      return 2.0 * L * h / std::numbers::pi;  // (a_0 - a_n) times the integral of cos over L
+    case OutlineKind::triangle:
+    case OutlineKind::pennant:
+      return 0.5 * L * h;
+  }
+  return 0.0;
+}
+
+TEST(FieldStatics, ReactionsCarryTheWeightForEveryOutline) {
+  const Parameters p = default_parameters();
+  const Material material = material_of(p.fabric);
+  for (OutlineKind kind : {OutlineKind::rectangular, OutlineKind::cosine, OutlineKind::strip,
+                           OutlineKind::inclined, OutlineKind::triangle, OutlineKind::pennant}) {
+    SCOPED_TRACE(std::string(to_string(kind)));
+    const Outline outline = make_outline(p, kind);
+    const FieldReport r = solve_outline(outline, material, {16, 12, MeshSplit::union_jack});
+    ASSERT_TRUE(r.solution.converged) << r.solution.relative_residual;
+    const double weight = material.weight_N_per_mm2 * outline_area_by_hand(p, kind);
+    // The cosine's edges are chords between 16 columns: the trapezoid rule's (pi/16)² / 12 = 0.32 %
+    // below the cut's area.
+    EXPECT_NEAR(r.solution.weight_N, weight, (kind == OutlineKind::cosine ? 4e-3 : 1e-12) * weight);
+    Vector2d sum = Vector2d::Zero();
+    for (const Vector2d& R : r.solution.reactions_N) {
+      sum += R;
+    }
+    EXPECT_NEAR(sum.x(), 0.0, 1e-6 * r.solution.weight_N);
+    EXPECT_NEAR(sum.y(), -r.solution.weight_N, 1e-6 * r.solution.weight_N);
+  }
+}
+
+// Moments about the middle between supports at (-l/2, s) and (l/2, -s), s = (l/2) tan(theta):
+// l (V_L - V_R) / 2 + 2 s H + x_g W = 0, with the reactions (-H, -V_L), (H, -V_R) and the hung
+// cloth's centre of gravity at x_g. So V_R - V_L = 2 H tan(theta) + 2 x_g W / l: exactly
+// Mansfield's 2 H tan(theta) when the cloth hangs with its weight midway.
+TEST(FieldStatics, InclinedSupportsDifferByTwiceTheThrustTimesTheSlope) {
+  Parameters p = default_parameters();
+  p.shape.kind = ShapeKind::inclined;
+  p.shape.incline_deg = 15.0;
+  const Material material = material_of(p.fabric);
+  const Outline outline = make_outline(p, OutlineKind::inclined);
+  const Mesh mesh = make_mesh(outline, {20, 14, MeshSplit::union_jack});
+  Solver solver(mesh);
+  const Solution s = solver.solve(material, support_targets(outline));
+  ASSERT_TRUE(s.converged);
+  const double tan_theta = std::tan(15.0 * std::numbers::pi / 180.0);
+  const double l = outline.supports[1].to_mm.x() - outline.supports[0].to_mm.x();
+  // The centre of gravity from the nodes' shares of the flat area, a third of each triangle.
+  double moment = 0.0;
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+    const auto& tri = mesh.triangles[t];
+    const Vector2d u = mesh.nodes_mm[tri[1]] - mesh.nodes_mm[tri[0]];
+    const Vector2d v = mesh.nodes_mm[tri[2]] - mesh.nodes_mm[tri[0]];
+    const double area = 0.5 * (u.x() * v.y() - u.y() * v.x());
+    for (int n : tri) {
+      moment += material.weight_N_per_mm2 * area / 3.0 * s.positions_mm[n].x();
+    }
+  }
+  const double x_g = moment / s.weight_N;
+  const double H = 0.5 * (s.reactions_N[1].x() - s.reactions_N[0].x());
+  const double V_L = -s.reactions_N[0].y();
+  const double V_R = -s.reactions_N[1].y();
+  EXPECT_NEAR(V_R - V_L, 2 * H * tan_theta + 2 * x_g * s.weight_N / l, 1e-6 * s.weight_N);
+  std::cout << "inclined 15 deg: V_R - V_L = " << V_R - V_L << " N, 2 H tan = " << 2 * H * tan_theta
+            << " N, x_g = " << x_g << " mm\n";
+  EXPECT_GT(V_R, V_L);
+}
+
+// Refinement of Conci's set-up on nested meshes (each cell halved): a conforming refinement can
+// only lower the minimum potential. A point support on an elastic membrane is singular: the
+// fan of rays into it carries T ~ 1/r, so the stretch near it grows like ln(1/h) as the cells
+// shrink, and the potential and the thrust H step by about the same amount at each halving
+// (logarithmic, not a power of h) while the vertical reactions stay W/2 by statics.
+TEST(FieldRefinement, PotentialFallsAndThePointSupportsStepLogarithmically) {
+  const Parameters p = default_parameters();
+  const Material material = material_of(p.fabric);
+  const Outline outline = make_outline(p, OutlineKind::rectangular);
+  std::vector<double> potential;
+  std::vector<double> thrust;
+  for (int n : {10, 20, 40}) {
+    const FieldReport r =
+        solve_outline(outline, material, {n, n * 7 / 10, MeshSplit::union_jack}, {}, 0);
+    ASSERT_TRUE(r.solution.converged) << n;
+    potential.push_back(r.solution.potential_Nmm);
+    thrust.push_back(r.thrust_N);
+    for (const Vector2d& R : r.solution.reactions_N) {
+      EXPECT_NEAR(-R.y(), 0.5 * r.solution.weight_N, 1e-6 * r.solution.weight_N);
+    }
+    std::cout << "cells " << n << ": potential " << r.solution.potential_Nmm << " N mm, H "
+              << r.thrust_N << " N, iterations " << r.solution.iterations << "\n";
+  }
+  EXPECT_LT(potential[1], potential[0]);
+  EXPECT_LT(potential[2], potential[1]);
+  const double potential_steps = (potential[1] - potential[2]) / (potential[0] - potential[1]);
+  const double thrust_steps = (thrust[2] - thrust[1]) / (thrust[1] - thrust[0]);
+  std::cout << "step ratios at each halving: potential " << potential_steps << ", H "
+            << thrust_steps << " (1 is logarithmic, 1/2 first order, 1/4 second)\n";
+  EXPECT_GT(potential_steps, 0.6);
+  EXPECT_LT(potential_steps, 1.6);
+  EXPECT_GT(thrust_steps, 0.6);
+  EXPECT_LT(thrust_steps, 1.6);
+}
+
+// The Newton matrix's damping changes the path, not the field: halving its floor moves nothing.
+TEST(FieldRegularisation, HalvingTheDampingFloorMovesNoFigure) {
+  const Parameters p = default_parameters();
+  const Material material = material_of(p.fabric);
+  const Outline outline = make_outline(p, OutlineKind::rectangular);
+  SolveOptions half;
+  half.damping_floor *= 0.5;
+  const FieldReport a = solve_outline(outline, material, {16, 12, MeshSplit::union_jack});
+  const FieldReport b = solve_outline(outline, material, {16, 12, MeshSplit::union_jack}, half);
+  ASSERT_TRUE(a.solution.converged);
+  ASSERT_TRUE(b.solution.converged);
+  EXPECT_NEAR(a.thrust_N, b.thrust_N, 1e-6 * a.thrust_N);
+  EXPECT_NEAR(a.solution.energy_Nmm, b.solution.energy_Nmm, 1e-6 * a.solution.energy_Nmm);
+  EXPECT_NEAR(a.solution.wrinkled_share, b.solution.wrinkled_share, 1e-9);
+  EXPECT_NEAR(a.solution.slack_share, b.solution.slack_share, 1e-9);
+}
+
+// A warm re-solve (from the field of d = 100 mm, after d moved 1 %) lands on the field a cold
+// solve finds: the same thrust, energy and regions.
+TEST(FieldWarmStart, ReachesTheColdField) {
+  Parameters p = default_parameters();
+  const Material material = material_of(p.fabric);
+  const MeshResolution resolution{20, 14, MeshSplit::union_jack};
+  const Outline before = make_outline(p, OutlineKind::rectangular);
+  Solver solver(make_mesh(before, resolution));
+  const Solution first = solve_cold(solver, before, material, resolution);
+  p.hanging.support_displacement_mm *= 1.01;
+  const Outline after = make_outline(p, OutlineKind::rectangular);
+  const Solution warm = solver.solve(material, support_targets(after), {}, &first);
+  const FieldReport cold = solve_outline(after, material, resolution, {}, 0);
+  ASSERT_TRUE(warm.converged);
+  ASSERT_TRUE(cold.solution.converged);
+  EXPECT_LT(warm.iterations, cold.solution.iterations);
+  EXPECT_NEAR(warm.reactions_N[1].x(), cold.thrust_N, 1e-6 * cold.thrust_N);
+  EXPECT_NEAR(warm.energy_Nmm, cold.solution.energy_Nmm, 1e-6 * cold.solution.energy_Nmm);
+  EXPECT_NEAR(warm.wrinkled_share, cold.solution.wrinkled_share, 1e-12);
+}
+
+// Mansfield's cosine outline hung from its ends (l = L): the pencil's thrust
+// (w l² / pi²) ln(a_0 / a_n) beside the solver's, on refined meshes. Statics is asserted (each
+// support carries half the weight); H, the taut share and the rays are reported.
+TEST(FieldCosinePencil, ThrustBesideThePencilIsReported) {
+  // The independent prototype's outline: l = 1130 mm, a_0 = 1610 mm, a_n = 37 mm.
+  const double l = 1130.0;
+  const double a0 = 1610.0;
+  const double an = 37.0;
+  const int segments = 256;
+  Outline o;
+  for (int i = 0; i <= segments; ++i) {
+    const double x = -0.5 * l + l * i / segments;
+    const double c = i == 0 || i == segments ? 0.0 : std::cos(std::numbers::pi * x / l);
+    o.top_mm.emplace_back(x, an * c);
+    o.bottom_mm.emplace_back(x, a0 * c);
+  }
+  o.supports = {{{-0.5 * l, 0.0}, {-0.5 * l, 0.0}}, {{0.5 * l, 0.0}, {0.5 * l, 0.0}}};
+  const Material material{41.25, 0.3, 1.5e-6};
+  const double pencil =
+      material.weight_N_per_mm2 * l * l / (std::numbers::pi * std::numbers::pi) * std::log(a0 / an);
+  for (int n : {16, 32, 48}) {
+    const FieldReport r = solve_outline(o, material, {n, n, MeshSplit::union_jack});
+    ASSERT_TRUE(r.solution.converged) << n;
+    for (const Vector2d& R : r.solution.reactions_N) {
+      EXPECT_NEAR(-R.y(), 0.5 * r.solution.weight_N, 1e-6 * r.solution.weight_N);
+    }
+    std::cout << "cosine " << n << " x " << n << ": H " << r.thrust_N << " N, pencil " << pencil
+              << " N (" << 100.0 * (r.thrust_N / pencil - 1.0) << " %), taut "
+              << r.solution.taut_share << ", wrinkled " << r.solution.wrinkled_share << ", slack "
+              << r.solution.slack_share << "\n";
+    for (const Ray& ray : r.rays) {
+      std::cout << "  ray a = " << ray.depth_mm << " mm: fitted " << ray.fitted_amplitude_mm
+                << " mm, rms " << ray.fit_rms_mm << " mm\n";
+    }
+  }
+}
+
+// The relaxed energy's table at three strains, and its stress as the derivative of its energy:
+// S = dW/dE by central differences of the energy (a slow path beside the closed-form stress).
+TEST(FieldRelaxedEnergy, StatesEnergiesAndStressFollowTheTable) {
+  const Material m{40.0, 0.3, 0.0};
+  const double c = m.stiffness_N_per_mm / (1.0 - m.poisson_ratio * m.poisson_ratio);
+  struct Case {
+    Eigen::Matrix2d E;
+    State state;
+    double energy;
+  };
+  Eigen::Matrix2d taut;
+  taut << 0.02, 0.0, 0.0, 0.01;  // e2 = 0.01 > -nu e1
+  Eigen::Matrix2d wrinkled;
+  wrinkled << 0.02, 0.0, 0.0, -0.01;  // e2 = -0.01 <= -0.006
+  Eigen::Matrix2d slack;
+  slack << -0.01, 0.002, 0.002, -0.02;
+  const Case cases[] = {
+      {taut, State::taut, 0.5 * c * (0.02 * 0.02 + 0.01 * 0.01 + 2 * 0.3 * 0.02 * 0.01)},
+      {wrinkled, State::wrinkled, 0.5 * 40.0 * 0.02 * 0.02},
+      {slack, State::slack, 0.0},
+  };
+  for (const Case& k : cases) {
+    // Rotated by 30 degrees, so that the principal directions are not the axes.
+    const double a = std::numbers::pi / 6;
+    Eigen::Matrix2d R;
+    R << std::cos(a), -std::sin(a), std::sin(a), std::cos(a);
+    const Eigen::Matrix2d E = R * k.E * R.transpose();
+    const RelaxedStrain r = relax(E, m);
+    EXPECT_EQ(r.state, k.state);
+    EXPECT_NEAR(r.energy_N_per_mm, k.energy, 1e-15);
+    const double step = 1e-7;
+    for (int i = 0; i < 2; ++i) {
+      for (int j = 0; j < 2; ++j) {
+        // A symmetric perturbation: dW = S : dE with dE symmetric.
+        Eigen::Matrix2d dE = Eigen::Matrix2d::Zero();
+        dE(i, j) += 0.5 * step;
+        dE(j, i) += 0.5 * step;
+        const double slope =
+            (relax(E + dE, m).energy_N_per_mm - relax(E - dE, m).energy_N_per_mm) / (2 * step);
+        EXPECT_NEAR(r.stress_N_per_mm(i, j), slope, 1e-6 * m.stiffness_N_per_mm) << i << j;
+      }
+    }
+  }
+}
+
+TEST(FieldOutline, RefusesWhatCannotBeMeshed) {
+  const auto refused = [](const char* text) {
+    try {
+      parse_outline_json(text);
+    } catch (const OutlineError& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  EXPECT_NE(refused(R"({"top": [[0,0],[10,0],[5,0]], "bottom": [[0,5],[10,5]],
+                        "supports": [{"at": [0,0], "to": [0,0]}]})")
+                .find("turns back"),
+            std::string::npos);
+  EXPECT_NE(refused(R"({"top": [[0,0],[10,0]], "bottom": [[0,5],[5,-1],[10,5]],
+                        "supports": [{"at": [0,0], "to": [0,0]}]})")
+                .find("cross"),
+            std::string::npos);
+  EXPECT_NE(refused(R"({"top": [[0,0],[10,0]], "bottom": [[0,5],[10,5]],
+                        "supports": [{"at": [5,2], "to": [5,2]}]})")
+                .find("off the outline"),
+            std::string::npos);
+  EXPECT_NE(refused(R"({"top": [[0,0],[10,0]], "bottom": [[0,5],[10,5]], "supports": []})")
+                .find("at least one support"),
+            std::string::npos);
+  EXPECT_EQ(refused(R"({"top": [[0,0],[10,0]], "bottom": [[0,5],[10,5]],
+                        "supports": [{"at": [0,0], "to": [1,0]}, {"at": [10,0], "to": [9,0]}]})"),
+            "");
+  Outline big = parse_outline_json(
+      R"({"top": [[0,0],[10,0]], "bottom": [[0,5],[10,5]], "supports": [{"at": [0,0], "to": [0,0]}]})");
+  EXPECT_THROW(make_mesh(big, {2000, 2000, MeshSplit::union_jack}), OutlineError);
+}
+
+}  // namespace
+}  // namespace foldlab::field
