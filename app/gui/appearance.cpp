@@ -206,4 +206,15 @@ void Appearance::handle_shortcuts() {
   }
 }
 
+void Appearance::view_settings(ViewSettings& settings) {
+  static constexpr std::string_view kThemeNames[] = {"dark", "light"};
+  settings.add_choice_by(
+      "theme", kThemeNames, kEveryUse, [this] { return light_theme_ ? 1u : 0u; },
+      [this](std::size_t light) { request(scale_percent_, light == 1); });
+  settings.add_number_by(
+      "scale", {kMinUiScalePercent, kMaxUiScalePercent, " (percent)"}, kEveryUse,
+      [this] { return scale_percent_; },
+      [this](double percent) { request(static_cast<int>(std::lround(percent)), light_theme_); });
+}
+
 }  // namespace foldlab::gui

@@ -9,6 +9,8 @@
 
 #include <imgui.h>
 
+#include "app/gui/view_settings.hpp"
+
 #include "app/gui/renderer.hpp"
 
 namespace foldlab::gui {
@@ -120,6 +122,8 @@ class Appearance {
   bool light_theme() const { return light_theme_; }
   // Takes effect at the next apply(); the scale is clamped to 100-250 %.
   void request(int scale_percent, bool light_theme);
+  // `theme` (dark, light) and `scale` (text size in percent), remembered, scripted and reported.
+  void view_settings(ViewSettings& settings);
   // Device pixels per pixel of the layout the user sees (the page's devicePixelRatio, 1 on the
   // desktop): fonts and sizes are built at scale_percent times this, so that the window, sized in
   // device pixels, keeps the layout of a ratio-1 screen with crisp text. Takes effect at the next

@@ -1,7 +1,6 @@
 #include "app/gui/explorer.hpp"
 
 #include <algorithm>
-#include <cmath>
 #include <exception>
 #include <utility>
 
@@ -17,12 +16,9 @@
 #include "app/gui/session.hpp"
 #include "app/gui/session_keeper.hpp"
 #include "app/gui/surface.hpp"
-#include "core/model/text_format.hpp"
 
 namespace foldlab::gui {
 namespace {
-
-constexpr std::string_view kThemeNames[] = {"dark", "light"};
 
 template <class Predicate>
 bool any_panel(const std::vector<std::unique_ptr<Panel>>& panels, Predicate predicate) {
@@ -78,15 +74,7 @@ void Explorer::declare_view_settings() {
     panel->view_settings(s, document_);
   }
   layout_.view_settings(s);
-  s.add_choice_by(
-      "theme", kThemeNames, kEveryUse, [this] { return appearance_.light_theme() ? 1u : 0u; },
-      [this](std::size_t light) { appearance_.request(appearance_.scale_percent(), light == 1); });
-  s.add_number_by(
-      "scale", {kMinUiScalePercent, kMaxUiScalePercent, " (percent)"}, kEveryUse,
-      [this] { return appearance_.scale_percent(); },
-      [this](double percent) {
-        appearance_.request(static_cast<int>(std::lround(percent)), appearance_.light_theme());
-      });
+  appearance_.view_settings(s);
   s.add_number_by(
       "grid", {kMinGridResolution, kMaxGridResolution, " (vertices per side)"},
       kScripted | kReported, [this] { return document_.scene().grid_nx(); },
@@ -97,11 +85,8 @@ void Explorer::declare_view_settings() {
 }
 
 PanelContext Explorer::context() {
-  return PanelContext{
-      document_,   status_,
-      renderer_,   *files_,
-      wake_,       panels_,
-      appearance_, any_panel(panels_, [](const Panel& p) { return p.plays_input(); })};
+  return PanelContext{document_, status_, renderer_,   *files_,
+                      wake_,     panels_, appearance_, plays_input()};
 }
 
 std::optional<std::string> Explorer::set_input(std::string_view key, double value) {
@@ -167,6 +152,10 @@ void Explorer::write_picture(const std::filesystem::path& path, const PictureSpe
 void Explorer::set_file_transfer(std::unique_ptr<FileTransfer> transfer) {
   transfer_ = std::move(transfer);
   files_->set_transfer(*transfer_);
+}
+
+bool Explorer::plays_input() const {
+  return any_panel(panels_, [](const Panel& p) { return p.plays_input(); });
 }
 
 bool Explorer::busy() const {
@@ -287,8 +276,7 @@ void Explorer::frame() {
   menu_->draw_after_panels(context);
   files_->draw(status_);
   // A drag ends when its widget lets go; an animation when it is paused.
-  if (!ImGui::IsAnyItemActive() &&
-      !any_panel(panels_, [](const Panel& p) { return p.plays_input(); })) {
+  if (!ImGui::IsAnyItemActive() && !plays_input()) {
     document_.end_step();
   }
   session_->keep_when_idle(ImGui::GetTime());

@@ -171,6 +171,8 @@ class Explorer {
   // Escape closes an open menu or combo first, then leaves presentation.
   void handle_escape();
   PanelContext context();
+  // An input is being played (the views hold their frame, the undo step stays open).
+  bool plays_input() const;
 
   ExplorerOptions options_;
   Renderer& renderer_;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 
 #include "core/model/settings.hpp"
 #include "core/model/text_format.hpp"
@@ -11,6 +12,14 @@ namespace {
 
 std::string as_given(std::string_view key, std::string_view value) {
   return detail::cut(key) + " = '" + detail::cut(value) + "'";
+}
+
+// A whole number as one ("grid": 128), any other as it is.
+nlohmann::json number_json(double value) {
+  if (value == std::floor(value) && std::fabs(value) < 1e15) {
+    return nlohmann::json(static_cast<std::int64_t>(value));
+  }
+  return nlohmann::json(value);
 }
 
 std::string names_list(std::span<const std::string_view> names) {
@@ -44,7 +53,7 @@ ViewSettings::Row ViewSettings::number_row(const char* key, double lo, double hi
     }
     return std::nullopt;
   };
-  row.say = [this, key] { return nlohmann::json(find(key)->read()); };
+  row.say = [this, key] { return number_json(find(key)->read()); };
   return row;
 }
 
