@@ -544,6 +544,62 @@ TEST_F(GuiTest, RenderRejectsBadInputWithExitTwo) {
       << no_display.err;
 }
 
+// The --view help is written by hand while the keys the explorer takes come from its panels'
+// tables: after z became z_exaggeration the help still offered `z`, which every run refused.
+TEST_F(GuiTest, TheViewHelpNamesEveryKeyTheExplorerTakesAndNoOther) {
+  const RunResult help =
+      foldlab::testing::run_process(kExecutable, {"render", "--help"}, dir_, environment());
+  ASSERT_EQ(help.exit_status, 0) << help.err;
+  const std::string lead = "view setting KEY=VALUE:";
+  const std::size_t start = help.out.find(lead);
+  ASSERT_NE(start, std::string::npos) << help.out;
+  // The description runs to the next option, however the help wraps it.
+  const std::size_t end = help.out.find("\n  -", start);
+  const std::string described = help.out.substr(start + lead.size(), end - start - lead.size());
+  // The help's keys: each comma or semicolon separated piece up to its '=', with the
+  // parenthesised remarks (which hold commas of their own) taken out first.
+  std::string bare;
+  int depth = 0;
+  for (const char c : described) {
+    depth += c == '(' ? 1 : 0;
+    if (depth == 0) {
+      bare += c;
+    }
+    depth -= c == ')' ? 1 : 0;
+  }
+  const auto keys_in = [](const std::string& text, const std::string& separators) {
+    std::vector<std::string> keys;
+    std::size_t from = 0;
+    while (from <= text.size()) {
+      const std::size_t to = std::min(text.find_first_of(separators, from), text.size());
+      std::string piece = text.substr(from, to - from);
+      piece = piece.substr(0, piece.find('='));
+      const std::size_t first = piece.find_first_not_of(" \n");
+      if (first != std::string::npos) {
+        keys.push_back(piece.substr(first, piece.find_last_not_of(" \n") - first + 1));
+      }
+      from = to + 1;
+    }
+    std::sort(keys.begin(), keys.end());
+    return keys;
+  };
+  const std::vector<std::string> helped = keys_in(bare, ",;");
+  // The explorer's own list, as a refused key names it.
+  const RunResult refused = foldlab::testing::run_process(
+      kExecutable, {"render", "--out", (dir_ / "x.png").string(), "--view", "no_such_key=1"}, dir_,
+      environment());
+  ASSERT_EQ(refused.exit_status, 2) << refused.err;
+  const std::string known_lead = "(known: ";
+  const std::size_t known = refused.err.find(known_lead);
+  ASSERT_NE(known, std::string::npos) << refused.err;
+  const std::size_t known_end = refused.err.find(')', known);
+  const std::vector<std::string> taken = keys_in(
+      refused.err.substr(known + known_lead.size(), known_end - known - known_lead.size()), ",");
+  // docs/cli.md names 20 keys: a refusal whose list was not read cannot make the check pass.
+  ASSERT_GE(taken.size(), 18u) << refused.err;
+  EXPECT_EQ(helped, taken) << "help: " << described << "\nrefusal: " << refused.err;
+}
+
 // `render --print swatch.png --out swatch.png` drew the window over the swatch it printed with;
 // the same for --view print_file, gui --screenshot and a played script's screenshot step.
 TEST_F(GuiTest, NoPictureIsWrittenOverAnInputOfTheRun) {

@@ -119,13 +119,13 @@ void add_scene_options(CLI::App& command, GuiCommandOptions& options) {
       .add_option(
           "--view", options.run.view_settings,
           "view setting KEY=VALUE: print=plain|checks|stripes|photo, print_file, "
-          "print_mm, colour_by=none|z|fold_sign, breeze=0|1, breeze_mm, time (s), z "
-          "(exaggeration), wireframe, lod=0|1 (0: every grid vertex drawn), fold_lines, ground, "
-          "grid (vertices per side, 8-512), "
-          "full=1 (the 3D view fills the window) (3D view); sweep=table1|table2|fig4 (the "
-          "paper's case in the Sweep tab); present=fold_plot|cloth|results|analysis|parameters|"
-          "presets|none (that panel fills the window); theme=dark|light; scale (UI scale, "
-          "percent)")
+          "print_mm, colour_by=none|z|fold_sign, breeze=0|1, breeze_mm, time (s), "
+          "z_exaggeration (1-20), wireframe, lod=0|1 (0: every grid vertex drawn), fold_lines, "
+          "ground, grid (vertices per side, 8-512), "
+          "full=1 (the 3D view fills the window) (3D view); fold_plot_true_scale=0|1 (the fold "
+          "plot); sweep=table1|table2|fig4 (the paper's case in the Sweep tab); "
+          "present=fold_plot|cloth|results|analysis|parameters|presets|none (that panel fills the "
+          "window); theme=dark|light; scale (UI scale, percent); expert=0|1 (the expert settings)")
       ->type_name("KEY=VALUE");
   command
       .add_option("--print", options.print_path,
