@@ -1,5 +1,7 @@
 #include "core/field/mesh.hpp"
 
+#include "core/model/named_enum.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -70,13 +72,7 @@ std::string_view to_string(MeshSplit s) {
 }
 
 bool parse_mesh_split(std::string_view s, MeshSplit& out) {
-  for (MeshSplit k : {MeshSplit::uniform, MeshSplit::union_jack, MeshSplit::crossed}) {
-    if (s == to_string(k)) {
-      out = k;
-      return true;
-    }
-  }
-  return false;
+  return parse_named(s, out, {MeshSplit::uniform, MeshSplit::union_jack, MeshSplit::crossed});
 }
 
 Mesh make_mesh(const Outline& outline, const MeshResolution& resolution) {

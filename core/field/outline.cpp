@@ -1,5 +1,7 @@
 #include "core/field/outline.hpp"
 
+#include "core/model/named_enum.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -149,13 +151,7 @@ constexpr OutlineKind kAllKinds[] = {OutlineKind::rectangular, OutlineKind::cosi
 }
 
 bool parse_outline_kind(std::string_view s, OutlineKind& out) {
-  for (OutlineKind k : kAllKinds) {
-    if (s == to_string(k)) {
-      out = k;
-      return true;
-    }
-  }
-  return false;
+  return parse_named(s, out, kAllKinds);
 }
 
 std::string outline_kind_names() {

@@ -8,8 +8,8 @@
 namespace foldlab {
 
 // Sets `out` to the one of `values` whose to_string is `s`; false, leaving `out`, for none.
-template <class Enum>
-bool parse_named(std::string_view s, Enum& out, std::initializer_list<Enum> values) {
+template <class Enum, class Values>
+bool parse_named(std::string_view s, Enum& out, const Values& values) {
   for (Enum v : values) {
     if (s == to_string(v)) {
       out = v;
@@ -17,6 +17,10 @@ bool parse_named(std::string_view s, Enum& out, std::initializer_list<Enum> valu
     }
   }
   return false;
+}
+template <class Enum>
+bool parse_named(std::string_view s, Enum& out, std::initializer_list<Enum> values) {
+  return parse_named<Enum, std::initializer_list<Enum>>(s, out, values);
 }
 
 }  // namespace foldlab
