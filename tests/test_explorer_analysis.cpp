@@ -2,6 +2,8 @@
 // regime map.
 #include "explorer_fixture.hpp"
 
+#include <sstream>
+
 namespace foldlab::gui {
 namespace {
 
@@ -255,7 +257,7 @@ TEST_F(ExplorerTest, TheEquationsCutNoNumberAtTwiceTheTextSizeOrInASmallWindow) 
   ASSERT_TRUE(s.Q7.has_value());
   // As the tab writes them: what a reader must see whole, spaces and line breaks aside.
   const std::string s_power =
-      detail::printf_string("s^p=%.5g^%.3g=%.5g", s.stress_ratio, p, std::pow(s.stress_ratio, p));
+      detail::printf_string("s^p=%.5g^%.6g=%.5g", s.stress_ratio, p, std::pow(s.stress_ratio, p));
   const std::string q7 = detail::printf_string("->Q7=%.5f", *s.Q7);
   const std::string h_line = detail::printf_string("h=%.1fmm", 1400.0);
   const std::string q = detail::printf_string("Q=(a_0/a_n)^(1/n)=%.4f", s.Q);
@@ -303,6 +305,43 @@ TEST_F(ExplorerTest, TheEquationsCutNoNumberAtTwiceTheTextSizeOrInASmallWindow) 
       EXPECT_TRUE(seen[i]) << wanted[i] << " never drawn whole\n" << last_text_;
     }
   }
+}
+
+// A student recomputing eq. 7's s from the numbers the tab prints gets the s it prints: every
+// input carries the digits the result does (306 g/m² was "3e-06" N/mm², and s came out 2 % off).
+TEST_F(ExplorerTest, EquationsCarryTheDigitsToReproduceTheirResult) {
+  ASSERT_EQ(explorer_->set_input("w", 306.0 * 9.81e-9), std::nullopt);
+  const std::string text = squeezed(frame());
+  const std::string start = "s=KEt³/(whl²)=";
+  const std::size_t at = text.find(start);
+  ASSERT_NE(at, std::string::npos) << text;
+  // "K×E×t³/(w×h×l²)=s", read back as a person would: six numbers, then s.
+  std::string numbers = text.substr(at + start.size(), 160);
+  for (const char* mark : {"×", "³", "²", "/", "(", ")", "="}) {
+    for (std::size_t i = numbers.find(mark); i != std::string::npos; i = numbers.find(mark)) {
+      numbers.replace(i, std::string(mark).size(), " ");
+    }
+  }
+  std::istringstream in(numbers);
+  double K = 0, E = 0, t = 0, w = 0, h = 0, l = 0, s_printed = 0;
+  ASSERT_TRUE(in >> K >> E >> t >> w >> h >> l >> s_printed) << numbers;
+  const double s_recomputed = K * E * t * t * t / (w * h * l * l);
+  // s is printed with 5 significant digits: the recomputed one agrees to its last digit.
+  EXPECT_NEAR(s_recomputed / s_printed, 1.0, 1e-4) << numbers;
+
+  // The calibrated form's exponent too: s^p from the printed s and p is the printed s^p.
+  explorer_->load_preset_file(kPresetsDir / "default.json");
+  const std::string calibrated = squeezed(frame());
+  const std::size_t power = calibrated.find("s^p=");
+  ASSERT_NE(power, std::string::npos) << calibrated;
+  std::string line = calibrated.substr(power + 4, 60);
+  for (char& c : line) {
+    c = (c == '^' || c == '=') ? ' ' : c;
+  }
+  std::istringstream parts(line);
+  double base = 0, exponent = 0, result = 0;
+  ASSERT_TRUE(parts >> base >> exponent >> result) << line;
+  EXPECT_NEAR(std::pow(base, exponent) / result, 1.0, 1e-4) << line;
 }
 
 // An equation breaks before "=" first, then before an arithmetic operator, then at a space; a

@@ -26,7 +26,7 @@ void draw_fold_step(const Solution& s, const Parameters& p, bool even) {
   const double t = p.fabric.thickness_mm;
   section(even ? readable("Cerda-Mahadevan: the wrinkle wavelength λ").c_str()
                : "eq. 7: critical stress gives Q7");
-  equation_text(nullptr, "s = K E t³ / (w h l²) = %.4g × %.4g × %.4g³ / (%.3g × %.4g × %.5g²)", K,
+  equation_text(nullptr, "s = K E t³ / (w h l²) = %.6g × %.6g × %.6g³ / (%.6g × %.6g × %.6g²)", K,
                 p.fabric.youngs_modulus_MPa, t, p.fabric.weight_N_per_mm2, p.hanging.height_mm,
                 s.span_mm);
   equation_text(nullptr, "  = %.5g", s.stress_ratio);
@@ -34,7 +34,7 @@ void draw_fold_step(const Solution& s, const Parameters& p, bool even) {
   const double exponent = p.model.stress_exponent_p;
   const double s_used = exponent == 1.0 ? s.stress_ratio : std::pow(s.stress_ratio, exponent);
   if (exponent != 1.0) {
-    equation_text(&note, "calibrated form: s^p = %.5g^%.3g = %.5g", s.stress_ratio, exponent,
+    equation_text(&note, "calibrated form: s^p = %.5g^%.6g = %.5g", s.stress_ratio, exponent,
                   s_used);
   }
   if (even) {
