@@ -268,8 +268,8 @@ Result run(const Options& options) {
     throw InputError(std::string(depths ? "--depths-mm" : "--folds-px") + ": " + e.what());
   }
   check_depths_reach(depths ? "--depths-mm" : "--folds-px", depths_mm, p);
-  check_distinct_files({{"--append", options.append_path}},
-                       {{"--preset", options.preset_path}, {"--photo", options.photo}});
+  check_outputs({{"--append", options.append_path}},
+                {app::preset_input("--preset", options.preset_path), {"--photo", options.photo}});
   app::check_output_extension("--append", options.append_path, {".csv", ".json"},
                               "a measurements file, CSV or JSON by its extension");
   result.row = measurement_row(p, result.folds, options.z_max_mm, options.name);
