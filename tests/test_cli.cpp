@@ -79,6 +79,29 @@ class CliTest : public foldlab::testing::TempDirTest {
     return foldlab::testing::json_output(run(args));
   }
 
+  // Starts foldlab with `args`, DISPLAY unset, its output thrown away, and returns at once with its
+  // process id (-1 when it cannot start): for a test that signals it while it works.
+  pid_t start(const std::vector<std::string>& args) const {
+    std::vector<std::string> argv = {kExecutable};
+    argv.insert(argv.end(), args.begin(), args.end());
+    std::vector<char*> pointers;
+    for (std::string& arg : argv) {
+      pointers.push_back(arg.data());
+    }
+    pointers.push_back(nullptr);
+    const pid_t pid = ::fork();
+    if (pid == 0) {
+      const int null = ::open("/dev/null", O_WRONLY);
+      ::dup2(null, STDOUT_FILENO);
+      ::dup2(null, STDERR_FILENO);
+      ::unsetenv("DISPLAY");
+      ::unsetenv("WAYLAND_DISPLAY");
+      ::execv(kExecutable.c_str(), pointers.data());
+      ::_exit(127);
+    }
+    return pid;
+  }
+
   // Files in the test's directory, ignoring the capture files.
   std::vector<std::string> entries() const {
     std::vector<std::string> names;
@@ -922,16 +945,26 @@ TEST_F(CliTest, ExportToAFifoOrDirectoryIsAFileErrorAndLeavesItAlone) {
   EXPECT_TRUE(contains(d.err, "a directory, not a regular file")) << d.err;
 }
 
+// A target that cannot be written is a file error (exit 1); a folder that cannot hold it is the
+// user's path, refused as invalid input before the fit.
 TEST_F(CliTest, CalibrateSavePresetThatCannotBeWrittenExitsOne) {
   std::ofstream(dir_ / "one.csv") << "t_mm,E_MPa,w_N_per_mm2,h_mm,L_mm,d_mm,n\n"
                                      "0.25,165,1.5e-6,900,1400,100,5\n";
-  std::ofstream(dir_ / "plain") << "a file, not a folder\n";
-  const fs::path target = dir_ / "plain" / "fitted.json";
+  const fs::path target = dir_ / "fitted.json";
+  fs::create_directory(target);
   const RunResult r = run({"calibrate", "--data", (dir_ / "one.csv").string(), "--fit", "K",
                            "--save-preset", target.string()});
   EXPECT_EQ(r.exit_status, 1) << r.err;
-  EXPECT_TRUE(contains(r.err, target.string() + ": cannot write (Not a directory)")) << r.err;
+  EXPECT_TRUE(contains(r.err, target.string() + ": cannot write: a directory, not a regular file"))
+      << r.err;
   EXPECT_FALSE(contains(r.err, "invalid input")) << r.err;
+  std::ofstream(dir_ / "plain") << "a file, not a folder\n";
+  const RunResult in_a_file = run({"calibrate", "--data", (dir_ / "one.csv").string(), "--fit", "K",
+                                   "--save-preset", (dir_ / "plain" / "fitted.json").string()});
+  EXPECT_EQ(in_a_file.exit_status, 2) << in_a_file.err;
+  EXPECT_TRUE(
+      contains(in_a_file.err, "the folder " + (dir_ / "plain").string() + " is not a folder"))
+      << in_a_file.err;
 }
 
 TEST_F(CliTest, UnreadablePresetGivesTheSystemsReason) {
@@ -1245,18 +1278,8 @@ TEST_F(CliTest, NamesReachTheTerminalSpeltOutNeverAsEscapes) {
 TEST_F(CliTest, AnExportInterruptedWhileItWritesLeavesNoTemporary) {
   for (const int number : {SIGTERM, SIGINT}) {
     const fs::path obj = dir_ / "k.obj";
-    const pid_t pid = ::fork();
+    const pid_t pid = start({"export", "--obj", obj.string(), "--grid", "1024x1024"});
     ASSERT_GE(pid, 0);
-    if (pid == 0) {
-      const int null = ::open("/dev/null", O_WRONLY);
-      ::dup2(null, STDOUT_FILENO);
-      ::dup2(null, STDERR_FILENO);
-      ::unsetenv("DISPLAY");
-      ::unsetenv("WAYLAND_DISPLAY");
-      ::execl(kExecutable.c_str(), kExecutable.c_str(), "export", "--obj", obj.c_str(), "--grid",
-              "1024x1024", static_cast<char*>(nullptr));
-      ::_exit(127);
-    }
     const auto temporaries = [&] {
       int count = 0;
       for (const std::string& name : entries()) {
@@ -1746,7 +1769,7 @@ TEST_F(CliTest, NoOutputOverwritesAPresetGivenByItsName) {
     EXPECT_TRUE(contains(r.err, output)) << r.err;
     EXPECT_TRUE(contains(r.err, "-preset myfab (" + file.string() + ")")) << r.err;
     EXPECT_TRUE(contains(r.err, "would destroy the input")) << r.err;
-    EXPECT_EQ(read_file(file), before);
+    EXPECT_TRUE(read_file(file) == before) << "the preset was replaced";
   };
   refused(run_env({"calibrate", "--preset", "myfab", "--data",
                    (kPresetsDir.parent_path() / "data" / "paper-measurements.csv").string(),
@@ -1824,16 +1847,8 @@ TEST_F(CliTest, AnAppendToANewFileStoppedBySigtermLeavesNoEmptyFile) {
   int stopped = 0;
   for (int attempt = 0; attempt < 40; ++attempt) {
     const fs::path rows = dir_ / ("new" + std::to_string(attempt) + ".csv");
-    const pid_t pid = ::fork();
+    const pid_t pid = start({"measure", "--depths-mm", "80,40,20,10", "--append", rows.string()});
     ASSERT_GE(pid, 0);
-    if (pid == 0) {
-      const int null = ::open("/dev/null", O_WRONLY);
-      ::dup2(null, STDOUT_FILENO);
-      ::dup2(null, STDERR_FILENO);
-      ::execl(kExecutable.c_str(), kExecutable.c_str(), "measure", "--depths-mm", "80,40,20,10",
-              "--append", rows.c_str(), static_cast<char*>(nullptr));
-      ::_exit(127);
-    }
     int status = 0;
     bool exited = false;
     bool seen_empty = false;
