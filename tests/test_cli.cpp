@@ -79,6 +79,29 @@ class CliTest : public foldlab::testing::TempDirTest {
     return foldlab::testing::json_output(run(args));
   }
 
+  // Starts foldlab with `args`, DISPLAY unset, its output thrown away, and returns at once with its
+  // process id (-1 when it cannot start): for a test that signals it while it works.
+  pid_t start(const std::vector<std::string>& args) const {
+    std::vector<std::string> argv = {kExecutable};
+    argv.insert(argv.end(), args.begin(), args.end());
+    std::vector<char*> pointers;
+    for (std::string& arg : argv) {
+      pointers.push_back(arg.data());
+    }
+    pointers.push_back(nullptr);
+    const pid_t pid = ::fork();
+    if (pid == 0) {
+      const int null = ::open("/dev/null", O_WRONLY);
+      ::dup2(null, STDOUT_FILENO);
+      ::dup2(null, STDERR_FILENO);
+      ::unsetenv("DISPLAY");
+      ::unsetenv("WAYLAND_DISPLAY");
+      ::execv(kExecutable.c_str(), pointers.data());
+      ::_exit(127);
+    }
+    return pid;
+  }
+
   // Files in the test's directory, ignoring the capture files.
   std::vector<std::string> entries() const {
     std::vector<std::string> names;
@@ -922,16 +945,26 @@ TEST_F(CliTest, ExportToAFifoOrDirectoryIsAFileErrorAndLeavesItAlone) {
   EXPECT_TRUE(contains(d.err, "a directory, not a regular file")) << d.err;
 }
 
+// A target that cannot be written is a file error (exit 1); a folder that cannot hold it is the
+// user's path, refused as invalid input before the fit.
 TEST_F(CliTest, CalibrateSavePresetThatCannotBeWrittenExitsOne) {
   std::ofstream(dir_ / "one.csv") << "t_mm,E_MPa,w_N_per_mm2,h_mm,L_mm,d_mm,n\n"
                                      "0.25,165,1.5e-6,900,1400,100,5\n";
-  std::ofstream(dir_ / "plain") << "a file, not a folder\n";
-  const fs::path target = dir_ / "plain" / "fitted.json";
+  const fs::path target = dir_ / "fitted.json";
+  fs::create_directory(target);
   const RunResult r = run({"calibrate", "--data", (dir_ / "one.csv").string(), "--fit", "K",
                            "--save-preset", target.string()});
   EXPECT_EQ(r.exit_status, 1) << r.err;
-  EXPECT_TRUE(contains(r.err, target.string() + ": cannot write (Not a directory)")) << r.err;
+  EXPECT_TRUE(contains(r.err, target.string() + ": cannot write: a directory, not a regular file"))
+      << r.err;
   EXPECT_FALSE(contains(r.err, "invalid input")) << r.err;
+  std::ofstream(dir_ / "plain") << "a file, not a folder\n";
+  const RunResult in_a_file = run({"calibrate", "--data", (dir_ / "one.csv").string(), "--fit", "K",
+                                   "--save-preset", (dir_ / "plain" / "fitted.json").string()});
+  EXPECT_EQ(in_a_file.exit_status, 2) << in_a_file.err;
+  EXPECT_TRUE(
+      contains(in_a_file.err, "the folder " + (dir_ / "plain").string() + " is not a folder"))
+      << in_a_file.err;
 }
 
 TEST_F(CliTest, UnreadablePresetGivesTheSystemsReason) {
@@ -1245,18 +1278,8 @@ TEST_F(CliTest, NamesReachTheTerminalSpeltOutNeverAsEscapes) {
 TEST_F(CliTest, AnExportInterruptedWhileItWritesLeavesNoTemporary) {
   for (const int number : {SIGTERM, SIGINT}) {
     const fs::path obj = dir_ / "k.obj";
-    const pid_t pid = ::fork();
+    const pid_t pid = start({"export", "--obj", obj.string(), "--grid", "1024x1024"});
     ASSERT_GE(pid, 0);
-    if (pid == 0) {
-      const int null = ::open("/dev/null", O_WRONLY);
-      ::dup2(null, STDOUT_FILENO);
-      ::dup2(null, STDERR_FILENO);
-      ::unsetenv("DISPLAY");
-      ::unsetenv("WAYLAND_DISPLAY");
-      ::execl(kExecutable.c_str(), kExecutable.c_str(), "export", "--obj", obj.c_str(), "--grid",
-              "1024x1024", static_cast<char*>(nullptr));
-      ::_exit(127);
-    }
     const auto temporaries = [&] {
       int count = 0;
       for (const std::string& name : entries()) {
@@ -1723,6 +1746,138 @@ TEST_F(CliTest, FieldOutlineFileSolvesOrIsRefusedByName) {
   const RunResult bad_shape = run({"field", "--shape", "hexagon"});
   EXPECT_EQ(bad_shape.exit_status, 2);
   EXPECT_TRUE(contains(bad_shape.err, "hexagon")) << bad_shape.err;
+}
+
+// A preset given by name is the file it resolves to: no output may be written over it, whether
+// named by its path or through a symbolic link, and the refusal names both options.
+TEST_F(CliTest, NoOutputOverwritesAPresetGivenByItsName) {
+  const fs::path config = dir_ / "config";
+  const fs::path presets = config / "foldlab" / "presets";
+  fs::create_directories(presets);
+  json mine = json::parse(std::ifstream(kPresetsDir / "default.json"));
+  mine["name"] = "myfab";
+  const fs::path file = presets / "myfab.json";
+  std::ofstream(file) << mine.dump();
+  const std::string before = read_file(file);
+  foldlab::testing::Environment env;
+  env.set = {{"XDG_CONFIG_HOME", config.string()}, {"HOME", dir_.string()}};
+  const auto run_env = [&](const std::vector<std::string>& args) {
+    return foldlab::testing::run_process(kExecutable, args, dir_, env);
+  };
+  const auto refused = [&](const RunResult& r, const std::string& output) {
+    EXPECT_EQ(r.exit_status, 2) << r.err;
+    EXPECT_TRUE(contains(r.err, output)) << r.err;
+    EXPECT_TRUE(contains(r.err, "-preset myfab (" + file.string() + ")")) << r.err;
+    EXPECT_TRUE(contains(r.err, "would destroy the input")) << r.err;
+    EXPECT_TRUE(read_file(file) == before) << "the preset was replaced";
+  };
+  refused(run_env({"calibrate", "--preset", "myfab", "--data",
+                   (kPresetsDir.parent_path() / "data" / "paper-measurements.csv").string(),
+                   "--no-held-out", "--save-preset", file.string()}),
+          "--save-preset " + file.string());
+  for (const char* link : {"link.obj", "link.png", "link.csv"}) {
+    fs::create_symlink(file, dir_ / link);
+  }
+  refused(run_env({"export", "--preset", "myfab", "--obj", (dir_ / "link.obj").string()}),
+          "--obj " + (dir_ / "link.obj").string());
+  refused(run_env({"measure", "--preset", "myfab", "--depths-mm", "80,40,20,10", "--append",
+                   (dir_ / "link.csv").string()}),
+          "--append " + (dir_ / "link.csv").string());
+  refused(run_env({"picture", "cloth", "--preset", "myfab", "--size", "400x300", "--out",
+                   (dir_ / "link.png").string()}),
+          "--out " + (dir_ / "link.png").string());
+  refused(run_env({"picture", "compare", "--b-preset", "myfab", "--size", "400x300", "--out",
+                   (dir_ / "link.png").string()}),
+          "--out " + (dir_ / "link.png").string());
+  // A new file is nobody's input: the same commands write one beside the preset.
+  const RunResult fresh =
+      run_env({"export", "--preset", "myfab", "--obj", (dir_ / "new.obj").string()});
+  EXPECT_EQ(fresh.exit_status, 0) << fresh.err;
+  EXPECT_TRUE(fs::is_regular_file(dir_ / "new.obj"));
+}
+
+// An output whose name is as long as a name may be (250 bytes: 82 CJK characters and ".svg") is
+// written: its temporary's name is cut to fit the 255-byte limit, and nothing is left beside it.
+TEST_F(CliTest, AnOutputNameOfTheLongestLegalLengthIsWritten) {
+  std::string name;
+  for (int i = 0; i < 82; ++i) {
+    name += "\xE5\xB8\x83";  // 布, three bytes in UTF-8
+  }
+  name += ".svg";
+  ASSERT_EQ(name.size(), 250u);
+  const RunResult r = run({"export", "--svg", (dir_ / name).string()});
+  EXPECT_EQ(r.exit_status, 0) << r.err;
+  EXPECT_TRUE(contains(read_file(dir_ / name), "<svg")) << r.err;
+  std::vector<std::string> names = entries();
+  std::erase_if(names, [](const std::string& n) { return n.starts_with(".std"); });
+  EXPECT_EQ(names, std::vector<std::string>{name});
+}
+
+// A command whose output's folder is missing, or is not a folder, refuses before any work (a
+// picture renders for seconds first otherwise), as invalid input naming the folder.
+TEST_F(CliTest, AnOutputsFolderIsCheckedBeforeTheWork) {
+  const fs::path missing = dir_ / "missing";
+  std::ofstream(dir_ / "plain.txt") << "a file\n";
+  const std::vector<std::vector<std::string>> commands = {
+      {"picture", "cloth", "--size", "400x300", "--out", (missing / "x.png").string()},
+      {"export", "--obj", (missing / "x.obj").string()},
+      {"measure", "--depths-mm", "80,40,20,10", "--append", (missing / "x.csv").string()},
+      {"calibrate", "--data",
+       (kPresetsDir.parent_path() / "data" / "paper-measurements.csv").string(), "--no-held-out",
+       "--save-preset", (missing / "x.json").string()},
+  };
+  for (const std::vector<std::string>& args : commands) {
+    SCOPED_TRACE(args.front());
+    const RunResult r = run(args);
+    EXPECT_EQ(r.exit_status, 2) << r.err;
+    EXPECT_TRUE(contains(r.err, "the folder " + missing.string() + " does not exist")) << r.err;
+  }
+  const RunResult not_folder = run({"export", "--obj", (dir_ / "plain.txt" / "x.obj").string()});
+  EXPECT_EQ(not_folder.exit_status, 2) << not_folder.err;
+  EXPECT_TRUE(
+      contains(not_folder.err, "the folder " + (dir_ / "plain.txt").string() + " is not a folder"))
+      << not_folder.err;
+  EXPECT_FALSE(fs::exists(missing));
+}
+
+// measure --append to a new file, stopped by SIGTERM at any moment, leaves either no file or the
+// whole one, never the empty placeholder it locks: a later read would refuse an empty file. The
+// signal is sent as soon as the placeholder is seen, over several runs.
+TEST_F(CliTest, AnAppendToANewFileStoppedBySigtermLeavesNoEmptyFile) {
+  int stopped = 0;
+  for (int attempt = 0; attempt < 40; ++attempt) {
+    const fs::path rows = dir_ / ("new" + std::to_string(attempt) + ".csv");
+    const pid_t pid = start({"measure", "--depths-mm", "80,40,20,10", "--append", rows.string()});
+    ASSERT_GE(pid, 0);
+    int status = 0;
+    bool exited = false;
+    bool seen_empty = false;
+    while (!seen_empty && !exited) {
+      struct stat info {};
+      seen_empty = ::stat(rows.c_str(), &info) == 0 && info.st_size == 0;
+      if (!seen_empty) {
+        exited = ::waitpid(pid, &status, WNOHANG) == pid;
+      }
+    }
+    if (!exited) {
+      ASSERT_EQ(::kill(pid, SIGTERM), 0);
+      ASSERT_EQ(::waitpid(pid, &status, 0), pid);
+    }
+    if (WIFSIGNALED(status)) {
+      EXPECT_EQ(WTERMSIG(status), SIGTERM);
+      ++stopped;
+      std::error_code error;
+      const bool there = fs::exists(rows, error);
+      if (there) {
+        // Stopped after the rename: the whole file.
+        EXPECT_TRUE(contains(read_file(rows), ",fit,")) << attempt;
+      }
+    } else {
+      EXPECT_EQ(WEXITSTATUS(status), 0) << attempt;
+      EXPECT_TRUE(contains(read_file(rows), ",fit,")) << attempt;
+    }
+  }
+  EXPECT_GT(stopped, 0) << "every append finished before its signal";
 }
 
 }  // namespace

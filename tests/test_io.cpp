@@ -384,6 +384,49 @@ TEST_F(IoTest, StaleTemporariesOfDeadProcessesAreRemovedOthersKept) {
   EXPECT_TRUE(fs::exists(dir_ / ("preset.json.tmp." + dead + ".notanumber")));
 }
 
+// A placeholder goes unless kept, and only while its name holds the empty file it created: a file
+// written over it, or one that replaced it, stays. The same rule holds in a signal handler
+// (remove_pending_temporaries), which removes what is pending and nothing else.
+TEST_F(IoTest, APlaceholderIsRemovedOnlyWhileItIsTheEmptyFileItCreated) {
+  const fs::path dropped = dir_ / "dropped.csv";
+  const fs::path kept = dir_ / "kept.csv";
+  const fs::path replaced = dir_ / "replaced.csv";
+  const fs::path signalled = dir_ / "signalled.csv";
+  {
+    foldlab::NewFilePlaceholder a;
+    foldlab::NewFilePlaceholder b;
+    foldlab::NewFilePlaceholder c;
+    for (auto [placeholder, path] :
+         {std::pair{&a, dropped}, std::pair{&b, kept}, std::pair{&c, replaced}}) {
+      const int fd = placeholder->create(path, O_RDONLY | O_CLOEXEC);
+      ASSERT_GE(fd, 0) << path;
+      ::close(fd);
+      EXPECT_TRUE(fs::exists(path));
+    }
+    b.keep();
+    foldlab::write_file_atomically(replaced, "name,n\n");
+  }
+  EXPECT_FALSE(fs::exists(dropped));
+  EXPECT_TRUE(fs::exists(kept));
+  EXPECT_EQ(read_bytes(replaced), "name,n\n");
+
+  foldlab::NewFilePlaceholder pending;
+  const int fd = pending.create(signalled, O_RDONLY | O_CLOEXEC);
+  ASSERT_GE(fd, 0);
+  ::close(fd);
+  foldlab::remove_pending_temporaries();
+  EXPECT_FALSE(fs::exists(signalled));
+  EXPECT_TRUE(fs::exists(kept));
+}
+
+// The temporary of the longest name a file may have (255 bytes) fits the same limit.
+TEST_F(IoTest, AFileWithTheLongestLegalNameIsWritten) {
+  const fs::path path = dir_ / (std::string(251, 'a') + ".csv");
+  foldlab::write_file_atomically(path, "x\n");
+  EXPECT_EQ(read_bytes(path), "x\n");
+  EXPECT_EQ(std::distance(fs::directory_iterator(dir_), fs::directory_iterator()), 1);
+}
+
 TEST_F(IoTest, WriteErrorsGiveTheSystemsReason) {
   write_bytes(dir_ / "plain", "x");
   const std::string message = write_error(dir_ / "plain" / "out.json");

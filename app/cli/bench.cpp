@@ -202,7 +202,7 @@ void declare(CLI::App& app, Options& options) {
 }
 
 Result run(const Options& options) {
-  check_distinct_files({{"--csv", options.csv_path}, {"--svg", options.svg_path}}, {});
+  check_outputs({{"--csv", options.csv_path}, {"--svg", options.svg_path}}, {});
   app::check_output_extension("--csv", options.csv_path, ".csv", "CSV");
   app::check_output_extension("--svg", options.svg_path, ".svg", "SVG");
   if (auto problem = check_count_budget("--cases x --repeats",

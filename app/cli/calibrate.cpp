@@ -306,8 +306,9 @@ void print_totals(const CalibrationReport& r, std::ostream& out) {
 
 void check_output_and_label(const Options& options) {
   // Over an input is the graver mistake: said first.
-  check_distinct_files({{"--save-preset", options.save_preset_path}},
-                       {{"--data", options.data_path}, {"--preset", options.inputs.preset_path}});
+  check_outputs(
+      {{"--save-preset", options.save_preset_path}},
+      {{"--data", options.data_path}, app::preset_input("--preset", options.inputs.preset_path)});
   app::check_output_extension("--save-preset", options.save_preset_path, ".json", "a preset, JSON");
   // The label goes into the saved preset, whose JSON holds UTF-8 only.
   if (!detail::is_valid_utf8(options.calibrated_on)) {

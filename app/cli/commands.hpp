@@ -12,7 +12,7 @@
 namespace foldlab::cli {
 
 using app::add_input_options;
-using app::check_distinct_files;
+using app::check_outputs;
 using app::Command;
 using app::EnvironmentError;
 using app::find_presets_dir;

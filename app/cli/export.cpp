@@ -115,7 +115,7 @@ Result run(const Options& options) {
   const Outputs outputs = requested_outputs(options);
   const GridSize grid = parse_grid(options.grid);
   const int samples = whole_samples(options.samples);
-  check_distinct_files(outputs.files, {{"--preset", options.inputs.preset_path}});
+  check_outputs(outputs.files, {app::preset_input("--preset", options.inputs.preset_path)});
   for (std::size_t i = 0; i < kExportFormats.size(); ++i) {
     std::string format(kExportFormats[i].key);
     std::transform(format.begin(), format.end(), format.begin(),

@@ -256,6 +256,9 @@ Result run(const Options& options) {
   check_name(options.name);
   check_z_max(options.z_max_mm);
   const Preset preset = resolve_inputs({options.preset_path, options.assignments, "", ""});
+  // Before the photo is measured: a missing folder is known at once.
+  check_outputs({{"--append", options.append_path}},
+                {app::preset_input("--preset", options.preset_path), {"--photo", options.photo}});
   const Parameters& p = preset.parameters;
   check_z_max_reach(options.z_max_mm, p);
   const std::vector<double> depths_mm = measured_depths(options, depths, p);
@@ -268,8 +271,6 @@ Result run(const Options& options) {
     throw InputError(std::string(depths ? "--depths-mm" : "--folds-px") + ": " + e.what());
   }
   check_depths_reach(depths ? "--depths-mm" : "--folds-px", depths_mm, p);
-  check_distinct_files({{"--append", options.append_path}},
-                       {{"--preset", options.preset_path}, {"--photo", options.photo}});
   app::check_output_extension("--append", options.append_path, {".csv", ".json"},
                               "a measurements file, CSV or JSON by its extension");
   result.row = measurement_row(p, result.folds, options.z_max_mm, options.name);

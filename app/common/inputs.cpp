@@ -1,10 +1,16 @@
 #include "app/common/inputs.hpp"
 
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include <algorithm>
 #include <array>
 #include <cctype>
+#include <cerrno>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <filesystem>
 #include <iostream>
 
@@ -455,7 +461,7 @@ int guarded(const std::function<int()>& body) {
 
 namespace {
 
-// Whether two paths name one file, as far as can be told: an existing pair by identity (links
+// Whether two outputs name one file, as far as can be told: an existing pair by identity (links
 // included), otherwise by the canonical form of the part that exists.
 bool same_file(const std::string& a, const std::string& b) {
   std::error_code error;
@@ -472,26 +478,90 @@ bool same_file(const std::string& a, const std::string& b) {
   return !error && canonical_a == canonical_b;
 }
 
+// Whether writing `output` would replace the file `input` opens: one device and inode once links
+// are followed. A file that does not exist is not yet anyone's input.
+bool writes_over(const std::string& output, const std::string& input) {
+  struct stat written {};
+  struct stat read {};
+  return ::stat(output.c_str(), &written) == 0 && ::stat(input.c_str(), &read) == 0 &&
+         written.st_dev == read.st_dev && written.st_ino == read.st_ino;
+}
+
+// Paths are shown whole up to this: a folder's name is at their end, and one a refusal names must
+// be seen.
+constexpr std::size_t kPathShownBytes = 300;
+
+// "--preset myfab (presets/myfab.json)": the option as typed and, when it differs, the file.
+std::string shown(const NamedPath& named) {
+  std::string text = std::string(named.option) + " " + detail::cut(named.path, kPathShownBytes);
+  if (!named.file.empty() && named.file != named.path) {
+    text += " (" + detail::cut(named.file, kPathShownBytes) + ")";
+  }
+  return text;
+}
+
+// The folder a write of `output` creates its temporary in: the one holding the file a chain of
+// links ends at, as write_file_atomically follows them.
+std::filesystem::path folder_written(const std::string& output) {
+  std::error_code error;
+  std::filesystem::path target = output;
+  if (std::filesystem::is_symlink(target, error)) {
+    const std::filesystem::path resolved =
+        std::filesystem::weakly_canonical(std::filesystem::absolute(target), error);
+    if (!error) {
+      target = resolved;
+    }
+  }
+  return target.has_parent_path() ? target.parent_path() : std::filesystem::path(".");
+}
+
+// Throws InputError unless `output`'s folder exists, is a folder and can be written to.
+void check_output_folder(const NamedPath& output) {
+  const std::filesystem::path folder = folder_written(output.path);
+  const std::string whose =
+      shown(output) + ": the folder " + detail::cut(folder.string(), kPathShownBytes);
+  struct stat info {};
+  if (::stat(folder.c_str(), &info) != 0) {
+    const int error = errno;
+    throw InputError(whose +
+                     (error == ENOENT
+                          ? std::string(" does not exist")
+                          : " cannot be opened (" + std::string(std::strerror(error)) + ")") +
+                     "; create it first, or name a file in another folder");
+  }
+  if (!S_ISDIR(info.st_mode)) {
+    throw InputError(whose + " is not a folder; name a file in a folder");
+  }
+  if (::faccessat(AT_FDCWD, folder.c_str(), W_OK | X_OK, AT_EACCESS) != 0) {
+    throw InputError(whose + " cannot be written to (" + std::string(std::strerror(errno)) +
+                     "); name a file in a folder of yours");
+  }
+}
+
 }  // namespace
 
-void check_distinct_files(const std::vector<NamedPath>& outputs,
-                          const std::vector<NamedPath>& inputs) {
+NamedPath preset_input(std::string_view option, const std::string& given) {
+  return {option, given, preset_file(given)};
+}
+
+void check_outputs(const std::vector<NamedPath>& outputs, const std::vector<NamedPath>& inputs) {
   for (std::size_t i = 0; i < outputs.size(); ++i) {
     if (outputs[i].path.empty()) {
       continue;
     }
-    const auto clash = [&](const NamedPath& other, const char* what) {
-      if (!other.path.empty() && same_file(outputs[i].path, other.path)) {
-        throw InputError(std::string(outputs[i].option) + " " + outputs[i].path + " and " +
-                         std::string(other.option) + " " + other.path + " name the same file" +
-                         what);
-      }
-    };
+    check_output_folder(outputs[i]);
     for (std::size_t j = i + 1; j < outputs.size(); ++j) {
-      clash(outputs[j], "; give each output its own path");
+      if (!outputs[j].path.empty() && same_file(outputs[i].path, outputs[j].path)) {
+        throw InputError(shown(outputs[i]) + " and " + shown(outputs[j]) +
+                         " name the same file; give each output its own path");
+      }
     }
     for (const NamedPath& input : inputs) {
-      clash(input, ": writing the output would destroy the input");
+      const std::string& opened = input.file.empty() ? input.path : input.file;
+      if (!opened.empty() && writes_over(outputs[i].path, opened)) {
+        throw InputError(shown(outputs[i]) + " and " + shown(input) +
+                         " name the same file: writing the output would destroy the input");
+      }
     }
   }
 }

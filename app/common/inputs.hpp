@@ -115,13 +115,22 @@ Preset resolve_named_inputs(const InputOptions& options);
 // A file named on the command line by the option that names it.
 struct NamedPath {
   std::string_view option;
-  std::string path;  // empty: not given
+  std::string path;  // as typed; empty: not given
+  // The file `path` opens when that is not `path` itself: a preset given by name (preset_input).
+  std::string file{};
 };
 
-// Throws InputError when an output would overwrite one of the inputs or another output: two
-// spellings, symlinks or hard links of one file count as the same. Writing first would lose it.
-void check_distinct_files(const std::vector<NamedPath>& outputs,
-                          const std::vector<NamedPath>& inputs);
+// --preset (or --b-preset) as an input of check_outputs: the file a preset name resolves to, so
+// that `--preset myfab` and `--save-preset presets/myfab.json` are seen as one file. Throws
+// InputError as resolving the inputs would when no file or preset has that name.
+NamedPath preset_input(std::string_view option, const std::string& given);
+
+// The checks every command makes on the files it will write, before any work: each output's
+// folder exists, is a folder and can be written to (a picture must not render for seconds first),
+// and no output is another output or one of the inputs. Outputs are compared with the files the
+// inputs resolve to (device and inode, links followed); an output that does not exist yet cannot
+// be an input. Throws InputError naming both options.
+void check_outputs(const std::vector<NamedPath>& outputs, const std::vector<NamedPath>& inputs);
 
 // Throws InputError unless `path` ends in `extension` (".png"; in any case, ".PNG" too): a
 // command that writes one format must not put it under another's name, where a viewer would

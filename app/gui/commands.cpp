@@ -20,7 +20,7 @@
 #include "core/model/text_format.hpp"
 
 namespace foldlab::gui {
-using app::check_distinct_files;
+using app::check_outputs;
 using app::guarded;
 using app::InputError;
 using app::kExitInternal;
@@ -165,9 +165,10 @@ void check_play_options(const GuiRunOptions& options) {
 // The files a run reads besides its settings: the preset, the script and every swatch given as
 // --print or --view print_file (a picture written over one would destroy it).
 std::vector<app::NamedPath> run_inputs(const GuiCommandOptions& options) {
-  std::vector<app::NamedPath> inputs = {{"--preset", options.run.inputs.preset_path},
-                                        {"--play", options.run.play_path},
-                                        {"--print", options.print_path}};
+  std::vector<app::NamedPath> inputs = {
+      app::preset_input("--preset", options.run.inputs.preset_path),
+      {"--play", options.run.play_path},
+      {"--print", options.print_path}};
   constexpr std::string_view kPrintFile = "print_file=";
   for (const std::string& setting : options.run.view_settings) {
     if (setting.starts_with(kPrintFile) && setting != "print_file=" + options.print_path) {
@@ -183,7 +184,7 @@ void prepare_run(GuiCommandOptions& options, const std::vector<app::NamedPath>& 
   apply_preset_name_option(options);
   apply_link_option(options);
   apply_print_option(options);
-  check_distinct_files(outputs, run_inputs(options));
+  check_outputs(outputs, run_inputs(options));
   options.run.input_files = run_inputs(options);
 }
 
@@ -404,7 +405,8 @@ app::Command add_picture_command(CLI::App& app) {
                          " is a folder; name the PNG file to write");
       }
       prepare_run(options->scene, {{"--out", options->out}});
-      check_distinct_files({{"--out", options->out}}, {{"--b-preset", options->b_preset}});
+      check_outputs({{"--out", options->out}},
+                    {app::preset_input("--b-preset", options->b_preset)});
       app::check_output_extension("--out", options->out, ".png", "PNG");
       PictureInputs inputs;
       inputs.sweep_axis = picture_sweep_axis(*options, spec.view);

@@ -73,7 +73,7 @@ void ScriptedRun::after_render(Explorer& explorer, Renderer& renderer, FrameSize
   for (const app::NamedPath& open : explorer.files_in_use()) {
     inputs.push_back(open);
   }
-  app::check_distinct_files({{"the --play script's screenshot step", *path}}, inputs);
+  app::check_outputs({{"the --play script's screenshot step", *path}}, inputs);
   write_png(path->c_str(), size, renderer.read_pixels(size));
 }
 

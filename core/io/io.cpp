@@ -84,10 +84,32 @@ fs::path resolve_symlinks(const fs::path& path, struct stat& target_stat, bool& 
   }
 }
 
+// Linux's limit on one name in a path, in bytes.
+constexpr std::size_t kMaxNameBytes = 255;
+// The most ".PID.N" can take: two 32-bit numbers and their dots.
+constexpr std::size_t kMaxTemporarySuffixBytes = 2 * 10 + 2;
+
+// "NAME.tmp.", the start of the name of every temporary of `target`: NAME cut (at a character's
+// start, so the name stays readable UTF-8) to leave room for ".PID.N" within the name limit, so
+// that every name an output may have can be written.
+std::string temporary_prefix(const fs::path& target) {
+  constexpr std::string_view kTmp = ".tmp.";
+  std::string name = target.filename().string();
+  const std::size_t room = kMaxNameBytes - kMaxTemporarySuffixBytes - kTmp.size();
+  if (name.size() > room) {
+    std::size_t cut = room;
+    while (cut > 0 && (static_cast<unsigned char>(name[cut]) & 0xC0) == 0x80) {
+      --cut;
+    }
+    name.resize(cut);
+  }
+  return name + std::string(kTmp);
+}
+
 // Removes temporaries that an earlier save of `target` left behind when its process was killed:
 // `NAME.tmp.PID.N` whose PID no longer runs. A running process's temporaries are left alone.
 void remove_stale_temporaries(const fs::path& target) {
-  const std::string prefix = target.filename().string() + ".tmp.";
+  const std::string prefix = temporary_prefix(target);
   const fs::path dir = target.has_parent_path() ? target.parent_path() : fs::path(".");
   std::error_code error;
   for (fs::directory_iterator it(dir, error), end; !error && it != end; it.increment(error)) {
@@ -131,9 +153,14 @@ std::string describe_bytes(std::uintmax_t bytes) {
 // A temporary being written, where a signal handler can read its name: a fixed table, so that
 // nothing is allocated, whose state says when a slot's name is whole. A name too long for a slot,
 // or a slot wanted while all are taken, is not registered: the next save removes it as stale.
+// A placeholder (NewFilePlaceholder) carries the identity it had when created, and is removed
+// only while the name still holds that file, empty.
 struct PendingTemporary {
   std::atomic<int> state{0};  // kFree, kNaming, kNamed
   std::array<char, 4096> name{};
+  bool placeholder = false;
+  dev_t device = 0;
+  ino_t inode = 0;
 };
 constexpr int kFree = 0;
 constexpr int kNaming = 1;
@@ -141,41 +168,109 @@ constexpr int kNamed = 2;
 static_assert(std::atomic<int>::is_always_lock_free, "a signal handler reads the state");
 std::array<PendingTemporary, 16> pending_temporaries;
 
+// The slot `name` took, or -1 when none could.
+int register_pending(const std::string& name, const struct stat* placeholder) {
+  for (std::size_t i = 0; i < pending_temporaries.size(); ++i) {
+    PendingTemporary& slot = pending_temporaries[i];
+    int expected = kFree;
+    if (name.size() < slot.name.size() && slot.state.compare_exchange_strong(expected, kNaming)) {
+      std::memcpy(slot.name.data(), name.c_str(), name.size() + 1);
+      slot.placeholder = placeholder != nullptr;
+      slot.device = placeholder != nullptr ? placeholder->st_dev : 0;
+      slot.inode = placeholder != nullptr ? placeholder->st_ino : 0;
+      slot.state.store(kNamed);
+      return static_cast<int>(i);
+    }
+  }
+  return -1;
+}
+
+void release_pending(int slot) noexcept {
+  if (slot >= 0) {
+    pending_temporaries[static_cast<std::size_t>(slot)].state.store(kFree);
+  }
+}
+
+// Whether `slot` may be unlinked now: a temporary always, a placeholder while its name still
+// holds the empty file it created. Async-signal-safe.
+bool removable(const PendingTemporary& slot) noexcept {
+  if (!slot.placeholder) {
+    return true;
+  }
+  struct stat now {};
+  return ::stat(slot.name.data(), &now) == 0 && now.st_dev == slot.device &&
+         now.st_ino == slot.inode && now.st_size == 0;
+}
+
 // Registers `path` for the life of the write.
 class PendingRegistration {
  public:
-  explicit PendingRegistration(const fs::path& path) {
-    const std::string& name = path.native();
-    for (PendingTemporary& slot : pending_temporaries) {
-      int expected = kFree;
-      if (name.size() < slot.name.size() && slot.state.compare_exchange_strong(expected, kNaming)) {
-        std::memcpy(slot.name.data(), name.c_str(), name.size() + 1);
-        slot.state.store(kNamed);
-        slot_ = &slot;
-        return;
-      }
-    }
-  }
-  ~PendingRegistration() {
-    if (slot_ != nullptr) {
-      slot_->state.store(kFree);
-    }
-  }
+  explicit PendingRegistration(const fs::path& path)
+      : slot_(register_pending(path.native(), nullptr)) {}
+  ~PendingRegistration() { release_pending(slot_); }
   PendingRegistration(const PendingRegistration&) = delete;
   PendingRegistration& operator=(const PendingRegistration&) = delete;
 
  private:
-  PendingTemporary* slot_ = nullptr;
+  int slot_ = -1;
 };
 
 }  // namespace
 
 void remove_pending_temporaries() noexcept {
   for (PendingTemporary& slot : pending_temporaries) {
-    if (slot.state.load() == kNamed) {
+    if (slot.state.load() == kNamed && removable(slot)) {
       ::unlink(slot.name.data());
     }
   }
+}
+
+int NewFilePlaceholder::create(const std::filesystem::path& path, int flags) {
+  remove_unless_kept();
+  // Held off from the open until the file is registered, so that no moment of its life is
+  // hidden from a signal handler.
+  sigset_t stopping;
+  sigset_t previous;
+  ::sigemptyset(&stopping);
+  ::sigaddset(&stopping, SIGINT);
+  ::sigaddset(&stopping, SIGTERM);
+  ::pthread_sigmask(SIG_BLOCK, &stopping, &previous);
+  const int fd = ::open(path.c_str(), flags | O_CREAT, 0644);
+  const int open_error = errno;
+  struct stat created {};
+  if (fd >= 0 && ::fstat(fd, &created) == 0 && S_ISREG(created.st_mode)) {
+    slot_ = register_pending(path.native(), &created);
+    path_ = path;
+    device_ = created.st_dev;
+    inode_ = created.st_ino;
+    kept_ = false;
+  }
+  ::pthread_sigmask(SIG_SETMASK, &previous, nullptr);
+  errno = open_error;
+  return fd;
+}
+
+void NewFilePlaceholder::keep() noexcept {
+  kept_ = true;
+  release_pending(slot_);
+  slot_ = -1;
+}
+
+void NewFilePlaceholder::remove_unless_kept() noexcept {
+  if (!kept_ && !path_.empty()) {
+    struct stat now {};
+    if (::stat(path_.c_str(), &now) == 0 && now.st_dev == device_ && now.st_ino == inode_ &&
+        now.st_size == 0) {
+      ::unlink(path_.c_str());
+    }
+  }
+  release_pending(slot_);
+  slot_ = -1;
+  path_.clear();
+}
+
+NewFilePlaceholder::~NewFilePlaceholder() {
+  remove_unless_kept();
 }
 
 std::string read_text_file(const std::filesystem::path& path, std::uintmax_t max_bytes) {
@@ -241,8 +336,9 @@ void write_file_atomically(const std::filesystem::path& path, std::string_view c
   remove_stale_temporaries(target);
   // Unique per process and per call, so concurrent saves of one path never share a temporary.
   static std::atomic<unsigned> counter{0};
-  fs::path temporary = target;
-  temporary += ".tmp." + std::to_string(::getpid()) + "." + std::to_string(counter++);
+  const fs::path temporary =
+      target.parent_path() /
+      (temporary_prefix(target) + std::to_string(::getpid()) + "." + std::to_string(counter++));
   auto fail = [&](const std::string& what, int error) {
     std::error_code ignored;
     fs::remove(temporary, ignored);

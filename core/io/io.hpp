@@ -1,6 +1,8 @@
 // Writing files so that a crash or a full disk never leaves half of one behind.
 #pragma once
 
+#include <sys/types.h>
+
 #include <cstdint>
 #include <filesystem>
 #include <stdexcept>
@@ -43,5 +45,33 @@ void write_file_atomically(const std::filesystem::path& path, std::string_view c
 // Unlinks the temporaries write_file_atomically is writing now. Async-signal-safe: a handler of
 // SIGINT or SIGTERM calls it, so that a stopped write leaves no temporary as large as the file.
 void remove_pending_temporaries() noexcept;
+
+// A file a run creates empty to hold its place before its contents are written (an append's lock
+// on a new measurements file). Until keep(), a SIGINT or SIGTERM (remove_pending_temporaries) and
+// the destructor remove it while its name still holds that file, empty: a run stopped or refused
+// before writing leaves no empty file where there was none, which a later read would refuse.
+class NewFilePlaceholder {
+ public:
+  NewFilePlaceholder() = default;
+  ~NewFilePlaceholder();
+  NewFilePlaceholder(const NewFilePlaceholder&) = delete;
+  NewFilePlaceholder& operator=(const NewFilePlaceholder&) = delete;
+
+  // open(path, flags | O_CREAT, 0644), to be called when `path` does not exist; the file is
+  // registered before SIGINT or SIGTERM can be handled. Returns the descriptor, or -1 with errno.
+  int create(const std::filesystem::path& path, int flags);
+  // The file now holds what was written: it stays.
+  void keep() noexcept;
+  // What the destructor does, before it: an append removes its placeholder while it holds the
+  // lock, so that no other process finds it empty.
+  void remove_unless_kept() noexcept;
+
+ private:
+  std::filesystem::path path_;  // empty: nothing created
+  int slot_ = -1;
+  dev_t device_ = 0;
+  ino_t inode_ = 0;
+  bool kept_ = false;
+};
 
 }  // namespace foldlab

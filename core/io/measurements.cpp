@@ -622,7 +622,6 @@ class AppendLock {
  public:
   explicit AppendLock(const std::filesystem::path& path) {
     for (;;) {
-      bool created = false;
       bool creating = false;
       // Read-only is enough for flock, and keeps a read-only file appendable as before (it is
       // replaced, not written in place); O_NONBLOCK: a FIFO must not block the open.
@@ -630,8 +629,7 @@ class AppendLock {
       if (fd_ < 0 && errno == ENOENT) {
         creating = true;
         // Not O_EXCL: a dangling symbolic link gets its target created, as the write would.
-        fd_ = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK | O_CREAT, 0644);
-        created = fd_ >= 0;
+        fd_ = placeholder_.create(path, O_RDONLY | O_CLOEXEC | O_NONBLOCK);
       }
       if (fd_ < 0) {
         const int error = errno;
@@ -656,8 +654,6 @@ class AppendLock {
       struct stat current {};
       if (::stat(path.c_str(), &current) == 0 && current.st_dev == locked.st_dev &&
           current.st_ino == locked.st_ino) {
-        path_ = path;
-        created_ = created;
         return;
       }
       ::close(fd_);  // replaced while waiting: lock the new file
@@ -665,26 +661,20 @@ class AppendLock {
     }
   }
   ~AppendLock() {
-    if (created_ && !written_) {
-      // Created only to lock it: a refused append leaves no empty file behind.
-      std::error_code ignored;
-      if (std::filesystem::file_size(path_, ignored) == 0 && !ignored) {
-        std::filesystem::remove(path_, ignored);
-      }
-    }
+    // Created only to lock it: a refused append leaves no empty file behind.
+    placeholder_.remove_unless_kept();
     if (fd_ >= 0) {
       ::close(fd_);  // releases the lock
     }
   }
   AppendLock(const AppendLock&) = delete;
   AppendLock& operator=(const AppendLock&) = delete;
-  void written() { written_ = true; }
+  void written() { placeholder_.keep(); }
 
  private:
   int fd_ = -1;
-  std::filesystem::path path_;
-  bool created_ = false;
-  bool written_ = false;
+  // A new file, created to be locked: removed by SIGINT or SIGTERM too until the row is written.
+  NewFilePlaceholder placeholder_;
 };
 
 }  // namespace
