@@ -372,7 +372,7 @@ app::Command add_picture_command(CLI::App& app) {
   command->add_flag("--linear", options->linear, "sweep: linear spacing");
   command
       ->add_option("--b-preset", options->b_preset,
-                   "compare: B's preset (default: A's --preset), with --b-set overrides")
+                   "compare: B's preset; with --b-set alone, B is A's --preset with those overrides")
       ->type_name("FILE")
       ->check(app::non_empty_path());
   command->add_option("--b-set", options->b_sets, "compare: override one of B's inputs")
