@@ -52,7 +52,7 @@ Explorer::Explorer(const Preset& initial, const std::string& initial_path, bool 
   session_->read(restore_session);
   PanelContext start = context();
   for (const std::unique_ptr<Panel>& panel : panels_) {
-    panel->start(start);
+    panel->session_read(start);
   }
   document_.forget_history();     // undo goes back no further than what the window opened with
   view_settings_.take_changed();  // what the window opened with is what the session has

@@ -91,7 +91,7 @@ class Panel {
   // Once per frame, between ImGui::NewFrame and ImGui::Render.
   virtual void draw(PanelContext& context) = 0;
   // Once, when the explorer has read its session (a panel says what it could not read).
-  virtual void start(PanelContext& /*context*/) {}
+  virtual void session_read(PanelContext& /*context*/) {}
   // Before any panel draws (an input being played takes this frame's value, so that every view
   // shows it), and after all have (dialogs over the panels); every frame, shown or not.
   virtual void begin_frame(PanelContext& /*context*/) {}

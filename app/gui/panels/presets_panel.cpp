@@ -346,7 +346,7 @@ void PresetsPanel::draw(PanelContext& context) {
   ImGui::End();
 }
 
-void PresetsPanel::start(PanelContext& context) {
+void PresetsPanel::session_read(PanelContext& context) {
   for (const std::string& notice : notices_) {
     context.status.add_notice(notice);
   }

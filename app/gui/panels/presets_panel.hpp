@@ -27,7 +27,7 @@ class PresetsPanel : public Panel {
   const char* key() const override { return "presets"; }
   void draw(PanelContext& context) override;
   // Why the listing is not the whole folder (too many presets), said as notices.
-  void start(PanelContext& context) override;
+  void session_read(PanelContext& context) override;
   // Ctrl+S, unless a dialog or a widget being dragged or typed into has the keys.
   void begin_frame(PanelContext& context) override;
   // The save dialogs and the unsaved edits' question, over every panel; a preset the photo's fit
