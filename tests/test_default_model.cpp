@@ -754,13 +754,17 @@ TEST(DefaultModel, APresetWithoutAModelBlockIsEq7AsPrinted) {
   EXPECT_FALSE(standing.range.has_value());
 }
 
-TEST_F(DefaultModelCli, MeasureIntoAnUnwritableFileIsExitOne) {
+// An output whose folder is a plain file is refused before anything is measured (exit 2, the
+// folder named), as every command's outputs are checked before the work.
+TEST_F(DefaultModelCli, MeasureIntoAFolderThatIsAFileIsRefusedBeforeTheWork) {
   const fs::path file = dir_ / "plain-file";
   std::ofstream(file) << "x";
   const testing::RunResult r =
       run({"measure", "--depths-mm", "100,50", "--append", (file / "m.csv").string()});
-  EXPECT_EQ(r.exit_status, 1) << r.err;
-  EXPECT_TRUE(contains(r.err, "cannot write")) << r.err;
+  EXPECT_EQ(r.exit_status, 2) << r.err;
+  EXPECT_TRUE(contains(r.err, "plain-file is not a folder")) << r.err;
+  EXPECT_EQ(testing::read_file(file), "x")
+      << "the file that stood for the folder is left as it was";
 }
 
 }  // namespace
