@@ -194,11 +194,7 @@ json print_json(const Result& result) {
 
 int execute(const Options& options) {
   const Result result = run(options);
-  if (options.json) {
-    write_json(print_json(result), std::cout);
-  } else {
-    print_markdown(result, std::cout);
-  }
+  print_result(result, options.json, &print_markdown);
   return kExitOk;
 }
 

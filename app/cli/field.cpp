@@ -177,11 +177,7 @@ nlohmann::json print_json(const Result& r) {
 
 int execute(const Options& options) {
   const Result result = run(options);
-  if (options.json) {
-    write_json(print_json(result), std::cout);
-  } else {
-    print_text(result, std::cout);
-  }
+  print_result(result, options.json, &print_text);
   return result.report.solution.converged ? kExitOk : kExitInternal;
 }
 

@@ -319,11 +319,7 @@ nlohmann::json print_json(const Result& result) {
 int execute(const Options& options) {
   const Result result = run(options);
   append_row(result);
-  if (options.json) {
-    write_json(print_json(result), std::cout);
-  } else {
-    print_text(result, std::cout);
-  }
+  print_result(result, options.json, &print_text);
   return kExitOk;
 }
 

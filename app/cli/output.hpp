@@ -2,6 +2,8 @@
 // the table cells that every Markdown table of the commands spells the same way.
 #pragma once
 
+#include <iostream>
+
 #include <optional>
 #include <ostream>
 #include <string>
@@ -15,6 +17,18 @@ namespace foldlab::cli {
 
 // `document` indented by two and a line break: every --json output.
 void write_json(const nlohmann::json& document, std::ostream& out);
+
+// A command's result on standard output: with --json its object (the command's print_json, found
+// beside its Result), else its text or table.
+template <class Result>
+void print_result(const Result& result, bool as_json,
+                  void (*print_words)(const Result&, std::ostream&)) {
+  if (as_json) {
+    write_json(print_json(result), std::cout);
+  } else {
+    print_words(result, std::cout);
+  }
+}
 
 // "foldlab: NOTE", one line each: what a command says on stderr beside its output.
 void write_notes(const std::vector<std::string>& notes, std::ostream& err);
