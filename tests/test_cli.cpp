@@ -1478,11 +1478,12 @@ TEST_F(CliTest, EveryLoaderRefusesFifosDevicesAndHugeFilesAsInvalidInput) {
       {fifo.string(), "a FIFO, not a regular file"},
       {"/dev/zero", "a character device, not a regular file"},
       {huge.string(), "2.0 GB, more than the"}};
+  const std::string svg = (dir_ / "o.svg").string();
   const std::vector<std::vector<std::string>> commands = {
       {"solve", "--preset"},
       {"calibrate", "--data"},
       {"render", "--play"},
-      {"export", "--svg", "o.svg", "--preset"},
+      {"export", "--svg", svg, "--preset"},
       {"measure", "--supports-px", "10,10,90,10", "--folds-px", "60,50", "--photo"}};
   for (const auto& [path, reason] : inputs) {
     for (std::vector<std::string> args : commands) {
