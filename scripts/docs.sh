@@ -58,6 +58,8 @@ echo "docs.sh: explorer pictures" >&2
   --out docs/explorer-table1-h2350-exact.png
 "$foldlab" render --size "$size" --view sweep=table1 --tab sweep --out docs/explorer-sweep-table1.png
 "$foldlab" render --size "$size" --tab map --out docs/explorer-regime-map.png
+"$foldlab" render --size "$size" --set shape=rectangular --view field=1 --view field_cosines=1 \
+  --view present=field --out docs/explorer-tension-field.png
 # Pictures for a slide, no interface: the sweep of Table 1 and two fabrics side by side.
 "$foldlab" picture sweep --size 1600x1000 --view sweep=table1 --caption \
   --out docs/picture-sweep-table1.png

@@ -123,9 +123,12 @@ void add_scene_options(CLI::App& command, GuiCommandOptions& options) {
           "z_exaggeration (1-20), wireframe, lod=0|1 (0: every grid vertex drawn), fold_lines, "
           "ground, grid (vertices per side, 8-512), "
           "full=1 (the 3D view fills the window) (3D view); fold_plot_true_scale=0|1 (the fold "
-          "plot); sweep=table1|table2|fig4 (the paper's case in the Sweep tab); "
-          "present=fold_plot|cloth|results|analysis|parameters|presets|none (that panel fills the "
-          "window); theme=dark|light; scale (UI scale, percent); expert=0|1 (the expert settings)")
+          "plot); sweep=table1|table2|fig4 (the paper's case in the Sweep tab); field=0|1 (the "
+          "tension field's window), field_colour=state|tension, field_rays, field_cosines (the "
+          "closed form's cosines over the field), field_cells (mesh cells across at rest, 8-80; "
+          "half while a value is dragged); "
+          "present=fold_plot|cloth|results|analysis|parameters|presets|field|none (that panel "
+          "fills the window); theme=dark|light; scale (UI scale, percent); expert=0|1 (the expert settings)")
       ->type_name("KEY=VALUE");
   command
       .add_option("--print", options.print_path,
