@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -358,18 +359,29 @@ void FieldPanel::draw(PanelContext& context) {
     was_open_ = false;
     return;  // closed, nothing is solved
   }
-  // While a value is dragged or played, a coarser mesh keeps up with the hand.
-  const bool moving = (ImGui::IsAnyItemActive() && !own_slider_active_) || context.holding_frame;
+  // While a value moves (dragged, nudged, played, animated) and a moment after, a coarser mesh
+  // keeps up with the hand; the finer one follows when it rests.
+  const Parameters& parameters = context.document.scene().parameters();
+  const double now_s = ImGui::GetTime();
+  if (!last_parameters_ || !(*last_parameters_ == parameters)) {
+    last_parameters_ = parameters;
+    last_change_s_ = now_s;
+  }
+  const bool moving = (ImGui::IsAnyItemActive() && !own_slider_active_) || context.holding_frame ||
+                      now_s - last_change_s_ < kRestS;
   const int cells = moving ? std::max(static_cast<int>(kCells.lo), cells_ / 2) : cells_;
   try {
-    live_.request(field_inputs(context.document.scene().parameters(), cells));
+    live_.request(field_inputs(parameters, cells));
     cut_refusal_.clear();
   } catch (const field::OutlineError& e) {
     // The last field stays on show, marked as of other inputs.
     cut_refusal_ = std::string("This cut cannot be solved: ") + e.what();
   }
   // A share of the frame: the rest of the explorer draws in the remainder of 16 ms.
+  const auto began = std::chrono::steady_clock::now();
   live_.step(moving ? 6.0 : 10.0);
+  slice_ms_ =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - began).count();
   // A first place of its own, unless the layout placed it (presented, or put back).
   if ((ImGui::GetCurrentContext()->NextWindowData.Flags & ImGuiNextWindowDataFlags_HasPos) == 0) {
     const ImVec2 display = ImGui::GetIO().DisplaySize;
@@ -395,6 +407,7 @@ void FieldPanel::report(json& state, PanelContext& /*context*/) const {
   out["open"] = open_;
   out["current"] = live_.current();
   out["working"] = live_.working();
+  out["slice_ms"] = slice_ms_;
   const std::string& refusal = cut_refusal_.empty() ? live_.refusal() : cut_refusal_;
   out["refusal"] = refusal.empty() ? json(nullptr) : json(refusal);
   if (const field::SolvedField* shown = live_.shown()) {

@@ -58,7 +58,8 @@ class FieldPanel : public Panel {
   bool presentable() const override { return true; }
   void view_settings(ViewSettings& settings, Document& document) override;
   // {"field": {open, current, working, refusal, converged, relative_residual, iterations,
-  // solve_ms, mesh, regions, weight_N, thrust_N, pencil_thrust_N, supports, rays}}.
+  // slice_ms (its share of the last frame), mesh, regions, weight_N, thrust_N, pencil_thrust_N,
+  // supports, rays}}.
   void report(nlohmann::json& state, PanelContext& context) const override;
   static constexpr PictureOffer kPictures[] = {
       {PictureView::field, "field", "Export tension field picture",
@@ -93,6 +94,12 @@ class FieldPanel : public Panel {
   bool cosines_ = false;
   int cells_ = kDefaultCells;
   bool own_slider_active_ = false;
+  // When the inputs last changed: the field is solved on the coarser mesh until they rest this
+  // long.
+  static constexpr double kRestS = 0.3;
+  std::optional<Parameters> last_parameters_;
+  double last_change_s_ = -1e9;
+  double slice_ms_ = 0.0;  // the field's share of the last frame
   field::LiveField live_;
   std::string cut_refusal_;  // why the inputs' cut cannot be meshed, or empty
   std::optional<PanelRect> canvas_rect_;
