@@ -332,5 +332,37 @@ TEST_F(ExplorerTest, OneEditOfSeveralInputsIsOneUndoStep) {
   EXPECT_TRUE(shown() == before);
 }
 
+
+// B pinned from the user's preset, A edited, Ctrl+S: saving over the file B came from asks first
+// (Cancel keeps the file); saved anyway, a swap makes A the fabric B was, which its file no longer
+// holds: it reads as unsaved.
+TEST_F(ExplorerTest, ASaveOverThePinnedFabricsFileAsksAndASwapComparesWithTheFileNow) {
+  const fs::path written = save_h900_as_the_users();
+  click("Pin as B");
+  ASSERT_TRUE(document().compare().pinned());
+  ASSERT_EQ(explorer_->set_input("h", 950.0), std::nullopt);
+  frame();
+  press('S', true);
+  EXPECT_EQ(status().modal_title(), PresetsPanel::kPinnedFileModal);
+  EXPECT_EQ(load_preset(written).parameters.hanging.height_mm, 900.0) << "nothing written yet";
+  click("Cancel");
+  EXPECT_EQ(status().modal_title(), "");
+  EXPECT_EQ(load_preset(written).parameters.hanging.height_mm, 900.0);
+  EXPECT_TRUE(document().unsaved());
+
+  press('S', true);
+  ASSERT_EQ(status().modal_title(), PresetsPanel::kPinnedFileModal);
+  click("Save over it");
+  EXPECT_EQ(status().modal_title(), "");
+  EXPECT_EQ(load_preset(written).parameters.hanging.height_mm, 950.0);
+  EXPECT_FALSE(document().unsaved());
+
+  click("Swap A and B");
+  EXPECT_EQ(shown().hanging.height_mm, 900.0);
+  EXPECT_EQ(document().loaded_path(), written.string());
+  EXPECT_TRUE(document().unsaved()) << "the file holds 950 mm, A shows 900 mm";
+  EXPECT_NE(frame().find("Parameters *"), std::string::npos) << last_text_;
+}
+
 }  // namespace
 }  // namespace foldlab::gui

@@ -119,7 +119,17 @@ std::optional<std::string> Document::take_fabric(const Preset& origin, std::stri
   if (const std::vector<ValidationIssue> issues = validate(parameters); !issues.empty()) {
     return issues.front().message;
   }
-  set_loaded(origin, std::move(path));
+  // The file as it is now, which a save since the fabric was pinned may have changed: the unsaved
+  // marker compares with what the file holds, not with what it held then.
+  Preset now = origin;
+  if (!path.empty()) {
+    try {
+      now = load_preset(path);
+    } catch (const PresetError&) {
+      // Gone or unreadable: compared with the preset as pinned, as before.
+    }
+  }
+  set_loaded(now, std::move(path));
   return apply(Edit::replace(parameters));
 }
 

@@ -125,11 +125,25 @@ bool PresetsPanel::is_user_preset(const std::string& path) const {
                                      error);
 }
 
-void PresetsPanel::save(Document& document, UiStatus& status) {
+bool PresetsPanel::saves_over_pinned_b(Document& document) {
+  Comparison& compare = document.compare();
+  if (!compare.pinned() || compare.b_origin_path().empty()) {
+    return false;
+  }
+  std::error_code error;
+  return std::filesystem::equivalent(compare.b_origin_path(), document.loaded_path(), error) &&
+         !(compare.b().parameters == document.scene().parameters());
+}
+
+void PresetsPanel::save(Document& document, UiStatus& status, bool confirmed_over_b) {
   if (refused_inputs_stop_the_save(document, status)) {
     return;
   }
   if (is_user_preset(document.loaded_path())) {
+    if (!confirmed_over_b && saves_over_pinned_b(document)) {
+      status.set_modal(kPinnedFileModal);  // the pinned fabric would no longer match its file
+      return;
+    }
     write(document, status, document.loaded().name, document.loaded_path());
     return;
   }
@@ -174,7 +188,7 @@ void PresetsPanel::write(Document& document, UiStatus& status, const std::string
 
 void PresetsPanel::draw_dialogs(Document& document, UiStatus& status) {
   const std::string& modal = status.modal_title();
-  if (modal != kOverwriteModal && modal != kSaveAsModal) {
+  if (modal != kOverwriteModal && modal != kSaveAsModal && modal != kPinnedFileModal) {
     return;
   }
   if (!ImGui::IsPopupOpen(modal.c_str())) {
@@ -187,6 +201,31 @@ void PresetsPanel::draw_dialogs(Document& document, UiStatus& status) {
     document.cancel_replace();
     status.notify("Not saved.", MessageKind::warning);
   };
+  if (ImGui::BeginPopupModal(kPinnedFileModal, nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
+    const Comparison& compare = document.compare();
+    ImGui::Text("B, \"%s\", was pinned from this preset's file.",
+                compare.pinned() ? compare.b().name.c_str() : "");
+    ImGui::TextUnformatted(
+        "Saving A's values there leaves B different from the file it came "
+        "from; A as a new preset keeps both.");
+    if (ImGui::Button("Save over it")) {
+      status.set_modal("");
+      ImGui::CloseCurrentPopup();
+      save(document, status, true);
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("Save A as...")) {
+      ImGui::CloseCurrentPopup();
+      const std::string suggestion = document.loaded().name + " (edited)";
+      std::snprintf(save_as_name_, sizeof save_as_name_, "%s", suggestion.c_str());
+      status.set_modal(kSaveAsModal);
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("Cancel") || escape) {
+      cancel();
+    }
+    ImGui::EndPopup();
+  }
   if (ImGui::BeginPopupModal(kOverwriteModal, nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
     ImGui::Text("A preset named \"%s\" exists. Replace it?", pending_overwrite_.c_str());
     if (ImGui::Button("Replace")) {

@@ -38,13 +38,18 @@ class PresetsPanel : public Panel {
   // Saves the current valid parameters as a user preset named `name` (the file name is its slug);
   // asks before replacing a file unless `overwrite`.
   void save_as(Document& document, UiStatus& status, const std::string& name, bool overwrite);
-  // Ctrl+S: over the loaded preset when it is one of the user's, else opens "Save as".
-  void save(Document& document, UiStatus& status);
+  // Ctrl+S: over the loaded preset when it is one of the user's, else opens "Save as". Asks first
+  // (unless `confirmed_over_b`) when B was pinned from that file and A's values are not B's.
+  void save(Document& document, UiStatus& status, bool confirmed_over_b = false);
+  // Whether saving A over its file would leave B, pinned from that file, unlike it.
+  static bool saves_over_pinned_b(Document& document);
   // The overwrite question and "Save as", shown while the document names them as its modal;
   // drawn outside any panel so that they open whether or not the panel is visible.
   void draw_dialogs(Document& document, UiStatus& status);
   static constexpr const char* kOverwriteModal = "Overwrite preset?";
   static constexpr const char* kSaveAsModal = "Save as";
+  // Ctrl+S over the file B was pinned from, with values that are not B's.
+  static constexpr const char* kPinnedFileModal = "Save over B's preset?";
   // The file dialog's title for "Open file...": a preset file from anywhere on the disk.
   static constexpr const char* kOpenFileModal = "Open a preset file";
 
