@@ -4,6 +4,7 @@
 
 #include "app/cli/commands.hpp"
 #include "app/cli/output.hpp"
+#include "core/field/field_svg.hpp"
 #include "core/io/io.hpp"
 #include "core/model/text_format.hpp"
 
@@ -70,10 +71,19 @@ void declare(CLI::App& app, Options& options) {
       ->check(app::one_of("split", {"uniform", "union-jack", "crossed"}));
   command->add_option("--rays", options.rays, "rays traced from the centre line (default 8)")
       ->transform(app::whole_number_in(0, 100));
+  command
+      ->add_option("--svg", options.svg_path,
+                   "also draw the field: the hung cloth by region, the rays and the supports' "
+                   "reactions")
+      ->check(app::non_empty_path());
   command->add_flag("--json", options.json, "print one JSON object instead of text");
 }
 
 Result run(const Options& options) {
+  check_outputs({{"--svg", options.svg_path}},
+                {app::preset_input("--preset", options.inputs.preset_path),
+                 {"--outline", options.outline_path}});
+  app::check_output_extension("--svg", options.svg_path, ".svg", "SVG");
   Result r;
   r.preset = app::resolve_named_inputs(options.inputs);
   r.outline = read_outline(options, r.preset, r.outline_name);
@@ -87,6 +97,7 @@ Result run(const Options& options) {
     const field::Material material = field::material_of(r.preset.parameters.fabric);
     field::Solution solution = field::solve_cold(solver, r.outline, material, r.resolution);
     r.report = field::report_field(solver, std::move(solution), r.outline, material, options.rays);
+    r.mesh = solver.mesh();
   } catch (const field::OutlineError& e) {
     throw InputError(e.what());
   }
@@ -177,6 +188,11 @@ nlohmann::json print_json(const Result& r) {
 
 int execute(const Options& options) {
   const Result result = run(options);
+  if (!options.svg_path.empty()) {
+    write_file_atomically(options.svg_path,
+                          field::field_to_svg(result.mesh, result.report, result.outline,
+                                              "Tension field of " + result.preset.name));
+  }
   print_result(result, options.json, &print_text);
   return result.report.solution.converged ? kExitOk : kExitInternal;
 }
