@@ -185,6 +185,8 @@ double outline_area_by_hand(const Parameters& p, OutlineKind kind) {
     case OutlineKind::triangle:
     case OutlineKind::pennant:
       return 0.5 * L * h;
+    case OutlineKind::wedge:
+      return 0.5 * L * (h + 0.25 * h);  // a trapezoid: depth h at the left, h / 4 at the right
   }
   return 0.0;
 }
@@ -192,8 +194,9 @@ double outline_area_by_hand(const Parameters& p, OutlineKind kind) {
 TEST(FieldStatics, ReactionsCarryTheWeightForEveryOutline) {
   const Parameters p = default_parameters();
   const Material material = material_of(p.fabric);
-  for (OutlineKind kind : {OutlineKind::rectangular, OutlineKind::cosine, OutlineKind::strip,
-                           OutlineKind::inclined, OutlineKind::triangle, OutlineKind::pennant}) {
+  for (OutlineKind kind :
+       {OutlineKind::rectangular, OutlineKind::cosine, OutlineKind::strip, OutlineKind::inclined,
+        OutlineKind::triangle, OutlineKind::pennant, OutlineKind::wedge}) {
     SCOPED_TRACE(std::string(to_string(kind)));
     const Outline outline = make_outline(p, kind);
     const FieldReport r = solve_outline(outline, material, {16, 12, MeshSplit::union_jack});
@@ -246,6 +249,48 @@ TEST(FieldStatics, InclinedSupportsDifferByTwiceTheThrustTimesTheSlope) {
   std::cout << "inclined 15 deg: V_R - V_L = " << V_R - V_L << " N, 2 H tan = " << 2 * H * tan_theta
             << " N, x_g = " << x_g << " mm\n";
   EXPECT_GT(V_R, V_L);
+}
+
+// The wedge: its weight, w L (h + h/4) / 2 by hand, hangs nearer its thick (left) end. With the
+// supports level at (-l/2, 0) and (l/2, 0) and reactions (-H, -V_L), (H, -V_R), moments about the
+// middle between them give l (V_L - V_R) / 2 = -x_g W: the left support carries more, by exactly
+// what the hung cloth's centre of gravity x_g (found here from the nodes) says.
+TEST(FieldStatics, TheWedgeHangsMostlyFromItsThickEnd) {
+  const Parameters p = default_parameters();
+  const Material material = material_of(p.fabric);
+  const Outline outline = make_outline(p, OutlineKind::wedge);
+  const double h = p.hanging.height_mm;
+  const double L = p.hanging.length_mm;
+  EXPECT_NEAR(outline.area_mm2(), L * (h + h / 4) / 2, 1e-9 * L * h);
+  const Mesh mesh = make_mesh(outline, {20, 14, MeshSplit::union_jack});
+  Solver solver(mesh);
+  const Solution s = solver.solve(material, support_targets(outline));
+  ASSERT_TRUE(s.converged) << s.relative_residual;
+  const double weight = material.weight_N_per_mm2 * L * (h + h / 4) / 2;
+  EXPECT_NEAR(s.weight_N, weight, 1e-12 * weight);
+  const Vector2d sum = s.reactions_N[0] + s.reactions_N[1];
+  EXPECT_NEAR(sum.x(), 0.0, 1e-6 * weight);
+  EXPECT_NEAR(sum.y(), -weight, 1e-6 * weight);
+  double moment = 0.0;
+  for (const auto& tri : mesh.triangles) {
+    const Vector2d u = mesh.nodes_mm[tri[1]] - mesh.nodes_mm[tri[0]];
+    const Vector2d v = mesh.nodes_mm[tri[2]] - mesh.nodes_mm[tri[0]];
+    const double area = 0.5 * (u.x() * v.y() - u.y() * v.x());
+    for (int n : tri) {
+      moment += material.weight_N_per_mm2 * area / 3.0 * s.positions_mm[n].x();
+    }
+  }
+  const double x_g = moment / s.weight_N;
+  const double l = outline.supports[1].to_mm.x() - outline.supports[0].to_mm.x();
+  const double V_L = -s.reactions_N[0].y();
+  const double V_R = -s.reactions_N[1].y();
+  EXPECT_NEAR(V_L - V_R, -2.0 * x_g * weight / l, 1e-6 * weight);
+  // The flat cut's centre of gravity, by hand: a trapezoid of parallel sides h and h/4 has it
+  // L (h + 2 h/4) / (3 (h + h/4)) from the thick side, 0.4 L; the hung one is near it.
+  EXPECT_LT(x_g, 0.0);
+  EXPECT_GT(V_L, V_R);
+  std::cout << "wedge: V_L = " << V_L << " N, V_R = " << V_R << " N, x_g = " << x_g
+            << " mm (flat: " << 0.4 * L - 0.5 * L << " mm)\n";
 }
 
 // Refinement of Conci's set-up on nested meshes (each cell halved): a conforming refinement can
