@@ -1719,6 +1719,21 @@ TEST_F(CliTest, FieldJsonCarriesTheWeightOnTheSupports) {
                   regions.at("slack").get<double>(),
               1.0, 1e-12);
   EXPECT_EQ(j.at("rays").size(), 8u);
+  // The folds from the field beside the closed form's, which is `solve`'s for the same inputs.
+  const json& folds = j.at("field_folds");
+  ASSERT_GE(folds.at("n").get<int>(), 1);
+  EXPECT_EQ(folds.at("a_mm").size(), folds.at("n").get<std::size_t>() + 1);
+  EXPECT_GT(folds.at("z_max_mm").get<double>(), 0.0);
+  EXPECT_GT(folds.at("Q").get<double>(), 1.0);
+  // The folds take up what the centre fibre keeps beyond its hung in-plane length: never more
+  // than the fibre itself, the cut's h = 1400 mm.
+  EXPECT_GT(folds.at("slack_width_mm").get<double>(), 0.0);
+  EXPECT_LT(folds.at("slack_width_mm").get<double>(), 1400.0);
+  const json solved = solve_json({});
+  const json& closed = j.at("closed_form");
+  EXPECT_EQ(closed.at("n"), solved.at("n"));
+  EXPECT_EQ(closed.at("Q"), solved.at("Q"));
+  EXPECT_EQ(closed.at("z_max_mm"), solved.at("z_max_mm"));
 }
 
 // A cut of the user's own: a valid one solves, a self-crossing one is refused with exit 2 and a

@@ -12,6 +12,7 @@
 #include <gtest/gtest.h>
 
 #include "core/field/field_case.hpp"
+#include "core/field/field_folds.hpp"
 #include "core/field/mesh.hpp"
 #include "core/field/outline.hpp"
 #include "core/field/solver.hpp"
@@ -291,6 +292,77 @@ TEST(FieldStatics, TheWedgeHangsMostlyFromItsThickEnd) {
   EXPECT_GT(V_L, V_R);
   std::cout << "wedge: V_L = " << V_L << " N, V_R = " << V_R << " N, x_g = " << x_g
             << " mm (flat: " << 0.4 * L - 0.5 * L << " mm)\n";
+}
+
+// Folds from a uniform uniaxial field: a W x H rectangle pinned all round as x -> (1 + eps) x,
+// y -> (1 - delta) y, no weight, is wrinkled everywhere with horizontal rays of tension
+// T = Y e1 sqrt(1 + 2 e1), e1 = ((1 + eps)² - 1) / 2 (the patch test's). By hand: the centre fibre
+// keeps H (1 - nu T / Y) and lies (1 - delta) H in the plane, the difference is the width the
+// folds take up; under Cerda and Mahadevan's law with T for w h, lambda = l (K E t³ / (T l²))^(1/4)
+// with l = (1 + eps) W, so n = (1 - delta) H / lambda rounded, the folds evenly spaced, and
+// n sqrt((dA)² + (2 z)²) = kept length gives z_max; under Conci's law the folds are spaced by
+// the ratio Q7 of eq. 7 down to the depth floor and evenly at the floor's step above it.
+TEST(FieldFolds, AUniformUniaxialFieldGivesTheHandCount) {
+  const double W = 400.0;
+  const double H = 300.0;
+  const double eps = 0.01;
+  const double delta = 0.02;
+  const Outline outline = pinned_rectangle(W, H, 8, 6, [&](const Vector2d& q) {
+    return Vector2d((1 + eps) * q.x(), (1 - delta) * q.y());
+  });
+  Parameters p;  // t = 0.25 mm, E = 165 MPa, nu = 0.3
+  Material material = material_of(p.fabric);
+  material.weight_N_per_mm2 = 0.0;
+  const Mesh mesh = make_mesh(outline, {8, 6, MeshSplit::union_jack});
+  Solver solver(mesh);
+  SolveOptions tight;
+  tight.relative_tolerance = 1e-12;
+  const Solution s = solver.solve(material, support_targets(outline), tight);
+  ASSERT_TRUE(s.converged) << s.relative_residual;
+
+  const double nu = p.fabric.poisson_ratio;
+  const double Y = p.fabric.youngs_modulus_MPa * p.fabric.thickness_mm;
+  const double e1 = ((1 + eps) * (1 + eps) - 1) / 2;
+  const double T = Y * e1 * std::sqrt(1 + 2 * e1);
+  const double kept = H * (1 - nu * T / Y);
+  const double in_plane = (1 - delta) * H;
+  const double l = (1 + eps) * W;
+  const double Et3 = p.fabric.youngs_modulus_MPa * std::pow(p.fabric.thickness_mm, 3);
+
+  p.model.law = WrinkleLawKind::cerda_mahadevan;
+  p.model.load_constant_c = 4 * std::numbers::pi * std::numbers::pi / 3;
+  p.model.stress_exponent_p = 1.0;
+  p.model.int_rounding = IntRounding::nearest;
+  const FieldFolds cm = field_folds(mesh, s, support_targets(outline), p);
+  EXPECT_NEAR(cm.kept_length_mm, kept, 1e-9 * H);
+  EXPECT_NEAR(cm.slack_width_mm, kept - in_plane, 1e-9 * H);
+  EXPECT_NEAR(cm.mean_ray_tension_N_per_mm, T, 1e-9 * T);
+  const double K_cm = 4 * std::numbers::pi * std::numbers::pi / 3 / (1 - nu * nu);
+  const double lambda = l * std::pow(K_cm * Et3 / (T * l * l), 0.25);
+  EXPECT_NEAR(cm.count_argument, in_plane / lambda, 1e-9 * in_plane / lambda);
+  const int n = static_cast<int>(std::lround(in_plane / lambda));
+  ASSERT_EQ(cm.n, n);
+  ASSERT_EQ(cm.a_mm.size(), static_cast<std::size_t>(n + 1));
+  for (int i = 0; i <= n; ++i) {
+    EXPECT_NEAR(cm.a_mm[i], in_plane * (n - i) / n, 1e-6 * H) << i;
+  }
+  const double step = in_plane / n;
+  EXPECT_NEAR(cm.z_max_mm, 0.5 * std::sqrt(std::pow(kept / n, 2) - step * step), 1e-6);
+  std::cout << "uniform uniaxial field, Cerda-Mahadevan: lambda = " << lambda << " mm, n = " << n
+            << ", z_max = " << cm.z_max_mm << " mm, slack width " << cm.slack_width_mm << " mm\n";
+
+  p.model.law = WrinkleLawKind::conci;
+  p.model.load_constant_c = kCalibratedLoadConstantC;
+  const FieldFolds conci = field_folds(mesh, s, support_targets(outline), p);
+  const double x = kCalibratedLoadConstantC / (1 - nu * nu) * Et3 / (T * l * l);
+  // (1 - x) Q² - (2 + x) Q + 1 = 0, its root above 1.
+  const double Q7 = ((2 + x) + std::sqrt((2 + x) * (2 + x) - 4 * (1 - x))) / (2 * (1 - x));
+  const double floor = kFieldFoldsDepthFloorShare * kept;
+  const double count = (1.0 + std::log(in_plane / floor)) / std::log(Q7);
+  EXPECT_NEAR(conci.count_argument, count, 1e-4 * count);
+  EXPECT_EQ(conci.n, static_cast<int>(std::lround(count)));
+  EXPECT_NEAR(conci.Q, std::pow(in_plane / floor, 1.0 / conci.n), 1e-9);
+  std::cout << "uniform uniaxial field, Conci: Q7 = " << Q7 << ", n = " << conci.n << "\n";
 }
 
 // Refinement of Conci's set-up on nested meshes (each cell halved): a conforming refinement can

@@ -98,9 +98,12 @@ Result run(const Options& options) {
     field::Solution solution = field::solve_cold(solver, r.outline, material, r.resolution);
     r.report = field::report_field(solver, std::move(solution), r.outline, material, options.rays);
     r.mesh = solver.mesh();
+    r.folds = field::field_folds(r.mesh, r.report.solution, field::support_targets(r.outline),
+                                 r.preset.parameters);
   } catch (const field::OutlineError& e) {
     throw InputError(e.what());
   }
+  r.closed_form = solve(r.preset.parameters);
   return r;
 }
 
@@ -145,6 +148,21 @@ void print_text(const Result& r, std::ostream& out) {
                            ray.depth_mm, ray.fitted_amplitude_mm, ray.fit_rms_mm);
     }
   }
+  const field::FieldFolds& f = r.folds;
+  out << printf_string(
+      "folds from the field (centre line): n = %d, Q = %.4g, z_max = %.1f mm; the folds take up "
+      "%.1f mm of the centre fibre's %.1f mm (mean ray tension %.3g N/mm)\n",
+      f.n, f.Q, f.z_max_mm, f.slack_width_mm, f.kept_length_mm, f.mean_ray_tension_N_per_mm);
+  if (!f.a_mm.empty()) {
+    out << "  a_i from the bottom up (mm):";
+    for (double a : f.a_mm) {
+      out << printf_string(" %.1f", a);
+    }
+    out << "\n";
+  }
+  const Solution& c = r.closed_form;
+  out << printf_string("folds from the closed form: n = %d, Q = %.4g, z_max = %.1f mm (%s)\n", c.n,
+                       c.Q, c.z_max_mm, std::string(regime_info(c.regime).label).c_str());
 }
 
 nlohmann::json print_json(const Result& r) {
@@ -183,6 +201,20 @@ nlohmann::json print_json(const Result& r) {
                            {"fitted_a_mm", ray.fitted_amplitude_mm},
                            {"fit_rms_mm", ray.fit_rms_mm}});
   }
+  out["field_folds"] = {{"n", r.folds.n},
+                        {"Q", r.folds.Q},
+                        {"z_max_mm", r.folds.z_max_mm},
+                        {"a_mm", r.folds.a_mm},
+                        {"slack_width_mm", r.folds.slack_width_mm},
+                        {"kept_length_mm", r.folds.kept_length_mm},
+                        {"count_argument", r.folds.count_argument},
+                        {"mean_ray_tension_N_per_mm", r.folds.mean_ray_tension_N_per_mm},
+                        {"n_capped", r.folds.n_capped}};
+  out["closed_form"] = {{"n", r.closed_form.n},
+                        {"Q", r.closed_form.Q},
+                        {"z_max_mm", r.closed_form.z_max_mm},
+                        {"a_mm", r.closed_form.a_mm},
+                        {"regime", std::string(regime_info(r.closed_form.regime).key)}};
   return out;
 }
 

@@ -11,7 +11,9 @@
 
 #include "app/common/inputs.hpp"
 #include "core/field/field_case.hpp"
+#include "core/field/field_folds.hpp"
 #include "core/io/preset.hpp"
+#include "core/model/solver.hpp"
 
 namespace foldlab::cli::field_command {
 
@@ -36,6 +38,8 @@ struct Result {
   int triangles = 0;
   field::Mesh mesh;  // the mesh the field was solved on, for the drawing
   field::FieldReport report;
+  field::FieldFolds folds;  // n, Q, z_max and a_i from the field
+  Solution closed_form;     // the same from the closed form, for the inputs as solved
 };
 
 void declare(CLI::App& app, Options& options);
