@@ -192,6 +192,23 @@ double outline_area_by_hand(const Parameters& p, OutlineKind kind) {
   return 0.0;
 }
 
+// The hung cloth's centre of gravity across, x_g: each node carries a third of each flat triangle
+// it is a corner of (w is uniform, so the weights' shares are the areas').
+double hung_centre_of_gravity_x(const Mesh& mesh, const Solution& s) {
+  double moment = 0.0;
+  double total = 0.0;
+  for (const auto& tri : mesh.triangles) {
+    const Vector2d u = mesh.nodes_mm[tri[1]] - mesh.nodes_mm[tri[0]];
+    const Vector2d v = mesh.nodes_mm[tri[2]] - mesh.nodes_mm[tri[0]];
+    const double area = 0.5 * (u.x() * v.y() - u.y() * v.x());
+    for (int n : tri) {
+      moment += area / 3.0 * s.positions_mm[n].x();
+    }
+    total += area;
+  }
+  return moment / total;
+}
+
 TEST(FieldStatics, ReactionsCarryTheWeightForEveryOutline) {
   const Parameters p = default_parameters();
   const Material material = material_of(p.fabric);
@@ -231,18 +248,7 @@ TEST(FieldStatics, InclinedSupportsDifferByTwiceTheThrustTimesTheSlope) {
   ASSERT_TRUE(s.converged);
   const double tan_theta = std::tan(15.0 * std::numbers::pi / 180.0);
   const double l = outline.supports[1].to_mm.x() - outline.supports[0].to_mm.x();
-  // The centre of gravity from the nodes' shares of the flat area, a third of each triangle.
-  double moment = 0.0;
-  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
-    const auto& tri = mesh.triangles[t];
-    const Vector2d u = mesh.nodes_mm[tri[1]] - mesh.nodes_mm[tri[0]];
-    const Vector2d v = mesh.nodes_mm[tri[2]] - mesh.nodes_mm[tri[0]];
-    const double area = 0.5 * (u.x() * v.y() - u.y() * v.x());
-    for (int n : tri) {
-      moment += material.weight_N_per_mm2 * area / 3.0 * s.positions_mm[n].x();
-    }
-  }
-  const double x_g = moment / s.weight_N;
+  const double x_g = hung_centre_of_gravity_x(mesh, s);
   const double H = 0.5 * (s.reactions_N[1].x() - s.reactions_N[0].x());
   const double V_L = -s.reactions_N[0].y();
   const double V_R = -s.reactions_N[1].y();
@@ -272,16 +278,7 @@ TEST(FieldStatics, TheWedgeHangsMostlyFromItsThickEnd) {
   const Vector2d sum = s.reactions_N[0] + s.reactions_N[1];
   EXPECT_NEAR(sum.x(), 0.0, 1e-6 * weight);
   EXPECT_NEAR(sum.y(), -weight, 1e-6 * weight);
-  double moment = 0.0;
-  for (const auto& tri : mesh.triangles) {
-    const Vector2d u = mesh.nodes_mm[tri[1]] - mesh.nodes_mm[tri[0]];
-    const Vector2d v = mesh.nodes_mm[tri[2]] - mesh.nodes_mm[tri[0]];
-    const double area = 0.5 * (u.x() * v.y() - u.y() * v.x());
-    for (int n : tri) {
-      moment += material.weight_N_per_mm2 * area / 3.0 * s.positions_mm[n].x();
-    }
-  }
-  const double x_g = moment / s.weight_N;
+  const double x_g = hung_centre_of_gravity_x(mesh, s);
   const double l = outline.supports[1].to_mm.x() - outline.supports[0].to_mm.x();
   const double V_L = -s.reactions_N[0].y();
   const double V_R = -s.reactions_N[1].y();
