@@ -223,7 +223,7 @@ void Explorer::handle_escape() {
   // A floating window (the introduction) closes itself on Escape while it has the focus.
   if (const ImGuiWindow* focused = ImGui::GetCurrentContext()->NavWindow; focused != nullptr) {
     if (any_panel(panels_, [focused](const Panel& p) {
-          return !Layout::tiled(p) && p.window_label() == focused->RootWindow->Name;
+          return !Layout::presentable(p) && p.window_label() == focused->RootWindow->Name;
         })) {
       return;
     }
@@ -261,12 +261,12 @@ void Explorer::frame() {
     if (!layout_.shows(*panel)) {
       continue;  // hidden behind the presented one, and not drawn
     }
-    const bool tiled = Layout::tiled(*panel);
-    if (tiled) {
+    const bool presentable = Layout::presentable(*panel);
+    if (presentable) {
       layout_.place(*panel);
     }
     panel->draw(context);
-    if (tiled) {
+    if (presentable) {
       layout_.present_button(*panel);
     }
   }

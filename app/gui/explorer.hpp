@@ -114,7 +114,7 @@ class Explorer {
   Layout& layout() { return layout_; }
   const Layout& layout() const { return layout_; }
   // Presents the tiled panel with this key ("fold_plot"); an unknown key returns to the tiles.
-  void present(std::string_view key) { layout_.present(layout_.tiled_panel(key)); }
+  void present(std::string_view key) { layout_.present(layout_.presentable_panel(key)); }
   // The presented panel's key, empty while the tiles are shown.
   std::string presented() const {
     return layout_.presented() != nullptr ? layout_.presented()->key() : "";

@@ -149,6 +149,9 @@ DrawnText drawn_text(const ImDrawList& list, const GlyphsByUv& glyphs, float spa
   return out;
 }
 
+// What "in" names the main menu bar by: it is no panel.
+constexpr std::string_view kMenuBarKey = "menu_bar";
+
 // With a panel's key, whether the list is that panel's window or a window inside it (a scrolled
 // table is a child window); without one, every list is.
 bool drawn_in_panel(const ImDrawList& list, const std::string& panel_key) {
@@ -157,6 +160,9 @@ bool drawn_in_panel(const ImDrawList& list, const std::string& panel_key) {
   }
   const char* owner = list._OwnerName;
   const std::string_view name = owner == nullptr ? std::string_view() : owner;
+  if (panel_key == kMenuBarKey) {
+    return name == "##MainMenuBar";
+  }
   const std::string id = "###" + panel_key;
   return name.ends_with(id) || name.find(id + "/") != std::string_view::npos;
 }
@@ -426,8 +432,9 @@ bool InputPlayer::click_slider(std::size_t index, const json& step, Explorer& ex
   return true;
 }
 
-bool InputPlayer::click_label(std::size_t index, const std::string& label) {
-  const std::optional<ImVec2> at = find_label(label);
+bool InputPlayer::click_label(std::size_t index, const std::string& label,
+                              const std::string& panel_key) {
+  const std::optional<ImVec2> at = find_label(label, panel_key);
   if (!at) {
     fail(index, "no visible \"" + label + "\"");
     return false;
@@ -495,7 +502,8 @@ bool InputPlayer::start_step(std::size_t index, ImGuiIO& io, Explorer& explorer)
       return drag_slider(index, step, explorer);
     case StepKind::Id::click:
       return step.contains("at") ? click_slider(index, step, explorer)
-                                 : click_label(index, step["click"].get<std::string>());
+                                 : click_label(index, step["click"].get<std::string>(),
+                                               step.value("in", std::string()));
     case StepKind::Id::click_photo:
       return click_photo(index, step, explorer);
     case StepKind::Id::key:

@@ -71,7 +71,7 @@ class InputPlayer {
                                          Explorer& explorer);
   bool reachable(std::size_t index, const std::string& key, const SliderPlace& place, ImVec2 at);
   bool click_slider(std::size_t index, const nlohmann::json& step, Explorer& explorer);
-  bool click_label(std::size_t index, const std::string& label);
+  bool click_label(std::size_t index, const std::string& label, const std::string& panel_key);
   bool drag_slider(std::size_t index, const nlohmann::json& step, Explorer& explorer);
   bool click_photo(std::size_t index, const nlohmann::json& step, Explorer& explorer);
   bool hover_sweep(std::size_t index, const nlohmann::json& step, Explorer& explorer);

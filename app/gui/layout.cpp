@@ -21,6 +21,9 @@ std::size_t tile_of(const Panel& panel) {
 }  // namespace
 
 void Layout::begin_frame(float menu_height_px) {
+  if (presented_ != nullptr && !presented_->is_open()) {
+    present(nullptr);  // the presented window was closed
+  }
   if (present_request_) {
     present(*present_request_);
     present_request_.reset();
@@ -41,7 +44,7 @@ void Layout::set_presented_top(float top_px) {
 }
 
 bool Layout::shows(const Panel& panel) const {
-  return !tiled(panel) || presented_ == nullptr || presented_ == &panel;
+  return !presentable(panel) || presented_ == nullptr || presented_ == &panel;
 }
 
 void Layout::forget_places() {
@@ -71,13 +74,13 @@ void Layout::view_settings(ViewSettings& settings) {
           present(nullptr);
           return std::nullopt;
         }
-        if (const Panel* tiled = tiled_panel(value)) {
-          present(tiled);
+        if (const Panel* shown = presentable_panel(value)) {
+          present(shown);
           return std::nullopt;
         }
         std::string known = "none";
         for (const std::unique_ptr<Panel>& panel : panels_) {
-          if (tiled(*panel)) {
+          if (presentable(*panel)) {
             known += std::string(", ") + panel->key();
           }
         }
@@ -97,9 +100,9 @@ PanelRect Layout::rect_of(const Panel& panel) const {
   return {};
 }
 
-const Panel* Layout::tiled_panel(std::string_view key) const {
+Panel* Layout::presentable_panel(std::string_view key) const {
   for (const std::unique_ptr<Panel>& panel : panels_) {
-    if (tiled(*panel) && key == panel->key()) {
+    if (presentable(*panel) && key == panel->key()) {
       return panel.get();
     }
   }
@@ -110,9 +113,23 @@ void Layout::present(const Panel* panel) {
   if (presented_ == panel) {
     return;
   }
-  if (!automatic_ && panel != nullptr) {
+  if (panel != nullptr && (!automatic_ || !tiled(*panel))) {
     if (const ImGuiWindow* window = ImGui::FindWindowByName(panel->window_label().c_str())) {
-      restore_[tile_of(*panel)] = PanelRect{window->Pos, window->SizeFull};
+      const PanelRect was{window->Pos, window->SizeFull};
+      if (tiled(*panel)) {
+        restore_[tile_of(*panel)] = was;
+      } else if (window->Active) {
+        window_restore_ = was;
+      }
+    }
+  }
+  if (presented_ != nullptr && !tiled(*presented_)) {
+    window_to_restore_ = presented_;
+  }
+  if (panel != nullptr) {
+    // A window presented from the menu or a script opens, as the one it replaces would show.
+    if (Panel* shown = presentable_panel(panel->key()); shown != nullptr && shown->open_flag()) {
+      *shown->open_flag() = true;
     }
   }
   presented_ = panel;
@@ -129,11 +146,13 @@ void Layout::present_button(const Panel& panel) {
   const bool presented = presented_ == &panel;
   const ImRect title = window->TitleBarRect();
   const float side = title.GetHeight();
+  // Left of a window's close button, when it has one.
+  const float right = title.Max.x - (window->HasCloseButton ? side : 0.0f);
   // The button sits above the content: it must not widen what the window scrolls over.
   const ImVec2 cursor = ImGui::GetCursorScreenPos();
   const ImVec2 cursor_max = window->DC.CursorMaxPos;
   ImGui::PushClipRect(title.Min, title.Max, false);
-  ImGui::SetCursorScreenPos(ImVec2(title.Max.x - side, title.Min.y));
+  ImGui::SetCursorScreenPos(ImVec2(right - side, title.Min.y));
   const bool clicked = ImGui::InvisibleButton("##present", ImVec2(side, side));
   const bool hovered = ImGui::IsItemHovered();
   // A square outline (fill the window), or two overlapping ones (back to the tiles).
@@ -141,8 +160,8 @@ void Layout::present_button(const Panel& panel) {
   const ImU32 colour = ImGui::GetColorU32(hovered ? ImGuiCol_Text : ImGuiCol_TextDisabled);
   const float thickness = std::max(1.0f, std::round(ImGui::GetFontSize() / 12.0f));
   const float inset = std::round(0.28f * side);
-  const ImVec2 a(title.Max.x - side + inset, title.Min.y + inset);
-  const ImVec2 b(title.Max.x - inset, title.Max.y - inset);
+  const ImVec2 a(right - side + inset, title.Min.y + inset);
+  const ImVec2 b(right - inset, title.Max.y - inset);
   if (presented) {
     const float shift = std::round(0.15f * side);
     draw->AddRect(ImVec2(a.x + shift, a.y), ImVec2(b.x, b.y - shift), colour, 0.0f, 0, thickness);
@@ -211,6 +230,20 @@ bool Layout::follow_user_edits() {
 }
 
 void Layout::place(const Panel& panel) {
+  if (!tiled(panel)) {
+    if (presented_ == &panel) {
+      ImGui::SetNextWindowPos(presented_rect_.pos, ImGuiCond_Always);
+      ImGui::SetNextWindowSize(presented_rect_.size, ImGuiCond_Always);
+    } else if (window_to_restore_ == &panel) {
+      if (window_restore_) {
+        ImGui::SetNextWindowPos(window_restore_->pos, ImGuiCond_Always);
+        ImGui::SetNextWindowSize(window_restore_->size, ImGuiCond_Always);
+      }
+      window_to_restore_ = nullptr;
+      window_restore_.reset();
+    }
+    return;
+  }
   const std::size_t i = tile_of(panel);
   PanelRect rect = tiles_.tiles[i];
   ImGuiCond when = automatic_ ? ImGuiCond_Always : ImGuiCond_FirstUseEver;

@@ -30,17 +30,22 @@ class Layout {
   void set_presented_top(float top_px);
   // Whether the panel has a tile.
   static bool tiled(const Panel& panel) { return tile_index(panel.key()).has_value(); }
+  // Whether View > Present offers it: a tiled panel, or a window that says it may fill the
+  // window (the tension field).
+  static bool presentable(const Panel& panel) { return tiled(panel) || panel.presentable(); }
   // Whether the panel is drawn this frame (a tiled one behind the presented one is not).
   bool shows(const Panel& panel) const;
-  // Before a tiled panel's draw: its place in the automatic layout (every frame until the user
-  // moves a panel), or the whole window below the read-out while it is presented.
+  // Before a presentable panel's draw: a tiled one's place in the automatic layout (every frame
+  // until the user moves a panel), or the whole window below the read-out while it is presented;
+  // a window put back where it was after it was presented.
   void place(const Panel& panel);
-  // After a tiled panel's draw: the button in its title bar (and a double-click on the title) that
-  // presents it, or returns to the tiles.
+  // After a presentable panel's draw: the button in its title bar (and a double-click on the
+  // title) that presents it, or returns to the tiles.
   void present_button(const Panel& panel);
 
-  // Presentation: one tiled panel fills the window, the other tiles hidden; null returns to the
-  // tiles. Not remembered: a start shows the tiles.
+  // Presentation: one presentable panel fills the window (opened, if it is a window that opens),
+  // the other presentable ones hidden; null returns to the tiles. Not remembered: a start shows
+  // the tiles.
   void present(const Panel* panel);
   // From a menu or a button, taking effect at the next frame's start.
   void request_present(const Panel* panel) { present_request_ = panel; }
@@ -65,8 +70,8 @@ class Layout {
   // The user's arrangement: automatic or not, the dragged edges, and the presented inputs' strip.
   // The dragged edges, the automatic layout and the strip (remembered); `present` (scripted).
   void view_settings(ViewSettings& settings);
-  // The tiled panel with this key, or null.
-  const Panel* tiled_panel(std::string_view key) const;
+  // The presentable panel with this key, or null.
+  Panel* presentable_panel(std::string_view key) const;
 
  private:
   // A resize of a tiled panel since the last frame moves the split it shares with its
@@ -88,6 +93,9 @@ class Layout {
   std::optional<const Panel*> present_request_;
   // In the user's own arrangement, where a presented panel was, to put it back.
   std::optional<PanelRect> restore_[kTileCount];
+  // Where a presented window was, to put it back.
+  std::optional<PanelRect> window_restore_;
+  const Panel* window_to_restore_ = nullptr;
 };
 
 }  // namespace foldlab::gui

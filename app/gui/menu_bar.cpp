@@ -31,6 +31,11 @@ float MenuBar::draw(PanelContext& context) {
       export_items(context);
       ImGui::EndMenu();
     }
+    for (const std::unique_ptr<Panel>& panel : context.panels) {
+      if (bool* open = panel->open_flag()) {
+        ImGui::MenuItem(panel->name(), nullptr, open);
+      }
+    }
     if (ImGui::MenuItem(IntroWindow::kTitle)) {
       context.panel<IntroWindow>().open();
     }
@@ -113,11 +118,16 @@ void MenuBar::view_menu(PanelContext& context) {
     }
   } else if (ImGui::BeginMenu("Present (fill the window)")) {
     for (const std::unique_ptr<Panel>& panel : context.panels) {
-      if (Layout::tiled(*panel) && ImGui::MenuItem(panel->name())) {
+      if (Layout::presentable(*panel) && ImGui::MenuItem(panel->name())) {
         layout_.request_present(panel.get());
       }
     }
     ImGui::EndMenu();
+  }
+  for (const std::unique_ptr<Panel>& panel : context.panels) {
+    if (bool* open = panel->open_flag()) {
+      ImGui::MenuItem(panel->name(), nullptr, open);
+    }
   }
   if (ImGui::MenuItem(IntroWindow::kTitle)) {
     context.panel<IntroWindow>().open();

@@ -32,7 +32,7 @@ class FileDialog;
 class Panel;
 
 // The views a picture can show alone at any size (`foldlab picture VIEW`, the Export menu).
-enum class PictureView { cloth, fold_plot, sweep, compare };
+enum class PictureView { cloth, fold_plot, sweep, compare, field };
 
 // A picture a panel gives of what it shows: the Export menu's items, the save dialog's title, the
 // picture dialog's words and the word the offered file name gives it.
@@ -45,6 +45,14 @@ struct PictureOffer {
   const char* any_size_item;  // "Fold plot picture, any size (.png)..."
   const char* dialog_words;   // what the picture dialog says it draws
   const char* file_word;      // "fold-plot"
+};
+
+// What a picture asks of a panel that draws it: sizes in the picture's pixels.
+struct PictureStyle {
+  float text_px = 0.0f;
+  float line_px = 1.0f;
+  bool legend = false;
+  bool dark = false;  // drawn over a dark background
 };
 
 // The panel of type P in a list of panels; every panel type is in the explorer's list once.
@@ -128,6 +136,19 @@ class Panel {
   virtual std::optional<ImVec2> locate(std::string_view /*target*/,
                                        std::span<const double> /*at*/) const {
     return std::nullopt;
+  }
+
+  // A window that is not tiled and that the View menu opens and closes: its open flag (a panel
+  // that always shows, or that opens otherwise, gives null).
+  virtual bool* open_flag() { return nullptr; }
+  virtual bool is_open() const { return true; }
+  // Whether View > Present offers the panel although it has no tile.
+  virtual bool presentable() const { return false; }
+  // Draws `view` alone into the current ImGui window, `size_px` from the cursor, for a picture
+  // (picture.hpp). False: the panel leaves its pictures to picture.cpp.
+  virtual bool draw_picture(PictureView /*view*/, ImVec2 /*size_px*/, Document& /*document*/,
+                            const PictureStyle& /*style*/) {
+    return false;
   }
 
   // What ImGui::Begin is given: the title, then after "###" the key, so that a title with a

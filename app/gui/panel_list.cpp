@@ -6,6 +6,7 @@
 
 #include "app/gui/panels/analysis_panel.hpp"
 #include "app/gui/panels/calibration_panel.hpp"
+#include "app/gui/panels/field_panel.hpp"
 #include "app/gui/panels/cloth_view_panel.hpp"
 #include "app/gui/panels/fold_plot_panel.hpp"
 #include "app/gui/panels/intro_window.hpp"
@@ -22,7 +23,7 @@ namespace {
 template <class... P>
 using Types = std::tuple<std::type_identity<P>...>;
 using PanelTypes = Types<ParametersPanel, PresetsPanel, FoldPlotPanel, ClothViewPanel, ResultsPanel,
-                         AnalysisPanel, CalibrationPanel, PhotoOverlay, IntroWindow>;
+                         AnalysisPanel, FieldPanel, CalibrationPanel, PhotoOverlay, IntroWindow>;
 
 template <class P>
 std::unique_ptr<Panel> make(const PanelListOptions& /*options*/) {

@@ -168,6 +168,18 @@ void draw_sweep(const PictureSource& source, FrameSize area, float pad, SweepPlo
   ImGui::EndChild();
 }
 
+// The panel that offers `view`, when the source has the panels.
+Panel* picture_panel(const PictureSource& source, PictureView view) {
+  for (const std::unique_ptr<Panel>& panel : source.panels) {
+    for (const PictureOffer& offer : panel->pictures()) {
+      if (offer.view == view) {
+        return panel.get();
+      }
+    }
+  }
+  return nullptr;
+}
+
 // Builds the picture's one window, every frame of it.
 void build_picture(Renderer& renderer, const PictureSource& source, const PictureSpec& spec,
                    const std::vector<std::string>& caption, Plot& plot, FoldLineSeries& series,
@@ -196,7 +208,15 @@ void build_picture(Renderer& renderer, const PictureSource& source, const Pictur
   const FrameSize area{spec.size.width,
                        std::max(16, spec.size.height - static_cast<int>(caption_height))};
   Scene& scene = source.document.scene();
-  if (spec.view == PictureView::cloth) {
+  Panel* own = picture_panel(source, spec.view);
+  ImGui::SetCursorPos(ImVec2(pad, pad));
+  const ImVec2 inner(static_cast<float>(area.width) - 2.0f * pad,
+                     static_cast<float>(area.height) - (caption.empty() ? 2.0f : 1.0f) * pad);
+  if (own != nullptr &&
+      own->draw_picture(spec.view, inner, source.document,
+                        PictureStyle{ImGui::GetFontSize(), picture_line_width_px(spec.size),
+                                     spec.legend, spec.background == PictureBackground::dark})) {
+  } else if (spec.view == PictureView::cloth) {
     const ClothStyle style = picture_style(source, spec);
     const OrbitCamera camera = source.camera ? *source.camera : framed_camera(scene, area);
     renderer.draw_cloth(source.cloth_view, ImGui::GetWindowDrawList(), ImVec2(0, 0),
@@ -206,10 +226,7 @@ void build_picture(Renderer& renderer, const PictureSource& source, const Pictur
   } else if (spec.view == PictureView::sweep) {
     draw_sweep(source, area, pad, sweep_plots);
   } else {
-    ImGui::SetCursorPos(ImVec2(pad, pad));
-    const ImVec2 size(static_cast<float>(area.width) - 2.0f * pad,
-                      static_cast<float>(area.height) - (caption.empty() ? 2.0f : 1.0f) * pad);
-    if (plot.begin("fold lines", size, kFoldPlotX, kFoldPlotY)) {
+    if (plot.begin("fold lines", inner, kFoldPlotX, kFoldPlotY)) {
       plot.equal_scales();
       series.lines(plot, scene, false, spec.legend);
       series.outline_and_supports(plot, scene, spec.legend);
@@ -377,6 +394,12 @@ std::optional<std::string> picture_problem(const PictureSource& source, const Pi
       return "the sweep's axis: " + *problem;
     }
   }
+  if (const Panel* own = picture_panel(source, spec.view)) {
+    if (std::optional<std::string> why =
+            own->picture_unavailable(spec.view, source.document, false)) {
+      return why;
+    }
+  }
   return std::nullopt;
 }
 
@@ -412,7 +435,8 @@ PictureSource picture_source(Document& document, std::span<const std::unique_ptr
       cloth_view,
       font_file,
       &find_panel<AnalysisPanel>(panels).sweep(),
-      compare_cloth_view};
+      compare_cloth_view,
+      panels};
 }
 
 }  // namespace foldlab::gui

@@ -82,6 +82,8 @@ struct PictureSource {
   // The Sweep tab, whose axis, curves and paper points a sweep picture shows.
   SweepPanel* sweep = nullptr;
   ClothView compare_cloth_view = kNoClothView;  // B's, for a compare picture
+  // The explorer's panels: a view whose panel draws its own pictures is drawn by it.
+  std::span<const std::unique_ptr<Panel>> panels = {};
 };
 
 // The source the explorer's panels give: the 3D view's style and camera once it has framed the

@@ -112,6 +112,14 @@ void check_drag(const json& step, Problems& problems) {
   }
 }
 
+// "in": where a label is looked for, a panel's key or the menu bar.
+void check_panel_key(const json& step, Problems& problems) {
+  if (step.contains("in") && (!step["in"].is_string() || step["in"].get<std::string>().empty())) {
+    problems.push_back("\"in\" needs a panel's key (results, parameters, ...) or menu_bar, not " +
+                       detail::cut(step["in"].dump()));
+  }
+}
+
 void check_click(const json& step, Problems& problems) {
   const json& arg = step["click"];
   if (!step.contains("at")) {
@@ -122,7 +130,11 @@ void check_click(const json& step, Problems& problems) {
     if (step.contains("ctrl")) {
       problems.push_back("\"ctrl\" belongs to a click on a slider (with \"at\")");
     }
+    check_panel_key(step, problems);
     return;
+  }
+  if (step.contains("in")) {
+    problems.push_back("\"in\" belongs to a click on a label (without \"at\")");
   }
   if (!is_slider_key(arg)) {
     problems.push_back("click with \"at\" needs a slider key (" +
@@ -161,10 +173,7 @@ void check_seen(const json& step, Problems& problems) {
   if (!arg.is_string() || arg.get<std::string>().empty()) {
     problems.push_back(action + " needs the text to look for, not " + detail::cut(arg.dump()));
   }
-  if (step.contains("in") && (!step["in"].is_string() || step["in"].get<std::string>().empty())) {
-    problems.push_back("\"in\" needs a panel's key (results, parameters, ...), not " +
-                       detail::cut(step["in"].dump()));
-  }
+  check_panel_key(step, problems);
 }
 
 void check_type(const json& step, Problems& problems) {
@@ -227,7 +236,7 @@ void check_hover_sweep(const json& step, Problems& problems) {
 constexpr std::string_view kDragOptions[] = {"dx", "shift"};
 constexpr std::string_view kHoverSweepOptions[] = {"x"};
 constexpr std::string_view kSeenOptions[] = {"in"};
-constexpr std::string_view kClickOptions[] = {"at", "ctrl"};
+constexpr std::string_view kClickOptions[] = {"at", "ctrl", "in"};
 
 // Every kind of step: its action (the field that names it), the other fields it may have, and the
 // check of its values. The player turns each kind into input (InputPlayer::start_step).

@@ -39,6 +39,8 @@ struct Outline {
   double left_mm() const { return top_mm.front().x(); }
   double right_mm() const { return top_mm.back().x(); }
   double area_mm2() const;
+
+  bool operator==(const Outline&) const = default;
 };
 
 // The outlines the field command offers: the project's shapes and the paper's further cuts.

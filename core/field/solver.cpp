@@ -425,7 +425,9 @@ Solution Solver::solve(const Material& m, const std::vector<Vector2d>& targets,
   for (double a : s.node_area_mm2) {
     weight_N += m.weight_N_per_mm2 * a;
   }
-  double damping = start != nullptr ? options.warm_damping_start : options.damping_start;
+  double damping = start == nullptr     ? options.damping_start
+                   : start->damping > 0.0 ? start->damping
+                                          : options.warm_damping_start;
   std::vector<Vector2d> g = s.gradient(x, m);
   Eigen::VectorXd gf = s.free_part(g);
   double residual = s.relative_residual(g, gf, m);
@@ -500,6 +502,7 @@ Solution Solver::solve(const Material& m, const std::vector<Vector2d>& targets,
     }
   }
 
+  out.damping = damping;
   out.converged = residual <= options.relative_tolerance;
   out.relative_residual = residual;
   out.iterations = iterations;

@@ -83,6 +83,9 @@ struct Solution {
   double relative_residual = 0.0;
   int iterations = 0;      // Newton steps
   int factorisations = 0;  // of the Newton matrix: fewer than the steps when factors are reused
+  // The Newton matrix's damping at the end: a solve resumed from this one (a time budget ran
+  // out) goes on with it rather than from the warm start's floor.
+  double damping = 0.0;
   double solve_ms = 0.0;
   double energy_Nmm = 0.0;     // strain energy
   double potential_Nmm = 0.0;  // strain energy minus the work of the weight

@@ -22,7 +22,7 @@ class IntroWindow : public Panel {
     focus_ = true;
     frames_shown_ = 0;
   }
-  bool is_open() const { return open_; }
+  bool is_open() const override { return open_; }
   // "intro_open".
   void report(nlohmann::json& state, PanelContext& /*context*/) const override;
 

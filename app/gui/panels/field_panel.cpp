@@ -1,0 +1,479 @@
+#include "app/gui/panels/field_panel.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+
+#include <imgui.h>
+#include <imgui_internal.h>  // whether the layout placed the window this frame
+#include <nlohmann/json.hpp>
+
+#include "core/field/rays.hpp"
+
+namespace foldlab::gui {
+namespace {
+
+using Eigen::Vector2d;
+using nlohmann::json;
+
+constexpr std::string_view kColouringNames[] = {"state", "tension"};
+constexpr ViewRange<double> kCells{8.0, 80.0, " cells"};
+constexpr const char* kCosinesLabel = "closed form's cosines";
+constexpr const char* kCellsLabel = "mesh cells across";
+
+// Okabe and Ito's colour-blind-safe blue and orange; slack a grey that reads on either theme.
+constexpr ImU32 kTaut = IM_COL32(0, 114, 178, 255);
+constexpr ImU32 kWrinkled = IM_COL32(230, 159, 0, 255);
+constexpr ImU32 kSlack = IM_COL32(150, 150, 150, 255);
+
+ImU32 state_colour(field::State state) {
+  switch (state) {
+    case field::State::taut:
+      return kTaut;
+    case field::State::wrinkled:
+      return kWrinkled;
+    case field::State::slack:
+      break;
+  }
+  return kSlack;
+}
+
+// A sequential map from pale (no tension) to dark blue-violet (the most), monotone in lightness
+// so that it reads in grey and to a colour-blind eye.
+ImU32 tension_colour(double t) {
+  static constexpr std::array<std::array<float, 3>, 5> kStops{{{0.99f, 0.98f, 0.80f},
+                                                               {0.63f, 0.85f, 0.71f},
+                                                               {0.25f, 0.71f, 0.77f},
+                                                               {0.13f, 0.37f, 0.66f},
+                                                               {0.15f, 0.10f, 0.40f}}};
+  const float x = std::clamp(static_cast<float>(t), 0.0f, 1.0f) * (kStops.size() - 1);
+  const std::size_t i = std::min(static_cast<std::size_t>(x), kStops.size() - 2);
+  const float f = x - static_cast<float>(i);
+  const auto mix = [&](int c) { return kStops[i][c] + f * (kStops[i + 1][c] - kStops[i][c]); };
+  return ImGui::ColorConvertFloat4ToU32(ImVec4(mix(0), mix(1), mix(2), 1.0f));
+}
+
+ImU32 faded(ImU32 colour, bool stale) {
+  return stale ? (colour & 0x00FFFFFFu) | (static_cast<ImU32>(110) << IM_COL32_A_SHIFT) : colour;
+}
+
+std::string printf_text(const char* format, double a, double b = 0.0) {
+  char text[96];
+  std::snprintf(text, sizeof text, format, a, b);
+  return text;
+}
+
+// Millimetres to the canvas' pixels: one scale both ways, the field centred.
+struct ToScreen {
+  ImVec2 origin;
+  double scale = 1.0;
+  Vector2d low;
+  ImVec2 operator()(const Vector2d& p) const {
+    return ImVec2(origin.x + static_cast<float>((p.x() - low.x()) * scale),
+                  origin.y + static_cast<float>((p.y() - low.y()) * scale));
+  }
+};
+
+ToScreen fit(const field::SolvedField& field, ImVec2 origin, ImVec2 size, float margin_px) {
+  Vector2d low = Vector2d::Constant(std::numeric_limits<double>::max());
+  Vector2d high = -low;
+  for (const Vector2d& p : field.report.solution.positions_mm) {
+    low = low.cwiseMin(p);
+    high = high.cwiseMax(p);
+  }
+  const Vector2d extent = (high - low).cwiseMax(Vector2d::Constant(1e-9));
+  const double width = std::max(1.0, static_cast<double>(size.x) - 2.0 * margin_px);
+  const double height = std::max(1.0, static_cast<double>(size.y) - 2.0 * margin_px);
+  ToScreen to;
+  to.scale = std::min(width / extent.x(), height / extent.y());
+  to.low = low;
+  to.origin = ImVec2(origin.x + 0.5f * (size.x - static_cast<float>(extent.x() * to.scale)),
+                     origin.y + 0.5f * (size.y - static_cast<float>(extent.y() * to.scale)));
+  return to;
+}
+
+// The top of the tension scale: the tension below which 95 % of the triangles lie. A point
+// support makes the tension beside it grow without bound as the mesh is refined; scaled to the
+// largest, the rest of the cloth would be one pale colour.
+double tension_scale_top(const field::Solution& s) {
+  std::vector<double> tensions;
+  for (const field::TriangleResult& t : s.triangles) {
+    tensions.push_back(t.tension_N_per_mm);
+  }
+  if (tensions.empty()) {
+    return 0.0;
+  }
+  const auto at = tensions.begin() +
+                  static_cast<std::ptrdiff_t>(0.95 * static_cast<double>(tensions.size() - 1));
+  std::nth_element(tensions.begin(), at, tensions.end());
+  return *at;
+}
+
+void arrow(ImDrawList& draw, ImVec2 from, ImVec2 to, ImU32 colour, float line_px) {
+  draw.AddLine(from, to, colour, 2.0f * line_px);
+  const float dx = to.x - from.x;
+  const float dy = to.y - from.y;
+  const float length = std::sqrt(dx * dx + dy * dy);
+  if (length < 1.0f) {
+    return;
+  }
+  const float head = std::min(0.35f * length, 9.0f * line_px);
+  const ImVec2 u(dx / length, dy / length);
+  const ImVec2 n(-u.y, u.x);
+  draw.AddTriangleFilled(
+      to, ImVec2(to.x - head * u.x + 0.5f * head * n.x, to.y - head * u.y + 0.5f * head * n.y),
+      ImVec2(to.x - head * u.x - 0.5f * head * n.x, to.y - head * u.y - 0.5f * head * n.y), colour);
+}
+
+void legend(ImDrawList& draw, ImVec2 at, const FieldDrawing& style, double most_N_per_mm,
+            ImU32 ink) {
+  ImFont* font = ImGui::GetFont();
+  const float text = style.text_px;
+  const float box = std::round(0.8f * text);
+  if (style.colouring == FieldColouring::state) {
+    const std::array<std::pair<ImU32, const char*>, 3> rows{
+        {{kTaut, "taut: tension both ways"},
+         {kWrinkled, "wrinkled: tension along the rays only"},
+         {kSlack, "slack: no tension"}}};
+    for (const auto& [colour, words] : rows) {
+      draw.AddRectFilled(at, ImVec2(at.x + box, at.y + box), colour);
+      draw.AddText(font, text, ImVec2(at.x + box + 0.4f * text, at.y - 0.1f * text), ink, words);
+      at.y += 1.3f * text;
+    }
+    return;
+  }
+  const float bar = 8.0f * text;
+  for (int i = 0; i < 32; ++i) {
+    const float x0 = at.x + bar * static_cast<float>(i) / 32.0f;
+    draw.AddRectFilled(ImVec2(x0, at.y), ImVec2(x0 + bar / 32.0f + 1.0f, at.y + box),
+                       tension_colour((i + 0.5) / 32.0));
+  }
+  draw.AddRect(at, ImVec2(at.x + bar, at.y + box), ink);
+  draw.AddText(font, text, ImVec2(at.x, at.y + box + 0.1f * text), ink, "0");
+  const std::string most = printf_text("%.3g N/mm or more", most_N_per_mm);
+  const float most_w = font->CalcTextSizeA(text, 1e9f, 0.0f, most.c_str()).x;
+  draw.AddText(font, text, ImVec2(at.x + bar - most_w, at.y + box + 0.1f * text), ink,
+               most.c_str());
+  draw.AddText(font, text, ImVec2(at.x + bar + 0.5f * text, at.y - 0.1f * text), ink,
+               "tension along the rays");
+}
+
+}  // namespace
+
+field::FieldInputs field_inputs(const Parameters& parameters, int cells_x) {
+  field::FieldInputs in;
+  in.outline = field::make_outline(parameters, field::outline_kind_of(parameters.shape));
+  in.material = field::material_of(parameters.fabric);
+  double top = std::numeric_limits<double>::max();
+  double bottom = -top;
+  for (const Vector2d& p : in.outline.top_mm) {
+    top = std::min(top, p.y());
+  }
+  for (const Vector2d& p : in.outline.bottom_mm) {
+    bottom = std::max(bottom, p.y());
+  }
+  const double width = std::max(1e-9, in.outline.right_mm() - in.outline.left_mm());
+  in.resolution.cells_x = cells_x;
+  in.resolution.cells_y =
+      std::clamp(static_cast<int>(std::lround(cells_x * (bottom - top) / width)), 4, 2 * cells_x);
+  return in;
+}
+
+void draw_field(ImDrawList& draw, ImVec2 origin, ImVec2 size, const field::SolvedField& field,
+                const FoldLines* cosines, const FieldDrawing& style) {
+  const field::Solution& s = field.report.solution;
+  const ImU32 ink = style.dark ? IM_COL32(235, 235, 235, 255) : IM_COL32(25, 25, 25, 255);
+  // Room for the legend above and the reactions' arrows and values around the cloth.
+  const float margin = 5.0f * style.text_px;
+  const ImVec2 body_origin(origin.x, origin.y + (style.legend ? 3.0f * style.text_px : 0.0f));
+  const ImVec2 body_size(size.x, size.y - (body_origin.y - origin.y));
+  const ToScreen to = fit(field, body_origin, body_size, margin);
+  const double most = tension_scale_top(s);
+  // Without the fill's anti-aliased fringe: neighbouring triangles meet with no hairline between.
+  const ImDrawListFlags flags = draw.Flags;
+  draw.Flags &= ~ImDrawListFlags_AntiAliasedFill;
+  for (std::size_t t = 0; t < field.mesh.triangles.size(); ++t) {
+    const auto& tri = field.mesh.triangles[t];
+    const field::TriangleResult& r = s.triangles[t];
+    const ImU32 colour = style.colouring == FieldColouring::state
+                             ? state_colour(r.region)
+                             : tension_colour(most > 0.0 ? r.tension_N_per_mm / most : 0.0);
+    draw.AddTriangleFilled(to(s.positions_mm[tri[0]]), to(s.positions_mm[tri[1]]),
+                           to(s.positions_mm[tri[2]]), faded(colour, style.stale));
+  }
+  draw.Flags = flags;
+  if (style.rays) {
+    // Dark over every fill, whatever the background.
+    const ImU32 ray_colour = faded(IM_COL32(20, 20, 20, 230), style.stale);
+    std::vector<ImVec2> points;
+    for (const field::Ray& ray : field.report.rays) {
+      points.clear();
+      for (const Vector2d& p : ray.points_mm) {
+        points.push_back(to(p));
+      }
+      draw.AddPolyline(points.data(), static_cast<int>(points.size()), ray_colour, 0,
+                       1.5f * style.line_px);
+    }
+  }
+  const std::vector<Vector2d> targets = field::support_targets(field.inputs.outline);
+  if (style.cosines && cosines != nullptr && targets.size() >= 2) {
+    // The closed form's frame: x from the middle between the outermost supports, y down from
+    // the line through them.
+    const field::SupportFrame frame = field::support_frame(targets);
+    const double mid = 0.5 * (frame.left_mm.x() + frame.right_mm.x());
+    const double span = std::max(1e-9, frame.span_mm());
+    const ImU32 dash = IM_COL32(200, 30, 120, style.stale ? 110 : 255);
+    std::vector<ImVec2> points;
+    for (const FoldLine& line : cosines->lines) {
+      points.clear();
+      for (const Eigen::Vector3d& p : line.points_mm) {
+        const double along = (p.x() + 0.5 * span) / span;
+        const double line_y = frame.left_mm.y() + along * (frame.right_mm.y() - frame.left_mm.y());
+        points.push_back(to(Vector2d(mid + p.x(), line_y + p.y())));
+      }
+      draw.AddPolyline(points.data(), static_cast<int>(points.size()), dash, 0, style.line_px);
+    }
+  }
+  // The supports, and the force each exerts on the cloth, its arrow's length in proportion.
+  double largest_N = 0.0;
+  for (const Vector2d& r : s.reactions_N) {
+    largest_N = std::max(largest_N, r.norm());
+  }
+  ImFont* font = ImGui::GetFont();
+  for (std::size_t i = 0; i < targets.size() && i < s.reactions_N.size(); ++i) {
+    const ImVec2 at = to(targets[i]);
+    const Vector2d r = s.reactions_N[i];
+    if (largest_N > 0.0) {
+      const double length = 0.8 * margin * r.norm() / largest_N;
+      const Vector2d d = r.normalized() * length;
+      const ImVec2 tip(at.x + static_cast<float>(d.x()), at.y + static_cast<float>(d.y()));
+      arrow(draw, at, tip, ink, style.line_px);
+      const std::string words = printf_text("%.3g N up, %.3g N across", -r.y(), std::abs(r.x()));
+      const float width = font->CalcTextSizeA(style.text_px, 1e9f, 0.0f, words.c_str()).x;
+      const float x = std::clamp(tip.x - 0.5f * width, origin.x, origin.x + size.x - width);
+      draw.AddText(font, style.text_px, ImVec2(x, tip.y - 1.2f * style.text_px), ink,
+                   words.c_str());
+    }
+    draw.AddCircleFilled(at, 4.0f * style.line_px, ink);
+  }
+  if (style.legend) {
+    legend(draw, origin, style, most, ink);
+  }
+}
+
+void FieldPanel::view_settings(ViewSettings& settings, Document& /*document*/) {
+  settings.add_switch("field", &open_, kEveryUse);
+  settings.add_choice<FieldColouring>("field_colour", &colouring_, kColouringNames, kEveryUse);
+  settings.add_switch("field_rays", &rays_, kEveryUse);
+  settings.add_switch("field_cosines", &cosines_, kEveryUse);
+  settings.add_number_by(
+      "field_cells", kCells, kEveryUse, [this] { return static_cast<double>(cells_); },
+      [this](double cells) { cells_ = static_cast<int>(cells); }, true);
+}
+
+FieldDrawing FieldPanel::drawing_style(const PanelContext& context) const {
+  FieldDrawing style;
+  style.colouring = colouring_;
+  style.rays = rays_;
+  style.cosines = cosines_;
+  style.stale = !live_.current() || !cut_refusal_.empty();
+  style.text_px = ImGui::GetFontSize();
+  style.line_px = std::max(1.0f, ImGui::GetFontSize() / 13.0f);
+  style.dark = !context.appearance.light_theme();
+  return style;
+}
+
+void FieldPanel::controls() {
+  ImGui::SetNextItemWidth(ImGui::CalcTextSize("tension").x + 3.0f * ImGui::GetFontSize());
+  int colouring = static_cast<int>(colouring_);
+  if (ImGui::Combo("colour by", &colouring, "state\0tension\0")) {
+    colouring_ = static_cast<FieldColouring>(colouring);
+  }
+  same_line_if_fits(checkbox_width("rays"));
+  ImGui::Checkbox("rays", &rays_);
+  same_line_if_fits(checkbox_width(kCosinesLabel));
+  ImGui::Checkbox(kCosinesLabel, &cosines_);
+  same_line_if_fits(labelled_width(ems(6.0f), kCellsLabel));
+  ImGui::SetNextItemWidth(ems(6.0f));
+  ImGui::SliderInt(kCellsLabel, &cells_, static_cast<int>(kCells.lo), static_cast<int>(kCells.hi),
+                   "%d", ImGuiSliderFlags_AlwaysClamp);
+  own_slider_active_ = ImGui::IsItemActive();
+}
+
+void FieldPanel::status_line() const {
+  const field::SolvedField* shown = live_.shown();
+  const std::string& refusal = cut_refusal_.empty() ? live_.refusal() : cut_refusal_;
+  if (!refusal.empty()) {
+    ImGui::PushStyleColor(ImGuiCol_Text, message_colour(MessageKind::error));
+    ImGui::TextWrapped("%s", refusal.c_str());
+    ImGui::PopStyleColor();
+  }
+  if (shown == nullptr) {
+    if (refusal.empty()) {
+      ImGui::TextUnformatted("Solving the tension field...");
+    }
+    return;
+  }
+  const field::Solution& s = shown->report.solution;
+  if (!live_.current() && refusal.empty()) {
+    ImGui::TextColored(message_colour(MessageKind::warning),
+                       "Solving (residual %.0e): the field shown is of the inputs before.",
+                       live_.residual());
+  }
+  ImGui::Text(
+      "taut %.0f %%, wrinkled %.0f %%, slack %.0f %% of the cloth; weight %.3g N, "
+      "thrust H %.3g N (the cosine pencil's %.3g N)",
+      100.0 * s.taut_share, 100.0 * s.wrinkled_share, 100.0 * s.slack_share, s.weight_N,
+      shown->report.thrust_N, shown->report.pencil_thrust_N);
+  ImGui::TextDisabled(
+      "converged: force residual %.0e, %d Newton steps, mesh %d x %d, %zu triangles",
+      s.relative_residual, s.iterations, shown->inputs.resolution.cells_x,
+      shown->inputs.resolution.cells_y, shown->mesh.triangles.size());
+}
+
+void FieldPanel::canvas(PanelContext& context) {
+  const ImVec2 origin = ImGui::GetCursorScreenPos();
+  const ImVec2 size = ImGui::GetContentRegionAvail();
+  canvas_rect_.reset();
+  if (size.x < 8.0f || size.y < 8.0f) {
+    return;
+  }
+  ImGui::InvisibleButton("##field", size);
+  canvas_rect_ = PanelRect{origin, size};
+  const field::SolvedField* shown = live_.shown();
+  if (shown == nullptr) {
+    return;
+  }
+  ImDrawList& draw = *ImGui::GetWindowDrawList();
+  draw.PushClipRect(origin, ImVec2(origin.x + size.x, origin.y + size.y), true);
+  draw_field(draw, origin, size, *shown,
+             cosines_ ? &context.document.scene().fold_lines() : nullptr, drawing_style(context));
+  draw.PopClipRect();
+}
+
+void FieldPanel::draw(PanelContext& context) {
+  if (!open_) {
+    was_open_ = false;
+    return;  // closed, nothing is solved
+  }
+  // While a value is dragged or played, a coarser mesh keeps up with the hand.
+  const bool moving = (ImGui::IsAnyItemActive() && !own_slider_active_) || context.holding_frame;
+  const int cells = moving ? std::max(static_cast<int>(kCells.lo), cells_ / 2) : cells_;
+  try {
+    live_.request(field_inputs(context.document.scene().parameters(), cells));
+    cut_refusal_.clear();
+  } catch (const field::OutlineError& e) {
+    // The last field stays on show, marked as of other inputs.
+    cut_refusal_ = std::string("This cut cannot be solved: ") + e.what();
+  }
+  // A share of the frame: the rest of the explorer draws in the remainder of 16 ms.
+  live_.step(moving ? 6.0 : 10.0);
+  // A first place of its own, unless the layout placed it (presented, or put back).
+  if ((ImGui::GetCurrentContext()->NextWindowData.Flags & ImGuiNextWindowDataFlags_HasPos) == 0) {
+    const ImVec2 display = ImGui::GetIO().DisplaySize;
+    ImGui::SetNextWindowPos(ImVec2(0.2f * display.x, 0.15f * display.y), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowSize(ImVec2(0.6f * display.x, 0.7f * display.y), ImGuiCond_FirstUseEver);
+  }
+  if (!was_open_) {
+    ImGui::SetNextWindowFocus();  // opened from the menu or a script: in front
+  }
+  was_open_ = true;
+  // NoCollapse: a double-click on the title presents the window (Layout), as it does a tile.
+  if (ImGui::Begin(window_label().c_str(), &open_, ImGuiWindowFlags_NoCollapse)) {
+    context.renderer.fill_window_background();  // the style's window background is transparent
+    controls();
+    status_line();
+    canvas(context);
+  }
+  ImGui::End();
+}
+
+void FieldPanel::report(json& state, PanelContext& /*context*/) const {
+  json out;
+  out["open"] = open_;
+  out["current"] = live_.current();
+  out["working"] = live_.working();
+  const std::string& refusal = cut_refusal_.empty() ? live_.refusal() : cut_refusal_;
+  out["refusal"] = refusal.empty() ? json(nullptr) : json(refusal);
+  if (const field::SolvedField* shown = live_.shown()) {
+    const field::Solution& s = shown->report.solution;
+    out["converged"] = s.converged;
+    out["relative_residual"] = s.relative_residual;
+    out["iterations"] = s.iterations;
+    out["mesh"] = {{"cells_x", shown->inputs.resolution.cells_x},
+                   {"cells_y", shown->inputs.resolution.cells_y},
+                   {"triangles", shown->mesh.triangles.size()}};
+    out["regions"] = {
+        {"taut", s.taut_share}, {"wrinkled", s.wrinkled_share}, {"slack", s.slack_share}};
+    out["weight_N"] = s.weight_N;
+    out["thrust_N"] = shown->report.thrust_N;
+    out["pencil_thrust_N"] = shown->report.pencil_thrust_N;
+    out["supports"] = json::array();
+    for (std::size_t i = 0; i < s.reactions_N.size(); ++i) {
+      const field::Support& support = shown->inputs.outline.supports[i];
+      out["supports"].push_back({{"at_mm", {support.at_mm.x(), support.at_mm.y()}},
+                                 {"to_mm", {support.to_mm.x(), support.to_mm.y()}},
+                                 {"reaction_N", {s.reactions_N[i].x(), s.reactions_N[i].y()}}});
+    }
+    out["rays"] = shown->report.rays.size();
+  }
+  state["field"] = out;
+}
+
+const field::SolvedField* FieldPanel::picture_field(const Document& document,
+                                                    std::string& refusal) const {
+  field::FieldInputs inputs;
+  try {
+    inputs = field_inputs(document.scene().parameters(), cells_);
+  } catch (const field::OutlineError& e) {
+    refusal = std::string("the tension field's cut: ") + e.what();
+    return nullptr;
+  }
+  if (!picture_inputs_ || !(*picture_inputs_ == inputs)) {
+    picture_inputs_ = inputs;
+    picture_field_ = field::solve_field(inputs, picture_refusal_);
+  }
+  refusal = picture_refusal_;
+  return picture_field_ ? &*picture_field_ : nullptr;
+}
+
+std::optional<std::string> FieldPanel::picture_unavailable(PictureView /*view*/,
+                                                           const Document& document,
+                                                           bool as_drawn) const {
+  if (as_drawn) {
+    if (!open_) {
+      return "Open View > Tension field to take it as drawn.";
+    }
+    return std::nullopt;
+  }
+  std::string refusal;
+  if (picture_field(document, refusal) == nullptr) {
+    return refusal;
+  }
+  return std::nullopt;
+}
+
+bool FieldPanel::draw_picture(PictureView /*view*/, ImVec2 size_px, Document& document,
+                              const PictureStyle& style) {
+  std::string refusal;
+  const field::SolvedField* solved = picture_field(document, refusal);
+  if (solved == nullptr) {
+    return true;  // picture_problem said why before any drawing
+  }
+  FieldDrawing drawing;
+  drawing.colouring = colouring_;
+  drawing.rays = rays_;
+  drawing.cosines = cosines_;
+  drawing.legend = style.legend;
+  drawing.text_px = style.text_px;
+  drawing.line_px = style.line_px;
+  drawing.dark = style.dark;
+  const ImVec2 origin = ImGui::GetCursorScreenPos();
+  draw_field(*ImGui::GetWindowDrawList(), origin, size_px, *solved,
+             cosines_ ? &document.scene().fold_lines() : nullptr, drawing);
+  return true;
+}
+
+}  // namespace foldlab::gui

@@ -1,0 +1,105 @@
+// "Tension field": the hung cloth as the relaxed membrane solves it (core/field): coloured by
+// where it is taut, wrinkled or slack, or by its tension in N/mm, with the tension rays, the
+// closed form's cosines on demand and the supports' reactions. A window of its own, opened from
+// the View menu and presentable; it follows a drag on a coarser mesh, a slice of each frame, and
+// refines when the hand rests. Closed, it solves nothing.
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <string>
+
+#include <nlohmann/json_fwd.hpp>
+
+#include "app/gui/panel.hpp"
+#include "core/field/live_field.hpp"
+#include "core/geometry/geometry.hpp"
+
+namespace foldlab::gui {
+
+// How the field's triangles are coloured.
+enum class FieldColouring { state, tension };
+
+struct FieldDrawing {
+  FieldColouring colouring = FieldColouring::state;
+  bool rays = true;
+  bool cosines = false;  // the closed form's fold lines over the field
+  bool legend = true;
+  bool stale = false;  // the inputs changed since: drawn faded, and said
+  float text_px = 13.0f;
+  float line_px = 1.0f;
+  bool dark = true;  // over a dark background
+};
+
+// Draws `field` into `draw` within [origin, origin + size], millimetres alike across and down, y
+// down; `cosines` are the closed form's fold lines (x from the middle between the supports, y down
+// from their line), drawn over it when asked.
+void draw_field(ImDrawList& draw, ImVec2 origin, ImVec2 size, const field::SolvedField& field,
+                const FoldLines* cosines, const FieldDrawing& style);
+
+// The field's inputs for the model's parameters: the outline of their shape, their material and a
+// mesh of `cells_x` across with as many cells down as keeps them square.
+field::FieldInputs field_inputs(const Parameters& parameters, int cells_x);
+
+class FieldPanel : public Panel {
+ public:
+  static constexpr const char* kTitle = "Tension field";
+  const char* name() const override { return kTitle; }
+  const char* key() const override { return "field"; }
+  const char* introduction() const override {
+    return "the cloth as tension field theory solves it: blue where it is taut both ways, orange "
+           "where it carries tension along its rays only and wrinkles across them, grey where "
+           "it is slack; the lines are the rays along which the weight reaches the supports.";
+  }
+  void draw(PanelContext& context) override;
+  bool busy() const override { return open_ && live_.working(); }
+  bool* open_flag() override { return &open_; }
+  bool is_open() const override { return open_; }
+  bool presentable() const override { return true; }
+  void view_settings(ViewSettings& settings, Document& document) override;
+  // {"field": {open, current, working, refusal, converged, relative_residual, iterations,
+  // solve_ms, mesh, regions, weight_N, thrust_N, pencil_thrust_N, supports, rays}}.
+  void report(nlohmann::json& state, PanelContext& context) const override;
+  static constexpr PictureOffer kPictures[] = {
+      {PictureView::field, "field", "Export tension field picture",
+       "Tension field picture (.png)...", "Tension field picture, any size (.png)...",
+       "The tension field alone: where the cloth is taut, wrinkled or slack, its rays and the "
+       "supports' reactions.",
+       "tension-field"}};
+  std::span<const PictureOffer> pictures() const override { return kPictures; }
+  std::optional<std::string> picture_unavailable(PictureView view, const Document& document,
+                                                 bool as_drawn) const override;
+  std::optional<PanelRect> picture_rect(PictureView /*view*/) const override {
+    return canvas_rect_;
+  }
+  bool draw_picture(PictureView view, ImVec2 size_px, Document& document,
+                    const PictureStyle& style) override;
+
+  // Mesh cells across the cut at rest; a drag solves on half as many.
+  static constexpr int kDefaultCells = 32;
+
+ private:
+  void controls();
+  void status_line() const;
+  void canvas(PanelContext& context);
+  FieldDrawing drawing_style(const PanelContext& context) const;
+  // The field of the document's inputs at rest, solved whole, for a picture.
+  const field::SolvedField* picture_field(const Document& document, std::string& refusal) const;
+
+  bool open_ = false;
+  bool was_open_ = false;  // in the last frame
+  FieldColouring colouring_ = FieldColouring::state;
+  bool rays_ = true;
+  bool cosines_ = false;
+  int cells_ = kDefaultCells;
+  bool own_slider_active_ = false;
+  field::LiveField live_;
+  std::string cut_refusal_;  // why the inputs' cut cannot be meshed, or empty
+  std::optional<PanelRect> canvas_rect_;
+  // A picture's field: solved once per set of inputs.
+  mutable std::optional<field::FieldInputs> picture_inputs_;
+  mutable std::optional<field::SolvedField> picture_field_;
+  mutable std::string picture_refusal_;
+};
+
+}  // namespace foldlab::gui

@@ -1,0 +1,113 @@
+// The field that follows its inputs a slice at a time: it ends where a whole solve ends, keeps
+// the last converged field on show (marked as older) while it works, and keeps it when a cut is
+// refused. Statics and the cut's area come from hand formulas, not from the solver.
+#include <cmath>
+#include <numbers>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "core/field/live_field.hpp"
+
+namespace foldlab::field {
+namespace {
+
+// The Table 1 cloth on the rectangle hung from its top corners: 1400 x 1400 mm, w = 1.5e-6 N/mm².
+FieldInputs rectangle(double d_mm, int cells_x = 16) {
+  Parameters p;
+  p.hanging.support_displacement_mm = d_mm;
+  FieldInputs in;
+  in.outline = make_outline(p, OutlineKind::rectangular);
+  in.material = material_of(p.fabric);
+  in.resolution.cells_x = cells_x;
+  in.resolution.cells_y = cells_x;
+  return in;
+}
+
+// Runs slices of `budget_ms` until the field is shown or given up; the slices taken.
+int run(LiveField& live, double budget_ms) {
+  int slices = 0;
+  while (live.working() && slices < 100000) {
+    live.step(budget_ms);
+    ++slices;
+  }
+  return slices;
+}
+
+TEST(LiveField, SlicedSolveHoldsTheWeightOnItsSupportsByStatics) {
+  LiveField live;
+  live.request(rectangle(100.0));
+  run(live, 0.0);
+  ASSERT_TRUE(live.current());
+  const SolvedField& first = *live.shown();
+  const Solution& s = first.report.solution;
+  ASSERT_TRUE(s.converged);
+  // w h L of the flat rectangle, by hand: 1.5e-6 x 1400 x 1400 = 2.94 N.
+  EXPECT_NEAR(s.weight_N, 2.94, 1e-9);
+  // Symmetric supports: each carries half of it, and the thrusts balance.
+  ASSERT_EQ(s.reactions_N.size(), 2u);
+  EXPECT_NEAR(s.reactions_N[0].y() + s.reactions_N[1].y(), -2.94, 1e-6 * 2.94);
+  EXPECT_NEAR(s.reactions_N[0].y(), -1.47, 1e-6 * 2.94);
+  EXPECT_NEAR(s.reactions_N[0].x() + s.reactions_N[1].x(), 0.0, 1e-6 * 2.94);
+
+  // d moves 1 %: the re-solve in slices of 0.2 ms (many slices, each a step or two) ends on the
+  // field a whole solve from the same start reaches, and shows the old field until then.
+  live.request(rectangle(101.0));
+  EXPECT_FALSE(live.current());
+  ASSERT_NE(live.shown(), nullptr);
+  EXPECT_EQ(live.shown()->inputs, rectangle(100.0));
+  const int slices = run(live, 0.2);
+  ASSERT_TRUE(live.current());
+  EXPECT_GE(slices, 1);
+  const Solution& moved = live.shown()->report.solution;
+  EXPECT_TRUE(moved.converged);
+  EXPECT_LE(moved.relative_residual, 1e-8);
+  EXPECT_NEAR(moved.reactions_N[0].y() + moved.reactions_N[1].y(), -2.94, 1e-6 * 2.94);
+  // The pinned supports are 2 mm closer: the span l = L - d, by the model's span rule.
+  EXPECT_NEAR(live.shown()->inputs.outline.supports[1].to_mm.x() -
+                  live.shown()->inputs.outline.supports[0].to_mm.x(),
+              1400.0 - 101.0, 1e-9);
+  std::string refusal;
+  const std::optional<SolvedField> whole = solve_field(rectangle(101.0), refusal);
+  ASSERT_TRUE(whole.has_value()) << refusal;
+  EXPECT_NEAR(moved.reactions_N[0].x(), whole->report.solution.reactions_N[0].x(),
+              1e-6 * std::abs(whole->report.solution.reactions_N[0].x()));
+}
+
+TEST(LiveField, ANewMeshStartsFromTheFieldOnShowAndRefinesIt) {
+  LiveField live;
+  live.request(rectangle(100.0, 8));
+  run(live, 0.0);
+  ASSERT_TRUE(live.current());
+  const int coarse_iterations = live.iterations();
+  // The hand rests: the finer mesh starts from the coarse field carried over.
+  live.request(rectangle(100.0, 16));
+  run(live, 0.0);
+  ASSERT_TRUE(live.current());
+  EXPECT_EQ(live.shown()->inputs.resolution.cells_x, 16);
+  EXPECT_LT(live.iterations(), coarse_iterations);
+  EXPECT_NEAR(live.shown()->report.solution.weight_N, 2.94, 1e-9);
+}
+
+TEST(LiveField, ARefusedCutKeepsTheLastFieldAndSaysWhy) {
+  LiveField live;
+  live.request(rectangle(100.0, 8));
+  run(live, 0.0);
+  ASSERT_TRUE(live.current());
+  FieldInputs bad = rectangle(100.0, 8);
+  bad.outline.supports[1].at_mm = {0.0, 700.0};  // inside the cloth, on neither edge
+  live.request(bad);
+  EXPECT_FALSE(live.working());
+  EXPECT_FALSE(live.current());
+  EXPECT_FALSE(live.refusal().empty());
+  ASSERT_NE(live.shown(), nullptr);
+  EXPECT_EQ(live.shown()->inputs, rectangle(100.0, 8));
+  // Back to a valid cut: solved again, the refusal gone.
+  live.request(rectangle(120.0, 8));
+  run(live, 0.0);
+  EXPECT_TRUE(live.current());
+  EXPECT_TRUE(live.refusal().empty());
+}
+
+}  // namespace
+}  // namespace foldlab::field
