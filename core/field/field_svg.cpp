@@ -236,8 +236,13 @@ std::string field_to_svg(const Mesh& mesh, const FieldReport& report, const Outl
   const std::vector<Vector2d> targets = support_targets(outline);
   const Page page = fit_page(s, targets);
   std::string out = detail::svg_open(Page::width_px, page.height_px, 13);
-  out += printf_string("<text x=\"%.0f\" y=\"26\" font-size=\"17\" font-weight=\"bold\">",
-                       Page::left) +
+  // A long preset name (an edited one lists its edits) is set smaller to stay on the page, by a
+  // bold sans-serif's width of about 0.6 em a character.
+  const double room_px = Page::width_px - 2.0 * Page::left;
+  const double title_px = std::clamp(
+      room_px / (0.6 * static_cast<double>(std::max<std::size_t>(title.size(), 1))), 9.0, 17.0);
+  out += printf_string("<text x=\"%.0f\" y=\"26\" font-size=\"%.1f\" font-weight=\"bold\">",
+                       Page::left, title_px) +
          xml_escape(detail::escaped(title)) + "</text>\n";
   out += printf_string(
       "<text x=\"%.0f\" y=\"48\">weight %.4g N; thrust H %.4g N (cosine pencil %.4g N); "
