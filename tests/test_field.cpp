@@ -5,6 +5,7 @@
 // elastic answer).
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <iostream>
 #include <numbers>
 #include <vector>
@@ -13,6 +14,7 @@
 
 #include "core/field/field_case.hpp"
 #include "core/field/field_folds.hpp"
+#include "core/field/field_svg.hpp"
 #include "core/field/mesh.hpp"
 #include "core/field/outline.hpp"
 #include "core/field/solver.hpp"
@@ -360,6 +362,33 @@ TEST(FieldFolds, AUniformUniaxialFieldGivesTheHandCount) {
   EXPECT_EQ(conci.n, static_cast<int>(std::lround(count)));
   EXPECT_NEAR(conci.Q, std::pow(in_plane / floor, 1.0 / conci.n), 1e-9);
   std::cout << "uniform uniaxial field, Conci: Q7 = " << Q7 << ", n = " << conci.n << "\n";
+}
+
+// A field stopped before it converged is drawn under a line that says so, with its residual, never
+// as if it had converged; a converged one says that instead.
+TEST(FieldSvg, AnUnconvergedFieldIsDrawnAsSuch) {
+  const Parameters p = default_parameters();
+  const Outline outline = make_outline(p, OutlineKind::rectangular);
+  const Material material = material_of(p.fabric);
+  const Mesh mesh = make_mesh(outline, {12, 8, MeshSplit::union_jack});
+  Solver solver(mesh);
+  SolveOptions two_steps;
+  two_steps.max_iterations = 2;
+  const FieldReport stopped = report_field(
+      solver, solver.solve(material, support_targets(outline), two_steps), outline, material, 3);
+  ASSERT_FALSE(stopped.solution.converged);
+  const std::string drawn = field_to_svg(mesh, stopped, outline, "stopped");
+  EXPECT_NE(drawn.find("NOT converged"), std::string::npos);
+  char residual[32];
+  std::snprintf(residual, sizeof residual, "%.2e", stopped.solution.relative_residual);
+  EXPECT_NE(drawn.find(residual), std::string::npos) << residual;
+
+  const FieldReport solved =
+      report_field(solver, solver.solve(material, support_targets(outline)), outline, material, 3);
+  ASSERT_TRUE(solved.solution.converged);
+  const std::string good = field_to_svg(mesh, solved, outline, "solved");
+  EXPECT_EQ(good.find("NOT converged"), std::string::npos);
+  EXPECT_NE(good.find(">converged: "), std::string::npos);
 }
 
 // Refinement of Conci's set-up on nested meshes (each cell halved): a conforming refinement can

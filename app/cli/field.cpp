@@ -223,7 +223,8 @@ int execute(const Options& options) {
   if (!options.svg_path.empty()) {
     write_file_atomically(options.svg_path,
                           field::field_to_svg(result.mesh, result.report, result.outline,
-                                              "Tension field of " + result.preset.name));
+                                              "Tension field, " + result.outline_name +
+                                                  " cut: " + result.preset.name));
   }
   print_result(result, options.json, &print_text);
   return result.report.solution.converged ? kExitOk : kExitInternal;
