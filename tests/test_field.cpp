@@ -295,10 +295,13 @@ TEST(FieldStatics, TheWedgeHangsMostlyFromItsThickEnd) {
 
 // Folds from a uniform uniaxial field: a W x H rectangle pinned all round as x -> (1 + eps) x,
 // y -> (1 - delta) y, no weight, is wrinkled everywhere with horizontal rays of tension
-// T = Y e1 sqrt(1 + 2 e1), e1 = ((1 + eps)² - 1) / 2 (the patch test's). By hand: the centre fibre
-// keeps H (1 - nu T / Y) and lies (1 - delta) H in the plane, the difference is the width the
-// folds take up; under Cerda and Mahadevan's law with T for w h, lambda = l (K E t³ / (T l²))^(1/4)
-// with l = (1 + eps) W, so n = (1 - delta) H / lambda rounded, the folds evenly spaced, and
+// T = Y e1 sqrt(1 + 2 e1), e1 = ((1 + eps)² - 1) / 2 (the patch test's). Its supports are every
+// boundary node, so the span whose fibre is read is one column wide (the first, the widest being
+// all equal), l = (1 + eps) W / 8, and the fibre is the column midway across it. By hand: the
+// fibre keeps H (1 - nu T / Y) and lies (1 - delta) H in the plane, the difference is the width
+// the folds take up; under Cerda and Mahadevan's law with T for w h,
+// lambda = l (K E t³ / (T l²))^(1/4), so n = (1 - delta) H / lambda rounded, the folds evenly
+// spaced, and
 // n sqrt((dA)² + (2 z)²) = kept length gives z_max; under Conci's law the folds are spaced by
 // the ratio Q7 of eq. 7 down to the depth floor and evenly at the floor's step above it.
 TEST(FieldFolds, AUniformUniaxialFieldGivesTheHandCount) {
@@ -325,7 +328,7 @@ TEST(FieldFolds, AUniformUniaxialFieldGivesTheHandCount) {
   const double T = Y * e1 * std::sqrt(1 + 2 * e1);
   const double kept = H * (1 - nu * T / Y);
   const double in_plane = (1 - delta) * H;
-  const double l = (1 + eps) * W;
+  const double l = (1 + eps) * W / 8;
   const double Et3 = p.fabric.youngs_modulus_MPa * std::pow(p.fabric.thickness_mm, 3);
 
   p.model.law = WrinkleLawKind::cerda_mahadevan;

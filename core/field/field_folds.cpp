@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <optional>
 
 #include "core/field/rays.hpp"
 #include "core/model/equations.hpp"
@@ -94,17 +96,59 @@ double depth_for_length(const std::vector<double>& a_mm, double length_mm) {
   return detail::brent_root(excess, 0.0, hi, at_zero, excess(hi), 1e-13);
 }
 
+// The span whose folds are counted: between the two neighbouring supports (by where they are
+// pinned) farthest apart, so that a strip's folds are those of one of its spans, not of the
+// column through a middle support; its fibre is the flat column midway between the two.
+struct Span {
+  SupportFrame frame;
+  double flat_x_mm = 0.0;
+};
+std::optional<Span> widest_span(const Mesh& mesh, const std::vector<Vector2d>& targets_mm) {
+  std::vector<std::size_t> order(targets_mm.size());
+  for (std::size_t i = 0; i < order.size(); ++i) {
+    order[i] = i;
+  }
+  // Left to right, and of supports pinned at one x the topmost first: it is the one the cloth
+  // hangs from there.
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    const Vector2d& p = targets_mm[a];
+    const Vector2d& q = targets_mm[b];
+    return p.x() < q.x() || (p.x() == q.x() && p.y() < q.y());
+  });
+  std::erase_if(order,
+                [&, previous = -std::numeric_limits<double>::infinity()](std::size_t i) mutable {
+                  const bool same_x = targets_mm[i].x() == previous;
+                  previous = targets_mm[i].x();
+                  return same_x;
+                });
+  std::optional<Span> best;
+  for (std::size_t k = 1; k < order.size(); ++k) {
+    const Vector2d& left = targets_mm[order[k - 1]];
+    const Vector2d& right = targets_mm[order[k]];
+    if (right.x() - left.x() > (best ? best->frame.span_mm() : 0.0)) {
+      const double flat_left = mesh.nodes_mm[mesh.support_nodes[order[k - 1]]].x();
+      const double flat_right = mesh.nodes_mm[mesh.support_nodes[order[k]]].x();
+      best = Span{SupportFrame{left, right}, 0.5 * (flat_left + flat_right)};
+    }
+  }
+  return best;
+}
+
 }  // namespace
 
 FieldFolds field_folds(const Mesh& mesh, const Solution& solution,
                        const std::vector<Vector2d>& targets_mm, const Parameters& p) {
   FieldFolds out;
-  const CentreLine centre = centre_line(mesh, solution, targets_mm);
+  const std::optional<Span> widest = widest_span(mesh, targets_mm);
+  if (!widest) {
+    return out;
+  }
+  const CentreLine centre = column_line(mesh, solution, widest->flat_x_mm, widest->frame);
   const std::size_t count = centre.flat_mm.size();
   if (count < 2) {
     return out;
   }
-  const double span = support_frame(targets_mm).span_mm();
+  const double span = widest->frame.span_mm();
   const Material material = material_of(p.fabric);
   const std::vector<double> tension = smoothed_tension(mesh, solution, centre.flat_mm);
   std::vector<Vector2d> hung(count);

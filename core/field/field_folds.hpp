@@ -36,7 +36,9 @@ struct FieldFolds {
 inline constexpr double kFieldFoldsDepthFloorShare = 0.01;
 
 // The folds of `solution` (solved on `mesh` with its supports pinned at `targets_mm`) under the
-// wrinkle law, constants and rounding of `p.model` and the fabric of `p.fabric`. Pure.
+// wrinkle law, constants and rounding of `p.model` and the fabric of `p.fabric`, read along the
+// flat column midway between the two neighbouring supports farthest apart (the centre line of a
+// cloth on two supports; one span's of a strip), l their distance. Pure.
 FieldFolds field_folds(const Mesh& mesh, const Solution& solution,
                        const std::vector<Eigen::Vector2d>& targets_mm, const Parameters& p);
 
