@@ -139,6 +139,10 @@ law_block() {
 law_block "$work/laws"
 replace_block docs/model.md law-comparison "$work/laws"
 
+echo "docs.sh: tension-field drawings" >&2
+"$foldlab" field --cells-x 30 --cells-y 21 --svg docs/field-default.svg >/dev/null
+"$foldlab" field --shape wedge --cells-x 30 --cells-y 21 --svg docs/field-wedge.svg >/dev/null
+
 echo "docs.sh: bench (about a minute) and stress test" >&2
 "$foldlab" bench --csv docs/bench.csv --svg docs/bench.svg >"$work/bench"
 replace_block docs/performance.md bench "$work/bench"

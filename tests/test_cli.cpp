@@ -1719,6 +1719,21 @@ TEST_F(CliTest, FieldJsonCarriesTheWeightOnTheSupports) {
                   regions.at("slack").get<double>(),
               1.0, 1e-12);
   EXPECT_EQ(j.at("rays").size(), 8u);
+  // The folds from the field beside the closed form's, which is `solve`'s for the same inputs.
+  const json& folds = j.at("field_folds");
+  ASSERT_GE(folds.at("n").get<int>(), 1);
+  EXPECT_EQ(folds.at("a_mm").size(), folds.at("n").get<std::size_t>() + 1);
+  EXPECT_GT(folds.at("z_max_mm").get<double>(), 0.0);
+  EXPECT_GT(folds.at("Q").get<double>(), 1.0);
+  // The folds take up what the centre fibre keeps beyond its hung in-plane length: never more
+  // than the fibre itself, the cut's h = 1400 mm.
+  EXPECT_GT(folds.at("slack_width_mm").get<double>(), 0.0);
+  EXPECT_LT(folds.at("slack_width_mm").get<double>(), 1400.0);
+  const json solved = solve_json({});
+  const json& closed = j.at("closed_form");
+  EXPECT_EQ(closed.at("n"), solved.at("n"));
+  EXPECT_EQ(closed.at("Q"), solved.at("Q"));
+  EXPECT_EQ(closed.at("z_max_mm"), solved.at("z_max_mm"));
 }
 
 // A cut of the user's own: a valid one solves, a self-crossing one is refused with exit 2 and a
@@ -1747,6 +1762,84 @@ TEST_F(CliTest, FieldOutlineFileSolvesOrIsRefusedByName) {
   const RunResult bad_shape = run({"field", "--shape", "hexagon"});
   EXPECT_EQ(bad_shape.exit_status, 2);
   EXPECT_TRUE(contains(bad_shape.err, "hexagon")) << bad_shape.err;
+}
+
+std::size_t count_of(const std::string& text, const std::string& needle) {
+  std::size_t count = 0;
+  for (std::size_t at = text.find(needle); at != std::string::npos;
+       at = text.find(needle, at + needle.size())) {
+    ++count;
+  }
+  return count;
+}
+
+// The tags of an XML text nest: every <name ...> is closed by </name> or is <name .../>, in
+// order. Empty when they do, else the first tag out of place.
+std::string unbalanced_tag(const std::string& xml) {
+  std::vector<std::string> open;
+  for (std::size_t at = xml.find('<'); at != std::string::npos; at = xml.find('<', at + 1)) {
+    const std::size_t end = xml.find('>', at);
+    if (end == std::string::npos) {
+      return xml.substr(at, 40);
+    }
+    const std::string tag = xml.substr(at + 1, end - at - 1);
+    if (tag.starts_with("?") || tag.starts_with("!")) {
+      continue;
+    }
+    if (tag.starts_with("/")) {
+      if (open.empty() || open.back() != tag.substr(1)) {
+        return "<" + tag + ">";
+      }
+      open.pop_back();
+    } else if (!tag.ends_with("/")) {
+      open.push_back(tag.substr(0, tag.find_first_of(" \n")));
+    }
+  }
+  return open.empty() ? "" : "<" + open.back() + "> never closed";
+}
+
+// `foldlab field --svg`: one polygon per mesh triangle, one polyline per ray, the supports with
+// their reactions' values, the legend's words; a well-nested SVG document. An --svg whose folder
+// is a plain file is refused before the solve, with exit 2, and nothing is written.
+TEST_F(CliTest, FieldSvgDrawsEveryTriangleRayAndSupport) {
+  const fs::path svg_path = dir_ / "field.svg";
+  const RunResult r = run({"field", "--shape", "rectangular", "--cells-x", "12", "--cells-y", "8",
+                           "--rays", "5", "--json", "--svg", svg_path.string()});
+  ASSERT_EQ(r.exit_status, 0) << r.err;
+  const json j = json::parse(r.out);
+  const std::string svg = read_file(svg_path);
+  EXPECT_TRUE(starts_with(svg, "<svg xmlns=\"http://www.w3.org/2000/svg\""));
+  EXPECT_TRUE(svg.ends_with("</svg>\n"));
+  EXPECT_EQ(unbalanced_tag(svg), "");
+  EXPECT_EQ(count_of(svg, "class=\"triangle "), j.at("mesh").at("triangles").get<std::size_t>());
+  // Conci's rectangle is wholly wrinkled: every triangle carries the wrinkled colour.
+  EXPECT_EQ(count_of(svg, "class=\"triangle wrinkled\""),
+            j.at("mesh").at("triangles").get<std::size_t>());
+  EXPECT_EQ(count_of(svg, "class=\"ray\""), 5u);
+  EXPECT_EQ(count_of(svg, "class=\"support\""), 2u);
+  EXPECT_EQ(count_of(svg, "class=\"reaction\""), 2u);
+  for (const char* word : {"taut", "wrinkled", "slack", "tension ray", "reaction on the cloth",
+                           "regions (area)", " mm</text>"}) {
+    EXPECT_TRUE(contains(svg, word)) << word;
+  }
+  // Each support's value as the JSON gives it, to the drawing's four digits.
+  const double Rx = j.at("supports")[0].at("reaction_N")[0].get<double>();
+  const double Ry = j.at("supports")[0].at("reaction_N")[1].get<double>();
+  char label[64];
+  std::snprintf(label, sizeof label, "(%+.4g, %+.4g) N", Rx, Ry);
+  EXPECT_TRUE(contains(svg, label)) << label;
+
+  std::ofstream(dir_ / "plain.txt") << "a file\n";
+  const fs::path refused_path = dir_ / "plain.txt" / "field.svg";
+  const RunResult refused = run({"field", "--svg", refused_path.string()});
+  EXPECT_EQ(refused.exit_status, 2) << refused.err;
+  EXPECT_TRUE(
+      contains(refused.err, "the folder " + (dir_ / "plain.txt").string() + " is not a folder"))
+      << refused.err;
+  EXPECT_TRUE(refused.out.empty());
+  const RunResult wrong_extension = run({"field", "--svg", (dir_ / "field.png").string()});
+  EXPECT_EQ(wrong_extension.exit_status, 2) << wrong_extension.err;
+  EXPECT_FALSE(fs::exists(dir_ / "field.png"));
 }
 
 // A preset given by name is the file it resolves to: no output may be written over it, whether
@@ -1823,6 +1916,7 @@ TEST_F(CliTest, AnOutputsFolderIsCheckedBeforeTheWork) {
       {"picture", "cloth", "--size", "400x300", "--out", (missing / "x.png").string()},
       {"export", "--obj", (missing / "x.obj").string()},
       {"measure", "--depths-mm", "80,40,20,10", "--append", (missing / "x.csv").string()},
+      {"field", "--svg", (missing / "x.svg").string()},
       {"calibrate", "--data",
        (kPresetsDir.parent_path() / "data" / "paper-measurements.csv").string(), "--no-held-out",
        "--save-preset", (missing / "x.json").string()},

@@ -5,6 +5,7 @@
 // elastic answer).
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <iostream>
 #include <numbers>
 #include <vector>
@@ -12,6 +13,8 @@
 #include <gtest/gtest.h>
 
 #include "core/field/field_case.hpp"
+#include "core/field/field_folds.hpp"
+#include "core/field/field_svg.hpp"
 #include "core/field/mesh.hpp"
 #include "core/field/outline.hpp"
 #include "core/field/solver.hpp"
@@ -185,15 +188,35 @@ double outline_area_by_hand(const Parameters& p, OutlineKind kind) {
     case OutlineKind::triangle:
     case OutlineKind::pennant:
       return 0.5 * L * h;
+    case OutlineKind::wedge:
+      return 0.5 * L * (h + 0.25 * h);  // a trapezoid: depth h at the left, h / 4 at the right
   }
   return 0.0;
+}
+
+// The hung cloth's centre of gravity across, x_g: each node carries a third of each flat triangle
+// it is a corner of (w is uniform, so the weights' shares are the areas').
+double hung_centre_of_gravity_x(const Mesh& mesh, const Solution& s) {
+  double moment = 0.0;
+  double total = 0.0;
+  for (const auto& tri : mesh.triangles) {
+    const Vector2d u = mesh.nodes_mm[tri[1]] - mesh.nodes_mm[tri[0]];
+    const Vector2d v = mesh.nodes_mm[tri[2]] - mesh.nodes_mm[tri[0]];
+    const double area = 0.5 * (u.x() * v.y() - u.y() * v.x());
+    for (int n : tri) {
+      moment += area / 3.0 * s.positions_mm[n].x();
+    }
+    total += area;
+  }
+  return moment / total;
 }
 
 TEST(FieldStatics, ReactionsCarryTheWeightForEveryOutline) {
   const Parameters p = default_parameters();
   const Material material = material_of(p.fabric);
-  for (OutlineKind kind : {OutlineKind::rectangular, OutlineKind::cosine, OutlineKind::strip,
-                           OutlineKind::inclined, OutlineKind::triangle, OutlineKind::pennant}) {
+  for (OutlineKind kind :
+       {OutlineKind::rectangular, OutlineKind::cosine, OutlineKind::strip, OutlineKind::inclined,
+        OutlineKind::triangle, OutlineKind::pennant, OutlineKind::wedge}) {
     SCOPED_TRACE(std::string(to_string(kind)));
     const Outline outline = make_outline(p, kind);
     const FieldReport r = solve_outline(outline, material, {16, 12, MeshSplit::union_jack});
@@ -227,18 +250,7 @@ TEST(FieldStatics, InclinedSupportsDifferByTwiceTheThrustTimesTheSlope) {
   ASSERT_TRUE(s.converged);
   const double tan_theta = std::tan(15.0 * std::numbers::pi / 180.0);
   const double l = outline.supports[1].to_mm.x() - outline.supports[0].to_mm.x();
-  // The centre of gravity from the nodes' shares of the flat area, a third of each triangle.
-  double moment = 0.0;
-  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
-    const auto& tri = mesh.triangles[t];
-    const Vector2d u = mesh.nodes_mm[tri[1]] - mesh.nodes_mm[tri[0]];
-    const Vector2d v = mesh.nodes_mm[tri[2]] - mesh.nodes_mm[tri[0]];
-    const double area = 0.5 * (u.x() * v.y() - u.y() * v.x());
-    for (int n : tri) {
-      moment += material.weight_N_per_mm2 * area / 3.0 * s.positions_mm[n].x();
-    }
-  }
-  const double x_g = moment / s.weight_N;
+  const double x_g = hung_centre_of_gravity_x(mesh, s);
   const double H = 0.5 * (s.reactions_N[1].x() - s.reactions_N[0].x());
   const double V_L = -s.reactions_N[0].y();
   const double V_R = -s.reactions_N[1].y();
@@ -246,6 +258,140 @@ TEST(FieldStatics, InclinedSupportsDifferByTwiceTheThrustTimesTheSlope) {
   std::cout << "inclined 15 deg: V_R - V_L = " << V_R - V_L << " N, 2 H tan = " << 2 * H * tan_theta
             << " N, x_g = " << x_g << " mm\n";
   EXPECT_GT(V_R, V_L);
+}
+
+// The wedge: its weight, w L (h + h/4) / 2 by hand, hangs nearer its thick (left) end. With the
+// supports level at (-l/2, 0) and (l/2, 0) and reactions (-H, -V_L), (H, -V_R), moments about the
+// middle between them give l (V_L - V_R) / 2 = -x_g W: the left support carries more, by exactly
+// what the hung cloth's centre of gravity x_g (found here from the nodes) says.
+TEST(FieldStatics, TheWedgeHangsMostlyFromItsThickEnd) {
+  const Parameters p = default_parameters();
+  const Material material = material_of(p.fabric);
+  const Outline outline = make_outline(p, OutlineKind::wedge);
+  const double h = p.hanging.height_mm;
+  const double L = p.hanging.length_mm;
+  EXPECT_NEAR(outline.area_mm2(), L * (h + h / 4) / 2, 1e-9 * L * h);
+  const Mesh mesh = make_mesh(outline, {20, 14, MeshSplit::union_jack});
+  Solver solver(mesh);
+  const Solution s = solver.solve(material, support_targets(outline));
+  ASSERT_TRUE(s.converged) << s.relative_residual;
+  const double weight = material.weight_N_per_mm2 * L * (h + h / 4) / 2;
+  EXPECT_NEAR(s.weight_N, weight, 1e-12 * weight);
+  const Vector2d sum = s.reactions_N[0] + s.reactions_N[1];
+  EXPECT_NEAR(sum.x(), 0.0, 1e-6 * weight);
+  EXPECT_NEAR(sum.y(), -weight, 1e-6 * weight);
+  const double x_g = hung_centre_of_gravity_x(mesh, s);
+  const double l = outline.supports[1].to_mm.x() - outline.supports[0].to_mm.x();
+  const double V_L = -s.reactions_N[0].y();
+  const double V_R = -s.reactions_N[1].y();
+  EXPECT_NEAR(V_L - V_R, -2.0 * x_g * weight / l, 1e-6 * weight);
+  // The flat cut's centre of gravity, by hand: a trapezoid of parallel sides h and h/4 has it
+  // L (h + 2 h/4) / (3 (h + h/4)) from the thick side, 0.4 L; the hung one is near it.
+  EXPECT_LT(x_g, 0.0);
+  EXPECT_GT(V_L, V_R);
+  std::cout << "wedge: V_L = " << V_L << " N, V_R = " << V_R << " N, x_g = " << x_g
+            << " mm (flat: " << 0.4 * L - 0.5 * L << " mm)\n";
+}
+
+// Folds from a uniform uniaxial field: a W x H rectangle pinned all round as x -> (1 + eps) x,
+// y -> (1 - delta) y, no weight, is wrinkled everywhere with horizontal rays of tension
+// T = Y e1 sqrt(1 + 2 e1), e1 = ((1 + eps)² - 1) / 2 (the patch test's). Its supports are every
+// boundary node, so the span whose fibre is read is one column wide (the first, the widest being
+// all equal), l = (1 + eps) W / 8, and the fibre is the column midway across it. By hand: the
+// fibre keeps H (1 - nu T / Y) and lies (1 - delta) H in the plane, the difference is the width
+// the folds take up; under Cerda and Mahadevan's law with T for w h,
+// lambda = l (K E t³ / (T l²))^(1/4), so n = (1 - delta) H / lambda rounded, the folds evenly
+// spaced, and
+// n sqrt((dA)² + (2 z)²) = kept length gives z_max; under Conci's law the folds are spaced by
+// the ratio Q7 of eq. 7 down to the depth floor and evenly at the floor's step above it.
+TEST(FieldFolds, AUniformUniaxialFieldGivesTheHandCount) {
+  const double W = 400.0;
+  const double H = 300.0;
+  const double eps = 0.01;
+  const double delta = 0.02;
+  const Outline outline = pinned_rectangle(W, H, 8, 6, [&](const Vector2d& q) {
+    return Vector2d((1 + eps) * q.x(), (1 - delta) * q.y());
+  });
+  Parameters p;  // t = 0.25 mm, E = 165 MPa, nu = 0.3
+  Material material = material_of(p.fabric);
+  material.weight_N_per_mm2 = 0.0;
+  const Mesh mesh = make_mesh(outline, {8, 6, MeshSplit::union_jack});
+  Solver solver(mesh);
+  SolveOptions tight;
+  tight.relative_tolerance = 1e-12;
+  const Solution s = solver.solve(material, support_targets(outline), tight);
+  ASSERT_TRUE(s.converged) << s.relative_residual;
+
+  const double nu = p.fabric.poisson_ratio;
+  const double Y = p.fabric.youngs_modulus_MPa * p.fabric.thickness_mm;
+  const double e1 = ((1 + eps) * (1 + eps) - 1) / 2;
+  const double T = Y * e1 * std::sqrt(1 + 2 * e1);
+  const double kept = H * (1 - nu * T / Y);
+  const double in_plane = (1 - delta) * H;
+  const double l = (1 + eps) * W / 8;
+  const double Et3 = p.fabric.youngs_modulus_MPa * std::pow(p.fabric.thickness_mm, 3);
+
+  p.model.law = WrinkleLawKind::cerda_mahadevan;
+  p.model.load_constant_c = 4 * std::numbers::pi * std::numbers::pi / 3;
+  p.model.stress_exponent_p = 1.0;
+  p.model.int_rounding = IntRounding::nearest;
+  const FieldFolds cm = field_folds(mesh, s, support_targets(outline), p);
+  EXPECT_NEAR(cm.kept_length_mm, kept, 1e-9 * H);
+  EXPECT_NEAR(cm.slack_width_mm, kept - in_plane, 1e-9 * H);
+  EXPECT_NEAR(cm.mean_ray_tension_N_per_mm, T, 1e-9 * T);
+  const double K_cm = 4 * std::numbers::pi * std::numbers::pi / 3 / (1 - nu * nu);
+  const double lambda = l * std::pow(K_cm * Et3 / (T * l * l), 0.25);
+  EXPECT_NEAR(cm.count_argument, in_plane / lambda, 1e-9 * in_plane / lambda);
+  const int n = static_cast<int>(std::lround(in_plane / lambda));
+  ASSERT_EQ(cm.n, n);
+  ASSERT_EQ(cm.a_mm.size(), static_cast<std::size_t>(n + 1));
+  for (int i = 0; i <= n; ++i) {
+    EXPECT_NEAR(cm.a_mm[i], in_plane * (n - i) / n, 1e-6 * H) << i;
+  }
+  const double step = in_plane / n;
+  EXPECT_NEAR(cm.z_max_mm, 0.5 * std::sqrt(std::pow(kept / n, 2) - step * step), 1e-6);
+  std::cout << "uniform uniaxial field, Cerda-Mahadevan: lambda = " << lambda << " mm, n = " << n
+            << ", z_max = " << cm.z_max_mm << " mm, slack width " << cm.slack_width_mm << " mm\n";
+
+  p.model.law = WrinkleLawKind::conci;
+  p.model.load_constant_c = kCalibratedLoadConstantC;
+  const FieldFolds conci = field_folds(mesh, s, support_targets(outline), p);
+  const double x = kCalibratedLoadConstantC / (1 - nu * nu) * Et3 / (T * l * l);
+  // (1 - x) Q² - (2 + x) Q + 1 = 0, its root above 1.
+  const double Q7 = ((2 + x) + std::sqrt((2 + x) * (2 + x) - 4 * (1 - x))) / (2 * (1 - x));
+  const double floor = kFieldFoldsDepthFloorShare * kept;
+  const double count = (1.0 + std::log(in_plane / floor)) / std::log(Q7);
+  EXPECT_NEAR(conci.count_argument, count, 1e-4 * count);
+  EXPECT_EQ(conci.n, static_cast<int>(std::lround(count)));
+  EXPECT_NEAR(conci.Q, std::pow(in_plane / floor, 1.0 / conci.n), 1e-9);
+  std::cout << "uniform uniaxial field, Conci: Q7 = " << Q7 << ", n = " << conci.n << "\n";
+}
+
+// A field stopped before it converged is drawn under a line that says so, with its residual, never
+// as if it had converged; a converged one says that instead.
+TEST(FieldSvg, AnUnconvergedFieldIsDrawnAsSuch) {
+  const Parameters p = default_parameters();
+  const Outline outline = make_outline(p, OutlineKind::rectangular);
+  const Material material = material_of(p.fabric);
+  const Mesh mesh = make_mesh(outline, {12, 8, MeshSplit::union_jack});
+  Solver solver(mesh);
+  SolveOptions two_steps;
+  two_steps.max_iterations = 2;
+  const FieldReport stopped = report_field(
+      solver, solver.solve(material, support_targets(outline), two_steps), outline, material, 3);
+  ASSERT_FALSE(stopped.solution.converged);
+  const std::string drawn = field_to_svg(mesh, stopped, outline, "stopped");
+  EXPECT_NE(drawn.find("NOT converged"), std::string::npos);
+  char residual[32];
+  std::snprintf(residual, sizeof residual, "%.2e", stopped.solution.relative_residual);
+  EXPECT_NE(drawn.find(residual), std::string::npos) << residual;
+
+  const FieldReport solved =
+      report_field(solver, solver.solve(material, support_targets(outline)), outline, material, 3);
+  ASSERT_TRUE(solved.solution.converged);
+  const std::string good = field_to_svg(mesh, solved, outline, "solved");
+  EXPECT_EQ(good.find("NOT converged"), std::string::npos);
+  EXPECT_NE(good.find(">converged: "), std::string::npos);
 }
 
 // Refinement of Conci's set-up on nested meshes (each cell halved): a conforming refinement can

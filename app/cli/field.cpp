@@ -4,6 +4,7 @@
 
 #include "app/cli/commands.hpp"
 #include "app/cli/output.hpp"
+#include "core/field/field_svg.hpp"
 #include "core/io/io.hpp"
 #include "core/model/text_format.hpp"
 
@@ -70,10 +71,19 @@ void declare(CLI::App& app, Options& options) {
       ->check(app::one_of("split", {"uniform", "union-jack", "crossed"}));
   command->add_option("--rays", options.rays, "rays traced from the centre line (default 8)")
       ->transform(app::whole_number_in(0, 100));
+  command
+      ->add_option("--svg", options.svg_path,
+                   "also draw the field: the hung cloth by region, the rays and the supports' "
+                   "reactions")
+      ->check(app::non_empty_path());
   command->add_flag("--json", options.json, "print one JSON object instead of text");
 }
 
 Result run(const Options& options) {
+  check_outputs({{"--svg", options.svg_path}},
+                {app::preset_input("--preset", options.inputs.preset_path),
+                 {"--outline", options.outline_path}});
+  app::check_output_extension("--svg", options.svg_path, ".svg", "SVG");
   Result r;
   r.preset = app::resolve_named_inputs(options.inputs);
   r.outline = read_outline(options, r.preset, r.outline_name);
@@ -87,9 +97,13 @@ Result run(const Options& options) {
     const field::Material material = field::material_of(r.preset.parameters.fabric);
     field::Solution solution = field::solve_cold(solver, r.outline, material, r.resolution);
     r.report = field::report_field(solver, std::move(solution), r.outline, material, options.rays);
+    r.mesh = solver.mesh();
+    r.folds = field::field_folds(r.mesh, r.report.solution, field::support_targets(r.outline),
+                                 r.preset.parameters);
   } catch (const field::OutlineError& e) {
     throw InputError(e.what());
   }
+  r.closed_form = solve(r.preset.parameters);
   return r;
 }
 
@@ -134,6 +148,21 @@ void print_text(const Result& r, std::ostream& out) {
                            ray.depth_mm, ray.fitted_amplitude_mm, ray.fit_rms_mm);
     }
   }
+  const field::FieldFolds& f = r.folds;
+  out << printf_string(
+      "folds from the field (centre line): n = %d, Q = %.4g, z_max = %.1f mm; the folds take up "
+      "%.1f mm of the centre fibre's %.1f mm (mean ray tension %.3g N/mm)\n",
+      f.n, f.Q, f.z_max_mm, f.slack_width_mm, f.kept_length_mm, f.mean_ray_tension_N_per_mm);
+  if (!f.a_mm.empty()) {
+    out << "  a_i from the bottom up (mm):";
+    for (double a : f.a_mm) {
+      out << printf_string(" %.1f", a);
+    }
+    out << "\n";
+  }
+  const Solution& c = r.closed_form;
+  out << printf_string("folds from the closed form: n = %d, Q = %.4g, z_max = %.1f mm (%s)\n", c.n,
+                       c.Q, c.z_max_mm, std::string(regime_info(c.regime).label).c_str());
 }
 
 nlohmann::json print_json(const Result& r) {
@@ -172,11 +201,31 @@ nlohmann::json print_json(const Result& r) {
                            {"fitted_a_mm", ray.fitted_amplitude_mm},
                            {"fit_rms_mm", ray.fit_rms_mm}});
   }
+  out["field_folds"] = {{"n", r.folds.n},
+                        {"Q", r.folds.Q},
+                        {"z_max_mm", r.folds.z_max_mm},
+                        {"a_mm", r.folds.a_mm},
+                        {"slack_width_mm", r.folds.slack_width_mm},
+                        {"kept_length_mm", r.folds.kept_length_mm},
+                        {"count_argument", r.folds.count_argument},
+                        {"mean_ray_tension_N_per_mm", r.folds.mean_ray_tension_N_per_mm},
+                        {"n_capped", r.folds.n_capped}};
+  out["closed_form"] = {{"n", r.closed_form.n},
+                        {"Q", r.closed_form.Q},
+                        {"z_max_mm", r.closed_form.z_max_mm},
+                        {"a_mm", r.closed_form.a_mm},
+                        {"regime", std::string(regime_info(r.closed_form.regime).key)}};
   return out;
 }
 
 int execute(const Options& options) {
   const Result result = run(options);
+  if (!options.svg_path.empty()) {
+    write_file_atomically(options.svg_path,
+                          field::field_to_svg(result.mesh, result.report, result.outline,
+                                              "Tension field, " + result.outline_name +
+                                                  " cut: " + result.preset.name));
+  }
   print_result(result, options.json, &print_text);
   return result.report.solution.converged ? kExitOk : kExitInternal;
 }

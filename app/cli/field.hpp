@@ -11,7 +11,9 @@
 
 #include "app/common/inputs.hpp"
 #include "core/field/field_case.hpp"
+#include "core/field/field_folds.hpp"
 #include "core/io/preset.hpp"
+#include "core/model/solver.hpp"
 
 namespace foldlab::cli::field_command {
 
@@ -23,6 +25,7 @@ struct Options {
   int cells_y = field::MeshResolution{}.cells_y;
   std::string split = std::string(field::to_string(field::MeshResolution{}.split));
   int rays = field::kDefaultRayCount;
+  std::string svg_path;  // empty: no drawing
   bool json = false;
 };
 
@@ -33,15 +36,19 @@ struct Result {
   field::MeshResolution resolution;
   int nodes = 0;
   int triangles = 0;
+  field::Mesh mesh;  // the mesh the field was solved on, for the drawing
   field::FieldReport report;
+  field::FieldFolds folds;  // n, Q, z_max and a_i from the field
+  Solution closed_form;     // the same from the closed form, for the inputs as solved
 };
 
 void declare(CLI::App& app, Options& options);
-// Throws app::InputError for inputs, a shape or an outline the solver refuses.
+// Throws app::InputError for inputs, a shape or an outline the solver refuses, and for an --svg
+// that cannot be written (checked before the solve).
 Result run(const Options& options);
 void print_text(const Result& result, std::ostream& out);
 nlohmann::json print_json(const Result& result);
-// Exit 0 when the field converged, 1 when it did not (printed all the same, marked so).
+// Exit 0 when the field converged, 1 when it did not (printed and drawn all the same, marked so).
 int execute(const Options& options);
 
 }  // namespace foldlab::cli::field_command

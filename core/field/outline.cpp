@@ -140,14 +140,16 @@ std::string_view to_string(OutlineKind k) {
       return "triangle";
     case OutlineKind::pennant:
       return "pennant";
+    case OutlineKind::wedge:
+      return "wedge";
   }
   return "rectangular";
 }
 
 namespace {
-constexpr OutlineKind kAllKinds[] = {OutlineKind::rectangular, OutlineKind::cosine,
-                                     OutlineKind::strip,       OutlineKind::inclined,
-                                     OutlineKind::triangle,    OutlineKind::pennant};
+constexpr OutlineKind kAllKinds[] = {
+    OutlineKind::rectangular, OutlineKind::cosine,  OutlineKind::strip, OutlineKind::inclined,
+    OutlineKind::triangle,    OutlineKind::pennant, OutlineKind::wedge};
 }
 
 bool parse_outline_kind(std::string_view s, OutlineKind& out) {
@@ -228,6 +230,11 @@ Outline make_outline(const Parameters& p, OutlineKind kind) {
     case OutlineKind::pennant:
       o.top_mm = {{-0.5 * L, 0.0}, {0.5 * L, 0.0}};
       o.bottom_mm = {{-0.5 * L, h}, {0.5 * L, 0.0}};
+      o.supports = {pinned_at(-0.5 * L, 0, -0.5 * l, 0), pinned_at(0.5 * L, 0, 0.5 * l, 0)};
+      break;
+    case OutlineKind::wedge:
+      o.top_mm = {{-0.5 * L, 0.0}, {0.5 * L, 0.0}};
+      o.bottom_mm = {{-0.5 * L, h}, {0.5 * L, kWedgeThinEndShare * h}};
       o.supports = {pinned_at(-0.5 * L, 0, -0.5 * l, 0), pinned_at(0.5 * L, 0, 0.5 * l, 0)};
       break;
   }

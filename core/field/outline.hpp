@@ -51,7 +51,12 @@ enum class OutlineKind {
   inclined,     // the rectangle sheared so that its right support is higher by l tan(incline)
   triangle,     // a triangle, point down, hung from its two top corners
   pennant,      // a right triangle, its long side vertical at the left, hung from its top corners
+  wedge,        // Mansfield's wedge cut short of its apex: h deep at the left, h / 4 at the right
 };
+
+// The wedge's depth at its thin (right) end as a share of h: its edges would meet a third of
+// L beyond the right support.
+inline constexpr double kWedgeThinEndShare = 0.25;
 
 std::string_view to_string(OutlineKind k);
 bool parse_outline_kind(std::string_view s, OutlineKind& out);

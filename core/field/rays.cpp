@@ -80,11 +80,9 @@ Vector2d hung_position(const Mesh& mesh, const Solution& solution, const Vector2
 
 CentreLine centre_line(const Mesh& mesh, const Solution& solution,
                        const std::vector<Vector2d>& targets) {
-  CentreLine out;
   if (targets.size() < 2 || !(support_frame(targets).span_mm() > 0.0)) {
-    return out;
+    return {};
   }
-  const SupportFrame frame = support_frame(targets);
   // The flat centre column: the flat point midway between the outermost supports' columns.
   double left_X = std::numeric_limits<double>::infinity();
   double right_X = -left_X;
@@ -92,17 +90,22 @@ CentreLine centre_line(const Mesh& mesh, const Solution& solution,
     left_X = std::min(left_X, mesh.nodes_mm[s].x());
     right_X = std::max(right_X, mesh.nodes_mm[s].x());
   }
-  const double centre_X = 0.5 * (left_X + right_X);
+  return column_line(mesh, solution, 0.5 * (left_X + right_X), support_frame(targets));
+}
+
+CentreLine column_line(const Mesh& mesh, const Solution& solution, double flat_x_mm,
+                       const SupportFrame& frame) {
+  CentreLine out;
   double top = std::numeric_limits<double>::infinity();
   double bottom = -top;
   for (const Vector2d& n : mesh.nodes_mm) {
     top = std::min(top, n.y());
     bottom = std::max(bottom, n.y());
   }
-  // Samples down the flat centre column with their hung depths.
+  // Samples down the flat column with their hung depths.
   const int samples = 2000;
   for (int i = 0; i <= samples; ++i) {
-    const Vector2d p(centre_X, top + (bottom - top) * i / samples);
+    const Vector2d p(flat_x_mm, top + (bottom - top) * i / samples);
     const Vector2d q = hung_position(mesh, solution, p);
     if (std::isfinite(q.x())) {
       out.flat_mm.push_back(p);

@@ -40,6 +40,9 @@ struct CentreLine {
 };
 CentreLine centre_line(const Mesh& mesh, const Solution& solution,
                        const std::vector<Eigen::Vector2d>& targets_mm);
+// The same for the flat column at x = flat_x_mm, its depths below the line of `frame`'s supports.
+CentreLine column_line(const Mesh& mesh, const Solution& solution, double flat_x_mm,
+                       const SupportFrame& frame);
 
 // `count` rays through the centre line at depths evenly spaced strictly between its top and
 // bottom (hung); a ray is traced both ways until it leaves the cut or reaches a support.

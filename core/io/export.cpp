@@ -1,5 +1,6 @@
 #include "core/io/export.hpp"
 
+#include "core/model/svg_text.hpp"
 #include "core/model/text_format.hpp"
 
 #include <algorithm>
@@ -11,6 +12,7 @@ namespace {
 
 using detail::finite_or_throw;
 using detail::printf_string;
+using detail::tick_step;
 using detail::xml_escape;
 
 // Every coordinate of a point, checked before it is written.
@@ -19,18 +21,6 @@ void check_finite(const Vector& v, const char* field) {
   for (int i = 0; i < v.size(); ++i) {
     finite_or_throw(static_cast<double>(v[i]), field);
   }
-}
-
-// A "nice" tick step (1, 2 or 5 times a power of ten) giving about `target` ticks over `range`.
-double tick_step(double range, int target) {
-  const double raw = range / std::max(1, target);
-  const double power = std::pow(10.0, std::floor(std::log10(raw)));
-  for (double m : {1.0, 2.0, 5.0}) {
-    if (m * power >= raw) {
-      return m * power;
-    }
-  }
-  return 10.0 * power;
 }
 
 constexpr const char* kPositiveColour = "#1f3a93";
@@ -148,11 +138,7 @@ FoldPlotFrame fold_plot_frame(const Solution& s) {
 }
 
 std::string fold_plot_heading(const FoldPlotFrame& f, const Solution& s, const std::string& title) {
-  std::string out = printf_string(
-      "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%.0f\" height=\"%.0f\" "
-      "viewBox=\"0 0 %.0f %.0f\" font-family=\"sans-serif\" font-size=\"12\">\n",
-      f.width_px, f.height_px, f.width_px, f.height_px);
-  out += "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
+  std::string out = detail::svg_open(f.width_px, f.height_px, 12);
   out += "<text x=\"" + printf_string("%.0f", f.margin_left) + "\" y=\"22\" font-size=\"15\">" +
          xml_escape(detail::escaped(title)) + "</text>\n";
   out += printf_string(

@@ -6,6 +6,7 @@
 #include <utility>
 #include <vector>
 
+#include "core/model/svg_text.hpp"
 #include "core/model/text_format.hpp"
 #include "core/tools/benchmark_cases.hpp"
 
@@ -78,11 +79,7 @@ std::pair<Axis, Axis> chart_axes(const std::vector<BenchmarkRow>& rows) {
 }
 
 std::string chart_heading(const std::string& subtitle) {
-  std::string svg = printf_string(
-      "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%.0f\" height=\"%.0f\" viewBox=\"0 0 "
-      "%.0f %.0f\" font-family=\"sans-serif\" font-size=\"13\">\n",
-      kWidth, kHeight, kWidth, kHeight);
-  svg += "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
+  std::string svg = detail::svg_open(kWidth, kHeight, 13);
   svg += printf_string("<text x=\"%.0f\" y=\"28\" font-size=\"17\" font-weight=\"bold\">", kLeft) +
          "FoldLab: run time against error of z_max</text>\n";
   svg += printf_string("<text x=\"%.0f\" y=\"50\" fill=\"#555\">", kLeft) +
