@@ -124,11 +124,14 @@ void add_scene_options(CLI::App& command, GuiCommandOptions& options) {
           "ground, grid (vertices per side, 8-512), "
           "full=1 (the 3D view fills the window) (3D view); fold_plot_true_scale=0|1 (the fold "
           "plot); sweep=table1|table2|fig4 (the paper's case in the Sweep tab); field=0|1 (the "
-          "tension field's window), field_colour=state|tension, field_rays, field_cosines (the "
+          "tension field's window), field_colour=state|tension, "
+          "field_cut=shape|triangle|pennant|wedge, "
+          "field_rays, field_cosines (the "
           "closed form's cosines over the field), field_cells (mesh cells across at rest, 8-80; "
           "half while a value is dragged); "
           "present=fold_plot|cloth|results|analysis|parameters|presets|field|none (that panel "
-          "fills the window); theme=dark|light; scale (UI scale, percent); expert=0|1 (the expert settings)")
+          "fills the window); theme=dark|light; scale (UI scale, percent); expert=0|1 (the expert "
+          "settings)")
       ->type_name("KEY=VALUE");
   command
       .add_option("--print", options.print_path,
@@ -374,8 +377,9 @@ app::Command add_picture_command(CLI::App& app) {
       "sweep: logarithmic spacing (default for " + sweepable_keys_on_scale(true) + ")");
   command->add_flag("--linear", options->linear, "sweep: linear spacing");
   command
-      ->add_option("--b-preset", options->b_preset,
-                   "compare: B's preset; with --b-set alone, B is A's --preset with those overrides")
+      ->add_option(
+          "--b-preset", options->b_preset,
+          "compare: B's preset; with --b-set alone, B is A's --preset with those overrides")
       ->type_name("FILE")
       ->check(app::non_empty_path());
   command->add_option("--b-set", options->b_sets, "compare: override one of B's inputs")

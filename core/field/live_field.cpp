@@ -127,6 +127,7 @@ bool LiveField::step(double budget_ms) {
     solved->mesh = w.solver.mesh();
     solved->report = report_field(w.solver, std::move(solution), in.outline, in.material);
     shown_ = std::move(solved);
+    ++shown_count_;
     return true;
   }
   const bool spent = cold || iterations_ >= kMaxIterations || !finite(solution);

@@ -6,6 +6,7 @@
 // page without threads runs it alike.
 #pragma once
 
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <string>
@@ -50,6 +51,9 @@ class LiveField {
   bool working() const;
   // The last converged field, or null before the first.
   const SolvedField* shown() const { return shown_.get(); }
+  // Counts the fields shown so far: a view that derives something from shown() knows when to
+  // derive it again.
+  std::uint64_t shown_count() const { return shown_count_; }
   // Whether shown() is of the inputs last asked for.
   bool current() const;
   // Why the wanted field is not shown: the outline refused, or the solve gave up (its residual
@@ -71,6 +75,7 @@ class LiveField {
   std::string refusal_;
   double residual_ = 0.0;
   int iterations_ = 0;
+  std::uint64_t shown_count_ = 0;
 };
 
 // The field of `inputs` solved to the end at once (a picture, a command).

@@ -20,6 +20,21 @@ using Eigen::Vector2d;
 using nlohmann::json;
 
 constexpr std::string_view kColouringNames[] = {"state", "tension"};
+constexpr std::string_view kCutNames[] = {"shape", "triangle", "pennant", "wedge"};
+
+field::OutlineKind outline_kind(const Parameters& parameters, FieldCut cut) {
+  switch (cut) {
+    case FieldCut::triangle:
+      return field::OutlineKind::triangle;
+    case FieldCut::pennant:
+      return field::OutlineKind::pennant;
+    case FieldCut::wedge:
+      return field::OutlineKind::wedge;
+    case FieldCut::shape:
+      break;
+  }
+  return field::outline_kind_of(parameters.shape);
+}
 constexpr ViewRange<double> kCells{8.0, 80.0, " cells"};
 constexpr const char* kCosinesLabel = "closed form's cosines";
 constexpr const char* kCellsLabel = "mesh cells across";
@@ -163,9 +178,9 @@ void legend(ImDrawList& draw, ImVec2 at, const FieldDrawing& style, double most_
 
 }  // namespace
 
-field::FieldInputs field_inputs(const Parameters& parameters, int cells_x) {
+field::FieldInputs field_inputs(const Parameters& parameters, int cells_x, FieldCut cut) {
   field::FieldInputs in;
-  in.outline = field::make_outline(parameters, field::outline_kind_of(parameters.shape));
+  in.outline = field::make_outline(parameters, outline_kind(parameters, cut));
   in.material = field::material_of(parameters.fabric);
   double top = std::numeric_limits<double>::max();
   double bottom = -top;
@@ -267,6 +282,7 @@ void draw_field(ImDrawList& draw, ImVec2 origin, ImVec2 size, const field::Solve
 void FieldPanel::view_settings(ViewSettings& settings, Document& /*document*/) {
   settings.add_switch("field", &open_, kEveryUse);
   settings.add_choice<FieldColouring>("field_colour", &colouring_, kColouringNames, kEveryUse);
+  settings.add_choice<FieldCut>("field_cut", &cut_, kCutNames, kEveryUse);
   settings.add_switch("field_rays", &rays_, kEveryUse);
   settings.add_switch("field_cosines", &cosines_, kEveryUse);
   settings.add_number_by(
@@ -292,6 +308,14 @@ void FieldPanel::controls() {
   if (ImGui::Combo("colour by", &colouring, "state\0tension\0")) {
     colouring_ = static_cast<FieldColouring>(colouring);
   }
+  const float cut_width = ImGui::CalcTextSize("as the shape").x + ImGui::GetFrameHeight() +
+                          2.0f * ImGui::GetStyle().FramePadding.x;
+  same_line_if_fits(labelled_width(cut_width, "cut"));
+  ImGui::SetNextItemWidth(cut_width);
+  int cut = static_cast<int>(cut_);
+  if (ImGui::Combo("cut", &cut, "as the shape\0triangle\0pennant\0wedge\0")) {
+    cut_ = static_cast<FieldCut>(cut);
+  }
   same_line_if_fits(checkbox_width("rays"));
   ImGui::Checkbox("rays", &rays_);
   same_line_if_fits(checkbox_width(kCosinesLabel));
@@ -303,7 +327,7 @@ void FieldPanel::controls() {
   own_slider_active_ = ImGui::IsItemActive();
 }
 
-void FieldPanel::status_line() const {
+void FieldPanel::status_line(Document& document) {
   const field::SolvedField* shown = live_.shown();
   const std::string& refusal = cut_refusal_.empty() ? live_.refusal() : cut_refusal_;
   if (!refusal.empty()) {
@@ -328,6 +352,16 @@ void FieldPanel::status_line() const {
       "thrust H %.3g N (the cosine pencil's %.3g N)",
       100.0 * s.taut_share, 100.0 * s.wrinkled_share, 100.0 * s.slack_share, s.weight_N,
       shown->report.thrust_N, shown->report.pencil_thrust_N);
+  if (!folds_ || folds_of_ != live_.shown_count()) {
+    folds_of_ = live_.shown_count();
+    folds_ = field::field_folds(shown->mesh, s, field::support_targets(shown->inputs.outline),
+                                document.scene().parameters());
+  }
+  const Solution& closed = document.scene().solution();
+  ImGui::Text(
+      "folds from the field: n = %d, Q = %.3f, z_max = %.0f mm; the closed form's: n = "
+      "%d, Q = %.3f, z_max = %.0f mm",
+      folds_->n, folds_->Q, folds_->z_max_mm, closed.n, closed.Q, closed.z_max_mm);
   ImGui::TextDisabled(
       "converged: force residual %.0e, %d Newton steps, mesh %d x %d, %zu triangles",
       s.relative_residual, s.iterations, shown->inputs.resolution.cells_x,
@@ -364,14 +398,16 @@ void FieldPanel::draw(PanelContext& context) {
   const Parameters& parameters = context.document.scene().parameters();
   const double now_s = ImGui::GetTime();
   if (!last_parameters_ || !(*last_parameters_ == parameters)) {
+    if (last_parameters_) {
+      last_change_s_ = now_s;  // the first inputs seen are no move
+    }
     last_parameters_ = parameters;
-    last_change_s_ = now_s;
   }
   const bool moving = (ImGui::IsAnyItemActive() && !own_slider_active_) || context.holding_frame ||
                       now_s - last_change_s_ < kRestS;
   const int cells = moving ? std::max(static_cast<int>(kCells.lo), cells_ / 2) : cells_;
   try {
-    live_.request(field_inputs(parameters, cells));
+    live_.request(field_inputs(parameters, cells, cut_));
     cut_refusal_.clear();
   } catch (const field::OutlineError& e) {
     // The last field stays on show, marked as of other inputs.
@@ -396,7 +432,7 @@ void FieldPanel::draw(PanelContext& context) {
   if (ImGui::Begin(window_label().c_str(), &open_, ImGuiWindowFlags_NoCollapse)) {
     context.renderer.fill_window_background();  // the style's window background is transparent
     controls();
-    status_line();
+    status_line(context.document);
     canvas(context);
   }
   ImGui::End();
@@ -431,6 +467,9 @@ void FieldPanel::report(json& state, PanelContext& /*context*/) const {
                                  {"reaction_N", {s.reactions_N[i].x(), s.reactions_N[i].y()}}});
     }
     out["rays"] = shown->report.rays.size();
+    if (folds_ && folds_of_ == live_.shown_count()) {
+      out["folds"] = {{"n", folds_->n}, {"Q", folds_->Q}, {"z_max_mm", folds_->z_max_mm}};
+    }
   }
   state["field"] = out;
 }
@@ -439,7 +478,7 @@ const field::SolvedField* FieldPanel::picture_field(const Document& document,
                                                     std::string& refusal) const {
   field::FieldInputs inputs;
   try {
-    inputs = field_inputs(document.scene().parameters(), cells_);
+    inputs = field_inputs(document.scene().parameters(), cells_, cut_);
   } catch (const field::OutlineError& e) {
     refusal = std::string("the tension field's cut: ") + e.what();
     return nullptr;

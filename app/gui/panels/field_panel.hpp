@@ -12,6 +12,7 @@
 #include <nlohmann/json_fwd.hpp>
 
 #include "app/gui/panel.hpp"
+#include "core/field/field_folds.hpp"
 #include "core/field/live_field.hpp"
 #include "core/geometry/geometry.hpp"
 
@@ -19,6 +20,9 @@ namespace foldlab::gui {
 
 // How the field's triangles are coloured.
 enum class FieldColouring { state, tension };
+// The cut the field is solved on: the model's shape (cosine, rectangle, strip, inclined) or one of
+// the paper's cuts that only the field solves.
+enum class FieldCut { shape, triangle, pennant, wedge };
 
 struct FieldDrawing {
   FieldColouring colouring = FieldColouring::state;
@@ -37,9 +41,10 @@ struct FieldDrawing {
 void draw_field(ImDrawList& draw, ImVec2 origin, ImVec2 size, const field::SolvedField& field,
                 const FoldLines* cosines, const FieldDrawing& style);
 
-// The field's inputs for the model's parameters: the outline of their shape, their material and a
-// mesh of `cells_x` across with as many cells down as keeps them square.
-field::FieldInputs field_inputs(const Parameters& parameters, int cells_x);
+// The field's inputs for the model's parameters: the outline of their shape (or `cut`), their
+// material and a mesh of `cells_x` across with as many cells down as keeps them square.
+field::FieldInputs field_inputs(const Parameters& parameters, int cells_x,
+                                FieldCut cut = FieldCut::shape);
 
 class FieldPanel : public Panel {
  public:
@@ -81,7 +86,7 @@ class FieldPanel : public Panel {
 
  private:
   void controls();
-  void status_line() const;
+  void status_line(Document& document);
   void canvas(PanelContext& context);
   FieldDrawing drawing_style(const PanelContext& context) const;
   // The field of the document's inputs at rest, solved whole, for a picture.
@@ -90,6 +95,10 @@ class FieldPanel : public Panel {
   bool open_ = false;
   bool was_open_ = false;  // in the last frame
   FieldColouring colouring_ = FieldColouring::state;
+  FieldCut cut_ = FieldCut::shape;
+  // The folds read from the field on show, beside the closed form's (field_folds.hpp).
+  std::uint64_t folds_of_ = 0;  // LiveField::shown_count() of the field they were read from
+  std::optional<field::FieldFolds> folds_;
   bool rays_ = true;
   bool cosines_ = false;
   int cells_ = kDefaultCells;
