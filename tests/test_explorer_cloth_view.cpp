@@ -2,8 +2,26 @@
 // again.
 #include "explorer_fixture.hpp"
 
+#include "app/gui/appearance.hpp"
+#include "app/gui/colour_map.hpp"
+
 namespace foldlab::gui {
 namespace {
+
+// One meaning per colour across the views: +z is blue in colour-by-z as a positive fold (z > 0)
+// is blue in the fold lines, and -z red as a negative fold is, in either theme.
+TEST(ColourMeaning, PlusZIsBlueInEveryViewAndMinusZRed) {
+  const auto bluer = [](float r, float b) { return b > r + 0.2f; };
+  const Eigen::Vector3f plus_z = diverging_colour(1.0f);
+  const Eigen::Vector3f minus_z = diverging_colour(0.0f);
+  EXPECT_TRUE(bluer(plus_z.x(), plus_z.z()));
+  EXPECT_TRUE(bluer(minus_z.z(), minus_z.x()));
+  for (const bool light : {false, true}) {
+    const FoldColours folds = fold_colours(light);
+    EXPECT_TRUE(bluer(folds.positive.x, folds.positive.z)) << "positive fold, light " << light;
+    EXPECT_TRUE(bluer(folds.negative.z, folds.negative.x)) << "negative fold, light " << light;
+  }
+}
 
 // The colour bar beside the 3D view shows the range the shader maps: +-z_max of the solution.
 TEST_F(ExplorerTest, ColourByZShowsABarOverTheSolutionsDepth) {
