@@ -48,6 +48,7 @@ void MethodPanel::run_to_end() {
 }
 
 void MethodPanel::recompute(const Parameters& current) {
+  model_method_ = current.model.method;
   Parameters p = current;
   p.model.method = method_;
   if (computed_ && p == computed_for_) {
@@ -222,6 +223,18 @@ void wrapped(const ImVec4& colour, const std::string& text) {
 
 }  // namespace
 
+// Whose answer the stepper's last iterate is, in words a class reads: Results shows the answer of
+// the method the model is set to, which the stepper may or may not be following.
+std::string answer_words(Method stepped, Method model) {
+  const std::string name = stepped == Method::paper ? "the paper method's" : "the exact method's";
+  if (stepped == model) {
+    return "This is " + name + " answer, the one Results shows.";
+  }
+  return "This is " + name + " answer; Results shows " +
+         (model == Method::paper ? "the paper method's" : "the exact method's") +
+         ", the method set in Parameters.";
+}
+
 // Why the shown iterate has its numbers, and why the iteration goes on or stops there; the table
 // above shows what changed.
 void MethodPanel::draw_change() const {
@@ -247,8 +260,9 @@ void MethodPanel::draw_change() const {
     const double miss_percent = 100.0 * std::abs(it.length_ratio - 1.0);
     const double tolerance_percent = 100.0 * computed_for_.model.length_tolerance;
     if (miss_percent <= tolerance_percent) {
-      wrapped(kOkText, printf_string("|L′/L − 1| = %.3g %% ≤ %.3g %%: stop. This is the answer.",
-                                     miss_percent, tolerance_percent));
+      wrapped(kOkText, printf_string("|L′/L − 1| = %.3g %% ≤ %.3g %%: stop. %s", miss_percent,
+                                     tolerance_percent,
+                                     answer_words(method_, model_method_).c_str()));
     } else if (last) {
       wrapped(kNoteText, printf_string("|L′/L − 1| = %.3g %% > %.3g %%, and the iteration cap is "
                                        "reached.",
@@ -266,8 +280,8 @@ void MethodPanel::draw_change() const {
   if (!last) {
     wrapped(kNoteText, printf_string("n %d → %d: iterate again.", it.n, it.next_n));
   } else if (s.n_cycle.empty() && it.next_n == it.n) {
-    wrapped(kOkText,
-            printf_string("n = %d maps to itself: the fixed point. This is the answer.", it.n));
+    wrapped(kOkText, printf_string("n = %d maps to itself: the fixed point. %s", it.n,
+                                   answer_words(method_, model_method_).c_str()));
   } else {
     wrapped(kNoteText, describe(s, computed_for_));
   }

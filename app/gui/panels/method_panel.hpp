@@ -41,6 +41,7 @@ class MethodPanel {
   Parameters computed_for_;
   bool computed_ = false;
   Method method_ = Method::paper;
+  Method model_method_ = Method::paper;  // the one the model is set to: Results shows its answer
   Method followed_ = Method::paper;  // the model's method when last seen: a change there follows
   bool following_ = false;
   IterationTrace trace_;
