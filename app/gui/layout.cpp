@@ -239,6 +239,7 @@ void Layout::place(const Panel& panel) {
         ImGui::SetNextWindowPos(window_restore_->pos, ImGuiCond_Always);
         ImGui::SetNextWindowSize(window_restore_->size, ImGuiCond_Always);
       }
+      ImGui::SetNextWindowFocus();  // back over the tiles it was presented from
       window_to_restore_ = nullptr;
       window_restore_.reset();
     }

@@ -31,11 +31,6 @@ float MenuBar::draw(PanelContext& context) {
       export_items(context);
       ImGui::EndMenu();
     }
-    for (const std::unique_ptr<Panel>& panel : context.panels) {
-      if (bool* open = panel->open_flag()) {
-        ImGui::MenuItem(panel->name(), nullptr, open);
-      }
-    }
     if (ImGui::MenuItem(IntroWindow::kTitle)) {
       context.panel<IntroWindow>().open();
     }
@@ -112,6 +107,12 @@ void MenuBar::view_menu(PanelContext& context) {
   appearance_.request(percent, light);
   ImGui::Separator();
   ImGui::MenuItem("Pipeline stats", nullptr, &show_stats_);
+  // The windows that open and close (the tension field), each ticked while it is open.
+  for (const std::unique_ptr<Panel>& panel : context.panels) {
+    if (bool* open = panel->open_flag()) {
+      ImGui::MenuItem(panel->name(), nullptr, open);
+    }
+  }
   if (layout_.presented()) {
     if (ImGui::MenuItem("Back to the tiles", "Esc")) {
       layout_.request_present(nullptr);

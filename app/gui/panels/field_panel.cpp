@@ -92,7 +92,12 @@ struct ToScreen {
   }
 };
 
-ToScreen fit(const field::SolvedField& field, ImVec2 origin, ImVec2 size, float margin_px) {
+// Margins around the cloth, pixels: room for the supports' arrows and values.
+struct Margins {
+  float left = 0.0f, right = 0.0f, top = 0.0f, bottom = 0.0f;
+};
+
+ToScreen fit(const field::SolvedField& field, ImVec2 origin, ImVec2 size, Margins m) {
   Vector2d low = Vector2d::Constant(std::numeric_limits<double>::max());
   Vector2d high = -low;
   for (const Vector2d& p : field.report.solution.positions_mm) {
@@ -100,24 +105,22 @@ ToScreen fit(const field::SolvedField& field, ImVec2 origin, ImVec2 size, float 
     high = high.cwiseMax(p);
   }
   const Vector2d extent = (high - low).cwiseMax(Vector2d::Constant(1e-9));
-  const double width = std::max(1.0, static_cast<double>(size.x) - 2.0 * margin_px);
-  const double height = std::max(1.0, static_cast<double>(size.y) - 2.0 * margin_px);
+  const double width = std::max(1.0, static_cast<double>(size.x - m.left - m.right));
+  const double height = std::max(1.0, static_cast<double>(size.y - m.top - m.bottom));
   ToScreen to;
   to.scale = std::min(width / extent.x(), height / extent.y());
   to.low = low;
-  to.origin = ImVec2(origin.x + 0.5f * (size.x - static_cast<float>(extent.x() * to.scale)),
-                     origin.y + 0.5f * (size.y - static_cast<float>(extent.y() * to.scale)));
+  to.origin =
+      ImVec2(origin.x + m.left +
+                 0.5f * (static_cast<float>(width) - static_cast<float>(extent.x() * to.scale)),
+             origin.y + m.top);
   return to;
 }
 
-// The top of the tension scale: the tension below which 95 % of the triangles lie. A point
-// support makes the tension beside it grow without bound as the mesh is refined; scaled to the
-// largest, the rest of the cloth would be one pale colour.
-double tension_scale_top(const field::Solution& s) {
-  std::vector<double> tensions;
-  for (const field::TriangleResult& t : s.triangles) {
-    tensions.push_back(t.tension_N_per_mm);
-  }
+// The top of the tension scale: the tension below which 95 % of the nodes lie. A point support
+// makes the tension beside it grow without bound as the mesh is refined; scaled to the largest,
+// the rest of the cloth would be one pale colour.
+double tension_scale_top(std::vector<double> tensions) {
   if (tensions.empty()) {
     return 0.0;
   }
@@ -143,37 +146,83 @@ void arrow(ImDrawList& draw, ImVec2 from, ImVec2 to, ImU32 colour, float line_px
       ImVec2(to.x - head * u.x - 0.5f * head * n.x, to.y - head * u.y - 0.5f * head * n.y), colour);
 }
 
-void legend(ImDrawList& draw, ImVec2 at, const FieldDrawing& style, double most_N_per_mm,
-            ImU32 ink) {
+// The legend in one row across the top (wrapping when the width runs out); its height.
+float legend(ImDrawList& draw, ImVec2 origin, float width, const FieldDrawing& style,
+             double top_N_per_mm, ImU32 ink) {
   ImFont* font = ImGui::GetFont();
   const float text = style.text_px;
   const float box = std::round(0.8f * text);
+  const float gap = text;
+  float x = origin.x;
+  float y = origin.y;
+  // Places an item `item_width` wide: on this row when it fits, else on the next.
+  const auto place = [&](float item_width) {
+    if (x > origin.x && x + item_width > origin.x + width) {
+      x = origin.x;
+      y += 1.4f * text;
+    }
+    const ImVec2 at(x, y);
+    x += item_width + gap;
+    return at;
+  };
+  const auto text_width = [&](const char* words) {
+    return font->CalcTextSizeA(text, 1e9f, 0.0f, words).x;
+  };
   if (style.colouring == FieldColouring::state) {
     const std::array<std::pair<ImU32, const char*>, 3> rows{
         {{kTaut, "taut: tension both ways"},
          {kWrinkled, "wrinkled: tension along the rays only"},
          {kSlack, "slack: no tension"}}};
     for (const auto& [colour, words] : rows) {
-      draw.AddRectFilled(at, ImVec2(at.x + box, at.y + box), colour);
-      draw.AddText(font, text, ImVec2(at.x + box + 0.4f * text, at.y - 0.1f * text), ink, words);
-      at.y += 1.3f * text;
+      const ImVec2 at = place(box + 0.4f * text + text_width(words));
+      draw.AddRectFilled(ImVec2(at.x, at.y + 0.15f * text),
+                         ImVec2(at.x + box, at.y + 0.15f * text + box), colour);
+      draw.AddText(font, text, ImVec2(at.x + box + 0.4f * text, at.y), ink, words);
     }
-    return;
+    return y + 1.4f * text - origin.y;
   }
-  const float bar = 8.0f * text;
+  const float bar = 6.0f * text;
+  const std::string top = printf_text("%#.3g N/mm or more: tension along the rays", top_N_per_mm);
+  const float zero_width = text_width("0") + 0.3f * text;
+  const ImVec2 at = place(zero_width + bar + 0.3f * text + text_width(top.c_str()));
+  draw.AddText(font, text, at, ink, "0");
+  const float x0 = at.x + zero_width;
+  const float top_y = at.y + 0.15f * text;
   for (int i = 0; i < 32; ++i) {
-    const float x0 = at.x + bar * static_cast<float>(i) / 32.0f;
-    draw.AddRectFilled(ImVec2(x0, at.y), ImVec2(x0 + bar / 32.0f + 1.0f, at.y + box),
+    const float a = x0 + bar * static_cast<float>(i) / 32.0f;
+    draw.AddRectFilled(ImVec2(a, top_y), ImVec2(a + bar / 32.0f + 1.0f, top_y + box),
                        tension_colour((i + 0.5) / 32.0));
   }
-  draw.AddRect(at, ImVec2(at.x + bar, at.y + box), ink);
-  draw.AddText(font, text, ImVec2(at.x, at.y + box + 0.1f * text), ink, "0");
-  const std::string most = printf_text("%.3g N/mm or more", most_N_per_mm);
-  const float most_w = font->CalcTextSizeA(text, 1e9f, 0.0f, most.c_str()).x;
-  draw.AddText(font, text, ImVec2(at.x + bar - most_w, at.y + box + 0.1f * text), ink,
-               most.c_str());
-  draw.AddText(font, text, ImVec2(at.x + bar + 0.5f * text, at.y - 0.1f * text), ink,
-               "tension along the rays");
+  draw.AddRect(ImVec2(x0, top_y), ImVec2(x0 + bar, top_y + box), ink);
+  draw.AddText(font, text, ImVec2(x0 + bar + 0.3f * text, at.y), ink, top.c_str());
+  return y + 1.4f * text - origin.y;
+}
+
+// The tension at each node: the area-weighted mean over the tensed triangles around it. Linear
+// triangles let one of a pair go slack beside a tensed one at no cost in the energy (field.md);
+// coloured per triangle the cloth would read as a checkerboard, per node it reads as the field.
+std::vector<double> node_tensions(const field::SolvedField& field) {
+  const field::Mesh& mesh = field.mesh;
+  std::vector<double> sum(mesh.nodes_mm.size(), 0.0);
+  std::vector<double> area(mesh.nodes_mm.size(), 0.0);
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+    const field::TriangleResult& r = field.report.solution.triangles[t];
+    if (r.state == field::State::slack) {
+      continue;
+    }
+    const auto& tri = mesh.triangles[t];
+    const Vector2d a = mesh.nodes_mm[tri[1]] - mesh.nodes_mm[tri[0]];
+    const Vector2d b = mesh.nodes_mm[tri[2]] - mesh.nodes_mm[tri[0]];
+    const double flat_area = 0.5 * std::abs(a.x() * b.y() - a.y() * b.x());
+    for (const int n : tri) {
+      sum[n] += flat_area * r.tension_N_per_mm;
+      area[n] += flat_area;
+    }
+  }
+  for (std::size_t n = 0; n < sum.size(); ++n) {
+    sum[n] = area[n] > 0.0 ? sum[n] / area[n] : 0.0;
+  }
+  return sum;
 }
 
 }  // namespace
@@ -201,23 +250,38 @@ void draw_field(ImDrawList& draw, ImVec2 origin, ImVec2 size, const field::Solve
                 const FoldLines* cosines, const FieldDrawing& style) {
   const field::Solution& s = field.report.solution;
   const ImU32 ink = style.dark ? IM_COL32(235, 235, 235, 255) : IM_COL32(25, 25, 25, 255);
-  // Room for the legend above and the reactions' arrows and values around the cloth.
-  const float margin = 5.0f * style.text_px;
-  const ImVec2 body_origin(origin.x, origin.y + (style.legend ? 3.0f * style.text_px : 0.0f));
-  const ImVec2 body_size(size.x, size.y - (body_origin.y - origin.y));
-  const ToScreen to = fit(field, body_origin, body_size, margin);
-  const double most = tension_scale_top(s);
+  const std::vector<double> tensions = node_tensions(field);
+  const double top_N_per_mm = tension_scale_top(tensions);
+  const float legend_px =
+      style.legend ? legend(draw, origin, size.x, style, top_N_per_mm, ink) : 0.0f;
+  // Room above the cloth for the supports' arrows and values, and beside it for a value that
+  // reaches past the cloth's side: never more than a share of the canvas, so that a small
+  // canvas still shows the cloth.
+  const float text = style.text_px;
+  Margins margins;
+  margins.top = std::min(3.2f * text, 0.3f * size.y);
+  margins.bottom = std::min(0.5f * text, 0.05f * size.y);
+  margins.left = margins.right = std::min(3.0f * text, 0.15f * size.x);
+  const ImVec2 body_origin(origin.x, origin.y + legend_px);
+  const ImVec2 body_size(size.x, std::max(1.0f, size.y - legend_px));
+  const ToScreen to = fit(field, body_origin, body_size, margins);
   // Without the fill's anti-aliased fringe: neighbouring triangles meet with no hairline between.
   const ImDrawListFlags flags = draw.Flags;
   draw.Flags &= ~ImDrawListFlags_AntiAliasedFill;
+  const ImVec2 white = ImGui::GetFontTexUvWhitePixel();
   for (std::size_t t = 0; t < field.mesh.triangles.size(); ++t) {
     const auto& tri = field.mesh.triangles[t];
-    const field::TriangleResult& r = s.triangles[t];
-    const ImU32 colour = style.colouring == FieldColouring::state
-                             ? state_colour(r.region)
-                             : tension_colour(most > 0.0 ? r.tension_N_per_mm / most : 0.0);
-    draw.AddTriangleFilled(to(s.positions_mm[tri[0]]), to(s.positions_mm[tri[1]]),
-                           to(s.positions_mm[tri[2]]), faded(colour, style.stale));
+    draw.PrimReserve(3, 3);
+    for (const int n : tri) {
+      const ImU32 colour =
+          style.colouring == FieldColouring::state
+              ? state_colour(s.triangles[t].region)
+              : tension_colour(top_N_per_mm > 0.0
+                                   ? tensions[static_cast<std::size_t>(n)] / top_N_per_mm
+                                   : 0.0);
+      draw.PrimVtx(to(s.positions_mm[static_cast<std::size_t>(n)]), white,
+                   faded(colour, style.stale));
+    }
   }
   draw.Flags = flags;
   if (style.rays) {
@@ -252,30 +316,39 @@ void draw_field(ImDrawList& draw, ImVec2 origin, ImVec2 size, const field::Solve
       draw.AddPolyline(points.data(), static_cast<int>(points.size()), dash, 0, style.line_px);
     }
   }
-  // The supports, and the force each exerts on the cloth, its arrow's length in proportion.
+  // The supports, and the force each exerts on the cloth, its arrow's length in proportion. A
+  // value is written outward of its arrow (left of a support left of the middle, right of one
+  // right of it), a line higher when it would overlap the one before.
   double largest_N = 0.0;
   for (const Vector2d& r : s.reactions_N) {
     largest_N = std::max(largest_N, r.norm());
   }
   ImFont* font = ImGui::GetFont();
+  const double middle_mm = targets.empty() ? 0.0 : 0.5 * (targets.front().x() + targets.back().x());
+  std::vector<ImVec4> labels;  // min x, min y, max x, max y of those written
+  const float arrow_px = std::min(2.2f * text, 0.8f * margins.top);
   for (std::size_t i = 0; i < targets.size() && i < s.reactions_N.size(); ++i) {
     const ImVec2 at = to(targets[i]);
     const Vector2d r = s.reactions_N[i];
     if (largest_N > 0.0) {
-      const double length = 0.8 * margin * r.norm() / largest_N;
-      const Vector2d d = r.normalized() * length;
+      const Vector2d d = r.normalized() * (arrow_px * r.norm() / largest_N);
       const ImVec2 tip(at.x + static_cast<float>(d.x()), at.y + static_cast<float>(d.y()));
       arrow(draw, at, tip, ink, style.line_px);
-      const std::string words = printf_text("%.3g N up, %.3g N across", -r.y(), std::abs(r.x()));
-      const float width = font->CalcTextSizeA(style.text_px, 1e9f, 0.0f, words.c_str()).x;
-      const float x = std::clamp(tip.x - 0.5f * width, origin.x, origin.x + size.x - width);
-      draw.AddText(font, style.text_px, ImVec2(x, tip.y - 1.2f * style.text_px), ink,
-                   words.c_str());
+      const std::string words = printf_text("%#.3g N up, %#.3g N across", -r.y(), std::abs(r.x()));
+      const float width = font->CalcTextSizeA(text, 1e9f, 0.0f, words.c_str()).x;
+      const bool left = targets[i].x() < middle_mm;
+      float x = left ? tip.x - width : tip.x;
+      x = std::clamp(x, origin.x, std::max(origin.x, origin.x + size.x - width));
+      float y = std::max(body_origin.y, tip.y - 1.3f * text);
+      for (const ImVec4& other : labels) {
+        if (x < other.z && other.x < x + width && y < other.w && other.y < y + text) {
+          y = other.y - 1.1f * text;
+        }
+      }
+      labels.emplace_back(x, y, x + width, y + text);
+      draw.AddText(font, text, ImVec2(x, y), ink, words.c_str());
     }
     draw.AddCircleFilled(at, 4.0f * style.line_px, ink);
-  }
-  if (style.legend) {
-    legend(draw, origin, style, most, ink);
   }
 }
 
@@ -324,7 +397,6 @@ void FieldPanel::controls() {
   ImGui::SetNextItemWidth(ems(6.0f));
   ImGui::SliderInt(kCellsLabel, &cells_, static_cast<int>(kCells.lo), static_cast<int>(kCells.hi),
                    "%d", ImGuiSliderFlags_AlwaysClamp);
-  own_slider_active_ = ImGui::IsItemActive();
 }
 
 void FieldPanel::status_line(Document& document) {
@@ -347,9 +419,9 @@ void FieldPanel::status_line(Document& document) {
                        "Solving (residual %.0e): the field shown is of the inputs before.",
                        live_.residual());
   }
-  ImGui::Text(
-      "taut %.0f %%, wrinkled %.0f %%, slack %.0f %% of the cloth; weight %.3g N, "
-      "thrust H %.3g N (the cosine pencil's %.3g N)",
+  ImGui::TextWrapped(
+      "taut %.0f %%, wrinkled %.0f %%, slack %.0f %%; weight %#.3g N; thrust H %#.3g N "
+      "(the cosine pencil's %#.3g N)",
       100.0 * s.taut_share, 100.0 * s.wrinkled_share, 100.0 * s.slack_share, s.weight_N,
       shown->report.thrust_N, shown->report.pencil_thrust_N);
   if (!folds_ || folds_of_ != live_.shown_count()) {
@@ -358,14 +430,20 @@ void FieldPanel::status_line(Document& document) {
                                 document.scene().parameters());
   }
   const Solution& closed = document.scene().solution();
-  ImGui::Text(
-      "folds from the field: n = %d, Q = %.3f, z_max = %.0f mm; the closed form's: n = "
-      "%d, Q = %.3f, z_max = %.0f mm",
+  ImGui::TextWrapped(
+      "folds from the field: n = %d, Q = %.3f, z_max = %.0f mm (the closed form's: n = %d, "
+      "Q = %.3f, z_max = %.0f mm)",
       folds_->n, folds_->Q, folds_->z_max_mm, closed.n, closed.Q, closed.z_max_mm);
-  ImGui::TextDisabled(
-      "converged: force residual %.0e, %d Newton steps, mesh %d x %d, %zu triangles",
-      s.relative_residual, s.iterations, shown->inputs.resolution.cells_x,
-      shown->inputs.resolution.cells_y, shown->mesh.triangles.size());
+}
+
+void FieldPanel::solve_line() const {
+  if (const field::SolvedField* shown = live_.shown()) {
+    const field::Solution& s = shown->report.solution;
+    ImGui::TextDisabled(
+        "converged: force residual %.0e, %d Newton steps, mesh %d x %d, %zu triangles",
+        s.relative_residual, s.iterations, shown->inputs.resolution.cells_x,
+        shown->inputs.resolution.cells_y, shown->mesh.triangles.size());
+  }
 }
 
 void FieldPanel::canvas(PanelContext& context) {
@@ -384,7 +462,8 @@ void FieldPanel::canvas(PanelContext& context) {
   ImDrawList& draw = *ImGui::GetWindowDrawList();
   draw.PushClipRect(origin, ImVec2(origin.x + size.x, origin.y + size.y), true);
   draw_field(draw, origin, size, *shown,
-             cosines_ ? &context.document.scene().fold_lines() : nullptr, drawing_style(context));
+             cosines_ && cut_ == FieldCut::shape ? &context.document.scene().fold_lines() : nullptr,
+             drawing_style(context));
   draw.PopClipRect();
 }
 
@@ -403,8 +482,7 @@ void FieldPanel::draw(PanelContext& context) {
     }
     last_parameters_ = parameters;
   }
-  const bool moving = (ImGui::IsAnyItemActive() && !own_slider_active_) || context.holding_frame ||
-                      now_s - last_change_s_ < kRestS;
+  const bool moving = context.holding_frame || now_s - last_change_s_ < kRestS;
   const int cells = moving ? std::max(static_cast<int>(kCells.lo), cells_ / 2) : cells_;
   try {
     live_.request(field_inputs(parameters, cells, cut_));
@@ -415,7 +493,8 @@ void FieldPanel::draw(PanelContext& context) {
   }
   // A share of the frame: the rest of the explorer draws in the remainder of 16 ms.
   const auto began = std::chrono::steady_clock::now();
-  live_.step(moving ? 6.0 : 10.0);
+  // At rest nothing else is moving: a larger share finishes the finer mesh sooner.
+  live_.step(moving ? 6.0 : 25.0);
   slice_ms_ =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - began).count();
   // A first place of its own, unless the layout placed it (presented, or put back).
@@ -423,7 +502,21 @@ void FieldPanel::draw(PanelContext& context) {
     const ImVec2 display = ImGui::GetIO().DisplaySize;
     ImGui::SetNextWindowPos(ImVec2(0.2f * display.x, 0.15f * display.y), ImGuiCond_FirstUseEver);
     ImGui::SetNextWindowSize(ImVec2(0.6f * display.x, 0.7f * display.y), ImGuiCond_FirstUseEver);
+    // A window made smaller (1920 x 1080 to 1024 x 640) keeps the view, its close button and
+    // its title on the display.
+    if (const ImGuiWindow* window = ImGui::FindWindowByName(window_label().c_str())) {
+      const ImVec2 size(std::min(window->SizeFull.x, display.x),
+                        std::min(window->SizeFull.y, display.y));
+      const ImVec2 pos(std::clamp(window->Pos.x, 0.0f, display.x - size.x),
+                       std::clamp(window->Pos.y, 0.0f, display.y - size.y));
+      if (size.x != window->SizeFull.x || size.y != window->SizeFull.y || pos.x != window->Pos.x ||
+          pos.y != window->Pos.y) {
+        ImGui::SetNextWindowPos(pos);
+        ImGui::SetNextWindowSize(size);
+      }
+    }
   }
+
   if (!was_open_) {
     ImGui::SetNextWindowFocus();  // opened from the menu or a script: in front
   }
@@ -431,7 +524,13 @@ void FieldPanel::draw(PanelContext& context) {
   // NoCollapse: a double-click on the title presents the window (Layout), as it does a tile.
   if (ImGui::Begin(window_label().c_str(), &open_, ImGuiWindowFlags_NoCollapse)) {
     context.renderer.fill_window_background();  // the style's window background is transparent
-    controls();
+    // At a large text size in a small window the settings and the solve's figures fold behind
+    // one button, so that the field keeps the room.
+    if (toolbar_.begin("field settings...", kLeastCanvasEms * ImGui::GetFontSize())) {
+      controls();
+      solve_line();
+      toolbar_.end();
+    }
     status_line(context.document);
     canvas(context);
   }
@@ -518,13 +617,14 @@ bool FieldPanel::draw_picture(PictureView /*view*/, ImVec2 size_px, Document& do
   drawing.colouring = colouring_;
   drawing.rays = rays_;
   drawing.cosines = cosines_;
-  drawing.legend = style.legend;
+  drawing.legend = true;  // the colours mean nothing without it
   drawing.text_px = style.text_px;
   drawing.line_px = style.line_px;
   drawing.dark = style.dark;
   const ImVec2 origin = ImGui::GetCursorScreenPos();
   draw_field(*ImGui::GetWindowDrawList(), origin, size_px, *solved,
-             cosines_ ? &document.scene().fold_lines() : nullptr, drawing);
+             cosines_ && cut_ == FieldCut::shape ? &document.scene().fold_lines() : nullptr,
+             drawing);
   return true;
 }
 

@@ -12,6 +12,7 @@
 #include <nlohmann/json_fwd.hpp>
 
 #include "app/gui/panel.hpp"
+#include "app/gui/panels/view_toolbar.hpp"
 #include "core/field/field_folds.hpp"
 #include "core/field/live_field.hpp"
 #include "core/geometry/geometry.hpp"
@@ -87,11 +88,14 @@ class FieldPanel : public Panel {
  private:
   void controls();
   void status_line(Document& document);
+  void solve_line() const;
   void canvas(PanelContext& context);
   FieldDrawing drawing_style(const PanelContext& context) const;
   // The field of the document's inputs at rest, solved whole, for a picture.
   const field::SolvedField* picture_field(const Document& document, std::string& refusal) const;
 
+  static constexpr float kLeastCanvasEms = 14.0f;
+  ViewToolbar toolbar_;
   bool open_ = false;
   bool was_open_ = false;  // in the last frame
   FieldColouring colouring_ = FieldColouring::state;
@@ -102,7 +106,6 @@ class FieldPanel : public Panel {
   bool rays_ = true;
   bool cosines_ = false;
   int cells_ = kDefaultCells;
-  bool own_slider_active_ = false;
   // When the inputs last changed: the field is solved on the coarser mesh until they rest this
   // long.
   static constexpr double kRestS = 0.3;
