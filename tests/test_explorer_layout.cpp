@@ -631,6 +631,35 @@ TEST_F(ExplorerTest, APresentedMessageNeverMovesTheStripAndIsSaidOnce) {
 
 // Presented at 200 % in 1024 x 640: the read-out wraps between n, Q and z_max, never inside one
 // ("z_max = 48.96 (30.5–78." over "6) mm" was drawn), and the menu bar's last item stays on it.
+// Outside the wrinkled regime the presented read-out names the regime and gives no range: at
+// t = 3 mm and h = 1000 mm the default cloth's s = K E t³ / (w h l²) is above 1 (by hand, with
+// the default's K = 1.686: 1.686 x 165 x 27 / (1.5e-6 x 1000 x 1300²) = 2.96): stiff, one fold.
+TEST_F(ExplorerTest, APresentedReadOutNamesARegimeWithoutFoldsAndGivesNoRange) {
+  open_explorer("equations", kDejaVuSans);  // the explorer's own font, as the read-out uses
+  document().load_preset_file(kPresetsDir / "default.json");  // calibrated: its values have ranges
+  ASSERT_EQ(explorer_->set_view("present", "cloth"), std::nullopt);
+  for (int i = 0; i < 3; ++i) {
+    frame();
+  }
+  // (The read-out's large text reads with odd gaps in the test's text: it is read squeezed.)
+  std::string text = squeezed(last_text_);
+  EXPECT_NE(text.find("n=7(4"), std::string::npos)
+      << "a wrinkled cloth's n has its range: " << text;
+  ASSERT_EQ(explorer_->set_input("t", 3.0), std::nullopt);
+  ASSERT_EQ(explorer_->set_input("h", 1000.0), std::nullopt);
+  for (int i = 0; i < 3; ++i) {
+    frame();
+  }
+  text = squeezed(last_text_);
+  ASSERT_EQ(explorer_->scene().solution().regime, Regime::stiff);
+  const std::size_t stiff = text.find("stiff:n=");
+  ASSERT_NE(stiff, std::string::npos) << text;
+  const std::size_t mm = text.find("mm", stiff);
+  ASSERT_NE(mm, std::string::npos) << text;
+  EXPECT_EQ(text.substr(stiff, mm - stiff).find('('), std::string::npos)
+      << text.substr(stiff, mm - stiff);
+}
+
 TEST_F(ExplorerTest, APresentedReadOutWrapsBetweenItsValuesAndTheMenuBarKeepsItsItems) {
   open_explorer("equations", kDejaVuSans);  // the explorer's own font: the bar's widths are its
   // The default preset: its calibration gives each value a range, which makes the line long.

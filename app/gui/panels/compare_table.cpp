@@ -16,7 +16,10 @@ QuantityTexts quantity_texts(const Solution& s, const ModelStanding& standing) {
   QuantityTexts texts{{detail::printf_string("%d", s.n), "", ""},
                       {detail::printf_string("%.4f", s.Q), "", ""},
                       {detail::printf_string("%.2f", s.z_max_mm), "", " mm"}};
-  if (const std::optional<PredictionRange>& range = standing.range) {
+  // The prediction's ranges are those of folds the law counts: outside the wrinkled regime (a
+  // stiff cloth, no slack) they would bracket values the cloth does not take.
+  const std::optional<PredictionRange>& range = standing.range;
+  if (range && regime_info(s.regime).unremarkable) {
     texts.n.range = range_text(range->n_min, range->n_max, "%.0f");
     texts.Q.range = range_text(range->Q_min, range->Q_max, "%.4f");
     texts.z_max.range = range_text(range->z_max_min_mm, range->z_max_max_mm, "%.1f");

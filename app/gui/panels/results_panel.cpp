@@ -77,14 +77,26 @@ std::vector<ResultsPanel::Row> ResultsPanel::rows(Document& document, bool exper
   return out;
 }
 
+namespace {
+
+// A headline read from the back of a room names the regime when it is not the wrinkled one:
+// "stiff: n = 1 ..." says why there is no fold to count.
+std::string regime_headline(const Solution& s, const ModelStanding& standing) {
+  const RegimeInfo& regime = regime_info(s.regime);
+  const std::string line = headline(quantity_texts(s, standing));
+  return regime.unremarkable ? line : std::string(regime.label) + ":     " + line;
+}
+
+}  // namespace
+
 std::vector<std::pair<std::string, ImVec4>> ResultsPanel::headlines(Document& document) {
-  const std::string a = headline(quantity_texts(document.scene().solution(), standing(document)));
+  const std::string a = regime_headline(document.scene().solution(), standing(document));
   if (!document.compare().pinned()) {
     return {{a, ImGui::GetStyleColorVec4(ImGuiCol_Text)}};
   }
   Comparison& compare = document.compare();
   return {{"A: " + a, kSweepCurve},
-          {"B: " + headline(quantity_texts(compare.solution(), compare.standing())), kCompareB}};
+          {"B: " + regime_headline(compare.solution(), compare.standing()), kCompareB}};
 }
 
 // The symbols and values are never cut: their columns are as wide as their widest text, and the
