@@ -558,5 +558,32 @@ TEST_F(ExplorerTest, ARegimeMapClickIsOneUndoStep) {
   EXPECT_EQ(shown().fabric.weight_N_per_mm2, before.fabric.weight_N_per_mm2);
 }
 
+// "n changed from" tells the change the fabric made, wherever it was made: edits made while
+// another view is presented (the Equations tab not drawn) count, so after t = 0.4 mm then 0.3 mm
+// the tab says the last change, from n at 0.4 mm to n at 0.3 mm, not from the n it last drew.
+TEST_F(ExplorerTest, WhyNChangedTracksTheFabricNotThePanel) {
+  open_explorer("equations");
+  ImGui::GetIO().DisplaySize = ImVec2(1920, 1600);  // the tab's last line in sight
+  explorer_->load_preset_file(kPresetsDir / "paper-table1-h1400.json");
+  frame();
+  const int first = explorer_->scene().solution().n;
+  ASSERT_EQ(explorer_->set_view("present", "fold_plot"), std::nullopt);
+  frame();
+  ASSERT_EQ(explorer_->set_input("t", 0.4), std::nullopt);
+  frame();
+  const int at_04 = explorer_->scene().solution().n;
+  ASSERT_EQ(explorer_->set_input("t", 0.3), std::nullopt);
+  frame();
+  const int at_03 = explorer_->scene().solution().n;
+  ASSERT_NE(first, at_04);
+  ASSERT_NE(at_04, at_03);
+  ASSERT_EQ(explorer_->set_view("present", "none"), std::nullopt);
+  frame();
+  const std::string text = frame();
+  const std::string said =
+      "n changed from " + std::to_string(at_04) + " to " + std::to_string(at_03);
+  EXPECT_NE(text.find(said), std::string::npos) << said << "\n" << text;
+}
+
 }  // namespace
 }  // namespace foldlab::gui

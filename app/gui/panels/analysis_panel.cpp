@@ -173,16 +173,24 @@ void EquationsTab::draw_fold_count(const Solution& s, const Parameters& p, bool 
   }
   equation_text(nullptr, "  = Int[%.3f] = %d   (Int = %s)", argument, s.n,
                 std::string(to_string(p.model.int_rounding)).c_str());
-  if (shown_n_ != s.n) {
-    previous_n_ = shown_n_;
-    shown_n_ = s.n;
-  }
+  follow(s);
   if (previous_n_ >= 0 && previous_n_ != s.n) {
     ImGui::PushStyleColor(ImGuiCol_Text, kOkText);
     wrapped_text("n changed from %d to %d: the argument of Int[] crossed %s.", previous_n_, s.n,
                  p.model.int_rounding == IntRounding::nearest ? "a half-integer" : "an integer");
     ImGui::PopStyleColor();
   }
+}
+
+void EquationsTab::follow(const Solution& s) {
+  if (shown_n_ != s.n) {
+    previous_n_ = shown_n_;
+    shown_n_ = s.n;
+  }
+}
+
+void AnalysisPanel::begin_frame(PanelContext& context) {
+  equations_.follow(context.document.scene().solution());
 }
 
 namespace {

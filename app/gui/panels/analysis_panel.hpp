@@ -21,6 +21,9 @@ namespace foldlab::gui {
 class EquationsTab {
  public:
   void draw(Document& document);
+  // Every frame, shown or not: follows the fabric's n, so that "n changed from" tells the change
+  // the fabric made, wherever it was made (another view presented, a played input).
+  void follow(const Solution& s);
 
  private:
   // Eq. 10 with the numbers, and why n last changed (the n shown is kept from frame to frame).
@@ -41,6 +44,7 @@ class AnalysisPanel : public Panel {
   }
   const char* key() const override { return "analysis"; }
   void draw(PanelContext& context) override;
+  void begin_frame(PanelContext& context) override;
   // While the regime map is being computed.
   bool busy() const override { return regime_map_.computing(); }
   // Selects the Sweep tab with one of the paper's cases (0 Table 1, 1 Table 2, 2 Fig. 4).
