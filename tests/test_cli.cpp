@@ -1524,6 +1524,57 @@ TEST_F(CliTest, VersionPrintsTheProjectVersionAndThePresetsFolder) {
       << lines[1];
 }
 
+// A path or folder the user gave reaches the terminal spelt as every quoted text is (\x1b for
+// ESC), on stdout and on stderr alike, so that a file name cannot clear or recolour the screen.
+TEST_F(CliTest, OutputPathsAndThePresetsFolderReachTheTerminalEscaped) {
+  const std::string esc = "\x1b[2J";
+  const fs::path csv = dir_ / ("m" + esc + ".csv");
+  const RunResult measured =
+      run({"measure", "--depths-mm", "80,40,20,10", "--append", csv.string()});
+  ASSERT_EQ(measured.exit_status, 0) << measured.err;
+  EXPECT_FALSE(contains(measured.out + measured.err, "\x1b")) << measured.out;
+  EXPECT_TRUE(contains(measured.out, "m\\x1b[2J.csv")) << measured.out;
+
+  const fs::path saved = dir_ / ("p" + esc + ".json");
+  const RunResult calibrated = run({"calibrate", "--data", csv.string(), "--fit", "K",
+                                    "--no-held-out", "--save-preset", saved.string()});
+  ASSERT_EQ(calibrated.exit_status, 0) << calibrated.err;
+  EXPECT_FALSE(contains(calibrated.out + calibrated.err, "\x1b")) << calibrated.err;
+  EXPECT_TRUE(contains(calibrated.err, "p\\x1b[2J.json")) << calibrated.err;
+  EXPECT_TRUE(contains(calibrated.out, "m\\x1b[2J.csv")) << calibrated.out;
+
+  const fs::path presets = dir_ / ("pre" + esc + "sets");
+  fs::create_directories(presets);
+  foldlab::testing::Environment env;
+  env.set = {{"FOLDLAB_PRESETS_DIR", presets.string()}};
+  const RunResult version = foldlab::testing::run_process(kExecutable, {"--version"}, dir_, env);
+  ASSERT_EQ(version.exit_status, 0) << version.err;
+  EXPECT_FALSE(contains(version.out, "\x1b")) << version.out;
+  EXPECT_TRUE(contains(version.out, "pre\\x1b[2Jsets")) << version.out;
+}
+
+// The presets folder is the first that exists: a $FOLDLAB_PRESETS_DIR that does not exist is
+// passed over, with a word saying so, and the shipped presets stay in reach.
+TEST_F(CliTest, APresetsFolderThatDoesNotExistIsPassedOverWithANotice) {
+  const fs::path missing = dir_ / "no-such-folder";
+  foldlab::testing::Environment env;
+  env.set = {{"FOLDLAB_PRESETS_DIR", missing.string()}};
+  const RunResult version = foldlab::testing::run_process(kExecutable, {"--version"}, dir_, env);
+  ASSERT_EQ(version.exit_status, 0) << version.err;
+  const std::vector<std::string> lines = split_lines(version.out);
+  ASSERT_EQ(lines.size(), 2u) << version.out;
+  EXPECT_EQ(fs::weakly_canonical(lines[1].substr(lines[1].find(": ") + 2)),
+            fs::weakly_canonical(kPresetsDir))
+      << lines[1];
+  EXPECT_TRUE(contains(version.err, "FOLDLAB_PRESETS_DIR " + missing.string() + " does not exist"))
+      << version.err;
+  const RunResult named = foldlab::testing::run_process(
+      kExecutable, {"solve", "--preset", "paper-table1-h900", "--json"}, dir_, env);
+  ASSERT_EQ(named.exit_status, 0) << named.err;
+  EXPECT_EQ(json::parse(named.out).at("inputs").at("height_mm").get<double>(), 900.0);
+  EXPECT_TRUE(contains(named.err, "does not exist")) << named.err;
+}
+
 // A preset the program saves says which FoldLab wrote it.
 TEST_F(CliTest, SavedPresetRecordsTheVersionThatWroteIt) {
   const fs::path out = dir_ / "fitted.json";

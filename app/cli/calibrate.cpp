@@ -220,10 +220,10 @@ json report_json(const CalibrationReport& r, const std::string& data_path) {
 
 void print_header(const Result& result, std::ostream& out) {
   const CalibrationReport& r = result.report;
-  out << "FoldLab calibrate: " << result.data_path << " (" << r.fit_row_count << " fit row"
-      << (r.fit_row_count == 1 ? "" : "s") << ", " << r.check_row_count << " check row"
-      << (r.check_row_count == 1 ? "" : "s") << "), " << to_string(r.base.model.method)
-      << " method, fitting " << to_string(r.fit) << "\n";
+  out << "FoldLab calibrate: " << detail::escaped(result.data_path) << " (" << r.fit_row_count
+      << " fit row" << (r.fit_row_count == 1 ? "" : "s") << ", " << r.check_row_count
+      << " check row" << (r.check_row_count == 1 ? "" : "s") << "), "
+      << to_string(r.base.model.method) << " method, fitting " << to_string(r.fit) << "\n";
   out << "Base: \"" << detail::escaped(result.base.name) << "\", " << describe_model_form(r.base)
       << "\n";
   out << "Loss (lexicographic): rows whose n is missed, then rows missed by more than one, "

@@ -5,11 +5,14 @@
 #include <algorithm>
 #include <cctype>
 #include <cstdlib>
+#include <iostream>
+#include <mutex>
 #include <string>
 #include <string_view>
 #include <system_error>
 
 #include "core/io/preset.hpp"
+#include "core/model/text_format.hpp"
 
 namespace foldlab::app {
 namespace {
@@ -69,7 +72,16 @@ bool built_here(const std::filesystem::path& exe) {
 std::filesystem::path find_presets_dir() {
   std::error_code error;
   if (const char* env = std::getenv("FOLDLAB_PRESETS_DIR"); env && *env) {
-    return env;
+    if (std::filesystem::is_directory(env, error)) {
+      return env;
+    }
+    // Said once per run, however often the folder is looked up: a mistyped variable would
+    // otherwise hide the user's presets without a word.
+    static std::once_flag said;
+    std::call_once(said, [&] {
+      std::cerr << "foldlab: FOLDLAB_PRESETS_DIR " << detail::escaped(env)
+                << " does not exist or is no folder; using the next presets folder\n";
+    });
   }
   const std::filesystem::path exe = std::filesystem::read_symlink("/proc/self/exe", error);
   if (error) {

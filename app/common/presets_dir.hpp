@@ -11,7 +11,8 @@ namespace foldlab::app {
 // The first that exists of: $FOLDLAB_PRESETS_DIR, ../share/foldlab/presets beside the executable
 // (an installed or unpacked program: bin/foldlab and share/foldlab/presets), and the source
 // tree's presets/ only while the executable runs from the build folder it was built in. Empty
-// when none does.
+// when none does. A $FOLDLAB_PRESETS_DIR that is no folder is passed over with a notice on stderr
+// (once a run).
 std::filesystem::path find_presets_dir();
 
 // The *.json files of a folder, sorted by name.
