@@ -291,6 +291,59 @@ TEST_F(CliTest, APresetIsFoundByItsNameAmongTheUsersAndTheShippedOnes) {
       << unknown.err;
 }
 
+// Two presets whose names differ only in case and punctuation: the one named exactly as typed is
+// meant; a name that matches several, none exactly, is refused naming each, never one at random.
+TEST_F(CliTest, APresetNameMeansTheExactOneAndAnAmbiguousNameIsRefused) {
+  const fs::path config = dir_ / "config";
+  const fs::path presets = config / "foldlab" / "presets";
+  fs::create_directories(presets);
+  const auto save = [&](const std::string& file, const std::string& name, double height_mm) {
+    json preset = json::parse(std::ifstream(kPresetsDir / "default.json"));
+    preset["name"] = name;
+    preset["hanging"]["height_mm"] = height_mm;
+    std::ofstream(presets / file) << preset.dump();
+  };
+  save("fab-a.json", "Fab A", 2000.0);
+  save("fab-a-2.json", "fab-a", 2100.0);
+  foldlab::testing::Environment env;
+  env.set = {{"XDG_CONFIG_HOME", config.string()}, {"HOME", dir_.string()}};
+  const auto solve = [&](const std::string& preset) {
+    return foldlab::testing::run_process(kExecutable, {"solve", "--preset", preset, "--json"}, dir_,
+                                         env);
+  };
+  const auto height_of = [&](const std::string& preset) {
+    const RunResult r = solve(preset);
+    EXPECT_EQ(r.exit_status, 0) << preset << ": " << r.err;
+    return r.exit_status == 0 ? json::parse(r.out).at("inputs").at("height_mm").get<double>()
+                              : -1.0;
+  };
+  EXPECT_EQ(height_of("fab-a"), 2100.0);
+  EXPECT_EQ(height_of("Fab A"), 2000.0);
+  const RunResult ambiguous = solve("FAB A");
+  EXPECT_EQ(ambiguous.exit_status, 2) << ambiguous.out;
+  EXPECT_TRUE(contains(ambiguous.err, "--preset FAB A")) << ambiguous.err;
+  EXPECT_TRUE(contains(ambiguous.err, "\"Fab A\" (" + (presets / "fab-a.json").string() + ")"))
+      << ambiguous.err;
+  EXPECT_TRUE(contains(ambiguous.err, "\"fab-a\" (" + (presets / "fab-a-2.json").string() + ")"))
+      << ambiguous.err;
+}
+
+// A file in the presets folder that is no preset (half written, or another program's) is passed
+// over by every command that lists the folder, with a word naming it and why.
+TEST_F(CliTest, AFileInThePresetsFolderThatIsNoPresetIsSkippedWithANotice) {
+  const fs::path presets = dir_ / "presets";
+  fs::create_directories(presets);
+  fs::copy_file(kPresetsDir / "paper-table1-h900.json", presets / "paper-table1-h900.json");
+  fs::copy_file(kPresetsDir / "paper-table1-h1400.json", presets / "paper-table1-h1400.json");
+  std::ofstream(presets / "junk.json") << "{ not json";
+  foldlab::testing::Environment env;
+  env.set = {{"FOLDLAB_PRESETS_DIR", presets.string()}};
+  const RunResult r = foldlab::testing::run_process(kExecutable, {"compare", "--json"}, dir_, env);
+  ASSERT_EQ(r.exit_status, 0) << r.err;
+  EXPECT_EQ(json::parse(r.out).at("rows").size(), 2u) << r.out;
+  EXPECT_TRUE(contains(r.err, "skipped " + (presets / "junk.json").string() + ": ")) << r.err;
+}
+
 TEST_F(CliTest, AnEmptyPresetPathIsInvalidInputNotTheDefault) {
   for (const std::string command : {"solve", "export", "sweep", "calibrate", "measure"}) {
     SCOPED_TRACE(command);
