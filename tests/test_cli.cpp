@@ -1517,6 +1517,46 @@ TEST_F(CliTest, PlayingAFolderIsInvalidInputNotAnInternalError) {
   EXPECT_TRUE(contains(r.err, "a directory, not a regular file")) << r.err;
 }
 
+// Every --play step costs frames (a typed character one, a key chord four, a drag ten), and they
+// all count toward the one cap that frames steps have: a script over it is refused before a frame
+// runs, naming the step that takes it past, as 100,001 frames are.
+TEST_F(CliTest, EveryPlayStepCountsTowardTheScriptsFrameCap) {
+  const auto play = [&](const json& steps) {
+    const fs::path script = dir_ / "script.json";
+    std::ofstream(script) << json{{"steps", steps}}.dump();
+    return run({"render", "--play", script.string(), "--size", "320x240"});
+  };
+  const RunResult typed = play(json::array({{{"type", std::string(150000, 'a')}}}));
+  EXPECT_EQ(typed.exit_status, 2) << typed.err;
+  EXPECT_TRUE(contains(typed.err,
+                       "step 1 (type) takes the script past the cap: its steps add up "
+                       "to 150001, more than the 100000 frames a script may run"))
+      << typed.err;
+  // 25,000 chords are 100,000 frames, the cap; one more frame is too many.
+  json keys = json::array();
+  for (int i = 0; i < 25000; ++i) {
+    keys.push_back({{"key", "escape"}});
+  }
+  keys.push_back({{"screenshot", (dir_ / "never.png").string()}});
+  const RunResult chords = play(keys);
+  EXPECT_EQ(chords.exit_status, 2) << chords.err;
+  EXPECT_TRUE(contains(chords.err,
+                       "step 25001 (screenshot) takes the script past the cap: its "
+                       "steps add up to 100001"))
+      << chords.err;
+  EXPECT_FALSE(fs::exists(dir_ / "never.png"));
+  json drags = json::array();
+  for (int i = 0; i < 10001; ++i) {
+    drags.push_back({{"drag", "h"}, {"dx", 1}});
+  }
+  const RunResult dragged = play(drags);
+  EXPECT_EQ(dragged.exit_status, 2) << dragged.err;
+  EXPECT_TRUE(contains(dragged.err,
+                       "step 10001 (drag) takes the script past the cap: its steps "
+                       "add up to 100010"))
+      << dragged.err;
+}
+
 // Every file a command reads goes through one reader: a FIFO is refused without waiting for a
 // writer, a device without reading forever, a file over its kind's cap from its size alone. Each
 // is bad input (exit 2) that names the file, for every loader. `timeout` turns a hang into a
