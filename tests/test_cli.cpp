@@ -726,6 +726,88 @@ TEST_F(CliTest, StressSeedMustBeAnUnsigned64BitNumber) {
   EXPECT_EQ(json::parse(largest.out).at("seed").get<std::uint64_t>(), UINT64_MAX);
 }
 
+// One cause, one wording: a number too large for a double is "beyond the range of a double"
+// whether typed (1e999) or computed on the way (1e200*1e200/1e200); a division by zero says so.
+TEST_F(CliTest, ArithmeticBeyondADoubleIsRefusedInTheWordsOfATooLargeNumber) {
+  for (const char* value : {"1e999", "1e200*1e200", "1e200*1e200/1e200", "-1e300*1e300 mm"}) {
+    SCOPED_TRACE(value);
+    const RunResult r = run({"solve", "--set", std::string("h=") + value});
+    EXPECT_EQ(r.exit_status, 2);
+    EXPECT_TRUE(contains(r.err,
+                         "' is beyond the range of a double (magnitudes 2.2e-308 to "
+                         "1.8e308)"))
+        << r.err;
+  }
+  for (const char* value : {"1/0", "0/0", "(2+3)/(1-1) m"}) {
+    SCOPED_TRACE(value);
+    const RunResult r = run({"solve", "--set", std::string("h=") + value});
+    EXPECT_EQ(r.exit_status, 2);
+    EXPECT_TRUE(contains(r.err, "' divides by zero")) << r.err;
+  }
+}
+
+// A seed written with an exponent is the whole number it names: 1e19 lies below 2^64 and runs.
+TEST_F(CliTest, StressSeedMayBeWrittenWithAnExponent) {
+  const RunResult r = run({"stress", "--samples", "1", "--json", "--seed", "1e19"});
+  ASSERT_EQ(r.exit_status, 0) << r.err;
+  EXPECT_EQ(json::parse(r.out).at("seed").get<std::uint64_t>(), 10000000000000000000ull);
+  EXPECT_EQ(json::parse(run({"stress", "--samples", "1", "--json", "--seed", "1.5e3"}).out)
+                .at("seed")
+                .get<std::uint64_t>(),
+            1500u);
+  for (const char* seed : {"2e19", "1.5e0", "1e-3", "1e"}) {
+    SCOPED_TRACE(seed);
+    const RunResult refused = run({"stress", "--samples", "1", "--seed", seed});
+    EXPECT_EQ(refused.exit_status, 2);
+    EXPECT_TRUE(contains(refused.err, "must be a whole number from 0 to 18446744073709551615"))
+        << refused.err;
+  }
+}
+
+// A refused sweep end says its value in the unit it was given in, with the input's name.
+TEST_F(CliTest, ASubnormalSweepEndIsSaidWithItsUnit) {
+  const RunResult r = run({"sweep", "--param", "w", "--from", "1e-300gsm", "--to", "100gsm"});
+  EXPECT_EQ(r.exit_status, 2);
+  EXPECT_TRUE(contains(r.err, "weight per area w = 1e-300 g/m² is subnormal")) << r.err;
+}
+
+// 12,000 copies of one piece of a link are one problem: a few of them are quoted, the rest
+// counted, on a line a terminal can show.
+TEST_F(CliTest, ALinkWithThousandsOfRepeatedPiecesIsSummarisedOnAShortLine) {
+  std::string link = "#t=0.3";
+  for (int i = 0; i < 12000; ++i) {
+    link += "&h=1400";
+  }
+  const RunResult r =
+      run({"render", "--link", link, "--out", (dir_ / "never.png").string(), "--size", "320x240"});
+  EXPECT_EQ(r.exit_status, 2);
+  EXPECT_FALSE(fs::exists(dir_ / "never.png"));
+  EXPECT_TRUE(contains(r.err,
+                       "--link h=1400, --link h=1400, --link h=1400 and 11997 more: "
+                       "duplicate key"))
+      << r.err.substr(0, 500);
+  for (const std::string& line : split_lines(r.err)) {
+    EXPECT_LT(line.size(), 400u) << line.substr(0, 200);
+  }
+}
+
+// A caption shows a preset's name cut to a length a picture holds: a 900 KB name stays a line.
+TEST_F(CliTest, ACaptionShowsAPresetsNameCutToALine) {
+  json preset = json::parse(std::ifstream(kPresetsDir / "default.json"));
+  preset["name"] = std::string(900000, 'x');
+  const fs::path file = dir_ / "long.json";
+  std::ofstream(file) << preset.dump();
+  const fs::path svg = dir_ / "plot.svg";
+  const RunResult r = run({"export", "--preset", file.string(), "--svg", svg.string()});
+  ASSERT_EQ(r.exit_status, 0) << r.err.substr(0, 300);
+  for (const std::string& line : split_lines(read_file(svg))) {
+    if (starts_with(line, "<text")) {
+      EXPECT_LT(line.size(), 1000u) << line.substr(0, 200);
+    }
+  }
+  EXPECT_TRUE(contains(read_file(svg), std::string(100, 'x') + "…")) << "the cut is marked";
+}
+
 TEST_F(CliTest, BenchRefusesMoreSolvesThanItsBudget) {
   // 1,000,000 cases x 10 would take about an hour and 10 GB.
   RunResult r = run({"bench", "--cases", "1000000", "--repeats", "10"});
@@ -1666,6 +1748,28 @@ TEST_F(CliTest, APresetsFolderThatDoesNotExistIsPassedOverWithANotice) {
   ASSERT_EQ(named.exit_status, 0) << named.err;
   EXPECT_EQ(json::parse(named.out).at("inputs").at("height_mm").get<double>(), 900.0);
   EXPECT_TRUE(contains(named.err, "does not exist")) << named.err;
+}
+
+// Fitting K and p with leave-one-out refits both once per fit row, so its time grows as m²: 500
+// rows would run for most of an hour. What cannot finish in about a minute is refused before any
+// fit, saying why and what to do instead; K alone, or K and p without held-out fits, still run.
+TEST_F(CliTest, CalibrateRefusesUpFrontAFitThatWouldRunForMinutes) {
+  const fs::path data = dir_ / "many.csv";
+  {
+    std::ofstream out(data);
+    out << "name,group,role,t_mm,E_MPa,w_N_per_mm2,h_mm,L_mm,d_mm,shape,n,z_max_mm,Q\n";
+    for (int i = 0; i < 500; ++i) {
+      out << "row " << i << ",g" << i % 10 << ",fit,0.25,165,1.5e-6," << 900 + 3 * i
+          << ",1400,100,,6,50,1.3\n";
+    }
+  }
+  const RunResult refused = run({"calibrate", "--data", data.string(), "--fit", "K,p"});
+  EXPECT_EQ(refused.exit_status, 2) << refused.err;
+  EXPECT_TRUE(refused.out.empty()) << refused.out.substr(0, 300);
+  EXPECT_TRUE(contains(refused.err, "--fit K,p with held-out fits: 500 fit rows")) << refused.err;
+  EXPECT_TRUE(contains(refused.err, "--fit K")) << refused.err;
+  EXPECT_TRUE(contains(refused.err, "--no-held-out")) << refused.err;
+  EXPECT_TRUE(contains(refused.err, "at most 80 fit rows")) << refused.err;
 }
 
 // A preset the program saves says which FoldLab wrote it.

@@ -154,7 +154,7 @@ std::string fold_plot_heading(const FoldPlotFrame& f, const Solution& s, const s
       f.width_px, f.height_px, f.width_px, f.height_px);
   out += "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
   out += "<text x=\"" + printf_string("%.0f", f.margin_left) + "\" y=\"22\" font-size=\"15\">" +
-         xml_escape(detail::escaped(title)) + "</text>\n";
+         xml_escape(detail::caption_text(title)) + "</text>\n";
   out += printf_string(
       "<text x=\"%.0f\" y=\"42\">n = %d, Q = %.3f, z_max = %.1f mm, l = %.0f mm "
       "(y downward from the line through the supports)</text>\n",
