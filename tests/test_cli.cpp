@@ -1608,35 +1608,30 @@ TEST_F(CliTest, EveryPlayStepCountsTowardTheScriptsFrameCap) {
     std::ofstream(script) << json{{"steps", steps}}.dump();
     return run({"render", "--play", script.string(), "--size", "320x240"});
   };
-  const RunResult typed = play(json::array({{{"type", std::string(150000, 'a')}}}));
-  EXPECT_EQ(typed.exit_status, 2) << typed.err;
-  EXPECT_TRUE(contains(typed.err,
-                       "step 1 (type) takes the script past the cap: its steps add up "
-                       "to 150001, more than the 100000 frames a script may run"))
-      << typed.err;
+  const auto refused_at = [&](const json& steps, const std::string& said) {
+    const RunResult r = play(steps);
+    EXPECT_EQ(r.exit_status, 2) << r.err;
+    EXPECT_TRUE(contains(r.err, said)) << r.err.substr(0, 500);
+  };
+  const auto repeated = [](const json& step, int count) {
+    json steps = json::array();
+    for (int i = 0; i < count; ++i) {
+      steps.push_back(step);
+    }
+    return steps;
+  };
+  refused_at(json::array({{{"type", std::string(150000, 'a')}}}),
+             "step 1 (type) takes the script past the cap: its steps add up to 150001, more "
+             "than the 100000 frames a script may run");
   // 25,000 chords are 100,000 frames, the cap; one more frame is too many.
-  json keys = json::array();
-  for (int i = 0; i < 25000; ++i) {
-    keys.push_back({{"key", "escape"}});
-  }
+  json keys = repeated({{"key", "escape"}}, 25000);
   keys.push_back({{"screenshot", (dir_ / "never.png").string()}});
-  const RunResult chords = play(keys);
-  EXPECT_EQ(chords.exit_status, 2) << chords.err;
-  EXPECT_TRUE(contains(chords.err,
-                       "step 25001 (screenshot) takes the script past the cap: its "
-                       "steps add up to 100001"))
-      << chords.err;
+  refused_at(keys,
+             "step 25001 (screenshot) takes the script past the cap: its steps add up to "
+             "100001");
   EXPECT_FALSE(fs::exists(dir_ / "never.png"));
-  json drags = json::array();
-  for (int i = 0; i < 10001; ++i) {
-    drags.push_back({{"drag", "h"}, {"dx", 1}});
-  }
-  const RunResult dragged = play(drags);
-  EXPECT_EQ(dragged.exit_status, 2) << dragged.err;
-  EXPECT_TRUE(contains(dragged.err,
-                       "step 10001 (drag) takes the script past the cap: its steps "
-                       "add up to 100010"))
-      << dragged.err;
+  refused_at(repeated({{"drag", "h"}, {"dx", 1}}, 10001),
+             "step 10001 (drag) takes the script past the cap: its steps add up to 100010");
 }
 
 // Every file a command reads goes through one reader: a FIFO is refused without waiting for a
