@@ -1,6 +1,7 @@
 // End-to-end tests of the foldlab executable: run it as a user or a script would and check the exit
 // status, stdout and stderr.
 #include <fcntl.h>
+#include <pty.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -1765,6 +1766,50 @@ TEST_F(CliTest, CalibrateRefusesUpFrontAFitThatWouldRunForMinutes) {
   EXPECT_TRUE(contains(refused.err, "--fit K")) << refused.err;
   EXPECT_TRUE(contains(refused.err, "--no-held-out")) << refused.err;
   EXPECT_TRUE(contains(refused.err, "at most 80 fit rows")) << refused.err;
+}
+
+// A long fit says how far it is, on stderr and only where a person watches (a terminal): a
+// script capturing stderr gets no progress line.
+TEST_F(CliTest, CalibrateShowsProgressOnATerminalOnly) {
+  const fs::path data = dir_ / "rows.csv";
+  {
+    std::ofstream out(data);
+    out << "name,group,role,t_mm,E_MPa,w_N_per_mm2,h_mm,L_mm,d_mm,shape,n,z_max_mm,Q\n";
+    for (int i = 0; i < 12; ++i) {
+      out << "row " << i << ",g" << i % 3 << ",fit,0.25,165,1.5e-6," << 900 + 100 * i
+          << ",1400,100,,6,50,1.3\n";
+    }
+  }
+  const std::vector<std::string> args = {"calibrate", "--data", data.string(), "--fit", "K,p"};
+  const RunResult captured = run(args);
+  ASSERT_EQ(captured.exit_status, 0) << captured.err;
+  EXPECT_FALSE(contains(captured.err, "% (Ctrl+C stops)")) << captured.err;
+
+  int terminal = -1;
+  const pid_t pid = ::forkpty(&terminal, nullptr, nullptr, nullptr);
+  ASSERT_GE(pid, 0);
+  if (pid == 0) {
+    const int null = ::open("/dev/null", O_WRONLY);
+    ::dup2(null, STDOUT_FILENO);
+    std::vector<char*> argv = {const_cast<char*>(kExecutable.c_str())};
+    for (const std::string& arg : args) {
+      argv.push_back(const_cast<char*>(arg.c_str()));
+    }
+    argv.push_back(nullptr);
+    ::execv(kExecutable.c_str(), argv.data());
+    ::_exit(127);
+  }
+  std::string seen;
+  char buffer[4096];
+  for (ssize_t got; (got = ::read(terminal, buffer, sizeof buffer)) > 0;) {
+    seen.append(buffer, static_cast<std::size_t>(got));
+  }
+  ::close(terminal);
+  int status = 0;
+  ::waitpid(pid, &status, 0);
+  EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << seen;
+  EXPECT_TRUE(contains(seen, "calibrate: ")) << seen;
+  EXPECT_TRUE(contains(seen, "% (Ctrl+C stops)")) << seen;
 }
 
 // A preset the program saves says which FoldLab wrote it.
