@@ -103,6 +103,19 @@ class CliTest : public foldlab::testing::TempDirTest {
     return pid;
   }
 
+  // A measurements file of `count` fit rows of the Table 1 cloth, h from 900 mm up by `step_mm`,
+  // in ten groups: data for calibrate whose fit is beside the point.
+  fs::path fit_rows_file(int count, double step_mm) const {
+    const fs::path data = dir_ / "fit-rows.csv";
+    std::ofstream out(data);
+    out << "name,group,role,t_mm,E_MPa,w_N_per_mm2,h_mm,L_mm,d_mm,shape,n,z_max_mm,Q\n";
+    for (int i = 0; i < count; ++i) {
+      out << "row " << i << ",g" << i % 10 << ",fit,0.25,165,1.5e-6," << 900 + step_mm * i
+          << ",1400,100,,6,50,1.3\n";
+    }
+    return data;
+  }
+
   // Files in the test's directory, ignoring the capture files.
   std::vector<std::string> entries() const {
     std::vector<std::string> names;
@@ -1750,15 +1763,7 @@ TEST_F(CliTest, APresetsFolderThatDoesNotExistIsPassedOverWithANotice) {
 // rows would run for most of an hour. What cannot finish in about a minute is refused before any
 // fit, saying why and what to do instead; K alone, or K and p without held-out fits, still run.
 TEST_F(CliTest, CalibrateRefusesUpFrontAFitThatWouldRunForMinutes) {
-  const fs::path data = dir_ / "many.csv";
-  {
-    std::ofstream out(data);
-    out << "name,group,role,t_mm,E_MPa,w_N_per_mm2,h_mm,L_mm,d_mm,shape,n,z_max_mm,Q\n";
-    for (int i = 0; i < 500; ++i) {
-      out << "row " << i << ",g" << i % 10 << ",fit,0.25,165,1.5e-6," << 900 + 3 * i
-          << ",1400,100,,6,50,1.3\n";
-    }
-  }
+  const fs::path data = fit_rows_file(500, 3.0);
   const RunResult refused = run({"calibrate", "--data", data.string(), "--fit", "K,p"});
   EXPECT_EQ(refused.exit_status, 2) << refused.err;
   EXPECT_TRUE(refused.out.empty()) << refused.out.substr(0, 300);
@@ -1771,15 +1776,7 @@ TEST_F(CliTest, CalibrateRefusesUpFrontAFitThatWouldRunForMinutes) {
 // A long fit says how far it is, on stderr and only where a person watches (a terminal): a
 // script capturing stderr gets no progress line.
 TEST_F(CliTest, CalibrateShowsProgressOnATerminalOnly) {
-  const fs::path data = dir_ / "rows.csv";
-  {
-    std::ofstream out(data);
-    out << "name,group,role,t_mm,E_MPa,w_N_per_mm2,h_mm,L_mm,d_mm,shape,n,z_max_mm,Q\n";
-    for (int i = 0; i < 12; ++i) {
-      out << "row " << i << ",g" << i % 3 << ",fit,0.25,165,1.5e-6," << 900 + 100 * i
-          << ",1400,100,,6,50,1.3\n";
-    }
-  }
+  const fs::path data = fit_rows_file(12, 100.0);
   const std::vector<std::string> args = {"calibrate", "--data", data.string(), "--fit", "K,p"};
   const RunResult captured = run(args);
   ASSERT_EQ(captured.exit_status, 0) << captured.err;
