@@ -38,7 +38,7 @@ int main(int argc, char** argv) {
       [] {
         const std::filesystem::path presets = app::find_presets_dir();
         return app::version_line() +
-               "\npresets: " + (presets.empty() ? "none found" : presets.string());
+               "\npresets: " + (presets.empty() ? "none found" : detail::escaped(presets.string()));
       },
       "print the version, the git commit it was built from and the presets folder, and exit");
   std::map<std::string, app::Command> commands;

@@ -125,6 +125,21 @@ if(link_count LESS 10 OR anchor_count LESS 3)
     "is the link pattern still right?")
 endif()
 
+# What the model leaves out is said where a reader first meets it: the cloth hangs from two points
+# (a swag, not a curtain's pleats on a rail), and a curtain on hooks is the strip on k supports.
+foreach(page README.md docs/model.md)
+  file(READ "${ROOT}/${page}" text)
+  string(REGEX REPLACE "[ \n]+" " " text "${text}")
+  foreach(phrase "hangs from two points|hangs the cloth from two points" "swag"
+                 "curtain's pleats on a rail" "shape=strip --set supports=K"
+                 "foldlab field --shape strip")
+    if(NOT text MATCHES "${phrase}")
+      list(APPEND failures "${page}: does not say \"${phrase}\" (the two-point hanging and the "
+        "strip on k supports for a curtain on hooks)")
+    endif()
+  endforeach()
+endforeach()
+
 # No pointer to the developers' notes outside the repository, no tracker numbers in comments.
 string(CONCAT outside_notes "MODEL" "\\.md|shared/" "spec")
 string(CONCAT tracker_number "[Ii]ssue" " #?[0-9]")

@@ -42,6 +42,21 @@ TEST(Arithmetic, StopsWhereAUnitBegins) {
   EXPECT_FALSE(evaluate_arithmetic("5 -").has_value());
 }
 
+// Why a value failed, for the message: the same cause in one word whether typed or computed.
+TEST(Arithmetic, SaysWhyAResultHasNoValue) {
+  using foldlab::ArithmeticFault;
+  for (const char* text : {"1e999", "-1e-999", "1e200*1e200", "1e200*1e200/1e200", "1e308+1e308",
+                           "2*(1e300*1e300) mm"}) {
+    EXPECT_EQ(foldlab::arithmetic_fault(text), ArithmeticFault::beyond_double) << text;
+  }
+  for (const char* text : {"1/0", "-1/0", "0/0", "(2+3)/(1-1) m"}) {
+    EXPECT_EQ(foldlab::arithmetic_fault(text), ArithmeticFault::division_by_zero) << text;
+  }
+  for (const char* text : {"2*153 g/m2", "abc", "1e", "()", "1e-300/1e10"}) {
+    EXPECT_EQ(foldlab::arithmetic_fault(text), ArithmeticFault::none) << text;
+  }
+}
+
 TEST(Arithmetic, RefusesHostileText) {
   for (const char* text : {"",     " ",   "((((",     "(((1",   "1)))",        "()",          "1/0",
                            "-1/0", "0/0", "1e999",    "-1e999", "1e200*1e200", "1e308+1e308", "inf",

@@ -1,6 +1,7 @@
 // End-to-end tests of the foldlab executable: run it as a user or a script would and check the exit
 // status, stdout and stderr.
 #include <fcntl.h>
+#include <pty.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -100,6 +101,19 @@ class CliTest : public foldlab::testing::TempDirTest {
       ::_exit(127);
     }
     return pid;
+  }
+
+  // A measurements file of `count` fit rows of the Table 1 cloth, h from 900 mm up by `step_mm`,
+  // in ten groups: data for calibrate whose fit is beside the point.
+  fs::path fit_rows_file(int count, double step_mm) const {
+    const fs::path data = dir_ / "fit-rows.csv";
+    std::ofstream out(data);
+    out << "name,group,role,t_mm,E_MPa,w_N_per_mm2,h_mm,L_mm,d_mm,shape,n,z_max_mm,Q\n";
+    for (int i = 0; i < count; ++i) {
+      out << "row " << i << ",g" << i % 10 << ",fit,0.25,165,1.5e-6," << 900 + step_mm * i
+          << ",1400,100,,6,50,1.3\n";
+    }
+    return data;
   }
 
   // Files in the test's directory, ignoring the capture files.
@@ -289,6 +303,59 @@ TEST_F(CliTest, APresetIsFoundByItsNameAmongTheUsersAndTheShippedOnes) {
                        "--preset Studio silk: there is no such file, and no preset is "
                        "named so. The presets: Studio linen, 2.4 m; Default"))
       << unknown.err;
+}
+
+// Two presets whose names differ only in case and punctuation: the one named exactly as typed is
+// meant; a name that matches several, none exactly, is refused naming each, never one at random.
+TEST_F(CliTest, APresetNameMeansTheExactOneAndAnAmbiguousNameIsRefused) {
+  const fs::path config = dir_ / "config";
+  const fs::path presets = config / "foldlab" / "presets";
+  fs::create_directories(presets);
+  const auto save = [&](const std::string& file, const std::string& name, double height_mm) {
+    json preset = json::parse(std::ifstream(kPresetsDir / "default.json"));
+    preset["name"] = name;
+    preset["hanging"]["height_mm"] = height_mm;
+    std::ofstream(presets / file) << preset.dump();
+  };
+  save("fab-a.json", "Fab A", 2000.0);
+  save("fab-a-2.json", "fab-a", 2100.0);
+  foldlab::testing::Environment env;
+  env.set = {{"XDG_CONFIG_HOME", config.string()}, {"HOME", dir_.string()}};
+  const auto solve = [&](const std::string& preset) {
+    return foldlab::testing::run_process(kExecutable, {"solve", "--preset", preset, "--json"}, dir_,
+                                         env);
+  };
+  const auto height_of = [&](const std::string& preset) {
+    const RunResult r = solve(preset);
+    EXPECT_EQ(r.exit_status, 0) << preset << ": " << r.err;
+    return r.exit_status == 0 ? json::parse(r.out).at("inputs").at("height_mm").get<double>()
+                              : -1.0;
+  };
+  EXPECT_EQ(height_of("fab-a"), 2100.0);
+  EXPECT_EQ(height_of("Fab A"), 2000.0);
+  const RunResult ambiguous = solve("FAB A");
+  EXPECT_EQ(ambiguous.exit_status, 2) << ambiguous.out;
+  EXPECT_TRUE(contains(ambiguous.err, "--preset FAB A")) << ambiguous.err;
+  EXPECT_TRUE(contains(ambiguous.err, "\"Fab A\" (" + (presets / "fab-a.json").string() + ")"))
+      << ambiguous.err;
+  EXPECT_TRUE(contains(ambiguous.err, "\"fab-a\" (" + (presets / "fab-a-2.json").string() + ")"))
+      << ambiguous.err;
+}
+
+// A file in the presets folder that is no preset (half written, or another program's) is passed
+// over by every command that lists the folder, with a word naming it and why.
+TEST_F(CliTest, AFileInThePresetsFolderThatIsNoPresetIsSkippedWithANotice) {
+  const fs::path presets = dir_ / "presets";
+  fs::create_directories(presets);
+  fs::copy_file(kPresetsDir / "paper-table1-h900.json", presets / "paper-table1-h900.json");
+  fs::copy_file(kPresetsDir / "paper-table1-h1400.json", presets / "paper-table1-h1400.json");
+  std::ofstream(presets / "junk.json") << "{ not json";
+  foldlab::testing::Environment env;
+  env.set = {{"FOLDLAB_PRESETS_DIR", presets.string()}};
+  const RunResult r = foldlab::testing::run_process(kExecutable, {"compare", "--json"}, dir_, env);
+  ASSERT_EQ(r.exit_status, 0) << r.err;
+  EXPECT_EQ(json::parse(r.out).at("rows").size(), 2u) << r.out;
+  EXPECT_TRUE(contains(r.err, "skipped " + (presets / "junk.json").string() + ": ")) << r.err;
 }
 
 TEST_F(CliTest, AnEmptyPresetPathIsInvalidInputNotTheDefault) {
@@ -671,6 +738,88 @@ TEST_F(CliTest, StressSeedMustBeAnUnsigned64BitNumber) {
       run({"stress", "--samples", "1", "--json", "--seed", "18446744073709551615"});
   ASSERT_EQ(largest.exit_status, 0) << largest.err;
   EXPECT_EQ(json::parse(largest.out).at("seed").get<std::uint64_t>(), UINT64_MAX);
+}
+
+// One cause, one wording: a number too large for a double is "beyond the range of a double"
+// whether typed (1e999) or computed on the way (1e200*1e200/1e200); a division by zero says so.
+TEST_F(CliTest, ArithmeticBeyondADoubleIsRefusedInTheWordsOfATooLargeNumber) {
+  for (const char* value : {"1e999", "1e200*1e200", "1e200*1e200/1e200", "-1e300*1e300 mm"}) {
+    SCOPED_TRACE(value);
+    const RunResult r = run({"solve", "--set", std::string("h=") + value});
+    EXPECT_EQ(r.exit_status, 2);
+    EXPECT_TRUE(contains(r.err,
+                         "' is beyond the range of a double (magnitudes 2.2e-308 to "
+                         "1.8e308)"))
+        << r.err;
+  }
+  for (const char* value : {"1/0", "0/0", "(2+3)/(1-1) m"}) {
+    SCOPED_TRACE(value);
+    const RunResult r = run({"solve", "--set", std::string("h=") + value});
+    EXPECT_EQ(r.exit_status, 2);
+    EXPECT_TRUE(contains(r.err, "' divides by zero")) << r.err;
+  }
+}
+
+// A seed written with an exponent is the whole number it names: 1e19 lies below 2^64 and runs.
+TEST_F(CliTest, StressSeedMayBeWrittenWithAnExponent) {
+  const RunResult r = run({"stress", "--samples", "1", "--json", "--seed", "1e19"});
+  ASSERT_EQ(r.exit_status, 0) << r.err;
+  EXPECT_EQ(json::parse(r.out).at("seed").get<std::uint64_t>(), 10000000000000000000ull);
+  EXPECT_EQ(json::parse(run({"stress", "--samples", "1", "--json", "--seed", "1.5e3"}).out)
+                .at("seed")
+                .get<std::uint64_t>(),
+            1500u);
+  for (const char* seed : {"2e19", "1.5e0", "1e-3", "1e"}) {
+    SCOPED_TRACE(seed);
+    const RunResult refused = run({"stress", "--samples", "1", "--seed", seed});
+    EXPECT_EQ(refused.exit_status, 2);
+    EXPECT_TRUE(contains(refused.err, "must be a whole number from 0 to 18446744073709551615"))
+        << refused.err;
+  }
+}
+
+// A refused sweep end says its value in the unit it was given in, with the input's name.
+TEST_F(CliTest, ASubnormalSweepEndIsSaidWithItsUnit) {
+  const RunResult r = run({"sweep", "--param", "w", "--from", "1e-300gsm", "--to", "100gsm"});
+  EXPECT_EQ(r.exit_status, 2);
+  EXPECT_TRUE(contains(r.err, "weight per area w = 1e-300 g/m² is subnormal")) << r.err;
+}
+
+// 12,000 copies of one piece of a link are one problem: a few of them are quoted, the rest
+// counted, on a line a terminal can show.
+TEST_F(CliTest, ALinkWithThousandsOfRepeatedPiecesIsSummarisedOnAShortLine) {
+  std::string link = "#t=0.3";
+  for (int i = 0; i < 12000; ++i) {
+    link += "&h=1400";
+  }
+  const RunResult r =
+      run({"render", "--link", link, "--out", (dir_ / "never.png").string(), "--size", "320x240"});
+  EXPECT_EQ(r.exit_status, 2);
+  EXPECT_FALSE(fs::exists(dir_ / "never.png"));
+  EXPECT_TRUE(contains(r.err,
+                       "--link h=1400, --link h=1400, --link h=1400 and 11997 more: "
+                       "duplicate key"))
+      << r.err.substr(0, 500);
+  for (const std::string& line : split_lines(r.err)) {
+    EXPECT_LT(line.size(), 400u) << line.substr(0, 200);
+  }
+}
+
+// A caption shows a preset's name cut to a length a picture holds: a 900 KB name stays a line.
+TEST_F(CliTest, ACaptionShowsAPresetsNameCutToALine) {
+  json preset = json::parse(std::ifstream(kPresetsDir / "default.json"));
+  preset["name"] = std::string(900000, 'x');
+  const fs::path file = dir_ / "long.json";
+  std::ofstream(file) << preset.dump();
+  const fs::path svg = dir_ / "plot.svg";
+  const RunResult r = run({"export", "--preset", file.string(), "--svg", svg.string()});
+  ASSERT_EQ(r.exit_status, 0) << r.err.substr(0, 300);
+  for (const std::string& line : split_lines(read_file(svg))) {
+    if (starts_with(line, "<text")) {
+      EXPECT_LT(line.size(), 1000u) << line.substr(0, 200);
+    }
+  }
+  EXPECT_TRUE(contains(read_file(svg), std::string(100, 'x') + "…")) << "the cut is marked";
 }
 
 TEST_F(CliTest, BenchRefusesMoreSolvesThanItsBudget) {
@@ -1464,6 +1613,41 @@ TEST_F(CliTest, PlayingAFolderIsInvalidInputNotAnInternalError) {
   EXPECT_TRUE(contains(r.err, "a directory, not a regular file")) << r.err;
 }
 
+// Every --play step costs frames (a typed character one, a key chord four, a drag ten), and they
+// all count toward the one cap that frames steps have: a script over it is refused before a frame
+// runs, naming the step that takes it past, as 100,001 frames are.
+TEST_F(CliTest, EveryPlayStepCountsTowardTheScriptsFrameCap) {
+  const auto play = [&](const json& steps) {
+    const fs::path script = dir_ / "script.json";
+    std::ofstream(script) << json{{"steps", steps}}.dump();
+    return run({"render", "--play", script.string(), "--size", "320x240"});
+  };
+  const auto refused_at = [&](const json& steps, const std::string& said) {
+    const RunResult r = play(steps);
+    EXPECT_EQ(r.exit_status, 2) << r.err;
+    EXPECT_TRUE(contains(r.err, said)) << r.err.substr(0, 500);
+  };
+  const auto repeated = [](const json& step, int count) {
+    json steps = json::array();
+    for (int i = 0; i < count; ++i) {
+      steps.push_back(step);
+    }
+    return steps;
+  };
+  refused_at(json::array({{{"type", std::string(150000, 'a')}}}),
+             "step 1 (type) takes the script past the cap: its steps add up to 150001, more "
+             "than the 100000 frames a script may run");
+  // 25,000 chords are 100,000 frames, the cap; one more frame is too many.
+  json keys = repeated({{"key", "escape"}}, 25000);
+  keys.push_back({{"screenshot", (dir_ / "never.png").string()}});
+  refused_at(keys,
+             "step 25001 (screenshot) takes the script past the cap: its steps add up to "
+             "100001");
+  EXPECT_FALSE(fs::exists(dir_ / "never.png"));
+  refused_at(repeated({{"drag", "h"}, {"dx", 1}}, 10001),
+             "step 10001 (drag) takes the script past the cap: its steps add up to 100010");
+}
+
 // Every file a command reads goes through one reader: a FIFO is refused without waiting for a
 // writer, a device without reading forever, a file over its kind's cap from its size alone. Each
 // is bad input (exit 2) that names the file, for every loader. `timeout` turns a hang into a
@@ -1522,6 +1706,107 @@ TEST_F(CliTest, VersionPrintsTheProjectVersionAndThePresetsFolder) {
   EXPECT_EQ(fs::weakly_canonical(lines[1].substr(lines[1].find(": ") + 2)),
             fs::weakly_canonical(kPresetsDir))
       << lines[1];
+}
+
+// A path or folder the user gave reaches the terminal spelt as every quoted text is (\x1b for
+// ESC), on stdout and on stderr alike, so that a file name cannot clear or recolour the screen.
+TEST_F(CliTest, OutputPathsAndThePresetsFolderReachTheTerminalEscaped) {
+  const std::string esc = "\x1b[2J";
+  const fs::path csv = dir_ / ("m" + esc + ".csv");
+  const RunResult measured =
+      run({"measure", "--depths-mm", "80,40,20,10", "--append", csv.string()});
+  ASSERT_EQ(measured.exit_status, 0) << measured.err;
+  EXPECT_FALSE(contains(measured.out + measured.err, "\x1b")) << measured.out;
+  EXPECT_TRUE(contains(measured.out, "m\\x1b[2J.csv")) << measured.out;
+
+  const fs::path saved = dir_ / ("p" + esc + ".json");
+  const RunResult calibrated = run({"calibrate", "--data", csv.string(), "--fit", "K",
+                                    "--no-held-out", "--save-preset", saved.string()});
+  ASSERT_EQ(calibrated.exit_status, 0) << calibrated.err;
+  EXPECT_FALSE(contains(calibrated.out + calibrated.err, "\x1b")) << calibrated.err;
+  EXPECT_TRUE(contains(calibrated.err, "p\\x1b[2J.json")) << calibrated.err;
+  EXPECT_TRUE(contains(calibrated.out, "m\\x1b[2J.csv")) << calibrated.out;
+
+  const fs::path presets = dir_ / ("pre" + esc + "sets");
+  fs::create_directories(presets);
+  foldlab::testing::Environment env;
+  env.set = {{"FOLDLAB_PRESETS_DIR", presets.string()}};
+  const RunResult version = foldlab::testing::run_process(kExecutable, {"--version"}, dir_, env);
+  ASSERT_EQ(version.exit_status, 0) << version.err;
+  EXPECT_FALSE(contains(version.out, "\x1b")) << version.out;
+  EXPECT_TRUE(contains(version.out, "pre\\x1b[2Jsets")) << version.out;
+}
+
+// The presets folder is the first that exists: a $FOLDLAB_PRESETS_DIR that does not exist is
+// passed over, with a word saying so, and the shipped presets stay in reach.
+TEST_F(CliTest, APresetsFolderThatDoesNotExistIsPassedOverWithANotice) {
+  const fs::path missing = dir_ / "no-such-folder";
+  foldlab::testing::Environment env;
+  env.set = {{"FOLDLAB_PRESETS_DIR", missing.string()}};
+  const RunResult version = foldlab::testing::run_process(kExecutable, {"--version"}, dir_, env);
+  ASSERT_EQ(version.exit_status, 0) << version.err;
+  const std::vector<std::string> lines = split_lines(version.out);
+  ASSERT_EQ(lines.size(), 2u) << version.out;
+  EXPECT_EQ(fs::weakly_canonical(lines[1].substr(lines[1].find(": ") + 2)),
+            fs::weakly_canonical(kPresetsDir))
+      << lines[1];
+  EXPECT_TRUE(contains(version.err, "FOLDLAB_PRESETS_DIR " + missing.string() + " does not exist"))
+      << version.err;
+  const RunResult named = foldlab::testing::run_process(
+      kExecutable, {"solve", "--preset", "paper-table1-h900", "--json"}, dir_, env);
+  ASSERT_EQ(named.exit_status, 0) << named.err;
+  EXPECT_EQ(json::parse(named.out).at("inputs").at("height_mm").get<double>(), 900.0);
+  EXPECT_TRUE(contains(named.err, "does not exist")) << named.err;
+}
+
+// Fitting K and p with leave-one-out refits both once per fit row, so its time grows as m²: 500
+// rows would run for most of an hour. What cannot finish in about a minute is refused before any
+// fit, saying why and what to do instead; K alone, or K and p without held-out fits, still run.
+TEST_F(CliTest, CalibrateRefusesUpFrontAFitThatWouldRunForMinutes) {
+  const fs::path data = fit_rows_file(500, 3.0);
+  const RunResult refused = run({"calibrate", "--data", data.string(), "--fit", "K,p"});
+  EXPECT_EQ(refused.exit_status, 2) << refused.err;
+  EXPECT_TRUE(refused.out.empty()) << refused.out.substr(0, 300);
+  EXPECT_TRUE(contains(refused.err, "--fit K,p with held-out fits: 500 fit rows")) << refused.err;
+  EXPECT_TRUE(contains(refused.err, "--fit K")) << refused.err;
+  EXPECT_TRUE(contains(refused.err, "--no-held-out")) << refused.err;
+  EXPECT_TRUE(contains(refused.err, "at most 80 fit rows")) << refused.err;
+}
+
+// A long fit says how far it is, on stderr and only where a person watches (a terminal): a
+// script capturing stderr gets no progress line.
+TEST_F(CliTest, CalibrateShowsProgressOnATerminalOnly) {
+  const fs::path data = fit_rows_file(12, 100.0);
+  const std::vector<std::string> args = {"calibrate", "--data", data.string(), "--fit", "K,p"};
+  const RunResult captured = run(args);
+  ASSERT_EQ(captured.exit_status, 0) << captured.err;
+  EXPECT_FALSE(contains(captured.err, "% (Ctrl+C stops)")) << captured.err;
+
+  int terminal = -1;
+  const pid_t pid = ::forkpty(&terminal, nullptr, nullptr, nullptr);
+  ASSERT_GE(pid, 0);
+  if (pid == 0) {
+    const int null = ::open("/dev/null", O_WRONLY);
+    ::dup2(null, STDOUT_FILENO);
+    std::vector<char*> argv = {const_cast<char*>(kExecutable.c_str())};
+    for (const std::string& arg : args) {
+      argv.push_back(const_cast<char*>(arg.c_str()));
+    }
+    argv.push_back(nullptr);
+    ::execv(kExecutable.c_str(), argv.data());
+    ::_exit(127);
+  }
+  std::string seen;
+  char buffer[4096];
+  for (ssize_t got; (got = ::read(terminal, buffer, sizeof buffer)) > 0;) {
+    seen.append(buffer, static_cast<std::size_t>(got));
+  }
+  ::close(terminal);
+  int status = 0;
+  ::waitpid(pid, &status, 0);
+  EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << seen;
+  EXPECT_TRUE(contains(seen, "calibrate: ")) << seen;
+  EXPECT_TRUE(contains(seen, "% (Ctrl+C stops)")) << seen;
 }
 
 // A preset the program saves says which FoldLab wrote it.

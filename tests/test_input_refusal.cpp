@@ -107,8 +107,12 @@ TEST(InputRefusal, AUnitInTheWrongCaseIsNamedWithTheOneMeant) {
 }
 
 TEST(InputRefusal, WhatIsNoNumberIsToldFromANumberBeyondADouble) {
-  // docs/cli.md: a result that is not finite (1/0) is no number; 1e999 no double.
-  EXPECT_EQ(unread("t", "1/0").kind, RefusalKind::not_a_number);
+  // docs/cli.md: a division by zero says so; a number no double holds is "beyond the range of a
+  // double" whether typed (1e999) or computed on the way (1e200*1e200/1e200).
+  EXPECT_EQ(unread("t", "1/0").kind, RefusalKind::divides_by_zero);
+  EXPECT_EQ(unread("t", "0/0 mm").kind, RefusalKind::divides_by_zero);
+  EXPECT_EQ(unread("t", "1e200*1e200").kind, RefusalKind::beyond_double);
+  EXPECT_EQ(unread("t", "1e200*1e200/1e200 mm").kind, RefusalKind::beyond_double);
   EXPECT_EQ(unread("t", "abc").kind, RefusalKind::not_a_number);
   EXPECT_EQ(unread("t", "2*").kind, RefusalKind::not_a_number);
   EXPECT_EQ(unread("t", "1e999").kind, RefusalKind::beyond_double);

@@ -35,10 +35,11 @@ std::string machine_description() {
 std::vector<BenchmarkCase> paper_table_cases() {
   std::vector<BenchmarkCase> out;
   if (const std::filesystem::path dir = find_presets_dir(); !dir.empty()) {
-    for (const std::filesystem::path& file : preset_files(dir)) {
-      if (file.filename().string().rfind("paper-table", 0) == 0) {
-        const Preset preset = load_preset(file);
-        out.push_back({preset.name, preset.parameters});
+    const FolderPresets folder = readable_presets(dir);
+    write_notes(folder.skipped, std::cerr);
+    for (std::size_t i = 0; i < folder.files.size(); ++i) {
+      if (folder.files[i].filename().string().rfind("paper-table", 0) == 0) {
+        out.push_back({folder.presets[i].name, folder.presets[i].parameters});
       }
     }
   }

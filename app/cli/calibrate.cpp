@@ -220,10 +220,10 @@ json report_json(const CalibrationReport& r, const std::string& data_path) {
 
 void print_header(const Result& result, std::ostream& out) {
   const CalibrationReport& r = result.report;
-  out << "FoldLab calibrate: " << result.data_path << " (" << r.fit_row_count << " fit row"
-      << (r.fit_row_count == 1 ? "" : "s") << ", " << r.check_row_count << " check row"
-      << (r.check_row_count == 1 ? "" : "s") << "), " << to_string(r.base.model.method)
-      << " method, fitting " << to_string(r.fit) << "\n";
+  out << "FoldLab calibrate: " << detail::escaped(result.data_path) << " (" << r.fit_row_count
+      << " fit row" << (r.fit_row_count == 1 ? "" : "s") << ", " << r.check_row_count
+      << " check row" << (r.check_row_count == 1 ? "" : "s") << "), "
+      << to_string(r.base.model.method) << " method, fitting " << to_string(r.fit) << "\n";
   out << "Base: \"" << detail::escaped(result.base.name) << "\", " << describe_model_form(r.base)
       << "\n";
   out << "Loss (lexicographic): rows whose n is missed, then rows missed by more than one, "
@@ -350,6 +350,20 @@ void check_row_limits(const Options& options, const CalibrationOptions& calibrat
                      "at most " +
                      std::to_string(kMaxCalibrationEntries) +
                      " (add --no-held-out, or fit fewer rows)");
+  }
+  // Held-out fits of K and p take about m² fits' time: what would run past about a minute is
+  // refused before any work, with the ways that finish.
+  if (calibration.held_out && calibration.fit == FitConstants::K_and_p &&
+      fit_row_count > kMaxHeldOutRowsKandP) {
+    throw InputError(printf_string(
+        "--fit K,p with held-out fits: %d fit rows would refit K and p once per row, each fit on "
+        "the other %d rows, so the time grows as the rows squared: about %.0f minutes on a 2-core "
+        "machine, "
+        "where at most %d fit rows finish in about a minute. Fit K alone (--fit K), leave out "
+        "the held-out fits (--no-held-out), or fit fewer rows",
+        fit_row_count, fit_row_count - 1,
+        std::ceil(kHeldOutSecondsPerRowSquared * fit_row_count * fit_row_count / 60.0),
+        kMaxHeldOutRowsKandP));
   }
   // A coverage check refits about m² times: beyond its row limit --coverage is refused before
   // any work, and --save-preset saves without it (the preset then says it was not measured).

@@ -16,6 +16,7 @@ using app::check_outputs;
 using app::Command;
 using app::EnvironmentError;
 using app::find_presets_dir;
+using app::FolderPresets;
 using app::guarded;
 using app::InputError;
 using app::InputOptions;
@@ -23,6 +24,7 @@ using app::kExitInternal;
 using app::kExitInvalidInput;
 using app::kExitOk;
 using app::preset_files;
+using app::readable_presets;
 using app::resolve_inputs;
 
 // A command from its parts: `declare` registers its flags on an Options after which, once

@@ -14,7 +14,8 @@ namespace {
 
 using nlohmann::json;
 
-std::vector<std::string> preset_paths(const Options& options) {
+// The presets named, else the presets folder's that can be read (those that cannot: in `notes`).
+std::vector<std::string> preset_paths(const Options& options, std::vector<std::string>& notes) {
   if (!options.presets.empty()) {
     return options.presets;
   }
@@ -22,8 +23,10 @@ std::vector<std::string> preset_paths(const Options& options) {
   if (dir.empty()) {
     throw InputError("no presets folder found: name presets with --preset");
   }
+  const FolderPresets folder = readable_presets(dir);
+  notes.insert(notes.end(), folder.skipped.begin(), folder.skipped.end());
   std::vector<std::string> paths;
-  for (const auto& file : preset_files(dir)) {
+  for (const auto& file : folder.files) {
     paths.push_back(file.string());
   }
   return paths;
@@ -141,7 +144,7 @@ void declare(CLI::App& app, Options& options) {
 
 Result run(const Options& options) {
   Result result;
-  for (const std::string& path : preset_paths(options)) {
+  for (const std::string& path : preset_paths(options, result.notes)) {
     const Preset preset = app::resolve_named_inputs({path, options.assignments, "", options.law});
     const PublishedResult& pub = preset.published;
     if (!pub.n && !pub.z_max_mm && !pub.Q) {
@@ -194,6 +197,7 @@ json print_json(const Result& result) {
 
 int execute(const Options& options) {
   const Result result = run(options);
+  write_notes(result.notes, std::cerr);
   print_result(result, options.json, &print_markdown);
   return kExitOk;
 }

@@ -40,6 +40,7 @@ struct Result {
   std::array<std::vector<PublishedComparison>, kMethods.size()> rows;
   std::array<ComparisonSummary, kMethods.size()> totals;
   std::vector<PublishedGroupAccuracy> accuracy_by_table;
+  std::vector<std::string> notes;  // for stderr: the presets folder's files passed over
 };
 
 void declare(CLI::App& app, Options& options);

@@ -295,8 +295,9 @@ void print_text(const Result& result, std::ostream& out) {
       << "\na_mm = " << number_text(folds.a_mm)
       << "\nfit_residual = " << printf_string("%.3g", folds.fit_residual)
       << " (rms of ln a_i about the fitted line)\n";
-  out << (result.append_path.empty() ? "row (not appended: no --append):\n"
-                                     : "row appended to " + result.append_path + ":\n");
+  out << (result.append_path.empty()
+              ? "row (not appended: no --append):\n"
+              : "row appended to " + detail::escaped(result.append_path) + ":\n");
   // The row holds the name as given: echoed, its control characters are spelt out.
   std::istringstream lines(measurements_to_csv(one_row(result.row)));
   for (std::string line; std::getline(lines, line);) {

@@ -8,7 +8,7 @@ void write_json(const nlohmann::json& document, std::ostream& out) {
 
 void write_notes(const std::vector<std::string>& notes, std::ostream& err) {
   for (const std::string& note : notes) {
-    err << "foldlab: " << note << "\n";
+    err << "foldlab: " << detail::escaped_lines(note) << "\n";
   }
 }
 

@@ -30,7 +30,8 @@ void print_result(const Result& result, bool as_json,
   }
 }
 
-// "foldlab: NOTE", one line each: what a command says on stderr beside its output.
+// "foldlab: NOTE", one line each: what a command says on stderr beside its output. A note may
+// quote a path or a name the user gave: each is spelt by detail::escaped_lines.
 void write_notes(const std::vector<std::string>& notes, std::ostream& err);
 
 // "–" for a value not given, else the value by a printf `format` ("%.2f").

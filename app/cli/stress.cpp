@@ -2,6 +2,8 @@
 
 #include <charconv>
 #include <iostream>
+#include <optional>
+#include <string_view>
 
 #include "app/cli/commands.hpp"
 #include "app/cli/output.hpp"
@@ -11,14 +13,69 @@ namespace foldlab::cli {
 namespace stress_command {
 namespace {
 
+// The whole number "DIGITS[.DIGITS]e[+]DIGITS" names (1e19, 1.5e3), read exactly: a double
+// holds no 64-bit number past 2^53. nullopt when it names a fraction or more than 2^64 - 1.
+std::optional<std::uint64_t> whole_with_exponent(std::string_view text) {
+  const std::size_t e = text.find_first_of("eE");
+  if (e == std::string_view::npos || e == 0) {
+    return std::nullopt;
+  }
+  std::string_view mantissa = text.substr(0, e);
+  std::string_view exponent = text.substr(e + 1);
+  if (exponent.starts_with('+')) {
+    exponent.remove_prefix(1);
+  }
+  int power = 0;
+  const auto [exponent_end, exponent_error] =
+      std::from_chars(exponent.data(), exponent.data() + exponent.size(), power);
+  if (exponent.empty() || exponent_error != std::errc() ||
+      exponent_end != exponent.data() + exponent.size()) {
+    return std::nullopt;
+  }
+  std::string digits;
+  const std::size_t point = mantissa.find('.');
+  digits += mantissa.substr(0, point);
+  if (point != std::string_view::npos) {
+    const std::string_view fraction = mantissa.substr(point + 1);
+    digits += fraction;
+    power -= static_cast<int>(fraction.size());
+  }
+  if (digits.empty() || digits.find_first_not_of("0123456789") != std::string::npos) {
+    return std::nullopt;
+  }
+  for (; power < 0; ++power) {  // 1.50e3: the fraction's digits must end in as many zeros
+    if (digits.back() != '0') {
+      return std::nullopt;
+    }
+    digits.pop_back();
+  }
+  std::uint64_t out = 0;
+  for (const char c : digits) {
+    if (__builtin_mul_overflow(out, 10u, &out) ||
+        __builtin_add_overflow(out, static_cast<unsigned>(c - '0'), &out)) {
+      return std::nullopt;
+    }
+  }
+  for (; power > 0; --power) {
+    if (__builtin_mul_overflow(out, 10u, &out)) {
+      return std::nullopt;
+    }
+  }
+  return out;
+}
+
 std::uint64_t parse_seed(const std::string& seed) {
   std::uint64_t out = 0;
   const auto [end, error] = std::from_chars(seed.data(), seed.data() + seed.size(), out);
-  if (seed.empty() || error != std::errc() || end != seed.data() + seed.size()) {
-    throw InputError("--seed " + seed +
-                     " must be a whole number from 0 to 18446744073709551615 (2^64 - 1)");
+  if (!seed.empty() && error == std::errc() && end == seed.data() + seed.size()) {
+    return out;
   }
-  return out;
+  if (const std::optional<std::uint64_t> named = whole_with_exponent(seed)) {
+    return *named;
+  }
+  throw InputError("--seed " + detail::cut(seed) +
+                   " must be a whole number from 0 to 18446744073709551615 (2^64 - 1), in digits "
+                   "or with an exponent (1e19)");
 }
 
 }  // namespace

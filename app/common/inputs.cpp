@@ -104,16 +104,27 @@ std::string link_note(const std::string& piece, const std::string& reason, const
 
 // The file --preset means: `given` itself when it is a file or a path (or empty, the default),
 // else the preset of that name as the Presets panel lists it ("Linen (medium weight)", or one
-// saved in the explorer; presets_dir.hpp's preset_named). Throws InputError naming the presets
-// there are when none is.
+// saved in the explorer; presets_dir.hpp's presets_named). Throws InputError naming the presets
+// there are when none is, and the presets it could mean when it is ambiguous.
 std::string preset_file(const std::string& given) {
   std::error_code error;
   if (given.empty() || given.find('/') != std::string::npos ||
       std::filesystem::exists(given, error)) {
     return given;
   }
-  if (const std::optional<std::filesystem::path> named = preset_named(given)) {
-    return named->string();
+  const std::vector<NamedPreset> named = presets_named(given);
+  if (named.size() == 1) {
+    return named.front().file.string();
+  }
+  if (!named.empty()) {
+    std::vector<std::string> each;
+    for (const NamedPreset& preset : named) {
+      each.push_back("\"" + detail::cut(preset.name) + "\" (" + preset.file.string() + ")");
+    }
+    throw InputError("--preset " + detail::cut(given) +
+                     " names more than one preset, none of "
+                     "them exactly: " +
+                     detail::join(each, "; ") + ". Give the name as it is written, or the file.");
   }
   const std::vector<std::string> names = preset_names();
   throw InputError("--preset " + detail::cut(given) +

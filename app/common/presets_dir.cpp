@@ -5,11 +5,14 @@
 #include <algorithm>
 #include <cctype>
 #include <cstdlib>
+#include <iostream>
+#include <mutex>
 #include <string>
 #include <string_view>
 #include <system_error>
 
 #include "core/io/preset.hpp"
+#include "core/model/text_format.hpp"
 
 namespace foldlab::app {
 namespace {
@@ -69,7 +72,16 @@ bool built_here(const std::filesystem::path& exe) {
 std::filesystem::path find_presets_dir() {
   std::error_code error;
   if (const char* env = std::getenv("FOLDLAB_PRESETS_DIR"); env && *env) {
-    return env;
+    if (std::filesystem::is_directory(env, error)) {
+      return env;
+    }
+    // Said once per run, however often the folder is looked up: a mistyped variable would
+    // otherwise hide the user's presets without a word.
+    static std::once_flag said;
+    std::call_once(said, [&] {
+      std::cerr << "foldlab: FOLDLAB_PRESETS_DIR " << detail::escaped(env)
+                << " does not exist or is no folder; using the next presets folder\n";
+    });
   }
   const std::filesystem::path exe = std::filesystem::read_symlink("/proc/self/exe", error);
   if (error) {
@@ -98,6 +110,24 @@ std::vector<std::filesystem::path> preset_files(const std::filesystem::path& dir
     return natural_less(a.filename().string(), b.filename().string());
   });
   return files;
+}
+
+FolderPresets readable_presets(const std::filesystem::path& dir) {
+  FolderPresets out;
+  for (const std::filesystem::path& file : preset_files(dir)) {
+    try {
+      out.presets.push_back(load_preset(file));
+      out.files.push_back(file);
+    } catch (const PresetError& e) {
+      // The reason names the file itself, mostly: named once.
+      std::string_view why = e.what();
+      if (const std::string named = file.string() + ": "; why.starts_with(named)) {
+        why.remove_prefix(named.size());
+      }
+      out.skipped.push_back("skipped " + file.string() + ": " + std::string(why));
+    }
+  }
+  return out;
 }
 
 std::string preset_slug(const std::string& name) {
@@ -138,17 +168,19 @@ std::string lower(std::string text) {
   return text;
 }
 
-// Each preset file where the user and the program keep them, the user's first, with its name;
-// a file that cannot be read is passed over.
+// Each preset file where the user and the program keep them, the user's first, with its name and
+// its folder's place in that order; a file that cannot be read is passed over.
 template <class Visit>
 void for_each_preset(Visit visit) {
+  int rank = 0;
   for (const std::filesystem::path& dir : {user_presets_dir(), find_presets_dir()}) {
+    ++rank;
     if (dir.empty()) {
       continue;
     }
     for (const std::filesystem::path& file : preset_files(dir)) {
       try {
-        if (visit(file, load_preset(file.string()).name)) {
+        if (visit(NamedPreset{file, load_preset(file.string()).name}, rank)) {
           return;
         }
       } catch (const PresetError&) {
@@ -160,25 +192,46 @@ void for_each_preset(Visit visit) {
 
 }  // namespace
 
-std::optional<std::filesystem::path> preset_named(const std::string& name) {
+std::vector<NamedPreset> presets_named(const std::string& name) {
   const std::string wanted = lower(name);
   const std::string wanted_slug = preset_slug(name);
-  std::optional<std::filesystem::path> found;
-  for_each_preset([&](const std::filesystem::path& file, const std::string& preset_name) {
-    const std::string stem = lower(file.stem().string());
-    if ((!wanted_slug.empty() && preset_slug(preset_name) == wanted_slug) || stem == wanted ||
-        stem + ".json" == wanted) {
-      found = file;
+  // A name written exactly so comes before a file named so: "fab-a" is the preset of that name,
+  // not "Fab A" saved as fab-a.json.
+  std::optional<NamedPreset> exact_name;
+  std::optional<NamedPreset> exact_file;
+  std::vector<NamedPreset> loose;
+  int loose_rank = 0;
+  for_each_preset([&](const NamedPreset& preset, int rank) {
+    if (preset.name == name) {
+      exact_name = preset;
+      return true;
     }
-    return found.has_value();
+    const std::string stem = preset.file.stem().string();
+    if (!exact_file && (stem == name || preset.file.filename() == name)) {
+      exact_file = preset;
+    }
+    const std::string stem_lower = lower(stem);
+    const bool reads_as = (!wanted_slug.empty() && preset_slug(preset.name) == wanted_slug) ||
+                          stem_lower == wanted || stem_lower + ".json" == wanted;
+    if (reads_as && (loose.empty() || rank == loose_rank)) {
+      loose_rank = rank;
+      loose.push_back(preset);
+    }
+    return false;
   });
-  return found;
+  if (exact_name) {
+    return {*exact_name};
+  }
+  if (exact_file) {
+    return {*exact_file};
+  }
+  return loose;
 }
 
 std::vector<std::string> preset_names() {
   std::vector<std::string> names;
-  for_each_preset([&](const std::filesystem::path&, const std::string& preset_name) {
-    names.push_back(preset_name);
+  for_each_preset([&](const NamedPreset& preset, int) {
+    names.push_back(preset.name);
     return false;
   });
   return names;

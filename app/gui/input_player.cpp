@@ -542,7 +542,7 @@ bool InputPlayer::drag_slider(std::size_t index, const json& step, Explorer& exp
   if (!reachable(index, key, *place, from)) {
     return false;
   }
-  queue_press(from, ImVec2(from.x + step["dx"].get<float>(), from.y), 6);
+  queue_press(from, ImVec2(from.x + step["dx"].get<float>(), from.y), kDragMoves);
   // Shift held from the press to the release: the fine drag.
   for (FrameInput& input : queue_) {
     input.shift = step.value("shift", false);

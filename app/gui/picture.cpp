@@ -344,7 +344,8 @@ namespace {
 void add_caption(std::vector<std::string>& lines, const std::string& letter,
                  const std::string& name, const Parameters& parameters, const Solution& solution,
                  const ModelStanding& standing) {
-  std::string head = letter.empty() ? name : letter + ": " + name;
+  const std::string shown = detail::caption_text(name);
+  std::string head = letter.empty() ? shown : letter + ": " + shown;
   if (!head.empty()) {
     lines.push_back(head);
   }

@@ -292,6 +292,35 @@ Problems step_problems(const json& step) {
 
 }  // namespace
 
+long long step_frames(const json& step) {
+  switch (step_kind(step).id) {
+    case StepKind::Id::drag:
+      return 4 + kDragMoves;
+    case StepKind::Id::click:
+    case StepKind::Id::click_photo:
+    case StepKind::Id::key:
+    case StepKind::Id::resize:
+      return 4;
+    case StepKind::Id::type: {
+      // One frame a UTF-8 character, and one that ends the typing.
+      const std::string text = step["type"].get<std::string>();
+      return 1 + std::count_if(text.begin(), text.end(), [](char c) {
+               return (static_cast<unsigned char>(c) & 0xC0) != 0x80;
+             });
+    }
+    case StepKind::Id::frames:
+      return step["frames"].get<long long>();
+    case StepKind::Id::hover_sweep:
+      return 3;
+    case StepKind::Id::screenshot:
+    case StepKind::Id::expect:
+    case StepKind::Id::visible:
+    case StepKind::Id::absent:
+      return 1;
+  }
+  return 1;
+}
+
 const StepKind& step_kind(const json& step) {
   for (const StepKind& kind : kStepKinds) {
     if (step.contains(kind.name)) {
@@ -313,21 +342,29 @@ std::vector<std::string> play_script_problems(const json& script) {
     }
   }
   const json& steps = script.at("steps");
+  // Each step is bounded, and so is their sum: 1000 frames of the software renderer take about
+  // 20 s, so a script runs for at most about half an hour. Every step counts, not only frames
+  // steps: a long enough type step is as many frames.
   long long frames = 0;
+  std::optional<std::size_t> past_cap;
   for (std::size_t i = 0; i < steps.size(); ++i) {
     const std::vector<std::string> step = step_problems(steps[i]);
     for (const std::string& problem : step) {
       problems.push_back("step " + std::to_string(i + 1) + ": " + problem);
     }
-    if (step.empty() && steps[i].contains("frames")) {
-      frames += steps[i].at("frames").get<long long>();
+    if (step.empty()) {
+      frames += step_frames(steps[i]);
+      if (frames > kMaxScriptFrames && !past_cap) {
+        past_cap = i;
+      }
     }
   }
-  // Each step is bounded, and so is their sum: 1000 frames of the software renderer take about
-  // 20 s, so a script runs for at most about half an hour.
-  if (frames > kMaxScriptFrames) {
-    problems.push_back("its frames steps add up to " + std::to_string(frames) + ", more than the " +
-                       std::to_string(kMaxScriptFrames) + " a script may run");
+  if (past_cap) {
+    problems.push_back("step " + std::to_string(*past_cap + 1) + " (" +
+                       std::string(step_kind(steps[*past_cap]).name) +
+                       ") takes the script past the cap: its steps add up to " +
+                       std::to_string(frames) + ", more than the " +
+                       std::to_string(kMaxScriptFrames) + " frames a script may run");
   }
   return problems;
 }

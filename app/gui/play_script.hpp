@@ -62,8 +62,15 @@ struct StepKind {
 // The kind of a step that play_script_problems found runnable.
 const StepKind& step_kind(const nlohmann::json& step);
 
-// The frames all of a script's `frames` steps may add up to.
+// The frames all of a script's steps may add up to.
 inline constexpr long long kMaxScriptFrames = 100000;
+// The mouse moves of a drag between its press and its release.
+inline constexpr int kDragMoves = 6;
+
+// The frames a runnable step takes as the input player plays it: a press is four (hover, down,
+// up, up) and a drag's moves come between; a key chord four; a typed text one a character and
+// one more; a check (expect, visible, absent) or a screenshot one.
+long long step_frames(const nlohmann::json& step);
 
 // Every problem of a script, each "step N: ..." or about the whole; empty when it can run. Text
 // from the script is echoed through detail::cut.

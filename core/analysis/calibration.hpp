@@ -55,6 +55,14 @@ bool same_score(const CalibrationScore& a, const CalibrationScore& b);
 CalibrationScore score_predictions(const std::vector<Measurement>& rows,
                                    const std::vector<RowPrediction>& predictions);
 
+// The most fit rows a fit of K and p with held-out fits takes. Each held-out fit refits both
+// constants on m - 1 rows, so the time grows as m²: measured on a shared 2-core VM
+// (docs/cli.md, calibrate), 50 rows take 21 s, 80 rows 54 s, and 500 rows would take about 35
+// minutes, where K alone on 500 rows takes 20 s and K and p without held-out fits 18 s.
+inline constexpr int kMaxHeldOutRowsKandP = 80;
+// The time of those fits per fit row squared, as measured there: for a message's estimate.
+inline constexpr double kHeldOutSecondsPerRowSquared = 0.0085;
+
 struct CalibrationOptions {
   FitConstants fit = FitConstants::K;
   // Coarse grid in p (K_and_p only), then a grid ten times finer around the best p values.

@@ -102,7 +102,7 @@ std::optional<std::string> check_axis(const SweepAxis& axis) {
   const InputInterval range = sweep_range(spec);
   for (const double end : {axis.from, axis.to}) {
     if (end != 0.0 && std::abs(end) < std::numeric_limits<double>::min()) {
-      return "the sweep's end " + axis.key + " = " + detail::shortest_number(end) +
+      return "the sweep's end: " + input_title(spec) + " = " + shown_quantity(spec, end) +
              " is subnormal: no cloth is described by it";
     }
     if (!range.contains(end)) {

@@ -140,7 +140,7 @@ FoldPlotFrame fold_plot_frame(const Solution& s) {
 std::string fold_plot_heading(const FoldPlotFrame& f, const Solution& s, const std::string& title) {
   std::string out = detail::svg_open(f.width_px, f.height_px, 12);
   out += "<text x=\"" + printf_string("%.0f", f.margin_left) + "\" y=\"22\" font-size=\"15\">" +
-         xml_escape(detail::escaped(title)) + "</text>\n";
+         xml_escape(detail::caption_text(title)) + "</text>\n";
   out += printf_string(
       "<text x=\"%.0f\" y=\"42\">n = %d, Q = %.3f, z_max = %.1f mm, l = %.0f mm "
       "(y downward from the line through the supports)</text>\n",

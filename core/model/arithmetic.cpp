@@ -16,6 +16,7 @@ class Reader {
 
   std::optional<double> expression() { return chain(&Reader::term, '+', '-'); }
   std::size_t end() const { return at_; }
+  ArithmeticFault fault() const { return fault_; }
 
  private:
   std::optional<double> term() { return chain(&Reader::factor, '*', '/'); }
@@ -42,7 +43,10 @@ class Reader {
               : op == '*' ? *value * *right
                           : *value / *right;
       if (!std::isfinite(*value)) {
-        return std::nullopt;  // 1/0 or an overflow is no value, whatever follows
+        // 1/0 or an overflow is no value, whatever follows.
+        fault_ = op == '/' && *right == 0.0 ? ArithmeticFault::division_by_zero
+                                            : ArithmeticFault::beyond_double;
+        return std::nullopt;
       }
     }
     return value;
@@ -85,7 +89,10 @@ class Reader {
     const char* start = text_.data() + at_;
     const auto [ptr, ec] = detail::read_double(start, text_.data() + text_.size(), number);
     if (ec != std::errc() || !std::isfinite(number)) {
-      return std::nullopt;  // 1e999 is out of range, not infinity
+      if (ec == std::errc::result_out_of_range) {
+        fault_ = ArithmeticFault::beyond_double;  // 1e999 is out of range, not infinity
+      }
+      return std::nullopt;
     }
     at_ += static_cast<std::size_t>(ptr - start);
     return number;
@@ -100,6 +107,7 @@ class Reader {
   std::string_view text_;
   std::size_t at_ = 0;
   int depth_ = 0;
+  ArithmeticFault fault_ = ArithmeticFault::none;
 };
 
 }  // namespace
@@ -114,6 +122,15 @@ std::optional<ArithmeticPrefix> arithmetic_prefix(std::string_view text) {
     return std::nullopt;
   }
   return ArithmeticPrefix{*value, reader.end()};
+}
+
+ArithmeticFault arithmetic_fault(std::string_view text) {
+  if (text.size() > kMaxArithmeticChars) {
+    return ArithmeticFault::none;
+  }
+  Reader reader(text);
+  reader.expression();
+  return reader.fault();
 }
 
 std::optional<double> evaluate_arithmetic(std::string_view text) {

@@ -23,6 +23,11 @@ inline constexpr int kMaxArithmeticDepth = 16;
 inline constexpr std::size_t kMaxArithmeticChars = 1000;
 std::optional<ArithmeticPrefix> arithmetic_prefix(std::string_view text);
 
+// Why the arithmetic at the front of `text` has no value, when a step of it has none: a number or a
+// result beyond the range of a double (1e999, 1e200*1e200), or a division by zero (1/0, 0/0).
+enum class ArithmeticFault { none, beyond_double, division_by_zero };
+ArithmeticFault arithmetic_fault(std::string_view text);
+
 // The whole text as arithmetic (spaces around it allowed), else nullopt.
 std::optional<double> evaluate_arithmetic(std::string_view text);
 

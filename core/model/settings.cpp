@@ -597,6 +597,8 @@ std::string refusal_reason(const InputRefusal& refusal) {
              std::to_string(kMaxArithmeticDepth) + " parentheses deep";
     case RefusalKind::beyond_double:
       return " is beyond the range of a double (magnitudes 2.2e-308 to 1.8e308)";
+    case RefusalKind::divides_by_zero:
+      return " divides by zero";
     case RefusalKind::unknown_unit: {
       std::vector<std::string_view> known;
       for (const InputUnit& unit : units) {
@@ -653,6 +655,7 @@ std::string refusal_sentence(const InputRefusal& refusal) {
     case RefusalKind::nested_too_deeply:
     case RefusalKind::unknown_unit:
     case RefusalKind::beyond_double:
+    case RefusalKind::divides_by_zero:
       break;
   }
   return refusal.key + " = '" + detail::cut(refusal.typed) + "'" + refusal_reason(refusal);
@@ -778,8 +781,12 @@ std::variant<double, InputRefusal> read_quantity(const InputSpec& spec, std::str
       return typed->number;
     }
   }
-  if (beyond_double(text)) {
+  // One wording for one cause, whether a number is typed too large or computed so.
+  if (beyond_double(text) || arithmetic_fault(text) == ArithmeticFault::beyond_double) {
     return text_refusal(RefusalKind::beyond_double, spec, text);
+  }
+  if (arithmetic_fault(text) == ArithmeticFault::division_by_zero) {
+    return text_refusal(RefusalKind::divides_by_zero, spec, text);
   }
   if (parenthesis_depth(text) > kMaxArithmeticDepth) {
     return text_refusal(RefusalKind::nested_too_deeply, spec, text);
@@ -1005,8 +1012,14 @@ std::vector<std::string> repeated_keys(const std::vector<std::string>& assignmen
     }
     if (givers.size() > 1) {
       reported.push_back(input);
-      const std::string last = givers.back();
+      // Thousands of copies are one problem: the first few quoted, the rest counted.
+      constexpr std::size_t kQuoted = 3;
+      std::string last = givers.back();
       givers.pop_back();
+      if (givers.size() > kQuoted) {
+        last = std::to_string(givers.size() + 1 - kQuoted) + " more";
+        givers.resize(kQuoted);
+      }
       problems.push_back(
           detail::join(givers, ", ") + " and " + last +
           (one_key ? ": duplicate key (each key may appear once; which one is meant?)"

@@ -161,7 +161,8 @@ enum class RefusalKind {
   not_a_number,       // no number, arithmetic or number with one of the row's units
   nested_too_deeply,  // arithmetic nested more than kMaxArithmeticDepth parentheses deep
   unknown_unit,       // a number followed by a name that is none of the row's units
-  beyond_double,      // a number whose magnitude a double cannot hold (1e999, 1e-999)
+  beyond_double,      // a number or a result a double cannot hold (1e999, 1e-999, 1e200*1e200)
+  divides_by_zero,    // arithmetic that divides by zero (1/0)
   not_whole,          // a whole-number row given a fraction
   out_of_range,       // outside `range`, past `bound`
   not_below_bound,    // at or above the bound that follows from other inputs (d below L/2)
@@ -189,8 +190,8 @@ struct InputRefusal {
 // area w = −5 g/m² must be between 0.1 and 1,000,000 g/m²: WHY".
 std::string refusal_sentence(const InputRefusal& refusal);
 // For a refusal of typed text (not_a_choice, not_a_number, nested_too_deeply, unknown_unit,
-// beyond_double): the rest of a sentence that has just quoted the text, ": 'M' is not a unit of
-// length (known: mm, cm, m); did you mean 'm'?", " is not a number".
+// beyond_double, divides_by_zero): the rest of a sentence that has just quoted the text, ": 'M' is
+// not a unit of length (known: mm, cm, m); did you mean 'm'?", " is not a number".
 std::string refusal_reason(const InputRefusal& refusal);
 // The refusal of `value` (stored unit) of `spec` for lying outside `range`, for `why`.
 InputRefusal range_refusal(const InputSpec& spec, double value, const InputInterval& range,

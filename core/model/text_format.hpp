@@ -147,6 +147,14 @@ inline std::string escaped(std::string_view text) {
   return cut(text, std::string_view::npos);
 }
 
+// A name as a caption or a drawing's title shows it: escaped() and cut to about kMaxCaptionBytes,
+// so that a name as long as a preset may hold (up to its 1 MB) stays a line of a picture rather
+// than seconds of laying out text nobody can read.
+inline constexpr std::size_t kMaxCaptionBytes = 200;
+inline std::string caption_text(std::string_view text) {
+  return cut(text, kMaxCaptionBytes);
+}
+
 // User text in a cell of a Markdown table: escaped(), and a '|' written "\|" so that it cannot
 // start a cell of its own.
 inline std::string markdown_cell(std::string_view text) {
