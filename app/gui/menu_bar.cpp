@@ -17,6 +17,14 @@ namespace foldlab::gui {
 float MenuBar::draw(PanelContext& context) {
   export_.new_frame();
   float height = 0.0f;
+  // A menu's rows are its text and the item spacing tall: for a finger, as tall as a target
+  // (touch_style has made the frames so, and the menu bar is one).
+  const bool finger = (ImGui::GetIO().ConfigFlags & ImGuiConfigFlags_IsTouchScreen) != 0;
+  if (finger) {
+    ImGui::PushStyleVar(
+        ImGuiStyleVar_ItemSpacing,
+        ImVec2(ImGui::GetStyle().ItemSpacing.x, ImGui::GetFrameHeight() - ImGui::GetFontSize()));
+  }
   if (ImGui::BeginMainMenuBar()) {
     height = ImGui::GetWindowHeight();
     if (ImGui::BeginMenu("View")) {
@@ -43,6 +51,9 @@ float MenuBar::draw(PanelContext& context) {
       presenting_items(context);
     }
     ImGui::EndMainMenuBar();
+  }
+  if (finger) {
+    ImGui::PopStyleVar();
   }
   return height;
 }

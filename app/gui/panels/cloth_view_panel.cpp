@@ -13,6 +13,7 @@
 #include "app/gui/appearance.hpp"
 #include "app/gui/colour_map.hpp"
 #include "app/gui/compare.hpp"
+#include "app/gui/input_words.hpp"
 #include "app/gui/panels/file_dialog.hpp"
 #include "app/gui/panels/widgets.hpp"
 #include "core/model/settings.hpp"
@@ -358,8 +359,7 @@ void ClothViewPanel::draw_hint(ImDrawList* draw, ImVec2 origin, FrameSize area, 
   }
   draw->AddText(ImGui::GetFont(), ImGui::GetFontSize(), ImVec2(origin.x + 6, origin.y + 4),
                 light ? IM_COL32(60, 60, 60, 220) : IM_COL32(200, 200, 200, 200),
-                "drag: orbit, right-drag: pan, wheel: zoom", nullptr,
-                static_cast<float>(area.width) - 12.0f);
+                hint_words(Hint::cloth_view), nullptr, static_cast<float>(area.width) - 12.0f);
 }
 
 void ClothViewPanel::draw(PanelContext& context) {
