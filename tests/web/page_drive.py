@@ -412,20 +412,21 @@ def check_dpr(args, root, problems):
 
 
 def check_touch(args, root, problems):
-    page = Page(args, os.path.join(root, "touch"), QUERY)
+    # A touch screen from the start: its sliders a finger's height tall, which leaves t, E and w
+    # in sight in the Parameters panel at this size (h and L below them, scrolled away).
+    page = Page(args, os.path.join(root, "touch"), QUERY, touch=True)
     try:
-        page.tools.send("Emulation.setTouchEmulationEnabled", enabled=True, maxTouchPoints=5)
         state = ready(page)
         # A tap is a click: on a slider it takes the focus and leaves the value.
-        x, y = slider_css(state, "h", 1, 0.75)
-        h_before = state["parameters"]["h_mm"]
+        x, y = slider_css(state, "t", 1, 0.75)
+        t_before = state["parameters"]["t_mm"]
         # The finger lifts 50 ms after it touched, whenever the page gets to either event.
         down_s = page.touch("touchStart", [(x, y)])
         page.touch("touchEnd", [], down_s + 0.05)
         state = page.settle()
-        check(problems, state["parameters"]["h_mm"] == h_before,
-              f"a tap at 3/4 of the h slider moved h to {state['parameters']['h_mm']} "
-              f"(was {h_before})")
+        check(problems, state["parameters"]["t_mm"] == t_before,
+              f"a tap at 3/4 of the t slider moved t to {state['parameters']['t_mm']} "
+              f"(was {t_before})")
         # A one-finger drag on a slider drags it. Every move is longer than the page's still
         # finger (10 px), so that a slow machine's frames cannot turn the drag into a long press.
         x, y = slider_css(state, "w", 1)
@@ -462,10 +463,10 @@ def check_touch(args, root, problems):
         ratio = state["camera"]["distance_mm"] / distance_before
         check(problems, abs(ratio - 0.5) < 0.02,
               f"a pinch from 60 to 120 px left the distance at {ratio:.3f} of what it was, not 0.5")
-        # Holding a finger on the h slider opens its typed value; the keyboard's field has focus
+        # Holding a finger on the t slider opens its typed value; the keyboard's field has focus
         # and what the keyboard types (an IME's text, no key events) replaces the value's text,
         # which the field opens selected.
-        x, y = slider_css(state, "h", 1)
+        x, y = slider_css(state, "t", 1)
         page.touch("touchStart", [(x, y)])
         # The finger stays down until the page has turned it into a Ctrl+click (its timer, then
         # frames): on a busy machine the lift could otherwise reach the page before the timer.
@@ -475,16 +476,16 @@ def check_touch(args, root, problems):
         page.settle()
         focused = page.tools.evaluate("document.activeElement && document.activeElement.id")
         check(problems, focused == "foldlab-keyboard",
-              f"after a long press on h the focus is on {focused!r}, not the keyboard's field")
-        page.tools.send("Input.insertText", text="1.5m")
+              f"after a long press on t the focus is on {focused!r}, not the keyboard's field")
+        page.tools.send("Input.insertText", text="0.05cm")
         page.settle(6)
         page.tools.send("Input.dispatchKeyEvent", type="rawKeyDown", windowsVirtualKeyCode=13,
                         key="Enter", code="Enter")
         page.tools.send("Input.dispatchKeyEvent", type="keyUp", windowsVirtualKeyCode=13,
                         key="Enter", code="Enter")
         state = page.settle()
-        check(problems, state["parameters"]["h_mm"] == 1500,
-              f"typed 1.5m into h through the keyboard's field: h is {state['parameters']['h_mm']}")
+        check(problems, abs(state["parameters"]["t_mm"] - 0.5) < 1e-12,
+              f"typed 0.05cm into t through the keyboard's field: t is {state['parameters']['t_mm']}")
         focused = page.tools.evaluate("document.activeElement && document.activeElement.id")
         check(problems, focused != "foldlab-keyboard", "the keyboard's field keeps the focus")
         if args.keep_screenshots:
