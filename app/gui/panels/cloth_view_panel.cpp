@@ -225,7 +225,7 @@ void ClothViewPanel::follow_the_cloth(Document& document, bool reset, bool hold)
 
 bool ClothViewPanel::toolbar(PanelContext& context) {
   settings_row();
-  const bool reset = ImGui::SmallButton("reset camera");
+  const bool reset = small_button("reset camera");
   // As long as the panel leaves room for, beside its label and (?): never cut.
   constexpr const char* kZLabel = "z exaggeration";
   const float z_room = ImGui::GetContentRegionAvail().x - labelled_width(0.0f, kZLabel) -
@@ -249,7 +249,7 @@ bool ClothViewPanel::toolbar(PanelContext& context) {
       load_photo(photo_path_);
     }
     same_line_if_fits(button_width(kBrowseLabel) + ImGui::CalcTextSize(" (?)").x);
-    if (ImGui::SmallButton(kBrowseLabel)) {
+    if (small_button(kBrowseLabel)) {
       context.files.open({FileDialog::Mode::open, "Load swatch photo", "", kImageExtensions,
                           [this](const std::filesystem::path& path) {
                             std::snprintf(photo_input_, sizeof photo_input_, "%s",
@@ -272,7 +272,7 @@ bool ClothViewPanel::toolbar(PanelContext& context) {
   ImGui::Checkbox("breeze", &style_.breeze);
   if (style_.breeze) {
     same_line_if_fits(button_width(breeze_playing_ ? "pause" : "play"));
-    if (ImGui::SmallButton(breeze_playing_ ? "pause" : "play")) {
+    if (small_button(breeze_playing_ ? "pause" : "play")) {
       breeze_playing_ = !breeze_playing_;
     }
     // Named, with its unit, so that the slider reads without the checkbox beside it (a row may

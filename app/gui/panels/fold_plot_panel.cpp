@@ -181,7 +181,7 @@ void FoldPlotPanel::draw(PanelContext& context) {
   const Solution& s = scene.solution();
   if (toolbar_row_.begin("plot settings...", kLeastPlotHeightEms * ImGui::GetFontSize())) {
     photo.toolbar(context);
-    if (ImGui::SmallButton("autoscale")) {
+    if (small_button("autoscale")) {
       autoscale_ = true;
     }
     same_line_if_fits(checkbox_width(kTrueScaleLabel));
