@@ -18,7 +18,8 @@ Checks (each its own ctest):
             the cloth equally; a pinch after another touch zooms and does not turn
   fingers   with a touch screen the hints speak of fingers (a played script reads the drawn
             words), every slider is 44 CSS px tall, a drag four slider heights away from a slider
-            moves it a quarter as far, and a slider's typed value asks for the number keyboard
+            moves it a quarter as far, two fingers scroll a panel, and a slider's typed value
+            asks for the number keyboard
   scheme    the theme follows the browser's prefers-color-scheme and the text size its default
             font size, with no stored session
   layout    a tile resized with the mouse (the fold plot's grip) is where it was after a reload
@@ -608,6 +609,23 @@ def check_fingers(args, root, problems):
         check(problems, moved[0] > 0.05 and abs(moved[1] / moved[0] - 0.25) < 0.05,
               f"36 px along the w slider moved it {moved[0]:.4f} of its width, and four slider "
               f"heights away {moved[1]:.4f}, not a quarter of that")
+        # Two fingers moving up 90 px together over the Parameters panel scroll it by as much: the
+        # t slider (its top) comes 90 px higher, and the 3D view does not zoom.
+        top_before = state["sliders"]["t"]["top"]
+        distance_before = state["camera"]["distance_mm"]
+        px, py = panel_centre_css(state, "parameters", 1)
+        down_s = page.touch("touchStart", [(px - 30, py), (px + 30, py)])
+        for step in range(1, 4):
+            page.touch("touchMove", [(px - 30, py - 30 * step), (px + 30, py - 30 * step)],
+                       down_s + 0.03 * step)
+            page.settle(1)
+        page.touch("touchEnd", [], down_s + 0.12)
+        state = page.settle()
+        scrolled = top_before - state["sliders"]["t"]["top"]
+        check(problems, abs(scrolled - 90) <= 9,
+              f"two fingers moving 90 px up over the Parameters panel scrolled it {scrolled} px")
+        check(problems, state["camera"]["distance_mm"] == distance_before,
+              "two fingers over the Parameters panel zoomed the 3D view")
         # A long press on E opens its typed value: the keyboard's field asks for numbers.
         x, y = slider_css(state, "E", 1)
         page.touch("touchStart", [(x, y)])
