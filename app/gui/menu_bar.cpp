@@ -91,43 +91,67 @@ void MenuBar::export_items(PanelContext& context) {
   }
 }
 
-// The UI scale and theme, for a projector, beside the shortcuts that do the same.
+// The UI scale and theme, for a projector, beside the shortcuts that do the same. For a finger
+// no submenu: where there is no room beside this menu (a phone) one opens over it, under the
+// finger that opened it, whose lift then picks whatever lies there (a quick tap presented the
+// Parameters). The text sizes are a row of buttons and the views to present rows of this menu.
 void MenuBar::view_menu(PanelContext& context) {
+  const bool finger = (ImGui::GetIO().ConfigFlags & ImGuiConfigFlags_IsTouchScreen) != 0;
   int percent = appearance_.scale_percent();
   bool light = appearance_.light_theme();
   ImGui::Text("UI scale %d %%", percent);
-  if (ImGui::MenuItem("Larger text", "Ctrl +", false, percent < kMaxUiScalePercent)) {
-    percent += kUiScaleStepPercent;
-  }
-  if (ImGui::MenuItem("Smaller text", "Ctrl -", false, percent > kMinUiScalePercent)) {
-    percent -= kUiScaleStepPercent;
-  }
-  if (ImGui::MenuItem("Default size", "Ctrl 0", false, percent != kMinUiScalePercent)) {
-    percent = kMinUiScalePercent;
-  }
   // The sizes a room needs, in one move rather than ten presses of Ctrl +.
-  if (ImGui::BeginMenu("Text size")) {
-    for (const int choice : {100, 125, 150, 200}) {
-      if (ImGui::MenuItem((std::to_string(choice) + " %").c_str(), nullptr, percent == choice)) {
+  constexpr int kTextSizes[] = {100, 125, 150, 200};
+  if (finger) {
+    for (const int choice : kTextSizes) {
+      ImGui::SameLine();
+      ImGui::BeginDisabled(percent == choice);
+      if (ImGui::Button((std::to_string(choice) + " %").c_str())) {
         percent = choice;
       }
+      ImGui::EndDisabled();
     }
-    ImGui::EndMenu();
+  } else {
+    if (ImGui::MenuItem("Larger text", "Ctrl +", false, percent < kMaxUiScalePercent)) {
+      percent += kUiScaleStepPercent;
+    }
+    if (ImGui::MenuItem("Smaller text", "Ctrl -", false, percent > kMinUiScalePercent)) {
+      percent -= kUiScaleStepPercent;
+    }
+    if (ImGui::MenuItem("Default size", "Ctrl 0", false, percent != kMinUiScalePercent)) {
+      percent = kMinUiScalePercent;
+    }
+    if (ImGui::BeginMenu("Text size")) {
+      for (const int choice : kTextSizes) {
+        if (ImGui::MenuItem((std::to_string(choice) + " %").c_str(), nullptr, percent == choice)) {
+          percent = choice;
+        }
+      }
+      ImGui::EndMenu();
+    }
   }
   ImGui::MenuItem("Light theme", nullptr, &light);
   appearance_.request(percent, light);
   ImGui::Separator();
   ImGui::MenuItem("Pipeline stats", nullptr, &show_stats_);
-  if (layout_.presented()) {
-    if (ImGui::MenuItem("Back to the tiles", "Esc")) {
-      layout_.request_present(nullptr);
-    }
-  } else if (ImGui::BeginMenu("Present (fill the window)")) {
+  const auto present_items = [&] {
     for (const std::unique_ptr<Panel>& panel : context.panels) {
       if (Layout::tiled(*panel) && ImGui::MenuItem(panel->name())) {
         layout_.request_present(panel.get());
       }
     }
+  };
+  if (layout_.presented()) {
+    if (ImGui::MenuItem("Back to the tiles", finger ? nullptr : "Esc")) {
+      layout_.request_present(nullptr);
+    }
+  } else if (finger) {
+    ImGui::TextDisabled("Present (fill the screen):");
+    ImGui::Indent();
+    present_items();
+    ImGui::Unindent();
+  } else if (ImGui::BeginMenu("Present (fill the window)")) {
+    present_items();
     ImGui::EndMenu();
   }
   if (ImGui::MenuItem(IntroWindow::kTitle)) {
