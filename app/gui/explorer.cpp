@@ -11,6 +11,7 @@
 #include "app/gui/file_transfer.hpp"
 #include "app/gui/menu_bar.hpp"
 #include "app/gui/panel_list.hpp"
+#include "app/gui/panels/cloth_view_panel.hpp"
 #include "app/gui/panels/file_dialog.hpp"
 #include "app/gui/presentation_bar.hpp"
 #include "app/gui/session.hpp"
@@ -252,6 +253,9 @@ void Explorer::frame() {
   handle_undo_keys();
   handle_escape();
   const float menu_height = menu_->draw(context);
+  if (shows_one_view() && layout_.presented() == nullptr) {
+    layout_.request_present(&context.panel<ClothViewPanel>());
+  }
   layout_.begin_frame(menu_height);
   presentation_->clear();
   if (layout_.presented() != nullptr) {

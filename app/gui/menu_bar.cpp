@@ -11,6 +11,7 @@
 #include "app/gui/panels/intro_window.hpp"
 #include "app/gui/panels/parameters_panel.hpp"
 #include "app/gui/panels/stats_overlay.hpp"
+#include "app/gui/presentation_bar.hpp"
 
 namespace foldlab::gui {
 
@@ -47,7 +48,8 @@ float MenuBar::draw(PanelContext& context) {
         ImGui::MenuItem("Reset layout")) {
       layout_.reset();
     }
-    if (layout_.presented() != nullptr) {
+    // On a phone the views are switched under the read-out: there are no tiles to go back to.
+    if (layout_.presented() != nullptr && !shows_one_view()) {
       presenting_items(context);
     }
     ImGui::EndMainMenuBar();
@@ -141,8 +143,9 @@ void MenuBar::view_menu(PanelContext& context) {
       }
     }
   };
+  // On a phone the views are the buttons under the read-out, and there are no tiles.
   if (layout_.presented()) {
-    if (ImGui::MenuItem("Back to the tiles", finger ? nullptr : "Esc")) {
+    if (!shows_one_view() && ImGui::MenuItem("Back to the tiles", finger ? nullptr : "Esc")) {
       layout_.request_present(nullptr);
     }
   } else if (finger) {

@@ -20,6 +20,8 @@ Checks (each its own ctest):
   fingers   with a touch screen the hints speak of fingers (a played script reads the drawn
             words), every slider is 44 CSS px tall, a drag four slider heights away from a slider
             moves it a quarter as far, and two fingers scroll a panel
+  phone     at 390 x 844 CSS px (ratio 3) with touch: one view at a time, switched by the row of
+            views under the read-out; no "Back to the tiles"
   scheme    the theme follows the browser's prefers-color-scheme and the text size its default
             font size, with no stored session
   layout    a tile resized with the mouse (the fold plot's grip) is where it was after a reload
@@ -127,7 +129,7 @@ class DevTools:
 class Page:
     """A served site and one headless Chromium showing it."""
 
-    def __init__(self, args, root, query, flags=(), play_dir=None, touch=False):
+    def __init__(self, args, root, query, flags=(), play_dir=None, touch=False, metrics=None):
         self.root = root
         serve = os.path.join(root, "serve")
         os.makedirs(serve, exist_ok=True)
@@ -161,6 +163,11 @@ class Page:
         if touch:
             # A touch screen from the first frame: (pointer: coarse) holds before the page starts.
             self.tools.send("Emulation.setTouchEmulationEnabled", enabled=True, maxTouchPoints=5)
+        if metrics:
+            # A phone's or tablet's screen: (width, height) in CSS px and its pixel ratio.
+            width, height, ratio = metrics
+            self.tools.send("Emulation.setDeviceMetricsOverride", width=width, height=height,
+                            deviceScaleFactor=ratio, mobile=True)
         self.tools.send("Page.navigate", url=self.url)
 
     def close(self):
@@ -489,7 +496,8 @@ def check_touch(args, root, problems):
                         key="Enter", code="Enter")
         state = page.settle()
         check(problems, abs(state["parameters"]["t_mm"] - 0.5) < 1e-12,
-              f"typed 0.05cm into t through the keyboard's field: t is {state['parameters']['t_mm']}")
+              "typed 0.05cm into t through the keyboard's field: t is "
+              f"{state['parameters']['t_mm']}")
         focused = page.tools.evaluate("document.activeElement && document.activeElement.id")
         check(problems, focused != "foldlab-keyboard", "the keyboard's field keeps the focus")
         if args.keep_screenshots:
@@ -632,6 +640,25 @@ def check_fingers(args, root, problems):
             page.screenshot(os.path.join(args.keep_screenshots, "page-fingers.png"))
     finally:
         page.close()
+
+
+def check_phone(args, root, problems):
+    """A phone (390 x 844 CSS px, ratio 3, touch): one view at a time under the read-out, switched
+    by its row of views (a played script taps them and reads what is presented), no tiles to go
+    back to."""
+    here = os.path.dirname(os.path.abspath(__file__))
+    page = Page(args, os.path.join(root, "phone"), "?play=play/phone_views.json&report=1",
+                play_dir=here, touch=True, metrics=(390, 844, 3))
+    try:
+        page.wait_for("the played script's report", REPORT_TEXT, timeout_s=240)
+        result = json.loads(page.tools.evaluate(REPORT_TEXT))
+        if args.keep_screenshots:
+            page.screenshot(os.path.join(args.keep_screenshots, "page-phone.png"))
+    finally:
+        page.close()
+    check(problems, result.get("exit_status") == 0, f"one view at a time: {result.get('stderr')}")
+    display = (result.get("report") or {}).get("display")
+    check(problems, display == [1170, 2532], f"the phone's canvas is {display}, not 1170 x 2532")
 
 
 # WCAG 2.5.5's target size, Apple's 44 pt (docs/web.md, "The screen").
@@ -875,8 +902,8 @@ def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("--site", required=True)
     parser.add_argument("--check", required=True,
-                        choices=["dpr", "touch", "touch_first", "fingers", "scheme", "layout",
-                                 "address", "clipboard", "picture", "regime_map"])
+                        choices=["dpr", "touch", "touch_first", "fingers", "phone", "scheme",
+                                 "layout", "address", "clipboard", "picture", "regime_map"])
     parser.add_argument("--native", help="the desktop program (regime_map, picture)")
     parser.add_argument("--presets", help="the presets folder (regime_map, picture)")
     parser.add_argument("--chromium", default="chromium")
@@ -886,7 +913,7 @@ def main():
     started = time.monotonic()
     with browser_folder("foldlab_drive_") as root:
         {"dpr": check_dpr, "touch": check_touch, "touch_first": check_touch_first,
-         "fingers": check_fingers, "scheme": check_scheme,
+         "fingers": check_fingers, "phone": check_phone, "scheme": check_scheme,
          "layout": check_layout, "address": check_address, "clipboard": check_clipboard,
          "picture": check_picture,
          "regime_map": check_regime_map}[args.check](
