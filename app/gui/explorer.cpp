@@ -109,8 +109,11 @@ nlohmann::json Explorer::report() {
 }
 
 std::string Explorer::link() const {
+  // A phone's one view is its screen's, not a choice to send: a link opened on a laptop shows
+  // its tiles.
   return explorer_link(document_.edited(),
-                       {presented(), appearance_.light_theme(), appearance_.scale_percent()});
+                       {shows_one_view() ? std::string() : presented(), appearance_.light_theme(),
+                        appearance_.scale_percent()});
 }
 
 void Explorer::copy_link() {

@@ -657,8 +657,12 @@ def check_phone(args, root, problems):
     finally:
         page.close()
     check(problems, result.get("exit_status") == 0, f"one view at a time: {result.get('stderr')}")
-    display = (result.get("report") or {}).get("display")
-    check(problems, display == [1170, 2532], f"the phone's canvas is {display}, not 1170 x 2532")
+    report = result.get("report") or {}
+    check(problems, report.get("display") == [1170, 2532],
+          f"the phone's canvas is {report.get('display')}, not 1170 x 2532")
+    # The view shown is the phone's, not the fabric's: a link sent from it opens the tiles.
+    check(problems, "present=" not in (report.get("link") or "present="),
+          f"the phone's link carries its view: {report.get('link')}")
 
 
 # WCAG 2.5.5's target size, Apple's 44 pt (docs/web.md, "The screen").
