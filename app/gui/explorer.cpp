@@ -273,7 +273,8 @@ void Explorer::frame() {
       layout_.place(*panel);
     }
     panel->draw(context);
-    if (tiled) {
+    // On a phone the views are switched under the read-out, with no tiles to go back to.
+    if (tiled && !shows_one_view()) {
       layout_.present_button(*panel);
     }
   }
