@@ -1,4 +1,5 @@
 // How things read: colour contrast in both themes, wrapped text, and the fonts' Greek.
+#include "app/gui/input_words.hpp"
 #include "explorer_fixture.hpp"
 
 namespace foldlab::gui {
@@ -256,6 +257,68 @@ TEST(Contrast, TheComparedFabricsFoldsAreAnotherHueThanAs) {
     EXPECT_GT(apart(kCompareB.get(light), a.positive), 0.5f);
     EXPECT_GT(apart(kCompareBNegative.get(light), a.negative), 0.5f);
   }
+}
+
+TEST(TouchTargets, AFingersStyleMakesEveryFrameFortyFourPixelsTall) {
+  // The default style's frames are the font and 3 px above and below it: 15 + 6 = 21 px. For a
+  // finger they grow to 44 px (WCAG 2.5.5), so 14.5 px above and below 15 px of text; rows stand
+  // 8 px apart.
+  const ImGuiStyle fine = theme_style(false);
+  ASSERT_FLOAT_EQ(fine.FramePadding.y, 3.0f);
+  const ImGuiStyle touch = touch_style(fine, 15.0f, 44.0f, 8.0f);
+  EXPECT_FLOAT_EQ(touch.FramePadding.y, 14.5f);
+  EXPECT_FLOAT_EQ(15.0f + 2.0f * touch.FramePadding.y, 44.0f);
+  EXPECT_FLOAT_EQ(touch.ItemSpacing.y, 8.0f);
+  EXPECT_FLOAT_EQ(touch.FramePadding.x, fine.FramePadding.x);
+  EXPECT_FLOAT_EQ(touch.GrabMinSize, 22.0f);
+  // At 200 % text on a screen of ratio 2: 60 px of text in a target of 88 device px (44 CSS px).
+  ImGuiStyle scaled = fine;
+  scaled.ScaleAllSizes(4.0f);
+  EXPECT_FLOAT_EQ(touch_style(scaled, 60.0f, 88.0f, 16.0f).FramePadding.y, 14.0f);
+  // Text larger than the target: the style's own padding (12 px at that scale) stays.
+  EXPECT_FLOAT_EQ(touch_style(scaled, 90.0f, 88.0f, 16.0f).FramePadding.y, 12.0f);
+}
+
+TEST(HintWords, AFingersHintsNameNoMouseGestureAndTheMousesKeepTheirs) {
+  const Hint all[] = {Hint::type_value, Hint::parameters_intro, Hint::cloth_view,
+                      Hint::fold_plot,  Hint::interval_details, Hint::present_view};
+  for (const Hint hint : all) {
+    const std::string finger = hint_words(hint, true);
+    const std::string mouse = hint_words(hint, false);
+    EXPECT_FALSE(finger.empty());
+    EXPECT_NE(finger, mouse);
+    for (const char* word : {"Ctrl", "click", "right-drag", "wheel", "hover", "Esc"}) {
+      EXPECT_EQ(finger.find(word), std::string::npos) << finger << " says " << word;
+    }
+  }
+  EXPECT_EQ(std::string(hint_words(Hint::type_value, false)), "Ctrl+click a slider to type");
+  EXPECT_EQ(std::string(hint_words(Hint::type_value, true)), "long press a slider to type");
+  EXPECT_EQ(std::string(hint_words(Hint::cloth_view, false)),
+            "drag: orbit, right-drag: pan, wheel: zoom");
+  EXPECT_EQ(std::string(hint_words(Hint::fold_plot, true)),
+            "pinch: zoom, drag: pan, double tap: autoscale");
+}
+
+TEST(HintWords, FollowImGuisTouchScreenFlag) {
+  ImGuiContext* context = testing::create_headless_imgui(ImVec2(800, 600));
+  ImGuiIO& io = ImGui::GetIO();
+  io.ConfigFlags &= ~ImGuiConfigFlags_IsTouchScreen;
+  EXPECT_EQ(std::string(hint_words(Hint::type_value)), "Ctrl+click a slider to type");
+  io.ConfigFlags |= ImGuiConfigFlags_IsTouchScreen;
+  EXPECT_EQ(std::string(hint_words(Hint::type_value)), "long press a slider to type");
+  ImGui::DestroyContext(context);
+}
+
+TEST(FingerDrag, IsWholeNearTheSliderAndSlowerTheFartherTheFingerStrays) {
+  // A slider 44 px tall: within 44 px of its middle the finger's whole movement; at 88 px half,
+  // at 176 px a quarter; never below the tenth of the mouse's Shift drag.
+  EXPECT_DOUBLE_EQ(finger_drag_speed(0.0f, 44.0f, 0.1), 1.0);
+  EXPECT_DOUBLE_EQ(finger_drag_speed(30.0f, 44.0f, 0.1), 1.0);
+  EXPECT_DOUBLE_EQ(finger_drag_speed(44.0f, 44.0f, 0.1), 1.0);
+  EXPECT_DOUBLE_EQ(finger_drag_speed(88.0f, 44.0f, 0.1), 0.5);
+  EXPECT_DOUBLE_EQ(finger_drag_speed(176.0f, 44.0f, 0.1), 0.25);
+  EXPECT_DOUBLE_EQ(finger_drag_speed(1000.0f, 44.0f, 0.1), 0.1);
+  EXPECT_DOUBLE_EQ(finger_drag_speed(NAN, 44.0f, 0.1), 1.0);
 }
 
 }  // namespace

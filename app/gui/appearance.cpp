@@ -161,9 +161,18 @@ void Appearance::set_pixel_ratio(float ratio) {
   pixel_ratio_ = std::isfinite(ratio) ? std::clamp(ratio, kMinPixelRatio, kMaxPixelRatio) : 1.0f;
 }
 
+ImGuiStyle touch_style(ImGuiStyle style, float font_px, float target_px, float gap_px) {
+  style.FramePadding.y = std::max(style.FramePadding.y, 0.5f * (target_px - font_px));
+  style.ItemSpacing.y = std::max(style.ItemSpacing.y, gap_px);
+  // A slider's handle as wide as a fingertip's contact is seen, the scrollbars as wide as a
+  // target is tall.
+  style.GrabMinSize = std::max(style.GrabMinSize, 0.5f * target_px);
+  style.ScrollbarSize = std::max(style.ScrollbarSize, 0.5f * target_px);
+  return style;
+}
+
 void Appearance::apply(Renderer& renderer) {
-  if (applied_ && applied_scale_percent_ == scale_percent_ &&
-      applied_light_theme_ == light_theme_ && applied_pixel_ratio_ == pixel_ratio_) {
+  if (!pending()) {
     return;
   }
   const float scale = static_cast<float>(scale_percent_) / 100.0f * pixel_ratio_;
@@ -178,12 +187,26 @@ void Appearance::apply(Renderer& renderer) {
   io.FontGlobalScale = 1.0f;
   ImGuiStyle style = theme_style(light_theme_);
   style.ScaleAllSizes(scale);
+  // A double click's two clicks land within this (ImGui's 6 px): a finger's second tap lands
+  // wider, and the screen's pixels are device pixels.
+  constexpr float kMouseDoubleClickPx = 6.0f;
+  constexpr float kFingerDoubleTapPx = 24.0f;
+  if (coarse_pointer_) {
+    style = touch_style(style, kUiFontPx * scale, kTouchTargetPx * pixel_ratio_,
+                        kTouchRowGapPx * pixel_ratio_);
+    io.ConfigFlags |= ImGuiConfigFlags_IsTouchScreen;
+    io.MouseDoubleClickMaxDist = kFingerDoubleTapPx * pixel_ratio_;
+  } else {
+    io.ConfigFlags &= ~ImGuiConfigFlags_IsTouchScreen;
+    io.MouseDoubleClickMaxDist = kMouseDoubleClickPx * pixel_ratio_;
+  }
   ImGui::GetStyle() = style;
   renderer.fonts_changed();
   applied_ = true;
   applied_scale_percent_ = scale_percent_;
   applied_light_theme_ = light_theme_;
   applied_pixel_ratio_ = pixel_ratio_;
+  applied_coarse_pointer_ = coarse_pointer_;
 }
 
 void Appearance::handle_shortcuts() {

@@ -31,6 +31,14 @@ inline constexpr float kUiFontPx = 15.0f;
 // built-in font when that is empty or cannot be read (then false).
 bool add_ui_font(ImFontAtlas& atlas, const std::filesystem::path& font_file, float scale);
 
+// The least height of a target for a finger, in CSS pixels (WCAG 2.5.5's 44 px, Apple's 44 pt;
+// Android asks 48 dp), and the least gap between two rows of targets.
+inline constexpr float kTouchTargetPx = 44.0f;
+inline constexpr float kTouchRowGapPx = 8.0f;
+// A style for fingers: frames (sliders, buttons, checkboxes, combos) grown to `target_px` tall
+// with text of `font_px`, and rows `gap_px` apart at least; all in the style's own pixels.
+ImGuiStyle touch_style(ImGuiStyle style, float font_px, float target_px, float gap_px);
+
 inline constexpr int kMinUiScalePercent = 100;
 inline constexpr int kMaxUiScalePercent = 250;
 inline constexpr int kUiScaleStepPercent = 10;
@@ -130,13 +138,21 @@ class Appearance {
   // apply(); kept within 0.25-8.
   void set_pixel_ratio(float ratio);
   float pixel_ratio() const { return pixel_ratio_; }
+  // Whether the explorer is worked with fingers (the page's coarse pointer; never on the
+  // desktop): then every frame, checkbox and slider is at least kTouchTargetPx tall, rows stand
+  // further apart, a double tap may land a finger's width from the first tap, the hints speak
+  // of fingers (hint_words: ImGuiConfigFlags_IsTouchScreen) and a slider's drag is finer the
+  // farther the finger is from it. Takes effect at the next apply().
+  void set_coarse_pointer(bool coarse) { coarse_pointer_ = coarse; }
+  bool coarse_pointer() const { return coarse_pointer_; }
   // Rebuilds the fonts and the style if a request changed them (or on the first call).
   void apply(Renderer& renderer);
   // A request that the next apply() will build: the frame just drawn is laid out with the old
   // fonts.
   bool pending() const {
     return !applied_ || applied_scale_percent_ != scale_percent_ ||
-           applied_light_theme_ != light_theme_ || applied_pixel_ratio_ != pixel_ratio_;
+           applied_light_theme_ != light_theme_ || applied_pixel_ratio_ != pixel_ratio_ ||
+           applied_coarse_pointer_ != coarse_pointer_;
   }
   // Ctrl + / Ctrl - / Ctrl 0 within a frame: requests the new scale.
   void handle_shortcuts();
@@ -151,6 +167,8 @@ class Appearance {
   float pixel_ratio_ = 1.0f;
   bool applied_ = false;
   float applied_pixel_ratio_ = 1.0f;
+  bool coarse_pointer_ = false;
+  bool applied_coarse_pointer_ = false;
   int applied_scale_percent_ = 0;
   bool applied_light_theme_ = false;
   std::string notice_;

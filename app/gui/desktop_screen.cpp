@@ -11,7 +11,11 @@ ScreenPreferences screen_preferences() {
   return {};
 }
 
-void screen_wants_text_input(bool /*wanted*/) {}
+bool screen_pointer_is_coarse() {
+  return false;
+}
+
+void screen_wants_text_input(bool /*wanted*/, bool /*number*/) {}
 
 void screen_shares_clipboard() {}
 

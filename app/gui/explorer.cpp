@@ -11,6 +11,7 @@
 #include "app/gui/file_transfer.hpp"
 #include "app/gui/menu_bar.hpp"
 #include "app/gui/panel_list.hpp"
+#include "app/gui/panels/cloth_view_panel.hpp"
 #include "app/gui/panels/file_dialog.hpp"
 #include "app/gui/presentation_bar.hpp"
 #include "app/gui/session.hpp"
@@ -108,8 +109,11 @@ nlohmann::json Explorer::report() {
 }
 
 std::string Explorer::link() const {
+  // A phone's one view is its screen's, not a choice to send: a link opened on a laptop shows
+  // its tiles.
   return explorer_link(document_.edited(),
-                       {presented(), appearance_.light_theme(), appearance_.scale_percent()});
+                       {shows_one_view() ? std::string() : presented(), appearance_.light_theme(),
+                        appearance_.scale_percent()});
 }
 
 void Explorer::copy_link() {
@@ -252,6 +256,9 @@ void Explorer::frame() {
   handle_undo_keys();
   handle_escape();
   const float menu_height = menu_->draw(context);
+  if (shows_one_view() && layout_.presented() == nullptr) {
+    layout_.request_present(&context.panel<ClothViewPanel>());
+  }
   layout_.begin_frame(menu_height);
   presentation_->clear();
   if (layout_.presented() != nullptr) {
@@ -266,7 +273,8 @@ void Explorer::frame() {
       layout_.place(*panel);
     }
     panel->draw(context);
-    if (presentable) {
+    // On a phone the views are switched under the read-out, with no tiles to go back to.
+    if (presentable && !shows_one_view()) {
       layout_.present_button(*panel);
     }
   }

@@ -15,6 +15,7 @@
 #include <emscripten/emscripten.h>
 #endif
 #include <imgui.h>
+#include <imgui_internal.h>  // TempInputId: whether the typed field is a slider's value
 
 #include "app/common/presets_dir.hpp"
 #include "app/gui/background_job.hpp"
@@ -389,12 +390,16 @@ class ExplorerRun {
     }
     // The page's zoom or a move to another screen changes the ratio between frames.
     explorer_->appearance().set_pixel_ratio(screen_pixel_ratio());
+    explorer_->appearance().set_coarse_pointer(screen_pointer_is_coarse());
     if (!draw_frame(surface_, *renderer_, *explorer_, *script_, times_,
                     layout_ ? &*layout_ : nullptr, frame_)) {
       return false;
     }
     after_input_.frame_drawn(frame_saw_input(ImGui::GetIO()));
-    screen_wants_text_input(ImGui::GetIO().WantTextInput);
+    // A slider's typed value is ImGui's temporary input over the slider, and takes a number.
+    const ImGuiContext& g = *ImGui::GetCurrentContext();
+    screen_wants_text_input(ImGui::GetIO().WantTextInput,
+                            g.TempInputId != 0 && g.TempInputId == g.ActiveId);
     if (const std::optional<std::string> problem = config_->keep(config_dir())) {
       explorer_->add_notice(*problem);
     }

@@ -290,7 +290,8 @@ json explorer_state_json(Explorer& explorer) {
       {"appearance",
        {{"scale_percent", explorer.appearance().scale_percent()},
         {"light_theme", explorer.appearance().light_theme()},
-        {"pixel_ratio", explorer.appearance().pixel_ratio()}}},
+        {"pixel_ratio", explorer.appearance().pixel_ratio()},
+        {"coarse_pointer", explorer.appearance().coarse_pointer()}}},
   });
   return state;
 }

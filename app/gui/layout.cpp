@@ -2,6 +2,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "app/gui/input_words.hpp"
 #include "core/model/text_format.hpp"
 
 #include <algorithm>
@@ -176,9 +177,7 @@ void Layout::present_button(const Panel& panel) {
   ImGui::SetCursorScreenPos(cursor);
   window->DC.CursorMaxPos = cursor_max;
   if (hovered) {
-    ImGui::SetTooltip(presented ? "Back to the tiles (Esc)"
-                                : "Fill the window with this view (or double-click its title); "
-                                  "Esc returns");
+    ImGui::SetTooltip("%s", presented ? "Back to the tiles (Esc)" : hint_words(Hint::present_view));
   }
   // As ImGui tells a double-click on a title from one on an item in it.
   const ImGuiContext& g = *ImGui::GetCurrentContext();

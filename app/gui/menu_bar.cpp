@@ -11,12 +11,21 @@
 #include "app/gui/panels/intro_window.hpp"
 #include "app/gui/panels/parameters_panel.hpp"
 #include "app/gui/panels/stats_overlay.hpp"
+#include "app/gui/presentation_bar.hpp"
 
 namespace foldlab::gui {
 
 float MenuBar::draw(PanelContext& context) {
   export_.new_frame();
   float height = 0.0f;
+  // A menu's rows are its text and the item spacing tall: for a finger, as tall as a target
+  // (touch_style has made the frames so, and the menu bar is one).
+  const bool finger = (ImGui::GetIO().ConfigFlags & ImGuiConfigFlags_IsTouchScreen) != 0;
+  if (finger) {
+    ImGui::PushStyleVar(
+        ImGuiStyleVar_ItemSpacing,
+        ImVec2(ImGui::GetStyle().ItemSpacing.x, ImGui::GetFrameHeight() - ImGui::GetFontSize()));
+  }
   if (ImGui::BeginMainMenuBar()) {
     height = ImGui::GetWindowHeight();
     if (ImGui::BeginMenu("View")) {
@@ -39,10 +48,14 @@ float MenuBar::draw(PanelContext& context) {
         ImGui::MenuItem("Reset layout")) {
       layout_.reset();
     }
-    if (layout_.presented() != nullptr) {
+    // On a phone the views are switched under the read-out: there are no tiles to go back to.
+    if (layout_.presented() != nullptr && !shows_one_view()) {
       presenting_items(context);
     }
     ImGui::EndMainMenuBar();
+  }
+  if (finger) {
+    ImGui::PopStyleVar();
   }
   return height;
 }
@@ -80,28 +93,44 @@ void MenuBar::export_items(PanelContext& context) {
   }
 }
 
-// The UI scale and theme, for a projector, beside the shortcuts that do the same.
+// The UI scale and theme, for a projector, beside the shortcuts that do the same. For a finger
+// no submenu: where there is no room beside this menu (a phone) one opens over it, under the
+// finger that opened it, whose lift then picks whatever lies there (a quick tap presented the
+// Parameters). The text sizes are a row of buttons and the views to present rows of this menu.
 void MenuBar::view_menu(PanelContext& context) {
+  const bool finger = (ImGui::GetIO().ConfigFlags & ImGuiConfigFlags_IsTouchScreen) != 0;
   int percent = appearance_.scale_percent();
   bool light = appearance_.light_theme();
   ImGui::Text("UI scale %d %%", percent);
-  if (ImGui::MenuItem("Larger text", "Ctrl +", false, percent < kMaxUiScalePercent)) {
-    percent += kUiScaleStepPercent;
-  }
-  if (ImGui::MenuItem("Smaller text", "Ctrl -", false, percent > kMinUiScalePercent)) {
-    percent -= kUiScaleStepPercent;
-  }
-  if (ImGui::MenuItem("Default size", "Ctrl 0", false, percent != kMinUiScalePercent)) {
-    percent = kMinUiScalePercent;
-  }
   // The sizes a room needs, in one move rather than ten presses of Ctrl +.
-  if (ImGui::BeginMenu("Text size")) {
-    for (const int choice : {100, 125, 150, 200}) {
-      if (ImGui::MenuItem((std::to_string(choice) + " %").c_str(), nullptr, percent == choice)) {
+  constexpr int kTextSizes[] = {100, 125, 150, 200};
+  if (finger) {
+    for (const int choice : kTextSizes) {
+      ImGui::SameLine();
+      ImGui::BeginDisabled(percent == choice);
+      if (ImGui::Button((std::to_string(choice) + " %").c_str())) {
         percent = choice;
       }
+      ImGui::EndDisabled();
     }
-    ImGui::EndMenu();
+  } else {
+    if (ImGui::MenuItem("Larger text", "Ctrl +", false, percent < kMaxUiScalePercent)) {
+      percent += kUiScaleStepPercent;
+    }
+    if (ImGui::MenuItem("Smaller text", "Ctrl -", false, percent > kMinUiScalePercent)) {
+      percent -= kUiScaleStepPercent;
+    }
+    if (ImGui::MenuItem("Default size", "Ctrl 0", false, percent != kMinUiScalePercent)) {
+      percent = kMinUiScalePercent;
+    }
+    if (ImGui::BeginMenu("Text size")) {
+      for (const int choice : kTextSizes) {
+        if (ImGui::MenuItem((std::to_string(choice) + " %").c_str(), nullptr, percent == choice)) {
+          percent = choice;
+        }
+      }
+      ImGui::EndMenu();
+    }
   }
   ImGui::MenuItem("Light theme", nullptr, &light);
   appearance_.request(percent, light);
@@ -113,22 +142,26 @@ void MenuBar::view_menu(PanelContext& context) {
       ImGui::MenuItem(panel->name(), nullptr, open);
     }
   }
-  if (layout_.presented()) {
-    if (ImGui::MenuItem("Back to the tiles", "Esc")) {
-      layout_.request_present(nullptr);
-    }
-  } else if (ImGui::BeginMenu("Present (fill the window)")) {
+  const auto present_items = [&] {
     for (const std::unique_ptr<Panel>& panel : context.panels) {
       if (Layout::presentable(*panel) && ImGui::MenuItem(panel->name())) {
         layout_.request_present(panel.get());
       }
     }
-    ImGui::EndMenu();
-  }
-  for (const std::unique_ptr<Panel>& panel : context.panels) {
-    if (bool* open = panel->open_flag()) {
-      ImGui::MenuItem(panel->name(), nullptr, open);
+  };
+  // On a phone the views are the buttons under the read-out, and there are no tiles.
+  if (layout_.presented()) {
+    if (!shows_one_view() && ImGui::MenuItem("Back to the tiles", finger ? nullptr : "Esc")) {
+      layout_.request_present(nullptr);
     }
+  } else if (finger) {
+    ImGui::TextDisabled("Present (fill the screen):");
+    ImGui::Indent();
+    present_items();
+    ImGui::Unindent();
+  } else if (ImGui::BeginMenu("Present (fill the window)")) {
+    present_items();
+    ImGui::EndMenu();
   }
   if (ImGui::MenuItem(IntroWindow::kTitle)) {
     context.panel<IntroWindow>().open();

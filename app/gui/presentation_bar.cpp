@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <memory>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -53,7 +55,52 @@ void draw_headlines(const Headlines& headlines) {
   ImGui::SetWindowFontScale(1.0f);
 }
 
+// The views to switch between on a phone, named short enough for a third of its width.
+const char* short_view_name(const Panel& panel) {
+  const std::string_view key = panel.key();
+  return key == "parameters"  ? "Inputs"
+         : key == "fold_plot" ? "2D"
+         : key == "cloth"     ? "3D"
+                              : panel.name();
+}
+
+constexpr int kViewsPerRow = 3;
+
+// The views' buttons, kViewsPerRow to a row as wide as `available`: the presented one disabled.
+void view_switch(PanelContext& context, Layout& layout, float available) {
+  const float spacing = ImGui::GetStyle().ItemSpacing.x;
+  const float width = (available - (kViewsPerRow - 1) * spacing) / kViewsPerRow;
+  int shown = 0;
+  for (const std::unique_ptr<Panel>& panel : context.panels) {
+    if (!Layout::tiled(*panel)) {
+      continue;
+    }
+    if (shown % kViewsPerRow != 0) {
+      ImGui::SameLine();
+    }
+    ++shown;
+    ImGui::BeginDisabled(layout.presented() == panel.get());
+    if (ImGui::Button(short_view_name(*panel), ImVec2(width, 0.0f))) {
+      layout.request_present(panel.get());
+    }
+    ImGui::EndDisabled();
+  }
+}
+
+int view_switch_rows(const PanelContext& context) {
+  const auto views = std::count_if(context.panels.begin(), context.panels.end(),
+                                   [](const auto& panel) { return Layout::tiled(*panel); });
+  return static_cast<int>((views + kViewsPerRow - 1) / kViewsPerRow);
+}
+
 }  // namespace
+
+bool shows_one_view() {
+  constexpr float kLeastTilesWidthLines = 40.0f;
+  const ImGuiIO& io = ImGui::GetIO();
+  return (io.ConfigFlags & ImGuiConfigFlags_IsTouchScreen) != 0 &&
+         io.DisplaySize.x < kLeastTilesWidthLines * ImGui::GetFontSize();
+}
 
 // The status line under the read-out and the strip (a copied link, a refused file): the Presets
 // panel that shows it is out of sight unless it is the one presented. Under the strip, so that a
@@ -97,6 +144,11 @@ float PresentationBar::draw(PanelContext& context, float top) {
   } else if (!presents_parameters) {
     parameters.forget_slider_places();
   }
+  const bool one_view = shows_one_view();
+  if (one_view) {
+    const int rows = view_switch_rows(context);
+    text_height += static_cast<float>(rows) * (ImGui::GetFrameHeight() + style.ItemSpacing.y);
+  }
   const float height = std::ceil(text_height + 2.0f * style.WindowPadding.y);
   ImGui::SetNextWindowPos(ImVec2(0.0f, top), ImGuiCond_Always);
   ImGui::SetNextWindowSize(ImVec2(width, height), ImGuiCond_Always);
@@ -107,6 +159,9 @@ float PresentationBar::draw(PanelContext& context, float top) {
   if (ImGui::Begin(kWindow, nullptr, flags)) {
     context.renderer.fill_window_background();
     ImGui::PushTextWrapPos(0.0f);
+    if (one_view) {
+      view_switch(context, layout_, available);
+    }
     draw_headlines(headlines);
     if (strip) {
       parameters.draw_strip(context.document, context.status, available);

@@ -10,6 +10,12 @@
 
 namespace foldlab::gui {
 
+// A phone: a finger on a screen narrower than 40 lines of text are tall (600 CSS px at 100 %),
+// where six tiles squeeze into columns too narrow for their labels. Then the explorer shows one
+// view at a time, as presented, with the read-out and the inputs' strip over it and a row of the
+// views under them to switch with a thumb.
+bool shows_one_view();
+
 class PresentationBar {
  public:
   // The read-out's window ("presentation" is its key for playback's "in").

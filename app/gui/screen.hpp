@@ -21,9 +21,14 @@ struct ScreenPreferences {
 // What the user's browser prefers, read once at start; nothing on the desktop.
 ScreenPreferences screen_preferences();
 
-// Called after every frame with whether a text field has the keyboard: the page focuses a hidden
-// text field then, so that a touch screen brings up its keyboard. Nothing on the desktop.
-void screen_wants_text_input(bool wanted);
+// Whether the user points with a finger rather than a mouse: the page's `(pointer: coarse)`, or a
+// touch seen since the last press of a mouse. Never on the desktop. Asked before every frame.
+bool screen_pointer_is_coarse();
+
+// Called after every frame with whether a text field has the keyboard, and whether what it takes
+// is a number (a slider's typed value): the page focuses a hidden text field then, so that a touch
+// screen brings up its keyboard, the number keyboard for a number. Nothing on the desktop.
+void screen_wants_text_input(bool wanted, bool number);
 
 // Called once the window's ImGui backend is set up: ImGui's copy and paste (Ctrl+C, Ctrl+V in a
 // text field) reach the screen's clipboard. The desktop's GLFW gives ImGui the system's; the

@@ -1,5 +1,6 @@
-// The page's screen: the browser's devicePixelRatio, its colour scheme and default font size, and
-// the hidden text field index.html focuses so that a touch screen shows its keyboard.
+// The page's screen: the browser's devicePixelRatio, its colour scheme and default font size, its
+// pointer (a finger or a mouse), and the hidden text field index.html focuses so that a touch
+// screen shows its keyboard.
 #include <emscripten/emscripten.h>
 #include <emscripten/html5.h>
 #include <imgui.h>
@@ -35,10 +36,13 @@ EM_JS(int, page_text_percent, (), {
   return px > 0 ? Math.round(100 * px / 16) : -1;
 });
 
-EM_JS(void, page_text_input, (int wanted), {
+EM_JS(void, page_text_input, (int wanted, int number), {
   if (Module.foldlabTextInput)
-    Module.foldlabTextInput(wanted != 0);
+    Module.foldlabTextInput(wanted != 0, number != 0);
 });
+
+// index.html's judgement of the pointer: (pointer: coarse), or a touch since a mouse's last press.
+EM_JS(int, page_pointer_is_coarse, (), { return Module.foldlabCoarsePointer ? 1 : 0; });
 
 // The page's clipboard as ImGui sees it: the text of the last paste event (Ctrl+V fires one
 // before the frame that reads the keys) or of the explorer's last copy, whichever came later.
@@ -93,11 +97,16 @@ ScreenPreferences screen_preferences() {
   return preferences;
 }
 
-void screen_wants_text_input(bool wanted) {
-  static int shown = -1;  // what the page was last told
-  if (shown != (wanted ? 1 : 0)) {
-    shown = wanted ? 1 : 0;
-    page_text_input(shown);
+bool screen_pointer_is_coarse() {
+  return page_pointer_is_coarse() != 0;
+}
+
+void screen_wants_text_input(bool wanted, bool number) {
+  static int shown = -1;  // what the page was last told: 0 none, 1 text, 2 a number
+  const int asked = wanted ? (number ? 2 : 1) : 0;
+  if (shown != asked) {
+    shown = asked;
+    page_text_input(wanted ? 1 : 0, number ? 1 : 0);
   }
 }
 

@@ -12,7 +12,16 @@ Checks (each its own ctest):
             a wheel notch zooming the 3D view one step
   touch     a tap on a slider focuses it; a one-finger drag moves a slider and orbits the 3D view; a
             two-finger pinch zooms it by the pinch's ratio; holding a finger on a slider opens its
-            typed value with the on-screen keyboard's field focused, and typed text arrives
+            typed value with the on-screen keyboard's field focused (asking for the number
+            keyboard), and typed text arrives
+  touch_first  a touch never jumps from where the last one was: a tap on the 3D view after one
+            elsewhere leaves its camera, a tap on the fold plot its ranges; two equal swipes turn
+            the cloth equally; a pinch after another touch zooms and does not turn
+  fingers   with a touch screen the hints speak of fingers (a played script reads the drawn
+            words), every slider is 44 CSS px tall, a drag four slider heights away from a slider
+            moves it a quarter as far, and two fingers scroll a panel
+  phone     at 390 x 844 CSS px (ratio 3) with touch: one view at a time, switched by the row of
+            views under the read-out; no "Back to the tiles"
   scheme    the theme follows the browser's prefers-color-scheme and the text size its default
             font size, with no stored session
   layout    a tile resized with the mouse (the fold plot's grip) is where it was after a reload
@@ -120,7 +129,7 @@ class DevTools:
 class Page:
     """A served site and one headless Chromium showing it."""
 
-    def __init__(self, args, root, query, flags=(), play_dir=None):
+    def __init__(self, args, root, query, flags=(), play_dir=None, touch=False, metrics=None):
         self.root = root
         serve = os.path.join(root, "serve")
         os.makedirs(serve, exist_ok=True)
@@ -151,6 +160,14 @@ class Page:
         page = next(t for t in targets if t["type"] == "page")
         self.tools = DevTools(page["webSocketDebuggerUrl"])
         self.tools.send("Page.enable")
+        if touch:
+            # A touch screen from the first frame: (pointer: coarse) holds before the page starts.
+            self.tools.send("Emulation.setTouchEmulationEnabled", enabled=True, maxTouchPoints=5)
+        if metrics:
+            # A phone's or tablet's screen: (width, height) in CSS px and its pixel ratio.
+            width, height, ratio = metrics
+            self.tools.send("Emulation.setDeviceMetricsOverride", width=width, height=height,
+                            deviceScaleFactor=ratio, mobile=True)
         self.tools.send("Page.navigate", url=self.url)
 
     def close(self):
@@ -273,6 +290,21 @@ class Page:
                         touchPoints=[{"x": x, "y": y, "id": i} for i, (x, y) in enumerate(points)])
         return stamp
 
+    def tap(self, x, y):
+        """A finger down and up 50 ms later at (x, y), and the page settled."""
+        down_s = self.touch("touchStart", [(x, y)])
+        self.touch("touchEnd", [], down_s + 0.05)
+        return self.settle()
+
+    def swipe(self, points):
+        """A finger down at the first point and through the others, 30 ms apart, then up."""
+        down_s = self.touch("touchStart", [points[0]])
+        for step, point in enumerate(points[1:], 1):
+            self.touch("touchMove", [point], down_s + 0.03 * step)
+            self.settle(1)
+        self.touch("touchEnd", [], down_s + 0.03 * len(points))
+        return self.settle()
+
     def screenshot(self, path, clip=None):
         """The page as a PNG (device pixels); `clip` (x, y, w, h) in CSS pixels: that part."""
         extra = {}
@@ -388,20 +420,21 @@ def check_dpr(args, root, problems):
 
 
 def check_touch(args, root, problems):
-    page = Page(args, os.path.join(root, "touch"), QUERY)
+    # A touch screen from the start: its sliders a finger's height tall, which leaves t, E and w
+    # in sight in the Parameters panel at this size (h and L below them, scrolled away).
+    page = Page(args, os.path.join(root, "touch"), QUERY, touch=True)
     try:
-        page.tools.send("Emulation.setTouchEmulationEnabled", enabled=True, maxTouchPoints=5)
         state = ready(page)
         # A tap is a click: on a slider it takes the focus and leaves the value.
-        x, y = slider_css(state, "h", 1, 0.75)
-        h_before = state["parameters"]["h_mm"]
+        x, y = slider_css(state, "t", 1, 0.75)
+        t_before = state["parameters"]["t_mm"]
         # The finger lifts 50 ms after it touched, whenever the page gets to either event.
         down_s = page.touch("touchStart", [(x, y)])
         page.touch("touchEnd", [], down_s + 0.05)
         state = page.settle()
-        check(problems, state["parameters"]["h_mm"] == h_before,
-              f"a tap at 3/4 of the h slider moved h to {state['parameters']['h_mm']} "
-              f"(was {h_before})")
+        check(problems, state["parameters"]["t_mm"] == t_before,
+              f"a tap at 3/4 of the t slider moved t to {state['parameters']['t_mm']} "
+              f"(was {t_before})")
         # A one-finger drag on a slider drags it. Every move is longer than the page's still
         # finger (10 px), so that a slow machine's frames cannot turn the drag into a long press.
         x, y = slider_css(state, "w", 1)
@@ -438,10 +471,10 @@ def check_touch(args, root, problems):
         ratio = state["camera"]["distance_mm"] / distance_before
         check(problems, abs(ratio - 0.5) < 0.02,
               f"a pinch from 60 to 120 px left the distance at {ratio:.3f} of what it was, not 0.5")
-        # Holding a finger on the h slider opens its typed value; the keyboard's field has focus
+        # Holding a finger on the t slider opens its typed value; the keyboard's field has focus
         # and what the keyboard types (an IME's text, no key events) replaces the value's text,
         # which the field opens selected.
-        x, y = slider_css(state, "h", 1)
+        x, y = slider_css(state, "t", 1)
         page.touch("touchStart", [(x, y)])
         # The finger stays down until the page has turned it into a Ctrl+click (its timer, then
         # frames): on a busy machine the lift could otherwise reach the page before the timer.
@@ -451,22 +484,189 @@ def check_touch(args, root, problems):
         page.settle()
         focused = page.tools.evaluate("document.activeElement && document.activeElement.id")
         check(problems, focused == "foldlab-keyboard",
-              f"after a long press on h the focus is on {focused!r}, not the keyboard's field")
-        page.tools.send("Input.insertText", text="1.5m")
+              f"after a long press on t the focus is on {focused!r}, not the keyboard's field")
+        mode = page.tools.evaluate("document.getElementById('foldlab-keyboard').inputMode")
+        check(problems, mode == "decimal",
+              f"a slider's typed value asks for the {mode!r} keyboard, not the number keyboard")
+        page.tools.send("Input.insertText", text="0.05cm")
         page.settle(6)
         page.tools.send("Input.dispatchKeyEvent", type="rawKeyDown", windowsVirtualKeyCode=13,
                         key="Enter", code="Enter")
         page.tools.send("Input.dispatchKeyEvent", type="keyUp", windowsVirtualKeyCode=13,
                         key="Enter", code="Enter")
         state = page.settle()
-        check(problems, state["parameters"]["h_mm"] == 1500,
-              f"typed 1.5m into h through the keyboard's field: h is {state['parameters']['h_mm']}")
+        check(problems, abs(state["parameters"]["t_mm"] - 0.5) < 1e-12,
+              "typed 0.05cm into t through the keyboard's field: t is "
+              f"{state['parameters']['t_mm']}")
         focused = page.tools.evaluate("document.activeElement && document.activeElement.id")
         check(problems, focused != "foldlab-keyboard", "the keyboard's field keeps the focus")
         if args.keep_screenshots:
             page.screenshot(os.path.join(args.keep_screenshots, "page-touch.png"))
     finally:
         page.close()
+
+
+def camera_of(state):
+    return tuple(state["camera"][key] for key in ("yaw_rad", "pitch_rad", "distance_mm"))
+
+
+def check_touch_first(args, root, problems):
+    """A touch starts where the finger is: the explorer sees the pointer there a frame before the
+    press, so no view turns or pans by the way from the last touch to this one."""
+    page = Page(args, os.path.join(root, "touch_first"), QUERY, touch=True)
+    try:
+        state = ready(page)
+        check(problems, state["appearance"]["coarse_pointer"],
+              "with touch emulation the explorer does not take the pointer for a finger")
+        cx, cy = panel_centre_css(state, "cloth", 1)
+        # A tap on a slider (it takes the focus and leaves the value), then one on the 3D view,
+        # far from it: the camera stays. (Sliders a finger's height tall leave t, E and w in
+        # sight at this size.)
+        state = page.tap(*slider_css(state, "t", 1))
+        before = camera_of(state)
+        state = page.tap(cx, cy)
+        check(problems, camera_of(state) == before,
+              f"a tap on the 3D view after one on the t slider moved the camera from "
+              f"(yaw, pitch, distance) {before} to {camera_of(state)}")
+        # A tap on a slider, then one on the fold plot: its ranges stay, still following the data.
+        state = page.tap(*slider_css(state, "E", 1))
+        plot_before = state["fold_plot"]
+        px, py = panel_centre_css(state, "fold_plot", 1)
+        state = page.tap(px, py)
+        plot_after = state["fold_plot"]
+        check(problems, plot_after["x_auto"] and plot_after["y_auto"] and all(
+            abs(a - b) <= 1e-9 * max(1.0, abs(b))
+            for key in ("x_mm", "y_mm") for a, b in zip(plot_after[key], plot_before[key])),
+              f"a tap on the fold plot after one on the E slider moved its ranges from "
+              f"{plot_before} to {plot_after}")
+        # Two equal swipes of 24 px from one spot turn the cloth equally (the second used to
+        # jump back to its start first and turn nothing).
+        turns = []
+        for _ in range(2):
+            yaw_before = state["camera"]["yaw_rad"]
+            state = page.swipe([(cx, cy), (cx + 12, cy), (cx + 24, cy)])
+            turns.append(state["camera"]["yaw_rad"] - yaw_before)
+        check(problems, abs(turns[0]) > 0.05 and abs(turns[1] - turns[0]) <= 1e-3 * abs(turns[0]),
+              f"two equal 24 px swipes turned the cloth by {turns[0]:.5f} and {turns[1]:.5f} rad")
+        # A pinch after another touch, its fingers landing one after the other and spreading from
+        # 60 to 120 px apart about their midpoint: the view comes twice as close and does not turn.
+        state = page.tap(*slider_css(state, "w", 1))
+        before = camera_of(state)
+        down_s = page.touch("touchStart", [(cx - 30, cy)])
+        page.touch("touchStart", [(cx - 30, cy), (cx + 30, cy)], down_s + 0.02)
+        for step in range(1, 7):
+            page.touch("touchMove", [(cx - 30 - 5 * step, cy), (cx + 30 + 5 * step, cy)],
+                       down_s + 0.02 + 0.03 * step)
+            page.settle(1)
+        page.touch("touchEnd", [], down_s + 0.25)
+        state = page.settle()
+        after = camera_of(state)
+        check(problems, after[:2] == before[:2],
+              f"a pinch turned the view: (yaw, pitch) {before[:2]} became {after[:2]}")
+        check(problems, abs(after[2] / before[2] - 0.5) < 0.02,
+              f"a pinch from 60 to 120 px left the distance at {after[2] / before[2]:.3f} of "
+              "what it was, not 0.5")
+        if args.keep_screenshots:
+            page.screenshot(os.path.join(args.keep_screenshots, "page-touch-first.png"))
+    finally:
+        page.close()
+
+
+def check_fingers(args, root, problems):
+    """On a touch screen: the hints speak of fingers, every slider is a finger's target tall, a
+    drag away from a slider makes finer changes, and two fingers scroll a panel."""
+    here = os.path.dirname(os.path.abspath(__file__))
+    # The words as drawn, read by a played script (its `visible` and `absent` steps).
+    # The default preset (eq. 7 calibrated): with the paper's own eq. 7 in use the panel says so
+    # where it otherwise says how to type a value.
+    page = Page(args, os.path.join(root, "words"), "?play=play/touch_words.json&report=1",
+                play_dir=here, touch=True)
+    try:
+        page.wait_for("the played script's report", REPORT_TEXT, timeout_s=240)
+        result = json.loads(page.tools.evaluate(REPORT_TEXT))
+        if args.keep_screenshots:
+            page.screenshot(os.path.join(args.keep_screenshots, "page-fingers-words.png"))
+    finally:
+        page.close()
+    check(problems, result.get("exit_status") == 0,
+          f"the words for fingers: {result.get('stderr')}")
+    report = result.get("report") or {}
+    for key, slider in (report.get("sliders") or {}).items():
+        height = slider["bottom"] - slider["top"]
+        check(problems, height >= TOUCH_TARGET_PX - 0.5,
+              f"the {key} slider is {height} CSS px tall, less than a finger's {TOUCH_TARGET_PX}")
+    check(problems, len(report.get("sliders") or {}) >= 6,
+          f"the report shows {len(report.get('sliders') or {})} sliders, not the six")
+
+    page = Page(args, os.path.join(root, "fingers"), QUERY, touch=True)
+    try:
+        state = ready(page)
+        # The same 36 px to the right, once along the w slider and once with the finger four
+        # slider heights below (or above) it: the second moves the handle a quarter as far.
+        slider = state["sliders"]["w"]
+        height = slider["bottom"] - slider["top"]
+        x, y = slider_css(state, "w", 1)
+        room_below = state["display"][1] - (y + 4 * height)
+        away = 4 * height if room_below > height else -4 * height
+        moved = []
+        for offset in (0.0, away):
+            start = state["sliders"]["w"]["fraction"]
+            x, y = slider_css(state, "w", 1)
+            path = [(x, y)] + [(x, y + offset * k / 4) for k in range(1, 5)] if offset else [(x, y)]
+            path += [(x + 12 * k, y + offset) for k in range(1, 4)]
+            state = page.swipe(path)
+            moved.append(state["sliders"]["w"]["fraction"] - start)
+        check(problems, moved[0] > 0.05 and abs(moved[1] / moved[0] - 0.25) < 0.05,
+              f"36 px along the w slider moved it {moved[0]:.4f} of its width, and four slider "
+              f"heights away {moved[1]:.4f}, not a quarter of that")
+        # Two fingers moving up 90 px together over the Parameters panel scroll it by as much: the
+        # t slider (its top) comes 90 px higher, and the 3D view does not zoom.
+        top_before = state["sliders"]["t"]["top"]
+        distance_before = state["camera"]["distance_mm"]
+        px, py = panel_centre_css(state, "parameters", 1)
+        down_s = page.touch("touchStart", [(px - 30, py), (px + 30, py)])
+        for step in range(1, 4):
+            page.touch("touchMove", [(px - 30, py - 30 * step), (px + 30, py - 30 * step)],
+                       down_s + 0.03 * step)
+            page.settle(1)
+        page.touch("touchEnd", [], down_s + 0.12)
+        state = page.settle()
+        scrolled = top_before - state["sliders"]["t"]["top"]
+        check(problems, abs(scrolled - 90) <= 9,
+              f"two fingers moving 90 px up over the Parameters panel scrolled it {scrolled} px")
+        check(problems, state["camera"]["distance_mm"] == distance_before,
+              "two fingers over the Parameters panel zoomed the 3D view")
+        if args.keep_screenshots:
+            page.screenshot(os.path.join(args.keep_screenshots, "page-fingers.png"))
+    finally:
+        page.close()
+
+
+def check_phone(args, root, problems):
+    """A phone (390 x 844 CSS px, ratio 3, touch): one view at a time under the read-out, switched
+    by its row of views (a played script taps them and reads what is presented), no tiles to go
+    back to."""
+    here = os.path.dirname(os.path.abspath(__file__))
+    page = Page(args, os.path.join(root, "phone"), "?play=play/phone_views.json&report=1",
+                play_dir=here, touch=True, metrics=(390, 844, 3))
+    try:
+        page.wait_for("the played script's report", REPORT_TEXT, timeout_s=240)
+        result = json.loads(page.tools.evaluate(REPORT_TEXT))
+        if args.keep_screenshots:
+            page.screenshot(os.path.join(args.keep_screenshots, "page-phone.png"))
+    finally:
+        page.close()
+    check(problems, result.get("exit_status") == 0, f"one view at a time: {result.get('stderr')}")
+    report = result.get("report") or {}
+    check(problems, report.get("display") == [1170, 2532],
+          f"the phone's canvas is {report.get('display')}, not 1170 x 2532")
+    # The view shown is the phone's, not the fabric's: a link sent from it opens the tiles.
+    check(problems, "present=" not in (report.get("link") or "present="),
+          f"the phone's link carries its view: {report.get('link')}")
+
+
+# WCAG 2.5.5's target size, Apple's 44 pt (docs/web.md, "The screen").
+TOUCH_TARGET_PX = 44
 
 
 def check_scheme(args, root, problems):
@@ -706,8 +906,8 @@ def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("--site", required=True)
     parser.add_argument("--check", required=True,
-                        choices=["dpr", "touch", "scheme", "layout", "address", "clipboard", "picture",
-                                 "regime_map"])
+                        choices=["dpr", "touch", "touch_first", "fingers", "phone", "scheme",
+                                 "layout", "address", "clipboard", "picture", "regime_map"])
     parser.add_argument("--native", help="the desktop program (regime_map, picture)")
     parser.add_argument("--presets", help="the presets folder (regime_map, picture)")
     parser.add_argument("--chromium", default="chromium")
@@ -716,7 +916,8 @@ def main():
     problems = []
     started = time.monotonic()
     with browser_folder("foldlab_drive_") as root:
-        {"dpr": check_dpr, "touch": check_touch, "scheme": check_scheme,
+        {"dpr": check_dpr, "touch": check_touch, "touch_first": check_touch_first,
+         "fingers": check_fingers, "phone": check_phone, "scheme": check_scheme,
          "layout": check_layout, "address": check_address, "clipboard": check_clipboard,
          "picture": check_picture,
          "regime_map": check_regime_map}[args.check](

@@ -118,7 +118,7 @@ CalibrationPanel::CalibrationPanel() {
 CalibrationPanel::~CalibrationPanel() = default;  // the job cancels and joins its thread
 
 void CalibrationPanel::open_button(const Parameters& current) {
-  if (ImGui::SmallButton("Fit to measurements...")) {
+  if (small_button("Fit to measurements...")) {
     open_ = true;
     focus_on_open_ = true;
   }

@@ -13,6 +13,7 @@
 #include "app/gui/appearance.hpp"
 #include "app/gui/colour_map.hpp"
 #include "app/gui/compare.hpp"
+#include "app/gui/input_words.hpp"
 #include "app/gui/panels/file_dialog.hpp"
 #include "app/gui/panels/widgets.hpp"
 #include "core/model/settings.hpp"
@@ -224,7 +225,7 @@ void ClothViewPanel::follow_the_cloth(Document& document, bool reset, bool hold)
 
 bool ClothViewPanel::toolbar(PanelContext& context) {
   settings_row();
-  const bool reset = ImGui::SmallButton("reset camera");
+  const bool reset = small_button("reset camera");
   // As long as the panel leaves room for, beside its label and (?): never cut.
   constexpr const char* kZLabel = "z exaggeration";
   const float z_room = ImGui::GetContentRegionAvail().x - labelled_width(0.0f, kZLabel) -
@@ -248,7 +249,7 @@ bool ClothViewPanel::toolbar(PanelContext& context) {
       load_photo(photo_path_);
     }
     same_line_if_fits(button_width(kBrowseLabel) + ImGui::CalcTextSize(" (?)").x);
-    if (ImGui::SmallButton(kBrowseLabel)) {
+    if (small_button(kBrowseLabel)) {
       context.files.open({FileDialog::Mode::open, "Load swatch photo", "", kImageExtensions,
                           [this](const std::filesystem::path& path) {
                             std::snprintf(photo_input_, sizeof photo_input_, "%s",
@@ -271,7 +272,7 @@ bool ClothViewPanel::toolbar(PanelContext& context) {
   ImGui::Checkbox("breeze", &style_.breeze);
   if (style_.breeze) {
     same_line_if_fits(button_width(breeze_playing_ ? "pause" : "play"));
-    if (ImGui::SmallButton(breeze_playing_ ? "pause" : "play")) {
+    if (small_button(breeze_playing_ ? "pause" : "play")) {
       breeze_playing_ = !breeze_playing_;
     }
     // Named, with its unit, so that the slider reads without the checkbox beside it (a row may
@@ -358,8 +359,7 @@ void ClothViewPanel::draw_hint(ImDrawList* draw, ImVec2 origin, FrameSize area, 
   }
   draw->AddText(ImGui::GetFont(), ImGui::GetFontSize(), ImVec2(origin.x + 6, origin.y + 4),
                 light ? IM_COL32(60, 60, 60, 220) : IM_COL32(200, 200, 200, 200),
-                "drag: orbit, right-drag: pan, wheel: zoom", nullptr,
-                static_cast<float>(area.width) - 12.0f);
+                hint_words(Hint::cloth_view), nullptr, static_cast<float>(area.width) - 12.0f);
 }
 
 void ClothViewPanel::draw(PanelContext& context) {

@@ -6,9 +6,11 @@
 #include <string>
 
 #include <imgui.h>
+#include <nlohmann/json.hpp>
 
 #include "app/gui/appearance.hpp"
 #include "app/gui/compare.hpp"
+#include "app/gui/input_words.hpp"
 #include "app/gui/panels/widgets.hpp"
 #include "core/geometry/geometry.hpp"
 
@@ -153,6 +155,14 @@ void FoldPlotPanel::view_settings(ViewSettings& settings, Document& /*document*/
   settings.add_switch("fold_plot_true_scale", &true_scale_, kEveryUse);
 }
 
+void FoldPlotPanel::report(nlohmann::json& state, PanelContext& /*context*/) const {
+  const PlotView& view = plot_.view();
+  state["fold_plot"] = {{"x_mm", {view.x_lo, view.x_hi}},
+                        {"y_mm", {view.y_lo, view.y_hi}},
+                        {"x_auto", view.x_auto},
+                        {"y_auto", view.y_auto}};
+}
+
 // Below this the plot's axis labels and legend squash it: the panel scrolls instead, and the
 // settings above it fold away first.
 constexpr float kLeastPlotHeightEms = 14.0f;
@@ -171,7 +181,7 @@ void FoldPlotPanel::draw(PanelContext& context) {
   const Solution& s = scene.solution();
   if (toolbar_row_.begin("plot settings...", kLeastPlotHeightEms * ImGui::GetFontSize())) {
     photo.toolbar(context);
-    if (ImGui::SmallButton("autoscale")) {
+    if (small_button("autoscale")) {
       autoscale_ = true;
     }
     same_line_if_fits(checkbox_width(kTrueScaleLabel));
@@ -179,7 +189,7 @@ void FoldPlotPanel::draw(PanelContext& context) {
     help_marker_and_hint(
         "A mm across is as many pixels as a mm down, so that the sag looks as deep as it "
         "hangs. Off, each axis fills the plot: shallow folds spread apart.",
-        "wheel: zoom, drag: pan, double-click: autoscale");
+        hint_words(Hint::fold_plot));
     toolbar_row_.end();
   }
   if (lines.stride > 1) {

@@ -52,6 +52,9 @@ class FoldPlotPanel : public Panel {
   // The context's photo adds its buttons, its backdrop and its clicks to the plot.
   void draw(PanelContext& context) override;
   void view_settings(ViewSettings& settings, Document& document) override;
+  // "fold_plot": the visible ranges, x_mm and y_mm as [lo, hi], and whether each follows the
+  // data (a pan or zoom turns that off).
+  void report(nlohmann::json& state, PanelContext& context) const override;
   static constexpr PictureOffer kPictures[] = {
       {PictureView::fold_plot, "fold_plot", "Export fold plot picture",
        "Fold plot picture (.png)...", "Fold plot picture, any size (.png)...",

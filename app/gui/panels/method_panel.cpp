@@ -168,7 +168,7 @@ void MethodPanel::tolerance_field(Document& document) {
   help_marker(std::string(spec.help).c_str());
   ImGui::SameLine();
   ImGui::BeginDisabled(tolerance == kPaperTolerance);
-  if (ImGui::SmallButton("the paper's 5 %")) {
+  if (small_button("the paper's 5 %")) {
     document.apply(Edit::input(std::string(kToleranceKey), kPaperTolerance));
     tolerance_problem_.clear();
   }

@@ -11,6 +11,7 @@
 #include <imgui_internal.h>
 #include <nlohmann/json.hpp>
 
+#include "app/gui/input_words.hpp"
 #include "app/gui/panels/axis_inputs.hpp"
 #include "app/gui/panels/widgets.hpp"
 #include "core/analysis/sweep.hpp"
@@ -337,7 +338,10 @@ std::optional<double> ParametersPanel::slider_field(Document& document, UiStatus
   const bool dragging =
       ImGui::IsItemActive() && !(io.MouseDown[0] && !ImGui::IsMouseDragPastThreshold(0));
   std::optional<double> to_position;
-  if (dragging && (io.KeyShift || relative_drag_id_ == id)) {
+  // A finger covers the handle and lands a few pixels off: its drag moves the value by its own
+  // movement, never to where it landed.
+  const bool finger = (io.ConfigFlags & ImGuiConfigFlags_IsTouchScreen) != 0;
+  if (dragging && (io.KeyShift || finger || relative_drag_id_ == id)) {
     relative_drag_id_ = id;
     to_position = relative_drag(fraction, width);
   } else if (moved && dragging) {
@@ -360,13 +364,28 @@ std::optional<double> ParametersPanel::slider_field(Document& document, UiStatus
   return changed;
 }
 
+double finger_drag_speed(float distance_px, float slider_height_px, double finest) {
+  if (!(distance_px > slider_height_px) || !(slider_height_px > 0.0f)) {
+    return 1.0;
+  }
+  return std::max(finest, static_cast<double>(slider_height_px) / distance_px);
+}
+
 std::optional<double> ParametersPanel::relative_drag(double fraction, float width) const {
   // ImGui's slider puts the handle under the mouse; a relative drag moves it by the mouse's
   // movement instead, over the pixels ImGui's handle travels: the frame less 2 px of padding
   // each side and the handle's own width.
   const ImGuiIO& io = ImGui::GetIO();
   const float travel_px = width - 4.0f - ImGui::GetStyle().GrabMinSize;
-  const double speed = io.KeyShift ? kFineDragSpeed : 1.0;
+  // A finger has no Shift: it makes small changes by dragging away from the slider, as a media
+  // player's scrubbing does, with no mode to enter and no timing to meet. The slider (the last
+  // item) is the whole row's height.
+  const float middle_y = 0.5f * (ImGui::GetItemRectMin().y + ImGui::GetItemRectMax().y);
+  const double speed = io.KeyShift ? kFineDragSpeed
+                       : (io.ConfigFlags & ImGuiConfigFlags_IsTouchScreen) != 0
+                           ? finger_drag_speed(std::abs(io.MousePos.y - middle_y),
+                                               ImGui::GetItemRectSize().y, kFineDragSpeed)
+                           : 1.0;
   const double position =
       std::clamp(fraction + speed * io.MouseDelta.x / std::max(1.0f, travel_px), 0.0, 1.0);
   return position != fraction ? std::optional<double>(position) : std::nullopt;
@@ -538,7 +557,7 @@ void ParametersPanel::header_rows(Document& document, UiStatus& status) {
   help_marker(
       "The paper's method and Conci's eq. 7 as printed: p = 1, K = c/(1 − ν²) = 29.56 (c = 26.9 "
       "at ν = 0.3).");
-  hint_after(printed ? "in use" : "Ctrl+click a slider to type");
+  hint_after(printed ? "in use" : hint_words(Hint::type_value));
 }
 
 std::vector<const InputSpec*> ParametersPanel::shown_sliders(const UiStatus& status) {

@@ -16,6 +16,7 @@
 
 #include "app/gui/animated_input.hpp"
 #include "app/gui/document.hpp"
+#include "app/gui/input_words.hpp"
 #include "app/gui/panel.hpp"
 #include "core/model/settings.hpp"
 
@@ -39,13 +40,15 @@ struct SliderPlace {
 // Where ImGui 1.86 centres a float slider's handle for `fraction` (SliderBehaviorT's geometry).
 float slider_handle_x(const SliderPlace& place, double fraction);
 
+// A finger's drag on a slider, as a part of the finger's movement: the whole of it while the
+// finger is within a slider's height of the slider's middle, less the farther it strays above or
+// below (half at twice that height, a third at three times), and never less than `finest`.
+double finger_drag_speed(float distance_px, float slider_height_px, double finest);
+
 class ParametersPanel : public Panel {
  public:
   const char* name() const override { return "Parameters"; }
-  const char* introduction() const override {
-    return "the six numbers above as sliders (Ctrl+click to type one); a red slider is "
-           "a value the model refuses, with the reason below.";
-  }
+  const char* introduction() const override { return hint_words(Hint::parameters_intro); }
   const char* key() const override { return "parameters"; }
   void draw(PanelContext& context) override;
   // By input key; a slider hidden last frame keeps its older place.
@@ -107,7 +110,8 @@ class ParametersPanel : public Panel {
                                      double value);
   // The typed text read with its unit; text that is no value is kept and said, and gives none.
   std::optional<double> read_typed(UiStatus& status, const InputSpec& spec, double value);
-  // Where a Shift drag or an arrow key moves the handle (0 to 1 of the slider), if anywhere.
+  // Where a Shift drag, a finger's drag or an arrow key moves the handle (0 to 1 of the slider),
+  // if anywhere.
   std::optional<double> relative_drag(double fraction, float width) const;
   std::optional<double> arrow_nudge(double fraction) const;
 

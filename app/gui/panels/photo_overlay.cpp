@@ -135,7 +135,7 @@ bool PhotoOverlay::load(const std::filesystem::path& path, UiStatus& status, Ren
 }
 
 void PhotoOverlay::toolbar(PanelContext& context) {
-  if (ImGui::SmallButton("Load photo...")) {
+  if (small_button("Load photo...")) {
     load_error_.clear();
     UiStatus* status = &context.status;
     Renderer* renderer = &context.renderer;
@@ -157,19 +157,19 @@ void PhotoOverlay::toolbar(PanelContext& context) {
     return;
   }
   ImGui::SameLine();
-  if (ImGui::SmallButton("Place supports")) {
+  if (small_button("Place supports")) {
     mode_ = Mode::supports;
     supports_.clear();
     folds_.clear();
   }
   ImGui::SameLine();
   ImGui::BeginDisabled(supports_.size() < 2);
-  if (ImGui::SmallButton("Click folds")) {
+  if (small_button("Click folds")) {
     mode_ = Mode::folds;
   }
   ImGui::EndDisabled();
   ImGui::SameLine();
-  if (ImGui::SmallButton("Remove photo")) {
+  if (small_button("Remove photo")) {
     photo_.reset();
     mode_ = Mode::none;
     supports_.clear();
@@ -463,7 +463,7 @@ void PhotoOverlay::draw_measured(const Solution& predicted) {
   } else {
     ImGui::TextColored(kDimText, "Click at least two folds (%zu so far).", folds_.size());
   }
-  if (!folds_.empty() && ImGui::SmallButton("Undo last fold")) {
+  if (!folds_.empty() && small_button("Undo last fold")) {
     folds_.pop_back();
   }
 }
@@ -488,7 +488,7 @@ void PhotoOverlay::draw_rows_file(UiStatus& status) {
                paths_.measurements_file.string().c_str());
   ImGui::PopStyleColor();
   ImGui::BeginDisabled(rows_in_file_ == 0 || files_ == nullptr);
-  if (ImGui::SmallButton("Save a copy...")) {
+  if (small_button("Save a copy...")) {
     const std::filesystem::path rows = paths_.measurements_file;
     files_->open({FileDialog::Mode::save,
                   kSaveRowsModal,

@@ -8,6 +8,7 @@
 
 #include "app/gui/appearance.hpp"
 
+#include "app/gui/input_words.hpp"
 #include "app/gui/panels/compare_table.hpp"
 #include "app/gui/panels/widgets.hpp"
 #include "core/analysis/uncertainty.hpp"
@@ -224,8 +225,8 @@ void ResultsPanel::draw_regime(Document& document, const ModelStanding& model, b
 void ResultsPanel::draw_range_note(const ModelStanding& model) const {
   if (model.range) {
     ImGui::PushStyleColor(ImGuiCol_Text, kDimText);
-    wrapped_text("(brackets: %.0f %% prediction intervals, hover for how often they held)",
-                 100.0 * model.range->level);
+    wrapped_text("(brackets: %.0f %% prediction intervals, %s)", 100.0 * model.range->level,
+                 hint_words(Hint::interval_details));
     ImGui::PopStyleColor();
   }
   if (ImGui::IsItemHovered()) {

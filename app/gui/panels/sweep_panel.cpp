@@ -199,7 +199,7 @@ void SweepPanel::draw_axis_controls(Document& document) {
 
 void SweepPanel::draw_paper_case_buttons(Document& document) {
   for (int which = 0; which < kPaperCases; ++which) {
-    if (ImGui::SmallButton(kPaperCaseButtons[which])) {
+    if (small_button(kPaperCaseButtons[which])) {
       document.replace_edits(
           std::string("Loading the paper's ") + kPaperCaseButtons[which] + " replaces them.",
           [this, which](Document& d) { select_paper_case(which, d); });

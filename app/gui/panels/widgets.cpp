@@ -86,6 +86,13 @@ float labelled_width(float item_width, const char* label) {
   return item_width + (text > 0.0f ? ImGui::GetStyle().ItemInnerSpacing.x + text : 0.0f);
 }
 
+bool small_button(const char* label) {
+  if ((ImGui::GetIO().ConfigFlags & ImGuiConfigFlags_IsTouchScreen) != 0) {
+    return ImGui::Button(label);
+  }
+  return ImGui::SmallButton(label);
+}
+
 void hint_after(const char* text) {
   const float spacing = ImGui::GetStyle().ItemSpacing.x;
   const float right_edge = ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x;

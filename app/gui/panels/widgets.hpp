@@ -37,6 +37,10 @@ float button_width(const char* label);
 // The width of a `item_width` wide slider, combo or field followed by its label (none for "##").
 float labelled_width(float item_width, const char* label);
 
+// ImGui's small button (a line of text tall, no padding above or below it), or for a finger
+// (ImGuiConfigFlags_IsTouchScreen) a whole button, as tall as a target (touch_style).
+bool small_button(const char* label);
+
 // A dim hint after the last item: on its line when it fits there, else on a line of its own, else
 // as a "(?)" that shows it when hovered.
 void hint_after(const char* text);
