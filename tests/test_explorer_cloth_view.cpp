@@ -154,13 +154,17 @@ TEST_F(ExplorerTest, TheThreeDViewIsDrawnAgainOnlyWhenWhatItShowsChanges) {
   explorer_->set_input("h", 1500.0);
   frame();
   frame();
-  EXPECT_EQ(renderer_.cloth_counters(panel<ClothViewPanel>().a_view()).view_renders, now.view_renders + 1) << "a new h";
+  EXPECT_EQ(renderer_.cloth_counters(panel<ClothViewPanel>().a_view()).view_renders,
+            now.view_renders + 1)
+      << "a new h";
 
   now = renderer_.cloth_counters(panel<ClothViewPanel>().a_view());
   ASSERT_EQ(explorer_->set_view("z_exaggeration", "4"), std::nullopt);
   frame();
   frame();
-  EXPECT_EQ(renderer_.cloth_counters(panel<ClothViewPanel>().a_view()).view_renders, now.view_renders + 1) << "z x4";
+  EXPECT_EQ(renderer_.cloth_counters(panel<ClothViewPanel>().a_view()).view_renders,
+            now.view_renders + 1)
+      << "z x4";
 
   // An orbit: a drag across the middle of the view (the panel's top right of the window).
   now = renderer_.cloth_counters(panel<ClothViewPanel>().a_view());
@@ -176,8 +180,11 @@ TEST_F(ExplorerTest, TheThreeDViewIsDrawnAgainOnlyWhenWhatItShowsChanges) {
   frame();
   frame();
   EXPECT_EQ(evaluations(Stage::solution), solves) << "the drag moved the camera, not an input";
-  EXPECT_EQ(renderer_.cloth_counters(panel<ClothViewPanel>().a_view()).view_renders, now.view_renders + 1) << "camera moved";
-  EXPECT_EQ(renderer_.cloth_counters(panel<ClothViewPanel>().a_view()).view_cache_hits, now.view_cache_hits + 4);
+  EXPECT_EQ(renderer_.cloth_counters(panel<ClothViewPanel>().a_view()).view_renders,
+            now.view_renders + 1)
+      << "camera moved";
+  EXPECT_EQ(renderer_.cloth_counters(panel<ClothViewPanel>().a_view()).view_cache_hits,
+            now.view_cache_hits + 4);
 }
 
 TEST_F(ExplorerTest, TheGridViewSettingTakesTheSlidersWholeNumbersOnly) {
@@ -213,7 +220,8 @@ TEST_F(ExplorerTest, ViewSettingsOutsideTheirRangeAreRefusedNotClamped) {
     ASSERT_TRUE(problem.has_value());
     EXPECT_NE(problem->find("must be"), std::string::npos) << *problem;
   }
-  EXPECT_EQ(panel<ClothViewPanel>().style().z_exaggeration, 1.0f) << "a refused value changes nothing";
+  EXPECT_EQ(panel<ClothViewPanel>().style().z_exaggeration, 1.0f)
+      << "a refused value changes nothing";
   EXPECT_EQ(explorer_->set_view("z_exaggeration", "20"), std::nullopt);
   EXPECT_EQ(panel<ClothViewPanel>().style().z_exaggeration, 20.0f);
   EXPECT_EQ(explorer_->set_view("wireframe", "1"), std::nullopt);
@@ -226,8 +234,9 @@ TEST_F(ExplorerTest, ViewSettingsOutsideTheirRangeAreRefusedNotClamped) {
 TEST_F(ExplorerTest, TheThreeDViewsLookIsRestoredWithTheSession) {
   const fs::path session = dir_ / "session.json";
   open_explorer("equations", {}, session);
-  for (const auto& [key, value] : {std::pair{"print", "checks"}, std::pair{"print_mm", "25"},
-                                   std::pair{"colour_by", "fold_sign"}, std::pair{"z_exaggeration", "4"}}) {
+  for (const auto& [key, value] :
+       {std::pair{"print", "checks"}, std::pair{"print_mm", "25"},
+        std::pair{"colour_by", "fold_sign"}, std::pair{"z_exaggeration", "4"}}) {
     ASSERT_EQ(explorer_->set_view(key, value), std::nullopt) << key;
   }
   frame();

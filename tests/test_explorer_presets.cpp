@@ -332,7 +332,6 @@ TEST_F(ExplorerTest, OneEditOfSeveralInputsIsOneUndoStep) {
   EXPECT_TRUE(shown() == before);
 }
 
-
 // B pinned from the user's preset, A edited, Ctrl+S: saving over the file B came from asks first
 // (Cancel keeps the file); saved anyway, a swap makes A the fabric B was, which its file no longer
 // holds: it reads as unsaved.

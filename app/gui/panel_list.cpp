@@ -6,8 +6,8 @@
 
 #include "app/gui/panels/analysis_panel.hpp"
 #include "app/gui/panels/calibration_panel.hpp"
-#include "app/gui/panels/field_panel.hpp"
 #include "app/gui/panels/cloth_view_panel.hpp"
+#include "app/gui/panels/field_panel.hpp"
 #include "app/gui/panels/fold_plot_panel.hpp"
 #include "app/gui/panels/intro_window.hpp"
 #include "app/gui/panels/parameters_panel.hpp"

@@ -260,9 +260,9 @@ void MethodPanel::draw_change() const {
     const double miss_percent = 100.0 * std::abs(it.length_ratio - 1.0);
     const double tolerance_percent = 100.0 * computed_for_.model.length_tolerance;
     if (miss_percent <= tolerance_percent) {
-      wrapped(kOkText, printf_string("|L′/L − 1| = %.3g %% ≤ %.3g %%: stop. %s", miss_percent,
-                                     tolerance_percent,
-                                     answer_words(method_, model_method_).c_str()));
+      wrapped(kOkText,
+              printf_string("|L′/L − 1| = %.3g %% ≤ %.3g %%: stop. %s", miss_percent,
+                            tolerance_percent, answer_words(method_, model_method_).c_str()));
     } else if (last) {
       wrapped(kNoteText, printf_string("|L′/L − 1| = %.3g %% > %.3g %%, and the iteration cap is "
                                        "reached.",
