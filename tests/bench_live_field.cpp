@@ -21,51 +21,51 @@ FieldInputs inputs(double d_mm, int cells) {
   return in;
 }
 
-// One frame of a drag: d moves by 1 % of the default's 100 mm and the view gives the field the
-// explorer's 6 ms slice. Arg: mesh cells across.
-void BM_DragFrame(benchmark::State& state) {
-  const int cells = static_cast<int>(state.range(0));
-  LiveField live;
-  live.request(inputs(100.0, cells));
+// Solves until the field is shown or given up.
+void settle(LiveField& live) {
   while (live.working()) {
     live.step(0.0);
   }
+}
+
+// A drag of d by 1 % of the default's 100 mm a frame, each frame given `budget_ms` (0: solved to
+// convergence), on a mesh of state.range(0) cells across: the share of frames that showed that
+// frame's field and the Newton steps a frame.
+void drag(benchmark::State& state, double budget_ms) {
+  const int cells = static_cast<int>(state.range(0));
+  LiveField live;
+  live.request(inputs(100.0, cells));
+  settle(live);
   double d_mm = 100.0;
   std::int64_t frames = 0;
   std::int64_t current = 0;
-  for (auto _ : state) {
-    d_mm = d_mm >= 300.0 ? 100.0 : d_mm + 1.0;
-    live.request(inputs(d_mm, cells));
-    live.step(6.0);
-    ++frames;
-    current += live.current() ? 1 : 0;
-  }
-  state.counters["current_share"] = static_cast<double>(current) / static_cast<double>(frames);
-}
-BENCHMARK(BM_DragFrame)->Arg(16)->Arg(24)->Arg(32)->Unit(benchmark::kMillisecond);
-
-// The same drag with no budget: each frame's field solved to convergence (a warm re-solve after a
-// 1 % change of d), with its Newton steps.
-void BM_DragFrameWhole(benchmark::State& state) {
-  const int cells = static_cast<int>(state.range(0));
-  LiveField live;
-  live.request(inputs(100.0, cells));
-  while (live.working()) {
-    live.step(0.0);
-  }
-  double d_mm = 100.0;
-  std::int64_t frames = 0;
   std::int64_t steps = 0;
   for (auto _ : state) {
     d_mm = d_mm >= 300.0 ? 100.0 : d_mm + 1.0;
     live.request(inputs(d_mm, cells));
-    while (live.working()) {
-      live.step(0.0);
+    if (budget_ms > 0.0) {
+      live.step(budget_ms);
+    } else {
+      settle(live);
     }
     ++frames;
+    current += live.current() ? 1 : 0;
     steps += live.iterations();
   }
+  state.counters["current_share"] = static_cast<double>(current) / static_cast<double>(frames);
   state.counters["newton_steps"] = static_cast<double>(steps) / static_cast<double>(frames);
+}
+
+// One frame of a drag with the explorer's 6 ms slice.
+void BM_DragFrame(benchmark::State& state) {
+  drag(state, 6.0);
+}
+BENCHMARK(BM_DragFrame)->Arg(16)->Arg(24)->Arg(32)->Unit(benchmark::kMillisecond);
+
+// The same drag with each frame's field solved to convergence (a warm re-solve after a 1 % change
+// of d).
+void BM_DragFrameWhole(benchmark::State& state) {
+  drag(state, 0.0);
 }
 BENCHMARK(BM_DragFrameWhole)->Arg(16)->Arg(32)->Unit(benchmark::kMillisecond);
 
@@ -75,9 +75,7 @@ void BM_Open(benchmark::State& state) {
   for (auto _ : state) {
     LiveField live;
     live.request(inputs(100.0, cells));
-    while (live.working()) {
-      live.step(0.0);
-    }
+    settle(live);
     benchmark::DoNotOptimize(live.shown());
   }
 }
@@ -90,14 +88,10 @@ void BM_Refine(benchmark::State& state) {
     state.PauseTiming();
     LiveField live;
     live.request(inputs(100.0, cells / 2));
-    while (live.working()) {
-      live.step(0.0);
-    }
+    settle(live);
     state.ResumeTiming();
     live.request(inputs(100.0, cells));
-    while (live.working()) {
-      live.step(0.0);
-    }
+    settle(live);
     benchmark::DoNotOptimize(live.shown());
   }
 }
