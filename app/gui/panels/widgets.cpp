@@ -53,10 +53,7 @@ float ems(float ems) {
 bool begin_panel(const char* title, Renderer& renderer) {
   // A double-click on the title presents the panel (see Explorer) rather than folding it away,
   // which would leave a hole in the tiles.
-  // A tile clicked stays under the floating windows (the tension field, a dialog): tiles never
-  // overlap one another, so only a floating window could be hidden by bringing one to the front.
-  if (!ImGui::Begin(title, nullptr,
-                    ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoBringToFrontOnFocus)) {
+  if (!ImGui::Begin(title, nullptr, ImGuiWindowFlags_NoCollapse)) {
     return false;
   }
   renderer.fill_window_background();
