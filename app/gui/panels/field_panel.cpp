@@ -483,6 +483,7 @@ void FieldPanel::draw(PanelContext& context) {
     last_parameters_ = parameters;
   }
   const bool moving = context.holding_frame || now_s - last_change_s_ < kRestS;
+  coarse_ = moving;
   const int cells = moving ? std::max(static_cast<int>(kCells.lo), cells_ / 2) : cells_;
   try {
     live_.request(field_inputs(parameters, cells, cut_));

@@ -58,7 +58,9 @@ class FieldPanel : public Panel {
            "it is slack; the lines are the rays along which the weight reaches the supports.";
   }
   void draw(PanelContext& context) override;
-  bool busy() const override { return open_ && live_.working(); }
+  // While a field is being solved, and while the one on show is the coarse mesh of a move: the
+  // frame loop keeps drawing until the finer one is shown, though nothing else moves.
+  bool busy() const override { return open_ && (live_.working() || coarse_); }
   bool* open_flag() override { return &open_; }
   bool is_open() const override { return open_; }
   bool presentable() const override { return true; }
@@ -112,6 +114,7 @@ class FieldPanel : public Panel {
   std::optional<Parameters> last_parameters_;
   double last_change_s_ = -1e9;
   double slice_ms_ = 0.0;  // the field's share of the last frame
+  bool coarse_ = false;    // the last frame asked for the coarse mesh
   field::LiveField live_;
   std::string cut_refusal_;  // why the inputs' cut cannot be meshed, or empty
   std::optional<PanelRect> canvas_rect_;
