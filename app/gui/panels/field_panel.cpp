@@ -492,9 +492,9 @@ void FieldPanel::draw(PanelContext& context) {
     // The last field stays on show, marked as of other inputs.
     cut_refusal_ = std::string("This cut cannot be solved: ") + e.what();
   }
-  // A share of the frame: the rest of the explorer draws in the remainder of 16 ms.
+  // A share of the frame while a value moves, so that the drag stays smooth; more at rest, when
+  // nothing else moves and the finer mesh is wanted soon.
   const auto began = std::chrono::steady_clock::now();
-  // At rest nothing else is moving: a larger share finishes the finer mesh sooner.
   live_.step(moving ? 6.0 : 25.0);
   slice_ms_ =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - began).count();
