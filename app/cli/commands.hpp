@@ -5,7 +5,7 @@
 
 #include <CLI/CLI.hpp>
 
-#include "app/common/inputs.hpp"
+#include "app/common/input_options.hpp"
 #include "app/common/presets_dir.hpp"
 #include "app/common/version.hpp"
 

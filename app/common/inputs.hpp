@@ -11,8 +11,6 @@
 #include <string_view>
 #include <vector>
 
-#include <CLI/CLI.hpp>
-
 #include "core/analysis/sweep.hpp"
 #include "core/io/preset.hpp"
 
@@ -141,25 +139,6 @@ void check_output_extension(std::string_view option, const std::string& path,
 void check_output_extension(std::string_view option, const std::string& path,
                             std::initializer_list<std::string_view> extensions,
                             std::string_view format);
-
-// For every option that names a file: an empty path (`--preset ''`, an unset shell variable) is
-// refused as invalid input rather than read as "not given", which would silently use a default.
-CLI::Validator non_empty_path();
-// A count given in any notation ("1e3" is 1000), refused unless whole and within [lo, hi]; use it
-// with ->transform() on an integer option.
-CLI::Validator whole_number_in(std::int64_t lo, std::int64_t hi);
-
-// An option that takes one of an input's choices (--method: the "method" row), refused in the
-// words --set uses: "method = 'Exact' is not one of: paper, exact".
-CLI::Validator input_choice(std::string_view key);
-// An option that takes one of `choices`, refused in the same words: "fit = 'k' is not one of:
-// K, K,p".
-CLI::Validator one_of(std::string name, std::vector<std::string> choices);
-
-// --preset, --set, --method and --law, for every command that solves.
-void add_input_options(CLI::App& command, InputOptions& options);
-// --law alone, for a command that gathers its inputs otherwise (InputOptions::law).
-void add_law_option(CLI::App& command, std::string& law);
 
 // Runs a command's body: InputError and PresetError give exit 2, EnvironmentError and WriteError
 // exit 1 with their message, anything else exit 1 as an internal error; messages go to stderr.

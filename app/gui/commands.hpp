@@ -4,7 +4,7 @@
 
 #include <CLI/CLI.hpp>
 
-#include "app/common/inputs.hpp"
+#include "app/common/input_options.hpp"
 
 namespace foldlab::gui {
 
