@@ -24,7 +24,8 @@ const ImWchar kGlyphRanges[] = {
 
 constexpr float kDefaultFontSizePx = 13.0f;  // ImGui's built-in ProggyClean
 
-// A slider's handle: narrow, and translucent enough that the value drawn over it stays readable.
+// A slider's handle: the least width of the notches that mark it (notched_slider), and translucent
+// where ImGui draws a whole handle over a value (a colour picker's sliders).
 constexpr float kGrabWidthPx = 4.0f;
 constexpr float kGrabAlpha = 0.45f;
 constexpr float kFrameBorderAlpha = 0.55f;

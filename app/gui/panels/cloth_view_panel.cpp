@@ -37,8 +37,12 @@ constexpr std::string_view kColourByNames[] = {"none", "z", "fold_sign"};
 // A logarithmic slider over the row's range, kept within it.
 bool view_slider(const char* label, float& value, const ViewRange<float>& range,
                  const char* format) {
-  return ImGui::SliderFloat(label, &value, range.lo, range.hi, format,
-                            ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp);
+  return notched_slider(
+      [&] {
+        return ImGui::SliderFloat(label, &value, range.lo, range.hi, format,
+                                  ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp);
+      },
+      [&] { return std::log(double{value} / range.lo) / std::log(double{range.hi} / range.lo); });
 }
 
 json counters_json(const RenderCounters& c) {

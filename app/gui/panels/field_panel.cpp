@@ -11,6 +11,7 @@
 #include <imgui_internal.h>  // whether the layout placed the window this frame
 #include <nlohmann/json.hpp>
 
+#include "app/gui/panels/widgets.hpp"
 #include "core/field/rays.hpp"
 
 namespace foldlab::gui {
@@ -395,8 +396,8 @@ void FieldPanel::controls() {
   ImGui::Checkbox(kCosinesLabel, &cosines_);
   same_line_if_fits(labelled_width(ems(6.0f), kCellsLabel));
   ImGui::SetNextItemWidth(ems(6.0f));
-  ImGui::SliderInt(kCellsLabel, &cells_, static_cast<int>(kCells.lo), static_cast<int>(kCells.hi),
-                   "%d", ImGuiSliderFlags_AlwaysClamp);
+  notched_slider_int(kCellsLabel, cells_, static_cast<int>(kCells.lo), static_cast<int>(kCells.hi),
+                     "%d");
 }
 
 void FieldPanel::status_line(Document& document) {

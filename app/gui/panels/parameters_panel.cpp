@@ -329,8 +329,12 @@ std::optional<double> ParametersPanel::slider_field(Document& document, UiStatus
   double position = fraction;
   constexpr double kZero = 0.0;
   constexpr double kOne = 1.0;
-  const bool moved = ImGui::SliderScalar(label.c_str(), ImGuiDataType_Double, &position, &kZero,
-                                         &kOne, text.c_str(), ImGuiSliderFlags_AlwaysClamp);
+  const bool moved = notched_slider(
+      [&] {
+        return ImGui::SliderScalar(label.c_str(), ImGuiDataType_Double, &position, &kZero, &kOne,
+                                   text.c_str(), ImGuiSliderFlags_AlwaysClamp);
+      },
+      [&] { return position; });
   const ImGuiIO& io = ImGui::GetIO();
   // A press that has not yet moved past ImGui's drag threshold only takes the focus (for the
   // arrow keys): ImGui's slider would put the value where the pointer landed, and a click meant
@@ -626,9 +630,8 @@ void ParametersPanel::shape_rows(Document& document, UiStatus& status, float wid
     const InputSpec& supports = *find_input("supports");
     int count = document.edited().shape.supports;
     ImGui::SetNextItemWidth(width);
-    if (ImGui::SliderInt("supports", &count, static_cast<int>(supports.typical_lo),
-                         static_cast<int>(supports.typical_hi), "%d",
-                         ImGuiSliderFlags_AlwaysClamp)) {
+    if (notched_slider_int("supports", count, static_cast<int>(supports.typical_lo),
+                           static_cast<int>(supports.typical_hi), "%d")) {
       document.apply(Edit::input("supports", count).open());
     }
     help_marker(std::string(supports.help).c_str());
@@ -647,7 +650,7 @@ void ParametersPanel::expert_rows(Document& document, float width) {
   }
   int grid = document.scene().grid_nx();
   ImGui::SetNextItemWidth(width);
-  if (ImGui::SliderInt("grid", &grid, 8, 512, "%d per side", ImGuiSliderFlags_AlwaysClamp)) {
+  if (notched_slider_int("grid", grid, 8, 512, "%d per side")) {
     document.set_grid_resolution(grid);
   }
   help_marker(

@@ -194,7 +194,7 @@ void SweepPanel::draw_axis_controls(Document& document) {
   ImGui::Checkbox("log", &logarithmic_);
   same_line_if_fits(labelled_width(ems(6.0f), "steps"));
   ImGui::SetNextItemWidth(ems(6.0f));
-  ImGui::SliderInt("steps", &steps_, 10, 1000, "%d", ImGuiSliderFlags_AlwaysClamp);
+  notched_slider_int("steps", steps_, 10, 1000, "%d");
 }
 
 void SweepPanel::draw_paper_case_buttons(Document& document) {

@@ -83,6 +83,45 @@ float labelled_width(float item_width, const char* label) {
   return item_width + (text > 0.0f ? ImGui::GetStyle().ItemInnerSpacing.x + text : 0.0f);
 }
 
+bool notched_slider(const std::function<bool()>& slider, const std::function<double()>& fraction) {
+  const ImVec2 frame_min = ImGui::GetCursorScreenPos();
+  const float frame_width = ImGui::CalcItemWidth();
+  ImGui::PushStyleColor(ImGuiCol_SliderGrab, IM_COL32(0, 0, 0, 0));
+  ImGui::PushStyleColor(ImGuiCol_SliderGrabActive, IM_COL32(0, 0, 0, 0));
+  const bool changed = slider();
+  ImGui::PopStyleColor(2);
+  const bool active = ImGui::IsItemActive();
+  const ImGuiStyle& style = ImGui::GetStyle();
+  // Where ImGui 1.86 centres its own handle: the frame less 2 px each side and half a handle.
+  constexpr float kGrabPaddingPx = 2.0f;
+  const float usable = frame_width - 2.0f * kGrabPaddingPx - style.GrabMinSize;
+  const double at = std::clamp(fraction(), 0.0, 1.0);
+  float centre = frame_min.x + kGrabPaddingPx + 0.5f * style.GrabMinSize +
+                 static_cast<float>(std::isnan(at) ? 0.0 : at) * std::max(usable, 0.0f);
+  // Wide enough to find from the back of a room, in the padding that the text does not use.
+  const float half =
+      std::min(std::max(style.GrabMinSize, 0.3f * ImGui::GetFontSize()), 0.5f * frame_width);
+  // Kept within the frame at the ends of the scale.
+  centre = std::clamp(centre, frame_min.x + half, frame_min.x + frame_width - half);
+  const float frame_bottom = frame_min.y + ImGui::GetFrameHeight();
+  // Opaque: a notch is small, and no text lies under it.
+  ImVec4 opaque = style.Colors[active ? ImGuiCol_SliderGrabActive : ImGuiCol_SliderGrab];
+  opaque.w = 1.0f;
+  const ImU32 colour = ImGui::GetColorU32(opaque);
+  ImDrawList& drawn = *ImGui::GetWindowDrawList();
+  drawn.AddRectFilled(ImVec2(centre - half, frame_min.y),
+                      ImVec2(centre + half, frame_min.y + style.FramePadding.y), colour);
+  drawn.AddRectFilled(ImVec2(centre - half, frame_bottom - style.FramePadding.y),
+                      ImVec2(centre + half, frame_bottom), colour);
+  return changed;
+}
+
+bool notched_slider_int(const char* label, int& value, int lo, int hi, const char* format) {
+  return notched_slider(
+      [&] { return ImGui::SliderInt(label, &value, lo, hi, format, ImGuiSliderFlags_AlwaysClamp); },
+      [&] { return hi > lo ? double(value - lo) / double(hi - lo) : 0.0; });
+}
+
 bool small_button(const char* label) {
   if ((ImGui::GetIO().ConfigFlags & ImGuiConfigFlags_IsTouchScreen) != 0) {
     return ImGui::Button(label);

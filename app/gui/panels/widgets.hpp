@@ -2,6 +2,7 @@
 // with its opaque background, section titles and help markers.
 #pragma once
 
+#include <functional>
 #include <string>
 #include <string_view>
 
@@ -36,6 +37,14 @@ float checkbox_width(const char* label);
 float button_width(const char* label);
 // The width of a `item_width` wide slider, combo or field followed by its label (none for "##").
 float labelled_width(float item_width, const char* label);
+
+// Runs `slider` (one ImGui slider call, drawn at the cursor `CalcItemWidth()` wide) with ImGui's
+// handle hidden, then marks where the value lies on the scale (`fraction` of the way, read after
+// the call) by two notches in the frame's top and bottom padding: the handle no longer crosses
+// the value's text ("24|00 mm"), which stays whole wherever the value is. Returns the slider's.
+bool notched_slider(const std::function<bool()>& slider, const std::function<double()>& fraction);
+// ImGui's SliderInt, kept within [lo, hi], notched.
+bool notched_slider_int(const char* label, int& value, int lo, int hi, const char* format);
 
 // ImGui's small button (a line of text tall, no padding above or below it), or for a finger
 // (ImGuiConfigFlags_IsTouchScreen) a whole button, as tall as a target (touch_style).
