@@ -133,7 +133,21 @@ std::string shipped_preset_name(const std::string& path, const std::filesystem::
 std::string Explorer::link() const {
   LinkContent content;
   content.preset = shipped_preset_name(document_.loaded_path(), options_.presets_dir);
-  content.base = content.preset.empty() ? default_preset() : document_.loaded();
+  // As its file has it, which is what the reader loads: the preset as loaded here may carry
+  // --set overrides.
+  if (!content.preset.empty() && (!link_base_ || link_base_->first != document_.loaded_path())) {
+    try {
+      link_base_.emplace(document_.loaded_path(), load_preset(document_.loaded_path()));
+    } catch (const PresetError&) {
+      link_base_.reset();
+    }
+  }
+  if (content.preset.empty() || !link_base_) {
+    content.preset.clear();
+    content.base = default_preset();
+  } else {
+    content.base = link_base_->second;
+  }
   content.a = {document_.edited(), document_.dragged_keys(), document_.loaded().name};
   if (document_.compare().pinned()) {
     content.b = LinkFabric{document_.compare().b().parameters, {}, document_.compare().b().name};

@@ -197,6 +197,8 @@ class Explorer {
   std::unique_ptr<PageLink> page_link_ = std::make_unique<PageLink>();
   LinkThrottle address_;  // when the page's address follows the link
   LinkChoices link_choices_;
+  // The shipped preset links start from, as its file (path) has it: read once, not every frame.
+  mutable std::optional<std::pair<std::string, Preset>> link_base_;
   std::optional<PanelRect> toast_rect_;  // where the toast was drawn at the last frame
   Layout layout_{panels_};
   std::unique_ptr<MenuBar> menu_;

@@ -281,6 +281,7 @@ json explorer_state_json(Explorer& explorer) {
       {"stats", scene_stats_to_json(scene)},
       {"solution", solution_to_json(scene.solution(), scene.parameters())},
       {"parameters", parameters_json(document.edited())},
+      {"label", fabric_label(document)},  // A's name, "(edited)" after it once edited
       {"compare", compare_json(document)},
       {"refused", refused ? json(*refused) : json(nullptr)},
       {"dirty", document.unsaved()},
