@@ -153,7 +153,8 @@ void add_scene_options(CLI::App& command, GuiCommandOptions& options) {
           "half while a value is dragged); "
           "present=fold_plot|cloth|results|analysis|parameters|presets|field|none (that panel "
           "fills the window); theme=dark|light; scale (UI scale, percent); expert=0|1 (the expert "
-          "settings)")
+          "settings); link_look=0|1 (Copy link sends the theme and text size); page_address "
+          "(where the page is served: Copy link gives a web address)")
       ->type_name("KEY=VALUE");
   command
       .add_option("--print", options.print_path,
