@@ -362,12 +362,15 @@ class ExplorerRun {
     if (!options.link_b_name && options.link_b.empty()) {
       return;
     }
-    const app::InputOptions b_inputs{.preset_path = start.preset_file,
-                                     .assignments = options.link_b,
-                                     .set_option = "--link b.",
-                                     .whose = "B's "};
+    app::InputOptions b_inputs;
+    b_inputs.preset_path = start.preset_file;
+    b_inputs.assignments = options.link_b;
+    b_inputs.set_option = "--link b.";
+    b_inputs.whose = "B's ";
+    app::InputOptions b_origin;
+    b_origin.preset_path = start.preset_file;
     try {
-      const Preset origin = app::resolve_inputs(app::InputOptions{start.preset_file});
+      const Preset origin = app::resolve_inputs(b_origin);
       Preset fabric = app::resolve_inputs(b_inputs);
       fabric.name = options.link_b_name.value_or(origin.name + " (B)");
       explorer_->document().compare().pin(PinnedFabric{fabric, origin, start.preset_file});
