@@ -719,7 +719,7 @@ TEST_F(GuiTest, ALinkOpensTheFabricAndTheViewItCarries) {
   // Only what differs from the preset, and the presenter's room but not their theme and text size
   // (sent only when they choose to).
   const std::string link = report.at("link").get<std::string>();
-  EXPECT_TRUE(link.ends_with("w=200gsm&h=2000&present=cloth")) << link;
+  EXPECT_EQ(link, "w=200gsm&h=2000&method=paper&present=cloth");
   // --set after the link wins, as it is applied after it.
   const RunResult both =
       run_in_xvfb(dir_, environment(),
