@@ -80,6 +80,11 @@ echo "== unpacked into $work/root"
 root="$work/root"
 dpkg-deb -x "$deb" "$root"
 desktop-file-validate "$root/usr/share/applications/foldlab.desktop" || fail "desktop-file-validate"
+# A clicked foldlab: link opens the installed explorer on its fabric.
+grep -qx 'MimeType=x-scheme-handler/foldlab;' "$root/usr/share/applications/foldlab.desktop" ||
+  fail "the desktop entry does not register the foldlab: scheme"
+grep -qx 'Exec=foldlab gui %u' "$root/usr/share/applications/foldlab.desktop" ||
+  fail "the desktop entry does not pass a clicked link to foldlab gui"
 appstreamcli validate --no-net "$root"/usr/share/metainfo/*.metainfo.xml || fail "appstreamcli validate"
 appstreamcli validate-tree --no-net "$root" || fail "appstreamcli validate-tree"
 file "$root/usr/bin/foldlab" | grep -q 'stripped' || fail "foldlab is not stripped"

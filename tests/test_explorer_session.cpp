@@ -1,5 +1,8 @@
 // The session kept between starts and the page's address: what is remembered, what is set aside
 // when it cannot be read, and the link that follows the inputs.
+#include "app/gui/compare.hpp"
+#include "app/gui/panels/presets_panel.hpp"
+#include "core/io/link.hpp"
 #include "explorer_fixture.hpp"
 
 namespace foldlab::gui {
@@ -47,12 +50,12 @@ TEST_F(ExplorerTest, ThePagesAddressFollowsTheInputsWithoutADragRewritingItEvery
   // At once, then every 0.25 s: 1 + 4 writes (the frames' clock rounds), never one a frame.
   EXPECT_GE(shown.size(), 4u);
   EXPECT_LE(shown.size(), 5u);
-  EXPECT_NE(shown.front().find("&h=1410&"), std::string::npos) << shown.front();
+  EXPECT_EQ(shown.front(), "preset=paper-table1-h1400&h=1410");
   // The last value reaches the address once its turn comes, though nothing moves any more.
   for (int i = 0; i < 20; ++i) {
     frame();
   }
-  EXPECT_NE(shown.back().find("&h=2000&"), std::string::npos) << shown.back();
+  EXPECT_EQ(shown.back(), "preset=paper-table1-h1400&h=2000");
   EXPECT_EQ(shown.back(), explorer_->link());
   const std::size_t writes = shown.size();
   for (int i = 0; i < 30; ++i) {
@@ -61,29 +64,81 @@ TEST_F(ExplorerTest, ThePagesAddressFollowsTheInputsWithoutADragRewritingItEvery
   EXPECT_EQ(shown.size(), writes) << "an unchanged link is not written again";
 }
 
-TEST_F(ExplorerTest, TheLinkCarriesTheViewSetUpForARoom) {
+TEST_F(ExplorerTest, TheLinkCarriesTheViewSetUpForARoomAndTheLookOnlyWhenChosen) {
   frame();
   const std::string fabric = explorer_->link();
-  EXPECT_EQ(fabric.find("present="), std::string::npos) << fabric;
+  EXPECT_EQ(fabric, "preset=paper-table1-h1400") << "nothing differs from the preset";
   ASSERT_EQ(explorer_->set_view("present", "cloth"), std::nullopt);
   ASSERT_EQ(explorer_->set_view("theme", "light"), std::nullopt);
   ASSERT_EQ(explorer_->set_view("scale", "125"), std::nullopt);
   frame();
+  // The sender's theme and text size are the sender's: a student's phone keeps its own.
+  EXPECT_EQ(explorer_->link(), fabric + "&present=cloth");
+  ASSERT_EQ(explorer_->set_view("link_look", "1"), std::nullopt);
   EXPECT_EQ(explorer_->link(), fabric + "&present=cloth&theme=light&scale=125");
-  // Copied with the desktop's link and no page address: the fragment behind '#', said in full
-  // with what opens it, and shown in the presentation's read-out, the status line being hidden.
+  ASSERT_EQ(explorer_->set_view("link_look", "0"), std::nullopt);
+  // Copied with the desktop's link and no page address: a foldlab: link, said in a toast that
+  // lies in the window, and in the presentation's read-out, the status line being hidden.
+  ASSERT_EQ(explorer_->set_view("page_address", ""), std::nullopt);
   explorer_->copy_link();
-  const std::string copied = "#" + explorer_->link();
+  const std::string copied = "foldlab:#" + explorer_->link();
   EXPECT_EQ(std::string(ImGui::GetClipboardText()), copied);
   const std::string said = explorer_->status().message();
-  EXPECT_EQ(said, "Copied the fabric as a link's fragment alone, " + copied.substr(0, 40) +
-                      "…, which only foldlab gui --link opens. FOLDLAB_PAGE_URL makes it a whole "
-                      "address (docs/web.md).");
+  EXPECT_EQ(said, "Copied the fabric as a foldlab: link, " + copied +
+                      ", which opens in an installed FoldLab. Export > Page address makes it a "
+                      "web address anyone can open.");
+  EXPECT_EQ(explorer_->status().toast(), said);
   frame();
   EXPECT_EQ(explorer_->presented_message(), said);
+  ASSERT_TRUE(explorer_->toast_rect().has_value());
+  const ImVec2 display = ImGui::GetIO().DisplaySize;
+  EXPECT_GE(explorer_->toast_rect()->pos.y, 0.0f);
+  EXPECT_LE(explorer_->toast_rect()->pos.y + explorer_->toast_rect()->size.y, display.y);
   ASSERT_EQ(explorer_->set_view("present", "none"), std::nullopt);
   frame();
   EXPECT_EQ(explorer_->presented_message(), "");
+  // With the page's address set once: a whole address, its own fragment dropped.
+  ASSERT_EQ(explorer_->set_view("page_address", "https://example.org/foldlab/index.html#old"),
+            std::nullopt);
+  explorer_->copy_link();
+  EXPECT_EQ(std::string(ImGui::GetClipboardText()),
+            "https://example.org/foldlab/index.html#" + explorer_->link());
+  EXPECT_EQ(explorer_->report()["view"]["page_address"],
+            "https://example.org/foldlab/index.html#old");
+}
+
+TEST_F(ExplorerTest, TheLinkWritesDraggedValuesAtTheSlidersDigitsAndTypedOnesExactly) {
+  frame();
+  // As a slider leaves it (Edit::by_slider) and as a typed value does.
+  explorer_->document().apply(Edit::input("t", 0.23761827878721103).by_slider());
+  explorer_->document().apply(Edit::input("h", 2000.4999999999998));
+  // t's slider shows three significant digits (0.238 mm); h was typed, and round-trips.
+  EXPECT_EQ(explorer_->link(), "preset=paper-table1-h1400&t=0.238&h=2000.4999999999998");
+  // Typed after the drag: exact again.
+  explorer_->document().apply(Edit::input("t", 0.23761827878721103));
+  EXPECT_EQ(explorer_->link(),
+            "preset=paper-table1-h1400&t=0.23761827878721103&h=2000.4999999999998");
+}
+
+TEST_F(ExplorerTest, ASavedPresetHoldsDraggedValuesAtTheSlidersDigitsAndTypedOnesExactly) {
+  frame();
+  explorer_->document().apply(Edit::input("t", 0.23761827878721103).by_slider());
+  explorer_->document().apply(Edit::input("h", 2000.4999999999998));
+  const Preset saved = preset_to_save(explorer_->document(), "Mine");
+  EXPECT_EQ(saved.parameters.fabric.thickness_mm, 0.238);
+  EXPECT_EQ(saved.parameters.hanging.height_mm, 2000.4999999999998);
+}
+
+TEST_F(ExplorerTest, TheLinkCarriesTheNamesAndBWhenPinned) {
+  frame();
+  explorer_->document().apply(Edit::input("h", 2000.0));
+  pin_as_b(explorer_->document(), explorer_->status());
+  explorer_->document().apply(Edit::input("t", 0.4));
+  // B is pinned with A's former values, named "... (edited)"; A keeps the preset's name, which
+  // the link leaves out as it leaves out every value equal to the preset's.
+  const std::string b_name = explorer_->document().compare().b().name;
+  EXPECT_EQ(explorer_->link(), "preset=paper-table1-h1400&t=0.4&h=2000&b.name=" +
+                                   foldlab::percent_encode(b_name) + "&b.h=2000");
 }
 
 // Where the config folder is the explorer's alone (the page's storage), a session that does not

@@ -238,4 +238,57 @@ TEST(Link, EncodedUnitsAndArithmeticReadAsTyped) {
   EXPECT_EQ(plus.hanging.height_mm, 1400.0);
 }
 
+// A value a slider left: written as the slider shows it (t at three significant digits, w in
+// g/m² at the gsm unit's digits), so that a drag leaves no 17-digit noise in a link.
+TEST(Link, DraggedValuesAreWrittenWithTheSlidersDigits) {
+  Parameters p;
+  p.fabric.thickness_mm = 0.23761827878721103;
+  p.fabric.weight_N_per_mm2 = 999.9999999999991 * 9.81e-9;
+  const Parameters base;
+  const std::string dragged = foldlab::fabric_link(p, {&base, {"t", "w"}, ""});
+  EXPECT_EQ(dragged, "t=0.238&w=1000gsm");
+  // Read back: the values the slider showed, not the ones under the mouse.
+  Parameters read = base;
+  ASSERT_TRUE(apply_link(read, dragged).empty());
+  EXPECT_EQ(read.fabric.thickness_mm, 0.238);
+  EXPECT_EQ(read.fabric.weight_N_per_mm2, 1000 * 9.81e-9);
+  // Typed (not dragged): exact, and read back bit for bit.
+  const std::string typed = foldlab::fabric_link(p, {&base, {}, ""});
+  EXPECT_EQ(typed.substr(0, typed.find('&')), "t=0.23761827878721103");
+  Parameters exact = base;
+  ASSERT_TRUE(apply_link(exact, typed).empty());
+  expect_bit_identical(exact, p, typed);
+}
+
+// Keys equal to the preset the reader starts from stay out; B's keys carry their prefix, and a
+// link of two fabrics reads back as both.
+TEST(Link, KeysEqualToTheBaseAreLeftOutAndBsCarryItsPrefix) {
+  const Parameters base =
+      foldlab::load_preset(fs::path(FOLDLAB_PRESETS_DIR) / "paper-table1-h1400.json").parameters;
+  EXPECT_EQ(foldlab::fabric_link(base, {&base, {}, ""}), "");
+  Parameters a = base;
+  a.hanging.height_mm = 2000;
+  a.model.method = foldlab::Method::exact;
+  Parameters b = base;
+  b.fabric.thickness_mm = 0.4;
+  const std::string link = foldlab::fabric_link(a, {&base, {}, ""}) + "&" +
+                           foldlab::fabric_link(b, {&base, {}, foldlab::kLinkBPrefix});
+  EXPECT_EQ(link, "h=2000&method=exact&b.t=0.4");
+  Parameters read_a = base;
+  Parameters read_b = base;
+  std::vector<std::string> a_pieces;
+  std::vector<std::string> b_pieces;
+  for (const LinkAssignment& piece : foldlab::parse_fabric_link(link)) {
+    if (piece.key.starts_with(foldlab::kLinkBPrefix)) {
+      b_pieces.push_back(piece.key.substr(2) + "=" + piece.text);
+    } else {
+      a_pieces.push_back(piece.set_text());
+    }
+  }
+  EXPECT_TRUE(foldlab::apply_assignments(read_a, a_pieces).empty());
+  EXPECT_TRUE(foldlab::apply_assignments(read_b, b_pieces).empty());
+  expect_bit_identical(read_a, a, "A");
+  expect_bit_identical(read_b, b, "B");
+}
+
 }  // namespace

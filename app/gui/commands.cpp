@@ -42,7 +42,27 @@ struct GuiCommandOptions {
   std::string print_path;
   std::string link;
   std::optional<std::string> preset_name;  // the page's ?preset=NAME, as the address gives it
+  std::string link_argument;               // `foldlab gui LINK`: a clicked foldlab: link
 };
+
+// A link's name, preset and B: the preset is where the inputs the link leaves out come from,
+// unless --preset names one; B starts from the same preset.
+void apply_link_fabric_key(const LinkAssignment& piece, GuiCommandOptions& options) {
+  GuiRunOptions& run = options.run;
+  if (piece.key == kLinkNameKey) {
+    run.link_name = piece.text;
+  } else if (piece.key == kLinkPresetKey) {
+    if (run.inputs.preset_path.empty() && !options.preset_name) {
+      options.preset_name = piece.text;
+    }
+  } else if (piece.key == std::string(kLinkBPrefix) + std::string(kLinkNameKey)) {
+    run.link_b_name = piece.text;
+  } else {
+    LinkAssignment b = piece;
+    b.key.erase(0, kLinkBPrefix.size());
+    run.link_b.push_back(b.set_text());
+  }
+}
 
 // --link: the inputs go the way of --set (before it), the view keys the way of --view (before
 // it), so that the options given beside a link override it.
@@ -51,7 +71,9 @@ void apply_link_option(GuiCommandOptions& options) {
   std::vector<std::string> view_keys_seen;
   for (const LinkAssignment& piece : parse_fabric_link(options.link)) {
     pieces.push_back(piece.set_text());
-    if (!is_link_view_key(piece.key)) {
+    if (is_link_fabric_key(piece.key)) {
+      apply_link_fabric_key(piece, options);
+    } else if (!is_link_view_key(piece.key)) {
       options.run.inputs.link.push_back(piece.set_text());
     } else if (!options.run.inputs.forgiving_link ||
                std::find(view_keys_seen.begin(), view_keys_seen.end(), piece.key) ==
@@ -131,7 +153,8 @@ void add_scene_options(CLI::App& command, GuiCommandOptions& options) {
           "half while a value is dragged); "
           "present=fold_plot|cloth|results|analysis|parameters|presets|field|none (that panel "
           "fills the window); theme=dark|light; scale (UI scale, percent); expert=0|1 (the expert "
-          "settings)")
+          "settings); link_look=0|1 (Copy link sends the theme and text size); page_address "
+          "(where the page is served: Copy link gives a web address)")
       ->type_name("KEY=VALUE");
   command
       .add_option("--print", options.print_path,
@@ -187,8 +210,8 @@ std::vector<app::NamedPath> run_inputs(const GuiCommandOptions& options) {
 // --print and the checks every command that writes files makes: the options in the order given,
 // no output over an input.
 void prepare_run(GuiCommandOptions& options, const std::vector<app::NamedPath>& outputs) {
+  apply_link_option(options);  // its preset= is a --preset-name
   apply_preset_name_option(options);
-  apply_link_option(options);
   apply_print_option(options);
   check_outputs(outputs, run_inputs(options));
   options.run.input_files = run_inputs(options);
@@ -222,6 +245,11 @@ app::Command add_gui_command(CLI::App& app, GuiCaller caller) {
                           detail::join_comma(sweepable_keys()));
   command->add_flag("--report", options->run.report,
                     "print frame times (mean, 95th percentile) and pipeline counters as JSON");
+  command
+      ->add_option("LINK", options->link_argument,
+                   "a link to open, as --link takes it: a foldlab: link (which the desktop "
+                   "entry passes when one is clicked) or a page's address")
+      ->type_name("LINK");
   command->add_flag("--fresh", options->run.fresh,
                     "do not restore or save the last session and window layout");
   add_play_option(*command, options->run);
@@ -229,6 +257,13 @@ app::Command add_gui_command(CLI::App& app, GuiCaller caller) {
     return guarded([&] {
       parse_size(options->size, options->run);
       check_play_options(options->run);
+      if (!options->link_argument.empty()) {
+        if (!options->link.empty()) {
+          throw InputError("--link " + detail::cut(options->link) + " and the link " +
+                           detail::cut(options->link_argument) + ": which one is meant?");
+        }
+        options->link = options->link_argument;
+      }
       prepare_run(*options, {{"--screenshot", options->run.screenshot_path}});
       app::check_output_extension("--screenshot", options->run.screenshot_path, ".png", "PNG");
       if (!options->run.screenshot_path.empty() && options->run.frames == 0) {

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <utility>
 
+#include "core/io/link.hpp"
 #include "core/model/settings.hpp"
 #include "core/model/text_format.hpp"
 
@@ -69,12 +70,25 @@ std::optional<std::string> Document::apply(const Edit& edit) {
       next = edit.parameters;
       break;
   }
+  if (edit.kind == Edit::Kind::replace) {
+    dragged_keys_.clear();
+  }
+  for (const Assignment& a : edit.assignments) {
+    std::erase(dragged_keys_, a.key);
+    if (edit.dragged) {
+      dragged_keys_.push_back(a.key);
+    }
+  }
   edited_ = std::move(next);
   commit();
   if (edit.closes_step) {
     end_step();
   }
   return std::nullopt;
+}
+
+Parameters Document::edited_as_shown() const {
+  return with_shown_digits(edited_, dragged_keys_);
 }
 
 void Document::reset_to_loaded() {
@@ -182,6 +196,7 @@ bool Document::same(const Snapshot& a, const Snapshot& b) {
 void Document::restore(const Snapshot& s) {
   set_loaded(s.loaded, s.loaded_path);
   edited_ = s.edited;
+  dragged_keys_.clear();  // written exactly: longer, never other than what the step held
   commit();
   if (!same_b(s.compare_b, snapshot().compare_b)) {
     if (s.compare_b) {

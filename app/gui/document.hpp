@@ -38,6 +38,10 @@ struct Edit {
   // True: the edit is an undo step of its own (a script, a map click, a button). False: it stays
   // open and later edits join it until Document::end_step (a slider being dragged).
   bool closes_step = true;
+  // True: the values come from a slider moved by the mouse or a key (their last digits are where
+  // the hand stopped), so links and saved presets write them with the digits the slider shows.
+  // False: typed, loaded or computed values, written exactly.
+  bool dragged = false;
 
   static Edit input(std::string key, double value);
   // Several inputs at once, one undo step (a regime-map click sets x and y).
@@ -50,6 +54,10 @@ struct Edit {
   // The same edit, left open for the widget that is still being dragged or typed into.
   Edit open() && {
     closes_step = false;
+    return std::move(*this);
+  }
+  Edit by_slider() && {
+    dragged = true;
     return std::move(*this);
   }
 };
@@ -65,6 +73,11 @@ class Document {
   // What the widgets show: the last edit, possibly refused. Changed only by apply().
   const Parameters& edited() const { return edited_; }
   const std::vector<ValidationIssue>& issues() const { return issues_; }
+  // The inputs whose value a slider set last (Edit::dragged): a link or a saved preset writes
+  // them with the digits the slider shows.
+  const std::vector<std::string>& dragged_keys() const { return dragged_keys_; }
+  // edited() as the user can read it back: every dragged input at the slider's digits.
+  Parameters edited_as_shown() const;
   // The model of the last valid edit. Mutable because it computes its grid and lines lazily; its
   // parameters change only through apply(), its grid resolution only through set_grid_resolution.
   Scene& scene() { return scene_; }
@@ -152,6 +165,7 @@ class Document {
   Preset loaded_;
   std::string loaded_path_;
   Parameters edited_;
+  std::vector<std::string> dragged_keys_;
   std::vector<ValidationIssue> issues_;
   Scene scene_;
   std::uint64_t loads_ = 0;

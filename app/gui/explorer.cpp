@@ -39,7 +39,8 @@ Explorer::Explorer(const Preset& initial, const std::string& initial_path, bool 
           options_.start_folder.empty() ? std::filesystem::current_path() : options_.start_folder)),
       panels_(make_panels({options_.presets_dir, options_.user_presets_dir, options_.analysis_tab,
                            options_.measurements_file})),
-      menu_(std::make_unique<MenuBar>(layout_, appearance_, [this] { copy_link(); })),
+      menu_(
+          std::make_unique<MenuBar>(layout_, appearance_, link_choices_, [this] { copy_link(); })),
       presentation_(std::make_unique<PresentationBar>(layout_)),
       session_(std::make_unique<SessionKeeper>(options_.session_file, options_.owns_config_folder,
                                                document_, status_, view_settings_)) {
@@ -80,6 +81,9 @@ void Explorer::declare_view_settings() {
       "grid", {kMinGridResolution, kMaxGridResolution, " (vertices per side)"},
       kScripted | kReported, [this] { return document_.scene().grid_nx(); },
       [this](double per_side) { document_.set_grid_resolution(static_cast<int>(per_side)); }, true);
+  // What Copy link writes: the sender's theme and text size or not, and the page's address.
+  s.add_switch("link_look", &link_choices_.carries_look, kEveryUse);
+  s.add_text("page_address", &link_choices_.page_address, kEveryUse);
   s.add_switch_by(
       "expert", kEveryUse, [this] { return status_.expert_mode(); },
       [this](bool on) { status_.set_expert_mode(on); });
@@ -108,18 +112,60 @@ nlohmann::json Explorer::report() {
   return state;
 }
 
+namespace {
+
+// The shipped preset `path` is, by its file's stem: what a link names for the reader to start
+// from. Empty for the built-in default and for a file outside the shipped folder (a user's
+// preset, which the reader does not have).
+std::string shipped_preset_name(const std::string& path, const std::filesystem::path& shipped) {
+  if (path.empty() || shipped.empty()) {
+    return "";
+  }
+  std::error_code error;
+  const std::filesystem::path file(path);
+  return std::filesystem::equivalent(file.parent_path(), shipped, error) && !error
+             ? file.stem().string()
+             : "";
+}
+
+}  // namespace
+
 std::string Explorer::link() const {
+  LinkContent content;
+  content.preset = shipped_preset_name(document_.loaded_path(), options_.presets_dir);
+  // As its file has it, which is what the reader loads: the preset as loaded here may carry
+  // --set overrides.
+  if (!content.preset.empty() && (!link_base_ || link_base_->first != document_.loaded_path())) {
+    try {
+      link_base_.emplace(document_.loaded_path(), load_preset(document_.loaded_path()));
+    } catch (const PresetError&) {
+      link_base_.reset();
+    }
+  }
+  if (content.preset.empty() || !link_base_) {
+    content.preset.clear();
+    content.base = default_preset();
+  } else {
+    content.base = link_base_->second;
+  }
+  content.a = {document_.edited(), document_.dragged_keys(), document_.loaded().name};
+  if (document_.compare().pinned()) {
+    content.b = LinkFabric{document_.compare().b().parameters, {}, document_.compare().b().name};
+  }
   // A phone's one view is its screen's, not a choice to send: a link opened on a laptop shows
   // its tiles.
-  return explorer_link(document_.edited(),
+  return explorer_link(content,
                        {shows_one_view() ? std::string() : presented(), appearance_.light_theme(),
-                        appearance_.scale_percent()});
+                        appearance_.scale_percent(), link_choices_.carries_look});
 }
 
 void Explorer::copy_link() {
-  const std::string address = page_link_->address(link());
+  const std::string address = page_link_->address(link(), link_choices_.page_address);
   page_link_->copy(address);
+  // Said where it is seen: the Presets panel's status line may be below the window's foot, and is
+  // hidden while a panel is presented.
   status_.notify(copied_link_notice(address), MessageKind::success);
+  status_.toast(copied_link_notice(address));
 }
 
 std::optional<PictureRequest> Explorer::take_screenshot_request() {
@@ -241,9 +287,41 @@ void Explorer::handle_escape() {
 
 bool Explorer::awaits_time() const {
   const ImGuiIO& io = ImGui::GetIO();
-  return !status_.message().empty() || status_.session_dirty() || address_.pending() ||
-         io.WantTextInput || io.WantSaveIniSettings ||
+  return !status_.message().empty() || !status_.toast().empty() || status_.session_dirty() ||
+         address_.pending() || io.WantTextInput || io.WantSaveIniSettings ||
          ImGui::GetCurrentContext()->SettingsDirtyTimer > 0.0f;
+}
+
+void Explorer::draw_toast() {
+  toast_rect_.reset();
+  const std::string& text = status_.toast();
+  if (text.empty()) {
+    return;
+  }
+  const ImGuiViewport* viewport = ImGui::GetMainViewport();
+  const float margin = ImGui::GetFontSize();
+  ImGui::SetNextWindowPos(ImVec2(viewport->WorkPos.x + viewport->WorkSize.x * 0.5f,
+                                 viewport->WorkPos.y + viewport->WorkSize.y - margin),
+                          ImGuiCond_Always, ImVec2(0.5f, 1.0f));
+  ImGui::SetNextWindowSizeConstraints(
+      ImVec2(0.0f, 0.0f),
+      ImVec2(viewport->WorkSize.x - 2.0f * margin, viewport->WorkSize.y - 2.0f * margin));
+  constexpr ImGuiWindowFlags kFlags =
+      ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize |
+      ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing |
+      ImGuiWindowFlags_NoNav | ImGuiWindowFlags_NoInputs;
+  if (ImGui::Begin("##toast", nullptr, kFlags)) {
+    // Wrapped at most at 40 font heights: a line across a wide window is hard to read.
+    ImGui::PushTextWrapPos(std::min(viewport->WorkSize.x - 4.0f * margin, 40.0f * margin));
+    ImGui::TextUnformatted(text.c_str());
+    ImGui::PopTextWrapPos();
+    const ImVec2 pos = ImGui::GetWindowPos();
+    const ImVec2 size = ImGui::GetWindowSize();
+    toast_rect_ = PanelRect{pos, size};
+  }
+  ImGui::End();
+  // Above the panels, which the frame draws before it.
+  ImGui::BringWindowToDisplayFront(ImGui::FindWindowByName("##toast"));
 }
 
 void Explorer::frame() {
@@ -282,6 +360,7 @@ void Explorer::frame() {
     panel->end_frame(context);
   }
   menu_->draw_after_panels(context);
+  draw_toast();
   files_->draw(status_);
   // A drag ends when its widget lets go; an animation when it is paused.
   if (!ImGui::IsAnyItemActive() && !plays_input()) {

@@ -120,10 +120,18 @@ class Explorer {
     return layout_.presented() != nullptr ? layout_.presented()->key() : "";
   }
   // Where the link goes: the platform's (make_page_link()); the desktop's until set.
-  void set_page_link(std::unique_ptr<PageLink> link) { page_link_ = std::move(link); }
-  // The fabric A as a link's fragment (core/io/link.hpp: every input, as edited, refused or not),
-  // with the view keys (kLinkViewKeys) that differ from a fresh start.
+  void set_page_link(std::unique_ptr<PageLink> link) {
+    page_link_ = std::move(link);
+    link_choices_.page_knows_address = page_link_->knows_address();
+  }
+  // The fabrics as a link's fragment (explorer_link): the preset they start from, A's name and
+  // inputs (as edited, refused or not; dragged ones at the slider's digits), B when pinned, and
+  // the view keys (kLinkViewKeys) that differ from a fresh start.
   std::string link() const;
+  // What "Copy link" puts around the fragment and sends with it, set in the Export menu.
+  LinkChoices& link_choices() { return link_choices_; }
+  // Where the toast was drawn at the last frame (display pixels); none when no toast is shown.
+  const std::optional<PanelRect>& toast_rect() const { return toast_rect_; }
   // "Export > Copy link": the link, as the platform hands it out, on the clipboard, with a notice.
   void copy_link();
 
@@ -168,6 +176,8 @@ class Explorer {
   void declare_view_settings();
   // Ctrl+Z undo, Ctrl+Shift+Z and Ctrl+Y redo.
   void handle_undo_keys();
+  // The toast (UiStatus::toast) over the foot of the window.
+  void draw_toast();
   // Escape closes an open menu or combo first, then leaves presentation.
   void handle_escape();
   PanelContext context();
@@ -186,6 +196,10 @@ class Explorer {
   std::function<void()> wake_;
   std::unique_ptr<PageLink> page_link_ = std::make_unique<PageLink>();
   LinkThrottle address_;  // when the page's address follows the link
+  LinkChoices link_choices_;
+  // The shipped preset links start from, as its file (path) has it: read once, not every frame.
+  mutable std::optional<std::pair<std::string, Preset>> link_base_;
+  std::optional<PanelRect> toast_rect_;  // where the toast was drawn at the last frame
   Layout layout_{panels_};
   std::unique_ptr<MenuBar> menu_;
   std::unique_ptr<PresentationBar> presentation_;

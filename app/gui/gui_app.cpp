@@ -301,14 +301,20 @@ class ExplorerRun {
                                      screen_preferences(),
                                      config_->owns_folder()};
     // A preset named on the command line wins over the restored session.
+    const bool fabric_linked =
+        !options.inputs.link.empty() || options.link_name || options.link_b_name;
     const bool restore = persist_ && options.inputs.preset_path.empty() &&
-                         options.inputs.assignments.empty() && options.inputs.link.empty();
+                         options.inputs.assignments.empty() && !fabric_linked;
     // A link's fabric is shown as an edit of its preset (the title's "*", A's "(edited)"): a
     // student who opens a shared link must not take it for the preset itself.
     const bool linked = !options.inputs.link.empty();
+    // The link's name is A's, over the preset it is an edit of.
+    Preset origin = linked ? start.origin : preset;
+    if (options.link_name) {
+      origin.name = *options.link_name;
+    }
     // The file a preset's name stands for: Ctrl+S saves over it when it is the user's.
-    explorer_.emplace(linked ? start.origin : preset, start.preset_file, restore, explorer_options,
-                      *renderer_);
+    explorer_.emplace(origin, start.preset_file, restore, explorer_options, *renderer_);
     explorer_->set_page_link(make_page_link());
     explorer_->set_file_transfer(make_file_transfer());
     if (linked || start.refused) {
@@ -318,6 +324,8 @@ class ExplorerRun {
           Edit::replace(start.refused ? *start.refused : preset.parameters));
       explorer_->document().forget_history();
     }
+    std::vector<std::string> link_notes = start.link_notes;
+    pin_linked_b(options, start, link_notes);
     if (interactive) {
       // A background job that finishes while the window sleeps wakes it to show its result (the
       // regime map's last rows, a calibration's table). Thread-safe; the window outlives the
@@ -333,7 +341,6 @@ class ExplorerRun {
     for (const std::string& notice : options.start_notices) {
       explorer_->add_notice(notice);
     }
-    std::vector<std::string> link_notes = start.link_notes;
     apply_view_settings(*explorer_, options, link_notes);
     if (!link_notes.empty()) {
       explorer_->add_notice(link_notice(link_notes));
@@ -346,6 +353,34 @@ class ExplorerRun {
     }
     script_.emplace(options.frames, std::move(animation), std::move(player),
                     options.screenshot_path, options.input_files);
+  }
+
+  // The link's B, pinned beside A: the preset A's link starts from with B's inputs over it. A B
+  // that cannot be read or is refused stops a command line's link and is a note in the page's.
+  void pin_linked_b(const GuiRunOptions& options, const app::StartInputs& start,
+                    std::vector<std::string>& link_notes) {
+    if (!options.link_b_name && options.link_b.empty()) {
+      return;
+    }
+    app::InputOptions b_inputs;
+    b_inputs.preset_path = start.preset_file;
+    b_inputs.assignments = options.link_b;
+    b_inputs.set_option = "--link b.";
+    b_inputs.whose = "B's ";
+    app::InputOptions b_origin;
+    b_origin.preset_path = start.preset_file;
+    try {
+      const Preset origin = app::resolve_inputs(b_origin);
+      Preset fabric = app::resolve_inputs(b_inputs);
+      fabric.name = options.link_b_name.value_or(origin.name + " (B)");
+      explorer_->document().compare().pin(PinnedFabric{fabric, origin, start.preset_file});
+      explorer_->document().forget_history();
+    } catch (const app::InputError& e) {
+      if (!options.inputs.forgiving_link) {
+        throw;
+      }
+      link_notes.push_back(std::string("B could not be pinned (") + e.what() + ")");
+    }
   }
 
   // What the run leaves (the session and the layout saved as they go) is stored as well.

@@ -29,6 +29,11 @@ struct GuiRunOptions {
   // The link's view keys (present, theme, scale), applied before view_settings: a problem in one
   // is named as the link's, and with inputs.forgiving_link is a notice rather than an error.
   std::vector<std::string> link_view_settings;
+  // The link's fabric keys (core/io/link.hpp): A's name, and B's name and inputs (as --set takes
+  // them, over A's preset) when the link pins a B.
+  std::optional<std::string> link_name;
+  std::optional<std::string> link_b_name;
+  std::vector<std::string> link_b;
   // Said in the explorer from the start, as notices (the page's unknown ?preset=NAME).
   std::vector<std::string> start_notices;
   // The files the run reads (preset, script, swatches), which no picture may be written over.

@@ -246,6 +246,13 @@ json compare_json(Document& document) {
           {"solution", solution_to_json(document.compare().solution(), b.parameters)}};
 }
 
+bool toast_in_window(const Explorer& explorer) {
+  const std::optional<PanelRect>& rect = explorer.toast_rect();
+  const ImVec2 display = ImGui::GetIO().DisplaySize;
+  return rect && rect->pos.x >= 0.0f && rect->pos.y >= 0.0f &&
+         rect->pos.x + rect->size.x <= display.x && rect->pos.y + rect->size.y <= display.y;
+}
+
 json layout_json(Explorer& explorer) {
   const std::string presented = explorer.presented();
   json panels = json::object();
@@ -274,6 +281,7 @@ json explorer_state_json(Explorer& explorer) {
       {"stats", scene_stats_to_json(scene)},
       {"solution", solution_to_json(scene.solution(), scene.parameters())},
       {"parameters", parameters_json(document.edited())},
+      {"label", fabric_label(document)},  // A's name, "(edited)" after it once edited
       {"compare", compare_json(document)},
       {"refused", refused ? json(*refused) : json(nullptr)},
       {"dirty", document.unsaved()},
@@ -283,6 +291,9 @@ json explorer_state_json(Explorer& explorer) {
       {"display", {ImGui::GetIO().DisplaySize.x, ImGui::GetIO().DisplaySize.y}},
       {"message", explorer.status().message()},
       {"link", explorer.link()},
+      {"toast", explorer.status().toast()},
+      // Whether the whole toast lies inside the window, where it is read.
+      {"toast_in_window", toast_in_window(explorer)},
       {"clipboard", detail::escaped(clipboard != nullptr ? clipboard : "")},
       {"popup_open", ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId)},
       {"file_problem", explorer.file_dialog().problem()},

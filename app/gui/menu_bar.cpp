@@ -1,5 +1,7 @@
 #include "app/gui/menu_bar.hpp"
 
+#include <array>
+#include <cstdio>
 #include <string>
 
 #include <imgui.h>
@@ -12,6 +14,7 @@
 #include "app/gui/panels/parameters_panel.hpp"
 #include "app/gui/panels/stats_overlay.hpp"
 #include "app/gui/presentation_bar.hpp"
+#include "app/gui/view_settings.hpp"
 
 namespace foldlab::gui {
 
@@ -89,7 +92,32 @@ void MenuBar::export_items(PanelContext& context) {
     copy_link_();
   }
   if (ImGui::IsItemHovered()) {
-    ImGui::SetTooltip("The fabric as an address: open it in the page, or with foldlab gui --link");
+    ImGui::SetTooltip(
+        "The fabric (and B, when pinned) as an address: open it in the page, or in an installed "
+        "FoldLab");
+  }
+  ImGui::MenuItem("Link sets my theme and text size", nullptr, &link_choices_.carries_look);
+  if (ImGui::IsItemHovered()) {
+    ImGui::SetTooltip(
+        "Off: whoever opens the link keeps their own theme and text size (a phone's, a "
+        "projector's)");
+  }
+  if (link_choices_.page_knows_address) {
+    return;
+  }
+  // Set once, remembered: where the page is served, so that a link opens in any browser.
+  ImGui::TextUnformatted("Page address");
+  ImGui::SetNextItemWidth(ImGui::GetFontSize() * 22.0f);
+  std::array<char, ViewSettings::kMaxTextBytes + 1> typed{};
+  std::snprintf(typed.data(), typed.size(), "%s", link_choices_.page_address.c_str());
+  if (ImGui::InputTextWithHint("##page_address", "https://.../foldlab/index.html", typed.data(),
+                               typed.size())) {
+    link_choices_.page_address = typed.data();
+  }
+  if (ImGui::IsItemHovered()) {
+    ImGui::SetTooltip(
+        "Where the FoldLab page is served: Copy link then gives a web address anyone can open. "
+        "Empty: a foldlab: link, which opens in an installed FoldLab.");
   }
 }
 

@@ -6,6 +6,7 @@
 #include <functional>
 
 #include "app/gui/layout.hpp"
+#include "app/gui/page_link.hpp"
 #include "app/gui/panel.hpp"
 #include "app/gui/panels/export_panel.hpp"
 
@@ -22,9 +23,13 @@ class MenuBar {
   static constexpr const char* kBackToTilesLabel = "Back to the tiles (Esc)";
   static constexpr const char* kBackToTilesShortLabel = "Tiles (Esc)";
 
-  // `copy_link`: what Export > Copy link does.
-  MenuBar(Layout& layout, Appearance& appearance, std::function<void()> copy_link)
-      : layout_(layout), appearance_(appearance), copy_link_(std::move(copy_link)) {}
+  // `copy_link`: what Export > Copy link does; `link_choices`: what its items beside it set.
+  MenuBar(Layout& layout, Appearance& appearance, LinkChoices& link_choices,
+          std::function<void()> copy_link)
+      : layout_(layout),
+        appearance_(appearance),
+        link_choices_(link_choices),
+        copy_link_(std::move(copy_link)) {}
   // The bar; returns its height, where the tiled panels start.
   float draw(PanelContext& context);
   // After the panels: the dialogs the Export menu opened and the pipeline's stats.
@@ -41,6 +46,7 @@ class MenuBar {
 
   Layout& layout_;
   Appearance& appearance_;
+  LinkChoices& link_choices_;
   std::function<void()> copy_link_;
   ExportPanel export_;
   bool show_stats_ = false;

@@ -92,8 +92,13 @@ SessionSettings SessionSettings::from_json(const nlohmann::json& view,
     throw std::runtime_error("view must be an object");
   }
   for (const auto& [key, value] : view.items()) {
-    if (value.is_boolean() || value.is_number()) {
+    const bool text_key = std::find(std::begin(kTextViewKeys), std::end(kTextViewKeys), key) !=
+                          std::end(kTextViewKeys);
+    if (text_key ? value.is_string() : value.is_boolean() || value.is_number()) {
       out.values_[key] = value;
+    } else if (text_key) {
+      dropped.push_back("view." + detail::cut(key) + " must be text, not " +
+                        std::string(value.type_name()));
     } else {
       dropped.push_back("view." + detail::cut(key) + " must be true, false or a number, not " +
                         std::string(value.type_name()));

@@ -10,6 +10,7 @@
 #include <limits>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <type_traits>
 #include <vector>
 
@@ -35,6 +36,9 @@ inline constexpr std::size_t kMaxListedPresets = 500;
 // The session's "view" object: settings by name, true/false or numbers. Each panel declares its
 // own once, with its key and range (Panel::view_settings, view_settings.hpp); the member's initial
 // value is the default.
+// The view keys stored as text (ViewSettings::add_text): the page's address links are made with.
+inline constexpr std::string_view kTextViewKeys[] = {"page_address"};
+
 class SessionSettings {
  public:
   // The stored value, or `fallback` when it is absent or of another type.
@@ -63,10 +67,17 @@ class SessionSettings {
     values_[key] = value;
   }
   bool has(const char* key) const { return values_.contains(key); }
+  // A stored line of text; nullopt when absent or not text.
+  std::optional<std::string> text(const char* key) const {
+    const auto found = values_.find(key);
+    return found != values_.end() && found->is_string()
+               ? std::optional<std::string>(found->template get<std::string>())
+               : std::nullopt;
+  }
   // As stored in the file.
   const nlohmann::json& json() const { return values_; }
-  // The entries of `view` that are true, false or a number; each other one is left out and named
-  // in `dropped`. Throws when `view` is not an object.
+  // The entries of `view` that are true, false or a number, or text for kTextViewKeys; each other
+  // one is left out and named in `dropped`. Throws when `view` is not an object.
   static SessionSettings from_json(const nlohmann::json& view, std::vector<std::string>& dropped);
 
  private:

@@ -32,6 +32,11 @@ const std::string& UiStatus::message() const {
   return now_s_ - message_time_s_ > lifetime_s(message_kind_) ? none : message_;
 }
 
+const std::string& UiStatus::toast() const {
+  static const std::string none;
+  return now_s_ - toast_time_s_ > kToastLifetime_s ? none : toast_;
+}
+
 void UiStatus::add_notice(const std::string& notice) {
   if (std::find(notices_.begin(), notices_.end(), notice) == notices_.end()) {
     notices_.push_back(notice);

@@ -34,6 +34,17 @@ class UiStatus {
   // The frame's clock in seconds (ImGui::GetTime()).
   void tick(double now_s) { now_s_ = now_s; }
 
+  // A line shown over the foot of the window for kToastLifetime_s, whatever the layout: what an
+  // action with no panel of its own did (Copy link), where the status line, at the foot of the
+  // Presets panel, may be out of sight.
+  void toast(std::string text) {
+    toast_ = std::move(text);
+    toast_time_s_ = now_s_;
+  }
+  // The toast, empty once expired.
+  const std::string& toast() const;
+  static constexpr double kToastLifetime_s = 8.0;
+
   // Lines shown in the Presets panel until the explorer closes, and listed by `gui --report`:
   // config files that were not used, values brought into range. Repeats are kept once.
   void add_notice(const std::string& notice);
@@ -64,6 +75,8 @@ class UiStatus {
   MessageKind message_kind_ = MessageKind::info;
   double now_s_ = 0.0;
   double message_time_s_ = 0.0;
+  std::string toast_;
+  double toast_time_s_ = 0.0;
   std::vector<std::string> notices_;
   std::string modal_title_;
   bool session_dirty_ = false;

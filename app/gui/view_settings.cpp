@@ -137,6 +137,20 @@ void ViewSettings::add_number_by(const char* key, ViewRange<double> range, unsig
   rows_.push_back(std::move(row));
 }
 
+void ViewSettings::add_text(const char* key, std::string* value, unsigned uses) {
+  Row row{key, uses};
+  row.text = value;
+  row.set = [key, value](std::string_view text) -> std::optional<std::string> {
+    if (text.size() > kMaxTextBytes) {
+      return detail::cut(key) + " is longer than " + std::to_string(kMaxTextBytes) + " bytes";
+    }
+    *value = std::string(text);
+    return std::nullopt;
+  };
+  row.say = [value] { return nlohmann::json(*value); };
+  rows_.push_back(std::move(row));
+}
+
 void ViewSettings::add_action(const char* key, Setter set, std::function<nlohmann::json()> report) {
   Row row{key, kScripted | (report ? kReported : 0u)};
   row.set = std::move(set);
@@ -187,7 +201,9 @@ void ViewSettings::save(SessionSettings& settings) const {
     if ((row.uses & kRemembered) == 0 || (row.saved_while && !row.saved_while())) {
       continue;
     }
-    if (row.is_bool) {
+    if (row.text != nullptr) {
+      settings.set(row.key, *row.text);
+    } else if (row.is_bool) {
       settings.set(row.key, row.read() != 0.0);
     } else {
       settings.set(row.key, row.read());
@@ -198,6 +214,13 @@ void ViewSettings::save(SessionSettings& settings) const {
 void ViewSettings::load(const SessionSettings& settings) {
   for (Row& row : rows_) {
     if ((row.uses & kRemembered) == 0) {
+      continue;
+    }
+    if (row.text != nullptr) {
+      if (const std::optional<std::string> stored = settings.text(row.key);
+          stored && stored->size() <= kMaxTextBytes) {
+        *row.text = *stored;
+      }
       continue;
     }
     // Read as doubles: a stored 1e308 is refused, not converted to int or float first.
@@ -214,6 +237,11 @@ bool ViewSettings::take_changed() {
   bool changed = false;
   for (Row& row : rows_) {
     if ((row.uses & kRemembered) == 0) {
+      continue;
+    }
+    if (row.text != nullptr) {
+      changed |= *row.text != row.last_text;
+      row.last_text = *row.text;
       continue;
     }
     const double now = row.read();

@@ -91,6 +91,10 @@ class ViewSettings {
   void add_number_by(const char* key, ViewRange<double> range, unsigned uses,
                      std::function<double()> read, std::function<void(double)> write,
                      bool whole = false);
+  // A line of text kept as it is (an address), at most kMaxTextBytes: a scripted or stored one
+  // longer is refused.
+  void add_text(const char* key, std::string* value, unsigned uses);
+  static constexpr std::size_t kMaxTextBytes = 2000;
   // A setting with words of its own: `set` reads the value, `report` (when given) says it.
   void add_action(const char* key, Setter set, std::function<nlohmann::json()> report = {});
 
@@ -125,6 +129,8 @@ class ViewSettings {
     std::function<void()> on_set;          // after a scripted value was taken
     std::function<bool(double)> loadable;  // may refuse a stored value within [lo, hi]
     double last = 0.0;
+    std::string* text = nullptr;  // a text row's value (add_text); read and write unused
+    std::string last_text;
   };
   Row number_row(const char* key, double lo, double hi, const char* unit, unsigned uses) const;
   const Row* find(std::string_view key) const;

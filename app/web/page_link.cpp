@@ -23,11 +23,12 @@ class BrowserLink final : public PageLink {
  public:
   BrowserLink() { reopen_on_edited_address(); }
   // The page's address as it is now, its query (?preset=NAME) kept, its fragment replaced.
-  std::string address(std::string_view fragment) const override {
+  std::string address(std::string_view fragment, std::string_view /*page_address*/) const override {
     const std::string page = emscripten_run_script_string("location.href.split('#')[0]");
     return page + "#" + std::string(fragment);
   }
   bool follows() const override { return true; }
+  bool knows_address() const override { return true; }
   void show(std::string_view fragment) override {
     replace_address_fragment(std::string(fragment).c_str());
   }

@@ -1,5 +1,6 @@
 #include "core/io/link.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -62,14 +63,60 @@ int hex_digit(char c) {
 }  // namespace
 
 std::string fabric_link(const Parameters& p) {
+  return fabric_link(p, LinkWriting{});
+}
+
+std::string fabric_link(const Parameters& p, const LinkWriting& how) {
+  const Parameters written = with_shown_digits(p, how.shown_digits_keys);
   std::string out;
   for (const InputSpec& spec : input_table()) {
     if (spec.preset.empty()) {
       continue;  // derived (K): its inputs are written
     }
-    const std::optional<double> value = spec.value(p);
-    const std::string text = value ? number_text(spec, *value) : std::string(spec.choice(p));
-    out += (out.empty() ? "" : "&") + percent_encode(spec.key) + "=" + percent_encode(text);
+    const std::optional<double> value = spec.value(written);
+    if (how.base != nullptr) {
+      const std::optional<double> base_value = spec.value(*how.base);
+      const bool same = value ? base_value && same_bits(*value, *base_value)
+                              : spec.choice(written) == spec.choice(*how.base);
+      if (same) {
+        continue;
+      }
+    }
+    const std::string text = value ? number_text(spec, *value) : std::string(spec.choice(written));
+    out += (out.empty() ? "" : "&") +
+           percent_encode(std::string(how.key_prefix) + std::string(spec.key)) + "=" +
+           percent_encode(text);
+  }
+  return out;
+}
+
+double shown_digits_value(const InputSpec& spec, double stored) {
+  if (!std::isfinite(stored) || spec.kind == InputKind::choice) {
+    return stored;
+  }
+  const InputUnit unit = shown_unit(spec);
+  const std::string text =
+      detail::printf_string(std::string(unit.format).c_str(), stored / unit.per_unit) +
+      (spec.shown_unit == 0 ? std::string()
+                            : std::string(unit.plain.empty() ? unit.symbol : unit.plain));
+  Parameters p;
+  if (assign_text(p, spec.key, text)) {
+    return stored;
+  }
+  const std::optional<double> read = spec.value(p);
+  return read && std::isfinite(*read) ? *read : stored;
+}
+
+Parameters with_shown_digits(const Parameters& p, const std::vector<std::string>& keys) {
+  Parameters out = p;
+  for (const InputSpec& spec : input_table()) {
+    if (spec.preset.empty() ||
+        std::find(keys.begin(), keys.end(), std::string(spec.key)) == keys.end()) {
+      continue;
+    }
+    if (const std::optional<double> value = spec.value(p)) {
+      assign_number(out, spec.key, shown_digits_value(spec, *value));
+    }
   }
   return out;
 }

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "core/model/parameters.hpp"
+#include "core/model/settings.hpp"
 
 namespace foldlab {
 
@@ -18,6 +19,32 @@ namespace foldlab {
 // text that `--set` reads back as the very same double; when no text in that unit does, in the
 // stored unit, where the shortest text always does. A choice is written by its name.
 std::string fabric_link(const Parameters& p);
+
+// The keys a link carries besides the inputs: the fabric's name, the shipped preset the inputs
+// left out are read from, and the prefix of the inputs of the fabric pinned as B ("b.t=0.3").
+inline constexpr std::string_view kLinkNameKey = "name";
+inline constexpr std::string_view kLinkPresetKey = "preset";
+inline constexpr std::string_view kLinkBPrefix = "b.";
+
+// How fabric_link writes a fabric beyond the plain form above.
+struct LinkWriting {
+  // An input whose value (as written) equals this fabric's is left out: the preset the reader
+  // starts from. None: every input is written.
+  const Parameters* base = nullptr;
+  // Inputs written with the digits the explorer's slider shows (a dragged value: its last digits
+  // are where the mouse stopped, not what the user chose); the others exactly (typed or loaded).
+  std::vector<std::string> shown_digits_keys{};
+  // Put before every key: kLinkBPrefix for B.
+  std::string_view key_prefix{};
+};
+std::string fabric_link(const Parameters& p, const LinkWriting& how);
+
+// `stored` as the explorer's slider shows it (its shown unit's printf format), read back the way
+// `--set` reads that text: what a dragged value is written and saved as. `stored` itself when the
+// shown text does not read back (a value beyond the format's range).
+double shown_digits_value(const InputSpec& spec, double stored);
+// `p` with every input in `keys` at shown_digits_value.
+Parameters with_shown_digits(const Parameters& p, const std::vector<std::string>& keys);
 
 // One KEY=VALUE of a link, percent-decoded.
 struct LinkAssignment {

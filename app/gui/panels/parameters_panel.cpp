@@ -214,9 +214,10 @@ void ParametersPanel::input_slider(Document& document, UiStatus& status, const I
   }
   ImGui::SetNextItemWidth(width);
   const ImGuiID id = ImGui::GetID(label.c_str());
+  const bool typing = ImGui::TempInputIsActive(id);
   const std::optional<double> changed =
-      ImGui::TempInputIsActive(id) ? typed_field(document, status, spec, label, id, value)
-                                   : slider_field(document, status, spec, label, id, width, value);
+      typing ? typed_field(document, status, spec, label, id, value)
+             : slider_field(document, status, spec, label, id, width, value);
   if (changed) {
     // The last text typed here that was no value, and its reason on the status line, no longer
     // hold.
@@ -227,6 +228,9 @@ void ParametersPanel::input_slider(Document& document, UiStatus& status, const I
     // A drag stays open until the slider lets go (the frame closes the step); a typed value or
     // an arrow key's nudge is a step of its own.
     Edit edit = Edit::input(key, *changed);
+    if (!typing) {
+      edit = std::move(edit).by_slider();
+    }
     document.apply(ImGui::IsItemActive() ? std::move(edit).open() : edit);
   }
   if (is_refused) {
@@ -417,7 +421,7 @@ void ParametersPanel::begin_frame(PanelContext& context) {
   animation_ways_ += static_cast<double>(ImGui::GetIO().DeltaTime) / kSecondsPerWay;
   // Open, and left open by the frame while playing: the whole animation up to its pause is one
   // undo step, which takes the input back to where it was before play.
-  document.apply(Edit::input(animate_key_, animation_->at(animation_ways_)).open());
+  document.apply(Edit::input(animate_key_, animation_->at(animation_ways_)).by_slider().open());
 }
 
 void ParametersPanel::animation_row(Document& document, UiStatus& status,

@@ -17,6 +17,7 @@
 #include "app/gui/panels/photo_overlay.hpp"
 #include "app/gui/panels/widgets.hpp"
 #include "app/gui/session.hpp"
+#include "core/io/link.hpp"
 #include "core/model/text_format.hpp"
 
 namespace foldlab::gui {
@@ -157,6 +158,12 @@ Preset preset_to_save(const Document& document, const std::string& name) {
   Preset preset = loaded;
   preset.name = name;
   preset.parameters = document.scene().parameters();
+  // A dragged value is saved as the slider shows it, which the user can read back and type
+  // again; a typed one exactly. Not when the rounding is refused (a value at a range's end).
+  const Parameters shown = with_shown_digits(preset.parameters, document.dragged_keys());
+  if (validate(shown).empty()) {
+    preset.parameters = shown;
+  }
   if (loaded.name != name) {
     // The source preset's description and sources describe its fabric, not this one: the new
     // preset names where it came from instead, and that preset's file keeps its sources.
@@ -175,6 +182,12 @@ void PresetsPanel::write(Document& document, UiStatus& status, const std::string
   try {
     std::filesystem::create_directories(path.parent_path());
     save_preset(preset, path);
+    if (document.edited() == document.scene().parameters() &&
+        document.edited() != preset.parameters) {
+      // The edits become what was saved (dragged values at the slider's digits), so that the
+      // file and the fabric shown agree and nothing reads as unsaved.
+      document.apply(Edit::replace(preset.parameters));
+    }
     document.adopt(preset, path.string());
     status.notify("Saved to " + path.string(), MessageKind::success);
     refresh();
