@@ -22,7 +22,7 @@ class MenuBar {
   static constexpr const char* kBackToTilesLabel = "Back to the tiles (Esc)";
   // While the tiles are too small for the text size (Layout::cramped).
   static constexpr const char* kCrampedNotice = "The tiles are too small for this text size:";
-  static constexpr const char* kCrampedShortNotice = "Text too large for the tiles:";
+  static constexpr const char* kCrampedShortNotice = "Tiles too small:";
   static constexpr const char* kCrampedTooltip =
       "At this text size the six tiles cut their sliders and labels. Present one view to fill "
       "the window with it (with the inputs under its read-out), or choose a smaller text size in "
