@@ -119,10 +119,14 @@ TEST(PlotTicks, FittedTicksAreRoundAndTheirLabelsNeverOverlap) {
   // Over 100 px, 1000 apart is 33.3 px, short of 34: two ticks, 2000 apart.
   EXPECT_EQ(fitted_ticks(0, 3000, false, 100, seven_px, 6, 12).values,
             (std::vector<double>{0, 2000}));
-  // Over 30 px not even 0 and 2000 fit (20 px apart): 2000 alone, nearer the middle (15 px).
+  // Over 30 px no two neighbours fit (0 and 2000 are 20 px apart, short of 23.5), but the ends
+  // 0 and 3000 are 30 px apart: the axis still says from where to where.
   t = fitted_ticks(0, 3000, false, 30, seven_px, 6, 12);
+  EXPECT_EQ(t.values, (std::vector<double>{0, 3000}));
+  EXPECT_EQ(t.labels, (std::vector<std::string>{"0", "3000"}));
+  // Over 20 px not even the ends fit: 2000 alone, nearer the middle (13.3 px).
+  t = fitted_ticks(0, 3000, false, 20, seven_px, 6, 12);
   EXPECT_EQ(t.values, (std::vector<double>{2000}));
-  EXPECT_EQ(t.labels, (std::vector<std::string>{"2000"}));
   // A font twice as large over 300 px: 500 apart (50 px) is short of 62, 1000 apart fits.
   const auto fourteen_px = [](const std::string& label) {
     return 14.0f * static_cast<float>(label.size());
@@ -154,6 +158,22 @@ TEST(PlotTicks, FittedTicksAreRoundAndTheirLabelsNeverOverlap) {
     }
   }
   EXPECT_GT(lone, 10) << "short axes show one tick";
+}
+
+TEST(WholeTicks, AtLeastThreeWholeNumbersWhereTheyFit) {
+  const auto line_px = [](const std::string&) { return 14.0f; };
+  // n from 2 to 8 (autoscaled to 1.7..8.3) over 100 px: a step of 1 is 15.2 px apart, short of
+  // 14 + 4; 2 apart (30.3 px) fits.
+  EXPECT_EQ(whole_ticks(1.7, 8.3, 100, line_px, 4, 12), (std::vector<double>{2, 4, 6, 8}));
+  // Over 40 px, 2 apart is 12.1 px and 5 apart leaves 5 alone: the ends and the middle, 2, 5 and
+  // 8, 18.2 px apart, fit.
+  EXPECT_EQ(whole_ticks(1.7, 8.3, 40, line_px, 4, 12), (std::vector<double>{2, 5, 8}));
+  // n from 1 to 30 over 200 px with at most 12: 5 apart (34.5 px) is the densest that fits.
+  EXPECT_EQ(whole_ticks(1, 30, 200, line_px, 4, 12), (std::vector<double>{5, 10, 15, 20, 25, 30}));
+  // Never between whole numbers, however long the axis.
+  EXPECT_EQ(whole_ticks(2.2, 3.8, 500, line_px, 4, 12), (std::vector<double>{3}));
+  // Too short for three: the densest that fits.
+  EXPECT_EQ(whole_ticks(1.7, 8.3, 20, line_px, 4, 12), (std::vector<double>{5}));
 }
 
 // --- the widget, headless ---------------------------------------------------------------------

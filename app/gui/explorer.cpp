@@ -90,8 +90,8 @@ void Explorer::declare_view_settings() {
 }
 
 PanelContext Explorer::context() {
-  return PanelContext{document_, status_, renderer_,   *files_,
-                      wake_,     panels_, appearance_, plays_input()};
+  return PanelContext{document_,   status_,       renderer_,          *files_, wake_, panels_,
+                      appearance_, plays_input(), layout_.presented()};
 }
 
 std::optional<std::string> Explorer::set_input(std::string_view key, double value) {

@@ -259,7 +259,26 @@ json layout_json(Explorer& explorer) {
   for (const auto& [name, rect] : explorer.layout().panel_rects()) {
     panels[name] = {{"x", rect.pos.x}, {"y", rect.pos.y}, {"w", rect.size.x}, {"h", rect.size.y}};
   }
+  // Each view's picture as drawn: how much of the window it really has, whatever its panel's size.
+  const ImVec2 display = ImGui::GetIO().DisplaySize;
+  const double window_px2 = static_cast<double>(display.x) * display.y;
+  DrawingAreas areas;
+  for (const std::unique_ptr<Panel>& panel : explorer.panels()) {
+    panel->drawing_areas(areas);
+  }
+  json drawing_areas = json::object();
+  for (const auto& [name, rect] : areas) {
+    drawing_areas[name] = {
+        {"x", rect.pos.x},
+        {"y", rect.pos.y},
+        {"w", rect.size.x},
+        {"h", rect.size.y},
+        {"window_share",
+         window_px2 > 0.0 ? static_cast<double>(rect.size.x) * rect.size.y / window_px2 : 0.0}};
+  }
   return {{"automatic", explorer.layout().automatic()},
+          {"drawing_areas", drawing_areas},
+          {"cramped", explorer.layout().cramped()},
           {"fills_window", explorer.layout().fills_window()},
           {"presented", presented.empty() ? json(nullptr) : json(presented)},
           {"presented_message", explorer.presented_message()},

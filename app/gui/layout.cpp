@@ -275,6 +275,17 @@ std::vector<std::pair<std::string, PanelRect>> Layout::panel_rects() const {
   return out;
 }
 
+bool Layout::cramped() const {
+  if (presented_ != nullptr || !automatic_) {
+    return false;
+  }
+  const float font_px = ImGui::GetFontSize();
+  return std::any_of(tiles_.tiles.begin(), tiles_.tiles.end(), [font_px](const PanelRect& tile) {
+    return tile.size.x < kLeastTileWidthEms * font_px ||
+           tile.size.y < kLeastTileHeightEms * font_px;
+  });
+}
+
 bool Layout::fills_window() const {
   const auto rects = panel_rects();
   const ImVec2 display = ImGui::GetIO().DisplaySize;

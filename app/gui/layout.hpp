@@ -66,6 +66,14 @@ class Layout {
   // True when the tiled panels cover the display below the menu bar exactly: no gap, no overlap,
   // nothing outside it.
   bool fills_window() const;
+  // True when the automatic tiles, as last laid out, leave a panel too small for the text size
+  // (a projector's 1280 x 800 at 200 %: a slider or two in sight, labels cut at the panel's
+  // edge): the menu bar then says so and offers to present one view. Never while one is
+  // presented or the user arranged the panels.
+  bool cramped() const;
+  // The least a tile must be, in font sizes, to hold a panel's rows.
+  static constexpr float kLeastTileWidthEms = 16.0f;
+  static constexpr float kLeastTileHeightEms = 9.0f;
 
   // The user's arrangement: automatic or not, the dragged edges, and the presented inputs' strip.
   // The dragged edges, the automatic layout and the strip (remembered); `present` (scripted).

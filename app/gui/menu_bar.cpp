@@ -51,6 +51,9 @@ float MenuBar::draw(PanelContext& context) {
         ImGui::MenuItem("Reset layout")) {
       layout_.reset();
     }
+    if (layout_.cramped() && !shows_one_view()) {
+      cramped_notice(context);
+    }
     // On a phone the views are switched under the read-out: there are no tiles to go back to.
     if (layout_.presented() != nullptr && !shows_one_view()) {
       presenting_items(context);
@@ -61,6 +64,32 @@ float MenuBar::draw(PanelContext& context) {
     ImGui::PopStyleVar();
   }
   return height;
+}
+
+void MenuBar::cramped_notice(PanelContext& context) {
+  // Six tiles at this text size each hold a sliver: one view over the window holds it all. The
+  // tiles stay as they are (a smaller text size, or a larger window, brings them back in full).
+  const ImGuiStyle& style = ImGui::GetStyle();
+  const float menu_width = ImGui::CalcTextSize(kPresentOneViewLabel).x + 2.0f * style.ItemSpacing.x;
+  const float room = ImGui::GetWindowWidth() - style.WindowPadding.x - ImGui::GetCursorPosX();
+  const char* words =
+      ImGui::CalcTextSize(kCrampedNotice).x + style.ItemSpacing.x + menu_width <= room
+          ? kCrampedNotice
+          : kCrampedShortNotice;
+  ImGui::PushStyleColor(ImGuiCol_Text, static_cast<ImVec4>(kNoteText));
+  ImGui::TextUnformatted(words);
+  ImGui::PopStyleColor();
+  if (ImGui::IsItemHovered()) {
+    ImGui::SetTooltip("%s", kCrampedTooltip);
+  }
+  if (ImGui::BeginMenu(kPresentOneViewLabel)) {
+    for (const std::unique_ptr<Panel>& panel : context.panels) {
+      if (Layout::tiled(*panel) && ImGui::MenuItem(panel->name())) {
+        layout_.request_present(panel.get());
+      }
+    }
+    ImGui::EndMenu();
+  }
 }
 
 void MenuBar::presenting_items(PanelContext& context) {

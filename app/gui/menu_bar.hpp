@@ -21,6 +21,14 @@ class MenuBar {
   static constexpr const char* kShowInputsLabel = "Show inputs";
   static constexpr const char* kHideInputsLabel = "Hide inputs";
   static constexpr const char* kBackToTilesLabel = "Back to the tiles (Esc)";
+  // While the tiles are too small for the text size (Layout::cramped).
+  static constexpr const char* kCrampedNotice = "The tiles are too small for this text size:";
+  static constexpr const char* kCrampedShortNotice = "Tiles too small:";
+  static constexpr const char* kCrampedTooltip =
+      "At this text size the six tiles cut their sliders and labels. Present one view to fill "
+      "the window with it (with the inputs under its read-out), or choose a smaller text size in "
+      "View.";
+  static constexpr const char* kPresentOneViewLabel = "Present one view";
   static constexpr const char* kBackToTilesShortLabel = "Tiles (Esc)";
 
   // `copy_link`: what Export > Copy link does; `link_choices`: what its items beside it set.
@@ -43,6 +51,8 @@ class MenuBar {
   void export_items(PanelContext& context);
   // While presenting: the way back to the tiles and the strip's item.
   void presenting_items(PanelContext& context);
+  // The notice that the tiles cannot hold the text size, and a menu presenting one view.
+  void cramped_notice(PanelContext& context);
 
   Layout& layout_;
   Appearance& appearance_;

@@ -14,7 +14,10 @@
 #include <string>
 #include <string_view>
 #include <typeinfo>
+#include <utility>
 #include <vector>
+
+#include <imgui.h>
 
 #include "app/common/inputs.hpp"
 #include "app/gui/document.hpp"
@@ -55,6 +58,30 @@ struct PictureStyle {
   bool dark = false;  // drawn over a dark background
 };
 
+// Where a view drew its picture last (a plot's data area, the 3D viewport, the map), in display
+// pixels, and in which ImGui frame: a view hidden since keeps an old rectangle that is no longer on
+// screen, so only one drawn in this frame or the last counts.
+class DrawnArea {
+ public:
+  void mark(PanelRect rect) {
+    rect_ = rect;
+    frame_ = ImGui::GetFrameCount();
+  }
+  std::optional<PanelRect> recent() const {
+    if (frame_ < 0 || ImGui::GetFrameCount() - frame_ > 1) {
+      return std::nullopt;
+    }
+    return rect_;
+  }
+
+ private:
+  PanelRect rect_;
+  int frame_ = -1;
+};
+
+// A view's drawing area by the view's name in reports ("cloth", "fold_plot", "sweep", ...).
+using DrawingAreas = std::vector<std::pair<std::string, PanelRect>>;
+
 // The panel of type P in a list of panels; every panel type is in the explorer's list once.
 template <class P>
 P& find_panel(std::span<const std::unique_ptr<Panel>> panels);
@@ -75,6 +102,9 @@ struct PanelContext {
   // An input is being played: the views keep their frame, growing it but never shrinking it, so
   // that the cloth is seen to change size.
   bool holding_frame = false;
+  // The panel presented over the window, or null: a view presented to a room folds its controls
+  // and gives the screen to its picture.
+  const Panel* presented = nullptr;
 
   // Another panel, for one that works with it (the fold plot draws the photo overlay's photo
   // behind its lines and passes it the clicks).
@@ -119,6 +149,10 @@ class Panel {
   // What `gui --report` and the play scripts' state say of the panel, added to `state` under
   // keys of its own.
   virtual void report(nlohmann::json& /*state*/, PanelContext& /*context*/) const {}
+  // The views it drew in the last frame and where their pictures went (DrawnArea): what
+  // `gui --report` gives as layout.drawing_areas, so that how much of the window a view really
+  // uses is measured rather than taken from its panel's size.
+  virtual void drawing_areas(DrawingAreas& /*areas*/) const {}
   // The pictures the panel gives (Export menu, `foldlab picture`).
   virtual std::span<const PictureOffer> pictures() const { return {}; }
   // Why the panel cannot give `view` now, drawn alone or (`as_drawn`) as the window shows it (the

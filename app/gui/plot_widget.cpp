@@ -434,6 +434,26 @@ AxisTicks fitted_ticks(double lo, double hi, bool log, double length_px,
     if (ticks.values.size() <= 2)
       break;
   }
+  // Not even two neighbours fit: the ends of a denser set, farther apart than any two
+  // neighbours, so that the axis still reads from where to where (a 1300 mm cloth's -500 and 500
+  // at 200 % text in a tile).
+  for (int target = std::max(max_ticks, 3); target >= 3; --target) {
+    AxisTicks dense;
+    axis_ticks(t_lo, t_hi, log, target, dense.values);
+    if (dense.values.size() < 3) {
+      continue;
+    }
+    AxisTicks ends;
+    for (const double v : {dense.values.front(), dense.values.back()}) {
+      format_tick_into(buf, sizeof buf, v, dense.values[1] - dense.values[0]);
+      ends.values.push_back(v);
+      ends.labels.emplace_back(buf);
+    }
+    const double room = std::abs(px(ends.values[1]) - px(ends.values[0]));
+    if (room >= 0.5 * (extent(ends.labels[0]) + extent(ends.labels[1])) + gap_px) {
+      return ends;
+    }
+  }
   // Not even two labels fit: the one nearest the axis's middle alone.
   if (ticks.values.size() == 2) {
     const std::size_t keep = std::abs(px(ticks.values[0]) - 0.5 * length_px) <=
@@ -444,6 +464,61 @@ AxisTicks fitted_ticks(double lo, double hi, bool log, double length_px,
     ticks.labels = {ticks.labels[keep]};
   }
   return ticks;
+}
+
+std::vector<double> whole_ticks(double lo, double hi, double length_px,
+                                const std::function<float(const std::string&)>& extent,
+                                float gap_px, int max_ticks) {
+  if (!std::isfinite(lo) || !std::isfinite(hi)) {
+    return {};
+  }
+  if (lo > hi) {
+    std::swap(lo, hi);
+  }
+  const double first = std::ceil(lo - 1e-9);
+  const double last = std::floor(hi + 1e-9);
+  if (first > last) {
+    return {};
+  }
+  const double span = hi > lo ? hi - lo : 1.0;
+  const auto px = [&](double v) { return (v - lo) / span * length_px; };
+  const auto fit = [&](const std::vector<double>& ticks) {
+    for (std::size_t i = 1; i < ticks.size(); ++i) {
+      const std::string a = format_tick(ticks[i - 1], 1.0);
+      const std::string b = format_tick(ticks[i], 1.0);
+      if (px(ticks[i]) - px(ticks[i - 1]) < 0.5 * (extent(a) + extent(b)) + gap_px) {
+        return false;
+      }
+    }
+    return true;
+  };
+  std::vector<double> chosen;
+  for (double decade = 1.0; decade <= 1e15 && chosen.empty(); decade *= 10.0) {
+    for (const double m : {1.0, 2.0, 5.0}) {
+      const double step = m * decade;
+      std::vector<double> ticks;
+      for (double v = std::ceil(first / step) * step; v <= last; v += step) {
+        ticks.push_back(v);
+      }
+      if (ticks.empty()) {
+        break;
+      }
+      if (static_cast<int>(ticks.size()) <= std::max(max_ticks, 3) && fit(ticks)) {
+        chosen = std::move(ticks);
+        break;
+      }
+    }
+  }
+  if (chosen.size() < 3 && last - first >= 2.0) {
+    const std::vector<double> ends_and_middle = {first, std::round(0.5 * (first + last)), last};
+    if (fit(ends_and_middle)) {
+      return ends_and_middle;
+    }
+  }
+  if (chosen.empty()) {
+    chosen = {std::round(0.5 * (first + last))};
+  }
+  return chosen;
 }
 
 ImVec2 PlotView::to_screen(double x, double y) const {
@@ -848,7 +923,13 @@ void Plot::equalise_scales(Frame& f) const {
     t0 = centre - half;
     t1 = centre + half;
   };
-  if (x_scale > y_scale) {
+  if (x_scale > y_scale && narrow_frame_) {
+    const float keep_px = static_cast<float>(y_scale * (f.xt1 - f.xt0));
+    const float centre = 0.5f * (f.lay.min.x + f.lay.max.x);
+    f.lay.min.x = std::floor(centre - 0.5f * keep_px);
+    f.lay.max.x = std::ceil(centre + 0.5f * keep_px);
+    widen(f.xt0, f.xt1, 0.5 * (f.lay.max.x - f.lay.min.x) / y_scale);
+  } else if (x_scale > y_scale) {
     widen(f.xt0, f.xt1, 0.5 * width_px / y_scale);
   } else {
     widen(f.yt0, f.yt1, 0.5 * height_px / x_scale);
@@ -863,19 +944,16 @@ void Plot::place_ticks(Frame& f) {
   const float plot_h = f.lay.max.y - f.lay.min.y;
   const float gap = f.font * 0.5f;
   const auto line_height = [&f](const std::string&) { return f.font; };
-  // A count's ticks between whole numbers (2.5 iterates) mean nothing: the 1-2-5 steps below 1
-  // all divide 1, so dropping them leaves the whole ones.
-  const auto whole_only = [](std::vector<double> ticks, bool whole) {
-    if (whole) {
-      std::erase_if(ticks, [](double t) { return std::abs(t - std::round(t)) > 1e-9; });
-    }
-    return ticks;
+  // A count's ticks between whole numbers (2.5 iterates) mean nothing.
+  const auto ticks_for = [](const PlotAxis& axis, double lo, double hi, bool log, float length,
+                            const std::function<float(const std::string&)>& extent, float gap_px,
+                            int max_ticks) {
+    return axis.whole && !log ? whole_ticks(lo, hi, length, extent, gap_px, max_ticks)
+                              : fitted_ticks(lo, hi, log, length, extent, gap_px, max_ticks).values;
   };
-  y_ticks_ = whole_only(
-      fitted_ticks(from_t(f.yt0, f.y_log), from_t(f.yt1, f.y_log), f.y_log, plot_h, line_height,
-                   gap, std::clamp(static_cast<int>(plot_h / (f.font * 2.0f)), 2, 12))
-          .values,
-      y_axis_.whole);
+  y_ticks_ =
+      ticks_for(y_axis_, from_t(f.yt0, f.y_log), from_t(f.yt1, f.y_log), f.y_log, plot_h,
+                line_height, gap, std::clamp(static_cast<int>(plot_h / (f.font * 2.0f)), 2, 12));
   float needed = 0;
   char buf[64];
   for (std::size_t i = 0; i < y_ticks_.size(); ++i) {
@@ -895,11 +973,9 @@ void Plot::place_ticks(Frame& f) {
   const auto text_width = [](const std::string& label) {
     return ImGui::CalcTextSize(label.c_str()).x;
   };
-  x_ticks_ = whole_only(
-      fitted_ticks(from_t(f.xt0, f.x_log), from_t(f.xt1, f.x_log), f.x_log, plot_w, text_width, gap,
-                   std::clamp(static_cast<int>(plot_w / (f.font * 2.5f)), 2, 12))
-          .values,
-      x_axis_.whole);
+  x_ticks_ =
+      ticks_for(x_axis_, from_t(f.xt0, f.x_log), from_t(f.xt1, f.x_log), f.x_log, plot_w,
+                text_width, gap, std::clamp(static_cast<int>(plot_w / (f.font * 2.5f)), 2, 12));
   f.xm = x_map(f.xt0, f.xt1, f.lay.min, f.lay.max, f.x_log, x_axis_.flipped);
   f.ym = y_map(f.yt0, f.yt1, f.lay.min, f.lay.max, f.y_log, y_axis_.flipped);
 }

@@ -110,8 +110,13 @@ class Plot {
   }
 
   // This frame, one unit of x is as many pixels as one of y (a drawing in mm: mm are mm): the
-  // axis with pixels to spare shows more about its centre. Linear axes only.
-  void equal_scales() { equal_scales_ = true; }
+  // axis with pixels to spare shows more about its centre. Linear axes only. `narrow_frame`:
+  // a frame wider than the data at that scale is narrowed about its centre instead, so that the
+  // x axis spans the data rather than a width of empty paper beside it.
+  void equal_scales(bool narrow_frame = false) {
+    equal_scales_ = true;
+    narrow_frame_ = narrow_frame;
+  }
   // The y tick labels' column at least this wide (px), for plots stacked above one another whose
   // data areas must start at one x. label_width_needed() is what this plot's labels took last.
   void min_label_width(float px) { min_label_width_ = px; }
@@ -127,6 +132,7 @@ class Plot {
   // Valid after end(); the same until the next end().
   const PlotView& view() const { return view_; }
   const std::vector<double>& x_ticks() const { return x_ticks_; }
+  const std::vector<double>& y_ticks() const { return y_ticks_; }
 
  private:
   enum class Kind { Line, Steps, Markers };
@@ -204,6 +210,7 @@ class Plot {
   std::optional<std::pair<double, double>> fit_x_;
   bool grow_only_ = false;
   bool equal_scales_ = false;
+  bool narrow_frame_ = false;
   float min_label_width_ = 0.0f;
   float label_width_needed_ = 0.0f;
   std::vector<LegendRow> legend_rows_;  // per legend entry, laid out in end()
@@ -226,6 +233,15 @@ std::vector<double> log_ticks(double lo, double hi, int target);
 // Label for a tick `value` on an axis whose ticks are `step` apart: as many decimals as the step
 // needs, exponent notation for very large or small values, never "-0".
 std::string format_tick(double value, double step);
+
+// Ticks on whole numbers for a count (folds, iterates) over [lo, hi] (either order): the
+// densest of 1, 2, 5 × 10^k apart whose labels keep `gap_px` apart on an axis `length_px` long
+// (`extent` as in fitted_ticks) with at most `max_ticks`; when that leaves fewer than three and
+// three whole numbers lie in the range, its ends and middle, if their labels fit. A count's axis
+// says where it runs from and to, not one value in its middle.
+std::vector<double> whole_ticks(double lo, double hi, double length_px,
+                                const std::function<float(const std::string&)>& extent,
+                                float gap_px, int max_ticks);
 
 // An axis's ticks with their labels (format_tick, each with the step to its nearer neighbour).
 struct AxisTicks {

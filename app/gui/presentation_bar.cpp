@@ -93,6 +93,40 @@ int view_switch_rows(const PanelContext& context) {
   return static_cast<int>((views + kViewsPerRow - 1) / kViewsPerRow);
 }
 
+// The play/pause button's words: what it does to which input ("play h", "pause h").
+std::string play_label(const ParametersPanel& parameters, bool playing) {
+  return std::string(playing ? ParametersPanel::kPauseLabel : ParametersPanel::kPlayLabel) + " " +
+         parameters.animated_key();
+}
+
+float play_button_width(const ParametersPanel& parameters) {
+  const ImGuiStyle& style = ImGui::GetStyle();
+  return ImGui::CalcTextSize(play_label(parameters, true).c_str()).x + 2.0f * style.FramePadding.x;
+}
+
+// At the right of the read-out's first line, so that it costs the picture no row: plays the input
+// the Parameters panel's "animate" chose through its range, or pauses it where it is.
+void play_pause(PanelContext& context, ParametersPanel& parameters, float width) {
+  const ImGuiStyle& style = ImGui::GetStyle();
+  const bool playing = parameters.animating();
+  const ImVec2 cursor = ImGui::GetCursorScreenPos();
+  ImGui::SetCursorScreenPos(ImVec2(
+      ImGui::GetWindowPos().x + width - style.WindowPadding.x - play_button_width(parameters),
+      cursor.y));
+  const std::string label = play_label(parameters, playing) + "###present play";
+  if (ImGui::Button(label.c_str(), ImVec2(play_button_width(parameters), 0.0f))) {
+    parameters.toggle_play(context.document, context.status);
+  }
+  if (ImGui::IsItemHovered()) {
+    const std::string& problem = parameters.animation_problem();
+    ImGui::SetTooltip("%s", problem.empty() ? "Runs the input chosen under \"animate\" in the "
+                                              "Parameters panel from the low end of its slider to "
+                                              "the high end and back; pause leaves it where it is."
+                                            : problem.c_str());
+  }
+  ImGui::SetCursorScreenPos(cursor);
+}
+
 }  // namespace
 
 bool shows_one_view() {
@@ -127,14 +161,16 @@ float PresentationBar::draw(PanelContext& context, float top) {
   const ImGuiStyle& style = ImGui::GetStyle();
   const float width = std::floor(display.x);
   const float available = width - 2.0f * style.WindowPadding.x;
-  const Headlines headlines =
-      fit_headlines(context.panel<ResultsPanel>().headlines(context.document), available);
   // The inputs under the read-out, for a "what if" without leaving the view; not over the
-  // Parameters panel itself.
+  // Parameters panel itself, whose own play button is in sight.
   const bool presents_parameters = layout_.presented() == &parameters;
+  const bool play = !presents_parameters;
+  const float play_room = play ? play_button_width(parameters) + style.ItemSpacing.x : 0.0f;
+  const Headlines headlines = fit_headlines(
+      context.panel<ResultsPanel>().headlines(context.document), available - play_room);
   const bool strip = layout_.presents_inputs() && !presents_parameters;
   message_ = message_for_presented(context, strip);
-  float text_height = headlines.height;
+  float text_height = std::max(headlines.height, play ? ImGui::GetFrameHeight() : 0.0f);
   if (!message_.empty()) {
     text_height +=
         style.ItemSpacing.y + ImGui::CalcTextSize(message_.c_str(), nullptr, false, available).y;
@@ -161,6 +197,11 @@ float PresentationBar::draw(PanelContext& context, float top) {
     ImGui::PushTextWrapPos(0.0f);
     if (one_view) {
       view_switch(context, layout_, available);
+    }
+    if (play) {
+      // Play and pause, for a lesson that runs an input through its range while the class
+      // watches the presented view.
+      play_pause(context, parameters, width);
     }
     draw_headlines(headlines);
     if (strip) {

@@ -123,7 +123,7 @@ void AnalysisPanel::draw(PanelContext& context) {
       ImGui::EndTabItem();
     }
     if (ImGui::BeginTabItem("Sweep", nullptr, sweep_flags)) {
-      sweep_.draw(document);
+      sweep_.draw(document, context.presented == this);
       sweep_shown_ = true;
       ImGui::EndTabItem();
     }
@@ -232,6 +232,19 @@ void AnalysisPanel::report(nlohmann::json& state, PanelContext& /*context*/) con
   state["regime_map_ms"] = regime_map_.last_map_ms();
   state["regime_map"] = regime_map_.report();
   state["method_step"] = method_step_json(method_);
+  // The ticks the Sweep tab's plots labelled last, n's on whole numbers.
+  state["sweep_ticks"] = {{"n", sweep_.plot(0).y_ticks()},
+                          {"x", sweep_.plot(0).x_ticks()},
+                          {"side_by_side", sweep_.plot_view(1).min.y == sweep_.plot_view(0).min.y}};
+}
+
+void AnalysisPanel::drawing_areas(DrawingAreas& areas) const {
+  if (const std::optional<PanelRect> rect = sweep_.drawn_area().recent()) {
+    areas.emplace_back("sweep", *rect);
+  }
+  if (const std::optional<PanelRect> rect = regime_map_.drawn_area().recent()) {
+    areas.emplace_back("regime_map", *rect);
+  }
 }
 
 std::optional<std::string> AnalysisPanel::picture_unavailable(PictureView /*view*/,

@@ -53,6 +53,9 @@ class AnalysisPanel : public Panel {
   void view_settings(ViewSettings& settings, Document& document) override;
   // The regime map ("regime_map", "regime_map_ms") and the Method tab's stepper ("method_step").
   void report(nlohmann::json& state, PanelContext& context) const override;
+  // "sweep" (the three plots' data areas, all within it) and "regime_map" (its cells), each
+  // while its tab is shown.
+  void drawing_areas(DrawingAreas& areas) const override;
   static constexpr PictureOffer kPictures[] = {
       {PictureView::sweep, "sweep", "Export sweep picture", "Sweep picture (.png)...",
        "Sweep picture, any size (.png)...",

@@ -385,7 +385,8 @@ void ClothViewPanel::draw(PanelContext& context) {
     camera_user_moved_ = false;
   }
   bool reset = false;
-  if (toolbar_row_.begin("view settings...", ems(12.0f))) {
+  const bool presented = context.presented == this;
+  if (toolbar_row_.begin("view settings...", ems(12.0f), presented)) {
     reset = toolbar(context);
     toolbar_row_.end();
   }
@@ -406,6 +407,8 @@ void ClothViewPanel::draw(PanelContext& context) {
   const ImVec2 origin = ImGui::GetCursorScreenPos();
   view_rect_ = PanelRect{
       origin, ImVec2(static_cast<float>(area.width) + bar_width, static_cast<float>(area.height))};
+  drawn_.mark(
+      PanelRect{origin, ImVec2(static_cast<float>(area.width), static_cast<float>(area.height))});
   ImGui::InvisibleButton("view",
                          ImVec2(static_cast<float>(area.width), static_cast<float>(area.height)),
                          ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonRight |
@@ -429,7 +432,10 @@ void ClothViewPanel::draw(PanelContext& context) {
     draw_view(1, b_origin, document.compare().scene(scene.grid_nx()),
               FrameSize{area.width - size.width, area.height});
   }
-  draw_hint(draw, origin, area, light);
+  // A room looking at a presented cloth needs no mouse hint over it.
+  if (!presented) {
+    draw_hint(draw, origin, area, light);
+  }
   if (compare) {
     name_halves(document, draw, origin, size, area);
   }

@@ -42,6 +42,12 @@ class ClothViewPanel : public Panel {
   std::optional<std::string> picture_unavailable(PictureView view, const Document& document,
                                                  bool as_drawn) const override;
   std::optional<PanelRect> picture_rect(PictureView /*view*/) const override { return view_rect_; }
+  // "cloth": the 3D viewport (the colour bar beside it left out).
+  void drawing_areas(DrawingAreas& areas) const override {
+    if (const std::optional<PanelRect> rect = drawn_.recent()) {
+      areas.emplace_back(key(), *rect);
+    }
+  }
   // The swatch file last asked for as the print.
   std::vector<app::NamedPath> files_in_use() const override {
     return {{"the 3D view's print file", photo_path_}};
@@ -97,6 +103,7 @@ class ClothViewPanel : public Panel {
   char photo_input_[512] = {};
   std::string photo_problem_;
   PanelRect view_rect_;
+  DrawnArea drawn_;
   ViewToolbar toolbar_row_;
 };
 

@@ -456,6 +456,7 @@ void FieldPanel::canvas(PanelContext& context) {
   }
   ImGui::InvisibleButton("##field", size);
   canvas_rect_ = PanelRect{origin, size};
+  drawn_.mark(*canvas_rect_);
   const field::SolvedField* shown = live_.shown();
   if (shown == nullptr) {
     return;

@@ -83,6 +83,12 @@ class FieldPanel : public Panel {
   }
   bool draw_picture(PictureView view, ImVec2 size_px, Document& document,
                     const PictureStyle& style) override;
+  // "field": the canvas the cut is drawn on.
+  void drawing_areas(DrawingAreas& areas) const override {
+    if (const std::optional<PanelRect> rect = drawn_.recent()) {
+      areas.emplace_back(key(), *rect);
+    }
+  }
 
   // Mesh cells across the cut at rest; a drag solves on half as many.
   static constexpr int kDefaultCells = 32;
@@ -118,6 +124,7 @@ class FieldPanel : public Panel {
   field::LiveField live_;
   std::string cut_refusal_;  // why the inputs' cut cannot be meshed, or empty
   std::optional<PanelRect> canvas_rect_;
+  DrawnArea drawn_;
   // A picture's field: solved once per set of inputs.
   mutable std::optional<field::FieldInputs> picture_inputs_;
   mutable std::optional<field::SolvedField> picture_field_;

@@ -160,7 +160,8 @@ void FoldPlotPanel::report(nlohmann::json& state, PanelContext& /*context*/) con
   state["fold_plot"] = {{"x_mm", {view.x_lo, view.x_hi}},
                         {"y_mm", {view.y_lo, view.y_hi}},
                         {"x_auto", view.x_auto},
-                        {"y_auto", view.y_auto}};
+                        {"y_auto", view.y_auto},
+                        {"x_ticks", plot_.x_ticks().size()}};
 }
 
 // Below this the plot's axis labels and legend squash it: the panel scrolls instead, and the
@@ -179,7 +180,8 @@ void FoldPlotPanel::draw(PanelContext& context) {
   Scene& scene = document.scene();
   const FoldLines& lines = scene.fold_lines();
   const Solution& s = scene.solution();
-  if (toolbar_row_.begin("plot settings...", kLeastPlotHeightEms * ImGui::GetFontSize())) {
+  if (toolbar_row_.begin("plot settings...", kLeastPlotHeightEms * ImGui::GetFontSize(),
+                         context.presented == this)) {
     photo.toolbar(context);
     if (small_button("autoscale")) {
       autoscale_ = true;
@@ -207,7 +209,7 @@ void FoldPlotPanel::draw(PanelContext& context) {
       plot_.grow_only();
     }
     if (true_scale_) {
-      plot_.equal_scales();
+      plot_.equal_scales(/*narrow_frame=*/true);
     }
     const bool compare = document.compare().pinned();
     series_.lines(plot_, scene, compare, true);
@@ -227,6 +229,8 @@ void FoldPlotPanel::draw(PanelContext& context) {
     series_.outline_and_supports(plot_, scene, true);
     photo.plot_items(plot_, document);
     const std::optional<PlotHit> hit = plot_.end();
+    drawn_.mark(PanelRect{plot_.view().min, ImVec2(plot_.view().max.x - plot_.view().min.x,
+                                                   plot_.view().max.y - plot_.view().min.y)});
     photo.handle_click(plot_, context.status);
     if (hit && hit->series < static_cast<int>(lines.lines.size())) {
       const FoldLine& line = lines.lines[static_cast<std::size_t>(hit->series)];

@@ -55,6 +55,12 @@ class FoldPlotPanel : public Panel {
   // "fold_plot": the visible ranges, x_mm and y_mm as [lo, hi], and whether each follows the
   // data (a pan or zoom turns that off).
   void report(nlohmann::json& state, PanelContext& context) const override;
+  // "fold_plot": the plot's data area.
+  void drawing_areas(DrawingAreas& areas) const override {
+    if (const std::optional<PanelRect> rect = drawn_.recent()) {
+      areas.emplace_back(key(), *rect);
+    }
+  }
   static constexpr PictureOffer kPictures[] = {
       {PictureView::fold_plot, "fold_plot", "Export fold plot picture",
        "Fold plot picture (.png)...", "Fold plot picture, any size (.png)...",
@@ -75,6 +81,7 @@ class FoldPlotPanel : public Panel {
   Plot plot_;
   bool autoscale_ = false;
   ViewToolbar toolbar_row_;
+  DrawnArea drawn_;
   bool true_scale_ = true;
   FoldLineSeries series_;
   // B's fold lines, dashed (a gap is a run of NaN points) and left out where they run into each

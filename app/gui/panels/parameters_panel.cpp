@@ -424,6 +424,34 @@ void ParametersPanel::begin_frame(PanelContext& context) {
   document.apply(Edit::input(animate_key_, animation_->at(animation_ways_)).by_slider().open());
 }
 
+void ParametersPanel::toggle_play(Document& document, UiStatus& status) {
+  if (playing_) {
+    playing_ = false;
+    document.end_step();  // the value reached stays, as one undo step
+    return;
+  }
+  // The valid range afresh, since the other inputs may have changed while paused; the same
+  // input carries on where it paused, over the range typed for it.
+  const bool resuming = animation_ && animation_->key() == animate_key_;
+  try {
+    AnimatedInput fresh(animate_key_, document.edited(),
+                        status.expert_mode() ? SliderReach::expert : SliderReach::beginner);
+    if (resuming) {
+      fresh.set_range(range_lo_, range_hi_);
+    } else {
+      animation_ways_ = 0.0;
+    }
+    animation_ = fresh;
+    range_lo_ = animation_->lo();
+    range_hi_ = animation_->hi();
+    animation_problem_.clear();
+  } catch (const std::exception& e) {
+    animation_.reset();
+    animation_problem_ = e.what();
+  }
+  playing_ = animation_.has_value();
+}
+
 void ParametersPanel::animation_row(Document& document, UiStatus& status,
                                     const std::vector<const InputSpec*>& sliders) {
   ImGui::AlignTextToFramePadding();
@@ -446,31 +474,7 @@ void ParametersPanel::animation_row(Document& document, UiStatus& status,
   }
   ImGui::SameLine();
   if (ImGui::Button(playing_ ? kPauseLabel : kPlayLabel)) {
-    if (playing_) {
-      playing_ = false;
-      document.end_step();  // the value reached stays, as one undo step
-    } else {
-      // The valid range afresh, since the other inputs may have changed while paused; the same
-      // input carries on where it paused, over the range typed for it.
-      const bool resuming = animation_ && animation_->key() == animate_key_;
-      try {
-        AnimatedInput fresh(animate_key_, document.edited(),
-                            status.expert_mode() ? SliderReach::expert : SliderReach::beginner);
-        if (resuming) {
-          fresh.set_range(range_lo_, range_hi_);
-        } else {
-          animation_ways_ = 0.0;
-        }
-        animation_ = fresh;
-        range_lo_ = animation_->lo();
-        range_hi_ = animation_->hi();
-        animation_problem_.clear();
-      } catch (const std::exception& e) {
-        animation_.reset();
-        animation_problem_ = e.what();
-      }
-      playing_ = animation_.has_value();
-    }
+    toggle_play(document, status);
   }
   help_marker(
       "Sweeps the chosen input from the low end of its slider (or of the range typed beside) to "
@@ -769,6 +773,7 @@ void ParametersPanel::report(nlohmann::json& state, PanelContext& context) const
     unread[key] = reason;
   }
   state["unread"] = unread;
+  state["animation"] = {{"key", animate_key_}, {"playing", playing_}};
 }
 
 }  // namespace foldlab::gui

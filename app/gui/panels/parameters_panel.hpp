@@ -68,6 +68,11 @@ class ParametersPanel : public Panel {
   const std::string& animated_key() const { return animate_key_; }
   const std::optional<AnimatedInput>& animation() const { return animation_; }
   static constexpr double kSecondsPerWay = 4.0;  // the play button: min to max in 4 s
+  // The play button's click, also the presenting bar's: plays the chosen input from where it
+  // paused (or from its low end), or pauses it where it is.
+  void toggle_play(Document& document, UiStatus& status);
+  // Why the last play could not start (the input has no valid range now), or empty.
+  const std::string& animation_problem() const { return animation_problem_; }
 
   static constexpr const char* kExpertLabel = "Expert settings";
   static constexpr const char* kPlayLabel = "play";

@@ -294,7 +294,9 @@ RegimeMapPanel::Placement RegimeMapPanel::place_map() {
     at.left_margin = std::max(at.left_margin, ImGui::CalcTextSize(label.c_str()).x);
   }
   at.left_margin += style.ItemInnerSpacing.x;
-  at.side = std::max(ems(5.0f), std::min(available.x - at.left_margin - bar_area, tallest));
+  // As wide as the panel allows: presented, the map takes the screen's width, not a square.
+  at.width = std::max(ems(5.0f), available.x - at.left_margin - bar_area);
+  at.height = tallest;
   const std::string y_label = axis_label(cells_->y.key);
   ImGui::TextUnformatted(y_label.c_str());
   at.origin = ImVec2(ImGui::GetCursorScreenPos().x + at.left_margin,
@@ -318,31 +320,31 @@ void RegimeMapPanel::axis_labels(const Placement& at) const {
   const float tick_px = std::round(0.3f * font);
   ImDrawList* draw = ImGui::GetWindowDrawList();
   const ImU32 text_colour = ImGui::GetColorU32(ImGuiCol_Text);
-  const AxisTicks y_ticks = map_ticks(cells_->y, at.side, false);
+  const AxisTicks y_ticks = map_ticks(cells_->y, at.height, false);
   for (std::size_t k = 0; k < y_ticks.values.size(); ++k) {
     const double f = axis_fraction(cells_->y, from_shown(cells_->y.key, y_ticks.values[k]));
-    const float y = at.origin.y + static_cast<float>(1.0 - f) * at.side;
+    const float y = at.origin.y + static_cast<float>(1.0 - f) * at.height;
     draw->AddLine(ImVec2(at.origin.x - tick_px, y), ImVec2(at.origin.x, y), text_colour);
     const char* label = y_ticks.labels[k].c_str();
-    const float label_y =
-        std::clamp(y - 0.5f * font, at.origin.y - 0.5f * font, at.origin.y + at.side - 0.5f * font);
+    const float label_y = std::clamp(y - 0.5f * font, at.origin.y - 0.5f * font,
+                                     at.origin.y + at.height - 0.5f * font);
     draw->AddText(
         ImVec2(at.origin.x - style.ItemInnerSpacing.x - ImGui::CalcTextSize(label).x, label_y),
         text_colour, label);
   }
-  const AxisTicks x_ticks = map_ticks(cells_->x, at.side, true);
+  const AxisTicks x_ticks = map_ticks(cells_->x, at.width, true);
   for (std::size_t k = 0; k < x_ticks.values.size(); ++k) {
     const double f = axis_fraction(cells_->x, from_shown(cells_->x.key, x_ticks.values[k]));
-    const float x = at.origin.x + static_cast<float>(f) * at.side;
-    const float bottom = at.origin.y + at.side;
+    const float x = at.origin.x + static_cast<float>(f) * at.width;
+    const float bottom = at.origin.y + at.height;
     draw->AddLine(ImVec2(x, bottom), ImVec2(x, bottom + tick_px), text_colour);
     const char* label = x_ticks.labels[k].c_str();
     draw->AddText(ImVec2(x - 0.5f * ImGui::CalcTextSize(label).x, bottom + tick_px), text_colour,
                   label);
   }
   const std::string x_label = axis_label(cells_->x.key);
-  draw->AddText(ImVec2(at.origin.x + 0.5f * (at.side - ImGui::CalcTextSize(x_label.c_str()).x),
-                       at.origin.y + at.side + tick_px + font),
+  draw->AddText(ImVec2(at.origin.x + 0.5f * (at.width - ImGui::CalcTextSize(x_label.c_str()).x),
+                       at.origin.y + at.height + tick_px + font),
                 text_colour, x_label.c_str());
 }
 
@@ -350,11 +352,11 @@ void RegimeMapPanel::axis_labels(const Placement& at) const {
 void RegimeMapPanel::colour_bar(const Placement& at) const {
   const ImGuiStyle& style = ImGui::GetStyle();
   const float font = ImGui::GetFontSize();
-  const float side = at.side;
+  const float side = at.height;
   const float bar_width = ems(1.0f);
   ImDrawList* draw = ImGui::GetWindowDrawList();
   const ImU32 text_colour = ImGui::GetColorU32(ImGuiCol_Text);
-  const ImVec2 bar_min(at.origin.x + side + style.ItemSpacing.x, at.origin.y);
+  const ImVec2 bar_min(at.origin.x + at.width + style.ItemSpacing.x, at.origin.y);
   const ImVec2 bar_max(bar_min.x + bar_width, at.origin.y + side);
   constexpr int kBarSteps = 64;
   for (int k = 0; k < kBarSteps; ++k) {
@@ -407,7 +409,7 @@ void RegimeMapPanel::regime_swatches(const Placement& at) const {
   const float font = ImGui::GetFontSize();
   ImGui::SetCursorScreenPos(
       ImVec2(at.origin.x - at.left_margin,
-             at.origin.y + at.side + 2.0f * font + std::round(0.3f * font) + 2.0f));
+             at.origin.y + at.height + 2.0f * font + std::round(0.3f * font) + 2.0f));
   bool first = true;
   for (const Swatch& swatch : map_swatches()) {
     const float width =
@@ -433,8 +435,8 @@ void RegimeMapPanel::current_point(const Placement& at, const Parameters& curren
   const double fy = axis_fraction(cells_->y, get_number(current, cells_->y.key));
   if (fx >= 0.0 && fx <= 1.0 && fy >= 0.0 && fy <= 1.0) {
     ImDrawList* draw = ImGui::GetWindowDrawList();
-    const ImVec2 p(at.origin.x + static_cast<float>(fx) * at.side,
-                   at.origin.y + static_cast<float>(1.0 - fy) * at.side);
+    const ImVec2 p(at.origin.x + static_cast<float>(fx) * at.width,
+                   at.origin.y + static_cast<float>(1.0 - fy) * at.height);
     draw->AddCircle(p, 6.0f, IM_COL32(255, 255, 255, 255), 16, 2.0f);
     draw->AddCircle(p, 8.0f, IM_COL32(0, 0, 0, 255), 16, 1.0f);
   }
@@ -443,8 +445,8 @@ void RegimeMapPanel::current_point(const Placement& at, const Parameters& curren
 void RegimeMapPanel::hover_and_click(const Placement& at, Document& document, bool clicked) const {
   const Cells& job = *cells_;
   const ImVec2 mouse = ImGui::GetIO().MousePos;
-  const double u = std::clamp((mouse.x - at.origin.x) / at.side, 0.0f, 1.0f);
-  const double v = std::clamp(1.0f - (mouse.y - at.origin.y) / at.side, 0.0f, 1.0f);
+  const double u = std::clamp((mouse.x - at.origin.x) / at.width, 0.0f, 1.0f);
+  const double v = std::clamp(1.0f - (mouse.y - at.origin.y) / at.height, 0.0f, 1.0f);
   const int i = std::min(resolution_ - 1, static_cast<int>(u * resolution_));
   const int j = std::min(resolution_ - 1, static_cast<int>(v * resolution_));
   const double x_value = job.x.value(i);
@@ -531,7 +533,8 @@ void RegimeMapPanel::draw(PanelContext& context) {
   const Placement at = place_map();
   ImGui::SetCursorScreenPos(at.origin);
   // Row 0 is the lowest y: the texture's first row goes to the bottom.
-  ImGui::Image(context.renderer.texture(image_), ImVec2(at.side, at.side), ImVec2(0, 1),
+  drawn_.mark(PanelRect{at.origin, ImVec2(at.width, at.height)});
+  ImGui::Image(context.renderer.texture(image_), ImVec2(at.width, at.height), ImVec2(0, 1),
                ImVec2(1, 0));
   const bool hovered = ImGui::IsItemHovered();
   const bool clicked = ImGui::IsItemClicked(ImGuiMouseButton_Left);

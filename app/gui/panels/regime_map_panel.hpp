@@ -40,14 +40,17 @@ class RegimeMapPanel {
   // For the report: the axes, how far the map is, and a digest of its cells (null before the
   // tab was first shown).
   nlohmann::json report() const;
+  // Where the map's cells were drawn last (display pixels), and at which ImGui frame.
+  const DrawnArea& drawn_area() const { return drawn_; }
 
  private:
   struct Cells;
-  // Where the map was drawn this frame: its top-left corner and side, and the margin on its
-  // left that holds the y labels.
+  // Where the map was drawn this frame: its top-left corner, width and height, and the margin on
+  // its left that holds the y labels.
   struct Placement {
     ImVec2 origin;
-    float side = 0.0f;
+    float width = 0.0f;
+    float height = 0.0f;
     float left_margin = 0.0f;
   };
 
@@ -73,6 +76,7 @@ class RegimeMapPanel {
   void hover_and_click(const Placement& at, Document& document, bool clicked) const;
 
   ViewToolbar toolbar_row_;
+  DrawnArea drawn_;
   std::string x_key_ = "h";
   std::string y_key_ = "w";
   double x_from_ = 300.0, x_to_ = 3000.0;

@@ -162,7 +162,7 @@ std::optional<std::string> SweepPanel::compute(Document& document) {
   return std::nullopt;
 }
 
-void SweepPanel::draw(Document& document) {
+void SweepPanel::draw(Document& document, bool side_by_side) {
   draw_axis_controls(document);
   draw_paper_case_buttons(document);
   if (const std::optional<std::string> problem = compute(document)) {
@@ -176,9 +176,22 @@ void SweepPanel::draw(Document& document) {
   draw_keys(document);
   // Each plot keeps room for its ticks, its title and a few lines of data at any UI scale: a
   // short panel scrolls rather than squeeze a plot under its own labels.
-  const float height =
-      std::max(ems(kMinPlotHeightEms), (ImGui::GetContentRegionAvail().y - 8.0f) / 3.0f);
-  draw_plots(document, plots_, height);
+  if (side_by_side) {
+    const ImVec2 available = ImGui::GetContentRegionAvail();
+    const float spacing = ImGui::GetStyle().ItemSpacing.x;
+    draw_plots(document, plots_, std::max(ems(kMinPlotHeightEms), available.y - 8.0f),
+               std::floor((available.x - 2.0f * spacing) / 3.0f));
+  } else {
+    const float height =
+        std::max(ems(kMinPlotHeightEms), (ImGui::GetContentRegionAvail().y - 8.0f) / 3.0f);
+    draw_plots(document, plots_, height);
+  }
+  ImVec2 lo(plot_view(0).min), hi(plot_view(0).max);
+  for (int which = 1; which < 3; ++which) {
+    lo = ImVec2(std::min(lo.x, plot_view(which).min.x), std::min(lo.y, plot_view(which).min.y));
+    hi = ImVec2(std::max(hi.x, plot_view(which).max.x), std::max(hi.y, plot_view(which).max.y));
+  }
+  drawn_.mark(PanelRect{lo, ImVec2(hi.x - lo.x, hi.y - lo.y)});
 }
 
 void SweepPanel::draw_axis_controls(Document& document) {
@@ -252,7 +265,8 @@ void SweepPanel::draw_band_key() const {
   }
 }
 
-void SweepPanel::draw_plots(Document& document, SweepPlots& plots, float height_px) {
+void SweepPanel::draw_plots(Document& document, SweepPlots& plots, float height_px,
+                            float width_px) {
   const SweepCurves* b = compare_computed_ ? &compare_curves_ : nullptr;
   const Quantity quantities[] = {
       {"sweep n", "n", "n", "", curves_.n, overlay_shown_x_, overlay_n_, true, b ? &b->n : nullptr},
@@ -266,8 +280,13 @@ void SweepPanel::draw_plots(Document& document, SweepPlots& plots, float height_
   float widest_labels = 0.0f;
   for (int which = 0; which < 3; ++which) {
     Plot& plot = plots.plots[which];
+    const bool side_by_side = width_px > 0.0f;
+    if (side_by_side && which > 0) {
+      ImGui::SameLine();
+    }
     plot.min_label_width(plots.shared_label_width);
-    if (draw_quantity(document, plot, quantities[which], which == 2, height_px)) {
+    if (draw_quantity(document, plot, quantities[which], which == 2 || side_by_side,
+                      ImVec2(width_px, height_px))) {
       widest_labels = std::max(widest_labels, plot.label_width_needed());
       draw_bands(plot, computed_axis_.key, which == 0);
       if (which == 0) {
@@ -279,7 +298,7 @@ void SweepPanel::draw_plots(Document& document, SweepPlots& plots, float height_
 }
 
 bool SweepPanel::draw_quantity(Document& document, Plot& plot, const Quantity& q, bool last,
-                               float height_px) const {
+                               ImVec2 size_px) const {
   const std::string& key = computed_axis_.key;
   // A hovered point reads in the input's own words and unit: "w = 213.9 g/m²", "n = 7".
   const auto x_text = [key](double shown) { return shown_value(key, from_shown(key, shown)); };
@@ -290,9 +309,9 @@ bool SweepPanel::draw_quantity(Document& document, Plot& plot, const Quantity& q
   };
   // The x title only under the last plot.
   if (!plot.begin(
-          q.id, ImVec2(0.0f, height_px),
+          q.id, size_px,
           PlotAxis{last ? axis_label(key) : std::string(), false, logarithmic_, false, x_text},
-          PlotAxis{q.label, false, false, false, y_text})) {
+          PlotAxis{q.label, false, false, /*whole=*/q.steps, y_text})) {
     return false;
   }
   if (!shown_x_.empty()) {

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "app/gui/document.hpp"
+#include "app/gui/panel.hpp"
 #include "app/gui/plot_widget.hpp"
 #include "app/gui/renderer.hpp"
 #include "core/analysis/sweep.hpp"
@@ -26,7 +27,11 @@ struct SweepPlots {
 class SweepPanel {
  public:
   explicit SweepPanel(std::filesystem::path presets_dir);
-  void draw(Document& document);
+  // `side_by_side`: the three plots in a row, each with its x title (presented on a wide screen,
+  // where stacked they would be strips); else one over another.
+  void draw(Document& document, bool side_by_side = false);
+  // Where the last frame drew the three plots' data areas, all three within it.
+  const DrawnArea& drawn_area() const { return drawn_; }
   // The axis swept: a `foldlab picture sweep`'s --param, --from, --to (drops the paper's points).
   void set_axis(const SweepAxis& axis);
   SweepAxis axis() const { return SweepAxis{key_, from_, to_, steps_, logarithmic_}; }
@@ -34,9 +39,10 @@ class SweepPanel {
   // only when they changed; the axis's problem when it has one.
   std::optional<std::string> compute(Document& document);
   // The keys above the plots (A and B while B is pinned, the shaded bands) and the three plots,
-  // each `height_px` tall, after compute(): the tab's own plots, or a picture's.
+  // each `height_px` tall, after compute(): the tab's own plots, or a picture's. A `width_px`
+  // above zero puts them side by side, each that wide.
   void draw_keys(Document& document) const;
-  void draw_plots(Document& document, SweepPlots& plots, float height_px);
+  void draw_plots(Document& document, SweepPlots& plots, float height_px, float width_px = 0.0f);
   // Where the last frame drew plot `which`'s sample nearest `shown_x` (in the unit the axis
   // shows), skipping gaps; none without one.
   std::optional<ImVec2> screen_point(int which, double shown_x) const;
@@ -51,6 +57,7 @@ class SweepPanel {
   const SweepCurves& curves() const { return curves_; }
   // Where the last frame drew the n, Q and z_max plots' data (0, 1, 2).
   const PlotView& plot_view(int which) const { return plots_.plots[which].view(); }
+  const Plot& plot(int which) const { return plots_.plots[which]; }
   // B's curves over the same axis while a fabric is pinned as B (null otherwise), and how many
   // curves the n plot drew last frame (A's, then B's).
   const SweepCurves* compare_curves() const {
@@ -82,7 +89,7 @@ class SweepPanel {
   };
   // Draws one plot, the x title only when `last`; false when it is clipped (nothing drawn).
   bool draw_quantity(Document& document, Plot& plot, const Quantity& q, bool last,
-                     float height_px) const;
+                     ImVec2 size_px) const;
   // B's curves over the axis A's were computed on, again only when B or the axis changes.
   void recompute_compare(Document& document);
   // The paper's rows for `prefix` (e.g. "paper-table1-") as points over `key`.
@@ -107,6 +114,7 @@ class SweepPanel {
   SweepAxis compare_axis_;
   SweepCurves compare_curves_;
   int curves_drawn_ = 0;
+  DrawnArea drawn_;
   void clear_overlay();
   // Shades the bands over the data area of the plot just ended; names them when `label`.
   void draw_bands(const Plot& plot, const std::string& key, bool label) const;

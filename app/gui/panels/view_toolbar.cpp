@@ -1,10 +1,11 @@
 #include "app/gui/panels/view_toolbar.hpp"
 
 #include <imgui.h>
+#include <imgui_internal.h>  // the window's title bar, where a presented view's button goes
 
 namespace foldlab::gui {
 
-bool ViewToolbar::begin(const char* label, float least_view_height_px) {
+bool ViewToolbar::begin(const char* label, float least_view_height_px, bool fold) {
   const ImVec2 available = ImGui::GetContentRegionAvail();
   const float font_px = ImGui::GetFontSize();
   // The window's width, not the content's, which a scrollbar coming and going would change.
@@ -21,16 +22,40 @@ bool ViewToolbar::begin(const char* label, float least_view_height_px) {
     folded_ = available.y - full_height_px_ < least_view_height_px;
     decided_height_px_ = available.y;
   }
+  if (fold) {
+    folded_ = true;
+    measured_width_px_ = -1.0f;  // measured afresh when it unfolds
+  }
   in_popup_ = false;
   if (!folded_) {
     start_y_px_ = ImGui::GetCursorPosY();
     return true;
   }
+  ImGuiWindow* window = ImGui::GetCurrentWindow();
+  const ImVec2 cursor = ImGui::GetCursorScreenPos();
+  const ImVec2 cursor_max = window->DC.CursorMaxPos;
+  if (fold) {
+    // In the title bar, after the title: the row it would take is the picture's. The button
+    // sits above the content and must not widen what the window scrolls over.
+    const ImRect title = window->TitleBarRect();
+    const ImGuiStyle& style = ImGui::GetStyle();
+    ImGui::PushClipRect(title.Min, title.Max, false);
+    ImGui::SetCursorScreenPos(ImVec2(title.Min.x + style.FramePadding.x +
+                                         ImGui::CalcTextSize(window->Name, nullptr, true).x +
+                                         2.0f * style.ItemSpacing.x,
+                                     title.Min.y));
+  }
   if (ImGui::Button(label)) {
     ImGui::OpenPopup(label);
   }
   if (ImGui::IsItemHovered()) {
-    ImGui::SetTooltip("The view's settings (the panel is too small to show them beside it)");
+    ImGui::SetTooltip(fold ? "The view's settings"
+                           : "The view's settings (the panel is too small to show them beside it)");
+  }
+  if (fold) {
+    ImGui::PopClipRect();
+    ImGui::SetCursorScreenPos(cursor);
+    window->DC.CursorMaxPos = cursor_max;
   }
   in_popup_ = ImGui::BeginPopup(label);
   return in_popup_;

@@ -11,7 +11,9 @@ class ViewToolbar {
   // `label` is the button's ("view settings...") and names the popup it opens. Returns true when
   // the caller
   // draws the settings now (in full above the view, or inside the open popup); then call end().
-  bool begin(const char* label, float least_view_height_px);
+  // `fold`: folded whatever the room, the button in the window's title bar after the title (a
+  // view presented to a room keeps the screen for itself).
+  bool begin(const char* label, float least_view_height_px, bool fold = false);
   void end();
   // Whether the settings were folded behind the button in the last frame.
   bool folded() const { return folded_; }
