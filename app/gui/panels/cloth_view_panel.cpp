@@ -231,14 +231,20 @@ void ClothViewPanel::settings_row() {
   same_line_if_fits(button_width("reset camera"));
 }
 
+// The hex field as wide as its widest value, and the swatch beside it.
+float ClothViewPanel::colour_field_width() {
+  const ImGuiStyle& style = ImGui::GetStyle();
+  return ImGui::CalcTextSize("#WWWWWW").x + 2.0f * style.FramePadding.x + style.ItemInnerSpacing.x +
+         ImGui::GetFrameHeight();
+}
+
 void ClothViewPanel::colour_picker(Document& document) {
   const foldlab::Appearance& appearance = document.appearance();
   const Eigen::Vector3f shown = in_fabric_colour(style_, appearance).front_colour;
   float rgb[3] = {shown.x(), shown.y(), shown.z()};
   // The swatch opens the picker; the hex field beside it takes a typed value. The colour is kept
   // in bytes, as a preset stores it, so that what is saved is what was shown.
-  ImGui::SetNextItemWidth(ImGui::GetFrameHeight() + ImGui::GetStyle().ItemInnerSpacing.x +
-                          ems(4.5f));
+  ImGui::SetNextItemWidth(colour_field_width());
   if (ImGui::ColorEdit3("colour", rgb,
                         ImGuiColorEditFlags_DisplayHex | ImGuiColorEditFlags_Uint8)) {
     foldlab::Appearance changed = appearance;
@@ -321,8 +327,7 @@ bool ClothViewPanel::toolbar(PanelContext& context) {
   if (ImGui::Combo("print", &print, "plain\0woven checks\0stripes\0photo\0")) {
     style_.print = static_cast<ClothStyle::Print>(print);
   }
-  same_line_if_fits(labelled_width(ImGui::GetFrameHeight() + ems(5.0f), "colour") +
-                    ImGui::CalcTextSize(" (?)").x);
+  same_line_if_fits(labelled_width(colour_field_width(), "colour") + ImGui::CalcTextSize(" (?)").x);
   colour_picker(context.document);
   if (style_.print == ClothStyle::Print::photo) {
     same_line_if_fits(ems(13.0f));

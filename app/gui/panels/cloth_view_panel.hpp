@@ -78,6 +78,7 @@ class ClothViewPanel : public Panel {
   void settings_row();
   // The swatch that opens the colour picker, and the button back to the view's own colour.
   void colour_picker(Document& document);
+  static float colour_field_width();
   // Loads a swatch photo as the print; the problem (also shown in the panel), if any.
   std::optional<std::string> load_photo(const std::string& path);
   static float colour_bar_width();
