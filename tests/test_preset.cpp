@@ -118,6 +118,7 @@ void expect_same_preset(const foldlab::Preset& a, const foldlab::Preset& b) {
   EXPECT_EQ(a.published.z_max_mm, b.published.z_max_mm);
   EXPECT_EQ(a.published.Q, b.published.Q);
   EXPECT_EQ(a.calibration, b.calibration);
+  EXPECT_EQ(a.appearance, b.appearance);
 }
 
 // A preset whose numbers need all 17 significant digits to survive a text round trip.
@@ -365,6 +366,61 @@ TEST_F(PresetTest, UnknownTopLevelKeyIsNamed) {
   const std::string message = load_error(j);
   EXPECT_TRUE(contains(message, "/colour")) << message;
   EXPECT_TRUE(contains(message, "unknown key")) << message;
+}
+
+// The appearance is written by hand here, so that the reader is checked against the format as
+// presets/README.md states it rather than against the writer.
+TEST_F(PresetTest, AppearanceColourIsReadFromAHandWrittenFile) {
+  json j = valid_preset_json();
+  j["appearance"] = json::parse(R"({"colour": "#8B1a2b"})");
+  const foldlab::Preset p = foldlab::preset_from_json(j, "velvet.json");
+  ASSERT_TRUE(p.appearance.colour.has_value());
+  EXPECT_EQ(p.appearance.colour->r, 0x8b);
+  EXPECT_EQ(p.appearance.colour->g, 0x1a);
+  EXPECT_EQ(p.appearance.colour->b, 0x2b);
+  // Written back in lower case, the form the shipped presets use.
+  EXPECT_EQ(foldlab::preset_to_json(p).at("appearance"), json::parse(R"({"colour": "#8b1a2b"})"));
+}
+
+TEST_F(PresetTest, APresetWithoutAppearanceKeepsTheViewsColourAndWritesNone) {
+  const foldlab::Preset p = foldlab::preset_from_json(valid_preset_json(), "plain.json");
+  EXPECT_FALSE(p.appearance.colour.has_value());
+  EXPECT_FALSE(foldlab::preset_to_json(p).contains("appearance"));
+  // An empty appearance object is allowed and means the same.
+  json j = valid_preset_json();
+  j["appearance"] = json::object();
+  EXPECT_FALSE(foldlab::preset_from_json(j, "empty.json").appearance.colour.has_value());
+}
+
+TEST_F(PresetTest, AppearanceColourSurvivesSaveAndLoad) {
+  foldlab::Preset original = awkward_preset();
+  original.appearance.colour = foldlab::ColourRgb8{0xd8, 0xcf, 0xbd};
+  const fs::path path = dir_ / "coloured.json";
+  foldlab::save_preset(original, path);
+  const json on_disk = json::parse(read_bytes(path));
+  EXPECT_EQ(on_disk.at("appearance").at("colour"), "#d8cfbd");
+  expect_same_preset(original, foldlab::load_preset(path));
+}
+
+TEST_F(PresetTest, MalformedAppearanceColourIsRefusedNamingTheKey) {
+  for (const char* bad : {R"("red")", R"("#8b1a2")", R"("#8b1a2bff")", R"("8b1a2b#")",
+                          R"("#8g1a2b")", R"("")", R"(139)", R"(null)", R"([139, 26, 43])"}) {
+    SCOPED_TRACE(bad);
+    json j = valid_preset_json();
+    j["appearance"] = {{"colour", json::parse(bad)}};
+    const std::string message = load_error(j);
+    EXPECT_TRUE(contains(message, "bad.json: /appearance/colour:")) << message;
+    EXPECT_TRUE(contains(message, "#RRGGBB")) << message;
+  }
+  json j = valid_preset_json();
+  j["appearance"] = {{"color", "#8b1a2b"}};
+  std::string message = load_error(j);
+  EXPECT_TRUE(contains(message, "/appearance/color")) << message;
+  EXPECT_TRUE(contains(message, "unknown key")) << message;
+  j["appearance"] = "#8b1a2b";
+  message = load_error(j);
+  EXPECT_TRUE(contains(message, "/appearance")) << message;
+  EXPECT_TRUE(contains(message, "expected an object")) << message;
 }
 
 TEST_F(PresetTest, MissingRequiredKeyIsNamed) {

@@ -141,7 +141,8 @@ void add_scene_options(CLI::App& command, GuiCommandOptions& options) {
       .add_option(
           "--view", options.run.view_settings,
           "view setting KEY=VALUE: print=plain|checks|stripes|photo, print_file, "
-          "print_mm, colour_by=none|z|fold_sign, breeze=0|1, breeze_mm, time (s), "
+          "print_mm, colour=#RRGGBB|none (the fabric's colour), colour_by=none|z|fold_sign, "
+          "breeze=0|1, breeze_mm, time (s), "
           "z_exaggeration (1-20), wireframe, lod=0|1 (0: every grid vertex drawn), fold_lines, "
           "ground, grid (vertices per side, 8-512), "
           "full=1 (the 3D view fills the window) (3D view); fold_plot_true_scale=0|1 (the fold "

@@ -38,13 +38,16 @@ void Comparison::clear() {
 std::string fabric_label(const Document& document) {
   const Parameters& parameters = document.scene().parameters();
   const std::string& name = document.loaded().name;
-  return parameters == document.loaded().parameters ? name : name + " (edited)";
+  const bool same = parameters == document.loaded().parameters &&
+                    document.appearance() == document.loaded().appearance;
+  return same ? name : name + " (edited)";
 }
 
 Preset current_fabric(const Document& document) {
   Preset fabric = document.loaded();
   fabric.name = fabric_label(document);
   fabric.parameters = document.scene().parameters();  // the last valid state
+  fabric.appearance = document.appearance();
   return fabric;
 }
 
@@ -77,7 +80,8 @@ void swap_a_and_b(Document& document, UiStatus& status) {
   // B first, so that the edit of A closes one undo step holding both changes.
   document.compare().pin(former_a);
   if (const std::optional<std::string> problem =
-          document.take_fabric(former_b.origin, former_b.origin_path, former_b.fabric.parameters)) {
+          document.take_fabric(former_b.origin, former_b.origin_path, former_b.fabric.parameters,
+                               former_b.fabric.appearance)) {
     document.compare().pin(former_b);
     status.notify("Not swapped: " + *problem, MessageKind::error);
     return;

@@ -42,6 +42,7 @@ Document::Document(const Preset& initial, std::string initial_path, UiStatus& st
     : loaded_(initial),
       loaded_path_(std::move(initial_path)),
       edited_(initial.parameters),
+      appearance_(initial.appearance),
       scene_(initial.parameters),
       status_(status) {
   commit();
@@ -91,7 +92,18 @@ Parameters Document::edited_as_shown() const {
   return with_shown_digits(edited_, dragged_keys_);
 }
 
+void Document::set_appearance(const foldlab::Appearance& appearance, bool closes_step) {
+  if (!(appearance == appearance_)) {
+    appearance_ = appearance;
+    status_.mark_session_dirty();
+  }
+  if (closes_step) {
+    end_step();
+  }
+}
+
 void Document::reset_to_loaded() {
+  appearance_ = loaded_.appearance;
   apply(Edit::replace(loaded_.parameters));
 }
 
@@ -102,6 +114,7 @@ void Document::load_preset_file(const std::filesystem::path& path) {
     loaded_ = preset;
     loaded_path_ = path.string();
     ++loads_;
+    appearance_ = preset.appearance;
     apply(Edit::replace(preset.parameters));
     status_.notify("Loaded " + preset.name + ".", MessageKind::success);
     status_.mark_session_dirty();
@@ -129,7 +142,8 @@ void Document::adopt(const Preset& loaded, std::string path) {
 }
 
 std::optional<std::string> Document::take_fabric(const Preset& origin, std::string path,
-                                                 const Parameters& parameters) {
+                                                 const Parameters& parameters,
+                                                 const foldlab::Appearance& appearance) {
   if (const std::vector<ValidationIssue> issues = validate(parameters); !issues.empty()) {
     return issues.front().message;
   }
@@ -144,6 +158,7 @@ std::optional<std::string> Document::take_fabric(const Preset& origin, std::stri
     }
   }
   set_loaded(now, std::move(path));
+  appearance_ = appearance;
   return apply(Edit::replace(parameters));
 }
 
@@ -157,7 +172,8 @@ void Document::set_loaded(const Preset& origin, std::string path) {
 
 bool Document::unsaved() const {
   // A refused value on screen is an edit too: loading over it would drop what was typed.
-  return !issues_.empty() || !(scene_.parameters() == loaded_.parameters);
+  return !issues_.empty() || !(scene_.parameters() == loaded_.parameters) ||
+         !(appearance_ == loaded_.appearance);
 }
 
 std::optional<std::string> Document::refusal() const {
@@ -173,7 +189,7 @@ std::optional<std::string> Document::refusal() const {
 
 Document::Snapshot Document::snapshot() const {
   return Snapshot{
-      loaded_, loaded_path_, edited_,
+      loaded_, loaded_path_, edited_, appearance_,
       compare_.pinned() ? std::optional<PinnedFabric>(compare_.pinned_fabric()) : std::nullopt};
 }
 
@@ -182,21 +198,23 @@ namespace {
 bool same_b(const std::optional<PinnedFabric>& a, const std::optional<PinnedFabric>& b) {
   return a.has_value() == b.has_value() &&
          (!a || (a->fabric.name == b->fabric.name && a->fabric.parameters == b->fabric.parameters &&
-                 a->origin_path == b->origin_path && a->origin.name == b->origin.name &&
-                 a->origin.parameters == b->origin.parameters));
+                 a->fabric.appearance == b->fabric.appearance && a->origin_path == b->origin_path &&
+                 a->origin.name == b->origin.name && a->origin.parameters == b->origin.parameters));
 }
 
 }  // namespace
 
 bool Document::same(const Snapshot& a, const Snapshot& b) {
-  return a.edited == b.edited && a.loaded_path == b.loaded_path && a.loaded.name == b.loaded.name &&
-         a.loaded.parameters == b.loaded.parameters && same_b(a.compare_b, b.compare_b);
+  return a.edited == b.edited && a.appearance == b.appearance && a.loaded_path == b.loaded_path &&
+         a.loaded.name == b.loaded.name && a.loaded.parameters == b.loaded.parameters &&
+         a.loaded.appearance == b.loaded.appearance && same_b(a.compare_b, b.compare_b);
 }
 
 void Document::restore(const Snapshot& s) {
   set_loaded(s.loaded, s.loaded_path);
   edited_ = s.edited;
   dragged_keys_.clear();  // written exactly: longer, never other than what the step held
+  appearance_ = s.appearance;
   commit();
   if (!same_b(s.compare_b, snapshot().compare_b)) {
     if (s.compare_b) {

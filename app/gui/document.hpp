@@ -1,11 +1,11 @@
 // The fabric the explorer's panels share, one copy of each: the preset as loaded, the parameters
 // being edited (possibly invalid) with their validation, the scene that always holds the last
-// valid parameters, the fabric pinned as B, the undo history and the question asked before
-// unsaved edits are replaced. What the explorer says and remembers about itself (status line,
-// dialogs, session flag, expert mode) is the UiStatus beside it, which the document reports to. The
-// parameters change only through apply(Edit) (and the preset loads, undo and redo built on it), so
-// that a slider, a map click, a preset load and a scripted run all take the same path to the scene:
-// one validation, one commit, one piece of undo bookkeeping.
+// valid parameters, its appearance, the fabric pinned as B, the undo history and the question asked
+// before unsaved edits are replaced. What the explorer says and remembers about itself (status
+// line, dialogs, session flag, expert mode) is the UiStatus beside it, which the document reports
+// to. The parameters change only through apply(Edit) (and the preset loads, undo and redo built on
+// it), so that a slider, a map click, a preset load and a scripted run all take the same path to
+// the scene: one validation, one commit, one piece of undo bookkeeping.
 #pragma once
 
 #include <cstdint>
@@ -78,6 +78,12 @@ class Document {
   const std::vector<std::string>& dragged_keys() const { return dragged_keys_; }
   // edited() as the user can read it back: every dragged input at the slider's digits.
   Parameters edited_as_shown() const;
+  // How the fabric looks (its colour in the 3D view): no input of the model, yet saved with the
+  // preset, compared by the unsaved marker and restored by undo like the parameters.
+  const foldlab::Appearance& appearance() const { return appearance_; }
+  // An undo step of its own unless `closes_step` is false (a colour still being dragged in the
+  // picker), which end_step closes as an open edit is.
+  void set_appearance(const foldlab::Appearance& appearance, bool closes_step = true);
   // The model of the last valid edit. Mutable because it computes its grid and lines lazily; its
   // parameters change only through apply(), its grid resolution only through set_grid_resolution.
   Scene& scene() { return scene_; }
@@ -106,8 +112,10 @@ class Document {
   // `parameters` over it (a swap with B). Nothing changes, and the reason is returned, when the
   // parameters cannot be applied.
   std::optional<std::string> take_fabric(const Preset& origin, std::string path,
-                                         const Parameters& parameters);
-  // True when the valid parameters differ from the preset as loaded, or an input is refused.
+                                         const Parameters& parameters,
+                                         const foldlab::Appearance& appearance);
+  // True when the valid parameters or the appearance differ from the preset as loaded, or an
+  // input is refused.
   bool unsaved() const;
   // Counts preset loads, so that views can reframe for a new cloth.
   std::uint64_t loads() const { return loads_; }
@@ -150,6 +158,7 @@ class Document {
     Preset loaded;
     std::string loaded_path;
     Parameters edited;
+    foldlab::Appearance appearance;
     std::optional<PinnedFabric> compare_b;
   };
   // Validates edited_ and hands it to the scene when valid.
@@ -166,6 +175,7 @@ class Document {
   std::string loaded_path_;
   Parameters edited_;
   std::vector<std::string> dragged_keys_;
+  foldlab::Appearance appearance_;
   std::vector<ValidationIssue> issues_;
   Scene scene_;
   std::uint64_t loads_ = 0;

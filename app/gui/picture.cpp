@@ -124,7 +124,9 @@ void draw_compare(Renderer& renderer, const PictureSource& source, const Picture
   Document& document = source.document;
   Scene& a = document.scene();
   Scene& b = document.compare().scene(a.grid_nx());
-  const ClothStyle style = picture_style(source, spec);
+  const ClothStyle style = in_fabric_colour(picture_style(source, spec), document.appearance());
+  const ClothStyle b_style =
+      in_fabric_colour(picture_style(source, spec), document.compare().b().appearance);
   const FrameSize a_size{std::max(16, area.width / 2), area.height};
   const FrameSize b_size{std::max(16, area.width - a_size.width), area.height};
   const OrbitCamera camera = source.camera ? *source.camera : framed_camera(a, b, a_size);
@@ -132,8 +134,8 @@ void draw_compare(Renderer& renderer, const PictureSource& source, const Picture
   const ImVec2 b_origin(static_cast<float>(a_size.width), 0.0f);
   renderer.draw_cloth(source.cloth_view, draw, ImVec2(0, 0), cloth_buffers(a, style), camera,
                       a_size, style);
-  renderer.draw_cloth(source.compare_cloth_view, draw, b_origin, cloth_buffers(b, style), camera,
-                      b_size, style);
+  renderer.draw_cloth(source.compare_cloth_view, draw, b_origin, cloth_buffers(b, b_style), camera,
+                      b_size, b_style);
   const float pad = std::round(0.6f * ImGui::GetFontSize());
   const auto name = [&](ImVec2 origin, FrameSize half, ImU32 colour, const std::string& text) {
     const float wrap = static_cast<float>(half.width) - 2.0f * pad;
@@ -217,7 +219,8 @@ void build_picture(Renderer& renderer, const PictureSource& source, const Pictur
                         PictureStyle{ImGui::GetFontSize(), picture_line_width_px(spec.size),
                                      spec.legend, spec.background == PictureBackground::dark})) {
   } else if (spec.view == PictureView::cloth) {
-    const ClothStyle style = picture_style(source, spec);
+    const ClothStyle style =
+        in_fabric_colour(picture_style(source, spec), source.document.appearance());
     const OrbitCamera camera = source.camera ? *source.camera : framed_camera(scene, area);
     renderer.draw_cloth(source.cloth_view, ImGui::GetWindowDrawList(), ImVec2(0, 0),
                         cloth_buffers(scene, style), camera, area, style);

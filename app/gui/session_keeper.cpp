@@ -23,6 +23,7 @@ void SessionKeeper::read(bool restore) {
   if (s) {
     if (s->fabric_restored) {
       document_.adopt(s->loaded, s->loaded_preset_path);
+      document_.set_appearance(s->current.appearance, false);
       document_.apply(Edit::replace(s->current.parameters));
     }
     document_.set_grid_resolution(s->grid_resolution);
@@ -60,6 +61,7 @@ void SessionKeeper::save_now() {
   Session s;
   s.current = document_.loaded();
   s.current.parameters = document_.scene().parameters();  // the last valid state
+  s.current.appearance = document_.appearance();
   s.loaded = document_.loaded();
   s.loaded_preset_path = document_.loaded_path();
   s.grid_resolution = document_.scene().grid_nx();

@@ -347,15 +347,68 @@ std::optional<CalibrationRecord> read_calibration(Reader& r, const json& c, doub
   return problems.size() == before ? std::optional(record) : std::nullopt;
 }
 
+void read_appearance(Reader& r, const json& a, Appearance& out) {
+  const std::string at = "/appearance";
+  if (!r.object(a, at, {"colour"})) {
+    return;
+  }
+  if (!a.contains("colour")) {
+    return;
+  }
+  const json& v = a.at("colour");
+  const std::optional<ColourRgb8> colour =
+      v.is_string() ? parse_hex_colour(v.get<std::string>()) : std::nullopt;
+  if (!colour) {
+    r.problem(at + "/colour",
+              "expected an sRGB colour as \"#RRGGBB\" (six hex digits), got " + describe_json(v));
+    return;
+  }
+  out.colour = colour;
+}
+
 }  // namespace
+
+std::optional<ColourRgb8> parse_hex_colour(std::string_view text) {
+  if (text.size() != 7 || text[0] != '#') {
+    return std::nullopt;
+  }
+  const auto digit = [](char c) -> int {
+    if (c >= '0' && c <= '9') {
+      return c - '0';
+    }
+    if (c >= 'a' && c <= 'f') {
+      return c - 'a' + 10;
+    }
+    if (c >= 'A' && c <= 'F') {
+      return c - 'A' + 10;
+    }
+    return -1;
+  };
+  std::uint8_t channels[3] = {};
+  for (std::size_t i = 0; i < 3; ++i) {
+    const int high = digit(text[1 + 2 * i]);
+    const int low = digit(text[2 + 2 * i]);
+    if (high < 0 || low < 0) {
+      return std::nullopt;
+    }
+    channels[i] = static_cast<std::uint8_t>(high * 16 + low);
+  }
+  return ColourRgb8{channels[0], channels[1], channels[2]};
+}
+
+std::string hex_colour(ColourRgb8 colour) {
+  return detail::printf_string("#%02x%02x%02x", unsigned{colour.r}, unsigned{colour.g},
+                               unsigned{colour.b});
+}
 
 Preset preset_from_json(const json& j, const std::string& origin) {
   std::vector<std::string> problems;
   Reader r(origin, problems);
   Preset preset;
-  if (!r.object(j, "",
-                {"foldlab_preset", "name", "description", "source", "derived_from", "written_by",
-                 "fabric", "hanging", "model", "shape", "published", "calibration"})) {
+  if (!r.object(
+          j, "",
+          {"foldlab_preset", "name", "description", "source", "derived_from", "written_by",
+           "fabric", "hanging", "model", "shape", "published", "calibration", "appearance"})) {
     throw PresetError(join_lines(problems));
   }
   if (!j.contains("foldlab_preset")) {
@@ -407,6 +460,9 @@ Preset preset_from_json(const json& j, const std::string& origin) {
   }
   if (j.contains("calibration")) {
     preset.calibration = read_calibration(r, j.at("calibration"), p.fabric.poisson_ratio, problems);
+  }
+  if (j.contains("appearance")) {
+    read_appearance(r, j.at("appearance"), preset.appearance);
   }
   // Range problems too, except for a key that already has one: its value was not read, so the
   // range check would be about the default standing in for it.
@@ -505,6 +561,9 @@ json preset_to_json(const Preset& preset) {
     if (c->law != WrinkleLawKind::conci) {
       j["calibration"]["law"] = to_string(c->law);
     }
+  }
+  if (preset.appearance.colour) {
+    j["appearance"] = {{"colour", hex_colour(*preset.appearance.colour)}};
   }
   return j;
 }

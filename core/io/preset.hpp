@@ -1,10 +1,12 @@
 // Presets: versioned JSON files with the units in every key (see presets/README.md for the format).
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <nlohmann/json_fwd.hpp>
@@ -69,6 +71,27 @@ struct CalibrationRecord {
   bool operator==(const CalibrationRecord&) const = default;
 };
 
+// An sRGB colour, 8 bits a channel, as a preset stores it: "#8b1a2b".
+struct ColourRgb8 {
+  std::uint8_t r = 0;
+  std::uint8_t g = 0;
+  std::uint8_t b = 0;
+
+  bool operator==(const ColourRgb8&) const = default;
+};
+
+// "#RRGGBB" (either case) to a colour; nothing for any other text.
+std::optional<ColourRgb8> parse_hex_colour(std::string_view text);
+// The colour as "#rrggbb", lower case, which parse_hex_colour reads back.
+std::string hex_colour(ColourRgb8 colour);
+
+// How the fabric looks, apart from what the model computes: absent parts keep the views' own.
+struct Appearance {
+  std::optional<ColourRgb8> colour;  // the cloth's front face
+
+  bool operator==(const Appearance&) const = default;
+};
+
 struct Preset {
   std::string name;
   std::string description;
@@ -81,6 +104,7 @@ struct Preset {
   Parameters parameters;
   PublishedResult published;
   std::optional<CalibrationRecord> calibration;
+  Appearance appearance;
 };
 
 // A preset that cannot be read: the message names the file, the key (as a JSON pointer) and the

@@ -1,6 +1,8 @@
 #include "app/gui/panels/cloth_view_panel.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <string_view>
 
@@ -55,7 +57,26 @@ json counters_json(const RenderCounters& c) {
               {"drawn_rows", c.drawn_rows}};
 }
 
+Eigen::Vector3f to_floats(ColourRgb8 c) {
+  return Eigen::Vector3f(static_cast<float>(c.r), static_cast<float>(c.g),
+                         static_cast<float>(c.b)) /
+         255.0f;
+}
+
+ColourRgb8 to_bytes(const float rgb[3]) {
+  const auto byte = [](float v) {
+    return static_cast<std::uint8_t>(std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f));
+  };
+  return ColourRgb8{byte(rgb[0]), byte(rgb[1]), byte(rgb[2])};
+}
+
 }  // namespace
+
+ClothStyle in_fabric_colour(ClothStyle style, const foldlab::Appearance& appearance) {
+  style.front_colour =
+      appearance.colour ? to_floats(*appearance.colour) : ClothStyle{}.front_colour;
+  return style;
+}
 
 std::optional<std::string> ClothViewPanel::load_photo(const std::string& path) {
   auto loaded = load_print_image(path);
@@ -69,7 +90,29 @@ std::optional<std::string> ClothViewPanel::load_photo(const std::string& path) {
   return std::nullopt;
 }
 
-void ClothViewPanel::view_settings(ViewSettings& settings, Document& /*document*/) {
+void ClothViewPanel::view_settings(ViewSettings& settings, Document& document) {
+  // The fabric's colour belongs to the fabric, not to the view: the session keeps it with the
+  // edited preset, and a scripted one is an edit that undo takes back.
+  settings.add_action(
+      "colour",
+      [&document](std::string_view value) -> std::optional<std::string> {
+        foldlab::Appearance appearance = document.appearance();
+        if (value == "none") {
+          appearance.colour.reset();
+        } else if (const std::optional<ColourRgb8> colour = parse_hex_colour(value)) {
+          appearance.colour = colour;
+        } else {
+          return "colour = " + detail::cut(std::string(value)) +
+                 " is not an sRGB colour: give #RRGGBB (six hex digits) or none for the view's "
+                 "own colour";
+        }
+        document.set_appearance(appearance);
+        return std::nullopt;
+      },
+      [&document] {
+        const std::optional<ColourRgb8>& colour = document.appearance().colour;
+        return colour ? json(hex_colour(*colour)) : json(nullptr);
+      });
   // A swatch photo needs its file, which is not kept: the print it replaced is.
   settings.add_choice<ClothStyle::Print>(
       "print", &style_.print, kPrintNames, kEveryUse,
@@ -114,6 +157,17 @@ void ClothViewPanel::report(json& state, PanelContext& context) const {
   json renderer = counters_json(context.renderer.cloth_counters(views_[0]));
   renderer["compare"] = counters_json(context.renderer.cloth_counters(views_[1]));
   state["renderer"] = renderer;
+  // The colour each cloth is drawn in, as its preset stores it: null draws the view's own.
+  const auto colour = [](const foldlab::Appearance& appearance) {
+    return appearance.colour ? json(hex_colour(*appearance.colour)) : json(nullptr);
+  };
+  const Document& document = context.document;
+  state["cloth_colour"] = {
+      {"a", colour(document.appearance())},
+      {"b",
+       document.compare().pinned() ? colour(document.compare().b().appearance) : json(nullptr)},
+      {"a_drawn",
+       hex_colour(to_bytes(in_fabric_colour(style_, document.appearance()).front_colour.data()))}};
 }
 
 std::optional<std::string> ClothViewPanel::picture_unavailable(PictureView view,
@@ -181,6 +235,39 @@ void ClothViewPanel::settings_row() {
   same_line_if_fits(button_width("reset camera"));
 }
 
+// The hex field as wide as its widest value, and the swatch beside it.
+float ClothViewPanel::colour_field_width() {
+  const ImGuiStyle& style = ImGui::GetStyle();
+  return ImGui::CalcTextSize("#WWWWWW").x + 2.0f * style.FramePadding.x + style.ItemInnerSpacing.x +
+         ImGui::GetFrameHeight();
+}
+
+void ClothViewPanel::colour_picker(Document& document) {
+  const foldlab::Appearance& appearance = document.appearance();
+  const Eigen::Vector3f shown = in_fabric_colour(style_, appearance).front_colour;
+  float rgb[3] = {shown.x(), shown.y(), shown.z()};
+  // The swatch opens the picker; the hex field beside it takes a typed value. The colour is kept
+  // in bytes, as a preset stores it, so that what is saved is what was shown.
+  ImGui::SetNextItemWidth(colour_field_width());
+  if (ImGui::ColorEdit3("colour", rgb,
+                        ImGuiColorEditFlags_DisplayHex | ImGuiColorEditFlags_Uint8)) {
+    foldlab::Appearance changed = appearance;
+    changed.colour = to_bytes(rgb);
+    document.set_appearance(changed, false);  // a drag in the picker is one undo step
+  }
+  help_marker(
+      "The fabric's colour in this view and its pictures, saved with the preset; click the "
+      "swatch to pick one or type its hex value.");
+  if (appearance.colour) {
+    same_line_if_fits(button_width("default colour"));
+    if (small_button("default colour")) {
+      foldlab::Appearance cleared = appearance;
+      cleared.colour.reset();
+      document.set_appearance(cleared);
+    }
+  }
+}
+
 // Reframes for a new cloth (or on request), keeping the user's direction when only the cloth's
 // size changed. With B pinned the camera frames both cloths, so that the two halves of the view
 // show them at one scale.
@@ -244,6 +331,8 @@ bool ClothViewPanel::toolbar(PanelContext& context) {
   if (ImGui::Combo("print", &print, "plain\0woven checks\0stripes\0photo\0")) {
     style_.print = static_cast<ClothStyle::Print>(print);
   }
+  same_line_if_fits(labelled_width(colour_field_width(), "colour") + ImGui::CalcTextSize(" (?)").x);
+  colour_picker(context.document);
   if (style_.print == ClothStyle::Print::photo) {
     same_line_if_fits(ems(13.0f));
     ImGui::SetNextItemWidth(ems(13.0f));
@@ -423,8 +512,10 @@ void ClothViewPanel::draw(PanelContext& context) {
     if (views_[which] == kNoClothView) {
       views_[which] = renderer.create_cloth_view();
     }
-    update_cloth_buffers(cloth, style_, buffers_[which]);
-    renderer.draw_cloth(views_[which], draw, at, buffers_[which], camera_, view_size, style_);
+    const ClothStyle style = in_fabric_colour(
+        style_, which == 0 ? document.appearance() : document.compare().b().appearance);
+    update_cloth_buffers(cloth, style, buffers_[which]);
+    renderer.draw_cloth(views_[which], draw, at, buffers_[which], camera_, view_size, style);
   };
   draw_view(0, origin, scene, size);
   const ImVec2 b_origin(origin.x + static_cast<float>(size.width), origin.y);

@@ -17,6 +17,10 @@
 
 namespace foldlab::gui {
 
+// `style` with the cloth's front in the fabric's own colour, or in the style's default colour
+// (ClothStyle's) for a fabric with none: each of A and B is drawn in its own.
+ClothStyle in_fabric_colour(ClothStyle style, const foldlab::Appearance& appearance);
+
 class ClothViewPanel : public Panel {
  public:
   const char* name() const override { return "Cloth (3D)"; }
@@ -78,6 +82,9 @@ class ClothViewPanel : public Panel {
   void name_halves(const Document& document, ImDrawList* draw, ImVec2 origin, FrameSize size,
                    FrameSize area) const;
   void settings_row();
+  // The swatch that opens the colour picker, and the button back to the view's own colour.
+  void colour_picker(Document& document);
+  static float colour_field_width();
   // Loads a swatch photo as the print; the problem (also shown in the panel), if any.
   std::optional<std::string> load_photo(const std::string& path);
   static float colour_bar_width();

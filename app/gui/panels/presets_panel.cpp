@@ -133,7 +133,8 @@ bool PresetsPanel::saves_over_pinned_b(Document& document) {
   }
   std::error_code error;
   return std::filesystem::equivalent(compare.b_origin_path(), document.loaded_path(), error) &&
-         !(compare.b().parameters == document.scene().parameters());
+         (!(compare.b().parameters == document.scene().parameters()) ||
+          !(compare.b().appearance == document.appearance()));
 }
 
 void PresetsPanel::save(Document& document, UiStatus& status, bool confirmed_over_b) {
@@ -164,6 +165,7 @@ Preset preset_to_save(const Document& document, const std::string& name) {
   if (validate(shown).empty()) {
     preset.parameters = shown;
   }
+  preset.appearance = document.appearance();
   if (loaded.name != name) {
     // The source preset's description and sources describe its fabric, not this one: the new
     // preset names where it came from instead, and that preset's file keeps its sources.
