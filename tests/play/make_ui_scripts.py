@@ -54,10 +54,16 @@ def script(size):
     if folded:
         steps += [{"key": "escape"}, {"frames": 2}]
     steps += click("Equations")
-    # The 3D view's toggles, twice each so that the view ends as it began.
+    # The 3D view's toggles, twice each so that the view ends as it began; in the smallest window
+    # they fold behind one button too.
+    if folded:
+        steps += click("view settings...")
     for label in ["wireframe", "fold lines", "ground", "breeze"]:
         steps += click(label) + click(label)
-    steps += click("reset camera") + click("autoscale")
+    steps += click("reset camera")
+    if folded:
+        steps += [{"key": "escape"}, {"frames": 2}]
+    steps += click("autoscale")
     # The unsaved-edits dialog: Escape keeps the edits, Discard loads the preset clicked.
     steps += [{"drag": "h", "dx": 40}, {"expect": {"dirty": True, "modal": None}}]
     steps += click("Cotton jersey knit") + [{"expect": {"modal": UNSAVED}}]
