@@ -209,9 +209,7 @@ void FoldPlotPanel::draw(PanelContext& context) {
       plot_.grow_only();
     }
     if (true_scale_) {
-      // Presented, the frame narrows to the cloth, whose true shape is the picture; in a tile the
-      // frame keeps its share of the window and shows more x about the cloth.
-      plot_.equal_scales(/*narrow_frame=*/context.presented == this);
+      plot_.equal_scales(/*narrow_frame=*/true);
     }
     const bool compare = document.compare().pinned();
     series_.lines(plot_, scene, compare, true);
