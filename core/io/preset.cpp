@@ -372,22 +372,10 @@ std::optional<ColourRgb8> parse_hex_colour(std::string_view text) {
   if (text.size() != 7 || text[0] != '#') {
     return std::nullopt;
   }
-  const auto digit = [](char c) -> int {
-    if (c >= '0' && c <= '9') {
-      return c - '0';
-    }
-    if (c >= 'a' && c <= 'f') {
-      return c - 'a' + 10;
-    }
-    if (c >= 'A' && c <= 'F') {
-      return c - 'A' + 10;
-    }
-    return -1;
-  };
   std::uint8_t channels[3] = {};
   for (std::size_t i = 0; i < 3; ++i) {
-    const int high = digit(text[1 + 2 * i]);
-    const int low = digit(text[2 + 2 * i]);
+    const int high = detail::hex_digit(text[1 + 2 * i]);
+    const int low = detail::hex_digit(text[2 + 2 * i]);
     if (high < 0 || low < 0) {
       return std::nullopt;
     }

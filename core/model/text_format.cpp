@@ -206,4 +206,17 @@ std::string message_number(double value, bool exact) {
   return (value < 0.0 ? "\u2212" : "") + text;
 }
 
+int hex_digit(char c) {
+  if (c >= '0' && c <= '9') {
+    return c - '0';
+  }
+  if (c >= 'a' && c <= 'f') {
+    return c - 'a' + 10;
+  }
+  if (c >= 'A' && c <= 'F') {
+    return c - 'A' + 10;
+  }
+  return -1;
+}
+
 }  // namespace foldlab::detail

@@ -239,4 +239,7 @@ inline std::string join_comma(const std::vector<std::string>& items) {
   return join(items, ", ");
 }
 
+// The value of one hexadecimal digit (either case), or -1 for any other character.
+int hex_digit(char c);
+
 }  // namespace foldlab::detail
