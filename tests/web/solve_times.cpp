@@ -6,6 +6,10 @@
 // the code while it first runs (V8: lazily, then again optimised on a background thread, which a
 // busy machine delays), so without it the first cases timed carry that compilation, whatever
 // their inputs.
+// With `--field`, the tension field instead, as the explorer's field view runs it: the view
+// opening on the default cloth (a cold solve on the mesh while a value is dragged, 16 cells
+// across, and at rest, 32) and one frame of a drag of d (a warm re-solve after d + 1 mm, solved
+// whole), so that the page's field is set beside the desktop's.
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -13,33 +17,108 @@
 #include <string>
 #include <vector>
 
+#include "core/field/live_field.hpp"
 #include "core/model/solver.hpp"
 #include "core/model/text_format.hpp"
 #include "core/tools/benchmark_cases.hpp"
 
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double ms_since(Clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+foldlab::field::FieldInputs field_inputs(double d_mm, int cells) {
+  foldlab::Parameters p;
+  p.hanging.support_displacement_mm = d_mm;
+  foldlab::field::FieldInputs in;
+  in.outline = foldlab::field::make_outline(p, foldlab::field::OutlineKind::cosine);
+  in.material = foldlab::field::material_of(p.fabric);
+  in.resolution.cells_x = cells;
+  in.resolution.cells_y = cells;
+  return in;
+}
+
+void settle(foldlab::field::LiveField& live) {
+  while (live.working()) {
+    live.step(0.0);
+  }
+}
+
+// The microseconds a run of `once` takes, over at least `min_ms` and at least two runs.
+template <class Once>
+double us_per_run(double min_ms, Once&& once) {
+  once();
+  long runs = 0;
+  const Clock::time_point start = Clock::now();
+  double elapsed_ms = 0.0;
+  while (elapsed_ms < min_ms || runs < 2) {
+    once();
+    ++runs;
+    elapsed_ms = ms_since(start);
+  }
+  return 1000.0 * elapsed_ms / static_cast<double>(runs);
+}
+
+std::string field_cases(double min_ms) {
+  using foldlab::field::LiveField;
+  std::string out = "{\"cases\": [";
+  for (const int cells : {16, 32}) {
+    const double us = us_per_run(min_ms, [cells] {
+      LiveField live;
+      live.request(field_inputs(100.0, cells));
+      settle(live);
+    });
+    out += std::string(cells == 16 ? "" : ", ") + "{\"label\": \"field view opening, " +
+           std::to_string(cells) +
+           " cells\", \"us_per_solve\": " + foldlab::detail::shortest_number(us) + "}";
+  }
+  LiveField live;
+  double d_mm = 100.0;
+  live.request(field_inputs(d_mm, 16));
+  settle(live);
+  const double us = us_per_run(min_ms, [&live, &d_mm] {
+    d_mm = d_mm >= 300.0 ? 100.0 : d_mm + 1.0;
+    live.request(field_inputs(d_mm, 16));
+    settle(live);
+  });
+  out += ", {\"label\": \"field drag frame, d + 1 mm, 16 cells\", \"us_per_solve\": " +
+         foldlab::detail::shortest_number(us) + "}]}";
+  return out;
+}
+
+}  // namespace
+
 int main(int argc, char** argv) {
   using namespace foldlab;
-  using Clock = std::chrono::steady_clock;
   double min_ms = 50.0;
   double warm_up_ms = 500.0;
   int count = 40;
-  for (int i = 1; i + 1 < argc; i += 2) {
-    if (std::strcmp(argv[i], "--ms") == 0) {
-      min_ms = std::atof(argv[i + 1]);
-    } else if (std::strcmp(argv[i], "--warm-up-ms") == 0) {
-      warm_up_ms = std::atof(argv[i + 1]);
-    } else if (std::strcmp(argv[i], "--cases") == 0) {
-      count = std::atoi(argv[i + 1]);
+  bool field = false;
+  for (int i = 1; i < argc; ++i) {
+    const bool has_value = i + 1 < argc;
+    if (std::strcmp(argv[i], "--field") == 0) {
+      field = true;
+    } else if (has_value && std::strcmp(argv[i], "--ms") == 0) {
+      min_ms = std::atof(argv[++i]);
+    } else if (has_value && std::strcmp(argv[i], "--warm-up-ms") == 0) {
+      warm_up_ms = std::atof(argv[++i]);
+    } else if (has_value && std::strcmp(argv[i], "--cases") == 0) {
+      count = std::atoi(argv[++i]);
     }
+  }
+  if (field) {
+    std::puts(field_cases(min_ms).c_str());
+    return 0;
   }
   std::string out = "{\"cases\": [";
   volatile int sink = 0;  // keeps the solves from being optimised away
   bool first = true;
   const std::vector<BenchmarkCase> cases = realistic_cases(count);
   const Clock::time_point warm_up_start = Clock::now();
-  while (!cases.empty() &&
-         std::chrono::duration<double, std::milli>(Clock::now() - warm_up_start).count() <
-             warm_up_ms) {
+  while (!cases.empty() && ms_since(warm_up_start) < warm_up_ms) {
     for (const BenchmarkCase& c : cases) {
       sink = sink + solve(c.parameters).n;
     }
@@ -52,7 +131,7 @@ int main(int argc, char** argv) {
     while (elapsed_ms < min_ms) {
       sink = sink + solve(c.parameters).n;
       ++solves;
-      elapsed_ms = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+      elapsed_ms = ms_since(start);
     }
     out += std::string(first ? "" : ", ") + "{\"label\": \"" + c.label + "\", \"us_per_solve\": " +
            detail::shortest_number(1000.0 * elapsed_ms / static_cast<double>(solves)) + "}";

@@ -81,12 +81,13 @@ def native_drag(args, root):
     return report["mean_ms"], report["p95_ms"], report["frames"]
 
 
-def solve_ratios(args):
+def solve_ratios(args, extra=()):
     """Per case the fastest of `repeat` runs of each program, run by turns: on a shared machine a
-    case's time is its own plus whatever else took the core meanwhile, which the minimum drops."""
+    case's time is its own plus whatever else took the core meanwhile, which the minimum drops.
+    `extra` goes to both programs (--field: the tension field's cases)."""
     best = {"native": {}, "wasm": {}}
-    commands = {"native": [args.solve_times_native],
-                "wasm": ["node", "--no-experimental-fetch", args.solve_times_wasm]}
+    commands = {"native": [args.solve_times_native, *extra],
+                "wasm": ["node", "--no-experimental-fetch", args.solve_times_wasm, *extra]}
     for _ in range(args.repeat):
         for name, command in commands.items():
             cases = json.loads(subprocess.run(command, capture_output=True, text=True,
@@ -98,7 +99,7 @@ def solve_ratios(args):
     labels = list(best["native"])
     ratios = [best["wasm"][label] / best["native"][label] for label in labels]
     return (ratios, statistics.median(best["native"].values()),
-            statistics.median(best["wasm"].values()))
+            statistics.median(best["wasm"].values()), best)
 
 
 def site_sizes(site):
@@ -129,8 +130,11 @@ def main():
         for i in range(args.repeat):
             os.makedirs(os.path.join(root, f"native{i}"))
             figures["native_drag"].append(native_drag(args, os.path.join(root, f"native{i}")))
-    ratios, native_us, wasm_us = solve_ratios(args)
+    ratios, native_us, wasm_us, _ = solve_ratios(args)
     figures["solve_ratios"] = ratios
+    field_ratios, _, _, field_best = solve_ratios(args, ("--field",))
+    figures["field_ratios"] = field_ratios
+    figures["field_us"] = field_best
     figures["site"] = site_sizes(args.site)
 
     geo = statistics.geometric_mean(ratios)
@@ -147,6 +151,10 @@ def main():
     print(f"| solve, WebAssembly / native | geometric mean {geo:.2f}×, median "
           f"{statistics.median(ratios):.2f}×, {min(ratios):.2f}–{max(ratios):.2f}× over "
           f"{len(ratios)} cases (median {wasm_us:.1f} µs against {native_us:.1f} µs) | ≤ 1.3× |")
+    for ratio, label in zip(field_ratios, field_best["native"]):
+        print(f"| {label}, WebAssembly / native | {ratio:.2f}× "
+              f"({field_best['wasm'][label] / 1000:.1f} ms against "
+              f"{field_best['native'][label] / 1000:.1f} ms) | ≤ 1.5× |")
     raw = sum(r for _, r, _ in figures["site"])
     packed = sum(g for _, _, g in figures["site"])
     print(f"| site | {raw / 1e6:.2f} MB raw, {packed / 1e6:.2f} MB gzip -9 | ≤ 4 MB gzip |")
