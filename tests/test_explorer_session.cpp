@@ -1,5 +1,8 @@
 // The session kept between starts and the page's address: what is remembered, what is set aside
 // when it cannot be read, and the link that follows the inputs.
+#include <cstdio>
+#include <string>
+
 #include "app/gui/compare.hpp"
 #include "app/gui/panels/presets_panel.hpp"
 #include "core/io/link.hpp"
@@ -139,6 +142,31 @@ TEST_F(ExplorerTest, TheLinkCarriesTheNamesAndBWhenPinned) {
   const std::string b_name = explorer_->document().compare().b().name;
   EXPECT_EQ(explorer_->link(), "preset=paper-table1-h1400&t=0.4&h=2000&b.name=" +
                                    foldlab::percent_encode(b_name) + "&b.h=2000");
+}
+
+// B pinned after a drag keeps the slider's digits in the link as A does; a dragged K writes c with
+// the digits that show that K, and a c typed after it exactly.
+TEST_F(ExplorerTest, TheLinkWritesBsDraggedValuesAndADraggedKAtTheSlidersDigits) {
+  frame();
+  explorer_->document().apply(Edit::input("t", 0.23761827878721103).by_slider());
+  pin_as_b(explorer_->document(), explorer_->status());
+  explorer_->document().apply(Edit::input("t", 0.4));
+  const std::string link = explorer_->link();
+  EXPECT_NE(link.find("&b.t=0.238"), std::string::npos) << link;
+  // The preset's ν is 0.3 unless it says otherwise: K = c / (1 - ν²).
+  const double nu = explorer_->document().edited().fabric.poisson_ratio;
+  explorer_->document().apply(Edit::input("K", 37.123456789).by_slider());
+  const std::string k_link = explorer_->link();
+  const std::size_t c_at = k_link.find("&c=");
+  ASSERT_NE(c_at, std::string::npos) << k_link;
+  const std::string c_text = k_link.substr(c_at + 3, k_link.find('&', c_at + 1) - c_at - 3);
+  char shown_k[32];
+  std::snprintf(shown_k, sizeof shown_k, "%.3g", std::stod(c_text) / (1.0 - nu * nu));
+  EXPECT_STREQ(shown_k, "37.1") << k_link;
+  EXPECT_LE(c_text.size(), 6u) << k_link;
+  explorer_->document().apply(Edit::input("c", 33.33371));
+  EXPECT_NE(explorer_->link().find("&c=33.33371"), std::string::npos)
+      << explorer_->link();
 }
 
 // Where the config folder is the explorer's alone (the page's storage), a session that does not

@@ -5,6 +5,7 @@
 #include <cctype>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <random>
@@ -255,6 +256,28 @@ TEST(Link, DraggedValuesAreWrittenWithTheSlidersDigits) {
   // Typed (not dragged): exact, and read back bit for bit.
   const std::string typed = foldlab::fabric_link(p, {&base, {}, ""});
   EXPECT_EQ(typed.substr(0, typed.find('&')), "t=0.23761827878721103");
+  Parameters exact = base;
+  ASSERT_TRUE(apply_link(exact, typed).empty());
+  expect_bit_identical(exact, p, typed);
+}
+
+// K (c/(1-ν²)) is stored as c: a dragged K writes c with the fewest digits that still give the K
+// the slider showed ("%.3g"), and a typed c after it is written exactly again.
+TEST(Link, ADraggedKWritesAShortCThatShowsTheSameK) {
+  Parameters p;
+  ASSERT_FALSE(foldlab::assign_text(p, "K", "37.123456789"));
+  const double nu = p.fabric.poisson_ratio;
+  const Parameters base;
+  const std::string link = foldlab::fabric_link(p, {&base, {"K"}, ""});
+  ASSERT_EQ(link.rfind("c=", 0), 0u) << link;
+  const std::string c_text = link.substr(2, link.find('&') - 2);
+  EXPECT_LE(c_text.size(), 6u) << link;  // not 0.3356... to 17 digits
+  Parameters read = base;
+  ASSERT_TRUE(apply_link(read, link).empty());
+  char shown[32];
+  std::snprintf(shown, sizeof shown, "%.3g", read.model.load_constant_c / (1.0 - nu * nu));
+  EXPECT_STREQ(shown, "37.1");
+  const std::string typed = foldlab::fabric_link(p, {&base, {}, ""});
   Parameters exact = base;
   ASSERT_TRUE(apply_link(exact, typed).empty());
   expect_bit_identical(exact, p, typed);

@@ -54,7 +54,8 @@ Preset current_fabric(const Document& document) {
 namespace {
 
 PinnedFabric fabric_a(const Document& document) {
-  return {current_fabric(document), document.loaded(), document.loaded_path()};
+  return {current_fabric(document), document.loaded(), document.loaded_path(),
+          document.dragged_keys()};
 }
 
 }  // namespace

@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "core/geometry/scene.hpp"
 #include "core/io/preset.hpp"
@@ -21,10 +22,13 @@ class UiStatus;
 // A fabric pinned as B: its label and last valid parameters (`fabric`), and the preset it came
 // from with that preset's file (`origin`, `origin_path`, empty for the built-in default) — what
 // "Reset to preset", "Save as" and the "(edited)" marker compare against once a swap makes it A.
+// `dragged_keys` are the inputs a slider set last when B was pinned: a link writes them with the
+// digits the slider showed, as it does A's (a session or a preset file does not keep them).
 struct PinnedFabric {
   Preset fabric;
   Preset origin;
   std::string origin_path;
+  std::vector<std::string> dragged_keys = {};
 };
 
 class Comparison {

@@ -75,6 +75,14 @@ std::optional<std::string> Document::apply(const Edit& edit) {
     dragged_keys_.clear();
   }
   for (const Assignment& a : edit.assignments) {
+    // K and c are one stored value: whichever was set last says how it is written.
+    const InputSpec* spec = find_input(a.key);
+    if (a.key == "c" || (spec != nullptr && spec->kind == InputKind::stiffness_K)) {
+      std::erase_if(dragged_keys_, [](const std::string& key) {
+        const InputSpec* other = find_input(key);
+        return key == "c" || (other != nullptr && other->kind == InputKind::stiffness_K);
+      });
+    }
     std::erase(dragged_keys_, a.key);
     if (edit.dragged) {
       dragged_keys_.push_back(a.key);

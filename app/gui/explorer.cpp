@@ -150,7 +150,8 @@ std::string Explorer::link() const {
   }
   content.a = {document_.edited(), document_.dragged_keys(), document_.loaded().name};
   if (document_.compare().pinned()) {
-    content.b = LinkFabric{document_.compare().b().parameters, {}, document_.compare().b().name};
+    const PinnedFabric& b = document_.compare().pinned_fabric();
+    content.b = LinkFabric{b.fabric.parameters, b.dragged_keys, b.fabric.name};
   }
   // A phone's one view is its screen's, not a choice to send: a link opened on a laptop shows
   // its tiles.

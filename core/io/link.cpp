@@ -94,14 +94,46 @@ double shown_digits_value(const InputSpec& spec, double stored) {
   return read && std::isfinite(*read) ? *read : stored;
 }
 
+namespace {
+
+// K is c/(1-ν²) at the ν in force and is stored as c: after a drag of K, c with the fewest
+// significant digits that still shows the K the slider showed (not the 17 of K's value times
+// 1-ν²).
+void round_c_to_shown_K(const InputSpec& k_spec, const Parameters& p, Parameters& out) {
+  const std::optional<double> k = k_spec.value(p);
+  const std::optional<double> c = find_input("c")->value(p);
+  if (!k || !c || !std::isfinite(*k) || !std::isfinite(*c)) {
+    return;
+  }
+  const std::string shown_k = detail::printf_string(std::string(k_spec.format).c_str(), *k);
+  constexpr int kMaxDigits = 17;
+  for (int digits = 1; digits <= kMaxDigits; ++digits) {
+    const std::optional<double> rounded = parse_number(detail::printf_string("%.*g", digits, *c));
+    Parameters trial = out;
+    if (!rounded || assign_number(trial, "c", *rounded)) {
+      continue;
+    }
+    const std::optional<double> trial_k = k_spec.value(trial);
+    if (trial_k && detail::printf_string(std::string(k_spec.format).c_str(), *trial_k) == shown_k) {
+      out = trial;
+      return;
+    }
+  }
+}
+
+}  // namespace
+
 Parameters with_shown_digits(const Parameters& p, const std::vector<std::string>& keys) {
   Parameters out = p;
   for (const InputSpec& spec : input_table()) {
-    if (spec.preset.empty() ||
-        std::find(keys.begin(), keys.end(), std::string(spec.key)) == keys.end()) {
+    if (std::find(keys.begin(), keys.end(), std::string(spec.key)) == keys.end()) {
       continue;
     }
-    if (const std::optional<double> value = spec.value(p)) {
+    if (spec.kind == InputKind::stiffness_K) {
+      round_c_to_shown_K(spec, p, out);
+    } else if (spec.preset.empty()) {
+      continue;  // derived: nothing of its own is stored
+    } else if (const std::optional<double> value = spec.value(p)) {
       assign_number(out, spec.key, shown_digits_value(spec, *value));
     }
   }
