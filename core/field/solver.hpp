@@ -56,7 +56,7 @@ struct SolveOptions {
   // against Y alone outweighs it on a stiff cloth (stretch 1e-6 and below), and Newton's steps
   // become a slow damped descent that ends at the iteration cap.
   double damping_floor = 1e-6;
-  double damping_floor_per_stretch = 1e-6;
+  double damping_floor_per_stretch = 1e-5;
   // From a previous field (a warm start) the states have mostly settled: start at the floor
   // (this, or the floor above when it is lower).
   double warm_damping_start = 1e-6;
