@@ -148,5 +148,8 @@ echo "docs.sh: bench (about a minute) and stress test" >&2
 replace_block docs/performance.md bench "$work/bench"
 fenced "$work/stress" stress --samples 100000
 replace_block docs/performance.md stress "$work/stress"
+echo "docs.sh: the tension field's stress test (a few minutes)" >&2
+fenced "$work/field-stress" stress --solver field
+replace_block docs/performance.md field-stress "$work/field-stress"
 
 echo "docs.sh: done; look at the pictures before committing them" >&2

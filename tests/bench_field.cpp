@@ -110,6 +110,49 @@ BENCHMARK(BM_FieldCold)
     ->ArgsProduct({{10, 20, 30, 40, 60, 80}, {0, 1}})
     ->Unit(benchmark::kMillisecond);
 
+// The batch anchor's size: the coarse mesh of Chen et al.'s draped dress carries about 1 400
+// degrees of freedom (docs/field.md, Run time). The mesh of each cut whose free unknowns (two a
+// node) come nearest to that, solved cold as BM_FieldCold does; counters give its size.
+constexpr int kAnchorUnknowns = 1400;
+
+MeshResolution anchor_resolution(const Outline& outline) {
+  MeshResolution best = resolution(8);
+  int best_gap = 1 << 30;
+  for (int cells = 8; cells <= 80; ++cells) {
+    const MeshResolution r = resolution(cells);
+    const Mesh mesh = make_mesh(outline, r);
+    const int unknowns = 2 * static_cast<int>(mesh.nodes_mm.size() - mesh.support_nodes.size());
+    if (std::abs(unknowns - kAnchorUnknowns) < best_gap) {
+      best_gap = std::abs(unknowns - kAnchorUnknowns);
+      best = r;
+    }
+  }
+  return best;
+}
+
+// Arg: outline (0 rectangle, 1 cosine).
+void BM_FieldColdAnchorSize(benchmark::State& state) {
+  const Parameters p;
+  const OutlineKind kind = kind_of(state.range(0));
+  const Outline outline = make_outline(p, kind);
+  const Material material = material_of(p.fabric);
+  const MeshResolution res = anchor_resolution(outline);
+  const Mesh mesh = make_mesh(outline, res);
+  FieldReport last;
+  for (auto _ : state) {
+    last = solve_outline(outline, material, res, {}, 0);
+    benchmark::DoNotOptimize(last.thrust_N);
+  }
+  state.counters["cells_x"] = res.cells_x;
+  state.counters["nodes"] = static_cast<double>(mesh.nodes_mm.size());
+  state.counters["triangles"] = static_cast<double>(mesh.triangles.size());
+  state.counters["unknowns"] =
+      2.0 * static_cast<double>(mesh.nodes_mm.size() - mesh.support_nodes.size());
+  state.counters["iterations"] = last.solution.iterations;
+  state.counters["converged"] = last.solution.converged ? 1 : 0;
+}
+BENCHMARK(BM_FieldColdAnchorSize)->ArgName("cosine")->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
+
 // A sheet L x h = 1200 x 300 mm hung from a support at every node of its top edge, cells across
 // and half as many down: in the middle half of its width, from 0.35 h to 0.85 h down, the weight
 // below is carried straight up, T_yy = w (h - Y). Counters: the largest and the rms relative error

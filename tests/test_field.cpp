@@ -429,13 +429,15 @@ TEST(FieldRefinement, PotentialFallsAndThePointSupportsStepLogarithmically) {
   EXPECT_LT(thrust_steps, 1.6);
 }
 
-// The Newton matrix's damping changes the path, not the field: halving its floor moves nothing.
+// The Newton matrix's damping changes the path, not the field: halving its floor (both its cap
+// and its share of the cloth's stretch) moves nothing.
 TEST(FieldRegularisation, HalvingTheDampingFloorMovesNoFigure) {
   const Parameters p = default_parameters();
   const Material material = material_of(p.fabric);
   const Outline outline = make_outline(p, OutlineKind::rectangular);
   SolveOptions half;
   half.damping_floor *= 0.5;
+  half.damping_floor_per_stretch *= 0.5;
   const FieldReport a = solve_outline(outline, material, {16, 12, MeshSplit::union_jack});
   const FieldReport b = solve_outline(outline, material, {16, 12, MeshSplit::union_jack}, half);
   ASSERT_TRUE(a.solution.converged);

@@ -1,5 +1,6 @@
 #include "app/cli/stress.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <iostream>
 #include <optional>
@@ -81,11 +82,25 @@ std::uint64_t parse_seed(const std::string& seed) {
 }  // namespace
 
 void declare(CLI::App& app, Options& options) {
-  CLI::App* command = app.add_subcommand("stress", "numerical stress test: both methods over " +
-                                                       stress_sampled_ranges() +
-                                                       "; exit 1 on any NaN, inf or solve > 1 s");
-  command->add_option("--samples", options.samples, "input samples (default 100000)")
-      ->transform(app::whole_number_in(1, kMaxStressSamples));
+  CLI::App* command = app.add_subcommand(
+      "stress", "numerical stress test: both methods over " + stress_sampled_ranges() +
+                    "; exit 1 on any NaN, inf or solve > 1 s. --solver field: the tension "
+                    "field's cold solves over the same inputs, every outline, the live and "
+                    "refined meshes; exit 1 also on a false \"converged\" or a converged field "
+                    "whose reactions miss its weight");
+  command
+      ->add_option("--solver", options.solver,
+                   "closed-form (default: both methods of the closed form) or field")
+      ->check(app::one_of("solver", {"closed-form", "field"}));
+  command
+      ->add_option("--samples", options.samples,
+                   "input samples (default 100000; field: 280, at most 10000)")
+      ->transform(app::whole_number_in(1, kMaxStressSamples))
+      ->each([&options](const std::string&) { options.samples_given = true; });
+  command
+      ->add_option("--index", options.index,
+                   "field: start at sample I (alone unless --samples): a case of a run again")
+      ->transform(app::whole_number_in(0, 2'000'000'000));
   command->add_option("--seed", options.seed, "seed of the samples, 0 to 2^64 - 1 (default 1)");
   command->add_option("--threads", options.threads, "worker threads (default: hardware threads)")
       ->check(CLI::Range(0, 256));
@@ -97,6 +112,21 @@ StressReport run(const Options& options) {
       {.samples = options.samples, .seed = parse_seed(options.seed), .threads = options.threads});
 }
 
+FieldStressReport run_field(const Options& options) {
+  FieldStressOptions o;
+  o.seed = parse_seed(options.seed);
+  o.threads = options.threads;
+  o.first_index = std::max(0, options.index);
+  o.samples = options.samples_given ? options.samples : options.index >= 0 ? 1 : o.samples;
+  if (const auto refused = check_count_budget("--samples", o.samples, kMaxFieldStressSamples)) {
+    throw InputError(*refused + " (field samples take up to a few seconds each)");
+  }
+  if (static_cast<std::int64_t>(o.first_index) + o.samples > 2'000'000'000) {
+    throw InputError("--index + --samples must stay below 2000000000");
+  }
+  return run_field_stress(o);
+}
+
 void print_text(const StressReport& report, std::ostream& out) {
   out << stress_table(report);
 }
@@ -106,6 +136,18 @@ nlohmann::json print_json(const StressReport& report) {
 }
 
 int execute(const Options& options) {
+  if (options.solver == "field") {
+    const FieldStressReport report = run_field(options);
+    if (options.json) {
+      write_json(field_stress_to_json(report), std::cout);
+    } else {
+      std::cout << field_stress_table(report);
+    }
+    return report.passed() ? kExitOk : kExitInternal;
+  }
+  if (options.index >= 0) {
+    throw InputError("--index picks a sample of --solver field");
+  }
   const StressReport report = run(options);
   if (options.json) {
     write_json(print_json(report), std::cout);

@@ -33,8 +33,12 @@ Solution transferred_start(const Mesh& from, const Solution& solved, const Mesh&
   return start;
 }
 
-Solution solve_cold(Solver& solver, const Outline& outline, const Material& material,
-                    const MeshResolution& resolution, const SolveOptions& options) {
+namespace {
+
+// The coarse-to-fine ladder: the cut solved on meshes of half the cells first, each solution the
+// next one's start.
+Solution solve_ladder(Solver& solver, const Outline& outline, const Material& material,
+                      const MeshResolution& resolution, const SolveOptions& options) {
   const std::vector<Eigen::Vector2d> targets = support_targets(outline);
   if (resolution.cells_x < 16 || resolution.cells_y < 4) {
     return solver.solve(material, targets, options);
@@ -43,12 +47,66 @@ Solution solve_cold(Solver& solver, const Outline& outline, const Material& mate
   coarse.cells_x = resolution.cells_x / 2;
   coarse.cells_y = std::max(2, resolution.cells_y / 2);
   Solver coarse_solver(make_mesh(outline, coarse));
-  const Solution coarse_solution = solve_cold(coarse_solver, outline, material, coarse, options);
+  const Solution coarse_solution = solve_ladder(coarse_solver, outline, material, coarse, options);
   const Solution start = transferred_start(coarse_solver.mesh(), coarse_solution, solver.mesh());
-  Solution fine = solver.solve(material, targets, options, &start);
+  SolveOptions fine_options = options;
+  if (options.time_budget_ms > 0.0) {
+    // The budget is the whole ladder's: the finest rung gets what the coarser ones left (at
+    // least one step, as every solve takes).
+    fine_options.time_budget_ms = std::max(1e-3, options.time_budget_ms - coarse_solution.solve_ms);
+  }
+  Solution fine = solver.solve(material, targets, fine_options, &start);
   fine.solve_ms += coarse_solution.solve_ms;
   fine.iterations += coarse_solution.iterations;
   return fine;
+}
+
+// A stiff cloth's field is that of an almost inextensible one: from the flat start it must swing
+// through large rotations, and a Newton step on a membrane whose stretch under its weight is e
+// can rotate it by little more than sqrt(e) before its quadratic model fails, so a stiff cloth
+// (e of 1e-8) crept for thousands of steps; and every rung's start, carried from a coarser mesh,
+// is off by strains far above e. So the ladder is climbed by a cloth of the same weight that
+// stretches kSoftStretch under it, and on the finest mesh Y is then raised tenfold at a time,
+// each solve from the last field: each step moves the field by about its stretch, which Newton
+// settles in a few steps.
+constexpr double kStiffStretch = 1e-5;
+constexpr double kSoftStretch = 1e-4;
+
+}  // namespace
+
+Solution solve_cold(Solver& solver, const Outline& outline, const Material& material,
+                    const MeshResolution& resolution, const SolveOptions& options) {
+  double top = outline.top_mm.front().y();
+  double bottom = outline.bottom_mm.front().y();
+  for (const Eigen::Vector2d& p : outline.top_mm)
+    top = std::min(top, p.y());
+  for (const Eigen::Vector2d& p : outline.bottom_mm)
+    bottom = std::max(bottom, p.y());
+  const double weight_stress_N_per_mm = material.weight_N_per_mm2 * (bottom - top);
+  const double stretch = weight_stress_N_per_mm / material.stiffness_N_per_mm;
+  if (!(stretch > 0.0) || stretch >= kStiffStretch) {
+    return solve_ladder(solver, outline, material, resolution, options);
+  }
+  Material soft = material;
+  soft.stiffness_N_per_mm = weight_stress_N_per_mm / kSoftStretch;
+  Solution solution = solve_ladder(solver, outline, soft, resolution, options);
+  int iterations = solution.iterations;
+  double solve_ms = solution.solve_ms;
+  const std::vector<Eigen::Vector2d> targets = support_targets(outline);
+  while (soft.stiffness_N_per_mm < material.stiffness_N_per_mm) {
+    soft.stiffness_N_per_mm = std::min(material.stiffness_N_per_mm, 10.0 * soft.stiffness_N_per_mm);
+    SolveOptions left = options;
+    if (options.time_budget_ms > 0.0) {
+      left.time_budget_ms = std::max(1e-3, options.time_budget_ms - solve_ms);
+    }
+    const Solution softer = std::move(solution);
+    solution = solver.solve(soft, targets, left, &softer);
+    iterations += solution.iterations;
+    solve_ms += solution.solve_ms;
+  }
+  solution.iterations = iterations;
+  solution.solve_ms = solve_ms;
+  return solution;
 }
 
 FieldReport report_field(const Solver& solver, Solution solution, const Outline& outline,

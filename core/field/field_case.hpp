@@ -35,7 +35,8 @@ Solution transferred_start(const Mesh& from, const Solution& solved, const Mesh&
 // A cold solve by a coarse-to-fine ladder: the cut solved on meshes of half the cells (down to
 // about 8 across) first, each solution the next one's start, since the slow part of a cold
 // solve (the states settling, about a hundred damped steps) costs least where there are fewest
-// nodes. `solver` holds the finest mesh, made with `resolution`.
+// nodes. `solver` holds the finest mesh, made with `resolution`. The iteration cap holds on each
+// rung, a time budget for the whole ladder.
 Solution solve_cold(Solver& solver, const Outline& outline, const Material& material,
                     const MeshResolution& resolution, const SolveOptions& options = {});
 

@@ -175,6 +175,7 @@ struct Solver::Impl {
   std::vector<double> damping_values;        // the flat linear stiffness, assembled
   std::vector<double> node_area_mm2;         // a third of each touching triangle
   std::vector<std::vector<int>> neighbours;  // the elements sharing an edge with each
+  double height_mm = 0.0;                    // of the flat cut, top to bottom
 
   explicit Impl(Mesh m) : mesh(std::move(m)) {
     dof.assign(mesh.nodes_mm.size(), 0);
@@ -188,6 +189,15 @@ struct Solver::Impl {
       }
     }
     node_area_mm2.assign(mesh.nodes_mm.size(), 0.0);
+    if (!mesh.nodes_mm.empty()) {
+      double top = mesh.nodes_mm.front().y();
+      double bottom = top;
+      for (const Vector2d& p : mesh.nodes_mm) {
+        top = std::min(top, p.y());
+        bottom = std::max(bottom, p.y());
+      }
+      height_mm = bottom - top;
+    }
     const Material unit{1.0, 0.3, 0.0};
     for (const auto& tri : mesh.triangles) {
       Element e;
@@ -425,9 +435,14 @@ Solution Solver::solve(const Material& m, const std::vector<Vector2d>& targets,
   for (double a : s.node_area_mm2) {
     weight_N += m.weight_N_per_mm2 * a;
   }
+  // A weightless patch (pulled into shape by its edges) has no stretch of its own to scale by.
+  const double stretch = m.weight_N_per_mm2 * s.height_mm / m.stiffness_N_per_mm;
+  const double floor =
+      stretch > 0.0 ? std::min(options.damping_floor, options.damping_floor_per_stretch * stretch)
+                    : options.damping_floor;
   double damping = start == nullptr       ? options.damping_start
                    : start->damping > 0.0 ? start->damping
-                                          : options.warm_damping_start;
+                                          : std::min(options.warm_damping_start, floor);
   std::vector<Vector2d> g = s.gradient(x, m);
   Eigen::VectorXd gf = s.free_part(g);
   double residual = s.relative_residual(g, gf, m);
@@ -498,7 +513,7 @@ Solution Solver::solve(const Material& m, const std::vector<Vector2d>& targets,
     residual = s.relative_residual(g, gf, m);
     reusable = alpha == 1.0 && residual < 0.25 * before;
     if (alpha == 1.0) {
-      damping = std::max(options.damping_floor, 0.1 * damping);
+      damping = std::max(floor, 0.1 * damping);
     } else if (alpha < 0.1) {
       damping *= 10.0;
     }

@@ -50,8 +50,15 @@ struct SolveOptions {
   // below the floor. It enters the Newton matrix only, never the energy or the residual: it
   // changes the path, not the converged field.
   double damping_start = 1e-3;
+  // The floor is the smaller of damping_floor and damping_floor_per_stretch times the cloth's
+  // stretch under its weight, w h / Y (h the cut's height). A hung cloth's shape is set by the
+  // stiffness its tension gives it across the rays, about Y times that stretch: a floor fixed
+  // against Y alone outweighs it on a stiff cloth (stretch 1e-6 and below), and Newton's steps
+  // become a slow damped descent that ends at the iteration cap.
   double damping_floor = 1e-6;
-  // From a previous field (a warm start) the states have mostly settled: start at the floor.
+  double damping_floor_per_stretch = 1e-5;
+  // From a previous field (a warm start) the states have mostly settled: start at the floor
+  // (this, or the floor above when it is lower).
   double warm_damping_start = 1e-6;
   // After a whole step that cut the residual fourfold, take the next with the same factors.
   bool reuse_factorisation = true;
