@@ -286,12 +286,8 @@ RegimeMapPanel::Placement RegimeMapPanel::place_map() {
   }
   const float swatch_rows =
       (swatches_width <= available.x ? 1.0f : 2.0f) * ImGui::GetFrameHeightWithSpacing();
-  // Above the map the y title's line and half a line, where the top label reaches up to; below
-  // it the x ticks, their labels and the x title (regime_swatches places the swatches under
-  // them), so that the panel does not scroll by the few pixels these came to beyond 3.5 lines.
-  const float above = ImGui::GetTextLineHeightWithSpacing() + 0.5f * font;
-  const float below = 2.0f * font + std::round(0.3f * font) + 2.0f;
-  const float tallest = std::max(ems(5.0f), available.y - above - below - swatch_rows);
+  // Half a line under the y title, where the top label reaches up to.
+  const float tallest = std::max(ems(5.0f), available.y - 3.5f * font - swatch_rows);
   // The y labels' width at the tallest the map can be: as many labels or fewer fit a shorter one.
   at.left_margin = 0.0f;
   for (const std::string& label : map_ticks(cells_->y, tallest, false).labels) {
