@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <exception>
+#include <span>
 #include <utility>
 
 #include <imgui.h>
@@ -325,7 +326,21 @@ void Explorer::draw_toast() {
   ImGui::BringWindowToDisplayFront(ImGui::FindWindowByName("##toast"));
 }
 
+namespace {
+
+// The floating windows open and whether a menu or list is: a frame that closes one is drawn
+// again before the next click is read (layout_pending).
+int windows_open(std::span<const std::unique_ptr<Panel>> panels) {
+  const auto open = std::count_if(panels.begin(), panels.end(), [](const auto& panel) {
+    return !Layout::tiled(*panel) && panel->is_open();
+  });
+  return static_cast<int>(open) + (ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId) ? 1 : 0);
+}
+
+}  // namespace
+
 void Explorer::frame() {
+  const int open_before = windows_open(panels_);
   status_.tick(ImGui::GetTime());
   appearance_.handle_shortcuts();
   PanelContext context = this->context();
@@ -373,6 +388,7 @@ void Explorer::frame() {
       page_link_->show(*due);
     }
   }
+  window_closed_ = windows_open(panels_) < open_before;
 }
 
 }  // namespace foldlab::gui

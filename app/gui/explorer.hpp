@@ -78,8 +78,11 @@ class Explorer {
   void prepare_frame() { appearance_.apply(renderer_); }
   // The last frame asked for another text size or theme, which the next prepare_frame builds:
   // what it drew is laid out with the old fonts, and a click read against the next frame would
-  // land on another widget than the one drawn where it was made.
-  bool layout_pending() const { return appearance_.pending(); }
+  // land on another widget than the one drawn where it was made. Likewise when it closed a
+  // floating window or a menu (Escape on the introduction): ImGui finds the window under the
+  // pointer among those the frame before drew, so the next frame's click would go to the window
+  // just closed and be lost.
+  bool layout_pending() const { return appearance_.pending() || window_closed_; }
   // Builds every window for this frame; between ImGui::NewFrame and ImGui::Render.
   void frame();
 
@@ -208,6 +211,7 @@ class Explorer {
   ClothView picture_view_ = kNoClothView;          // the cloth of pictures (write_picture)
   ClothView compare_picture_view_ = kNoClothView;  // B's cloth in pictures of A and B
   bool quit_confirmed_ = false;
+  bool window_closed_ = false;  // the last frame closed a floating window or a menu
 };
 
 }  // namespace foldlab::gui

@@ -24,6 +24,7 @@
 #include "app/gui/file_transfer.hpp"
 #include "app/gui/frame_pacing.hpp"
 #include "app/gui/input_player.hpp"
+#include "app/gui/key_latency.hpp"
 #include "app/gui/panels/analysis_panel.hpp"
 #include "app/gui/renderer.hpp"
 #include "app/gui/screen.hpp"
@@ -216,13 +217,18 @@ bool sleep_until_input(Surface& surface, double timeout_s) {
 // present; a scripted run plugs in before the frame and after it is drawn. False when the script
 // ended the run.
 bool draw_frame(Surface& surface, Renderer& renderer, Explorer& explorer, ScriptedRun& script,
-                FrameTimes& times, LayoutFile* layout, int frame, bool read_input = true) {
+                FrameTimes& times, KeyLatency& latency, LayoutFile* layout, int frame,
+                bool read_input = true) {
+  using Clock = KeyLatency::Clock;
   times.start();
+  latency.frame_started(Clock::now());
   if (read_input) {
     surface.new_frame();
   } else {
     surface.new_frame_without_input();
   }
+  latency.input_read(Clock::now(), surface.key_presses_taken(), explorer.document().scene(),
+                     renderer.cloth_render_ms_total());
   if (!script.before_frame(explorer, surface, frame)) {
     return false;
   }
@@ -233,16 +239,19 @@ bool draw_frame(Surface& surface, Renderer& renderer, Explorer& explorer, Script
   ImGui::NewFrame();
   explorer.frame();
   ImGui::Render();
+  latency.built(Clock::now(), explorer.document().scene(), renderer.cloth_render_ms_total());
   if (layout != nullptr) {
     layout->save_when_asked();
   }
   const FrameSize size = surface.framebuffer_size();
   surface.bind_framebuffer();
   renderer.render_draw_data(size);
+  latency.drawn(Clock::now());
   write_requested_picture(explorer, renderer, size);
   script.after_render(explorer, renderer, size, frame);
   surface.present();
   times.stop(surface);
+  latency.finished(Clock::now(), explorer.document().scene());
   return true;
 }
 
@@ -416,7 +425,7 @@ class ExplorerRun {
         // The report describes the window as it was closed: a last frame takes what came just
         // before the close (a resize, on a machine too busy to have drawn it yet).
         if (options_.report) {
-          draw_frame(surface_, *renderer_, *explorer_, *script_, times_,
+          draw_frame(surface_, *renderer_, *explorer_, *script_, times_, latency_,
                      layout_ ? &*layout_ : nullptr, frame_);
         }
         return false;
@@ -426,7 +435,7 @@ class ExplorerRun {
     // The page's zoom or a move to another screen changes the ratio between frames.
     explorer_->appearance().set_pixel_ratio(screen_pixel_ratio());
     explorer_->appearance().set_coarse_pointer(screen_pointer_is_coarse());
-    if (!draw_frame(surface_, *renderer_, *explorer_, *script_, times_,
+    if (!draw_frame(surface_, *renderer_, *explorer_, *script_, times_, latency_,
                     layout_ ? &*layout_ : nullptr, frame_)) {
       return false;
     }
@@ -442,7 +451,7 @@ class ExplorerRun {
     // A frame that asked for another text size showed the old layout: the next is drawn at once,
     // before any more input is read, so that a click lands on what the screen shows.
     while (interactive_ && script_->may_wait_for_input() && explorer_->layout_pending()) {
-      if (!draw_frame(surface_, *renderer_, *explorer_, *script_, times_,
+      if (!draw_frame(surface_, *renderer_, *explorer_, *script_, times_, latency_,
                       layout_ ? &*layout_ : nullptr, frame_, false)) {
         return false;
       }
@@ -465,7 +474,8 @@ class ExplorerRun {
 
   // After the last frame: the report when asked for, and the exit status.
   int finish() {
-    times_.print_report(interactive_ ? "window" : "headless", options_.animate_key, *explorer_);
+    times_.print_report(interactive_ ? "window" : "headless", options_.animate_key, *explorer_,
+                        latency_);
     return script_->exit_status();
   }
 
@@ -481,6 +491,7 @@ class ExplorerRun {
   std::optional<LayoutFile> layout_;  // goes before the explorer and ImGui: it saves as it goes
   std::optional<ScriptedRun> script_;
   FrameTimes times_{options_.report};
+  KeyLatency latency_;
   int frame_ = 0;
   FramesAfterInput after_input_;
 };

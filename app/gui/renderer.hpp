@@ -125,6 +125,9 @@ class Renderer {
                           const ClothStyle& style) = 0;
   // All zero for kNoClothView.
   virtual const RenderCounters& cloth_counters(ClothView view) const = 0;
+  // The time spent so far in the 3D views' uploads and draw calls (ms, on this thread; the GPU
+  // may finish them later): a part of `gui --report`'s key latency.
+  virtual double cloth_render_ms_total() const { return 0.0; }
 
   // An RGBA image for ImGui::Image, kept by the renderer until it is destroyed. The first row of
   // `rgba` is the image's first (GL: bottom) row.

@@ -100,7 +100,7 @@ void FrameTimes::stop(Surface& surface) {
 }
 
 void FrameTimes::print_report(const char* backend, const std::string& animate_key,
-                              Explorer& explorer) const {
+                              Explorer& explorer, const KeyLatency& latency) const {
   if (!enabled_ || frame_ms_.empty()) {
     return;
   }
@@ -118,6 +118,7 @@ void FrameTimes::print_report(const char* backend, const std::string& animate_ke
       {"max_ms", sorted.back()},
       {"animate", animate_key},
       {"notices", explorer.notices()},
+      {"latency", latency.report()},
   };
   report.update(explorer_state_json(explorer));
   std::cout << report.dump(2) << "\n";

@@ -12,6 +12,7 @@
 #include "app/gui/animated_input.hpp"
 #include "app/gui/explorer.hpp"
 #include "app/gui/input_player.hpp"
+#include "app/gui/key_latency.hpp"
 #include "app/gui/renderer.hpp"
 #include "app/gui/surface.hpp"
 
@@ -62,7 +63,9 @@ class FrameTimes {
   // After present: waits for the GPU so that the time covers the whole frame.
   void stop(Surface& surface);
   // Prints the JSON report (frame times, pipeline counters, the solution) on stdout.
-  void print_report(const char* backend, const std::string& animate_key, Explorer& explorer) const;
+  // With `latency`: how long keys took to show (key_latency.hpp).
+  void print_report(const char* backend, const std::string& animate_key, Explorer& explorer,
+                    const KeyLatency& latency) const;
 
  private:
   bool enabled_;

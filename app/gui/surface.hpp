@@ -4,6 +4,7 @@
 // rendering with no display and no X server).
 #pragma once
 
+#include <chrono>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -37,6 +38,11 @@ class Surface {
   // The same, reading no new input (the events wait for the next new_frame): a frame drawn again
   // at once because the one before changed the layout.
   virtual void new_frame_without_input() { new_frame(); }
+  // When each key press (or repeat) the last new_frame() gave ImGui came from the window system:
+  // for `gui --report`'s key latency. Empty where no key events arrive (headless).
+  virtual std::vector<std::chrono::steady_clock::time_point> key_presses_taken() const {
+    return {};
+  }
   // Sleeps until an input event arrives or `timeout_s` passes (a window); returns at once
   // headless, where nothing arrives.
   virtual void wait_events(double timeout_s) = 0;

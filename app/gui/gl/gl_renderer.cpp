@@ -3,6 +3,7 @@
 #include "app/gui/gl/gl_api.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <functional>
 #include <memory>
 #include <string>
@@ -58,7 +59,11 @@ class GlRenderer final : public Renderer {
     }
     ++view.counters.frames;
     if (!view.cache.reuse(buffers, camera, size, style, view.counters)) {
+      const auto start = std::chrono::steady_clock::now();
       view.cloth->render(buffers, camera, size, style);
+      cloth_render_ms_ +=
+          std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+              .count();
     }
     add_framebuffer_blit(
         draw_list, view.cloth->framebuffer(), size, min,
@@ -79,6 +84,8 @@ class GlRenderer final : public Renderer {
     out.view_cache_hits = view.counters.view_cache_hits;
     return out;
   }
+
+  double cloth_render_ms_total() const override { return cloth_render_ms_; }
 
   int create_image() override {
     textures_.push_back(GlTexture::make());
@@ -194,6 +201,7 @@ class GlRenderer final : public Renderer {
   // a null function call in draw_cloth right after a second view moved the first one.
   std::vector<std::unique_ptr<View>> views_;
   bool fonts_changed_ = false;
+  double cloth_render_ms_ = 0.0;
   std::vector<GlTexture> textures_;
   std::vector<FrameSize> sizes_;
 };

@@ -3,6 +3,7 @@
 #include <GLFW/glfw3.h>
 
 #include <algorithm>
+#include <chrono>
 #include <deque>
 #include <string>
 #include <vector>
@@ -59,17 +60,25 @@ class WindowSurface final : public Surface {
     screen_shares_clipboard();
     glfwSetWindowUserPointer(window_, this);
     glfwSetKeyCallback(window_, on_key);
+    glfwSetMouseButtonCallback(window_, on_mouse_button);
   }
   void shutdown_imgui_platform() override { ImGui_ImplGlfw_Shutdown(); }
   bool open() const override { return !glfwWindowShouldClose(window_); }
   void keep_open() override { glfwSetWindowShouldClose(window_, GLFW_FALSE); }
 
   void new_frame() override {
+    presses_taken_.clear();
     glfwPollEvents();
     feed_keys();
     ImGui_ImplGlfw_NewFrame();
   }
-  void new_frame_without_input() override { ImGui_ImplGlfw_NewFrame(); }
+  void new_frame_without_input() override {
+    presses_taken_.clear();
+    ImGui_ImplGlfw_NewFrame();
+  }
+  std::vector<std::chrono::steady_clock::time_point> key_presses_taken() const override {
+    return presses_taken_;
+  }
   void wait_events(double timeout_s) override {
     if (!keys_.empty()) {
       return;  // keys still to feed: the next frame is due now
@@ -90,10 +99,12 @@ class WindowSurface final : public Surface {
 
  private:
   struct KeyEvent {
-    int key;
+    int key;  // or the mouse button
     int scancode;
     int action;
     int mods;
+    std::chrono::steady_clock::time_point at;  // when the callback had it
+    bool mouse_button = false;
   };
 
   // ImGui 1.86 keeps only whether a key is down when a frame starts, so a key pressed and
@@ -101,12 +112,22 @@ class WindowSurface final : public Surface {
   // seen, and three quick Ctrl+Z would be one. The keys wait in order and each frame takes them
   // until one would change a key a second time, or would release a key after a press: every
   // press is seen by a frame of its own with the modifiers held around it (xdotool's Ctrl+S is
-  // Ctrl down, S down, Ctrl up, S up).
+  // Ctrl down, S down, Ctrl up, S up). A mouse button waits in the same line: a click that
+  // came after a key is read by the frame after the key's, since the key may close the window
+  // under the pointer (Escape on the introduction) and the click is meant for what shows then.
   void feed_keys() {
     std::vector<int> changed;
     bool pressed = false;
     while (!keys_.empty()) {
       const KeyEvent& e = keys_.front();
+      if (e.mouse_button) {
+        if (pressed) {
+          break;
+        }
+        ImGui_ImplGlfw_MouseButtonCallback(window_, e.key, e.action, e.mods);
+        keys_.pop_front();
+        continue;
+      }
       if (std::find(changed.begin(), changed.end(), e.key) != changed.end() ||
           (pressed && e.action == GLFW_RELEASE)) {
         break;
@@ -114,17 +135,26 @@ class WindowSurface final : public Surface {
       changed.push_back(e.key);
       pressed |= e.action == GLFW_PRESS;
       ImGui_ImplGlfw_KeyCallback(window_, e.key, e.scancode, e.action, e.mods);
+      if (e.action != GLFW_RELEASE) {
+        presses_taken_.push_back(e.at);
+      }
       keys_.pop_front();
     }
   }
 
   static void on_key(GLFWwindow* window, int key, int scancode, int action, int mods) {
     auto* self = static_cast<WindowSurface*>(glfwGetWindowUserPointer(window));
-    self->keys_.push_back({key, scancode, action, mods});
+    self->keys_.push_back({key, scancode, action, mods, std::chrono::steady_clock::now()});
+  }
+
+  static void on_mouse_button(GLFWwindow* window, int button, int action, int mods) {
+    auto* self = static_cast<WindowSurface*>(glfwGetWindowUserPointer(window));
+    self->keys_.push_back({button, 0, action, mods, std::chrono::steady_clock::now(), true});
   }
 
   GLFWwindow* window_ = nullptr;
-  std::deque<KeyEvent> keys_;
+  std::deque<KeyEvent> keys_;  // keys and mouse buttons, in the order they came
+  std::vector<std::chrono::steady_clock::time_point> presses_taken_;
 };
 
 }  // namespace

@@ -128,7 +128,7 @@ void AnalysisPanel::draw(PanelContext& context) {
       ImGui::EndTabItem();
     }
     if (ImGui::BeginTabItem("Regime map", nullptr, map_flags)) {
-      regime_map_.draw(context);
+      regime_map_.draw(context, context.presented == this);
       ImGui::EndTabItem();
     }
     ImGui::EndTabBar();

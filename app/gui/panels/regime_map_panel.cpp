@@ -511,11 +511,11 @@ nlohmann::json RegimeMapPanel::report() const {
 // The map, its axis titles, colour bar and swatches at the least size that still reads.
 constexpr float kLeastMapHeightEms = 12.0f;
 
-void RegimeMapPanel::draw(PanelContext& context) {
+void RegimeMapPanel::draw(PanelContext& context, bool presented) {
   Document& document = context.document;
   const Parameters& current = document.scene().parameters();
   bool restart_needed = !job_started_ || other_inputs_changed(current);
-  if (toolbar_row_.begin("map settings...", ems(kLeastMapHeightEms))) {
+  if (toolbar_row_.begin("map settings...", ems(kLeastMapHeightEms), presented)) {
     restart_needed |= controls(current);
     if (toolbar_row_.folded()) {
       timing_text();

@@ -27,7 +27,9 @@ class RegimeMapPanel {
   RegimeMapPanel(const RegimeMapPanel&) = delete;
   RegimeMapPanel& operator=(const RegimeMapPanel&) = delete;
 
-  void draw(PanelContext& context);
+  // `presented`: the Analysis panel is presented to a room; the settings fold into its title
+  // bar and the map takes the room they had.
+  void draw(PanelContext& context, bool presented = false);
 
   const std::string& x_key() const { return x_key_; }
   const std::string& y_key() const { return y_key_; }

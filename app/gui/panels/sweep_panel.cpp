@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 #include <utility>
 
@@ -163,15 +164,26 @@ std::optional<std::string> SweepPanel::compute(Document& document) {
 }
 
 void SweepPanel::draw(Document& document, bool side_by_side) {
-  draw_axis_controls(document);
-  draw_paper_case_buttons(document);
-  if (const std::optional<std::string> problem = compute(document)) {
+  // Presented, the settings fold into the title bar: the room is the plots'. In a tile they stay
+  // above the plots whatever its size (the tab scrolls instead).
+  const bool settings_shown = toolbar_row_.begin(
+      "sweep settings...", -std::numeric_limits<float>::infinity(), side_by_side);
+  if (settings_shown) {
+    draw_axis_controls(document);
+    draw_paper_case_buttons(document);
+  }
+  const std::optional<std::string> problem = compute(document);
+  // The paper's rows against the model's: folded by default, since the plots need the height.
+  if (settings_shown && !problem && overlay_shown() &&
+      ImGui::CollapsingHeader("Paper vs model (table)")) {
+    draw_comparison(document.scene().parameters());
+  }
+  if (settings_shown) {
+    toolbar_row_.end();
+  }
+  if (problem) {
     ImGui::TextColored(kErrorText, "%s", problem->c_str());
     return;
-  }
-  // The paper's rows against the model's: folded by default, since the plots need the height.
-  if (overlay_shown() && ImGui::CollapsingHeader("Paper vs model (table)")) {
-    draw_comparison(document.scene().parameters());
   }
   draw_keys(document);
   // Each plot keeps room for its ticks, its title and a few lines of data at any UI scale: a

@@ -10,6 +10,7 @@
 
 #include "app/gui/document.hpp"
 #include "app/gui/panel.hpp"
+#include "app/gui/panels/view_toolbar.hpp"
 #include "app/gui/plot_widget.hpp"
 #include "app/gui/renderer.hpp"
 #include "core/analysis/sweep.hpp"
@@ -27,8 +28,9 @@ struct SweepPlots {
 class SweepPanel {
  public:
   explicit SweepPanel(std::filesystem::path presets_dir);
-  // `side_by_side`: the three plots in a row, each with its x title (presented on a wide screen,
-  // where stacked they would be strips); else one over another.
+  // `side_by_side`: the three plots in a row, each with its x title, and the settings folded into
+  // the title bar (presented on a wide screen, where stacked they would be strips); else one over
+  // another under the settings.
   void draw(Document& document, bool side_by_side = false);
   // Where the last frame drew the three plots' data areas, all three within it.
   const DrawnArea& drawn_area() const { return drawn_; }
@@ -115,6 +117,8 @@ class SweepPanel {
   SweepCurves compare_curves_;
   int curves_drawn_ = 0;
   DrawnArea drawn_;
+  // The input, range and paper's cases: above the plots, or presented in the title bar.
+  ViewToolbar toolbar_row_;
   void clear_overlay();
   // Shades the bands over the data area of the plot just ended; names them when `label`.
   void draw_bands(const Plot& plot, const std::string& key, bool label) const;
