@@ -2073,12 +2073,14 @@ TEST_F(CliTest, FieldSolvesAPresetsOwnCutAndRefusesABadOne) {
   const double weight =
       file.at("fabric").at("weight_N_per_mm2").get<double>() * 0.5 * std::abs(twice_area);
 
-  const RunResult r = run({"field", "--preset", "cut-curtain-curved-hem", "--cells-x", "16",
-                           "--cells-y", "16", "--json"});
+  const RunResult r = run({"field", "--preset", "cut-curtain-curved-hem", "--json"});
   ASSERT_EQ(r.exit_status, 0) << r.err;
   const json j = json::parse(r.out);
   EXPECT_EQ(j.at("outline"), "the preset's own cut");
-  EXPECT_NEAR(j.at("weight_N").get<double>(), weight, 1e-12 * weight);
+  // On the default 40 x 28 cells the mesh tiles the curved hem's cut within 2e-5 of its area
+  // (its weight tends to w times the area as the mesh is refined: 1.1e-4 short at 16 cells
+  // across, 1.7e-5 at 40).
+  EXPECT_NEAR(j.at("weight_N").get<double>(), weight, 1e-4 * weight);
   ASSERT_EQ(j.at("supports").size(), outline.at("supports").size());
   for (std::size_t i = 0; i < j.at("supports").size(); ++i) {
     EXPECT_EQ(j.at("supports")[i].at("at_mm"), outline.at("supports")[i].at("at"));
