@@ -2053,7 +2053,7 @@ TEST_F(CliTest, FieldOutlineFileSolvesOrIsRefusedByName) {
 // w times its area by the shoelace formula over the file's vertices; a preset whose cut hangs
 // from a point inside the cloth is refused with exit 2, naming the key and the support.
 TEST_F(CliTest, FieldSolvesAPresetsOwnCutAndRefusesABadOne) {
-  const json file = json::parse(std::ifstream(kPresetsDir / "cut-curtain-curved-hem.json"));
+  const json file = json::parse(std::ifstream(kPresetsDir / "shaped-curtain-curved-hem.json"));
   const json& outline = file.at("outline");
   // Round the cut: the top edge left to right, then the bottom edge right to left.
   std::vector<std::pair<double, double>> ring;
@@ -2073,7 +2073,7 @@ TEST_F(CliTest, FieldSolvesAPresetsOwnCutAndRefusesABadOne) {
   const double weight =
       file.at("fabric").at("weight_N_per_mm2").get<double>() * 0.5 * std::abs(twice_area);
 
-  const RunResult r = run({"field", "--preset", "cut-curtain-curved-hem", "--json"});
+  const RunResult r = run({"field", "--preset", "shaped-curtain-curved-hem", "--json"});
   ASSERT_EQ(r.exit_status, 0) << r.err;
   const json j = json::parse(r.out);
   EXPECT_EQ(j.at("outline"), "the preset's own cut");
@@ -2087,7 +2087,7 @@ TEST_F(CliTest, FieldSolvesAPresetsOwnCutAndRefusesABadOne) {
     EXPECT_EQ(j.at("supports")[i].at("to_mm"), outline.at("supports")[i].at("to"));
   }
   // --shape still asks for the shape's cut: the rectangle of the inputs, w h L.
-  const RunResult shaped = run({"field", "--preset", "cut-curtain-curved-hem", "--shape",
+  const RunResult shaped = run({"field", "--preset", "shaped-curtain-curved-hem", "--shape",
                                 "rectangular", "--cells-x", "16", "--cells-y", "16", "--json"});
   ASSERT_EQ(shaped.exit_status, 0) << shaped.err;
   const double rectangle = file.at("fabric").at("weight_N_per_mm2").get<double>() *

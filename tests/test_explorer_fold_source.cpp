@@ -199,7 +199,7 @@ TEST_F(FoldSourceTest, ResultsShowsTheFieldBesideTheClosedFormForTheFoldSource) 
 // The shipped curtain panel carries its own cut: loaded, the field view solves that cut (its
 // area by the shoelace formula over the file's vertices, its three hooks), not the shape's.
 TEST_F(FoldSourceTest, APresetsOwnCutIsTheFieldViewsCut) {
-  const fs::path file = kPresetsDir / "cut-curtain-curved-hem.json";
+  const fs::path file = kPresetsDir / "shaped-curtain-curved-hem.json";
   const json text = json::parse(std::ifstream(file));
   document().load_preset_file(file);
   ASSERT_EQ(explorer_->set_view("field", "1"), std::nullopt);
@@ -228,7 +228,7 @@ TEST_F(FoldSourceTest, APresetsOwnCutIsTheFieldViewsCut) {
 // A preset whose cut hangs from a point inside the cloth is not loaded: the state before is kept
 // and the refusal says which support, as for any preset that does not read.
 TEST_F(FoldSourceTest, APresetWithABadCutIsRefusedAndTheStateKept) {
-  json text = json::parse(std::ifstream(kPresetsDir / "cut-curtain-curved-hem.json"));
+  json text = json::parse(std::ifstream(kPresetsDir / "shaped-curtain-curved-hem.json"));
   text["outline"]["supports"][1]["at"] = {600.0, 700.0};
   const fs::path bad = dir_ / "hook-inside.json";
   std::ofstream(bad) << text.dump(2);
