@@ -2049,6 +2049,63 @@ TEST_F(CliTest, FieldOutlineFileSolvesOrIsRefusedByName) {
   EXPECT_TRUE(contains(bad_shape.err, "hexagon")) << bad_shape.err;
 }
 
+// The shipped designer's cut: `field --preset` solves the preset's own outline, whose weight is
+// w times its area by the shoelace formula over the file's vertices; a preset whose cut hangs
+// from a point inside the cloth is refused with exit 2, naming the key and the support.
+TEST_F(CliTest, FieldSolvesAPresetsOwnCutAndRefusesABadOne) {
+  const json file = json::parse(std::ifstream(kPresetsDir / "shaped-curtain-curved-hem.json"));
+  const json& outline = file.at("outline");
+  // Round the cut: the top edge left to right, then the bottom edge right to left.
+  std::vector<std::pair<double, double>> ring;
+  for (const json& v : outline.at("top")) {
+    ring.emplace_back(v[0].get<double>(), v[1].get<double>());
+  }
+  const json& bottom = outline.at("bottom");
+  for (std::size_t i = bottom.size(); i-- > 0;) {
+    ring.emplace_back(bottom[i][0].get<double>(), bottom[i][1].get<double>());
+  }
+  double twice_area = 0.0;
+  for (std::size_t i = 0; i < ring.size(); ++i) {
+    const auto& [x0, y0] = ring[i];
+    const auto& [x1, y1] = ring[(i + 1) % ring.size()];
+    twice_area += x0 * y1 - x1 * y0;
+  }
+  const double weight =
+      file.at("fabric").at("weight_N_per_mm2").get<double>() * 0.5 * std::abs(twice_area);
+
+  const RunResult r = run({"field", "--preset", "shaped-curtain-curved-hem", "--json"});
+  ASSERT_EQ(r.exit_status, 0) << r.err;
+  const json j = json::parse(r.out);
+  EXPECT_EQ(j.at("outline"), "the preset's own cut");
+  // On the default 40 x 28 cells the mesh tiles the curved hem's cut within 2e-5 of its area
+  // (its weight tends to w times the area as the mesh is refined: 1.1e-4 short at 16 cells
+  // across, 1.7e-5 at 40).
+  EXPECT_NEAR(j.at("weight_N").get<double>(), weight, 1e-4 * weight);
+  ASSERT_EQ(j.at("supports").size(), outline.at("supports").size());
+  for (std::size_t i = 0; i < j.at("supports").size(); ++i) {
+    EXPECT_EQ(j.at("supports")[i].at("at_mm"), outline.at("supports")[i].at("at"));
+    EXPECT_EQ(j.at("supports")[i].at("to_mm"), outline.at("supports")[i].at("to"));
+  }
+  // --shape still asks for the shape's cut: the rectangle of the inputs, w h L.
+  const RunResult shaped = run({"field", "--preset", "shaped-curtain-curved-hem", "--shape",
+                                "rectangular", "--cells-x", "16", "--cells-y", "16", "--json"});
+  ASSERT_EQ(shaped.exit_status, 0) << shaped.err;
+  const double rectangle = file.at("fabric").at("weight_N_per_mm2").get<double>() *
+                           file.at("hanging").at("height_mm").get<double>() *
+                           file.at("hanging").at("length_mm").get<double>();
+  EXPECT_NEAR(json::parse(shaped.out).at("weight_N").get<double>(), rectangle, 1e-12 * rectangle);
+
+  json bad = file;
+  bad["outline"]["supports"][1]["at"] = {600.0, 700.0};
+  const fs::path bad_path = dir_ / "hook-inside.json";
+  std::ofstream(bad_path) << bad.dump(2);
+  const RunResult refused = run({"field", "--preset", bad_path.string()});
+  EXPECT_EQ(refused.exit_status, 2);
+  EXPECT_TRUE(contains(refused.err, "/outline: support 2 at (600, 700) mm is off the outline"))
+      << refused.err;
+  EXPECT_TRUE(refused.out.empty());
+}
+
 std::size_t count_of(const std::string& text, const std::string& needle) {
   std::size_t count = 0;
   for (std::size_t at = text.find(needle); at != std::string::npos;

@@ -119,6 +119,7 @@ void expect_same_preset(const foldlab::Preset& a, const foldlab::Preset& b) {
   EXPECT_EQ(a.published.Q, b.published.Q);
   EXPECT_EQ(a.calibration, b.calibration);
   EXPECT_EQ(a.appearance, b.appearance);
+  EXPECT_EQ(a.outline, b.outline);
 }
 
 // A preset whose numbers need all 17 significant digits to survive a text round trip.
@@ -421,6 +422,66 @@ TEST_F(PresetTest, MalformedAppearanceColourIsRefusedNamingTheKey) {
   message = load_error(j);
   EXPECT_TRUE(contains(message, "/appearance")) << message;
   EXPECT_TRUE(contains(message, "expected an object")) << message;
+}
+
+// A designer's cut in a preset: read as `field --outline` reads its file, saved back unchanged.
+const char* const kPanelCut = R"({"top": [[0, 0], [600, 0]],
+  "bottom": [[0, 400], [300, 500], [600, 400]],
+  "supports": [{"at": [0, 0], "to": [30, 0]}, {"at": [600, 0], "to": [570, 0]}]})";
+
+TEST_F(PresetTest, AnOutlineIsReadAndSurvivesSaveAndLoad) {
+  json j = valid_preset_json();
+  j["outline"] = json::parse(kPanelCut);
+  const fs::path path = dir_ / "cut.json";
+  write_bytes(path, j.dump(2));
+  const foldlab::Preset read = foldlab::load_preset(path);
+  ASSERT_TRUE(read.outline.has_value());
+  ASSERT_EQ(read.outline->bottom_mm.size(), 3u);
+  EXPECT_EQ(read.outline->bottom_mm[1], Eigen::Vector2d(300.0, 500.0));
+  ASSERT_EQ(read.outline->supports.size(), 2u);
+  EXPECT_EQ(read.outline->supports[1].to_mm, Eigen::Vector2d(570.0, 0.0));
+  // 600 x 400 and the hem's triangle of base 600 and height 100 below it.
+  EXPECT_DOUBLE_EQ(read.outline->area_mm2(), 600.0 * 400.0 + 0.5 * 600.0 * 100.0);
+
+  const fs::path saved = dir_ / "saved.json";
+  foldlab::save_preset(read, saved);
+  EXPECT_EQ(json::parse(read_bytes(saved)).at("outline"), json::parse(kPanelCut));
+  expect_same_preset(read, foldlab::load_preset(saved));
+
+  // A preset without one writes none.
+  EXPECT_FALSE(foldlab::preset_to_json(awkward_preset()).contains("outline"));
+}
+
+TEST_F(PresetTest, AnOutlineThatCannotBeMeshedIsRefusedNamingTheProblem) {
+  struct Case {
+    const char* outline;
+    const char* says;
+  };
+  const Case cases[] = {
+      // The top edge runs back to x = 300 and crosses its own first stretch on the way right.
+      {R"({"top": [[0, 0], [600, 0], [300, -30], [400, 30], [900, 0]],
+           "bottom": [[0, 400], [900, 400]], "supports": [{"at": [0, 0], "to": [0, 0]}]})",
+       "the top edge turns back"},
+      // A hook in the middle of the cloth, 200 mm below its top edge.
+      {R"({"top": [[0, 0], [600, 0]], "bottom": [[0, 400], [600, 400]],
+           "supports": [{"at": [0, 0], "to": [0, 0]}, {"at": [300, 200], "to": [300, 0]}]})",
+       "support 2 at (300, 200) mm is off the outline"},
+      // Beyond the cut's right end.
+      {R"({"top": [[0, 0], [600, 0]], "bottom": [[0, 400], [600, 400]],
+           "supports": [{"at": [0, 0], "to": [0, 0]}, {"at": [700, 0], "to": [650, 0]}]})",
+       "is off the outline: the cut runs from x = 0 to 600 mm"},
+      {R"({"top": [[0, 0], [600, 0]], "bottom": [[0, 400], [600, 400]], "supports": []})",
+       "at least one support"},
+      {R"([1, 2])", "must be a JSON object"},
+  };
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.outline);
+    json j = valid_preset_json();
+    j["outline"] = json::parse(c.outline);
+    const std::string message = load_error(j);
+    EXPECT_TRUE(contains(message, "bad.json: /outline: ")) << message;
+    EXPECT_TRUE(contains(message, c.says)) << message;
+  }
 }
 
 TEST_F(PresetTest, MissingRequiredKeyIsNamed) {

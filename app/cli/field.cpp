@@ -23,6 +23,11 @@ field::Outline read_outline(const Options& options, const Preset& preset, std::s
       name = options.outline_path;
       return field::parse_outline_json(read_text_file(options.outline_path, kMaxOutlineFileBytes));
     }
+    // A preset's own cut, checked when the preset was read, unless --shape asks for another.
+    if (preset.outline && options.shape.empty()) {
+      name = "the preset's own cut";
+      return *preset.outline;
+    }
     field::OutlineKind kind = field::outline_kind_of(preset.parameters.shape);
     if (!options.shape.empty() && !field::parse_outline_kind(options.shape, kind)) {
       throw InputError("--shape '" + options.shape +
@@ -52,9 +57,10 @@ void declare(CLI::App& app, Options& options) {
       "its taut, wrinkled and slack shares, the supports' reactions and the rays beside the "
       "closed form's cosines");
   add_input_options(*command, options.inputs);
-  CLI::Option* shape = command->add_option(
-      "--shape", options.shape,
-      "the cut: " + field::outline_kind_names() + " (default: the preset's shape)");
+  CLI::Option* shape =
+      command->add_option("--shape", options.shape,
+                          "the cut: " + field::outline_kind_names() +
+                              " (default: the preset's own cut when it has one, else its shape)");
   command
       ->add_option("--outline", options.outline_path,
                    "a cut of your own: JSON {\"top\": [[x, y], ...], \"bottom\": [[x, y], "

@@ -215,7 +215,8 @@ bool same_b(const std::optional<PinnedFabric>& a, const std::optional<PinnedFabr
 bool Document::same(const Snapshot& a, const Snapshot& b) {
   return a.edited == b.edited && a.appearance == b.appearance && a.loaded_path == b.loaded_path &&
          a.loaded.name == b.loaded.name && a.loaded.parameters == b.loaded.parameters &&
-         a.loaded.appearance == b.loaded.appearance && same_b(a.compare_b, b.compare_b);
+         a.loaded.appearance == b.loaded.appearance && a.loaded.outline == b.loaded.outline &&
+         same_b(a.compare_b, b.compare_b);
 }
 
 void Document::restore(const Snapshot& s) {

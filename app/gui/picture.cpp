@@ -221,9 +221,10 @@ void build_picture(Renderer& renderer, const PictureSource& source, const Pictur
   } else if (spec.view == PictureView::cloth) {
     const ClothStyle style =
         in_fabric_colour(picture_style(source, spec), source.document.appearance());
-    const OrbitCamera camera = source.camera ? *source.camera : framed_camera(scene, area);
+    Scene& cloth = source.cloth_scene != nullptr ? *source.cloth_scene : scene;
+    const OrbitCamera camera = source.camera ? *source.camera : framed_camera(cloth, area);
     renderer.draw_cloth(source.cloth_view, ImGui::GetWindowDrawList(), ImVec2(0, 0),
-                        cloth_buffers(scene, style), camera, area, style);
+                        cloth_buffers(cloth, style), camera, area, style);
   } else if (spec.view == PictureView::compare) {
     draw_compare(renderer, source, spec, area);
   } else if (spec.view == PictureView::sweep) {
@@ -431,7 +432,7 @@ std::vector<std::uint8_t> draw_picture(Renderer& renderer, const PictureSource& 
 PictureSource picture_source(Document& document, std::span<const std::unique_ptr<Panel>> panels,
                              ClothView cloth_view, ClothView compare_cloth_view,
                              const std::filesystem::path& font_file) {
-  const ClothViewPanel& cloth = find_panel<ClothViewPanel>(panels);
+  ClothViewPanel& cloth = find_panel<ClothViewPanel>(panels);
   return PictureSource{
       document,
       cloth.style(),
@@ -440,7 +441,8 @@ PictureSource picture_source(Document& document, std::span<const std::unique_ptr
       font_file,
       &find_panel<AnalysisPanel>(panels).sweep(),
       compare_cloth_view,
-      panels};
+      panels,
+      cloth.drawn_field_scene()};
 }
 
 }  // namespace foldlab::gui

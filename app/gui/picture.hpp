@@ -84,6 +84,9 @@ struct PictureSource {
   ClothView compare_cloth_view = kNoClothView;  // B's, for a compare picture
   // The explorer's panels: a view whose panel draws its own pictures is drawn by it.
   std::span<const std::unique_ptr<Panel>> panels = {};
+  // The scene the 3D view drew A's cloth from when it was not the document's (the tension
+  // field's folds), so that its picture shows the same cloth; null: the document's.
+  Scene* cloth_scene = nullptr;
 };
 
 // The source the explorer's panels give: the 3D view's style and camera once it has framed the

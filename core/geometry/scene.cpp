@@ -1,7 +1,10 @@
 #include "core/geometry/scene.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
+#include <cmath>
+#include <utility>
 
 namespace foldlab {
 
@@ -18,6 +21,17 @@ std::string_view to_string(Stage s) {
   }
   return "unknown";
 }
+
+namespace {
+
+// One count for every scene: a view that draws one scene and then another (the 3D view's fold
+// source) never takes the other's stage for the one it uploaded because their numbers agree.
+std::uint64_t next_version() {
+  static std::atomic<std::uint64_t> count{0};
+  return ++count;
+}
+
+}  // namespace
 
 Scene::Scene(const Parameters& parameters) : parameters_(parameters) {}
 
@@ -70,6 +84,14 @@ void Scene::set_grid_resolution(int nx, int ny) {
   invalidate_from(Stage::grid);
 }
 
+void Scene::set_folds(std::optional<FoldOverride> folds) {
+  if (folds == folds_) {
+    return;
+  }
+  folds_ = std::move(folds);
+  invalidate_from(Stage::solution);
+}
+
 void Scene::set_fold_line_samples(int samples) {
   samples = std::max(2, samples);
   if (samples == fold_line_samples_) {
@@ -87,7 +109,7 @@ void Scene::run(Stage stage, Compute&& compute) {
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   StageStats& s = stats_[index(stage)];
   ++s.evaluations;
-  ++versions_[index(stage)];
+  versions_[index(stage)] = next_version();
   s.total_ms += ms;
   s.last_ms = ms;
   stale_[index(stage)] = false;
@@ -95,7 +117,19 @@ void Scene::run(Stage stage, Compute&& compute) {
 
 const Solution& Scene::solution() {
   if (stale_[index(Stage::solution)]) {
-    run(Stage::solution, [this] { solution_ = solve(parameters_); });
+    run(Stage::solution, [this] {
+      solution_ = solve(parameters_);
+      if (folds_) {
+        solution_.n = folds_->n;
+        solution_.Q = folds_->Q;
+        solution_.z_max_mm = folds_->z_max_mm;
+        solution_.a_mm = folds_->n > 0 ? folds_->a_mm : std::vector<double>{};
+        // Eq. 8's sag of the upper edge, which the geometry draws the top fold line with.
+        if (!solution_.a_mm.empty()) {
+          solution_.sag_amplitude_mm = std::hypot(solution_.a_mm.back(), solution_.z_max_mm);
+        }
+      }
+    });
   }
   return solution_;
 }

@@ -17,6 +17,18 @@
 namespace foldlab {
 
 enum class Stage { solution, fold_lines, grid, normals };
+
+// Folds found elsewhere than by the closed form (the tension field's, core/field/field_folds.hpp)
+// that a scene draws in place of the closed form's: n, Q, z_max and a_0 (bottom) .. a_n (top),
+// hung depths below the supports' line; a_mm has n + 1 entries, none when n = 0.
+struct FoldOverride {
+  int n = 0;
+  double Q = 1.0;
+  double z_max_mm = 0.0;
+  std::vector<double> a_mm;
+
+  bool operator==(const FoldOverride&) const = default;
+};
 inline constexpr int kStageCount = 4;
 std::string_view to_string(Stage s);
 
@@ -34,6 +46,10 @@ class Scene {
   void set_parameters(const Parameters& parameters);
   void set_grid_resolution(int nx, int ny);
   void set_fold_line_samples(int samples);
+  // Folds to draw in place of the closed form's (nothing: the closed form's). The rest of the
+  // solution (span, regime, the law's constants) stays the closed form's.
+  void set_folds(std::optional<FoldOverride> folds);
+  const std::optional<FoldOverride>& folds() const { return folds_; }
 
   const Parameters& parameters() const { return parameters_; }
   int grid_nx() const { return grid_nx_; }
@@ -50,8 +66,9 @@ class Scene {
   const CentreFibre& centre_fibre();
 
   const StageStats& stats(Stage stage) const { return stats_[index(stage)]; }
-  // Bumps each time the stage's output is recomputed: a consumer (a GPU buffer, say) that
-  // remembers the number it last saw knows whether to upload again.
+  // Changes each time the stage's output is recomputed, to a number no other scene's stage has
+  // had: a consumer (a GPU buffer, say) that remembers the number it last saw knows whether to
+  // upload again, even when it was another scene's.
   std::uint64_t version(Stage stage) const { return versions_[index(stage)]; }
   // Zeroes the counters (not the versions).
   void reset_stats();
@@ -67,6 +84,7 @@ class Scene {
   int grid_ny_ = 128;
   int fold_line_samples_ = 201;
 
+  std::optional<FoldOverride> folds_;
   Solution solution_;
   FoldRounding rounding_;
   std::optional<CentreFibre> fibre_;  // empty while stale, like the rounding

@@ -393,10 +393,10 @@ Preset preset_from_json(const json& j, const std::string& origin) {
   std::vector<std::string> problems;
   Reader r(origin, problems);
   Preset preset;
-  if (!r.object(
-          j, "",
-          {"foldlab_preset", "name", "description", "source", "derived_from", "written_by",
-           "fabric", "hanging", "model", "shape", "published", "calibration", "appearance"})) {
+  if (!r.object(j, "",
+                {"foldlab_preset", "name", "description", "source", "derived_from", "written_by",
+                 "fabric", "hanging", "model", "shape", "published", "calibration", "appearance",
+                 "outline"})) {
     throw PresetError(join_lines(problems));
   }
   if (!j.contains("foldlab_preset")) {
@@ -451,6 +451,15 @@ Preset preset_from_json(const json& j, const std::string& origin) {
   }
   if (j.contains("appearance")) {
     read_appearance(r, j.at("appearance"), preset.appearance);
+  }
+  if (j.contains("outline")) {
+    // The same reader and rules as `field --outline FILE`, so that a cut moves between a file and
+    // a preset unchanged.
+    try {
+      preset.outline = field::parse_outline_json(j.at("outline").dump());
+    } catch (const field::OutlineError& e) {
+      r.problem("/outline", e.what());
+    }
   }
   // Range problems too, except for a key that already has one: its value was not read, so the
   // range check would be about the default standing in for it.
@@ -552,6 +561,26 @@ json preset_to_json(const Preset& preset) {
   }
   if (preset.appearance.colour) {
     j["appearance"] = {{"colour", hex_colour(*preset.appearance.colour)}};
+  }
+  if (preset.outline) {
+    const auto point = [](const Eigen::Vector2d& at) {
+      return json::array({detail::finite_or_throw(at.x(), "/outline"),
+                          detail::finite_or_throw(at.y(), "/outline")});
+    };
+    const auto edge = [&](const std::vector<Eigen::Vector2d>& vertices) {
+      json out = json::array();
+      for (const Eigen::Vector2d& v : vertices) {
+        out.push_back(point(v));
+      }
+      return out;
+    };
+    json supports = json::array();
+    for (const field::Support& s : preset.outline->supports) {
+      supports.push_back({{"at", point(s.at_mm)}, {"to", point(s.to_mm)}});
+    }
+    j["outline"] = {{"top", edge(preset.outline->top_mm)},
+                    {"bottom", edge(preset.outline->bottom_mm)},
+                    {"supports", std::move(supports)}};
   }
   return j;
 }

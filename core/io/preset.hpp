@@ -11,6 +11,7 @@
 
 #include <nlohmann/json_fwd.hpp>
 
+#include "core/field/outline.hpp"
 #include "core/model/parameters.hpp"
 #include "core/model/solver.hpp"
 
@@ -105,6 +106,9 @@ struct Preset {
   PublishedResult published;
   std::optional<CalibrationRecord> calibration;
   Appearance appearance;
+  // A designer's own cut for the tension field, read and checked as `field --outline` reads its
+  // file; none: the field is solved on the cut of the shape.
+  std::optional<field::Outline> outline;
 };
 
 // A preset that cannot be read: the message names the file, the key (as a JSON pointer) and the

@@ -16,6 +16,7 @@
 #include "app/gui/colour_map.hpp"
 #include "app/gui/compare.hpp"
 #include "app/gui/input_words.hpp"
+#include "app/gui/panels/field_panel.hpp"
 #include "app/gui/panels/file_dialog.hpp"
 #include "app/gui/panels/widgets.hpp"
 #include "core/model/settings.hpp"
@@ -35,6 +36,9 @@ constexpr ViewRange<float> kZExaggeration{1.0f, 20.0f, " (times)"};
 constexpr ViewRange<float> kPrintMm{10.0f, 300.0f, " mm"};
 constexpr std::string_view kPrintNames[] = {"plain", "checks", "stripes", "photo"};
 constexpr std::string_view kColourByNames[] = {"none", "z", "fold_sign"};
+constexpr std::string_view kFoldSourceNames[] = {"closed_form", "field"};
+
+constexpr const char* kFoldsFromLabel = "folds from";
 
 // A logarithmic slider over the row's range, kept within it.
 bool view_slider(const char* label, float& value, const ViewRange<float>& range,
@@ -146,11 +150,76 @@ void ClothViewPanel::view_settings(ViewSettings& settings, Document& document) {
   settings.add_switch("lod", &style_.level_of_detail, kScripted);
   settings.add_switch("fold_lines", &style_.fold_lines, kRemembered | kScripted);
   settings.add_switch("ground", &style_.ground, kRemembered | kScripted);
+  settings.add_choice<FoldSource>("fold_source", &fold_source_, kFoldSourceNames, kEveryUse);
   // A view that fills the window.
   settings.add_switch("full", &fill_display_, kScripted);
 }
 
+void ClothViewPanel::begin_frame(PanelContext& context) {
+  if (fold_source_ == FoldSource::field) {
+    context.panel<FieldPanel>().ask_for_folds();
+  }
+}
+
+Scene& ClothViewPanel::scene_to_draw(PanelContext& context) {
+  Scene& closed = context.document.scene();
+  fold_words_.clear();
+  fold_words_warn_ = false;
+  drawn_field_folds_.reset();
+  if (fold_source_ == FoldSource::closed_form) {
+    return closed;
+  }
+  const FieldFoldsNow now = context.panel<FieldPanel>().folds_now(context.document);
+  if (now.state != FieldFoldsNow::State::converged) {
+    // Never a field that has not converged as if it had: the closed form's folds stand in.
+    fold_words_ = "Folds from the tension field: " + now.words +
+                  "; the closed form's folds are drawn meanwhile.";
+    fold_words_warn_ = true;
+    return closed;
+  }
+  const field::FieldFolds& folds = *now.folds;
+  field_scene_.set_parameters(closed.parameters());
+  field_scene_.set_grid_resolution(closed.grid_nx(), closed.grid_ny());
+  field_scene_.set_folds(FoldOverride{folds.n, folds.Q, folds.z_max_mm, folds.a_mm});
+  fold_words_ = detail::printf_string(
+      "Folds from the tension field: n = %d, Q = %.3f, z_max = %.0f mm (the closed form's: "
+      "n = %d, z_max = %.0f mm).",
+      folds.n, folds.Q, folds.z_max_mm, closed.solution().n, closed.solution().z_max_mm);
+  // As the scene draws them, which is what the report says was drawn.
+  const Solution& drawn = field_scene_.solution();
+  drawn_field_folds_ = FoldOverride{drawn.n, drawn.Q, drawn.z_max_mm, drawn.a_mm};
+  return field_scene_;
+}
+
+void ClothViewPanel::fold_source_line() const {
+  if (fold_words_.empty()) {
+    return;
+  }
+  ImGui::PushStyleColor(ImGuiCol_Text, fold_words_warn_ ? kNoteText : kDimText);
+  wrapped_text("%s", fold_words_.c_str());
+  ImGui::PopStyleColor();
+}
+
 void ClothViewPanel::report(json& state, PanelContext& context) const {
+  {
+    json source = {{"source", std::string(kFoldSourceNames[static_cast<std::size_t>(fold_source_)])},
+                   {"drawn", drawn_field_folds_ ? "field" : "closed_form"},
+                   {"words", fold_words_.empty() ? json(nullptr) : json(fold_words_)}};
+    const auto folds = [&](int n, double Q, double z_max_mm, const std::vector<double>& a_mm) {
+      source["n"] = n;
+      source["Q"] = Q;
+      source["z_max_mm"] = z_max_mm;
+      source["a_mm"] = a_mm;
+    };
+    if (drawn_field_folds_) {
+      folds(drawn_field_folds_->n, drawn_field_folds_->Q, drawn_field_folds_->z_max_mm,
+            drawn_field_folds_->a_mm);
+    } else {
+      const Solution& s = context.document.scene().solution();
+      folds(s.n, s.Q, s.z_max_mm, s.a_mm);
+    }
+    state["fold_source"] = std::move(source);
+  }
   state["camera"] = {{"yaw_rad", camera_.yaw_rad},
                      {"pitch_rad", camera_.pitch_rad},
                      {"distance_mm", camera_.distance_mm}};
@@ -387,6 +456,16 @@ bool ClothViewPanel::toolbar(PanelContext& context) {
   if (ImGui::Combo("colour by", &colour_by, "fabric\0z\0fold sign\0")) {
     style_.colour_by = static_cast<ClothStyle::ColourBy>(colour_by);
   }
+  same_line_if_fits(labelled_width(ems(8.5f), kFoldsFromLabel) + ImGui::CalcTextSize(" (?)").x);
+  ImGui::SetNextItemWidth(ems(8.5f));
+  int source = static_cast<int>(fold_source_);
+  if (ImGui::Combo(kFoldsFromLabel, &source, "closed form\0tension field\0")) {
+    fold_source_ = static_cast<FoldSource>(source);
+  }
+  help_marker(
+      "Whose folds the cloth is drawn with: the closed form's (n, Q, z_max and the a_i of "
+      "Results) or those read from the tension field of the same inputs, which is then solved "
+      "though its view is closed.");
   if (!photo_problem_.empty() && style_.print == ClothStyle::Print::photo) {
     ImGui::PushStyleColor(ImGuiCol_Text, kErrorText);
     wrapped_text("%s", photo_problem_.c_str());
@@ -479,6 +558,10 @@ void ClothViewPanel::draw(PanelContext& context) {
     reset = toolbar(context);
     toolbar_row_.end();
   }
+  // Chosen before the view's area is measured: the line saying where the folds come from takes
+  // its room above the view.
+  Scene& drawn = scene_to_draw(context);
+  fold_source_line();
   // The view follows the theme: a light page gets a light backdrop.
   const bool light = style_is_light();
   style_.background =
@@ -517,7 +600,7 @@ void ClothViewPanel::draw(PanelContext& context) {
     update_cloth_buffers(cloth, style, buffers_[which]);
     renderer.draw_cloth(views_[which], draw, at, buffers_[which], camera_, view_size, style);
   };
-  draw_view(0, origin, scene, size);
+  draw_view(0, origin, drawn, size);
   const ImVec2 b_origin(origin.x + static_cast<float>(size.width), origin.y);
   if (compare) {
     draw_view(1, b_origin, document.compare().scene(scene.grid_nx()),
@@ -532,7 +615,7 @@ void ClothViewPanel::draw(PanelContext& context) {
   }
   if (bar_width > 0.0f) {
     draw_colour_bar(ImVec2(origin.x + static_cast<float>(area.width), origin.y),
-                    static_cast<float>(area.height), scene.solution().z_max_mm);
+                    static_cast<float>(area.height), drawn.solution().z_max_mm);
   }
   ImGui::End();
 }

@@ -21,6 +21,10 @@ namespace foldlab::gui {
 // (ClothStyle's) for a fabric with none: each of A and B is drawn in its own.
 ClothStyle in_fabric_colour(ClothStyle style, const foldlab::Appearance& appearance);
 
+// Whose folds the 3D cloth is drawn with: the closed form's (the model's solution) or those read
+// from the tension field (core/field/field_folds.hpp), through the same geometry.
+enum class FoldSource { closed_form, field };
+
 class ClothViewPanel : public Panel {
  public:
   const char* name() const override { return "Cloth (3D)"; }
@@ -32,7 +36,10 @@ class ClothViewPanel : public Panel {
   void draw(PanelContext& context) override;
   // The print and its file, colour, breeze, z exaggeration, switches and `full`.
   void view_settings(ViewSettings& settings, Document& document) override;
-  // "camera" and the renderer's counters of A's and B's cloth ("renderer").
+  // Asks the tension field panel to solve the field while the folds come from it.
+  void begin_frame(PanelContext& context) override;
+  // "camera", the renderer's counters of A's and B's cloth ("renderer") and "fold_source": the
+  // source chosen, the one drawn, the drawn n, Q, z_max and a_i, and what the view says of it.
   void report(nlohmann::json& state, PanelContext& context) const override;
   // The cloth, and A and B side by side.
   static constexpr PictureOffer kPictures[] = {
@@ -71,6 +78,12 @@ class ClothViewPanel : public Panel {
   bool animating() const override { return style_.breeze && breeze_playing_; }
   // Where the view's picture was drawn last (display pixels), for a picture of the view alone.
   const PanelRect& view_rect() const { return view_rect_; }
+  FoldSource fold_source() const { return fold_source_; }
+  // The field's folds A's cloth was drawn with at the last frame; none when it was drawn with the
+  // closed form's (chosen, or standing in while the field is solved).
+  const std::optional<FoldOverride>& drawn_field_folds() const { return drawn_field_folds_; }
+  // The scene with the field's folds while the view draws it, for its pictures; else null.
+  Scene* drawn_field_scene() { return drawn_field_folds_ ? &field_scene_ : nullptr; }
   // Whether the settings above the view are folded behind a "settings..." button.
   bool toolbar_folded() const { return toolbar_row_.folded(); }
 
@@ -90,8 +103,17 @@ class ClothViewPanel : public Panel {
   static float colour_bar_width();
   void draw_colour_bar(ImVec2 min, float height, double z_max_mm) const;
   void follow_the_cloth(Document& document, bool reset, bool hold);
+  // The scene to draw A's cloth from: the document's, or field_scene_ with the field's folds when
+  // they are chosen and converged; sets fold_words_ to what the view says of the fold source.
+  Scene& scene_to_draw(PanelContext& context);
+  void fold_source_line() const;
 
   ClothStyle style_;
+  FoldSource fold_source_ = FoldSource::closed_form;
+  Scene field_scene_;  // the document's inputs with the field's folds
+  std::optional<FoldOverride> drawn_field_folds_;
+  std::string fold_words_;        // empty with the closed form chosen
+  bool fold_words_warn_ = false;  // the field's folds were asked for and are not drawn
   OrbitCamera camera_;
   ClothView views_[2] = {kNoClothView, kNoClothView};  // A, B
   ClothBuffers buffers_[2];                            // what each view drew last

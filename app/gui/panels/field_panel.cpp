@@ -13,6 +13,7 @@
 
 #include "app/gui/panels/widgets.hpp"
 #include "core/field/rays.hpp"
+#include "core/model/text_format.hpp"
 
 namespace foldlab::gui {
 namespace {
@@ -228,9 +229,12 @@ std::vector<double> node_tensions(const field::SolvedField& field) {
 
 }  // namespace
 
-field::FieldInputs field_inputs(const Parameters& parameters, int cells_x, FieldCut cut) {
+field::FieldInputs field_inputs(const Parameters& parameters, int cells_x, FieldCut cut,
+                                const field::Outline* own_cut) {
   field::FieldInputs in;
-  in.outline = field::make_outline(parameters, outline_kind(parameters, cut));
+  in.outline = cut == FieldCut::shape && own_cut != nullptr
+                   ? *own_cut
+                   : field::make_outline(parameters, outline_kind(parameters, cut));
   in.material = field::material_of(parameters.fabric);
   double top = std::numeric_limits<double>::max();
   double bottom = -top;
@@ -382,12 +386,16 @@ void FieldPanel::controls() {
   if (ImGui::Combo("colour by", &colouring, "state\0tension\0")) {
     colouring_ = static_cast<FieldColouring>(colouring);
   }
-  const float cut_width = ImGui::CalcTextSize("as the shape").x + ImGui::GetFrameHeight() +
+  // A preset with a cut of its own puts it in the shape's place.
+  const char* first = preset_cut_ ? "the preset's cut" : "as the shape";
+  const float cut_width = ImGui::CalcTextSize(first).x + ImGui::GetFrameHeight() +
                           2.0f * ImGui::GetStyle().FramePadding.x;
   same_line_if_fits(labelled_width(cut_width, "cut"));
   ImGui::SetNextItemWidth(cut_width);
   int cut = static_cast<int>(cut_);
-  if (ImGui::Combo("cut", &cut, "as the shape\0triangle\0pennant\0wedge\0")) {
+  if (ImGui::Combo("cut", &cut,
+                   preset_cut_ ? "the preset's cut\0triangle\0pennant\0wedge\0"
+                               : "as the shape\0triangle\0pennant\0wedge\0")) {
     cut_ = static_cast<FieldCut>(cut);
   }
   same_line_if_fits(checkbox_width("rays"));
@@ -425,10 +433,8 @@ void FieldPanel::status_line(Document& document) {
       "(the cosine pencil's %#.3g N)",
       100.0 * s.taut_share, 100.0 * s.wrinkled_share, 100.0 * s.slack_share, s.weight_N,
       shown->report.thrust_N, shown->report.pencil_thrust_N);
-  if (!folds_ || folds_of_ != live_.shown_count()) {
-    folds_of_ = live_.shown_count();
-    folds_ = field::field_folds(shown->mesh, s, field::support_targets(shown->inputs.outline),
-                                document.scene().parameters());
+  if (!folds_) {
+    return;
   }
   const Solution& closed = document.scene().solution();
   ImGui::TextWrapped(
@@ -469,11 +475,22 @@ void FieldPanel::canvas(PanelContext& context) {
   draw.PopClipRect();
 }
 
-void FieldPanel::draw(PanelContext& context) {
-  if (!open_) {
-    was_open_ = false;
-    return;  // closed, nothing is solved
+void FieldPanel::update_folds(const Parameters& parameters) {
+  const field::SolvedField* shown = live_.shown();
+  if (shown == nullptr) {
+    folds_.reset();
+    return;
   }
+  if (!folds_ || folds_of_ != live_.shown_count() || !folds_parameters_ ||
+      !(*folds_parameters_ == parameters)) {
+    folds_of_ = live_.shown_count();
+    folds_parameters_ = parameters;
+    folds_ = field::field_folds(shown->mesh, shown->report.solution,
+                                field::support_targets(shown->inputs.outline), parameters);
+  }
+}
+
+void FieldPanel::solve_slice(PanelContext& context) {
   // While a value moves (dragged, nudged, played, animated) and a moment after, a coarser mesh
   // keeps up with the hand; the finer one follows when it rests.
   const Parameters& parameters = context.document.scene().parameters();
@@ -487,8 +504,12 @@ void FieldPanel::draw(PanelContext& context) {
   const bool moving = context.holding_frame || now_s - last_change_s_ < kRestS;
   coarse_ = moving;
   const int cells = moving ? std::max(static_cast<int>(kCells.lo), cells_ / 2) : cells_;
+  const std::optional<field::Outline>& own = context.document.loaded().outline;
+  preset_cut_ = own.has_value();
+  own_cut_ = cut_ == FieldCut::shape && preset_cut_;
+  requested_parameters_ = parameters;
   try {
-    live_.request(field_inputs(parameters, cells, cut_));
+    live_.request(field_inputs(parameters, cells, cut_, own ? &*own : nullptr));
     cut_refusal_.clear();
   } catch (const field::OutlineError& e) {
     // The last field stays on show, marked as of other inputs.
@@ -500,6 +521,67 @@ void FieldPanel::draw(PanelContext& context) {
   live_.step(moving ? 6.0 : 25.0);
   slice_ms_ =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - began).count();
+  update_folds(parameters);
+}
+
+void FieldPanel::end_frame(PanelContext& /*context*/) {
+  folds_asked_ = false;
+}
+
+FieldFoldsNow FieldPanel::folds_now(const Document& document) const {
+  FieldFoldsNow now;
+  now.residual = live_.residual();
+  if (consumers_.empty()) {
+    now.words = "not solved";
+    return now;
+  }
+  if (cut_ != FieldCut::shape) {
+    now.state = FieldFoldsNow::State::other_cut;
+    now.words =
+        "the tension field view shows another cut than the cloth's (set its cut to "
+        "\"as the shape\")";
+    return now;
+  }
+  const std::string& refusal = cut_refusal_.empty() ? live_.refusal() : cut_refusal_;
+  if (!refusal.empty()) {
+    // LiveField says a solve that gave up in these words; any other refusal is the cut's.
+    const bool gave_up = cut_refusal_.empty() && refusal.starts_with("the field did not converge");
+    now.state = gave_up ? FieldFoldsNow::State::not_converged : FieldFoldsNow::State::refused;
+    now.words =
+        gave_up ? detail::printf_string("not converged (residual %.1e)", now.residual) : refusal;
+    return now;
+  }
+  if (!live_.current() || !requested_parameters_ ||
+      !(*requested_parameters_ == document.scene().parameters()) || !folds_ || !folds_parameters_ ||
+      !(*folds_parameters_ == document.scene().parameters())) {
+    now.state = FieldFoldsNow::State::solving;
+    now.words = live_.shown() == nullptr || live_.iterations() == 0
+                    ? std::string("solving...")
+                    : detail::printf_string("solving... (residual %.0e)", now.residual);
+    return now;
+  }
+  now.state = FieldFoldsNow::State::converged;
+  now.folds = &*folds_;
+  return now;
+}
+
+void FieldPanel::draw(PanelContext& context) {
+  consumers_.clear();
+  if (open_) {
+    consumers_.emplace_back("view");
+  }
+  if (folds_asked_) {
+    consumers_.emplace_back("fold_source");
+  }
+  if (consumers_.empty()) {
+    was_open_ = false;
+    return;  // nobody asks: nothing is solved
+  }
+  solve_slice(context);
+  if (!open_) {
+    was_open_ = false;
+    return;
+  }
   // A first place of its own, unless the layout placed it (presented, or put back).
   if ((ImGui::GetCurrentContext()->NextWindowData.Flags & ImGuiNextWindowDataFlags_HasPos) == 0) {
     const ImVec2 display = ImGui::GetIO().DisplaySize;
@@ -546,6 +628,8 @@ void FieldPanel::report(json& state, PanelContext& /*context*/) const {
   out["current"] = live_.current();
   out["working"] = live_.working();
   out["slice_ms"] = slice_ms_;
+  out["solving_for"] = consumers_;
+  out["cut"] = own_cut_ ? "preset" : std::string(kCutNames[static_cast<int>(cut_)]);
   const std::string& refusal = cut_refusal_.empty() ? live_.refusal() : cut_refusal_;
   out["refusal"] = refusal.empty() ? json(nullptr) : json(refusal);
   if (const field::SolvedField* shown = live_.shown()) {
@@ -569,8 +653,13 @@ void FieldPanel::report(json& state, PanelContext& /*context*/) const {
                                  {"reaction_N", {s.reactions_N[i].x(), s.reactions_N[i].y()}}});
     }
     out["rays"] = shown->report.rays.size();
+    out["outline_area_mm2"] = shown->inputs.outline.area_mm2();
     if (folds_ && folds_of_ == live_.shown_count()) {
-      out["folds"] = {{"n", folds_->n}, {"Q", folds_->Q}, {"z_max_mm", folds_->z_max_mm}};
+      // The a_i too: a test compares them with the 3D view's.
+      out["folds"] = {{"n", folds_->n},
+                      {"Q", folds_->Q},
+                      {"z_max_mm", folds_->z_max_mm},
+                      {"a_mm", folds_->a_mm}};
     }
   }
   state["field"] = out;
@@ -580,7 +669,8 @@ const field::SolvedField* FieldPanel::picture_field(const Document& document,
                                                     std::string& refusal) const {
   field::FieldInputs inputs;
   try {
-    inputs = field_inputs(document.scene().parameters(), cells_, cut_);
+    const std::optional<field::Outline>& own = document.loaded().outline;
+    inputs = field_inputs(document.scene().parameters(), cells_, cut_, own ? &*own : nullptr);
   } catch (const field::OutlineError& e) {
     refusal = std::string("the tension field's cut: ") + e.what();
     return nullptr;

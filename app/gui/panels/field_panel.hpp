@@ -8,6 +8,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json_fwd.hpp>
 
@@ -42,10 +43,29 @@ struct FieldDrawing {
 void draw_field(ImDrawList& draw, ImVec2 origin, ImVec2 size, const field::SolvedField& field,
                 const FoldLines* cosines, const FieldDrawing& style);
 
-// The field's inputs for the model's parameters: the outline of their shape (or `cut`), their
-// material and a mesh of `cells_x` across with as many cells down as keeps them square.
+// The field's inputs for the model's parameters: the outline of their shape (or `cut`, or the
+// preset's own cut `own_cut` when the cut is the shape's), their material and a mesh of `cells_x`
+// across with as many cells down as keeps them square.
 field::FieldInputs field_inputs(const Parameters& parameters, int cells_x,
-                                FieldCut cut = FieldCut::shape);
+                                FieldCut cut = FieldCut::shape,
+                                const field::Outline* own_cut = nullptr);
+
+// The folds read from the field as another view may take them (the 3D view's fold source, the
+// Results' field column): the field's folds only when it has converged for the inputs shown now.
+struct FieldFoldsNow {
+  enum class State {
+    not_solved,     // nobody asks for the field
+    solving,        // the field of these inputs is still being solved
+    not_converged,  // the solve gave up; `residual` says how far it got
+    refused,        // the cut cannot be solved; `words` says why
+    other_cut,      // the field view shows another cut than the cloth's
+    converged,      // `folds` are the field's for the inputs shown now
+  };
+  State state = State::not_solved;
+  const field::FieldFolds* folds = nullptr;
+  double residual = 0.0;
+  std::string words;  // a short sentence for the views: why there are no folds from the field
+};
 
 class FieldPanel : public Panel {
  public:
@@ -60,7 +80,9 @@ class FieldPanel : public Panel {
   void draw(PanelContext& context) override;
   // While a field is being solved, and while the one on show is the coarse mesh of a move: the
   // frame loop keeps drawing until the finer one is shown, though nothing else moves.
-  bool busy() const override { return open_ && (live_.working() || coarse_); }
+  bool busy() const override { return !consumers_.empty() && (live_.working() || coarse_); }
+  // Forgets who asked for the field this frame (ask_for_folds).
+  void end_frame(PanelContext& context) override;
   bool* open_flag() override { return &open_; }
   bool is_open() const override { return open_; }
   bool presentable() const override { return true; }
@@ -90,6 +112,16 @@ class FieldPanel : public Panel {
     }
   }
 
+  // The 3D view takes its folds from the field this frame: the field is solved though its own
+  // view is closed. Asked before the panels draw (Panel::begin_frame).
+  void ask_for_folds() { folds_asked_ = true; }
+  // Who the field was solved for at the last frame: "view" (this panel open), "fold_source".
+  const std::vector<std::string>& consumers() const { return consumers_; }
+  // The field's folds for `document`'s inputs as they stand now.
+  FieldFoldsNow folds_now(const Document& document) const;
+  // Opens the view (Results offers it where no one has asked for the field).
+  void open() { open_ = true; }
+
   // Mesh cells across the cut at rest; a drag solves on half as many.
   static constexpr int kDefaultCells = 32;
 
@@ -98,6 +130,9 @@ class FieldPanel : public Panel {
   void status_line(Document& document);
   void solve_line() const;
   void canvas(PanelContext& context);
+  // This frame's request and slice of solving, for whoever asked.
+  void solve_slice(PanelContext& context);
+  void update_folds(const Parameters& parameters);
   FieldDrawing drawing_style(const PanelContext& context) const;
   // The field of the document's inputs at rest, solved whole, for a picture.
   const field::SolvedField* picture_field(const Document& document, std::string& refusal) const;
@@ -110,7 +145,14 @@ class FieldPanel : public Panel {
   FieldCut cut_ = FieldCut::shape;
   // The folds read from the field on show, beside the closed form's (field_folds.hpp).
   std::uint64_t folds_of_ = 0;  // LiveField::shown_count() of the field they were read from
+  std::optional<Parameters> folds_parameters_;  // ... and the inputs whose law they were read by
   std::optional<field::FieldFolds> folds_;
+  bool folds_asked_ = false;
+  std::vector<std::string> consumers_;
+  // The inputs of the last request: a field current for them is the field of the inputs shown.
+  std::optional<Parameters> requested_parameters_;
+  bool preset_cut_ = false;  // the preset loaded has a cut of its own
+  bool own_cut_ = false;     // the last request was of it
   bool rays_ = true;
   bool cosines_ = false;
   int cells_ = kDefaultCells;

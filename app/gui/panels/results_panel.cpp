@@ -5,11 +5,13 @@
 #include <string>
 
 #include <imgui.h>
+#include <nlohmann/json.hpp>
 
 #include "app/gui/appearance.hpp"
 
 #include "app/gui/input_words.hpp"
 #include "app/gui/panels/compare_table.hpp"
+#include "app/gui/panels/field_panel.hpp"
 #include "app/gui/panels/widgets.hpp"
 #include "core/analysis/uncertainty.hpp"
 #include "core/model/equations.hpp"
@@ -188,8 +190,102 @@ void ResultsPanel::draw(PanelContext& context) {
     wrapped_text("n is capped: eq. 10 asks for more.");
     ImGui::PopStyleColor();
   }
+  draw_field_column(context);
   draw_amplitudes(s, context.status.expert_mode());
   ImGui::End();
+}
+
+namespace {
+
+constexpr std::string_view kFieldStateNames[] = {"not_solved", "solving",   "not_converged",
+                                                 "refused",    "other_cut", "converged"};
+
+}  // namespace
+
+void ResultsPanel::draw_field_column(PanelContext& context) {
+  Document& document = context.document;
+  FieldPanel& field_view = context.panel<FieldPanel>();
+  const FieldFoldsNow now = field_view.folds_now(document);
+  field_column_shown_ = !field_view.consumers().empty();
+  field_state_ = kFieldStateNames[static_cast<std::size_t>(now.state)];
+  field_words_ = now.words;
+  field_rows_.clear();
+  if (!field_column_shown_) {
+    // Solving the field costs tens of milliseconds a change: only when asked.
+    if (small_button("compare with the tension field")) {
+      field_view.open();
+    }
+    help_marker(
+        "Opens View > Tension field, which solves the cloth as tension field theory does; its "
+        "folds are then shown here beside the closed form's. The 3D view's \"folds from\" "
+        "setting solves it too.");
+    return;
+  }
+  const Solution& s = document.scene().solution();
+  const field::FieldFolds* f = now.folds;
+  const std::string missing = f == nullptr ? now.words : std::string();
+  const auto value = [&](const char* format, double v) { return detail::printf_string(format, v); };
+  field_rows_.push_back({"n", value("%.0f", s.n), f ? value("%.0f", f->n) : missing});
+  field_rows_.push_back({"Q", value("%.3f", s.Q), f ? value("%.3f", f->Q) : ""});
+  field_rows_.push_back(
+      {"z_max", value("%.1f mm", s.z_max_mm), f ? value("%.1f mm", f->z_max_mm) : ""});
+  const std::size_t closed_count = s.a_mm.size();
+  const std::size_t field_count = f ? f->a_mm.size() : 0;
+  for (std::size_t i = 1; i < std::max(closed_count, field_count); ++i) {
+    field_rows_.push_back({"a_" + std::to_string(i),
+                           i < closed_count ? value("%.1f mm", s.a_mm[i]) : "",
+                           i < field_count ? value("%.1f mm", f->a_mm[i]) : ""});
+  }
+  if (!ImGui::CollapsingHeader("closed form and tension field###field_column",
+                               ImGuiTreeNodeFlags_DefaultOpen)) {
+    return;
+  }
+  const float line = ImGui::GetTextLineHeightWithSpacing();
+  const float height = std::min(static_cast<float>(field_rows_.size() + 1), 9.0f) * line +
+                       ImGui::GetStyle().CellPadding.y * 2.0f;
+  if (!ImGui::BeginTable("field_column", 3,
+                         ImGuiTableFlags_RowBg | ImGuiTableFlags_ScrollY |
+                             ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_SizingFixedFit,
+                         ImVec2(ImGui::GetContentRegionAvail().x, height))) {
+    return;
+  }
+  ImGui::TableSetupScrollFreeze(0, 1);
+  ImGui::TableSetupColumn("");
+  ImGui::TableSetupColumn("closed form");
+  ImGui::TableSetupColumn("tension field", ImGuiTableColumnFlags_WidthStretch);
+  ImGui::TableHeadersRow();
+  ImGuiListClipper clipper;
+  clipper.Begin(static_cast<int>(field_rows_.size()));
+  while (clipper.Step()) {
+    for (int i = clipper.DisplayStart; i < clipper.DisplayEnd; ++i) {
+      const std::array<std::string, 3>& row = field_rows_[static_cast<std::size_t>(i)];
+      ImGui::TableNextRow();
+      for (int c = 0; c < 3; ++c) {
+        ImGui::TableSetColumnIndex(c);
+        if (c == 2 && f == nullptr) {
+          ImGui::PushStyleColor(ImGuiCol_Text, kNoteText);
+          wrapped_text("%s", row[2].c_str());
+          ImGui::PopStyleColor();
+        } else {
+          ImGui::TextUnformatted(row[static_cast<std::size_t>(c)].c_str());
+        }
+      }
+    }
+  }
+  ImGui::EndTable();
+}
+
+void ResultsPanel::report(nlohmann::json& state, PanelContext& /*context*/) const {
+  nlohmann::json rows = nlohmann::json::array();
+  for (const std::array<std::string, 3>& row : field_rows_) {
+    rows.push_back({row[0], row[1], row[2]});
+  }
+  state["results"] = {
+      {"field_column",
+       {{"shown", field_column_shown_},
+        {"state", field_state_},
+        {"words", field_words_.empty() ? nlohmann::json(nullptr) : nlohmann::json(field_words_)},
+        {"rows", std::move(rows)}}}};
 }
 
 void ResultsPanel::draw_refusal(const Document& document) const {

@@ -4,11 +4,14 @@
 // preset's calibration changes.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <string>
 #include <utility>
 #include <vector>
+
+#include <nlohmann/json_fwd.hpp>
 
 #include "app/gui/document.hpp"
 #include "app/gui/panel.hpp"
@@ -29,6 +32,9 @@ class ResultsPanel : public Panel {
   // n, Q and z_max with their ranges as the table shows them, one line for A and, while B is
   // pinned, one for B, each with the colour it is drawn in: the read-out over a presented view.
   std::vector<std::pair<std::string, ImVec4>> headlines(Document& document);
+  // "results": {"field_column": {"shown", "state", "words", "rows": [[name, closed form, field],
+  // ...]}}, the closed form beside the tension field as the panel showed them at its last frame.
+  void report(nlohmann::json& state, PanelContext& context) const override;
 
  private:
   // One row of the table: the value with its unit, and the range the calibration allows (empty
@@ -50,6 +56,15 @@ class ResultsPanel : public Panel {
   void draw_table(const std::vector<Row>& rows) const;
   void draw_amplitudes(const Solution& s, bool expert) const;
   const ModelStanding& standing(Document& document);
+  // The closed form's n, Q, z_max and a_i beside the field's while the field is solved for a
+  // view, or the offer to solve it.
+  void draw_field_column(PanelContext& context);
+
+  // What draw_field_column showed: [name, closed form, field] rows, the field's state and words.
+  bool field_column_shown_ = false;
+  std::string field_state_;
+  std::string field_words_;
+  std::vector<std::array<std::string, 3>> field_rows_;
 
   std::uint64_t standing_version_ = ~std::uint64_t{0};
   std::optional<CalibrationRecord> standing_record_;

@@ -1,0 +1,246 @@
+// The 3D view's fold source: the cloth drawn with the closed form's folds or with those read from
+// the tension field, the field solved only for a view that asks for it, Results' two columns, and
+// a preset's own cut in the field view. The expected folds come from the core calls `foldlab
+// field --json` makes (mesh, cold solve, field_folds), never from the panels.
+#include "explorer_fixture.hpp"
+
+#include "app/gui/panels/field_panel.hpp"
+#include "core/field/field_case.hpp"
+#include "core/field/field_folds.hpp"
+
+namespace foldlab::gui {
+namespace {
+
+using nlohmann::json;
+
+// The field's folds as `foldlab field --json` finds them for `p` on the explorer's mesh at rest:
+// FieldPanel::kDefaultCells across the shape's cut and as many down as keep the cells square.
+field::FieldFolds folds_as_the_command_finds_them(const Parameters& p) {
+  const field::Outline outline = field::make_outline(p, field::outline_kind_of(p.shape));
+  double top = outline.top_mm.front().y();
+  double bottom = outline.bottom_mm.front().y();
+  for (const Eigen::Vector2d& v : outline.top_mm) {
+    top = std::min(top, v.y());
+  }
+  for (const Eigen::Vector2d& v : outline.bottom_mm) {
+    bottom = std::max(bottom, v.y());
+  }
+  field::MeshResolution resolution;
+  resolution.cells_x = FieldPanel::kDefaultCells;
+  resolution.cells_y =
+      std::clamp(static_cast<int>(std::lround(resolution.cells_x * (bottom - top) /
+                                              (outline.right_mm() - outline.left_mm()))),
+                 4, 2 * resolution.cells_x);
+  field::Solver solver(field::make_mesh(outline, resolution));
+  const field::Solution solution =
+      field::solve_cold(solver, outline, field::material_of(p.fabric), resolution);
+  EXPECT_TRUE(solution.converged);
+  return field::field_folds(solver.mesh(), solution, field::support_targets(outline), p);
+}
+
+// The area of a cut by the shoelace formula: round the top edge left to right, back along the
+// bottom edge right to left.
+double shoelace_area_mm2(const json& outline) {
+  std::vector<std::pair<double, double>> ring;
+  for (const json& v : outline.at("top")) {
+    ring.emplace_back(v[0].get<double>(), v[1].get<double>());
+  }
+  const json& bottom = outline.at("bottom");
+  for (std::size_t i = bottom.size(); i-- > 0;) {
+    ring.emplace_back(bottom[i][0].get<double>(), bottom[i][1].get<double>());
+  }
+  double twice = 0.0;
+  for (std::size_t i = 0; i < ring.size(); ++i) {
+    twice += ring[i].first * ring[(i + 1) % ring.size()].second -
+             ring[(i + 1) % ring.size()].first * ring[i].second;
+  }
+  return 0.5 * std::abs(twice);
+}
+
+class FoldSourceTest : public ExplorerTest {
+ protected:
+  // Frames until the field (if any is asked for) has settled on the mesh at rest.
+  void settle() {
+    for (int i = 0; i < 30; ++i) {
+      frame();  // past the rest time after the last change, 0.3 s at 60 frames a second
+    }
+    for (int i = 0; i < 600 && explorer_->busy(); ++i) {
+      frame();
+    }
+    frame();
+  }
+  json report() { return explorer_->report(); }
+};
+
+// Table 1's h = 1400 mm cloth at L = 4000 mm, where the field counts other folds than the closed
+// form: switched to the field, the 3D view's scene has the field's n, z_max and a_i; switched
+// back, the closed form's.
+TEST_F(FoldSourceTest, TheFieldsFoldsAreDrawnInTheThreeDViewWhenChosen) {
+  ASSERT_EQ(explorer_->set_input("L", 4000.0), std::nullopt);
+  settle();
+  const Parameters p = shown();
+  const field::FieldFolds expected = folds_as_the_command_finds_them(p);
+  const Solution closed = solve(p);
+  ASSERT_GE(expected.n, 1);
+  ASSERT_TRUE(expected.n != closed.n ||
+              std::abs(expected.z_max_mm - closed.z_max_mm) > 0.05 * closed.z_max_mm)
+      << "a case where the two agree shows nothing: field n " << expected.n << " z_max "
+      << expected.z_max_mm << ", closed form n " << closed.n << " z_max " << closed.z_max_mm;
+
+  ClothViewPanel& view = panel<ClothViewPanel>();
+  EXPECT_EQ(view.fold_source(), FoldSource::closed_form);
+  EXPECT_FALSE(view.drawn_field_folds());
+  EXPECT_EQ(report().at("fold_source").at("n"), closed.n);
+
+  ASSERT_EQ(explorer_->set_view("fold_source", "field"), std::nullopt);
+  const std::string first = frame();
+  // The field has not been asked for before this frame: said in words, the closed form drawn.
+  EXPECT_NE(first.find("Folds from the tension field:"), std::string::npos) << first;
+  EXPECT_EQ(report().at("fold_source").at("drawn"), "closed_form");
+  EXPECT_NE(report()
+                .at("fold_source")
+                .at("words")
+                .get<std::string>()
+                .find("the closed form's folds are drawn meanwhile"),
+            std::string::npos);
+  settle();
+
+  ASSERT_TRUE(view.drawn_field_folds());
+  const FoldOverride& drawn = *view.drawn_field_folds();
+  EXPECT_EQ(drawn.n, expected.n);
+  EXPECT_NEAR(drawn.z_max_mm, expected.z_max_mm, 1e-6 * expected.z_max_mm);
+  ASSERT_EQ(drawn.a_mm.size(), expected.a_mm.size());
+  for (std::size_t i = 0; i < drawn.a_mm.size(); ++i) {
+    EXPECT_NEAR(drawn.a_mm[i], expected.a_mm[i], 1e-6 * expected.a_mm.front()) << "a_" << i;
+  }
+  const json source = report().at("fold_source");
+  EXPECT_EQ(source.at("source"), "field");
+  EXPECT_EQ(source.at("drawn"), "field");
+  EXPECT_EQ(source.at("n"), expected.n);
+  EXPECT_NEAR(source.at("z_max_mm").get<double>(), expected.z_max_mm, 1e-6 * expected.z_max_mm);
+  EXPECT_EQ(report().at("view").at("fold_source"), "field");
+  // The document's scene, which Results and the fold plot read, keeps the closed form's.
+  EXPECT_EQ(explorer_->scene().solution().n, closed.n);
+  EXPECT_EQ(explorer_->scene().solution().z_max_mm, closed.z_max_mm);
+  // The renderer was given the field's cloth: the grid the view uploaded last is a new one.
+  EXPECT_NE(frame().find("Folds from the tension field: n = " + std::to_string(expected.n)),
+            std::string::npos);
+
+  ASSERT_EQ(explorer_->set_view("fold_source", "closed_form"), std::nullopt);
+  settle();
+  EXPECT_FALSE(view.drawn_field_folds());
+  EXPECT_EQ(report().at("fold_source").at("n"), closed.n);
+  EXPECT_EQ(report().at("fold_source").at("z_max_mm").get<double>(), closed.z_max_mm);
+  EXPECT_TRUE(report().at("fold_source").at("words").is_null());
+}
+
+// With the closed form's folds and the field view closed, nothing asks for the field: no request,
+// no Newton step, however the inputs move; Results offers to solve it.
+TEST_F(FoldSourceTest, NoFieldSolveIsRequestedWhileNoViewAsksForIt) {
+  for (const double d : {120.0, 140.0, 160.0}) {
+    ASSERT_EQ(explorer_->set_input("d", d), std::nullopt);
+    frame();
+  }
+  settle();
+  const json view = report().at("field");
+  EXPECT_TRUE(view.at("solving_for").empty()) << view.dump();
+  EXPECT_FALSE(view.at("working").get<bool>());
+  EXPECT_FALSE(view.at("current").get<bool>()) << "a field was requested";
+  EXPECT_FALSE(view.contains("converged")) << "a field was solved";
+  EXPECT_EQ(view.at("slice_ms").get<double>(), 0.0);
+  EXPECT_TRUE(panel<FieldPanel>().consumers().empty());
+  const json results = report().at("results").at("field_column");
+  EXPECT_FALSE(results.at("shown").get<bool>());
+  EXPECT_EQ(results.at("state"), "not_solved");
+
+  // Results' offer opens the field view, which solves it; then the two columns are shown.
+  frame();
+  click("with the tension field");  // the button "compare with the tension field"
+
+  settle();
+  EXPECT_EQ(report().at("field").at("solving_for"), json::array({"view"}));
+  const json column = report().at("results").at("field_column");
+  EXPECT_TRUE(column.at("shown").get<bool>());
+  EXPECT_EQ(column.at("state"), "converged");
+  const field::FieldFolds expected = folds_as_the_command_finds_them(shown());
+  const json& rows = column.at("rows");
+  ASSERT_GE(rows.size(), 3u);
+  EXPECT_EQ(rows[0], json({"n", std::to_string(explorer_->scene().solution().n),
+                           std::to_string(expected.n)}));
+  EXPECT_EQ(rows[2][0], "z_max");
+  EXPECT_EQ(rows[2][2], detail::printf_string("%.1f mm", expected.z_max_mm));
+  EXPECT_EQ(rows.size(),
+            3u + static_cast<std::size_t>(std::max(expected.n, explorer_->scene().solution().n)));
+}
+
+// The fold source alone asks for the field (its view closed): Results shows both columns; before
+// the first solve the field's column says why it has no numbers.
+TEST_F(FoldSourceTest, ResultsShowsTheFieldBesideTheClosedFormForTheFoldSource) {
+  ASSERT_EQ(explorer_->set_view("fold_source", "field"), std::nullopt);
+  frame();
+  frame();
+  settle();
+  EXPECT_FALSE(report().at("field").at("open").get<bool>());
+  EXPECT_EQ(report().at("field").at("solving_for"), json::array({"fold_source"}));
+  const json column = report().at("results").at("field_column");
+  EXPECT_TRUE(column.at("shown").get<bool>());
+  EXPECT_EQ(column.at("state"), "converged");
+  EXPECT_EQ(column.at("rows")[0][0], "n");
+  // Another cut in the field view is not the cloth's: said, and the closed form drawn.
+  ASSERT_EQ(explorer_->set_view("field_cut", "wedge"), std::nullopt);
+  frame();
+  const json other = report();
+  EXPECT_EQ(other.at("fold_source").at("drawn"), "closed_form");
+  EXPECT_EQ(other.at("results").at("field_column").at("state"), "other_cut");
+  EXPECT_EQ(other.at("results").at("field_column").at("rows")[0][2],
+            other.at("results").at("field_column").at("words"));
+}
+
+// The shipped curtain panel carries its own cut: loaded, the field view solves that cut (its
+// area by the shoelace formula over the file's vertices, its three hooks), not the shape's.
+TEST_F(FoldSourceTest, APresetsOwnCutIsTheFieldViewsCut) {
+  const fs::path file = kPresetsDir / "shaped-curtain-curved-hem.json";
+  const json text = json::parse(std::ifstream(file));
+  document().load_preset_file(file);
+  ASSERT_EQ(explorer_->set_view("field", "1"), std::nullopt);
+  settle();
+  const json view = report().at("field");
+  EXPECT_EQ(view.at("cut"), "preset");
+  EXPECT_TRUE(view.at("converged").get<bool>());
+  EXPECT_NEAR(view.at("outline_area_mm2").get<double>(), shoelace_area_mm2(text.at("outline")),
+              1e-9 * shoelace_area_mm2(text.at("outline")));
+  const double weight = text.at("fabric").at("weight_N_per_mm2").get<double>() *
+                        shoelace_area_mm2(text.at("outline"));
+  // The mesh's triangles tile the curved hem's cut within a few parts in 1e5 at 32 cells across
+  // (their weight tends to w times the area as the mesh is refined).
+  EXPECT_NEAR(view.at("weight_N").get<double>(), weight, 1e-4 * weight);
+  ASSERT_EQ(view.at("supports").size(), 3u);
+  for (std::size_t i = 0; i < 3; ++i) {
+    EXPECT_EQ(view.at("supports")[i].at("at_mm"), text.at("outline").at("supports")[i].at("at"));
+    EXPECT_EQ(view.at("supports")[i].at("to_mm"), text.at("outline").at("supports")[i].at("to"));
+  }
+  // Saved under another name, the cut goes with it.
+  const fs::path saved = dir_ / "my-curtain.json";
+  save_preset(preset_to_save(document(), "My curtain"), saved);
+  EXPECT_EQ(json::parse(std::ifstream(saved)).at("outline"), text.at("outline"));
+}
+
+// A preset whose cut hangs from a point inside the cloth is not loaded: the state before is kept
+// and the refusal says which support, as for any preset that does not read.
+TEST_F(FoldSourceTest, APresetWithABadCutIsRefusedAndTheStateKept) {
+  json text = json::parse(std::ifstream(kPresetsDir / "shaped-curtain-curved-hem.json"));
+  text["outline"]["supports"][1]["at"] = {600.0, 700.0};
+  const fs::path bad = dir_ / "hook-inside.json";
+  std::ofstream(bad) << text.dump(2);
+  const std::string before = document().loaded().name;
+  document().load_preset_file(bad);
+  frame();
+  EXPECT_EQ(document().loaded().name, before);
+  EXPECT_FALSE(document().loaded().outline.has_value());
+  EXPECT_NE(status().message().find("/outline: support 2 at (600, 700) mm is off the outline"),
+            std::string::npos)
+      << status().message();
+}
+
+}  // namespace
+}  // namespace foldlab::gui
