@@ -379,7 +379,7 @@ FieldDrawing FieldPanel::drawing_style(const PanelContext& context) const {
 void FieldPanel::controls() {
   ImGui::SetNextItemWidth(ImGui::CalcTextSize("tension").x + 3.0f * ImGui::GetFontSize());
   int colouring = static_cast<int>(colouring_);
-  if (ImGui::Combo("colour by", &colouring, "state\0tension\0")) {
+  if (combo("colour by", &colouring, "state\0tension\0")) {
     colouring_ = static_cast<FieldColouring>(colouring);
   }
   const float cut_width = ImGui::CalcTextSize("as the shape").x + ImGui::GetFrameHeight() +
@@ -387,7 +387,7 @@ void FieldPanel::controls() {
   same_line_if_fits(labelled_width(cut_width, "cut"));
   ImGui::SetNextItemWidth(cut_width);
   int cut = static_cast<int>(cut_);
-  if (ImGui::Combo("cut", &cut, "as the shape\0triangle\0pennant\0wedge\0")) {
+  if (combo("cut", &cut, "as the shape\0triangle\0pennant\0wedge\0")) {
     cut_ = static_cast<FieldCut>(cut);
   }
   same_line_if_fits(checkbox_width("rays"));

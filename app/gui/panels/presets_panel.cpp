@@ -278,6 +278,7 @@ void PresetsPanel::draw_dialogs(Document& document, UiStatus& status) {
 
 void PresetsPanel::draw_list(Document& document, float height_px) {
   if (ImGui::BeginChild("preset list", ImVec2(0.0f, height_px), true)) {
+    begin_touch_rows();
     bool user_header = false;
     for (const Entry& entry : entries_) {
       if (entry.user && !user_header) {
@@ -305,6 +306,7 @@ void PresetsPanel::draw_list(Document& document, float height_px) {
         ImGui::EndTooltip();
       }
     }
+    end_touch_rows();
   }
   ImGui::EndChild();
 }
