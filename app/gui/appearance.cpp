@@ -195,7 +195,10 @@ void Appearance::apply(Renderer& renderer) {
   constexpr float kMouseDoubleClickPx = 6.0f;
   constexpr float kFingerDoubleTapPx = 24.0f;
   if (coarse) {
-    style = touch_style(style, kUiFontPx * scale, kTouchTargetPx * ratio, kTouchRowGapPx * ratio);
+    // The font built, which is ImGui's 13 px one when the TTF is missing.
+    const float font_px =
+        io.Fonts->Fonts.empty() ? kUiFontPx * scale : io.Fonts->Fonts[0]->FontSize;
+    style = touch_style(style, font_px, kTouchTargetPx * ratio, kTouchRowGapPx * ratio);
     io.ConfigFlags |= ImGuiConfigFlags_IsTouchScreen;
     io.MouseDoubleClickMaxDist = kFingerDoubleTapPx * ratio;
   } else {

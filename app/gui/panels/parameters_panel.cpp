@@ -457,7 +457,8 @@ void ParametersPanel::animation_row(Document& document, UiStatus& status,
   ImGui::AlignTextToFramePadding();
   ImGui::TextUnformatted("animate");
   ImGui::SameLine();
-  ImGui::SetNextItemWidth(ems(3.5f));
+  // A symbol's room beside the arrow, which is a frame's height wide (a finger's target).
+  ImGui::SetNextItemWidth(ems(2.0f) + ImGui::GetFrameHeight());
   if (begin_combo("##animated input", animate_key_.c_str())) {
     for (const InputSpec* spec : sliders) {
       if (ImGui::Selectable(slider_label(*spec).c_str(), spec->key == animate_key_) &&
