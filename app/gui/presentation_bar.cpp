@@ -230,12 +230,19 @@ float PresentationBar::draw(PanelContext& context, float top) {
     if (one_view) {
       view_switch(context, layout_, available, view_buttons_);
     }
+    const float headlines_top = ImGui::GetCursorScreenPos().y;
     if (play) {
       // Play and pause, for a lesson that runs an input through its range while the class
       // watches the presented view.
       play_pause(context, parameters, width);
     }
     draw_headlines(headlines);
+    // A button a finger's height is taller than a line of the read-out: what comes under them
+    // starts under the button, not over its foot.
+    const float gap = headlines_top + ImGui::GetFrameHeight() - ImGui::GetCursorScreenPos().y;
+    if (play && gap > 0.0f) {
+      ImGui::Dummy(ImVec2(0.0f, gap));
+    }
     if (strip) {
       parameters.draw_strip(context.document, context.status, available);
     }
