@@ -35,7 +35,11 @@ Headlines fit_headlines(std::vector<std::pair<std::string, ImVec4>> lines, float
     text_width = std::max(text_width, ImGui::CalcTextSize(line.c_str()).x);
   }
   Headlines fitted;
-  fitted.scale = std::clamp(0.98f * available / text_width, 1.0f, kLargestScale);
+  // A phone is read at arm's length, and held sideways it has few lines to give: the picture
+  // keeps them.
+  constexpr float kLargestPhoneScale = 1.5f;
+  const float largest = shows_one_view() ? kLargestPhoneScale : kLargestScale;
+  fitted.scale = std::clamp(0.98f * available / text_width, 1.0f, largest);
   for (auto& [line, colour] : lines) {
     line = wrap_at_spaces(line, available);
     fitted.height += fitted.scale * ImGui::CalcTextSize(line.c_str()).y;

@@ -287,9 +287,11 @@ void PresetsPanel::draw_list(Document& document, float height_px) {
         user_header = true;
       }
       const bool current = entry.path.string() == document.loaded_path();
-      // Wrapped at spaces rather than cut at the list's edge; the id stays the name's.
-      const std::string label =
-          wrap_at_spaces(entry.name, ImGui::GetContentRegionAvail().x) + "##" + entry.name;
+      // Wrapped at spaces rather than cut where the list's window clips it; the id stays the
+      // name's.
+      const float visible =
+          ImGui::GetWindowDrawList()->GetClipRectMax().x - ImGui::GetCursorScreenPos().x;
+      const std::string label = wrap_at_spaces(entry.name, visible) + "##" + entry.name;
       if (ImGui::Selectable(label.c_str(), current)) {
         document.replace_edits("Loading \"" + entry.name + "\" replaces them.",
                                [path = entry.path](Document& d) { d.load_preset_file(path); });

@@ -13,6 +13,11 @@
 #include "core/model/text_format.hpp"
 
 namespace foldlab::gui {
+namespace {
+
+float marker_item_width();
+
+}  // namespace
 
 ImVec4 message_colour(MessageKind kind) {
   switch (kind) {
@@ -244,7 +249,7 @@ void help_marker_and_hint(const char* help, const char* hint) {
   const float spacing = ImGui::GetStyle().ItemSpacing.x;
   const float right_edge = ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x;
   const float hint_width = ImGui::CalcTextSize(hint).x;
-  const float marker_end = ImGui::GetItemRectMax().x + help_marker_width();
+  const float marker_end = ImGui::GetItemRectMax().x + spacing + marker_item_width();
   const float line_start = ImGui::GetWindowPos().x + ImGui::GetStyle().WindowPadding.x;
   if (marker_end + spacing + hint_width <= right_edge || line_start + hint_width <= right_edge) {
     help_marker(help);
@@ -518,15 +523,24 @@ void equation_text(const ImVec4* colour, const char* format, ...) {
   }
 }
 
-float help_marker_width() {
-  const ImGuiStyle& style = ImGui::GetStyle();
+namespace {
+
+// The marker itself: its text for a mouse, a button around it for a finger.
+float marker_item_width() {
   const float text = ImGui::CalcTextSize("(?)").x;
-  return style.ItemSpacing.x + (finger_pointer() ? text + 2.0f * style.FramePadding.x : text);
+  return finger_pointer() ? text + 2.0f * ImGui::GetStyle().FramePadding.x : text;
+}
+
+}  // namespace
+
+float help_marker_width() {
+  // For a mouse as it always was: a space and the text.
+  return finger_pointer() ? ImGui::GetStyle().ItemSpacing.x + marker_item_width()
+                          : ImGui::CalcTextSize(" (?)").x;
 }
 
 void help_marker(const char* text) {
-  const float spacing = ImGui::GetStyle().ItemSpacing.x;
-  same_line_if_fits(help_marker_width() - spacing);  // under its item rather than cut in half
+  same_line_if_fits(marker_item_width());  // under its item rather than cut in half
   if (finger_pointer()) {
     // A target a finger finds; one id per text, since many share the label.
     ImGui::PushID(text);
