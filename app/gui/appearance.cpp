@@ -176,7 +176,9 @@ void Appearance::apply(Renderer& renderer) {
   if (!pending()) {
     return;
   }
-  const float scale = static_cast<float>(scale_percent_) / 100.0f * pixel_ratio_;
+  const float ratio = pixel_ratio();
+  const bool coarse = coarse_pointer();
+  const float scale = static_cast<float>(scale_percent_) / 100.0f * ratio;
   ImGuiIO& io = ImGui::GetIO();
   io.Fonts->Clear();
   notice_.clear();
@@ -192,22 +194,24 @@ void Appearance::apply(Renderer& renderer) {
   // wider, and the screen's pixels are device pixels.
   constexpr float kMouseDoubleClickPx = 6.0f;
   constexpr float kFingerDoubleTapPx = 24.0f;
-  if (coarse_pointer_) {
-    style = touch_style(style, kUiFontPx * scale, kTouchTargetPx * pixel_ratio_,
-                        kTouchRowGapPx * pixel_ratio_);
+  if (coarse) {
+    // The font built, which is ImGui's 13 px one when the TTF is missing.
+    const float font_px =
+        io.Fonts->Fonts.empty() ? kUiFontPx * scale : io.Fonts->Fonts[0]->FontSize;
+    style = touch_style(style, font_px, kTouchTargetPx * ratio, kTouchRowGapPx * ratio);
     io.ConfigFlags |= ImGuiConfigFlags_IsTouchScreen;
-    io.MouseDoubleClickMaxDist = kFingerDoubleTapPx * pixel_ratio_;
+    io.MouseDoubleClickMaxDist = kFingerDoubleTapPx * ratio;
   } else {
     io.ConfigFlags &= ~ImGuiConfigFlags_IsTouchScreen;
-    io.MouseDoubleClickMaxDist = kMouseDoubleClickPx * pixel_ratio_;
+    io.MouseDoubleClickMaxDist = kMouseDoubleClickPx * ratio;
   }
   ImGui::GetStyle() = style;
   renderer.fonts_changed();
   applied_ = true;
   applied_scale_percent_ = scale_percent_;
   applied_light_theme_ = light_theme_;
-  applied_pixel_ratio_ = pixel_ratio_;
-  applied_coarse_pointer_ = coarse_pointer_;
+  applied_pixel_ratio_ = ratio;
+  applied_coarse_pointer_ = coarse;
 }
 
 void Appearance::handle_shortcuts() {
@@ -239,6 +243,16 @@ void Appearance::view_settings(ViewSettings& settings) {
       "scale", {kMinUiScalePercent, kMaxUiScalePercent, " (percent)"}, kEveryUse,
       [this] { return scale_percent_; },
       [this](double percent) { request(static_cast<int>(std::lround(percent)), light_theme_); });
+}
+
+void Appearance::emulation_settings(ViewSettings& settings) {
+  constexpr float kMaxEmulatedRatio = 8.0f;
+  settings.add_number(
+      "device_pixel_ratio", &emulated_pixel_ratio_,
+      ViewRange<float>{0.0f, kMaxEmulatedRatio, " (device pixels per CSS pixel; 0: the screen's)"},
+      kScripted | kReported);
+  static constexpr std::string_view kPointerNames[] = {"screen", "fine", "coarse"};
+  settings.add_choice("pointer", &emulated_pointer_, kPointerNames, kScripted | kReported);
 }
 
 }  // namespace foldlab::gui

@@ -3,6 +3,7 @@
 // background must stay readable on a projector in either theme.
 #pragma once
 
+#include <algorithm>
 #include <filesystem>
 #include <span>
 #include <string>
@@ -137,22 +138,33 @@ class Appearance {
   // device pixels, keeps the layout of a ratio-1 screen with crisp text. Takes effect at the next
   // apply(); kept within 0.25-8.
   void set_pixel_ratio(float ratio);
-  float pixel_ratio() const { return pixel_ratio_; }
+  // The ratio in use: the screen's, or the one `device_pixel_ratio` emulates.
+  float pixel_ratio() const {
+    return emulated_pixel_ratio_ > 0.0f ? std::max(emulated_pixel_ratio_, 0.25f) : pixel_ratio_;
+  }
   // Whether the explorer is worked with fingers (the page's coarse pointer; never on the
   // desktop): then every frame, checkbox and slider is at least kTouchTargetPx tall, rows stand
   // further apart, a double tap may land a finger's width from the first tap, the hints speak
   // of fingers (hint_words: ImGuiConfigFlags_IsTouchScreen) and a slider's drag is finer the
   // farther the finger is from it. Takes effect at the next apply().
   void set_coarse_pointer(bool coarse) { coarse_pointer_ = coarse; }
-  bool coarse_pointer() const { return coarse_pointer_; }
+  bool coarse_pointer() const {
+    return emulated_pointer_ == EmulatedPointer::screen
+               ? coarse_pointer_
+               : emulated_pointer_ == EmulatedPointer::coarse;
+  }
+  // `device_pixel_ratio` and `pointer`: a phone's or a tablet's screen on any other (a laptop
+  // draws what a class's phones show, a test checks it), scripted and reported, never
+  // remembered. A ratio of 0 and the pointer `screen` take the screen's own.
+  void emulation_settings(ViewSettings& settings);
   // Rebuilds the fonts and the style if a request changed them (or on the first call).
   void apply(Renderer& renderer);
   // A request that the next apply() will build: the frame just drawn is laid out with the old
   // fonts.
   bool pending() const {
     return !applied_ || applied_scale_percent_ != scale_percent_ ||
-           applied_light_theme_ != light_theme_ || applied_pixel_ratio_ != pixel_ratio_ ||
-           applied_coarse_pointer_ != coarse_pointer_;
+           applied_light_theme_ != light_theme_ || applied_pixel_ratio_ != pixel_ratio() ||
+           applied_coarse_pointer_ != coarse_pointer();
   }
   // Ctrl + / Ctrl - / Ctrl 0 within a frame: requests the new scale.
   void handle_shortcuts();
@@ -165,6 +177,9 @@ class Appearance {
   int scale_percent_ = kMinUiScalePercent;
   bool light_theme_ = false;
   float pixel_ratio_ = 1.0f;
+  enum class EmulatedPointer { screen, fine, coarse };
+  float emulated_pixel_ratio_ = 0.0f;  // 0: the screen's
+  EmulatedPointer emulated_pointer_ = EmulatedPointer::screen;
   bool applied_ = false;
   float applied_pixel_ratio_ = 1.0f;
   bool coarse_pointer_ = false;

@@ -1,6 +1,7 @@
 #include "app/gui/explorer.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <exception>
 #include <span>
 #include <utility>
@@ -14,10 +15,12 @@
 #include "app/gui/panel_list.hpp"
 #include "app/gui/panels/cloth_view_panel.hpp"
 #include "app/gui/panels/file_dialog.hpp"
+#include "app/gui/panels/widgets.hpp"
 #include "app/gui/presentation_bar.hpp"
 #include "app/gui/session.hpp"
 #include "app/gui/session_keeper.hpp"
 #include "app/gui/surface.hpp"
+#include "core/model/settings.hpp"
 
 namespace foldlab::gui {
 namespace {
@@ -26,6 +29,47 @@ template <class Predicate>
 bool any_panel(const std::vector<std::unique_ptr<Panel>>& panels, Predicate predicate) {
   return std::any_of(panels.begin(), panels.end(),
                      [&](const std::unique_ptr<Panel>& panel) { return predicate(*panel); });
+}
+
+// What changed between two fabrics, in the words a slider reads: "h = 1,500 mm (was 1,400 mm)",
+// or the changed inputs' symbols when there are several. Empty when nothing did.
+std::string changed_inputs_words(const Parameters& before, const Parameters& after) {
+  std::vector<std::string> symbols;
+  std::string one;
+  for (const InputSpec& spec : input_table()) {
+    const std::optional<double> was = spec.value(before);
+    const std::optional<double> now = spec.value(after);
+    if (was && now) {
+      if (*was == *now || (std::isnan(*was) && std::isnan(*now))) {
+        continue;
+      }
+      one = input_title(spec) + " = " + shown_quantity(spec, *now) + " (was " +
+            shown_quantity(spec, *was) + ")";
+    } else if (spec.choice != nullptr) {
+      const std::string_view choice_was = spec.choice(before);
+      const std::string_view choice_now = spec.choice(after);
+      if (choice_was == choice_now) {
+        continue;
+      }
+      one = input_title(spec) + ": " + std::string(choice_now) + " (was " +
+            std::string(choice_was) + ")";
+    } else {
+      continue;
+    }
+    symbols.emplace_back(input_symbol(spec));
+  }
+  if (symbols.size() <= 1) {
+    return symbols.empty() ? std::string() : "Changed " + one;
+  }
+  constexpr std::size_t kNamed = 4;
+  std::string words = "Changed ";
+  for (std::size_t i = 0; i < symbols.size() && i < kNamed; ++i) {
+    words += (i == 0 ? "" : ", ") + symbols[i];
+  }
+  if (symbols.size() > kNamed) {
+    words += " and " + std::to_string(symbols.size() - kNamed) + " more";
+  }
+  return words;
 }
 
 }  // namespace
@@ -78,6 +122,7 @@ void Explorer::declare_view_settings() {
   }
   layout_.view_settings(s);
   appearance_.view_settings(s);
+  appearance_.emulation_settings(s);
   s.add_number_by(
       "grid", {kMinGridResolution, kMaxGridResolution, " (vertices per side)"},
       kScripted | kReported, [this] { return document_.scene().grid_nx(); },
@@ -101,6 +146,10 @@ std::optional<std::string> Explorer::set_input(std::string_view key, double valu
 
 const std::string& Explorer::presented_message() const {
   return presentation_->message();
+}
+
+const std::map<std::string, PanelRect>& Explorer::view_buttons() const {
+  return presentation_->view_buttons();
 }
 
 nlohmann::json Explorer::report() {
@@ -341,6 +390,7 @@ int windows_open(std::span<const std::unique_ptr<Panel>> panels) {
 
 void Explorer::frame() {
   const int open_before = windows_open(panels_);
+  begin_target_tally();
   status_.tick(ImGui::GetTime());
   appearance_.handle_shortcuts();
   PanelContext context = this->context();
@@ -381,6 +431,16 @@ void Explorer::frame() {
   // A drag ends when its widget lets go; an animation when it is paused.
   if (!ImGui::IsAnyItemActive() && !plays_input()) {
     document_.end_step();
+    // A finger hides what it touches, and on a phone the view that shows an input may be another
+    // than the one tapped (a preset chosen under Inputs, a map tapped): every change of the
+    // inputs is said in the toast, over the foot of whatever view is shown.
+    if (appearance_.coarse_pointer() && rest_inputs_) {
+      const std::string said = changed_inputs_words(*rest_inputs_, document_.edited());
+      if (!said.empty()) {
+        status_.toast(said);
+      }
+    }
+    rest_inputs_ = document_.edited();
   }
   session_->keep_when_idle(ImGui::GetTime());
   if (page_link_->follows()) {

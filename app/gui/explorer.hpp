@@ -8,6 +8,7 @@
 
 #include <filesystem>
 #include <functional>
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -105,6 +106,8 @@ class Explorer {
   // The status line as the presentation's read-out showed it at the last frame (empty: none):
   // while a panel is presented the status line, in the Presets panel, is out of sight.
   const std::string& presented_message() const;
+  // Where a phone's row of views drew each view's button at the last frame, by panel key.
+  const std::map<std::string, PanelRect>& view_buttons() const;
   // Every panel, in the order they are drawn (the tiled ones first, in the layout's order).
   const std::vector<std::unique_ptr<Panel>>& panels() const { return panels_; }
   // What every panel reports (each under its own keys) and the reported view settings ("view").
@@ -212,6 +215,8 @@ class Explorer {
   ClothView compare_picture_view_ = kNoClothView;  // B's cloth in pictures of A and B
   bool quit_confirmed_ = false;
   bool window_closed_ = false;  // the last frame closed a floating window or a menu
+  // The inputs when no widget was last active: a finger's change is said against them.
+  std::optional<Parameters> rest_inputs_;
 };
 
 }  // namespace foldlab::gui

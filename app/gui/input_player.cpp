@@ -11,8 +11,13 @@
 #include <string_view>
 #include <unordered_map>
 
+#include <imgui_internal.h>  // the open popups, for a submenu over its parent
+
 #include "app/common/inputs.hpp"
+#include "app/gui/clipped_text.hpp"
+#include "app/gui/drawn_glyphs.hpp"
 #include "app/gui/panels/file_dialog.hpp"
+#include "app/gui/panels/widgets.hpp"
 #include "app/gui/play_script.hpp"
 #include "app/gui/surface.hpp"
 #include "core/analysis/sweep.hpp"
@@ -55,6 +60,9 @@ const json* find_field(const json& report, const std::string& path) {
 }
 
 bool holds(const json& got, const json& wanted) {
+  if (wanted.is_array() && wanted.empty()) {
+    return got == wanted;  // an empty list: "layout.clipped_text": []
+  }
   if (wanted.is_array()) {
     return got.is_number() && got.get<double>() >= wanted[0].get<double>() &&
            got.get<double>() <= wanted[1].get<double>();
@@ -65,45 +73,6 @@ bool holds(const json& got, const json& wanted) {
     return std::abs(a - b) <= 1e-9 * std::max(std::abs(a), std::abs(b));
   }
   return got == wanted;
-}
-
-// The font's glyphs by the texture coordinates of their top-left corner: a glyph's quad in the
-// draw data is recognised by them.
-class GlyphsByUv {
- public:
-  explicit GlyphsByUv(const ImFont& font) {
-    for (const ImFontGlyph& g : font.Glyphs) {
-      if (g.Visible) {
-        by_uv_.emplace(key(g.U0, g.V0), &g);
-      }
-    }
-  }
-
-  const ImFontGlyph* find(const ImVec2& uv) const {
-    const auto found = by_uv_.find(key(uv.x, uv.y));
-    return found == by_uv_.end() ? nullptr : found->second;
-  }
-
- private:
-  static std::uint64_t key(float u, float v) {
-    return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(u * 1e6f)) << 32) |
-           static_cast<std::uint32_t>(v * 1e6f);
-  }
-
-  std::unordered_map<std::uint64_t, const ImFontGlyph*> by_uv_;
-};
-
-void append_utf8(std::string& text, unsigned c) {
-  if (c < 0x80) {
-    text += static_cast<char>(c);
-  } else if (c < 0x800) {
-    text += static_cast<char>(0xC0 | (c >> 6));
-    text += static_cast<char>(0x80 | (c & 0x3F));
-  } else {
-    text += static_cast<char>(0xE0 | (c >> 12));
-    text += static_cast<char>(0x80 | ((c >> 6) & 0x3F));
-    text += static_cast<char>(0x80 | (c & 0x3F));
-  }
 }
 
 // The text one draw list shows, a line break where the baseline moves and a space where a gap
@@ -253,6 +222,31 @@ bool toast_in_window(const Explorer& explorer) {
          rect->pos.x + rect->size.x <= display.x && rect->pos.y + rect->size.y <= display.y;
 }
 
+// The smallest target the last frame gave a finger, in the screen's pixels and in CSS pixels
+// (the page's; on the desktop the two are one).
+json smallest_target_json(Explorer& explorer) {
+  const SmallestTarget& smallest = smallest_target();
+  const float ratio = explorer.appearance().pixel_ratio();
+  return {{"height_px", smallest.height_px},
+          {"height_css_px", ratio > 0.0f ? smallest.height_px / ratio : smallest.height_px},
+          {"what", smallest.what}};
+}
+
+// Whether an open menu covers part of the menu it opened from: a submenu with no room beside its
+// parent (a phone) opens over it, under the finger whose lift then picks what lies there.
+bool submenu_over_parent() {
+  const ImGuiContext& g = *ImGui::GetCurrentContext();
+  for (int i = 1; i < g.OpenPopupStack.Size; ++i) {
+    const ImGuiWindow* parent = g.OpenPopupStack[i - 1].Window;
+    const ImGuiWindow* child = g.OpenPopupStack[i].Window;
+    if (parent != nullptr && child != nullptr && parent->WasActive && child->WasActive &&
+        parent->Rect().Overlaps(child->Rect())) {
+      return true;
+    }
+  }
+  return false;
+}
+
 json layout_json(Explorer& explorer) {
   const std::string presented = explorer.presented();
   json panels = json::object();
@@ -276,8 +270,24 @@ json layout_json(Explorer& explorer) {
         {"window_share",
          window_px2 > 0.0 ? static_cast<double>(rect.size.x) * rect.size.y / window_px2 : 0.0}};
   }
+  json clipped = json::array();
+  const ImDrawData* data = ImGui::GetDrawData();
+  if (data != nullptr && !ImGui::GetIO().Fonts->Fonts.empty()) {
+    for (const ClippedText& item : clipped_text(*data, *ImGui::GetIO().Fonts->Fonts[0])) {
+      clipped.push_back({{"panel", item.panel}, {"text", item.text}, {"how", item.how}});
+    }
+  }
+  json view_buttons = json::object();
+  for (const auto& [name, rect] : explorer.view_buttons()) {
+    view_buttons[name] = {
+        {"x", rect.pos.x}, {"y", rect.pos.y}, {"w", rect.size.x}, {"h", rect.size.y}};
+  }
   return {{"automatic", explorer.layout().automatic()},
           {"drawing_areas", drawing_areas},
+          {"view_buttons", view_buttons},
+          {"submenu_over_parent", submenu_over_parent()},
+          {"clipped_text", clipped},
+          {"smallest_target", smallest_target_json(explorer)},
           {"cramped", explorer.layout().cramped()},
           {"fills_window", explorer.layout().fills_window()},
           {"presented", presented.empty() ? json(nullptr) : json(presented)},

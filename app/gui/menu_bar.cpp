@@ -13,6 +13,7 @@
 #include "app/gui/panels/intro_window.hpp"
 #include "app/gui/panels/parameters_panel.hpp"
 #include "app/gui/panels/stats_overlay.hpp"
+#include "app/gui/panels/widgets.hpp"
 #include "app/gui/presentation_bar.hpp"
 #include "app/gui/view_settings.hpp"
 
@@ -23,12 +24,7 @@ float MenuBar::draw(PanelContext& context) {
   float height = 0.0f;
   // A menu's rows are its text and the item spacing tall: for a finger, as tall as a target
   // (touch_style has made the frames so, and the menu bar is one).
-  const bool finger = (ImGui::GetIO().ConfigFlags & ImGuiConfigFlags_IsTouchScreen) != 0;
-  if (finger) {
-    ImGui::PushStyleVar(
-        ImGuiStyleVar_ItemSpacing,
-        ImVec2(ImGui::GetStyle().ItemSpacing.x, ImGui::GetFrameHeight() - ImGui::GetFontSize()));
-  }
+  begin_touch_rows();
   if (ImGui::BeginMainMenuBar()) {
     height = ImGui::GetWindowHeight();
     if (ImGui::BeginMenu("View")) {
@@ -60,9 +56,7 @@ float MenuBar::draw(PanelContext& context) {
     }
     ImGui::EndMainMenuBar();
   }
-  if (finger) {
-    ImGui::PopStyleVar();
-  }
+  end_touch_rows();
   return height;
 }
 

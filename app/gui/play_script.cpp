@@ -208,13 +208,13 @@ void check_screenshot(const json& step, Problems& problems) {
 void check_expect(const json& step, Problems& problems) {
   const json& arg = step["expect"];
   if (!arg.is_object() || arg.empty()) {
-    problems.push_back("expect needs an object of FIELD.PATH: VALUE or [LO, HI]");
+    problems.push_back("expect needs an object of FIELD.PATH: VALUE, [LO, HI] or [] (empty)");
     return;
   }
   for (const auto& [path, wanted] : arg.items()) {
     const bool range = wanted.is_array() && wanted.size() == 2 && wanted[0].is_number() &&
                        wanted[1].is_number() && wanted[0].get<double>() <= wanted[1].get<double>();
-    if (wanted.is_array() ? !range : wanted.is_object()) {
+    if (wanted.is_array() ? !range && !wanted.empty() : wanted.is_object()) {
       problems.push_back("expect " + detail::cut(path) + ": " + detail::cut(wanted.dump()) +
                          " is neither a value nor [LO, HI] with LO <= HI");
     }

@@ -1,6 +1,7 @@
 #include "app/gui/plot_widget.hpp"
 
 #include "app/gui/appearance.hpp"
+#include "app/gui/panels/widgets.hpp"
 
 #include <imgui_internal.h>  // SetItemUsingMouseWheel: without it the window scrolls as we zoom
 
@@ -584,8 +585,10 @@ bool Plot::begin(const char* id, ImVec2 size, const PlotAxis& x, const PlotAxis&
     wheel_hint_ = true;
   // Keyed to the button's id (not a string) so that two plots in a window get two menus.
   if (ImGui::BeginPopupContextItem(nullptr)) {
+    begin_touch_rows();
     if (ImGui::MenuItem("Autoscale"))
       autoscale_requested_ = true;
+    end_touch_rows();
     ImGui::EndPopup();
   }
 

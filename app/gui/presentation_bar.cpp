@@ -35,7 +35,11 @@ Headlines fit_headlines(std::vector<std::pair<std::string, ImVec4>> lines, float
     text_width = std::max(text_width, ImGui::CalcTextSize(line.c_str()).x);
   }
   Headlines fitted;
-  fitted.scale = std::clamp(0.98f * available / text_width, 1.0f, kLargestScale);
+  // A phone is read at arm's length, and held sideways it has few lines to give: the picture
+  // keeps them.
+  constexpr float kLargestPhoneScale = 1.5f;
+  const float largest = shows_one_view() ? kLargestPhoneScale : kLargestScale;
+  fitted.scale = std::clamp(0.98f * available / text_width, 1.0f, largest);
   for (auto& [line, colour] : lines) {
     line = wrap_at_spaces(line, available);
     fitted.height += fitted.scale * ImGui::CalcTextSize(line.c_str()).y;
@@ -64,18 +68,43 @@ const char* short_view_name(const Panel& panel) {
                               : panel.name();
 }
 
-constexpr int kViewsPerRow = 3;
-
-// The views' buttons, kViewsPerRow to a row as wide as `available`: the presented one disabled.
-void view_switch(PanelContext& context, Layout& layout, float available) {
+// As many of the views' buttons to a row as fit `available` with their names whole: all six on a
+// phone held sideways, three upright (a third of its width each).
+int views_per_row(const PanelContext& context, float available) {
   const float spacing = ImGui::GetStyle().ItemSpacing.x;
-  const float width = (available - (kViewsPerRow - 1) * spacing) / kViewsPerRow;
+  float widest = 0.0f;
+  int views = 0;
+  for (const std::unique_ptr<Panel>& panel : context.panels) {
+    if (Layout::tiled(*panel)) {
+      widest = std::max(widest, button_width(short_view_name(*panel)));
+      ++views;
+    }
+  }
+  for (int per_row = views; per_row > 1; --per_row) {
+    if (static_cast<float>(per_row) * widest + static_cast<float>(per_row - 1) * spacing <=
+        available) {
+      // Rows of equal length: six are two rows of three, not five and one.
+      const int rows = (views + per_row - 1) / per_row;
+      return (views + rows - 1) / rows;
+    }
+  }
+  return 1;
+}
+
+// The views' buttons, in rows as wide as `available`: the presented one disabled. Where each was
+// drawn goes into `drawn`, by its panel's key.
+void view_switch(PanelContext& context, Layout& layout, float available,
+                 std::map<std::string, PanelRect>& drawn) {
+  const float spacing = ImGui::GetStyle().ItemSpacing.x;
+  const int per_row = views_per_row(context, available);
+  const float width =
+      (available - static_cast<float>(per_row - 1) * spacing) / static_cast<float>(per_row);
   int shown = 0;
   for (const std::unique_ptr<Panel>& panel : context.panels) {
     if (!Layout::tiled(*panel)) {
       continue;
     }
-    if (shown % kViewsPerRow != 0) {
+    if (shown % per_row != 0) {
       ImGui::SameLine();
     }
     ++shown;
@@ -83,14 +112,16 @@ void view_switch(PanelContext& context, Layout& layout, float available) {
     if (ImGui::Button(short_view_name(*panel), ImVec2(width, 0.0f))) {
       layout.request_present(panel.get());
     }
+    drawn[panel->key()] = PanelRect{ImGui::GetItemRectMin(), ImGui::GetItemRectSize()};
     ImGui::EndDisabled();
   }
 }
 
-int view_switch_rows(const PanelContext& context) {
+int view_switch_rows(const PanelContext& context, float available) {
   const auto views = std::count_if(context.panels.begin(), context.panels.end(),
                                    [](const auto& panel) { return Layout::tiled(*panel); });
-  return static_cast<int>((views + kViewsPerRow - 1) / kViewsPerRow);
+  const int per_row = views_per_row(context, available);
+  return static_cast<int>((views + per_row - 1) / per_row);
 }
 
 // The play/pause button's words: what it does to which input ("play h", "pause h").
@@ -130,10 +161,15 @@ void play_pause(PanelContext& context, ParametersPanel& parameters, float width)
 }  // namespace
 
 bool shows_one_view() {
+  // A phone upright is narrower than 40 lines (600 CSS px at 100 %), held sideways lower than 30
+  // (450 CSS px): either way six tiles leave each a sliver. A tablet (768 CSS px or more each
+  // way) keeps its tiles.
   constexpr float kLeastTilesWidthLines = 40.0f;
+  constexpr float kLeastTilesHeightLines = 30.0f;
   const ImGuiIO& io = ImGui::GetIO();
   return (io.ConfigFlags & ImGuiConfigFlags_IsTouchScreen) != 0 &&
-         io.DisplaySize.x < kLeastTilesWidthLines * ImGui::GetFontSize();
+         (io.DisplaySize.x < kLeastTilesWidthLines * ImGui::GetFontSize() ||
+          io.DisplaySize.y < kLeastTilesHeightLines * ImGui::GetFontSize());
 }
 
 // The status line under the read-out and the strip (a copied link, a refused file): the Presets
@@ -182,7 +218,7 @@ float PresentationBar::draw(PanelContext& context, float top) {
   }
   const bool one_view = shows_one_view();
   if (one_view) {
-    const int rows = view_switch_rows(context);
+    const int rows = view_switch_rows(context, available);
     text_height += static_cast<float>(rows) * (ImGui::GetFrameHeight() + style.ItemSpacing.y);
   }
   const float height = std::ceil(text_height + 2.0f * style.WindowPadding.y);
@@ -196,14 +232,21 @@ float PresentationBar::draw(PanelContext& context, float top) {
     context.renderer.fill_window_background();
     ImGui::PushTextWrapPos(0.0f);
     if (one_view) {
-      view_switch(context, layout_, available);
+      view_switch(context, layout_, available, view_buttons_);
     }
+    const float headlines_top = ImGui::GetCursorScreenPos().y;
     if (play) {
       // Play and pause, for a lesson that runs an input through its range while the class
       // watches the presented view.
       play_pause(context, parameters, width);
     }
     draw_headlines(headlines);
+    // A button a finger's height is taller than a line of the read-out: what comes under them
+    // starts under the button, not over its foot.
+    const float gap = headlines_top + ImGui::GetFrameHeight() - ImGui::GetCursorScreenPos().y;
+    if (play && gap > 0.0f) {
+      ImGui::Dummy(ImVec2(0.0f, gap));
+    }
     if (strip) {
       parameters.draw_strip(context.document, context.status, available);
     }

@@ -3,6 +3,7 @@
 // which the Presets panel shows out of sight.
 #pragma once
 
+#include <map>
 #include <string>
 
 #include "app/gui/layout.hpp"
@@ -10,8 +11,9 @@
 
 namespace foldlab::gui {
 
-// A phone: a finger on a screen narrower than 40 lines of text are tall (600 CSS px at 100 %),
-// where six tiles squeeze into columns too narrow for their labels. Then the explorer shows one
+// A phone: a finger on a screen narrower than 40 lines of text are tall (600 CSS px at 100 %), or
+// lower than 30 (450 CSS px: a phone held sideways), where six tiles squeeze into columns too
+// narrow, or rows too low, for their labels. Then the explorer shows one
 // view at a time, as presented, with the read-out and the inputs' strip over it and a row of the
 // views under them to switch with a thumb.
 bool shows_one_view();
@@ -26,7 +28,13 @@ class PresentationBar {
   float draw(PanelContext& context, float top);
   // The status line as the bar showed it at the last frame (empty: none).
   const std::string& message() const { return message_; }
-  void clear() { message_.clear(); }
+  // Where the phone's row of views drew each view's button at the last frame, by the panel's key
+  // (none while the tiles or a laptop's presented view are shown).
+  const std::map<std::string, PanelRect>& view_buttons() const { return view_buttons_; }
+  void clear() {
+    message_.clear();
+    view_buttons_.clear();
+  }
 
  private:
   // The status line to show under the read-out and the strip, or "" when it is seen elsewhere.
@@ -34,6 +42,7 @@ class PresentationBar {
 
   Layout& layout_;
   std::string message_;
+  std::map<std::string, PanelRect> view_buttons_;
 };
 
 }  // namespace foldlab::gui

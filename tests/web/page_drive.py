@@ -22,6 +22,11 @@ Checks (each its own ctest):
             moves it a quarter as far, and two fingers scroll a panel
   phone     at 390 x 844 CSS px (ratio 3) with touch: one view at a time, switched by the row of
             views under the read-out; no "Back to the tiles"
+  phone_flows  the phone opened from a link, driven by touch through every view: orbit, pinch,
+            a slider dragged (the toast says so), a long press and typed value; nothing cut or
+            wrapped inside a word, no target below 44 CSS px; then the phone held sideways
+  tablet    1024 x 768 CSS px (ratio 2), touch, from a link: the tiles, a drag, a long press and
+            typed value, orbit, pinch, the fold plot presented and back; nothing cut, targets
   scheme    the theme follows the browser's prefers-color-scheme and the text size its default
             font size, with no stored session
   layout    a tile resized with the mouse (the fold plot's grip) is where it was after a reload
@@ -670,6 +675,171 @@ def check_phone(args, root, problems):
 TOUCH_TARGET_PX = 44
 
 
+def rect_centre_css(rect, ratio):
+    return (rect["x"] + rect["w"] / 2) / ratio, (rect["y"] + rect["h"] / 2) / ratio
+
+
+def check_readable(problems, state, where):
+    """Nothing cut at an edge or wrapped inside a word, and every target a finger's height."""
+    clipped = state["layout"]["clipped_text"]
+    check(problems, clipped == [], f"{where}: text cut or wrapped inside a word: {clipped}")
+    smallest = state["layout"]["smallest_target"]
+    check(problems, smallest["height_css_px"] >= TOUCH_TARGET_PX - 0.5,
+          f"{where}: the smallest target ({smallest['what']}) is {smallest['height_css_px']} "
+          f"CSS px tall, less than a finger's {TOUCH_TARGET_PX}")
+
+
+def drag_slider_by_touch(page, state, key, ratio, problems, where):
+    """A finger's drag 60 CSS px to the right along a slider: its value grows and the toast says
+    so (a finger hides the value it moves)."""
+    field = {"w": "w_N_per_mm2", "h": "h_mm", "t": "t_mm"}[key]
+    before = state["parameters"][field]
+    x, y = slider_css(state, key, ratio)
+    down_s = page.touch("touchStart", [(x, y)])
+    for step in range(1, 6):
+        page.touch("touchMove", [(x + 12 * step, y)], down_s + 0.03 * step)
+        page.settle(1)
+    page.touch("touchEnd", [], down_s + 0.18)
+    state = page.settle()
+    check(problems, state["parameters"][field] > before,
+          f"{where}: a drag to the right on the {key} slider left it at "
+          f"{state['parameters'][field]} (was {before})")
+    check(problems, "(was " in state["toast"],
+          f"{where}: the drag on {key} is not said in the toast: {state['toast']!r}")
+    return state
+
+
+def long_press_and_type(page, state, key, ratio, text, problems, where):
+    """Holding a finger on a slider opens its typed value with the keyboard's field focused; the
+    keyboard's text and Enter set it."""
+    x, y = slider_css(state, key, ratio)
+    page.touch("touchStart", [(x, y)])
+    page.wait_for(f"{where}: the long press on {key}",
+                  "document.activeElement && document.activeElement.id === 'foldlab-keyboard'")
+    page.touch("touchEnd", [])
+    page.settle()
+    page.tools.send("Input.insertText", text=text)
+    page.settle(6)
+    page.tools.send("Input.dispatchKeyEvent", type="rawKeyDown", windowsVirtualKeyCode=13,
+                    key="Enter", code="Enter")
+    page.tools.send("Input.dispatchKeyEvent", type="keyUp", windowsVirtualKeyCode=13,
+                    key="Enter", code="Enter")
+    return page.settle()
+
+
+def orbit_and_pinch(page, state, ratio, problems, where):
+    """One finger across the 3D view's picture turns it; two spreading from 60 to 120 CSS px
+    apart bring it twice as close."""
+    cx, cy = rect_centre_css(state["layout"]["drawing_areas"]["cloth"], ratio)
+    yaw_before = state["camera"]["yaw_rad"]
+    state = page.swipe([(cx + 12 * step, cy) for step in range(6)])
+    check(problems, abs(state["camera"]["yaw_rad"] - yaw_before) > 0.05,
+          f"{where}: a one-finger drag on the 3D view left its yaw at {state['camera']['yaw_rad']}")
+    distance_before = state["camera"]["distance_mm"]
+    down_s = page.touch("touchStart", [(cx - 30, cy), (cx + 30, cy)])
+    for step in range(1, 7):
+        page.touch("touchMove", [(cx - 30 - 5 * step, cy), (cx + 30 + 5 * step, cy)],
+                   down_s + 0.03 * step)
+        page.settle(1)
+    page.touch("touchEnd", [], down_s + 0.21)
+    state = page.settle()
+    zoomed = state["camera"]["distance_mm"] / distance_before
+    check(problems, abs(zoomed - 0.5) < 0.02,
+          f"{where}: a pinch from 60 to 120 px left the distance at {zoomed:.3f}, not 0.5")
+    return state
+
+
+# A link as a teacher sends it: a shipped preset and one input changed.
+LINK_QUERY = "?preset=paper-table1-h1400#h=2000"
+
+
+def check_phone_flows(args, root, problems):
+    """A class's phone (390 x 844 CSS px, ratio 3, touch) opened from a link: the link's fabric,
+    the 3D view orbited and pinched, each view switched to by its button under the read-out, a
+    slider dragged and one typed with a long press; at every step no text cut or wrapped inside
+    a word and no target below a finger's height. Then the same phone held sideways."""
+    ratio = 3
+    page = Page(args, os.path.join(root, "phone_flows"), LINK_QUERY, touch=True,
+                metrics=(390, 844, ratio))
+    try:
+        state = ready(page)
+        check(problems, state["parameters"]["h_mm"] == 2000,
+              f"phone: the link's h = 2000 mm opened as {state['parameters']['h_mm']}")
+        check(problems, state["layout"]["presented"] == "cloth",
+              f"phone: it starts on {state['layout']['presented']}, not the 3D view")
+        check_readable(problems, state, "phone, 3D view")
+        state = orbit_and_pinch(page, state, ratio, problems, "phone")
+        for key in ("fold_plot", "results", "presets", "analysis", "parameters"):
+            state = page.tap(*rect_centre_css(state["layout"]["view_buttons"][key], ratio))
+            check(problems, state["layout"]["presented"] == key,
+                  f"phone: a tap on {key}'s button shows {state['layout']['presented']}")
+            check_readable(problems, state, f"phone, {key}")
+        state = drag_slider_by_touch(page, state, "w", ratio, problems, "phone")
+        state = long_press_and_type(page, state, "t", ratio, "0.05cm", problems, "phone")
+        check(problems, abs(state["parameters"]["t_mm"] - 0.5) < 1e-12,
+              f"phone: 0.05cm typed into t after a long press: t is {state['parameters']['t_mm']}")
+        check_readable(problems, state, "phone, after typing")
+        state = page.tap(*rect_centre_css(state["layout"]["view_buttons"]["cloth"], ratio))
+        check(problems, state["layout"]["presented"] == "cloth",
+              f"phone: back to the 3D view shows {state['layout']['presented']}")
+        if args.keep_screenshots:
+            page.screenshot(os.path.join(args.keep_screenshots, "page-phone-flows.png"))
+    finally:
+        page.close()
+    page = Page(args, os.path.join(root, "phone_sideways"), LINK_QUERY, touch=True,
+                metrics=(844, 390, ratio))
+    try:
+        state = ready(page)
+        check(problems, state["layout"]["presented"] == "cloth",
+              f"phone sideways: {state['layout']['presented']} is shown, not the 3D view alone")
+        check_readable(problems, state, "phone sideways, 3D view")
+        state = page.tap(*rect_centre_css(state["layout"]["view_buttons"]["parameters"], ratio))
+        check(problems, state["layout"]["presented"] == "parameters",
+              f"phone sideways: a tap on Inputs shows {state['layout']['presented']}")
+        check_readable(problems, state, "phone sideways, inputs")
+        if args.keep_screenshots:
+            page.screenshot(os.path.join(args.keep_screenshots, "page-phone-sideways.png"))
+    finally:
+        page.close()
+
+
+def check_tablet(args, root, problems):
+    """A class's tablet (1024 x 768 CSS px, ratio 2, touch) opened from a link: its tiles, a
+    slider dragged and one typed with a long press, the 3D view orbited and pinched, the fold plot
+    presented by its title's button and back; nothing cut, every target a finger's height."""
+    ratio = 2
+    page = Page(args, os.path.join(root, "tablet"), LINK_QUERY, touch=True,
+                metrics=(1024, 768, ratio))
+    try:
+        state = ready(page)
+        check(problems, state["parameters"]["h_mm"] == 2000,
+              f"tablet: the link's h = 2000 mm opened as {state['parameters']['h_mm']}")
+        check(problems, state["layout"]["presented"] is None,
+              f"tablet: {state['layout']['presented']} is presented rather than the tiles")
+        check(problems, not state["layout"]["cramped"], "tablet: the tiles are cramped")
+        check_readable(problems, state, "tablet, tiles")
+        state = drag_slider_by_touch(page, state, "w", ratio, problems, "tablet")
+        state = long_press_and_type(page, state, "t", ratio, "0.05cm", problems, "tablet")
+        check(problems, abs(state["parameters"]["t_mm"] - 0.5) < 1e-12,
+              f"tablet: 0.05cm typed into t after a long press: t is {state['parameters']['t_mm']}")
+        state = orbit_and_pinch(page, state, ratio, problems, "tablet")
+        # The present button: a square as tall as the title bar (a finger's target) at the
+        # title's right end.
+        for wanted in ("fold_plot", None):
+            rect = state["layout"]["panels"]["fold_plot"]
+            x = (rect["x"] + rect["w"]) / ratio - TOUCH_TARGET_PX / 2
+            y = rect["y"] / ratio + TOUCH_TARGET_PX / 2
+            state = page.tap(x, y)
+            check(problems, state["layout"]["presented"] == wanted,
+                  f"tablet: a tap on the fold plot's present button left "
+                  f"{state['layout']['presented']} presented, not {wanted}")
+            check_readable(problems, state, f"tablet, presented {wanted}")
+        if args.keep_screenshots:
+            page.screenshot(os.path.join(args.keep_screenshots, "page-tablet.png"))
+    finally:
+        page.close()
+
+
 def check_scheme(args, root, problems):
     # Chromium has no --force-prefers-color-scheme; Blink's settings set the scheme (0 dark,
     # 1 light; headless Chromium prefers light by itself) and the default font size.
@@ -907,7 +1077,8 @@ def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("--site", required=True)
     parser.add_argument("--check", required=True,
-                        choices=["dpr", "touch", "touch_first", "fingers", "phone", "scheme",
+                        choices=["dpr", "touch", "touch_first", "fingers", "phone", "phone_flows",
+                                 "tablet", "scheme",
                                  "layout", "address", "clipboard", "picture", "regime_map"])
     parser.add_argument("--native", help="the desktop program (regime_map, picture)")
     parser.add_argument("--presets", help="the presets folder (regime_map, picture)")
@@ -918,7 +1089,8 @@ def main():
     started = time.monotonic()
     with browser_folder("foldlab_drive_") as root:
         {"dpr": check_dpr, "touch": check_touch, "touch_first": check_touch_first,
-         "fingers": check_fingers, "phone": check_phone, "scheme": check_scheme,
+         "fingers": check_fingers, "phone": check_phone, "phone_flows": check_phone_flows,
+         "tablet": check_tablet, "scheme": check_scheme,
          "layout": check_layout, "address": check_address, "clipboard": check_clipboard,
          "picture": check_picture,
          "regime_map": check_regime_map}[args.check](

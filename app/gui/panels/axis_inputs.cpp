@@ -50,7 +50,7 @@ std::string shown_value(const std::string& key, double stored) {
 bool key_combo(const char* label, std::string& key) {
   bool changed = false;
   ImGui::SetNextItemWidth(ems(5.0f));
-  if (ImGui::BeginCombo(label, key_symbol(key).c_str())) {
+  if (begin_combo(label, key_symbol(key).c_str())) {
     for (const std::string& option : sweepable_keys()) {
       ImGui::PushID(option.c_str());
       const bool chosen = ImGui::Selectable(key_symbol(option).c_str(), option == key);
@@ -60,7 +60,7 @@ bool key_combo(const char* label, std::string& key) {
         key = option;
       }
     }
-    ImGui::EndCombo();
+    end_combo();
   }
   return changed;
 }

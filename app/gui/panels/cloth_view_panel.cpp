@@ -389,7 +389,7 @@ bool ClothViewPanel::toolbar(PanelContext& context) {
   // As long as the panel leaves room for, beside its label and (?): never cut.
   constexpr const char* kZLabel = "z exaggeration";
   const float z_room = ImGui::GetContentRegionAvail().x - labelled_width(0.0f, kZLabel) -
-                       ImGui::CalcTextSize(" (?)").x - 2.0f * ImGui::GetStyle().ItemSpacing.x;
+                       help_marker_width() - 2.0f * ImGui::GetStyle().ItemSpacing.x;
   ImGui::SetNextItemWidth(std::clamp(z_room, ems(3.0f), ems(12.0f)));
   view_slider(kZLabel, style_.z_exaggeration, kZExaggeration, "x %.1f");
   help_marker(
@@ -397,10 +397,10 @@ bool ClothViewPanel::toolbar(PanelContext& context) {
       "numbers are not changed.");
   ImGui::SetNextItemWidth(ems(7.5f));
   int print = static_cast<int>(style_.print);
-  if (ImGui::Combo("print", &print, "plain\0woven checks\0stripes\0photo\0")) {
+  if (combo("print", &print, "plain\0woven checks\0stripes\0photo\0")) {
     style_.print = static_cast<ClothStyle::Print>(print);
   }
-  same_line_if_fits(labelled_width(colour_field_width(), "colour") + ImGui::CalcTextSize(" (?)").x);
+  same_line_if_fits(labelled_width(colour_field_width(), "colour") + help_marker_width());
   colour_picker(context.document);
   if (style_.print == ClothStyle::Print::photo) {
     same_line_if_fits(ems(13.0f));
@@ -410,7 +410,7 @@ bool ClothViewPanel::toolbar(PanelContext& context) {
       photo_path_ = expand_home(photo_input_).string();
       load_photo(photo_path_);
     }
-    same_line_if_fits(button_width(kBrowseLabel) + ImGui::CalcTextSize(" (?)").x);
+    same_line_if_fits(button_width(kBrowseLabel) + help_marker_width());
     if (small_button(kBrowseLabel)) {
       context.files.open({FileDialog::Mode::open, "Load swatch photo", "", kImageExtensions,
                           [this](const std::filesystem::path& path) {
@@ -453,13 +453,13 @@ bool ClothViewPanel::toolbar(PanelContext& context) {
   same_line_if_fits(labelled_width(ems(6.5f), "colour by"));
   ImGui::SetNextItemWidth(ems(6.5f));
   int colour_by = static_cast<int>(style_.colour_by);
-  if (ImGui::Combo("colour by", &colour_by, "fabric\0z\0fold sign\0")) {
+  if (combo("colour by", &colour_by, "fabric\0z\0fold sign\0")) {
     style_.colour_by = static_cast<ClothStyle::ColourBy>(colour_by);
   }
   same_line_if_fits(labelled_width(ems(8.5f), kFoldsFromLabel) + ImGui::CalcTextSize(" (?)").x);
   ImGui::SetNextItemWidth(ems(8.5f));
   int source = static_cast<int>(fold_source_);
-  if (ImGui::Combo(kFoldsFromLabel, &source, "closed form\0tension field\0")) {
+  if (combo(kFoldsFromLabel, &source, "closed form\0tension field\0")) {
     fold_source_ = static_cast<FoldSource>(source);
   }
   help_marker(

@@ -383,7 +383,7 @@ FieldDrawing FieldPanel::drawing_style(const PanelContext& context) const {
 void FieldPanel::controls() {
   ImGui::SetNextItemWidth(ImGui::CalcTextSize("tension").x + 3.0f * ImGui::GetFontSize());
   int colouring = static_cast<int>(colouring_);
-  if (ImGui::Combo("colour by", &colouring, "state\0tension\0")) {
+  if (combo("colour by", &colouring, "state\0tension\0")) {
     colouring_ = static_cast<FieldColouring>(colouring);
   }
   // A preset with a cut of its own puts it in the shape's place.
@@ -393,9 +393,9 @@ void FieldPanel::controls() {
   same_line_if_fits(labelled_width(cut_width, "cut"));
   ImGui::SetNextItemWidth(cut_width);
   int cut = static_cast<int>(cut_);
-  if (ImGui::Combo("cut", &cut,
-                   preset_cut_ ? "the preset's cut\0triangle\0pennant\0wedge\0"
-                               : "as the shape\0triangle\0pennant\0wedge\0")) {
+  if (combo("cut", &cut,
+            preset_cut_ ? "the preset's cut\0triangle\0pennant\0wedge\0"
+                        : "as the shape\0triangle\0pennant\0wedge\0")) {
     cut_ = static_cast<FieldCut>(cut);
   }
   same_line_if_fits(checkbox_width("rays"));

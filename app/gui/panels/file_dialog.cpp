@@ -362,6 +362,7 @@ void FileDialog::draw_folder(Asked& asked) {
   const float footer_px = 3.0f * ImGui::GetFrameHeightWithSpacing() +
                           (problem_.empty() ? 0.0f : 2.0f * ImGui::GetTextLineHeightWithSpacing());
   if (ImGui::BeginChild("##entries", ImVec2(0.0f, -footer_px), true)) {
+    begin_touch_rows();
     for (const Entry& entry : entries_) {
       const std::string label = entry.folder ? entry.name + "/" : entry.name;
       const bool selected = !entry.folder && entry.name == name_;
@@ -377,6 +378,7 @@ void FileDialog::draw_folder(Asked& asked) {
         }
       }
     }
+    end_touch_rows();
   }
   ImGui::EndChild();
 }

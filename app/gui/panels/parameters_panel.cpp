@@ -69,7 +69,7 @@ std::string trimmed(const char* text) {
 void choice_combo(Document& document, const InputSpec& spec, float width) {
   const std::string current(spec.choice(document.edited()));
   ImGui::SetNextItemWidth(width);
-  if (ImGui::BeginCombo(std::string(spec.name).c_str(), current.c_str())) {
+  if (begin_combo(std::string(spec.name).c_str(), current.c_str())) {
     std::string_view rest = spec.choices;
     while (!rest.empty()) {
       const std::size_t comma = rest.find(',');
@@ -82,7 +82,7 @@ void choice_combo(Document& document, const InputSpec& spec, float width) {
         document.apply(Edit::choose(std::string(spec.key), option));
       }
     }
-    ImGui::EndCombo();
+    end_combo();
   }
   help_marker(std::string(spec.help).c_str());
 }
@@ -92,7 +92,7 @@ void choice_combo(Document& document, const InputSpec& spec, float width) {
 void law_combo(Document& document, float width) {
   const WrinkleLaw& current = wrinkle_law(document.edited().model.law);
   ImGui::SetNextItemWidth(width);
-  if (ImGui::BeginCombo("wrinkle law", std::string(current.title()).c_str())) {
+  if (begin_combo("wrinkle law", std::string(current.title()).c_str())) {
     for (const WrinkleLaw* law : wrinkle_laws()) {
       if (ImGui::Selectable(std::string(law->title()).c_str(), law == &current) &&
           law != &current) {
@@ -101,7 +101,7 @@ void law_combo(Document& document, float width) {
                                      {"p", 1.0}}));
       }
     }
-    ImGui::EndCombo();
+    end_combo();
   }
   help_marker(
       "Which law counts the folds: Conci's critical stress (eq. 7, a ratio Q7 between "
@@ -457,8 +457,9 @@ void ParametersPanel::animation_row(Document& document, UiStatus& status,
   ImGui::AlignTextToFramePadding();
   ImGui::TextUnformatted("animate");
   ImGui::SameLine();
-  ImGui::SetNextItemWidth(ems(3.5f));
-  if (ImGui::BeginCombo("##animated input", animate_key_.c_str())) {
+  // A symbol's room beside the arrow, which is a frame's height wide (a finger's target).
+  ImGui::SetNextItemWidth(ems(2.0f) + ImGui::GetFrameHeight());
+  if (begin_combo("##animated input", animate_key_.c_str())) {
     for (const InputSpec* spec : sliders) {
       if (ImGui::Selectable(slider_label(*spec).c_str(), spec->key == animate_key_) &&
           spec->key != animate_key_) {
@@ -470,7 +471,7 @@ void ParametersPanel::animation_row(Document& document, UiStatus& status,
         playing_ = false;
       }
     }
-    ImGui::EndCombo();
+    end_combo();
   }
   ImGui::SameLine();
   if (ImGui::Button(playing_ ? kPauseLabel : kPlayLabel)) {
@@ -553,7 +554,7 @@ void ParametersPanel::header_rows(Document& document, UiStatus& status) {
     document.reset_to_loaded();
   }
   // On a line of its own in a narrow panel (a large text size) rather than cut.
-  same_line_if_fits(checkbox_width(kExpertLabel) + ImGui::CalcTextSize(" (?)").x);
+  same_line_if_fits(checkbox_width(kExpertLabel) + help_marker_width());
   if (bool expert = status.expert_mode(); ImGui::Checkbox(kExpertLabel, &expert)) {
     status.set_expert_mode(expert);
   }
@@ -594,8 +595,7 @@ float ParametersPanel::longest_label_width(const std::vector<const InputSpec*>& 
     label_width = std::max(label_width, ImGui::CalcTextSize(slider_label(*spec).c_str()).x);
   }
   const ImGuiStyle& style = ImGui::GetStyle();
-  return label_width + ImGui::CalcTextSize(" (?)").x + 2.0f * style.ItemInnerSpacing.x +
-         style.ItemSpacing.x;
+  return label_width + help_marker_width() + 2.0f * style.ItemInnerSpacing.x + style.ItemSpacing.x;
 }
 
 float ParametersPanel::slider_width(const std::vector<const InputSpec*>& sliders) const {

@@ -278,6 +278,7 @@ void PresetsPanel::draw_dialogs(Document& document, UiStatus& status) {
 
 void PresetsPanel::draw_list(Document& document, float height_px) {
   if (ImGui::BeginChild("preset list", ImVec2(0.0f, height_px), true)) {
+    begin_touch_rows();
     bool user_header = false;
     for (const Entry& entry : entries_) {
       if (entry.user && !user_header) {
@@ -286,7 +287,12 @@ void PresetsPanel::draw_list(Document& document, float height_px) {
         user_header = true;
       }
       const bool current = entry.path.string() == document.loaded_path();
-      if (ImGui::Selectable(entry.name.c_str(), current)) {
+      // Wrapped at spaces rather than cut where the list's window clips it; the id stays the
+      // name's.
+      const float visible =
+          ImGui::GetWindowDrawList()->GetClipRectMax().x - ImGui::GetCursorScreenPos().x;
+      const std::string label = wrap_at_spaces(entry.name, visible) + "##" + entry.name;
+      if (ImGui::Selectable(label.c_str(), current)) {
         document.replace_edits("Loading \"" + entry.name + "\" replaces them.",
                                [path = entry.path](Document& d) { d.load_preset_file(path); });
       }
@@ -305,6 +311,7 @@ void PresetsPanel::draw_list(Document& document, float height_px) {
         ImGui::EndTooltip();
       }
     }
+    end_touch_rows();
   }
   ImGui::EndChild();
 }

@@ -205,14 +205,14 @@ bool RegimeMapPanel::controls(const Parameters& current) {
   restart_needed |= range_inputs("y range", y_key_, y_from_, y_to_);
   ImGui::SetNextItemWidth(ems(6.5f));
   static const int sizes[] = {64, 128, 256, 512};
-  if (ImGui::BeginCombo("cells", (std::to_string(resolution_) + "²").c_str())) {
+  if (begin_combo("cells", (std::to_string(resolution_) + "²").c_str())) {
     for (int s : sizes) {
       if (ImGui::Selectable((std::to_string(s) + "²").c_str(), s == resolution_)) {
         restart_needed |= s != resolution_;
         resolution_ = s;
       }
     }
-    ImGui::EndCombo();
+    end_combo();
   }
   same_line_if_fits(checkbox_width("show z_max instead of n"));
   if (ImGui::Checkbox("show z_max instead of n", &show_z_)) {

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdarg>
+#include <cstring>
 #include <span>
 #include <string>
 #include <string_view>
@@ -12,6 +13,11 @@
 #include "core/model/text_format.hpp"
 
 namespace foldlab::gui {
+namespace {
+
+float marker_item_width();
+
+}  // namespace
 
 ImVec4 message_colour(MessageKind kind) {
   switch (kind) {
@@ -123,10 +129,104 @@ bool notched_slider_int(const char* label, int& value, int lo, int hi, const cha
 }
 
 bool small_button(const char* label) {
-  if ((ImGui::GetIO().ConfigFlags & ImGuiConfigFlags_IsTouchScreen) != 0) {
-    return ImGui::Button(label);
+  if (finger_pointer()) {
+    const bool pressed = ImGui::Button(label);
+    note_target(label);
+    return pressed;
   }
   return ImGui::SmallButton(label);
+}
+
+bool finger_pointer() {
+  return (ImGui::GetIO().ConfigFlags & ImGuiConfigFlags_IsTouchScreen) != 0;
+}
+
+namespace {
+
+// The rows begin_touch_rows() pushed a spacing for, innermost last.
+std::vector<bool> touch_rows_pushed;
+
+SmallestTarget tally_now;
+
+}  // namespace
+
+void begin_touch_rows() {
+  const bool push = finger_pointer();
+  if (push) {
+    ImGui::PushStyleVar(
+        ImGuiStyleVar_ItemSpacing,
+        ImVec2(ImGui::GetStyle().ItemSpacing.x, ImGui::GetFrameHeight() - ImGui::GetFontSize()));
+  }
+  touch_rows_pushed.push_back(push);
+  if (push) {
+    note_target_height(ImGui::GetTextLineHeight() + ImGui::GetStyle().ItemSpacing.y,
+                       "rows of lists, combos and menus");
+  }
+}
+
+void end_touch_rows() {
+  if (!touch_rows_pushed.empty()) {
+    if (touch_rows_pushed.back()) {
+      ImGui::PopStyleVar();
+    }
+    touch_rows_pushed.pop_back();
+  }
+}
+
+bool begin_combo(const char* label, const char* preview, ImGuiComboFlags flags) {
+  if (!ImGui::BeginCombo(label, preview, flags)) {
+    return false;
+  }
+  begin_touch_rows();
+  return true;
+}
+
+void end_combo() {
+  end_touch_rows();
+  ImGui::EndCombo();
+}
+
+bool combo(const char* label, int* current, const char* items_zero_separated) {
+  std::vector<const char*> items;
+  for (const char* item = items_zero_separated; *item != '\0'; item += std::strlen(item) + 1) {
+    items.push_back(item);
+  }
+  const bool valid = *current >= 0 && *current < static_cast<int>(items.size());
+  bool changed = false;
+  if (begin_combo(label, valid ? items[static_cast<std::size_t>(*current)] : "")) {
+    for (int i = 0; i < static_cast<int>(items.size()); ++i) {
+      ImGui::PushID(i);
+      if (ImGui::Selectable(items[static_cast<std::size_t>(i)], i == *current) && i != *current) {
+        *current = i;
+        changed = true;
+      }
+      note_target(items[static_cast<std::size_t>(i)]);
+      ImGui::PopID();
+    }
+    end_combo();
+  }
+  return changed;
+}
+
+void begin_target_tally() {
+  tally_now = {};
+  // Every frame a slider, button, checkbox, combo, field or tab draws is this tall.
+  note_target_height(ImGui::GetFrameHeight(), "frames (sliders, buttons, checkboxes, combos)");
+}
+
+void note_target_height(float height_px, std::string_view what) {
+  if (tally_now.what.empty() || height_px < tally_now.height_px) {
+    tally_now = {height_px, std::string(what)};
+  }
+}
+
+void note_target(std::string_view what) {
+  // A selectable's box as ImGui hit-tests it: its row and the spacing it extends over.
+  note_target_height(ImGui::GetItemRectSize().y, what);
+}
+
+const SmallestTarget& smallest_target() {
+  return tally_now;
 }
 
 void hint_after(const char* text) {
@@ -149,7 +249,7 @@ void help_marker_and_hint(const char* help, const char* hint) {
   const float spacing = ImGui::GetStyle().ItemSpacing.x;
   const float right_edge = ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x;
   const float hint_width = ImGui::CalcTextSize(hint).x;
-  const float marker_end = ImGui::GetItemRectMax().x + spacing + ImGui::CalcTextSize("(?)").x;
+  const float marker_end = ImGui::GetItemRectMax().x + spacing + marker_item_width();
   const float line_start = ImGui::GetWindowPos().x + ImGui::GetStyle().WindowPadding.x;
   if (marker_end + spacing + hint_width <= right_edge || line_start + hint_width <= right_edge) {
     help_marker(help);
@@ -423,9 +523,33 @@ void equation_text(const ImVec4* colour, const char* format, ...) {
   }
 }
 
+namespace {
+
+// The marker itself: its text for a mouse, a button around it for a finger.
+float marker_item_width() {
+  const float text = ImGui::CalcTextSize("(?)").x;
+  return finger_pointer() ? text + 2.0f * ImGui::GetStyle().FramePadding.x : text;
+}
+
+}  // namespace
+
+float help_marker_width() {
+  // For a mouse as it always was: a space and the text.
+  return finger_pointer() ? ImGui::GetStyle().ItemSpacing.x + marker_item_width()
+                          : ImGui::CalcTextSize(" (?)").x;
+}
+
 void help_marker(const char* text) {
-  same_line_if_fits(ImGui::CalcTextSize("(?)").x);  // under its item rather than cut in half
-  ImGui::TextDisabled("(?)");
+  same_line_if_fits(marker_item_width());  // under its item rather than cut in half
+  if (finger_pointer()) {
+    // A target a finger finds; one id per text, since many share the label.
+    ImGui::PushID(text);
+    ImGui::Button("(?)");
+    ImGui::PopID();
+    note_target("(?)");
+  } else {
+    ImGui::TextDisabled("(?)");
+  }
   if (ImGui::IsItemHovered()) {
     wrapped_tooltip("%s", readable(text).c_str());
   }

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <functional>
+#include <optional>
 #include <string>
 #include <string_view>
 
@@ -86,7 +87,37 @@ std::string wrap_equation(std::string_view text, float width_px, std::string_vie
 // ImGui::TextUnformatted of wrap_equation at the width left on the line, in `colour` when given.
 [[gnu::format(printf, 2, 3)]] void equation_text(const ImVec4* colour, const char* format, ...);
 
-// A "(?)" after the last item that shows `text` when hovered.
+// A "(?)" after the last item that shows `text` when hovered (for a finger: tapped, and as tall
+// as a target, a button of the frames' height).
 void help_marker(const char* text);
+// The room a help marker takes after its item: the spacing before it and its width.
+float help_marker_width();
+
+// Whether the explorer is worked with fingers now (ImGuiConfigFlags_IsTouchScreen).
+bool finger_pointer();
+// For a finger, the rows of a list, combo or menu stand a target's height apart: ImGui extends a
+// selectable's and a menu item's box over the spacing between rows, so that a row's target is the
+// text and the spacing tall. Call end_touch_rows() after the rows. Nothing for a mouse.
+void begin_touch_rows();
+void end_touch_rows();
+// ImGui::BeginCombo whose open list has rows a target tall for a finger; end_combo() closes it.
+bool begin_combo(const char* label, const char* preview, ImGuiComboFlags flags = 0);
+void end_combo();
+// ImGui::Combo over "a\0b\0c\0" items, through begin_combo.
+bool combo(const char* label, int* current, const char* items_zero_separated);
+
+// The smallest target a finger was given in the frame drawn last (read between frames) (a frame's
+// height for every slider, button, checkbox and combo; the rows of lists, combos and menus; the
+// help markers): its height in the screen's pixels and what it was. note_target() counts the last
+// item.
+struct SmallestTarget {
+  float height_px = 0.0f;
+  std::string what;
+};
+// Called as a frame begins (Explorer::frame).
+void begin_target_tally();
+void note_target(std::string_view what);
+void note_target_height(float height_px, std::string_view what);
+const SmallestTarget& smallest_target();
 
 }  // namespace foldlab::gui
