@@ -157,9 +157,9 @@ void add_scene_options(CLI::App& command, GuiCommandOptions& options) {
           "fills the window); theme=dark|light; scale (UI scale, percent); expert=0|1 (the expert "
           "settings); link_look=0|1 (Copy link sends the theme and text size); page_address "
           "(where the page is served: Copy link gives a web address); device_pixel_ratio (0-8, "
-          "0: the screen's) and pointer=screen|fine|coarse (a phone's or a tablet's screen: "
-          "--size 1170x2532 --view device_pixel_ratio=3 --view pointer=coarse is a 390x844 "
-          "phone)")
+          "0: the screen's), pointer=screen|fine|coarse (with device_pixel_ratio, a phone's or "
+          "a tablet's screen: --size 1170x2532 --view device_pixel_ratio=3 --view "
+          "pointer=coarse is a 390x844 phone)")
       ->type_name("KEY=VALUE");
   command
       .add_option("--print", options.print_path,
