@@ -66,17 +66,27 @@ void MenuBar::cramped_notice(PanelContext& context) {
   const ImGuiStyle& style = ImGui::GetStyle();
   const float menu_width = ImGui::CalcTextSize(kPresentOneViewLabel).x + 2.0f * style.ItemSpacing.x;
   const float room = ImGui::GetWindowWidth() - style.WindowPadding.x - ImGui::GetCursorPosX();
-  const char* words =
-      ImGui::CalcTextSize(kCrampedNotice).x + style.ItemSpacing.x + menu_width <= room
-          ? kCrampedNotice
-          : kCrampedShortNotice;
-  ImGui::PushStyleColor(ImGuiCol_Text, static_cast<ImVec4>(kNoteText));
-  ImGui::TextUnformatted(words);
-  ImGui::PopStyleColor();
-  if (ImGui::IsItemHovered()) {
+  // The longest words that leave the menu whole; none when only the menu fits (its tooltip
+  // says why).
+  const auto fits = [&](const char* text) {
+    return ImGui::CalcTextSize(text).x + style.ItemSpacing.x + menu_width <= room;
+  };
+  const char* words = fits(kCrampedNotice)        ? kCrampedNotice
+                      : fits(kCrampedShortNotice) ? kCrampedShortNotice
+                                                  : nullptr;
+  if (words != nullptr) {
+    ImGui::PushStyleColor(ImGuiCol_Text, static_cast<ImVec4>(kNoteText));
+    ImGui::TextUnformatted(words);
+    ImGui::PopStyleColor();
+    if (ImGui::IsItemHovered()) {
+      ImGui::SetTooltip("%s", kCrampedTooltip);
+    }
+  }
+  const bool opened = ImGui::BeginMenu(kPresentOneViewLabel);
+  if (words == nullptr && ImGui::IsItemHovered() && !opened) {
     ImGui::SetTooltip("%s", kCrampedTooltip);
   }
-  if (ImGui::BeginMenu(kPresentOneViewLabel)) {
+  if (opened) {
     for (const std::unique_ptr<Panel>& panel : context.panels) {
       if (Layout::tiled(*panel) && ImGui::MenuItem(panel->name())) {
         layout_.request_present(panel.get());
