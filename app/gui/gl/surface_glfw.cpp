@@ -118,6 +118,7 @@ class WindowSurface final : public Surface {
   void feed_keys() {
     std::vector<int> changed;
     bool pressed = false;
+    bool clicked = false;
     while (!keys_.empty()) {
       const KeyEvent& e = keys_.front();
       if (e.mouse_button) {
@@ -125,10 +126,13 @@ class WindowSurface final : public Surface {
           break;
         }
         ImGui_ImplGlfw_MouseButtonCallback(window_, e.key, e.action, e.mods);
+        clicked = true;
         keys_.pop_front();
         continue;
       }
-      if (std::find(changed.begin(), changed.end(), e.key) != changed.end() ||
+      // A key after a click waits for the next frame, so that the click is read with the keys
+      // held around it (the page's long press is Ctrl down, click, Ctrl up, in one go).
+      if (clicked || std::find(changed.begin(), changed.end(), e.key) != changed.end() ||
           (pressed && e.action == GLFW_RELEASE)) {
         break;
       }
