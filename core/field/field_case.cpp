@@ -76,13 +76,7 @@ constexpr double kSoftStretch = 1e-4;
 
 Solution solve_cold(Solver& solver, const Outline& outline, const Material& material,
                     const MeshResolution& resolution, const SolveOptions& options) {
-  double top = outline.top_mm.front().y();
-  double bottom = outline.bottom_mm.front().y();
-  for (const Eigen::Vector2d& p : outline.top_mm)
-    top = std::min(top, p.y());
-  for (const Eigen::Vector2d& p : outline.bottom_mm)
-    bottom = std::max(bottom, p.y());
-  const double weight_stress_N_per_mm = material.weight_N_per_mm2 * (bottom - top);
+  const double weight_stress_N_per_mm = material.weight_N_per_mm2 * outline.height_mm();
   const double stretch = weight_stress_N_per_mm / material.stiffness_N_per_mm;
   if (!(stretch > 0.0) || stretch >= kStiffStretch) {
     return solve_ladder(solver, outline, material, resolution, options);

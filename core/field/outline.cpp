@@ -186,6 +186,18 @@ double cosine_bottom_depth_mm(const Parameters& p) {
   return p.hanging.height_mm + cosine_top_depth_mm(p);
 }
 
+double Outline::height_mm() const {
+  double top = top_mm.front().y();
+  double bottom = bottom_mm.front().y();
+  for (const Eigen::Vector2d& p : top_mm) {
+    top = std::min(top, p.y());
+  }
+  for (const Eigen::Vector2d& p : bottom_mm) {
+    bottom = std::max(bottom, p.y());
+  }
+  return bottom - top;
+}
+
 Outline make_outline(const Parameters& p, OutlineKind kind) {
   const double h = p.hanging.height_mm;
   const double L = p.hanging.length_mm;

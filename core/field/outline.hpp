@@ -38,6 +38,8 @@ struct Outline {
   double bottom_y_mm(double x_mm) const;
   double left_mm() const { return top_mm.front().x(); }
   double right_mm() const { return top_mm.back().x(); }
+  // The cut's height, from its highest top point to its lowest bottom point (y down).
+  double height_mm() const;
   double area_mm2() const;
 
   bool operator==(const Outline&) const = default;

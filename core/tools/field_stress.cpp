@@ -186,14 +186,8 @@ nlohmann::json case_json(const FieldStressCase& c) {
 }  // namespace
 
 int field_view_rows(const field::Outline& outline, int cells_x) {
-  double top = outline.top_mm.front().y();
-  double bottom = outline.bottom_mm.front().y();
-  for (const Eigen::Vector2d& p : outline.top_mm)
-    top = std::min(top, p.y());
-  for (const Eigen::Vector2d& p : outline.bottom_mm)
-    bottom = std::max(bottom, p.y());
   const double width = std::max(1e-9, outline.right_mm() - outline.left_mm());
-  return std::clamp(static_cast<int>(std::lround(cells_x * (bottom - top) / width)), 4,
+  return std::clamp(static_cast<int>(std::lround(cells_x * outline.height_mm() / width)), 4,
                     2 * cells_x);
 }
 
