@@ -27,6 +27,7 @@
 #include <nlohmann/json.hpp>
 #include "core/io/measurements.hpp"
 #include "json_output.hpp"
+#include "outline_area.hpp"
 #include "process.hpp"
 #include "temp_dir.hpp"
 
@@ -2055,23 +2056,8 @@ TEST_F(CliTest, FieldOutlineFileSolvesOrIsRefusedByName) {
 TEST_F(CliTest, FieldSolvesAPresetsOwnCutAndRefusesABadOne) {
   const json file = json::parse(std::ifstream(kPresetsDir / "shaped-curtain-curved-hem.json"));
   const json& outline = file.at("outline");
-  // Round the cut: the top edge left to right, then the bottom edge right to left.
-  std::vector<std::pair<double, double>> ring;
-  for (const json& v : outline.at("top")) {
-    ring.emplace_back(v[0].get<double>(), v[1].get<double>());
-  }
-  const json& bottom = outline.at("bottom");
-  for (std::size_t i = bottom.size(); i-- > 0;) {
-    ring.emplace_back(bottom[i][0].get<double>(), bottom[i][1].get<double>());
-  }
-  double twice_area = 0.0;
-  for (std::size_t i = 0; i < ring.size(); ++i) {
-    const auto& [x0, y0] = ring[i];
-    const auto& [x1, y1] = ring[(i + 1) % ring.size()];
-    twice_area += x0 * y1 - x1 * y0;
-  }
-  const double weight =
-      file.at("fabric").at("weight_N_per_mm2").get<double>() * 0.5 * std::abs(twice_area);
+  const double weight = file.at("fabric").at("weight_N_per_mm2").get<double>() *
+                        foldlab::testing::shoelace_area_mm2(outline);
 
   const RunResult r = run({"field", "--preset", "shaped-curtain-curved-hem", "--json"});
   ASSERT_EQ(r.exit_status, 0) << r.err;

@@ -3,6 +3,7 @@
 // a preset's own cut in the field view. The expected folds come from the core calls `foldlab
 // field --json` makes (mesh, cold solve, field_folds), never from the panels.
 #include "explorer_fixture.hpp"
+#include "outline_area.hpp"
 
 #include "app/gui/panels/field_panel.hpp"
 #include "core/field/field_case.hpp"
@@ -38,24 +39,7 @@ field::FieldFolds folds_as_the_command_finds_them(const Parameters& p) {
   return field::field_folds(solver.mesh(), solution, field::support_targets(outline), p);
 }
 
-// The area of a cut by the shoelace formula: round the top edge left to right, back along the
-// bottom edge right to left.
-double shoelace_area_mm2(const json& outline) {
-  std::vector<std::pair<double, double>> ring;
-  for (const json& v : outline.at("top")) {
-    ring.emplace_back(v[0].get<double>(), v[1].get<double>());
-  }
-  const json& bottom = outline.at("bottom");
-  for (std::size_t i = bottom.size(); i-- > 0;) {
-    ring.emplace_back(bottom[i][0].get<double>(), bottom[i][1].get<double>());
-  }
-  double twice = 0.0;
-  for (std::size_t i = 0; i < ring.size(); ++i) {
-    twice += ring[i].first * ring[(i + 1) % ring.size()].second -
-             ring[(i + 1) % ring.size()].first * ring[i].second;
-  }
-  return 0.5 * std::abs(twice);
-}
+using foldlab::testing::shoelace_area_mm2;
 
 class FoldSourceTest : public ExplorerTest {
  protected:
