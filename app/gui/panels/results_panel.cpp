@@ -205,7 +205,7 @@ constexpr std::string_view kFieldStateNames[] = {"not_solved", "solving",   "not
 void ResultsPanel::draw_field_column(PanelContext& context) {
   Document& document = context.document;
   FieldPanel& field_view = context.panel<FieldPanel>();
-  const FieldFoldsNow now = field_view.folds_now(document);
+  const FieldFoldsNow now = field_view.folds_now(context);
   field_column_shown_ = !field_view.consumers().empty();
   field_state_ = kFieldStateNames[static_cast<std::size_t>(now.state)];
   field_words_ = now.words;
