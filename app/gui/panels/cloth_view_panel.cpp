@@ -182,7 +182,9 @@ Scene& ClothViewPanel::scene_to_draw(PanelContext& context) {
     folds = now.previous;
     drawn_from_ = DrawnFolds::previous_field;
     fold_words_ = detail::printf_string(
-        "Folds from the tension field of the previous inputs: n = %d, z_max = %.0f mm (%s).",
+        "Folds from the tension field of the previous inputs: n = %d, z_max = %.0f mm; the field "
+        "of "
+        "these inputs: %s",
         folds->n, folds->z_max_mm, now.words.c_str());
     fold_words_warn_ = true;
   } else if (now.state != FieldFoldsNow::State::converged) {
