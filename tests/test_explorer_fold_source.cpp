@@ -277,8 +277,32 @@ TEST_F(FoldSourceTest, TheColourBarAndCaptionGiveTheFoldsDrawn) {
   EXPECT_NE(numbers.find("(folds from the tension field)"), std::string::npos) << numbers;
   EXPECT_EQ(numbers.find("n = " + std::to_string(closed.n)), std::string::npos) << numbers;
 
+  // Presented, the read-out over the view gives them too. Its large text is read back glyph by
+  // glyph with gaps of its own: compared without any spaces.
+  const auto squeezed = [](std::string text) {
+    std::string out;
+    for (std::size_t i = 0; i < text.size(); ++i) {
+      if (text.compare(i, 2, "\u00A0") == 0) {
+        ++i;
+      } else if (text[i] != ' ' && text[i] != '\n') {
+        out += text[i];
+      }
+    }
+    return out;
+  };
+  ASSERT_EQ(explorer_->set_view("present", "cloth"), std::nullopt);
+  settle();
+  std::string text = squeezed(frame());
+  EXPECT_NE(text.find(detail::printf_string("n=%dQ=%.4fz_max=%.2fmm(foldsfromthetensionfield)",
+                                            expected.n, expected.Q, expected.z_max_mm)),
+            std::string::npos)
+      << text;
+
   ASSERT_EQ(explorer_->set_view("fold_source", "closed_form"), std::nullopt);
   settle();
+  text = squeezed(frame());
+  EXPECT_NE(text.find(detail::printf_string("n=%d", closed.n)), std::string::npos) << text;
+  EXPECT_EQ(text.find("tensionfield"), std::string::npos) << text;
   bar = report().at("fold_source").at("colour_bar");
   EXPECT_EQ(bar.at("title"), "z");
   EXPECT_EQ(bar.at("z_max_mm").get<double>(), closed.z_max_mm);

@@ -192,7 +192,6 @@ Scene& ClothViewPanel::scene_to_draw(PanelContext& context) {
     fold_words_ = "Folds from the tension field: " + now.words +
                   "; the closed form's folds are drawn meanwhile.";
     fold_words_warn_ = true;
-    ++frames_drawn_[static_cast<std::size_t>(drawn_from_)];
     return closed;
   } else {
     drawn_from_ = DrawnFolds::field;
@@ -201,7 +200,6 @@ Scene& ClothViewPanel::scene_to_draw(PanelContext& context) {
         "n = %d, z_max = %.0f mm).",
         folds->n, folds->Q, folds->z_max_mm, closed.solution().n, closed.solution().z_max_mm);
   }
-  ++frames_drawn_[static_cast<std::size_t>(drawn_from_)];
   field_scene_.set_parameters(closed.parameters());
   field_scene_.set_grid_resolution(closed.grid_nx(), closed.grid_ny());
   field_scene_.set_folds(FoldOverride{folds->n, folds->Q, folds->z_max_mm, folds->a_mm});
@@ -618,6 +616,9 @@ void ClothViewPanel::draw(PanelContext& context) {
   // Chosen before the view's area is measured: the line saying where the folds come from takes
   // its room above the view.
   Scene& drawn = scene_to_draw(context);
+  if (fold_source_ == FoldSource::field) {
+    ++frames_drawn_[static_cast<std::size_t>(drawn_from_)];
+  }
   fold_source_line();
   // The view follows the theme: a light page gets a light backdrop.
   const bool light = style_is_light();

@@ -88,6 +88,11 @@ class ClothViewPanel : public Panel {
   // Whose folds A's cloth was drawn with at the last frame, in words for a caption ("folds from
   // the tension field"); empty for the closed form's.
   const char* drawn_folds_words() const;
+  // The scene to draw A's cloth from this frame: the document's, or one with the field's folds
+  // when they are chosen and converged (or, while the field of these inputs is being solved, the
+  // last converged field's); sets what the view says of the fold source. The read-out over the
+  // presented view asks before the view draws.
+  Scene& scene_to_draw(PanelContext& context);
   // Whether the settings above the view are folded behind a "settings..." button.
   bool toolbar_folded() const { return toolbar_row_.folded(); }
 
@@ -107,9 +112,6 @@ class ClothViewPanel : public Panel {
   static float colour_bar_width();
   void draw_colour_bar(ImVec2 min, float width, float height, double z_max_mm);
   void follow_the_cloth(Document& document, bool reset, bool hold);
-  // The scene to draw A's cloth from: the document's, or field_scene_ with the field's folds when
-  // they are chosen and converged; sets fold_words_ to what the view says of the fold source.
-  Scene& scene_to_draw(PanelContext& context);
   void fold_source_line() const;
 
   ClothStyle style_;
