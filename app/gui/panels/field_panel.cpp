@@ -533,6 +533,8 @@ void FieldPanel::prepare(PanelContext& context) {
   if (folds_asked_) {
     consumers_.emplace_back("fold_source");
   }
+  view_solving_ = false;
+  cloth_solving_ = false;
   if (consumers_.empty()) {
     return;  // nobody asks: nothing is solved
   }
@@ -558,15 +560,16 @@ void FieldPanel::prepare(PanelContext& context) {
     }
     solve_slice(solve, cut, context, moving, std::max(0.0, budget_ms - solve.slice_ms));
   };
-  const bool view_solves = open_ || cut_ == FieldCut::shape;
-  if (view_solves) {
+  view_solving_ = open_ || cut_ == FieldCut::shape;
+  cloth_solving_ = folds_asked_ && cut_ != FieldCut::shape;
+  if (view_solving_) {
     slice(view_solve_, cut_);
   }
-  if (folds_asked_ && cut_ != FieldCut::shape) {
+  if (cloth_solving_) {
     slice(cloth_solve_, FieldCut::shape);
   }
-  slice_ms_ = (view_solves ? view_solve_.slice_ms : 0.0) +
-              (folds_asked_ && cut_ != FieldCut::shape ? cloth_solve_.slice_ms : 0.0);
+  slice_ms_ =
+      (view_solving_ ? view_solve_.slice_ms : 0.0) + (cloth_solving_ ? cloth_solve_.slice_ms : 0.0);
 }
 
 void FieldPanel::end_frame(PanelContext& /*context*/) {

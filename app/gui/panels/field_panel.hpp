@@ -107,7 +107,8 @@ class FieldPanel : public Panel {
   // While a field is being solved, and while the one on show is the coarse mesh of a move: the
   // frame loop keeps drawing until the finer one is shown, though nothing else moves.
   bool busy() const override {
-    return !consumers_.empty() && (live_.working() || cloth_solve_.live.working() || coarse_);
+    return !consumers_.empty() && ((view_solving_ && live_.working()) ||
+                                   (cloth_solving_ && cloth_solve_.live.working()) || coarse_);
   }
   // Forgets who asked for the field this frame (ask_for_folds).
   void end_frame(PanelContext& context) override;
@@ -203,6 +204,10 @@ class FieldPanel : public Panel {
   // shows another: each solved only while it is asked for.
   FieldSolve view_solve_;
   FieldSolve cloth_solve_;
+  // Which of them the last frame solved: one left unfinished when no longer asked for keeps no
+  // frame busy.
+  bool view_solving_ = false;
+  bool cloth_solving_ = false;
   // The view's field by the names its drawing reads.
   field::LiveField& live_ = view_solve_.live;
   std::string& cut_refusal_ = view_solve_.cut_refusal;
