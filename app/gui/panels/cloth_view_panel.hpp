@@ -40,7 +40,9 @@ class ClothViewPanel : public Panel {
   // Asks the tension field panel to solve the field while the folds come from it.
   void begin_frame(PanelContext& context) override;
   // "camera", the renderer's counters of A's and B's cloth ("renderer") and "fold_source": the
-  // source chosen, the one drawn, the drawn n, Q, z_max and a_i, and what the view says of it.
+  // source chosen, the one drawn ("closed_form", "field", "previous_field"), the drawn n, Q, z_max
+  // and a_i, what the view says of it, the frames drawn by each while the field's folds are
+  // chosen ("frames") and the colour bar's title and z_max ("colour_bar", null when not shown).
   void report(nlohmann::json& state, PanelContext& context) const override;
   // The cloth, and A and B side by side.
   static constexpr PictureOffer kPictures[] = {
