@@ -26,6 +26,7 @@
 #include "app/gui/input_player.hpp"
 #include "app/gui/key_latency.hpp"
 #include "app/gui/panels/analysis_panel.hpp"
+#include "app/gui/panels/cloth_view_panel.hpp"
 #include "app/gui/renderer.hpp"
 #include "app/gui/screen.hpp"
 #include "app/gui/scripted_run.hpp"
@@ -674,6 +675,16 @@ int run_picture(const GuiRunOptions& options, const std::filesystem::path& out,
   }
   if (inputs.b) {
     explorer.document().compare().pin(*inputs.b);
+  }
+  // The 3D view's folds from the tension field are the folds it has drawn: a picture of it draws
+  // the view until it has drawn them (one frame at rest, when the field converges), or until the
+  // field has given up and the view says so.
+  const ClothViewPanel& cloth = find_panel<ClothViewPanel>(explorer.panels());
+  if (spec.view == PictureView::cloth && cloth.fold_source() == FoldSource::field) {
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(30);
+    while (run.frame() && cloth.drawn_field_folds() == std::nullopt && explorer.busy() &&
+           std::chrono::steady_clock::now() < deadline) {
+    }
   }
   explorer.write_picture(out, spec);
   return app::kExitOk;

@@ -347,13 +347,22 @@ namespace {
 // its inputs.
 void add_caption(std::vector<std::string>& lines, const std::string& letter,
                  const std::string& name, const Parameters& parameters, const Solution& solution,
-                 const ModelStanding& standing) {
+                 const ModelStanding& standing, std::string_view source_words = {}) {
   const std::string shown = detail::caption_text(name);
   std::string head = letter.empty() ? shown : letter + ": " + shown;
   if (!head.empty()) {
     lines.push_back(head);
   }
-  lines.push_back(headline(quantity_texts(solution, standing)));
+  // The closed form's prediction ranges bracket its own values, not the field's.
+  ModelStanding shown_standing = standing;
+  if (!source_words.empty()) {
+    shown_standing.range.reset();
+  }
+  std::string numbers = headline(quantity_texts(solution, shown_standing));
+  if (!source_words.empty()) {
+    numbers += " (" + std::string(source_words) + ")";
+  }
+  lines.push_back(numbers);
   std::string inputs;
   // The cloth inputs, in the Parameters panel's order.
   for (const InputSpec* spec : cloth_inputs()) {
@@ -370,21 +379,35 @@ void add_caption(std::vector<std::string>& lines, const std::string& letter,
 
 }  // namespace
 
-std::vector<std::string> picture_caption(Document& document, bool with_b) {
+std::vector<std::string> picture_caption(Document& document, bool with_b, const Solution* drawn,
+                                         std::string_view drawn_words) {
   Scene& scene = document.scene();
   const Preset& loaded = document.loaded();
   std::vector<std::string> lines;
   Comparison& compare = document.compare();
   with_b = with_b && compare.pinned();
   add_caption(lines, with_b ? "A" : "", with_b ? fabric_label(document) : loaded.name,
-              scene.parameters(), scene.solution(),
-              model_standing(scene.parameters(), loaded.calibration, scene.solution()));
+              scene.parameters(), drawn != nullptr ? *drawn : scene.solution(),
+              model_standing(scene.parameters(), loaded.calibration, scene.solution()),
+              drawn != nullptr ? drawn_words : std::string_view());
   if (with_b) {
     const Preset& b = compare.b();
     add_caption(lines, "B", b.name, b.parameters, compare.scene(scene.grid_nx()).solution(),
                 compare.standing());
   }
   return lines;
+}
+
+std::vector<std::string> picture_caption(const PictureSource& source, const PictureSpec& spec) {
+  if (!spec.caption) {
+    return {};
+  }
+  const bool with_b = spec.view == PictureView::compare || spec.view == PictureView::sweep;
+  // A's cloth drawn with the field's folds is captioned with them.
+  const Solution* drawn = spec.view == PictureView::cloth && source.cloth_scene != nullptr
+                              ? &source.cloth_scene->solution()
+                              : nullptr;
+  return picture_caption(source.document, with_b, drawn, source.cloth_scene_words);
 }
 
 std::optional<std::string> picture_problem(const PictureSource& source, const PictureSpec& spec) {
@@ -416,9 +439,7 @@ std::vector<std::uint8_t> draw_picture(Renderer& renderer, const PictureSource& 
   if (std::optional<std::string> problem = picture_problem(source, spec)) {
     throw SurfaceError(*problem);
   }
-  const bool with_b = spec.view == PictureView::compare || spec.view == PictureView::sweep;
-  const std::vector<std::string> caption =
-      spec.caption ? picture_caption(source.document, with_b) : std::vector<std::string>{};
+  const std::vector<std::string> caption = picture_caption(source, spec);
   const PictureContext context(spec.size, source.font_file,
                                spec.background != PictureBackground::dark);
   Plot plot;
@@ -442,7 +463,8 @@ PictureSource picture_source(Document& document, std::span<const std::unique_ptr
       &find_panel<AnalysisPanel>(panels).sweep(),
       compare_cloth_view,
       panels,
-      cloth.drawn_field_scene()};
+      cloth.drawn_field_scene(),
+      cloth.drawn_folds_words()};
 }
 
 }  // namespace foldlab::gui

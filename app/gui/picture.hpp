@@ -69,7 +69,11 @@ float picture_line_width_px(FrameSize size);
 // The caption's lines: the fabric's name with n, Q and z_max (with the ranges Results shows),
 // then the inputs in the units the explorer shows them (t mm, E MPa, w g/m², h, L, d mm). With
 // `with_b` (B pinned), A's lines and then B's, each name after its letter.
-std::vector<std::string> picture_caption(Document& document, bool with_b = false);
+// `drawn`: the solution A's cloth was drawn with when not the closed form's (the tension field's
+// folds), said in `drawn_words` after its n, Q and z_max.
+std::vector<std::string> picture_caption(Document& document, bool with_b = false,
+                                         const Solution* drawn = nullptr,
+                                         std::string_view drawn_words = {});
 
 // What a picture is drawn from: the explorer's document and its 3D view.
 struct PictureSource {
@@ -87,7 +91,13 @@ struct PictureSource {
   // The scene the 3D view drew A's cloth from when it was not the document's (the tension
   // field's folds), so that its picture shows the same cloth; null: the document's.
   Scene* cloth_scene = nullptr;
+  // Whose folds cloth_scene has, for the caption: "folds from the tension field".
+  std::string cloth_scene_words;
 };
+
+// The caption `spec` asks for (none without spec.caption): a cloth picture drawn from the field's
+// folds (source.cloth_scene) gives their n, Q and z_max and says whose they are.
+std::vector<std::string> picture_caption(const PictureSource& source, const PictureSpec& spec);
 
 // The source the explorer's panels give: the 3D view's style and camera once it has framed the
 // cloth (until then, framed as it would be), and the Sweep tab.

@@ -10,6 +10,7 @@
 
 #include <imgui.h>
 
+#include "app/gui/panels/cloth_view_panel.hpp"
 #include "app/gui/panels/parameters_panel.hpp"
 #include "app/gui/panels/presets_panel.hpp"
 #include "app/gui/panels/results_panel.hpp"
@@ -202,8 +203,21 @@ float PresentationBar::draw(PanelContext& context, float top) {
   const bool presents_parameters = layout_.presented() == &parameters;
   const bool play = !presents_parameters;
   const float play_room = play ? play_button_width(parameters) + style.ItemSpacing.x : 0.0f;
-  const Headlines headlines = fit_headlines(
-      context.panel<ResultsPanel>().headlines(context.document), available - play_room);
+  // The presented 3D view drawn with the field's folds is read out with them: its scene for this
+  // frame, the field brought up to date first.
+  const Solution* drawn = nullptr;
+  std::string drawn_words;
+  ClothViewPanel& cloth = context.panel<ClothViewPanel>();
+  if (layout_.presented() == &cloth) {
+    Scene& scene = cloth.scene_to_draw(context);
+    if (&scene != &context.document.scene()) {
+      drawn = &scene.solution();
+      drawn_words = cloth.drawn_folds_words();
+    }
+  }
+  const Headlines headlines =
+      fit_headlines(context.panel<ResultsPanel>().headlines(context.document, drawn, drawn_words),
+                    available - play_room);
   const bool strip = layout_.presents_inputs() && !presents_parameters;
   message_ = message_for_presented(context, strip);
   float text_height = std::max(headlines.height, play ? ImGui::GetFrameHeight() : 0.0f);

@@ -31,7 +31,9 @@ bool ScriptedRun::wants_frame(int frame, const Explorer& explorer) {
   if (frames_ == 0) {
     return true;
   }
-  if (frame + 1 == frames_ + extra_frames_ && explorer.busy() &&
+  // An input played every frame keeps a view that follows it busy for good: the run is its
+  // frames, not the 30 s of waiting for a rest that does not come.
+  if (frame + 1 == frames_ + extra_frames_ && !animation_ && explorer.busy() &&
       std::chrono::steady_clock::now() < deadline_) {
     ++extra_frames_;
   }

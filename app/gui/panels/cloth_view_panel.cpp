@@ -37,6 +37,8 @@ constexpr ViewRange<float> kPrintMm{10.0f, 300.0f, " mm"};
 constexpr std::string_view kPrintNames[] = {"plain", "checks", "stripes", "photo"};
 constexpr std::string_view kColourByNames[] = {"none", "z", "fold_sign"};
 constexpr std::string_view kFoldSourceNames[] = {"closed_form", "field"};
+// As ClothViewPanel::DrawnFolds.
+constexpr std::string_view kDrawnFoldsNames[] = {"closed_form", "field", "previous_field"};
 
 constexpr const char* kFoldsFromLabel = "folds from";
 
@@ -166,29 +168,57 @@ Scene& ClothViewPanel::scene_to_draw(PanelContext& context) {
   fold_words_.clear();
   fold_words_warn_ = false;
   drawn_field_folds_.reset();
+  drawn_from_ = DrawnFolds::closed_form;
   if (fold_source_ == FoldSource::closed_form) {
     return closed;
   }
-  const FieldFoldsNow now = context.panel<FieldPanel>().folds_now(context.document);
-  if (now.state != FieldFoldsNow::State::converged) {
+  // Brought up to date for this frame's inputs before the view draws: the field's folds of the
+  // inputs on show, not of the last frame's.
+  const FieldFoldsNow now = context.panel<FieldPanel>().folds_now(context);
+  const field::FieldFolds* folds = now.folds;
+  if (now.state == FieldFoldsNow::State::solving && now.previous != nullptr) {
+    // The frame's slice ran out before the field of these inputs converged: the last field that
+    // did stands in, said to be of the inputs before.
+    folds = now.previous;
+    drawn_from_ = DrawnFolds::previous_field;
+    fold_words_ = detail::printf_string(
+        "Folds from the tension field of the previous inputs: n = %d, z_max = %.0f mm; the field "
+        "of "
+        "these inputs: %s",
+        folds->n, folds->z_max_mm, now.words.c_str());
+    fold_words_warn_ = true;
+  } else if (now.state != FieldFoldsNow::State::converged) {
     // Never a field that has not converged as if it had: the closed form's folds stand in.
     fold_words_ = "Folds from the tension field: " + now.words +
                   "; the closed form's folds are drawn meanwhile.";
     fold_words_warn_ = true;
     return closed;
+  } else {
+    drawn_from_ = DrawnFolds::field;
+    fold_words_ = detail::printf_string(
+        "Folds from the tension field: n = %d, Q = %.3f, z_max = %.0f mm (the closed form's: "
+        "n = %d, z_max = %.0f mm).",
+        folds->n, folds->Q, folds->z_max_mm, closed.solution().n, closed.solution().z_max_mm);
   }
-  const field::FieldFolds& folds = *now.folds;
   field_scene_.set_parameters(closed.parameters());
   field_scene_.set_grid_resolution(closed.grid_nx(), closed.grid_ny());
-  field_scene_.set_folds(FoldOverride{folds.n, folds.Q, folds.z_max_mm, folds.a_mm});
-  fold_words_ = detail::printf_string(
-      "Folds from the tension field: n = %d, Q = %.3f, z_max = %.0f mm (the closed form's: "
-      "n = %d, z_max = %.0f mm).",
-      folds.n, folds.Q, folds.z_max_mm, closed.solution().n, closed.solution().z_max_mm);
+  field_scene_.set_folds(FoldOverride{folds->n, folds->Q, folds->z_max_mm, folds->a_mm});
   // As the scene draws them, which is what the report says was drawn.
   const Solution& drawn = field_scene_.solution();
   drawn_field_folds_ = FoldOverride{drawn.n, drawn.Q, drawn.z_max_mm, drawn.a_mm};
   return field_scene_;
+}
+
+const char* ClothViewPanel::drawn_folds_words() const {
+  switch (drawn_from_) {
+    case DrawnFolds::field:
+      return "folds from the tension field";
+    case DrawnFolds::previous_field:
+      return "folds from the tension field of the previous inputs";
+    case DrawnFolds::closed_form:
+      break;
+  }
+  return "";
 }
 
 void ClothViewPanel::fold_source_line() const {
@@ -202,9 +232,19 @@ void ClothViewPanel::fold_source_line() const {
 
 void ClothViewPanel::report(json& state, PanelContext& context) const {
   {
-    json source = {{"source", std::string(kFoldSourceNames[static_cast<std::size_t>(fold_source_)])},
-                   {"drawn", drawn_field_folds_ ? "field" : "closed_form"},
-                   {"words", fold_words_.empty() ? json(nullptr) : json(fold_words_)}};
+    json source = {
+        {"source", std::string(kFoldSourceNames[static_cast<std::size_t>(fold_source_)])},
+        {"drawn", std::string(kDrawnFoldsNames[static_cast<std::size_t>(drawn_from_)])},
+        {"words", fold_words_.empty() ? json(nullptr) : json(fold_words_)}};
+    // Frames drawn while the field's folds were chosen, by the folds each was drawn with.
+    json frames = json::object();
+    for (std::size_t i = 0; i < frames_drawn_.size(); ++i) {
+      frames[std::string(kDrawnFoldsNames[i])] = frames_drawn_[i];
+    }
+    source["frames"] = std::move(frames);
+    source["colour_bar"] =
+        colour_bar_drawn_ ? json{{"title", colour_bar_title_}, {"z_max_mm", colour_bar_z_max_mm_}}
+                          : json(nullptr);
     const auto folds = [&](int n, double Q, double z_max_mm, const std::vector<double>& a_mm) {
       source["n"] = n;
       source["Q"] = Q;
@@ -253,13 +293,28 @@ float ClothViewPanel::colour_bar_width() {
 }
 
 // Beside the view, as Polyscope shows a scalar quantity's map: the colours from +z_max (top)
-// to -z_max with their values, or the two fold signs.
-void ClothViewPanel::draw_colour_bar(ImVec2 min, float height, double z_max_mm) const {
+// to -z_max with their values, or the two fold signs; under the title, whose folds they are when
+// not the closed form's.
+void ClothViewPanel::draw_colour_bar(ImVec2 min, float width, float height, double z_max_mm) {
   ImDrawList* draw = ImGui::GetWindowDrawList();
   const float x0 = min.x + 6.0f;
   const float x1 = x0 + 14.0f;
-  const float top = min.y + 24.0f;
-  const float bottom = min.y + std::max(height - 24.0f, 48.0f);
+  colour_bar_title_ = style_.colour_by == ClothStyle::ColourBy::z ? "z" : "fold";
+  switch (drawn_from_) {
+    case DrawnFolds::field:
+      colour_bar_title_ += "\ntension field";
+      break;
+    case DrawnFolds::previous_field:
+      colour_bar_title_ += "\ntension field, previous inputs";
+      break;
+    case DrawnFolds::closed_form:
+      break;
+  }
+  colour_bar_z_max_mm_ = z_max_mm;
+  const std::string title = wrap_at_spaces(colour_bar_title_, width - 8.0f);
+  const float title_height = ImGui::CalcTextSize(title.c_str()).y;
+  const float top = min.y + 8.0f + title_height;
+  const float bottom = min.y + std::max(height - 24.0f, top - min.y + 48.0f);
   const ImU32 text = ImGui::GetColorU32(ImGuiCol_Text);
   const auto to_u32 = [](const Eigen::Vector3f& c) {
     return ImGui::ColorConvertFloat4ToU32(ImVec4(c.x(), c.y(), c.z(), 1.0f));
@@ -279,7 +334,7 @@ void ClothViewPanel::draw_colour_bar(ImVec2 min, float height, double z_max_mm) 
     }
     const std::string high = detail::printf_string("+%.1f mm", z_max_mm);
     const std::string low = detail::printf_string("-%.1f mm", z_max_mm);
-    draw->AddText(ImVec2(x0, min.y + 4.0f), text, "z");
+    draw->AddText(ImVec2(x0, min.y + 4.0f), text, title.c_str());
     draw->AddText(ImVec2(label_x, top), text, high.c_str());
     draw->AddText(ImVec2(label_x, 0.5f * (top + bottom) - 0.5f * line), text, "0");
     draw->AddText(ImVec2(label_x, bottom - line), text, low.c_str());
@@ -288,7 +343,7 @@ void ClothViewPanel::draw_colour_bar(ImVec2 min, float height, double z_max_mm) 
     draw->AddRectFilled(ImVec2(x0, top), ImVec2(x1, middle), to_u32(style_.positive_fold_colour));
     draw->AddRectFilled(ImVec2(x0, middle), ImVec2(x1, bottom),
                         to_u32(style_.negative_fold_colour));
-    draw->AddText(ImVec2(x0, min.y + 4.0f), text, "fold");
+    draw->AddText(ImVec2(x0, min.y + 4.0f), text, title.c_str());
     draw->AddText(ImVec2(label_x, 0.5f * (top + middle) - 0.5f * line), text, "z > 0");
     draw->AddText(ImVec2(label_x, 0.5f * (middle + bottom) - 0.5f * line), text, "z < 0");
   }
@@ -561,6 +616,9 @@ void ClothViewPanel::draw(PanelContext& context) {
   // Chosen before the view's area is measured: the line saying where the folds come from takes
   // its room above the view.
   Scene& drawn = scene_to_draw(context);
+  if (fold_source_ == FoldSource::field) {
+    ++frames_drawn_[static_cast<std::size_t>(drawn_from_)];
+  }
   fold_source_line();
   // The view follows the theme: a light page gets a light backdrop.
   const bool light = style_is_light();
@@ -613,8 +671,9 @@ void ClothViewPanel::draw(PanelContext& context) {
   if (compare) {
     name_halves(document, draw, origin, size, area);
   }
-  if (bar_width > 0.0f) {
-    draw_colour_bar(ImVec2(origin.x + static_cast<float>(area.width), origin.y),
+  colour_bar_drawn_ = bar_width > 0.0f;
+  if (colour_bar_drawn_) {
+    draw_colour_bar(ImVec2(origin.x + static_cast<float>(area.width), origin.y), bar_width,
                     static_cast<float>(area.height), drawn.solution().z_max_mm);
   }
   ImGui::End();

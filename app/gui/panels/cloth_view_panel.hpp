@@ -3,6 +3,7 @@
 // moves the camera it follows the cloth, so a slider never drags the cloth out of view.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -39,7 +40,9 @@ class ClothViewPanel : public Panel {
   // Asks the tension field panel to solve the field while the folds come from it.
   void begin_frame(PanelContext& context) override;
   // "camera", the renderer's counters of A's and B's cloth ("renderer") and "fold_source": the
-  // source chosen, the one drawn, the drawn n, Q, z_max and a_i, and what the view says of it.
+  // source chosen, the one drawn ("closed_form", "field", "previous_field"), the drawn n, Q, z_max
+  // and a_i, what the view says of it, the frames drawn by each while the field's folds are
+  // chosen ("frames") and the colour bar's title and z_max ("colour_bar", null when not shown).
   void report(nlohmann::json& state, PanelContext& context) const override;
   // The cloth, and A and B side by side.
   static constexpr PictureOffer kPictures[] = {
@@ -84,6 +87,14 @@ class ClothViewPanel : public Panel {
   const std::optional<FoldOverride>& drawn_field_folds() const { return drawn_field_folds_; }
   // The scene with the field's folds while the view draws it, for its pictures; else null.
   Scene* drawn_field_scene() { return drawn_field_folds_ ? &field_scene_ : nullptr; }
+  // Whose folds A's cloth was drawn with at the last frame, in words for a caption ("folds from
+  // the tension field"); empty for the closed form's.
+  const char* drawn_folds_words() const;
+  // The scene to draw A's cloth from this frame: the document's, or one with the field's folds
+  // when they are chosen and converged (or, while the field of these inputs is being solved, the
+  // last converged field's); sets what the view says of the fold source. The read-out over the
+  // presented view asks before the view draws.
+  Scene& scene_to_draw(PanelContext& context);
   // Whether the settings above the view are folded behind a "settings..." button.
   bool toolbar_folded() const { return toolbar_row_.folded(); }
 
@@ -101,17 +112,23 @@ class ClothViewPanel : public Panel {
   // Loads a swatch photo as the print; the problem (also shown in the panel), if any.
   std::optional<std::string> load_photo(const std::string& path);
   static float colour_bar_width();
-  void draw_colour_bar(ImVec2 min, float height, double z_max_mm) const;
+  void draw_colour_bar(ImVec2 min, float width, float height, double z_max_mm);
   void follow_the_cloth(Document& document, bool reset, bool hold);
-  // The scene to draw A's cloth from: the document's, or field_scene_ with the field's folds when
-  // they are chosen and converged; sets fold_words_ to what the view says of the fold source.
-  Scene& scene_to_draw(PanelContext& context);
   void fold_source_line() const;
 
   ClothStyle style_;
   FoldSource fold_source_ = FoldSource::closed_form;
   Scene field_scene_;  // the document's inputs with the field's folds
   std::optional<FoldOverride> drawn_field_folds_;
+  // Whose folds A's cloth was drawn with at the last frame.
+  enum class DrawnFolds { closed_form, field, previous_field };
+  DrawnFolds drawn_from_ = DrawnFolds::closed_form;
+  // Frames drawn while the field's folds were chosen, by DrawnFolds.
+  std::array<std::uint64_t, 3> frames_drawn_{};
+  // The colour bar's title and top value as last drawn, for the report.
+  bool colour_bar_drawn_ = false;
+  std::string colour_bar_title_;
+  double colour_bar_z_max_mm_ = 0.0;
   std::string fold_words_;        // empty with the closed form chosen
   bool fold_words_warn_ = false;  // the field's folds were asked for and are not drawn
   OrbitCamera camera_;

@@ -475,25 +475,71 @@ void FieldPanel::canvas(PanelContext& context) {
   draw.PopClipRect();
 }
 
-void FieldPanel::update_folds(const Parameters& parameters) {
-  const field::SolvedField* shown = live_.shown();
+void FieldPanel::update_folds(FieldSolve& solve, const Parameters& parameters) {
+  const field::SolvedField* shown = solve.live.shown();
   if (shown == nullptr) {
-    folds_.reset();
+    solve.folds.reset();
     return;
   }
-  if (!folds_ || folds_of_ != live_.shown_count() || !folds_parameters_ ||
-      !(*folds_parameters_ == parameters)) {
-    folds_of_ = live_.shown_count();
-    folds_parameters_ = parameters;
-    folds_ = field::field_folds(shown->mesh, shown->report.solution,
-                                field::support_targets(shown->inputs.outline), parameters);
+  // A field of other inputs than those shown is read by its own inputs' law: its folds are those
+  // it had when it converged, drawn as the previous inputs' folds.
+  const Parameters& law =
+      solve.live.current() || !solve.shown_parameters ? parameters : *solve.shown_parameters;
+  if (!solve.folds || solve.folds_of != solve.live.shown_count() || !solve.folds_parameters ||
+      !(*solve.folds_parameters == law)) {
+    solve.folds_of = solve.live.shown_count();
+    solve.folds_parameters = law;
+    solve.folds = field::field_folds(shown->mesh, shown->report.solution,
+                                     field::support_targets(shown->inputs.outline), law);
   }
 }
 
-void FieldPanel::solve_slice(PanelContext& context) {
+void FieldPanel::solve_slice(FieldSolve& solve, FieldCut cut, PanelContext& context, bool moving,
+                             double budget_ms) {
+  const Parameters& parameters = context.document.scene().parameters();
+  const int cells = moving ? std::max(static_cast<int>(kCells.lo), cells_ / 2) : cells_;
+  const std::optional<field::Outline>& own = context.document.loaded().outline;
+  solve.own_cut = cut == FieldCut::shape && own.has_value();
+  solve.requested_parameters = parameters;
+  try {
+    solve.live.request(field_inputs(parameters, cells, cut, own ? &*own : nullptr));
+    solve.cut_refusal.clear();
+  } catch (const field::OutlineError& e) {
+    // The last field stays on show, marked as of other inputs.
+    solve.cut_refusal = std::string("This cut cannot be solved: ") + e.what();
+  }
+  const auto began = std::chrono::steady_clock::now();
+  if (budget_ms > 0.0 && solve.live.step(budget_ms)) {
+    solve.shown_parameters = parameters;
+  }
+  solve.slice_ms +=
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - began).count();
+  update_folds(solve, parameters);
+}
+
+void FieldPanel::prepare(PanelContext& context) {
+  const Parameters& parameters = context.document.scene().parameters();
+  const int frame = ImGui::GetFrameCount();
+  const bool again = prepared_frame_ == frame;
+  if (again && prepared_parameters_ && *prepared_parameters_ == parameters) {
+    return;
+  }
+  prepared_frame_ = frame;
+  prepared_parameters_ = parameters;
+  consumers_.clear();
+  if (open_) {
+    consumers_.emplace_back("view");
+  }
+  if (folds_asked_) {
+    consumers_.emplace_back("fold_source");
+  }
+  view_solving_ = false;
+  cloth_solving_ = false;
+  if (consumers_.empty()) {
+    return;  // nobody asks: nothing is solved
+  }
   // While a value moves (dragged, nudged, played, animated) and a moment after, a coarser mesh
   // keeps up with the hand; the finer one follows when it rests.
-  const Parameters& parameters = context.document.scene().parameters();
   const double now_s = ImGui::GetTime();
   if (!last_parameters_ || !(*last_parameters_ == parameters)) {
     if (last_parameters_) {
@@ -503,81 +549,83 @@ void FieldPanel::solve_slice(PanelContext& context) {
   }
   const bool moving = context.holding_frame || now_s - last_change_s_ < kRestS;
   coarse_ = moving;
-  const int cells = moving ? std::max(static_cast<int>(kCells.lo), cells_ / 2) : cells_;
-  const std::optional<field::Outline>& own = context.document.loaded().outline;
-  preset_cut_ = own.has_value();
-  own_cut_ = cut_ == FieldCut::shape && preset_cut_;
-  requested_parameters_ = parameters;
-  try {
-    live_.request(field_inputs(parameters, cells, cut_, own ? &*own : nullptr));
-    cut_refusal_.clear();
-  } catch (const field::OutlineError& e) {
-    // The last field stays on show, marked as of other inputs.
-    cut_refusal_ = std::string("This cut cannot be solved: ") + e.what();
-  }
+  preset_cut_ = context.document.loaded().outline.has_value();
   // A share of the frame while a value moves, so that the drag stays smooth; more at rest, when
-  // nothing else moves and the finer mesh is wanted soon.
-  const auto began = std::chrono::steady_clock::now();
-  live_.step(moving ? 6.0 : 25.0);
+  // nothing else moves and the finer mesh is wanted soon. Each solve asked for has its own: two
+  // cost twice the time only while the view shows another cut than the cloth's.
+  const double budget_ms = moving ? 6.0 : 25.0;
+  const auto slice = [&](FieldSolve& solve, FieldCut cut) {
+    if (!again) {
+      solve.slice_ms = 0.0;
+    }
+    solve_slice(solve, cut, context, moving, std::max(0.0, budget_ms - solve.slice_ms));
+  };
+  view_solving_ = open_ || cut_ == FieldCut::shape;
+  cloth_solving_ = folds_asked_ && cut_ != FieldCut::shape;
+  if (view_solving_) {
+    slice(view_solve_, cut_);
+  }
+  if (cloth_solving_) {
+    slice(cloth_solve_, FieldCut::shape);
+  }
   slice_ms_ =
-      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - began).count();
-  update_folds(parameters);
+      (view_solving_ ? view_solve_.slice_ms : 0.0) + (cloth_solving_ ? cloth_solve_.slice_ms : 0.0);
 }
 
 void FieldPanel::end_frame(PanelContext& /*context*/) {
   folds_asked_ = false;
 }
 
-FieldFoldsNow FieldPanel::folds_now(const Document& document) const {
+FieldFoldsNow FieldPanel::folds_now(PanelContext& context) {
+  prepare(context);
+  const Parameters& parameters = context.document.scene().parameters();
   FieldFoldsNow now;
-  now.residual = live_.residual();
   if (consumers_.empty()) {
     now.words = "not solved";
     return now;
   }
-  if (cut_ != FieldCut::shape) {
+  if (cut_ != FieldCut::shape && !folds_asked_) {
     now.state = FieldFoldsNow::State::other_cut;
     now.words =
         "the tension field view shows another cut than the cloth's (set its cut to "
         "\"as the shape\")";
     return now;
   }
-  const std::string& refusal = cut_refusal_.empty() ? live_.refusal() : cut_refusal_;
+  const FieldSolve& solve = fold_solve();
+  now.residual = solve.live.residual();
+  const std::string& refusal = solve.cut_refusal.empty() ? solve.live.refusal() : solve.cut_refusal;
   if (!refusal.empty()) {
     // LiveField says a solve that gave up in these words; any other refusal is the cut's.
-    const bool gave_up = cut_refusal_.empty() && refusal.starts_with("the field did not converge");
+    const bool gave_up =
+        solve.cut_refusal.empty() && refusal.starts_with("the field did not converge");
     now.state = gave_up ? FieldFoldsNow::State::not_converged : FieldFoldsNow::State::refused;
     now.words =
         gave_up ? detail::printf_string("not converged (residual %.1e)", now.residual) : refusal;
     return now;
   }
-  if (!live_.current() || !requested_parameters_ ||
-      !(*requested_parameters_ == document.scene().parameters()) || !folds_ || !folds_parameters_ ||
-      !(*folds_parameters_ == document.scene().parameters())) {
+  if (!solve.live.current() || !solve.requested_parameters ||
+      !(*solve.requested_parameters == parameters) || !solve.folds || !solve.folds_parameters ||
+      !(*solve.folds_parameters == parameters)) {
     now.state = FieldFoldsNow::State::solving;
-    now.words = live_.shown() == nullptr || live_.iterations() == 0
+    now.words = solve.live.shown() == nullptr || solve.live.iterations() == 0
                     ? std::string("solving...")
                     : detail::printf_string("solving... (residual %.0e)", now.residual);
+    if (solve.folds && solve.folds_of == solve.live.shown_count()) {
+      now.previous = &*solve.folds;
+    }
     return now;
   }
   now.state = FieldFoldsNow::State::converged;
-  now.folds = &*folds_;
+  now.folds = &*solve.folds;
   return now;
 }
 
 void FieldPanel::draw(PanelContext& context) {
-  consumers_.clear();
-  if (open_) {
-    consumers_.emplace_back("view");
-  }
-  if (folds_asked_) {
-    consumers_.emplace_back("fold_source");
-  }
+  prepare(context);
   if (consumers_.empty()) {
     was_open_ = false;
-    return;  // nobody asks: nothing is solved
+    return;
   }
-  solve_slice(context);
   if (!open_) {
     was_open_ = false;
     return;
@@ -622,46 +670,65 @@ void FieldPanel::draw(PanelContext& context) {
   ImGui::End();
 }
 
+namespace {
+
+// What the report says of one solve: its state and the field on show.
+void describe_solve(json& out, const FieldSolve& solve) {
+  out["current"] = solve.live.current();
+  out["working"] = solve.live.working();
+  const std::string& refusal = solve.cut_refusal.empty() ? solve.live.refusal() : solve.cut_refusal;
+  out["refusal"] = refusal.empty() ? json(nullptr) : json(refusal);
+  const field::SolvedField* shown = solve.live.shown();
+  if (shown == nullptr) {
+    return;
+  }
+  const field::Solution& s = shown->report.solution;
+  out["converged"] = s.converged;
+  out["relative_residual"] = s.relative_residual;
+  out["iterations"] = s.iterations;
+  out["mesh"] = {{"cells_x", shown->inputs.resolution.cells_x},
+                 {"cells_y", shown->inputs.resolution.cells_y},
+                 {"triangles", shown->mesh.triangles.size()}};
+  out["regions"] = {
+      {"taut", s.taut_share}, {"wrinkled", s.wrinkled_share}, {"slack", s.slack_share}};
+  out["weight_N"] = s.weight_N;
+  out["thrust_N"] = shown->report.thrust_N;
+  out["pencil_thrust_N"] = shown->report.pencil_thrust_N;
+  out["supports"] = json::array();
+  for (std::size_t i = 0; i < s.reactions_N.size(); ++i) {
+    const field::Support& support = shown->inputs.outline.supports[i];
+    out["supports"].push_back({{"at_mm", {support.at_mm.x(), support.at_mm.y()}},
+                               {"to_mm", {support.to_mm.x(), support.to_mm.y()}},
+                               {"reaction_N", {s.reactions_N[i].x(), s.reactions_N[i].y()}}});
+  }
+  out["rays"] = shown->report.rays.size();
+  out["outline_area_mm2"] = shown->inputs.outline.area_mm2();
+  if (solve.folds && solve.folds_of == solve.live.shown_count()) {
+    // The a_i too: a test compares them with the 3D view's.
+    out["folds"] = {{"n", solve.folds->n},
+                    {"Q", solve.folds->Q},
+                    {"z_max_mm", solve.folds->z_max_mm},
+                    {"a_mm", solve.folds->a_mm}};
+  }
+}
+
+}  // namespace
+
 void FieldPanel::report(json& state, PanelContext& /*context*/) const {
   json out;
   out["open"] = open_;
-  out["current"] = live_.current();
-  out["working"] = live_.working();
   out["slice_ms"] = slice_ms_;
   out["solving_for"] = consumers_;
-  out["cut"] = own_cut_ ? "preset" : std::string(kCutNames[static_cast<int>(cut_)]);
-  const std::string& refusal = cut_refusal_.empty() ? live_.refusal() : cut_refusal_;
-  out["refusal"] = refusal.empty() ? json(nullptr) : json(refusal);
-  if (const field::SolvedField* shown = live_.shown()) {
-    const field::Solution& s = shown->report.solution;
-    out["converged"] = s.converged;
-    out["relative_residual"] = s.relative_residual;
-    out["iterations"] = s.iterations;
-    out["mesh"] = {{"cells_x", shown->inputs.resolution.cells_x},
-                   {"cells_y", shown->inputs.resolution.cells_y},
-                   {"triangles", shown->mesh.triangles.size()}};
-    out["regions"] = {
-        {"taut", s.taut_share}, {"wrinkled", s.wrinkled_share}, {"slack", s.slack_share}};
-    out["weight_N"] = s.weight_N;
-    out["thrust_N"] = shown->report.thrust_N;
-    out["pencil_thrust_N"] = shown->report.pencil_thrust_N;
-    out["supports"] = json::array();
-    for (std::size_t i = 0; i < s.reactions_N.size(); ++i) {
-      const field::Support& support = shown->inputs.outline.supports[i];
-      out["supports"].push_back({{"at_mm", {support.at_mm.x(), support.at_mm.y()}},
-                                 {"to_mm", {support.to_mm.x(), support.to_mm.y()}},
-                                 {"reaction_N", {s.reactions_N[i].x(), s.reactions_N[i].y()}}});
-    }
-    out["rays"] = shown->report.rays.size();
-    out["outline_area_mm2"] = shown->inputs.outline.area_mm2();
-    if (folds_ && folds_of_ == live_.shown_count()) {
-      // The a_i too: a test compares them with the 3D view's.
-      out["folds"] = {{"n", folds_->n},
-                      {"Q", folds_->Q},
-                      {"z_max_mm", folds_->z_max_mm},
-                      {"a_mm", folds_->a_mm}};
-    }
+  out["cut"] = view_solve_.own_cut ? "preset" : std::string(kCutNames[static_cast<int>(cut_)]);
+  describe_solve(out, view_solve_);
+  json cloth = nullptr;
+  if (cut_ != FieldCut::shape &&
+      (cloth_solve_.live.shown() != nullptr || cloth_solve_.live.working())) {
+    cloth = json::object();
+    cloth["cut"] = cloth_solve_.own_cut ? "preset" : "shape";
+    describe_solve(cloth, cloth_solve_);
   }
+  out["fold_source_solve"] = std::move(cloth);
   state["field"] = out;
 }
 

@@ -5,6 +5,7 @@
 // refines when the hand rests. Closed, it solves nothing.
 #pragma once
 
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <string>
@@ -58,17 +59,42 @@ struct FieldFoldsNow {
     solving,        // the field of these inputs is still being solved
     not_converged,  // the solve gave up; `residual` says how far it got
     refused,        // the cut cannot be solved; `words` says why
-    other_cut,      // the field view shows another cut than the cloth's
+    other_cut,      // the field view shows another cut than the cloth's and no view asks for
+                    // the cloth's own
     converged,      // `folds` are the field's for the inputs shown now
   };
   State state = State::not_solved;
   const field::FieldFolds* folds = nullptr;
+  // While solving: the folds of the last field that converged, which is of other inputs than
+  // those shown (a view that draws them says so); null before the first.
+  const field::FieldFolds* previous = nullptr;
   double residual = 0.0;
   std::string words;  // a short sentence for the views: why there are no folds from the field
 };
 
+// One cut's field as the explorer follows it, a slice of each frame: its live solve, the inputs
+// asked for and those of the field on show, and the folds read from that field.
+struct FieldSolve {
+  field::LiveField live;
+  std::string cut_refusal;  // why the inputs' cut cannot be meshed, or empty
+  // The inputs of the last request: a field current for them is the field of the inputs shown.
+  std::optional<Parameters> requested_parameters;
+  // The inputs the field on show was solved for: the law its folds are read by while a newer
+  // field is being solved.
+  std::optional<Parameters> shown_parameters;
+  std::uint64_t folds_of = 0;  // LiveField::shown_count() of the field the folds were read from
+  std::optional<Parameters> folds_parameters;  // ... and the inputs whose law they were read by
+  std::optional<field::FieldFolds> folds;
+  bool own_cut = false;   // the last request was of the preset's own cut
+  double slice_ms = 0.0;  // its share of the last frame
+};
+
 class FieldPanel : public Panel {
  public:
+  FieldPanel() = default;
+  // It holds references into itself.
+  FieldPanel(const FieldPanel&) = delete;
+  FieldPanel& operator=(const FieldPanel&) = delete;
   static constexpr const char* kTitle = "Tension field";
   const char* name() const override { return kTitle; }
   const char* key() const override { return "field"; }
@@ -80,7 +106,10 @@ class FieldPanel : public Panel {
   void draw(PanelContext& context) override;
   // While a field is being solved, and while the one on show is the coarse mesh of a move: the
   // frame loop keeps drawing until the finer one is shown, though nothing else moves.
-  bool busy() const override { return !consumers_.empty() && (live_.working() || coarse_); }
+  bool busy() const override {
+    return !consumers_.empty() && ((view_solving_ && live_.working()) ||
+                                   (cloth_solving_ && cloth_solve_.live.working()) || coarse_);
+  }
   // Forgets who asked for the field this frame (ask_for_folds).
   void end_frame(PanelContext& context) override;
   bool* open_flag() override { return &open_; }
@@ -89,7 +118,8 @@ class FieldPanel : public Panel {
   void view_settings(ViewSettings& settings, Document& document) override;
   // {"field": {open, current, working, refusal, converged, relative_residual, iterations,
   // slice_ms (its share of the last frame), mesh, regions, weight_N, thrust_N, pencil_thrust_N,
-  // supports, rays}}.
+  // supports, rays}}: the view's field; and under "fold_source_solve" the cloth's own cut's,
+  // solved for the 3D view while the view shows another cut (null when there is none).
   void report(nlohmann::json& state, PanelContext& context) const override;
   static constexpr PictureOffer kPictures[] = {
       {PictureView::field, "field", "Export tension field picture",
@@ -117,8 +147,15 @@ class FieldPanel : public Panel {
   void ask_for_folds() { folds_asked_ = true; }
   // Who the field was solved for at the last frame: "view" (this panel open), "fold_source".
   const std::vector<std::string>& consumers() const { return consumers_; }
-  // The field's folds for `document`'s inputs as they stand now.
-  FieldFoldsNow folds_now(const Document& document) const;
+  // Requests the field of the inputs as they stand now and gives it this frame's slice of
+  // solving, once a frame (again only when the inputs changed since within the frame, with what
+  // is left of the slice). Whoever reads the field first in a frame calls it, before drawing: a
+  // slider's value changes while the Parameters panel draws, after any step taken before the
+  // panels draw, and a view drawn before this panel would otherwise show the field a frame late.
+  void prepare(PanelContext& context);
+  // The field's folds for the cloth's own cut (the shape's, or the preset's) at the inputs as
+  // they stand now, after prepare().
+  FieldFoldsNow folds_now(PanelContext& context);
   // Opens the view (Results offers it where no one has asked for the field).
   void open() { open_ = true; }
 
@@ -130,9 +167,13 @@ class FieldPanel : public Panel {
   void status_line(Document& document);
   void solve_line() const;
   void canvas(PanelContext& context);
-  // This frame's request and slice of solving, for whoever asked.
-  void solve_slice(PanelContext& context);
-  void update_folds(const Parameters& parameters);
+  // A request of `cut` and a slice of solving on `solve`, at most `budget_ms`.
+  void solve_slice(FieldSolve& solve, FieldCut cut, PanelContext& context, bool moving,
+                   double budget_ms);
+  static void update_folds(FieldSolve& solve, const Parameters& parameters);
+  // The solve the 3D view's folds come from: the view's when it shows the cloth's own cut, else
+  // the cloth's own.
+  FieldSolve& fold_solve() { return cut_ == FieldCut::shape ? view_solve_ : cloth_solve_; }
   FieldDrawing drawing_style(const PanelContext& context) const;
   // The field of the document's inputs at rest, solved whole, for a picture.
   const field::SolvedField* picture_field(const Document& document, std::string& refusal) const;
@@ -143,16 +184,9 @@ class FieldPanel : public Panel {
   bool was_open_ = false;  // in the last frame
   FieldColouring colouring_ = FieldColouring::state;
   FieldCut cut_ = FieldCut::shape;
-  // The folds read from the field on show, beside the closed form's (field_folds.hpp).
-  std::uint64_t folds_of_ = 0;  // LiveField::shown_count() of the field they were read from
-  std::optional<Parameters> folds_parameters_;  // ... and the inputs whose law they were read by
-  std::optional<field::FieldFolds> folds_;
   bool folds_asked_ = false;
   std::vector<std::string> consumers_;
-  // The inputs of the last request: a field current for them is the field of the inputs shown.
-  std::optional<Parameters> requested_parameters_;
   bool preset_cut_ = false;  // the preset loaded has a cut of its own
-  bool own_cut_ = false;     // the last request was of it
   bool rays_ = true;
   bool cosines_ = false;
   int cells_ = kDefaultCells;
@@ -161,10 +195,23 @@ class FieldPanel : public Panel {
   static constexpr double kRestS = 0.3;
   std::optional<Parameters> last_parameters_;
   double last_change_s_ = -1e9;
-  double slice_ms_ = 0.0;  // the field's share of the last frame
+  double slice_ms_ = 0.0;  // the fields' share of the last frame
   bool coarse_ = false;    // the last frame asked for the coarse mesh
-  field::LiveField live_;
-  std::string cut_refusal_;  // why the inputs' cut cannot be meshed, or empty
+  // The frame prepare() last ran in and the inputs it requested.
+  int prepared_frame_ = -1;
+  std::optional<Parameters> prepared_parameters_;
+  // The field of the view's cut, and the cloth's own cut's for the 3D view's folds when the view
+  // shows another: each solved only while it is asked for.
+  FieldSolve view_solve_;
+  FieldSolve cloth_solve_;
+  // Which of them the last frame solved: one left unfinished when no longer asked for keeps no
+  // frame busy.
+  bool view_solving_ = false;
+  bool cloth_solving_ = false;
+  // The view's field by the names its drawing reads.
+  field::LiveField& live_ = view_solve_.live;
+  std::string& cut_refusal_ = view_solve_.cut_refusal;
+  std::optional<field::FieldFolds>& folds_ = view_solve_.folds;
   std::optional<PanelRect> canvas_rect_;
   DrawnArea drawn_;
   // A picture's field: solved once per set of inputs.

@@ -92,8 +92,18 @@ std::string regime_headline(const Solution& s, const ModelStanding& standing) {
 
 }  // namespace
 
-std::vector<std::pair<std::string, ImVec4>> ResultsPanel::headlines(Document& document) {
-  const std::string a = regime_headline(document.scene().solution(), standing(document));
+std::vector<std::pair<std::string, ImVec4>> ResultsPanel::headlines(Document& document,
+                                                                    const Solution* drawn,
+                                                                    std::string_view drawn_words) {
+  std::string a;
+  if (drawn != nullptr) {
+    // The closed form's prediction ranges bracket its own values, not the field's.
+    ModelStanding without_ranges = standing(document);
+    without_ranges.range.reset();
+    a = regime_headline(*drawn, without_ranges) + " (" + std::string(drawn_words) + ")";
+  } else {
+    a = regime_headline(document.scene().solution(), standing(document));
+  }
   if (!document.compare().pinned()) {
     return {{a, ImGui::GetStyleColorVec4(ImGuiCol_Text)}};
   }
@@ -205,7 +215,7 @@ constexpr std::string_view kFieldStateNames[] = {"not_solved", "solving",   "not
 void ResultsPanel::draw_field_column(PanelContext& context) {
   Document& document = context.document;
   FieldPanel& field_view = context.panel<FieldPanel>();
-  const FieldFoldsNow now = field_view.folds_now(document);
+  const FieldFoldsNow now = field_view.folds_now(context);
   field_column_shown_ = !field_view.consumers().empty();
   field_state_ = kFieldStateNames[static_cast<std::size_t>(now.state)];
   field_words_ = now.words;

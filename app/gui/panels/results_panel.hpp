@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -31,7 +32,11 @@ class ResultsPanel : public Panel {
   void draw(PanelContext& context) override;
   // n, Q and z_max with their ranges as the table shows them, one line for A and, while B is
   // pinned, one for B, each with the colour it is drawn in: the read-out over a presented view.
-  std::vector<std::pair<std::string, ImVec4>> headlines(Document& document);
+  // `drawn`: the solution A's cloth is drawn with when it is not the closed form's (the presented
+  // 3D view with the field's folds), given without ranges and followed by `drawn_words`.
+  std::vector<std::pair<std::string, ImVec4>> headlines(Document& document,
+                                                        const Solution* drawn = nullptr,
+                                                        std::string_view drawn_words = {});
   // "results": {"field_column": {"shown", "state", "words", "rows": [[name, closed form, field],
   // ...]}}, the closed form beside the tension field as the panel showed them at its last frame.
   void report(nlohmann::json& state, PanelContext& context) const override;
