@@ -127,7 +127,7 @@ class FieldPanel : public Panel {
 
  private:
   void controls();
-  void status_line(Document& document);
+  void status_line(Document& document, bool side_by_side);
   void solve_line() const;
   void canvas(PanelContext& context);
   // This frame's request and slice of solving, for whoever asked.

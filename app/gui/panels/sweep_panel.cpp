@@ -326,6 +326,10 @@ bool SweepPanel::draw_quantity(Document& document, Plot& plot, const Quantity& q
           PlotAxis{q.label, false, false, /*whole=*/q.steps, y_text})) {
     return false;
   }
+  // Side by side (presented), each x title on its row of tick labels: the plots keep the row.
+  if (size_px.x > 0.0f) {
+    plot.compact();
+  }
   if (!shown_x_.empty()) {
     plot.fit_x_to(shown_x_.front(), shown_x_.back());
   }
