@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/gui/panels/widgets.hpp"
+#include "app/gui/presentation_bar.hpp"
 #include "core/field/rays.hpp"
 #include "core/model/text_format.hpp"
 
@@ -635,7 +636,7 @@ void FieldPanel::draw(PanelContext& context) {
       solve_line();
       toolbar_.end();
     }
-    status_line(context.document, presented);
+    status_line(context.document, presented && !shows_one_view());
     canvas(context);
   }
   ImGui::End();

@@ -12,6 +12,7 @@
 #include "app/gui/compare.hpp"
 #include "app/gui/input_words.hpp"
 #include "app/gui/panels/widgets.hpp"
+#include "app/gui/presentation_bar.hpp"
 #include "core/geometry/geometry.hpp"
 
 namespace foldlab::gui {
@@ -182,10 +183,12 @@ void FoldPlotPanel::draw(PanelContext& context) {
   Scene& scene = document.scene();
   const FoldLines& lines = scene.fold_lines();
   const Solution& s = scene.solution();
-  // Presented, the plot fills the window unless asked for true scale there too: a cloth about as
-  // tall as it is wide, drawn true to scale in a wide window, leaves most of it empty.
+  // Presented to a room, the plot fills the window unless asked for true scale there too: a cloth
+  // about as tall as it is wide, drawn true to scale in a wide window, leaves most of it empty. A
+  // phone, which always shows one view, is tall enough for the tiles' own switch and rows.
   const bool presented = context.presented == this;
-  bool& true_scale = presented ? presented_true_scale_ : true_scale_;
+  const bool to_a_room = presented && !shows_one_view();
+  bool& true_scale = to_a_room ? presented_true_scale_ : true_scale_;
   drawn_true_scale_ = true_scale;
   if (toolbar_row_.begin("plot settings...", kLeastPlotHeightEms * ImGui::GetFontSize(),
                          presented)) {
@@ -215,7 +218,7 @@ void FoldPlotPanel::draw(PanelContext& context) {
     if (context.holding_frame) {
       plot_.grow_only();
     }
-    if (presented) {
+    if (to_a_room) {
       plot_.compact();
     }
     if (true_scale) {

@@ -13,6 +13,7 @@
 
 #include "app/gui/panels/axis_inputs.hpp"
 #include "app/gui/panels/widgets.hpp"
+#include "app/gui/presentation_bar.hpp"
 #include "core/model/hardware_threads.hpp"
 #include "core/model/settings.hpp"
 
@@ -566,7 +567,8 @@ void RegimeMapPanel::draw(PanelContext& context, bool presented) {
   }
   update_image(context.renderer);
   status_line();
-  const Placement at = place_map(presented);
+  // A phone has the height, and too narrow a row for the swatches beside the title.
+  const Placement at = place_map(presented && !shows_one_view());
   ImGui::SetCursorScreenPos(at.origin);
   // Row 0 is the lowest y: the texture's first row goes to the bottom.
   drawn_.mark(PanelRect{at.origin, ImVec2(at.width, at.height)});
