@@ -403,8 +403,11 @@ TEST_F(GuiTest, TheFoldPlotDrawsAMillimetreAsLongAcrossAsDown) {
   const std::vector<std::vector<std::string>> runs = {
       {"--size", "1280x800"},
       {"--size", "1280x800", "--set", "h=2350"},
-      {"--size", "1920x1080", "--view", "present=fold_plot"},
-      {"--size", "1280x800", "--view", "present=fold_plot", "--set", "L=3000"}};
+      // Presented, the plot fills the window unless its own true scale is asked for.
+      {"--size", "1920x1080", "--view", "present=fold_plot", "--view",
+       "fold_plot_presented_true_scale=1"},
+      {"--size", "1280x800", "--view", "present=fold_plot", "--view",
+       "fold_plot_presented_true_scale=1", "--set", "L=3000"}};
   int k = 0;
   for (const std::vector<std::string>& args : runs) {
     SCOPED_TRACE(::testing::PrintToString(args));

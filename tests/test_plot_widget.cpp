@@ -777,6 +777,38 @@ TEST_F(PlotWidget, LegendShowsEachLabelOnce) {
   EXPECT_EQ(plot_.view().legend_entries, 2);
 }
 
+// Presented, a plot keeps two rows for its data: the x title goes on the row of the x tick
+// labels and the legend into the data area's bottom right corner; its width is unchanged.
+TEST_F(PlotWidget, ACompactPlotGivesTheTitleAndLegendRowsToItsData) {
+  const auto draw = [&](bool compact) {
+    frame([&] {
+      ASSERT_TRUE(plot_.begin("plot", ImVec2(600, 300), x_axis_, y_axis_));
+      if (compact)
+        plot_.compact();
+      plot_.line("A", ax_, ay_, kColA);
+      plot_.line("B", bx_, by_, kColB);
+      plot_.end();
+    });
+    return plot_.view();
+  };
+  const PlotView loose = draw(false);
+  const PlotView compact = draw(true);
+  constexpr float kFontPx = 13.0f;
+  EXPECT_GE((compact.max.y - compact.min.y) - (loose.max.y - loose.min.y), 2.0f * kFontPx);
+  EXPECT_EQ(compact.max.x - compact.min.x, loose.max.x - loose.min.x);
+  EXPECT_EQ(compact.legend_entries, 2);
+  EXPECT_GE(compact.legend_min.x, compact.min.x);
+  EXPECT_GE(compact.legend_min.y, compact.min.y);
+  EXPECT_LE(compact.legend_max.x, compact.max.x);
+  EXPECT_LE(compact.legend_max.y, compact.max.y);
+  EXPECT_NEAR(compact.legend_max.x, compact.max.x, kFontPx);
+  EXPECT_NEAR(compact.legend_max.y, compact.max.y, kFontPx);
+  // The next frame without compact() lays the plot out as before.
+  const PlotView again = draw(false);
+  EXPECT_EQ(again.max.y - again.min.y, loose.max.y - loose.min.y);
+  EXPECT_GE(again.legend_min.y, again.max.y);
+}
+
 // The fold plot's supports sit in the data's top corners and the sweep's paper point at its far
 // right: wherever data lies, the legend's rectangle holds none of it (markers with their radius)
 // and lies outside the data area, and the legend's swatches are drawn there.

@@ -543,6 +543,7 @@ bool Plot::begin(const char* id, ImVec2 size, const PlotAxis& x, const PlotAxis&
   fit_x_.reset();
   grow_only_ = false;
   equal_scales_ = false;
+  compact_ = false;
   legend_text_.clear();
   backdrop_ = nullptr;
 
@@ -710,6 +711,7 @@ struct Plot::Frame {
   float weight = 1;                    // lines and markers grow with the text, never thinner
   bool x_log = false, y_log = false;
   bool x_title = false, y_title = false;
+  bool x_title_row = false;  // the x title on a row of its own under the tick labels
   double xt0 = 0, xt1 = 1, yt0 = 0, yt1 = 1;  // the visible range in axis coordinates
   bool manual_x = false, manual_y = false;    // the user zoomed or panned that axis
   ImVec2 axes_max{0, 0};                      // the frame's bottom right above the legend
@@ -739,6 +741,7 @@ std::optional<PlotHit> Plot::end() {
   f.y_log = y_axis_.log;
   f.x_title = !x_axis_.label.empty();
   f.y_title = !y_axis_.label.empty();
+  f.x_title_row = f.x_title && !compact_;
 
   fit_view_range(f);
   lay_out_legend(f);
@@ -833,6 +836,17 @@ void Plot::fit_view_range(Frame& f) const {
 // The legend: rows under the x title, outside the data area, so that it never hides data.
 void Plot::lay_out_legend(Frame& f) {
   legend_rows_.clear();
+  if (compact_) {
+    // One entry a row, laid over the data area's bottom right corner by draw_legend.
+    for (std::size_t i = 0; i < legend_.size(); ++i) {
+      const float w =
+          f.swatch + f.pad + ImGui::CalcTextSize(legend_text_.c_str() + legend_[i].text).x;
+      legend_rows_.push_back({0.0f, static_cast<float>(i) * f.row, w});
+    }
+    legend_height_ = 0.0f;
+    f.axes_max = frame_max_;
+    return;
+  }
   const float frame_w = frame_max_.x - frame_min_.x;
   float x = 0;
   int rows = legend_.empty() ? 0 : 1;
@@ -860,7 +874,7 @@ void Plot::lay_out_legend(Frame& f) {
 // Wheel zoom and drag pan, in the layout the user saw last frame.
 void Plot::zoom_and_pan(Frame& f) const {
   f.label_width = f.storage->GetFloat(keys_[kLabelWidth], 0.0f);
-  f.lay = layout(frame_min_, f.axes_max, f.label_width, f.x_title, f.y_title, f.font);
+  f.lay = layout(frame_min_, f.axes_max, f.label_width, f.x_title_row, f.y_title, f.font);
   if (wheel_zooms_ && f.io->MouseWheel != 0)
     wheel_zoom(f);
   if (active_)
@@ -970,7 +984,7 @@ void Plot::place_ticks(Frame& f) {
     // Hysteresis: a label width that flickers by a digit would make the whole plot jitter.
     f.label_width = needed;
   }
-  f.lay = layout(frame_min_, f.axes_max, f.label_width, f.x_title, f.y_title, f.font);
+  f.lay = layout(frame_min_, f.axes_max, f.label_width, f.x_title_row, f.y_title, f.font);
   equalise_scales(f);
   const float plot_w = f.lay.max.x - f.lay.min.x;
   const auto text_width = [](const std::string& label) {
@@ -1158,11 +1172,13 @@ void Plot::draw_tick_labels_and_titles(const Frame& f) const {
   const auto within_frame = [this](float left, float width) {
     return std::max(frame_min_.x, std::min(left, frame_max_.x - width));
   };
-  if (f.x_title) {
+  if (f.x_title_row) {
     const float w = ImGui::CalcTextSize(x_axis_.label.c_str()).x;
     f.draw_list->AddText({within_frame((f.lay.min.x + f.lay.max.x - w) / 2, w),
                           f.lay.max.y + f.pad + f.font + f.pad / 2},
                          col_text, x_axis_.label.c_str());
+  } else if (f.x_title) {
+    f.draw_list->AddText({frame_min_.x, f.lay.max.y + f.pad}, col_text, x_axis_.label.c_str());
   }
   // Above the axis rather than beside the tick labels, where the top label could collide.
   if (f.y_title) {
@@ -1178,12 +1194,19 @@ void Plot::draw_x_tick_labels(const Frame& f) const {
   const ImU32 col_border = f.col_border, col_text = f.col_text;
   char buf[64];
   float edge = 0;  // screen edge of the last drawn x label, facing the next one
+  // The x title at the row's left end (compact) keeps its place: a label it would meet is left
+  // out.
+  const float title_end = f.x_title && !f.x_title_row
+                              ? frame_min_.x + ImGui::CalcTextSize(x_axis_.label.c_str()).x
+                              : -std::numeric_limits<float>::infinity();
   for (std::size_t i = 0; i < x_ticks_.size(); ++i) {
     const float px = static_cast<float>(f.xm.px(x_ticks_[i]));
     f.draw_list->AddLine({px, f.lay.max.y}, {px, f.lay.max.y + f.pad}, col_border);
     format_tick_into(buf, sizeof buf, x_ticks_[i], tick_step(x_ticks_, i));
     const float w = ImGui::CalcTextSize(buf).x;
     const float left = px - w / 2, right = px + w / 2, gap = f.font * 0.5f;
+    if (left < title_end + gap)
+      continue;
     // Ticks ascend in value, which runs right to left on a flipped axis.
     const bool overlaps = i > 0 && (x_axis_.flipped ? right > edge - gap : left < edge + gap);
     if (overlaps)
@@ -1214,11 +1237,19 @@ void Plot::draw_legend(const Frame& f) {
   for (const LegendRow& r : legend_rows_) {
     widest = std::max(widest, r.x + r.width);
   }
-  const float left =
+  float left =
       legend_rows_.back().y == 0 ? (frame_min_.x + frame_max_.x - widest) / 2 : frame_min_.x;
-  const float top = f.axes_max.y + f.pad;
+  float top = f.axes_max.y + f.pad;
   const ImU32 col_text = f.col_text;
   ImDrawList* dl = f.draw_list;
+  if (compact_) {
+    const float height = legend_rows_.back().y + f.row;
+    left = f.lay.max.x - f.pad - widest;
+    top = f.lay.max.y - f.pad - height;
+    dl->AddRectFilled({left - f.pad, top - f.pad}, {f.lay.max.x - 1, f.lay.max.y - 1},
+                      ImGui::ColorConvertFloat4ToU32(plot_background(style_is_light())));
+    dl->AddRect({left - f.pad, top - f.pad}, {f.lay.max.x - 1, f.lay.max.y - 1}, f.col_border);
+  }
   dl->PushClipRect(frame_min_, frame_max_, true);
   for (std::size_t i = 0; i < legend_.size(); ++i) {
     const LegendEntry& e = legend_[i];

@@ -117,6 +117,10 @@ class Plot {
     equal_scales_ = true;
     narrow_frame_ = narrow_frame;
   }
+  // This frame, the x title goes on the row of the x tick labels, at its left end (a label it
+  // would cover is left out), and the legend inside the data area at its bottom right, over a
+  // backing of the background's colour: a view presented to a room keeps two rows for its data.
+  void compact() { compact_ = true; }
   // The y tick labels' column at least this wide (px), for plots stacked above one another whose
   // data areas must start at one x. label_width_needed() is what this plot's labels took last.
   void min_label_width(float px) { min_label_width_ = px; }
@@ -210,6 +214,7 @@ class Plot {
   std::optional<std::pair<double, double>> fit_x_;
   bool grow_only_ = false;
   bool equal_scales_ = false;
+  bool compact_ = false;
   bool narrow_frame_ = false;
   float min_label_width_ = 0.0f;
   float label_width_needed_ = 0.0f;

@@ -3,9 +3,11 @@
 #include <cmath>
 #include <numbers>
 #include <string>
+#include <string_view>
 #include <utility>
 
 #include <imgui.h>
+#include <imgui_internal.h>  // the window's title bar, where a presented panel's tabs go
 #include <nlohmann/json.hpp>
 
 #include "app/gui/panels/widgets.hpp"
@@ -86,6 +88,58 @@ void AnalysisPanel::show_paper_case(int which, Document& document) {
   tab_selected_ = false;
 }
 
+namespace {
+
+struct AnalysisTab {
+  const char* label;
+  const char* key;  // as --tab names it
+};
+constexpr AnalysisTab kTabs[] = {
+    {"Equations", "equations"}, {"Method", "method"}, {"Sweep", "sweep"}, {"Regime map", "map"}};
+
+// Presented, the tabs are buttons at the right end of the window's title bar, after the title
+// and the shown tab's "settings..." button: the row the tab bar would take is the picture's.
+// False, drawing nothing, when the title bar is too short for them (a phone): then the tab bar
+// stays.
+bool title_bar_tabs(std::string& shown_tab) {
+  ImGuiWindow* window = ImGui::GetCurrentWindow();
+  const ImRect title = window->TitleBarRect();
+  const ImGuiStyle& style = ImGui::GetStyle();
+  float tabs_width = 0.0f;
+  for (const AnalysisTab& tab : kTabs) {
+    tabs_width += button_width(tab.label) + style.ItemInnerSpacing.x;
+  }
+  const float left =
+      title.Min.x + style.FramePadding.x + ImGui::CalcTextSize(window->Name, nullptr, true).x +
+      2.0f * style.ItemSpacing.x + button_width("sweep settings...") + style.ItemSpacing.x;
+  // Room for the window's own buttons at the right end (undock, close).
+  const float right = title.Max.x - 2.0f * ImGui::GetFrameHeight() - style.ItemSpacing.x;
+  if (right - left < tabs_width) {
+    return false;
+  }
+  const ImVec2 cursor = ImGui::GetCursorScreenPos();
+  const ImVec2 cursor_max = window->DC.CursorMaxPos;
+  ImGui::PushClipRect(title.Min, title.Max, false);
+  ImGui::SetCursorScreenPos(ImVec2(right - tabs_width, title.Min.y));
+  for (const AnalysisTab& tab : kTabs) {
+    const bool selected = shown_tab == tab.key;
+    ImGui::PushStyleColor(ImGuiCol_Button,
+                          style.Colors[selected ? ImGuiCol_TabActive : ImGuiCol_Tab]);
+    if (ImGui::Button(tab.label)) {
+      shown_tab = tab.key;
+    }
+    ImGui::PopStyleColor();
+    ImGui::SameLine(0.0f, style.ItemInnerSpacing.x);
+  }
+  ImGui::NewLine();
+  ImGui::PopClipRect();
+  ImGui::SetCursorScreenPos(cursor);
+  window->DC.CursorMaxPos = cursor_max;
+  return true;
+}
+
+}  // namespace
+
 void AnalysisPanel::draw(PanelContext& context) {
   Document& document = context.document;
   sweep_shown_ = false;
@@ -94,46 +148,66 @@ void AnalysisPanel::draw(PanelContext& context) {
     return;
   }
   stale_mark(document);
+  const bool presented = context.presented == this;
+  if (shown_tab_.empty()) {
+    shown_tab_ = initial_tab_.empty() ? kTabs[0].key : initial_tab_;
+  }
+  if (!tab_selected_) {
+    shown_tab_ = initial_tab_.empty() ? shown_tab_ : initial_tab_;
+  }
+  if (presented && title_bar_tabs(shown_tab_)) {
+    tab_selected_ = true;
+    tabs_in_title_bar_ = true;
+    draw_tab(context, shown_tab_, presented);
+    ImGui::End();
+    return;
+  }
+  // Back from the title bar, the tab bar opens on the tab that was shown there.
+  if (tabs_in_title_bar_) {
+    tabs_in_title_bar_ = false;
+    initial_tab_ = shown_tab_;
+    tab_selected_ = false;
+  }
   // A narrow panel scrolls its tabs rather than shortening their names to "Met…".
   if (ImGui::BeginTabBar("analysis tabs", ImGuiTabBarFlags_FittingPolicyScroll)) {
     // The tab named at start is selected once, at the first frame.
-    auto flags_for = [this](const char* name) {
-      return !tab_selected_ && initial_tab_ == name ? ImGuiTabItemFlags_SetSelected
-                                                    : ImGuiTabItemFlags_None;
-    };
-    const ImGuiTabItemFlags equations_flags = flags_for("equations");
-    const ImGuiTabItemFlags method_flags = flags_for("method");
-    const ImGuiTabItemFlags sweep_flags = flags_for("sweep");
-    const ImGuiTabItemFlags map_flags = flags_for("map");
+    const bool select = !tab_selected_;
     tab_selected_ = true;
-    if (ImGui::BeginTabItem("Equations", nullptr, equations_flags)) {
-      ImGui::BeginChild("equations");
-      // A pixel in: a glyph's left bearing (DejaVu's "T") reaches past where its text starts,
-      // and the child cuts at its own edge.
-      ImGui::Indent(1.0f);
-      equations_.draw(document);
-      ImGui::Unindent(1.0f);
-      ImGui::EndChild();
-      ImGui::EndTabItem();
-    }
-    if (ImGui::BeginTabItem("Method", nullptr, method_flags)) {
-      ImGui::BeginChild("method");
-      method_.draw(document);
-      ImGui::EndChild();
-      ImGui::EndTabItem();
-    }
-    if (ImGui::BeginTabItem("Sweep", nullptr, sweep_flags)) {
-      sweep_.draw(document, context.presented == this);
-      sweep_shown_ = true;
-      ImGui::EndTabItem();
-    }
-    if (ImGui::BeginTabItem("Regime map", nullptr, map_flags)) {
-      regime_map_.draw(context, context.presented == this);
-      ImGui::EndTabItem();
+    for (const AnalysisTab& tab : kTabs) {
+      const ImGuiTabItemFlags flags = select && initial_tab_ == tab.key
+                                          ? ImGuiTabItemFlags_SetSelected
+                                          : ImGuiTabItemFlags_None;
+      if (ImGui::BeginTabItem(tab.label, nullptr, flags)) {
+        shown_tab_ = tab.key;
+        draw_tab(context, tab.key, presented);
+        ImGui::EndTabItem();
+      }
     }
     ImGui::EndTabBar();
   }
   ImGui::End();
+}
+
+void AnalysisPanel::draw_tab(PanelContext& context, std::string_view tab, bool presented) {
+  Document& document = context.document;
+  if (tab == "equations") {
+    ImGui::BeginChild("equations");
+    // A pixel in: a glyph's left bearing (DejaVu's "T") reaches past where its text starts,
+    // and the child cuts at its own edge.
+    ImGui::Indent(1.0f);
+    equations_.draw(document);
+    ImGui::Unindent(1.0f);
+    ImGui::EndChild();
+  } else if (tab == "method") {
+    ImGui::BeginChild("method");
+    method_.draw(document);
+    ImGui::EndChild();
+  } else if (tab == "sweep") {
+    sweep_.draw(document, presented);
+    sweep_shown_ = true;
+  } else {
+    regime_map_.draw(context, presented);
+  }
 }
 
 void EquationsTab::draw(Document& document) {

@@ -5,6 +5,7 @@
 
 #include <filesystem>
 #include <string>
+#include <string_view>
 
 #include <nlohmann/json_fwd.hpp>
 
@@ -76,9 +77,14 @@ class AnalysisPanel : public Panel {
   bool sweep_shown() const { return sweep_shown_; }
 
  private:
+  // The tab `tab` ("equations", "method", "sweep", "map") under the tab bar or the title bar.
+  void draw_tab(PanelContext& context, std::string_view tab, bool presented);
+
   std::string initial_tab_;
+  std::string shown_tab_;  // the tab drawn at the last frame, by its --tab name
   bool sweep_shown_ = false;
   bool tab_selected_ = false;
+  bool tabs_in_title_bar_ = false;
   EquationsTab equations_;
   MethodPanel method_;
   SweepPanel sweep_;

@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/gui/panels/widgets.hpp"
+#include "app/gui/presentation_bar.hpp"
 #include "core/field/rays.hpp"
 #include "core/model/text_format.hpp"
 
@@ -408,7 +409,7 @@ void FieldPanel::controls() {
                      "%d");
 }
 
-void FieldPanel::status_line(Document& document) {
+void FieldPanel::status_line(Document& document, bool side_by_side) {
   const field::SolvedField* shown = live_.shown();
   const std::string& refusal = cut_refusal_.empty() ? live_.refusal() : cut_refusal_;
   if (!refusal.empty()) {
@@ -428,19 +429,36 @@ void FieldPanel::status_line(Document& document) {
                        "Solving (residual %.0e): the field shown is of the inputs before.",
                        live_.residual());
   }
-  ImGui::TextWrapped(
+  const std::string regions = detail::printf_string(
       "taut %.0f %%, wrinkled %.0f %%, slack %.0f %%; weight %#.3g N; thrust H %#.3g N "
       "(the cosine pencil's %#.3g N)",
       100.0 * s.taut_share, 100.0 * s.wrinkled_share, 100.0 * s.slack_share, s.weight_N,
       shown->report.thrust_N, shown->report.pencil_thrust_N);
   if (!folds_) {
+    wrapped_text("%s", regions.c_str());
     return;
   }
   const Solution& closed = document.scene().solution();
-  ImGui::TextWrapped(
+  const std::string folds = detail::printf_string(
       "folds from the field: n = %d, Q = %.3f, z_max = %.0f mm (the closed form's: n = %d, "
       "Q = %.3f, z_max = %.0f mm)",
       folds_->n, folds_->Q, folds_->z_max_mm, closed.n, closed.Q, closed.z_max_mm);
+  if (!side_by_side) {
+    wrapped_text("%s", regions.c_str());
+    wrapped_text("%s", folds.c_str());
+    return;
+  }
+  // Presented, side by side, each in half of the width: each a line a little longer than the
+  // window would otherwise take two rows, and the rows are the canvas's.
+  const float spacing = ImGui::GetStyle().ItemSpacing.x;
+  const float column = std::floor(0.5f * (ImGui::GetContentRegionAvail().x - spacing));
+  ImGui::BeginGroup();
+  ImGui::TextUnformatted(wrap_at_spaces(regions, column).c_str());
+  ImGui::EndGroup();
+  ImGui::SameLine(0.0f, spacing);
+  ImGui::BeginGroup();
+  ImGui::TextUnformatted(wrap_at_spaces(folds, column).c_str());
+  ImGui::EndGroup();
 }
 
 void FieldPanel::solve_line() const {
@@ -658,13 +676,15 @@ void FieldPanel::draw(PanelContext& context) {
   if (ImGui::Begin(window_label().c_str(), &open_, ImGuiWindowFlags_NoCollapse)) {
     context.renderer.fill_window_background();  // the style's window background is transparent
     // At a large text size in a small window the settings and the solve's figures fold behind
-    // one button, so that the field keeps the room.
-    if (toolbar_.begin("field settings...", kLeastCanvasEms * ImGui::GetFontSize())) {
+    // one button, so that the field keeps the room; presented, always, the button in the title
+    // bar.
+    const bool presented = context.presented == this;
+    if (toolbar_.begin("field settings...", kLeastCanvasEms * ImGui::GetFontSize(), presented)) {
       controls();
       solve_line();
       toolbar_.end();
     }
-    status_line(context.document);
+    status_line(context.document, presented && !shows_one_view());
     canvas(context);
   }
   ImGui::End();

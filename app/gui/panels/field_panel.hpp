@@ -164,7 +164,7 @@ class FieldPanel : public Panel {
 
  private:
   void controls();
-  void status_line(Document& document);
+  void status_line(Document& document, bool side_by_side);
   void solve_line() const;
   void canvas(PanelContext& context);
   // A request of `cut` and a slice of solving on `solve`, at most `budget_ms`.

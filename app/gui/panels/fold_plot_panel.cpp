@@ -12,6 +12,7 @@
 #include "app/gui/compare.hpp"
 #include "app/gui/input_words.hpp"
 #include "app/gui/panels/widgets.hpp"
+#include "app/gui/presentation_bar.hpp"
 #include "core/geometry/geometry.hpp"
 
 namespace foldlab::gui {
@@ -153,6 +154,7 @@ bool FoldPlotPanel::stands_apart(const FoldLines& lines, std::size_t k, std::siz
 
 void FoldPlotPanel::view_settings(ViewSettings& settings, Document& /*document*/) {
   settings.add_switch("fold_plot_true_scale", &true_scale_, kEveryUse);
+  settings.add_switch("fold_plot_presented_true_scale", &presented_true_scale_, kEveryUse);
 }
 
 void FoldPlotPanel::report(nlohmann::json& state, PanelContext& /*context*/) const {
@@ -161,7 +163,8 @@ void FoldPlotPanel::report(nlohmann::json& state, PanelContext& /*context*/) con
                         {"y_mm", {view.y_lo, view.y_hi}},
                         {"x_auto", view.x_auto},
                         {"y_auto", view.y_auto},
-                        {"x_ticks", plot_.x_ticks().size()}};
+                        {"x_ticks", plot_.x_ticks().size()},
+                        {"true_scale", drawn_true_scale_}};
 }
 
 // Below this the plot's axis labels and legend squash it: the panel scrolls instead, and the
@@ -180,14 +183,21 @@ void FoldPlotPanel::draw(PanelContext& context) {
   Scene& scene = document.scene();
   const FoldLines& lines = scene.fold_lines();
   const Solution& s = scene.solution();
+  // Presented to a room, the plot fills the window unless asked for true scale there too: a cloth
+  // about as tall as it is wide, drawn true to scale in a wide window, leaves most of it empty. A
+  // phone, which always shows one view, is tall enough for the tiles' own switch and rows.
+  const bool presented = context.presented == this;
+  const bool to_a_room = presented && !shows_one_view();
+  bool& true_scale = to_a_room ? presented_true_scale_ : true_scale_;
+  drawn_true_scale_ = true_scale;
   if (toolbar_row_.begin("plot settings...", kLeastPlotHeightEms * ImGui::GetFontSize(),
-                         context.presented == this)) {
+                         presented)) {
     photo.toolbar(context);
     if (small_button("autoscale")) {
       autoscale_ = true;
     }
     same_line_if_fits(checkbox_width(kTrueScaleLabel));
-    ImGui::Checkbox(kTrueScaleLabel, &true_scale_);
+    ImGui::Checkbox(kTrueScaleLabel, &true_scale);
     help_marker_and_hint(
         "A mm across is as many pixels as a mm down, so that the sag looks as deep as it "
         "hangs. Off, each axis fills the plot: shallow folds spread apart.",
@@ -208,7 +218,10 @@ void FoldPlotPanel::draw(PanelContext& context) {
     if (context.holding_frame) {
       plot_.grow_only();
     }
-    if (true_scale_) {
+    if (to_a_room) {
+      plot_.compact();
+    }
+    if (true_scale) {
       plot_.equal_scales(/*narrow_frame=*/true);
     }
     const bool compare = document.compare().pinned();

@@ -52,8 +52,8 @@ class FoldPlotPanel : public Panel {
   // The context's photo adds its buttons, its backdrop and its clicks to the plot.
   void draw(PanelContext& context) override;
   void view_settings(ViewSettings& settings, Document& document) override;
-  // "fold_plot": the visible ranges, x_mm and y_mm as [lo, hi], and whether each follows the
-  // data (a pan or zoom turns that off).
+  // "fold_plot": the visible ranges, x_mm and y_mm as [lo, hi], whether each follows the
+  // data (a pan or zoom turns that off), and whether it was drawn at true scale.
   void report(nlohmann::json& state, PanelContext& context) const override;
   // "fold_plot": the plot's data area.
   void drawing_areas(DrawingAreas& areas) const override {
@@ -83,6 +83,8 @@ class FoldPlotPanel : public Panel {
   ViewToolbar toolbar_row_;
   DrawnArea drawn_;
   bool true_scale_ = true;
+  bool presented_true_scale_ = false;  // the same switch while the plot is presented
+  bool drawn_true_scale_ = true;       // which of the two the last frame drew with
   FoldLineSeries series_;
   // B's fold lines, dashed (a gap is a run of NaN points) and left out where they run into each
   // other by the supports: rebuilt when B, its lines or the plot's scale change.

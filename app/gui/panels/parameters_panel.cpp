@@ -688,16 +688,26 @@ void ParametersPanel::draw_refusals(const Document& document) const {
   ImGui::PopStyleColor();
 }
 
-// The strip's cells: as many to a row as give each slider room for its value and unit.
-int ParametersPanel::strip_columns(float width) const {
-  const float cell =
-      strip_symbol_width() + ImGui::GetStyle().ItemInnerSpacing.x + ems(kStripSliderEms);
-  const float spacing = ImGui::GetStyle().ItemSpacing.x;
+// The strip's cells: as many to a row as give each slider room for its value and unit, filled
+// evenly (three and three rather than four and two). All six in one row where they fit with only
+// the gap between a symbol and its slider between cells (each symbol still marks where its cell
+// starts): a presented view keeps a row of its height.
+ParametersPanel::StripLayout ParametersPanel::strip_layout(float width) const {
+  const ImGuiStyle& style = ImGui::GetStyle();
+  const float cell = strip_symbol_width() + style.ItemInnerSpacing.x + strip_slider_width();
   const int count = static_cast<int>(cloth_inputs().size());
-  const int fit = std::clamp(static_cast<int>((width + spacing) / (cell + spacing)), 1, count);
-  // As few rows as fit, filled evenly (three and three rather than four and two).
+  const float narrow_gap = style.ItemInnerSpacing.x;
+  if (static_cast<float>(count) * cell + static_cast<float>(count - 1) * narrow_gap <= width) {
+    return {count, static_cast<float>(count) * cell +
+                               static_cast<float>(count - 1) * style.ItemSpacing.x <=
+                           width
+                       ? style.ItemSpacing.x
+                       : narrow_gap};
+  }
+  const float gap = style.ItemSpacing.x;
+  const int fit = std::clamp(static_cast<int>((width + gap) / (cell + gap)), 1, count);
   const int rows = (count + fit - 1) / fit;
-  return (count + rows - 1) / rows;
+  return {(count + rows - 1) / rows, gap};
 }
 
 float ParametersPanel::strip_symbol_width() const {
@@ -708,9 +718,17 @@ float ParametersPanel::strip_symbol_width() const {
   return widest;
 }
 
+// Measured in the font as drawn rather than a guess in ems: the value and the frame's padding
+// either side, so that the text never meets the frame's edge.
+float ParametersPanel::strip_slider_width() const {
+  const float width =
+      ImGui::CalcTextSize(kStripWidestValue).x + 2.0f * ImGui::GetStyle().FramePadding.x;
+  return std::ceil(width);
+}
+
 float ParametersPanel::strip_height(const Document& document, float width) const {
   const int count = static_cast<int>(cloth_inputs().size());
-  const int columns = strip_columns(width);
+  const int columns = strip_layout(width).columns;
   const int rows = (count + columns - 1) / columns;
   const float spacing = ImGui::GetStyle().ItemSpacing.y;
   float height =
@@ -726,15 +744,14 @@ void ParametersPanel::draw_strip(Document& document, UiStatus& status, float wid
   places_.clear();  // only the strip's sliders are there to press
   const std::vector<const InputSpec*> strip = cloth_inputs();
   const int count = static_cast<int>(strip.size());
-  const int columns = strip_columns(width);
+  const auto [columns, gap] = strip_layout(width);
   const ImGuiStyle& style = ImGui::GetStyle();
-  const float cell =
-      (width - static_cast<float>(columns - 1) * style.ItemSpacing.x) / static_cast<float>(columns);
+  const float cell = (width - static_cast<float>(columns - 1) * gap) / static_cast<float>(columns);
   const float symbol = strip_symbol_width();
   for (int i = 0; i < count; ++i) {
     const InputSpec& spec = *strip[static_cast<std::size_t>(i)];
     if (i % columns != 0) {
-      ImGui::SameLine();
+      ImGui::SameLine(0.0f, gap);
     }
     // The symbols right-aligned in their column, so that the sliders line up across rows.
     const float symbol_width = ImGui::CalcTextSize(readable(input_symbol(spec)).c_str()).x;

@@ -101,8 +101,9 @@ class ParametersPanel : public Panel {
   // when the panel is too narrow for both); in the strip its symbol before it and its help when
   // hovered.
   enum class SliderLook { panel, stacked, strip };
-  static constexpr float kMinSliderEms = 7.0f;    // shorter beside its label, a slider is stacked
-  static constexpr float kStripSliderEms = 7.5f;  // room for "10194 g/m²"
+  static constexpr float kMinSliderEms = 7.0f;  // shorter beside its label, a slider is stacked
+  // The widest value a strip slider shows: each cell has room for it in the font as drawn.
+  static constexpr const char* kStripWidestValue = "10194 g/m²";
   // One slider of the input table; a change goes to the document as an edit.
   void input_slider(Document& document, UiStatus& status, const InputSpec& spec, float width,
                     SliderLook look);
@@ -134,8 +135,13 @@ class ParametersPanel : public Panel {
   // The reasons for refused inputs and unread text, at the panel's foot and under the strip.
   std::vector<std::string> refusal_lines(const Document& document) const;
   void draw_refusals(const Document& document) const;
-  int strip_columns(float width) const;
+  struct StripLayout {
+    int columns = 1;
+    float gap_px = 0.0f;  // between a slider and the next cell's symbol
+  };
+  StripLayout strip_layout(float width) const;
   float strip_symbol_width() const;
+  float strip_slider_width() const;
   // The play row: which input, play/pause, and the range it sweeps.
   void animation_row(Document& document, UiStatus& status,
                      const std::vector<const InputSpec*>& sliders);

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <limits>
 #include <span>
 #include <vector>
 
@@ -12,6 +13,7 @@
 
 #include "app/gui/panels/axis_inputs.hpp"
 #include "app/gui/panels/widgets.hpp"
+#include "app/gui/presentation_bar.hpp"
 #include "core/model/hardware_threads.hpp"
 #include "core/model/settings.hpp"
 
@@ -272,11 +274,12 @@ void RegimeMapPanel::timing_text() const {
 // The map with its axis labels (the y title above it, the x title under the x ticks), a colour
 // bar on its right (the ramp with its scale) and, below, the regimes that have no n to show as
 // swatches with their names. Every size follows the font, so the UI scale keeps it readable.
-RegimeMapPanel::Placement RegimeMapPanel::place_map() {
+RegimeMapPanel::Placement RegimeMapPanel::place_map(bool compact) {
   const ImGuiStyle& style = ImGui::GetStyle();
   const float font = ImGui::GetFontSize();
   const ImVec2 available = ImGui::GetContentRegionAvail();
   Placement at;
+  at.compact = compact;
   const float bar_area = style.ItemSpacing.x + ems(1.0f) + style.ItemInnerSpacing.x +
                          ImGui::CalcTextSize(show_z_ ? "1000 mm" : "200").x;
   float swatches_width = 0.0f;
@@ -284,10 +287,21 @@ RegimeMapPanel::Placement RegimeMapPanel::place_map() {
     swatches_width += ImGui::GetFrameHeight() + style.ItemInnerSpacing.x +
                       ImGui::CalcTextSize(swatch.name).x + style.ItemSpacing.x;
   }
+  const std::string y_label = axis_label(cells_->y.key);
+  // Presented, the swatches go on the y title's row where they fit between the title and the
+  // colour bar's "n" (a swatch is a frame tall, more than the row's line: the row grows to it).
+  const float title_width = ImGui::CalcTextSize(y_label.c_str()).x + 2.0f * style.ItemSpacing.x;
+  at.swatches_on_title_row =
+      compact &&
+      title_width + swatches_width + bar_area + ImGui::CalcTextSize("n").x <= available.x;
   const float swatch_rows =
-      (swatches_width <= available.x ? 1.0f : 2.0f) * ImGui::GetFrameHeightWithSpacing();
-  // Half a line under the y title, where the top label reaches up to.
-  const float tallest = std::max(ems(5.0f), available.y - 3.5f * font - swatch_rows);
+      at.swatches_on_title_row
+          ? ImGui::GetFrameHeight() - ImGui::GetTextLineHeight()
+          : (swatches_width <= available.x ? 1.0f : 2.0f) * ImGui::GetFrameHeightWithSpacing();
+  // Half a line under the y title, where the top label reaches up to; the x title's line under
+  // the x ticks unless presented.
+  const float tallest =
+      std::max(ems(5.0f), available.y - (compact ? 2.5f : 3.5f) * font - swatch_rows);
   // The y labels' width at the tallest the map can be: as many labels or fewer fit a shorter one.
   at.left_margin = 0.0f;
   for (const std::string& label : map_ticks(cells_->y, tallest, false).labels) {
@@ -297,10 +311,18 @@ RegimeMapPanel::Placement RegimeMapPanel::place_map() {
   // As wide as the panel allows: presented, the map takes the screen's width, not a square.
   at.width = std::max(ems(5.0f), available.x - at.left_margin - bar_area);
   at.height = tallest;
-  const std::string y_label = axis_label(cells_->y.key);
+  const ImVec2 title_at = ImGui::GetCursorScreenPos();
+  if (at.swatches_on_title_row) {
+    // The title on the swatches' middle line.
+    ImGui::SetCursorScreenPos(ImVec2(title_at.x, title_at.y + style.FramePadding.y));
+  }
   ImGui::TextUnformatted(y_label.c_str());
+  at.swatches_at = ImVec2(title_at.x + title_width, title_at.y);
   at.origin = ImVec2(ImGui::GetCursorScreenPos().x + at.left_margin,
                      ImGui::GetCursorScreenPos().y + 0.5f * font);
+  if (at.swatches_on_title_row) {
+    at.origin.y = title_at.y + ImGui::GetFrameHeight() + 0.5f * font;
+  }
   return at;
 }
 
@@ -333,19 +355,32 @@ void RegimeMapPanel::axis_labels(const Placement& at) const {
         text_colour, label);
   }
   const AxisTicks x_ticks = map_ticks(cells_->x, at.width, true);
+  const std::string x_label = axis_label(cells_->x.key);
+  const float bottom = at.origin.y + at.height;
+  // Compact: the title at the left end of the tick labels' row; a label it would meet is left
+  // out.
+  const float title_end = at.compact ? at.origin.x - at.left_margin +
+                                           ImGui::CalcTextSize(x_label.c_str()).x + 0.5f * font
+                                     : -std::numeric_limits<float>::infinity();
   for (std::size_t k = 0; k < x_ticks.values.size(); ++k) {
     const double f = axis_fraction(cells_->x, from_shown(cells_->x.key, x_ticks.values[k]));
     const float x = at.origin.x + static_cast<float>(f) * at.width;
-    const float bottom = at.origin.y + at.height;
     draw->AddLine(ImVec2(x, bottom), ImVec2(x, bottom + tick_px), text_colour);
     const char* label = x_ticks.labels[k].c_str();
-    draw->AddText(ImVec2(x - 0.5f * ImGui::CalcTextSize(label).x, bottom + tick_px), text_colour,
-                  label);
+    const float left = x - 0.5f * ImGui::CalcTextSize(label).x;
+    if (left < title_end) {
+      continue;
+    }
+    draw->AddText(ImVec2(left, bottom + tick_px), text_colour, label);
   }
-  const std::string x_label = axis_label(cells_->x.key);
-  draw->AddText(ImVec2(at.origin.x + 0.5f * (at.width - ImGui::CalcTextSize(x_label.c_str()).x),
-                       at.origin.y + at.height + tick_px + font),
-                text_colour, x_label.c_str());
+  if (at.compact) {
+    draw->AddText(ImVec2(at.origin.x - at.left_margin, bottom + tick_px), text_colour,
+                  x_label.c_str());
+  } else {
+    draw->AddText(ImVec2(at.origin.x + 0.5f * (at.width - ImGui::CalcTextSize(x_label.c_str()).x),
+                         bottom + tick_px + font),
+                  text_colour, x_label.c_str());
+  }
 }
 
 // The same ramp and scale as the cells, bottom to top.
@@ -408,8 +443,10 @@ void RegimeMapPanel::regime_swatches(const Placement& at) const {
   const ImGuiStyle& style = ImGui::GetStyle();
   const float font = ImGui::GetFontSize();
   ImGui::SetCursorScreenPos(
-      ImVec2(at.origin.x - at.left_margin,
-             at.origin.y + at.height + 2.0f * font + std::round(0.3f * font) + 2.0f));
+      at.swatches_on_title_row
+          ? at.swatches_at
+          : ImVec2(at.origin.x - at.left_margin,
+                   at.origin.y + at.height + 2.0f * font + std::round(0.3f * font) + 2.0f));
   bool first = true;
   for (const Swatch& swatch : map_swatches()) {
     const float width =
@@ -530,7 +567,8 @@ void RegimeMapPanel::draw(PanelContext& context, bool presented) {
   }
   update_image(context.renderer);
   status_line();
-  const Placement at = place_map();
+  // A phone has the height, and too narrow a row for the swatches beside the title.
+  const Placement at = place_map(presented && !shows_one_view());
   ImGui::SetCursorScreenPos(at.origin);
   // Row 0 is the lowest y: the texture's first row goes to the bottom.
   drawn_.mark(PanelRect{at.origin, ImVec2(at.width, at.height)});

@@ -54,6 +54,11 @@ class RegimeMapPanel {
     float width = 0.0f;
     float height = 0.0f;
     float left_margin = 0.0f;
+    // Presented: the x title on the row of the x tick labels, and the swatches on the y title's
+    // row when they fit there (swatches_at: where they start).
+    bool compact = false;
+    ImVec2 swatches_at{0.0f, 0.0f};
+    bool swatches_on_title_row = false;
   };
 
   // The axes, their ranges, the cell count and what is shown; true when the map must restart.
@@ -68,7 +73,7 @@ class RegimeMapPanel {
   void status_line();
   void timing_text() const;
   // The map's side and margins for the space left in the panel, and its y title.
-  Placement place_map();
+  Placement place_map(bool compact);
   static AxisTicks map_ticks(const SweepAxis& axis, float length_px, bool horizontal);
   void axis_labels(const Placement& at) const;
   void colour_bar(const Placement& at) const;

@@ -14,6 +14,7 @@
 #include "app/gui/panels/axis_inputs.hpp"
 #include "app/gui/panels/compare_table.hpp"
 #include "app/gui/panels/widgets.hpp"
+#include "app/gui/presentation_bar.hpp"
 #include "core/model/solver.hpp"
 #include "core/model/text_format.hpp"
 
@@ -325,6 +326,11 @@ bool SweepPanel::draw_quantity(Document& document, Plot& plot, const Quantity& q
           PlotAxis{last ? axis_label(key) : std::string(), false, logarithmic_, false, x_text},
           PlotAxis{q.label, false, false, /*whole=*/q.steps, y_text})) {
     return false;
+  }
+  // Side by side (presented) to a room, each x title on its row of tick labels: the plots keep
+  // the row. A phone's plots are too narrow to spare a tick label for it.
+  if (size_px.x > 0.0f && !shows_one_view()) {
+    plot.compact();
   }
   if (!shown_x_.empty()) {
     plot.fit_x_to(shown_x_.front(), shown_x_.back());
