@@ -108,8 +108,8 @@ bool combo(const char* label, int* current, const char* items_zero_separated);
 
 // The smallest target a finger was given in the frame drawn last (read between frames) (a frame's
 // height for every slider, button, checkbox and combo; the rows of lists, combos and menus; the
-// help markers): its height in the screen's pixels and what it was. note_target() counts the last
-// item.
+// help markers; a tile edge's grip across the edge): its height in the screen's pixels and what it
+// was. note_target() counts the last item.
 struct SmallestTarget {
   float height_px = 0.0f;
   std::string what;
