@@ -381,21 +381,20 @@ FieldDrawing FieldPanel::drawing_style(const PanelContext& context) const {
 }
 
 void FieldPanel::controls() {
-  ImGui::SetNextItemWidth(ImGui::CalcTextSize("tension").x + 3.0f * ImGui::GetFontSize());
+  constexpr const char* kColourings = "state\0tension\0";
+  ImGui::SetNextItemWidth(combo_width(kColourings));
   int colouring = static_cast<int>(colouring_);
-  if (combo("colour by", &colouring, "state\0tension\0")) {
+  if (combo("colour by", &colouring, kColourings)) {
     colouring_ = static_cast<FieldColouring>(colouring);
   }
   // A preset with a cut of its own puts it in the shape's place.
-  const char* first = preset_cut_ ? "the preset's cut" : "as the shape";
-  const float cut_width = ImGui::CalcTextSize(first).x + ImGui::GetFrameHeight() +
-                          2.0f * ImGui::GetStyle().FramePadding.x;
+  const char* cuts = preset_cut_ ? "the preset's cut\0triangle\0pennant\0wedge\0"
+                                 : "as the shape\0triangle\0pennant\0wedge\0";
+  const float cut_width = combo_width(cuts);
   same_line_if_fits(labelled_width(cut_width, "cut"));
   ImGui::SetNextItemWidth(cut_width);
   int cut = static_cast<int>(cut_);
-  if (combo("cut", &cut,
-            preset_cut_ ? "the preset's cut\0triangle\0pennant\0wedge\0"
-                        : "as the shape\0triangle\0pennant\0wedge\0")) {
+  if (combo("cut", &cut, cuts)) {
     cut_ = static_cast<FieldCut>(cut);
   }
   same_line_if_fits(checkbox_width("rays"));
@@ -428,7 +427,8 @@ void FieldPanel::status_line(Document& document) {
                        "Solving (residual %.0e): the field shown is of the inputs before.",
                        live_.residual());
   }
-  ImGui::TextWrapped(
+  // Wrapped at spaces, never inside a number (ImGui's wrap breaks after a decimal point).
+  wrapped_text(
       "taut %.0f %%, wrinkled %.0f %%, slack %.0f %%; weight %#.3g N; thrust H %#.3g N "
       "(the cosine pencil's %#.3g N)",
       100.0 * s.taut_share, 100.0 * s.wrinkled_share, 100.0 * s.slack_share, s.weight_N,
@@ -437,7 +437,7 @@ void FieldPanel::status_line(Document& document) {
     return;
   }
   const Solution& closed = document.scene().solution();
-  ImGui::TextWrapped(
+  wrapped_text(
       "folds from the field: n = %d, Q = %.3f, z_max = %.0f mm (the closed form's: n = %d, "
       "Q = %.3f, z_max = %.0f mm)",
       folds_->n, folds_->Q, folds_->z_max_mm, closed.n, closed.Q, closed.z_max_mm);
@@ -446,10 +446,12 @@ void FieldPanel::status_line(Document& document) {
 void FieldPanel::solve_line() const {
   if (const field::SolvedField* shown = live_.shown()) {
     const field::Solution& s = shown->report.solution;
-    ImGui::TextDisabled(
-        "converged: force residual %.0e, %d Newton steps, mesh %d x %d, %zu triangles",
-        s.relative_residual, s.iterations, shown->inputs.resolution.cells_x,
-        shown->inputs.resolution.cells_y, shown->mesh.triangles.size());
+    // Wrapped at its spaces: a phone's window is narrower than the line.
+    ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+    wrapped_text("converged: force residual %.0e, %d Newton steps, mesh %d x %d, %zu triangles",
+                 s.relative_residual, s.iterations, shown->inputs.resolution.cells_x,
+                 shown->inputs.resolution.cells_y, shown->mesh.triangles.size());
+    ImGui::PopStyleColor();
   }
 }
 
