@@ -118,8 +118,7 @@ void lay_out(Part part, const PanelRect& rect, float font_px, const Least& least
   const float dragged = splits.fraction[static_cast<std::size_t>(part.index)];
   // A dragged edge comes back to the whole pixel it was dragged to, whatever the fraction's
   // rounding.
-  const float chosen =
-      dragged >= 0.0f ? std::round(dragged * span) : s.automatic_px(span, font_px);
+  const float chosen = dragged >= 0.0f ? std::round(dragged * span) : s.automatic_px(span, font_px);
   const float high = span - least_extent(part_named(s.second), s.side_by_side, least);
   const float low = std::min(least_extent(part_named(s.first), s.side_by_side, least), high);
   const float first = std::floor(std::clamp(chosen, low, high));
