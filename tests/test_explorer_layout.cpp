@@ -819,9 +819,6 @@ TEST_F(ExplorerTest, AnOpenMenuLetsNothingUnderItShowThrough) {
   }
 }
 
-}  // namespace
-}  // namespace foldlab::gui
-
 // A finger's grip on the edge between the 2D plot and the 3D view: a press on its middle and a
 // drag of 120 px moves that edge by 120 px (the plot wider, the 3D view narrower by as much), and
 // the edge is kept with the session. A mouse has none.
@@ -881,3 +878,6 @@ TEST_F(ExplorerTest, AFingersGripOnATilesEdgeDragsItAndTheSessionKeepsIt) {
   frame();
   EXPECT_TRUE(explorer_->layout().handle_rects().empty());
 }
+
+}  // namespace
+}  // namespace foldlab::gui
