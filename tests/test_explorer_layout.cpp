@@ -819,5 +819,65 @@ TEST_F(ExplorerTest, AnOpenMenuLetsNothingUnderItShowThrough) {
   }
 }
 
+// A finger's grip on the edge between the 2D plot and the 3D view: a press on its middle and a
+// drag of 120 px moves that edge by 120 px (the plot wider, the 3D view narrower by as much), and
+// the edge is kept with the session. A mouse has none.
+TEST_F(ExplorerTest, AFingersGripOnATilesEdgeDragsItAndTheSessionKeepsIt) {
+  const fs::path session = dir_ / "session.json";
+  open_explorer("equations", {}, session);
+  ASSERT_FALSE(explorer_->set_view("pointer", "coarse"));
+  frame();
+  frame();
+  const auto grip_of = [this](const std::string& edge) -> std::optional<PanelRect> {
+    for (const auto& [key, rect] : explorer_->layout().handle_rects()) {
+      if (key == edge) {
+        return rect;
+      }
+    }
+    return std::nullopt;
+  };
+  const std::optional<PanelRect> grip = grip_of("layout_fold_plot");
+  ASSERT_TRUE(grip.has_value());
+  EXPECT_EQ(explorer_->layout().handle_rects().size(), 5u) << "one grip on each inner edge";
+  EXPECT_GE(std::min(grip->size.x, grip->size.y), 44.0f);
+  const PanelRect fold = rect_of("fold_plot");
+  const PanelRect cloth = rect_of("cloth");
+  // The grip straddles the edge between the two tiles.
+  EXPECT_LT(grip->pos.x, cloth.pos.x);
+  EXPECT_GT(grip->pos.x + grip->size.x, cloth.pos.x);
+  ImGuiIO& io = ImGui::GetIO();
+  const ImVec2 middle(grip->pos.x + 0.5f * grip->size.x, grip->pos.y + 0.5f * grip->size.y);
+  io.MousePos = middle;
+  frame();
+  io.MouseDown[0] = true;
+  frame();
+  for (float step = 1.0f; step <= 4.0f; step += 1.0f) {
+    io.MousePos = ImVec2(middle.x + 30.0f * step, middle.y + 5.0f * step);
+    frame();
+  }
+  io.MouseDown[0] = false;
+  frame();
+  frame();
+  EXPECT_FLOAT_EQ(rect_of("fold_plot").size.x, fold.size.x + 120.0f);
+  EXPECT_FLOAT_EQ(rect_of("cloth").pos.x, cloth.pos.x + 120.0f);
+  EXPECT_FLOAT_EQ(rect_of("cloth").size.x, cloth.size.x - 120.0f);
+  EXPECT_FLOAT_EQ(rect_of("fold_plot").size.y, fold.size.y) << "only the dragged edge moves";
+  EXPECT_TRUE(explorer_->layout().fills_window());
+  EXPECT_TRUE(explorer_->layout().automatic());
+
+  explorer_->save_session_now();
+  open_explorer("equations", {}, session, true);
+  ASSERT_FALSE(explorer_->set_view("pointer", "coarse"));
+  frame();
+  frame();
+  EXPECT_FLOAT_EQ(rect_of("cloth").pos.x, cloth.pos.x + 120.0f);
+
+  // With a mouse there is no grip.
+  ASSERT_FALSE(explorer_->set_view("pointer", "fine"));
+  frame();
+  frame();
+  EXPECT_TRUE(explorer_->layout().handle_rects().empty());
+}
+
 }  // namespace
 }  // namespace foldlab::gui

@@ -422,6 +422,7 @@ void Explorer::frame() {
       layout_.present_button(*panel);
     }
   }
+  layout_.tile_handles(finger_pointer(), kTouchTargetPx * appearance_.pixel_ratio());
   for (const std::unique_ptr<Panel>& panel : panels_) {
     panel->end_frame(context);
   }

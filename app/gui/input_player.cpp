@@ -282,7 +282,16 @@ json layout_json(Explorer& explorer) {
     view_buttons[name] = {
         {"x", rect.pos.x}, {"y", rect.pos.y}, {"w", rect.size.x}, {"h", rect.size.y}};
   }
+  json tile_handles = json::array();
+  for (const auto& [key, rect] : explorer.layout().handle_rects()) {
+    tile_handles.push_back({{"edge", key},
+                            {"x", rect.pos.x},
+                            {"y", rect.pos.y},
+                            {"w", rect.size.x},
+                            {"h", rect.size.y}});
+  }
   return {{"automatic", explorer.layout().automatic()},
+          {"tile_handles", tile_handles},
           {"drawing_areas", drawing_areas},
           {"view_buttons", view_buttons},
           {"submenu_over_parent", submenu_over_parent()},
@@ -575,6 +584,9 @@ bool InputPlayer::start_step(std::size_t index, ImGuiIO& io, Explorer& explorer)
 
 bool InputPlayer::drag_slider(std::size_t index, const json& step, Explorer& explorer) {
   const std::string key = step["drag"].get<std::string>();
+  if (key.starts_with(kTileEdgePrefix)) {
+    return drag_tile_edge(index, step, explorer);
+  }
   const std::optional<SliderPlace> place = find_slider(index, key, explorer);
   if (!place) {
     return false;
@@ -589,6 +601,21 @@ bool InputPlayer::drag_slider(std::size_t index, const json& step, Explorer& exp
     input.shift = step.value("shift", false);
   }
   return true;
+}
+
+bool InputPlayer::drag_tile_edge(std::size_t index, const json& step, Explorer& explorer) {
+  const std::string edge = step["drag"].get<std::string>().substr(kTileEdgePrefix.size());
+  for (const auto& [key, rect] : explorer.layout().handle_rects()) {
+    if (key == edge) {
+      // A finger pressed on the middle of the grip, as drawn in the last frame.
+      const ImVec2 from(rect.pos.x + 0.5f * rect.size.x, rect.pos.y + 0.5f * rect.size.y);
+      queue_press(from, ImVec2(from.x + step.value("dx", 0.0f), from.y + step.value("dy", 0.0f)),
+                  kDragMoves);
+      return true;
+    }
+  }
+  fail(index, "the edge " + edge + " shows no grip (a coarse pointer's, between tiles)");
+  return false;
 }
 
 bool InputPlayer::click_photo(std::size_t index, const json& step, Explorer& explorer) {

@@ -73,6 +73,8 @@ class InputPlayer {
   bool click_slider(std::size_t index, const nlohmann::json& step, Explorer& explorer);
   bool click_label(std::size_t index, const std::string& label, const std::string& panel_key);
   bool drag_slider(std::size_t index, const nlohmann::json& step, Explorer& explorer);
+  // A tile's edge dragged by its grip, "dx" and "dy" pixels.
+  bool drag_tile_edge(std::size_t index, const nlohmann::json& step, Explorer& explorer);
   bool click_photo(std::size_t index, const nlohmann::json& step, Explorer& explorer);
   bool hover_sweep(std::size_t index, const nlohmann::json& step, Explorer& explorer);
   bool check_expect(std::size_t index, const nlohmann::json& expect, Explorer& explorer);

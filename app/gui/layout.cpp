@@ -3,6 +3,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/gui/input_words.hpp"
+#include "app/gui/panels/widgets.hpp"
 #include "core/model/text_format.hpp"
 
 #include <algorithm>
@@ -192,6 +193,119 @@ void Layout::present_button(const Panel& panel) {
     window->Flags |= ImGuiWindowFlags_NoSavedSettings;
   }
   ImGui::End();
+}
+
+void Layout::tile_handles(bool coarse_pointer, float target_px) {
+  handle_rects_.clear();
+  if (!coarse_pointer || presented_ != nullptr || !automatic_) {
+    return;
+  }
+  constexpr ImGuiWindowFlags kGripFlags =
+      ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoBackground |
+      ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoMove |
+      ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoBringToFrontOnFocus |
+      ImGuiWindowFlags_NoNav;
+  const ImGuiIO& io = ImGui::GetIO();
+  std::vector<ImGuiWindow*> grips;
+  ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(0.0f, 0.0f));
+  ImGui::PushStyleVar(ImGuiStyleVar_WindowBorderSize, 0.0f);
+  ImGui::PushStyleVar(ImGuiStyleVar_WindowMinSize, ImVec2(1.0f, 1.0f));
+  for (int split = 0; split < kSplitCount; ++split) {
+    const std::size_t s = static_cast<std::size_t>(split);
+    const PanelRect grip = tile_handle(split, tiles_, target_px, 2.0f * target_px);
+    if (grip.size.x < 1.0f || grip.size.y < 1.0f) {
+      continue;
+    }
+    const bool vertical = kSplits[split].side_by_side;
+    const std::string name = std::string("##tile_handle_") + split_key(split);
+    ImGui::SetNextWindowPos(grip.pos, ImGuiCond_Always);
+    ImGui::SetNextWindowSize(grip.size, ImGuiCond_Always);
+    ImGui::Begin(name.c_str(), nullptr, kGripFlags);
+    ImGui::SetCursorScreenPos(grip.pos);
+    ImGui::InvisibleButton("grip", grip.size);
+    const float finger_px = vertical ? io.MousePos.x : io.MousePos.y;
+    if (ImGui::IsItemActivated()) {
+      handle_grab_px_ = finger_px - tiles_.edge_px[s];
+    }
+    const bool held = ImGui::IsItemActive();
+    // A tap that does not move leaves the edge where the tiles put it.
+    if (held && (vertical ? io.MouseDelta.x : io.MouseDelta.y) != 0.0f) {
+      move_split(split, finger_px - handle_grab_px_, tiles_, splits_);
+      tiles_ = tiled_layout(io.DisplaySize, menu_height_px_, ImGui::GetFontSize(), splits_);
+    }
+    // A rounded bar along the edge with three ridges across it, in the scrollbar's colours (drawn
+    // to be seen over any panel), the whole edge lit while it is dragged.
+    const ImGuiCol fill = held                     ? ImGuiCol_ScrollbarGrabActive
+                          : ImGui::IsItemHovered() ? ImGuiCol_ScrollbarGrabHovered
+                                                   : ImGuiCol_ScrollbarGrab;
+    ImDrawList* draw = ImGui::GetWindowDrawList();
+    const ImVec2 centre(grip.pos.x + 0.5f * grip.size.x, grip.pos.y + 0.5f * grip.size.y);
+    const float thick = std::round(0.3f * target_px);
+    const float length = std::round(0.75f * (vertical ? grip.size.y : grip.size.x));
+    const ImVec2 half =
+        vertical ? ImVec2(0.5f * thick, 0.5f * length) : ImVec2(0.5f * length, 0.5f * thick);
+    const ImVec2 a(centre.x - half.x, centre.y - half.y);
+    const ImVec2 b(centre.x + half.x, centre.y + half.y);
+    const float line = std::max(1.0f, std::round(target_px / 44.0f));
+    draw->AddRectFilled(a, b, ImGui::GetColorU32(fill), 0.5f * thick);
+    draw->AddRect(a, b, ImGui::GetColorU32(ImGuiCol_Border), 0.5f * thick, 0, line);
+    for (int ridge = -1; ridge <= 1; ++ridge) {
+      const float at = static_cast<float>(ridge) * 0.25f * thick;
+      const float inset = 0.25f * thick;
+      if (vertical) {
+        draw->AddLine(ImVec2(a.x + inset, centre.y + at), ImVec2(b.x - inset, centre.y + at),
+                      ImGui::GetColorU32(ImGuiCol_Text), line);
+      } else {
+        draw->AddLine(ImVec2(centre.x + at, a.y + inset), ImVec2(centre.x + at, b.y - inset),
+                      ImGui::GetColorU32(ImGuiCol_Text), line);
+      }
+    }
+    if (held) {
+      const PanelRect& area = tiles_.splits[s];
+      const float edge = tiles_.edge_px[s];
+      ImGui::GetForegroundDrawList()->AddLine(
+          vertical ? ImVec2(edge, area.pos.y) : ImVec2(area.pos.x, edge),
+          vertical ? ImVec2(edge, area.pos.y + area.size.y)
+                   : ImVec2(area.pos.x + area.size.x, edge),
+          ImGui::GetColorU32(ImGuiCol_SeparatorActive), 2.0f * line);
+    }
+    note_target_height(std::min(grip.size.x, grip.size.y), "tile handles");
+    handle_rects_.emplace_back(split_key(split), grip);
+    grips.push_back(ImGui::GetCurrentWindow());
+    ImGui::End();
+  }
+  ImGui::PopStyleVar(3);
+  // The grips lie just over the topmost tile (a tile comes to the front when touched), under any
+  // window or menu that floats over the tiles. ImGui keeps a window's children after it.
+  ImGuiContext& g = *ImGui::GetCurrentContext();
+  ImGuiWindow* below = nullptr;
+  for (const std::unique_ptr<Panel>& panel : panels_) {
+    ImGuiWindow* window =
+        tiled(*panel) ? ImGui::FindWindowByName(panel->window_label().c_str()) : nullptr;
+    if (window != nullptr && window->Active &&
+        (below == nullptr ||
+         ImGui::FindWindowDisplayIndex(window) > ImGui::FindWindowDisplayIndex(below))) {
+      below = window;
+    }
+  }
+  if (below == nullptr) {
+    return;
+  }
+  for (ImGuiWindow* grip : grips) {
+    ImGuiWindow* next = nullptr;
+    for (int i = ImGui::FindWindowDisplayIndex(below) + 1; i < g.Windows.Size; ++i) {
+      if ((g.Windows[i]->Flags & ImGuiWindowFlags_ChildWindow) == 0) {
+        next = g.Windows[i];
+        break;
+      }
+    }
+    if (next == nullptr) {
+      ImGui::BringWindowToDisplayFront(grip);
+    } else if (next != grip) {
+      ImGui::BringWindowToDisplayBehind(grip, next);
+    }
+    below = grip;
+  }
 }
 
 bool Layout::follow_user_edits() {

@@ -53,6 +53,15 @@ class Layout {
   // Whether a presented view has the strip of the cloth's inputs under its read-out (remembered).
   bool presents_inputs() const { return presents_inputs_; }
   void set_presents_inputs(bool shown) { presents_inputs_ = shown; }
+  // On a coarse pointer, after the tiled panels' draw: a grip a finger wide (`target_px`) on each
+  // edge between two tiles, drawn over both, that drags the edge as ImGui's few-pixel window
+  // border does for a mouse. None for a mouse, while a panel is presented, or once the user
+  // arranged the panels.
+  void tile_handles(bool coarse_pointer, float target_px);
+  // Where each grip was drawn in the last frame (its whole target), by its edge's key.
+  const std::vector<std::pair<std::string, PanelRect>>& handle_rects() const {
+    return handle_rects_;
+  }
   // "View > Reset layout": the automatic layout again, from the next frame.
   void reset();
   // True while the panels follow the window (until the user moves or resizes one).
@@ -101,6 +110,9 @@ class Layout {
   std::optional<const Panel*> present_request_;
   // In the user's own arrangement, where a presented panel was, to put it back.
   std::optional<PanelRect> restore_[kTileCount];
+  std::vector<std::pair<std::string, PanelRect>> handle_rects_;
+  // While a grip is held: how far from its edge the finger took it, along the drag.
+  float handle_grab_px_ = 0.0f;
   // Where a presented window was, to put it back.
   std::optional<PanelRect> window_restore_;
   const Panel* window_to_restore_ = nullptr;

@@ -9,6 +9,7 @@
 #include <imgui.h>
 
 #include "app/gui/surface.hpp"
+#include "app/gui/tiles.hpp"
 #include "core/analysis/sweep.hpp"
 #include "core/model/text_format.hpp"
 
@@ -96,16 +97,53 @@ bool is_slider_key(const json& value) {
          std::find(keys.begin(), keys.end(), value.get<std::string>()) != keys.end();
 }
 
+bool is_tile_edge_key(const json& value) {
+  if (!value.is_string()) {
+    return false;
+  }
+  const std::string text = value.get<std::string>();
+  if (!text.starts_with(kTileEdgePrefix)) {
+    return false;
+  }
+  for (int split = 0; split < kSplitCount; ++split) {
+    if (text.substr(kTileEdgePrefix.size()) == kSplits[split].key) {
+      return true;
+    }
+  }
+  return false;
+}
+
 using Problems = std::vector<std::string>;
 
 void check_drag(const json& step, Problems& problems) {
-  if (!is_slider_key(step["drag"])) {
-    problems.push_back("drag needs a slider key (" + detail::join_comma(sweepable_keys()) +
-                       "), not " + detail::cut(step["drag"].dump()));
+  const auto pixels = [&step](const char* field) {
+    return step.contains(field) && step[field].is_number() &&
+           std::abs(step[field].get<double>()) <= 10000.0;
+  };
+  if (is_tile_edge_key(step["drag"])) {
+    if ((step.contains("dx") && !pixels("dx")) || (step.contains("dy") && !pixels("dy")) ||
+        (!step.contains("dx") && !step.contains("dy"))) {
+      problems.push_back("an edge's drag needs \"dx\" or \"dy\" (or both): numbers of pixels");
+    }
+    if (step.contains("shift")) {
+      problems.push_back("\"shift\" belongs to a slider's drag");
+    }
+    return;
   }
-  if (!step.contains("dx") || !step["dx"].is_number() ||
-      std::abs(step["dx"].get<double>()) > 10000.0) {
+  if (!is_slider_key(step["drag"])) {
+    std::vector<std::string> edges;
+    for (int split = 0; split < kSplitCount; ++split) {
+      edges.push_back(std::string(kTileEdgePrefix) + kSplits[split].key);
+    }
+    problems.push_back("drag needs a slider key (" + detail::join_comma(sweepable_keys()) +
+                       ") or a tile's edge (" + detail::join_comma(edges) + "), not " +
+                       detail::cut(step["drag"].dump()));
+  }
+  if (!pixels("dx")) {
     problems.push_back("drag needs \"dx\": a number of pixels");
+  }
+  if (step.contains("dy")) {
+    problems.push_back("\"dy\" belongs to a tile edge's drag");
   }
   if (step.contains("shift") && !step["shift"].is_boolean()) {
     problems.push_back("\"shift\" must be true or false, not " + detail::cut(step["shift"].dump()));
@@ -233,7 +271,7 @@ void check_hover_sweep(const json& step, Problems& problems) {
   }
 }
 
-constexpr std::string_view kDragOptions[] = {"dx", "shift"};
+constexpr std::string_view kDragOptions[] = {"dx", "dy", "shift"};
 constexpr std::string_view kHoverSweepOptions[] = {"x"};
 constexpr std::string_view kSeenOptions[] = {"in"};
 constexpr std::string_view kClickOptions[] = {"at", "ctrl", "in"};

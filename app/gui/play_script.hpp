@@ -62,6 +62,10 @@ struct StepKind {
 // The kind of a step that play_script_problems found runnable.
 const StepKind& step_kind(const nlohmann::json& step);
 
+// A drag step's key for a tile's edge, "edge:" and the edge's key ("edge:layout_fold_plot"): the
+// grip a coarse pointer has on it (Layout::tile_handles).
+inline constexpr std::string_view kTileEdgePrefix = "edge:";
+
 // The frames all of a script's steps may add up to.
 inline constexpr long long kMaxScriptFrames = 100000;
 // The mouse moves of a drag between its press and its release.

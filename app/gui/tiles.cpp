@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <initializer_list>
+#include <vector>
 
 namespace foldlab::gui {
 
@@ -115,10 +116,14 @@ void lay_out(Part part, const PanelRect& rect, float font_px, const Least& least
   const TileSplit& s = kSplits[part.index];
   const float span = s.side_by_side ? rect.size.x : rect.size.y;
   const float dragged = splits.fraction[static_cast<std::size_t>(part.index)];
-  const float chosen = dragged >= 0.0f ? dragged * span : s.automatic_px(span, font_px);
+  // A dragged edge comes back to the whole pixel it was dragged to, whatever the fraction's
+  // rounding.
+  const float chosen = dragged >= 0.0f ? std::round(dragged * span) : s.automatic_px(span, font_px);
   const float high = span - least_extent(part_named(s.second), s.side_by_side, least);
   const float low = std::min(least_extent(part_named(s.first), s.side_by_side, least), high);
   const float first = std::floor(std::clamp(chosen, low, high));
+  out.edge_px[static_cast<std::size_t>(part.index)] =
+      (s.side_by_side ? rect.pos.x : rect.pos.y) + first;
   PanelRect a = rect;
   PanelRect b = rect;
   if (s.side_by_side) {
@@ -184,18 +189,62 @@ bool drag_split(int tile, Edge edge, float to_px, const TiledLayout& layout, Lay
     const auto [split, first] = *parent;
     if (kSplits[split].side_by_side == vertical && first == tile_is_first) {
       const PanelRect& area = layout.splits[static_cast<std::size_t>(split)];
-      const float origin = vertical ? area.pos.x : area.pos.y;
-      const float span = vertical ? area.size.x : area.size.y;
-      if (span <= 0.0f) {
+      if ((vertical ? area.size.x : area.size.y) <= 0.0f) {
         return false;
       }
-      splits.fraction[static_cast<std::size_t>(split)] =
-          std::clamp((to_px - origin) / span, 0.0f, 1.0f);
+      move_split(split, to_px, layout, splits);
       return true;
     }
     part = Part{false, split};
   }
   return false;
+}
+
+void move_split(int split, float to_px, const TiledLayout& layout, LayoutSplits& splits) {
+  const PanelRect& area = layout.splits[static_cast<std::size_t>(split)];
+  const bool vertical = kSplits[split].side_by_side;
+  const float origin = vertical ? area.pos.x : area.pos.y;
+  const float span = vertical ? area.size.x : area.size.y;
+  if (span > 0.0f) {
+    splits.fraction[static_cast<std::size_t>(split)] =
+        std::clamp((to_px - origin) / span, 0.0f, 1.0f);
+  }
+}
+
+PanelRect tile_handle(int split, const TiledLayout& layout, float across_px, float along_px) {
+  const bool vertical = kSplits[split].side_by_side;
+  const PanelRect& area = layout.splits[static_cast<std::size_t>(split)];
+  const float edge = layout.edge_px[static_cast<std::size_t>(split)];
+  const float start = vertical ? area.pos.y : area.pos.x;
+  const float end = start + (vertical ? area.size.y : area.size.x);
+  // Where the edges across this one end on it, from either side.
+  std::vector<float> cuts{start, end};
+  for (int other = 0; other < kSplitCount; ++other) {
+    if (kSplits[other].side_by_side == vertical) {
+      continue;
+    }
+    const PanelRect& across = layout.splits[static_cast<std::size_t>(other)];
+    const float low = vertical ? across.pos.x : across.pos.y;
+    const float high = low + (vertical ? across.size.x : across.size.y);
+    const float at = layout.edge_px[static_cast<std::size_t>(other)];
+    if ((low == edge || high == edge) && at > start && at < end) {
+      cuts.push_back(at);
+    }
+  }
+  std::sort(cuts.begin(), cuts.end());
+  float from = start;
+  float to = start;
+  for (std::size_t i = 1; i < cuts.size(); ++i) {
+    if (cuts[i] - cuts[i - 1] > to - from) {
+      from = cuts[i - 1];
+      to = cuts[i];
+    }
+  }
+  const float length = std::min(along_px, to - from);
+  const float along_pos = std::floor(0.5f * (from + to - length));
+  const float across_pos = std::floor(edge - 0.5f * across_px);
+  return vertical ? PanelRect{ImVec2(across_pos, along_pos), ImVec2(across_px, length)}
+                  : PanelRect{ImVec2(along_pos, across_pos), ImVec2(length, across_px)};
 }
 
 }  // namespace foldlab::gui

@@ -79,10 +79,11 @@ struct LayoutSplits {
 };
 
 // Every tile's rectangle (by tile_index) and every edge's rectangle, the area it divides (by
-// split).
+// split), and where each edge lies across that area (x for a vertical edge, y otherwise).
 struct TiledLayout {
   std::array<PanelRect, kTileCount> tiles;
   std::array<PanelRect, kSplitCount> splits;
+  std::array<float, kSplitCount> edge_px{};
   const PanelRect* find(std::string_view panel_key) const {
     const std::optional<int> i = tile_index(panel_key);
     return i ? &tiles[static_cast<std::size_t>(*i)] : nullptr;
@@ -99,5 +100,13 @@ TiledLayout tiled_layout(ImVec2 display, float top_px, float font_px,
 // fraction of what it divides. False when that edge is the window's border, which stays.
 enum class Edge { left, right, top, bottom };
 bool drag_split(int tile, Edge edge, float to_px, const TiledLayout& layout, LayoutSplits& splits);
+// The edge `split` moved to `to_px` (screen coordinates), as a fraction of what it divides; the
+// layout keeps each side's least size.
+void move_split(int split, float to_px, const TiledLayout& layout, LayoutSplits& splits);
+
+// A finger's grip on the edge `split`: `across_px` wide across the edge, centred on it, and up to
+// `along_px` long, centred on the longest stretch of the edge that no other edge meets (so that
+// where three tiles meet no two grips overlap).
+PanelRect tile_handle(int split, const TiledLayout& layout, float across_px, float along_px);
 
 }  // namespace foldlab::gui

@@ -1,6 +1,8 @@
 #include "app/gui/panels/axis_inputs.hpp"
 
 #include <algorithm>
+#include <string>
+#include <vector>
 
 #include <imgui.h>
 
@@ -49,7 +51,11 @@ std::string shown_value(const std::string& key, double stored) {
 
 bool key_combo(const char* label, std::string& key) {
   bool changed = false;
-  ImGui::SetNextItemWidth(ems(5.0f));
+  std::vector<std::string> symbols;
+  for (const std::string& option : sweepable_keys()) {
+    symbols.push_back(key_symbol(option));
+  }
+  ImGui::SetNextItemWidth(combo_width(symbols));
   if (begin_combo(label, key_symbol(key).c_str())) {
     for (const std::string& option : sweepable_keys()) {
       ImGui::PushID(option.c_str());

@@ -450,9 +450,10 @@ bool ClothViewPanel::toolbar(PanelContext& context) {
   help_marker(
       "Draws the out-of-plane depth z this many times deeper, to see the folds; the "
       "numbers are not changed.");
-  ImGui::SetNextItemWidth(ems(7.5f));
+  constexpr const char* kPrints = "plain\0woven checks\0stripes\0photo\0";
+  ImGui::SetNextItemWidth(combo_width(kPrints));
   int print = static_cast<int>(style_.print);
-  if (combo("print", &print, "plain\0woven checks\0stripes\0photo\0")) {
+  if (combo("print", &print, kPrints)) {
     style_.print = static_cast<ClothStyle::Print>(print);
   }
   same_line_if_fits(labelled_width(colour_field_width(), "colour") + help_marker_width());
@@ -505,16 +506,19 @@ bool ClothViewPanel::toolbar(PanelContext& context) {
       style_.time_s += ImGui::GetIO().DeltaTime;  // the solver does not run: only the shader moves
     }
   }
-  same_line_if_fits(labelled_width(ems(6.5f), "colour by"));
-  ImGui::SetNextItemWidth(ems(6.5f));
+  constexpr const char* kColourBys = "fabric\0z\0fold sign\0";
+  same_line_if_fits(labelled_width(combo_width(kColourBys), "colour by"));
+  ImGui::SetNextItemWidth(combo_width(kColourBys));
   int colour_by = static_cast<int>(style_.colour_by);
-  if (combo("colour by", &colour_by, "fabric\0z\0fold sign\0")) {
+  if (combo("colour by", &colour_by, kColourBys)) {
     style_.colour_by = static_cast<ClothStyle::ColourBy>(colour_by);
   }
-  same_line_if_fits(labelled_width(ems(8.5f), kFoldsFromLabel) + ImGui::CalcTextSize(" (?)").x);
-  ImGui::SetNextItemWidth(ems(8.5f));
+  constexpr const char* kSources = "closed form\0tension field\0";
+  same_line_if_fits(labelled_width(combo_width(kSources), kFoldsFromLabel) +
+                    ImGui::CalcTextSize(" (?)").x);
+  ImGui::SetNextItemWidth(combo_width(kSources));
   int source = static_cast<int>(fold_source_);
-  if (combo(kFoldsFromLabel, &source, "closed form\0tension field\0")) {
+  if (combo(kFoldsFromLabel, &source, kSources)) {
     fold_source_ = static_cast<FoldSource>(source);
   }
   help_marker(

@@ -382,21 +382,20 @@ FieldDrawing FieldPanel::drawing_style(const PanelContext& context) const {
 }
 
 void FieldPanel::controls() {
-  ImGui::SetNextItemWidth(ImGui::CalcTextSize("tension").x + 3.0f * ImGui::GetFontSize());
+  constexpr const char* kColourings = "state\0tension\0";
+  ImGui::SetNextItemWidth(combo_width(kColourings));
   int colouring = static_cast<int>(colouring_);
-  if (combo("colour by", &colouring, "state\0tension\0")) {
+  if (combo("colour by", &colouring, kColourings)) {
     colouring_ = static_cast<FieldColouring>(colouring);
   }
   // A preset with a cut of its own puts it in the shape's place.
-  const char* first = preset_cut_ ? "the preset's cut" : "as the shape";
-  const float cut_width = ImGui::CalcTextSize(first).x + ImGui::GetFrameHeight() +
-                          2.0f * ImGui::GetStyle().FramePadding.x;
+  const char* cuts = preset_cut_ ? "the preset's cut\0triangle\0pennant\0wedge\0"
+                                 : "as the shape\0triangle\0pennant\0wedge\0";
+  const float cut_width = combo_width(cuts);
   same_line_if_fits(labelled_width(cut_width, "cut"));
   ImGui::SetNextItemWidth(cut_width);
   int cut = static_cast<int>(cut_);
-  if (combo("cut", &cut,
-            preset_cut_ ? "the preset's cut\0triangle\0pennant\0wedge\0"
-                        : "as the shape\0triangle\0pennant\0wedge\0")) {
+  if (combo("cut", &cut, cuts)) {
     cut_ = static_cast<FieldCut>(cut);
   }
   same_line_if_fits(checkbox_width("rays"));
@@ -464,10 +463,12 @@ void FieldPanel::status_line(Document& document, bool side_by_side) {
 void FieldPanel::solve_line() const {
   if (const field::SolvedField* shown = live_.shown()) {
     const field::Solution& s = shown->report.solution;
-    ImGui::TextDisabled(
-        "converged: force residual %.0e, %d Newton steps, mesh %d x %d, %zu triangles",
-        s.relative_residual, s.iterations, shown->inputs.resolution.cells_x,
-        shown->inputs.resolution.cells_y, shown->mesh.triangles.size());
+    // Wrapped at its spaces: a phone's window is narrower than the line.
+    ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+    wrapped_text("converged: force residual %.0e, %d Newton steps, mesh %d x %d, %zu triangles",
+                 s.relative_residual, s.iterations, shown->inputs.resolution.cells_x,
+                 shown->inputs.resolution.cells_y, shown->mesh.triangles.size());
+    ImGui::PopStyleColor();
   }
 }
 

@@ -166,9 +166,10 @@ void MethodPanel::tolerance_field(Document& document) {
         document.apply(Edit::choose(std::string(kToleranceKey), tolerance_text_)).value_or("");
   }
   help_marker(std::string(spec.help).c_str());
-  ImGui::SameLine();
+  constexpr const char* kPaperButton = "the paper's 5 %";
+  same_line_if_fits(button_width(kPaperButton));
   ImGui::BeginDisabled(tolerance == kPaperTolerance);
-  if (small_button("the paper's 5 %")) {
+  if (small_button(kPaperButton)) {
     document.apply(Edit::input(std::string(kToleranceKey), kPaperTolerance));
     tolerance_problem_.clear();
   }

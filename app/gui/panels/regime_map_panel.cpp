@@ -205,8 +205,12 @@ bool RegimeMapPanel::controls(const Parameters& current) {
   }
   same_line_if_fits(range_inputs_width());
   restart_needed |= range_inputs("y range", y_key_, y_from_, y_to_);
-  ImGui::SetNextItemWidth(ems(6.5f));
   static const int sizes[] = {64, 128, 256, 512};
+  std::vector<std::string> size_names;
+  for (int s : sizes) {
+    size_names.push_back(std::to_string(s) + "²");
+  }
+  ImGui::SetNextItemWidth(combo_width(size_names));
   if (begin_combo("cells", (std::to_string(resolution_) + "²").c_str())) {
     for (int s : sizes) {
       if (ImGui::Selectable((std::to_string(s) + "²").c_str(), s == resolution_)) {

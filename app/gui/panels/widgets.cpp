@@ -208,6 +208,22 @@ bool combo(const char* label, int* current, const char* items_zero_separated) {
   return changed;
 }
 
+float combo_width(const char* items_zero_separated) {
+  float widest_px = 0.0f;
+  for (const char* item = items_zero_separated; *item != '\0'; item += std::strlen(item) + 1) {
+    widest_px = std::max(widest_px, ImGui::CalcTextSize(item).x);
+  }
+  return widest_px + 2.0f * ImGui::GetStyle().FramePadding.x + ImGui::GetFrameHeight();
+}
+
+float combo_width(std::span<const std::string> choices) {
+  float widest_px = 0.0f;
+  for (const std::string& choice : choices) {
+    widest_px = std::max(widest_px, ImGui::CalcTextSize(choice.c_str()).x);
+  }
+  return widest_px + 2.0f * ImGui::GetStyle().FramePadding.x + ImGui::GetFrameHeight();
+}
+
 void begin_target_tally() {
   tally_now = {};
   // Every frame a slider, button, checkbox, combo, field or tab draws is this tall.

@@ -4,6 +4,7 @@
 
 #include <functional>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 
@@ -105,11 +106,15 @@ bool begin_combo(const char* label, const char* preview, ImGuiComboFlags flags =
 void end_combo();
 // ImGui::Combo over "a\0b\0c\0" items, through begin_combo.
 bool combo(const char* label, int* current, const char* items_zero_separated);
+// The width a combo needs to show the widest of its choices whole beside its arrow, a frame's
+// height square (a target wide for a finger): from the text, never a fixed width.
+float combo_width(const char* items_zero_separated);
+float combo_width(std::span<const std::string> choices);
 
 // The smallest target a finger was given in the frame drawn last (read between frames) (a frame's
 // height for every slider, button, checkbox and combo; the rows of lists, combos and menus; the
-// help markers): its height in the screen's pixels and what it was. note_target() counts the last
-// item.
+// help markers; a tile edge's grip across the edge): its height in the screen's pixels and what it
+// was. note_target() counts the last item.
 struct SmallestTarget {
   float height_px = 0.0f;
   std::string what;
