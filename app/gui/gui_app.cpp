@@ -547,6 +547,7 @@ struct WebRun {
   std::unique_ptr<Surface> surface;
   std::unique_ptr<ExplorerRun> run;
   double rest_start_s = 0.0;
+  bool first_frame_marked = false;
 };
 // The page's one run, for the state the page asks for (below); null once it ended.
 WebRun* running_page = nullptr;
@@ -598,6 +599,8 @@ EM_JS(void, tell_page_screen, (double zoom_per_wheel_step), {
   };
 });
 
+EM_JS(void, mark_first_frame, (), { performance.mark('foldlab: first frame'); });
+
 void web_frame(void* argument) {
   auto& web = *static_cast<WebRun*>(argument);
   const double now_s = emscripten_get_now() / 1000.0;
@@ -610,6 +613,11 @@ void web_frame(void* argument) {
   }
   web.rest_start_s = now_s;
   const int status = app::guarded([&] { return web.run->frame() ? -1 : web.run->finish(); });
+  if (!web.first_frame_marked) {
+    // The page bench reads the first frame's time from this mark, not from polling the state.
+    mark_first_frame();
+    web.first_frame_marked = true;
+  }
   if (status >= 0) {
     emscripten_cancel_main_loop();
     web.run.reset();

@@ -134,7 +134,8 @@ class DevTools:
 class Page:
     """A served site and one headless Chromium showing it."""
 
-    def __init__(self, args, root, query, flags=(), play_dir=None, touch=False, metrics=None):
+    def __init__(self, args, root, query, flags=(), play_dir=None, touch=False, metrics=None,
+                 gpu_running=False):
         self.root = root
         serve = os.path.join(root, "serve")
         os.makedirs(serve, exist_ok=True)
@@ -173,6 +174,17 @@ class Page:
             width, height, ratio = metrics
             self.tools.send("Emulation.setDeviceMetricsOverride", width=width, height=height,
                             deviceScaleFactor=ratio, mobile=True)
+        if gpu_running:
+            # A browser already showing WebGL elsewhere (its GPU process up), as a student's is:
+            # another origin's page, so nothing of this site is cached or compiled by it.
+            self.tools.send("Page.navigate", url="data:text/html,<canvas></canvas><script>"
+                            "window.gl = document.querySelector('canvas').getContext('webgl2')"
+                            "</script>")
+            deadline = time.monotonic() + 60
+            while self.tools.evaluate("Boolean(window.gl)") is not True:
+                if time.monotonic() > deadline:
+                    raise RuntimeError("no WebGL2 context on the warm-up page")
+                time.sleep(0.05)
         self.tools.send("Page.navigate", url=self.url)
 
     def close(self):
