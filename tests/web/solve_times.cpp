@@ -16,7 +16,6 @@
 #include <cstdlib>
 #include <cstring>
 #include <functional>
-#include <memory>
 #include <string>
 #include <vector>
 
@@ -82,12 +81,12 @@ std::string field_cases(double min_ms, double warm_up_ms) {
                        settle(live);
                      }});
   }
-  auto drag = std::make_shared<LiveField>();
-  auto d_mm = std::make_shared<double>(100.0);
-  cases.push_back({"field drag frame, d + 1 mm, 16 cells", [drag, d_mm] {
-                     *d_mm = *d_mm >= 300.0 ? 100.0 : *d_mm + 1.0;
-                     drag->request(field_inputs(*d_mm, 16));
-                     settle(*drag);
+  LiveField drag;
+  double d_mm = 100.0;
+  cases.push_back({"field drag frame, d + 1 mm, 16 cells", [&drag, &d_mm] {
+                     d_mm = d_mm >= 300.0 ? 100.0 : d_mm + 1.0;
+                     drag.request(field_inputs(d_mm, 16));
+                     settle(drag);
                    }});
   const Clock::time_point first_start = Clock::now();
   cases.front().once();
