@@ -448,6 +448,34 @@ TEST(FieldRegularisation, HalvingTheDampingFloorMovesNoFigure) {
   EXPECT_NEAR(a.solution.slack_share, b.solution.slack_share, 1e-9);
 }
 
+// A budget spent on the first step of a stiff cloth's cold solve (a ladder of meshes, then Y
+// raised tenfold at a time: six rungs here, each of which would take a step) ends it there: no
+// later rung takes its own step, and what comes back is the real cloth's unconverged field, its
+// residual the one a fresh look at the same positions finds.
+TEST(FieldColdSolve, ASpentBudgetEndsTheLadder) {
+  Parameters p = default_parameters();
+  p.fabric.youngs_modulus_MPa = 2e4;
+  const Material material = material_of(p.fabric);
+  const MeshResolution resolution{32, 16, MeshSplit::union_jack};
+  const Outline outline = make_outline(p, OutlineKind::rectangular);
+  Solver solver(make_mesh(outline, resolution));
+  SolveOptions options;
+  options.time_budget_ms = 1e-6;
+  const Solution spent = solve_cold(solver, outline, material, resolution, options);
+  EXPECT_EQ(spent.iterations, 1);
+  EXPECT_FALSE(spent.converged);
+  Solver fresh(make_mesh(outline, resolution));
+  SolveOptions look;
+  look.max_iterations = 0;
+  const Solution again = fresh.solve(material, support_targets(outline), look, &spent);
+  EXPECT_EQ(spent.relative_residual, again.relative_residual);
+  // Without a budget the same ladder takes more steps than it has rungs.
+  Solver other(make_mesh(outline, resolution));
+  const Solution whole = solve_cold(other, outline, material, resolution);
+  EXPECT_TRUE(whole.converged) << whole.relative_residual << " " << whole.iterations;
+  EXPECT_GT(whole.iterations, 8);
+}
+
 // A warm re-solve (from the field of d = 100 mm, after d moved 1 %) lands on the field a cold
 // solve finds: the same thrust, energy and regions.
 TEST(FieldWarmStart, ReachesTheColdField) {

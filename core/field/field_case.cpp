@@ -37,6 +37,21 @@ namespace {
 
 // The coarse-to-fine ladder: the cut solved on meshes of half the cells first, each solution the
 // next one's start.
+// The budget is the whole solve's: each later rung gets what the earlier ones left. Once it is
+// spent a rung takes no step and only states the residual where it stands (every solve takes at
+// least one step otherwise, so a ladder of rungs each taking one would overrun by all of them).
+SolveOptions rest_of(const SolveOptions& options, double spent_ms) {
+  SolveOptions rest = options;
+  if (options.time_budget_ms > 0.0) {
+    rest.time_budget_ms = options.time_budget_ms - spent_ms;
+    if (!(rest.time_budget_ms > 0.0)) {
+      rest.time_budget_ms = 0.0;
+      rest.max_iterations = 0;
+    }
+  }
+  return rest;
+}
+
 Solution solve_ladder(Solver& solver, const Outline& outline, const Material& material,
                       const MeshResolution& resolution, const SolveOptions& options) {
   const std::vector<Eigen::Vector2d> targets = support_targets(outline);
@@ -49,13 +64,8 @@ Solution solve_ladder(Solver& solver, const Outline& outline, const Material& ma
   Solver coarse_solver(make_mesh(outline, coarse));
   const Solution coarse_solution = solve_ladder(coarse_solver, outline, material, coarse, options);
   const Solution start = transferred_start(coarse_solver.mesh(), coarse_solution, solver.mesh());
-  SolveOptions fine_options = options;
-  if (options.time_budget_ms > 0.0) {
-    // The budget is the whole ladder's: the finest rung gets what the coarser ones left (at
-    // least one step, as every solve takes).
-    fine_options.time_budget_ms = std::max(1e-3, options.time_budget_ms - coarse_solution.solve_ms);
-  }
-  Solution fine = solver.solve(material, targets, fine_options, &start);
+  Solution fine =
+      solver.solve(material, targets, rest_of(options, coarse_solution.solve_ms), &start);
   fine.solve_ms += coarse_solution.solve_ms;
   fine.iterations += coarse_solution.iterations;
   return fine;
@@ -89,12 +99,8 @@ Solution solve_cold(Solver& solver, const Outline& outline, const Material& mate
   const std::vector<Eigen::Vector2d> targets = support_targets(outline);
   while (soft.stiffness_N_per_mm < material.stiffness_N_per_mm) {
     soft.stiffness_N_per_mm = std::min(material.stiffness_N_per_mm, 10.0 * soft.stiffness_N_per_mm);
-    SolveOptions left = options;
-    if (options.time_budget_ms > 0.0) {
-      left.time_budget_ms = std::max(1e-3, options.time_budget_ms - solve_ms);
-    }
     const Solution softer = std::move(solution);
-    solution = solver.solve(soft, targets, left, &softer);
+    solution = solver.solve(soft, targets, rest_of(options, solve_ms), &softer);
     iterations += solution.iterations;
     solve_ms += solution.solve_ms;
   }
