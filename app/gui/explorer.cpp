@@ -413,12 +413,17 @@ void Explorer::frame() {
       continue;  // hidden behind the presented one, and not drawn
     }
     const bool presentable = Layout::presentable(*panel);
+    // On a phone the views are switched under the read-out, with no tiles to go back to; on a
+    // screen the presented view's title bar is a menu of the menu bar (MenuBar).
+    const bool title_in_menu = layout_.presented() == panel.get() && !shows_one_view();
     if (presentable) {
       layout_.place(*panel);
     }
+    if (title_in_menu) {
+      next_panel_without_title_bar();
+    }
     panel->draw(context);
-    // On a phone the views are switched under the read-out, with no tiles to go back to.
-    if (presentable && !shows_one_view()) {
+    if (presentable && !shows_one_view() && !title_in_menu) {
       layout_.present_button(*panel);
     }
   }

@@ -105,11 +105,30 @@ void MenuBar::presenting_items(PanelContext& context) {
   const auto item_width = [&style](const char* label) {
     return ImGui::CalcTextSize(label).x + 2.0f * style.ItemSpacing.x;
   };
-  const float needed =
-      item_width(kBackToTilesLabel) + (strip_item ? item_width(strip_label) : 0.0f);
-  const bool fits =
-      ImGui::GetCursorPosX() + needed <= ImGui::GetWindowWidth() - style.WindowPadding.x;
-  if (ImGui::MenuItem(fits ? kBackToTilesLabel : kBackToTilesShortLabel)) {
+  Panel* shown = nullptr;
+  for (const std::unique_ptr<Panel>& panel : context.panels) {
+    if (panel.get() == layout_.presented()) {
+      shown = panel.get();
+    }
+  }
+  // The view's menu and the strip's item first; "Back to the tiles" in as many words as leave
+  // them on the bar, or none (it is in the view's menu, and Esc).
+  const float room = ImGui::GetWindowWidth() - style.WindowPadding.x - ImGui::GetCursorPosX() -
+                     (strip_item ? item_width(strip_label) : 0.0f) -
+                     (shown != nullptr ? item_width(shown->name()) : 0.0f);
+  const char* back = item_width(kBackToTilesLabel) <= room        ? kBackToTilesLabel
+                     : item_width(kBackToTilesShortLabel) <= room ? kBackToTilesShortLabel
+                                                                  : nullptr;
+  // The presented view's title bar, folded into the bar above it: its row is the picture's.
+  if (shown != nullptr && ImGui::BeginMenu(shown->name())) {
+    shown->presented_menu_items(context);
+    ImGui::Separator();
+    if (ImGui::MenuItem("Back to the tiles", "Esc")) {
+      layout_.request_present(nullptr);
+    }
+    ImGui::EndMenu();
+  }
+  if (back != nullptr && ImGui::MenuItem(back)) {
     layout_.request_present(nullptr);
   }
   if (strip_item && ImGui::MenuItem(strip_label)) {

@@ -178,6 +178,9 @@ class Panel {
   virtual bool is_open() const { return true; }
   // Whether View > Present offers the panel although it has no tile.
   virtual bool presentable() const { return false; }
+  // Presented on a screen, the panel's title bar is a menu in the menu bar, named after it: what
+  // the title bar held (its settings, its tabs) as that menu's items, before "Back to the tiles".
+  virtual void presented_menu_items(PanelContext& /*context*/) {}
   // Draws `view` alone into the current ImGui window, `size_px` from the cursor, for a picture
   // (picture.hpp). False: the panel leaves its pictures to picture.cpp.
   virtual bool draw_picture(PictureView /*view*/, ImVec2 /*size_px*/, Document& /*document*/,

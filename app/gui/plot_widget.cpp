@@ -430,7 +430,8 @@ AxisTicks fitted_ticks(double lo, double hi, bool log, double length_px,
       const double room = std::abs(px(ticks.values[i]) - px(ticks.values[i - 1]));
       fits = room >= 0.5 * (extent(ticks.labels[i]) + extent(ticks.labels[i - 1])) + gap_px;
     }
-    if (fits)
+    // One label alone ("0") says nothing of the axis's span: the ends of a denser set below may.
+    if (fits && ticks.values.size() >= 2)
       return ticks;
     if (ticks.values.size() <= 2)
       break;
@@ -927,6 +928,27 @@ void Plot::drag_pan(Frame& f) const {
   }
 }
 
+namespace {
+
+// The smallest step of 1, 2 or 5 times a power of ten whose labels ("-500" beside "0"), `scale`
+// px a unit apart, keep half a font's height apart, as fitted_ticks asks of them.
+double least_tick_step(double scale, float font) {
+  const float zero_px = ImGui::CalcTextSize("0").x;
+  for (double decade = 1e-3; decade < 1e12; decade *= 10.0) {
+    for (const double mantissa : {1.0, 2.0, 5.0}) {
+      const double step = mantissa * decade;
+      char label[32];
+      std::snprintf(label, sizeof label, "%g", -step);
+      if (step * scale >= 0.5 * (ImGui::CalcTextSize(label).x + zero_px) + 0.5 * font) {
+        return step;
+      }
+    }
+  }
+  return 1e12;
+}
+
+}  // namespace
+
 void Plot::equalise_scales(Frame& f) const {
   if (!equal_scales_ || f.x_log || f.y_log) {
     return;
@@ -941,7 +963,12 @@ void Plot::equalise_scales(Frame& f) const {
     t1 = centre + half;
   };
   if (x_scale > y_scale && narrow_frame_) {
-    const float keep_px = static_cast<float>(y_scale * (f.xt1 - f.xt0));
+    // No narrower than three ticks need, at the smallest round step whose labels do not meet at
+    // this scale: a cloth much taller than wide would leave room for one, "0", and the x axis
+    // would say nothing of its width. What that adds shows more of the paper beside the cloth.
+    const float keep_px = static_cast<float>(
+        std::max(std::min(width_px, 3.0 * least_tick_step(y_scale, f.font) * y_scale),
+                 y_scale * (f.xt1 - f.xt0)));
     const float centre = 0.5f * (f.lay.min.x + f.lay.max.x);
     f.lay.min.x = std::floor(centre - 0.5f * keep_px);
     f.lay.max.x = std::ceil(centre + 0.5f * keep_px);

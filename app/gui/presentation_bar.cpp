@@ -136,6 +136,12 @@ float play_button_width(const ParametersPanel& parameters) {
   return ImGui::CalcTextSize(play_label(parameters, true).c_str()).x + 2.0f * style.FramePadding.x;
 }
 
+// As tall as the read-out's line beside it, so that the button costs the picture nothing: a
+// frame's padding is for a finger only.
+float play_button_height() {
+  return finger_pointer() ? ImGui::GetFrameHeight() : ImGui::GetTextLineHeight() + 2.0f;
+}
+
 // At the right of the read-out's first line, so that it costs the picture no row: plays the input
 // the Parameters panel's "animate" chose through its range, or pauses it where it is.
 void play_pause(PanelContext& context, ParametersPanel& parameters, float width) {
@@ -146,7 +152,15 @@ void play_pause(PanelContext& context, ParametersPanel& parameters, float width)
       ImGui::GetWindowPos().x + width - style.WindowPadding.x - play_button_width(parameters),
       cursor.y));
   const std::string label = play_label(parameters, playing) + "###present play";
-  if (ImGui::Button(label.c_str(), ImVec2(play_button_width(parameters), 0.0f))) {
+  // The label in the middle of a button shorter than a frame.
+  ImGui::PushStyleVar(
+      ImGuiStyleVar_FramePadding,
+      ImVec2(style.FramePadding.x,
+             std::min(style.FramePadding.y, 0.5f * (play_button_height() - ImGui::GetFontSize()))));
+  const bool clicked =
+      ImGui::Button(label.c_str(), ImVec2(play_button_width(parameters), play_button_height()));
+  ImGui::PopStyleVar();
+  if (clicked) {
     parameters.toggle_play(context.document, context.status);
   }
   if (ImGui::IsItemHovered()) {
@@ -198,6 +212,8 @@ float PresentationBar::draw(PanelContext& context, float top) {
   const ImGuiStyle& style = ImGui::GetStyle();
   const float width = std::floor(display.x);
   const float available = width - 2.0f * style.WindowPadding.x;
+  // Above and below its rows no more than between them: the rows are the picture's.
+  const float padding_y = style.ItemSpacing.y;
   // The inputs under the read-out, for a "what if" without leaving the view; not over the
   // Parameters panel itself, whose own play button is in sight.
   const bool presents_parameters = layout_.presented() == &parameters;
@@ -220,7 +236,7 @@ float PresentationBar::draw(PanelContext& context, float top) {
                     available - play_room);
   const bool strip = layout_.presents_inputs() && !presents_parameters;
   message_ = message_for_presented(context, strip);
-  float text_height = std::max(headlines.height, play ? ImGui::GetFrameHeight() : 0.0f);
+  float text_height = std::max(headlines.height, play ? play_button_height() : 0.0f);
   if (!message_.empty()) {
     text_height +=
         style.ItemSpacing.y + ImGui::CalcTextSize(message_.c_str(), nullptr, false, available).y;
@@ -235,14 +251,17 @@ float PresentationBar::draw(PanelContext& context, float top) {
     const int rows = view_switch_rows(context, available);
     text_height += static_cast<float>(rows) * (ImGui::GetFrameHeight() + style.ItemSpacing.y);
   }
-  const float height = std::ceil(text_height + 2.0f * style.WindowPadding.y);
+  const float height = std::ceil(text_height + 2.0f * padding_y);
   ImGui::SetNextWindowPos(ImVec2(0.0f, top), ImGuiCond_Always);
   ImGui::SetNextWindowSize(ImVec2(width, height), ImGuiCond_Always);
   const ImGuiWindowFlags flags = ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoResize |
                                  ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoCollapse |
                                  ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoScrollbar |
                                  ImGuiWindowFlags_NoScrollWithMouse;
-  if (ImGui::Begin(kWindow, nullptr, flags)) {
+  ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(style.WindowPadding.x, padding_y));
+  const bool shown = ImGui::Begin(kWindow, nullptr, flags);
+  ImGui::PopStyleVar();
+  if (shown) {
     context.renderer.fill_window_background();
     ImGui::PushTextWrapPos(0.0f);
     if (one_view) {
@@ -257,7 +276,7 @@ float PresentationBar::draw(PanelContext& context, float top) {
     draw_headlines(headlines);
     // A button a finger's height is taller than a line of the read-out: what comes under them
     // starts under the button, not over its foot.
-    const float gap = headlines_top + ImGui::GetFrameHeight() - ImGui::GetCursorScreenPos().y;
+    const float gap = headlines_top + play_button_height() - ImGui::GetCursorScreenPos().y;
     if (play && gap > 0.0f) {
       ImGui::Dummy(ImVec2(0.0f, gap));
     }

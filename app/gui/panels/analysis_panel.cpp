@@ -155,7 +155,9 @@ void AnalysisPanel::draw(PanelContext& context) {
   if (!tab_selected_) {
     shown_tab_ = initial_tab_.empty() ? shown_tab_ : initial_tab_;
   }
-  if (presented && title_bar_tabs(shown_tab_)) {
+  const bool titled = (ImGui::GetCurrentWindow()->Flags & ImGuiWindowFlags_NoTitleBar) == 0;
+  // Without a title bar the tabs are items of the menu that stands for it.
+  if (presented && (!titled || title_bar_tabs(shown_tab_))) {
     tab_selected_ = true;
     tabs_in_title_bar_ = true;
     draw_tab(context, shown_tab_, presented);
@@ -186,6 +188,22 @@ void AnalysisPanel::draw(PanelContext& context) {
     ImGui::EndTabBar();
   }
   ImGui::End();
+}
+
+void AnalysisPanel::presented_menu_items(PanelContext& /*context*/) {
+  for (const AnalysisTab& tab : kTabs) {
+    if (ImGui::MenuItem(tab.label, nullptr, shown_tab_ == tab.key)) {
+      shown_tab_ = tab.key;
+      tab_selected_ = true;
+    }
+  }
+  if (shown_tab_ == "sweep") {
+    ImGui::Separator();
+    sweep_.toolbar().menu_item();
+  } else if (shown_tab_ == "map") {
+    ImGui::Separator();
+    regime_map_.toolbar().menu_item();
+  }
 }
 
 void AnalysisPanel::draw_tab(PanelContext& context, std::string_view tab, bool presented) {

@@ -45,6 +45,7 @@ class AnalysisPanel : public Panel {
   }
   const char* key() const override { return "analysis"; }
   void draw(PanelContext& context) override;
+  void presented_menu_items(PanelContext& context) override;
   void begin_frame(PanelContext& context) override;
   // While the regime map is being computed.
   bool busy() const override { return regime_map_.computing(); }

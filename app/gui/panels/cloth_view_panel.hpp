@@ -35,6 +35,7 @@ class ClothViewPanel : public Panel {
   }
   const char* key() const override { return "cloth"; }
   void draw(PanelContext& context) override;
+  void presented_menu_items(PanelContext& /*context*/) override { toolbar_row_.menu_item(); }
   // The print and its file, colour, breeze, z exaggeration, switches and `full`.
   void view_settings(ViewSettings& settings, Document& document) override;
   // Asks the tension field panel to solve the field while the folds come from it.

@@ -674,8 +674,7 @@ void FieldPanel::draw(PanelContext& context) {
   }
   was_open_ = true;
   // NoCollapse: a double-click on the title presents the window (Layout), as it does a tile.
-  if (ImGui::Begin(window_label().c_str(), &open_, ImGuiWindowFlags_NoCollapse)) {
-    context.renderer.fill_window_background();  // the style's window background is transparent
+  if (begin_panel(window_label().c_str(), context.renderer, &open_)) {
     // At a large text size in a small window the settings and the solve's figures fold behind
     // one button, so that the field keeps the room; presented, always, the button in the title
     // bar.

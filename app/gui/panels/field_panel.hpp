@@ -104,6 +104,7 @@ class FieldPanel : public Panel {
            "it is slack; the lines are the rays along which the weight reaches the supports.";
   }
   void draw(PanelContext& context) override;
+  void presented_menu_items(PanelContext& /*context*/) override { toolbar_.menu_item(); }
   // While a field is being solved, and while the one on show is the coarse mesh of a move: the
   // frame loop keeps drawing until the finer one is shown, though nothing else moves.
   bool busy() const override {

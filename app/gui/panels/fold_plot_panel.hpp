@@ -51,6 +51,7 @@ class FoldPlotPanel : public Panel {
   const char* key() const override { return "fold_plot"; }
   // The context's photo adds its buttons, its backdrop and its clicks to the plot.
   void draw(PanelContext& context) override;
+  void presented_menu_items(PanelContext& /*context*/) override { toolbar_row_.menu_item(); }
   void view_settings(ViewSettings& settings, Document& document) override;
   // "fold_plot": the visible ranges, x_mm and y_mm as [lo, hi], whether each follows the
   // data (a pan or zoom turns that off), and whether it was drawn at true scale.

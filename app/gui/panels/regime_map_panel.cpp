@@ -20,6 +20,12 @@
 namespace foldlab::gui {
 namespace {
 
+// A swatch's side: a frame's under the map, a text line's on the y title's row when presented
+// (the row then stays a line tall, and the room is the map's).
+float swatch_side(bool on_title_row) {
+  return on_title_row ? ImGui::GetTextLineHeight() : ImGui::GetFrameHeight();
+}
+
 // Dark blue through teal to yellow, t in [0, 1]; our own ramp, ordered in lightness.
 ImU32 ramp(double t) {
   static const float stops[][3] = {{0.13f, 0.09f, 0.35f},
@@ -288,7 +294,7 @@ RegimeMapPanel::Placement RegimeMapPanel::place_map(bool compact) {
                          ImGui::CalcTextSize(show_z_ ? "1000 mm" : "200").x;
   float swatches_width = 0.0f;
   for (const Swatch& swatch : map_swatches()) {
-    swatches_width += ImGui::GetFrameHeight() + style.ItemInnerSpacing.x +
+    swatches_width += swatch_side(compact) + style.ItemInnerSpacing.x +
                       ImGui::CalcTextSize(swatch.name).x + style.ItemSpacing.x;
   }
   const std::string y_label = axis_label(cells_->y.key);
@@ -300,7 +306,7 @@ RegimeMapPanel::Placement RegimeMapPanel::place_map(bool compact) {
       title_width + swatches_width + bar_area + ImGui::CalcTextSize("n").x <= available.x;
   const float swatch_rows =
       at.swatches_on_title_row
-          ? ImGui::GetFrameHeight() - ImGui::GetTextLineHeight()
+          ? swatch_side(compact) - ImGui::GetTextLineHeight()
           : (swatches_width <= available.x ? 1.0f : 2.0f) * ImGui::GetFrameHeightWithSpacing();
   // Half a line under the y title, where the top label reaches up to; the x title's line under
   // the x ticks unless presented.
@@ -318,14 +324,15 @@ RegimeMapPanel::Placement RegimeMapPanel::place_map(bool compact) {
   const ImVec2 title_at = ImGui::GetCursorScreenPos();
   if (at.swatches_on_title_row) {
     // The title on the swatches' middle line.
-    ImGui::SetCursorScreenPos(ImVec2(title_at.x, title_at.y + style.FramePadding.y));
+    ImGui::SetCursorScreenPos(ImVec2(
+        title_at.x, title_at.y + 0.5f * (swatch_side(compact) - ImGui::GetTextLineHeight())));
   }
   ImGui::TextUnformatted(y_label.c_str());
   at.swatches_at = ImVec2(title_at.x + title_width, title_at.y);
   at.origin = ImVec2(ImGui::GetCursorScreenPos().x + at.left_margin,
                      ImGui::GetCursorScreenPos().y + 0.5f * font);
   if (at.swatches_on_title_row) {
-    at.origin.y = title_at.y + ImGui::GetFrameHeight() + 0.5f * font;
+    at.origin.y = title_at.y + swatch_side(compact) + 0.5f * font;
   }
   return at;
 }
@@ -452,9 +459,9 @@ void RegimeMapPanel::regime_swatches(const Placement& at) const {
           : ImVec2(at.origin.x - at.left_margin,
                    at.origin.y + at.height + 2.0f * font + std::round(0.3f * font) + 2.0f));
   bool first = true;
+  const float side = swatch_side(at.swatches_on_title_row);
   for (const Swatch& swatch : map_swatches()) {
-    const float width =
-        ImGui::GetFrameHeight() + style.ItemInnerSpacing.x + ImGui::CalcTextSize(swatch.name).x;
+    const float width = side + style.ItemInnerSpacing.x + ImGui::CalcTextSize(swatch.name).x;
     if (!first) {
       same_line_if_fits(width);
     }
@@ -463,7 +470,8 @@ void RegimeMapPanel::regime_swatches(const Placement& at) const {
     ImGui::PushStyleVar(ImGuiStyleVar_FrameBorderSize, std::max(1.0f, std::round(0.07f * font)));
     ImGui::PushStyleColor(ImGuiCol_Border, ImGui::GetStyle().Colors[ImGuiCol_Text]);
     ImGui::ColorButton(swatch.name, ImGui::ColorConvertU32ToFloat4(swatch.colour),
-                       ImGuiColorEditFlags_NoTooltip | ImGuiColorEditFlags_NoDragDrop);
+                       ImGuiColorEditFlags_NoTooltip | ImGuiColorEditFlags_NoDragDrop,
+                       ImVec2(side, side));
     ImGui::PopStyleColor();
     ImGui::PopStyleVar();
     ImGui::SameLine(0.0f, style.ItemInnerSpacing.x);

@@ -22,6 +22,7 @@ namespace foldlab::gui {
 
 class RegimeMapPanel {
  public:
+  ViewToolbar& toolbar() { return toolbar_row_; }
   RegimeMapPanel();
   ~RegimeMapPanel();
   RegimeMapPanel(const RegimeMapPanel&) = delete;

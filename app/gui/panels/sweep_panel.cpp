@@ -186,14 +186,16 @@ void SweepPanel::draw(Document& document, bool side_by_side) {
     ImGui::TextColored(kErrorText, "%s", problem->c_str());
     return;
   }
-  draw_keys(document);
+  const float spacing = ImGui::GetStyle().ItemSpacing.x;
+  const float plot_width_px =
+      side_by_side ? std::floor((ImGui::GetContentRegionAvail().x - 2.0f * spacing) / 3.0f) : 0.0f;
+  draw_keys(document, plot_width_px);
   // Each plot keeps room for its ticks, its title and a few lines of data at any UI scale: a
   // short panel scrolls rather than squeeze a plot under its own labels.
   if (side_by_side) {
-    const ImVec2 available = ImGui::GetContentRegionAvail();
-    const float spacing = ImGui::GetStyle().ItemSpacing.x;
-    draw_plots(document, plots_, std::max(ems(kMinPlotHeightEms), available.y - 8.0f),
-               std::floor((available.x - 2.0f * spacing) / 3.0f));
+    draw_plots(document, plots_,
+               std::max(ems(kMinPlotHeightEms), ImGui::GetContentRegionAvail().y - 8.0f),
+               plot_width_px);
   } else {
     const float height =
         std::max(ems(kMinPlotHeightEms), (ImGui::GetContentRegionAvail().y - 8.0f) / 3.0f);
@@ -239,14 +241,26 @@ bool SweepPanel::overlay_shown() const {
   return !overlay_label_.empty() && overlay_key_ == computed_axis_.key;
 }
 
-void SweepPanel::draw_keys(Document& document) const {
+void SweepPanel::draw_keys(Document& document, float title_row_px) const {
   // With B pinned, a line each names A's and B's colours for the three plots (a legend under
   // each would take the plots' height), wrapped rather than cut in a narrow panel.
   if (compare_computed_) {
     draw_compare_names(document);
   }
-  draw_band_key();
+  if (!(title_row_px > 0.0f && band_key_on_title_row(title_row_px))) {
+    draw_band_key();
+  }
 }
+
+namespace {
+
+std::string band_meaning(const RegimeBand& band) {
+  return !band.valid ? std::string("the other inputs refuse these values")
+         : regime_info(band.regime).unremarkable ? std::string("a single fold, so no ratio Q")
+                                                 : std::string(regime_info(band.regime).plain);
+}
+
+}  // namespace
 
 void SweepPanel::draw_band_key() const {
   // Each kind of band once, in the order they lie along x: a band one sample wide is too narrow
@@ -268,14 +282,50 @@ void SweepPanel::draw_band_key() const {
     draw->AddRect(low, high, kDimText.u32());
     ImGui::Dummy(ImVec2(1.4f * side, side));
     ImGui::SameLine();
-    const std::string meaning = !band.valid ? std::string("the other inputs refuse these values")
-                                : regime_info(band.regime).unremarkable
-                                    ? std::string("a single fold, so no ratio Q")
-                                    : std::string(regime_info(band.regime).plain);
     ImGui::PushStyleColor(ImGuiCol_Text, static_cast<ImVec4>(kDimText));
-    wrapped_text("%s: %s", band.name.c_str(), meaning.c_str());
+    wrapped_text("%s: %s", band.name.c_str(), band_meaning(band).c_str());
     ImGui::PopStyleColor();
   }
+}
+
+bool SweepPanel::band_key_on_title_row(float row_px) const {
+  const ImGuiStyle& style = ImGui::GetStyle();
+  const float side = ImGui::GetTextLineHeight();
+  std::vector<const RegimeBand*> kinds;
+  float width = 0.0f;
+  for (const RegimeBand& band : bands_) {
+    if (std::none_of(kinds.begin(), kinds.end(),
+                     [&](const RegimeBand* k) { return k->name == band.name; })) {
+      kinds.push_back(&band);
+      width += 1.4f * side + style.ItemInnerSpacing.x + ImGui::CalcTextSize(band.name.c_str()).x +
+               style.ItemSpacing.x;
+    }
+  }
+  // Beside the first plot's title ("n") and clear of the tick labels' column under it.
+  const float title_px = ImGui::CalcTextSize("n").x + 4.0f * ImGui::GetFontSize();
+  if (kinds.empty() || width > row_px - title_px) {
+    return kinds.empty();
+  }
+  const ImVec2 start = ImGui::GetCursorScreenPos();
+  ImVec2 at(start.x + row_px - width + style.ItemSpacing.x, start.y);
+  ImDrawList* draw = ImGui::GetWindowDrawList();
+  for (const RegimeBand* band : kinds) {
+    const ImVec2 low(at.x, at.y + 0.15f * side);
+    const ImVec2 high(at.x + 1.4f * side, at.y + 0.85f * side);
+    draw->AddRectFilled(low, high,
+                        ImGui::ColorConvertFloat4ToU32(plot_background(style_is_light())));
+    draw->AddRectFilled(low, high, band->valid ? kRegimeBandFill.u32() : kRefusedBandFill.u32());
+    draw->AddRect(low, high, kDimText.u32());
+    const ImVec2 text_at(high.x + style.ItemInnerSpacing.x, at.y);
+    draw->AddText(text_at, kDimText.u32(), band->name.c_str());
+    const ImVec2 end(text_at.x + ImGui::CalcTextSize(band->name.c_str()).x, at.y + side);
+    if (ImGui::IsMouseHoveringRect(at, end)) {
+      ImGui::SetTooltip("%s: %s", band->name.c_str(), band_meaning(*band).c_str());
+    }
+    at.x = end.x + style.ItemSpacing.x;
+  }
+  ImGui::SetCursorScreenPos(start);
+  return true;
 }
 
 void SweepPanel::draw_plots(Document& document, SweepPlots& plots, float height_px,

@@ -27,6 +27,7 @@ struct SweepPlots {
 
 class SweepPanel {
  public:
+  ViewToolbar& toolbar() { return toolbar_row_; }
   explicit SweepPanel(std::filesystem::path presets_dir);
   // `side_by_side`: the three plots in a row, each with its x title, and the settings folded into
   // the title bar (presented on a wide screen, where stacked they would be strips); else one over
@@ -42,8 +43,9 @@ class SweepPanel {
   std::optional<std::string> compute(Document& document);
   // The keys above the plots (A and B while B is pinned, the shaded bands) and the three plots,
   // each `height_px` tall, after compute(): the tab's own plots, or a picture's. A `width_px`
-  // above zero puts them side by side, each that wide.
-  void draw_keys(Document& document) const;
+  // above zero puts them side by side, each that wide. `title_row_px` above zero: the bands' key
+  // may stand on the first plot's title row, that wide, rather than a row of its own.
+  void draw_keys(Document& document, float title_row_px = 0.0f) const;
   void draw_plots(Document& document, SweepPlots& plots, float height_px, float width_px = 0.0f);
   // Where the last frame drew plot `which`'s sample nearest `shown_x` (in the unit the axis
   // shows), skipping gaps; none without one.
@@ -76,6 +78,9 @@ class SweepPanel {
   bool overlay_shown() const;
   // What each shade of band over the plots means, a line for each kind shown.
   void draw_band_key() const;
+  // The same, each kind's name only (its meaning a hover away), at the right end of the first
+  // plot's title row `row_px` wide, taking no row: false, drawing nothing, where they do not fit.
+  bool band_key_on_title_row(float row_px) const;
   // One of the three plots: its id, y title, the symbol and unit its tooltip gives a value in,
   // the model's values, the paper's points, and B's values while pinned.
   struct Quantity {

@@ -6,6 +6,7 @@
 namespace foldlab::gui {
 
 bool ViewToolbar::begin(const char* label, float least_view_height_px, bool fold) {
+  label_ = label;
   const ImVec2 available = ImGui::GetContentRegionAvail();
   const float font_px = ImGui::GetFontSize();
   // The window's width, not the content's, which a scrollbar coming and going would change.
@@ -32,6 +33,15 @@ bool ViewToolbar::begin(const char* label, float least_view_height_px, bool fold
     return true;
   }
   ImGuiWindow* window = ImGui::GetCurrentWindow();
+  if (fold && (window->Flags & ImGuiWindowFlags_NoTitleBar) != 0) {
+    if (open_requested_) {
+      ImGui::OpenPopup(label);
+      open_requested_ = false;
+    }
+    in_popup_ = ImGui::BeginPopup(label);
+    return in_popup_;
+  }
+  open_requested_ = false;
   const ImVec2 cursor = ImGui::GetCursorScreenPos();
   const ImVec2 cursor_max = window->DC.CursorMaxPos;
   if (fold) {
@@ -59,6 +69,12 @@ bool ViewToolbar::begin(const char* label, float least_view_height_px, bool fold
   }
   in_popup_ = ImGui::BeginPopup(label);
   return in_popup_;
+}
+
+void ViewToolbar::menu_item() {
+  if (label_ != nullptr && ImGui::MenuItem(label_)) {
+    open_requested_ = true;
+  }
 }
 
 void ViewToolbar::end() {

@@ -12,11 +12,15 @@ class ViewToolbar {
   // the caller
   // draws the settings now (in full above the view, or inside the open popup); then call end().
   // `fold`: folded whatever the room, the button in the window's title bar after the title (a
-  // view presented to a room keeps the screen for itself).
+  // view presented to a room keeps the screen for itself); a window without a title bar has no
+  // button, and its settings open from menu_item().
   bool begin(const char* label, float least_view_height_px, bool fold = false);
   void end();
   // Whether the settings were folded behind the button in the last frame.
   bool folded() const { return folded_; }
+  // The settings as an item of the menu that stands for a presented view's title bar: chosen, the
+  // popup opens when the view next draws.
+  void menu_item();
 
  private:
   // The full row's height, measured when it was last drawn in full at this width and text size.
@@ -27,6 +31,8 @@ class ViewToolbar {
   float start_y_px_ = 0.0f;
   bool folded_ = false;
   bool in_popup_ = false;
+  const char* label_ = nullptr;  // the last begin()'s
+  bool open_requested_ = false;
 };
 
 }  // namespace foldlab::gui

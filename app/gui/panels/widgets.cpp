@@ -56,10 +56,32 @@ float ems(float ems) {
   return std::round(ems * ImGui::GetFontSize());
 }
 
-bool begin_panel(const char* title, Renderer& renderer) {
+namespace {
+bool g_next_without_title_bar = false;
+}  // namespace
+
+void next_panel_without_title_bar() {
+  g_next_without_title_bar = true;
+}
+
+bool begin_panel(const char* title, Renderer& renderer, bool* open) {
   // A double-click on the title presents the panel (see Explorer) rather than folding it away,
   // which would leave a hole in the tiles.
-  if (!ImGui::Begin(title, nullptr, ImGuiWindowFlags_NoCollapse)) {
+  const bool presented = g_next_without_title_bar;
+  g_next_without_title_bar = false;
+  const ImGuiWindowFlags flags =
+      ImGuiWindowFlags_NoCollapse | (presented ? ImGuiWindowFlags_NoTitleBar : 0);
+  // Presented, the window is the screen's: its margin is the spacing between two items, not a
+  // frame round a tile.
+  if (presented) {
+    const float spacing = ImGui::GetStyle().ItemSpacing.y;
+    ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(spacing, spacing));
+  }
+  const bool shown = ImGui::Begin(title, open, flags);
+  if (presented) {
+    ImGui::PopStyleVar();
+  }
+  if (!shown) {
     return false;
   }
   renderer.fill_window_background();

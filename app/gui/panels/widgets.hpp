@@ -28,7 +28,12 @@ float ems(float ems);
 
 // ImGui::Begin for the tiled panels, with the background filled by the renderer. Call
 // ImGui::End() whatever it returns.
-bool begin_panel(const char* title, Renderer& renderer);
+// `open`: a window the user may close (its title bar's cross clears it).
+bool begin_panel(const char* title, Renderer& renderer, bool* open = nullptr);
+// The next begin_panel's window has no title bar: a view presented to a room, whose title and
+// buttons stand in the menu bar, so that their row is the picture's. Like ImGui's SetNextWindow*,
+// it holds for one window.
+void next_panel_without_title_bar();
 
 // ImGui::SameLine() when an item `width` pixels wide still fits on the current line; otherwise
 // the item starts a new line, so that a narrow panel wraps a row of controls instead of cutting
