@@ -152,6 +152,10 @@ const std::map<std::string, PanelRect>& Explorer::view_buttons() const {
   return presentation_->view_buttons();
 }
 
+const std::map<std::string, PanelRect>& Explorer::menu_bar_items() const {
+  return menu_->item_rects();
+}
+
 nlohmann::json Explorer::report() {
   nlohmann::json state = nlohmann::json::object();
   PanelContext now = context();

@@ -108,6 +108,7 @@ class Explorer {
   const std::string& presented_message() const;
   // Where a phone's row of views drew each view's button at the last frame, by panel key.
   const std::map<std::string, PanelRect>& view_buttons() const;
+  const std::map<std::string, PanelRect>& menu_bar_items() const;
   // Every panel, in the order they are drawn (the tiled ones first, in the layout's order).
   const std::vector<std::unique_ptr<Panel>>& panels() const { return panels_; }
   // What every panel reports (each under its own keys) and the reported view settings ("view").

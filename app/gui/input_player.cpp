@@ -277,11 +277,13 @@ json layout_json(Explorer& explorer) {
       clipped.push_back({{"panel", item.panel}, {"text", item.text}, {"how", item.how}});
     }
   }
-  json view_buttons = json::object();
-  for (const auto& [name, rect] : explorer.view_buttons()) {
-    view_buttons[name] = {
-        {"x", rect.pos.x}, {"y", rect.pos.y}, {"w", rect.size.x}, {"h", rect.size.y}};
-  }
+  const auto rects = [](const std::map<std::string, PanelRect>& named) {
+    json out = json::object();
+    for (const auto& [name, rect] : named) {
+      out[name] = {{"x", rect.pos.x}, {"y", rect.pos.y}, {"w", rect.size.x}, {"h", rect.size.y}};
+    }
+    return out;
+  };
   json tile_handles = json::array();
   for (const auto& [key, rect] : explorer.layout().handle_rects()) {
     tile_handles.push_back({{"edge", key},
@@ -293,7 +295,8 @@ json layout_json(Explorer& explorer) {
   return {{"automatic", explorer.layout().automatic()},
           {"tile_handles", tile_handles},
           {"drawing_areas", drawing_areas},
-          {"view_buttons", view_buttons},
+          {"view_buttons", rects(explorer.view_buttons())},
+          {"menu_bar_items", rects(explorer.menu_bar_items())},
           {"submenu_over_parent", submenu_over_parent()},
           {"clipped_text", clipped},
           {"smallest_target", smallest_target_json(explorer)},

@@ -19,8 +19,15 @@
 
 namespace foldlab::gui {
 
+bool MenuBar::bar_item(const char* label) {
+  const bool chosen = ImGui::MenuItem(label);
+  item_rects_[label] = PanelRect{ImGui::GetItemRectMin(), ImGui::GetItemRectSize()};
+  return chosen;
+}
+
 float MenuBar::draw(PanelContext& context) {
   export_.new_frame();
+  item_rects_.clear();
   float height = 0.0f;
   // A menu's rows are its text and the item spacing tall: for a finger, as tall as a target
   // (touch_style has made the frames so, and the menu bar is one).
@@ -39,12 +46,12 @@ float MenuBar::draw(PanelContext& context) {
       export_items(context);
       ImGui::EndMenu();
     }
-    if (ImGui::MenuItem(IntroWindow::kTitle)) {
+    if (bar_item(IntroWindow::kTitle)) {
       context.panel<IntroWindow>().open();
     }
     // One click from the menu bar while the user's own arrangement is shown.
     if ((!layout_.automatic() || layout_.splits().any()) && layout_.presented() == nullptr &&
-        ImGui::MenuItem("Reset layout")) {
+        bar_item("Reset layout")) {
       layout_.reset();
     }
     if (layout_.cramped() && !shows_one_view()) {
@@ -128,10 +135,10 @@ void MenuBar::presenting_items(PanelContext& context) {
     }
     ImGui::EndMenu();
   }
-  if (back != nullptr && ImGui::MenuItem(back)) {
+  if (back != nullptr && bar_item(back)) {
     layout_.request_present(nullptr);
   }
-  if (strip_item && ImGui::MenuItem(strip_label)) {
+  if (strip_item && bar_item(strip_label)) {
     layout_.set_presents_inputs(!layout_.presents_inputs());
   }
 }

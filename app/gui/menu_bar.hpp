@@ -4,6 +4,8 @@
 #pragma once
 
 #include <functional>
+#include <map>
+#include <string>
 
 #include "app/gui/layout.hpp"
 #include "app/gui/page_link.hpp"
@@ -44,6 +46,9 @@ class MenuBar {
   void draw_after_panels(PanelContext& context);
   // A picture the Export menu asked for (export_panel.hpp).
   ExportPanel& export_menu() { return export_; }
+  // Where the bar's own items (not its menus) were drawn in the last frame, by label: what a
+  // finger taps (`gui --report`'s layout.menu_bar_items).
+  const std::map<std::string, PanelRect>& item_rects() const { return item_rects_; }
 
  private:
   void view_menu(PanelContext& context);
@@ -53,11 +58,14 @@ class MenuBar {
   void presenting_items(PanelContext& context);
   // The notice that the tiles cannot hold the text size, and a menu presenting one view.
   void cramped_notice(PanelContext& context);
+  // ImGui::MenuItem on the bar, its place kept in item_rects_.
+  bool bar_item(const char* label);
 
   Layout& layout_;
   Appearance& appearance_;
   LinkChoices& link_choices_;
   std::function<void()> copy_link_;
+  std::map<std::string, PanelRect> item_rects_;
   ExportPanel export_;
   bool show_stats_ = false;
 };

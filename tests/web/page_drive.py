@@ -818,7 +818,8 @@ def check_phone_flows(args, root, problems):
 def check_tablet(args, root, problems):
     """A class's tablet (1024 x 768 CSS px, ratio 2, touch) opened from a link: its tiles, a
     slider dragged and one typed with a long press, the 3D view orbited and pinched, the fold plot
-    presented by its title's button and back; nothing cut, every target a finger's height."""
+    presented by its title's button and back by the menu bar's; nothing cut, every target a
+    finger's height."""
     ratio = 2
     page = Page(args, os.path.join(root, "tablet"), LINK_QUERY, touch=True,
                 metrics=(1024, 768, ratio))
@@ -836,16 +837,25 @@ def check_tablet(args, root, problems):
               f"tablet: 0.05cm typed into t after a long press: t is {state['parameters']['t_mm']}")
         state = orbit_and_pinch(page, state, ratio, problems, "tablet")
         # The present button: a square as tall as the title bar (a finger's target) at the
-        # title's right end.
-        for wanted in ("fold_plot", None):
-            rect = state["layout"]["panels"]["fold_plot"]
-            x = (rect["x"] + rect["w"]) / ratio - TOUCH_TARGET_PX / 2
-            y = rect["y"] / ratio + TOUCH_TARGET_PX / 2
-            state = page.tap(x, y)
-            check(problems, state["layout"]["presented"] == wanted,
-                  f"tablet: a tap on the fold plot's present button left "
-                  f"{state['layout']['presented']} presented, not {wanted}")
-            check_readable(problems, state, f"tablet, presented {wanted}")
+        # title's right end. Presented, the view has no title bar: the way back is the menu
+        # bar's item.
+        rect = state["layout"]["panels"]["fold_plot"]
+        state = page.tap((rect["x"] + rect["w"]) / ratio - TOUCH_TARGET_PX / 2,
+                         rect["y"] / ratio + TOUCH_TARGET_PX / 2)
+        check(problems, state["layout"]["presented"] == "fold_plot",
+              f"tablet: a tap on the fold plot's present button left "
+              f"{state['layout']['presented']} presented, not the fold plot")
+        check_readable(problems, state, "tablet, presented fold_plot")
+        back = [r for name, r in state["layout"]["menu_bar_items"].items()
+                if name.startswith("Back to the tiles") or name.startswith("Tiles")]
+        check(problems, len(back) == 1 and back[0]["h"] / ratio >= TOUCH_TARGET_PX - 0.5,
+              f"tablet, presented: the menu bar's way back is {back}, not one finger's target")
+        if back:
+            state = page.tap(*rect_centre_css(back[0], ratio))
+            check(problems, state["layout"]["presented"] is None,
+                  f"tablet: a tap on the menu bar's way back left "
+                  f"{state['layout']['presented']} presented")
+            check_readable(problems, state, "tablet, back to the tiles")
         if args.keep_screenshots:
             page.screenshot(os.path.join(args.keep_screenshots, "page-tablet.png"))
     finally:
