@@ -3,7 +3,8 @@
 # a slider is dragged (the page in headless Chromium with SwiftShader beside the desktop program
 # on llvmpipe, both 1280x800), time per solve in WebAssembly against native, and the site's size
 # raw and gzipped. Measured, not tested: run by hand on a quiet machine, and say which.
-# Usage: scripts/web-bench.sh [NATIVE_BUILD_DIR] [--repeat N]   (default build-release;
+# Usage: scripts/web-bench.sh [NATIVE_BUILD_DIR] [--repeat N] [--first-frame-only]
+#        (default build-release;
 #        scripts/web.sh must have built build-web/ first)
 set -euo pipefail
 cd "$(dirname "$0")/.."

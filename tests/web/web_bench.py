@@ -3,12 +3,13 @@
 by scripts/web-bench.sh, which says how. Prints a Markdown table and the raw numbers as JSON.
 
   web_bench.py --site DIR --native FOLDLAB --solve-times-native EXE --solve-times-wasm JS
-               [--chromium PATH] [--repeat N]
+               [--chromium PATH] [--repeat N] [--first-frame-only]
 
   first frame   from navigation start to the explorer's first frame drawn (the page's mark
                 'foldlab: first frame'), cold (a fresh profile in a browser just started, its
                 GPU process too), first visit (a fresh profile in a browser already showing
-                WebGL on another site: a student's) and warm (that page reloaded)
+                WebGL on another site: a student's) and warm (that page reloaded), each cold
+                load with its steps (the page's and the program's marks, COLD_STEP_NAMES)
   dragging      tests/web/bench_drag.json (24 drags of the h slider) played at 1280x800: the
                 page in headless Chromium (SwiftShader WebGL2, real time) beside `foldlab render`
                 (EGL on Mesa's llvmpipe); each frame from its start to glFinish, mean and p95
@@ -149,6 +150,27 @@ def site_sizes(site):
     return rows
 
 
+FIRST_FRAME_ROWS = (("first frame, cold (fresh profile, the browser just started)", ""),
+                    ("first frame, first visit (fresh profile, a browser already showing WebGL)",
+                     "≤ 2000 ms"),
+                    ("first frame after a reload, warm", ""))
+# The page's steps (app/web/index.html) and the program's (app/gui/gui_app.cpp), in the order
+# they come.
+COLD_STEP_NAMES = ("page script", "program downloaded", "program ready", "window made",
+                   "renderer made", "explorer made",
+                   "fonts and style ready", "panels built", "panels drawn", "first frame")
+
+
+def print_first_frames(runs_by_repeat):
+    for index, (label, aim) in enumerate(FIRST_FRAME_ROWS):
+        runs = [run[index] for run in runs_by_repeat]
+        print(f"| {label} | {', '.join(f'{ms:.0f}' for ms, _ in runs)} ms | {aim} |")
+        if runs[0][1] is not None:
+            print(f"|   its steps, ms from navigation ({', '.join(COLD_STEP_NAMES)}) | " +
+                  "; ".join(", ".join(str(marks.get(step, "?")) for step in COLD_STEP_NAMES)
+                            for _, marks in runs) + " | |")
+
+
 def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("--site", required=True)
@@ -158,11 +180,18 @@ def main():
     parser.add_argument("--chromium", default="chromium")
     parser.add_argument("--repeat", type=int, default=3)
     parser.add_argument("--keep-screenshots", default=None)
+    parser.add_argument("--first-frame-only", action="store_true",
+                        help="only the first frame's three loads (a few minutes, not half an hour)")
     args = parser.parse_args()
     figures = {}
     with browser_folder("foldlab_bench_") as root:
         figures["first_frame_ms"] = [first_frame_ms(args, os.path.join(root, f"first{i}"))
                                      for i in range(args.repeat)]
+        if args.first_frame_only:
+            print("| figure | measured | aim |\n|---|---|---|")
+            print_first_frames(figures["first_frame_ms"])
+            print(json.dumps(figures))
+            return 0
         figures["page_drag"] = [page_drag(args, os.path.join(root, f"drag{i}"))
                                 for i in range(args.repeat)]
         figures["native_drag"] = []
@@ -178,18 +207,7 @@ def main():
 
     geo = statistics.geometric_mean(ratios)
     print("| figure | measured | aim |\n|---|---|---|")
-    steps = ("page script", "program downloaded", "program ready", "first frame")
-    for index, (label, aim) in enumerate((
-            ("first frame, cold (fresh profile, the browser just started)", ""),
-            ("first frame, first visit (fresh profile, a browser already showing WebGL)",
-             "≤ 2000 ms"),
-            ("first frame after a reload, warm", ""))):
-        runs = [run[index] for run in figures["first_frame_ms"]]
-        print(f"| {label} | {', '.join(f'{ms:.0f}' for ms, _ in runs)} ms | {aim} |")
-        if runs[0][1] is not None:
-            print(f"|   its steps, ms from navigation ({', '.join(steps)}) | " + "; ".join(
-                ", ".join(str(marks.get(step, "?")) for step in steps) for _, marks in runs)
-                + " | |")
+    print_first_frames(figures["first_frame_ms"])
     for name, key in (("page (Chromium, SwiftShader)", "page_drag"),
                       ("desktop (llvmpipe)", "native_drag")):
         runs = figures[key]
