@@ -124,6 +124,18 @@ TEST_F(ExplorerTest, AFingersChangeOfAnInputIsSaidInTheToast) {
   frame();
   const std::string toast = explorer_->status().toast();
   EXPECT_NE(toast.find("height h = 1600 mm (was 1500 mm)"), std::string::npos) << toast;
+  // A drag's value with the digits its slider shows (w in whole g/m²: 1.9613299999999999e-06
+  // N/mm² is 199.9317 g/m² at g = 9.81, shown 200), not the 12 of the number stored.
+  ASSERT_EQ(explorer_->set_input("w", 1.9613299999999999e-06), std::nullopt);
+  frame();
+  EXPECT_NE(explorer_->status().toast().find("w = 200 g/m² (was "), std::string::npos)
+      << explorer_->status().toast();
+  // Two values the slider shows alike are told apart with all their digits.
+  ASSERT_EQ(explorer_->set_input("w", 1.9614e-06), std::nullopt);
+  frame();
+  EXPECT_NE(explorer_->status().toast().find("w = 199.93883792 g/m² (was 199.931702345 g/m²)"),
+            std::string::npos)
+      << explorer_->status().toast();
   // Several inputs at once are named by their symbols.
   explorer_->document().apply(Edit::inputs({{"h", 1700.0}, {"L", 3000.0}}));
   frame();

@@ -15,6 +15,7 @@
 #include "app/gui/panel_list.hpp"
 #include "app/gui/panels/cloth_view_panel.hpp"
 #include "app/gui/panels/file_dialog.hpp"
+#include "app/gui/panels/parameters_panel.hpp"
 #include "app/gui/panels/widgets.hpp"
 #include "app/gui/presentation_bar.hpp"
 #include "app/gui/session.hpp"
@@ -43,8 +44,15 @@ std::string changed_inputs_words(const Parameters& before, const Parameters& aft
       if (*was == *now || (std::isnan(*was) && std::isnan(*now))) {
         continue;
       }
-      one = input_title(spec) + " = " + shown_quantity(spec, *now) + " (was " +
-            shown_quantity(spec, *was) + ")";
+      // With the digits the slider shows (a finger's drag leaves 12 more); all of them where
+      // those would read the same before and after.
+      std::string now_text = shown_text(spec, *now);
+      std::string was_text = shown_text(spec, *was);
+      if (now_text == was_text) {
+        now_text = shown_quantity(spec, *now);
+        was_text = shown_quantity(spec, *was);
+      }
+      one = input_title(spec) + " = " + now_text + " (was " + was_text + ")";
     } else if (spec.choice != nullptr) {
       const std::string_view choice_was = spec.choice(before);
       const std::string_view choice_now = spec.choice(after);
