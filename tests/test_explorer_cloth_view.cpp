@@ -187,6 +187,24 @@ TEST_F(ExplorerTest, TheThreeDViewIsDrawnAgainOnlyWhenWhatItShowsChanges) {
             now.view_cache_hits + 4);
 }
 
+// The breeze sways the cloth in every frame, its settings in sight or not: presented, they are
+// behind the view's menu, and the cloth stood still.
+TEST_F(ExplorerTest, TheBreezeSwaysAPresentedCloth) {
+  ASSERT_EQ(explorer_->set_view("breeze", "1"), std::nullopt);
+  for (const char* present : {"none", "cloth"}) {
+    ASSERT_EQ(explorer_->set_view("present", present), std::nullopt);
+    frame();
+    frame();
+    const RenderCounters before = renderer_.cloth_counters(panel<ClothViewPanel>().a_view());
+    for (int i = 0; i < 5; ++i) {
+      frame();
+    }
+    const RenderCounters now = renderer_.cloth_counters(panel<ClothViewPanel>().a_view());
+    EXPECT_EQ(now.view_renders, before.view_renders + 5) << present;
+    EXPECT_EQ(now.view_cache_hits, before.view_cache_hits) << present;
+  }
+}
+
 TEST_F(ExplorerTest, TheGridViewSettingTakesTheSlidersWholeNumbersOnly) {
   ASSERT_EQ(explorer_->set_view("grid", "512"), std::nullopt);
   EXPECT_EQ(explorer_->scene().grid_nx(), 512);

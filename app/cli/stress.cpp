@@ -104,6 +104,12 @@ void declare(CLI::App& app, Options& options) {
   command->add_option("--seed", options.seed, "seed of the samples, 0 to 2^64 - 1 (default 1)");
   command->add_option("--threads", options.threads, "worker threads (default: hardware threads)")
       ->check(CLI::Range(0, 256));
+  command
+      ->add_option("--hang-margin", options.hang_margin_s,
+                   "field: seconds past its 10 s budget after which a solve counts as a hang "
+                   "(default 1; the budget is checked between Newton steps, so this is the "
+                   "longest a step may take: more under a sanitizer or a loaded machine)")
+      ->check(CLI::Range(0.0, 3600.0));
   command->add_flag("--json", options.json, "print one JSON object instead of a table");
 }
 
@@ -116,6 +122,7 @@ FieldStressReport run_field(const Options& options) {
   FieldStressOptions o;
   o.seed = parse_seed(options.seed);
   o.threads = options.threads;
+  o.hang_margin_s = options.hang_margin_s;
   o.first_index = std::max(0, options.index);
   o.samples = options.samples_given ? options.samples : options.index >= 0 ? 1 : o.samples;
   if (const auto refused = check_count_budget("--samples", o.samples, kMaxFieldStressSamples)) {

@@ -22,7 +22,8 @@ struct Options {
   int index = -1;              // field: the first sample's index (one sample unless --samples)
   std::string seed = "1";  // text: CLI11 turns "-1" and 2^64 into 2^64 - 1 as an unsigned number
   bool json = false;
-  int threads = 0;  // 0: hardware threads
+  int threads = 0;             // 0: hardware threads
+  double hang_margin_s = 1.0;  // field: a solve past its budget by more than this is a hang
 };
 
 void declare(CLI::App& app, Options& options);

@@ -234,6 +234,16 @@ json smallest_target_json(Explorer& explorer) {
 
 // Whether an open menu covers part of the menu it opened from: a submenu with no room beside its
 // parent (a phone) opens over it, under the finger whose lift then picks what lies there.
+// Where the innermost open popup is (x, y, w, h), or null.
+json open_popup_rect() {
+  const ImGuiContext& g = *ImGui::GetCurrentContext();
+  if (g.OpenPopupStack.empty() || g.OpenPopupStack.back().Window == nullptr) {
+    return nullptr;
+  }
+  const ImGuiWindow* popup = g.OpenPopupStack.back().Window;
+  return {{"x", popup->Pos.x}, {"y", popup->Pos.y}, {"w", popup->Size.x}, {"h", popup->Size.y}};
+}
+
 bool submenu_over_parent() {
   const ImGuiContext& g = *ImGui::GetCurrentContext();
   for (int i = 1; i < g.OpenPopupStack.Size; ++i) {
@@ -337,6 +347,7 @@ json explorer_state_json(Explorer& explorer) {
       {"toast_in_window", toast_in_window(explorer)},
       {"clipboard", detail::escaped(clipboard != nullptr ? clipboard : "")},
       {"popup_open", ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId)},
+      {"popup_rect", open_popup_rect()},
       {"file_problem", explorer.file_dialog().problem()},
       {"layout", layout_json(explorer)},
       {"appearance",

@@ -50,6 +50,8 @@ class Layout {
   // From a menu or a button, taking effect at the next frame's start.
   void request_present(const Panel* panel) { present_request_ = panel; }
   const Panel* presented() const { return presented_; }
+  // When the view presented now was presented (ImGui's clock, s).
+  double presented_since_s() const { return presented_since_s_; }
   // Whether a presented view has the strip of the cloth's inputs under its read-out (remembered).
   bool presents_inputs() const { return presents_inputs_; }
   void set_presents_inputs(bool shown) { presents_inputs_ = shown; }
@@ -99,6 +101,7 @@ class Layout {
 
   const std::vector<std::unique_ptr<Panel>>& panels_;
   bool automatic_ = true;
+  double presented_since_s_ = 0.0;
   float menu_height_px_ = 0.0f;
   TiledLayout tiles_;
   PanelRect placed_[kTileCount];  // what place() set last, to see the user's moves

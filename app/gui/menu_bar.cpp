@@ -223,24 +223,33 @@ void MenuBar::view_menu(PanelContext& context) {
   appearance_.request(percent, light);
   ImGui::Separator();
   ImGui::MenuItem("Pipeline stats", nullptr, &show_stats_);
-  // The windows that open and close (the tension field), each ticked while it is open.
+  // The windows that open and close (the tension field), each ticked while it is open. One
+  // opened while a view is presented is presented in its place: behind it, it would not be seen.
   for (const std::unique_ptr<Panel>& panel : context.panels) {
     if (bool* open = panel->open_flag()) {
-      ImGui::MenuItem(panel->name(), nullptr, open);
+      if (ImGui::MenuItem(panel->name(), nullptr, open) && *open && layout_.presented() &&
+          Layout::presentable(*panel)) {
+        layout_.request_present(panel.get());
+      }
     }
   }
+  // The one presented is ticked.
   const auto present_items = [&] {
     for (const std::unique_ptr<Panel>& panel : context.panels) {
-      if (Layout::presentable(*panel) && ImGui::MenuItem(panel->name())) {
+      if (Layout::presentable(*panel) &&
+          ImGui::MenuItem(panel->name(), nullptr, layout_.presented() == panel.get())) {
         layout_.request_present(panel.get());
       }
     }
   };
-  // On a phone the views are the buttons under the read-out, and there are no tiles.
-  if (layout_.presented()) {
-    if (!shows_one_view() && ImGui::MenuItem("Back to the tiles", finger ? nullptr : "Esc")) {
-      layout_.request_present(nullptr);
-    }
+  // On a phone the views are the buttons under the read-out, and there are no tiles. A view
+  // presented is switched for another from here, without the tiles in between.
+  if (layout_.presented() && !shows_one_view() &&
+      ImGui::MenuItem("Back to the tiles", finger ? nullptr : "Esc")) {
+    layout_.request_present(nullptr);
+  }
+  if (shows_one_view()) {
+    // (the buttons under the read-out)
   } else if (finger) {
     ImGui::TextDisabled("Present (fill the screen):");
     ImGui::Indent();

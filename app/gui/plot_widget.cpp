@@ -1188,6 +1188,13 @@ void Plot::show_hit(const Frame& f, const PlotHit& hit) const {
   ImGui::EndTooltip();
 }
 
+// Compact, the x title ends where the data area starts (under the y tick labels), however far
+// a frame narrowed to its data (equal scales) leaves that from the frame's left edge.
+float Plot::compact_x_title_left(const Frame& f) const {
+  const float width = ImGui::CalcTextSize(x_axis_.label.c_str()).x;
+  return std::max(frame_min_.x, f.lay.min.x - f.pad - width);
+}
+
 // Tick labels and titles may use the whole frame but not spill onto neighbouring widgets.
 void Plot::draw_tick_labels_and_titles(const Frame& f) const {
   f.draw_list->PushClipRect(frame_min_, frame_max_, true);
@@ -1205,7 +1212,8 @@ void Plot::draw_tick_labels_and_titles(const Frame& f) const {
                           f.lay.max.y + f.pad + f.font + f.pad / 2},
                          col_text, x_axis_.label.c_str());
   } else if (f.x_title) {
-    f.draw_list->AddText({frame_min_.x, f.lay.max.y + f.pad}, col_text, x_axis_.label.c_str());
+    f.draw_list->AddText({compact_x_title_left(f), f.lay.max.y + f.pad}, col_text,
+                         x_axis_.label.c_str());
   }
   // Above the axis rather than beside the tick labels, where the top label could collide.
   if (f.y_title) {
@@ -1223,9 +1231,10 @@ void Plot::draw_x_tick_labels(const Frame& f) const {
   float edge = 0;  // screen edge of the last drawn x label, facing the next one
   // The x title at the row's left end (compact) keeps its place: a label it would meet is left
   // out.
-  const float title_end = f.x_title && !f.x_title_row
-                              ? frame_min_.x + ImGui::CalcTextSize(x_axis_.label.c_str()).x
-                              : -std::numeric_limits<float>::infinity();
+  const float title_end =
+      f.x_title && !f.x_title_row
+          ? compact_x_title_left(f) + ImGui::CalcTextSize(x_axis_.label.c_str()).x
+          : -std::numeric_limits<float>::infinity();
   for (std::size_t i = 0; i < x_ticks_.size(); ++i) {
     const float px = static_cast<float>(f.xm.px(x_ticks_[i]));
     f.draw_list->AddLine({px, f.lay.max.y}, {px, f.lay.max.y + f.pad}, col_border);
@@ -1273,9 +1282,15 @@ void Plot::draw_legend(const Frame& f) {
     const float height = legend_rows_.back().y + f.row;
     left = f.lay.max.x - f.pad - widest;
     top = f.lay.max.y - f.pad - height;
-    dl->AddRectFilled({left - f.pad, top - f.pad}, {f.lay.max.x - 1, f.lay.max.y - 1},
+    // A frame narrowed to its data (equal scales) has paper beside it: the legend goes there,
+    // off the data, when it fits.
+    if (frame_max_.x - f.lay.max.x >= widest + 3.0f * f.pad) {
+      left = f.lay.max.x + 2.0f * f.pad;
+    }
+    const ImVec2 box_max{left + widest + f.pad - 1, f.lay.max.y - 1};
+    dl->AddRectFilled({left - f.pad, top - f.pad}, box_max,
                       ImGui::ColorConvertFloat4ToU32(plot_background(style_is_light())));
-    dl->AddRect({left - f.pad, top - f.pad}, {f.lay.max.x - 1, f.lay.max.y - 1}, f.col_border);
+    dl->AddRect({left - f.pad, top - f.pad}, box_max, f.col_border);
   }
   dl->PushClipRect(frame_min_, frame_max_, true);
   for (std::size_t i = 0; i < legend_.size(); ++i) {

@@ -192,6 +192,7 @@ class Plot {
   std::optional<PlotHit> nearest_point(const Frame& f, ImVec2 mouse) const;
   void show_hit(const Frame& f, const PlotHit& hit) const;
   void draw_tick_labels_and_titles(const Frame& f) const;
+  float compact_x_title_left(const Frame& f) const;
   void draw_x_tick_labels(const Frame& f) const;
   void draw_y_tick_labels(const Frame& f) const;
   void draw_legend(const Frame& f);

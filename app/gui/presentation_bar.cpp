@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <memory>
 #include <string_view>
@@ -29,7 +30,8 @@ struct Headlines {
   float height = 0.0f;
 };
 
-Headlines fit_headlines(std::vector<std::pair<std::string, ImVec4>> lines, float available) {
+Headlines fit_headlines(std::vector<std::pair<std::string, ImVec4>> lines, float available,
+                        float largest_scale) {
   constexpr float kLargestScale = 2.5f;
   float text_width = 1.0f;
   for (const auto& [line, colour] : lines) {
@@ -40,7 +42,7 @@ Headlines fit_headlines(std::vector<std::pair<std::string, ImVec4>> lines, float
   // keeps them.
   constexpr float kLargestPhoneScale = 1.5f;
   const float largest = shows_one_view() ? kLargestPhoneScale : kLargestScale;
-  fitted.scale = std::clamp(0.98f * available / text_width, 1.0f, largest);
+  fitted.scale = std::clamp(0.98f * available / text_width, 1.0f, std::min(largest, largest_scale));
   for (auto& [line, colour] : lines) {
     line = wrap_at_spaces(line, available);
     fitted.height += fitted.scale * ImGui::CalcTextSize(line.c_str()).y;
@@ -144,7 +146,8 @@ float play_button_height() {
 
 // At the right of the read-out's first line, so that it costs the picture no row: plays the input
 // the Parameters panel's "animate" chose through its range, or pauses it where it is.
-void play_pause(PanelContext& context, ParametersPanel& parameters, float width) {
+void play_pause(PanelContext& context, ParametersPanel& parameters, float width,
+                double presented_since_s) {
   const ImGuiStyle& style = ImGui::GetStyle();
   const bool playing = parameters.animating();
   const ImVec2 cursor = ImGui::GetCursorScreenPos();
@@ -160,15 +163,20 @@ void play_pause(PanelContext& context, ParametersPanel& parameters, float width)
   const bool clicked =
       ImGui::Button(label.c_str(), ImVec2(play_button_width(parameters), play_button_height()));
   ImGui::PopStyleVar();
-  if (clicked) {
+  // The button sits where a tile's present button was: the second click of a double click on
+  // that one, landing here, would start the input playing.
+  const bool just_presented =
+      ImGui::GetTime() - presented_since_s < ImGui::GetIO().MouseDoubleClickTime;
+  if (clicked && !just_presented) {
     parameters.toggle_play(context.document, context.status);
   }
   if (ImGui::IsItemHovered()) {
     const std::string& problem = parameters.animation_problem();
-    ImGui::SetTooltip("%s", problem.empty() ? "Runs the input chosen under \"animate\" in the "
-                                              "Parameters panel from the low end of its slider to "
-                                              "the high end and back; pause leaves it where it is."
-                                            : problem.c_str());
+    // Wrapped: one line the window's width would hide the strip while the pointer waits here.
+    wrapped_tooltip("%s", problem.empty() ? "Runs the input chosen under \"animate\" in the "
+                                            "Parameters panel from the low end of its slider to "
+                                            "the high end and back; pause leaves it where it is."
+                                          : problem.c_str());
   }
   ImGui::SetCursorScreenPos(cursor);
 }
@@ -231,9 +239,17 @@ float PresentationBar::draw(PanelContext& context, float top) {
       drawn_words = cloth.drawn_folds_words();
     }
   }
+  if (available != scale_cap_width_ || ImGui::GetFontSize() != scale_cap_font_ ||
+      layout_.presented() != scale_cap_view_) {
+    scale_cap_ = std::numeric_limits<float>::infinity();
+    scale_cap_width_ = available;
+    scale_cap_font_ = ImGui::GetFontSize();
+    scale_cap_view_ = layout_.presented();
+  }
   const Headlines headlines =
       fit_headlines(context.panel<ResultsPanel>().headlines(context.document, drawn, drawn_words),
-                    available - play_room);
+                    available - play_room, scale_cap_);
+  scale_cap_ = headlines.scale;
   const bool strip = layout_.presents_inputs() && !presents_parameters;
   message_ = message_for_presented(context, strip);
   float text_height = std::max(headlines.height, play ? play_button_height() : 0.0f);
@@ -271,7 +287,7 @@ float PresentationBar::draw(PanelContext& context, float top) {
     if (play) {
       // Play and pause, for a lesson that runs an input through its range while the class
       // watches the presented view.
-      play_pause(context, parameters, width);
+      play_pause(context, parameters, width, layout_.presented_since_s());
     }
     draw_headlines(headlines);
     // A button a finger's height is taller than a line of the read-out: what comes under them

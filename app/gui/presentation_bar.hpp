@@ -43,6 +43,13 @@ class PresentationBar {
   Layout& layout_;
   std::string message_;
   std::map<std::string, PanelRect> view_buttons_;
+  // The read-out's scale only shrinks while the window's width, the text size and the view
+  // presented stay: a read-out that loses its ranges (n cycles, a short cloth) while an input
+  // plays would otherwise grow and push the strip down, and back, as the regimes pass.
+  float scale_cap_ = 0.0f;
+  float scale_cap_width_ = -1.0f;
+  float scale_cap_font_ = -1.0f;
+  const void* scale_cap_view_ = nullptr;
 };
 
 }  // namespace foldlab::gui

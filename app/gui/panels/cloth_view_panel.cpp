@@ -502,9 +502,6 @@ bool ClothViewPanel::toolbar(PanelContext& context) {
     if (ImGui::IsItemHovered()) {
       ImGui::SetTooltip("How far the breeze sways the cloth at most, in mm");
     }
-    if (breeze_playing_) {
-      style_.time_s += ImGui::GetIO().DeltaTime;  // the solver does not run: only the shader moves
-    }
   }
   constexpr const char* kColourBys = "fabric\0z\0fold sign\0";
   same_line_if_fits(labelled_width(combo_width(kColourBys), "colour by"));
@@ -610,6 +607,11 @@ void ClothViewPanel::draw(PanelContext& context) {
     camera_loads_ = document.loads();  // another preset: frame it afresh
     camera_framed_ = false;
     camera_user_moved_ = false;
+  }
+  // Whether or not its settings are in sight (presented, they are behind a menu): the solver does
+  // not run, only the shader moves.
+  if (animating()) {
+    style_.time_s += ImGui::GetIO().DeltaTime;
   }
   bool reset = false;
   const bool presented = context.presented == this;

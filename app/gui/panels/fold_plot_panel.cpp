@@ -159,12 +159,16 @@ void FoldPlotPanel::view_settings(ViewSettings& settings, Document& /*document*/
 
 void FoldPlotPanel::report(nlohmann::json& state, PanelContext& /*context*/) const {
   const PlotView& view = plot_.view();
-  state["fold_plot"] = {{"x_mm", {view.x_lo, view.x_hi}},
-                        {"y_mm", {view.y_lo, view.y_hi}},
-                        {"x_auto", view.x_auto},
-                        {"y_auto", view.y_auto},
-                        {"x_ticks", plot_.x_ticks().size()},
-                        {"true_scale", drawn_true_scale_}};
+  state["fold_plot"] = {
+      {"x_mm", {view.x_lo, view.x_hi}},
+      {"y_mm", {view.y_lo, view.y_hi}},
+      {"x_auto", view.x_auto},
+      {"y_auto", view.y_auto},
+      {"x_ticks", plot_.x_ticks().size()},
+      {"true_scale", drawn_true_scale_},
+      // Whether the legend lies over the data area (presented, it may).
+      {"legend_over_data", view.legend_max.x > view.min.x && view.legend_min.x < view.max.x &&
+                               view.legend_max.y > view.min.y && view.legend_min.y < view.max.y}};
 }
 
 // Below this the plot's axis labels and legend squash it: the panel scrolls instead, and the

@@ -38,6 +38,10 @@ bool ViewToolbar::begin(const char* label, float least_view_height_px, bool fold
       ImGui::OpenPopup(label);
       open_requested_ = false;
     }
+    // Over the view's top left corner, under the read-out and the strip, rather than wherever
+    // the menu that asked for it was (over the menu bar and the read-out). Every frame: a popup
+    // is placed in the frame after it opens, once its size is known.
+    ImGui::SetNextWindowPos(ImGui::GetCursorScreenPos());
     in_popup_ = ImGui::BeginPopup(label);
     return in_popup_;
   }
