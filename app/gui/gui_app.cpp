@@ -6,7 +6,6 @@
 #include <filesystem>
 #include <memory>
 #include <optional>
-#include <set>
 #include <string>
 #include <string_view>
 
@@ -223,14 +222,11 @@ EM_JS(void, performance_mark, (const char* name),
       { performance.mark('foldlab: ' + UTF8ToString(name)); });
 #endif
 
-// The steps of the page's start, each once, as marks the page bench reads ("foldlab: ..."): where
-// a cold load's time goes. Nothing on the desktop.
-void page_mark_once(const char* name) {
+// A step of the page's start, as a mark the page bench reads ("foldlab: ..."): where a cold
+// load's time goes. Nothing on the desktop.
+void page_mark(const char* name) {
 #ifdef __EMSCRIPTEN__
-  static std::set<std::string> marked;
-  if (marked.insert(name).second) {
-    performance_mark(name);
-  }
+  performance_mark(name);
 #else
   (void)name;
 #endif
@@ -256,11 +252,15 @@ bool draw_frame(Surface& surface, Renderer& renderer, Explorer& explorer, Script
   run_job_slices();
   explorer.prepare_frame();
   renderer.new_frame();
-  page_mark_once("fonts and style ready");
+  if (frame == 0) {
+    page_mark("fonts and style ready");
+  }
   ImGui::NewFrame();
   explorer.frame();
   ImGui::Render();
-  page_mark_once("panels built");
+  if (frame == 0) {
+    page_mark("panels built");
+  }
   latency.built(Clock::now(), explorer.document().scene(), renderer.cloth_render_ms_total());
   if (layout != nullptr) {
     layout->save_when_asked();
@@ -268,7 +268,9 @@ bool draw_frame(Surface& surface, Renderer& renderer, Explorer& explorer, Script
   const FrameSize size = surface.framebuffer_size();
   surface.bind_framebuffer();
   renderer.render_draw_data(size);
-  page_mark_once("panels drawn");
+  if (frame == 0) {
+    page_mark("panels drawn");
+  }
   latency.drawn(Clock::now());
   write_requested_picture(explorer, renderer, size);
   script.after_render(explorer, renderer, size, frame);
@@ -301,7 +303,7 @@ class ExplorerRun {
         persist_(interactive && !options.fresh),
         imgui_(surface),
         renderer_(make_gl_renderer()) {
-    page_mark_once("renderer made");
+    page_mark("renderer made");
     // Before the session, the layout or the user's presets are read.
     config_->restore(config_dir());
     const Preset& preset = start.preset;
@@ -386,7 +388,7 @@ class ExplorerRun {
     }
     script_.emplace(options.frames, std::move(animation), std::move(player),
                     options.screenshot_path, options.input_files);
-    page_mark_once("explorer made");
+    page_mark("explorer made");
   }
 
   // The link's B, pinned beside A: the preset A's link starts from with B's inputs over it. A B
@@ -663,7 +665,7 @@ int run_window(const GuiRunOptions& options) {
   SurfaceOptions surface_options{options.width, options.height, false};
   // Lives as long as the page: the browser's loop calls into it after this returns.
   auto* web = new WebRun{make_window_surface(surface_options), nullptr};
-  page_mark_once("window made");
+  page_mark("window made");
   web->run = std::make_unique<ExplorerRun>(*web->surface, options, start, true, std::move(player));
   running_page = web;
   tell_page_screen(kZoomPerWheelStep);

@@ -349,12 +349,10 @@ void Layout::place(const Panel& panel) {
       ImGui::SetNextWindowPos(presented_rect_.pos, ImGuiCond_Always);
       ImGui::SetNextWindowSize(presented_rect_.size, ImGuiCond_Always);
     } else if (window_to_restore_ == &panel) {
-      // Where it was, or, presented before it was ever open, a window's first place (as the
-      // field's own): not the whole window it filled while presented.
-      const ImVec2 display = ImGui::GetIO().DisplaySize;
-      const PanelRect back = window_restore_.value_or(
-          PanelRect{ImVec2(0.2f * display.x, std::max(0.15f * display.y, menu_height_px_)),
-                    ImVec2(0.6f * display.x, 0.7f * display.y)});
+      // Where it was, or, presented before it was ever open, its first place: not the whole
+      // window it filled while presented.
+      const PanelRect back =
+          window_restore_.value_or(first_window_place(ImGui::GetIO().DisplaySize, menu_height_px_));
       ImGui::SetNextWindowPos(back.pos, ImGuiCond_Always);
       ImGui::SetNextWindowSize(back.size, ImGuiCond_Always);
       ImGui::SetNextWindowFocus();  // back over the tiles it was presented from

@@ -112,12 +112,7 @@ void MenuBar::presenting_items(PanelContext& context) {
   const auto item_width = [&style](const char* label) {
     return ImGui::CalcTextSize(label).x + 2.0f * style.ItemSpacing.x;
   };
-  Panel* shown = nullptr;
-  for (const std::unique_ptr<Panel>& panel : context.panels) {
-    if (panel.get() == layout_.presented()) {
-      shown = panel.get();
-    }
-  }
+  Panel* shown = layout_.presentable_panel(layout_.presented()->key());
   // The view's menu and the strip's item first; "Back to the tiles" in as many words as leave
   // them on the bar, or none (it is in the view's menu, and Esc).
   const float room = ImGui::GetWindowWidth() - style.WindowPadding.x - ImGui::GetCursorPosX() -
@@ -248,14 +243,12 @@ void MenuBar::view_menu(PanelContext& context) {
       ImGui::MenuItem("Back to the tiles", finger ? nullptr : "Esc")) {
     layout_.request_present(nullptr);
   }
-  if (shows_one_view()) {
-    // (the buttons under the read-out)
-  } else if (finger) {
+  if (!shows_one_view() && finger) {
     ImGui::TextDisabled("Present (fill the screen):");
     ImGui::Indent();
     present_items();
     ImGui::Unindent();
-  } else if (ImGui::BeginMenu("Present (fill the window)")) {
+  } else if (!shows_one_view() && ImGui::BeginMenu("Present (fill the window)")) {
     present_items();
     ImGui::EndMenu();
   }

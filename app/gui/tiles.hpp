@@ -4,6 +4,7 @@
 // edge the user dragged is kept as a fraction of what it divides. Pure geometry: no ImGui state.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <iterator>
 #include <optional>
@@ -18,6 +19,13 @@ struct PanelRect {
   ImVec2 pos{0, 0};
   ImVec2 size{0, 0};
 };
+
+// A window's first place (one that opens and closes, as the tension field), over the tiles of a
+// `display` whose menu bar is `top_px` high.
+inline PanelRect first_window_place(ImVec2 display, float top_px) {
+  return {ImVec2(0.2f * display.x, std::max(0.15f * display.y, top_px)),
+          ImVec2(0.6f * display.x, 0.7f * display.y)};
+}
 
 // Where an edge goes when the user has not dragged it, from the span it divides and the font
 // size (tiles.cpp), so that the layout follows the UI scale.

@@ -652,13 +652,14 @@ void FieldPanel::draw(PanelContext& context) {
   // A first place of its own, unless the layout placed it (presented, or put back).
   if ((ImGui::GetCurrentContext()->NextWindowData.Flags & ImGuiNextWindowDataFlags_HasPos) == 0) {
     const ImVec2 display = ImGui::GetIO().DisplaySize;
-    ImGui::SetNextWindowPos(ImVec2(0.2f * display.x, 0.15f * display.y), ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowSize(ImVec2(0.6f * display.x, 0.7f * display.y), ImGuiCond_FirstUseEver);
+    const ImGuiWindow* menu = ImGui::FindWindowByName("##MainMenuBar");
+    const float top = menu != nullptr ? menu->Size.y : 0.0f;
+    const PanelRect first = first_window_place(display, top);
+    ImGui::SetNextWindowPos(first.pos, ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowSize(first.size, ImGuiCond_FirstUseEver);
     // A window made smaller (1920 x 1080 to 1024 x 640) keeps the view, its close button and
     // its title on the display, under the menu bar (which would hide them and take their clicks).
     if (const ImGuiWindow* window = ImGui::FindWindowByName(window_label().c_str())) {
-      const ImGuiWindow* menu = ImGui::FindWindowByName("##MainMenuBar");
-      const float top = menu != nullptr ? menu->Size.y : 0.0f;
       const ImVec2 size(std::min(window->SizeFull.x, display.x),
                         std::min(window->SizeFull.y, display.y - top));
       const ImVec2 pos(std::clamp(window->Pos.x, 0.0f, display.x - size.x),

@@ -262,28 +262,41 @@ std::string band_meaning(const RegimeBand& band) {
 
 }  // namespace
 
-void SweepPanel::draw_band_key() const {
-  // Each kind of band once, in the order they lie along x: a band one sample wide is too narrow
-  // for its name, so the key says what each shade is.
-  std::vector<std::string> named;
-  for (const RegimeBand& band : bands_) {
-    if (std::find(named.begin(), named.end(), band.name) != named.end()) {
-      continue;
+namespace {
+
+// Each kind of band once (by name), in the order they lie along x.
+std::vector<const RegimeBand*> band_kinds(const std::vector<RegimeBand>& bands) {
+  std::vector<const RegimeBand*> kinds;
+  for (const RegimeBand& band : bands) {
+    if (std::none_of(kinds.begin(), kinds.end(),
+                     [&](const RegimeBand* k) { return k->name == band.name; })) {
+      kinds.push_back(&band);
     }
-    named.push_back(band.name);
-    const float side = ImGui::GetTextLineHeight();
-    const ImVec2 at = ImGui::GetCursorScreenPos();
-    ImDrawList* draw = ImGui::GetWindowDrawList();
-    const ImVec2 low(at.x, at.y + 0.15f * side);
-    const ImVec2 high(at.x + 1.4f * side, at.y + 0.85f * side);
-    draw->AddRectFilled(low, high,
-                        ImGui::ColorConvertFloat4ToU32(plot_background(style_is_light())));
-    draw->AddRectFilled(low, high, band.valid ? kRegimeBandFill.u32() : kRefusedBandFill.u32());
-    draw->AddRect(low, high, kDimText.u32());
+  }
+  return kinds;
+}
+
+// A band's shade as its key shows it, a text line tall and 1.4 lines wide from `at`.
+void draw_band_swatch(ImDrawList* draw, ImVec2 at, const RegimeBand& band) {
+  const float side = ImGui::GetTextLineHeight();
+  const ImVec2 low(at.x, at.y + 0.15f * side);
+  const ImVec2 high(at.x + 1.4f * side, at.y + 0.85f * side);
+  draw->AddRectFilled(low, high, ImGui::ColorConvertFloat4ToU32(plot_background(style_is_light())));
+  draw->AddRectFilled(low, high, band.valid ? kRegimeBandFill.u32() : kRefusedBandFill.u32());
+  draw->AddRect(low, high, kDimText.u32());
+}
+
+}  // namespace
+
+void SweepPanel::draw_band_key() const {
+  // A band one sample wide is too narrow for its name, so the key says what each shade is.
+  const float side = ImGui::GetTextLineHeight();
+  for (const RegimeBand* band : band_kinds(bands_)) {
+    draw_band_swatch(ImGui::GetWindowDrawList(), ImGui::GetCursorScreenPos(), *band);
     ImGui::Dummy(ImVec2(1.4f * side, side));
     ImGui::SameLine();
     ImGui::PushStyleColor(ImGuiCol_Text, static_cast<ImVec4>(kDimText));
-    wrapped_text("%s: %s", band.name.c_str(), band_meaning(band).c_str());
+    wrapped_text("%s: %s", band->name.c_str(), band_meaning(*band).c_str());
     ImGui::PopStyleColor();
   }
 }
@@ -291,15 +304,11 @@ void SweepPanel::draw_band_key() const {
 bool SweepPanel::band_key_on_title_row(float row_px) const {
   const ImGuiStyle& style = ImGui::GetStyle();
   const float side = ImGui::GetTextLineHeight();
-  std::vector<const RegimeBand*> kinds;
+  const std::vector<const RegimeBand*> kinds = band_kinds(bands_);
   float width = 0.0f;
-  for (const RegimeBand& band : bands_) {
-    if (std::none_of(kinds.begin(), kinds.end(),
-                     [&](const RegimeBand* k) { return k->name == band.name; })) {
-      kinds.push_back(&band);
-      width += 1.4f * side + style.ItemInnerSpacing.x + ImGui::CalcTextSize(band.name.c_str()).x +
-               style.ItemSpacing.x;
-    }
+  for (const RegimeBand* band : kinds) {
+    width += 1.4f * side + style.ItemInnerSpacing.x + ImGui::CalcTextSize(band->name.c_str()).x +
+             style.ItemSpacing.x;
   }
   // Beside the first plot's title ("n") and clear of the tick labels' column under it.
   const float title_px = ImGui::CalcTextSize("n").x + 4.0f * ImGui::GetFontSize();
@@ -310,13 +319,8 @@ bool SweepPanel::band_key_on_title_row(float row_px) const {
   ImVec2 at(start.x + row_px - width + style.ItemSpacing.x, start.y);
   ImDrawList* draw = ImGui::GetWindowDrawList();
   for (const RegimeBand* band : kinds) {
-    const ImVec2 low(at.x, at.y + 0.15f * side);
-    const ImVec2 high(at.x + 1.4f * side, at.y + 0.85f * side);
-    draw->AddRectFilled(low, high,
-                        ImGui::ColorConvertFloat4ToU32(plot_background(style_is_light())));
-    draw->AddRectFilled(low, high, band->valid ? kRegimeBandFill.u32() : kRefusedBandFill.u32());
-    draw->AddRect(low, high, kDimText.u32());
-    const ImVec2 text_at(high.x + style.ItemInnerSpacing.x, at.y);
+    draw_band_swatch(draw, at, *band);
+    const ImVec2 text_at(at.x + 1.4f * side + style.ItemInnerSpacing.x, at.y);
     draw->AddText(text_at, kDimText.u32(), band->name.c_str());
     const ImVec2 end(text_at.x + ImGui::CalcTextSize(band->name.c_str()).x, at.y + side);
     if (ImGui::IsMouseHoveringRect(at, end)) {
