@@ -2036,6 +2036,22 @@ TEST_F(CliTest, FieldOutlineFileSolvesOrIsRefusedByName) {
   // The area by hand: 600 x 400 plus the triangle of base 600 and height 100 below it.
   const double weight = 1.5e-6 * (600.0 * 400.0 + 0.5 * 600.0 * 100.0);
   EXPECT_NEAR(j.at("weight_N").get<double>(), weight, 1e-12 * weight);
+  // The closed form beside it is the cut's cloth: 500 mm down the middle, 600 mm between the
+  // supports as cut, moved in by 60 mm in all (the default span rule, l = L - d).
+  const json& closed = j.at("closed_form");
+  EXPECT_EQ(closed.at("cloth"), "cut");
+  EXPECT_DOUBLE_EQ(closed.at("h_mm").get<double>(), 500.0);
+  EXPECT_DOUBLE_EQ(closed.at("L_mm").get<double>(), 600.0);
+  EXPECT_DOUBLE_EQ(closed.at("d_mm").get<double>(), 60.0);
+  const RunResult solved =
+      run({"solve", "--set", "h=500", "--set", "L=600", "--set", "d=60", "--json"});
+  ASSERT_EQ(solved.exit_status, 0) << solved.err;
+  const json by_solve = json::parse(solved.out);
+  EXPECT_EQ(closed.at("n"), by_solve.at("n"));
+  EXPECT_NEAR(closed.at("z_max_mm").get<double>(), by_solve.at("z_max_mm").get<double>(), 1e-9);
+  const RunResult shape = run({"field", "--shape", "triangle", "--cells-x", "8", "--json"});
+  ASSERT_EQ(shape.exit_status, 0) << shape.err;
+  EXPECT_EQ(json::parse(shape.out).at("closed_form").at("cloth"), "preset");
 
   const fs::path crossing = dir_ / "crossing.json";
   std::ofstream(crossing) << R"({"top": [[0, 0], [600, 0], [300, 10]],

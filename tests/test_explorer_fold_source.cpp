@@ -1,6 +1,7 @@
 // The 3D view's fold source: the cloth drawn with the closed form's folds or with those read from
 // the tension field, the field solved only for a view that asks for it, Results' two columns, and
-// a preset's own cut in the field view. The expected folds come from the core calls `foldlab
+// a preset's own cut in the field view, the field view's scale while an input moves. The expected
+// folds come from the core calls `foldlab
 // field --json` makes (mesh, cold solve, field_folds), never from the panels.
 #include "explorer_fixture.hpp"
 #include "outline_area.hpp"
@@ -240,6 +241,25 @@ TEST_F(FoldSourceTest, TheFieldsFoldsFollowAnInputChangedEveryFrame) {
     EXPECT_EQ(source.at("n"), expected.n);
     EXPECT_NEAR(source.at("z_max_mm").get<double>(), expected.z_max_mm, 1e-3 * expected.z_max_mm);
   }
+}
+
+// While h shrinks frame by frame the field view keeps its scale, so that the cloth is seen to
+// shrink; at rest it is fitted to its canvas again, larger.
+TEST_F(FoldSourceTest, TheFieldViewKeepsItsScaleWhileAnInputMoves) {
+  panel<FieldPanel>().open();
+  settle();
+  const double at_rest = report().at("field").at("canvas_px_per_mm").get<double>();
+  ASSERT_GT(at_rest, 0.0);
+  const double h_mm = shown().hanging.height_mm;
+  for (int i = 1; i <= 10; ++i) {
+    ASSERT_EQ(explorer_->set_input("h", h_mm * (1.0 - 0.04 * i)), std::nullopt);
+    frame();
+    EXPECT_LE(report().at("field").at("canvas_px_per_mm").get<double>(), at_rest * (1.0 + 1e-9))
+        << "frame " << i;
+  }
+  settle();
+  // The cloth 40 % shorter: fitted by its height, a scale larger by up to 1 / 0.6.
+  EXPECT_GT(report().at("field").at("canvas_px_per_mm").get<double>(), 1.1 * at_rest);
 }
 
 // The colour bar beside the 3D view and a picture's caption give the folds drawn: the field's n

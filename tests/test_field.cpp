@@ -260,6 +260,37 @@ TEST(FieldStatics, InclinedSupportsDifferByTwiceTheThrustTimesTheSlope) {
   EXPECT_GT(V_R, V_L);
 }
 
+// Mansfield's 2 H tan(theta) itself: where each support holds the corner it is sewn to (d = 0),
+// the cloth hangs as cut but for its stretch, its centre of gravity stays midway but for a shift
+// in proportion to the stretch, so V_R - V_L approaches 2 H tan(theta) as 1 / E. (With the
+// supports moved together the cut swings and contracts across its rays, and the centre of
+// gravity's shift stays whatever E is: the test above.)
+TEST(FieldStatics, CornersHeldWhereTheyAreGiveTwiceTheThrustTimesTheSlopeAsTheClothStiffens) {
+  Parameters p = default_parameters();
+  p.shape.kind = ShapeKind::inclined;
+  p.shape.incline_deg = 15.0;
+  p.hanging.support_displacement_mm = 0.0;
+  const Outline outline = make_outline(p, OutlineKind::inclined);
+  const Mesh mesh = make_mesh(outline, {20, 14, MeshSplit::union_jack});
+  Solver solver(mesh);
+  const double tan_theta = std::tan(15.0 * std::numbers::pi / 180.0);
+  std::vector<double> off;
+  for (double stiffer : {1.0, 10.0, 100.0}) {
+    Parameters q = p;
+    q.fabric.youngs_modulus_MPa *= stiffer;
+    const Solution s = solver.solve(material_of(q.fabric), support_targets(outline));
+    ASSERT_TRUE(s.converged) << stiffer << ": " << s.relative_residual;
+    const double H = 0.5 * (s.reactions_N[1].x() - s.reactions_N[0].x());
+    const double difference = s.reactions_N[0].y() - s.reactions_N[1].y();  // V_R - V_L
+    off.push_back(std::abs(difference / (2 * H * tan_theta) - 1.0));
+    std::cout << "E x " << stiffer << ": V_R - V_L = " << difference
+              << " N, 2 H tan = " << 2 * H * tan_theta << " N, off by " << off.back() << "\n";
+  }
+  EXPECT_LT(off[0], 1e-3);
+  EXPECT_NEAR(off[0] / off[1], 10.0, 1.5);
+  EXPECT_NEAR(off[1] / off[2], 10.0, 1.5);
+}
+
 // The wedge: its weight, w L (h + h/4) / 2 by hand, hangs nearer its thick (left) end. With the
 // supports level at (-l/2, 0) and (l/2, 0) and reactions (-H, -V_L), (H, -V_R), moments about the
 // middle between them give l (V_L - V_R) / 2 = -x_g W: the left support carries more, by exactly
@@ -427,6 +458,91 @@ TEST(FieldRefinement, PotentialFallsAndThePointSupportsStepLogarithmically) {
   EXPECT_LT(potential_steps, 1.6);
   EXPECT_GT(thrust_steps, 0.6);
   EXPECT_LT(thrust_steps, 1.6);
+}
+
+// The stretch of a fibre hung from its top at depth Y below it, when nu = 0: the nominal tension
+// lambda S = lambda Y_mod (lambda² - 1) / 2 carries the weight below, w (h - Y). The cubic's root
+// above 1 by Newton's method from a start above it (the cubic is convex there).
+double hung_fibre_stretch(double weight_below_N_per_mm, double stiffness_N_per_mm) {
+  const double q = 2.0 * weight_below_N_per_mm / stiffness_N_per_mm;
+  double lambda = 1.0 + q + 1.0;
+  for (int i = 0; i < 100; ++i) {
+    const double step = (lambda * lambda * lambda - lambda - q) / (3.0 * lambda * lambda - 1.0);
+    lambda -= step;
+    if (std::abs(step) < 1e-16) {
+      break;
+    }
+  }
+  return lambda;
+}
+
+// Without point supports the field converges as a smooth problem does. A sheet hung from its
+// whole top edge with nu = 0 hangs as independent fibres, so its least potential per unit width
+// is a one-dimensional integral, taken here by Simpson's rule on the fibre's stretch:
+// Pi / L = integral over Y of Y_mod (lambda² - 1)² / 8 - w (h - Y) lambda (the weight's work,
+// w times the integral of the hung depth, integrated by parts). Linear triangles on nested
+// meshes approach it from above (a conforming refinement) as the cell size squared. The top
+// supports' reactions approach w h times their share of the edge at first order: on a mesh the
+// free lateral contraction of wrinkled triangles hands a little weight between columns.
+TEST(FieldRefinement, WithoutPointSupportsThePotentialConvergesAsTheCellSizeSquared) {
+  const double L = 600.0;
+  const double h = 300.0;
+  // Soft, so that the stretch (about 5 % at the top) is far from the linear theory's.
+  const Material material{0.009, 0.0, 1.5e-6};
+  constexpr int kIntervals = 20000;
+  double per_width = 0.0;
+  for (int k = 0; k <= kIntervals; ++k) {
+    const double Y = h * k / kIntervals;
+    const double lambda =
+        hung_fibre_stretch(material.weight_N_per_mm2 * (h - Y), material.stiffness_N_per_mm);
+    const double density = material.stiffness_N_per_mm * std::pow(lambda * lambda - 1.0, 2) / 8.0 -
+                           material.weight_N_per_mm2 * (h - Y) * lambda;
+    const double simpson = (k == 0 || k == kIntervals) ? 1.0 : (k % 2 == 1 ? 4.0 : 2.0);
+    per_width += simpson * density * (h / kIntervals) / 3.0;
+  }
+  const double exact_Nmm = L * per_width;
+  std::vector<double> error;
+  std::vector<double> middle_off;
+  std::vector<double> corner_off;
+  for (int nx : {8, 16, 32, 64}) {
+    Outline o;
+    o.top_mm = {{-0.5 * L, 0.0}, {0.5 * L, 0.0}};
+    o.bottom_mm = {{-0.5 * L, h}, {0.5 * L, h}};
+    for (int i = 0; i <= nx; ++i) {
+      const Vector2d at(-0.5 * L + L * i / nx, 0.0);
+      o.supports.push_back({at, at});
+    }
+    const Mesh mesh = make_mesh(o, {nx, nx / 2, MeshSplit::union_jack});
+    Solver solver(mesh);
+    const Solution s = solver.solve(material, support_targets(o));
+    ASSERT_TRUE(s.converged) << nx << ": " << s.relative_residual;
+    error.push_back(s.potential_Nmm - exact_Nmm);
+    EXPECT_GT(error.back(), 0.0) << nx << " columns: below the least potential";
+    // The middle half's supports and a corner, as shares of the column each would carry.
+    const double per_column = material.weight_N_per_mm2 * h * (L / nx);
+    double off = 0.0;
+    for (std::size_t i = 0; i < o.supports.size(); ++i) {
+      if (std::abs(o.supports[i].at_mm.x()) <= 0.25 * L) {
+        off = std::max(off, std::abs(-s.reactions_N[i].y() / per_column - 1.0));
+      }
+    }
+    middle_off.push_back(off);
+    corner_off.push_back(std::abs(-s.reactions_N[0].y() / per_column - 0.5));
+    std::cout << nx << " columns: middle supports within " << off << " of w h a column, a corner "
+              << corner_off.back() << " off half of it\n";
+    std::cout << nx << " x " << nx / 2 << " cells: potential " << s.potential_Nmm
+              << " N mm, above the least by " << error.back() << " N mm\n";
+  }
+  for (std::size_t k = 1; k < error.size(); ++k) {
+    const double order = std::log2(error[k - 1] / error[k]);
+    const double middle_order = std::log2(middle_off[k - 1] / middle_off[k]);
+    const double corner_order = std::log2(corner_off[k - 1] / corner_off[k]);
+    std::cout << "orders at halving " << k << ": potential " << order << ", middle supports "
+              << middle_order << ", corner " << corner_order << "\n";
+    EXPECT_NEAR(order, 2.0, 0.1) << "halving " << k;
+    EXPECT_NEAR(middle_order, 1.0, 0.25) << "halving " << k;
+    EXPECT_NEAR(corner_order, 1.0, 0.25) << "halving " << k;
+  }
 }
 
 // The Newton matrix's damping changes the path, not the field: halving its floor (both its cap

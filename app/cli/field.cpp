@@ -109,7 +109,22 @@ Result run(const Options& options) {
   } catch (const field::OutlineError& e) {
     throw InputError(e.what());
   }
-  r.closed_form = solve(r.preset.parameters);
+  // A cut of the preset's shape is the preset's cloth; one read from a file has its own h, L, d.
+  Parameters closed = r.preset.parameters;
+  const bool own_cut = !options.outline_path.empty() || (r.preset.outline && options.shape.empty());
+  if (own_cut) {
+    if (const std::optional<Hanging> hanging =
+            field::closed_form_hanging(r.outline, closed.model.span_rule)) {
+      Parameters of_cut = closed;
+      of_cut.hanging = *hanging;
+      if (validate(of_cut).empty()) {
+        closed = of_cut;
+        r.closed_form_of_cut = true;
+      }
+    }
+  }
+  r.closed_form_hanging = closed.hanging;
+  r.closed_form = solve(closed);
   return r;
 }
 
@@ -167,8 +182,17 @@ void print_text(const Result& r, std::ostream& out) {
     out << "\n";
   }
   const Solution& c = r.closed_form;
-  out << printf_string("folds from the closed form: n = %d, Q = %.4g, z_max = %.1f mm (%s)\n", c.n,
-                       c.Q, c.z_max_mm, std::string(regime_info(c.regime).label).c_str());
+  const Hanging& g = r.closed_form_hanging;
+  out << printf_string(
+      "folds from the closed form, for %s h = %.1f mm, L = %.1f mm, d = %.1f mm%s: n = %d, Q = "
+      "%.4g, z_max = %.1f mm (%s)\n",
+      r.closed_form_of_cut ? "the cut's" : "the preset's", g.height_mm, g.length_mm,
+      g.support_displacement_mm,
+      r.closed_form_of_cut
+          ? " (its height midway between the supports, their distance as cut, how far they moved "
+            "in)"
+          : "",
+      c.n, c.Q, c.z_max_mm, std::string(regime_info(c.regime).label).c_str());
 }
 
 nlohmann::json print_json(const Result& r) {
@@ -220,7 +244,11 @@ nlohmann::json print_json(const Result& r) {
                         {"Q", r.closed_form.Q},
                         {"z_max_mm", r.closed_form.z_max_mm},
                         {"a_mm", r.closed_form.a_mm},
-                        {"regime", std::string(regime_info(r.closed_form.regime).key)}};
+                        {"regime", std::string(regime_info(r.closed_form.regime).key)},
+                        {"cloth", r.closed_form_of_cut ? "cut" : "preset"},
+                        {"h_mm", r.closed_form_hanging.height_mm},
+                        {"L_mm", r.closed_form_hanging.length_mm},
+                        {"d_mm", r.closed_form_hanging.support_displacement_mm}};
   return out;
 }
 

@@ -39,7 +39,11 @@ struct Result {
   field::Mesh mesh;  // the mesh the field was solved on, for the drawing
   field::FieldReport report;
   field::FieldFolds folds;  // n, Q, z_max and a_i from the field
-  Solution closed_form;     // the same from the closed form, for the inputs as solved
+  // The same from the closed form: for the cut's own h, L and d when it is a cloth hung from two
+  // supports on its top edge read from a file, else for the preset's.
+  Solution closed_form;
+  Hanging closed_form_hanging;
+  bool closed_form_of_cut = false;
 };
 
 void declare(CLI::App& app, Options& options);

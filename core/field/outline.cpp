@@ -198,6 +198,30 @@ double Outline::height_mm() const {
   return bottom - top;
 }
 
+std::optional<Hanging> closed_form_hanging(const Outline& outline, SpanRule rule) {
+  if (outline.supports.size() != 2) {
+    return std::nullopt;
+  }
+  const Support& a = outline.supports[0];
+  const Support& b = outline.supports[1];
+  const double tolerance_mm = 1e-9 * std::max(1.0, outline.height_mm());
+  for (const Support& s : {a, b}) {
+    if (std::abs(s.at_mm.y() - outline.top_y_mm(s.at_mm.x())) > tolerance_mm) {
+      return std::nullopt;
+    }
+  }
+  Hanging hanging;
+  const double middle_mm = 0.5 * (a.at_mm.x() + b.at_mm.x());
+  hanging.height_mm = outline.bottom_y_mm(middle_mm) - outline.top_y_mm(middle_mm);
+  hanging.length_mm = (b.at_mm - a.at_mm).norm();
+  const double moved_in_mm = hanging.length_mm - (b.to_mm - a.to_mm).norm();
+  if (!(moved_in_mm >= 0.0)) {
+    return std::nullopt;
+  }
+  hanging.support_displacement_mm = rule == SpanRule::L_minus_2d ? 0.5 * moved_in_mm : moved_in_mm;
+  return hanging;
+}
+
 Outline make_outline(const Parameters& p, OutlineKind kind) {
   const double h = p.hanging.height_mm;
   const double L = p.hanging.length_mm;

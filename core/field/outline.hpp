@@ -5,6 +5,7 @@
 // OutlineError whose message names what is wrong.
 #pragma once
 
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -75,6 +76,12 @@ double cosine_bottom_depth_mm(const Parameters& p);
 // The cut with its supports for the model's inputs: h, L, d with the span rule of the model
 // (l from span_mm), the strip's k and the incline from the shape.
 Outline make_outline(const Parameters& p, OutlineKind kind);
+
+// The cloth the closed form sees in a cut hung from two supports on its top edge: h its height
+// down the middle between them, L the distance between them as cut, d how far they were moved
+// together (by `rule`: the span is L - d or L - 2d). Empty for any other cut (one support or
+// three and more, a support below the top edge, supports moved apart), which has no such cloth.
+std::optional<Hanging> closed_form_hanging(const Outline& outline, SpanRule rule);
 
 inline constexpr int kMaxOutlineVertices = 10000;
 

@@ -46,6 +46,9 @@ constexpr const char* kCellsLabel = "mesh cells across";
 constexpr ImU32 kTaut = IM_COL32(0, 114, 178, 255);
 constexpr ImU32 kWrinkled = IM_COL32(230, 159, 0, 255);
 constexpr ImU32 kSlack = IM_COL32(150, 150, 150, 255);
+// Dark over every fill, whatever the background.
+constexpr ImU32 kRayInk = IM_COL32(20, 20, 20, 230);
+constexpr ImU32 kCosineInk = IM_COL32(200, 30, 120, 255);
 
 ImU32 state_colour(field::State state) {
   switch (state) {
@@ -100,7 +103,8 @@ struct Margins {
   float left = 0.0f, right = 0.0f, top = 0.0f, bottom = 0.0f;
 };
 
-ToScreen fit(const field::SolvedField& field, ImVec2 origin, ImVec2 size, Margins m) {
+ToScreen fit(const field::SolvedField& field, ImVec2 origin, ImVec2 size, Margins m,
+             double most_px_per_mm) {
   Vector2d low = Vector2d::Constant(std::numeric_limits<double>::max());
   Vector2d high = -low;
   for (const Vector2d& p : field.report.solution.positions_mm) {
@@ -111,7 +115,7 @@ ToScreen fit(const field::SolvedField& field, ImVec2 origin, ImVec2 size, Margin
   const double width = std::max(1.0, static_cast<double>(size.x - m.left - m.right));
   const double height = std::max(1.0, static_cast<double>(size.y - m.top - m.bottom));
   ToScreen to;
-  to.scale = std::min(width / extent.x(), height / extent.y());
+  to.scale = std::min({width / extent.x(), height / extent.y(), most_px_per_mm});
   to.low = low;
   to.origin =
       ImVec2(origin.x + m.left +
@@ -151,7 +155,7 @@ void arrow(ImDrawList& draw, ImVec2 from, ImVec2 to, ImU32 colour, float line_px
 
 // The legend in one row across the top (wrapping when the width runs out); its height.
 float legend(ImDrawList& draw, ImVec2 origin, float width, const FieldDrawing& style,
-             double top_N_per_mm, ImU32 ink) {
+             double top_N_per_mm, bool cosines_drawn, ImU32 ink) {
   ImFont* font = ImGui::GetFont();
   const float text = style.text_px;
   const float box = std::round(0.8f * text);
@@ -171,33 +175,54 @@ float legend(ImDrawList& draw, ImVec2 origin, float width, const FieldDrawing& s
   const auto text_width = [&](const char* words) {
     return font->CalcTextSizeA(text, 1e9f, 0.0f, words).x;
   };
+  // A swatch, then its words; the swatch drawn by `swatch` into the box at its corner.
+  const auto item = [&](const char* words, const auto& swatch) {
+    const ImVec2 at = place(box + 0.4f * text + text_width(words));
+    swatch(ImVec2(at.x, at.y + 0.15f * text));
+    draw.AddText(font, text, ImVec2(at.x + box + 0.4f * text, at.y), ink, words);
+  };
   if (style.colouring == FieldColouring::state) {
     const std::array<std::pair<ImU32, const char*>, 3> rows{
         {{kTaut, "taut: tension both ways"},
          {kWrinkled, "wrinkled: tension along the rays only"},
          {kSlack, "slack: no tension"}}};
     for (const auto& [colour, words] : rows) {
-      const ImVec2 at = place(box + 0.4f * text + text_width(words));
-      draw.AddRectFilled(ImVec2(at.x, at.y + 0.15f * text),
-                         ImVec2(at.x + box, at.y + 0.15f * text + box), colour);
-      draw.AddText(font, text, ImVec2(at.x + box + 0.4f * text, at.y), ink, words);
+      item(words, [&](ImVec2 corner) {
+        draw.AddRectFilled(corner, ImVec2(corner.x + box, corner.y + box), colour);
+      });
     }
-    return y + 1.4f * text - origin.y;
+  } else {
+    const float bar = 6.0f * text;
+    const std::string top = printf_text("%#.3g N/mm or more: tension along the rays", top_N_per_mm);
+    const float zero_width = text_width("0") + 0.3f * text;
+    const ImVec2 at = place(zero_width + bar + 0.3f * text + text_width(top.c_str()));
+    draw.AddText(font, text, at, ink, "0");
+    const float x0 = at.x + zero_width;
+    const float top_y = at.y + 0.15f * text;
+    for (int i = 0; i < 32; ++i) {
+      const float a = x0 + bar * static_cast<float>(i) / 32.0f;
+      draw.AddRectFilled(ImVec2(a, top_y), ImVec2(a + bar / 32.0f + 1.0f, top_y + box),
+                         tension_colour((i + 0.5) / 32.0));
+    }
+    draw.AddRect(ImVec2(x0, top_y), ImVec2(x0 + bar, top_y + box), ink);
+    draw.AddText(font, text, ImVec2(x0 + bar + 0.3f * text, at.y), ink, top.c_str());
   }
-  const float bar = 6.0f * text;
-  const std::string top = printf_text("%#.3g N/mm or more: tension along the rays", top_N_per_mm);
-  const float zero_width = text_width("0") + 0.3f * text;
-  const ImVec2 at = place(zero_width + bar + 0.3f * text + text_width(top.c_str()));
-  draw.AddText(font, text, at, ink, "0");
-  const float x0 = at.x + zero_width;
-  const float top_y = at.y + 0.15f * text;
-  for (int i = 0; i < 32; ++i) {
-    const float a = x0 + bar * static_cast<float>(i) / 32.0f;
-    draw.AddRectFilled(ImVec2(a, top_y), ImVec2(a + bar / 32.0f + 1.0f, top_y + box),
-                       tension_colour((i + 0.5) / 32.0));
+  // The lines as they are drawn over the cloth: on a patch of it, so that the rays' dark ink
+  // shows on a dark background too.
+  const ImU32 cloth = style.colouring == FieldColouring::state ? kWrinkled : tension_colour(0.25);
+  const auto line_over_cloth = [&](ImU32 colour, float thickness) {
+    return [&, colour, thickness](ImVec2 corner) {
+      draw.AddRectFilled(corner, ImVec2(corner.x + box, corner.y + box), cloth);
+      draw.AddLine(ImVec2(corner.x, corner.y + 0.5f * box),
+                   ImVec2(corner.x + box, corner.y + 0.5f * box), colour, thickness);
+    };
+  };
+  if (style.rays) {
+    item("rays: the tension's paths", line_over_cloth(kRayInk, 1.5f * style.line_px));
   }
-  draw.AddRect(ImVec2(x0, top_y), ImVec2(x0 + bar, top_y + box), ink);
-  draw.AddText(font, text, ImVec2(x0 + bar + 0.3f * text, at.y), ink, top.c_str());
+  if (cosines_drawn) {
+    item("closed form's fold lines", line_over_cloth(kCosineInk, style.line_px));
+  }
   return y + 1.4f * text - origin.y;
 }
 
@@ -252,14 +277,16 @@ field::FieldInputs field_inputs(const Parameters& parameters, int cells_x, Field
   return in;
 }
 
-void draw_field(ImDrawList& draw, ImVec2 origin, ImVec2 size, const field::SolvedField& field,
-                const FoldLines* cosines, const FieldDrawing& style) {
+double draw_field(ImDrawList& draw, ImVec2 origin, ImVec2 size, const field::SolvedField& field,
+                  const FoldLines* cosines, const FieldDrawing& style) {
   const field::Solution& s = field.report.solution;
   const ImU32 ink = style.dark ? IM_COL32(235, 235, 235, 255) : IM_COL32(25, 25, 25, 255);
   const std::vector<double> tensions = node_tensions(field);
   const double top_N_per_mm = tension_scale_top(tensions);
+  const std::vector<Vector2d> targets = field::support_targets(field.inputs.outline);
+  const bool cosines_drawn = style.cosines && cosines != nullptr && targets.size() >= 2;
   const float legend_px =
-      style.legend ? legend(draw, origin, size.x, style, top_N_per_mm, ink) : 0.0f;
+      style.legend ? legend(draw, origin, size.x, style, top_N_per_mm, cosines_drawn, ink) : 0.0f;
   // Room above the cloth for the supports' arrows and values, and beside it for a value that
   // reaches past the cloth's side: never more than a share of the canvas, so that a small
   // canvas still shows the cloth.
@@ -270,7 +297,7 @@ void draw_field(ImDrawList& draw, ImVec2 origin, ImVec2 size, const field::Solve
   margins.left = margins.right = std::min(3.0f * text, 0.15f * size.x);
   const ImVec2 body_origin(origin.x, origin.y + legend_px);
   const ImVec2 body_size(size.x, std::max(1.0f, size.y - legend_px));
-  const ToScreen to = fit(field, body_origin, body_size, margins);
+  const ToScreen to = fit(field, body_origin, body_size, margins, style.most_px_per_mm);
   // Without the fill's anti-aliased fringe: neighbouring triangles meet with no hairline between.
   const ImDrawListFlags flags = draw.Flags;
   draw.Flags &= ~ImDrawListFlags_AntiAliasedFill;
@@ -291,8 +318,7 @@ void draw_field(ImDrawList& draw, ImVec2 origin, ImVec2 size, const field::Solve
   }
   draw.Flags = flags;
   if (style.rays) {
-    // Dark over every fill, whatever the background.
-    const ImU32 ray_colour = faded(IM_COL32(20, 20, 20, 230), style.stale);
+    const ImU32 ray_colour = faded(kRayInk, style.stale);
     std::vector<ImVec2> points;
     for (const field::Ray& ray : field.report.rays) {
       points.clear();
@@ -303,14 +329,13 @@ void draw_field(ImDrawList& draw, ImVec2 origin, ImVec2 size, const field::Solve
                        1.5f * style.line_px);
     }
   }
-  const std::vector<Vector2d> targets = field::support_targets(field.inputs.outline);
-  if (style.cosines && cosines != nullptr && targets.size() >= 2) {
+  if (cosines_drawn) {
     // The closed form's frame: x from the middle between the outermost supports, y down from
     // the line through them.
     const field::SupportFrame frame = field::support_frame(targets);
     const double mid = 0.5 * (frame.left_mm.x() + frame.right_mm.x());
     const double span = std::max(1e-9, frame.span_mm());
-    const ImU32 dash = IM_COL32(200, 30, 120, style.stale ? 110 : 255);
+    const ImU32 dash = faded(kCosineInk, style.stale);
     std::vector<ImVec2> points;
     for (const FoldLine& line : cosines->lines) {
       points.clear();
@@ -356,6 +381,7 @@ void draw_field(ImDrawList& draw, ImVec2 origin, ImVec2 size, const field::Solve
     }
     draw.AddCircleFilled(at, 4.0f * style.line_px, ink);
   }
+  return to.scale;
 }
 
 void FieldPanel::view_settings(ViewSettings& settings, Document& /*document*/) {
@@ -488,9 +514,15 @@ void FieldPanel::canvas(PanelContext& context) {
   }
   ImDrawList& draw = *ImGui::GetWindowDrawList();
   draw.PushClipRect(origin, ImVec2(origin.x + size.x, origin.y + size.y), true);
-  draw_field(draw, origin, size, *shown,
-             cosines_ && cut_ == FieldCut::shape ? &context.document.scene().fold_lines() : nullptr,
-             drawing_style(context));
+  FieldDrawing style = drawing_style(context);
+  // Not the canvas's size: the status line over it changes height as a solve starts and ends.
+  if (coarse_ && canvas_px_per_mm_ > 0.0) {
+    style.most_px_per_mm = canvas_px_per_mm_;
+  }
+  canvas_px_per_mm_ = draw_field(
+      draw, origin, size, *shown,
+      cosines_ && cut_ == FieldCut::shape ? &context.document.scene().fold_lines() : nullptr,
+      style);
   draw.PopClipRect();
 }
 
@@ -741,6 +773,7 @@ void FieldPanel::report(json& state, PanelContext& /*context*/) const {
   json out;
   out["open"] = open_;
   out["slice_ms"] = slice_ms_;
+  out["canvas_px_per_mm"] = canvas_px_per_mm_;
   out["solving_for"] = consumers_;
   out["cut"] = view_solve_.own_cut ? "preset" : std::string(kCutNames[static_cast<int>(cut_)]);
   describe_solve(out, view_solve_);

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstdint>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <string>
@@ -36,13 +37,16 @@ struct FieldDrawing {
   float text_px = 13.0f;
   float line_px = 1.0f;
   bool dark = true;  // over a dark background
+  // The most pixels a millimetre may take: while an input moves, the scale it had, so that a
+  // growing or shrinking cloth is seen to grow or shrink rather than refitted to the same size.
+  double most_px_per_mm = std::numeric_limits<double>::infinity();
 };
 
 // Draws `field` into `draw` within [origin, origin + size], millimetres alike across and down, y
 // down; `cosines` are the closed form's fold lines (x from the middle between the supports, y down
-// from their line), drawn over it when asked.
-void draw_field(ImDrawList& draw, ImVec2 origin, ImVec2 size, const field::SolvedField& field,
-                const FoldLines* cosines, const FieldDrawing& style);
+// from their line), drawn over it when asked. Returns the scale drawn at, pixels per millimetre.
+double draw_field(ImDrawList& draw, ImVec2 origin, ImVec2 size, const field::SolvedField& field,
+                  const FoldLines* cosines, const FieldDrawing& style);
 
 // The field's inputs for the model's parameters: the outline of their shape (or `cut`, or the
 // preset's own cut `own_cut` when the cut is the shape's), their material and a mesh of `cells_x`
@@ -214,6 +218,8 @@ class FieldPanel : public Panel {
   std::string& cut_refusal_ = view_solve_.cut_refusal;
   std::optional<field::FieldFolds>& folds_ = view_solve_.folds;
   std::optional<PanelRect> canvas_rect_;
+  // The scale the canvas was last drawn at: kept, or shrunk, while an input moves.
+  double canvas_px_per_mm_ = 0.0;
   DrawnArea drawn_;
   // A picture's field: solved once per set of inputs.
   mutable std::optional<field::FieldInputs> picture_inputs_;
