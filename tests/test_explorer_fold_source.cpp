@@ -262,6 +262,34 @@ TEST_F(FoldSourceTest, TheFieldViewKeepsItsScaleWhileAnInputMoves) {
   EXPECT_GT(report().at("field").at("canvas_px_per_mm").get<double>(), 1.1 * at_rest);
 }
 
+// The closed form's fold lines over the field hang from the field's supports on every cut whose
+// supports the closed form knows: inclined supports too, whose lines the scene has already
+// sheared. Each line's ends are the supports where the field's cut is pinned (from the core's
+// outline), and a line halfway across is below the line through them.
+TEST(FieldOverlay, TheClosedFormsLinesHangFromTheFieldsSupports) {
+  for (const ShapeKind kind :
+       {ShapeKind::cosine_membrane, ShapeKind::rectangular, ShapeKind::inclined}) {
+    Parameters p;
+    p.shape.kind = kind;
+    p.shape.incline_deg = 15.0;
+    const Solution solution = solve(p);
+    ASSERT_GE(solution.n, 1);
+    const FoldLines lines = fold_lines(solution, p, 33);
+    const std::vector<Eigen::Vector2d> targets =
+        field::support_targets(field::make_outline(p, field::outline_kind_of(p.shape)));
+    ASSERT_EQ(targets.size(), 2u);
+    const auto overlay = cosines_on_field(lines, targets);
+    ASSERT_EQ(overlay.size(), lines.lines.size());
+    for (const std::vector<Eigen::Vector2d>& line : overlay) {
+      SCOPED_TRACE(static_cast<int>(kind));
+      EXPECT_NEAR((line.front() - targets[0]).norm(), 0.0, 1e-6);
+      EXPECT_NEAR((line.back() - targets[1]).norm(), 0.0, 1e-6);
+      const Eigen::Vector2d& middle = line[line.size() / 2];
+      EXPECT_GT(middle.y(), 0.5 * (targets[0].y() + targets[1].y()));
+    }
+  }
+}
+
 // The colour bar beside the 3D view and a picture's caption give the folds drawn: the field's n
 // and z_max, said to be the tension field's, and the closed form's when they are drawn.
 TEST_F(FoldSourceTest, TheColourBarAndCaptionGiveTheFoldsDrawn) {

@@ -3,6 +3,7 @@
 // refused. Statics and the cut's area come from hand formulas, not from the solver.
 #include <cmath>
 #include <numbers>
+#include <optional>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -87,6 +88,63 @@ TEST(LiveField, ANewMeshStartsFromTheFieldOnShowAndRefinesIt) {
   EXPECT_EQ(live.shown()->inputs.resolution.cells_x, 16);
   EXPECT_LT(live.iterations(), coarse_iterations);
   EXPECT_NEAR(live.shown()->report.solution.weight_N, 2.94, 1e-9);
+}
+
+// The Table 1 cloth's rectangle of height h: a new cut, so a new mesh, at each h.
+FieldInputs rectangle_of_height(double h_mm) {
+  Parameters p;
+  p.hanging.height_mm = h_mm;
+  FieldInputs in;
+  in.outline = make_outline(p, OutlineKind::rectangular);
+  in.material = material_of(p.fabric);
+  in.resolution.cells_x = 12;
+  in.resolution.cells_y = 12;
+  return in;
+}
+
+// h played: a new cut every slice, each slice too short to finish a solve. Each solve under way
+// is finished before the newer inputs are taken, so fields of inputs a solve behind keep being
+// shown; restarted at every slice, none would end and the first field would stay on show.
+TEST(LiveField, InputsChangedEverySliceAreShownASolveBehind) {
+  LiveField live;
+  live.request(rectangle_of_height(1400.0));
+  run(live, 0.0);
+  ASSERT_TRUE(live.current());
+  const std::uint64_t first = live.shown_count();
+  for (int i = 1; i <= 200; ++i) {
+    live.request(rectangle_of_height(1400.0 + 10.0 * i));
+    live.step(1e-3);  // one Newton step a slice
+  }
+  EXPECT_GE(live.shown_count() - first, 3u) << "fields shown while h moved";
+  const double shown_h = live.shown()->inputs.outline.bottom_mm.front().y() -
+                         live.shown()->inputs.outline.top_mm.front().y();
+  EXPECT_GT(shown_h, 1400.0 + 10.0 * 100) << "the field on show is of h far behind";
+  // At rest the newest inputs are solved and shown.
+  run(live, 0.0);
+  EXPECT_TRUE(live.current());
+  EXPECT_EQ(live.shown()->inputs, rectangle_of_height(1400.0 + 10.0 * 200));
+}
+
+// A cold start given short slices goes on from where each ended and lands where a whole solve
+// does: a very stiff cloth, whose ladder takes many steps, in slices of a step or so.
+TEST(LiveField, AColdStartInShortSlicesEndsWhereAWholeSolveDoes) {
+  FieldInputs stiff = rectangle(100.0, 12);
+  stiff.material.stiffness_N_per_mm *= 1000.0;
+  std::string refusal;
+  const std::optional<SolvedField> whole = solve_field(stiff, refusal);
+  ASSERT_TRUE(whole.has_value()) << refusal;
+  LiveField live;
+  live.request(stiff);
+  live.step(1e-3);
+  EXPECT_TRUE(live.working()) << "the whole ladder ran in the first slice";
+  const int slices = 1 + run(live, 1e-3);
+  ASSERT_TRUE(live.current()) << live.refusal();
+  EXPECT_GT(slices, 3);
+  const Solution& s = live.shown()->report.solution;
+  EXPECT_TRUE(s.converged);
+  EXPECT_NEAR(s.reactions_N[0].x(), whole->report.solution.reactions_N[0].x(),
+              1e-6 * std::abs(whole->report.solution.reactions_N[0].x()));
+  EXPECT_NEAR(s.reactions_N[0].y(), -0.5 * s.weight_N, 1e-6 * s.weight_N);
 }
 
 TEST(LiveField, ARefusedCutKeepsTheLastFieldAndSaysWhy) {

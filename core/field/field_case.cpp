@@ -84,16 +84,14 @@ constexpr double kSoftStretch = 1e-4;
 
 }  // namespace
 
-Solution solve_cold(Solver& solver, const Outline& outline, const Material& material,
-                    const MeshResolution& resolution, const SolveOptions& options) {
-  const double weight_stress_N_per_mm = material.weight_N_per_mm2 * outline.height_mm();
-  const double stretch = weight_stress_N_per_mm / material.stiffness_N_per_mm;
-  if (!(stretch > 0.0) || stretch >= kStiffStretch) {
-    return solve_ladder(solver, outline, material, resolution, options);
-  }
-  Material soft = material;
-  soft.stiffness_N_per_mm = weight_stress_N_per_mm / kSoftStretch;
-  Solution solution = solve_ladder(solver, outline, soft, resolution, options);
+namespace {
+
+// The stiffening of a cloth solved softened as `soft` into `solution`: Y raised tenfold at a time
+// up to the material's, each solve from the last field. Where a rung does not converge (its
+// budget spent), the first such rung's stiffness is where a resumed solve goes on.
+Solution stiffen(Solver& solver, const Outline& outline, const Material& material, Material soft,
+                 Solution solution, const SolveOptions& options) {
+  double resume = solution.converged ? 0.0 : soft.stiffness_N_per_mm;
   int iterations = solution.iterations;
   double solve_ms = solution.solve_ms;
   const std::vector<Eigen::Vector2d> targets = support_targets(outline);
@@ -103,10 +101,41 @@ Solution solve_cold(Solver& solver, const Outline& outline, const Material& mate
     solution = solver.solve(soft, targets, rest_of(options, solve_ms), &softer);
     iterations += solution.iterations;
     solve_ms += solution.solve_ms;
+    if (!solution.converged && resume == 0.0) {
+      resume = soft.stiffness_N_per_mm;
+    }
   }
   solution.iterations = iterations;
   solution.solve_ms = solve_ms;
+  solution.resume_stiffness_N_per_mm =
+      solution.converged || resume >= material.stiffness_N_per_mm ? 0.0 : resume;
   return solution;
+}
+
+}  // namespace
+
+Solution solve_cold(Solver& solver, const Outline& outline, const Material& material,
+                    const MeshResolution& resolution, const SolveOptions& options) {
+  const double weight_stress_N_per_mm = material.weight_N_per_mm2 * outline.height_mm();
+  const double stretch = weight_stress_N_per_mm / material.stiffness_N_per_mm;
+  if (!(stretch > 0.0) || stretch >= kStiffStretch) {
+    return solve_ladder(solver, outline, material, resolution, options);
+  }
+  Material soft = material;
+  soft.stiffness_N_per_mm = weight_stress_N_per_mm / kSoftStretch;
+  return stiffen(solver, outline, material, soft,
+                 solve_ladder(solver, outline, soft, resolution, options), options);
+}
+
+Solution resume_cold(Solver& solver, const Outline& outline, const Material& material,
+                     const Solution& from, const SolveOptions& options) {
+  Material soft = material;
+  soft.stiffness_N_per_mm =
+      from.resume_stiffness_N_per_mm > 0.0
+          ? std::min(from.resume_stiffness_N_per_mm, material.stiffness_N_per_mm)
+          : material.stiffness_N_per_mm;
+  return stiffen(solver, outline, material, soft,
+                 solver.solve(soft, support_targets(outline), options, &from), options);
 }
 
 FieldReport report_field(const Solver& solver, Solution solution, const Outline& outline,

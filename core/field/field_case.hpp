@@ -39,6 +39,10 @@ Solution transferred_start(const Mesh& from, const Solution& solved, const Mesh&
 // rung, a time budget for the whole ladder.
 Solution solve_cold(Solver& solver, const Outline& outline, const Material& material,
                     const MeshResolution& resolution, const SolveOptions& options = {});
+// Goes on with a cold solve that its budget stopped while the cloth was softened: from `from`,
+// solved at `from.resume_stiffness_N_per_mm`, then stiffened as solve_cold does.
+Solution resume_cold(Solver& solver, const Outline& outline, const Material& material,
+                     const Solution& from, const SolveOptions& options = {});
 
 // The report of a solved field; `solver` holds the mesh it was solved on.
 FieldReport report_field(const Solver& solver, Solution solution, const Outline& outline,

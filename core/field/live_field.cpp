@@ -56,9 +56,29 @@ LiveField::LiveField(LiveField&&) noexcept = default;
 LiveField& LiveField::operator=(LiveField&&) noexcept = default;
 
 void LiveField::request(const FieldInputs& inputs) {
-  if (wanted_ && *wanted_ == inputs) {
+  if (latest_ && *latest_ == inputs) {
     return;
   }
+  latest_ = inputs;
+  try {
+    check_outline(inputs.outline);
+  } catch (const OutlineError& e) {
+    // Said at once, whatever is under way; the last field stays on show.
+    refusal_ = e.what();
+    wanted_ = inputs;
+    work_.reset();
+    return;
+  }
+  // Inputs that change every frame (played, animated, dragged fast) would restart the solve every
+  // frame and none would end: the field on show would be of inputs seconds old. A solve under
+  // way is finished first, unless it has taken long; the newest inputs are solved after it.
+  if (working() && iterations_ > 0 && iterations_ < kFinishBeforeNewer) {
+    return;
+  }
+  start(inputs);
+}
+
+void LiveField::start(const FieldInputs& inputs) {
   wanted_ = inputs;
   refusal_.clear();
   iterations_ = 0;
@@ -71,16 +91,16 @@ void LiveField::request(const FieldInputs& inputs) {
     return;
   }
   try {
-    check_outline(inputs.outline);
     Solver solver(make_mesh(inputs.outline, inputs.resolution));
-    std::optional<Solution> start;
+    std::optional<Solution> start_from;
     // From the latest iterate when it is sound, else from the field on show.
     if (work_ && work_->iterate && finite(*work_->iterate)) {
-      start = transferred_start(work_->solver.mesh(), *work_->iterate, solver.mesh());
+      start_from = transferred_start(work_->solver.mesh(), *work_->iterate, solver.mesh());
     } else if (shown_) {
-      start = transferred_start(shown_->mesh, shown_->report.solution, solver.mesh());
+      start_from = transferred_start(shown_->mesh, shown_->report.solution, solver.mesh());
     }
-    work_ = std::make_unique<Work>(Work{inputs, std::move(solver), std::move(start), false, false});
+    work_ = std::make_unique<Work>(
+        Work{inputs, std::move(solver), std::move(start_from), false, false});
   } catch (const OutlineError& e) {
     refusal_ = e.what();
     work_.reset();
@@ -88,16 +108,28 @@ void LiveField::request(const FieldInputs& inputs) {
 }
 
 bool LiveField::working() const {
-  return wanted_ && work_ && !work_->done && !current();
+  if (!latest_ || current() || !refusal_.empty()) {
+    return false;
+  }
+  return (work_ && !work_->done) || !(wanted_ && *wanted_ == *latest_);
 }
 
 bool LiveField::current() const {
-  return shown_ && wanted_ && shown_->inputs == *wanted_;
+  return shown_ && latest_ && shown_->inputs == *latest_;
 }
 
 bool LiveField::step(double budget_ms) {
   if (!working()) {
     return false;
+  }
+  // The solve under way ended (or was asked for before newer inputs and has taken long): on to
+  // the newest.
+  if (!(wanted_ && *wanted_ == *latest_) &&
+      (!work_ || work_->done || iterations_ >= kFinishBeforeNewer)) {
+    start(*latest_);
+    if (!working()) {
+      return false;
+    }
   }
   Work& w = *work_;
   const FieldInputs& in = *wanted_;
@@ -107,12 +139,14 @@ bool LiveField::step(double budget_ms) {
   options.max_iterations = std::max(1, kMaxIterations - iterations_);
   Solution solution;
   const bool cold = !w.iterate;
-  if (!cold) {
+  if (!cold && w.iterate->resume_stiffness_N_per_mm > 0.0) {
+    solution = resume_cold(w.solver, in.outline, in.material, *w.iterate, options);
+  } else if (!cold) {
     solution = w.solver.solve(in.material, targets, options, &*w.iterate);
   } else {
-    // A cold start climbs the coarse-to-fine ladder at once: its first hundred damped steps are
-    // cheapest on the coarse meshes, and it is paid once, when the view opens.
-    options.time_budget_ms = 0.0;
+    // A cold start climbs the coarse-to-fine ladder: its first hundred damped steps are cheapest
+    // on the coarse meshes. Within the slice, so that a stiff cloth's ladder does not hold a
+    // frame for seconds; where the slice ends, the next ones go on from the finest mesh's iterate.
     options.max_iterations = kMaxIterations;
     solution = solve_cold(w.solver, in.outline, in.material, in.resolution, options);
     w.cold_tried = true;
@@ -130,7 +164,10 @@ bool LiveField::step(double budget_ms) {
     ++shown_count_;
     return true;
   }
-  const bool spent = cold || iterations_ >= kMaxIterations || !finite(solution);
+  // A cold start cut short by its slice goes on from where it stopped, softened if it was.
+  const bool cut_short =
+      (cold || solution.resume_stiffness_N_per_mm > 0.0) && budget_ms > 0.0 && finite(solution);
+  const bool spent = (cold && !cut_short) || iterations_ >= kMaxIterations || !finite(solution);
   if (!spent) {
     w.iterate = std::move(solution);
     return false;
@@ -144,6 +181,10 @@ bool LiveField::step(double budget_ms) {
   }
   w.iterate.reset();
   w.done = true;
+  if (!(*wanted_ == *latest_)) {
+    start(*latest_);  // given up for inputs already left behind: on to the newest
+    return false;
+  }
   refusal_ = gave_up(residual_, iterations_);
   return false;
 }

@@ -2,8 +2,9 @@
 // asks for the field of the inputs it shows every frame and gives the solve what is left of the
 // frame; the last converged field stays on show, marked as older, until the new one has
 // converged. Each new solve starts from the latest iterate (on the same mesh) or from the latest
-// field carried onto the new mesh, so that a drag costs a few Newton steps a frame. No thread: a
-// page without threads runs it alike.
+// field carried onto the new mesh, so that a drag costs a few Newton steps a frame; inputs that
+// change while a solve is under way wait for it, so that the field on show is at most a solve
+// behind. No thread: a page without threads runs it alike.
 #pragma once
 
 #include <cstdint>
@@ -66,12 +67,18 @@ class LiveField {
 
   // A solve is given up after this many Newton steps, the default solve's own limit.
   static constexpr int kMaxIterations = 1000;
+  // Newer inputs wait for a solve under way while it has taken fewer Newton steps than this: a
+  // warm re-solve takes 6-25.
+  static constexpr int kFinishBeforeNewer = 60;
 
  private:
+  void start(const FieldInputs& inputs);
+
   struct Work;
   std::unique_ptr<Work> work_;  // the wanted field's solver and latest iterate
   std::shared_ptr<const SolvedField> shown_;
-  std::optional<FieldInputs> wanted_;
+  std::optional<FieldInputs> wanted_;  // the inputs being solved for
+  std::optional<FieldInputs> latest_;  // the inputs last asked for: solved next when not wanted_
   std::string refusal_;
   double residual_ = 0.0;
   int iterations_ = 0;

@@ -104,6 +104,9 @@ struct Solution {
   double slack_share = 0.0;
   double folded_share = 0.0;
   double element_slack_share = 0.0;  // by the triangles' own states, for comparison
+  // A cold solve of a stiff cloth, stopped by its budget while it was still solved softened
+  // (solve_cold): the stiffness to go on at (resume_cold); 0 when it reached the cloth's own.
+  double resume_stiffness_N_per_mm = 0.0;
 };
 
 // One mesh's solver: the mesh's sparsity and the Cholesky ordering are worked out once and

@@ -277,6 +277,38 @@ field::FieldInputs field_inputs(const Parameters& parameters, int cells_x, Field
   return in;
 }
 
+std::vector<std::vector<Vector2d>> cosines_on_field(const FoldLines& cosines,
+                                                    const std::vector<Vector2d>& targets) {
+  std::vector<std::vector<Vector2d>> out;
+  if (targets.size() < 2) {
+    return out;
+  }
+  // The closed form's frame: x from the middle between the outermost supports, y down from the
+  // line through them. Each fold line is hung from the field's supports by its depth below its
+  // own chord: the closed form's lines of inclined supports are already sheared, and sheared
+  // again by the field's line they would rise twice as far.
+  const field::SupportFrame frame = field::support_frame(targets);
+  const double mid = 0.5 * (frame.left_mm.x() + frame.right_mm.x());
+  const double span = std::max(1e-9, frame.span_mm());
+  for (const FoldLine& line : cosines.lines) {
+    if (line.points_mm.size() < 2) {
+      continue;
+    }
+    const Eigen::Vector3d& first = line.points_mm.front();
+    const Eigen::Vector3d& last = line.points_mm.back();
+    const double chord_slope =
+        last.x() > first.x() ? (last.y() - first.y()) / (last.x() - first.x()) : 0.0;
+    std::vector<Vector2d>& points = out.emplace_back();
+    for (const Eigen::Vector3d& p : line.points_mm) {
+      const double depth = p.y() - (first.y() + chord_slope * (p.x() - first.x()));
+      const double along = (p.x() + 0.5 * span) / span;
+      const double line_y = frame.left_mm.y() + along * (frame.right_mm.y() - frame.left_mm.y());
+      points.emplace_back(mid + p.x(), line_y + depth);
+    }
+  }
+  return out;
+}
+
 double draw_field(ImDrawList& draw, ImVec2 origin, ImVec2 size, const field::SolvedField& field,
                   const FoldLines* cosines, const FieldDrawing& style) {
   const field::Solution& s = field.report.solution;
@@ -330,19 +362,12 @@ double draw_field(ImDrawList& draw, ImVec2 origin, ImVec2 size, const field::Sol
     }
   }
   if (cosines_drawn) {
-    // The closed form's frame: x from the middle between the outermost supports, y down from
-    // the line through them.
-    const field::SupportFrame frame = field::support_frame(targets);
-    const double mid = 0.5 * (frame.left_mm.x() + frame.right_mm.x());
-    const double span = std::max(1e-9, frame.span_mm());
     const ImU32 dash = faded(kCosineInk, style.stale);
     std::vector<ImVec2> points;
-    for (const FoldLine& line : cosines->lines) {
+    for (const std::vector<Vector2d>& line : cosines_on_field(*cosines, targets)) {
       points.clear();
-      for (const Eigen::Vector3d& p : line.points_mm) {
-        const double along = (p.x() + 0.5 * span) / span;
-        const double line_y = frame.left_mm.y() + along * (frame.right_mm.y() - frame.left_mm.y());
-        points.push_back(to(Vector2d(mid + p.x(), line_y + p.y())));
+      for (const Vector2d& p : line) {
+        points.push_back(to(p));
       }
       draw.AddPolyline(points.data(), static_cast<int>(points.size()), dash, 0, style.line_px);
     }

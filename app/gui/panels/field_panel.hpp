@@ -42,6 +42,12 @@ struct FieldDrawing {
   double most_px_per_mm = std::numeric_limits<double>::infinity();
 };
 
+// The closed form's fold lines `cosines` (x from the middle between the outermost supports, y down
+// from the line through them, as the scene lays them) where they hang on the field's cut from its
+// pinned supports `targets`, mm: each line from support to support.
+std::vector<std::vector<Eigen::Vector2d>> cosines_on_field(
+    const FoldLines& cosines, const std::vector<Eigen::Vector2d>& targets);
+
 // Draws `field` into `draw` within [origin, origin + size], millimetres alike across and down, y
 // down; `cosines` are the closed form's fold lines (x from the middle between the supports, y down
 // from their line), drawn over it when asked. Returns the scale drawn at, pixels per millimetre.
