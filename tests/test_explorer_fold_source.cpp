@@ -4,6 +4,8 @@
 // folds come from the core calls `foldlab
 // field --json` makes (mesh, cold solve, field_folds), never from the panels.
 #include "explorer_fixture.hpp"
+
+#include <regex>
 #include "outline_area.hpp"
 
 #include "app/gui/panels/field_panel.hpp"
@@ -288,6 +290,34 @@ TEST(FieldOverlay, TheClosedFormsLinesHangFromTheFieldsSupports) {
       EXPECT_GT(middle.y(), 0.5 * (targets[0].y() + targets[1].y()));
     }
   }
+}
+
+// A cut that folds onto itself (the wedge with its supports moved far in) is seen: the legend
+// gives the share turned over, as the solve finds it; and a force that statics makes zero (the
+// middle support of a strip across) is written 0, not as round-off.
+TEST_F(FoldSourceTest, TheFieldViewShowsACutTurnedOverAndZeroForcesAsZero) {
+  ASSERT_EQ(explorer_->set_view("field_cut", "wedge"), std::nullopt);
+  ASSERT_EQ(explorer_->set_input("d", 453.0), std::nullopt);
+  panel<FieldPanel>().open();
+  settle();
+  std::string refusal;
+  const std::optional<field::SolvedField> solved = field::solve_field(
+      field_inputs(shown(), FieldPanel::kDefaultCells, FieldCut::wedge), refusal);
+  ASSERT_TRUE(solved.has_value()) << refusal;
+  const double share = solved->report.solution.folded_share;
+  ASSERT_GT(share, 0.0);
+  EXPECT_NE(frame().find(detail::printf_string("turned over %.1f %%", 100.0 * share)),
+            std::string::npos)
+      << last_text_;
+
+  ASSERT_EQ(explorer_->set_view("field_cut", "shape"), std::nullopt);
+  ASSERT_EQ(explorer_->set_input("d", 100.0), std::nullopt);
+  ASSERT_EQ(explorer_->document().apply(Edit::choose("shape", "strip")), std::nullopt);
+  settle();
+  const std::string text = frame();
+  EXPECT_EQ(text.find("turned over"), std::string::npos);
+  EXPECT_NE(text.find("N up, 0.00 N across"), std::string::npos) << text;
+  EXPECT_FALSE(std::regex_search(text, std::regex("[0-9.]+e[-+][0-9]+ N (up|across)"))) << text;
 }
 
 // The colour bar beside the 3D view and a picture's caption give the folds drawn: the field's n

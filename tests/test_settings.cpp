@@ -729,7 +729,7 @@ TEST(SettingsValidate, RefusalsUseTheSlidersLabelAndUnit) {
   ASSERT_EQ(issues.size(), 1u);
   EXPECT_EQ(issues[0].message,
             "support displacement d = 800 mm must be below L/2 = 700 mm, where the supports "
-            "would meet if each moved d");
+            "would meet under the span rule L-2d (kept under L-d too)");
   // The incline's interval is open at both ends.
   const foldlab::InputSpec& incline = *foldlab::find_input("incline_deg");
   EXPECT_TRUE(

@@ -95,7 +95,7 @@ void MenuBar::cramped_notice(PanelContext& context) {
   }
   if (opened) {
     for (const std::unique_ptr<Panel>& panel : context.panels) {
-      if (Layout::tiled(*panel) && ImGui::MenuItem(panel->name())) {
+      if (Layout::presentable(*panel) && ImGui::MenuItem(panel->name())) {
         layout_.request_present(panel.get());
       }
     }

@@ -188,7 +188,8 @@ std::vector<InputSpec> build_table() {
        .preset = "/hanging/support_displacement_mm",
        .help = "support displacement: the span is l = L - d (span_rule L-2d: each support moves d)",
        .valid = closed(0.0, 5e4),
-       .why = "below half of L, where the supports would meet if each moved d",
+       .why = "below half of L, where the supports would meet under the span rule L-2d (kept under "
+              "L-d too)",
        .upper_bound = [](const Parameters& p) -> std::optional<double> {
          const double L = p.hanging.length_mm;
          // Found once: validate() asks on every edit and every point of a sweep.
@@ -196,7 +197,8 @@ std::vector<InputSpec> build_table() {
          return L_valid.contains(L) ? std::optional(0.5 * L) : std::nullopt;
        },
        .upper_bound_name = "L/2",
-       .upper_bound_why = "where the supports would meet if each moved d",
+       .upper_bound_why =
+           "where the supports would meet under the span rule L-2d (kept under L-d too)",
        .typical_lo = 0.0,
        .typical_hi = 2500.0,
        .format = "%.0f",

@@ -264,7 +264,10 @@ void ExportPanel::draw_picture_dialog(UiStatus& status, FileDialog& files) {
   const bool save = ImGui::Button("Save as...");
   ImGui::EndDisabled();
   ImGui::SameLine();
-  if (ImGui::Button("Cancel")) {
+  // Escape cancels, as it does every other dialog (unless a size being typed takes it back).
+  if (ImGui::Button("Cancel") ||
+      (!ImGui::IsAnyItemActive() &&
+       ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape), false))) {
     ImGui::CloseCurrentPopup();
   }
   if (save) {

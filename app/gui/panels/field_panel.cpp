@@ -49,6 +49,8 @@ constexpr ImU32 kSlack = IM_COL32(150, 150, 150, 255);
 // Dark over every fill, whatever the background.
 constexpr ImU32 kRayInk = IM_COL32(20, 20, 20, 230);
 constexpr ImU32 kCosineInk = IM_COL32(200, 30, 120, 255);
+// Okabe and Ito's reddish purple, the drawing's (field_svg) outline of a triangle turned over.
+constexpr ImU32 kTurnedOver = IM_COL32(204, 121, 167, 255);
 
 ImU32 state_colour(field::State state) {
   switch (state) {
@@ -155,7 +157,7 @@ void arrow(ImDrawList& draw, ImVec2 from, ImVec2 to, ImU32 colour, float line_px
 
 // The legend in one row across the top (wrapping when the width runs out); its height.
 float legend(ImDrawList& draw, ImVec2 origin, float width, const FieldDrawing& style,
-             double top_N_per_mm, bool cosines_drawn, ImU32 ink) {
+             double top_N_per_mm, bool cosines_drawn, double turned_over_share, ImU32 ink) {
   ImFont* font = ImGui::GetFont();
   const float text = style.text_px;
   const float box = std::round(0.8f * text);
@@ -193,8 +195,14 @@ float legend(ImDrawList& draw, ImVec2 origin, float width, const FieldDrawing& s
     }
   } else {
     const float bar = 6.0f * text;
-    const std::string top = printf_text("%#.3g N/mm or more: tension along the rays", top_N_per_mm);
+    std::string top = printf_text("%#.3g N/mm or more: tension along the rays", top_N_per_mm);
     const float zero_width = text_width("0") + 0.3f * text;
+    // On a narrow canvas the words go to a row of their own rather than past its edge.
+    const char* words = nullptr;
+    if (zero_width + bar + 0.3f * text + text_width(top.c_str()) > width) {
+      top = printf_text("%#.3g N/mm or more", top_N_per_mm);
+      words = "(tension along the rays)";
+    }
     const ImVec2 at = place(zero_width + bar + 0.3f * text + text_width(top.c_str()));
     draw.AddText(font, text, at, ink, "0");
     const float x0 = at.x + zero_width;
@@ -206,6 +214,9 @@ float legend(ImDrawList& draw, ImVec2 origin, float width, const FieldDrawing& s
     }
     draw.AddRect(ImVec2(x0, top_y), ImVec2(x0 + bar, top_y + box), ink);
     draw.AddText(font, text, ImVec2(x0 + bar + 0.3f * text, at.y), ink, top.c_str());
+    if (words != nullptr) {
+      draw.AddText(font, text, place(text_width(words)), ink, words);
+    }
   }
   // The lines as they are drawn over the cloth: on a patch of it, so that the rays' dark ink
   // shows on a dark background too.
@@ -222,6 +233,14 @@ float legend(ImDrawList& draw, ImVec2 origin, float width, const FieldDrawing& s
   }
   if (cosines_drawn) {
     item("closed form's fold lines", line_over_cloth(kCosineInk, style.line_px));
+  }
+  if (turned_over_share > 0.0) {
+    const std::string words =
+        printf_text("turned over %.1f %%: the cut folded onto itself", 100.0 * turned_over_share);
+    item(words.c_str(), [&](ImVec2 corner) {
+      draw.AddRect(corner, ImVec2(corner.x + box, corner.y + box), kTurnedOver, 0.0f, 0,
+                   2.0f * style.line_px);
+    });
   }
   return y + 1.4f * text - origin.y;
 }
@@ -317,8 +336,9 @@ double draw_field(ImDrawList& draw, ImVec2 origin, ImVec2 size, const field::Sol
   const double top_N_per_mm = tension_scale_top(tensions);
   const std::vector<Vector2d> targets = field::support_targets(field.inputs.outline);
   const bool cosines_drawn = style.cosines && cosines != nullptr && targets.size() >= 2;
-  const float legend_px =
-      style.legend ? legend(draw, origin, size.x, style, top_N_per_mm, cosines_drawn, ink) : 0.0f;
+  const float legend_px = style.legend ? legend(draw, origin, size.x, style, top_N_per_mm,
+                                                cosines_drawn, s.folded_share, ink)
+                                       : 0.0f;
   // Room above the cloth for the supports' arrows and values, and beside it for a value that
   // reaches past the cloth's side: never more than a share of the canvas, so that a small
   // canvas still shows the cloth.
@@ -349,6 +369,17 @@ double draw_field(ImDrawList& draw, ImVec2 origin, ImVec2 size, const field::Sol
     }
   }
   draw.Flags = flags;
+  // A triangle turned over costs no energy and is drawn with the rest; outlined, so that a cut
+  // folded onto itself is seen, as the legend says.
+  for (std::size_t t = 0; t < field.mesh.triangles.size(); ++t) {
+    if (s.triangles[t].folded_over) {
+      const auto& tri = field.mesh.triangles[t];
+      draw.AddTriangle(to(s.positions_mm[static_cast<std::size_t>(tri[0])]),
+                       to(s.positions_mm[static_cast<std::size_t>(tri[1])]),
+                       to(s.positions_mm[static_cast<std::size_t>(tri[2])]),
+                       faded(kTurnedOver, style.stale), 1.5f * style.line_px);
+    }
+  }
   if (style.rays) {
     const ImU32 ray_colour = faded(kRayInk, style.stale);
     std::vector<ImVec2> points;
@@ -390,7 +421,10 @@ double draw_field(ImDrawList& draw, ImVec2 origin, ImVec2 size, const field::Sol
       const Vector2d d = r.normalized() * (arrow_px * r.norm() / largest_N);
       const ImVec2 tip(at.x + static_cast<float>(d.x()), at.y + static_cast<float>(d.y()));
       arrow(draw, at, tip, ink, style.line_px);
-      const std::string words = printf_text("%#.3g N up, %#.3g N across", -r.y(), std::abs(r.x()));
+      // A force that statics makes zero is written 0, not as the solve's round-off.
+      const auto shown_N = [&](double f) { return std::abs(f) < 1e-6 * largest_N ? 0.0 : f; };
+      const std::string words =
+          printf_text("%#.3g N up, %#.3g N across", shown_N(-r.y()), std::abs(shown_N(r.x())));
       const float width = font->CalcTextSizeA(text, 1e9f, 0.0f, words.c_str()).x;
       const bool left = targets[i].x() < middle_mm;
       float x = left ? tip.x - width : tip.x;
@@ -399,6 +433,15 @@ double draw_field(ImDrawList& draw, ImVec2 origin, ImVec2 size, const field::Sol
       for (const ImVec4& other : labels) {
         if (x < other.z && other.x < x + width && y < other.w && other.y < y + text) {
           y = other.y - 1.1f * text;
+        }
+      }
+      // Never up into the legend: below the one it would meet instead.
+      if (y < body_origin.y) {
+        y = body_origin.y;
+        for (const ImVec4& other : labels) {
+          if (x < other.z && other.x < x + width && y < other.w && other.y < y + text) {
+            y = other.w + 0.1f * text;
+          }
         }
       }
       labels.emplace_back(x, y, x + width, y + text);
