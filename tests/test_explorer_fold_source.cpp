@@ -320,6 +320,19 @@ TEST_F(FoldSourceTest, TheFieldViewShowsACutTurnedOverAndZeroForcesAsZero) {
   EXPECT_FALSE(std::regex_search(text, std::regex("[0-9.]+e[-+][0-9]+ N (up|across)"))) << text;
 }
 
+// A cloth too thick to fold at the rays' tension (t = 3 mm): the field counts no fold, as the
+// command finds it, and the view says why rather than "n = 0" under a wrinkled cloth.
+TEST_F(FoldSourceTest, TheFieldViewSaysWhyItCountsNoFold) {
+  ASSERT_EQ(explorer_->set_input("t", 3.0), std::nullopt);
+  ASSERT_EQ(folds_as_the_command_finds_them(shown()).n, 0);
+  panel<FieldPanel>().open();
+  settle();
+  const std::string text = frame();
+  EXPECT_NE(text.find("folds from the field: none: under the wrinkle law"), std::string::npos)
+      << text;
+  EXPECT_EQ(text.find("folds from the field: n = 0"), std::string::npos);
+}
+
 // The colour bar beside the 3D view and a picture's caption give the folds drawn: the field's n
 // and z_max, said to be the tension field's, and the closed form's when they are drawn.
 TEST_F(FoldSourceTest, TheColourBarAndCaptionGiveTheFoldsDrawn) {

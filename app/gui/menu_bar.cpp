@@ -219,10 +219,13 @@ void MenuBar::view_menu(PanelContext& context) {
   ImGui::Separator();
   ImGui::MenuItem("Pipeline stats", nullptr, &show_stats_);
   // The windows that open and close (the tension field), each ticked while it is open. One
-  // opened while a view is presented is presented in its place: behind it, it would not be seen.
+  // opened while a view is presented is presented in its place: behind it, it would not be seen;
+  // one opened while the tiles are too small for the text is presented too: as a window it would
+  // be mostly its legend.
   for (const std::unique_ptr<Panel>& panel : context.panels) {
     if (bool* open = panel->open_flag()) {
-      if (ImGui::MenuItem(panel->name(), nullptr, open) && *open && layout_.presented() &&
+      if (ImGui::MenuItem(panel->name(), nullptr, open) && *open &&
+          (layout_.presented() || (layout_.cramped() && !shows_one_view())) &&
           Layout::presentable(*panel)) {
         layout_.request_present(panel.get());
       }

@@ -532,10 +532,18 @@ void FieldPanel::status_line(Document& document, bool side_by_side) {
     return;
   }
   const Solution& closed = document.scene().solution();
+  // No fold says why, or a wrinkled cloth with n = 0 reads as a contradiction.
+  const std::string field_folds =
+      folds_->n > 0 ? detail::printf_string("n = %d, Q = %.3f, z_max = %.0f mm", folds_->n,
+                                            folds_->Q, folds_->z_max_mm)
+      : folds_->slack_width_mm > 0.0
+          ? std::string(
+                "none: under the wrinkle law in force the cloth is too thick or stiff to fold at "
+                "the rays' tension")
+          : std::string("none: no width across the rays to take up");
   const std::string folds = detail::printf_string(
-      "folds from the field: n = %d, Q = %.3f, z_max = %.0f mm (the closed form's: n = %d, "
-      "Q = %.3f, z_max = %.0f mm)",
-      folds_->n, folds_->Q, folds_->z_max_mm, closed.n, closed.Q, closed.z_max_mm);
+      "folds from the field: %s (the closed form's: n = %d, Q = %.3f, z_max = %.0f mm)",
+      field_folds.c_str(), closed.n, closed.Q, closed.z_max_mm);
   if (!side_by_side) {
     wrapped_text("%s", regions.c_str());
     wrapped_text("%s", folds.c_str());
