@@ -252,14 +252,20 @@ TEST_F(FoldSourceTest, TheFieldViewKeepsItsScaleWhileAnInputMoves) {
   settle();
   const double at_rest = report().at("field").at("canvas_px_per_mm").get<double>();
   ASSERT_GT(at_rest, 0.0);
+  EXPECT_EQ(report().at("field").at("mesh").at("cells_x"), FieldPanel::kDefaultCells);
   const double h_mm = shown().hanging.height_mm;
+  int coarse_frames = 0;
   for (int i = 1; i <= 10; ++i) {
     ASSERT_EQ(explorer_->set_input("h", h_mm * (1.0 - 0.04 * i)), std::nullopt);
     frame();
     EXPECT_LE(report().at("field").at("canvas_px_per_mm").get<double>(), at_rest * (1.0 + 1e-9))
         << "frame " << i;
+    coarse_frames += report().at("field").at("mesh").at("cells_x") == FieldPanel::kDefaultCells / 2;
   }
+  // While the hand moves the field is solved on half the cells; at rest on all of them.
+  EXPECT_GE(coarse_frames, 1);
   settle();
+  EXPECT_EQ(report().at("field").at("mesh").at("cells_x"), FieldPanel::kDefaultCells);
   // The cloth 40 % shorter: fitted by its height, a scale larger by up to 1 / 0.6.
   EXPECT_GT(report().at("field").at("canvas_px_per_mm").get<double>(), 1.1 * at_rest);
 }
@@ -447,6 +453,9 @@ TEST_F(FoldSourceTest, APresetWithABadCutIsRefusedAndTheStateKept) {
   EXPECT_NE(status().message().find("/outline: support 2 at (600, 700) mm is off the outline"),
             std::string::npos)
       << status().message();
+  // Said where it is seen too: the status line is at the foot of the Presets panel's list.
+  EXPECT_NE(status().toast().find("Not loaded"), std::string::npos) << status().toast();
+  EXPECT_NE(status().toast().find("off the outline"), std::string::npos) << status().toast();
 }
 
 }  // namespace

@@ -129,6 +129,9 @@ void Document::load_preset_file(const std::filesystem::path& path) {
   } catch (const PresetError& e) {
     status_.notify(std::string("Not loaded; the current state is kept.\n") + e.what(),
                    MessageKind::error);
+    // The status line sits at the Presets panel's foot, below its list: a load that does nothing
+    // visible says why where it is seen.
+    status_.toast(std::string("Not loaded: ") + e.what());
   }
 }
 
