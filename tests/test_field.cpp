@@ -7,10 +7,12 @@
 #include <cmath>
 #include <cstdio>
 #include <iostream>
+#include <limits>
 #include <numbers>
 #include <vector>
 
 #include <gtest/gtest.h>
+#include <Eigen/LU>
 
 #include "core/field/field_case.hpp"
 #include "core/field/field_folds.hpp"
@@ -802,6 +804,79 @@ TEST(FieldSpans, AStripOnThreeSupportsHasRaysAndAThrustInEachSpan) {
   EXPECT_EQ(r.thrust_N, r.spans[0].thrust_N);
   EXPECT_EQ(r.pencil_thrust_N, r.spans[0].pencil_thrust_N);
   EXPECT_EQ(r.span_mm, 1300.0);
+}
+
+// The horizontal force across the flat column X = x_mm summed from the triangles' stresses: a
+// triangle the column crosses over a flat length ds carries across it t (m . N) d ds per
+// principal tension t (per flat width across it), m its flat direction, d its hung one, N the
+// column's normal (1, 0); the smaller one's too where taut, at right angles on the flat cut.
+double force_across_column_N(const Mesh& mesh, const Solution& solution, double x_mm) {
+  double sum_N = 0.0;
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+    const auto& tri = mesh.triangles[t];
+    // The column's length inside the triangle: between the crossings of its edges.
+    double lo = std::numeric_limits<double>::infinity();
+    double hi = -lo;
+    for (int e = 0; e < 3; ++e) {
+      const Vector2d a = mesh.nodes_mm[tri[e]];
+      const Vector2d b = mesh.nodes_mm[tri[(e + 1) % 3]];
+      if ((a.x() - x_mm) * (b.x() - x_mm) < 0.0) {
+        const double y = a.y() + (x_mm - a.x()) / (b.x() - a.x()) * (b.y() - a.y());
+        lo = std::min(lo, y);
+        hi = std::max(hi, y);
+      }
+    }
+    if (!(hi > lo)) {
+      continue;
+    }
+    const TriangleResult& r = solution.triangles[t];
+    const Vector2d m = r.flat_direction.normalized();
+    sum_N += r.tension_N_per_mm * m.x() * r.direction.normalized().x() * (hi - lo);
+    if (r.minor_tension_N_per_mm != 0.0) {
+      // F from the flat edges to the hung ones.
+      Eigen::Matrix2d flat;
+      Eigen::Matrix2d hung;
+      flat << mesh.nodes_mm[tri[1]] - mesh.nodes_mm[tri[0]],
+          mesh.nodes_mm[tri[2]] - mesh.nodes_mm[tri[0]];
+      hung << solution.positions_mm[tri[1]] - solution.positions_mm[tri[0]],
+          solution.positions_mm[tri[2]] - solution.positions_mm[tri[0]];
+      const Eigen::Matrix2d F = hung * flat.inverse();
+      const Vector2d m2(-m.y(), m.x());
+      sum_N += r.minor_tension_N_per_mm * m2.x() * (F * m2).normalized().x() * (hi - lo);
+    }
+  }
+  return sum_N;
+}
+
+// Each span's thrust, from the supports' reactions, is the force the cloth carries across the
+// span's centre line: summed from the stresses of the triangles the column crosses it agrees
+// within the mesh's error, for two supports and for each span of three. Measured: 1.0 % apart
+// on the cosine cut and 3.4 % on the strip at 40 x 28 cells, 0.1 % and 1.8 % at 80 x 56 (the
+// constant stress of a linear triangle summed along a line, against the nodal balance).
+TEST(FieldSpans, TheSpanThrustIsTheForceAcrossItsCentreLine) {
+  const Parameters p = default_parameters();
+  const Material material = material_of(p.fabric);
+  for (OutlineKind kind : {OutlineKind::cosine, OutlineKind::strip}) {
+    SCOPED_TRACE(std::string(to_string(kind)));
+    const Outline outline = make_outline(p, kind);
+    const MeshResolution resolution{40, 28, MeshSplit::union_jack};
+    Solver solver(make_mesh(outline, resolution));
+    const Solution solution = solve_cold(solver, outline, material, resolution);
+    ASSERT_TRUE(solution.converged);
+    const FieldReport r = report_field(solver, solution, outline, material, 0);
+    const std::vector<SupportSpan> spans = top_spans(solver.mesh(), outline);
+    ASSERT_EQ(spans.size(), r.spans.size());
+    for (std::size_t k = 0; k < spans.size(); ++k) {
+      // The centre line is a column of the mesh here: just left and just right of it.
+      const double x = spans[k].flat_x_mm;
+      const double across_N =
+          0.5 * (std::abs(force_across_column_N(solver.mesh(), solution, x - 1e-3)) +
+                 std::abs(force_across_column_N(solver.mesh(), solution, x + 1e-3)));
+      std::cout << to_string(kind) << " span " << k + 1 << ": thrust " << r.spans[k].thrust_N
+                << " N, summed across its centre line " << across_N << " N\n";
+      EXPECT_NEAR(across_N, r.spans[k].thrust_N, 0.05 * r.spans[k].thrust_N);
+    }
+  }
 }
 
 // Four supports: three spans, each with its own rays (8 shared 3, 3, 2 or so, at least 2 each).
