@@ -2186,6 +2186,56 @@ TEST_F(CliTest, FieldSvgDrawsEveryTriangleRayAndSupport) {
   EXPECT_FALSE(fs::exists(dir_ / "field.png"));
 }
 
+// The curtain preset hangs from three hooks on its top edge, 500 mm apart once its corners are
+// moved in by 100 mm: two spans, each with its rays, its thrust and its own pencil; the report's
+// figures are the widest (the first of the equal two), and the text gives a line per span.
+TEST_F(CliTest, FieldOnThreeHooksReportsEachSpan) {
+  const fs::path svg_path = dir_ / "curtain.svg";
+  const RunResult r =
+      run({"field", "--preset", "shaped-curtain-curved-hem", "--json", "--svg", svg_path.string()});
+  ASSERT_EQ(r.exit_status, 0) << r.err;
+  const json j = json::parse(r.out);
+  const json& spans = j.at("spans");
+  ASSERT_EQ(spans.size(), 2u);
+  for (std::size_t k = 0; k < 2; ++k) {
+    SCOPED_TRACE(k);
+    EXPECT_EQ(spans[k].at("left_support").get<int>(), static_cast<int>(k));
+    EXPECT_EQ(spans[k].at("right_support").get<int>(), static_cast<int>(k) + 1);
+    EXPECT_DOUBLE_EQ(spans[k].at("l_mm").get<double>(), 500.0);
+    const double thrust = spans[k].at("thrust_N").get<double>();
+    const double pencil = spans[k].at("pencil_thrust_N").get<double>();
+    EXPECT_GT(thrust, 0.0);
+    EXPECT_GT(thrust, 0.5 * pencil);
+    EXPECT_LT(thrust, 2.0 * pencil);
+    int rays = 0;
+    for (const json& ray : j.at("rays")) {
+      for (const char* key : {"a_mm", "fitted_a_mm", "fit_rms_mm"}) {
+        EXPECT_TRUE(ray.contains(key)) << key;
+      }
+      rays += ray.at("span").get<std::size_t>() == k ? 1 : 0;
+    }
+    EXPECT_GE(rays, 2);
+  }
+  // The outer hooks alone pull across either span's middle.
+  const double outer = -j.at("supports")[0].at("reaction_N")[0].get<double>();
+  EXPECT_NEAR(spans[0].at("thrust_N").get<double>(), outer, 1e-6 * outer);
+  EXPECT_EQ(j.at("thrust_N"), spans[0].at("thrust_N"));
+  EXPECT_EQ(j.at("pencil_thrust_N"), spans[0].at("pencil_thrust_N"));
+  EXPECT_DOUBLE_EQ(j.at("span_mm").get<double>(), 500.0);
+  const std::string svg = read_file(svg_path);
+  EXPECT_TRUE(contains(svg, "widest of 2 spans: H")) << svg.substr(0, 600);
+  EXPECT_EQ(count_of(svg, "<title>span 1: ray"), 4u);
+  EXPECT_EQ(count_of(svg, "<title>span 2: ray"), 4u);
+
+  const RunResult text = run({"field", "--preset", "shaped-curtain-curved-hem"});
+  ASSERT_EQ(text.exit_status, 0) << text.err;
+  EXPECT_TRUE(contains(text.out, "  span 1, supports 1-2 (the widest): thrust ")) << text.out;
+  EXPECT_TRUE(contains(text.out, "  span 2, supports 2-3: thrust ")) << text.out;
+  EXPECT_TRUE(contains(text.out, "  span 2, at depth ")) << text.out;
+  EXPECT_FALSE(contains(text.out, "(centre line)")) << text.out;
+  EXPECT_FALSE(contains(text.out, "0 N (l = 1000.0 mm")) << text.out;
+}
+
 // A preset given by name is the file it resolves to: no output may be written over it, whether
 // named by its path or through a symbolic link, and the refusal names both options.
 TEST_F(CliTest, NoOutputOverwritesAPresetGivenByItsName) {

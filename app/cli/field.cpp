@@ -75,7 +75,10 @@ void declare(CLI::App& app, Options& options) {
       ->add_option("--split", options.split,
                    "how a cell is cut into triangles: uniform, union-jack, crossed")
       ->check(app::one_of("split", {"uniform", "union-jack", "crossed"}));
-  command->add_option("--rays", options.rays, "rays traced from the centre line (default 8)")
+  command
+      ->add_option("--rays", options.rays,
+                   "rays traced (default 8): from the centre line, or shared among the spans "
+                   "between neighbouring top supports, at least 2 a span")
       ->transform(app::whole_number_in(0, 100));
   command
       ->add_option("--svg", options.svg_path,
@@ -155,7 +158,21 @@ void print_text(const Result& r, std::ostream& out) {
         i + 1, sup.at_mm.x(), sup.at_mm.y(), sup.to_mm.x(), sup.to_mm.y(), s.reactions_N[i].x(),
         s.reactions_N[i].y());
   }
-  if (r.report.span_mm > 0.0) {
+  const std::vector<field::SpanReport>& spans = r.report.spans;
+  if (spans.size() > 1) {
+    out << "spans between neighbouring supports on the top edge: the horizontal force carried "
+           "across each one's centre line beside its own cosine pencil's, w l² / pi² ln(a_0 / "
+           "a_n):\n";
+    for (std::size_t k = 0; k < spans.size(); ++k) {
+      const field::SpanReport& sp = spans[k];
+      out << printf_string(
+          "  span %zu, supports %d-%d%s: thrust %.6g N, the cosine pencil %.6g N (l = %.1f mm, "
+          "a_n = %.1f mm, a_0 = %.1f mm at its centre)\n",
+          k + 1, sp.left_support + 1, sp.right_support + 1,
+          static_cast<int>(k) == r.report.widest_span ? " (the widest)" : "", sp.thrust_N,
+          sp.pencil_thrust_N, sp.span_mm, sp.centre_top_depth_mm, sp.centre_bottom_depth_mm);
+    }
+  } else if (r.report.span_mm > 0.0) {
     out << printf_string("thrust H: %.6g N; the cosine pencil through the supports: %.6g N",
                          r.report.thrust_N, r.report.pencil_thrust_N);
     out << printf_string(" (l = %.1f mm, a_n = %.1f mm, a_0 = %.1f mm at the centre)\n",
@@ -163,16 +180,25 @@ void print_text(const Result& r, std::ostream& out) {
                          r.report.centre_bottom_depth_mm);
   }
   if (!r.report.rays.empty()) {
-    out << "rays from the centre line, each beside the cosine a cos(pi x / l) fitted to it:\n";
+    if (spans.size() > 1) {
+      out << "rays from each span's centre line, each beside the cosine a cos(pi x / l) of its "
+             "span fitted to it:\n";
+    } else {
+      out << "rays from the centre line, each beside the cosine a cos(pi x / l) fitted to it:\n";
+    }
     for (const field::Ray& ray : r.report.rays) {
-      out << printf_string("  at depth %.1f mm: fitted a = %.1f mm, rms distance %.1f mm\n",
+      out << printf_string("  %sat depth %.1f mm: fitted a = %.1f mm, rms distance %.1f mm\n",
+                           spans.size() > 1 ? printf_string("span %d, ", ray.span + 1).c_str() : "",
                            ray.depth_mm, ray.fitted_amplitude_mm, ray.fit_rms_mm);
     }
   }
   const field::FieldFolds& f = r.folds;
   out << printf_string(
-      "folds from the field (centre line): n = %d, Q = %.4g, z_max = %.1f mm; the folds take up "
+      "folds from the field (%s): n = %d, Q = %.4g, z_max = %.1f mm; the folds take up "
       "%.1f mm of the centre fibre's %.1f mm (mean ray tension %.3g N/mm)\n",
+      r.outline.supports.size() > 2
+          ? "along the centre line of the widest span between neighbouring supports"
+          : "along the centre line",
       f.n, f.Q, f.z_max_mm, f.slack_width_mm, f.kept_length_mm, f.mean_ray_tension_N_per_mm);
   if (!f.a_mm.empty()) {
     out << "  a_i from the bottom up (mm):";
@@ -229,7 +255,16 @@ nlohmann::json print_json(const Result& r) {
   for (const field::Ray& ray : r.report.rays) {
     out["rays"].push_back({{"a_mm", ray.depth_mm},
                            {"fitted_a_mm", ray.fitted_amplitude_mm},
-                           {"fit_rms_mm", ray.fit_rms_mm}});
+                           {"fit_rms_mm", ray.fit_rms_mm},
+                           {"span", ray.span}});
+  }
+  out["spans"] = nlohmann::json::array();
+  for (const field::SpanReport& sp : r.report.spans) {
+    out["spans"].push_back({{"l_mm", sp.span_mm},
+                            {"thrust_N", sp.thrust_N},
+                            {"pencil_thrust_N", sp.pencil_thrust_N},
+                            {"left_support", sp.left_support},
+                            {"right_support", sp.right_support}});
   }
   out["field_folds"] = {{"n", r.folds.n},
                         {"Q", r.folds.Q},

@@ -138,12 +138,70 @@ Solution resume_cold(Solver& solver, const Outline& outline, const Material& mat
                  solver.solve(soft, support_targets(outline), options, &from), options);
 }
 
+namespace {
+
+double pencil_N(const Material& material, double span_mm, double top_mm, double bottom_mm) {
+  if (top_mm > 0.0 && bottom_mm > top_mm) {
+    return material.weight_N_per_mm2 * span_mm * span_mm / (std::numbers::pi * std::numbers::pi) *
+           std::log(bottom_mm / top_mm);
+  }
+  return 0.0;
+}
+
+SpanReport report_span(const Mesh& mesh, const Solution& solution, const SupportSpan& span,
+                       const Material& material) {
+  SpanReport r;
+  r.left_support = span.left_support;
+  r.right_support = span.right_support;
+  r.span_mm = span.frame.span_mm();
+  double left_N = 0.0;
+  double right_N = 0.0;
+  for (std::size_t i = 0; i < mesh.support_nodes.size() && i < solution.reactions_N.size(); ++i) {
+    const double X = mesh.nodes_mm[mesh.support_nodes[i]].x();
+    const double across_N = solution.reactions_N[i].x();
+    if (X < span.flat_x_mm) {
+      left_N += across_N;
+    } else if (X > span.flat_x_mm) {
+      right_N += across_N;
+    } else {
+      left_N += 0.5 * across_N;
+      right_N += 0.5 * across_N;
+    }
+  }
+  r.thrust_N = 0.5 * (std::abs(left_N) + std::abs(right_N));
+  const CentreLine centre = column_line(mesh, solution, span.flat_x_mm, span.frame);
+  if (!centre.depth_mm.empty()) {
+    r.centre_top_depth_mm = centre.depth_mm.front();
+    r.centre_bottom_depth_mm = centre.depth_mm.back();
+    r.pencil_thrust_N =
+        pencil_N(material, r.span_mm, r.centre_top_depth_mm, r.centre_bottom_depth_mm);
+  }
+  return r;
+}
+
+}  // namespace
+
 FieldReport report_field(const Solver& solver, Solution solution, const Outline& outline,
                          const Material& material, int ray_count) {
   FieldReport r;
   const std::vector<Eigen::Vector2d> targets = support_targets(outline);
-  r.rays = trace_rays(solver.mesh(), solution, targets, ray_count);
-  if (targets.size() >= 2) {
+  const std::vector<SupportSpan> spans = top_spans(solver.mesh(), outline);
+  r.rays = spans.empty() ? trace_rays(solver.mesh(), solution, targets, ray_count)
+                         : trace_span_rays(solver.mesh(), solution, spans, ray_count);
+  for (const SupportSpan& span : spans) {
+    r.spans.push_back(report_span(solver.mesh(), solution, span, material));
+    if (r.widest_span < 0 || r.spans.back().span_mm > r.spans[r.widest_span].span_mm) {
+      r.widest_span = static_cast<int>(r.spans.size()) - 1;
+    }
+  }
+  if (targets.size() > 2 && r.widest_span >= 0) {
+    const SpanReport& w = r.spans[r.widest_span];
+    r.span_mm = w.span_mm;
+    r.thrust_N = w.thrust_N;
+    r.pencil_thrust_N = w.pencil_thrust_N;
+    r.centre_top_depth_mm = w.centre_top_depth_mm;
+    r.centre_bottom_depth_mm = w.centre_bottom_depth_mm;
+  } else if (targets.size() >= 2) {
     const SupportFrame frame = support_frame(targets);
     r.span_mm = frame.span_mm();
     int left = 0;
@@ -160,11 +218,8 @@ FieldReport report_field(const Solver& solver, Solution solution, const Outline&
     if (!centre.depth_mm.empty()) {
       r.centre_top_depth_mm = centre.depth_mm.front();
       r.centre_bottom_depth_mm = centre.depth_mm.back();
-      if (r.centre_top_depth_mm > 0.0 && r.centre_bottom_depth_mm > r.centre_top_depth_mm) {
-        r.pencil_thrust_N = material.weight_N_per_mm2 * r.span_mm * r.span_mm /
-                            (std::numbers::pi * std::numbers::pi) *
-                            std::log(r.centre_bottom_depth_mm / r.centre_top_depth_mm);
-      }
+      r.pencil_thrust_N =
+          pencil_N(material, r.span_mm, r.centre_top_depth_mm, r.centre_bottom_depth_mm);
     }
   }
   r.solution = std::move(solution);

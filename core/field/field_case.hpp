@@ -10,17 +10,41 @@
 
 namespace foldlab::field {
 
-struct FieldReport {
-  Solution solution;
-  std::vector<Ray> rays;
-  // The thrust H: the mean horizontal reaction of the outermost two supports, N.
+// One span between neighbouring supports on the top edge (SupportSpan), with its thrust beside
+// its own cosine pencil's.
+struct SpanReport {
+  int left_support = 0;  // indices into the outline's supports
+  int right_support = 0;
+  double span_mm = 0.0;  // l, between its two supports, hung
+  // The horizontal force the cloth carries across the span's centre line, N: by the balance of
+  // the cloth on either side of that flat column (the weight is vertical), the sum of the
+  // horizontal reactions of the supports left of it, equally those right of it; the mean of the
+  // two sums' sizes (a support on the column counts half on each side).
   double thrust_N = 0.0;
-  // Mansfield's pencil through the outermost supports with the hung depths at the centre line:
-  // H = w l² / pi² ln(a_0 / a_n) (0 when the top of the centre line is on the supports' line).
+  // Mansfield's pencil across the span: w l² / pi² ln(a_0 / a_n), a_n and a_0 the hung depths
+  // of the top and bottom of its centre line below the line through its supports (0 when the
+  // top is on that line or the bottom no deeper than the top).
   double pencil_thrust_N = 0.0;
-  double span_mm = 0.0;                 // l, between the outermost supports, hung
   double centre_top_depth_mm = 0.0;     // a_n, hung
   double centre_bottom_depth_mm = 0.0;  // a_0, hung
+};
+
+struct FieldReport {
+  Solution solution;
+  // From each span's centre line (a share of the count each), or from the centre line of the
+  // whole cut when fewer than two supports are on the top edge.
+  std::vector<Ray> rays;
+  std::vector<SpanReport> spans;  // left to right; empty with fewer than two top supports
+  // With two supports: the mean horizontal reaction of the two, and the pencil through them with
+  // the hung depths at the centre line between them (the one span's figures when both are on the
+  // top edge). With more: the widest span's figures, or, with fewer than two of them on the top
+  // edge, those of the outermost two supports as for two.
+  double thrust_N = 0.0;
+  double pencil_thrust_N = 0.0;
+  double span_mm = 0.0;                 // l, hung
+  double centre_top_depth_mm = 0.0;     // a_n, hung
+  double centre_bottom_depth_mm = 0.0;  // a_0, hung
+  int widest_span = -1;                 // the index into `spans` the figures above are of, or -1
 };
 
 inline constexpr int kDefaultRayCount = 8;

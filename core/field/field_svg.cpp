@@ -109,7 +109,7 @@ std::string triangles_svg(const Mesh& mesh, const Solution& s, const Page& page)
   return out + "</g>\n";
 }
 
-std::string rays_svg(const std::vector<Ray>& rays, const Page& page) {
+std::string rays_svg(const std::vector<Ray>& rays, bool several_spans, const Page& page) {
   std::string out = printf_string(
       "<g id=\"rays\" fill=\"none\" stroke=\"%s\" stroke-width=\"1.3\">\n", kRayColour);
   for (const Ray& ray : rays) {
@@ -121,9 +121,10 @@ std::string rays_svg(const std::vector<Ray>& rays, const Page& page) {
       out += printf_string("%.2f,%.2f ", p.x(), p.y());
     }
     out += printf_string(
-        "\"><title>ray at depth %.1f mm: nearest cosine a = %.1f mm, %.1f mm rms from it</title>"
+        "\"><title>%sray at depth %.1f mm: nearest cosine a = %.1f mm, %.1f mm rms from it</title>"
         "</polyline>\n",
-        ray.depth_mm, ray.fitted_amplitude_mm, ray.fit_rms_mm);
+        several_spans ? printf_string("span %d: ", ray.span + 1).c_str() : "", ray.depth_mm,
+        ray.fitted_amplitude_mm, ray.fit_rms_mm);
   }
   return out + "</g>\n";
 }
@@ -244,10 +245,25 @@ std::string field_to_svg(const Mesh& mesh, const FieldReport& report, const Outl
   out += printf_string("<text x=\"%.0f\" y=\"26\" font-size=\"%.1f\" font-weight=\"bold\">",
                        Page::left, title_px) +
          xml_escape(detail::escaped(title)) + "</text>\n";
+  // With several spans the figures are the widest span's, and each span's are in a title.
+  const bool several_spans = report.spans.size() > 1;
   out += printf_string(
-      "<text x=\"%.0f\" y=\"48\">weight %.4g N; thrust H %.4g N (cosine pencil %.4g N); "
-      "%zu triangles, hung, to scale</text>\n",
-      Page::left, s.weight_N, report.thrust_N, report.pencil_thrust_N, mesh.triangles.size());
+      "<text x=\"%.0f\" y=\"48\">weight %.4g N; %s %.4g N (cosine pencil %.4g N); "
+      "%zu triangles, hung, to scale",
+      Page::left, s.weight_N,
+      several_spans ? printf_string("widest of %zu spans: H", report.spans.size()).c_str()
+                    : "thrust H",
+      report.thrust_N, report.pencil_thrust_N, mesh.triangles.size());
+  if (several_spans) {
+    out += "<title>";
+    for (std::size_t k = 0; k < report.spans.size(); ++k) {
+      const SpanReport& sp = report.spans[k];
+      out += printf_string("%sspan %zu: l %.1f mm, H %.4g N, cosine pencil %.4g N",
+                           k == 0 ? "" : "; ", k + 1, sp.span_mm, sp.thrust_N, sp.pencil_thrust_N);
+    }
+    out += "</title>";
+  }
+  out += "</text>\n";
   if (!s.converged) {
     out += printf_string(
         "<text x=\"%.0f\" y=\"70\" fill=\"#B00000\" font-weight=\"bold\">NOT converged: the last "
@@ -260,7 +276,7 @@ std::string field_to_svg(const Mesh& mesh, const FieldReport& report, const Outl
         Page::left, s.relative_residual, s.iterations);
   }
   out += triangles_svg(mesh, s, page);
-  out += rays_svg(report.rays, page);
+  out += rays_svg(report.rays, several_spans, page);
   out += supports_svg(s, targets, page);
   out += legend_svg(s, page);
   return out + "</svg>\n";

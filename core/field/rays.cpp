@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <limits>
 #include <numbers>
 
@@ -115,20 +116,16 @@ CentreLine column_line(const Mesh& mesh, const Solution& solution, double flat_x
   return out;
 }
 
-std::vector<Ray> trace_rays(const Mesh& mesh, const Solution& solution,
-                            const std::vector<Vector2d>& targets, int count) {
+namespace {
+
+// `count` rays through the column `centre` (flat points with their depths below `frame`'s
+// supports), each fitted to the cosine of `frame` and marked with `span`.
+std::vector<Ray> rays_through(const Mesh& mesh, const Solution& solution, const CentreLine& centre,
+                              const SupportFrame& frame, int count, int span) {
   std::vector<Ray> rays;
-  if (targets.size() < 2 || count < 1) {
-    return rays;
-  }
-  const SupportFrame frame = support_frame(targets);
-  if (!(frame.span_mm() > 0.0)) {
-    return rays;
-  }
-  const CentreLine centre = centre_line(mesh, solution, targets);
   const std::vector<Vector2d>& flat = centre.flat_mm;
   const std::vector<double>& depth = centre.depth_mm;
-  if (flat.size() < 2) {
+  if (flat.size() < 2 || count < 1 || !(frame.span_mm() > 0.0)) {
     return rays;
   }
   double top = std::numeric_limits<double>::infinity();
@@ -154,8 +151,8 @@ std::vector<Ray> trace_rays(const Mesh& mesh, const Solution& solution,
     while (i + 1 < depth.size() && (depth[i] - a) * (depth[i - 1] - a) > 0.0) {
       ++i;
     }
-    const double span = depth[i] - depth[i - 1];
-    const double s = span != 0.0 ? std::clamp((a - depth[i - 1]) / span, 0.0, 1.0) : 0.0;
+    const double rise = depth[i] - depth[i - 1];
+    const double s = rise != 0.0 ? std::clamp((a - depth[i - 1]) / rise, 0.0, 1.0) : 0.0;
     const Vector2d start = flat[i - 1] + s * (flat[i] - flat[i - 1]);
     std::vector<Vector2d> left =
         trace_one_way(mesh, solution, start, Vector2d(-1.0, 0.0), step_mm, max_steps);
@@ -166,6 +163,7 @@ std::vector<Ray> trace_rays(const Mesh& mesh, const Solution& solution,
     left.insert(left.end(), right.begin(), right.end());
     Ray ray;
     ray.depth_mm = a;
+    ray.span = span;
     double yc = 0.0;
     double cc = 0.0;
     std::vector<std::pair<double, double>> fitted;
@@ -192,6 +190,132 @@ std::vector<Ray> trace_rays(const Mesh& mesh, const Solution& solution,
     ray.fitted_points = static_cast<int>(fitted.size());
     ray.fit_rms_mm = fitted.empty() ? 0.0 : std::sqrt(squares / static_cast<double>(fitted.size()));
     rays.push_back(std::move(ray));
+  }
+  return rays;
+}
+
+}  // namespace
+
+std::vector<Ray> trace_rays(const Mesh& mesh, const Solution& solution,
+                            const std::vector<Vector2d>& targets, int count) {
+  if (targets.size() < 2 || count < 1) {
+    return {};
+  }
+  const SupportFrame frame = support_frame(targets);
+  if (!(frame.span_mm() > 0.0)) {
+    return {};
+  }
+  return rays_through(mesh, solution, centre_line(mesh, solution, targets), frame, count, 0);
+}
+
+bool on_top_edge(const Outline& outline, const Vector2d& at_mm) {
+  const double tolerance = 1e-6 * std::max(outline.right_mm() - outline.left_mm(), 1.0);
+  // Distance to each segment, so that a point on a step of the edge (two vertices at one x)
+  // counts as on it.
+  for (std::size_t i = 1; i < outline.top_mm.size(); ++i) {
+    const Vector2d a = outline.top_mm[i - 1];
+    const Vector2d d = outline.top_mm[i] - a;
+    const double length2 = d.squaredNorm();
+    const double s = length2 > 0.0 ? std::clamp((at_mm - a).dot(d) / length2, 0.0, 1.0) : 0.0;
+    if ((at_mm - (a + s * d)).norm() <= tolerance) {
+      return true;
+    }
+  }
+  return false;
+}
+
+std::vector<SupportSpan> top_spans(const Mesh& mesh, const Outline& outline) {
+  std::vector<int> order;
+  for (std::size_t i = 0; i < outline.supports.size() && i < mesh.support_nodes.size(); ++i) {
+    if (on_top_edge(outline, outline.supports[i].at_mm)) {
+      order.push_back(static_cast<int>(i));
+    }
+  }
+  const auto to = [&](int i) -> const Vector2d& { return outline.supports[i].to_mm; };
+  std::sort(order.begin(), order.end(), [&](int a, int b) {
+    return to(a).x() < to(b).x() || (to(a).x() == to(b).x() && to(a).y() < to(b).y());
+  });
+  std::erase_if(order, [&, previous = -std::numeric_limits<double>::infinity()](int i) mutable {
+    const bool same_x = to(i).x() == previous;
+    previous = to(i).x();
+    return same_x;
+  });
+  std::vector<SupportSpan> spans;
+  for (std::size_t k = 1; k < order.size(); ++k) {
+    SupportSpan span;
+    span.left_support = order[k - 1];
+    span.right_support = order[k];
+    span.frame = SupportFrame{to(span.left_support), to(span.right_support)};
+    const double flat_left = mesh.nodes_mm[mesh.support_nodes[span.left_support]].x();
+    const double flat_right = mesh.nodes_mm[mesh.support_nodes[span.right_support]].x();
+    span.flat_x_mm = 0.5 * (flat_left + flat_right);
+    spans.push_back(span);
+  }
+  return spans;
+}
+
+std::vector<int> rays_per_span(const std::vector<SupportSpan>& spans, int count) {
+  std::vector<int> out(spans.size(), 0);
+  if (count < 1 || spans.empty()) {
+    return out;
+  }
+  if (spans.size() == 1) {
+    out[0] = count;
+    return out;
+  }
+  double total_mm = 0.0;
+  for (const SupportSpan& s : spans) {
+    total_mm += s.frame.span_mm();
+  }
+  std::vector<double> quota(spans.size());
+  int given = 0;
+  for (std::size_t i = 0; i < spans.size(); ++i) {
+    quota[i] = total_mm > 0.0 ? count * spans[i].frame.span_mm() / total_mm
+                              : static_cast<double>(count) / static_cast<double>(spans.size());
+    out[i] = std::max(2, static_cast<int>(std::floor(quota[i])));
+    given += out[i];
+  }
+  // Largest remainders first up to the count; back down from those most above their quota while
+  // the floor of 2 lets them.
+  while (given < count) {
+    std::size_t best = 0;
+    for (std::size_t i = 1; i < spans.size(); ++i) {
+      if (quota[i] - out[i] > quota[best] - out[best]) {
+        best = i;
+      }
+    }
+    ++out[best];
+    ++given;
+  }
+  while (given > count) {
+    std::size_t best = spans.size();
+    for (std::size_t i = 0; i < spans.size(); ++i) {
+      if (out[i] > 2 && (best == spans.size() || out[i] - quota[i] > out[best] - quota[best])) {
+        best = i;
+      }
+    }
+    if (best == spans.size()) {
+      break;
+    }
+    --out[best];
+    --given;
+  }
+  return out;
+}
+
+std::vector<Ray> trace_span_rays(const Mesh& mesh, const Solution& solution,
+                                 const std::vector<SupportSpan>& spans, int count) {
+  std::vector<Ray> rays;
+  const std::vector<int> shares = rays_per_span(spans, count);
+  for (std::size_t i = 0; i < spans.size(); ++i) {
+    const SupportSpan& span = spans[i];
+    if (!(span.frame.span_mm() > 0.0)) {
+      continue;
+    }
+    const CentreLine centre = column_line(mesh, solution, span.flat_x_mm, span.frame);
+    std::vector<Ray> these =
+        rays_through(mesh, solution, centre, span.frame, shares[i], static_cast<int>(i));
+    std::move(these.begin(), these.end(), std::back_inserter(rays));
   }
   return rays;
 }

@@ -272,6 +272,28 @@ std::vector<double> node_tensions(const field::SolvedField& field) {
   return sum;
 }
 
+// H beside the cosine pencil's: each span's when a few hang side by side, else the widest's
+// (the figures of a cut on more spans than fit one line), named as such.
+std::string thrust_text(const field::FieldReport& report) {
+  constexpr std::size_t kSpansListed = 4;
+  const std::size_t spans = report.spans.size();
+  if (spans < 2) {
+    return detail::printf_string("thrust H %#.3g N (the cosine pencil's %#.3g N)", report.thrust_N,
+                                 report.pencil_thrust_N);
+  }
+  if (spans > kSpansListed) {
+    return detail::printf_string(
+        "thrust H across the widest of %zu spans %#.3g N (its cosine pencil's %#.3g N)", spans,
+        report.thrust_N, report.pencil_thrust_N);
+  }
+  std::string out = "thrust H across each span (its cosine pencil's):";
+  for (std::size_t k = 0; k < spans; ++k) {
+    out += detail::printf_string("%s %#.3g N (%#.3g N)", k == 0 ? "" : ",",
+                                 report.spans[k].thrust_N, report.spans[k].pencil_thrust_N);
+  }
+  return out;
+}
+
 }  // namespace
 
 field::FieldInputs field_inputs(const Parameters& parameters, int cells_x, FieldCut cut,
@@ -522,11 +544,10 @@ void FieldPanel::status_line(Document& document, bool side_by_side) {
                        "Solving (residual %.0e): the field shown is of the inputs before.",
                        live_.residual());
   }
-  const std::string regions = detail::printf_string(
-      "taut %.0f %%, wrinkled %.0f %%, slack %.0f %%; weight %#.3g N; thrust H %#.3g N "
-      "(the cosine pencil's %#.3g N)",
-      100.0 * s.taut_share, 100.0 * s.wrinkled_share, 100.0 * s.slack_share, s.weight_N,
-      shown->report.thrust_N, shown->report.pencil_thrust_N);
+  const std::string regions =
+      detail::printf_string("taut %.0f %%, wrinkled %.0f %%, slack %.0f %%; weight %#.3g N; %s",
+                            100.0 * s.taut_share, 100.0 * s.wrinkled_share, 100.0 * s.slack_share,
+                            s.weight_N, thrust_text(shown->report).c_str());
   if (!folds_) {
     wrapped_text("%s", regions.c_str());
     return;
@@ -833,6 +854,13 @@ void describe_solve(json& out, const FieldSolve& solve) {
                                {"reaction_N", {s.reactions_N[i].x(), s.reactions_N[i].y()}}});
   }
   out["rays"] = shown->report.rays.size();
+  out["spans"] = json::array();
+  for (const field::SpanReport& span : shown->report.spans) {
+    out["spans"].push_back({{"l_mm", span.span_mm},
+                            {"thrust_N", span.thrust_N},
+                            {"pencil_thrust_N", span.pencil_thrust_N}});
+  }
+  out["thrust_text"] = thrust_text(shown->report);
   out["outline_area_mm2"] = shown->inputs.outline.area_mm2();
   if (solve.folds && solve.folds_of == solve.live.shown_count()) {
     // The a_i too: a test compares them with the 3D view's.

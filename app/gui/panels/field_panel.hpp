@@ -129,7 +129,8 @@ class FieldPanel : public Panel {
   void view_settings(ViewSettings& settings, Document& document) override;
   // {"field": {open, current, working, refusal, converged, relative_residual, iterations,
   // slice_ms (its share of the last frame), mesh, regions, weight_N, thrust_N, pencil_thrust_N,
-  // supports, rays}}: the view's field; and under "fold_source_solve" the cloth's own cut's,
+  // supports, rays, spans [{l_mm, thrust_N, pencil_thrust_N}], thrust_text (H as the view words
+  // it)}}: the view's field; and under "fold_source_solve" the cloth's own cut's,
   // solved for the 3D view while the view shows another cut (null when there is none).
   void report(nlohmann::json& state, PanelContext& context) const override;
   static constexpr PictureOffer kPictures[] = {
