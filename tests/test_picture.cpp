@@ -335,3 +335,67 @@ TEST_F(PictureTest, AFolderAsTheOutputIsRefused) {
 }
 
 }  // namespace
+
+// A field picture takes a cut of one's own as `foldlab field` does: the tension field of a
+// curtain with a curved hem, drawn into a PNG of the size asked for, mostly cloth in its middle.
+TEST_F(PictureTest, AFieldPictureTakesAnOutlineFile) {
+  const fs::path outline = dir_ / "good.json";
+  std::ofstream(outline) << R"({"top": [[0, 0], [1200, 0]],
+    "bottom": [[0, 1000], [600, 1150], [1200, 1000]],
+    "supports": [{"at": [0, 0], "to": [100, 0]}, {"at": [1200, 0], "to": [1100, 0]}]})";
+  const Rgba image = picture(
+      "field-outline", {"field", "--outline", outline.string(), "--size", "640x400", "--caption"});
+  ASSERT_EQ(image.width, 640);
+  ASSERT_EQ(image.height, 400);
+  EXPECT_GT(count_unlike(image, kWhite, 0, 0, 640, 400), 640 * 400 / 8);
+  // The middle of the picture is the cloth, coloured by its state.
+  EXPECT_GT(count_unlike(image, kWhite, 280, 120, 360, 200), 80 * 80 * 9 / 10);
+}
+
+// An outline the field cannot hang is refused as `foldlab field` refuses it: exit 2, naming the
+// option, the file and what is wrong, and no picture written.
+TEST_F(PictureTest, AFieldPictureRefusesABadOutlineAsTheFieldCommandDoes) {
+  const fs::path outline = dir_ / "bad.json";
+  std::ofstream(outline)
+      << R"({"top": [[0, 0], [1200, 0]], "bottom": [[0, 1000], [1200, 1000]], "supports": []})";
+  const fs::path png = dir_ / "bad.png";
+  const RunResult r = run({"picture", "field", "--outline", outline.string(), "--size", "640x400",
+                           "--out", png.string()});
+  EXPECT_EQ(r.exit_status, 2) << r.err;
+  EXPECT_NE(r.err.find("--outline " + outline.string() +
+                       ": the outline needs at least one "
+                       "support to hang from"),
+            std::string::npos)
+      << r.err;
+  EXPECT_FALSE(fs::exists(png));
+  const RunResult field = run({"field", "--outline", outline.string()});
+  EXPECT_EQ(field.exit_status, 2);
+  EXPECT_EQ(field.err, r.err);
+
+  const RunResult missing = run({"picture", "field", "--outline", (dir_ / "none.json").string(),
+                                 "--size", "640x400", "--out", png.string()});
+  EXPECT_EQ(missing.exit_status, 2) << missing.err;
+  EXPECT_NE(missing.err.find("--outline"), std::string::npos) << missing.err;
+  const RunResult shape =
+      run({"picture", "field", "--shape", "hexagon", "--size", "640x400", "--out", png.string()});
+  EXPECT_EQ(shape.exit_status, 2) << shape.err;
+  EXPECT_NE(shape.err.find("--shape 'hexagon' is not one of: rectangular"), std::string::npos)
+      << shape.err;
+  const RunResult other_view = run({"picture", "cloth", "--outline", (dir_ / "good.json").string(),
+                                    "--size", "640x400", "--out", png.string()});
+  EXPECT_EQ(other_view.exit_status, 2) << other_view.err;
+  EXPECT_NE(other_view.err.find("--shape and --outline belong to a field picture"),
+            std::string::npos)
+      << other_view.err;
+}
+
+// --shape takes the field's cuts: the triangle, which the field view's cuts also offer, and the
+// model's shapes.
+TEST_F(PictureTest, AFieldPictureTakesTheFieldsCutsByName) {
+  for (const char* shape : {"triangle", "rectangular"}) {
+    const Rgba image =
+        picture(std::string("field-") + shape, {"field", "--shape", shape, "--size", "640x400"});
+    ASSERT_EQ(image.width, 640) << shape;
+    EXPECT_GT(count_unlike(image, kWhite, 280, 120, 360, 200), 80 * 80 / 2) << shape;
+  }
+}

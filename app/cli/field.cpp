@@ -14,36 +14,6 @@ namespace {
 
 using detail::printf_string;
 
-// A designer's cut is a few hundred points at most; far above that is no outline.
-constexpr std::uintmax_t kMaxOutlineFileBytes = 4u << 20;
-
-field::Outline read_outline(const Options& options, const Preset& preset, std::string& name) {
-  try {
-    if (!options.outline_path.empty()) {
-      name = options.outline_path;
-      return field::parse_outline_json(read_text_file(options.outline_path, kMaxOutlineFileBytes));
-    }
-    // A preset's own cut, checked when the preset was read, unless --shape asks for another.
-    if (preset.outline && options.shape.empty()) {
-      name = "the preset's own cut";
-      return *preset.outline;
-    }
-    field::OutlineKind kind = field::outline_kind_of(preset.parameters.shape);
-    if (!options.shape.empty() && !field::parse_outline_kind(options.shape, kind)) {
-      throw InputError("--shape '" + options.shape +
-                       "' is not one of: " + field::outline_kind_names());
-    }
-    name = std::string(field::to_string(kind));
-    return field::make_outline(preset.parameters, kind);
-  } catch (const field::OutlineError& e) {
-    throw InputError(
-        (options.outline_path.empty() ? "" : "--outline " + options.outline_path + ": ") +
-        e.what());
-  } catch (const ReadError& e) {
-    throw InputError(std::string("--outline: ") + e.what());
-  }
-}
-
 std::string share_text(double share) {
   return printf_string("%.1f %%", 100.0 * share);
 }
@@ -57,16 +27,7 @@ void declare(CLI::App& app, Options& options) {
       "its taut, wrinkled and slack shares, the supports' reactions and the rays beside the "
       "closed form's cosines");
   add_input_options(*command, options.inputs);
-  CLI::Option* shape =
-      command->add_option("--shape", options.shape,
-                          "the cut: " + field::outline_kind_names() +
-                              " (default: the preset's own cut when it has one, else its shape)");
-  command
-      ->add_option("--outline", options.outline_path,
-                   "a cut of your own: JSON {\"top\": [[x, y], ...], \"bottom\": [[x, y], "
-                   "...], \"supports\": [{\"at\": [X, Y], \"to\": [x, y]}, ...]}, mm, y down")
-      ->check(app::non_empty_path())
-      ->excludes(shape);
+  app::add_field_cut_options(*command, options.cut);
   command->add_option("--cells-x", options.cells_x, "mesh cells across the cut (default 40)")
       ->transform(app::whole_number_in(1, 2000));
   command->add_option("--cells-y", options.cells_y, "mesh cells down the cut (default 28)")
@@ -91,11 +52,11 @@ void declare(CLI::App& app, Options& options) {
 Result run(const Options& options) {
   check_outputs({{"--svg", options.svg_path}},
                 {app::preset_input("--preset", options.inputs.preset_path),
-                 {"--outline", options.outline_path}});
+                 {"--outline", options.cut.outline_path}});
   app::check_output_extension("--svg", options.svg_path, ".svg", "SVG");
   Result r;
   r.preset = app::resolve_named_inputs(options.inputs);
-  r.outline = read_outline(options, r.preset, r.outline_name);
+  r.outline = app::read_field_cut(options.cut, r.preset, r.outline_name);
   r.resolution.cells_x = options.cells_x;
   r.resolution.cells_y = options.cells_y;
   field::parse_mesh_split(options.split, r.resolution.split);
@@ -114,16 +75,12 @@ Result run(const Options& options) {
   }
   // A cut of the preset's shape is the preset's cloth; one read from a file has its own h, L, d.
   Parameters closed = r.preset.parameters;
-  const bool own_cut = !options.outline_path.empty() || (r.preset.outline && options.shape.empty());
+  const bool own_cut =
+      !options.cut.outline_path.empty() || (r.preset.outline && options.cut.shape.empty());
   if (own_cut) {
-    if (const std::optional<Hanging> hanging =
-            field::closed_form_hanging(r.outline, closed.model.span_rule)) {
-      Parameters of_cut = closed;
-      of_cut.hanging = *hanging;
-      if (validate(of_cut).empty()) {
-        closed = of_cut;
-        r.closed_form_of_cut = true;
-      }
+    if (const std::optional<Parameters> of_cut = app::closed_form_of_cut(r.outline, closed)) {
+      closed = *of_cut;
+      r.closed_form_of_cut = true;
     }
   }
   r.closed_form_hanging = closed.hanging;

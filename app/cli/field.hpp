@@ -9,6 +9,7 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
+#include "app/common/field_cut.hpp"
 #include "app/common/inputs.hpp"
 #include "core/field/field_case.hpp"
 #include "core/field/field_folds.hpp"
@@ -19,8 +20,7 @@ namespace foldlab::cli::field_command {
 
 struct Options {
   app::InputOptions inputs;
-  std::string shape;         // empty: the preset's shape
-  std::string outline_path;  // a designer's cut (JSON); replaces the shape
+  app::FieldCutOptions cut;
   int cells_x = field::MeshResolution{}.cells_x;
   int cells_y = field::MeshResolution{}.cells_y;
   std::string split = std::string(field::to_string(field::MeshResolution{}.split));

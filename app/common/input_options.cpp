@@ -91,4 +91,17 @@ void add_law_option(CLI::App& command, std::string& law) {
       ->check(input_choice("law"));
 }
 
+void add_field_cut_options(CLI::App& command, FieldCutOptions& options) {
+  CLI::Option* shape =
+      command.add_option("--shape", options.shape,
+                         "the cut: " + field::outline_kind_names() +
+                             " (default: the preset's own cut when it has one, else its shape)");
+  command
+      .add_option("--outline", options.outline_path,
+                  "a cut of your own: JSON {\"top\": [[x, y], ...], \"bottom\": [[x, y], "
+                  "...], \"supports\": [{\"at\": [X, Y], \"to\": [x, y]}, ...]}, mm, y down")
+      ->check(non_empty_path())
+      ->excludes(shape);
+}
+
 }  // namespace foldlab::app

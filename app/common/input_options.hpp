@@ -10,6 +10,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "app/common/field_cut.hpp"
 #include "app/common/inputs.hpp"
 
 namespace foldlab::app {
@@ -32,5 +33,7 @@ CLI::Validator one_of(std::string name, std::vector<std::string> choices);
 void add_input_options(CLI::App& command, InputOptions& options);
 // --law alone, for a command that gathers its inputs otherwise (InputOptions::law).
 void add_law_option(CLI::App& command, std::string& law);
+// --shape and --outline (one or the other), the cut a tension field is solved on.
+void add_field_cut_options(CLI::App& command, FieldCutOptions& options);
 
 }  // namespace foldlab::app

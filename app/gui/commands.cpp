@@ -328,6 +328,8 @@ struct PictureOptions {
   // B of a compare picture: a preset (default: A's) and its overrides.
   std::string b_preset;
   std::vector<std::string> b_sets;
+  // A field picture's cut, as `foldlab field` takes it.
+  app::FieldCutOptions field_cut;
 };
 
 // --param, --from, --to, --steps, --log and --linear: a sweep picture's axis, checked as `foldlab
@@ -387,8 +389,9 @@ app::Command add_picture_command(CLI::App& app) {
   auto options = std::make_shared<PictureOptions>();
   CLI::App* command = app.add_subcommand(
       "picture",
-      "draw the 3D cloth, the fold plot, the sweep's plots or A and B side by side, alone, with "
-      "no interface, at any size, into a PNG (no display needed: EGL surfaceless)");
+      "draw the 3D cloth, the fold plot, the sweep's plots, A and B side by side or the tension "
+      "field, alone, with no interface, at any size, into a PNG (no display needed: EGL "
+      "surfaceless)");
   command->add_option("VIEW", options->view, "what the picture shows: " + picture_view_names())
       ->required();
   add_scene_options(*command, options->scene);
@@ -403,7 +406,8 @@ app::Command add_picture_command(CLI::App& app) {
                       std::string("white (default), transparent (alpha 0 around what is drawn) "
                                   "or dark"));
   command->add_flag("--caption", options->spec.caption,
-                    "a strip at the bottom: the fabric, n, Q, z_max and the inputs");
+                    "a strip at the bottom: the fabric, n, Q, z_max and the inputs (field: "
+                    "also the cut, the weight, the thrust and the field's n, Q and z_max)");
   command->add_flag("--legend", options->spec.legend, "the fold plot's legend");
   command->add_option("--param", options->param,
                       "sweep: the input swept, " + detail::join_comma(sweepable_keys()) +
@@ -425,6 +429,7 @@ app::Command add_picture_command(CLI::App& app) {
       ->check(app::non_empty_path());
   command->add_option("--b-set", options->b_sets, "compare: override one of B's inputs")
       ->type_name("KEY=VALUE");
+  app::add_field_cut_options(*command, options->field_cut);
   return [options] {
     return guarded([&] {
       PictureSpec& spec = options->spec;
@@ -453,12 +458,16 @@ app::Command add_picture_command(CLI::App& app) {
                          " is a folder; name the PNG file to write");
       }
       prepare_run(options->scene, {{"--out", options->out}});
-      check_outputs({{"--out", options->out}},
-                    {app::preset_input("--b-preset", options->b_preset)});
+      if (options->field_cut.given() && spec.view != PictureView::field) {
+        throw InputError("--shape and --outline belong to a field picture");
+      }
+      check_outputs({{"--out", options->out}}, {app::preset_input("--b-preset", options->b_preset),
+                                                {"--outline", options->field_cut.outline_path}});
       app::check_output_extension("--out", options->out, ".png", "PNG");
       PictureInputs inputs;
       inputs.sweep_axis = picture_sweep_axis(*options, spec.view);
       inputs.b = picture_b(*options, spec.view);
+      inputs.field_cut = options->field_cut;
       return run_picture(options->scene.run, options->out, spec, inputs);
     });
   };

@@ -27,6 +27,7 @@
 #include "app/gui/key_latency.hpp"
 #include "app/gui/panels/analysis_panel.hpp"
 #include "app/gui/panels/cloth_view_panel.hpp"
+#include "app/gui/panels/field_panel.hpp"
 #include "app/gui/renderer.hpp"
 #include "app/gui/screen.hpp"
 #include "app/gui/scripted_run.hpp"
@@ -700,6 +701,25 @@ int run_picture(const GuiRunOptions& options, const std::filesystem::path& out,
   app::StartInputs start = app::resolve_inputs_in_full(
       options.inputs, inputs.sweep_axis ? &*inputs.sweep_axis : nullptr);
   start.origin = start.preset;  // a picture's caption names the fabric it shows, link or not
+  // A field picture's cut read as `foldlab field` reads it; a cut of one's own is the cloth the
+  // closed form is solved for too, as `foldlab field` solves it, when it is hung as the closed
+  // form's cloth is.
+  std::optional<field::Outline> cut;
+  std::string cut_name;
+  std::optional<field::OutlineKind> cut_kind;
+  bool closed_form_of_cut = false;
+  if (inputs.field_cut.given()) {
+    cut = app::read_field_cut(inputs.field_cut, start.preset, cut_name);
+    if (inputs.field_cut.outline_path.empty()) {
+      cut_kind.emplace();
+      field::parse_outline_kind(cut_name, *cut_kind);
+    } else if (const std::optional<Parameters> of_cut =
+                   app::closed_form_of_cut(*cut, start.preset.parameters)) {
+      start.preset.parameters = *of_cut;
+      start.origin = start.preset;
+      closed_form_of_cut = true;
+    }
+  }
   // The window is never drawn (the picture has a framebuffer of its own): the smallest one.
   SurfaceOptions surface_options{kMinFrameSize.width, kMinFrameSize.height, false};
   std::unique_ptr<Surface> surface = make_headless_surface(surface_options);
@@ -710,6 +730,10 @@ int run_picture(const GuiRunOptions& options, const std::filesystem::path& out,
   }
   if (inputs.b) {
     explorer.document().compare().pin(*inputs.b);
+  }
+  if (cut) {
+    find_panel<FieldPanel>(explorer.panels())
+        .use_picture_cut(std::move(*cut), cut_name, cut_kind, closed_form_of_cut);
   }
   // The 3D view's folds from the tension field are the folds it has drawn: a picture of it draws
   // the view until it has drawn them (one frame at rest, when the field converges), or until the

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "app/common/field_cut.hpp"
 #include "app/common/inputs.hpp"
 #include "app/gui/compare.hpp"
 #include "app/gui/picture.hpp"
@@ -49,6 +50,9 @@ int run_headless(const GuiRunOptions& options);
 struct PictureInputs {
   std::optional<SweepAxis> sweep_axis;
   std::optional<PinnedFabric> b;
+  // A field picture's cut as `foldlab field` takes it (--shape, --outline), read against the
+  // preset the picture resolves; none given: the field view's own.
+  app::FieldCutOptions field_cut;
 };
 // The same with no window drawn at all: the explorer's picture `spec` (picture.hpp) into `out`,
 // as the Export menu's picture dialog writes it.

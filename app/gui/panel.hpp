@@ -187,6 +187,12 @@ class Panel {
                             const PictureStyle& /*style*/) {
     return false;
   }
+  // A picture's caption lines of the panel's own for `view`, between the fabric's name and its
+  // inputs (the tension field's cut, weight, thrust and folds); empty: the caption's usual lines.
+  virtual std::vector<std::string> picture_figures(PictureView /*view*/,
+                                                   Document& /*document*/) const {
+    return {};
+  }
 
   // What ImGui::Begin is given: the title, then after "###" the key, so that a title with a
   // changing mark ("Parameters *") is the same window. `mark` is appended to the title.

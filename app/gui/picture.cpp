@@ -15,6 +15,7 @@
 #include "app/gui/appearance.hpp"
 #include "app/gui/compare.hpp"
 #include "app/gui/panels/compare_table.hpp"
+#include "app/gui/panels/field_panel.hpp"
 #include "app/gui/panels/fold_plot_panel.hpp"
 #include "app/gui/panels/parameters_panel.hpp"
 #include "app/gui/panels/widgets.hpp"
@@ -343,22 +344,26 @@ float picture_line_width_px(FrameSize size) {
 
 namespace {
 
-// One fabric's caption lines: its name (after `letter`, when given) with n, Q and z_max, then
-// its inputs.
+// One fabric's caption lines: its name (after `letter`, when given), a view's own `figures`, n,
+// Q and z_max (after `numbers_label`, when given), then its inputs.
 void add_caption(std::vector<std::string>& lines, const std::string& letter,
                  const std::string& name, const Parameters& parameters, const Solution& solution,
-                 const ModelStanding& standing, std::string_view source_words = {}) {
+                 const ModelStanding& standing, std::string_view source_words = {},
+                 const std::vector<std::string>& figures = {},
+                 std::string_view numbers_label = {}) {
   const std::string shown = detail::caption_text(name);
   std::string head = letter.empty() ? shown : letter + ": " + shown;
   if (!head.empty()) {
     lines.push_back(head);
   }
+  lines.insert(lines.end(), figures.begin(), figures.end());
   // The closed form's prediction ranges bracket its own values, not the field's.
   ModelStanding shown_standing = standing;
   if (!source_words.empty()) {
     shown_standing.range.reset();
   }
-  std::string numbers = headline(quantity_texts(solution, shown_standing));
+  std::string numbers =
+      std::string(numbers_label) + headline(quantity_texts(solution, shown_standing));
   if (!source_words.empty()) {
     numbers += " (" + std::string(source_words) + ")";
   }
@@ -401,6 +406,22 @@ std::vector<std::string> picture_caption(Document& document, bool with_b, const 
 std::vector<std::string> picture_caption(const PictureSource& source, const PictureSpec& spec) {
   if (!spec.caption) {
     return {};
+  }
+  // A view with figures of its own (the tension field's) gives them first, and the closed form's
+  // after them, said to be the closed form's.
+  if (const Panel* own = picture_panel(source, spec.view)) {
+    const std::vector<std::string> figures = own->picture_figures(spec.view, source.document);
+    if (!figures.empty()) {
+      const auto* field_panel = dynamic_cast<const FieldPanel*>(own);
+      Document& document = source.document;
+      Scene& scene = document.scene();
+      std::vector<std::string> lines;
+      add_caption(
+          lines, "", document.loaded().name, scene.parameters(), scene.solution(),
+          model_standing(scene.parameters(), document.loaded().calibration, scene.solution()), {},
+          figures, field_panel != nullptr ? field_panel->closed_form_words() : "");
+      return lines;
+    }
   }
   const bool with_b = spec.view == PictureView::compare || spec.view == PictureView::sweep;
   // A's cloth drawn with the field's folds is captioned with them.

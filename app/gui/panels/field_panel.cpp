@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <limits>
 
 #include <imgui.h>
@@ -294,6 +295,35 @@ std::string thrust_text(const field::FieldReport& report) {
   return out;
 }
 
+bool closed_form_knows(field::OutlineKind kind) {
+  return kind != field::OutlineKind::triangle && kind != field::OutlineKind::pennant &&
+         kind != field::OutlineKind::wedge;
+}
+
+// Why the closed form's cosines, asked for over a field on a cut called `cut_name` and hung from
+// `supports` points, are not drawn; nullopt when they are. `closed_form_cut`: the closed form
+// solves a cloth of that cut (the model's shapes, a designer's or a preset's own cut hung from
+// its supports); `cosines` the closed form's fold lines for `parameters`.
+std::optional<std::string> cosines_not_drawn(bool closed_form_cut, std::string_view cut_name,
+                                             std::size_t supports, const Parameters& parameters,
+                                             const FoldLines& cosines) {
+  const std::string head = "The closed form's cosines are not drawn: ";
+  if (!closed_form_cut) {
+    return head + "the closed form solves the rectangular, cosine, strip and inclined cloths, " +
+           "not the " + std::string(cut_name) + " cut.";
+  }
+  if (supports < 2) {
+    return head + "the cut hangs from one support, and the closed form's cloth from two.";
+  }
+  if (cosines.lines.empty()) {
+    if (parameters.hanging.support_displacement_mm <= 0.0) {
+      return head + "at d = 0 the supports are not moved in, and the closed form has no folds.";
+    }
+    return head + "the closed form has no folds for these inputs.";
+  }
+  return std::nullopt;
+}
+
 }  // namespace
 
 field::FieldInputs field_inputs(const Parameters& parameters, int cells_x, FieldCut cut,
@@ -357,7 +387,8 @@ double draw_field(ImDrawList& draw, ImVec2 origin, ImVec2 size, const field::Sol
   const std::vector<double> tensions = node_tensions(field);
   const double top_N_per_mm = tension_scale_top(tensions);
   const std::vector<Vector2d> targets = field::support_targets(field.inputs.outline);
-  const bool cosines_drawn = style.cosines && cosines != nullptr && targets.size() >= 2;
+  const bool cosines_drawn =
+      style.cosines && cosines != nullptr && !cosines->lines.empty() && targets.size() >= 2;
   const float legend_px = style.legend ? legend(draw, origin, size.x, style, top_N_per_mm,
                                                 cosines_drawn, s.folded_share, ink)
                                        : 0.0f;
@@ -581,6 +612,19 @@ void FieldPanel::status_line(Document& document, bool side_by_side) {
   ImGui::BeginGroup();
   ImGui::TextUnformatted(wrap_at_spaces(folds, column).c_str());
   ImGui::EndGroup();
+}
+
+void FieldPanel::cosines_line(Document& document) const {
+  const field::SolvedField* shown = live_.shown();
+  if (!cosines_ || shown == nullptr) {
+    return;
+  }
+  if (const std::optional<std::string> why =
+          cosines_not_drawn(cut_ == FieldCut::shape, kCutNames[static_cast<int>(cut_)],
+                            shown->inputs.outline.supports.size(), document.scene().parameters(),
+                            document.scene().fold_lines())) {
+    wrapped_text("%s", why->c_str());
+  }
 }
 
 void FieldPanel::solve_line() const {
@@ -817,6 +861,7 @@ void FieldPanel::draw(PanelContext& context) {
       toolbar_.end();
     }
     status_line(context.document, presented && !shows_one_view());
+    cosines_line(context.document);
     canvas(context);
   }
   ImGui::End();
@@ -892,12 +937,47 @@ void FieldPanel::report(json& state, PanelContext& /*context*/) const {
   state["field"] = out;
 }
 
+void FieldPanel::use_picture_cut(field::Outline outline, std::string name,
+                                 std::optional<field::OutlineKind> kind, bool closed_form_of_cut) {
+  picture_cut_ = GivenCut{std::move(outline), std::move(name), kind, closed_form_of_cut};
+}
+
+std::string FieldPanel::closed_form_words() const {
+  return picture_cut_ && picture_cut_->closed_form_of_cut
+             ? "the closed form's folds, for the cut's h, L and d: "
+             : "the closed form's folds: ";
+}
+
+bool FieldPanel::picture_cut_is_closed_forms() const {
+  if (picture_cut_) {
+    return !picture_cut_->kind || closed_form_knows(*picture_cut_->kind);
+  }
+  return cut_ == FieldCut::shape;
+}
+
+std::string FieldPanel::picture_cut_words(const Document& document) const {
+  if (picture_cut_) {
+    if (picture_cut_->kind) {
+      return "the " + picture_cut_->name + " cut";
+    }
+    return "the cut in " + std::filesystem::path(picture_cut_->name).filename().string();
+  }
+  if (cut_ == FieldCut::shape && document.loaded().outline) {
+    return "the preset's own cut";
+  }
+  return "the " + std::string(field::to_string(outline_kind(document.scene().parameters(), cut_))) +
+         " cut";
+}
+
 const field::SolvedField* FieldPanel::picture_field(const Document& document,
                                                     std::string& refusal) const {
   field::FieldInputs inputs;
   try {
     const std::optional<field::Outline>& own = document.loaded().outline;
-    inputs = field_inputs(document.scene().parameters(), cells_, cut_, own ? &*own : nullptr);
+    inputs = picture_cut_
+                 ? field_inputs(document.scene().parameters(), cells_, FieldCut::shape,
+                                &picture_cut_->outline)
+                 : field_inputs(document.scene().parameters(), cells_, cut_, own ? &*own : nullptr);
   } catch (const field::OutlineError& e) {
     refusal = std::string("the tension field's cut: ") + e.what();
     return nullptr;
@@ -943,9 +1023,44 @@ bool FieldPanel::draw_picture(PictureView /*view*/, ImVec2 size_px, Document& do
   drawing.dark = style.dark;
   const ImVec2 origin = ImGui::GetCursorScreenPos();
   draw_field(*ImGui::GetWindowDrawList(), origin, size_px, *solved,
-             cosines_ && cut_ == FieldCut::shape ? &document.scene().fold_lines() : nullptr,
+             cosines_ && picture_cut_is_closed_forms() ? &document.scene().fold_lines() : nullptr,
              drawing);
   return true;
+}
+
+std::vector<std::string> FieldPanel::picture_figures(PictureView /*view*/,
+                                                     Document& document) const {
+  std::string refusal;
+  const field::SolvedField* solved = picture_field(document, refusal);
+  if (solved == nullptr) {
+    return {};
+  }
+  const field::Solution& s = solved->report.solution;
+  const Parameters& parameters = document.scene().parameters();
+  std::vector<std::string> lines;
+  // As `foldlab field` finds them, on the mesh said, so that the command repeats them.
+  lines.push_back(detail::printf_string(
+      "Tension field on %s, mesh %d x %d cells: weight %.4g N, thrust H %.4g N (the cosine "
+      "pencil's through the supports: %.4g N)",
+      picture_cut_words(document).c_str(), solved->inputs.resolution.cells_x,
+      solved->inputs.resolution.cells_y, s.weight_N, solved->report.thrust_N,
+      solved->report.pencil_thrust_N));
+  const field::FieldFolds folds = field::field_folds(
+      solved->mesh, s, field::support_targets(solved->inputs.outline), parameters);
+  lines.push_back(detail::printf_string(
+      "the field's folds: n = %d, Q = %.4g, z_max = %.1f mm; %s (relative force residual %.1e)",
+      folds.n, folds.Q, folds.z_max_mm, s.converged ? "converged" : "NOT converged",
+      s.relative_residual));
+  if (cosines_) {
+    const std::string cut_name =
+        picture_cut_ ? picture_cut_->name : std::string(kCutNames[static_cast<int>(cut_)]);
+    if (const std::optional<std::string> why = cosines_not_drawn(
+            picture_cut_is_closed_forms(), cut_name, solved->inputs.outline.supports.size(),
+            parameters, document.scene().fold_lines())) {
+      lines.push_back(*why);
+    }
+  }
+  return lines;
 }
 
 }  // namespace foldlab::gui

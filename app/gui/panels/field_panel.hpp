@@ -147,6 +147,18 @@ class FieldPanel : public Panel {
   }
   bool draw_picture(PictureView view, ImVec2 size_px, Document& document,
                     const PictureStyle& style) override;
+  // The cut's name, the weight, the thrust beside the cosine pencil's, the field's n, Q and
+  // z_max as `foldlab field` prints them, how the solve ended, and why the closed form's cosines
+  // asked for are not drawn.
+  std::vector<std::string> picture_figures(PictureView view, Document& document) const override;
+  // A picture's cut given on its command line (`foldlab picture field --outline FILE`, `--shape
+  // S`, app/common/field_cut.hpp) in place of the view's: `name` as a report calls it, `kind`
+  // the named cut it is (nullopt: a designer's own); `closed_form_of_cut`: the inputs are the
+  // cut's own h, L and d (app::closed_form_of_cut), and the caption says so.
+  void use_picture_cut(field::Outline outline, std::string name,
+                       std::optional<field::OutlineKind> kind, bool closed_form_of_cut = false);
+  // What the caption calls the closed form's figures beside the field's.
+  std::string closed_form_words() const;
   // "field": the canvas the cut is drawn on.
   void drawing_areas(DrawingAreas& areas) const override {
     if (const std::optional<PanelRect> rect = drawn_.recent()) {
@@ -228,6 +240,18 @@ class FieldPanel : public Panel {
   // The scale the canvas was last drawn at: kept, or shrunk, while an input moves.
   double canvas_px_per_mm_ = 0.0;
   DrawnArea drawn_;
+  struct GivenCut {
+    field::Outline outline;
+    std::string name;
+    std::optional<field::OutlineKind> kind;
+    bool closed_form_of_cut = false;
+  };
+  std::optional<GivenCut> picture_cut_;
+  // Whether the closed form knows a picture's cut, and what the caption calls it.
+  bool picture_cut_is_closed_forms() const;
+  std::string picture_cut_words(const Document& document) const;
+  // Under the figures: why the closed form's cosines asked for are not drawn.
+  void cosines_line(Document& document) const;
   // A picture's field: solved once per set of inputs.
   mutable std::optional<field::FieldInputs> picture_inputs_;
   mutable std::optional<field::SolvedField> picture_field_;
