@@ -199,6 +199,12 @@ Mesh make_mesh(const Outline& outline, const MeshResolution& resolution) {
     }
   }
 
+  if (mesh.triangles.empty()) {
+    throw OutlineError(detail::printf_string(
+        "a mesh of %d x %d cells on this cut has no triangle: its columns stand only where the "
+        "cut has no height; give it more cells across",
+        resolution.cells_x, resolution.cells_y));
+  }
   for (std::size_t s = 0; s < outline.supports.size(); ++s) {
     const Vector2d& at = outline.supports[s].at_mm;
     int found = -1;
