@@ -47,7 +47,9 @@ CLI::Validator number_in(double lo, double hi) {
         }
         return std::string();
       },
-      "X", range);
+      "FLOAT in [" + detail::printf_string("%g", lo) + " - " + detail::printf_string("%g", hi) +
+          "]",
+      range);
 }
 
 CLI::Validator input_choice(std::string_view key) {
