@@ -2238,6 +2238,12 @@ TEST_F(CliTest, FieldRefusesCutsAndMeshesItCannotSolve) {
   EXPECT_EQ(one.exit_status, 2);
   EXPECT_TRUE(contains(one.err, "no triangle")) << one.err;
   EXPECT_FALSE(contains(one.out + one.err, "nan"));
+  // 401 columns of 401 nodes at 4 KB a node: 628 MB, above the 512 MB a solve may take.
+  const RunResult big = run({"field", "--cells-x", "400", "--cells-y", "400"});
+  EXPECT_EQ(big.exit_status, 2);
+  EXPECT_TRUE(
+      contains(big.err, "about 160801 nodes and take about 628 MB to solve; at most 512 MB"))
+      << big.err;
 
   const auto refusal = [&](const std::string& name, const std::string& text) {
     const fs::path path = dir_ / name;
