@@ -195,8 +195,7 @@ void print_text(const Result& r, std::ostream& out) {
   const field::FieldFolds& f = r.folds;
   if (!s.converged) {
     out << "folds from the field: not read from a field that did not converge\n";
-  }
-  if (s.converged) {
+  } else {
     out << printf_string(
         "folds from the field (centre line): n = %d, Q = %.4g, z_max = %.1f mm; the folds take up "
         "%.1f mm of the centre fibre's %.1f mm (mean ray tension %.3g N/mm)\n",
@@ -259,18 +258,18 @@ nlohmann::json print_json(const Result& r) {
                            {"fitted_a_mm", ray.fitted_amplitude_mm},
                            {"fit_rms_mm", ray.fit_rms_mm}});
   }
+  out["field_folds"] = {{"n", r.folds.n},
+                        {"Q", r.folds.Q},
+                        {"z_max_mm", r.folds.z_max_mm},
+                        {"a_mm", r.folds.a_mm},
+                        {"slack_width_mm", r.folds.slack_width_mm},
+                        {"kept_length_mm", r.folds.kept_length_mm},
+                        {"count_argument", r.folds.count_argument},
+                        {"mean_ray_tension_N_per_mm", r.folds.mean_ray_tension_N_per_mm},
+                        {"n_capped", r.folds.n_capped}};
   // Folds read from a field that did not converge would be figures of no cloth: null.
-  out["field_folds"] = nullptr;
-  if (s.converged) {
-    out["field_folds"] = {{"n", r.folds.n},
-                          {"Q", r.folds.Q},
-                          {"z_max_mm", r.folds.z_max_mm},
-                          {"a_mm", r.folds.a_mm},
-                          {"slack_width_mm", r.folds.slack_width_mm},
-                          {"kept_length_mm", r.folds.kept_length_mm},
-                          {"count_argument", r.folds.count_argument},
-                          {"mean_ray_tension_N_per_mm", r.folds.mean_ray_tension_N_per_mm},
-                          {"n_capped", r.folds.n_capped}};
+  if (!s.converged) {
+    out["field_folds"] = nullptr;
   }
   out["closed_form"] = {{"n", r.closed_form.n},
                         {"Q", r.closed_form.Q},
