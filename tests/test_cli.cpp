@@ -2236,6 +2236,187 @@ TEST_F(CliTest, FieldOnThreeHooksReportsEachSpan) {
   EXPECT_FALSE(contains(text.out, "0 N (l = 1000.0 mm")) << text.out;
 }
 
+// A cut of `width` x `height` mm whose top left corner is at (x0, y0), hung from its top corners
+// moved in by a twentieth of its width each: the outline file's text.
+std::string rectangle_outline(double x0, double y0, double width = 600.0, double height = 400.0) {
+  const auto pair = [](double x, double y) {
+    std::ostringstream out;
+    out.precision(17);
+    out << "[" << x << ", " << y << "]";
+    return out.str();
+  };
+  return "{\"top\": [" + pair(x0, y0) + ", " + pair(x0 + width, y0) + "], \"bottom\": [" +
+         pair(x0, y0 + height) + ", " + pair(x0 + width, y0 + height) +
+         "], \"supports\": [{\"at\": " + pair(x0, y0) + ", \"to\": " + pair(x0 + 0.05 * width, y0) +
+         "}, {\"at\": " + pair(x0 + width, y0) + ", \"to\": " + pair(x0 + 0.95 * width, y0) + "}]}";
+}
+
+// Names that are not UTF-8 or hold control characters are printed as \xNN, as `solve` prints a
+// preset's name, in the text and the JSON alike (the JSON writer threw on the byte 0xff).
+TEST_F(CliTest, FieldSpellsAnOutlinesAndAPresetsNameAsEscapes) {
+  const fs::path odd = dir_ / "bad\xffname.json";
+  std::ofstream(odd) << rectangle_outline(0.0, 0.0);
+  const RunResult j = run({"field", "--outline", odd.string(), "--cells-x", "8", "--cells-y", "6",
+                           "--json", "--svg", (dir_ / "odd.svg").string()});
+  ASSERT_EQ(j.exit_status, 0) << j.err;
+  EXPECT_EQ(json::parse(j.out).at("outline"), (dir_ / "bad\\xffname.json").string());
+  EXPECT_TRUE(contains(read_file(dir_ / "odd.svg"), "bad\\xffname.json"));
+  const RunResult text =
+      run({"field", "--outline", odd.string(), "--cells-x", "8", "--cells-y", "6"});
+  ASSERT_EQ(text.exit_status, 0) << text.err;
+  EXPECT_TRUE(contains(text.out, "cut: " + (dir_ / "bad\\xffname.json").string())) << text.out;
+
+  json preset = json::parse(std::ifstream(kPresetsDir / "default.json"));
+  preset["name"] = "Evil \x1b[31mRED\x07 name";
+  const fs::path evil = dir_ / "evil.json";
+  std::ofstream(evil) << preset.dump();
+  const RunResult e = run({"field", "--preset", evil.string(), "--cells-x", "8", "--cells-y", "6"});
+  ASSERT_EQ(e.exit_status, 0) << e.err;
+  EXPECT_TRUE(contains(e.out, "Tension field of Evil \\x1b[31mRED\\x07 name")) << e.out;
+  EXPECT_FALSE(contains(e.out, "\x1b")) << e.out;
+  const RunResult ej =
+      run({"field", "--preset", evil.string(), "--cells-x", "8", "--cells-y", "6", "--json"});
+  ASSERT_EQ(ej.exit_status, 0) << ej.err;
+  EXPECT_EQ(json::parse(ej.out).at("preset"), "Evil \\x1b[31mRED\\x07 name");
+}
+
+// Meshes and cuts that cannot be solved are refused before the solve, exit 2, by what is wrong:
+// never a field of no triangle called converged, never nan printed.
+TEST_F(CliTest, FieldRefusesCutsAndMeshesItCannotSolve) {
+  // One cell across the cosine cut: its two columns are its ends, which have no height.
+  const RunResult one = run({"field", "--cells-x", "1"});
+  EXPECT_EQ(one.exit_status, 2);
+  EXPECT_TRUE(contains(one.err, "no triangle")) << one.err;
+  EXPECT_FALSE(contains(one.out + one.err, "nan"));
+  // 401 columns of 401 nodes at 4 KB a node: 628 MB, above the 512 MB a solve may take.
+  const RunResult big = run({"field", "--cells-x", "400", "--cells-y", "400"});
+  EXPECT_EQ(big.exit_status, 2);
+  EXPECT_TRUE(
+      contains(big.err, "about 160801 nodes and take about 628 MB to solve; at most 512 MB"))
+      << big.err;
+
+  const auto refusal = [&](const std::string& name, const std::string& text) {
+    const fs::path path = dir_ / name;
+    std::ofstream(path) << text;
+    const RunResult r = run({"field", "--outline", path.string(), "--cells-x", "8"});
+    EXPECT_EQ(r.exit_status, 2) << name << ": " << r.out;
+    EXPECT_TRUE(r.out.empty()) << name;
+    return r.err;
+  };
+  const std::string rest =
+      R"("bottom": [[0, 400], [600, 400]], "supports": [{"at": [0, 0], "to": [30, 0]}, )";
+  // Pinned 1e9 mm off: beyond the 1e7 mm every coordinate keeps to.
+  EXPECT_TRUE(contains(refusal("far.json", R"({"top": [[0, 0], [600, 0]], )" + rest +
+                                               R"({"at": [600, 0], "to": [1e9, 0]}]})"),
+                       "support 2 is pinned at (1e+09, 0) mm, out of range"));
+  // 6001 mm from its place: just beyond 10 x 600 mm.
+  EXPECT_TRUE(contains(refusal("just.json", R"({"top": [[0, 0], [600, 0]], )" + rest +
+                                                R"({"at": [600, 0], "to": [600, -6001]}]})"),
+                       "within 10 times the cut's size (6000 mm)"));
+  EXPECT_TRUE(contains(refusal("to200.json", R"({"top": [[0, 0], [600, 0]], )" + rest +
+                                                 R"({"at": [600, 0], "to": [1e200, 0]}]})"),
+                       "out of range"));
+  // A step 1e-6 mm wide on a 600 mm cut: narrower than 6e-4 mm, the mesh's resolution.
+  EXPECT_TRUE(contains(refusal("corner.json",
+                               R"({"top": [[0, 0], [300, 0], [300.000001, 100], [600, 100]],
+    "bottom": [[0, 400], [600, 400]], "supports": [{"at": [0, 0], "to": [30, 0]},
+    {"at": [600, 100], "to": [570, 100]}]})"),
+                       "vertices 1 and 2 are 1e-06 mm apart in x"));
+  // Thin but not flat: named as too thin, not as edges that coincide.
+  const std::string thin =
+      refusal("thin.json", R"({"top": [[0, 0], [1000, 0]], "bottom": [[0, 0.001], [1000, 0.001]],
+    "supports": [{"at": [0, 0], "to": [10, 0]}, {"at": [1000, 0], "to": [990, 0]}]})");
+  EXPECT_TRUE(contains(thin, "too thin to mesh")) << thin;
+  EXPECT_FALSE(contains(thin, "coincide")) << thin;
+  EXPECT_TRUE(contains(refusal("big.json", R"({"top": [[0, 0], [1e308, 0]],
+    "bottom": [[0, 400], [1e308, 400]], "supports": [{"at": [0, 0], "to": [0, 0]}]})"),
+                       "vertex 1 (1e+308, 0) mm is out of range"));
+  // One reader for a file and a preset's "outline": a key twice or one unknown is named.
+  EXPECT_TRUE(
+      contains(refusal("dup.json", R"({"top": [[0, 0], [600, 0]], "top": [[0, 0], [600, 0]], )" +
+                                       rest + R"({"at": [600, 0], "to": [570, 0]}]})"),
+               "the key \"top\" is given twice"));
+  EXPECT_TRUE(contains(refusal("extra.json", R"({"top": [[0, 0], [600, 0]], "bogus": 1, )" + rest +
+                                                 R"({"at": [600, 0], "to": [570, 0]}]})"),
+                       "unknown key \"bogus\""));
+  EXPECT_TRUE(
+      contains(refusal("extra-support.json", R"({"top": [[0, 0], [600, 0]], )" + rest +
+                                                 R"({"at": [600, 0], "to": [570, 0], "zz": 0}]})"),
+               "supports[1]: unknown key \"zz\""));
+
+  json preset = json::parse(std::ifstream(kPresetsDir / "shaped-curtain-curved-hem.json"));
+  preset["outline"]["zzz"] = 1;
+  const fs::path unknown = dir_ / "unknown-key.json";
+  std::ofstream(unknown) << preset.dump();
+  const RunResult u = run({"field", "--preset", unknown.string()});
+  EXPECT_EQ(u.exit_status, 2);
+  EXPECT_TRUE(contains(u.err, "/outline: unknown key \"zzz\"")) << u.err;
+}
+
+// A preset's own cut that cannot be meshed (here above the node cap) names /outline, exit 2.
+TEST_F(CliTest, FieldNamesAPresetsOutlineWhenItsMeshIsRefused) {
+  const RunResult r = run(
+      {"field", "--preset", "shaped-curtain-curved-hem", "--cells-x", "2000", "--cells-y", "2000"});
+  EXPECT_EQ(r.exit_status, 2);
+  EXPECT_TRUE(contains(r.err, "/outline: a mesh of 2000 x 2000 cells")) << r.err;
+}
+
+// The same cut far from the origin hangs as at the origin: its thrust the same and converged.
+TEST_F(CliTest, FieldOfACutIsTheSameWhereverItSits) {
+  const auto thrust = [&](double offset) {
+    const fs::path path = dir_ / ("at-" + std::to_string(offset) + ".json");
+    std::ofstream(path) << rectangle_outline(offset, offset);
+    const RunResult r =
+        run({"field", "--outline", path.string(), "--cells-x", "12", "--cells-y", "8", "--json"});
+    EXPECT_EQ(r.exit_status, 0) << offset << ": " << r.err;
+    const json j = json::parse(r.out);
+    EXPECT_TRUE(j.at("converged").get<bool>()) << offset;
+    EXPECT_LE(j.at("relative_residual").get<double>(), 1e-8) << offset;
+    return j.at("thrust_N").get<double>();
+  };
+  const double at_origin = thrust(0.0);
+  EXPECT_GT(at_origin, 0.0);
+  EXPECT_NEAR(thrust(1e5), at_origin, 1e-9 * at_origin);
+  EXPECT_NEAR(thrust(1e6), at_origin, 1e-9 * at_origin);
+}
+
+// --budget-s stops the solve: NOT converged with its residual, exit 1, and no folds read from
+// that field (null in the JSON).
+TEST_F(CliTest, FieldStopsAtItsBudgetAndReadsNoFoldsFromAnUnconvergedField) {
+  const RunResult j = run({"field", "--budget-s", "0.001", "--json"});
+  EXPECT_EQ(j.exit_status, 1) << j.err;
+  const json out = json::parse(j.out);
+  EXPECT_FALSE(out.at("converged").get<bool>());
+  EXPECT_GT(out.at("relative_residual").get<double>(), 1e-8);
+  EXPECT_TRUE(out.at("field_folds").is_null());
+  const RunResult text = run({"field", "--budget-s", "0.001"});
+  EXPECT_EQ(text.exit_status, 1);
+  EXPECT_TRUE(contains(text.out, "NOT converged")) << text.out;
+  EXPECT_TRUE(
+      contains(text.out, "folds from the field: not read from a field that did not converge"))
+      << text.out;
+  EXPECT_FALSE(contains(text.out, "folds from the field (centre line)")) << text.out;
+  for (const char* bad : {"nan", "0", "-1", "inf"}) {
+    const RunResult refused = run({"field", "--budget-s", bad});
+    EXPECT_EQ(refused.exit_status, 2) << bad;
+  }
+  const RunResult margin = run({"stress", "--solver", "field", "--hang-margin", "nan"});
+  EXPECT_EQ(margin.exit_status, 2);
+  EXPECT_TRUE(contains(margin.err, "--hang-margin")) << margin.err;
+}
+
+// An --svg that cannot be written is refused before the solve, exit 2: a folder, a folder that
+// takes no file, a name longer than the folder's limit.
+TEST_F(CliTest, FieldRefusesAnSvgItCannotWriteBeforeTheSolve) {
+  for (const std::string& svg : {dir_.string(), std::string("/proc/x.svg"),
+                                 (dir_ / (std::string(300, 'a') + ".svg")).string()}) {
+    const RunResult r = run({"field", "--svg", svg, "--cells-x", "400", "--cells-y", "400"});
+    EXPECT_EQ(r.exit_status, 2) << svg << ": " << r.err;
+    EXPECT_TRUE(r.out.empty()) << svg;
+    EXPECT_TRUE(contains(r.err, "--svg")) << r.err;
+  }
+}
+
 // A preset given by name is the file it resolves to: no output may be written over it, whether
 // named by its path or through a symbolic link, and the refusal names both options.
 TEST_F(CliTest, NoOutputOverwritesAPresetGivenByItsName) {

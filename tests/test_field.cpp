@@ -1031,5 +1031,57 @@ TEST(FieldSpans, RaysAreSharedBySpanLength) {
   EXPECT_EQ(rays_per_span(spans_of({1000.0}), 1), (std::vector<int>{1}));
 }
 
+// The rules a preset's outline and a file share: a key given twice or unknown, a pin too far,
+// a step narrower than the mesh follows, a coordinate past 1e7 mm.
+TEST(FieldOutline, RefusesKeysPinsStepsAndCoordinatesOutOfRule) {
+  const auto refused = [](const std::string& text) {
+    try {
+      parse_outline_json(text);
+    } catch (const OutlineError& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  const std::string edges = R"("top": [[0,0],[10,0]], "bottom": [[0,5],[10,5]], )";
+  EXPECT_NE(refused(R"({"top": [[0,0],[10,0]], )" + edges +
+                    R"("supports": [{"at": [0,0], "to": [0,0]}]})")
+                .find("\"top\" is given twice"),
+            std::string::npos);
+  EXPECT_NE(refused("{" + edges + R"("supports": [{"at": [0,0], "to": [0,0], "to": [1,0]}]})")
+                .find("\"to\" is given twice"),
+            std::string::npos);
+  EXPECT_NE(refused("{" + edges + R"("supports": [{"at": [0,0], "to": [0,0]}], "x": 1})")
+                .find("unknown key \"x\""),
+            std::string::npos);
+  // 10 times the cut's size (10 mm) from its place: 100 mm is the limit.
+  EXPECT_EQ(refused("{" + edges + R"("supports": [{"at": [0,0], "to": [0,100]}]})"), "");
+  EXPECT_NE(refused("{" + edges + R"("supports": [{"at": [0,0], "to": [0,100.01]}]})")
+                .find("within 10 times"),
+            std::string::npos);
+  EXPECT_NE(refused(R"({"top": [[0,0],[5,0],[5.000001,1],[10,1]], "bottom": [[0,5],[10,5]],
+                        "supports": [{"at": [0,0], "to": [0,0]}]})")
+                .find("narrower than the mesh can follow"),
+            std::string::npos);
+  EXPECT_NE(refused(R"({"top": [[2e7,0],[2e7,0]], "bottom": [[0,5],[10,5]],
+                        "supports": [{"at": [0,0], "to": [0,0]}]})")
+                .find("out of range"),
+            std::string::npos);
+}
+
+// Solved relative to solve_origin_mm: a cut about the origin is solved where it is; one shifted
+// by 1e6 mm is moved back exactly (the origin a multiple of a power of two, 1024 here).
+TEST(FieldOutline, SolveOriginIsExactAndZeroAboutTheOrigin) {
+  Outline o;
+  o.top_mm = {{-300, 0}, {300, 0}};
+  o.bottom_mm = {{-300, 400}, {300, 400}};
+  o.supports = {{{-300, 0}, {-270, 0}}, {{300, 0}, {270, 0}}};
+  EXPECT_EQ(solve_origin_mm(o), Eigen::Vector2d(0, 0));
+  const Outline far = translated(o, Eigen::Vector2d(1e6, 1e6));
+  const Eigen::Vector2d origin = solve_origin_mm(far);
+  EXPECT_EQ(origin, Eigen::Vector2d(977 * 1024.0, 977 * 1024.0));
+  const Outline back = translated(far, -origin);
+  EXPECT_EQ(back, translated(o, Eigen::Vector2d(1e6 - 977 * 1024.0, 1e6 - 977 * 1024.0)));
+}
+
 }  // namespace
 }  // namespace foldlab::field

@@ -1,5 +1,6 @@
 #include "app/cli/field.hpp"
 
+#include <filesystem>
 #include <iostream>
 
 #include "app/cli/commands.hpp"
@@ -46,10 +47,20 @@ void declare(CLI::App& app, Options& options) {
                    "also draw the field: the hung cloth by region, the rays and the supports' "
                    "reactions")
       ->check(app::non_empty_path());
+  command
+      ->add_option("--budget-s", options.budget_s,
+                   "stop the solve after S seconds and print the field as NOT converged with its "
+                   "residual (default 60)")
+      ->check(app::number_in(0.001, 86400.0));
   command->add_flag("--json", options.json, "print one JSON object instead of text");
 }
 
 Result run(const Options& options) {
+  std::error_code not_a_folder;
+  if (!options.svg_path.empty() && std::filesystem::is_directory(options.svg_path, not_a_folder)) {
+    throw InputError("--svg " + detail::cut(options.svg_path) +
+                     " is a folder; name the SVG file to write");
+  }
   check_outputs({{"--svg", options.svg_path}},
                 {app::preset_input("--preset", options.inputs.preset_path),
                  {"--outline", options.cut.outline_path}});
@@ -60,18 +71,29 @@ Result run(const Options& options) {
   r.resolution.cells_x = options.cells_x;
   r.resolution.cells_y = options.cells_y;
   field::parse_mesh_split(options.split, r.resolution.split);
+  const bool preset_cut = options.outline_path.empty() && r.preset.outline && options.shape.empty();
   try {
-    field::Solver solver(field::make_mesh(r.outline, r.resolution));
+    r.solved_outline = field::translated(r.outline, -field::solve_origin_mm(r.outline));
+    field::Solver solver(field::make_mesh(r.solved_outline, r.resolution));
     r.nodes = static_cast<int>(solver.mesh().nodes_mm.size());
     r.triangles = static_cast<int>(solver.mesh().triangles.size());
     const field::Material material = field::material_of(r.preset.parameters.fabric);
-    field::Solution solution = field::solve_cold(solver, r.outline, material, r.resolution);
-    r.report = field::report_field(solver, std::move(solution), r.outline, material, options.rays);
+    field::SolveOptions solve_options;
+    solve_options.time_budget_ms = 1000.0 * options.budget_s;
+    field::Solution solution =
+        field::solve_cold(solver, r.solved_outline, material, r.resolution, solve_options);
+    if (!(solution.weight_N > 0.0)) {
+      throw field::OutlineError(printf_string(
+          "the mesh of this cut weighs %g N: it has no area to hang (give it more cells)",
+          solution.weight_N));
+    }
+    r.report =
+        field::report_field(solver, std::move(solution), r.solved_outline, material, options.rays);
     r.mesh = solver.mesh();
-    r.folds = field::field_folds(r.mesh, r.report.solution, field::support_targets(r.outline),
-                                 r.preset.parameters);
+    r.folds = field::field_folds(r.mesh, r.report.solution,
+                                 field::support_targets(r.solved_outline), r.preset.parameters);
   } catch (const field::OutlineError& e) {
-    throw InputError(e.what());
+    throw InputError(std::string(preset_cut ? "/outline: " : "") + e.what());
   }
   // A cut of the preset's shape is the preset's cloth; one read from a file has its own h, L, d.
   Parameters closed = r.preset.parameters;
@@ -90,7 +112,7 @@ Result run(const Options& options) {
 
 void print_text(const Result& r, std::ostream& out) {
   const field::Solution& s = r.report.solution;
-  out << "Tension field of " << r.preset.name << "\n";
+  out << "Tension field of " << detail::escaped(r.preset.name) << "\n";
   out << "cut: " << r.outline_name << ", mesh " << r.resolution.cells_x << " x "
       << r.resolution.cells_y << " cells (" << field::to_string(r.resolution.split) << "), "
       << r.nodes << " nodes, " << r.triangles << " triangles\n";
@@ -150,19 +172,23 @@ void print_text(const Result& r, std::ostream& out) {
     }
   }
   const field::FieldFolds& f = r.folds;
-  out << printf_string(
-      "folds from the field (%s): n = %d, Q = %.4g, z_max = %.1f mm; the folds take up "
-      "%.1f mm of the centre fibre's %.1f mm (mean ray tension %.3g N/mm)\n",
-      r.outline.supports.size() > 2
-          ? "along the centre line of the widest span between neighbouring supports"
-          : "along the centre line",
-      f.n, f.Q, f.z_max_mm, f.slack_width_mm, f.kept_length_mm, f.mean_ray_tension_N_per_mm);
-  if (!f.a_mm.empty()) {
-    out << "  a_i from the bottom up (mm):";
-    for (double a : f.a_mm) {
-      out << printf_string(" %.1f", a);
+  if (!s.converged) {
+    out << "folds from the field: not read from a field that did not converge\n";
+  } else {
+    out << printf_string(
+        "folds from the field (%s): n = %d, Q = %.4g, z_max = %.1f mm; the folds take up "
+        "%.1f mm of the centre fibre's %.1f mm (mean ray tension %.3g N/mm)\n",
+        r.outline.supports.size() > 2
+            ? "along the centre line of the widest span between neighbouring supports"
+            : "along the centre line",
+        f.n, f.Q, f.z_max_mm, f.slack_width_mm, f.kept_length_mm, f.mean_ray_tension_N_per_mm);
+    if (!f.a_mm.empty()) {
+      out << "  a_i from the bottom up (mm):";
+      for (double a : f.a_mm) {
+        out << printf_string(" %.1f", a);
+      }
+      out << "\n";
     }
-    out << "\n";
   }
   const Solution& c = r.closed_form;
   const Hanging& g = r.closed_form_hanging;
@@ -181,7 +207,7 @@ void print_text(const Result& r, std::ostream& out) {
 nlohmann::json print_json(const Result& r) {
   const field::Solution& s = r.report.solution;
   nlohmann::json out;
-  out["preset"] = r.preset.name;
+  out["preset"] = detail::escaped(r.preset.name);
   out["outline"] = r.outline_name;
   out["mesh"] = {{"cells_x", r.resolution.cells_x},
                  {"cells_y", r.resolution.cells_y},
@@ -232,6 +258,10 @@ nlohmann::json print_json(const Result& r) {
                         {"count_argument", r.folds.count_argument},
                         {"mean_ray_tension_N_per_mm", r.folds.mean_ray_tension_N_per_mm},
                         {"n_capped", r.folds.n_capped}};
+  // Folds read from a field that did not converge would be figures of no cloth: null.
+  if (!s.converged) {
+    out["field_folds"] = nullptr;
+  }
   out["closed_form"] = {{"n", r.closed_form.n},
                         {"Q", r.closed_form.Q},
                         {"z_max_mm", r.closed_form.z_max_mm},
@@ -248,9 +278,9 @@ int execute(const Options& options) {
   const Result result = run(options);
   if (!options.svg_path.empty()) {
     write_file_atomically(options.svg_path,
-                          field::field_to_svg(result.mesh, result.report, result.outline,
+                          field::field_to_svg(result.mesh, result.report, result.solved_outline,
                                               "Tension field, " + result.outline_name +
-                                                  " cut: " + result.preset.name));
+                                                  " cut: " + detail::escaped(result.preset.name)));
   }
   print_result(result, options.json, &print_text);
   return result.report.solution.converged ? kExitOk : kExitInternal;

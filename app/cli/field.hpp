@@ -27,6 +27,7 @@ struct Options {
   int rays = field::kDefaultRayCount;
   std::string svg_path;  // empty: no drawing
   bool json = false;
+  double budget_s = 60.0;  // the solve stops after this long, not converged
 };
 
 struct Result {
@@ -34,6 +35,9 @@ struct Result {
   std::string outline_name;  // the shape's name or the outline file
   field::Outline outline;
   field::MeshResolution resolution;
+  // The cut moved by -field::solve_origin_mm: the mesh, the field and the rays are in its frame,
+  // so that where the cut sits changes nothing; the supports are printed where `outline` has them.
+  field::Outline solved_outline;
   int nodes = 0;
   int triangles = 0;
   field::Mesh mesh;  // the mesh the field was solved on, for the drawing

@@ -109,7 +109,7 @@ void declare(CLI::App& app, Options& options) {
                    "field: seconds past its 10 s budget after which a solve counts as a hang "
                    "(default 1; the budget is checked between Newton steps, so this is the "
                    "longest a step may take: more under a sanitizer or a loaded machine)")
-      ->check(CLI::Range(0.0, 3600.0));
+      ->check(app::number_in(0.0, 3600.0));
   command->add_flag("--json", options.json, "print one JSON object instead of a table");
 }
 

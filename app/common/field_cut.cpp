@@ -2,6 +2,7 @@
 
 #include "app/common/inputs.hpp"
 #include "core/io/io.hpp"
+#include "core/model/text_format.hpp"
 
 namespace foldlab::app {
 namespace {
@@ -15,7 +16,7 @@ field::Outline read_field_cut(const FieldCutOptions& options, const Preset& pres
                               std::string& name) {
   try {
     if (!options.outline_path.empty()) {
-      name = options.outline_path;
+      name = detail::escaped(options.outline_path);
       return field::parse_outline_json(read_text_file(options.outline_path, kMaxOutlineFileBytes));
     }
     // A preset's own cut, checked when the preset was read, unless --shape asks for another.
@@ -31,9 +32,10 @@ field::Outline read_field_cut(const FieldCutOptions& options, const Preset& pres
     name = std::string(field::to_string(kind));
     return field::make_outline(preset.parameters, kind);
   } catch (const field::OutlineError& e) {
-    throw InputError(
-        (options.outline_path.empty() ? "" : "--outline " + options.outline_path + ": ") +
-        e.what());
+    throw InputError((options.outline_path.empty()
+                          ? ""
+                          : "--outline " + detail::cut(options.outline_path) + ": ") +
+                     e.what());
   } catch (const ReadError& e) {
     throw InputError(std::string("--outline: ") + e.what());
   }

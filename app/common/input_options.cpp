@@ -36,6 +36,22 @@ CLI::Validator whole_number_in(std::int64_t lo, std::int64_t hi) {
       "N", range);
 }
 
+CLI::Validator number_in(double lo, double hi) {
+  const std::string range =
+      "a number from " + detail::printf_string("%g", lo) + " to " + detail::printf_string("%g", hi);
+  return CLI::Validator(
+      [lo, hi, range](std::string& text) {
+        const std::optional<double> value = parse_number(text);
+        if (!value || !std::isfinite(*value) || *value < lo || *value > hi) {
+          return detail::cut(text) + " must be " + range;
+        }
+        return std::string();
+      },
+      "FLOAT in [" + detail::printf_string("%g", lo) + " - " + detail::printf_string("%g", hi) +
+          "]",
+      range);
+}
+
 CLI::Validator input_choice(std::string_view key) {
   const InputSpec* spec = find_input(key);
   if (spec == nullptr || spec->kind != InputKind::choice) {

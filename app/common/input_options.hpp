@@ -21,6 +21,9 @@ CLI::Validator non_empty_path();
 // A count given in any notation ("1e3" is 1000), refused unless whole and within [lo, hi]; use it
 // with ->transform() on an integer option.
 CLI::Validator whole_number_in(std::int64_t lo, std::int64_t hi);
+// A finite number within [lo, hi], for ->check() on a double option: "nan" and "inf" are refused
+// (a range check alone lets nan through, every comparison with it being false).
+CLI::Validator number_in(double lo, double hi);
 
 // An option that takes one of an input's choices (--method: the "method" row), refused in the
 // words --set uses: "method = 'Exact' is not one of: paper, exact".

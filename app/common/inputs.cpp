@@ -10,6 +10,7 @@
 #include <cerrno>
 #include <cmath>
 #include <cstdint>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <iostream>
@@ -466,6 +467,23 @@ void check_output_folder(const NamedPath& output) {
     throw InputError(whose + " cannot be written to (" + std::string(std::strerror(errno)) +
                      "); name a file in a folder of yours");
   }
+  const std::string name = std::filesystem::path(output.path).filename().string();
+  const long name_max = ::pathconf(folder.c_str(), _PC_NAME_MAX);
+  if (name_max > 0 && name.size() > static_cast<std::size_t>(name_max)) {
+    throw InputError(shown(output) + ": the file's name is " + std::to_string(name.size()) +
+                     " bytes long; this folder takes names of at most " + std::to_string(name_max) +
+                     " bytes");
+  }
+  // Some folders pass every check above and still take no file (/proc, a read-only mount seen
+  // by root): a file made and removed there says so before the work, not after it.
+  std::string probe = (folder / ".foldlab-probe.XXXXXX").string();
+  const int fd = ::mkstemp(probe.data());
+  if (fd < 0) {
+    throw InputError(whose + " takes no new file (" + std::string(std::strerror(errno)) +
+                     "); name a file in a folder of yours");
+  }
+  ::close(fd);
+  ::unlink(probe.c_str());
 }
 
 }  // namespace

@@ -51,6 +51,12 @@ std::vector<double> positions(double lo, double hi, int cells, std::vector<doubl
   return out;
 }
 
+// The solve's peak memory per node, measured (the ladder's meshes, the Newton matrix and its
+// factors): 408 MB for 102 261 nodes, 652 MB for 174 000. A mesh whose estimate is above the cap
+// is refused before it takes the machine's memory.
+constexpr double kSolveBytesPerNode = 4096.0;
+constexpr double kMaxSolveBytes = 512.0 * 1024.0 * 1024.0;
+
 double signed_area(const Vector2d& a, const Vector2d& b, const Vector2d& c) {
   const Vector2d u = b - a;
   const Vector2d v = c - a;
@@ -103,6 +109,14 @@ Mesh make_mesh(const Outline& outline, const MeshResolution& resolution) {
     throw OutlineError(detail::printf_string(
         "a mesh of %d x %d cells on this cut would have about %.0f nodes; at most %d are solved",
         resolution.cells_x, resolution.cells_y, estimated_nodes, kMaxMeshNodes));
+  }
+  if (estimated_nodes * kSolveBytesPerNode > kMaxSolveBytes) {
+    throw OutlineError(detail::printf_string(
+        "a mesh of %d x %d cells on this cut would have about %.0f nodes and take about %.0f MB "
+        "to solve; at most %.0f MB (%.0f nodes) are taken",
+        resolution.cells_x, resolution.cells_y, estimated_nodes,
+        estimated_nodes * kSolveBytesPerNode / (1024.0 * 1024.0),
+        kMaxSolveBytes / (1024.0 * 1024.0), kMaxSolveBytes / kSolveBytesPerNode));
   }
 
   Mesh mesh;
@@ -199,6 +213,12 @@ Mesh make_mesh(const Outline& outline, const MeshResolution& resolution) {
     }
   }
 
+  if (mesh.triangles.empty()) {
+    throw OutlineError(detail::printf_string(
+        "a mesh of %d x %d cells on this cut has no triangle: its columns stand only where the "
+        "cut has no height; give it more cells across",
+        resolution.cells_x, resolution.cells_y));
+  }
   for (std::size_t s = 0; s < outline.supports.size(); ++s) {
     const Vector2d& at = outline.supports[s].at_mm;
     int found = -1;

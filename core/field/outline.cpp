@@ -65,11 +65,34 @@ void check_edge(const std::vector<Vector2d>& edge, const char* name) {
     if (!std::isfinite(edge[i].x()) || !std::isfinite(edge[i].y())) {
       throw OutlineError(printf_string("the %s edge's vertex %zu is not a finite number", name, i));
     }
+    if (std::abs(edge[i].x()) > kMaxOutlineCoordinate_mm ||
+        std::abs(edge[i].y()) > kMaxOutlineCoordinate_mm) {
+      throw OutlineError(printf_string(
+          "the %s edge's vertex %zu %s is out of range: a cut's coordinates are within %.0e mm "
+          "(10 km) of the origin",
+          name, i, point_text(edge[i]).c_str(), kMaxOutlineCoordinate_mm));
+    }
     if (i > 0 && !(edge[i].x() > edge[i - 1].x())) {
       throw OutlineError(printf_string(
           "the %s edge turns back or steps straight down at vertex %zu %s: each edge must run "
           "left to right with x increasing (x = %.6g after %.6g)",
           name, i, point_text(edge[i]).c_str(), edge[i].x(), edge[i - 1].x()));
+    }
+  }
+}
+
+// A key not in `known` is refused by name: a misspelt "suports" would otherwise leave a cut
+// without the supports its author meant.
+void refuse_unknown_keys(const nlohmann::json& object, std::initializer_list<const char*> known,
+                         const std::string& where) {
+  for (const auto& item : object.items()) {
+    if (std::none_of(known.begin(), known.end(), [&](const char* k) { return item.key() == k; })) {
+      std::string names;
+      for (const char* k : known) {
+        names += std::string(names.empty() ? "" : ", ") + "\"" + k + "\"";
+      }
+      throw OutlineError(where + "unknown key \"" + detail::cut(item.key()) + "\" (the keys are " +
+                         names + ")");
     }
   }
 }
@@ -280,15 +303,45 @@ Outline make_outline(const Parameters& p, OutlineKind kind) {
 
 Outline parse_outline_json(std::string_view text) {
   nlohmann::json doc;
+  // One set of keys per open object: a key given twice is refused (the last would silently win).
+  std::vector<std::vector<std::string>> open_keys;
+  std::string duplicate;
+  const nlohmann::json::parser_callback_t note_keys =
+      [&](int /*depth*/, nlohmann::json::parse_event_t event, nlohmann::json& parsed) {
+        if (event == nlohmann::json::parse_event_t::object_start) {
+          open_keys.emplace_back();
+        } else if (event == nlohmann::json::parse_event_t::object_end && !open_keys.empty()) {
+          open_keys.pop_back();
+        } else if (event == nlohmann::json::parse_event_t::key && !open_keys.empty() &&
+                   parsed.is_string()) {
+          std::vector<std::string>& keys = open_keys.back();
+          const std::string& key = parsed.get_ref<const std::string&>();
+          if (duplicate.empty() && std::find(keys.begin(), keys.end(), key) != keys.end()) {
+            duplicate = key;
+          }
+          keys.push_back(key);
+        }
+        return true;
+      };
   try {
-    doc = nlohmann::json::parse(text);
+    doc = nlohmann::json::parse(text, note_keys);
   } catch (const nlohmann::json::exception& e) {
     throw OutlineError(std::string("the outline is not valid JSON: ") + e.what());
   }
+  if (!duplicate.empty()) {
+    throw OutlineError("the key \"" + detail::cut(duplicate) +
+                       "\" is given twice in one object (each key may appear once; which one "
+                       "is meant?)");
+  }
+  return outline_from_json(doc);
+}
+
+Outline outline_from_json(const nlohmann::json& doc) {
   if (!doc.is_object()) {
     throw OutlineError(
         "the outline must be a JSON object with \"top\", \"bottom\" and \"supports\"");
   }
+  refuse_unknown_keys(doc, {"top", "bottom", "supports"}, "");
   Outline o;
   o.top_mm = read_edge(doc, "top");
   o.bottom_mm = read_edge(doc, "bottom");
@@ -302,6 +355,7 @@ Outline parse_outline_json(std::string_view text) {
     if (!s.is_object() || !s.contains("at") || !s.contains("to")) {
       throw OutlineError(where + " must be {\"at\": [X, Y], \"to\": [x, y]} in mm");
     }
+    refuse_unknown_keys(s, {"at", "to"}, where + ": ");
     o.supports.push_back({read_point(s["at"], where + ".at"), read_point(s["to"], where + ".to")});
   }
   check_outline(o);
@@ -312,7 +366,7 @@ void check_outline(const Outline& o) {
   check_edge(o.top_mm, "top");
   check_edge(o.bottom_mm, "bottom");
   const double size = std::max({o.right_mm() - o.left_mm(), 1.0});
-  const double tolerance = 1e-6 * size;
+  const double tolerance = kOutlineTolerancePerWidth * size;
   if (std::abs(o.top_mm.front().x() - o.bottom_mm.front().x()) > tolerance ||
       std::abs(o.top_mm.back().x() - o.bottom_mm.back().x()) > tolerance) {
     throw OutlineError(printf_string(
@@ -337,9 +391,29 @@ void check_outline(const Outline& o) {
     }
     tallest = std::max(tallest, gap);
   }
-  if (!(tallest > tolerance)) {
+  if (!(tallest > 0.0)) {
     throw OutlineError("the outline has no area: its top and bottom edges coincide");
   }
+  if (!(tallest > tolerance)) {
+    throw OutlineError(printf_string(
+        "the cut is %.6g mm tall at most across its %.6g mm width: too thin to mesh (a cut must "
+        "be taller than %.0e of its width, here %.6g mm)",
+        tallest, o.right_mm() - o.left_mm(), kOutlineTolerancePerWidth, tolerance));
+  }
+  for (const auto& [edge, name] :
+       {std::pair{&o.top_mm, "top"}, std::pair{&o.bottom_mm, "bottom"}}) {
+    for (std::size_t i = 1; i < edge->size(); ++i) {
+      const double step = (*edge)[i].x() - (*edge)[i - 1].x();
+      if (step <= tolerance) {
+        throw OutlineError(printf_string(
+            "the %s edge's vertices %zu and %zu are %.6g mm apart in x: narrower than the mesh "
+            "can follow (%.0e of the cut's width, %.6g mm); make the step that wide or drop a "
+            "vertex",
+            name, i - 1, i, step, kOutlineTolerancePerWidth, tolerance));
+      }
+    }
+  }
+  const double pull_limit_mm = kMaxSupportPullPerSize * std::max(size, o.height_mm());
   if (o.supports.empty()) {
     throw OutlineError("the outline needs at least one support to hang from");
   }
@@ -347,6 +421,19 @@ void check_outline(const Outline& o) {
     const Support& s = o.supports[i];
     if (!s.at_mm.allFinite() || !s.to_mm.allFinite()) {
       throw OutlineError(printf_string("support %zu is not a pair of finite numbers", i + 1));
+    }
+    if (s.to_mm.cwiseAbs().maxCoeff() > kMaxOutlineCoordinate_mm) {
+      throw OutlineError(printf_string(
+          "support %zu is pinned at %s, out of range: a cut's coordinates are within %.0e mm "
+          "(10 km) of the origin",
+          i + 1, point_text(s.to_mm).c_str(), kMaxOutlineCoordinate_mm));
+    }
+    if ((s.to_mm - s.at_mm).norm() > pull_limit_mm) {
+      throw OutlineError(printf_string(
+          "support %zu at %s is pinned at %s, %.6g mm away: a support is pinned within %.0f "
+          "times the cut's size (%.6g mm) of where it is on the cut",
+          i + 1, point_text(s.at_mm).c_str(), point_text(s.to_mm).c_str(),
+          (s.to_mm - s.at_mm).norm(), kMaxSupportPullPerSize, pull_limit_mm));
     }
     const double X = s.at_mm.x();
     const double Y = s.at_mm.y();
@@ -374,6 +461,29 @@ void check_outline(const Outline& o) {
       }
     }
   }
+}
+
+Outline translated(const Outline& outline, const Vector2d& offset_mm) {
+  Outline out = outline;
+  for (Vector2d& v : out.top_mm)
+    v += offset_mm;
+  for (Vector2d& v : out.bottom_mm)
+    v += offset_mm;
+  for (Support& s : out.supports) {
+    s.at_mm += offset_mm;
+    s.to_mm += offset_mm;
+  }
+  return out;
+}
+
+Vector2d solve_origin_mm(const Outline& o) {
+  double top = o.top_mm.front().y();
+  for (const Vector2d& v : o.top_mm)
+    top = std::min(top, v.y());
+  const Vector2d centre(0.5 * (o.left_mm() + o.right_mm()), top + 0.5 * o.height_mm());
+  const double size = std::max({o.right_mm() - o.left_mm(), o.height_mm(), 1.0});
+  const double grid = std::exp2(std::ceil(std::log2(size)));
+  return {grid * std::round(centre.x() / grid), grid * std::round(centre.y() / grid)};
 }
 
 }  // namespace foldlab::field

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include <Eigen/Core>
+#include <nlohmann/json_fwd.hpp>
 
 #include "core/model/parameters.hpp"
 
@@ -84,15 +85,38 @@ Outline make_outline(const Parameters& p, OutlineKind kind);
 std::optional<Hanging> closed_form_hanging(const Outline& outline, SpanRule rule);
 
 inline constexpr int kMaxOutlineVertices = 10000;
+// Every coordinate of a cut, its supports' pins included, within this of the origin: 10 km, far
+// beyond any cloth, and small enough that a cut's millimetres keep 9 digits in a double.
+inline constexpr double kMaxOutlineCoordinate_mm = 1e7;
+// A support pinned farther than this many times the cut's size (the larger of its width and
+// height) from where it is on the cut: no hung cloth stretches so, and the solver's forces would
+// lose the weight in their round-off.
+inline constexpr double kMaxSupportPullPerSize = 10.0;
+// Tolerance of the cut's checks and of its mesh, as a share of its width: two vertices of one
+// edge closer in x than this, or a cut no taller than this, cannot be meshed.
+inline constexpr double kOutlineTolerancePerWidth = 1e-6;
 
 // Reads {"top": [[x, y], ...], "bottom": [[x, y], ...], "supports": [{"at": [X, Y], "to": [x,
-// y]}, ...]} in mm, y down. Throws OutlineError naming what is wrong.
+// y]}, ...]} in mm, y down. Throws OutlineError naming what is wrong: a key given twice or one
+// not in that list included.
 Outline parse_outline_json(std::string_view text);
+// The same from a parsed value (a preset's "outline"): the one reader of a cut and its rules.
+Outline outline_from_json(const nlohmann::json& doc);
 
 // Throws OutlineError unless the outline can be meshed: at least two vertices per edge, each edge
-// monotone in x, both edges over the same x range, the bottom never above the top, at most
-// kMaxOutlineVertices vertices, at least one support, each support on the top or bottom edge (or
-// an end), no two supports at one point, every number finite.
+// monotone in x with its vertices at least kOutlineTolerancePerWidth of the width apart, both
+// edges over the same x range, the bottom never above the top, taller than that tolerance, at
+// most kMaxOutlineVertices vertices, every coordinate within kMaxOutlineCoordinate_mm, at least
+// one support, each support on the top or bottom edge (or an end) and pinned within
+// kMaxSupportPullPerSize times the cut's size of it, no two supports at one point, every number
+// finite.
 void check_outline(const Outline& outline);
+
+// The cut moved by `offset_mm`, its supports' pins with it.
+Outline translated(const Outline& outline, const Eigen::Vector2d& offset_mm);
+// Where a cut is solved from: its centre rounded to a multiple of a power of two no smaller than
+// its size, so that subtracting it is exact and a cut about the origin is solved where it is
+// (zero). Solving relative to it keeps a cut's field the same wherever the cut sits.
+Eigen::Vector2d solve_origin_mm(const Outline& outline);
 
 }  // namespace foldlab::field

@@ -42,6 +42,10 @@ struct RelaxedStrain {
 };
 RelaxedStrain relax(const Eigen::Matrix2d& green_strain, const Material& material);
 
+// A field whose supports' reactions miss its weight by more than this share of it is not
+// converged, whatever its residual.
+inline constexpr double kStaticsTolerance = 1e-6;
+
 struct SolveOptions {
   double relative_tolerance = 1e-8;  // converged: |force residual| <= this x |weight's forces|
   int max_iterations = 1000;

@@ -456,7 +456,7 @@ Preset preset_from_json(const json& j, const std::string& origin) {
     // The same reader and rules as `field --outline FILE`, so that a cut moves between a file and
     // a preset unchanged.
     try {
-      preset.outline = field::parse_outline_json(j.at("outline").dump());
+      preset.outline = field::outline_from_json(j.at("outline"));
     } catch (const field::OutlineError& e) {
       r.problem("/outline", e.what());
     }
