@@ -2061,6 +2061,16 @@ TEST_F(CliTest, FieldOutlineFileSolvesOrIsRefusedByName) {
   EXPECT_TRUE(contains(refused.err, "top edge turns back")) << refused.err;
   EXPECT_TRUE(refused.out.empty());
 
+  // Mansfield's parallelogram is the cut on inclined supports, by either name.
+  const RunResult parallelogram =
+      run({"field", "--shape", "parallelogram", "--cells-x", "8", "--json"});
+  const RunResult inclined = run({"field", "--shape", "inclined", "--cells-x", "8", "--json"});
+  ASSERT_EQ(parallelogram.exit_status, 0) << parallelogram.err;
+  EXPECT_EQ(json::parse(parallelogram.out).at("weight_N"),
+            json::parse(inclined.out).at("weight_N"));
+  EXPECT_EQ(json::parse(parallelogram.out).at("supports"),
+            json::parse(inclined.out).at("supports"));
+
   const RunResult bad_shape = run({"field", "--shape", "hexagon"});
   EXPECT_EQ(bad_shape.exit_status, 2);
   EXPECT_TRUE(contains(bad_shape.err, "hexagon")) << bad_shape.err;

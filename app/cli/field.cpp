@@ -71,7 +71,8 @@ Result run(const Options& options) {
   r.resolution.cells_x = options.cells_x;
   r.resolution.cells_y = options.cells_y;
   field::parse_mesh_split(options.split, r.resolution.split);
-  const bool preset_cut = options.outline_path.empty() && r.preset.outline && options.shape.empty();
+  const bool preset_cut =
+      options.cut.outline_path.empty() && r.preset.outline && options.cut.shape.empty();
   try {
     r.solved_outline = field::translated(r.outline, -field::solve_origin_mm(r.outline));
     field::Solver solver(field::make_mesh(r.solved_outline, r.resolution));

@@ -34,7 +34,7 @@ field::Outline read_field_cut(const FieldCutOptions& options, const Preset& pres
   } catch (const field::OutlineError& e) {
     throw InputError((options.outline_path.empty()
                           ? ""
-                          : "--outline " + detail::cut(options.outline_path) + ": ") +
+                          : "--outline " + detail::escaped(options.outline_path) + ": ") +
                      e.what());
   } catch (const ReadError& e) {
     throw InputError(std::string("--outline: ") + e.what());

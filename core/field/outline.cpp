@@ -176,6 +176,11 @@ constexpr OutlineKind kAllKinds[] = {
 }
 
 bool parse_outline_kind(std::string_view s, OutlineKind& out) {
+  // The paper's (Mansfield's) name for the cut on inclined supports.
+  if (s == "parallelogram") {
+    out = OutlineKind::inclined;
+    return true;
+  }
   return parse_named(s, out, kAllKinds);
 }
 
