@@ -580,7 +580,7 @@ bool InputPlayer::start_step(std::size_t index, ImGuiIO& io, Explorer& explorer)
       queue_resize(parse_frame_size(step["resize"].get<std::string>()));
       return true;
     case StepKind::Id::frames:
-      queue_idle(step["frames"].get<std::size_t>());
+      queue_idle(step["frames"].get<std::size_t>(), step.value("until_idle", false));
       return true;
     case StepKind::Id::screenshot:
       queue_screenshot(step["screenshot"].get<std::string>());
@@ -653,9 +653,10 @@ void InputPlayer::queue_resize(std::optional<FrameSize> size) {
   queue_.insert(queue_.end(), 3, resized);
 }
 
-void InputPlayer::queue_idle(std::size_t frames) {
+void InputPlayer::queue_idle(std::size_t frames, bool until_idle) {
   FrameInput idle;
   idle.mouse = mouse_;
+  idle.until_idle = until_idle;
   queue_.assign(frames, idle);
 }
 
@@ -700,6 +701,12 @@ bool InputPlayer::before_new_frame(ImGuiIO& io, Explorer& explorer) {
     if (key.imgui >= 0 && io.KeyMap[key.imgui] < 0) {
       io.KeyMap[key.imgui] = key.glfw;
     }
+  }
+  // A wait for the panels ends, after one frame at least, as soon as none is busy: how many frames
+  // a solve takes depends on the machine.
+  if (queue_at_ > 0 && queue_at_ < queue_.size() && queue_[queue_at_].until_idle &&
+      !explorer.busy()) {
+    queue_at_ = queue_.size();
   }
   while (failure_.empty() && queue_at_ >= queue_.size()) {
     if (next_step_ >= steps_.size()) {

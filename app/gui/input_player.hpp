@@ -51,6 +51,7 @@ class InputPlayer {
     std::string text;
     std::string screenshot;
     std::optional<FrameSize> resize;
+    bool until_idle = false;  // a wait that ends once no panel is busy (a field solved)
   };
 
  private:
@@ -64,7 +65,7 @@ class InputPlayer {
   void queue_text(const std::string& text);
   // A new frame size (nullopt: none), then frames at it.
   void queue_resize(std::optional<FrameSize> size);
-  void queue_idle(std::size_t frames);
+  void queue_idle(std::size_t frames, bool until_idle = false);
   void queue_screenshot(const std::string& png_path);
   // Each fails the step (and returns null or false) when what it needs is not on screen.
   std::optional<SliderPlace> find_slider(std::size_t index, const std::string& key,

@@ -228,6 +228,10 @@ void check_resize(const json& step, Problems& problems) {
 }
 
 void check_frames(const json& step, Problems& problems) {
+  if (step.contains("until_idle") && !step["until_idle"].is_boolean()) {
+    problems.push_back("until_idle is true or false, not " +
+                       detail::cut(step["until_idle"].dump()));
+  }
   const json& arg = step["frames"];
   if (!arg.is_number_integer() || arg.get<long long>() < 1 || arg.get<long long>() > 100000) {
     problems.push_back("frames needs a whole number from 1 to 100000, not " +
@@ -275,6 +279,7 @@ constexpr std::string_view kDragOptions[] = {"dx", "dy", "shift"};
 constexpr std::string_view kHoverSweepOptions[] = {"x"};
 constexpr std::string_view kSeenOptions[] = {"in"};
 constexpr std::string_view kClickOptions[] = {"at", "ctrl", "in"};
+constexpr std::string_view kFramesOptions[] = {"until_idle"};
 
 // Every kind of step: its action (the field that names it), the other fields it may have, and the
 // check of its values. The player turns each kind into input (InputPlayer::start_step).
@@ -285,7 +290,7 @@ const StepKind kStepKinds[] = {
     {StepKind::Id::key, "key", {}, check_key},
     {StepKind::Id::type, "type", {}, check_type},
     {StepKind::Id::resize, "resize", {}, check_resize},
-    {StepKind::Id::frames, "frames", {}, check_frames},
+    {StepKind::Id::frames, "frames", kFramesOptions, check_frames},
     {StepKind::Id::screenshot, "screenshot", {}, check_screenshot},
     {StepKind::Id::expect, "expect", {}, check_expect},
     {StepKind::Id::visible, "visible", kSeenOptions, check_seen},

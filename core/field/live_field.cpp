@@ -1,5 +1,6 @@
 #include "core/field/live_field.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <utility>
@@ -118,7 +119,7 @@ bool LiveField::current() const {
   return shown_ && latest_ && shown_->inputs == *latest_;
 }
 
-bool LiveField::step(double budget_ms) {
+bool LiveField::step(double budget_ms, double first_budget_ms) {
   if (!working()) {
     return false;
   }
@@ -148,6 +149,9 @@ bool LiveField::step(double budget_ms) {
     // on the coarse meshes. Within the slice, so that a stiff cloth's ladder does not hold a
     // frame for seconds; where the slice ends, the next ones go on from the finest mesh's iterate.
     options.max_iterations = kMaxIterations;
+    if (!shown_ && budget_ms > 0.0) {
+      options.time_budget_ms = std::max(budget_ms, first_budget_ms);
+    }
     solution = solve_cold(w.solver, in.outline, in.material, in.resolution, options);
     w.cold_tried = true;
   }

@@ -46,8 +46,9 @@ class LiveField {
   // cannot be meshed leaves the last field and sets refusal() to why.
   void request(const FieldInputs& inputs);
   // Newton steps on the wanted field for about `budget_ms` (0: until it converges or gives up).
-  // True when shown() changed.
-  bool step(double budget_ms);
+  // The first field of all, solved cold with nothing to show meanwhile, may take up to
+  // `first_budget_ms` at once. True when shown() changed.
+  bool step(double budget_ms, double first_budget_ms = kFirstColdMs);
   // True while the wanted field is neither shown nor given up.
   bool working() const;
   // The last converged field, or null before the first.
@@ -70,6 +71,9 @@ class LiveField {
   // Newer inputs wait for a solve under way while it has taken fewer Newton steps than this: a
   // warm re-solve takes 6-25.
   static constexpr int kFinishBeforeNewer = 60;
+  // A view opening shows its field in its first frame (a cold solve of the live mesh takes
+  // 30-250 ms); only a cloth whose cold solve takes longer, a very stiff one, is sliced.
+  static constexpr double kFirstColdMs = 1000.0;
 
  private:
   void start(const FieldInputs& inputs);

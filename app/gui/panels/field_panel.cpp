@@ -107,18 +107,19 @@ struct Margins {
 };
 
 ToScreen fit(const field::SolvedField& field, ImVec2 origin, ImVec2 size, Margins m,
-             double most_px_per_mm) {
+             const Vector2d& least_extent_mm, Vector2d& extent_out) {
   Vector2d low = Vector2d::Constant(std::numeric_limits<double>::max());
   Vector2d high = -low;
   for (const Vector2d& p : field.report.solution.positions_mm) {
     low = low.cwiseMin(p);
     high = high.cwiseMax(p);
   }
-  const Vector2d extent = (high - low).cwiseMax(Vector2d::Constant(1e-9));
+  const Vector2d extent = (high - low).cwiseMax(least_extent_mm).cwiseMax(Vector2d::Constant(1e-9));
+  extent_out = extent;
   const double width = std::max(1.0, static_cast<double>(size.x - m.left - m.right));
   const double height = std::max(1.0, static_cast<double>(size.y - m.top - m.bottom));
   ToScreen to;
-  to.scale = std::min({width / extent.x(), height / extent.y(), most_px_per_mm});
+  to.scale = std::min(width / extent.x(), height / extent.y());
   to.low = low;
   to.origin =
       ImVec2(origin.x + m.left +
@@ -189,8 +190,9 @@ float legend(ImDrawList& draw, ImVec2 origin, float width, const FieldDrawing& s
         {{kTaut, "taut: tension both ways"},
          {kWrinkled, "wrinkled: tension along the rays only"},
          {kSlack, "slack: no tension"}}};
-    for (const auto& [colour, words] : rows) {
-      item(words, [&](ImVec2 corner) {
+    for (const auto& row : rows) {
+      const ImU32 colour = row.first;  // a structured binding cannot be captured in C++20
+      item(row.second, [&](ImVec2 corner) {
         draw.AddRectFilled(corner, ImVec2(corner.x + box, corner.y + box), colour);
       });
     }
@@ -380,8 +382,8 @@ std::vector<std::vector<Vector2d>> cosines_on_field(const FoldLines& cosines,
   return out;
 }
 
-double draw_field(ImDrawList& draw, ImVec2 origin, ImVec2 size, const field::SolvedField& field,
-                  const FoldLines* cosines, const FieldDrawing& style) {
+FieldFit draw_field(ImDrawList& draw, ImVec2 origin, ImVec2 size, const field::SolvedField& field,
+                    const FoldLines* cosines, const FieldDrawing& style) {
   const field::Solution& s = field.report.solution;
   const ImU32 ink = style.dark ? IM_COL32(235, 235, 235, 255) : IM_COL32(25, 25, 25, 255);
   const std::vector<double> tensions = node_tensions(field);
@@ -402,7 +404,10 @@ double draw_field(ImDrawList& draw, ImVec2 origin, ImVec2 size, const field::Sol
   margins.left = margins.right = std::min(3.0f * text, 0.15f * size.x);
   const ImVec2 body_origin(origin.x, origin.y + legend_px);
   const ImVec2 body_size(size.x, std::max(1.0f, size.y - legend_px));
-  const ToScreen to = fit(field, body_origin, body_size, margins, style.most_px_per_mm);
+  FieldFit fitted;
+  const ToScreen to =
+      fit(field, body_origin, body_size, margins, style.least_extent_mm, fitted.extent_mm);
+  fitted.px_per_mm = to.scale;
   // Without the fill's anti-aliased fringe: neighbouring triangles meet with no hairline between.
   const ImDrawListFlags flags = draw.Flags;
   draw.Flags &= ~ImDrawListFlags_AntiAliasedFill;
@@ -502,7 +507,7 @@ double draw_field(ImDrawList& draw, ImVec2 origin, ImVec2 size, const field::Sol
     }
     draw.AddCircleFilled(at, 4.0f * style.line_px, ink);
   }
-  return to.scale;
+  return fitted;
 }
 
 void FieldPanel::view_settings(ViewSettings& settings, Document& /*document*/) {
@@ -656,11 +661,11 @@ void FieldPanel::canvas(PanelContext& context) {
   ImDrawList& draw = *ImGui::GetWindowDrawList();
   draw.PushClipRect(origin, ImVec2(origin.x + size.x, origin.y + size.y), true);
   FieldDrawing style = drawing_style(context);
-  // Not the canvas's size: the status line over it changes height as a solve starts and ends.
-  if (coarse_ && canvas_px_per_mm_ > 0.0) {
-    style.most_px_per_mm = canvas_px_per_mm_;
+  // The extent, not the scale: the canvas changes height as the status line over it comes and goes.
+  if (coarse_) {
+    style.least_extent_mm = canvas_fit_.extent_mm;
   }
-  canvas_px_per_mm_ = draw_field(
+  canvas_fit_ = draw_field(
       draw, origin, size, *shown,
       cosines_ && cut_ == FieldCut::shape ? &context.document.scene().fold_lines() : nullptr,
       style);
@@ -922,7 +927,7 @@ void FieldPanel::report(json& state, PanelContext& /*context*/) const {
   json out;
   out["open"] = open_;
   out["slice_ms"] = slice_ms_;
-  out["canvas_px_per_mm"] = canvas_px_per_mm_;
+  out["canvas_px_per_mm"] = canvas_fit_.px_per_mm;
   out["solving_for"] = consumers_;
   out["cut"] = view_solve_.own_cut ? "preset" : std::string(kCutNames[static_cast<int>(cut_)]);
   describe_solve(out, view_solve_);

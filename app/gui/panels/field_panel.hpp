@@ -37,9 +37,16 @@ struct FieldDrawing {
   float text_px = 13.0f;
   float line_px = 1.0f;
   bool dark = true;  // over a dark background
-  // The most pixels a millimetre may take: while an input moves, the scale it had, so that a
-  // growing or shrinking cloth is seen to grow or shrink rather than refitted to the same size.
-  double most_px_per_mm = std::numeric_limits<double>::infinity();
+  // The least extent fitted into the canvas, mm across and down: while an input moves, the largest
+  // the cloth has had since it began, so that a cloth growing or shrinking is seen to, rather than
+  // refitted to the same size every frame.
+  Eigen::Vector2d least_extent_mm = Eigen::Vector2d::Zero();
+};
+
+// How a field was fitted into its canvas.
+struct FieldFit {
+  double px_per_mm = 0.0;
+  Eigen::Vector2d extent_mm = Eigen::Vector2d::Zero();  // what was fitted: the cloth's or more
 };
 
 // The closed form's fold lines `cosines` (x from the middle between the outermost supports, y down
@@ -50,9 +57,9 @@ std::vector<std::vector<Eigen::Vector2d>> cosines_on_field(
 
 // Draws `field` into `draw` within [origin, origin + size], millimetres alike across and down, y
 // down; `cosines` are the closed form's fold lines (x from the middle between the supports, y down
-// from their line), drawn over it when asked. Returns the scale drawn at, pixels per millimetre.
-double draw_field(ImDrawList& draw, ImVec2 origin, ImVec2 size, const field::SolvedField& field,
-                  const FoldLines* cosines, const FieldDrawing& style);
+// from their line), drawn over it when asked. Returns how it was fitted.
+FieldFit draw_field(ImDrawList& draw, ImVec2 origin, ImVec2 size, const field::SolvedField& field,
+                    const FoldLines* cosines, const FieldDrawing& style);
 
 // The field's inputs for the model's parameters: the outline of their shape (or `cut`, or the
 // preset's own cut `own_cut` when the cut is the shape's), their material and a mesh of `cells_x`
@@ -237,8 +244,8 @@ class FieldPanel : public Panel {
   std::string& cut_refusal_ = view_solve_.cut_refusal;
   std::optional<field::FieldFolds>& folds_ = view_solve_.folds;
   std::optional<PanelRect> canvas_rect_;
-  // The scale the canvas was last drawn at: kept, or shrunk, while an input moves.
-  double canvas_px_per_mm_ = 0.0;
+  // How the canvas was last fitted: the extent is kept, or grown, while an input moves.
+  FieldFit canvas_fit_;
   DrawnArea drawn_;
   struct GivenCut {
     field::Outline outline;
