@@ -254,16 +254,21 @@ TEST_F(FoldSourceTest, TheFieldViewKeepsItsScaleWhileAnInputMoves) {
   ASSERT_GT(at_rest, 0.0);
   EXPECT_EQ(report().at("field").at("mesh").at("cells_x"), FieldPanel::kDefaultCells);
   const double h_mm = shown().hanging.height_mm;
-  int coarse_frames = 0;
-  for (int i = 1; i <= 10; ++i) {
-    ASSERT_EQ(explorer_->set_input("h", h_mm * (1.0 - 0.04 * i)), std::nullopt);
+  // h shrinks by 40 % over 10 frames, then keeps moving by a little until the field of half the
+  // cells has been shown (how many frames that takes depends on the machine).
+  bool coarse_shown = false;
+  double h_now_mm = h_mm;
+  for (int i = 1; i <= 400 && !(coarse_shown && i > 10); ++i) {
+    h_now_mm = i <= 10 ? h_mm * (1.0 - 0.04 * i) : h_now_mm * (1.0 - 1e-4);
+    ASSERT_EQ(explorer_->set_input("h", h_now_mm), std::nullopt);
     frame();
     EXPECT_LE(report().at("field").at("canvas_px_per_mm").get<double>(), at_rest * (1.0 + 1e-9))
         << "frame " << i;
-    coarse_frames += report().at("field").at("mesh").at("cells_x") == FieldPanel::kDefaultCells / 2;
+    coarse_shown = coarse_shown ||
+                   report().at("field").at("mesh").at("cells_x") == FieldPanel::kDefaultCells / 2;
   }
   // While the hand moves the field is solved on half the cells; at rest on all of them.
-  EXPECT_GE(coarse_frames, 1);
+  EXPECT_TRUE(coarse_shown);
   settle();
   EXPECT_EQ(report().at("field").at("mesh").at("cells_x"), FieldPanel::kDefaultCells);
   // The cloth 40 % shorter: fitted by its height, a scale larger by up to 1 / 0.6.
