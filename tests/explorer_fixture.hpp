@@ -35,6 +35,7 @@
 #include "app/gui/frame_pacing.hpp"
 #include "app/gui/input_player.hpp"
 #include "app/gui/menu_bar.hpp"
+#include "app/gui/panel.hpp"
 #include "app/gui/panels/analysis_panel.hpp"
 #include "app/gui/panels/calibration_panel.hpp"
 #include "app/gui/panels/cloth_view_panel.hpp"
@@ -44,12 +45,11 @@
 #include "app/gui/panels/parameters_panel.hpp"
 #include "app/gui/panels/photo_overlay.hpp"
 #include "app/gui/panels/presets_panel.hpp"
-#include "app/gui/presentation_bar.hpp"
-#include "app/gui/panel.hpp"
 #include "app/gui/panels/widgets.hpp"
 #include "app/gui/picture.hpp"
 #include "app/gui/play_script.hpp"
 #include "app/gui/plot_widget.hpp"
+#include "app/gui/presentation_bar.hpp"
 #include "app/gui/renderer.hpp"
 #include "app/gui/scripted_run.hpp"
 #include "app/gui/surface.hpp"
@@ -288,10 +288,18 @@ class ExplorerTest : public foldlab::testing::TempDirTest {
     }
   }
 
-  // Text without its spaces and line breaks: a wrapped sentence reads as one.
-  static std::string squeezed(std::string text) {
-    std::erase_if(text, [](char c) { return c == ' ' || c == '\n'; });
-    return text;
+  // Text without its spaces, no-break spaces and line breaks: a wrapped sentence, or one read back
+  // glyph by glyph with gaps of its own, reads as one.
+  static std::string squeezed(const std::string& text) {
+    std::string out;
+    for (std::size_t i = 0; i < text.size(); ++i) {
+      if (text.compare(i, 2, "\u00A0") == 0) {
+        ++i;
+      } else if (text[i] != ' ' && text[i] != '\n') {
+        out += text[i];
+      }
+    }
+    return out;
   }
 
   // w's values in N/mm² are 1e-7..1e-5: written in e-notation, they end in e-0[5-8].

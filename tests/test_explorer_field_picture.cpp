@@ -111,17 +111,6 @@ TEST_F(FieldPictureTest, CosinesNotDrawnOnTheTriangleAreSaidSo) {
   EXPECT_NE(text.find(why), std::string::npos) << text;
 
   ASSERT_EQ(explorer_->set_view("field", "1"), std::nullopt);
-  const auto squeezed = [](const std::string& words) {
-    std::string out;
-    for (std::size_t i = 0; i < words.size(); ++i) {
-      if (words.compare(i, 2, "\u00A0") == 0) {
-        ++i;
-      } else if (words[i] != ' ' && words[i] != '\n') {
-        out += words[i];
-      }
-    }
-    return out;
-  };
   std::string drawn;
   for (int i = 0; i < 600 && squeezed(drawn).find(squeezed(why)) == std::string::npos; ++i) {
     drawn = frame();

@@ -381,17 +381,6 @@ TEST_F(FoldSourceTest, TheColourBarAndCaptionGiveTheFoldsDrawn) {
 
   // Presented, the read-out over the view gives them too. Its large text is read back glyph by
   // glyph with gaps of its own: compared without any spaces.
-  const auto squeezed = [](std::string text) {
-    std::string out;
-    for (std::size_t i = 0; i < text.size(); ++i) {
-      if (text.compare(i, 2, "\u00A0") == 0) {
-        ++i;
-      } else if (text[i] != ' ' && text[i] != '\n') {
-        out += text[i];
-      }
-    }
-    return out;
-  };
   ASSERT_EQ(explorer_->set_view("present", "cloth"), std::nullopt);
   settle();
   std::string text = squeezed(frame());

@@ -697,15 +697,17 @@ TEST(FieldRelaxedEnergy, StatesEnergiesAndStressFollowTheTable) {
   }
 }
 
+// Why parse_outline_json refuses `text`, or empty when it does not.
+std::string refused(const std::string& text) {
+  try {
+    parse_outline_json(text);
+  } catch (const OutlineError& e) {
+    return std::string(e.what());
+  }
+  return std::string();
+}
+
 TEST(FieldOutline, RefusesWhatCannotBeMeshed) {
-  const auto refused = [](const char* text) {
-    try {
-      parse_outline_json(text);
-    } catch (const OutlineError& e) {
-      return std::string(e.what());
-    }
-    return std::string();
-  };
   EXPECT_NE(refused(R"({"top": [[0,0],[10,0],[5,0]], "bottom": [[0,5],[10,5]],
                         "supports": [{"at": [0,0], "to": [0,0]}]})")
                 .find("turns back"),
@@ -1034,14 +1036,6 @@ TEST(FieldSpans, RaysAreSharedBySpanLength) {
 // The rules a preset's outline and a file share: a key given twice or unknown, a pin too far,
 // a step narrower than the mesh follows, a coordinate past 1e7 mm.
 TEST(FieldOutline, RefusesKeysPinsStepsAndCoordinatesOutOfRule) {
-  const auto refused = [](const std::string& text) {
-    try {
-      parse_outline_json(text);
-    } catch (const OutlineError& e) {
-      return std::string(e.what());
-    }
-    return std::string();
-  };
   const std::string edges = R"("top": [[0,0],[10,0]], "bottom": [[0,5],[10,5]], )";
   EXPECT_NE(refused(R"({"top": [[0,0],[10,0]], )" + edges +
                     R"("supports": [{"at": [0,0], "to": [0,0]}]})")

@@ -13,10 +13,12 @@
 namespace foldlab::field {
 namespace {
 
-// The Table 1 cloth on the rectangle hung from its top corners: 1400 x 1400 mm, w = 1.5e-6 N/mm².
-FieldInputs rectangle(double d_mm, int cells_x = 16) {
+// The Table 1 cloth on the rectangle hung from its top corners: 1400 x 1400 mm (or h_mm tall, a
+// new cut and so a new mesh at each h), w = 1.5e-6 N/mm².
+FieldInputs rectangle(double d_mm, int cells_x = 16, double h_mm = 1400.0) {
   Parameters p;
   p.hanging.support_displacement_mm = d_mm;
+  p.hanging.height_mm = h_mm;
   FieldInputs in;
   in.outline = make_outline(p, OutlineKind::rectangular);
   in.material = material_of(p.fabric);
@@ -90,29 +92,17 @@ TEST(LiveField, ANewMeshStartsFromTheFieldOnShowAndRefinesIt) {
   EXPECT_NEAR(live.shown()->report.solution.weight_N, 2.94, 1e-9);
 }
 
-// The Table 1 cloth's rectangle of height h: a new cut, so a new mesh, at each h.
-FieldInputs rectangle_of_height(double h_mm) {
-  Parameters p;
-  p.hanging.height_mm = h_mm;
-  FieldInputs in;
-  in.outline = make_outline(p, OutlineKind::rectangular);
-  in.material = material_of(p.fabric);
-  in.resolution.cells_x = 12;
-  in.resolution.cells_y = 12;
-  return in;
-}
-
 // h played: a new cut every slice, each slice too short to finish a solve. Each solve under way
 // is finished before the newer inputs are taken, so fields of inputs a solve behind keep being
 // shown; restarted at every slice, none would end and the first field would stay on show.
 TEST(LiveField, InputsChangedEverySliceAreShownASolveBehind) {
   LiveField live;
-  live.request(rectangle_of_height(1400.0));
+  live.request(rectangle(100.0, 12, 1400.0));
   run(live, 0.0);
   ASSERT_TRUE(live.current());
   const std::uint64_t first = live.shown_count();
   for (int i = 1; i <= 200; ++i) {
-    live.request(rectangle_of_height(1400.0 + 10.0 * i));
+    live.request(rectangle(100.0, 12, 1400.0 + 10.0 * i));
     live.step(1e-3);  // one Newton step a slice
   }
   EXPECT_GE(live.shown_count() - first, 3u) << "fields shown while h moved";
@@ -122,7 +112,7 @@ TEST(LiveField, InputsChangedEverySliceAreShownASolveBehind) {
   // At rest the newest inputs are solved and shown.
   run(live, 0.0);
   EXPECT_TRUE(live.current());
-  EXPECT_EQ(live.shown()->inputs, rectangle_of_height(1400.0 + 10.0 * 200));
+  EXPECT_EQ(live.shown()->inputs, rectangle(100.0, 12, 1400.0 + 10.0 * 200));
 }
 
 // A cold start given short slices goes on from where each ended and lands where a whole solve
